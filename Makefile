@@ -1,0 +1,29 @@
+PYTHON ?= python3
+VENV   ?= .venv
+BIN     = $(VENV)/bin
+OUT    ?= reproduction
+
+.PHONY: demo test lint bench clean
+
+$(BIN)/vibrofriction: pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -e '.[dev]'
+	touch $@
+
+demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
+	$(BIN)/vibrofriction reproduce --out $(OUT)
+
+test: $(BIN)/vibrofriction  ## the whole test suite, slow tests included
+	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/lint-imports
+	$(BIN)/python -m pytest -q
+
+lint: $(BIN)/vibrofriction
+	$(BIN)/ruff check src tests benchmarks
+
+bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/results/
+	$(BIN)/python benchmarks/bench_solver.py
+
+clean:
+	rm -rf $(VENV) $(OUT)
