@@ -1,0 +1,25 @@
+"""Named integer constants shared by the kernels and the Python layer."""
+
+# phases of the contact
+STICK = 0
+SLIP_POS = 1  # contact point slides in +x (s = +1)
+SLIP_NEG = 2  # contact point slides in -x (s = -1)
+FLIGHT = 3  # no contact (jumping, amplitude > 1)
+
+PHASE_NAMES = ("stick", "slip+", "slip-", "flight")
+
+# event kinds (transitions and cuts)
+EV_STICK_TO_SLIP = 0
+EV_SLIP_TO_STICK = 1
+EV_REVERSAL = 2  # slip s -> slip -s (rigid contact only)
+EV_LIFTOFF = 3
+EV_TOUCHDOWN = 4
+EV_SECTION = 5  # Poincare section tau = 2 pi k (not a physical event)
+
+EVENT_NAMES = ("stick->slip", "slip->stick", "reversal", "lift-off", "touchdown", "section")
+
+# steady-state status
+ST_PERIODIC = 0
+ST_AVERAGED = 1
+ST_NOT_CONVERGED = 2
+ST_FAILED = 3  # the event budget was exhausted or the integration got stuck

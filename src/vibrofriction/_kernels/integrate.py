@@ -1,0 +1,299 @@
+r"""Event-driven integration: exact from event to event, cut at the Poincare section.
+
+The state on entry to a segment is ``(theta, y, y', f, phase)``.  A segment ends
+at the first of: the phase's event (found by :func:`.roots.first_root`), lift-off
+or touch-down (``cos tau = -1/a``, known in closed form) or the section
+``tau = 2 pi k``.  Every segment is therefore shorter than one drive period.
+At an event the state is projected exactly onto the event surface (``f = s n``
+when stick ends, contact-point velocity 0 when slip ends) and the next phase is
+the first of the candidates whose event functions start positive
+(:func:`enter`); this decides grazing transitions by derivatives, not by a
+tolerance that could flip back and forth.
+"""
+
+import math
+
+from .basis import derivative, evaluate, integral
+from .codes import (
+    EV_LIFTOFF,
+    EV_REVERSAL,
+    EV_SECTION,
+    EV_SLIP_TO_STICK,
+    EV_STICK_TO_SLIP,
+    EV_TOUCHDOWN,
+    FLIGHT,
+    SLIP_NEG,
+    SLIP_POS,
+    STICK,
+)
+from .jit import jit
+from .phases import (
+    cone_margin,
+    free_y,
+    normal_force,
+    normal_integral,
+    rigid_stick_force,
+    slip_velocity,
+    stick_force,
+)
+from .roots import first_root, start_margin
+
+TWO_PI = 2.0 * math.pi
+
+
+@jit
+def slip_sign(phase):
+    return 1.0 if phase == SLIP_POS else -1.0
+
+
+@jit
+def liftoff_phases(a):
+    """Drive phases of lift-off and touch-down, ``cos theta = -1/a`` (a > 1)."""
+    if a <= 1.0:
+        return TWO_PI, TWO_PI
+    th = math.acos(-1.0 / a)
+    return th, TWO_PI - th
+
+
+@jit
+def next_boundary(theta, a, th_off, th_on):
+    if a > 1.0:
+        if theta < th_off:
+            return th_off, EV_LIFTOFF
+        if theta < th_on:
+            return th_on, EV_TOUCHDOWN
+    return TWO_PI, EV_SECTION
+
+
+@jit
+def stick_coefficients(alpha, beta, V, a, theta, y, yd, f):
+    """Force coefficients and their frequency in stick (rigid contact when beta = inf)."""
+    if math.isinf(beta):
+        return rigid_stick_force(alpha, V, y), 1.0
+    return stick_force(alpha, beta, beta - alpha, math.sqrt(beta), V, y, yd, f), math.sqrt(beta)
+
+
+@jit
+def enter(theta, y, yd, f, s_pref, alpha, beta, a, V, T):
+    """Choose the phase that starts consistently at ``theta``.
+
+    Candidates, in order: stick (both cone margins must start positive; for a rigid
+    contact also zero body velocity), slip ``s_pref``, slip ``-s_pref``.  With a
+    finite contact stiffness ``f`` is continuous, so slip ``s`` is a candidate only
+    when ``f = s n``.  Returns ``(phase, f, ok)``; ``ok`` is False when no candidate
+    starts consistently (a degenerate point, counted by the caller).
+    """
+    rigid = math.isinf(beta)
+    k = beta - alpha
+    n = normal_force(theta, a)
+    if not rigid or abs(V + yd) <= 1e-14 * (abs(V) + abs(yd)):
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+        ok1, _ = start_margin(cone_margin(fc, theta, 1.0, a), wp, T)
+        if ok1:
+            ok2, _ = start_margin(cone_margin(fc, theta, -1.0, a), wp, T)
+            if ok2:
+                return STICK, (evaluate(fc, wp, 0.0) if rigid else f), True
+    w = math.sqrt(alpha)
+    tol = 1e-12 * (1.0 + abs(n))
+    for i in range(2):
+        s = s_pref if i == 0 else -s_pref
+        if rigid or abs(f - s * n) <= tol:
+            vr = slip_velocity(free_y(alpha, w, theta, y, yd, s, a), w, theta, s, a, V, k)
+            ok, _ = start_margin(vr, w, T)
+            if ok:
+                return (SLIP_POS if s > 0 else SLIP_NEG), s * n, True
+    # degenerate: keep what continuity allows
+    if rigid or abs(f - s_pref * n) <= tol:
+        return (SLIP_POS if s_pref > 0 else SLIP_NEG), s_pref * n, False
+    return STICK, f, False
+
+
+@jit
+def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
+    """Advance one segment.
+
+    Returns ``(t, theta_end, y, y', f, phase, event, int_f, int_n, ok)`` where
+    ``event`` is the kind of what ended the segment (a transition or a boundary),
+    ``int_f`` and ``int_n`` the integrals of ``f`` and ``n`` over it and ``ok`` False
+    when a transition was degenerate.
+    """
+    rigid = math.isinf(beta)
+    k = beta - alpha
+    w = math.sqrt(alpha)
+    tb, bkind = next_boundary(theta, a, th_off, th_on)
+    T = tb - theta
+    te = -1.0
+    es = 0.0
+    if phase == STICK:
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+        for i in range(2):
+            s = 1.0 if i == 0 else -1.0
+            g = cone_margin(fc, theta, s, a)
+            ok, ts = start_margin(g, wp, T)
+            tlim = T if te < 0.0 else te
+            r = first_root(g, wp, ts, tlim) if ok else 0.0
+            if r >= 0.0 and (te < 0.0 or r < te):
+                te = r
+                es = s
+    elif phase != FLIGHT:
+        s = slip_sign(phase)
+        yc = free_y(alpha, w, theta, y, yd, s, a)
+        vr = slip_velocity(yc, w, theta, s, a, V, k)
+        ok, ts = start_margin(vr, w, T)
+        te = first_root(vr, w, ts, T) if ok else 0.0
+    hit = te >= 0.0
+    t = te if hit else T
+    # state and integrals at the end of the piece
+    if phase == STICK:
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+        int_f = integral(fc, wp, t)
+        int_n = normal_integral(theta, t, a)
+        if rigid:
+            y1 = y - V * t
+            yd1 = -V
+            f1 = -alpha * y1
+        else:
+            f1 = evaluate(fc, wp, t)
+            y1 = y + (f1 - f) / k - V * t
+            yd1 = evaluate(derivative(fc, wp), wp, t) / k - V
+    else:
+        s = 0.0 if phase == FLIGHT else slip_sign(phase)
+        yc = free_y(alpha, w, theta, y, yd, s, a)
+        y1 = evaluate(yc, w, t)
+        yd1 = evaluate(derivative(yc, w), w, t)
+        if phase == FLIGHT:
+            int_f = 0.0
+            int_n = 0.0
+            f1 = 0.0
+        else:
+            int_n = normal_integral(theta, t, a)
+            int_f = s * int_n
+            f1 = s * normal_force(theta + t, a)
+    theta1 = tb if t == T else theta + t
+    ph1 = phase
+    ok = True
+    event = bkind
+    Tn = tb - theta1 if tb > theta1 else TWO_PI
+    if hit:
+        if phase == STICK:
+            # stick -> slip in direction es: project onto |f| = n
+            f1 = es * normal_force(theta1, a)
+            ph1, f1, ok = enter(theta1, y1, yd1, f1, es, alpha, beta, a, V, Tn)
+            event = EV_STICK_TO_SLIP
+        else:
+            s = slip_sign(phase)
+            # slip -> stick: project onto zero contact-point velocity
+            yd1 = -V - (0.0 if rigid else s * a * math.sin(theta1) / k)
+            ph1, f1, ok = enter(theta1, y1, yd1, f1, -s, alpha, beta, a, V, Tn)
+            event = EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL
+    if t == T and not hit:
+        if bkind == EV_LIFTOFF:
+            ph1 = FLIGHT
+            f1 = 0.0
+        elif bkind == EV_TOUCHDOWN:
+            f1 = 0.0
+            sp = 1.0 if V + yd1 >= 0.0 else -1.0
+            ph1, f1, ok = enter(theta1, y1, yd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1)
+    elif t == T and hit and bkind != EV_SECTION:
+        # an event exactly at lift-off / touch-down: the boundary is handled by a
+        # zero-length segment next (theta1 == tb keeps it as the next boundary)
+        theta1 = math.nextafter(tb, -math.inf)
+    return t, theta1, y1, yd1, f1, ph1, event, int_f, int_n, ok
+
+
+@jit
+def initial_state(kind, alpha, beta, a, V):
+    """``kind`` 0: steady sliding before the oscillation starts; 1: rest."""
+    if kind == 0:
+        y, yd, f = -1.0 / alpha, 0.0, 1.0
+    else:
+        y, yd, f = 0.0, -V, 0.0
+    ph, f, _ = enter(0.0, y, yd, f, 1.0, alpha, beta, a, V, TWO_PI)
+    return y, yd, f, ph
+
+
+@jit
+def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments, seg):
+    """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
+
+    ``seg`` has shape ``(max_segments, 9)`` with columns ``tau, y, y', f, phase,
+    event that ended the previous segment, int_f, int_n`` (cumulative) and the drive
+    phase ``theta`` of the segment start.  Returns
+    the number of rows written (``-1`` if ``max_segments`` was too small).
+    """
+    th_off, th_on = liftoff_phases(a)
+    k = 0
+    m = 0
+    cf = 0.0
+    cn = 0.0
+    ev = -1
+    while k < periods:
+        if m >= max_segments:
+            return -1
+        seg[m, 0] = TWO_PI * k + theta
+        seg[m, 1] = y
+        seg[m, 2] = yd
+        seg[m, 3] = f
+        seg[m, 4] = phase
+        seg[m, 5] = ev
+        seg[m, 6] = cf
+        seg[m, 7] = cn
+        seg[m, 8] = theta
+        m += 1
+        t, theta, y, yd, f, phase, ev, i_f, i_n, ok = segment(
+            theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on)
+        cf += i_f
+        cn += i_n
+        if theta >= TWO_PI:
+            theta = 0.0
+            k += 1
+    if m >= max_segments:
+        return -1
+    seg[m, 0] = TWO_PI * k + theta
+    seg[m, 1] = y
+    seg[m, 2] = yd
+    seg[m, 3] = f
+    seg[m, 4] = phase
+    seg[m, 5] = ev
+    seg[m, 6] = cf
+    seg[m, 7] = cn
+    seg[m, 8] = theta
+    return m + 1
+
+
+@jit
+def sample(seg, nseg, alpha, beta, a, V, taus, out):
+    """Evaluate the closed forms at sorted times ``taus`` (columns y, y', f, n, phase)."""
+    w = math.sqrt(alpha)
+    j = 0
+    for i in range(taus.shape[0]):
+        tau = taus[i]
+        while j + 1 < nseg - 1 and seg[j + 1, 0] <= tau:
+            j += 1
+        theta = seg[j, 8]
+        t = tau - seg[j, 0]
+        y, yd, f = seg[j, 1], seg[j, 2], seg[j, 3]
+        phase = int(seg[j, 4])
+        if phase == STICK:
+            fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+            if math.isinf(beta):
+                y1 = y - V * t
+                yd1 = -V
+                f1 = -alpha * y1
+            else:
+                f1 = evaluate(fc, wp, t)
+                y1 = y + (f1 - f) / (beta - alpha) - V * t
+                yd1 = evaluate(derivative(fc, wp), wp, t) / (beta - alpha) - V
+        else:
+            s = 0.0 if phase == FLIGHT else slip_sign(phase)
+            yc = free_y(alpha, w, theta, y, yd, s, a)
+            y1 = evaluate(yc, w, t)
+            yd1 = evaluate(derivative(yc, w), w, t)
+            f1 = s * normal_force(theta + t, a)
+        out[i, 0] = y1
+        out[i, 1] = yd1
+        out[i, 2] = f1
+        out[i, 3] = max(0.0, normal_force(theta + t, a))
+        out[i, 4] = phase
+
+

@@ -1,0 +1,136 @@
+r"""The first zero of an event function on a segment, never missed.
+
+An interval ``[t_a, t_b]`` on which ``g`` is positive at both ends is excluded
+when a bound on ``|g''|`` proves that ``g`` cannot reach zero inside:
+
+* ``min(g_a, g_b) > M_2 h^2 / 8`` (the linear interpolant's error bound), or
+* ``min(s_a, s_b) - M_{2,s} h^2/8 - R > 0`` where ``s`` is ``g`` without the free
+  oscillation ``D cos wt + E sin wt`` of amplitude ``R`` (this keeps very stiff
+  contacts, ``w = sqrt(beta)`` up to 1e3, from being cut into tiny pieces).
+
+Intervals that can be neither excluded nor shown to hold exactly one crossing are
+bisected, leftmost first, so the earliest crossing is the one returned.  A
+touching (double) zero is decided by the derivatives at the segment start
+(:func:`start_margin`) or, inside a segment, by the interval shrinking below
+``H_MIN`` without a sign change: a touch without crossing is not an event.
+"""
+
+import math
+
+import numpy as np
+
+from .basis import derivative, evaluate, evaluate_slow, magnitude, sup_bound
+from .jit import jit
+
+H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
+REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
+
+
+@jit
+def start_margin(c, w, T):
+    """Does ``g`` stay positive just after ``t = 0``?
+
+    Returns ``(ok, t_safe)``: ``ok`` is True when ``g > 0`` on ``(0, t_safe]``.  A
+    zero value at the start is decided by the first non-vanishing derivative
+    (up to the third), each compared with its own round-off level.
+    """
+    c1 = derivative(c, w)
+    c2 = derivative(c1, w)
+    c3 = derivative(c2, w)
+    g0 = evaluate(c, w, 0.0)
+    tol = REL_TOL * magnitude(c)
+    if g0 > tol:
+        return True, 0.0
+    if g0 < -tol:
+        return False, 0.0
+    g1 = evaluate(c1, w, 0.0)
+    tol = REL_TOL * magnitude(c1)
+    if g1 > tol:
+        m = sup_bound(c2, w, T)
+        return True, min(T, g1 / m) if m > 0.0 else T
+    if g1 < -tol:
+        return False, 0.0
+    g2 = evaluate(c2, w, 0.0)
+    tol = REL_TOL * magnitude(c2)
+    if g2 > tol:
+        m = sup_bound(c3, w, T)
+        return True, min(T, 1.5 * g2 / m) if m > 0.0 else T
+    if g2 < -tol:
+        return False, 0.0
+    g3 = evaluate(c3, w, 0.0)
+    tol = REL_TOL * magnitude(c3)
+    if g3 > tol:
+        m = sup_bound(derivative(c3, w), w, T)
+        return True, min(T, 2.0 * g3 / m) if m > 0.0 else T
+    return False, 0.0
+
+
+@jit
+def _refine(c, c1, w, a, b, ga, gb):
+    """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone."""
+    t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
+    for _ in range(60):
+        if not (a < t < b):
+            t = 0.5 * (a + b)
+        gt = evaluate(c, w, t)
+        if gt > 0.0:
+            a = t
+        else:
+            b = t
+            if gt == 0.0:
+                return t
+        if b - a <= 4e-16 * max(1.0, abs(b)):
+            return b
+        d = evaluate(c1, w, t)
+        t = t - gt / d if d != 0.0 else 0.5 * (a + b)
+    return b
+
+
+@jit
+def first_root(c, w, t0, T):
+    """Earliest ``t`` in ``(t0, T]`` where ``g`` crosses from positive to ``<= 0``.
+
+    ``g`` must be positive on ``(0, t0]`` (see :func:`start_margin`).  Returns -1.0
+    when ``g`` stays positive, and ``t0`` when ``g(t0) <= 0`` already.
+    """
+    c1 = derivative(c, w)
+    c2 = derivative(c1, w)
+    m2 = sup_bound(c2, w, T)
+    r = math.hypot(c[4], c[5])
+    cs = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
+    m2s = sup_bound(derivative(derivative(cs, w), w), w, T)
+    a = t0
+    ga = evaluate(c, w, a)
+    if ga <= 0.0:
+        return a
+    sa = evaluate_slow(c, w, a) if r > 0.0 else 0.0
+    stack_t = np.empty(96)
+    stack_g = np.empty(96)
+    stack_s = np.empty(96)
+    stack_t[0] = T
+    stack_g[0] = evaluate(c, w, T)
+    stack_s[0] = evaluate_slow(c, w, T) if r > 0.0 else 0.0
+    top = 0
+    while top >= 0:
+        b = stack_t[top]
+        gb = stack_g[top]
+        sb = stack_s[top]
+        h = b - a
+        if gb <= 0.0:
+            # a crossing lies in (a, b]; accept when g is monotone there
+            ga1 = evaluate(c1, w, a)
+            if ga1 < 0.0 and -ga1 > m2 * h or h < H_MIN or top >= 95:
+                return _refine(c, c1, w, a, b, ga, gb)
+        else:
+            q = 0.125 * h * h
+            if min(ga, gb) > m2 * q or (r > 0.0 and min(sa, sb) - m2s * q - r > 0.0) \
+                    or h < H_MIN or top >= 95:
+                a, ga, sa = b, gb, sb
+                top -= 1
+                continue
+        m = 0.5 * (a + b)
+        top += 1
+        stack_t[top] = m
+        stack_g[top] = evaluate(c, w, m)
+        stack_s[top] = evaluate_slow(c, w, m) if r > 0.0 else 0.0
+    return -1.0
