@@ -1,0 +1,488 @@
+r"""Closed-form results of Mao, Popov, Starcevic & Popov, *Friction* (2017), Part II.
+
+Every analytic formula of the paper lives here, once, vectorised over numpy
+arrays (scalars in give floats out). Equation numbers refer to the paper; the
+transcription numbers all equations of the resonant case IV "(32)", and they
+are told apart below by what they compute.
+
+Scaled variables (see ``MODEL.md``): time ``tau = omega t``; force unit
+``mu0 F_N0``; length unit ``mu0 F_N0 / (m omega^2)``; velocity unit
+``mu0 F_N0 / (m omega)``, in which the pulling velocity is the *inertial
+velocity* ``V = v0 m omega / (mu0 F_N0)`` (the axis of Fig. 6). The paper's
+groups are ``alpha = k_x/(m omega^2)``, ``beta = (k_x + k_xc)/(m omega^2)``
+(eq. 20), ``a = du_z/u_z0`` and ``vbar = v0/v0*`` (eq. 16).
+
+Defects of the paper corrected or made explicit here:
+
+* eq. (27): the exponent printed ``1,2`` is read as 1.2 (decimal comma);
+* eqs. (26), (27) are stated for ``a <= 1`` only (Fig. 4); for ``a > 1`` they
+  would give a negative static friction, contradicting eq. (2), so they refuse;
+* eqs. (21), (23) print the scaled contact force as
+  ``(u_z0/du_z + cos tau)(alpha - 1)/(beta - 1)``; with ``xi = u_x omega/v0*``
+  and ``v0*`` of eq. (12) (which has absolute values) the factor is
+  ``|alpha - 1|/|beta - 1|``. As printed it is negative for ``alpha < 1 < beta``
+  (e.g. the soft case I), i.e. friction would push the slider forward;
+* case IV with jumping (``a > 1``): the paper's ``1 - a/2`` neglects loss of
+  contact (and is negative for ``a > 2``); ``resonant_plateau`` and
+  ``resonant_plateau_exact`` use ``n = max(0, 1 + a cos tau)`` and the mean
+  normal force ``<n>`` instead.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = [
+    "SOFT_EXPONENT",
+    "Liftoff",
+    "SteadySliding",
+    "critical_velocity",
+    "critical_velocity_soft",
+    "critical_velocity_stiff",
+    "inertial_per_vbar",
+    "liftoff_phases",
+    "mean_normal_force",
+    "mu_ratio_soft",
+    "mu_ratio_stiff",
+    "resonant_plateau",
+    "resonant_plateau_exact",
+    "resonant_tau_star",
+    "resonant_velocity_ratio",
+    "resonant_velocity_ratio_exact",
+    "static_mu_ratio",
+    "steady_sliding",
+]
+
+FloatOrArray = float | NDArray[np.float64]
+
+#: Exponent of the soft-system law, eq. (27); printed "1,2" (decimal comma).
+SOFT_EXPONENT: float = 1.2
+
+#: ``sqrt(4 pi / 9)``, the linear coefficient of eq. (27).
+_SOFT_SLOPE: float = math.sqrt(4.0 * math.pi / 9.0)
+
+
+# --------------------------------------------------------------------------- helpers
+def _range_text(minimum: float | None, strict: bool, maximum: float | None,
+                allow_inf: bool) -> str:
+    if minimum is not None and maximum is not None:
+        text = f"in [{minimum:g}, {maximum:g}]"
+    elif minimum is not None:
+        text = f"{'>' if strict else '>='} {minimum:g}"
+    else:
+        return "a number (not nan)" if allow_inf else "finite"
+    return f"{text} (math.inf allowed)" if allow_inf else f"finite and {text}"
+
+
+def _checked(name: str, value: ArrayLike, *, minimum: float | None = None,
+             strict: bool = False, maximum: float | None = None,
+             allow_inf: bool = False) -> NDArray[np.float64]:
+    """Return ``value`` as a float array, or raise ValueError naming ``name``."""
+    arr = np.asarray(value, dtype=float)
+    bad = np.isnan(arr)
+    if not allow_inf:
+        bad |= np.isinf(arr)
+    with np.errstate(invalid="ignore"):
+        if minimum is not None:
+            bad |= (arr <= minimum) if strict else (arr < minimum)
+        if maximum is not None:
+            bad |= arr > maximum
+    if np.any(bad):
+        first = float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
+        raise ValueError(
+            f"{name} must be {_range_text(minimum, strict, maximum, allow_inf)}, got {first!r}"
+        )
+    return arr
+
+
+def _check_beta(alpha: NDArray[np.float64], beta: ArrayLike) -> NDArray[np.float64]:
+    b = np.asarray(beta, dtype=float)
+    bad = np.isnan(b) | ~(b > alpha)
+    if np.any(bad):
+        a_b, b_b, bad_b = np.broadcast_arrays(alpha, b, bad)
+        raise ValueError(
+            f"beta must be > alpha (= {float(a_b[bad_b][0])!r}) or math.inf, "
+            f"got {float(b_b[bad_b][0])!r}"
+        )
+    return b
+
+
+def _out(x: ArrayLike) -> FloatOrArray:
+    arr = np.asarray(x, dtype=float)
+    return float(arr) if arr.ndim == 0 else arr
+
+
+def _ratio_or_inf(num: NDArray[np.float64], den: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``num / den`` with ``0`` where ``num == 0`` and ``inf`` where only ``den == 0``."""
+    num, den = np.broadcast_arrays(num, den)
+    out = np.full(num.shape, np.inf)
+    np.divide(num, den, out=out, where=den != 0)
+    out[num == 0] = 0.0
+    return out
+
+
+# --------------------------------------------------------------------------- eq. (2)
+def static_mu_ratio(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Static limit ``mu(v0 -> 0) / mu0``, eq. (2).
+
+    The body sticks until the pulling force reaches the *smallest* friction
+    limit of the cycle, ``mu0 (F_N0 - dF_N)``: ``1 - a`` for ``a < 1``, ``0``
+    for ``a >= 1`` (jumping: the normal force vanishes once per period).
+
+    Parameters
+    ----------
+    amplitude : array_like
+        ``a = du_z / u_z0 >= 0``.
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    return _out(np.where(a < 1.0, 1.0 - a, 0.0))
+
+
+# --------------------------------------------------------------------------- eqs. (12)-(14)
+def critical_velocity(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike, k_zc: ArrayLike,
+                      k_xc: ArrayLike, k_x: ArrayLike, mass: ArrayLike) -> FloatOrArray:
+    r"""Critical ("insensitivity") velocity ``v0*`` in m/s, eq. (12).
+
+    .. math:: v_0^* = \mu_0 \omega \Delta u_z \frac{k_{z,c}}{k_{x,c}}
+              \frac{|k_{x,c} + k_x - m\omega^2|}{|k_x - m\omega^2|}
+
+    Above ``v0*`` the contact point of the periodic sliding solution, eq. (10),
+    never stops and ``mu = mu0``. Written as
+    ``mu0 omega du_z k_zc |1 + d/k_xc| / |d|`` with ``d = k_x - m omega^2`` so
+    that ``k_xc = inf`` (rigid contact) gives the limit
+    ``mu0 omega du_z k_zc / |d|``. Returns ``inf`` at ``d = 0`` (case IV),
+    ``0`` at ``k_x + k_xc = m omega^2`` (case III) and ``0`` when ``du_z = 0``
+    (no oscillation, no reduction of friction).
+    """
+    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
+    omega = _checked("omega", omega, minimum=0.0, strict=True)
+    du_z = _checked("du_z", du_z, minimum=0.0)
+    k_zc = _checked("k_zc", k_zc, minimum=0.0, strict=True)
+    k_xc = _checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True)
+    k_x = _checked("k_x", k_x, minimum=0.0)
+    mass = _checked("mass", mass, minimum=0.0, strict=True)
+    detuning = k_x - mass * omega**2
+    num = mu0 * omega * du_z * k_zc * np.abs(1.0 + detuning / k_xc)
+    return _out(_ratio_or_inf(num, np.abs(detuning)))
+
+
+def critical_velocity_soft(mu0: ArrayLike, dF_N: ArrayLike, mass: ArrayLike,
+                           omega: ArrayLike) -> FloatOrArray:
+    r"""Critical velocity of a soft system on a stiff contact (case I), eq. (13).
+
+    ``v0*_soft = mu0 dF_N / (m omega)``, the limit of eq. (12) for
+    ``k_x << m omega^2 << k_xc``, with ``dF_N = k_zc du_z``. The paper writes
+    ``|m omega^2|`` in the denominator; the modulus is redundant.
+    """
+    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
+    dF_N = _checked("dF_N", dF_N, minimum=0.0)
+    mass = _checked("mass", mass, minimum=0.0, strict=True)
+    omega = _checked("omega", omega, minimum=0.0, strict=True)
+    return _out(mu0 * dF_N / (mass * omega))
+
+
+def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
+                            k_zc: ArrayLike, k_xc: ArrayLike) -> FloatOrArray:
+    r"""Critical velocity of a stiff system (case II), eq. (14).
+
+    ``v0*_stiff = mu0 omega du_z k_zc / k_xc``, the limit of eq. (12) for
+    ``k_xc << |k_x - m omega^2|`` (Part I of the series). Independent of the
+    inertia; only the Mindlin ratio ``k_zc / k_xc`` enters.
+    """
+    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
+    omega = _checked("omega", omega, minimum=0.0, strict=True)
+    du_z = _checked("du_z", du_z, minimum=0.0)
+    k_zc = _checked("k_zc", k_zc, minimum=0.0, strict=True)
+    k_xc = _checked("k_xc", k_xc, minimum=0.0, strict=True)
+    return _out(mu0 * omega * du_z * k_zc / k_xc)
+
+
+def inertial_per_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
+    r"""Factor ``c`` in ``V = c * vbar``: the critical inertial velocity, eqs. (12), (16), (20).
+
+    With ``k_xc = (beta - alpha) m omega^2``, ``k_x - m omega^2 = (alpha - 1) m omega^2``
+    and ``du_z k_zc = a F_N0``, eq. (12) becomes
+    ``v0* = (mu0 F_N0 / (m omega)) * a |beta - 1| / ((beta - alpha) |alpha - 1|)``, so
+
+    .. math:: c = \frac{V}{\bar v} = \frac{a\,|\beta - 1|}{(\beta - \alpha)\,|\alpha - 1|}
+              = \frac{a\,|1 + (\alpha - 1)/(\beta - \alpha)|}{|\alpha - 1|}.
+
+    The second form gives the rigid-contact limit ``beta = inf``: ``c = a/|alpha - 1|``.
+    ``c = inf`` at ``alpha = 1`` (case IV), ``0`` at ``beta = 1`` (case III)
+    and ``0`` at ``a = 0``. In the soft limit (``alpha -> 0``, ``beta -> inf``)
+    ``c -> a``, i.e. eq. (13).
+    """
+    alpha = _checked("alpha", alpha, minimum=0.0)
+    beta = _check_beta(alpha, beta)
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    detuning = alpha - 1.0
+    num = a * np.abs(1.0 + detuning / (beta - alpha))
+    return _out(_ratio_or_inf(num, np.abs(detuning)))
+
+
+# --------------------------------------------------------------------------- eqs. (7)-(10)
+class SteadySliding(NamedTuple):
+    """Periodic continuous-sliding solution, eqs. (7), (8), (10), scaled (see module doc)."""
+
+    #: Body displacement minus the drift, ``y = x - V tau``.
+    y: FloatOrArray
+    #: Body velocity ``x'``.
+    velocity: FloatOrArray
+    #: Velocity of the contact point ``x_c'``; the solution is physical only if it is >= 0.
+    contact_velocity: FloatOrArray
+
+
+def steady_sliding(tau: ArrayLike, alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                   V: ArrayLike) -> SteadySliding:
+    r"""Periodic solution of permanent forward slip, eqs. (7), (8), (10), scaled.
+
+    In slip ``f = n(tau) = 1 + a cos tau`` and ``x'' + alpha x = alpha V tau - n``
+    (eq. 6). Its particular solution is (eq. 7, whose last term
+    ``mu0 k_zc du_z cos(omega t) / (m omega^2 - k_x)`` scales to ``a cos(tau)/(1 - alpha)``)
+
+    .. math:: x = V\tau - \frac{1}{\alpha} + \frac{a\cos\tau}{1 - \alpha}, \qquad
+              x' = V - \frac{a \sin\tau}{1 - \alpha}  \quad\text{(eq. 8)}.
+
+    Since ``f = (beta - alpha)(x - x_c)``, the contact point moves at
+    ``x_c' = x' - f'/(beta - alpha)`` (eq. 9), i.e. (eq. 10)
+
+    .. math:: x_c' = V - a \sin\tau \frac{\beta - 1}{(1 - \alpha)(\beta - \alpha)},
+
+    (``x_c' = x'`` for ``beta = inf``), whose minimum over a period is ``V - c``
+    with ``c = inertial_per_vbar(alpha, beta, a)``: the solution is a physical
+    motion (no stick) exactly when ``vbar >= 1``, eqs. (11)-(12).
+
+    Validity: ``alpha > 0``, ``alpha != 1`` (at resonance there is no periodic
+    solution), ``0 <= a <= 1`` (no loss of contact). Arguments broadcast.
+    """
+    tau = _checked("tau", tau)
+    alpha = _checked("alpha", alpha, minimum=0.0, strict=True)
+    if np.any(alpha == 1.0):
+        raise ValueError(
+            "alpha must differ from 1, got 1.0: at resonance (case IV) the sliding "
+            "solution of eqs. (7)-(8) does not exist"
+        )
+    beta = _check_beta(alpha, beta)
+    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    V = _checked("V", V, minimum=0.0)
+    body_amp = a / (1.0 - alpha)
+    contact_gain = 1.0 + (alpha - 1.0) / (beta - alpha)  # (beta - 1)/(beta - alpha)
+    y = -1.0 / alpha + body_amp * np.cos(tau)
+    velocity = V - body_amp * np.sin(tau)
+    contact_velocity = V - body_amp * contact_gain * np.sin(tau)
+    y, velocity, contact_velocity = np.broadcast_arrays(y, velocity, contact_velocity)
+    return SteadySliding(_out(y), _out(velocity), _out(contact_velocity))
+
+
+# --------------------------------------------------------------------------- eqs. (26), (27)
+def mu_ratio_stiff(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
+    r"""Semi-empirical law of Part I for a stiff system (case II), eq. (26).
+
+    .. math:: \frac{\mu}{\mu_0} = 1 - a\left[\tfrac34(\bar v - 1)^2
+              + \tfrac14(\bar v - 1)^4\right], \quad \bar v < 1,
+
+    and exactly ``1`` for ``vbar >= 1`` (the clamp is explicit: the polynomial
+    itself turns down again above ``vbar = 1``). ``vbar`` uses ``v0*`` of
+    eq. (14). Equals ``1 - a`` at ``vbar = 0`` (eq. 2), increases monotonically
+    (derivative ``-a[3/2 (vbar-1) + (vbar-1)^3] >= 0``) and joins ``1`` with zero
+    slope. Stated (Fig. 4) for ``0 <= a <= 1``; ``a > 1`` raises ValueError,
+    since it would give ``1 - a < 0`` at ``vbar = 0``, contradicting eq. (2).
+    """
+    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    u = np.minimum(v, 1.0) - 1.0
+    return _out(np.where(v < 1.0, 1.0 - a * (0.75 * u**2 + 0.25 * u**4), 1.0))
+
+
+def mu_ratio_soft(vbar: ArrayLike, amplitude: ArrayLike,
+                  exponent: float = SOFT_EXPONENT) -> FloatOrArray:
+    r"""Law of Teidelt et al. for a soft system on a stiff contact (case I), eq. (27).
+
+    .. math:: \frac{\mu}{\mu_0} = (1 - a) + a\left[\sqrt{4\pi/9}\,\bar v
+              + \left(1 - \sqrt{4\pi/9}\right)\bar v^{p}\right], \quad \bar v < 1,
+
+    and exactly ``1`` for ``vbar >= 1``; ``vbar`` uses ``v0*`` of eq. (13) and
+    ``a = dF_N / F_N0``. The transcription prints ``p`` as "1,2", read as 1.2
+    (decimal comma); it is a parameter so that it can be checked against the
+    numerics. Although ``1 - sqrt(4 pi/9) = -0.18 < 0``, the law is monotone on
+    ``[0, 1]`` for any ``p < sqrt(4pi/9)/(sqrt(4pi/9) - 1) = 6.5`` (slope at
+    ``vbar = 1`` is ``a[c + (1 - c) p] = 0.964 a`` for ``p = 1.2``: a kink, unlike
+    eq. 26). Stated for ``0 <= a <= 1`` (Fig. 4); for ``a > 1`` the static part
+    ``1 - a`` would be negative, contradicting eq. (2) (which gives 0), so
+    ``a > 1`` raises ValueError.
+    """
+    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    p = float(_checked("exponent", exponent, minimum=0.0, strict=True))
+    vc = np.minimum(v, 1.0)
+    law = (1.0 - a) + a * (_SOFT_SLOPE * vc + (1.0 - _SOFT_SLOPE) * vc**p)
+    return _out(np.where(v < 1.0, law, 1.0))
+
+
+# --------------------------------------------------------------------------- jumping
+class Liftoff(NamedTuple):
+    """Phases ``tau`` in ``[0, 2 pi)`` where contact is lost and regained."""
+
+    tau_off: FloatOrArray
+    tau_on: FloatOrArray
+
+
+def _contact_half_angle(a: NDArray[np.float64]) -> NDArray[np.float64]:
+    """``theta = arccos(-1/a)`` for ``a > 1``, ``pi`` otherwise: contact while ``|tau| < theta``."""
+    with np.errstate(divide="ignore"):
+        return np.where(a > 1.0, np.arccos(-1.0 / np.maximum(a, 1.0)), np.pi)
+
+
+def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Mean scaled normal force ``<n> = <max(0, 1 + a cos tau)> = <F_N>/F_N0``.
+
+    For ``a <= 1`` the contact never opens and ``<n> = 1``. For ``a > 1`` it is
+    closed for ``|tau| < theta = arccos(-1/a)``, so
+
+    .. math:: \langle n\rangle = \frac{1}{2\pi}\int_{-\theta}^{\theta}(1 + a\cos\tau)\,d\tau
+              = \frac{\theta + a\sin\theta}{\pi}, \quad \sin\theta = \sqrt{1 - a^{-2}},
+
+    which is the denominator of eq. (25) for a jumping body.
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    theta = _contact_half_angle(a)
+    return _out(np.where(a > 1.0, (theta + a * np.sin(theta)) / np.pi, 1.0))
+
+
+def liftoff_phases(amplitude: ArrayLike) -> Liftoff:
+    r"""Phases of loss of contact and touchdown, where ``1 + a cos tau = 0``.
+
+    ``tau_off = arccos(-1/a)`` (in ``(pi/2, pi]``) and ``tau_on = 2 pi - tau_off``
+    for ``a >= 1``; ``a = 1`` gives the grazing point ``(pi, pi)``; ``nan`` for
+    ``a < 1`` (no loss of contact).
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    with np.errstate(divide="ignore"):
+        off = np.where(a >= 1.0, np.arccos(-1.0 / np.maximum(a, 1.0)), np.nan)
+    return Liftoff(_out(off), _out(2.0 * np.pi - off))
+
+
+# ------------------------------------------------------------------ case IV, eqs. (27)-(32)
+def _drive_work(a: NDArray[np.float64]) -> NDArray[np.float64]:
+    r"""``E(a) = 2 pi <n cos tau>``: ``pi a`` for ``a <= 1``, ``a theta + sin theta`` above."""
+    theta = _contact_half_angle(a)
+    return np.where(a > 1.0, a * theta + np.sin(theta), np.pi * a)
+
+
+def resonant_velocity_ratio(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Paper's approximate ``v0/dv`` of the resonant oscillation (case IV, the eq. after (32)).
+
+    .. math:: \frac{v_0}{\Delta v} = 1 - \frac12\left(\frac{\pi\,\Delta F}
+              {4(F_{N,0} + \Delta F)}\right)^2, \quad \Delta F / F_{N,0} = a,
+
+    from the energy balance of ``resonant_velocity_ratio_exact`` with
+    ``sin tau* ~ tau*``, ``cos tau* ~ 1``: ``4(1 + a) tau* = pi a``, and
+    ``tau* ~ sqrt(2(1 - v0/dv))``. For ``a > 1`` the right-hand side ``pi a``
+    becomes ``a theta + sin theta`` (loss of contact, ``theta = arccos(-1/a)``).
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    tau_star = _drive_work(a) / (4.0 * (1.0 + a))
+    return _out(1.0 - 0.5 * tau_star**2)
+
+
+def resonant_tau_star(v_ratio: ArrayLike, *, approximate: bool = False) -> FloatOrArray:
+    r"""Half-width ``tau*`` of the reverse-slip window of case IV (eqs. numbered (32)).
+
+    ``x' = dv cos tau`` exceeds the substrate velocity ``v0`` for
+    ``|tau| < tau* = arccos(v0/dv)``; with ``approximate=True`` the paper's
+    ``tau* ~ sqrt(2(1 - v0/dv))``, accurate for ``v0/dv -> 1``.
+    ``v_ratio = v0/dv`` must lie in ``[-1, 1]`` (``<= 1`` if approximate).
+    """
+    if approximate:
+        r = _checked("v_ratio", v_ratio, maximum=1.0)
+        return _out(np.sqrt(2.0 * (1.0 - r)))
+    r = _checked("v_ratio", v_ratio, minimum=-1.0, maximum=1.0)
+    return _out(np.arccos(r))
+
+
+def _resonant_tau_star_exact(a: float) -> float:
+    if a == 0.0:
+        return 0.0
+    from scipy.optimize import brentq
+
+    work = float(_drive_work(np.asarray(a)))
+
+    def balance(t: float) -> float:
+        return 4.0 * math.sin(t) + 2.0 * a * (t + math.sin(t) * math.cos(t)) - work
+
+    return float(brentq(balance, 0.0, 0.5 * math.pi, xtol=1e-300, rtol=1e-15))
+
+
+def _tau_star_exact(a: NDArray[np.float64]) -> NDArray[np.float64]:
+    return np.vectorize(_resonant_tau_star_exact, otypes=[float])(a)
+
+
+def resonant_velocity_ratio_exact(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Exact root ``r = v0/dv`` of the paper's energy balance for case IV (first eq. (32)).
+
+    With ``x' = dv cos tau`` (eq. 30) the mean power of friction vanishes:
+    ``<n(tau) cos tau sign(r - cos tau)> = 0``. The sign is ``-1`` on
+    ``|tau| < tau* = arccos r`` and ``+1`` elsewhere, so (for ``a <= 1``)
+
+    .. math:: \int_0^{2\pi}(\cos\tau + a\cos^2\tau)\,d\tau
+              - 2\int_{-\tau^*}^{\tau^*}(\cos\tau + a\cos^2\tau)\,d\tau
+              = \pi a - 4\sin\tau^* - 2a(\tau^* + \sin\tau^*\cos\tau^*) = 0.
+
+    For ``a > 1`` (jumping) ``n = max(0, 1 + a cos tau)`` and the first
+    integral is ``a theta + sin theta`` with ``theta = arccos(-1/a) > pi/2 > tau*``
+    (contact is lost only where the sign is ``+1``). The left side is increasing
+    in ``tau*`` on ``[0, pi/2]``, negative at 0 and ``>= 3`` at ``pi/2``: one root,
+    found with ``scipy.optimize.brentq``. (The phase of ``x'`` relative to ``n``
+    assumed in eq. (30) is consistent: the quadrature component of the
+    fundamental of the friction force vanishes only for phase 0 or pi.)
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    return _out(np.cos(_tau_star_exact(a)))
+
+
+def resonant_plateau(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Paper's plateau of ``mu/mu0`` at large velocity in case IV, last eq. (32).
+
+    ``mu/mu0 = 1 - (2/pi)(tau* + a sin tau*) / <n>`` (see
+    ``resonant_plateau_exact``) with ``tau* + a sin tau* ~ (1 + a) tau*`` and
+    ``(1 + a) tau* ~ E/4`` gives ``mu/mu0 ~ 1 - <n cos tau>/<n>``, i.e.
+
+    * ``1 - a/2`` for ``a <= 1`` (the paper's result; ``dF/F_N0 = a``);
+    * ``1 - (a theta + sin theta) / (2 (theta + a sin theta))`` for ``a > 1``,
+      ``theta = arccos(-1/a)``: the same approximation with loss of contact and
+      the mean normal force of eq. (25). The paper gives no formula here; its
+      ``1 - a/2`` would neglect loss of contact (negative for ``a > 2``). This one
+      tends to ``1 - pi/4`` as ``a -> inf``.
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    theta = _contact_half_angle(a)
+    jumping = 1.0 - (a * theta + np.sin(theta)) / (2.0 * (theta + a * np.sin(theta)))
+    return _out(np.where(a > 1.0, jumping, 1.0 - 0.5 * a))
+
+
+def resonant_plateau_exact(amplitude: ArrayLike) -> FloatOrArray:
+    r"""Plateau of ``mu/mu0`` in case IV without the small-``tau*`` approximations.
+
+    The friction force on the body is ``mu0 F_N sign(v0 - x')``, so with
+    ``x' = dv cos tau`` and ``tau* = arccos(v0/dv)`` from
+    ``resonant_velocity_ratio_exact`` (eq. 25, ``mu = <F_x>/<F_N>``)
+
+    .. math:: \frac{\mu}{\mu_0}
+              = \frac{\langle n\,\mathrm{sign}(r - \cos\tau)\rangle}{\langle n\rangle}
+              = \frac{1}{\langle n\rangle}\left[\langle n\rangle
+              - \frac{2}{2\pi}\int_{-\tau^*}^{\tau^*}(1 + a\cos\tau)\,d\tau\right]
+              = 1 - \frac{2}{\pi}\,\frac{\tau^* + a\sin\tau^*}{\langle n\rangle},
+
+    with ``<n> = 1`` for ``a <= 1`` (the paper's second eq. (32)) and
+    ``mean_normal_force(a)`` for ``a > 1``. Valid within the paper's ansatz
+    (harmonic body velocity, rigid contact ``beta = inf``, ``alpha = 1``,
+    large ``v0``); the solver is the judge of the ansatz.
+    """
+    a = _checked("amplitude", amplitude, minimum=0.0)
+    tau = _tau_star_exact(a)
+    n_mean = np.asarray(mean_normal_force(a))
+    return _out(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)
