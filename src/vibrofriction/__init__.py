@@ -1,2 +1,37 @@
-"""vibrofriction: friction under normal oscillations (Mao, Popov, Starcevic, Popov 2017)."""
+"""vibrofriction: friction under normal oscillations.
+
+Implements and extends X. Mao, V. L. Popov, J. Starcevic, M. Popov, "Reduction of
+friction by normal oscillations. II. In-plane system dynamics", Friction (2017).
+"""
+
+from .params import Case, Dimensionless, Physical, classify
+from .solver import (
+    Event,
+    FrictionResult,
+    FrictionResults,
+    History,
+    SectionState,
+    SolverSettings,
+    Status,
+    friction_coefficient,
+    simulate,
+)
+
 __version__ = "0.1.0"
+
+__all__ = [
+    "Case",
+    "Dimensionless",
+    "Event",
+    "FrictionResult",
+    "FrictionResults",
+    "History",
+    "Physical",
+    "SectionState",
+    "SolverSettings",
+    "Status",
+    "classify",
+    "friction_coefficient",
+    "simulate",
+    "__version__",
+]

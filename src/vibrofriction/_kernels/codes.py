@@ -23,3 +23,4 @@ ST_PERIODIC = 0
 ST_AVERAGED = 1
 ST_NOT_CONVERGED = 2
 ST_FAILED = 3  # the event budget was exhausted or the integration got stuck
+ST_SLIDING = 4  # continuous forward sliding proven (mu/mu0 = 1 exactly)

@@ -24,13 +24,153 @@ from .codes import (
     ST_FAILED,
     ST_NOT_CONVERGED,
     ST_PERIODIC,
+    ST_SLIDING,
     STICK,
+    SLIP_POS,
 )
 from .integrate import TWO_PI, initial_state, liftoff_phases, segment
 from .jit import jit
 
 MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
 N_ACC = 6  # accumulators: int_f, int_n, t_stick, t_slip, t_slip_neg, t_flight
+FIRST_NEWTON = 12  # first attempt to solve the periodicity condition, in periods
+
+
+@jit
+def period_map(y, yd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
+    """Integrate ``p`` drive periods from the section; returns the state and event count."""
+    theta = 0.0
+    k = 0
+    events = 0
+    ok_all = True
+    while k < p:
+        t, theta, y, yd, f, ph, ev, i_f, i_n, ok = segment(
+            theta, y, yd, f, ph, alpha, beta, a, V, th_off, th_on)
+        ok_all = ok_all and ok
+        if ev != EV_SECTION:
+            events += 1
+            if events > max_events:
+                return y, yd, f, ph, events, False
+        if theta >= TWO_PI:
+            theta = 0.0
+            k += 1
+    return y, yd, f, ph, events, ok_all
+
+
+@jit
+def _unpack(z, ph, alpha, a, V, rigid):
+    """Section state from the free coordinates ``z`` of phase ``ph``."""
+    if ph == STICK:
+        if rigid:
+            return z[0], -V, -alpha * z[0]
+        return z[0], z[1], z[2]
+    s = 1.0 if ph == SLIP_POS else -1.0
+    return z[0], z[1], s * (1.0 + a)
+
+
+@jit
+def _solve_small(m, r, nd):
+    """Solve ``m x = r`` for ``nd <= 3`` by Gaussian elimination with pivoting."""
+    m = m.copy()
+    r = r.copy()
+    for c in range(nd):
+        piv = c
+        for i in range(c + 1, nd):
+            if abs(m[i, c]) > abs(m[piv, c]):
+                piv = i
+        if m[piv, c] == 0.0:
+            return r, False
+        if piv != c:
+            for j in range(nd):
+                m[c, j], m[piv, j] = m[piv, j], m[c, j]
+            r[c], r[piv] = r[piv], r[c]
+        for i in range(c + 1, nd):
+            q = m[i, c] / m[c, c]
+            for j in range(c, nd):
+                m[i, j] -= q * m[c, j]
+            r[i] -= q * r[c]
+    x = np.zeros(nd)
+    for i in range(nd - 1, -1, -1):
+        acc = r[i]
+        for j in range(i + 1, nd):
+            acc -= m[i, j] * x[j]
+        x[i] = acc / m[i, i]
+    return x, True
+
+
+@jit
+def newton_orbit(y, yd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
+    """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
+
+    Only attracting orbits are accepted (spectral radius of ``DP^p`` below 1), so
+    the answer is the attractor the iteration was approaching, not a nearby
+    unstable orbit.  Returns ``(ok, y, y', f, events)``.
+    """
+    rigid = math.isinf(beta)
+    nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
+    z = np.array([y, yd, f])
+    events = 0
+    jac = np.zeros((3, 3))
+    for _ in range(8):
+        y0, yd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
+        y1, yd1, f1, ph1, ev, ok = period_map(y0, yd0, f0, ph, p, alpha, beta, a, V,
+                                              th_off, th_on, max_events)
+        events += ev
+        if ph1 != ph or not ok:
+            return False, y, yd, f, events
+        r = np.array([y1 - y0, yd1 - yd0, f1 - f0])
+        scale = 1.0 + alpha * abs(y0) + abs(yd0) + abs(f0)
+        res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
+        if res <= tol * scale:
+            # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
+            if nd >= 2:
+                tr = jac[0, 0] + jac[1, 1] + (jac[2, 2] if nd == 3 else 0.0)
+                mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
+                ev_mod = np.abs(np.linalg.eigvals(mat))
+                if tr != tr or np.max(ev_mod) >= 1.0 - 1e-9:
+                    return False, y, yd, f, events
+            elif abs(jac[0, 0] + 1.0) >= 1.0 - 1e-9:
+                return False, y, yd, f, events
+            return True, y0, yd0, f0, events
+        for j in range(nd):
+            h = 1e-7 * (1.0 + abs(z[j]))
+            zp = z.copy()
+            zp[j] += h
+            y2, yd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
+            y3, yd3, f3, ph3, ev, ok = period_map(y2, yd2, f2, ph, p, alpha, beta, a, V,
+                                                  th_off, th_on, max_events)
+            events += ev
+            if ph3 != ph or not ok:
+                return False, y, yd, f, events
+            jac[0, j] = ((y3 - y2) - r[0]) / h
+            jac[1, j] = ((yd3 - yd2) - r[1]) / h
+            jac[2, j] = ((f3 - f2) - r[2]) / h
+        dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
+        if not ok:
+            return False, y, yd, f, events
+        for j in range(nd):
+            z[j] += dz[j]
+    return False, y, yd, f, events
+
+
+@jit
+def sliding_certificate(y, yd, ph, alpha, beta, a, V):
+    """Is continuous forward sliding proven from this section state (eqs. 7-12)?
+
+    In slip+ the motion is the steady sliding solution plus a free oscillation at
+    ``sqrt(alpha)`` (undamped: slip dissipates nothing it could store).  The
+    contact point never stops if ``V - V*`` exceeds the free oscillation's velocity
+    amplitude; then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.
+    """
+    if ph != SLIP_POS or alpha == 1.0:
+        return False
+    if math.isinf(beta):
+        vstar = a / abs(alpha - 1.0)
+    else:
+        vstar = a * abs(beta - 1.0) / ((beta - alpha) * abs(alpha - 1.0))
+    yh = y + 1.0 / alpha + a / (alpha - 1.0)  # minus the particular solution at tau = 0
+    amp = math.sqrt(yd * yd + alpha * yh * yh)
+    return V - vstar - amp > 1e-9 * (1.0 + V)
 
 
 @jit
@@ -65,6 +205,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
     ring_z[0, 0], ring_z[0, 1], ring_z[0, 2], ring_z[0, 3] = y, yd, f, ph
     nchk = 0
     next_chk = min_periods
+    next_newton = FIRST_NEWTON
     k = 0
     events = 0
     degenerate = 0
@@ -128,6 +269,33 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
             dprev[p] = d
         if found:
             break
+        if sliding_certificate(y, yd, ph, alpha, beta, a, V):
+            mu = 1.0
+            err = 0.0
+            status = ST_SLIDING
+            win[:] = 0.0
+            win[3] = 1.0
+            break
+        if k == next_newton and k < max_periods:
+            next_newton = 2 * next_newton + FIRST_NEWTON
+            # try the period whose section distance is smallest, then p = 1
+            pbest = 1
+            for p in range(2, min(k, MAX_PERIOD) + 1):
+                if dprev[p] < dprev[pbest]:
+                    pbest = p
+            for attempt in range(2):
+                p = pbest if attempt == 0 else 1
+                if attempt == 1 and pbest == 1:
+                    break
+                nok, ny, nyd, nf, nev = newton_orbit(y, yd, f, ph, p, alpha, beta, a, V,
+                                                     th_off, th_on, 0.1 * tol_state,
+                                                     max_events)
+                events += nev
+                if nok:
+                    y, yd, f = ny, nyd, nf
+                    ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2] = y, yd, f
+                    dprev[:] = np.inf
+                    break
         if k == next_chk or k >= max_periods:
             if nchk < ncheck:
                 chk_k[nchk] = k
@@ -180,8 +348,10 @@ def steady_state_many(alpha, beta, a, V, init_kind, init, max_periods, min_perio
                          tol_mean, max_events)
         out_f[i, 0] = r[0]
         out_f[i, 1] = r[3]
-        for j in range(4):
-            out_f[i, 2 + j] = r[6 + j]
+        out_f[i, 2] = r[6]
+        out_f[i, 3] = r[7]
+        out_f[i, 4] = r[8]
+        out_f[i, 5] = r[9]
         out_f[i, 6] = r[10]
         out_f[i, 7] = r[11]
         out_f[i, 8] = r[12]

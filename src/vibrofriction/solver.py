@@ -1,0 +1,457 @@
+r"""The macroscopic coefficient of friction and time histories (paper eqs. 21-25).
+
+:func:`friction_coefficient` returns ``mu_macro / mu0 = <F_x>/<F_N>`` (eq. 25) in the
+steady state, computed by the exact event-driven kernels of
+:mod:`vibrofriction._kernels`; :func:`simulate` returns a densely sampled time
+history (Fig. 2).  Velocities are given as ``vbar = v0/v0*`` (eq. 16), as the
+inertial velocity ``v_inertial = v0 m omega/(mu0 F_N0)`` (the axis of Fig. 6, the
+only one that exists in cases III and IV) or, for a :class:`Physical` system, as
+``v0`` in m/s.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass, field, fields
+from typing import Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import theory
+from ._kernels import codes
+from ._kernels.integrate import TWO_PI, initial_state, run_periods, sample
+from ._kernels.steady import steady_state_many
+from .params import Dimensionless, Physical
+
+__all__ = [
+    "Event",
+    "FrictionResult",
+    "FrictionResults",
+    "History",
+    "SectionState",
+    "SolverSettings",
+    "Status",
+    "friction_coefficient",
+    "simulate",
+]
+
+System = Dimensionless | Physical
+
+
+class Status(enum.Enum):
+    """How a steady-state result was obtained; ``.message`` says it for humans."""
+
+    PERIODIC = "periodic"
+    SLIDING = "continuous sliding"
+    AVERAGED = "averaged"
+    NOT_CONVERGED = "not converged"
+    FAILED = "failed"
+    STATIC = "static limit"
+
+    @property
+    def message(self) -> str:
+        return _STATUS_MESSAGES[self]
+
+    @property
+    def ok(self) -> bool:
+        return self in (Status.PERIODIC, Status.SLIDING, Status.AVERAGED, Status.STATIC)
+
+
+_STATUS_MESSAGES = {
+    Status.PERIODIC: "a periodic orbit was found on the Poincare section and averaged over "
+    "exactly one of its periods",
+    Status.SLIDING: "continuous forward sliding is proven: the contact point can never stop "
+    "again (the free oscillation is smaller than v0 - v0*, eqs. 10-12), so mu = mu0 exactly",
+    Status.AVERAGED: "no periodic orbit within the period bound; the running average over "
+    "the last half of the run agrees with the half before within tol_mean",
+    Status.NOT_CONVERGED: "max_periods was reached before a periodic orbit was found or the "
+    "running average settled; `error` is the disagreement of the last two averaging windows: "
+    "try increasing `max_periods`",
+    Status.FAILED: "the event budget `max_events` was exhausted or the integration could not "
+    "advance (chattering); the value is not reliable",
+    Status.STATIC: "zero sliding velocity: the static limit of eq. (2), the limit of the "
+    "steady state as v0 -> 0+",
+}
+_STATUS_BY_CODE = {
+    codes.ST_PERIODIC: Status.PERIODIC,
+    codes.ST_AVERAGED: Status.AVERAGED,
+    codes.ST_NOT_CONVERGED: Status.NOT_CONVERGED,
+    codes.ST_FAILED: Status.FAILED,
+    codes.ST_SLIDING: Status.SLIDING,
+}
+_PHASE_CODE = {name: i for i, name in enumerate(codes.PHASE_NAMES)}
+
+
+@dataclass(frozen=True)
+class SolverSettings:
+    """Accuracy and effort bounds of the steady-state search.
+
+    Parameters
+    ----------
+    max_periods : give up (status ``NOT_CONVERGED``) after this many drive periods.
+    min_periods : first checkpoint of the running average (doubling afterwards).
+    tol_state : relative distance of section states that counts as periodic.
+    tol_mean : agreement of successive averaging windows that counts as converged.
+    max_events : event budget per point (status ``FAILED`` beyond).
+    """
+
+    max_periods: int = 20000
+    min_periods: int = 64
+    tol_state: float = 1e-10
+    tol_mean: float = 1e-7
+    max_events: int = 20_000_000
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.max_periods, int | np.integer) and self.max_periods >= 1):
+            raise ValueError(f"max_periods must be an integer >= 1, got {self.max_periods!r}")
+        if not (isinstance(self.min_periods, int | np.integer) and self.min_periods >= 1):
+            raise ValueError(f"min_periods must be an integer >= 1, got {self.min_periods!r}")
+        for name in ("tol_state", "tol_mean"):
+            v = getattr(self, name)
+            if not (math.isfinite(v) and 0.0 < v < 1.0):
+                raise ValueError(f"{name} must be in (0, 1), got {v!r}")
+        if not (isinstance(self.max_events, int | np.integer) and self.max_events >= 1):
+            raise ValueError(f"max_events must be an integer >= 1, got {self.max_events!r}")
+
+
+@dataclass(frozen=True)
+class SectionState:
+    """A state on the Poincare section ``tau = 2 pi k`` in the scaled variables.
+
+    ``y = x - V tau`` is the body displacement without the drift (unit
+    ``mu0 F_N0/(m omega^2)``), ``y_dot`` its rate, ``f`` the tangential contact force
+    (unit ``mu0 F_N0``) and ``phase`` one of ``stick``, ``slip+``, ``slip-``.
+    """
+
+    y: float
+    y_dot: float
+    f: float
+    phase: str
+
+    def __post_init__(self) -> None:
+        if self.phase not in ("stick", "slip+", "slip-"):
+            raise ValueError(f"phase must be 'stick', 'slip+' or 'slip-', got {self.phase!r}")
+        for name in ("y", "y_dot", "f"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+
+
+@dataclass(frozen=True)
+class FrictionResult:
+    """The steady state at one point (paper eq. 25) and how it was obtained.
+
+    ``mu_ratio`` is ``mu_macro/mu0``; ``error`` an estimate of its absolute error;
+    ``period`` the orbit's period in drive periods (0 when not periodic);
+    ``periods`` and ``events`` the work done; the fractions are of time in the
+    averaging window; ``final_state`` the last section state (a start for
+    continuation).
+    """
+
+    mu_ratio: float
+    status: Status
+    error: float
+    period: int
+    periods: int
+    events: int
+    stick_fraction: float
+    slip_fraction: float
+    reverse_slip_fraction: float
+    flight_fraction: float
+    final_state: SectionState | None
+    system: Dimensionless
+    v_inertial: float
+
+    @property
+    def message(self) -> str:
+        extra = f" (period {self.period})" if self.status is Status.PERIODIC else ""
+        return f"{self.status.value}{extra}: {self.status.message}"
+
+    @property
+    def success(self) -> bool:
+        return self.status.ok
+
+    @property
+    def vbar(self) -> float:
+        """``v0/v0*``, or nan where ``v0*`` is zero or infinite (cases III, IV)."""
+        try:
+            return float(self.system.inertial_to_vbar(self.v_inertial))
+        except ValueError:
+            return math.nan
+
+
+@dataclass(frozen=True)
+class FrictionResults:
+    """Results over an array of velocities: the fields of :class:`FrictionResult` as arrays."""
+
+    mu_ratio: NDArray[np.float64]
+    status: NDArray[np.object_]
+    error: NDArray[np.float64]
+    period: NDArray[np.int64]
+    periods: NDArray[np.int64]
+    events: NDArray[np.int64]
+    stick_fraction: NDArray[np.float64]
+    slip_fraction: NDArray[np.float64]
+    reverse_slip_fraction: NDArray[np.float64]
+    flight_fraction: NDArray[np.float64]
+    final_state: NDArray[np.object_]
+    system: Dimensionless
+    v_inertial: NDArray[np.float64]
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return self.mu_ratio.shape
+
+    def __len__(self) -> int:
+        return len(self.mu_ratio)
+
+    def __getitem__(self, index: int | tuple[int, ...]) -> FrictionResult:
+        kw = {f.name: getattr(self, f.name) for f in fields(self)}
+        out = {k: (v if k == "system" else v[index]) for k, v in kw.items()}
+        for k in ("mu_ratio", "error", "stick_fraction", "slip_fraction",
+                  "reverse_slip_fraction", "flight_fraction", "v_inertial"):
+            out[k] = float(out[k])
+        for k in ("period", "periods", "events"):
+            out[k] = int(out[k])
+        return FrictionResult(**out)
+
+    def __iter__(self):
+        for i in np.ndindex(self.shape):
+            yield self[i]
+
+    @property
+    def success(self) -> NDArray[np.bool_]:
+        return np.vectorize(lambda s: s.ok, otypes=[bool])(self.status)
+
+
+@dataclass(frozen=True)
+class Event:
+    """A transition at drive time ``tau``: ``kind`` and the phases before and after."""
+
+    tau: float
+    kind: str
+    before: str
+    after: str
+
+
+@dataclass(frozen=True)
+class History:
+    """A time history sampled from the closed forms (Fig. 2).
+
+    All quantities are scaled (MODEL.md): ``tau = omega t``; ``x`` body position and
+    ``x_dot`` its velocity (units ``mu0 F_N0/(m omega^2)`` and ``mu0 F_N0/(m omega)``);
+    ``f`` the tangential contact force and ``n`` the ``mu0``-scaled normal force, both
+    in units of ``mu0 F_N0``; ``phase`` the phase name at each sample; ``events``
+    every transition with its exact time.  Sample times include every event time
+    (on both sides), so phase boundaries are sharp.
+    """
+
+    tau: NDArray[np.float64]
+    x: NDArray[np.float64]
+    x_dot: NDArray[np.float64]
+    f: NDArray[np.float64]
+    n: NDArray[np.float64]
+    phase: NDArray[np.str_]
+    events: tuple[Event, ...]
+    system: Dimensionless
+    v_inertial: float
+    final_state: SectionState | None = field(default=None)
+
+    def time(self, physical: Physical) -> NDArray[np.float64]:
+        """Sample times in seconds for a physical system (``t = tau/omega``)."""
+        return self.tau / physical.omega
+
+
+# --------------------------------------------------------------------------- helpers
+def _dimensionless(system: System) -> Dimensionless:
+    if isinstance(system, Physical):
+        return system.to_dimensionless()
+    if isinstance(system, Dimensionless):
+        return system
+    raise TypeError(f"system must be a Dimensionless or Physical, got {type(system).__name__}")
+
+
+def _inertial_velocity(system: System, vbar, v_inertial, v0) -> NDArray[np.float64]:
+    given = [name for name, v in (("vbar", vbar), ("v_inertial", v_inertial), ("v0", v0))
+             if v is not None]
+    if len(given) != 1:
+        raise ValueError(f"give exactly one of vbar, v_inertial, v0 (got {given or 'none'})")
+    dim = _dimensionless(system)
+    if v0 is not None:
+        if not isinstance(system, Physical):
+            raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
+        return np.asarray(system.v0_to_inertial(v0), dtype=float)
+    if vbar is not None:
+        return np.asarray(dim.vbar_to_inertial(vbar), dtype=float)
+    arr = np.asarray(v_inertial, dtype=float)
+    bad = ~(np.isfinite(arr) & (arr >= 0.0))
+    if np.any(bad):
+        first = float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
+        raise ValueError(f"v_inertial must be finite and >= 0, got {first!r}")
+    return arr
+
+
+def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
+    init = np.zeros((n, 4))
+    if isinstance(initial, SectionState):
+        init[:] = (initial.y, initial.y_dot, initial.f, _PHASE_CODE[initial.phase])
+        return 2, init
+    if isinstance(initial, np.ndarray) and initial.dtype == object:
+        for i, s in enumerate(initial.ravel()):
+            init[i] = (s.y, s.y_dot, s.f, _PHASE_CODE[s.phase])
+        return 2, init
+    if initial == "sliding":
+        return 0, init
+    if initial == "rest":
+        return 1, init
+    raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
+
+
+def _section_state(y: float, yd: float, f: float, phase: int) -> SectionState | None:
+    if not (math.isfinite(y) and math.isfinite(yd) and math.isfinite(f)) or phase > 2:
+        return None
+    return SectionState(float(y), float(yd), float(f), codes.PHASE_NAMES[int(phase)])
+
+
+# --------------------------------------------------------------------------- public API
+def friction_coefficient(
+    system: System,
+    vbar: ArrayLike | None = None,
+    *,
+    v_inertial: ArrayLike | None = None,
+    v0: ArrayLike | None = None,
+    initial: str | SectionState = "sliding",
+    settings: SolverSettings | None = None,
+) -> FrictionResult | FrictionResults:
+    """Macroscopic coefficient of friction ``mu_macro/mu0`` in the steady state (eq. 25).
+
+    Parameters
+    ----------
+    system : a :class:`Dimensionless` ``(alpha, beta, amplitude)`` (eq. 20) or a
+        :class:`Physical` system in SI units.
+    vbar, v_inertial, v0 : the sliding velocity, exactly one of: ``v0/v0*`` (eq. 16),
+        ``v0 m omega/(mu0 F_N0)`` (Fig. 6; required in cases III and IV), or m/s
+        (Physical systems only).  Scalars give a :class:`FrictionResult`, arrays a
+        :class:`FrictionResults` of the same shape.
+    initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
+        on at ``tau = 0``, MODEL.md), ``"rest"``, or a :class:`SectionState` (e.g. the
+        ``final_state`` of another result, for continuation).  Coexisting attractors
+        make the initial state part of the result's definition.
+    settings : accuracy and effort bounds (:class:`SolverSettings`).
+    """
+    dim = _dimensionless(system)
+    settings = settings or SolverSettings()
+    V = _inertial_velocity(system, vbar, v_inertial, v0)
+    scalar = V.ndim == 0
+    flat = np.ascontiguousarray(np.atleast_1d(V).ravel(), dtype=float)
+    n = flat.size
+    kind, init = _initial(initial, n)
+    out_f = np.full((n, 9), np.nan)
+    out_i = np.zeros((n, 6), dtype=np.int64)
+    moving = flat > 0.0
+    if np.any(moving):
+        idx = np.flatnonzero(moving)
+        m = idx.size
+        of = np.empty((m, 9))
+        oi = np.empty((m, 6), dtype=np.int64)
+        steady_state_many(
+            np.full(m, dim.alpha), np.full(m, dim.beta), np.full(m, dim.amplitude),
+            flat[idx], kind, np.ascontiguousarray(init[idx]), int(settings.max_periods),
+            int(settings.min_periods), float(settings.tol_state), float(settings.tol_mean),
+            int(settings.max_events), of, oi)
+        out_f[idx] = of
+        out_i[idx] = oi
+    static = float(theory.static_mu_ratio(dim.amplitude))
+    status = np.empty(n, dtype=object)
+    states = np.empty(n, dtype=object)
+    for i in range(n):
+        if moving[i]:
+            status[i] = _STATUS_BY_CODE[int(out_i[i, 0])]
+            states[i] = _section_state(*out_f[i, 6:9], int(out_i[i, 4]))
+        else:
+            status[i] = Status.STATIC
+            out_f[i, 0] = static
+            out_f[i, 1] = 0.0
+            out_f[i, 2:6] = (1.0, 0.0, 0.0, 0.0) if dim.amplitude < 1 else math.nan
+            states[i] = None
+    shape = V.shape
+    res = FrictionResults(
+        mu_ratio=out_f[:, 0].reshape(shape), status=status.reshape(shape),
+        error=out_f[:, 1].reshape(shape), period=out_i[:, 1].reshape(shape),
+        periods=out_i[:, 2].reshape(shape), events=out_i[:, 3].reshape(shape),
+        stick_fraction=out_f[:, 2].reshape(shape), slip_fraction=out_f[:, 3].reshape(shape),
+        reverse_slip_fraction=out_f[:, 4].reshape(shape),
+        flight_fraction=out_f[:, 5].reshape(shape), final_state=states.reshape(shape),
+        system=dim, v_inertial=flat.reshape(shape))
+    if scalar:
+        return res[()]
+    return res
+
+
+def simulate(
+    system: System,
+    vbar: float | None = None,
+    *,
+    v_inertial: float | None = None,
+    v0: float | None = None,
+    periods: float = 5.0,
+    samples_per_period: int = 400,
+    initial: str | SectionState = "sliding",
+    settings: SolverSettings | None = None,
+) -> History:
+    """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
+
+    ``initial="steady"`` starts from the steady state found by
+    :func:`friction_coefficient` (its final section state), so the history shows
+    the periodic orbit rather than the transient.
+    """
+    dim = _dimensionless(system)
+    V = _inertial_velocity(system, vbar, v_inertial, v0)
+    if V.ndim != 0:
+        raise ValueError("simulate takes one velocity, got an array")
+    V = float(V)
+    if not (math.isfinite(periods) and periods > 0):
+        raise ValueError(f"periods must be finite and > 0, got {periods!r}")
+    if not (isinstance(samples_per_period, int) and samples_per_period >= 2):
+        raise ValueError(f"samples_per_period must be an integer >= 2, got {samples_per_period!r}")
+    if isinstance(initial, str) and initial == "steady":
+        initial = friction_coefficient(dim, v_inertial=V, settings=settings).final_state
+        if initial is None:
+            initial = "sliding"
+    kind, init = _initial(initial, 1)
+    if kind == 2:
+        y, yd, f, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
+    else:
+        y, yd, f, ph = initial_state(kind, dim.alpha, dim.beta, dim.amplitude, V)
+    whole = int(math.ceil(periods))
+    cap = 4096 * whole
+    while True:
+        seg = np.empty((cap, 9))
+        m = run_periods(0.0, y, yd, f, ph, dim.alpha, dim.beta, dim.amplitude, V, whole,
+                        cap, seg)
+        if m > 0:
+            break
+        cap *= 4
+    seg = seg[:m]
+    tau_end = TWO_PI * periods
+    grid = np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1)
+    ev_rows = [j for j in range(1, m) if int(seg[j, 5]) != codes.EV_SECTION]
+    ev_tau = seg[ev_rows, 0] if ev_rows else np.empty(0)
+    ev_tau = ev_tau[ev_tau <= tau_end]
+    # each event time twice: the end of one phase and the start of the next
+    eps = 1e-12 * max(1.0, tau_end)
+    taus = np.sort(np.concatenate([grid, ev_tau - eps, ev_tau]))
+    taus = taus[(taus >= 0.0) & (taus <= tau_end)]
+    out = np.empty((taus.size, 5))
+    sample(seg, m, dim.alpha, dim.beta, dim.amplitude, V, taus, out)
+    events = tuple(
+        Event(float(seg[j, 0]), codes.EVENT_NAMES[int(seg[j, 5])],
+              codes.PHASE_NAMES[int(seg[j - 1, 4])], codes.PHASE_NAMES[int(seg[j, 4])])
+        for j in ev_rows if seg[j, 0] <= tau_end)
+    last = seg[-1]
+    return History(
+        tau=taus, x=out[:, 0] + V * taus, x_dot=out[:, 1] + V, f=out[:, 2], n=out[:, 3],
+        phase=np.asarray(codes.PHASE_NAMES, dtype=str)[out[:, 4].astype(int)],
+        events=events, system=dim, v_inertial=V,
+        final_state=_section_state(last[1], last[2], last[3], int(last[4])))
