@@ -121,19 +121,20 @@ class SectionState:
     """A state on the Poincare section ``tau = 2 pi k`` in the scaled variables.
 
     ``y = x - V tau`` is the body displacement without the drift (unit
-    ``mu0 F_N0/(m omega^2)``), ``y_dot`` its rate, ``f`` the tangential contact force
-    (unit ``mu0 F_N0``) and ``phase`` one of ``stick``, ``slip+``, ``slip-``.
+    ``mu0 F_N0/(m omega^2)``), ``x_dot`` the body velocity (unit ``mu0 F_N0/(m omega)``),
+    ``f`` the tangential contact force (unit ``mu0 F_N0``) and ``phase`` one of
+    ``stick``, ``slip+``, ``slip-``.
     """
 
     y: float
-    y_dot: float
+    x_dot: float
     f: float
     phase: str
 
     def __post_init__(self) -> None:
         if self.phase not in ("stick", "slip+", "slip-"):
             raise ValueError(f"phase must be 'stick', 'slip+' or 'slip-', got {self.phase!r}")
-        for name in ("y", "y_dot", "f"):
+        for name in ("y", "x_dot", "f"):
             if not math.isfinite(getattr(self, name)):
                 raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
 
@@ -295,11 +296,11 @@ def _inertial_velocity(system: System, vbar, v_inertial, v0) -> NDArray[np.float
 def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
     init = np.zeros((n, 4))
     if isinstance(initial, SectionState):
-        init[:] = (initial.y, initial.y_dot, initial.f, _PHASE_CODE[initial.phase])
+        init[:] = (initial.y, initial.x_dot, initial.f, _PHASE_CODE[initial.phase])
         return 2, init
     if isinstance(initial, np.ndarray) and initial.dtype == object:
         for i, s in enumerate(initial.ravel()):
-            init[i] = (s.y, s.y_dot, s.f, _PHASE_CODE[s.phase])
+            init[i] = (s.y, s.x_dot, s.f, _PHASE_CODE[s.phase])
         return 2, init
     if initial == "sliding":
         return 0, init
@@ -308,10 +309,10 @@ def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
     raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
 
 
-def _section_state(y: float, yd: float, f: float, phase: int) -> SectionState | None:
-    if not (math.isfinite(y) and math.isfinite(yd) and math.isfinite(f)) or phase > 2:
+def _section_state(y: float, xd: float, f: float, phase: int) -> SectionState | None:
+    if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) or phase > 2:
         return None
-    return SectionState(float(y), float(yd), float(f), codes.PHASE_NAMES[int(phase)])
+    return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(phase)])
 
 
 # --------------------------------------------------------------------------- public API
@@ -421,14 +422,14 @@ def simulate(
             initial = "sliding"
     kind, init = _initial(initial, 1)
     if kind == 2:
-        y, yd, f, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
+        y, xd, f, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
     else:
-        y, yd, f, ph = initial_state(kind, dim.alpha, dim.beta, dim.amplitude, V)
+        y, xd, f, ph = initial_state(kind, dim.alpha, dim.beta, dim.amplitude, V)
     whole = int(math.ceil(periods))
     cap = 4096 * whole
     while True:
         seg = np.empty((cap, 9))
-        m = run_periods(0.0, y, yd, f, ph, dim.alpha, dim.beta, dim.amplitude, V, whole,
+        m = run_periods(0.0, y, xd, f, ph, dim.alpha, dim.beta, dim.amplitude, V, whole,
                         cap, seg)
         if m > 0:
             break
@@ -451,7 +452,7 @@ def simulate(
         for j in ev_rows if seg[j, 0] <= tau_end)
     last = seg[-1]
     return History(
-        tau=taus, x=out[:, 0] + V * taus, x_dot=out[:, 1] + V, f=out[:, 2], n=out[:, 3],
+        tau=taus, x=out[:, 0] + V * taus, x_dot=out[:, 1], f=out[:, 2], n=out[:, 3],
         phase=np.asarray(codes.PHASE_NAMES, dtype=str)[out[:, 4].astype(int)],
         events=events, system=dim, v_inertial=V,
         final_state=_section_state(last[1], last[2], last[3], int(last[4])))

@@ -1,6 +1,8 @@
 r"""Event-driven integration: exact from event to event, cut at the Poincare section.
 
-The state on entry to a segment is ``(theta, y, y', f, phase)``.  A segment ends
+The state on entry to a segment is ``(theta, y, x', f, phase)``: the body
+displacement without the drift, ``y = x - V tau``, but the body velocity ``x'``
+itself (not ``y' = x' - V``), so that a body at rest is represented exactly.  A segment ends
 at the first of: the phase's event (found by :func:`.roots.first_root`), lift-off
 or touch-down (``cos tau = -1/a``, known in closed form) or the section
 ``tau = 2 pi k``.  Every segment is therefore shorter than one drive period.
@@ -66,15 +68,15 @@ def next_boundary(theta, a, th_off, th_on):
 
 
 @jit
-def stick_coefficients(alpha, beta, V, a, theta, y, yd, f):
+def stick_coefficients(alpha, beta, V, a, theta, y, xd, f):
     """Force coefficients and their frequency in stick (rigid contact when beta = inf)."""
     if math.isinf(beta):
         return rigid_stick_force(alpha, V, y), 1.0
-    return stick_force(alpha, beta, beta - alpha, math.sqrt(beta), V, y, yd, f), math.sqrt(beta)
+    return stick_force(alpha, beta, beta - alpha, math.sqrt(beta), V, y, xd, f), math.sqrt(beta)
 
 
 @jit
-def enter(theta, y, yd, f, s_pref, alpha, beta, a, V, T):
+def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T):
     """Choose the phase that starts consistently at ``theta``.
 
     Candidates, in order: stick (both cone margins must start positive; for a rigid
@@ -86,8 +88,8 @@ def enter(theta, y, yd, f, s_pref, alpha, beta, a, V, T):
     rigid = math.isinf(beta)
     k = beta - alpha
     n = normal_force(theta, a)
-    if not rigid or abs(V + yd) <= 1e-14 * (abs(V) + abs(yd)):
-        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+    if not rigid or xd == 0.0:
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         ok1, _ = start_margin(cone_margin(fc, theta, 1.0, a), wp, T)
         if ok1:
             ok2, _ = start_margin(cone_margin(fc, theta, -1.0, a), wp, T)
@@ -98,7 +100,7 @@ def enter(theta, y, yd, f, s_pref, alpha, beta, a, V, T):
     for i in range(2):
         s = s_pref if i == 0 else -s_pref
         if rigid or abs(f - s * n) <= tol:
-            vr = slip_velocity(free_y(alpha, w, theta, y, yd, s, a), w, theta, s, a, V, k)
+            vr = slip_velocity(free_y(alpha, w, theta, y, xd - V, s, a), w, theta, s, a, V, k)
             ok, _ = start_margin(vr, w, T)
             if ok:
                 return (SLIP_POS if s > 0 else SLIP_NEG), s * n, True
@@ -109,10 +111,10 @@ def enter(theta, y, yd, f, s_pref, alpha, beta, a, V, T):
 
 
 @jit
-def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
+def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
     """Advance one segment.
 
-    Returns ``(t, theta_end, y, y', f, phase, event, int_f, int_n, ok)`` where
+    Returns ``(t, theta_end, y, x', f, phase, event, int_f, int_n, ok)`` where
     ``event`` is the kind of what ended the segment (a transition or a boundary),
     ``int_f`` and ``int_n`` the integrals of ``f`` and ``n`` over it and ``ok`` False
     when a transition was degenerate.
@@ -125,7 +127,7 @@ def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
     te = -1.0
     es = 0.0
     if phase == STICK:
-        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         for i in range(2):
             s = 1.0 if i == 0 else -1.0
             g = cone_margin(fc, theta, s, a)
@@ -137,7 +139,7 @@ def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
                 es = s
     elif phase != FLIGHT:
         s = slip_sign(phase)
-        yc = free_y(alpha, w, theta, y, yd, s, a)
+        yc = free_y(alpha, w, theta, y, xd - V, s, a)
         vr = slip_velocity(yc, w, theta, s, a, V, k)
         ok, ts = start_margin(vr, w, T)
         te = first_root(vr, w, ts, T) if ok else 0.0
@@ -145,22 +147,22 @@ def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
     t = te if hit else T
     # state and integrals at the end of the piece
     if phase == STICK:
-        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         int_f = integral(fc, wp, t)
         int_n = normal_integral(theta, t, a)
         if rigid:
             y1 = y - V * t
-            yd1 = -V
+            xd1 = 0.0
             f1 = -alpha * y1
         else:
             f1 = evaluate(fc, wp, t)
             y1 = y + (f1 - f) / k - V * t
-            yd1 = evaluate(derivative(fc, wp), wp, t) / k - V
+            xd1 = evaluate(derivative(fc, wp), wp, t) / k
     else:
         s = 0.0 if phase == FLIGHT else slip_sign(phase)
-        yc = free_y(alpha, w, theta, y, yd, s, a)
+        yc = free_y(alpha, w, theta, y, xd - V, s, a)
         y1 = evaluate(yc, w, t)
-        yd1 = evaluate(derivative(yc, w), w, t)
+        xd1 = V + evaluate(derivative(yc, w), w, t)
         if phase == FLIGHT:
             int_f = 0.0
             int_n = 0.0
@@ -178,13 +180,13 @@ def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
         if phase == STICK:
             # stick -> slip in direction es: project onto |f| = n
             f1 = es * normal_force(theta1, a)
-            ph1, f1, ok = enter(theta1, y1, yd1, f1, es, alpha, beta, a, V, Tn)
+            ph1, f1, ok = enter(theta1, y1, xd1, f1, es, alpha, beta, a, V, Tn)
             event = EV_STICK_TO_SLIP
         else:
             s = slip_sign(phase)
             # slip -> stick: project onto zero contact-point velocity
-            yd1 = -V - (0.0 if rigid else s * a * math.sin(theta1) / k)
-            ph1, f1, ok = enter(theta1, y1, yd1, f1, -s, alpha, beta, a, V, Tn)
+            xd1 = 0.0 if rigid else -s * a * math.sin(theta1) / k
+            ph1, f1, ok = enter(theta1, y1, xd1, f1, -s, alpha, beta, a, V, Tn)
             event = EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL
     if t == T and not hit:
         if bkind == EV_LIFTOFF:
@@ -192,31 +194,31 @@ def segment(theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on):
             f1 = 0.0
         elif bkind == EV_TOUCHDOWN:
             f1 = 0.0
-            sp = 1.0 if V + yd1 >= 0.0 else -1.0
-            ph1, f1, ok = enter(theta1, y1, yd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1)
+            sp = 1.0 if xd1 >= 0.0 else -1.0
+            ph1, f1, ok = enter(theta1, y1, xd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1)
     elif t == T and hit and bkind != EV_SECTION:
         # an event exactly at lift-off / touch-down: the boundary is handled by a
         # zero-length segment next (theta1 == tb keeps it as the next boundary)
         theta1 = math.nextafter(tb, -math.inf)
-    return t, theta1, y1, yd1, f1, ph1, event, int_f, int_n, ok
+    return t, theta1, y1, xd1, f1, ph1, event, int_f, int_n, ok
 
 
 @jit
 def initial_state(kind, alpha, beta, a, V):
     """``kind`` 0: steady sliding before the oscillation starts; 1: rest."""
     if kind == 0:
-        y, yd, f = -1.0 / alpha, 0.0, 1.0
+        y, xd, f = -1.0 / alpha, V, 1.0
     else:
-        y, yd, f = 0.0, -V, 0.0
-    ph, f, _ = enter(0.0, y, yd, f, 1.0, alpha, beta, a, V, TWO_PI)
-    return y, yd, f, ph
+        y, xd, f = 0.0, 0.0, 0.0
+    ph, f, _ = enter(0.0, y, xd, f, 1.0, alpha, beta, a, V, TWO_PI)
+    return y, xd, f, ph
 
 
 @jit
-def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments, seg):
+def run_periods(theta, y, xd, f, phase, alpha, beta, a, V, periods, max_segments, seg):
     """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
 
-    ``seg`` has shape ``(max_segments, 9)`` with columns ``tau, y, y', f, phase,
+    ``seg`` has shape ``(max_segments, 9)`` with columns ``tau, y, x', f, phase,
     event that ended the previous segment, int_f, int_n`` (cumulative) and the drive
     phase ``theta`` of the segment start.  Returns
     the number of rows written (``-1`` if ``max_segments`` was too small).
@@ -232,7 +234,7 @@ def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments
             return -1
         seg[m, 0] = TWO_PI * k + theta
         seg[m, 1] = y
-        seg[m, 2] = yd
+        seg[m, 2] = xd
         seg[m, 3] = f
         seg[m, 4] = phase
         seg[m, 5] = ev
@@ -240,8 +242,8 @@ def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments
         seg[m, 7] = cn
         seg[m, 8] = theta
         m += 1
-        t, theta, y, yd, f, phase, ev, i_f, i_n, ok = segment(
-            theta, y, yd, f, phase, alpha, beta, a, V, th_off, th_on)
+        t, theta, y, xd, f, phase, ev, i_f, i_n, ok = segment(
+            theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on)
         cf += i_f
         cn += i_n
         if theta >= TWO_PI:
@@ -251,7 +253,7 @@ def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments
         return -1
     seg[m, 0] = TWO_PI * k + theta
     seg[m, 1] = y
-    seg[m, 2] = yd
+    seg[m, 2] = xd
     seg[m, 3] = f
     seg[m, 4] = phase
     seg[m, 5] = ev
@@ -263,7 +265,7 @@ def run_periods(theta, y, yd, f, phase, alpha, beta, a, V, periods, max_segments
 
 @jit
 def sample(seg, nseg, alpha, beta, a, V, taus, out):
-    """Evaluate the closed forms at sorted times ``taus`` (columns y, y', f, n, phase)."""
+    """Evaluate the closed forms at sorted times ``taus`` (columns y, x', f, n, phase)."""
     w = math.sqrt(alpha)
     j = 0
     for i in range(taus.shape[0]):
@@ -272,26 +274,26 @@ def sample(seg, nseg, alpha, beta, a, V, taus, out):
             j += 1
         theta = seg[j, 8]
         t = tau - seg[j, 0]
-        y, yd, f = seg[j, 1], seg[j, 2], seg[j, 3]
+        y, xd, f = seg[j, 1], seg[j, 2], seg[j, 3]
         phase = int(seg[j, 4])
         if phase == STICK:
-            fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, yd, f)
+            fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
             if math.isinf(beta):
                 y1 = y - V * t
-                yd1 = -V
+                xd1 = 0.0
                 f1 = -alpha * y1
             else:
                 f1 = evaluate(fc, wp, t)
                 y1 = y + (f1 - f) / (beta - alpha) - V * t
-                yd1 = evaluate(derivative(fc, wp), wp, t) / (beta - alpha) - V
+                xd1 = evaluate(derivative(fc, wp), wp, t) / (beta - alpha)
         else:
             s = 0.0 if phase == FLIGHT else slip_sign(phase)
-            yc = free_y(alpha, w, theta, y, yd, s, a)
+            yc = free_y(alpha, w, theta, y, xd - V, s, a)
             y1 = evaluate(yc, w, t)
-            yd1 = evaluate(derivative(yc, w), w, t)
+            xd1 = V + evaluate(derivative(yc, w), w, t)
             f1 = s * normal_force(theta + t, a)
         out[i, 0] = y1
-        out[i, 1] = yd1
+        out[i, 1] = xd1
         out[i, 2] = f1
         out[i, 3] = max(0.0, normal_force(theta + t, a))
         out[i, 4] = phase

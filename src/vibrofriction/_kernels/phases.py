@@ -38,11 +38,15 @@ def slip_velocity(ycoef, w, theta, s, a, V, k):
 
 
 @jit
-def stick_force(alpha, beta, k, W, V, y0, yd0, f0):
-    """``f(t)`` in stick (finite contact stiffness), harmonic at ``W = sqrt(beta)``."""
+def stick_force(alpha, beta, k, W, V, y0, xd0, f0):
+    """``f(t)`` in stick (finite contact stiffness), harmonic at ``W = sqrt(beta)``.
+
+    Takes the body velocity ``xd0 = x'`` itself, not ``y' = x' - V``: ``f' = k x'``
+    with ``k`` up to 1e6 would amplify the cancellation in ``V + y'``.
+    """
     p0 = alpha * (f0 / beta - (k / beta) * y0)
     p1 = alpha * (k / beta) * V
-    return (p0, p1, 0.0, 0.0, f0 - p0, (k * (V + yd0) - p1) / W, 0.0, 0.0)
+    return (p0, p1, 0.0, 0.0, f0 - p0, (k * xd0 - p1) / W, 0.0, 0.0)
 
 
 @jit

@@ -3,7 +3,7 @@ r"""The steady state and the macroscopic coefficient of friction (paper eq. 25).
 ``mu_macro / mu0 = <f> / <n>`` over the steady state, with both integrals taken
 from the closed forms, so a periodic orbit gives the ratio exactly.
 
-The section states ``z_k = (y, y', f, phase)`` at ``tau = 2 pi k`` are compared
+The section states ``z_k = (y, x', f, phase)`` at ``tau = 2 pi k`` are compared
 with ``z_{k-p}`` for ``p = 1..P``; when they agree to ``tol_state`` the orbit is
 p-periodic and the average is taken over exactly those ``p`` periods.  The error
 estimate is the section distance divided by ``1 - rho``, ``rho`` the observed
@@ -37,24 +37,24 @@ FIRST_NEWTON = 12  # first attempt to solve the periodicity condition, in period
 
 
 @jit
-def period_map(y, yd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
+def period_map(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
     """Integrate ``p`` drive periods from the section; returns the state and event count."""
     theta = 0.0
     k = 0
     events = 0
     ok_all = True
     while k < p:
-        t, theta, y, yd, f, ph, ev, i_f, i_n, ok = segment(
-            theta, y, yd, f, ph, alpha, beta, a, V, th_off, th_on)
+        t, theta, y, xd, f, ph, ev, i_f, i_n, ok = segment(
+            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
         ok_all = ok_all and ok
         if ev != EV_SECTION:
             events += 1
             if events > max_events:
-                return y, yd, f, ph, events, False
+                return y, xd, f, ph, events, False
         if theta >= TWO_PI:
             theta = 0.0
             k += 1
-    return y, yd, f, ph, events, ok_all
+    return y, xd, f, ph, events, ok_all
 
 
 @jit
@@ -62,7 +62,7 @@ def _unpack(z, ph, alpha, a, V, rigid):
     """Section state from the free coordinates ``z`` of phase ``ph``."""
     if ph == STICK:
         if rigid:
-            return z[0], -V, -alpha * z[0]
+            return z[0], 0.0, -alpha * z[0]
         return z[0], z[1], z[2]
     s = 1.0 if ph == SLIP_POS else -1.0
     return z[0], z[1], s * (1.0 + a)
@@ -99,27 +99,27 @@ def _solve_small(m, r, nd):
 
 
 @jit
-def newton_orbit(y, yd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
+def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
     """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
 
     Only attracting orbits are accepted (spectral radius of ``DP^p`` below 1), so
     the answer is the attractor the iteration was approaching, not a nearby
-    unstable orbit.  Returns ``(ok, y, y', f, events)``.
+    unstable orbit.  Returns ``(ok, y, x', f, events)``.
     """
     rigid = math.isinf(beta)
     nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
-    z = np.array([y, yd, f])
+    z = np.array([y, xd, f])
     events = 0
     jac = np.zeros((3, 3))
     for _ in range(8):
-        y0, yd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
-        y1, yd1, f1, ph1, ev, ok = period_map(y0, yd0, f0, ph, p, alpha, beta, a, V,
+        y0, xd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
+        y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
                                               th_off, th_on, max_events)
         events += ev
         if ph1 != ph or not ok:
-            return False, y, yd, f, events
-        r = np.array([y1 - y0, yd1 - yd0, f1 - f0])
-        scale = 1.0 + alpha * abs(y0) + abs(yd0) + abs(f0)
+            return False, y, xd, f, events
+        r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
+        scale = 1.0 + alpha * abs(y0) + abs(xd0) + abs(f0)
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale:
             # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
@@ -128,33 +128,33 @@ def newton_orbit(y, yd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
                 mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
                 ev_mod = np.abs(np.linalg.eigvals(mat))
                 if tr != tr or np.max(ev_mod) >= 1.0 - 1e-9:
-                    return False, y, yd, f, events
+                    return False, y, xd, f, events
             elif abs(jac[0, 0] + 1.0) >= 1.0 - 1e-9:
-                return False, y, yd, f, events
-            return True, y0, yd0, f0, events
+                return False, y, xd, f, events
+            return True, y0, xd0, f0, events
         for j in range(nd):
             h = 1e-7 * (1.0 + abs(z[j]))
             zp = z.copy()
             zp[j] += h
-            y2, yd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
-            y3, yd3, f3, ph3, ev, ok = period_map(y2, yd2, f2, ph, p, alpha, beta, a, V,
+            y2, xd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
+            y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
                                                   th_off, th_on, max_events)
             events += ev
             if ph3 != ph or not ok:
-                return False, y, yd, f, events
+                return False, y, xd, f, events
             jac[0, j] = ((y3 - y2) - r[0]) / h
-            jac[1, j] = ((yd3 - yd2) - r[1]) / h
+            jac[1, j] = ((xd3 - xd2) - r[1]) / h
             jac[2, j] = ((f3 - f2) - r[2]) / h
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
-            return False, y, yd, f, events
+            return False, y, xd, f, events
         for j in range(nd):
             z[j] += dz[j]
-    return False, y, yd, f, events
+    return False, y, xd, f, events
 
 
 @jit
-def sliding_certificate(y, yd, ph, alpha, beta, a, V):
+def sliding_certificate(y, xd, ph, alpha, beta, a, V):
     """Is continuous forward sliding proven from this section state (eqs. 7-12)?
 
     In slip+ the motion is the steady sliding solution plus a free oscillation at
@@ -169,7 +169,8 @@ def sliding_certificate(y, yd, ph, alpha, beta, a, V):
     else:
         vstar = a * abs(beta - 1.0) / ((beta - alpha) * abs(alpha - 1.0))
     yh = y + 1.0 / alpha + a / (alpha - 1.0)  # minus the particular solution at tau = 0
-    amp = math.sqrt(yd * yd + alpha * yh * yh)
+    yhd = xd - V  # the particular solution's velocity vanishes at tau = 0
+    amp = math.sqrt(yhd * yhd + alpha * yh * yh)
     return V - vstar - amp > 1e-9 * (1.0 + V)
 
 
@@ -179,20 +180,20 @@ def _distance(alpha, z1, z2):
 
 
 @jit
-def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
+def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
                  max_periods, min_periods, tol_state, tol_mean, max_events):
     """Long-time average from a given start.
 
     ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, y0', f0, ph0)``
     at ``tau = 0``.  Returns ``(mu_ratio, status, period, error, periods, events,
-    stick, slip, slip_neg, flight, y, y', f, phase, degenerate)`` where the four
+    stick, slip, slip_neg, flight, y, x', f, phase, degenerate)`` where the four
     fractions are of time in the averaging window and the state is the final one
     on the section.
     """
     if init_kind == 2:
-        y, yd, f, ph = y0, yd0, f0, ph0
+        y, xd, f, ph = y0, xd0, f0, ph0
     else:
-        y, yd, f, ph = initial_state(init_kind, alpha, beta, a, V)
+        y, xd, f, ph = initial_state(init_kind, alpha, beta, a, V)
     th_off, th_on = liftoff_phases(a)
     theta = 0.0
     ring_z = np.zeros((MAX_PERIOD + 1, 4))
@@ -202,7 +203,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
     chk_k = np.zeros(ncheck, np.int64)
     chk_c = np.zeros((ncheck, N_ACC))
     acc = np.zeros(N_ACC)
-    ring_z[0, 0], ring_z[0, 1], ring_z[0, 2], ring_z[0, 3] = y, yd, f, ph
+    ring_z[0, 0], ring_z[0, 1], ring_z[0, 2], ring_z[0, 3] = y, xd, f, ph
     nchk = 0
     next_chk = min_periods
     next_newton = FIRST_NEWTON
@@ -216,8 +217,8 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
     err = math.inf
     win = np.zeros(N_ACC)
     while True:
-        t, theta, y, yd, f, ph1, ev, i_f, i_n, ok = segment(
-            theta, y, yd, f, ph, alpha, beta, a, V, th_off, th_on)
+        t, theta, y, xd, f, ph1, ev, i_f, i_n, ok = segment(
+            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
         acc[0] += i_f
         acc[1] += i_n
         if ph == STICK:
@@ -243,9 +244,9 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
         theta = 0.0
         k += 1
         slot = k % (MAX_PERIOD + 1)
-        ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2], ring_z[slot, 3] = y, yd, f, ph
+        ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2], ring_z[slot, 3] = y, xd, f, ph
         ring_c[slot, :] = acc
-        scale = 1.0 + alpha * abs(y) + abs(yd) + abs(f)
+        scale = 1.0 + alpha * abs(y) + abs(xd) + abs(f)
         found = False
         for p in range(1, MAX_PERIOD + 1):
             if p > k:
@@ -269,7 +270,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
             dprev[p] = d
         if found:
             break
-        if sliding_certificate(y, yd, ph, alpha, beta, a, V):
+        if sliding_certificate(y, xd, ph, alpha, beta, a, V):
             mu = 1.0
             err = 0.0
             status = ST_SLIDING
@@ -287,13 +288,13 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
                 p = pbest if attempt == 0 else 1
                 if attempt == 1 and pbest == 1:
                     break
-                nok, ny, nyd, nf, nev = newton_orbit(y, yd, f, ph, p, alpha, beta, a, V,
+                nok, ny, nxd, nf, nev = newton_orbit(y, xd, f, ph, p, alpha, beta, a, V,
                                                      th_off, th_on, 0.1 * tol_state,
                                                      max_events)
                 events += nev
                 if nok:
-                    y, yd, f = ny, nyd, nf
-                    ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2] = y, yd, f
+                    y, xd, f = ny, nxd, nf
+                    ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2] = y, xd, f
                     dprev[:] = np.inf
                     break
         if k == next_chk or k >= max_periods:
@@ -315,7 +316,11 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
                     m0 = chk_c[i1, 0] / chk_c[i1, 1]
                 mu = m1
                 err = abs(m1 - m0)
-                if err <= tol_mean:
+                # a window of pure forward slip averages to exactly 1 whatever the state;
+                # without the sliding certificate it is a transient (e.g. a resonance
+                # still building up), not evidence of convergence
+                pure_slip = win[2] == 0.0 and win[4] == 0.0 and win[5] == 0.0
+                if err <= tol_mean and not pure_slip:
                     status = ST_AVERAGED
                     break
             if k >= max_periods:
@@ -330,7 +335,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, yd0, f0, ph0,
         total = math.nan
     return (mu, status, period, err, k, events,
             win[2] / total, win[3] / total, win[4] / total, win[5] / total,
-            y, yd, f, ph, degenerate)
+            y, xd, f, ph, degenerate)
 
 
 @jit
@@ -339,7 +344,7 @@ def steady_state_many(alpha, beta, a, V, init_kind, init, max_periods, min_perio
     """:func:`steady_state` over arrays of points (one compiled loop, no Python calls).
 
     ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); ``out_f`` gets
-    columns ``mu, error, stick, slip, slip_neg, flight, y, y', f`` and ``out_i``
+    columns ``mu, error, stick, slip, slip_neg, flight, y, x', f`` and ``out_i``
     ``status, period, periods, events, phase, degenerate``.
     """
     for i in range(V.shape[0]):
