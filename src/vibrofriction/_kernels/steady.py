@@ -20,13 +20,13 @@ from .codes import (
     EV_SECTION,
     FLIGHT,
     SLIP_NEG,
+    SLIP_POS,
     ST_AVERAGED,
     ST_FAILED,
     ST_NOT_CONVERGED,
     ST_PERIODIC,
     ST_SLIDING,
     STICK,
-    SLIP_POS,
 )
 from .integrate import TWO_PI, initial_state, liftoff_phases, segment
 from .jit import jit

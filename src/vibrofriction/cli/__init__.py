@@ -1,0 +1,15 @@
+"""The ``vibrofriction`` command line: a thin shell over the library.
+
+Each sub-command lives in its own module and registers itself on :data:`app`.
+"""
+
+from . import mu  # noqa: F401  (registers the command)
+from ._app import app
+
+
+def main() -> None:
+    """Console-script entry point."""
+    app()
+
+
+__all__ = ["app", "main"]

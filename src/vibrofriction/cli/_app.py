@@ -1,0 +1,63 @@
+"""The Typer application shared by the command modules, and its error handling."""
+
+from __future__ import annotations
+
+import functools
+import math
+import sys
+from collections.abc import Callable
+from typing import Any
+
+import typer
+
+app = typer.Typer(
+    name="vibrofriction",
+    help="Friction under normal oscillations (Mao, Popov, Starcevic, Popov 2017).",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+
+
+def friendly(func: Callable[..., Any]) -> Callable[..., Any]:
+    """Turn a ``ValueError``/``TypeError`` from the library into one line and exit 2."""
+
+    @functools.wraps(func)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        try:
+            return func(*args, **kwargs)
+        except (ValueError, TypeError) as exc:
+            print(f"error: {exc}", file=sys.stderr)
+            raise typer.Exit(2) from None
+
+    return wrapper
+
+
+def parse_float(text: str, name: str) -> float:
+    """A float from the command line; ``inf`` is accepted."""
+    try:
+        return float(text)
+    except ValueError:
+        raise ValueError(f"{name} must be a number, got {text!r}") from None
+
+
+def parse_list(text: str, name: str) -> list[float]:
+    """A comma-separated list of floats (``0.1,0.2,0.5``)."""
+    items = [t.strip() for t in text.split(",") if t.strip()]
+    if not items:
+        raise ValueError(f"{name} must be a number or a comma-separated list, got {text!r}")
+    return [parse_float(t, name) for t in items]
+
+
+def json_number(x: float) -> float | str | None:
+    """JSON has no inf/nan: encode them as strings (inf) or null (nan)."""
+    if math.isnan(x):
+        return None
+    if math.isinf(x):
+        return "inf" if x > 0 else "-inf"
+    return x
+
+
+@app.callback()
+def _root() -> None:
+    """Friction under normal oscillations: exact steady states, the paper's figures, atlases."""
