@@ -34,6 +34,7 @@ __all__ = [
     "Status",
     "friction_coefficient",
     "simulate",
+    "solve_points",
 ]
 
 System = Dimensionless | Physical
@@ -73,12 +74,13 @@ _STATUS_MESSAGES = {
     Status.STATIC: "zero sliding velocity: the static limit of eq. (2), the limit of the "
     "steady state as v0 -> 0+",
 }
-_STATUS_BY_CODE = {
+STATUS_BY_CODE = {
     codes.ST_PERIODIC: Status.PERIODIC,
     codes.ST_AVERAGED: Status.AVERAGED,
     codes.ST_NOT_CONVERGED: Status.NOT_CONVERGED,
     codes.ST_FAILED: Status.FAILED,
     codes.ST_SLIDING: Status.SLIDING,
+    -1: Status.STATIC,
 }
 _PHASE_CODE = {name: i for i, name in enumerate(codes.PHASE_NAMES)}
 
@@ -315,6 +317,74 @@ def _section_state(y: float, xd: float, f: float, phase: int) -> SectionState | 
 
 
 # --------------------------------------------------------------------------- public API
+STATIC_CODE = -1  # status code of a zero-velocity point (the static limit, eq. 2)
+
+
+def solve_points(
+    alpha: ArrayLike,
+    beta: ArrayLike,
+    amplitude: ArrayLike,
+    v_inertial: ArrayLike,
+    *,
+    initial: str | SectionState | NDArray[np.object_] = "sliding",
+    settings: SolverSettings | None = None,
+) -> dict[str, NDArray]:
+    """Steady states at arbitrary points, one compiled loop: the batch engine.
+
+    The four parameters broadcast together; validation is the caller's duty beyond
+    what is checked here (finite, ``alpha > 0``, ``beta > alpha``, ``a >= 0``,
+    ``V >= 0``).  Returns arrays of that shape: ``mu_ratio``, ``error``, the four time
+    fractions, ``status`` (integer codes, see :data:`STATUS_BY_CODE`; ``-1`` = static
+    limit at ``V = 0``), ``period``, ``periods``, ``events`` and the final section state
+    ``y``, ``x_dot``, ``f``, ``phase`` (phase code).  Results are bitwise reproducible:
+    each point depends only on its own parameters.
+    """
+    settings = settings or SolverSettings()
+    al, be, am, V = np.broadcast_arrays(*(np.asarray(x, dtype=float)
+                                          for x in (alpha, beta, amplitude, v_inertial)))
+    shape = V.shape
+    al, be, am, V = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V))
+    if not np.all(np.isfinite(al) & (al > 0)):
+        raise ValueError("alpha must be finite and > 0 at every point")
+    if not np.all(be > al):
+        raise ValueError("beta must be > alpha (or inf) at every point")
+    if not np.all(np.isfinite(am) & (am >= 0)):
+        raise ValueError("amplitude must be finite and >= 0 at every point")
+    if not np.all(np.isfinite(V) & (V >= 0)):
+        raise ValueError("v_inertial must be finite and >= 0 at every point")
+    n = V.size
+    kind, init = _initial(initial, n)
+    out_f = np.full((n, 9), np.nan)
+    out_i = np.zeros((n, 6), dtype=np.int64)
+    moving = V > 0.0
+    idx = np.flatnonzero(moving)
+    if idx.size:
+        of = np.empty((idx.size, 9))
+        oi = np.empty((idx.size, 6), dtype=np.int64)
+        steady_state_many(al[idx], be[idx], am[idx], V[idx], kind,
+                          np.ascontiguousarray(init[idx]), int(settings.max_periods),
+                          int(settings.min_periods), float(settings.tol_state),
+                          float(settings.tol_mean), int(settings.max_events), of, oi)
+        out_f[idx] = of
+        out_i[idx] = oi
+    still = ~moving
+    if np.any(still):
+        static = np.asarray(theory.static_mu_ratio(am[still]), dtype=float)
+        out_f[still, 0] = static
+        out_f[still, 1] = 0.0
+        contact = am[still] < 1.0
+        out_f[still, 2] = np.where(contact, 1.0, np.nan)
+        out_f[still, 3:6] = np.where(contact[:, None], 0.0, np.nan)
+        out_i[still, 0] = STATIC_CODE
+        out_i[still, 4] = 99  # no section state
+    names_f = ("mu_ratio", "error", "stick_fraction", "slip_fraction", "reverse_slip_fraction",
+               "flight_fraction", "y", "x_dot", "f")
+    names_i = ("status", "period", "periods", "events", "phase", "degenerate")
+    out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(names_f)}
+    out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(names_i)})
+    return out
+
+
 def friction_coefficient(
     system: System,
     vbar: ArrayLike | None = None,
@@ -341,49 +411,24 @@ def friction_coefficient(
     settings : accuracy and effort bounds (:class:`SolverSettings`).
     """
     dim = _dimensionless(system)
-    settings = settings or SolverSettings()
     V = _inertial_velocity(system, vbar, v_inertial, v0)
     scalar = V.ndim == 0
-    flat = np.ascontiguousarray(np.atleast_1d(V).ravel(), dtype=float)
-    n = flat.size
-    kind, init = _initial(initial, n)
-    out_f = np.full((n, 9), np.nan)
-    out_i = np.zeros((n, 6), dtype=np.int64)
-    moving = flat > 0.0
-    if np.any(moving):
-        idx = np.flatnonzero(moving)
-        m = idx.size
-        of = np.empty((m, 9))
-        oi = np.empty((m, 6), dtype=np.int64)
-        steady_state_many(
-            np.full(m, dim.alpha), np.full(m, dim.beta), np.full(m, dim.amplitude),
-            flat[idx], kind, np.ascontiguousarray(init[idx]), int(settings.max_periods),
-            int(settings.min_periods), float(settings.tol_state), float(settings.tol_mean),
-            int(settings.max_events), of, oi)
-        out_f[idx] = of
-        out_i[idx] = oi
-    static = float(theory.static_mu_ratio(dim.amplitude))
-    status = np.empty(n, dtype=object)
-    states = np.empty(n, dtype=object)
-    for i in range(n):
-        if moving[i]:
-            status[i] = _STATUS_BY_CODE[int(out_i[i, 0])]
-            states[i] = _section_state(*out_f[i, 6:9], int(out_i[i, 4]))
-        else:
-            status[i] = Status.STATIC
-            out_f[i, 0] = static
-            out_f[i, 1] = 0.0
-            out_f[i, 2:6] = (1.0, 0.0, 0.0, 0.0) if dim.amplitude < 1 else math.nan
-            states[i] = None
     shape = V.shape
+    cols = solve_points(np.full(shape, dim.alpha), np.full(shape, dim.beta),
+                        np.full(shape, dim.amplitude), V, initial=initial, settings=settings)
+    status = np.empty(V.size, dtype=object)
+    states = np.empty(V.size, dtype=object)
+    flat = {k: v.ravel() for k, v in cols.items()}
+    for i in range(V.size):
+        status[i] = STATUS_BY_CODE[int(flat["status"][i])]
+        states[i] = _section_state(flat["y"][i], flat["x_dot"][i], flat["f"][i],
+                                   int(flat["phase"][i]))
     res = FrictionResults(
-        mu_ratio=out_f[:, 0].reshape(shape), status=status.reshape(shape),
-        error=out_f[:, 1].reshape(shape), period=out_i[:, 1].reshape(shape),
-        periods=out_i[:, 2].reshape(shape), events=out_i[:, 3].reshape(shape),
-        stick_fraction=out_f[:, 2].reshape(shape), slip_fraction=out_f[:, 3].reshape(shape),
-        reverse_slip_fraction=out_f[:, 4].reshape(shape),
-        flight_fraction=out_f[:, 5].reshape(shape), final_state=states.reshape(shape),
-        system=dim, v_inertial=flat.reshape(shape))
+        status=status.reshape(shape), final_state=states.reshape(shape), system=dim,
+        v_inertial=V.astype(float),
+        **{k: cols[k] for k in ("mu_ratio", "error", "period", "periods", "events",
+                                "stick_fraction", "slip_fraction", "reverse_slip_fraction",
+                                "flight_fraction")})
     if scalar:
         return res[()]
     return res
