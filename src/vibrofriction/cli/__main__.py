@@ -1,0 +1,5 @@
+"""``python -m vibrofriction.cli``."""
+
+from . import main
+
+main()

@@ -1,0 +1,115 @@
+"""The public API: shapes, units, validation and the command line."""
+
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+
+
+def test_scalar_in_result_out_array_in_arrays_out(general_system):
+    r = vf.friction_coefficient(general_system, vbar=0.3)
+    assert isinstance(r, vf.FrictionResult) and isinstance(r.mu_ratio, float)
+    c = vf.friction_coefficient(general_system, vbar=np.linspace(0, 1.2, 7).reshape(7))
+    assert isinstance(c, vf.FrictionResults) and c.mu_ratio.shape == (7,)
+    grid = vf.friction_coefficient(general_system, vbar=np.full((2, 3), 0.4))
+    assert grid.mu_ratio.shape == (2, 3)
+    assert grid[1, 2].mu_ratio == vf.friction_coefficient(general_system, vbar=0.4).mu_ratio
+    assert c[2].mu_ratio == c.mu_ratio[2]
+    assert [x.mu_ratio for x in c] == list(c.mu_ratio)
+
+
+def test_results_state_their_status_and_accuracy(general_system):
+    r = vf.friction_coefficient(general_system, vbar=0.3)
+    assert r.status is vf.Status.PERIODIC and r.period == 1 and r.success
+    assert "periodic" in r.message and r.error < 1e-9
+    assert r.periods >= 1 and r.events > 0
+    assert r.vbar == pytest.approx(0.3)
+    assert r.final_state.phase in ("stick", "slip+", "slip-")
+
+
+def test_physical_system_with_dimensional_velocity():
+    omega0 = 2 * math.pi * 800.0
+    p = vf.Physical(mass=0.01, k_x=0.01 * omega0**2, k_xc=4e5, k_zc=5e5, u_z0=1e-6,
+                    du_z=0.5e-6, omega=2 * math.pi * 600.0, mu0=0.3)
+    v0 = 0.5 * p.critical_velocity()
+    a = vf.friction_coefficient(p, v0=v0)
+    b = vf.friction_coefficient(p.to_dimensionless(), vbar=0.5)
+    assert a.mu_ratio == pytest.approx(b.mu_ratio, abs=1e-12)
+
+
+def test_velocity_arguments_are_checked(general_system):
+    with pytest.raises(ValueError, match="exactly one"):
+        vf.friction_coefficient(general_system)
+    with pytest.raises(ValueError, match="exactly one"):
+        vf.friction_coefficient(general_system, vbar=0.1, v_inertial=0.1)
+    with pytest.raises(ValueError, match="vbar"):
+        vf.friction_coefficient(general_system, vbar=-1.0)
+    with pytest.raises(ValueError, match="v_inertial"):
+        vf.friction_coefficient(general_system, v_inertial=math.nan)
+    with pytest.raises(ValueError, match="Physical"):
+        vf.friction_coefficient(general_system, v0=1.0)
+    with pytest.raises(ValueError, match="v_inertial"):
+        vf.friction_coefficient(vf.Dimensionless(1.0, math.inf, 0.5), vbar=0.5)
+    with pytest.raises(ValueError, match="initial"):
+        vf.friction_coefficient(general_system, vbar=0.5, initial="moving")
+    with pytest.raises(TypeError):
+        vf.friction_coefficient((0.5, 2.0, 0.5), vbar=0.5)
+
+
+@pytest.mark.parametrize("kw,match", [({"max_periods": 0}, "max_periods"),
+                                      ({"tol_state": 0.0}, "tol_state"),
+                                      ({"tol_mean": 2.0}, "tol_mean"),
+                                      ({"max_events": -1}, "max_events")])
+def test_settings_are_validated(kw, match):
+    with pytest.raises(ValueError, match=match):
+        vf.SolverSettings(**kw)
+
+
+def test_simulate_returns_a_sharp_time_history(general_system):
+    h = vf.simulate(general_system, vbar=0.3, periods=5)
+    assert h.tau[0] == 0 and h.tau[-1] == pytest.approx(10 * math.pi)
+    assert np.all(np.diff(h.tau) >= 0)
+    assert set(np.unique(h.phase)) <= {"stick", "slip+", "slip-", "flight"}
+    assert {e.kind for e in h.events} == {"stick->slip", "slip->stick"}
+    # in slip f = n exactly (Fig. 2: the two curves coincide)
+    slip = h.phase == "slip+"
+    np.testing.assert_allclose(h.f[slip], h.n[slip], rtol=1e-13)
+    with pytest.raises(ValueError, match="periods"):
+        vf.simulate(general_system, vbar=0.3, periods=0)
+
+
+def _cli(*args):
+    return subprocess.run([sys.executable, "-m", "vibrofriction.cli", *args],
+                          capture_output=True, text=True, timeout=300)
+
+
+def test_cli_mu_json_lines():
+    out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5",
+               "--vbar", "0.3,1.2", "--json")
+    assert out.returncode == 0, out.stderr
+    rows = [json.loads(line) for line in out.stdout.splitlines()]
+    assert len(rows) == 2
+    assert rows[0]["status"] == "periodic" and 0.5 < rows[0]["mu_ratio"] < 1
+    assert rows[1]["mu_ratio"] == 1.0 and rows[1]["error"] == 0.0
+    case4 = _cli("mu", "--alpha", "1", "--beta", "inf", "--amplitude", "0.5",
+                 "--v-inertial", "3", "--json")
+    assert case4.returncode == 0
+    assert json.loads(case4.stdout)["mu_ratio"] == pytest.approx(0.7427, abs=1e-3)
+
+
+@pytest.mark.parametrize("args,needle", [
+    (("--alpha", "0.5", "--beta", "0.2", "--amplitude", "0.5", "--vbar", "0.3"), "beta"),
+    (("--alpha", "-1", "--beta", "2", "--amplitude", "0.5", "--vbar", "0.3"), "alpha"),
+    (("--alpha", "1", "--beta", "inf", "--amplitude", "0.5", "--vbar", "0.3"), "v_inertial"),
+    (("--alpha", "0.5", "--beta", "2", "--amplitude", "x", "--vbar", "0.3"), "amplitude"),
+])
+def test_cli_bad_input_exits_2_with_one_line(args, needle):
+    out = _cli("mu", *args)
+    assert out.returncode == 2
+    lines = out.stderr.strip().splitlines()
+    assert len(lines) == 1 and needle in lines[0] and "Traceback" not in out.stderr
