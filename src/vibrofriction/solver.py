@@ -21,7 +21,7 @@ from numpy.typing import ArrayLike, NDArray
 from . import theory
 from ._kernels import codes
 from ._kernels.integrate import TWO_PI, initial_state, run_periods, sample
-from ._kernels.steady import steady_state_many
+from ._kernels.steady import steady_state, steady_state_many
 from .params import Dimensionless, Physical
 
 __all__ = [
@@ -414,6 +414,20 @@ def friction_coefficient(
     V = _inertial_velocity(system, vbar, v_inertial, v0)
     scalar = V.ndim == 0
     shape = V.shape
+    if scalar and V > 0.0:
+        # one point: call the scalar kernel directly (no array bookkeeping)
+        settings = settings or SolverSettings()
+        kind, init = _initial(initial, 1)
+        r = steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), kind, init[0, 0],
+                         init[0, 1], init[0, 2], int(init[0, 3]), int(settings.max_periods),
+                         int(settings.min_periods), float(settings.tol_state),
+                         float(settings.tol_mean), int(settings.max_events))
+        return FrictionResult(
+            mu_ratio=r[0], status=STATUS_BY_CODE[r[1]], error=r[3], period=r[2],
+            periods=r[4], events=r[5], stick_fraction=r[6], slip_fraction=r[7],
+            reverse_slip_fraction=r[8], flight_fraction=r[9],
+            final_state=_section_state(r[10], r[11], r[12], r[13]), system=dim,
+            v_inertial=float(V))
     cols = solve_points(np.full(shape, dim.alpha), np.full(shape, dim.beta),
                         np.full(shape, dim.amplitude), V, initial=initial, settings=settings)
     status = np.empty(V.size, dtype=object)

@@ -57,13 +57,19 @@ def evaluate(c, w, t):
 
 
 @jit
-def evaluate_slow(c, w, t):
-    """Value without the ``(D, E)`` pair (the free oscillation at ``w``)."""
+def value_at_zero(c):
+    """``g(0)``: the basis at ``t = 0`` is ``(1, 0, 1, 0, 1, 0, 0, 0)``."""
+    return c[0] + c[2] + c[4]
+
+
+@jit
+def evaluate_split(c, w, t):
+    """``(g, g - D cos wt - E sin wt)``: the value and its part without the free oscillation."""
     v = c[0] + c[1] * t + c[2] * math.cos(t) + c[3] * math.sin(t)
     if c[6] != 0.0 or c[7] != 0.0:
         cc, ss = cs_kernels(t, w)
         v += c[6] * cc + c[7] * ss
-    return v
+    return v + c[4] * math.cos(w * t) + c[5] * math.sin(w * t), v
 
 
 @jit

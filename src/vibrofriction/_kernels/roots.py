@@ -19,10 +19,11 @@ import math
 
 import numpy as np
 
-from .basis import derivative, evaluate, evaluate_slow, magnitude, sup_bound
+from .basis import derivative, evaluate, evaluate_split, magnitude, sup_bound, value_at_zero
 from .jit import jit
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
+FAST = 4.0  # free oscillations faster than this (w > FAST) are bounded by their amplitude
 REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
 
 
@@ -34,30 +35,30 @@ def start_margin(c, w, T):
     zero value at the start is decided by the first non-vanishing derivative
     (up to the third), each compared with its own round-off level.
     """
-    c1 = derivative(c, w)
-    c2 = derivative(c1, w)
-    c3 = derivative(c2, w)
-    g0 = evaluate(c, w, 0.0)
+    g0 = value_at_zero(c)
     tol = REL_TOL * magnitude(c)
     if g0 > tol:
         return True, 0.0
     if g0 < -tol:
         return False, 0.0
-    g1 = evaluate(c1, w, 0.0)
+    c1 = derivative(c, w)
+    c2 = derivative(c1, w)
+    c3 = derivative(c2, w)
+    g1 = value_at_zero(c1)
     tol = REL_TOL * magnitude(c1)
     if g1 > tol:
         m = sup_bound(c2, w, T)
         return True, min(T, g1 / m) if m > 0.0 else T
     if g1 < -tol:
         return False, 0.0
-    g2 = evaluate(c2, w, 0.0)
+    g2 = value_at_zero(c2)
     tol = REL_TOL * magnitude(c2)
     if g2 > tol:
         m = sup_bound(c3, w, T)
         return True, min(T, 1.5 * g2 / m) if m > 0.0 else T
     if g2 < -tol:
         return False, 0.0
-    g3 = evaluate(c3, w, 0.0)
+    g3 = value_at_zero(c3)
     tol = REL_TOL * magnitude(c3)
     if g3 > tol:
         m = sup_bound(derivative(c3, w), w, T)
@@ -82,7 +83,13 @@ def _refine(c, c1, w, a, b, ga, gb):
         if b - a <= 4e-16 * max(1.0, abs(b)):
             return b
         d = evaluate(c1, w, t)
-        t = t - gt / d if d != 0.0 else 0.5 * (a + b)
+        if d == 0.0:
+            t = 0.5 * (a + b)
+            continue
+        step = -gt / d
+        t = t + step
+        if abs(step) <= 2e-16 * max(1.0, abs(t)) and a < t <= b:
+            return t  # Newton has converged to round-off
     return b
 
 
@@ -96,41 +103,51 @@ def first_root(c, w, t0, T):
     c1 = derivative(c, w)
     c2 = derivative(c1, w)
     m2 = sup_bound(c2, w, T)
-    r = math.hypot(c[4], c[5])
-    cs = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
-    m2s = sup_bound(derivative(derivative(cs, w), w), w, T)
+    # split off the free oscillation only where it is fast (stiff contacts)
+    r = math.hypot(c[4], c[5]) if w > FAST else 0.0
+    m2s = 0.0
+    if r > 0.0:
+        cs = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
+        m2s = sup_bound(derivative(derivative(cs, w), w), w, T)
     a = t0
-    ga = evaluate(c, w, a)
+    ga, sa = evaluate_split(c, w, a)
     if ga <= 0.0:
         return a
-    sa = evaluate_slow(c, w, a) if r > 0.0 else 0.0
+    da = evaluate(c1, w, a)
     stack_t = np.empty(96)
     stack_g = np.empty(96)
     stack_s = np.empty(96)
+    stack_d = np.empty(96)
     stack_t[0] = T
-    stack_g[0] = evaluate(c, w, T)
-    stack_s[0] = evaluate_slow(c, w, T) if r > 0.0 else 0.0
+    stack_g[0], stack_s[0] = evaluate_split(c, w, T)
+    stack_d[0] = evaluate(c1, w, T)
     top = 0
     while top >= 0:
         b = stack_t[top]
         gb = stack_g[top]
         sb = stack_s[top]
+        db = stack_d[top]
         h = b - a
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
-            ga1 = evaluate(c1, w, a)
-            if ga1 < 0.0 and -ga1 > m2 * h or h < H_MIN or top >= 95:
+            if da < 0.0 and -da > m2 * h or h < H_MIN or top >= 95:
                 return _refine(c, c1, w, a, b, ga, gb)
         else:
             q = 0.125 * h * h
-            if min(ga, gb) > m2 * q or (r > 0.0 and min(sa, sb) - m2s * q - r > 0.0) \
-                    or h < H_MIN or top >= 95:
-                a, ga, sa = b, gb, sb
+            hh = 0.5 * h
+            # lower bounds: the linear interpolant, the two tangent parabolas meeting at
+            # the midpoint, and the slow part minus the fast amplitude
+            if (min(ga, gb) > m2 * q
+                    or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
+                        and gb - db * hh - 0.5 * m2 * hh * hh > 0.0)
+                    or (r > 0.0 and min(sa, sb) - m2s * q - r > 0.0)
+                    or h < H_MIN or top >= 95):
+                a, ga, sa, da = b, gb, sb, db
                 top -= 1
                 continue
         m = 0.5 * (a + b)
         top += 1
         stack_t[top] = m
-        stack_g[top] = evaluate(c, w, m)
-        stack_s[top] = evaluate_slow(c, w, m) if r > 0.0 else 0.0
+        stack_g[top], stack_s[top] = evaluate_split(c, w, m)
+        stack_d[top] = evaluate(c1, w, m)
     return -1.0

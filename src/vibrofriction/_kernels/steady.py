@@ -33,7 +33,7 @@ from .jit import jit
 
 MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
 N_ACC = 6  # accumulators: int_f, int_n, t_stick, t_slip, t_slip_neg, t_flight
-FIRST_NEWTON = 12  # first attempt to solve the periodicity condition, in periods
+FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 
 
 @jit
@@ -111,7 +111,9 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
     z = np.array([y, xd, f])
     events = 0
     jac = np.zeros((3, 3))
-    for _ in range(8):
+    have_jac = False
+    res_prev = np.inf
+    for _ in range(12):
         y0, xd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
         y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
                                               th_off, th_on, max_events)
@@ -122,29 +124,34 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         scale = 1.0 + alpha * abs(y0) + abs(xd0) + abs(f0)
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale:
+            if not have_jac:
+                return False, y, xd, f, events
             # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
             if nd >= 2:
-                tr = jac[0, 0] + jac[1, 1] + (jac[2, 2] if nd == 3 else 0.0)
                 mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
                 ev_mod = np.abs(np.linalg.eigvals(mat))
-                if tr != tr or np.max(ev_mod) >= 1.0 - 1e-9:
+                if not np.max(ev_mod) < 1.0 - 1e-9:
                     return False, y, xd, f, events
-            elif abs(jac[0, 0] + 1.0) >= 1.0 - 1e-9:
+            elif not abs(jac[0, 0] + 1.0) < 1.0 - 1e-9:
                 return False, y, xd, f, events
             return True, y0, xd0, f0, events
-        for j in range(nd):
-            h = 1e-7 * (1.0 + abs(z[j]))
-            zp = z.copy()
-            zp[j] += h
-            y2, xd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
-            y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
-                                                  th_off, th_on, max_events)
-            events += ev
-            if ph3 != ph or not ok:
-                return False, y, xd, f, events
-            jac[0, j] = ((y3 - y2) - r[0]) / h
-            jac[1, j] = ((xd3 - xd2) - r[1]) / h
-            jac[2, j] = ((f3 - f2) - r[2]) / h
+        if not have_jac or res > 0.25 * res_prev:
+            # (re)build the difference Jacobian of z -> P(z) - z; otherwise chord steps
+            for j in range(nd):
+                h = 1e-7 * (1.0 + abs(z[j]))
+                zp = z.copy()
+                zp[j] += h
+                y2, xd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
+                y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
+                                                      th_off, th_on, max_events)
+                events += ev
+                if ph3 != ph or not ok:
+                    return False, y, xd, f, events
+                jac[0, j] = ((y3 - y2) - r[0]) / h
+                jac[1, j] = ((xd3 - xd2) - r[1]) / h
+                jac[2, j] = ((f3 - f2) - r[2]) / h
+            have_jac = True
+        res_prev = res
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
             return False, y, xd, f, events
@@ -278,7 +285,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
             win[3] = 1.0
             break
         if k == next_newton and k < max_periods:
-            next_newton = 2 * next_newton + FIRST_NEWTON
+            next_newton = k + max(1, k // 2)
             # try the period whose section distance is smallest, then p = 1
             pbest = 1
             for p in range(2, min(k, MAX_PERIOD) + 1):
