@@ -1,0 +1,138 @@
+"""``vibrofriction sweep`` (an atlas into a zarr store) and ``vibrofriction plot STORE``.
+
+The sweep machinery (xarray, zarr, Dask) is imported inside the commands, so that
+the other commands start fast.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from ..params import Physical
+from ..solver import STATUS_BY_CODE, SolverSettings
+from ._app import app, friendly
+
+_AXIS = "a value, a comma list, or start:stop:num[:log]"
+
+
+def _opt(help_: str):
+    return typer.Option(help=f"{help_}; {_AXIS}")
+
+
+@app.command("sweep")
+@friendly
+def sweep_command(
+    out: Annotated[str, typer.Option(help="zarr store to write (resumed if it exists)")],
+    alpha: Annotated[str | None, _opt("alpha = k_x/(m omega^2), eq. (20)")] = None,
+    beta: Annotated[str | None, _opt("beta = (k_x + k_xc)/(m omega^2) > alpha; inf = rigid")]
+    = None,
+    amplitude: Annotated[str | None, _opt("a = du_z/u_z0 >= 0")] = None,
+    vbar: Annotated[str | None, _opt("velocity v0/v0* (eq. 16)")] = None,
+    v_inertial: Annotated[str | None, typer.Option(
+        "--v-inertial", help=f"velocity v0 m omega/(mu0 F_N0) (Fig. 6); {_AXIS}")] = None,
+    mass: Annotated[str | None, _opt("physical sweep: mass m, kg")] = None,
+    k_x: Annotated[str | None, typer.Option("--k-x", help=f"k_x, N/m; {_AXIS}")] = None,
+    k_xc: Annotated[str | None, typer.Option("--k-xc", help=f"k_xc, N/m; {_AXIS}")] = None,
+    k_zc: Annotated[str | None, typer.Option("--k-zc", help=f"k_zc, N/m; {_AXIS}")] = None,
+    u_z0: Annotated[str | None, typer.Option("--u-z0", help=f"u_z0, m; {_AXIS}")] = None,
+    du_z: Annotated[str | None, typer.Option("--du-z", help=f"du_z, m; {_AXIS}")] = None,
+    omega: Annotated[str | None, _opt("omega, rad/s")] = None,
+    mu0: Annotated[str | None, _opt("local coefficient of friction mu0")] = None,
+    v0: Annotated[str | None, _opt("physical sweep: velocity v0, m/s")] = None,
+    scheduler: Annotated[str | None, typer.Option(
+        help="Dask scheduler address (tcp://host:port): run on that cluster")] = None,
+    workers: Annotated[int | None, typer.Option(
+        help="local worker processes (default: all cores)")] = None,
+    chunk_size: Annotated[int, typer.Option(help="points per block of work")] = 1000,
+    continuation: Annotated[bool, typer.Option(
+        help="walk each velocity curve up then down from the previous final state")] = False,
+    initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
+    max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
+    overwrite: Annotated[bool, typer.Option(help="replace the store, do not resume")] = False,
+    progress: Annotated[bool, typer.Option(help="progress bar on stderr")] = True,
+) -> None:
+    """Compute an atlas of mu/mu0 (eq. 25) over a grid into a resumable zarr store.
+
+    Example: vibrofriction sweep --alpha 1e-2:0.5:41:log --beta 2:400:20:log
+    --amplitude 0.5 --vbar 0:1.2:121 --out atlas.zarr
+    """
+    from ..sweep import parse_axis, sweep
+
+    phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
+            "du_z": du_z, "omega": omega, "mu0": mu0}
+    settings = SolverSettings(max_periods=max_periods)
+    common = dict(store=out, workers=workers, chunk_size=chunk_size, settings=settings,
+                  initial=initial, continuation=continuation, progress=progress,
+                  overwrite=overwrite)
+    if any(v is not None for v in phys.values()) or v0 is not None:
+        missing = [k for k, v in phys.items() if v is None] + (["v0"] if v0 is None else [])
+        if missing:
+            raise ValueError("a physical sweep needs every SI parameter and v0; missing "
+                             + ", ".join("--" + m.replace("_", "-") for m in missing))
+        if any(v is not None for v in (alpha, beta, amplitude, vbar, v_inertial)):
+            raise ValueError("give either the dimensionless parameters or the physical ones")
+        values = {k: parse_axis(v, k) for k, v in phys.items()}
+        base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
+        grid = dict(system=base, v0=parse_axis(v0, "v0"), **values)
+    else:
+        missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
+                   if v is None]
+        if missing:
+            raise ValueError("missing " + ", ".join("--" + m for m in missing))
+        if (vbar is None) == (v_inertial is None):
+            raise ValueError("give exactly one of --vbar and --v-inertial")
+        grid = dict(alpha=parse_axis(alpha, "alpha"), beta=parse_axis(beta, "beta"),
+                    amplitude=parse_axis(amplitude, "amplitude"))
+        if vbar is not None:
+            grid["vbar"] = parse_axis(vbar, "vbar")
+        else:
+            grid["v_inertial"] = parse_axis(v_inertial, "v_inertial")
+
+    start = time.perf_counter()
+    if scheduler is not None:
+        if workers is not None:
+            raise ValueError("give either --scheduler or --workers")
+        from distributed import Client
+
+        common.pop("workers")
+        with Client(scheduler) as client:
+            ds = sweep(**grid, client=client, **common)
+    else:
+        ds = sweep(**grid, **common)
+    elapsed = time.perf_counter() - start
+    codes, counts = np.unique(ds["status"].values, return_counts=True)
+    summary = ", ".join(f"{STATUS_BY_CODE[int(c)].value} {n}" for c, n in
+                        zip(codes, counts, strict=True) if int(c) in STATUS_BY_CODE)
+    sizes = " x ".join(f"{d} {n}" for d, n in ds.sizes.items())
+    typer.echo(f"{out}: {int(np.prod(list(ds.sizes.values())))} points ({sizes}) "
+               f"in {elapsed:.1f} s; {summary}")
+
+
+@app.command("plot")
+@friendly
+def plot_command(
+    store: Annotated[str, typer.Argument(help="zarr store written by `vibrofriction sweep`")],
+    out: Annotated[str, typer.Option(help="image file to write (.png, .pdf, .svg)")],
+    x: Annotated[str | None, typer.Option(help="dimension along the horizontal axis "
+                                          "(default: the velocity)")] = None,
+    y: Annotated[str | None, typer.Option(help="second dimension: draw a map")] = None,
+    var: Annotated[str, typer.Option(help="variable to plot")] = "mu_ratio",
+    sel: Annotated[list[str] | None, typer.Option(
+        help="fix a dimension: dim=value (nearest; direction=up|down); repeatable")] = None,
+) -> None:
+    """Quick look at an atlas: curves along one dimension or a map over two."""
+    from ..sweep import open_atlas, plot_atlas
+
+    chosen = {}
+    for item in sel or []:
+        dim, eq, value = item.partition("=")
+        if not eq or not dim.strip() or not value.strip():
+            raise ValueError(f"--sel takes dim=value, got {item!r}")
+        chosen[dim.strip()] = value.strip()
+    ds = open_atlas(store)
+    plot_atlas(ds, x=x, y=y, var=var, sel=chosen, out=out)
+    typer.echo(out)

@@ -1,0 +1,148 @@
+"""Parameter atlases: labelled sweeps over grids, a resumable store, all cores, Dask.
+
+>>> import numpy as np
+>>> from vibrofriction.sweep import sweep
+>>> atlas = sweep(alpha=[0.01, 0.1], beta=2.0, amplitude=0.5,
+...               vbar=np.linspace(0, 1.2, 13), workers=1, progress=False)
+>>> atlas.mu_ratio.dims
+('alpha', 'vbar')
+
+The module itself is callable (``vibrofriction.sweep(...)`` is :func:`sweep`).
+See ``docs/sweeps.md`` for the store layout, resume semantics and Dask clusters.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import types
+from typing import Any
+
+import numpy as np
+import xarray as xr
+from numpy.typing import ArrayLike
+
+from ..solver import SolverSettings
+from ._grid import DEFAULT_CHUNK_SIZE, make_plan, parse_axis
+from ._run import available_cores, run_blocks
+from ._store import MemorySink, open_atlas, open_sink
+
+__all__ = ["available_cores", "make_plan", "open_atlas", "parse_axis", "plot_atlas", "sweep"]
+
+
+def _version() -> str:
+    from .. import __version__
+
+    return __version__
+
+
+def sweep(
+    system: Any = None,
+    *,
+    alpha: ArrayLike | None = None,
+    beta: ArrayLike | None = None,
+    amplitude: ArrayLike | None = None,
+    vbar: ArrayLike | None = None,
+    v_inertial: ArrayLike | None = None,
+    v0: ArrayLike | None = None,
+    store: str | os.PathLike | None = None,
+    client: Any = None,
+    workers: int | None = None,
+    chunk_size: int = DEFAULT_CHUNK_SIZE,
+    settings: SolverSettings | None = None,
+    initial: str = "sliding",
+    continuation: bool = False,
+    progress: bool = True,
+    overwrite: bool = False,
+    **physical: ArrayLike,
+) -> xr.Dataset:
+    """Steady-state friction ``mu_macro/mu0`` (eq. 25) over a grid of parameters.
+
+    Every parameter given as a 1-D array or list is swept (one dimension of the
+    result, in the order ``alpha, beta, amplitude`` then the velocity); a scalar is
+    held fixed (a scalar coordinate).  The grid is the outer product of the axes.
+
+    Parameters
+    ----------
+    system : optional base values: a :class:`~vibrofriction.params.Dimensionless`
+        (``alpha``, ``beta``, ``amplitude`` keywords override it) or a
+        :class:`~vibrofriction.params.Physical` system, swept over any of its SI
+        fields passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
+        du_z=..., omega=..., mu0=...``) and the velocity ``v0`` (m/s).
+    alpha, beta, amplitude : eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid
+        contact.  ``beta > alpha`` must hold at every grid point.
+    vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
+        exist where ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``) or the inertial
+        velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6).
+    v0 : velocity in m/s (Physical systems).
+    store : path of a zarr store.  Each finished block is written as soon as it is
+        done; calling again with the same arguments resumes, recomputing only
+        unfinished blocks.  A store made for another grid, other settings, another
+        initial state or package version is an error.  ``None``: results in memory.
+    client : a ``dask.distributed.Client``: run the blocks on its cluster.
+    workers : local processes (default: all cores available); 1 runs in this process.
+    chunk_size : points per block of work (and per zarr chunk), about.  An existing
+        store keeps its own block shape.
+    settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
+    initial : ``"sliding"`` (default, MODEL.md) or ``"rest"``: the start of every point,
+        or with continuation of the first point of each upward sweep.
+    continuation : walk each velocity curve up and then down, every point starting from
+        the final state of the previous one (hysteresis, coexisting steady states);
+        adds a ``direction`` dimension (``up``, ``down``).  The velocity axis must be
+        swept and increasing.
+    progress : show a progress bar (points done, rate, time left) on stderr.
+    overwrite : replace an existing store instead of resuming it.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``mu_ratio``, ``status`` (codes with ``flag_values``/``flag_meanings``),
+        ``error``, ``period``, ``periods``, ``events``, the stick/slip/reverse-slip/
+        flight fractions, ``v_inertial``, the final section state, and
+        ``critical_velocity`` (eq. 12) over the non-velocity parameters; units, long
+        names and symbols in the attributes, package version and solver settings in
+        the Dataset's attributes.  With a store the Dataset is opened lazily from it.
+
+    Results are bitwise identical however the work is split (one process, local
+    cores, a Dask cluster, any ``chunk_size``): each point depends on its own
+    parameters only.  Raises ``ValueError`` before any work for a bad grid.
+    """
+    plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
+                     v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
+                     initial=initial, continuation=continuation, chunk_size=chunk_size,
+                     version=_version())
+    if client is not None and workers is not None:
+        raise ValueError("give either client (a Dask cluster) or workers (local cores)")
+    if store is None:
+        sink: Any = MemorySink(plan)
+    else:
+        sink, _bad = open_sink(store, plan, overwrite=overwrite)
+        plan = sink.plan
+    try:
+        todo = [int(b) for b in np.flatnonzero(~sink.done)]
+        done_points = sum(plan.block_size(b) for b in np.flatnonzero(sink.done))
+        run_blocks(plan, todo, sink.write, client=client, workers=workers,
+                   progress=progress, initial_points=done_points)
+    finally:
+        sink.close()
+    return sink.dataset()
+
+
+def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
+    """Quick look at an atlas: curves along one dimension or a map over two.
+
+    See :func:`vibrofriction.sweep._plot.plot_atlas` (matplotlib is imported lazily).
+    """
+    from ._plot import plot_atlas as _plot
+
+    return _plot(source, **kwargs)
+
+
+class _CallableModule(types.ModuleType):
+    """``vibrofriction.sweep(...)`` calls :func:`sweep`; the module stays a module."""
+
+    def __call__(self, *args: Any, **kwargs: Any) -> xr.Dataset:
+        return sweep(*args, **kwargs)
+
+
+sys.modules[__name__].__class__ = _CallableModule

@@ -1,0 +1,141 @@
+"""The work of one block: runs in the calling process, a local worker or a Dask worker.
+
+Every point is solved by :func:`vibrofriction.solver.solve_points` from its own
+parameters only, so a block's values do not depend on which other points share
+its call: results are bitwise identical however the grid is split.  With
+continuation each row (one velocity curve) is walked up and then down in
+velocity, every point starting from the final section state of the previous
+one; rows are independent of each other.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import theory
+from .._kernels import codes
+from ..params import Physical
+from ..solver import SectionState, solve_points
+from ._grid import Plan
+from ._variables import point_variables, row_variables
+
+__all__ = ["compute_block", "warm_up"]
+
+
+def warm_up() -> None:
+    """Load the compiled kernels (from numba's on-disk cache, or compile and cache them)."""
+    solve_points(0.5, 2.0, 0.5, 0.1)
+
+
+def _rows(plan: Plan, block: int) -> dict[str, np.ndarray]:
+    """The non-velocity parameters of a block, broadcast over its row shape."""
+    sl = plan.row_slices(block)
+    k = 0
+    arrays = {}
+    swept = [a for a in plan.params if a.swept]
+    shape = tuple(s.stop - s.start for s in sl)
+    for a in plan.params:
+        if a.swept:
+            idx = [None] * len(shape)
+            idx[k] = slice(None)
+            arrays[a.name] = np.broadcast_to(a.values[sl[k]][tuple(idx)], shape)
+            k += 1
+        else:
+            arrays[a.name] = np.broadcast_to(a.values, shape)
+    assert k == len(swept)
+    return arrays
+
+
+def _velocity_values(plan: Plan, block: int) -> np.ndarray:
+    v = plan.velocity
+    if not v.swept:
+        return np.asarray(v.values).reshape(1)
+    return v.values[plan.block_slices(block)[-1]]
+
+
+def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
+    """``alpha, beta, amplitude`` per row, the row variables and ``V`` per (row, velocity)."""
+    p = _rows(plan, block)
+    al, be, am = p["alpha"], p["beta"], p["amplitude"]
+    c = np.asarray(theory.inertial_per_vbar(al, be, am), dtype=float).reshape(al.shape)
+    if plan.velocity.name == "vbar":
+        V = c[..., None] * vel  # = Dimensionless.vbar_to_inertial, element by element
+    else:
+        V = np.broadcast_to(vel, (*al.shape, vel.size)).copy()
+    return (al, be, am), {"critical_velocity": c}, V
+
+
+def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
+    p = _rows(plan, block)
+    shape = p["mass"].shape
+    al, be, am = (np.empty(shape) for _ in range(3))
+    V = np.empty((*shape, vel.size))
+    for i in np.ndindex(shape):
+        system = Physical(**{name: float(arr[i]) for name, arr in p.items()})
+        dim = system.to_dimensionless()
+        al[i], be[i], am[i] = dim.alpha, dim.beta, dim.amplitude
+        V[i] = system.v0_to_inertial(vel)
+    vstar = np.asarray(theory.critical_velocity(p["mu0"], p["omega"], p["du_z"], p["k_zc"],
+                                                p["k_xc"], p["k_x"], p["mass"]),
+                       dtype=float).reshape(shape)
+    rows = {"critical_velocity": vstar, "alpha": al, "beta": be, "amplitude": am}
+    return (al, be, am), rows, V
+
+
+def _state(cols: dict[str, np.ndarray], j: int) -> SectionState | None:
+    """The final section state of point ``j`` of a solve, or None where there is none."""
+    y, xd, f, ph = (cols[k].ravel()[j] for k in ("y", "x_dot", "f", "phase"))
+    if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) or not 0 <= ph <= 2:
+        return None
+    return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(ph)])
+
+
+def _continuation(al, be, am, V, plan: Plan) -> dict[str, np.ndarray]:
+    """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``."""
+    rshape, nv = al.shape, V.shape[-1]
+    out: dict[str, np.ndarray] | None = None
+    for i in np.ndindex(rshape):
+        state = None
+        order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
+        for d, j in order:
+            cols = solve_points(al[i], be[i], am[i], V[i][j],
+                                initial=state if state is not None else plan.initial,
+                                settings=plan.settings)
+            if out is None:
+                out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
+            for k, v in cols.items():
+                out[k][(*i, d, j)] = v
+            state = _state(cols, 0)
+    assert out is not None
+    return out
+
+
+def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
+    """Solve every point of block number ``block``; returns ``(block, variables)``.
+
+    Point variables have the block's shape, row variables the shape of its rows.
+    """
+    vel = _velocity_values(plan, block)
+    if plan.kind == "physical":
+        (al, be, am), rows, V = _physical_rows(plan, block, vel)
+    else:
+        (al, be, am), rows, V = _dimensionless_rows(plan, block, vel)
+    if plan.continuation:
+        cols = _continuation(al, be, am, V, plan)
+        shape = V.shape[:-1] + (2, V.shape[-1])
+        V = np.broadcast_to(V[..., None, :], shape)
+    else:
+        b = tuple(x[..., None] for x in (al, be, am))
+        cols = solve_points(*b, V, initial=plan.initial, settings=plan.settings)
+        shape = V.shape
+    cols["v_inertial"] = V
+    block_shape = tuple(s.stop - s.start for s in plan.block_slices(block))
+    out: dict[str, np.ndarray] = {}
+    for var in point_variables(plan.velocity.name):
+        out[var.name] = np.asarray(cols[var.source or var.name]).reshape(shape).astype(
+            var.dtype).reshape(block_shape)
+    for var in row_variables(plan.kind):
+        out[var.name] = np.asarray(rows[var.name]).astype(var.dtype)
+    return block, out

@@ -1,0 +1,385 @@
+"""The grid of a sweep: parsing, validation before any work, chunking into blocks.
+
+A grid is the outer product of one axis per *swept* parameter (a 1-D array or
+list); parameters given as scalars are held fixed.  The velocity axis (``vbar``,
+``v_inertial`` or, for a :class:`~vibrofriction.params.Physical` system, ``v0``)
+always comes last, so that a block holds whole velocity curves whenever it can
+(and always does with continuation).  With continuation a ``direction``
+dimension (``up``, ``down``) sits just before the velocity.
+
+A :class:`Plan` is everything that defines the result (grid, solver settings,
+initial state, continuation) plus the block shape; :meth:`Plan.signature` is
+what a store must match to be resumed.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import json
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from ..params import Physical
+from ..solver import SolverSettings
+
+__all__ = [
+    "DIMENSIONLESS",
+    "PHYSICAL",
+    "Axis",
+    "Plan",
+    "make_plan",
+    "parse_axis",
+]
+
+DIMENSIONLESS = ("alpha", "beta", "amplitude")
+PHYSICAL = tuple(f.name for f in dataclasses.fields(Physical))
+DIRECTIONS = ("up", "down")
+DEFAULT_CHUNK_SIZE = 1000
+
+
+# --------------------------------------------------------------------------- axes
+@dataclass(frozen=True, eq=False)
+class Axis:
+    """One parameter of the grid: ``values`` is 1-D if swept, 0-d if held fixed."""
+
+    name: str
+    values: NDArray[np.float64]
+
+    @property
+    def swept(self) -> bool:
+        return self.values.ndim == 1
+
+    def __len__(self) -> int:
+        return self.values.size
+
+
+def _axis(name: str, value: ArrayLike) -> Axis:
+    try:
+        arr = np.array(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number or a 1-D list/array of numbers, "
+                         f"got {value!r}") from None
+    if arr.ndim > 1:
+        raise ValueError(f"{name} must be a scalar (held fixed) or a 1-D array (swept), "
+                         f"got an array of shape {arr.shape}")
+    if arr.size == 0:
+        raise ValueError(f"{name}: empty grid (no values given)")
+    arr.setflags(write=False)
+    return Axis(name, arr)
+
+
+def _first_bad(arr: NDArray[np.float64], bad: NDArray[np.bool_]) -> float:
+    return float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
+
+
+def _check(axis: Axis, *, minimum: float, strict: bool, allow_inf: bool = False) -> None:
+    v = axis.values
+    finite = np.isfinite(v) | (allow_inf & (v == math.inf))
+    if not np.all(finite):
+        raise ValueError(f"{axis.name} must be finite{' (or inf)' if allow_inf else ''}, "
+                         f"got {_first_bad(v, ~finite)!r}")
+    below = (v <= minimum) if strict else (v < minimum)
+    if np.any(below):
+        rel = ">" if strict else ">="
+        raise ValueError(f"{axis.name} must be {rel} {minimum:g} at every grid point, "
+                         f"got {_first_bad(v, below)!r}")
+
+
+def parse_axis(text: str, name: str) -> float | NDArray[np.float64]:
+    """A grid axis from text: ``start:stop:num[:log]``, a single value, or a comma list.
+
+    ``0:1.2:121`` is ``numpy.linspace(0, 1.2, 121)``; ``1e-2:1e2:41:log`` is
+    ``numpy.geomspace(1e-2, 1e2, 41)``; ``0.5`` is held fixed; ``0.25,0.5,1`` (or
+    ``0.5,`` for a one-value axis) is swept.  ``inf`` is accepted (``beta``).
+    """
+    text = text.strip()
+    if not text:
+        raise ValueError(f"{name}: empty value")
+
+    def number(t: str) -> float:
+        try:
+            return float(t)
+        except ValueError:
+            raise ValueError(f"{name}: {t.strip()!r} is not a number (in {text!r})") from None
+
+    if ":" in text:
+        parts = [p.strip() for p in text.split(":")]
+        log = len(parts) == 4 and parts[3].lower() in ("log", "geom")
+        if len(parts) not in (3, 4) or (len(parts) == 4 and not log):
+            raise ValueError(f"{name}: a range is start:stop:num or start:stop:num:log, "
+                             f"got {text!r}")
+        start, stop = number(parts[0]), number(parts[1])
+        try:
+            num = int(parts[2])
+        except ValueError:
+            raise ValueError(f"{name}: the number of values in {text!r} must be an "
+                             f"integer, got {parts[2]!r}") from None
+        if num < 1:
+            raise ValueError(f"{name}: empty grid (num = {num} in {text!r})")
+        if not (math.isfinite(start) and math.isfinite(stop)):
+            raise ValueError(f"{name}: range ends must be finite, got {text!r}")
+        if log:
+            if not (start > 0 and stop > 0):
+                raise ValueError(f"{name}: a log range needs start, stop > 0, got {text!r}")
+            return np.geomspace(start, stop, num)
+        return np.linspace(start, stop, num)
+    if "," in text:
+        items = [t for t in text.split(",") if t.strip()]
+        if not items:
+            raise ValueError(f"{name}: empty grid (no values in {text!r})")
+        return np.array([number(t) for t in items])
+    return number(text)
+
+
+# --------------------------------------------------------------------------- plan
+def _hex(values: NDArray[np.float64]) -> str | list[str]:
+    if values.ndim == 0:
+        return float(values).hex()
+    return [float(x).hex() for x in values]
+
+
+@dataclass(frozen=True, eq=False)
+class Plan:
+    """A validated grid, what defines its results, and how it is cut into blocks."""
+
+    kind: str  # "dimensionless" or "physical"
+    params: tuple[Axis, ...]  # non-velocity parameters, canonical order
+    velocity: Axis
+    settings: SolverSettings
+    initial: str
+    continuation: bool
+    chunks: tuple[int, ...]  # block shape over `dims`
+    version: str
+
+    # ---- shape
+    @property
+    def row_dims(self) -> tuple[str, ...]:
+        return tuple(a.name for a in self.params if a.swept)
+
+    @property
+    def dims(self) -> tuple[str, ...]:
+        extra = (("direction",) if self.continuation else ()) + (
+            (self.velocity.name,) if self.velocity.swept else ())
+        return self.row_dims + extra
+
+    @property
+    def row_shape(self) -> tuple[int, ...]:
+        return tuple(len(a) for a in self.params if a.swept)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        extra = ((2,) if self.continuation else ()) + (
+            (len(self.velocity),) if self.velocity.swept else ())
+        return self.row_shape + extra
+
+    @property
+    def size(self) -> int:
+        return math.prod(self.shape)
+
+    @property
+    def fixed(self) -> dict[str, float]:
+        out = {a.name: float(a.values) for a in self.params if not a.swept}
+        if not self.velocity.swept:
+            out[self.velocity.name] = float(self.velocity.values)
+        return out
+
+    def axis(self, name: str) -> Axis:
+        for a in (*self.params, self.velocity):
+            if a.name == name:
+                return a
+        raise KeyError(name)
+
+    # ---- blocks
+    @property
+    def block_grid(self) -> tuple[int, ...]:
+        return tuple(-(-n // c) for n, c in zip(self.shape, self.chunks, strict=True))
+
+    @property
+    def n_blocks(self) -> int:
+        return math.prod(self.block_grid)
+
+    def block_slices(self, block: int) -> tuple[slice, ...]:
+        """Index of block number ``block`` (C order over :attr:`block_grid`) in the grid."""
+        if not 0 <= block < self.n_blocks:
+            raise IndexError(f"block {block} out of range (0..{self.n_blocks - 1})")
+        idx = np.unravel_index(block, self.block_grid) if self.block_grid else ()
+        return tuple(slice(int(i) * c, min((int(i) + 1) * c, n))
+                     for i, c, n in zip(idx, self.chunks, self.shape, strict=True))
+
+    def block_size(self, block: int) -> int:
+        return math.prod(s.stop - s.start for s in self.block_slices(block))
+
+    def row_slices(self, block: int) -> tuple[slice, ...]:
+        """The part of :meth:`block_slices` over the non-velocity (row) dimensions."""
+        return self.block_slices(block)[: len(self.row_dims)]
+
+    # ---- identity
+    def signature(self) -> dict[str, Any]:
+        """Everything that defines the values of the result (not the block shape)."""
+        return {
+            "kind": self.kind,
+            "params": {a.name: _hex(a.values) for a in self.params},
+            "velocity": {self.velocity.name: _hex(self.velocity.values)},
+            "settings": dataclasses.asdict(self.settings),
+            "initial": self.initial,
+            "continuation": self.continuation,
+            "version": self.version,
+        }
+
+    def token(self) -> str:
+        """A short hash of :meth:`signature` (Dask task keys)."""
+        import hashlib
+
+        text = json.dumps(self.signature(), sort_keys=True)
+        return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+    def with_chunks(self, chunks: tuple[int, ...]) -> Plan:
+        if len(chunks) != len(self.shape) or any(c < 1 for c in chunks):
+            raise ValueError(f"bad block shape {chunks} for a grid of shape {self.shape}")
+        return dataclasses.replace(self, chunks=tuple(int(c) for c in chunks))
+
+
+def _chunks(shape: tuple[int, ...], n_tail: int, chunk_size: int,
+            whole_tail: bool) -> tuple[int, ...]:
+    """Block shape of about ``chunk_size`` points, filled from the last dimension.
+
+    The last ``n_tail`` dimensions (direction, velocity) are kept whole if
+    ``whole_tail`` (continuation) even when that exceeds ``chunk_size``.
+    """
+    chunks = [1] * len(shape)
+    budget = chunk_size
+    for d in range(len(shape) - 1, -1, -1):
+        tail = d >= len(shape) - n_tail
+        c = shape[d] if (tail and whole_tail) else max(1, min(shape[d], budget))
+        chunks[d] = c
+        budget = max(1, budget // c)
+    return tuple(chunks)
+
+
+def make_plan(
+    *,
+    system: Any = None,
+    alpha: ArrayLike | None = None,
+    beta: ArrayLike | None = None,
+    amplitude: ArrayLike | None = None,
+    vbar: ArrayLike | None = None,
+    v_inertial: ArrayLike | None = None,
+    v0: ArrayLike | None = None,
+    physical: dict[str, ArrayLike] | None = None,
+    settings: SolverSettings | None = None,
+    initial: str = "sliding",
+    continuation: bool = False,
+    chunk_size: int = DEFAULT_CHUNK_SIZE,
+    version: str = "",
+) -> Plan:
+    """Validate a grid and cut it into blocks; every check happens here, before any work."""
+    from ..params import Dimensionless
+
+    physical = dict(physical or {})
+    settings = settings if settings is not None else SolverSettings()
+    if not isinstance(settings, SolverSettings):
+        raise TypeError(f"settings must be a SolverSettings, got {type(settings).__name__}")
+    if initial not in ("sliding", "rest"):
+        raise ValueError(f"initial must be 'sliding' or 'rest' for a sweep, got {initial!r}")
+    if isinstance(chunk_size, bool) or not isinstance(chunk_size, int | np.integer) \
+            or chunk_size < 1:
+        raise ValueError(f"chunk_size must be an integer >= 1, got {chunk_size!r}")
+
+    if isinstance(system, Physical):
+        if any(v is not None for v in (alpha, beta, amplitude, vbar, v_inertial)):
+            raise ValueError("a Physical system is swept over its SI parameters and v0; "
+                             "alpha, beta, amplitude, vbar, v_inertial are not allowed")
+        unknown = sorted(set(physical) - set(PHYSICAL))
+        if unknown:
+            raise ValueError(f"unknown physical parameter(s) {unknown}; "
+                             f"choose from {list(PHYSICAL)}")
+        if v0 is None:
+            raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
+        base = dataclasses.asdict(system)
+        params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
+        velocity = _axis("v0", v0)
+        _check(velocity, minimum=0.0, strict=False)
+        for a in params:  # each value of each axis, with the others at their base values
+            for x in np.atleast_1d(a.values):
+                system.with_(**{a.name: float(x)})
+        _check_physical_corners(params, velocity)
+        kind = "physical"
+    else:
+        if physical:
+            raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
+                             "system (sweep(Physical(...), v0=..., ...))")
+        if v0 is not None:
+            raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
+        if isinstance(system, Dimensionless):
+            alpha = system.alpha if alpha is None else alpha
+            beta = system.beta if beta is None else beta
+            amplitude = system.amplitude if amplitude is None else amplitude
+        elif system is not None:
+            raise TypeError(f"system must be a Dimensionless or Physical, "
+                            f"got {type(system).__name__}")
+        missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
+                   if v is None]
+        if missing:
+            raise ValueError(f"missing parameter(s) {missing}: give a value or an array each")
+        given = [n for n, v in (("vbar", vbar), ("v_inertial", v_inertial)) if v is not None]
+        if len(given) != 1:
+            raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
+                             f"(got {given or 'none'})")
+        al, be, am = _axis("alpha", alpha), _axis("beta", beta), _axis("amplitude", amplitude)
+        velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
+        _check(al, minimum=0.0, strict=True)
+        _check(be, minimum=0.0, strict=True, allow_inf=True)
+        _check(am, minimum=0.0, strict=False)
+        _check(velocity, minimum=0.0, strict=False)
+        if not float(np.min(be.values)) > float(np.max(al.values)):
+            raise ValueError(
+                f"beta must be > alpha at every grid point: beta = {float(np.min(be.values))!r}"
+                f" <= alpha = {float(np.max(al.values))!r} (beta = (k_x + k_xc)/(m omega^2) "
+                "exceeds alpha = k_x/(m omega^2))")
+        if velocity.name == "vbar":
+            for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
+                                     (be, 1.0, "beta == 1 (case III: v0* is zero)"),
+                                     (am, 0.0, "amplitude == 0 (v0* is zero)")):
+                if np.any(axis.values == value):
+                    raise ValueError(f"vbar does not exist where {why}, and {axis.name} = "
+                                     f"{value:g} is in the grid: sweep v_inertial instead")
+        params = (al, be, am)
+        kind = "dimensionless"
+
+    if continuation:
+        if not velocity.swept or len(velocity) < 2:
+            raise ValueError(f"continuation needs a swept velocity axis ({velocity.name}) "
+                             "with at least two values")
+        if not np.all(np.diff(velocity.values) > 0):
+            raise ValueError(f"continuation needs {velocity.name} strictly increasing")
+    plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
+                initial=initial, continuation=bool(continuation), chunks=(),
+                version=version)
+    n_tail = int(continuation) + int(velocity.swept)
+    return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
+
+
+def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis) -> None:
+    """The dimensionless groups are monotonic in each SI parameter: check the corners.
+
+    Catches combinations that are valid one by one but not together (overflow of
+    ``m omega^2``, ``k_xc`` below the rounding of ``k_x`` so that ``beta == alpha``).
+    """
+    ends = [(float(np.min(a.values)), float(np.max(a.values))) for a in params]
+    vmax = float(np.max(velocity.values))
+    for corner in itertools.product(*ends):
+        p = Physical(*corner)
+        try:
+            p.to_dimensionless()
+            V = float(p.v0_to_inertial(vmax))
+        except ValueError as exc:
+            raise ValueError(f"the physical grid has an invalid corner "
+                             f"{dict(zip(PHYSICAL, corner, strict=True))}: {exc}") from None
+        if not math.isfinite(V):
+            raise ValueError(f"v0 = {vmax!r} overflows the inertial velocity at "
+                             f"{dict(zip(PHYSICAL, corner, strict=True))}")
