@@ -1,0 +1,378 @@
+"""Sweeps (vibrofriction.sweep): grids, validation, the labelled Dataset, bitwise
+reproducibility however the work is split, continuation, physical grids, CLI, plots."""
+
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+import xarray as xr
+
+import vibrofriction
+import vibrofriction.sweep as vsweep
+from vibrofriction import Dimensionless, Physical, friction_coefficient
+from vibrofriction.solver import STATUS_BY_CODE, SolverSettings, solve_points
+from vibrofriction.sweep import make_plan, parse_axis, sweep
+
+VBAR = np.linspace(0.0, 1.2, 13)
+GRID = dict(alpha=[0.01, 0.1, 0.3], beta=[2.0, 5.0], amplitude=0.5, vbar=VBAR)
+
+
+def assert_bitwise(a: xr.Dataset, b: xr.Dataset) -> None:
+    """Same variables, same coordinates, and every numeric array equal byte for byte."""
+    assert set(a.variables) == set(b.variables)
+    for name in a.variables:
+        x, y = a[name].values, b[name].values
+        assert a[name].dims == b[name].dims, name
+        if x.dtype.kind in "OUT" or y.dtype.kind in "OUT":
+            assert [str(v) for v in x.ravel()] == [str(v) for v in y.ravel()], name
+        else:
+            assert x.dtype == y.dtype, name
+            assert x.tobytes() == y.tobytes(), name
+
+
+@pytest.fixture(scope="module")
+def serial() -> xr.Dataset:
+    return sweep(**GRID, workers=1, progress=False)
+
+
+# --------------------------------------------------------------------------- parsing
+@pytest.mark.parametrize(("text", "expected"), [
+    ("0:1.2:121", np.linspace(0, 1.2, 121)),
+    ("1e-2:1e2:41:log", np.geomspace(1e-2, 1e2, 41)),
+    ("0.25,0.5,1", np.array([0.25, 0.5, 1.0])),
+    ("0.5,", np.array([0.5])),
+    ("inf", math.inf),
+    (" 0.5 ", 0.5),
+])
+def test_parse_axis(text, expected) -> None:
+    got = parse_axis(text, "x")
+    assert np.array_equal(got, expected)
+    assert np.ndim(got) == np.ndim(expected)
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("", "x: empty value"),
+    ("a,b", "'a' is not a number"),
+    ("0:1", "a range is start:stop:num"),
+    ("0:1:5:lin", "a range is start:stop:num"),
+    ("0:1:0", "empty grid"),
+    ("0:1:2.5", "must be an integer"),
+    ("0:1:5:log", "log range needs start, stop > 0"),
+    ("0:inf:3", "range ends must be finite"),
+])
+def test_parse_axis_errors(text, message) -> None:
+    with pytest.raises(ValueError, match=message):
+        parse_axis(text, "x")
+
+
+# --------------------------------------------------------------------------- validation
+@pytest.mark.parametrize(("changes", "message"), [
+    (dict(alpha=[]), r"alpha: empty grid"),
+    (dict(vbar=np.array([])), r"vbar: empty grid"),
+    (dict(alpha=[0.1, math.nan]), r"alpha must be finite, got nan"),
+    (dict(beta=[2.0, math.nan]), r"beta must be finite \(or inf\), got nan"),
+    (dict(amplitude=[0.5, math.inf]), r"amplitude must be finite, got inf"),
+    (dict(vbar=[0.1, -0.1]), r"vbar must be >= 0 at every grid point, got -0.1"),
+    (dict(alpha=[0.0, 0.1]), r"alpha must be > 0 at every grid point, got 0.0"),
+    (dict(alpha=[0.1, 3.0]), r"beta must be > alpha at every grid point: beta = 2.0 <= "
+                             r"alpha = 3.0"),
+    (dict(beta=[0.3, 2.0]), r"beta must be > alpha at every grid point"),
+    (dict(alpha=[0.5, 1.0], beta=[2.0]), r"vbar does not exist where alpha == 1"),
+    (dict(beta=[1.0, 2.0], alpha=0.5), r"vbar does not exist where beta == 1"),
+    (dict(amplitude=[0.0, 0.5]), r"vbar does not exist where amplitude == 0"),
+    (dict(alpha=[[0.1, 0.2]]), r"alpha must be a scalar \(held fixed\) or a 1-D array"),
+    (dict(alpha="abc"), r"alpha must be a number or a 1-D list"),
+])
+def test_bad_grid_is_a_clear_error_before_any_work(changes, message, monkeypatch) -> None:
+    def no_work(*args, **kwargs):
+        raise AssertionError("work started")
+
+    monkeypatch.setattr(vsweep._run, "run_blocks", no_work)
+    monkeypatch.setattr(vsweep, "run_blocks", no_work)
+    with pytest.raises(ValueError, match=message):
+        sweep(**{**GRID, **changes}, workers=1, progress=False)
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5), r"exactly one velocity axis"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, v_inertial=0.1),
+     r"exactly one velocity axis"),
+    (dict(alpha=0.1, amplitude=0.5, vbar=0.1), r"missing parameter\(s\) \['beta'\]"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, v0=0.1), r"v0 \(m/s\) needs a Physical"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, mass=[1.0]), r"need a Physical"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, continuation=True),
+     r"continuation needs a swept velocity axis"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.2, 0.1], continuation=True),
+     r"continuation needs vbar strictly increasing"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, chunk_size=0), r"chunk_size"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, initial="resting"), r"initial"),
+    (dict(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.1, workers=0), r"workers"),
+])
+def test_bad_call(kwargs, message) -> None:
+    with pytest.raises(ValueError, match=message):
+        sweep(**kwargs, progress=False)
+
+
+def test_v_inertial_axis_exists_where_vbar_does_not() -> None:
+    # case III (beta = 1), case IV (alpha = 1) and a = 0 are fine with the inertial velocity
+    ds = sweep(alpha=[0.5, 1.0], beta=4.0, amplitude=[0.0, 0.5], v_inertial=[0.0, 0.3],
+               workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("alpha", "amplitude", "v_inertial")
+    assert "v_inertial" not in ds.data_vars  # it is the coordinate
+    assert math.isinf(float(ds.critical_velocity.sel(alpha=1.0, amplitude=0.5)))
+    assert float(ds.critical_velocity.sel(alpha=0.5, amplitude=0.0)) == 0.0
+    # no oscillation: mu = mu0 at every velocity
+    assert np.all(ds.mu_ratio.sel(amplitude=0.0).values == 1.0)
+    iii = sweep(alpha=0.5, beta=[1.0, 4.0], amplitude=0.5, v_inertial=[0.0, 0.3], workers=1,
+                progress=False)
+    assert float(iii.critical_velocity.sel(beta=1.0)) == 0.0
+    # case III: mu = mu0 at every velocity (the contact resonance slides)
+    assert float(iii.mu_ratio.sel(beta=1.0, v_inertial=0.3)) == pytest.approx(1.0, abs=1e-6)
+
+
+# --------------------------------------------------------------------------- the Dataset
+def test_dataset_is_labelled(serial: xr.Dataset) -> None:
+    ds = serial
+    assert ds.mu_ratio.dims == ("alpha", "beta", "vbar")
+    assert ds.sizes == {"alpha": 3, "beta": 2, "vbar": 13}
+    assert float(ds.amplitude) == 0.5 and ds.amplitude.ndim == 0  # fixed: scalar coord
+    assert ds.critical_velocity.dims == ("alpha", "beta")
+    for name in ("mu_ratio", "status", "error", "periods", "period", "events",
+                 "stick_fraction", "slip_fraction", "reverse_slip_fraction",
+                 "flight_fraction", "v_inertial", "final_y", "final_x_dot", "final_f",
+                 "final_phase", "critical_velocity"):
+        assert name in ds.data_vars, name
+        assert ds[name].attrs.get("long_name"), name
+    for name in ("mu_ratio", "critical_velocity", "alpha", "beta", "amplitude", "vbar"):
+        assert "symbol" in ds[name].attrs and "units" in ds[name].attrs, name
+    assert ds.mu_ratio.attrs["equation"] == "(25)"
+    assert ds.critical_velocity.attrs["equation"] == "(12)"
+    flags = ds.status.attrs
+    meanings = flags["flag_meanings"].split()
+    assert len(meanings) == len(flags["flag_values"])
+    for code, word in zip(flags["flag_values"], meanings, strict=True):
+        if code in STATUS_BY_CODE:
+            assert word == STATUS_BY_CODE[code].value.replace(" ", "_")
+    assert set(np.unique(ds.status.values)) <= set(STATUS_BY_CODE)
+    assert ds.attrs["vibrofriction_version"] == vibrofriction.__version__
+    assert ds.attrs["solver_max_periods"] == SolverSettings().max_periods
+    assert '"tol_mean": 1e-07' in ds.attrs["solver_settings"]
+    assert ds.attrs["velocity"] == "vbar" and ds.attrs["fixed"] == "amplitude"
+
+
+def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:
+    for al in (0.01, 0.3):
+        system = Dimensionless(al, 5.0, 0.5)
+        ref = friction_coefficient(system, vbar=VBAR)
+        row = serial.sel(alpha=al, beta=5.0)
+        assert row.mu_ratio.values.tobytes() == ref.mu_ratio.tobytes()
+        assert row.v_inertial.values.tobytes() == np.asarray(
+            system.vbar_to_inertial(VBAR)).tobytes()
+        assert [STATUS_BY_CODE[int(c)] for c in row.status.values] == list(ref.status)
+        assert np.array_equal(row.periods.values, ref.periods)
+        assert float(serial.critical_velocity.sel(alpha=al, beta=5.0)) == \
+            system.critical_inertial_velocity()
+
+
+def test_static_limit_and_continuous_sliding(serial: xr.Dataset) -> None:
+    # eq. (2) at vbar = 0 and mu = mu0 exactly above vbar = 1 (away from resonances)
+    assert np.all(serial.mu_ratio.sel(vbar=0.0).values == 0.5)
+    assert np.all(serial.status.sel(vbar=0.0).values == -1)
+    assert np.all(serial.mu_ratio.sel(vbar=1.2).values == 1.0)
+
+
+@pytest.mark.parametrize("chunk_size", [1, 7, 13, 50, 10_000])
+def test_bitwise_identical_for_any_chunking(serial: xr.Dataset, chunk_size: int) -> None:
+    assert_bitwise(serial, sweep(**GRID, workers=1, chunk_size=chunk_size, progress=False))
+
+
+def test_bitwise_identical_on_local_cores(serial: xr.Dataset) -> None:
+    assert_bitwise(serial, sweep(**GRID, workers=2, chunk_size=11, progress=False))
+
+
+def test_module_is_callable(serial: xr.Dataset) -> None:
+    assert_bitwise(serial, vibrofriction.sweep(**GRID, workers=1, progress=False))
+
+
+def test_block_shapes_follow_chunk_size() -> None:
+    plan = make_plan(alpha=np.geomspace(0.01, 0.5, 41), beta=np.linspace(2, 40, 41),
+                     amplitude=0.5, vbar=np.linspace(0, 1.2, 121), chunk_size=1000)
+    assert plan.chunks == (1, 8, 121)
+    assert plan.n_blocks == 41 * 6
+    assert sum(plan.block_size(b) for b in range(plan.n_blocks)) == plan.size
+    plan = make_plan(alpha=0.1, beta=2.0, amplitude=0.5, vbar=np.linspace(0, 1, 2500),
+                     chunk_size=1000)
+    assert plan.chunks == (1000,) and plan.n_blocks == 3
+    cont = make_plan(alpha=[0.1, 0.2, 0.3], beta=2.0, amplitude=0.5,
+                     vbar=np.linspace(0.1, 1, 30), continuation=True, chunk_size=10)
+    assert cont.dims == ("alpha", "direction", "vbar")
+    assert cont.chunks == (1, 2, 30)  # velocity curves are never split for continuation
+
+
+def test_single_point_grid() -> None:
+    ds = sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=0.5, workers=1, progress=False)
+    assert ds.mu_ratio.dims == ()
+    ref = friction_coefficient(Dimensionless(0.1, 2.0, 0.5), vbar=0.5)
+    assert float(ds.mu_ratio) == ref.mu_ratio
+
+
+def test_dimensionless_base_system_with_overrides() -> None:
+    a = sweep(Dimensionless(0.1, 2.0, 0.5), vbar=[0.2, 0.4], amplitude=[0.5, 1.5],
+              workers=1, progress=False)
+    b = sweep(alpha=0.1, beta=2.0, amplitude=[0.5, 1.5], vbar=[0.2, 0.4], workers=1,
+              progress=False)
+    assert_bitwise(a, b)
+    assert a.flight_fraction.sel(amplitude=1.5).values.min() > 0  # jumping
+    assert np.all(a.flight_fraction.sel(amplitude=0.5).values == 0)
+
+
+# --------------------------------------------------------------------------- continuation
+def test_continuation_up_then_down_from_previous_states() -> None:
+    vbar = np.linspace(0.05, 1.2, 8)
+    ds = sweep(alpha=[0.01, 0.3], beta=2.0, amplitude=0.5, vbar=vbar, continuation=True,
+               workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("alpha", "direction", "vbar")
+    assert list(ds.direction.values) == ["up", "down"]
+    # the first point of the up sweep starts like an independent point ...
+    indep = sweep(alpha=[0.01, 0.3], beta=2.0, amplitude=0.5, vbar=vbar, workers=1,
+                  progress=False)
+    first = ds.isel(vbar=0).sel(direction="up")
+    assert first.mu_ratio.values.tobytes() == indep.mu_ratio.isel(vbar=0).values.tobytes()
+    # ... and every later one starts from its predecessor's final state, by hand:
+    al = 0.3
+    row = ds.sel(alpha=al)
+    V = np.asarray(Dimensionless(al, 2.0, 0.5).vbar_to_inertial(vbar))
+    prev = row.sel(direction="up").isel(vbar=2)
+    state = vibrofriction.SectionState(float(prev.final_y), float(prev.final_x_dot),
+                                       float(prev.final_f),
+                                       ("stick", "slip+", "slip-")[int(prev.final_phase)])
+    by_hand = solve_points(al, 2.0, 0.5, V[3], initial=state)
+    assert float(by_hand["mu_ratio"]) == float(row.sel(direction="up").mu_ratio[3])
+    top = row.sel(direction="up").isel(vbar=-1)
+    state = vibrofriction.SectionState(float(top.final_y), float(top.final_x_dot),
+                                       float(top.final_f),
+                                       ("stick", "slip+", "slip-")[int(top.final_phase)])
+    by_hand = solve_points(al, 2.0, 0.5, V[-1], initial=state)
+    assert float(by_hand["mu_ratio"]) == float(row.sel(direction="down").mu_ratio[-1])
+    # steady states here are unique: both directions agree to the solver's accuracy
+    up, down = (row.sel(direction=d).mu_ratio.values for d in ("up", "down"))
+    assert np.allclose(up, down, atol=1e-5)
+    # splitting the rows differently changes nothing
+    assert_bitwise(ds, sweep(alpha=[0.01, 0.3], beta=2.0, amplitude=0.5, vbar=vbar,
+                             continuation=True, workers=2, chunk_size=1, progress=False))
+
+
+# --------------------------------------------------------------------------- physical
+def pin(**changes) -> Physical:
+    base = dict(mass=0.01, k_x=0.01 * (2 * math.pi * 800) ** 2, k_xc=2.0e5, k_zc=2.5e5,
+                u_z0=4.0e-6, du_z=2.0e-6, omega=2 * math.pi * 1000, mu0=0.3)
+    base.update(changes)
+    return Physical(**base)
+
+
+def test_physical_sweep() -> None:
+    system = pin()
+    v0 = np.linspace(0.0, 2.0 * system.critical_velocity(), 6)
+    ds = sweep(system, k_xc=[1.0e5, 2.0e5], du_z=[1.0e-6, 2.0e-6], v0=v0, workers=1,
+               progress=False)
+    assert ds.mu_ratio.dims == ("k_xc", "du_z", "v0")
+    assert ds.v0.attrs["units"] == "m s-1" and ds.critical_velocity.attrs["units"] == "m s-1"
+    assert float(ds.mass) == system.mass
+    for k_xc in (1.0e5, 2.0e5):
+        for du_z in (1.0e-6, 2.0e-6):
+            s = system.with_(k_xc=k_xc, du_z=du_z)
+            ref = friction_coefficient(s, v0=v0)
+            point = ds.sel(k_xc=k_xc, du_z=du_z)
+            assert point.mu_ratio.values.tobytes() == ref.mu_ratio.tobytes()
+            d = s.to_dimensionless()
+            assert (float(point.alpha), float(point.beta), float(point.amplitude)) == (
+                d.alpha, d.beta, d.amplitude)
+            assert float(point.critical_velocity) == s.critical_velocity()
+    assert_bitwise(ds, sweep(system, k_xc=[1.0e5, 2.0e5], du_z=[1.0e-6, 2.0e-6], v0=v0,
+                             workers=2, chunk_size=4, progress=False))
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    (dict(mass=[0.01, -1.0]), r"mass must be finite and > 0, got -1.0"),
+    (dict(k_x=[]), r"k_x: empty grid"),
+    (dict(mas=[1.0]), r"unknown physical parameter\(s\) \['mas'\]"),
+    (dict(alpha=[0.1]), r"alpha, beta, amplitude, vbar, v_inertial are not allowed"),
+    (dict(k_xc=[1e-30]), r"invalid corner .*beta must be > alpha"),
+])
+def test_physical_grid_errors(kwargs, message) -> None:
+    with pytest.raises(ValueError, match=message):
+        sweep(pin(), v0=[0.0, 0.01], progress=False, **kwargs)
+
+
+def test_physical_needs_v0() -> None:
+    with pytest.raises(ValueError, match="give the sliding velocity v0"):
+        sweep(pin(), k_x=[1.0, 2.0], progress=False)
+
+
+# --------------------------------------------------------------------------- plots, CLI
+def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
+    exe = Path(sys.executable).with_name("vibrofriction")
+    env = {**os.environ, "PYTHONWARNINGS": "ignore"}
+    return subprocess.run([str(exe), *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=300, env=env)
+
+
+def test_cli_sweep_and_plot(tmp_path: Path) -> None:
+    r = _cli("sweep", "--alpha", "0.01,0.1,0.3", "--beta", "2,5", "--amplitude", "0.5",
+             "--vbar", "0:1.2:13", "--out", "atlas.zarr", "--workers", "1",
+             "--chunk-size", "20", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert "78 points (alpha 3 x beta 2 x vbar 13)" in r.stdout
+    assert "pt/s" in r.stderr  # the progress bar: points, rate
+    stored = vsweep.open_atlas(tmp_path / "atlas.zarr")
+    assert stored.attrs["blocks_done"] == stored.attrs["blocks_total"]
+    ref = sweep(alpha=[0.01, 0.1, 0.3], beta=[2.0, 5.0], amplitude=0.5,
+                vbar=np.linspace(0, 1.2, 13), workers=1, progress=False)
+    assert ref.mu_ratio.values.tobytes() == stored.mu_ratio.values.tobytes()
+    for extra in ([], ["--y", "alpha", "--sel", "beta=2"], ["--x", "alpha", "--sel",
+                                                             "vbar=0.5"]):
+        out = tmp_path / f"fig{len(extra)}.png"
+        r = _cli("plot", "atlas.zarr", *extra, "--sel", "beta=5", "--out", str(out),
+                 cwd=tmp_path) if not extra else _cli("plot", "atlas.zarr", *extra,
+                                                      "--out", str(out), cwd=tmp_path)
+        assert r.returncode == 0, r.stderr
+        assert out.stat().st_size > 10_000
+        assert out.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize(("args", "message"), [
+    (["sweep", "--alpha", "0.1", "--beta", "2", "--amplitude", "0.5", "--vbar", "0:1:0",
+      "--out", "x.zarr"], "vbar: empty grid"),
+    (["sweep", "--alpha", "0.1,3", "--beta", "2", "--amplitude", "0.5", "--vbar", "0.5",
+      "--out", "x.zarr"], "beta must be > alpha"),
+    (["sweep", "--alpha", "0.1", "--beta", "2", "--amplitude", "0.5", "--out", "x.zarr"],
+     "exactly one of --vbar and --v-inertial"),
+    (["sweep", "--mass", "1", "--v0", "0.1", "--out", "x.zarr"], "missing --k-x"),
+    (["plot", "nothing.zarr", "--out", "x.png"], "not a vibrofriction sweep store"),
+])
+def test_cli_bad_input_is_one_line_and_exit_2(tmp_path: Path, args, message) -> None:
+    r = _cli(*args, cwd=tmp_path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert message in r.stderr
+    assert r.stderr.count("\n") == 1
+    assert not (tmp_path / "x.zarr").exists()
+
+
+def test_plot_function_curves_and_map(serial: xr.Dataset, tmp_path: Path) -> None:
+    fig = vsweep.plot_atlas(serial, sel={"beta": 2.0}, out=tmp_path / "c.png")
+    ax = fig.axes[0]
+    assert len(ax.lines) >= 3 and ax.get_xlabel() == r"$\bar v$"
+    fig = vsweep.plot_atlas(serial, x="vbar", y="alpha", sel={"beta": 5.0})
+    assert len(fig.axes) == 2  # map and colour bar
+    with pytest.raises(ValueError, match="fix some of alpha, beta"):
+        vsweep.plot_atlas(serial)
+    with pytest.raises(ValueError, match="needs the other swept dimensions fixed: beta"):
+        vsweep.plot_atlas(serial, x="vbar", y="alpha")
+    with pytest.raises(ValueError, match="unknown variable"):
+        vsweep.plot_atlas(serial, var="nope")
