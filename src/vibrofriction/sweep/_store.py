@@ -177,16 +177,17 @@ def _describe(key: str, stored: dict[str, Any], wanted: dict[str, Any]) -> str:
             d = d.get(p) if isinstance(d, dict) else None
         return d
 
+    hexed = key.startswith(("params.", "velocity."))  # grid values are stored as hex
+
     def show(v):
-        if isinstance(v, list):
+        if v is None:
+            return "absent"
+        if hexed and isinstance(v, list):
             vals = [float.fromhex(x) for x in v]
             return f"{len(vals)} values {vals[0]:g}..{vals[-1]:g}" if vals else "[]"
-        if isinstance(v, str):
-            try:
-                return f"{float.fromhex(v):g}"
-            except ValueError:
-                return repr(v)
-        return "absent" if v is None else repr(v)
+        if hexed and isinstance(v, str):
+            return f"{float.fromhex(v):g}"
+        return repr(v)
 
     return f"{key}: store has {show(get(stored, key))}, this call {show(get(wanted, key))}"
 
