@@ -203,12 +203,12 @@ def test_module_is_callable(serial: xr.Dataset) -> None:
 def test_block_shapes_follow_chunk_size() -> None:
     plan = make_plan(alpha=np.geomspace(0.01, 0.5, 41), beta=np.linspace(2, 40, 41),
                      amplitude=0.5, vbar=np.linspace(0, 1.2, 121), chunk_size=1000)
-    assert plan.chunks == (1, 8, 121)
+    assert plan.chunks == (1, 7, 121)  # 6 blocks of 7 or 6 betas, not 5 of 8 and one of 1
     assert plan.n_blocks == 41 * 6
     assert sum(plan.block_size(b) for b in range(plan.n_blocks)) == plan.size
     plan = make_plan(alpha=0.1, beta=2.0, amplitude=0.5, vbar=np.linspace(0, 1, 2500),
                      chunk_size=1000)
-    assert plan.chunks == (1000,) and plan.n_blocks == 3
+    assert plan.chunks == (834,) and plan.n_blocks == 3
     cont = make_plan(alpha=[0.1, 0.2, 0.3], beta=2.0, amplitude=0.5,
                      vbar=np.linspace(0.1, 1, 30), continuation=True, chunk_size=10)
     assert cont.dims == ("alpha", "direction", "vbar")

@@ -255,7 +255,10 @@ def _chunks(shape: tuple[int, ...], n_tail: int, chunk_size: int,
     budget = chunk_size
     for d in range(len(shape) - 1, -1, -1):
         tail = d >= len(shape) - n_tail
-        c = shape[d] if (tail and whole_tail) else max(1, min(shape[d], budget))
+        if (tail and whole_tail) or shape[d] <= budget:
+            c = shape[d]
+        else:  # as many blocks as needed, of (nearly) equal size: no small remainder block
+            c = -(-shape[d] // -(-shape[d] // budget))
         chunks[d] = c
         budget = max(1, budget // c)
     return tuple(chunks)
