@@ -47,6 +47,7 @@ __all__ = [
     "liftoff_phases",
     "mean_normal_force",
     "mu_ratio_soft",
+    "mu_ratio_soft_corrected",
     "mu_ratio_stiff",
     "resonant_plateau",
     "resonant_plateau_exact",
@@ -314,12 +315,43 @@ def mu_ratio_soft(vbar: ArrayLike, amplitude: ArrayLike,
     eq. 26). Stated for ``0 <= a <= 1`` (Fig. 4); for ``a > 1`` the static part
     ``1 - a`` would be negative, contradicting eq. (2) (which gives 0), so
     ``a > 1`` raises ValueError.
+
+    This is the formula *as transcribed*; it disagrees with the numerics by up to
+    0.29 and with the small-velocity asymptotics.  See :func:`mu_ratio_soft_corrected`
+    (``vbar`` under the square root), which agrees within 0.012 (docs/theory.md).
     """
     v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
     a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
     p = float(_checked("exponent", exponent, minimum=0.0, strict=True))
     vc = np.minimum(v, 1.0)
     law = (1.0 - a) + a * (_SOFT_SLOPE * vc + (1.0 - _SOFT_SLOPE) * vc**p)
+    return _out(np.where(v < 1.0, law, 1.0))
+
+
+def mu_ratio_soft_corrected(vbar: ArrayLike, amplitude: ArrayLike,
+                            exponent: float = SOFT_EXPONENT) -> FloatOrArray:
+    r"""Eq. (27) with ``vbar`` under the square root, as the small-velocity limit requires.
+
+    .. math:: \frac{\mu}{\mu_0} = (1 - a) + a\left[\sqrt{\tfrac{4\pi}{9}\bar v}
+              + \left(1 - \sqrt{4\pi/9}\right)\bar v^{p}\right], \quad \bar v < 1,
+
+    and ``1`` for ``vbar >= 1``.  Derivation of the leading term (rigid body, soft
+    system: constant pulling force ``f`` in units of ``mu0 F_N0``, ``a <= 1``): the
+    body slips only while ``n = 1 + a cos tau < f``, near ``tau = pi``; with
+    ``s = tau - pi``, ``n ~ 1 - a + a s^2/2``, slip starts at ``s = -sigma`` with
+    ``a sigma^2/2 = f - (1 - a)`` and ``x'' = f - n = a(sigma^2 - s^2)/2``.  The
+    velocity returns to zero at ``s = 2 sigma``, the distance slid per period is
+    ``(9/8) a sigma^4``, so ``V = 9 a sigma^4/(16 pi)`` and, with ``vbar = V/a``
+    (eq. 13), ``f - (1 - a) = a sqrt(4 pi vbar/9)``.  As ``<n> = 1``,
+    ``mu/mu0 = f``.  The transcription's ``sqrt(4 pi/9) vbar`` has lost ``vbar``
+    from under the root; the second term (exponent ``p``, printed "1,2") only
+    makes the law reach 1 at ``vbar = 1``.  Stated for ``0 <= a <= 1``.
+    """
+    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    p = float(_checked("exponent", exponent, minimum=0.0, strict=True))
+    vc = np.minimum(v, 1.0)
+    law = (1.0 - a) + a * (_SOFT_SLOPE * np.sqrt(vc) + (1.0 - _SOFT_SLOPE) * vc**p)
     return _out(np.where(v < 1.0, law, 1.0))
 
 

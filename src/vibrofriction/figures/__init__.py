@@ -1,0 +1,46 @@
+"""The paper's figures, regenerated from the solver (and the maps beyond the paper).
+
+One module per figure family; each exposes *recipes* (:class:`~.recipe.Recipe`):
+the solver series a figure needs and how to draw, table and check them.
+
+* :mod:`.history`: Fig. 2, forces over time in a stick-slip steady state;
+* :mod:`.velocity`: Figs. 3, 4, 5, 7, ``mu/mu0`` against ``vbar``;
+* :mod:`.resonant`: Fig. 6 (case IV) and the prediction for Figs. 8-9;
+* :mod:`.dimensional`: Fig. 10, COF against ``v0`` in m/s;
+* :mod:`.maps`: maps over the ``(alpha, beta)`` plane;
+* :mod:`.style`: the shared matplotlib style (Agg backend).
+"""
+
+from __future__ import annotations
+
+from . import dimensional, history, maps, resonant, style, velocity
+from .recipe import Check, Recipe, Rendered, Table, solve_recipes
+from .series import Curve, Series, solve
+
+__all__ = [
+    "Check",
+    "Curve",
+    "Recipe",
+    "Rendered",
+    "Series",
+    "Table",
+    "all_recipes",
+    "solve",
+    "solve_recipes",
+    "style",
+]
+
+
+def all_recipes(quick: bool = False) -> list[Recipe]:
+    """Every figure of the reproduction, in the paper's order (``quick``: reduced grids)."""
+    return [
+        history.fig2(),
+        *velocity.fig3(quick),
+        velocity.fig4(quick),
+        velocity.fig5(quick),
+        resonant.fig6(quick),
+        velocity.fig7(quick),
+        resonant.fig8_9(quick),
+        dimensional.fig10(quick),
+        maps.maps(quick),
+    ]

@@ -1,0 +1,114 @@
+"""Fig. 2: time history of the normal force ``mu0 F_N`` and the tangential contact force.
+
+During slip the tangential force equals ``mu0 F_N``; during stick it is smaller.
+Stick begins when the velocity of the contact point vanishes (``t1``) and ends
+when the tangential force reaches ``mu0 F_N`` (``t2``) (paper, Section 3).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+
+import numpy as np
+
+from ..params import Dimensionless
+from ..solver import simulate
+from . import style
+from .recipe import Recipe, Rendered, Table
+from .series import Curve
+
+__all__ = ["FIG2_POINT", "fig2"]
+
+#: The stick-slip point shown: ``(alpha, beta, a, vbar)`` -- a general (not limiting)
+#: system whose steady state has one stick and one slip phase per period.
+FIG2_POINT = (0.3, 3.0, 0.8, 0.5)
+_PERIODS = 4
+#: The window shown, in drive periods: it starts in slip so that, as in the paper,
+#: ``t1`` is the beginning of a stick phase.
+_WINDOW = (0.5, 2.75)
+
+
+def _shade_phases(ax, tau_p, phase) -> None:
+    """Shade every maximal run of samples in stick, reverse slip or flight."""
+    labelled = set()
+    start = 0
+    for i in range(1, len(phase) + 1):
+        if i == len(phase) or phase[i] != phase[start]:
+            name = str(phase[start])
+            color = style.PHASE_COLORS.get(name, "none")
+            if color != "none":
+                label = None if name in labelled else name.replace("slip-", "reverse slip")
+                labelled.add(name)
+                ax.axvspan(tau_p[start], tau_p[i - 1], color=color, alpha=0.6, lw=0,
+                           label=label, zorder=0)
+            start = i
+
+
+@style.styled
+def _render(_: Mapping[str, Curve]) -> Rendered:
+    alpha, beta, a, vbar = FIG2_POINT
+    system = Dimensionless(alpha, beta, a)
+    h = simulate(system, vbar=vbar, periods=_PERIODS, samples_per_period=600, initial="steady")
+    t = h.tau / (2.0 * math.pi)
+    mean_f = np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau)
+
+    fig = style.figure(style.COLUMN, 2.5)
+    ax = fig.add_subplot()
+    w = (t >= _WINDOW[0]) & (t <= _WINDOW[1])
+    _shade_phases(ax, t[w], h.phase[w])
+    ax.axhline(0.0, color="0.5", lw=0.4)
+    ax.plot(t[w], h.n[w], color="#1f77b4", lw=1.3, label=r"$\mu_0 F_N$")
+    ax.plot(t[w], h.f[w], color="#2ca02c", lw=1.1, ls="--",
+            label=r"$k_{x,c}(u_x - u_{x,c})$")
+    transitions = [e for e in h.events if e.kind in ("slip->stick", "stick->slip")
+                   and _WINDOW[0] < e.tau / (2.0 * math.pi) < _WINDOW[1]]
+    ymax = 1.0 + a
+    for k, e in enumerate(transitions, start=1):
+        x = e.tau / (2.0 * math.pi)
+        ax.axvline(x, color="0.3", lw=0.5, ls=":")
+        ax.text(x, ymax * 1.03, f"$t_{k}$", ha="center", va="bottom", fontsize=7)
+    ax.set_xlim(*_WINDOW)
+    ax.set_ylim(min(-0.05, float(h.f[w].min()) * 1.1), ymax * 1.14)
+    ax.set_xlabel(r"time $\omega t/2\pi$ (drive periods)")
+    ax.set_ylabel(r"force / $\mu_0 F_{N,0}$")
+    fig.legend(loc="outside upper center", ncol=3, fontsize=6.5, handlelength=1.8,
+               columnspacing=1.2)
+    ax.set_title(rf"$\alpha={alpha:g}$, $\beta={beta:g}$, "
+                 rf"$\Delta u_z/u_{{z,0}}={a:g}$, $\bar v={vbar:g}$:  "
+                 rf"$\mu_{{\mathrm{{macro}}}}/\mu_0={mean_f:.3f}$", fontsize=7, pad=3)
+
+    table = Table("Fig. 2: time history in the steady state", (
+        f"alpha={alpha}, beta={beta}, amplitude={a}, vbar={vbar}, "
+        f"v_inertial={h.v_inertial!r}, initial state: steady (periodic orbit)",
+        "tau = omega t; forces in units of mu0 F_N0: n = mu0 F_N/(mu0 F_N0), "
+        "f = contact-spring force; x, x_dot in units mu0 F_N0/(m omega^2), mu0 F_N0/(m omega)",
+        "events: " + "; ".join(f"{e.kind} at tau={e.tau:.6f}" for e in h.events),
+    ), {"tau": h.tau, "n": h.n, "f": h.f, "x": h.x, "x_dot": h.x_dot,
+        "phase": np.asarray(h.phase, dtype=object)})
+    stick = float(np.mean(h.phase == "stick"))
+    notes = (f"Steady state at (alpha, beta, a, vbar) = {FIG2_POINT}: "
+             f"{len(transitions)} stick/slip transitions in the {_WINDOW[1] - _WINDOW[0]:g} "
+             "periods shown, "
+             f"stick about {100 * stick:.0f}% of the time, mu/mu0 = {mean_f:.4f} "
+             "(time average of the sampled history).")
+    return Rendered(fig, (table,), (), notes)
+
+
+def fig2() -> Recipe:
+    """Fig. 2 recipe (no solver series: it simulates one history itself)."""
+    alpha, beta, a, vbar = FIG2_POINT
+    return Recipe(
+        name="fig02_history",
+        title="Fig. 2: forces over time in a stick-slip steady state",
+        caption=(
+            "Normal force times the local coefficient of friction, $\\mu_0 F_N$ (blue), "
+            "and the tangential force of the contact spring (green, dashed), in units of "
+            "$\\mu_0 F_{N,0}$, over three drive periods of the steady state at "
+            "$(\\alpha, \\beta, \\Delta u_z/u_{z,0}, \\bar v)$ = "
+            f"$({alpha}, {beta}, {a}, {vbar})$. "
+            "Stick phases are shaded; $t_k$ mark the transitions. In slip the two "
+            "forces coincide, in stick the tangential force stays below $\\mu_0 F_N$."),
+        series=(),
+        render=_render,
+    )

@@ -1,0 +1,406 @@
+"""``vibrofriction reproduce``: every figure of the paper, its data and a checked report.
+
+:func:`reproduce` solves the series of every recipe of :mod:`vibrofriction.figures`
+(spread over worker processes), renders each figure as PNG and PDF as soon as its
+data are complete, writes the data behind each figure as CSV (a ``#`` header states
+the parameters) and finally ``report.md``: the figures with captions, notes on
+convergence, and the table *numerics vs closed form* (largest deviation, where
+measured), also written as ``deviations.csv``.
+
+Every point depends only on its own parameters (``solve_points`` is bitwise
+reproducible), so the results do not depend on how the points are split among
+processes.
+"""
+
+from __future__ import annotations
+
+import math
+import multiprocessing as mp
+import os
+import platform
+import time
+from collections import deque
+from collections.abc import Callable, Mapping, Sequence
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from tqdm.auto import tqdm
+
+from . import __version__, theory
+from .figures import all_recipes, style
+from .figures.recipe import Check, Recipe, Rendered, Table, curve_table, max_deviation
+from .figures.series import Curve, Series, series_at_vbar, solve
+from .params import Dimensionless
+from .solver import STATUS_BY_CODE, simulate, solve_points
+
+__all__ = ["Reproduction", "check_recipe", "reproduce", "recipes"]
+
+_CHUNK = 160  # points per task: small enough to balance two cores and move the bar
+
+
+# --------------------------------------------------------------------------- extra checks
+_STATIC_SYSTEMS = ((0.01, 0.02), (0.2, 0.22), (0.01, 5.3), (0.01, 400.0), (5.0, 400.0),
+                   (380.0, 400.0), (5.0, 5.3), (1.0, 5.3), (1.0, 400.0), (1.0, math.inf),
+                   (0.01, 1.0), (0.2, 1.0))
+_STATIC_AMPLITUDES = (0.5, 1.0, 1.5)
+_STATIC_VBAR = (1e-4, 1e-3)
+
+
+def check_recipe(quick: bool = False) -> Recipe:
+    """Checks that belong to no single figure: the static limit, eq. (2), approached as v0 -> 0.
+
+    Each system of the Fig. 3 matrix (and case IV on a rigid contact) is solved at
+    ``vbar = 1e-4`` and ``1e-3`` (the same values of ``V`` on the resonance lines,
+    where ``vbar`` does not exist).
+    """
+    del quick  # a handful of points either way
+    series = []
+    v = np.array(_STATIC_VBAR)
+    for alpha, beta in _STATIC_SYSTEMS:
+        for a in _STATIC_AMPLITUDES:
+            key = f"alpha={alpha:g},beta={beta:g},a={a:g}"
+            if alpha == 1.0 or beta == 1.0:
+                series.append(Series(key, alpha, beta, a, v, np.full(v.size, np.nan),
+                                     {"resonant": True}))
+            else:
+                series.append(series_at_vbar(key, alpha, beta, a, v, resonant=False))
+
+    def render(curves: Mapping[str, Curve]) -> Rendered:
+        table = curve_table("Static limit: mu/mu0 at vbar = 1e-4, 1e-3 (V on resonance lines)",
+                            curves, ("static_eq2 = 1 - a (a < 1), 0 (a >= 1)",),
+                            extra=lambda c: {"static_eq2": np.full(
+                                c.series.size, float(theory.static_mu_ratio(c.series.amplitude)))})
+        checks = []
+        for label, pick in (
+                ("eq. (2): static value as v0 -> 0 (non-jumping)",
+                 lambda s: s.amplitude < 1.0 and s.beta != 1.0),
+                ("eq. (2): static value as v0 -> 0 (a >= 1)",
+                 lambda s: s.amplitude >= 1.0 and s.beta != 1.0),
+                ("eq. (2) in case III (beta = 1): the limit v0 -> 0+ is 1, not 1 - a",
+                 lambda s: s.beta == 1.0 and s.amplitude <= 1.0)):
+            cs = [c for c in curves.values() if pick(c.series)]
+            ref = np.array([float(theory.static_mu_ratio(c.series.amplitude)) for c in cs])
+            labels = [f"({c.series.alpha:g}, {c.series.beta:g}), a={c.series.amplitude:g}"
+                      for c in cs]
+            d0, at0 = max_deviation(np.array([c.mu_ratio[0] for c in cs]), ref, labels)
+            d1, at1 = max_deviation(np.array([c.mu_ratio[1] for c in cs]), ref, labels)
+            checks.append(Check(
+                label, f"{len(cs)} systems of the Fig. 3 matrix and case IV, vbar = "
+                f"{_STATIC_VBAR[0]:g} (V where vbar does not exist)", d0, at0,
+                (f"at vbar = {_STATIC_VBAR[1]:g}: {d1:.3g} ({at1}); the deviation "
+                 "vanishes as v0 -> 0") if "III" not in label else
+                "mu = mu0 at every v0 > 0: eq. (2) holds only at v0 = 0 itself"))
+        return Rendered(None, (table,), tuple(checks), "")
+
+    return Recipe(name="checks_static_limit", title="Static limit (eq. 2)", caption="",
+                  series=tuple(series), render=render)
+
+
+def recipes(quick: bool = False) -> list[Recipe]:
+    """All figure recipes plus the extra checks, in report order."""
+    return [*all_recipes(quick), check_recipe(quick)]
+
+
+# --------------------------------------------------------------------------- workers
+# Set in the parent before the worker processes fork; read by the workers.
+_RECIPES: list[Recipe] = []
+_OUT: Path | None = None
+
+
+def _solve_chunk(alpha, beta, amplitude, v_inertial) -> dict[str, np.ndarray]:
+    return solve_points(alpha, beta, amplitude, v_inertial)
+
+
+@dataclass(frozen=True)
+class _Done:
+    """What rendering one recipe produced (picklable: no matplotlib objects)."""
+
+    index: int
+    files: tuple[str, ...]
+    checks: tuple[Check, ...]
+    notes: str
+    suspicious: tuple[str, ...]
+    untrusted: int
+    points: int
+    seconds: float
+
+
+def _render(index: int, curves: Mapping[str, Curve]) -> _Done:
+    t0 = time.perf_counter()
+    r = _RECIPES[index]
+    assert _OUT is not None
+    out: Rendered = r.render(curves)
+    files: list[str] = []
+    if out.figure is not None:
+        files += [p.name for p in style.save(out.figure, _OUT, r.name)]
+    data = _OUT / "data"
+    for k, table in enumerate(out.tables):
+        name = r.name if len(out.tables) == 1 else f"{r.name}_{k}"
+        files.append("data/" + table.write_csv(data / f"{name}.csv").name)
+    suspicious = []
+    untrusted = 0
+    for c in curves.values():
+        untrusted += int(np.sum(~c.ok))
+        for i in np.flatnonzero(c.suspicious):
+            s = c.series
+            suspicious.append(
+                f"alpha={s.alpha!r}, beta={s.beta!r}, amplitude={s.amplitude!r}, "
+                f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
+                f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
+                f"{float(c.error[i]):.3g}")
+    return _Done(index, tuple(files), out.checks, out.notes, tuple(suspicious), untrusted,
+                 sum(s.size for s in r.series), time.perf_counter() - t0)
+
+
+# --------------------------------------------------------------------------- scheduler
+@dataclass
+class _Batch:
+    """The points of one recipe, split into strided chunks (expensive regions spread out)."""
+
+    index: int
+    alpha: np.ndarray
+    beta: np.ndarray
+    amplitude: np.ndarray
+    v_inertial: np.ndarray
+    chunks: list[np.ndarray]
+    results: dict[str, np.ndarray] = field(default_factory=dict)
+    remaining: int = 0
+
+    @classmethod
+    def of(cls, index: int, recipe: Recipe, chunk: int) -> _Batch:
+        s = recipe.series
+        al = np.concatenate([np.full(x.size, x.alpha) for x in s]) if s else np.empty(0)
+        be = np.concatenate([np.full(x.size, x.beta) for x in s]) if s else np.empty(0)
+        am = np.concatenate([np.full(x.size, x.amplitude) for x in s]) if s else np.empty(0)
+        V = np.concatenate([x.v_inertial for x in s]) if s else np.empty(0)
+        n = V.size
+        k = max(1, math.ceil(n / chunk)) if n else 0
+        chunks = [np.arange(j, n, k) for j in range(k)]
+        return cls(index, al, be, am, V, chunks, {}, len(chunks))
+
+    def store(self, idx: np.ndarray, part: Mapping[str, np.ndarray]) -> None:
+        for key, val in part.items():
+            if key not in self.results:
+                self.results[key] = np.empty(self.v_inertial.size, dtype=val.dtype)
+            self.results[key][idx] = val
+        self.remaining -= 1
+
+    def runner(self, *_args, **_kwargs) -> dict[str, np.ndarray]:
+        """A ``Runner`` that returns the stored results (for :func:`figures.series.solve`)."""
+        return self.results
+
+
+def _curves(recipe: Recipe, batch: _Batch) -> dict[str, Curve]:
+    if not recipe.series:
+        return {}
+    return solve(recipe.series, runner=batch.runner)
+
+
+@dataclass(frozen=True)
+class Reproduction:
+    """What :func:`reproduce` wrote and measured."""
+
+    out: Path
+    report: Path
+    files: tuple[Path, ...]
+    checks: tuple[Check, ...]
+    points: int
+    seconds: float
+    workers: int
+    untrusted: int
+    suspicious: tuple[str, ...]
+
+
+def _warm_up() -> None:
+    """Compile (or load from the numba cache) the kernels once, before the workers fork."""
+    solve_points(0.5, 2.0, 0.5, 0.3)
+    solve_points(1.0, math.inf, 1.5, 0.3)
+    simulate(Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=1, samples_per_period=8)
+
+
+def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = None,
+              progress: bool = True) -> Reproduction:
+    """Compute every figure, write PNG + PDF + CSV per figure and ``report.md`` into ``out``.
+
+    Parameters
+    ----------
+    out : output folder (created).
+    quick : reduced velocity grids and maps (for CI); the figures keep their layout.
+    workers : processes for solving and rendering; default ``min(2, cpu count)``;
+        ``1`` runs everything in this process.  Results do not depend on it.
+    progress : show tqdm progress bars (on stderr).
+    """
+    global _RECIPES, _OUT
+    t0 = time.perf_counter()
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "data").mkdir(exist_ok=True)
+    todo = recipes(quick)
+    _RECIPES, _OUT = todo, out
+    if workers is None:
+        workers = min(2, os.cpu_count() or 1)
+    if workers > 1 and "fork" not in mp.get_all_start_methods():
+        workers = 1  # the recipes hold closures: workers must inherit them
+    batches = [_Batch.of(i, r, _CHUNK) for i, r in enumerate(todo)]
+    n_points = sum(b.v_inertial.size for b in batches)
+    bar_kw = {"disable": not progress, "dynamic_ncols": True, "leave": True}
+    with tqdm(total=1, desc="compiling", unit="", **bar_kw) as bar:
+        _warm_up()
+        bar.update(1)
+    done: list[_Done] = []
+    with tqdm(total=n_points, desc="solving", unit="pt", smoothing=0.1, **bar_kw) as pbar, \
+            tqdm(total=len(todo), desc="figures", unit="fig", **bar_kw) as fbar:
+        if workers == 1:
+            for b, r in zip(batches, todo, strict=True):
+                for idx in b.chunks:
+                    b.store(idx, _solve_chunk(b.alpha[idx], b.beta[idx], b.amplitude[idx],
+                                              b.v_inertial[idx]))
+                    pbar.update(idx.size)
+                done.append(_render(b.index, _curves(r, b)))
+                fbar.update(1)
+        else:
+            done = _run_pool(todo, batches, workers, pbar, fbar)
+    done.sort(key=lambda d: d.index)
+    seconds = time.perf_counter() - t0
+    checks = tuple(c for d in done for c in d.checks)
+    _write_deviations(out / "deviations.csv", checks)
+    report = _write_report(out, todo, done, checks, quick=quick, seconds=seconds,
+                           workers=workers, points=n_points)
+    files = tuple(sorted(p for p in out.rglob("*") if p.is_file()))
+    return Reproduction(out, report, files, checks, n_points, seconds, workers,
+                        sum(d.untrusted for d in done),
+                        tuple(s for d in done for s in d.suspicious))
+
+
+def _run_pool(todo: Sequence[Recipe], batches: list[_Batch], workers: int, pbar, fbar
+              ) -> list[_Done]:
+    """Feed chunks to the pool, renders first as soon as a recipe's data are complete."""
+    compute: deque[tuple[_Batch, np.ndarray]] = deque(
+        (b, idx) for b in sorted(batches, key=lambda b: -b.v_inertial.size) for idx in b.chunks)
+    renders: deque[int] = deque(b.index for b in batches if b.remaining == 0)
+    running: dict[Future, Callable[[object], None]] = {}
+    done: list[_Done] = []
+    ctx = mp.get_context("fork")
+    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
+        def submit_next() -> bool:
+            if renders:
+                i = renders.popleft()
+                fut = pool.submit(_render, i, _curves(todo[i], batches[i]))
+
+                def finish(res, _i=i) -> None:
+                    done.append(res)
+                    fbar.update(1)
+
+                running[fut] = finish
+                return True
+            if compute:
+                b, idx = compute.popleft()
+                fut = pool.submit(_solve_chunk, b.alpha[idx], b.beta[idx], b.amplitude[idx],
+                                  b.v_inertial[idx])
+
+                def store(res, _b=b, _idx=idx) -> None:
+                    _b.store(_idx, res)
+                    pbar.update(_idx.size)
+                    if _b.remaining == 0:
+                        renders.append(_b.index)
+
+                running[fut] = store
+                return True
+            return False
+
+        for _ in range(workers + 1):  # one extra task in flight keeps both cores busy
+            submit_next()
+        while running:
+            finished, _ = wait(list(running), return_when=FIRST_COMPLETED)
+            for fut in finished:
+                running.pop(fut)(fut.result())
+            while len(running) < workers + 1 and submit_next():
+                pass
+    return done
+
+
+# --------------------------------------------------------------------------- writing
+def _write_deviations(path: Path, checks: Sequence[Check]) -> None:
+    Table("Numerics vs closed forms: largest deviation of mu/mu0 (or of the named quantity)",
+          ("deviation = max |numerics - closed form| over the points described in 'where'",),
+          {"formula": np.array([c.formula for c in checks], dtype=object),
+           "where": np.array([c.where for c in checks], dtype=object),
+           "deviation": np.array([c.deviation for c in checks], dtype=float),
+           "at": np.array([c.at for c in checks], dtype=object),
+           "remark": np.array([c.remark for c in checks], dtype=object)}).write_csv(path)
+
+
+def _md(text: str) -> str:
+    return text.replace("|", "\\|").replace("\n", " ")
+
+
+def _fmt_dev(x: float) -> str:
+    if math.isnan(x):
+        return "n/a"
+    if x == 0.0:
+        return "0"
+    return f"{x:.2e}" if x < 1e-3 else f"{x:.4f}"
+
+
+def _write_report(out: Path, todo: Sequence[Recipe], done: Sequence[_Done],
+                  checks: Sequence[Check], *, quick: bool, seconds: float, workers: int,
+                  points: int) -> Path:
+    lines = [
+        "# Reproduction of Mao, Popov, Starcevic & Popov, *Friction* (2017), Part II",
+        "",
+        f"Generated by `vibrofriction reproduce` (version {__version__}) "
+        f"{'with reduced grids (--quick)' if quick else 'with full grids'}: "
+        f"{points} steady states, {seconds:.1f} s wall time on {workers} worker "
+        f"process(es), {os.cpu_count()} CPU(s), Python {platform.python_version()}.",
+        "",
+        "Every curve is computed by the exact event-driven solver from the initial state "
+        "'steady sliding before the oscillation is switched on' (MODEL.md). Data behind "
+        "each figure are in `data/` (CSV, parameters in the `#` header). Points whose "
+        "steady state did not converge (or whose error estimate exceeds 1e-5) are drawn as "
+        "open circles and are not joined into the curves. Corrections to the paper are "
+        "derived in `docs/theory.md`; `docs/figures.md` discusses each figure.",
+        "",
+        "## Numerics vs closed forms",
+        "",
+        "Largest |numerics - closed form| of mu/mu0 (or of the named quantity) over the "
+        "points described; also in `deviations.csv`.",
+        "",
+        "| closed form / claim | where measured | max deviation | at | remark |",
+        "|---|---|---|---|---|",
+    ]
+    for c in checks:
+        lines.append(f"| {_md(c.formula)} | {_md(c.where)} | {_fmt_dev(c.deviation)} | "
+                     f"{_md(c.at)} | {_md(c.remark)} |")
+    suspicious = [s for d in done for s in d.suspicious]
+    lines += ["", "## Solver results that look wrong", ""]
+    if suspicious:
+        lines.append("These points report a converged status but an error estimate far "
+                     "above tolerance; they are excluded from the curves and reported to "
+                     "the solver's maintainers:")
+        lines.append("")
+        lines += [f"* {s}" for s in suspicious]
+    else:
+        lines.append("None: every point with a converged status has an error estimate "
+                     "below 1e-5.")
+    lines += ["", "## Figures", ""]
+    for d in done:
+        r = todo[d.index]
+        if not any(f.endswith(".png") for f in d.files):
+            continue
+        lines += [f"### {r.title}", "", f"![{r.title}]({r.name}.png)", "",
+                  r.caption, ""]
+        if d.notes:
+            lines += [f"*Notes:* {d.notes}", ""]
+        lines += ["Files: " + ", ".join(f"[{f}]({f})" for f in d.files)
+                  + f" ({d.points} points; rendered in {d.seconds:.1f} s).", ""]
+    lines += ["### Figs. 8 and 9: the experiment", "",
+              "The measured friction coefficients of Fig. 9 (and the photographs of Fig. 8) "
+              "are not contained in the paper's text, so they cannot be reproduced here. "
+              "The figure `fig08_09_prediction` above shows the model's prediction for the "
+              "four amplitudes of Fig. 9 under the stated assumptions, clearly labelled as "
+              "a prediction.", ""]
+    path = out / "report.md"
+    path.write_text("\n".join(lines) + "\n")
+    return path
