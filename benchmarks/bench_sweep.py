@@ -70,17 +70,20 @@ def _wait_idle(limit: float = 0.15, window: float = 3.0, patience: float = 900.0
             return foreign
 
 
-def _best(fn, repeat: int) -> tuple[float, float]:
-    """Best wall time of `repeat` runs on an idle machine, and the foreign load then."""
-    best = (math.inf, math.nan)
+def _best(fn, repeat: int) -> tuple[float, float, float]:
+    """Best of `repeat` runs, each started on an idle machine if one comes within the
+    patience: (wall seconds, load of other processes in cores, CPU seconds used by this
+    process tree).  The CPU seconds measure our own overhead even on a busy machine."""
+    best = (math.inf, math.nan, math.nan)
     for _ in range(repeat):
         _wait_idle()
         b, o = _busy_seconds(), _own_seconds()
         t = time.perf_counter()
         fn()
         wall = time.perf_counter() - t
-        foreign = ((_busy_seconds() - b) - (_own_seconds() - o)) / wall
-        best = min(best, (wall, foreign))
+        own = _own_seconds() - o
+        foreign = ((_busy_seconds() - b) - own) / wall
+        best = min(best, (wall, foreign, own))
     return best
 
 
@@ -96,6 +99,38 @@ def _pool_startup(workers: int) -> float:
     return time.perf_counter() - t
 
 
+RAW_SCRIPT = """
+import sys, time
+sys.path.insert(0, {bench!r})
+from bench_sweep import GRID, CHUNK
+from vibrofriction.sweep import make_plan
+from vibrofriction.sweep._compute import compute_block, warm_up
+plan = make_plan(**GRID, chunk_size=CHUNK)
+warm_up()
+print("ready", flush=True)
+sys.stdin.readline()
+for block in range({start}, plan.n_blocks, {step}):
+    compute_block(plan, block)
+"""
+
+
+def _raw(n_proc: int) -> float:
+    """The machine's own ceiling: `n_proc` bare processes share the blocks (every
+    n-th), started together once warm; no pool, no writes, no scheduler."""
+    procs = [subprocess.Popen([sys.executable, "-c", RAW_SCRIPT.format(
+        bench=str(Path(__file__).parent), start=i, step=n_proc)], stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE, text=True) for i in range(n_proc)]
+    for p in procs:
+        assert p.stdout.readline().strip() == "ready"
+    t = time.perf_counter()
+    for p in procs:
+        p.stdin.write("go\n")
+        p.stdin.flush()
+    for p in procs:
+        p.wait()
+    return time.perf_counter() - t
+
+
 def throughput(repeat: int) -> list[str]:
     from distributed import Client, LocalCluster
 
@@ -104,30 +139,41 @@ def throughput(repeat: int) -> list[str]:
     warm_up()
     rows = [f"grid {dict(zip(plan.dims, plan.shape, strict=True))}: {n} "
             f"points, {plan.n_blocks} blocks of <= {np.prod(plan.chunks)} points"]
-    t1, f1 = _best(lambda: sweep(**GRID, workers=1, chunk_size=CHUNK, progress=False), repeat)
-    t2, f2 = _best(lambda: sweep(**GRID, workers=2, chunk_size=CHUNK, progress=False), repeat)
+    t1, f1, c1 = _best(lambda: sweep(**GRID, workers=1, chunk_size=CHUNK, progress=False),
+                       repeat)
+    t2, f2, c2 = _best(lambda: sweep(**GRID, workers=2, chunk_size=CHUNK, progress=False),
+                       repeat)
+    r1 = _best(lambda: _raw(1), repeat)[0]
+    r2, fr2, _ = _best(lambda: _raw(2), repeat)
     _wait_idle()
     start2 = min(_pool_startup(2) for _ in range(3))
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
                       dashboard_address=None) as cluster, Client(cluster) as client:
         client.wait_for_workers(2)
         sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.5], client=client, progress=False)
-        td, fd = _best(lambda: sweep(**GRID, client=client, chunk_size=CHUNK,
-                                     progress=False), repeat)
+        td, fd, cd = _best(lambda: sweep(**GRID, client=client, chunk_size=CHUNK,
+                                         progress=False), repeat)
     rows += [
-        "| executor | wall time (s) | points/s | speed-up vs 1 core | other load (cores) |",
-        "|---|---:|---:|---:|---:|",
-        f"| 1 core (in process) | {t1:.2f} | {n / t1:,.0f} | 1.00 | {f1:.2f} |",
+        "| executor | wall (s) | points/s | speed-up vs 1 core | CPU (s) | other load "
+        "(cores) |",
+        "|---|---:|---:|---:|---:|---:|",
+        f"| bare processes, no sweep machinery: 1 | {r1:.2f} | {n / r1:,.0f} | "
+        f"{t1 / r1:.2f} | | |",
+        f"| bare processes, no sweep machinery: 2 (the machine's ceiling) | {r2:.2f} | "
+        f"{n / r2:,.0f} | {t1 / r2:.2f} | | {fr2:.2f} |",
+        f"| 1 core (in process) | {t1:.2f} | {n / t1:,.0f} | 1.00 | {c1:.1f} | {f1:.2f} |",
         f"| 2 local processes (incl. {start2:.1f} s start-up) | {t2:.2f} | {n / t2:,.0f} "
-        f"| {t1 / t2:.2f} | {f2:.2f} |",
+        f"| {t1 / t2:.2f} | {c2:.1f} | {f2:.2f} |",
         f"| 2 local processes (start-up excluded) | {t2 - start2:.2f} | "
-        f"{n / (t2 - start2):,.0f} | {t1 / (t2 - start2):.2f} | {f2:.2f} |",
+        f"{n / (t2 - start2):,.0f} | {t1 / (t2 - start2):.2f} | | |",
         f"| Dask LocalCluster, 2 workers x 1 thread | {td:.2f} | {n / td:,.0f} | "
-        f"{t1 / td:.2f} | {fd:.2f} |",
+        f"{t1 / td:.2f} | {cd:.1f} | {fd:.2f} |",
         "",
-        f"Dask overhead, 1000-point blocks: {100 * (td / (t2 - start2) - 1):+.1f} % vs 2 "
-        f"local processes (start-up excluded), {100 * (td / (t1 / 2) - 1):+.1f} % vs "
-        "perfect 2x scaling of the 1-core time.",
+        f"Dask overhead, 1000-point blocks: wall {100 * (td / (t2 - start2) - 1):+.1f} % vs 2 "
+        f"local processes (start-up excluded), {100 * (td / (t1 / 2) - 1):+.1f} % vs perfect "
+        f"2x scaling of the 1-core time; CPU {100 * (cd / c1 - 1):+.1f} % vs 1 core "
+        f"(local processes: {100 * (c2 / c1 - 1):+.1f} %).  Two bare processes reach "
+        f"{r1 / r2:.2f}x of one on this machine.",
     ]
     return rows
 

@@ -72,6 +72,15 @@ def test_dask_continuation_equals_local(client) -> None:
     assert_bitwise(sweep(**kw, workers=1), sweep(**kw, client=client, chunk_size=1))
 
 
+def test_workers_of_another_version_are_refused(client, monkeypatch) -> None:
+    import vibrofriction
+
+    monkeypatch.setattr(vibrofriction, "__version__", "99.0")
+    with pytest.raises(ValueError, match=r"workers run vibrofriction \['0\.1\.0'\], this "
+                                         r"process 99\.0"):
+        sweep(**GRID, client=client, progress=False)
+
+
 def test_client_and_workers_together_is_an_error(client) -> None:
     with pytest.raises(ValueError, match="either client"):
         sweep(**GRID, client=client, workers=2, progress=False)

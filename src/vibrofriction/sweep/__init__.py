@@ -24,7 +24,7 @@ from numpy.typing import ArrayLike
 
 from ..solver import SolverSettings
 from ._grid import DEFAULT_CHUNK_SIZE, make_plan, parse_axis
-from ._run import available_cores, run_blocks
+from ._run import available_cores, check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
 
 __all__ = ["available_cores", "make_plan", "open_atlas", "parse_axis", "plot_atlas", "sweep"]
@@ -111,8 +111,7 @@ def sweep(
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=_version())
-    if client is not None and workers is not None:
-        raise ValueError("give either client (a Dask cluster) or workers (local cores)")
+    check_executor(client, workers)
     if store is None:
         sink: Any = MemorySink(plan)
     else:

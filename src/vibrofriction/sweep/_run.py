@@ -22,7 +22,7 @@ import numpy as np
 from ._compute import compute_block, warm_up
 from ._grid import Plan
 
-__all__ = ["available_cores", "run_blocks"]
+__all__ = ["available_cores", "check_executor", "run_blocks"]
 
 Deliver = Callable[[int, dict[str, np.ndarray]], None]
 
@@ -44,6 +44,12 @@ def _worker_init() -> None:
     # Ctrl-C is handled by the parent, which cancels the pool; workers just stop.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     warm_up()
+
+
+def _version() -> str:
+    from .. import __version__
+
+    return __version__
 
 
 def _serial(plan: Plan, todo: Iterable[int], deliver: Deliver) -> None:
@@ -86,10 +92,11 @@ def _local(plan: Plan, todo: list[int], workers: int, deliver: Deliver) -> None:
 def _dask(plan: Plan, todo: list[int], client: Any, deliver: Deliver) -> None:
     from distributed import as_completed
 
-    try:
-        client.run(warm_up)  # load the kernels on every worker before timing starts
-    except Exception:  # noqa: BLE001 - a worker that fails here fails its tasks later
-        pass
+    versions = set(client.run(_version).values())
+    if versions - {plan.version}:
+        raise ValueError(f"the Dask workers run vibrofriction {sorted(versions)}, this "
+                         f"process {plan.version}: install the same version everywhere")
+    client.run(warm_up)  # load (or compile) the kernels on every worker first
     nthreads = sum(client.nthreads().values()) or 1
     window = max(4, 3 * nthreads)
     token = plan.token()
@@ -115,17 +122,22 @@ def _dask(plan: Plan, todo: list[int], client: Any, deliver: Deliver) -> None:
         raise
 
 
+def check_executor(client: Any, workers: int | None) -> None:
+    """``client`` and ``workers`` are exclusive; ``workers`` is an integer >= 1."""
+    if client is not None and workers is not None:
+        raise ValueError("give either client (a Dask cluster) or workers (local cores)")
+    if workers is not None and (isinstance(workers, bool)
+                                or not isinstance(workers, int | np.integer) or workers < 1):
+        raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
+
+
 def run_blocks(plan: Plan, todo: list[int], write: Deliver, *, client: Any = None,
                workers: int | None = None, progress: bool = True,
                initial_points: int = 0) -> float:
     """Compute ``todo`` blocks with the chosen executor; returns the wall time in seconds."""
     from tqdm.auto import tqdm
 
-    if client is not None and workers is not None:
-        raise ValueError("give either client (a Dask cluster) or workers (local cores)")
-    if workers is not None and (isinstance(workers, bool)
-                                or not isinstance(workers, int | np.integer) or workers < 1):
-        raise ValueError(f"workers must be an integer >= 1, got {workers!r}")
+    check_executor(client, workers)
     seen: set[int] = set()
     bar = tqdm(total=plan.size, initial=initial_points, unit="pt", unit_scale=plan.size >= 10**4,
                desc="sweep", disable=not progress, smoothing=0.1, dynamic_ncols=True)
