@@ -61,7 +61,14 @@ def check_recipe(quick: bool = False) -> Recipe:
     for alpha, beta in _STATIC_SYSTEMS:
         for a in _STATIC_AMPLITUDES:
             key = f"alpha={alpha:g},beta={beta:g},a={a:g}"
-            if alpha == 1.0 or beta == 1.0:
+            if beta == 1.0:
+                # case III: mu = 1 at every V > 0.  V = 1e-4 at a = 1 is left out: there the
+                # solver exhausts its event budget (about 5400 events per period, status
+                # "failed", 12 s), see docs/figures.md.
+                vv = v[1:] if a == 1.0 else v
+                series.append(Series(key, alpha, beta, a, vv, np.full(vv.size, np.nan),
+                                     {"resonant": True}))
+            elif alpha == 1.0:
                 series.append(Series(key, alpha, beta, a, v, np.full(v.size, np.nan),
                                      {"resonant": True}))
             else:
@@ -85,7 +92,7 @@ def check_recipe(quick: bool = False) -> Recipe:
             labels = [f"({c.series.alpha:g}, {c.series.beta:g}), a={c.series.amplitude:g}"
                       for c in cs]
             d0, at0 = max_deviation(np.array([c.mu_ratio[0] for c in cs]), ref, labels)
-            d1, at1 = max_deviation(np.array([c.mu_ratio[1] for c in cs]), ref, labels)
+            d1, at1 = max_deviation(np.array([c.mu_ratio[-1] for c in cs]), ref, labels)
             checks.append(Check(
                 label, f"{len(cs)} systems of the Fig. 3 matrix and case IV, vbar = "
                 f"{_STATIC_VBAR[0]:g} (V where vbar does not exist)", d0, at0,
@@ -221,7 +228,7 @@ def _warm_up() -> None:
 
 
 def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = None,
-              progress: bool = True) -> Reproduction:
+              progress: bool = True, only: Sequence[str] | None = None) -> Reproduction:
     """Compute every figure, write PNG + PDF + CSV per figure and ``report.md`` into ``out``.
 
     Parameters
@@ -231,6 +238,7 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     workers : processes for solving and rendering; default ``min(2, cpu count)``;
         ``1`` runs everything in this process.  Results do not depend on it.
     progress : show tqdm progress bars (on stderr).
+    only : names (or name prefixes, e.g. ``fig04``) of the recipes to run; default all.
     """
     global _RECIPES, _OUT
     t0 = time.perf_counter()
@@ -238,6 +246,12 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     out.mkdir(parents=True, exist_ok=True)
     (out / "data").mkdir(exist_ok=True)
     todo = recipes(quick)
+    if only is not None:
+        wanted = tuple(only)
+        todo = [r for r in todo if r.name.startswith(wanted)]
+        if not todo:
+            names = ", ".join(r.name for r in recipes(quick))
+            raise ValueError(f"only={list(wanted)!r} matches no recipe; names: {names}")
     _RECIPES, _OUT = todo, out
     if workers is None:
         workers = min(2, os.cpu_count() or 1)
@@ -395,12 +409,13 @@ def _write_report(out: Path, todo: Sequence[Recipe], done: Sequence[_Done],
             lines += [f"*Notes:* {d.notes}", ""]
         lines += ["Files: " + ", ".join(f"[{f}]({f})" for f in d.files)
                   + f" ({d.points} points; rendered in {d.seconds:.1f} s).", ""]
-    lines += ["### Figs. 8 and 9: the experiment", "",
-              "The measured friction coefficients of Fig. 9 (and the photographs of Fig. 8) "
-              "are not contained in the paper's text, so they cannot be reproduced here. "
-              "The figure `fig08_09_prediction` above shows the model's prediction for the "
-              "four amplitudes of Fig. 9 under the stated assumptions, clearly labelled as "
-              "a prediction.", ""]
+    if any(todo[d.index].name.startswith("fig08") for d in done):
+        lines += ["### Figs. 8 and 9: the experiment", "",
+                  "The measured friction coefficients of Fig. 9 (and the photographs of Fig. 8) "
+                  "are not contained in the paper's text, so they cannot be reproduced here. "
+                  "The figure `fig08_09_prediction` above shows the model's prediction for "
+                  "the four amplitudes of Fig. 9 under the stated assumptions, clearly "
+                  "labelled as a prediction.", ""]
     path = out / "report.md"
     path.write_text("\n".join(lines) + "\n")
     return path

@@ -21,11 +21,15 @@ def reproduce_command(
         help="processes for solving and rendering (default: min(2, CPUs)); results do not "
         "depend on it")] = None,
     progress: Annotated[bool, typer.Option(help="show progress bars")] = True,
+    only: Annotated[list[str] | None, typer.Option(
+        help="run only the figures whose names start with this (repeatable), e.g. fig04")
+    ] = None,
 ) -> None:
     """Regenerate every figure of the paper (PNG + PDF), its data (CSV) and report.md."""
     if workers is not None and workers < 1:
         raise ValueError(f"workers must be >= 1, got {workers}")
-    result = reproduce(out, quick=quick, workers=workers, progress=progress)
+    result = reproduce(out, quick=quick, workers=workers, progress=progress,
+                       only=only or None)
     figures = sum(1 for f in result.files if f.suffix == ".png")
     typer.echo(f"{figures} figures, {len(result.files)} files, {result.points} steady states "
                f"in {result.seconds:.1f} s -> {result.report}")

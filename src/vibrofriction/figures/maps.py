@@ -49,7 +49,7 @@ def _edges(x: np.ndarray) -> np.ndarray:
 
 
 def _series(quick: bool) -> tuple[Series, ...]:
-    alpha, beta = grid(*((16, 20) if quick else (56, 70)))
+    alpha, beta = grid(*((16, 20) if quick else (48, 60)))
     A, B = np.meshgrid(alpha, beta)  # rows: beta
     valid = B > A
     out = []
@@ -154,7 +154,7 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
 
 def maps(quick: bool = False) -> Recipe:
     """Maps of the critical velocity and of mu/mu0 over the (alpha, beta) plane."""
-    alpha, beta = grid(*((16, 20) if quick else (56, 70)))
+    alpha, beta = grid(*((16, 20) if quick else (48, 60)))
 
     def render(curves: Mapping[str, Curve]) -> Rendered:
         fig = _draw(curves, alpha, beta)

@@ -486,7 +486,7 @@ def fig4(quick: bool = False) -> Recipe:
 
 # --------------------------------------------------------------------------- Fig. 5
 def _fig5_series(quick: bool) -> tuple[Series, ...]:
-    n = 61 if quick else 401
+    n = 61 if quick else 301
     vb = np.linspace(0.0, 1.2, n)
     return tuple(series_at_vbar(f"beta={b:g}", 0.01, b, 1.0, vb,
                                 side="below" if b < 1 else "above")
