@@ -282,7 +282,8 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     _write_deviations(out / "deviations.csv", checks)
     report = _write_report(out, todo, done, checks, quick=quick, seconds=seconds,
                            workers=workers, points=n_points)
-    files = tuple(sorted(p for p in out.rglob("*") if p.is_file()))
+    files = tuple(sorted({out / f for d in done for f in d.files}
+                         | {report, out / "deviations.csv"}))
     return Reproduction(out, report, files, checks, n_points, seconds, workers,
                         sum(d.untrusted for d in done),
                         tuple(s for d in done for s in d.suspicious))

@@ -132,8 +132,8 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
     cb.ax.tick_params(labelsize=6)
     axes[0].set_title(r"(a) critical velocity, eq. (12)", fontsize=7.5)
     for ax, kind, title in (
-            (axes[1], "vbar", rf"(b) $\mu_{{macro}}/\mu_0$ at $\bar v = {MAP_VBAR:g}$"),
-            (axes[2], "V", rf"(c) $\mu_{{macro}}/\mu_0$ at $V = {MAP_V_INERTIAL:g}$")):
+            (axes[1], "vbar", rf"(b) $\mu_{{\mathrm{{macro}}}}/\mu_0$ at $\bar v = {MAP_VBAR:g}$"),
+            (axes[2], "V", rf"(c) $\mu_{{\mathrm{{macro}}}}/\mu_0$ at $V = {MAP_V_INERTIAL:g}$")):
         mu, ok = _field(curves, kind, alpha, beta)
         mm = ax.pcolormesh(ea, eb, np.ma.masked_invalid(np.where(ok | ~valid, mu, np.nan)),
                            shading="flat", vmin=1 - MAP_AMPLITUDE, vmax=1.0, cmap="viridis",

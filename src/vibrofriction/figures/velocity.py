@@ -495,7 +495,7 @@ def _fig5_series(quick: bool) -> tuple[Series, ...]:
 
 @style.styled
 def _draw_fig5(curves: Mapping[str, Curve]):
-    fig = style.figure(style.PAGE, 2.9)
+    fig = style.figure(style.PAGE, 3.2)
     axes = fig.subplots(1, 2, sharey=True)
     vfine = np.linspace(0, 1.2, 601)
     for ax, betas, lab, where in ((axes[0], FIG5_BETAS_BELOW, "a", r"$\beta < 1$"),
@@ -516,7 +516,10 @@ def _draw_fig5(curves: Mapping[str, Curve]):
         ax.set_xlabel(style.VBAR)
         ax.set_title(rf"({lab}) $\alpha = 0.01$, $\Delta u_z/u_{{z,0}} = 1$, {where}",
                      fontsize=7.5)
-        ax.legend(loc="lower right", fontsize=6, handlelength=1.5)
+        if lab == "b":
+            ax.plot([], [], "o", ms=2.5, mfc="none", mec="0.3", label="not converged")
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=4, fontsize=6,
+                  handlelength=1.5, columnspacing=1.0)
     axes[0].set_ylabel(style.MU)
     return fig
 
@@ -562,10 +565,13 @@ def fig5(quick: bool = False) -> Recipe:
         plateau = []
         for b in FIG5_BETAS_BELOW[-3:] + FIG5_BETAS_ABOVE[:2]:
             c = curves[f"beta={b:g}"]
-            ones = np.flatnonzero(c.mu_ratio > 1.0 - 1e-9)
-            plateau.append(f"beta = {b:g}: mu = 1 from vbar = "
-                           + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
-        notes = _status_note(curves) + " Onset of mu = 1: " + "; ".join(plateau) + "."
+            ones = np.flatnonzero(c.ok & (c.mu_ratio > 1.0 - 1e-9))
+            near = np.flatnonzero(c.ok & (c.mu_ratio > 0.99))
+            plateau.append(f"beta = {b:g}: mu/mu0 > 0.99 from vbar = "
+                           + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
+                           + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
+        notes = (_status_note(curves) + " The plateau near mu0 grows towards small vbar "
+                 "near the resonance: " + "; ".join(plateau) + ".")
         return Rendered(fig, (table,), tuple(checks), notes)
 
     return Recipe(
