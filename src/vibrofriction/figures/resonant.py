@@ -223,7 +223,7 @@ def _fig89_series(quick: bool) -> tuple[Series, ...]:
 
 @style.styled
 def _draw_fig89(curves: Mapping[str, Curve]):
-    fig = style.figure(style.PAGE, 2.6)
+    fig = style.figure(style.PAGE, 3.0)
     ax, bx = fig.subplots(1, 2, width_ratios=[1.25, 1.0])
     mu0 = EXPERIMENT["mu0"]
     colors = style.sequence_colors(len(EXPERIMENT_AMPLITUDES_UM), "viridis", 0.0, 0.8)
@@ -238,12 +238,13 @@ def _draw_fig89(curves: Mapping[str, Curve]):
         ax.plot(v0[bad], mu0 * np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.5, mfc="none",
                 mec=style.THEORY, mew=0.6)
     ax.set_xlim(0, float(_v0_grid(False)[-1]))
-    ax.set_ylim(0, mu0 * 1.05)
+    ax.set_ylim(-0.008, mu0 * 1.05)
     ax.axhline(mu0, color="0.6", lw=0.5, ls=":")
     ax.text(0.299, mu0 * 1.0, r"$\mu_0$", ha="right", va="bottom", fontsize=6.5, color="0.4")
     ax.set_xlabel(r"$v_0$ (m/s)")
     ax.set_ylabel(r"COF $\mu_{\mathrm{macro}}$")
-    ax.legend(loc="lower right", fontsize=6)
+    ax.plot([], [], "o", ms=2.5, mfc="none", mec=style.THEORY, label="solver result rejected")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=6)
     ax.set_title("(a) PREDICTION for the experiment of Figs. 8-9 (data not available)",
                  fontsize=7)
     du = np.linspace(0.0, 70.0, 701)
