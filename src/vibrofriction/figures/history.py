@@ -104,7 +104,7 @@ def fig2() -> Recipe:
         caption=(
             "Normal force times the local coefficient of friction, $\\mu_0 F_N$ (blue), "
             "and the tangential force of the contact spring (green, dashed), in units of "
-            "$\\mu_0 F_{N,0}$, over three drive periods of the steady state at "
+            "$\\mu_0 F_{N,0}$, over 2.25 drive periods of the steady state at "
             "$(\\alpha, \\beta, \\Delta u_z/u_{z,0}, \\bar v)$ = "
             f"$({alpha}, {beta}, {a}, {vbar})$. "
             "Stick phases are shaded; $t_k$ mark the transitions. In slip the two "
