@@ -3,7 +3,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
 
-.PHONY: demo test lint bench clean
+.PHONY: demo test lint bench clean clean-cache
 
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -27,3 +27,6 @@ bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/r
 
 clean:
 	rm -rf $(VENV) $(OUT)
+
+clean-cache:  ## numba checks only a kernel's own file: clear the cache after editing _kernels/
+	find src -name '*.nbi' -delete; find src -name '*.nbc' -delete

@@ -69,8 +69,9 @@ _STATUS_MESSAGES = {
     Status.NOT_CONVERGED: "max_periods was reached before a periodic orbit was found or the "
     "running average settled; `error` is the disagreement of the last two averaging windows: "
     "try increasing `max_periods`",
-    Status.FAILED: "the event budget `max_events` was exhausted or the integration could not "
-    "advance (chattering); the value is not reliable",
+    Status.FAILED: "the event budget `max_events` was exhausted, or the integration could not "
+    "advance, or more than 1000 transitions could only be decided within round-off (chatter "
+    "along a tangency of the friction cone); the value is not reliable",
     Status.STATIC: "zero sliding velocity: the static limit of eq. (2), the limit of the "
     "steady state as v0 -> 0+",
 }

@@ -41,6 +41,7 @@ from .phases import (
 from .roots import first_root, start_margin
 
 TWO_PI = 2.0 * math.pi
+ZENO_N = 1e-10  # relative normal force below which the approach to n = 0 is free motion
 
 
 @jit
@@ -50,8 +51,11 @@ def slip_sign(phase):
 
 @jit
 def liftoff_phases(a):
-    """Drive phases of lift-off and touch-down, ``cos theta = -1/a`` (a > 1)."""
-    if a <= 1.0:
+    """Drive phases of lift-off and touch-down, ``cos theta = -1/a`` (a >= 1).
+
+    At ``a = 1`` both are ``pi``: the grazing point, where ``n`` touches zero.
+    """
+    if a < 1.0:
         return TWO_PI, TWO_PI
     th = math.acos(-1.0 / a)
     return th, TWO_PI - th
@@ -64,6 +68,8 @@ def next_boundary(theta, a, th_off, th_on):
             return th_off, EV_LIFTOFF
         if theta < th_on:
             return th_on, EV_TOUCHDOWN
+    elif a == 1.0 and theta < th_on:
+        return th_on, EV_TOUCHDOWN  # grazing: a touch-down of zero flight time
     return TWO_PI, EV_SECTION
 
 
@@ -76,19 +82,21 @@ def stick_coefficients(alpha, beta, V, a, theta, y, xd, f):
 
 
 @jit
-def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T):
+def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T, avoid):
     """Choose the phase that starts consistently at ``theta``.
 
     Candidates, in order: stick (both cone margins must start positive; for a rigid
     contact also zero body velocity), slip ``s_pref``, slip ``-s_pref``.  With a
     finite contact stiffness ``f`` is continuous, so slip ``s`` is a candidate only
     when ``f = s n``.  Returns ``(phase, f, ok)``; ``ok`` is False when no candidate
-    starts consistently (a degenerate point, counted by the caller).
+    starts consistently (a degenerate point, counted by the caller).  ``avoid``
+    (a phase code, or -1) is skipped: the phase that has just ended at once, whose
+    margin is lost in round-off (a near-tangency), must not be re-entered.
     """
     rigid = math.isinf(beta)
     k = beta - alpha
     n = normal_force(theta, a)
-    if not rigid or xd == 0.0:
+    if avoid != STICK and (not rigid or xd == 0.0):
         fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         ok1, _ = start_margin(cone_margin(fc, theta, 1.0, a), wp, T)
         if ok1:
@@ -99,6 +107,8 @@ def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T):
     tol = 1e-12 * (1.0 + abs(n))
     for i in range(2):
         s = s_pref if i == 0 else -s_pref
+        if (SLIP_POS if s > 0 else SLIP_NEG) == avoid:
+            continue
         if rigid or abs(f - s * n) <= tol:
             vr = slip_velocity(free_y(alpha, w, theta, y, xd - V, s, a), w, theta, s, a, V, k)
             ok, _ = start_margin(vr, w, T)
@@ -126,7 +136,13 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
     T = tb - theta
     te = -1.0
     es = 0.0
-    if phase == STICK:
+    # Zeno guard: where the cone closes (n -> 0 at lift-off or grazing) stick and slip
+    # can alternate infinitely often.  Once n < ZENO_N the force |f| <= n is negligible
+    # (its integral over the rest of the approach is < 1e-14): move freely to the boundary.
+    zeno = (phase != FLIGHT and bkind != EV_SECTION
+            and normal_force(theta, a) <= ZENO_N * (1.0 + a))
+    immediate = False  # the event fired at the start offset: a round-off tangency
+    if phase == STICK and not zeno:
         fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         for i in range(2):
             s = 1.0 if i == 0 else -1.0
@@ -137,16 +153,26 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
             if r >= 0.0 and (te < 0.0 or r < te):
                 te = r
                 es = s
-    elif phase != FLIGHT:
+                immediate = r <= ts
+    elif phase != FLIGHT and not zeno:
         s = slip_sign(phase)
         yc = free_y(alpha, w, theta, y, xd - V, s, a)
         vr = slip_velocity(yc, w, theta, s, a, V, k)
         ok, ts = start_margin(vr, w, T)
         te = first_root(vr, w, ts, T) if ok else 0.0
+        immediate = te >= 0.0 and te <= ts
     hit = te >= 0.0
+    avoid = phase if immediate else -1
     t = te if hit else T
     # state and integrals at the end of the piece
-    if phase == STICK:
+    if zeno:
+        yc = free_y(alpha, w, theta, y, xd - V, 0.0, a)
+        y1 = evaluate(yc, w, t)
+        xd1 = V + evaluate(derivative(yc, w), w, t)
+        f1 = 0.0
+        int_f = 0.0
+        int_n = normal_integral(theta, t, a)
+    elif phase == STICK:
         fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         int_f = integral(fc, wp, t)
         int_n = normal_integral(theta, t, a)
@@ -180,13 +206,13 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
         if phase == STICK:
             # stick -> slip in direction es: project onto |f| = n
             f1 = es * normal_force(theta1, a)
-            ph1, f1, ok = enter(theta1, y1, xd1, f1, es, alpha, beta, a, V, Tn)
+            ph1, f1, ok = enter(theta1, y1, xd1, f1, es, alpha, beta, a, V, Tn, avoid)
             event = EV_STICK_TO_SLIP
         else:
             s = slip_sign(phase)
             # slip -> stick: project onto zero contact-point velocity
             xd1 = 0.0 if rigid else -s * a * math.sin(theta1) / k
-            ph1, f1, ok = enter(theta1, y1, xd1, f1, -s, alpha, beta, a, V, Tn)
+            ph1, f1, ok = enter(theta1, y1, xd1, f1, -s, alpha, beta, a, V, Tn, avoid)
             event = EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL
     if t == T and not hit:
         if bkind == EV_LIFTOFF:
@@ -195,7 +221,7 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
         elif bkind == EV_TOUCHDOWN:
             f1 = 0.0
             sp = 1.0 if xd1 >= 0.0 else -1.0
-            ph1, f1, ok = enter(theta1, y1, xd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1)
+            ph1, f1, ok = enter(theta1, y1, xd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1, -1)
     elif t == T and hit and bkind != EV_SECTION:
         # an event exactly at lift-off / touch-down: the boundary is handled by a
         # zero-length segment next (theta1 == tb keeps it as the next boundary)
@@ -210,7 +236,7 @@ def initial_state(kind, alpha, beta, a, V):
         y, xd, f = -1.0 / alpha, V, 1.0
     else:
         y, xd, f = 0.0, 0.0, 0.0
-    ph, f, _ = enter(0.0, y, xd, f, 1.0, alpha, beta, a, V, TWO_PI)
+    ph, f, _ = enter(0.0, y, xd, f, 1.0, alpha, beta, a, V, TWO_PI, -1)
     return y, xd, f, ph
 
 

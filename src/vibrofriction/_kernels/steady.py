@@ -33,6 +33,7 @@ from .jit import jit
 
 MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
 N_ACC = 6  # accumulators: int_f, int_n, t_stick, t_slip, t_slip_neg, t_flight
+MAX_DEGENERATE = 1000  # transitions decided within round-off before giving up (chatter)
 FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 
 
@@ -113,7 +114,11 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
     jac = np.zeros((3, 3))
     have_jac = False
     res_prev = np.inf
+    scale0 = 1.0 + alpha * abs(y) + abs(xd) + abs(f)
     for _ in range(12):
+        # a Newton step that runs far from the start has diverged, not converged
+        if alpha * abs(z[0] - y) + abs(z[1] - xd) + abs(z[2] - f) > 100.0 * scale0:
+            return False, y, xd, f, events
         y0, xd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
         y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
                                               th_off, th_on, max_events)
@@ -121,9 +126,8 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         if ph1 != ph or not ok:
             return False, y, xd, f, events
         r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
-        scale = 1.0 + alpha * abs(y0) + abs(xd0) + abs(f0)
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
-        if res <= tol * scale:
+        if res <= tol * scale0:
             if not have_jac:
                 return False, y, xd, f, events
             # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
@@ -242,7 +246,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
             degenerate += 1
         zero_run = zero_run + 1 if t == 0.0 else 0
         ph = ph1
-        if events > max_events or zero_run > 100:
+        if events > max_events or zero_run > 100 or degenerate > MAX_DEGENERATE:
             status = ST_FAILED
             break
         if theta < TWO_PI:
