@@ -24,9 +24,9 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import numpy as np  # noqa: E402
-from peers import peer_a, peer_b, warm_up  # noqa: E402
 
 import vibrofriction as vf  # noqa: E402
+from peers import peer_a, peer_b, warm_up  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 QUICK = "--quick" in sys.argv
@@ -69,12 +69,13 @@ def main() -> None:
         ref = vf.friction_coefficient(s, v_inertial=V, settings=TIGHT).mu_ratio
         t_ours, r = _median_time(lambda s=s, V=V: vf.friction_coefficient(s, v_inertial=V),
                                  50 if not QUICK else 5, 5.0)
-        t_b, mu_b = _median_time(lambda: peer_b(alpha, beta, a, V), 7 if not QUICK else 1, 20.0)
+        t_b, mu_b = _median_time(lambda p=(alpha, beta, a, V): peer_b(*p), 7 if not QUICK else 1,
+                                 20.0)
         fine = peer_b(alpha, beta, a, V, steps_per_period=12800 if not QUICK else 3200)
         if QUICK:
-            t_a, mu_a = _median_time(lambda: peer_a(alpha, beta, a, V, 20, 5), 1, 60.0)
+            t_a, mu_a = _median_time(lambda p=(alpha, beta, a, V): peer_a(*p, 20, 5), 1, 60.0)
         else:
-            t_a, mu_a = _median_time(lambda: peer_a(alpha, beta, a, V), 1, 60.0)
+            t_a, mu_a = _median_time(lambda p=(alpha, beta, a, V): peer_a(*p), 1, 60.0)
         row = {
             "point": label, "alpha": alpha, "beta": beta, "amplitude": a, "vbar": vbar,
             "v_inertial": V, "reference": ref,

@@ -6,7 +6,6 @@ import pytest
 import vibrofriction as vf
 
 
-
 @pytest.fixture(scope="session")
 def general_system():
     return vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
