@@ -3,7 +3,8 @@ LocalCluster, Dask overhead for 1000-point blocks, peak memory of a 10^6-point s
 into a store.  Results are written (markdown) to benchmarks/results/sweep.md.
 
     .venv/bin/python benchmarks/bench_sweep.py throughput   # ~2 min
-    .venv/bin/python benchmarks/bench_sweep.py memory       # ~2 min (part of 10^6 points)
+    .venv/bin/python benchmarks/bench_sweep.py memory       # ~7 min: 10^6 points
+    .venv/bin/python benchmarks/bench_sweep.py atlas --store /tmp/atlas.zarr  # 10^5 points
     .venv/bin/python benchmarks/bench_sweep.py all
 
 The numbers are printed as markdown table rows; paste them into the results file.
@@ -43,31 +44,73 @@ def _busy_seconds() -> float:
     return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
 
 
-def _own_seconds() -> float:
-    """CPU seconds of this process and all its descendants, living or reaped."""
-    import psutil
+class CpuMeter:
+    """CPU seconds of a process tree while it runs, and the load of everything else.
 
-    me = psutil.Process()
-    t = me.cpu_times()
-    total = t.user + t.system + t.children_user + t.children_system
-    for child in me.children(recursive=True):
+    A thread samples the tree (the root and all its descendants) every 0.1 s and keeps
+    each process's latest user + system time, so processes that are not waited for
+    (a forkserver, its workers) are counted too; only the last 0.1 s of a process that
+    ends is missed.  ``foreign`` is the machine's busy time (/proc/stat) minus that,
+    in cores: other users of the machine during the measurement.
+    """
+
+    def __init__(self, root: int | None = None) -> None:
+        import psutil
+
+        self._psutil = psutil
+        self.root = root or os.getpid()
+        self._first: dict[int, float] = {}
+        self._last: dict[int, float] = {}
+        self._stop = False
+
+    def _sample(self, first: bool = False) -> None:
+        psutil = self._psutil
         try:
-            c = child.cpu_times()
+            root = psutil.Process(self.root)
+            procs = [root, *root.children(recursive=True)]
         except psutil.NoSuchProcess:
-            continue
-        total += c.user + c.system
-    return total
+            return
+        for p in procs:
+            try:
+                t = p.cpu_times()
+            except psutil.NoSuchProcess:
+                continue
+            self._last[p.pid] = t.user + t.system
+            if first:
+                self._first[p.pid] = t.user + t.system
+
+    def _run(self) -> None:
+        while not self._stop:
+            self._sample()
+            time.sleep(0.1)
+
+    def __enter__(self) -> CpuMeter:
+        import threading
+
+        self._busy = _busy_seconds()
+        self._t = time.perf_counter()
+        self._sample(first=True)
+        self._thread = threading.Thread(target=self._run, daemon=True)
+        self._thread.start()
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self._stop = True
+        self._thread.join()
+        self._sample()
+        self.wall = time.perf_counter() - self._t
+        self.own = sum(v - self._first.get(pid, 0.0) for pid, v in self._last.items())
+        self.foreign = max(0.0, (_busy_seconds() - self._busy) - self.own) / self.wall
 
 
-def _wait_idle(limit: float = 0.15, window: float = 3.0, patience: float = 900.0) -> float:
+def _wait_idle(limit: float = 0.15, window: float = 3.0, patience: float = 1800.0) -> float:
     """Wait until other processes use less than `limit` cores; returns their load."""
     deadline = time.monotonic() + patience
     while True:
-        b, o = _busy_seconds(), _own_seconds()
-        time.sleep(window)
-        foreign = ((_busy_seconds() - b) - (_own_seconds() - o)) / window
-        if foreign < limit or time.monotonic() > deadline:
-            return foreign
+        with CpuMeter() as meter:
+            time.sleep(window)
+        if meter.foreign < limit or time.monotonic() > deadline:
+            return meter.foreign
 
 
 def _best(fn, repeat: int) -> tuple[float, float, float]:
@@ -77,13 +120,9 @@ def _best(fn, repeat: int) -> tuple[float, float, float]:
     best = (math.inf, math.nan, math.nan)
     for _ in range(repeat):
         _wait_idle()
-        b, o = _busy_seconds(), _own_seconds()
-        t = time.perf_counter()
-        fn()
-        wall = time.perf_counter() - t
-        own = _own_seconds() - o
-        foreign = ((_busy_seconds() - b) - own) / wall
-        best = min(best, (wall, foreign, own))
+        with CpuMeter() as m:
+            fn()
+        best = min(best, (m.wall, m.foreign, m.own))
     return best
 
 
@@ -189,78 +228,120 @@ if __name__ == "__main__":
 """
 
 
-def _tree_rss(pid: int) -> tuple[int, int]:
-    """Resident memory (bytes) of a process and of it plus all its descendants."""
+def _tree_memory(pid: int) -> tuple[float, float, float]:
+    """(RSS of the process, RSS summed over it and its descendants, PSS summed), bytes.
+
+    PSS shares each page among the processes mapping it, so the sum is what the tree
+    really occupies; the RSS sum counts shared pages (libraries, copy-on-write) again
+    for every process."""
     import psutil
 
     try:
         root = psutil.Process(pid)
         procs = [root, *root.children(recursive=True)]
     except psutil.NoSuchProcess:
-        return 0, 0
-    total = 0
-    own = 0
+        return 0.0, 0.0, 0.0
+    own = rss = pss = 0.0
     for p in procs:
         try:
-            rss = p.memory_info().rss
+            info = p.memory_full_info()
         except psutil.NoSuchProcess:
             continue
-        total += rss
+        rss += info.rss
+        pss += info.pss
         if p.pid == pid:
-            own = rss
-    return own, total
+            own = info.rss
+    return own, rss, pss
 
 
-def memory(seconds: float) -> list[str]:
-    """Run the 10^6-point sweep into a store for `seconds`, sampling resident memory."""
+def memory(seconds: float | None) -> list[str]:
+    """The 10^6-point sweep into a store (to the end, or killed after `seconds`),
+    its resident memory sampled every second."""
     tmp = Path(tempfile.mkdtemp(prefix="bench-sweep-"))
     store = tmp / "atlas.zarr"
     script = tmp / "run.py"
     script.write_text(textwrap.dedent(MEMORY_SCRIPT))
+    marks = store / "_sweep" / "done" / "c"
     proc = subprocess.Popen([sys.executable, str(script), str(store)], start_new_session=True)
     samples = []
     t0 = time.perf_counter()
     try:
-        while time.perf_counter() - t0 < seconds and proc.poll() is None:
-            own, total = _tree_rss(proc.pid)
-            done = len(os.listdir(store / "_sweep" / "done" / "c")) if (
-                store / "_sweep" / "done" / "c").exists() else 0
-            samples.append((time.perf_counter() - t0, own, total, done))
-            time.sleep(0.25)
+        while proc.poll() is None and (seconds is None or time.perf_counter() - t0 < seconds):
+            own, rss, pss = _tree_memory(proc.pid)
+            done = len(os.listdir(marks)) if marks.exists() else 0
+            if own:
+                samples.append((time.perf_counter() - t0, own, rss, pss, done))
+            time.sleep(1.0)
     finally:
+        finished = proc.poll() == 0
         os.killpg(proc.pid, signal.SIGKILL)
         proc.wait()
+    wall = time.perf_counter() - t0
+    done = len(os.listdir(marks)) if marks.exists() else 0
     size = sum(f.stat().st_size for f in store.rglob("*") if f.is_file())
     shutil.rmtree(tmp, ignore_errors=True)
     arr = np.array(samples)
-    done = int(arr[-1, 3])
-    first = next(i for i, s in enumerate(samples) if s[3] > 0)
-    rate = (arr[-1, 3] - arr[first, 3]) * 1000 / (arr[-1, 0] - arr[first, 0])
-    half = len(arr) // 2
     mib = 2.0**20
+
+    def at(fraction: float) -> str:
+        i = int(np.searchsorted(arr[:, 4], fraction * 1000))
+        i = min(i, len(arr) - 1)
+        return f"{arr[i, 2] / mib:.0f} / {arr[i, 3] / mib:.0f}"
+
+    how = (f"ran to the end in {wall:.0f} s ({1e6 / wall:,.0f} points/s, start-up included)"
+           if finished else f"killed after {wall:.0f} s with {done} of 1000 blocks done")
     return [
         "10^6-point grid (alpha 100 x beta 100 x vbar 100, blocks of 1000 points, 2 local "
-        f"processes, into a zarr store), run for {seconds:.0f} s then SIGKILLed:",
+        f"processes, into a zarr store): {how}.",
         "",
         "| quantity | value |",
         "|---|---:|",
         f"| blocks done | {done} of 1000 |",
-        f"| steady throughput | {rate:,.0f} points/s |",
-        f"| extrapolated time for 10^6 points | {1e6 / rate / 60:.0f} min |",
         f"| peak RSS, sweep process | {arr[:, 1].max() / mib:.0f} MiB |",
-        f"| peak RSS, sweep process + workers + forkserver | {arr[:, 2].max() / mib:.0f} MiB |",
-        f"| mean RSS of the tree, first half / second half of the run | "
-        f"{arr[:half, 2].mean() / mib:.0f} / {arr[half:, 2].mean() / mib:.0f} MiB |",
-        f"| store size for {done} blocks | {size / mib:.1f} MiB "
-        f"(~{size / max(done, 1) * 1000 / mib:.0f} MiB for 10^6 points) |",
+        f"| peak RSS summed over sweep process + workers + helpers | "
+        f"{arr[:, 2].max() / mib:.0f} MiB |",
+        f"| peak PSS summed (shared pages counted once) | {arr[:, 3].max() / mib:.0f} MiB |",
+        f"| tree RSS / PSS at 10 %, 50 %, 90 % of the blocks | {at(0.1)}, {at(0.5)}, "
+        f"{at(0.9)} MiB |",
+        f"| store size | {size / mib:.1f} MiB |",
+    ]
+
+
+ATLAS_ARGS = ["--alpha", "1e-2:0.5:41:log", "--beta", "2:400:20:log", "--amplitude", "0.5",
+              "--vbar", "0:1.2:122"]  # 41 x 20 x 122 = 100 040 points
+
+
+def atlas(store: str) -> list[str]:
+    """The 10^5-point atlas through the command line, with its progress bar."""
+    exe = Path(sys.executable).with_name("vibrofriction")
+    cmd = [str(exe), "sweep", *ATLAS_ARGS, "--out", store]
+    _wait_idle()
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    with CpuMeter(proc.pid) as m:
+        stdout, stderr = proc.communicate()
+    r = subprocess.CompletedProcess(cmd, proc.returncode, stdout, stderr)
+    wall, own, foreign = m.wall, m.own, m.foreign
+    if r.returncode != 0:
+        raise RuntimeError(r.stderr)
+    bar = [line for line in r.stderr.replace("\r", "\n").splitlines() if "pt/s" in line]
+    return [
+        "`" + " ".join(["vibrofriction", "sweep", *ATLAS_ARGS, "--out", "atlas.zarr"]) + "`",
+        "",
+        f"wall {wall:.0f} s, CPU {own:.0f} s, other processes' load {foreign:.2f} cores",
+        "",
+        "    " + r.stdout.strip(),
+        "    progress bar, first and last updates:",
+        *("    " + line.strip() for line in bar[1:3] + bar[-2:]),
     ]
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("what", choices=["throughput", "memory", "all"])
+    parser.add_argument("what", choices=["throughput", "memory", "atlas", "all"])
+    parser.add_argument("--store", default="atlas.zarr", help="store of the atlas run")
     parser.add_argument("--repeat", type=int, default=2)
-    parser.add_argument("--seconds", type=float, default=90.0)
+    parser.add_argument("--seconds", type=float, default=None,
+                        help="memory: kill the sweep after this long (default: run to the end)")
     args = parser.parse_args()
     header = {"python": platform.python_version(), "machine": platform.machine(),
               "cores": os.cpu_count(), "command": " ".join(sys.argv)}
@@ -269,6 +350,8 @@ def main() -> None:
         print("\n".join(throughput(args.repeat)))
     if args.what in ("memory", "all"):
         print("\n".join(memory(args.seconds)))
+    if args.what in ("atlas", "all"):
+        print("\n".join(atlas(args.store)))
 
 
 if __name__ == "__main__":
