@@ -255,19 +255,15 @@ def run_periods(theta, y, xd, f, phase, alpha, beta, a, V, periods, max_segments
     cf = 0.0
     cn = 0.0
     ev = -1
-    while k < periods:
+    while True:
         if m >= max_segments:
             return -1
-        seg[m, 0] = TWO_PI * k + theta
-        seg[m, 1] = y
-        seg[m, 2] = xd
-        seg[m, 3] = f
-        seg[m, 4] = phase
-        seg[m, 5] = ev
-        seg[m, 6] = cf
-        seg[m, 7] = cn
-        seg[m, 8] = theta
+        row = (TWO_PI * k + theta, y, xd, f, float(phase), float(ev), cf, cn, theta)
+        for j in range(9):
+            seg[m, j] = row[j]
         m += 1
+        if k >= periods:
+            return m
         t, theta, y, xd, f, phase, ev, i_f, i_n, ok = segment(
             theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on)
         cf += i_f
@@ -275,18 +271,6 @@ def run_periods(theta, y, xd, f, phase, alpha, beta, a, V, periods, max_segments
         if theta >= TWO_PI:
             theta = 0.0
             k += 1
-    if m >= max_segments:
-        return -1
-    seg[m, 0] = TWO_PI * k + theta
-    seg[m, 1] = y
-    seg[m, 2] = xd
-    seg[m, 3] = f
-    seg[m, 4] = phase
-    seg[m, 5] = ev
-    seg[m, 6] = cf
-    seg[m, 7] = cn
-    seg[m, 8] = theta
-    return m + 1
 
 
 @jit
