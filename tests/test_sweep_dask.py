@@ -73,11 +73,10 @@ def test_dask_continuation_equals_local(client) -> None:
 
 
 def test_workers_of_another_version_are_refused(client, monkeypatch) -> None:
-    import vibrofriction
-
-    monkeypatch.setattr(vibrofriction, "__version__", "99.0")
-    with pytest.raises(ValueError, match=r"workers run vibrofriction \['0\.1\.0'\], this "
-                                         r"process 99\.0"):
+    version, fingerprint = vsweep.identity()
+    monkeypatch.setattr(vsweep, "identity", lambda: (version, "0123456789abcdef"))
+    with pytest.raises(ValueError, match=r"the Dask workers run vibrofriction .*"
+                                         + fingerprint + r".*install the same version"):
         sweep(**GRID, client=client, progress=False)
 
 

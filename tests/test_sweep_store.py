@@ -16,7 +16,6 @@ import pytest
 import xarray as xr
 import zarr
 
-import vibrofriction
 import vibrofriction.sweep as vsweep
 from test_sweep import GRID, assert_bitwise
 from vibrofriction.solver import SolverSettings
@@ -52,7 +51,7 @@ def test_store_layout_and_contents(tmp_path: Path, reference: xr.Dataset) -> Non
     # plain xarray reads it; the bookkeeping group stays out of the Dataset
     plain = xr.open_zarr(path, consolidated=False)
     assert "done" not in plain.variables and "_sweep" not in plain.variables
-    assert plain.attrs["vibrofriction_version"] == vibrofriction.__version__
+    assert plain.attrs["vibrofriction_version"] == vsweep.identity()[0]
     assert plain.mu_ratio.encoding["chunks"] == (1, 1, 13)  # one zarr chunk per block
     group = zarr.open_group(str(path), mode="r")
     assert np.all(group["_sweep"]["done"][:] == 1)
@@ -100,11 +99,17 @@ def test_store_of_another_sweep_is_a_clear_error(tmp_path: Path, changes, messag
         sweep(**{**GRID, **changes}, store=path, workers=1, progress=False)
 
 
-def test_store_of_another_version_is_an_error(tmp_path: Path, monkeypatch) -> None:
+def test_store_of_another_version_or_solver_is_an_error(tmp_path: Path, monkeypatch) -> None:
     path = tmp_path / "atlas.zarr"
     sweep(**GRID, store=path, workers=1, chunk_size=40, progress=False)
-    monkeypatch.setattr(vibrofriction, "__version__", "99.0")
+    version, fingerprint = vsweep.identity()
+    assert open_atlas(path).attrs["solver_fingerprint"] == fingerprint
+    monkeypatch.setattr(vsweep, "identity", lambda: ("99.0", fingerprint))
     with pytest.raises(ValueError, match=r"version: store has '0\.1\.0', this call '99\.0'"):
+        sweep(**GRID, store=path, workers=1, progress=False)
+    # same version number, edited solver source: refused too
+    monkeypatch.setattr(vsweep, "identity", lambda: (version, "0123456789abcdef"))
+    with pytest.raises(ValueError, match=r"the solver's source code differs"):
         sweep(**GRID, store=path, workers=1, progress=False)
 
 

@@ -23,17 +23,12 @@ import xarray as xr
 from numpy.typing import ArrayLike
 
 from ..solver import SolverSettings
+from ._compute import identity
 from ._grid import DEFAULT_CHUNK_SIZE, make_plan, parse_axis
 from ._run import available_cores, check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
 
 __all__ = ["available_cores", "make_plan", "open_atlas", "parse_axis", "plot_atlas", "sweep"]
-
-
-def _version() -> str:
-    from .. import __version__
-
-    return __version__
 
 
 def sweep(
@@ -78,7 +73,7 @@ def sweep(
     store : path of a zarr store.  Each finished block is written as soon as it is
         done; calling again with the same arguments resumes, recomputing only
         unfinished blocks.  A store made for another grid, other settings, another
-        initial state or package version is an error.  ``None``: results in memory.
+        initial state, package version or solver source is an error.  ``None``: results in memory.
     client : a ``dask.distributed.Client``: run the blocks on its cluster.
     workers : local processes (default: all cores available); 1 runs in this process.
     chunk_size : points per block of work (and per zarr chunk), about.  An existing
@@ -107,10 +102,11 @@ def sweep(
     cores, a Dask cluster, any ``chunk_size``): each point depends on its own
     parameters only.  Raises ``ValueError`` before any work for a bad grid.
     """
+    version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
-                     version=_version())
+                     version=version, fingerprint=fingerprint)
     check_executor(client, workers)
     if store is None:
         sink: Any = MemorySink(plan)

@@ -10,7 +10,10 @@ one; rows are independent of each other.
 
 from __future__ import annotations
 
+import functools
+import hashlib
 import math
+from pathlib import Path
 
 import numpy as np
 
@@ -21,7 +24,26 @@ from ..solver import SectionState, solve_points
 from ._grid import Plan
 from ._variables import point_variables, row_variables
 
-__all__ = ["compute_block", "warm_up"]
+__all__ = ["compute_block", "identity", "warm_up"]
+
+#: the source files that determine the values of a sweep (relative to the package)
+_VALUE_SOURCES = ("_kernels/*.py", "solver.py", "params.py", "theory.py", "sweep/_compute.py")
+
+
+@functools.cache
+def identity() -> tuple[str, str]:
+    """``(package version, fingerprint)``: the fingerprint hashes the source code that
+    computes the values, so a store is never resumed, nor a Dask worker used, with a
+    solver that differs from the one that started (even under the same version)."""
+    from .. import __version__
+
+    root = Path(__file__).resolve().parents[1]
+    digest = hashlib.sha256()
+    for pattern in _VALUE_SOURCES:
+        for path in sorted(root.glob(pattern)):
+            digest.update(path.relative_to(root).as_posix().encode())
+            digest.update(path.read_bytes())
+    return __version__, digest.hexdigest()[:16]
 
 
 def warm_up() -> None:

@@ -25,6 +25,7 @@ def _attrs(plan: Plan) -> dict:
         "references": REFERENCE,
         "source": f"vibrofriction {plan.version}",
         "vibrofriction_version": plan.version,
+        "solver_fingerprint": plan.fingerprint,
         "sweep_kind": plan.kind,
         "velocity": plan.velocity.name,
         "swept": " ".join(plan.row_dims + ((plan.velocity.name,) if plan.velocity.swept

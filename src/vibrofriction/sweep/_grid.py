@@ -155,6 +155,7 @@ class Plan:
     continuation: bool
     chunks: tuple[int, ...]  # block shape over `dims`
     version: str
+    fingerprint: str = ""  # hash of the solver's source (see _compute.identity)
 
     # ---- shape
     @property
@@ -229,6 +230,7 @@ class Plan:
             "initial": self.initial,
             "continuation": self.continuation,
             "version": self.version,
+            "fingerprint": self.fingerprint,
         }
 
     def token(self) -> str:
@@ -279,6 +281,7 @@ def make_plan(
     continuation: bool = False,
     chunk_size: int = DEFAULT_CHUNK_SIZE,
     version: str = "",
+    fingerprint: str = "",
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work."""
     from ..params import Dimensionless
@@ -362,7 +365,7 @@ def make_plan(
             raise ValueError(f"continuation needs {velocity.name} strictly increasing")
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
                 initial=initial, continuation=bool(continuation), chunks=(),
-                version=version)
+                version=version, fingerprint=fingerprint)
     n_tail = int(continuation) + int(velocity.swept)
     return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
 

@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from ._compute import compute_block, warm_up
+from ._compute import compute_block, identity, warm_up
 from ._grid import Plan
 
 __all__ = ["available_cores", "check_executor", "run_blocks"]
@@ -44,12 +44,6 @@ def _worker_init() -> None:
     # Ctrl-C is handled by the parent, which cancels the pool; workers just stop.
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     warm_up()
-
-
-def _version() -> str:
-    from .. import __version__
-
-    return __version__
 
 
 def _serial(plan: Plan, todo: Iterable[int], deliver: Deliver) -> None:
@@ -92,10 +86,12 @@ def _local(plan: Plan, todo: list[int], workers: int, deliver: Deliver) -> None:
 def _dask(plan: Plan, todo: list[int], client: Any, deliver: Deliver) -> None:
     from distributed import as_completed
 
-    versions = set(client.run(_version).values())
-    if versions - {plan.version}:
-        raise ValueError(f"the Dask workers run vibrofriction {sorted(versions)}, this "
-                         f"process {plan.version}: install the same version everywhere")
+    mine = (plan.version, plan.fingerprint)
+    theirs = {tuple(v) for v in client.run(identity).values()}
+    if theirs - {mine}:
+        raise ValueError(
+            f"the Dask workers run vibrofriction {sorted(theirs)} (version, solver "
+            f"fingerprint), this process {mine}: install the same version everywhere")
     client.run(warm_up)  # load (or compile) the kernels on every worker first
     nthreads = sum(client.nthreads().values()) or 1
     window = max(4, 3 * nthreads)

@@ -189,6 +189,9 @@ def _describe(key: str, stored: dict[str, Any], wanted: dict[str, Any]) -> str:
             return f"{float.fromhex(v):g}"
         return repr(v)
 
+    if key == "fingerprint":
+        return ("fingerprint: the solver's source code differs from the one that wrote the "
+                "store")
     return f"{key}: store has {show(get(stored, key))}, this call {show(get(wanted, key))}"
 
 
