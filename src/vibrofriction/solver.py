@@ -118,6 +118,9 @@ class SolverSettings:
             raise ValueError(f"max_events must be an integer >= 1, got {self.max_events!r}")
 
 
+_DEFAULT_SETTINGS = SolverSettings()
+
+
 @dataclass(frozen=True)
 class SectionState:
     """A state on the Poincare section ``tau = 2 pi k`` in the scaled variables.
@@ -281,6 +284,10 @@ def _inertial_velocity(system: System, vbar, v_inertial, v0) -> NDArray[np.float
     if len(given) != 1:
         raise ValueError(f"give exactly one of vbar, v_inertial, v0 (got {given or 'none'})")
     dim = _dimensionless(system)
+    if v_inertial.__class__ is float and vbar is None and v0 is None:  # the common fast path
+        if not (math.isfinite(v_inertial) and v_inertial >= 0.0):
+            raise ValueError(f"v_inertial must be finite and >= 0, got {v_inertial!r}")
+        return np.asarray(v_inertial)
     if v0 is not None:
         if not isinstance(system, Physical):
             raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
@@ -417,7 +424,7 @@ def friction_coefficient(
     shape = V.shape
     if scalar and V > 0.0:
         # one point: call the scalar kernel directly (no array bookkeeping)
-        settings = settings or SolverSettings()
+        settings = settings or _DEFAULT_SETTINGS
         kind, init = _initial(initial, 1)
         r = steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), kind, init[0, 0],
                          init[0, 1], init[0, 2], int(init[0, 3]), int(settings.max_periods),

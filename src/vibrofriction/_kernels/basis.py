@@ -45,31 +45,49 @@ def cs_kernels(t, w):
     return c, s
 
 
+RESONANT_BAND = 0.25  # |w^2 - 1| below which C and S need the half-angle forms
+
+
+@jit
+def basis_values(w, t, with_cs):
+    """The eight basis functions at ``t`` (``C = S = 0`` unless ``with_cs``)."""
+    ct = math.cos(t)
+    st = math.sin(t)
+    cw = math.cos(w * t)
+    sw = math.sin(w * t)
+    cc = 0.0
+    ss = 0.0
+    if with_cs:
+        d = w * w - 1.0
+        if abs(d) > RESONANT_BAND:
+            cc = (ct - cw) / d
+            ss = (st - sw / w) / d
+        else:
+            cc, ss = cs_kernels(t, w)
+    return (1.0, t, ct, st, cw, sw, cc, ss)
+
+
+@jit
+def dot(c, b):
+    return (c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3]
+            + c[4] * b[4] + c[5] * b[5] + c[6] * b[6] + c[7] * b[7])
+
+
+@jit
+def has_cs(c):
+    return c[6] != 0.0 or c[7] != 0.0
+
+
 @jit
 def evaluate(c, w, t):
     """Value of the coefficient tuple ``c`` at local time ``t``."""
-    v = c[0] + c[1] * t + c[2] * math.cos(t) + c[3] * math.sin(t)
-    v += c[4] * math.cos(w * t) + c[5] * math.sin(w * t)
-    if c[6] != 0.0 or c[7] != 0.0:
-        cc, ss = cs_kernels(t, w)
-        v += c[6] * cc + c[7] * ss
-    return v
+    return dot(c, basis_values(w, t, has_cs(c)))
 
 
 @jit
 def value_at_zero(c):
     """``g(0)``: the basis at ``t = 0`` is ``(1, 0, 1, 0, 1, 0, 0, 0)``."""
     return c[0] + c[2] + c[4]
-
-
-@jit
-def evaluate_split(c, w, t):
-    """``(g, g - D cos wt - E sin wt)``: the value and its part without the free oscillation."""
-    v = c[0] + c[1] * t + c[2] * math.cos(t) + c[3] * math.sin(t)
-    if c[6] != 0.0 or c[7] != 0.0:
-        cc, ss = cs_kernels(t, w)
-        v += c[6] * cc + c[7] * ss
-    return v + c[4] * math.cos(w * t) + c[5] * math.sin(w * t), v
 
 
 @jit

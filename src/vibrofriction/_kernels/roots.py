@@ -19,7 +19,7 @@ import math
 
 import numpy as np
 
-from .basis import derivative, evaluate, evaluate_split, magnitude, sup_bound, value_at_zero
+from .basis import basis_values, derivative, dot, has_cs, magnitude, sup_bound, value_at_zero
 from .jit import jit
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
@@ -69,11 +69,13 @@ def start_margin(c, w, T):
 @jit
 def _refine(c, c1, w, a, b, ga, gb):
     """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone."""
+    cs = has_cs(c) or has_cs(c1)
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
     for _ in range(60):
         if not (a < t < b):
             t = 0.5 * (a + b)
-        gt = evaluate(c, w, t)
+        bv = basis_values(w, t, cs)
+        gt = dot(c, bv)
         if gt > 0.0:
             a = t
         else:
@@ -82,7 +84,7 @@ def _refine(c, c1, w, a, b, ga, gb):
                 return t
         if b - a <= 4e-16 * max(1.0, abs(b)):
             return b
-        d = evaluate(c1, w, t)
+        d = dot(c1, bv)
         if d == 0.0:
             t = 0.5 * (a + b)
             continue
@@ -94,6 +96,14 @@ def _refine(c, c1, w, a, b, ga, gb):
 
 
 @jit
+def _point(c, c1, w, t, cs):
+    """``g``, its slow part (without ``D cos wt + E sin wt``) and ``g'`` at ``t``."""
+    bv = basis_values(w, t, cs)
+    g = dot(c, bv)
+    return g, g - c[4] * bv[4] - c[5] * bv[5], dot(c1, bv)
+
+
+@jit
 def first_root(c, w, t0, T):
     """Earliest ``t`` in ``(t0, T]`` where ``g`` crosses from positive to ``<= 0``.
 
@@ -102,25 +112,24 @@ def first_root(c, w, t0, T):
     """
     c1 = derivative(c, w)
     c2 = derivative(c1, w)
+    cs = has_cs(c) or has_cs(c1)
     m2 = sup_bound(c2, w, T)
     # split off the free oscillation only where it is fast (stiff contacts)
     r = math.hypot(c[4], c[5]) if w > FAST else 0.0
     m2s = 0.0
     if r > 0.0:
-        cs = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
-        m2s = sup_bound(derivative(derivative(cs, w), w), w, T)
+        slow = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
+        m2s = sup_bound(derivative(derivative(slow, w), w), w, T)
     a = t0
-    ga, sa = evaluate_split(c, w, a)
+    ga, sa, da = _point(c, c1, w, a, cs)
     if ga <= 0.0:
         return a
-    da = evaluate(c1, w, a)
     stack_t = np.empty(96)
     stack_g = np.empty(96)
     stack_s = np.empty(96)
     stack_d = np.empty(96)
     stack_t[0] = T
-    stack_g[0], stack_s[0] = evaluate_split(c, w, T)
-    stack_d[0] = evaluate(c1, w, T)
+    stack_g[0], stack_s[0], stack_d[0] = _point(c, c1, w, T, cs)
     top = 0
     while top >= 0:
         b = stack_t[top]
@@ -148,6 +157,5 @@ def first_root(c, w, t0, T):
         m = 0.5 * (a + b)
         top += 1
         stack_t[top] = m
-        stack_g[top], stack_s[top] = evaluate_split(c, w, m)
-        stack_d[top] = evaluate(c1, w, m)
+        stack_g[top], stack_s[top], stack_d[top] = _point(c, c1, w, m, cs)
     return -1.0
