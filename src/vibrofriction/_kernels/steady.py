@@ -105,8 +105,11 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
 
     Only attracting orbits are accepted (spectral radius of ``DP^p`` below 1), so
     the answer is the attractor the iteration was approaching, not a nearby
-    unstable orbit.  Returns ``(ok, y, x', f, events)``.
+    unstable orbit.  An iterate whose image is in another phase on the section
+    (the orbit sticks at ``tau = 2 pi k`` where the guess slid, or vice versa)
+    continues in that phase's coordinates.  Returns ``(ok, y, x', f, phase, events)``.
     """
+    ph_in = ph
     rigid = math.isinf(beta)
     nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
     z = np.array([y, xd, f])
@@ -118,27 +121,35 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
     for _ in range(12):
         # a Newton step that runs far from the start has diverged, not converged
         if alpha * abs(z[0] - y) + abs(z[1] - xd) + abs(z[2] - f) > 100.0 * scale0:
-            return False, y, xd, f, events
+            return False, y, xd, f, ph_in, events
         y0, xd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
         y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
                                               th_off, th_on, max_events)
         events += ev
-        if ph1 != ph or not ok:
-            return False, y, xd, f, events
+        if not ok:
+            return False, y, xd, f, ph_in, events
+        if ph1 != ph:
+            # change chart: continue from the image, in its phase's coordinates
+            ph = ph1
+            nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
+            z[0], z[1], z[2] = y1, xd1, f1
+            have_jac = False
+            res_prev = np.inf
+            continue
         r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale0:
             if not have_jac:
-                return False, y, xd, f, events
+                return False, y, xd, f, ph_in, events
             # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
             if nd >= 2:
                 mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
                 ev_mod = np.abs(np.linalg.eigvals(mat))
                 if not np.max(ev_mod) < 1.0 - 1e-9:
-                    return False, y, xd, f, events
+                    return False, y, xd, f, ph_in, events
             elif not abs(jac[0, 0] + 1.0) < 1.0 - 1e-9:
-                return False, y, xd, f, events
-            return True, y0, xd0, f0, events
+                return False, y, xd, f, ph_in, events
+            return True, y0, xd0, f0, ph, events
         if not have_jac or res > 0.25 * res_prev:
             # (re)build the difference Jacobian of z -> P(z) - z; otherwise chord steps
             for j in range(nd):
@@ -150,7 +161,7 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
                                                       th_off, th_on, max_events)
                 events += ev
                 if ph3 != ph or not ok:
-                    return False, y, xd, f, events
+                    return False, y, xd, f, ph_in, events
                 jac[0, j] = ((y3 - y2) - r[0]) / h
                 jac[1, j] = ((xd3 - xd2) - r[1]) / h
                 jac[2, j] = ((f3 - f2) - r[2]) / h
@@ -158,10 +169,10 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         res_prev = res
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
-            return False, y, xd, f, events
+            return False, y, xd, f, ph_in, events
         for j in range(nd):
             z[j] += dz[j]
-    return False, y, xd, f, events
+    return False, y, xd, f, ph_in, events
 
 
 @jit
@@ -299,13 +310,14 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
                 p = pbest if attempt == 0 else 1
                 if attempt == 1 and pbest == 1:
                     break
-                nok, ny, nxd, nf, nev = newton_orbit(y, xd, f, ph, p, alpha, beta, a, V,
-                                                     th_off, th_on, 0.1 * tol_state,
-                                                     max_events)
+                nok, ny, nxd, nf, nph, nev = newton_orbit(
+                    y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, 0.1 * tol_state,
+                    max_events)
                 events += nev
                 if nok:
-                    y, xd, f = ny, nxd, nf
+                    y, xd, f, ph = ny, nxd, nf, nph
                     ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2] = y, xd, f
+                    ring_z[slot, 3] = ph
                     dprev[:] = np.inf
                     break
         if k == next_chk or k >= max_periods:
