@@ -284,6 +284,8 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
                 for j in range(N_ACC):
                     win[j] = acc[j] - ring_c[old, j]
                 mu = win[0] / win[1]
+                if win[2] == 0.0 and win[4] == 0.0 and win[5] == 0.0:
+                    mu = 1.0  # pure forward slip: f = n identically, not just on average
                 err = max(d / (1.0 - rho), 1e-15)
                 status = ST_PERIODIC
                 period = p
