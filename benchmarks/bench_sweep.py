@@ -171,48 +171,72 @@ def _raw(n_proc: int) -> float:
 
 
 def throughput(repeat: int) -> list[str]:
+    """Rounds of (1 core, 2 bare processes, 2 local processes, 2 Dask workers), each run
+    started on an idle machine; speed-ups are taken within a round (the machine's speed
+    drifts by 10-30 % over minutes), then the median over rounds is reported."""
     from distributed import Client, LocalCluster
 
     plan = make_plan(**GRID, chunk_size=CHUNK)
     n = plan.size
     warm_up()
-    rows = [f"grid {dict(zip(plan.dims, plan.shape, strict=True))}: {n} "
-            f"points, {plan.n_blocks} blocks of <= {np.prod(plan.chunks)} points"]
-    t1, f1, c1 = _best(lambda: sweep(**GRID, workers=1, chunk_size=CHUNK, progress=False),
-                       repeat)
-    t2, f2, c2 = _best(lambda: sweep(**GRID, workers=2, chunk_size=CHUNK, progress=False),
-                       repeat)
-    r1 = _best(lambda: _raw(1), repeat)[0]
-    r2, fr2, _ = _best(lambda: _raw(2), repeat)
-    _wait_idle()
-    start2 = min(_pool_startup(2) for _ in range(3))
+    names = ["1 core (in process)",
+             "2 bare processes, no sweep machinery, start-up excluded (the ceiling)",
+             "2 local processes", "Dask LocalCluster, 2 workers x 1 thread"]
+    wall = {k: [] for k in names}
+    cpu = {k: [] for k in names}
+    other = {k: [] for k in names}
+    startup = []
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
                       dashboard_address=None) as cluster, Client(cluster) as client:
         client.wait_for_workers(2)
         sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.5], client=client, progress=False)
-        td, fd, cd = _best(lambda: sweep(**GRID, client=client, chunk_size=CHUNK,
-                                         progress=False), repeat)
+        runs = dict(zip(names, [
+            lambda: sweep(**GRID, workers=1, chunk_size=CHUNK, progress=False),
+            lambda: _raw(2),
+            lambda: sweep(**GRID, workers=2, chunk_size=CHUNK, progress=False),
+            lambda: sweep(**GRID, client=client, chunk_size=CHUNK, progress=False),
+        ], strict=True))
+        for _ in range(repeat):
+            for name, fn in runs.items():
+                _wait_idle()
+                with CpuMeter() as m:
+                    inner = fn()  # _raw returns its own wall time, start-up excluded
+                wall[name].append(inner if isinstance(inner, float) else m.wall)
+                cpu[name].append(m.own)
+                other[name].append(m.foreign)
+            _wait_idle()
+            startup.append(_pool_startup(2))
+
+    def med(x) -> float:
+        return float(np.median(x))
+
+    serial = np.array(wall[names[0]])
+    speed = {k: med(serial / np.array(v)) for k, v in wall.items()}
+    rows = [f"grid {dict(zip(plan.dims, plan.shape, strict=True))}: {n} points, "
+            f"{plan.n_blocks} blocks of {int(np.prod(plan.chunks))} points; medians of "
+            f"{repeat} interleaved rounds",
+            "",
+            "| executor | wall (s) | points/s | speed-up vs 1 core | CPU (s) | other load "
+            "(cores) |",
+            "|---|---:|---:|---:|---:|---:|"]
+    for k in names:
+        rows.append(f"| {k} | {med(wall[k]):.2f} | {n / med(wall[k]):,.0f} | "
+                    f"{speed[k]:.2f} | {med(cpu[k]):.1f} | {max(other[k]):.2f} |")
+    local = np.array(wall[names[2]]) - np.array(startup)
+    rows.append(f"| 2 local processes, start-up ({med(startup):.1f} s) excluded | "
+                f"{med(local):.2f} | {n / med(local):,.0f} | {med(serial / local):.2f} | | |")
+    dask = np.array(wall[names[3]])
     rows += [
-        "| executor | wall (s) | points/s | speed-up vs 1 core | CPU (s) | other load "
-        "(cores) |",
-        "|---|---:|---:|---:|---:|---:|",
-        f"| bare processes, no sweep machinery: 1 | {r1:.2f} | {n / r1:,.0f} | "
-        f"{t1 / r1:.2f} | | |",
-        f"| bare processes, no sweep machinery: 2 (the machine's ceiling) | {r2:.2f} | "
-        f"{n / r2:,.0f} | {t1 / r2:.2f} | | {fr2:.2f} |",
-        f"| 1 core (in process) | {t1:.2f} | {n / t1:,.0f} | 1.00 | {c1:.1f} | {f1:.2f} |",
-        f"| 2 local processes (incl. {start2:.1f} s start-up) | {t2:.2f} | {n / t2:,.0f} "
-        f"| {t1 / t2:.2f} | {c2:.1f} | {f2:.2f} |",
-        f"| 2 local processes (start-up excluded) | {t2 - start2:.2f} | "
-        f"{n / (t2 - start2):,.0f} | {t1 / (t2 - start2):.2f} | | |",
-        f"| Dask LocalCluster, 2 workers x 1 thread | {td:.2f} | {n / td:,.0f} | "
-        f"{t1 / td:.2f} | {cd:.1f} | {fd:.2f} |",
         "",
-        f"Dask overhead, 1000-point blocks: wall {100 * (td / (t2 - start2) - 1):+.1f} % vs 2 "
-        f"local processes (start-up excluded), {100 * (td / (t1 / 2) - 1):+.1f} % vs perfect "
-        f"2x scaling of the 1-core time; CPU {100 * (cd / c1 - 1):+.1f} % vs 1 core "
-        f"(local processes: {100 * (c2 / c1 - 1):+.1f} %).  Two bare processes reach "
-        f"{r1 / r2:.2f}x of one on this machine.",
+        f"Dask overhead, 1000-point blocks (median over rounds): wall "
+        f"{100 * (med(dask / local) - 1):+.1f} % vs 2 local processes with start-up "
+        f"excluded, {100 * (med(dask / np.array(wall[names[1]])) - 1):+.1f} % vs 2 bare "
+        f"processes; CPU {100 * (med(cpu[names[3]]) / med(cpu[names[0]]) - 1):+.1f} % vs "
+        f"1 core (local processes, start-up included: "
+        f"{100 * (med(cpu[names[2]]) / med(cpu[names[0]]) - 1):+.1f} %).",
+        "",
+        "all walls (s): " + "; ".join(f"{k}: {', '.join(f'{x:.2f}' for x in v)}"
+                                      for k, v in wall.items()),
     ]
     return rows
 
@@ -343,15 +367,22 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=None,
                         help="memory: kill the sweep after this long (default: run to the end)")
     args = parser.parse_args()
+    from vibrofriction.sweep._compute import identity
+
     header = {"python": platform.python_version(), "machine": platform.machine(),
-              "cores": os.cpu_count(), "command": " ".join(sys.argv)}
-    print(json.dumps(header))
+              "cores": os.cpu_count(), "command": " ".join(sys.argv),
+              "vibrofriction": identity()[0], "solver_fingerprint": identity()[1]}
+    print(json.dumps(header), flush=True)
     if args.what in ("throughput", "all"):
-        print("\n".join(throughput(args.repeat)))
+        print("\n".join(throughput(args.repeat)), flush=True)
     if args.what in ("memory", "all"):
-        print("\n".join(memory(args.seconds)))
+        print("\n".join(memory(args.seconds)), flush=True)
     if args.what in ("atlas", "all"):
         print("\n".join(atlas(args.store)))
+    identity.cache_clear()
+    if identity()[1] != header["solver_fingerprint"]:
+        print("WARNING: the solver's source changed during the benchmark (kernels were "
+              "recompiled): the numbers are not valid", flush=True)
 
 
 if __name__ == "__main__":

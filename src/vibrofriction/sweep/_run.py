@@ -54,7 +54,8 @@ def _serial(plan: Plan, todo: Iterable[int], deliver: Deliver) -> None:
 def _local(plan: Plan, todo: list[int], workers: int, deliver: Deliver) -> None:
     window = 2 * workers
     queue = iter(todo)
-    with ProcessPoolExecutor(max_workers=workers, mp_context=_context(),
+    context = _context()
+    with ProcessPoolExecutor(max_workers=workers, mp_context=context,
                              initializer=_worker_init) as pool:
         pending: set[Future] = set()
         try:
@@ -74,7 +75,7 @@ def _local(plan: Plan, todo: list[int], workers: int, deliver: Deliver) -> None:
                 fut.cancel()
             raise RuntimeError(
                 "a local worker process died. Workers are started with multiprocessing's "
-                f"{pool._mp_context.get_start_method()!r} method, which imports the main "
+                f"{context.get_start_method()!r} method, which imports the main "
                 "script again: protect the call with `if __name__ == \"__main__\":`, or "
                 "pass workers=1 to run in this process") from exc
         except BaseException:
