@@ -242,6 +242,10 @@ def open_sink(store: str | os.PathLike, plan: Plan, *, overwrite: bool = False,
     results).  Raises ``ValueError`` if the store was made for another grid,
     other solver settings, another initial state or package version.
     """
+    import zarr
+
+    if int(zarr.__version__.split(".")[0]) < 3:
+        raise RuntimeError(f"sweep stores need zarr >= 3 (installed: {zarr.__version__})")
     path = Path(store)
     if path.exists() and overwrite:
         _check_is_sweep_store(path)
