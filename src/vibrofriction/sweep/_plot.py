@@ -154,8 +154,17 @@ def plot_atlas(
                 bad = ~o.values & np.isfinite(vals)
                 if np.any(bad):
                     ax.plot(xs[bad], vals[bad], "x", color=color, ms=4)
-        if group:
-            ax.legend(fontsize="small", ncol=2 if len(pick) > 8 else 1)
+        if group and len(pick) <= 8:
+            ax.legend(fontsize="small")
+        elif group:  # many curves: a colour bar over the group's values instead
+            values = np.asarray(ds[group].values, dtype=float)[pick]
+            lines = mpl.colors.ListedColormap([cmap(k / (len(pick) - 1))
+                                               for k in range(len(pick))])
+            norm = mpl.colors.BoundaryNorm(_edges(values, group), lines.N)
+            bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=lines), ax=ax,
+                               label=_label(ds, group))
+            if _geometric(values):
+                bar.ax.set_yscale("log")
         if directions != [None]:
             title += " (solid: up, dashed: down)"
         ax.set_xlabel(_label(ds, x))
