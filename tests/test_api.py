@@ -113,3 +113,11 @@ def test_cli_bad_input_exits_2_with_one_line(args, needle):
     assert out.returncode == 2
     lines = out.stderr.strip().splitlines()
     assert len(lines) == 1 and needle in lines[0] and "Traceback" not in out.stderr
+
+
+def test_sweep_is_reachable_from_the_package_without_eager_import():
+    code = ("import sys, vibrofriction as vf; assert 'xarray' not in sys.modules; "
+            "assert callable(vf.sweep); print('ok')")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=120)
+    assert out.returncode == 0, out.stderr

@@ -19,6 +19,16 @@ from .solver import (
 
 __version__ = "0.1.0"
 
+
+def __getattr__(name: str):
+    # ``vibrofriction.sweep`` (a callable module) is imported on first use: it pulls in
+    # xarray, zarr and Dask, which a plain ``import vibrofriction`` should not pay for
+    if name == "sweep":
+        import importlib
+
+        return importlib.import_module(".sweep", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 __all__ = [
     "Case",
     "Dimensionless",
@@ -33,5 +43,6 @@ __all__ = [
     "classify",
     "friction_coefficient",
     "simulate",
+    "sweep",
     "__version__",
 ]
