@@ -121,6 +121,24 @@ def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T, avoid):
 
 
 @jit
+def state_at(phase, theta, y, xd, f, t, alpha, beta, a, V):
+    """``(y, x', f)`` a time ``t`` into a phase that started at ``theta`` in ``(y, x', f)``."""
+    if phase == STICK:
+        if math.isinf(beta):
+            y1 = y - V * t
+            return y1, 0.0, -alpha * y1
+        fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
+        f1 = evaluate(fc, wp, t)
+        k = beta - alpha
+        return y + (f1 - f) / k - V * t, evaluate(derivative(fc, wp), wp, t) / k, f1
+    w = math.sqrt(alpha)
+    s = 0.0 if phase == FLIGHT else slip_sign(phase)
+    yc = free_y(alpha, w, theta, y, xd - V, s, a)
+    return (evaluate(yc, w, t), V + evaluate(derivative(yc, w), w, t),
+            s * normal_force(theta + t, a))
+
+
+@jit
 def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
     """Advance one segment.
 
@@ -164,39 +182,18 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
     hit = te >= 0.0
     avoid = phase if immediate else -1
     t = te if hit else T
-    # state and integrals at the end of the piece
-    if zeno:
-        yc = free_y(alpha, w, theta, y, xd - V, 0.0, a)
-        y1 = evaluate(yc, w, t)
-        xd1 = V + evaluate(derivative(yc, w), w, t)
-        f1 = 0.0
+    # state and integrals at the end of the piece (the Zeno approach moves freely)
+    y1, xd1, f1 = state_at(FLIGHT if zeno else phase, theta, y, xd, f, t, alpha, beta, a, V)
+    if zeno or phase == FLIGHT:
         int_f = 0.0
-        int_n = normal_integral(theta, t, a)
+        int_n = 0.0 if phase == FLIGHT else normal_integral(theta, t, a)
     elif phase == STICK:
         fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
         int_f = integral(fc, wp, t)
         int_n = normal_integral(theta, t, a)
-        if rigid:
-            y1 = y - V * t
-            xd1 = 0.0
-            f1 = -alpha * y1
-        else:
-            f1 = evaluate(fc, wp, t)
-            y1 = y + (f1 - f) / k - V * t
-            xd1 = evaluate(derivative(fc, wp), wp, t) / k
     else:
-        s = 0.0 if phase == FLIGHT else slip_sign(phase)
-        yc = free_y(alpha, w, theta, y, xd - V, s, a)
-        y1 = evaluate(yc, w, t)
-        xd1 = V + evaluate(derivative(yc, w), w, t)
-        if phase == FLIGHT:
-            int_f = 0.0
-            int_n = 0.0
-            f1 = 0.0
-        else:
-            int_n = normal_integral(theta, t, a)
-            int_f = s * int_n
-            f1 = s * normal_force(theta + t, a)
+        int_n = normal_integral(theta, t, a)
+        int_f = slip_sign(phase) * int_n
     theta1 = tb if t == T else theta + t
     ph1 = phase
     ok = True
@@ -276,7 +273,6 @@ def run_periods(theta, y, xd, f, phase, alpha, beta, a, V, periods, max_segments
 @jit
 def sample(seg, nseg, alpha, beta, a, V, taus, out):
     """Evaluate the closed forms at sorted times ``taus`` (columns y, x', f, n, phase)."""
-    w = math.sqrt(alpha)
     j = 0
     for i in range(taus.shape[0]):
         tau = taus[i]
@@ -284,24 +280,9 @@ def sample(seg, nseg, alpha, beta, a, V, taus, out):
             j += 1
         theta = seg[j, 8]
         t = tau - seg[j, 0]
-        y, xd, f = seg[j, 1], seg[j, 2], seg[j, 3]
         phase = int(seg[j, 4])
-        if phase == STICK:
-            fc, wp = stick_coefficients(alpha, beta, V, a, theta, y, xd, f)
-            if math.isinf(beta):
-                y1 = y - V * t
-                xd1 = 0.0
-                f1 = -alpha * y1
-            else:
-                f1 = evaluate(fc, wp, t)
-                y1 = y + (f1 - f) / (beta - alpha) - V * t
-                xd1 = evaluate(derivative(fc, wp), wp, t) / (beta - alpha)
-        else:
-            s = 0.0 if phase == FLIGHT else slip_sign(phase)
-            yc = free_y(alpha, w, theta, y, xd - V, s, a)
-            y1 = evaluate(yc, w, t)
-            xd1 = V + evaluate(derivative(yc, w), w, t)
-            f1 = s * normal_force(theta + t, a)
+        y1, xd1, f1 = state_at(phase, theta, seg[j, 1], seg[j, 2], seg[j, 3], t,
+                               alpha, beta, a, V)
         out[i, 0] = y1
         out[i, 1] = xd1
         out[i, 2] = f1
