@@ -10,7 +10,7 @@ for benchmarking (see ``benchmarks/README.md`` for why these counts):
   fixed-step velocity Verlet + Jenkins return mapping (Moreau time-stepping for
   a rigid contact); 200 transient + 50 averaging drive periods.
 
-Both start from the default "sliding" initial state of MODEL.md and return
+Both start from the default "sliding" initial state of docs/model.md and return
 ``mu_macro / mu0``.
 """
 

@@ -1,6 +1,6 @@
 """Tests of the independent reference integrators (peers A and B).
 
-Physics limits of the model (MODEL.md), convergence order of the fixed-step
+Physics limits of the model (docs/model.md), convergence order of the fixed-step
 peer, and agreement of the two peers, which share no code beyond parameter
 checks: peer A (``solve_ivp_mu``) locates every switch to the integrator's
 tolerance, peer B (``return_mapping_mu``) steps over them.
@@ -22,7 +22,7 @@ from vibrofriction.reference import (
 
 
 def velocity_for(vbar, alpha, beta, amplitude):
-    """Scaled velocity V for a given vbar = v0/v0* (eq. 12, MODEL.md)."""
+    """Scaled velocity V for a given vbar = v0/v0* (eq. 12, docs/model.md)."""
     return vbar * amplitude * abs(beta - 1.0) / ((beta - alpha) * abs(alpha - 1.0))
 
 

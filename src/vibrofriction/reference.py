@@ -1,10 +1,10 @@
 """Independent reference integrators for the in-plane model (Mao et al. 2017, Part II).
 
 Two peers of the exact event-driven solver, written from the model statement
-alone (``/work/shared/MODEL.md``) and sharing no code with it, so that tests can
+alone (``docs/model.md``) and sharing no code with it, so that tests can
 use them to check it and benchmarks can time it against them.
 
-Scaled variables (MODEL.md): time ``tau = omega t``, body position ``x``,
+Scaled variables (docs/model.md): time ``tau = omega t``, body position ``x``,
 contact force ``f`` in units of ``mu0 F_N0``, pulling velocity ``V``::
 
     x'' = alpha (V tau - x) - f            n(tau) = max(0, 1 + a cos tau)

@@ -371,7 +371,7 @@ def _write_report(out: Path, todo: Sequence[Recipe], done: Sequence[_Done],
         f"process(es), {os.cpu_count()} CPU(s), Python {platform.python_version()}.",
         "",
         "Every curve is computed by the exact event-driven solver from the initial state "
-        "'steady sliding before the oscillation is switched on' (MODEL.md). Data behind "
+        "'steady sliding before the oscillation is switched on' (docs/model.md). Data behind "
         "each figure are in `data/` (CSV, parameters in the `#` header). Points whose "
         "steady state did not converge (or whose error estimate exceeds 1e-5) are drawn as "
         "open circles and are not joined into the curves. Corrections to the paper are "

@@ -245,7 +245,7 @@ class Event:
 class History:
     """A time history sampled from the closed forms (Fig. 2).
 
-    All quantities are scaled (MODEL.md): ``tau = omega t``; ``x`` body position and
+    All quantities are scaled (docs/model.md): ``tau = omega t``; ``x`` body position and
     ``x_dot`` its velocity (units ``mu0 F_N0/(m omega^2)`` and ``mu0 F_N0/(m omega)``);
     ``f`` the tangential contact force and ``n`` the ``mu0``-scaled normal force, both
     in units of ``mu0 F_N0``; ``phase`` the phase name at each sample; ``events``
@@ -413,7 +413,7 @@ def friction_coefficient(
         (Physical systems only).  Scalars give a :class:`FrictionResult`, arrays a
         :class:`FrictionResults` of the same shape.
     initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
-        on at ``tau = 0``, MODEL.md), ``"rest"``, or a :class:`SectionState` (e.g. the
+        on at ``tau = 0``, docs/model.md), ``"rest"``, or a :class:`SectionState` (e.g. the
         ``final_state`` of another result, for continuation).  Coexisting attractors
         make the initial state part of the result's definition.
     settings : accuracy and effort bounds (:class:`SolverSettings`).

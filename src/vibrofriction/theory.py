@@ -5,7 +5,7 @@ arrays (scalars in give floats out). Equation numbers refer to the paper; the
 transcription numbers all equations of the resonant case IV "(32)", and they
 are told apart below by what they compute.
 
-Scaled variables (see ``MODEL.md``): time ``tau = omega t``; force unit
+Scaled variables (see ``docs/model.md``): time ``tau = omega t``; force unit
 ``mu0 F_N0``; length unit ``mu0 F_N0 / (m omega^2)``; velocity unit
 ``mu0 F_N0 / (m omega)``, in which the pulling velocity is the *inertial
 velocity* ``V = v0 m omega / (mu0 F_N0)`` (the axis of Fig. 6). The paper's

@@ -1,4 +1,4 @@
-r"""Closed-form solutions of the three phases (MODEL.md, paper eqs. 4, 5, 15).
+r"""Closed-form solutions of the three phases (docs/model.md, paper eqs. 4, 5, 15).
 
 Scaled variables: time ``tau = omega t``, forces in ``mu0 F_N0``, lengths in
 ``mu0 F_N0 / (m omega^2)``; ``y = x - V tau`` is the body displacement with the

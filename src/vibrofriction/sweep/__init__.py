@@ -79,7 +79,7 @@ def sweep(
     chunk_size : points per block of work (and per zarr chunk), about.  An existing
         store keeps its own block shape.
     settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
-    initial : ``"sliding"`` (default, MODEL.md) or ``"rest"``: the start of every point,
+    initial : ``"sliding"`` (default, docs/model.md) or ``"rest"``: the start of every point,
         or with continuation of the first point of each upward sweep.
     continuation : walk each velocity curve up and then down, every point starting from
         the final state of the previous one (hysteresis, coexisting steady states);

@@ -22,7 +22,7 @@ __all__ = ["COORD_ATTRS", "STATUS_PENDING", "Variable", "point_variables", "row_
 STATUS_PENDING = -128  # fill value of `status`: not computed yet
 PHASE_NONE = 99  # solver's phase code when there is no section state (static points)
 
-_VEL_UNIT = "mu0 F_N0 / (m omega)"  # unit of the inertial velocity (MODEL.md)
+_VEL_UNIT = "mu0 F_N0 / (m omega)"  # unit of the inertial velocity (docs/model.md)
 
 
 @dataclass(frozen=True)
