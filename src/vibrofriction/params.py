@@ -20,46 +20,67 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
+from vibrofriction.validation import as_float_or_array, checked, checked_beta
 
-__all__ = ["Case", "Dimensionless", "Physical", "classify"]
+__all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar",
+           "vbar_factor", "vbar_to_inertial"]
 
 FloatOrArray = float | NDArray[np.float64]
 
 
 # --------------------------------------------------------------------------- validation
 def _positive(name: str, value: Any) -> float:
-    x = float(value)
-    if not (math.isfinite(x) and x > 0.0):
-        raise ValueError(f"{name} must be finite and > 0, got {x!r}")
-    return x
+    return float(checked(name, value, minimum=0.0, strict=True))
 
 
 def _nonnegative(name: str, value: Any) -> float:
-    x = float(value)
-    if not (math.isfinite(x) and x >= 0.0):
-        raise ValueError(f"{name} must be finite and >= 0, got {x!r}")
-    return x
+    return float(checked(name, value, minimum=0.0))
 
 
-def _beta(alpha: float, value: Any) -> float:
-    x = float(value)
-    if not (x > alpha):  # also rejects nan
-        raise ValueError(f"beta must be > alpha (= {alpha!r}) or math.inf, got {x!r}")
-    return x
+# --------------------------------------------------------------------------- vbar <-> V
+def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
+                    factor: NDArray[np.float64]) -> str | None:
+    """Why ``vbar`` does not exist at the first point where it does not, or None."""
+    bad = (factor == 0.0) | np.isinf(factor)
+    if not np.any(bad):
+        return None
+    al, am, c, b = (np.atleast_1d(x) for x in np.broadcast_arrays(alpha, amplitude, factor, bad))
+    i = int(np.flatnonzero(b)[0])
+    if math.isinf(c[i]):
+        return f"alpha == 1 (case IV): v0* is infinite (alpha = {al[i]!r})"
+    if am[i] == 0.0:
+        return "amplitude == 0: v0* is zero"
+    return "beta == 1 (case III): v0* is zero"
 
 
-def _velocity(name: str, value: ArrayLike) -> NDArray[np.float64]:
-    arr = np.asarray(value, dtype=float)
-    bad = ~(np.isfinite(arr) & (arr >= 0.0))
-    if np.any(bad):
-        first = float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
-        raise ValueError(f"{name} must be finite and >= 0, got {first!r}")
-    return arr
+def vbar_factor(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> NDArray[np.float64]:
+    """``c = V/vbar`` (eqs. 12, 16, 20) elementwise; ValueError where ``vbar`` is undefined."""
+    al = checked("alpha", alpha, minimum=0.0, strict=True)
+    am = checked("amplitude", amplitude, minimum=0.0)
+    c = np.asarray(theory.inertial_per_vbar(al, beta, am), dtype=float)
+    why = _undefined_vbar(al, am, c)
+    if why is not None:
+        raise ValueError(f"vbar is undefined for {why}; use the inertial velocity "
+                         "v_inertial instead")
+    return c
 
 
-def _out(x: ArrayLike) -> FloatOrArray:
-    arr = np.asarray(x, dtype=float)
-    return float(arr) if arr.ndim == 0 else arr
+def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                     vbar: ArrayLike) -> FloatOrArray:
+    """Inertial velocity ``V = v0 m omega/(mu0 F_N0) = c vbar`` (eqs. 12, 16), elementwise.
+
+    The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.  ValueError where
+    ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+    """
+    v = checked("vbar", vbar, minimum=0.0)
+    return as_float_or_array(vbar_factor(alpha, beta, amplitude) * v)
+
+
+def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                     v_inertial: ArrayLike) -> FloatOrArray:
+    """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
+    V = checked("v_inertial", v_inertial, minimum=0.0)
+    return as_float_or_array(V / vbar_factor(alpha, beta, amplitude))
 
 
 # --------------------------------------------------------------------------- cases
@@ -128,7 +149,7 @@ def classify(alpha: float, beta: float, rtol: float = 0.05, ratio: float = 0.1) 
         What "much smaller" means, in ``(0, 1)``.
     """
     alpha = _positive("alpha", alpha)
-    beta = _beta(alpha, beta)
+    beta = float(checked_beta(alpha, beta))
     rtol = _nonnegative("rtol", rtol)
     ratio = float(ratio)
     if not 0.0 < ratio < 1.0:
@@ -166,7 +187,7 @@ class Dimensionless:
     def __post_init__(self) -> None:
         alpha = _positive("alpha", self.alpha)
         object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "beta", _beta(alpha, self.beta))
+        object.__setattr__(self, "beta", float(checked_beta(alpha, self.beta)))
         object.__setattr__(self, "amplitude", _nonnegative("amplitude", self.amplitude))
 
     @property
@@ -196,29 +217,13 @@ class Dimensionless:
         """Inertial velocity ``V*`` at ``vbar = 1`` (eq. 12 over ``mu0 F_N0/(m omega)``)."""
         return self.inertial_per_vbar
 
-    def _checked_factor(self) -> float:
-        c = self.inertial_per_vbar
-        if c == 0.0 or math.isinf(c):
-            if math.isinf(c):
-                why = "alpha == 1 (case IV): v0* is infinite"
-            elif self.amplitude == 0.0:
-                why = "amplitude == 0: v0* is zero"
-            else:
-                why = "beta == 1 (case III): v0* is zero"
-            raise ValueError(
-                f"vbar is undefined for {why}; use the inertial velocity v_inertial instead"
-            )
-        return c
-
     def vbar_to_inertial(self, vbar: ArrayLike) -> FloatOrArray:
         """Inertial velocity ``V = c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
-        v = _velocity("vbar", vbar)
-        return _out(self._checked_factor() * v)
+        return vbar_to_inertial(self.alpha, self.beta, self.amplitude, vbar)
 
     def inertial_to_vbar(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``vbar = V / c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""
-        V = _velocity("v_inertial", v_inertial)
-        return _out(V / self._checked_factor())
+        return inertial_to_vbar(self.alpha, self.beta, self.amplitude, v_inertial)
 
 
 # --------------------------------------------------------------------------- physical
@@ -258,9 +263,7 @@ class Physical:
     def __post_init__(self) -> None:
         for name in ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0"):
             object.__setattr__(self, name, _positive(name, getattr(self, name)))
-        k_xc = float(self.k_xc)
-        if not k_xc > 0.0:
-            raise ValueError(f"k_xc must be > 0 (math.inf allowed), got {k_xc!r}")
+        k_xc = float(checked("k_xc", self.k_xc, minimum=0.0, strict=True, allow_inf=True))
         object.__setattr__(self, "k_xc", k_xc)
         object.__setattr__(self, "du_z", _nonnegative("du_z", self.du_z))
 
@@ -305,18 +308,17 @@ class Physical:
 
     def v0_to_inertial(self, v0: ArrayLike) -> FloatOrArray:
         """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6."""
-        return _out(_velocity("v0", v0) / self._velocity_unit())
+        return as_float_or_array(checked("v0", v0, minimum=0.0) / self._velocity_unit())
 
     def inertial_to_v0(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``v0 = V mu0 F_N0 / (m omega)``, m/s."""
-        return _out(_velocity("v_inertial", v_inertial) * self._velocity_unit())
+        return as_float_or_array(checked("v_inertial", v_inertial, minimum=0.0)
+                                 * self._velocity_unit())
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
         """``vbar = v0 / v0*`` (eq. 16); ValueError where ``v0*`` is 0 or infinite."""
-        v = _velocity("v0", v0)
-        return self.to_dimensionless().inertial_to_vbar(v / self._velocity_unit())
+        return self.to_dimensionless().inertial_to_vbar(self.v0_to_inertial(v0))
 
     def vbar_to_v0(self, vbar: ArrayLike) -> FloatOrArray:
         """``v0 = vbar v0*`` (eq. 16), m/s; ValueError where ``v0*`` is 0 or infinite."""
-        V = np.asarray(self.to_dimensionless().vbar_to_inertial(vbar))
-        return _out(V * self._velocity_unit())
+        return self.inertial_to_v0(self.to_dimensionless().vbar_to_inertial(vbar))

@@ -36,6 +36,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._kernels.integrate import liftoff_phases as _kernel_liftoff_phases
+from .validation import as_float_or_array, checked, checked_beta
+
 __all__ = [
     "SOFT_EXPONENT",
     "Liftoff",
@@ -68,55 +71,6 @@ _SOFT_SLOPE: float = math.sqrt(4.0 * math.pi / 9.0)
 
 
 # --------------------------------------------------------------------------- helpers
-def _range_text(minimum: float | None, strict: bool, maximum: float | None,
-                allow_inf: bool) -> str:
-    if minimum is not None and maximum is not None:
-        text = f"in [{minimum:g}, {maximum:g}]"
-    elif minimum is not None:
-        text = f"{'>' if strict else '>='} {minimum:g}"
-    else:
-        return "a number (not nan)" if allow_inf else "finite"
-    return f"{text} (math.inf allowed)" if allow_inf else f"finite and {text}"
-
-
-def _checked(name: str, value: ArrayLike, *, minimum: float | None = None,
-             strict: bool = False, maximum: float | None = None,
-             allow_inf: bool = False) -> NDArray[np.float64]:
-    """Return ``value`` as a float array, or raise ValueError naming ``name``."""
-    arr = np.asarray(value, dtype=float)
-    bad = np.isnan(arr)
-    if not allow_inf:
-        bad |= np.isinf(arr)
-    with np.errstate(invalid="ignore"):
-        if minimum is not None:
-            bad |= (arr <= minimum) if strict else (arr < minimum)
-        if maximum is not None:
-            bad |= arr > maximum
-    if np.any(bad):
-        first = float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
-        raise ValueError(
-            f"{name} must be {_range_text(minimum, strict, maximum, allow_inf)}, got {first!r}"
-        )
-    return arr
-
-
-def _check_beta(alpha: NDArray[np.float64], beta: ArrayLike) -> NDArray[np.float64]:
-    b = np.asarray(beta, dtype=float)
-    bad = np.isnan(b) | ~(b > alpha)
-    if np.any(bad):
-        a_b, b_b, bad_b = np.broadcast_arrays(alpha, b, bad)
-        raise ValueError(
-            f"beta must be > alpha (= {float(a_b[bad_b][0])!r}) or math.inf, "
-            f"got {float(b_b[bad_b][0])!r}"
-        )
-    return b
-
-
-def _out(x: ArrayLike) -> FloatOrArray:
-    arr = np.asarray(x, dtype=float)
-    return float(arr) if arr.ndim == 0 else arr
-
-
 def _ratio_or_inf(num: NDArray[np.float64], den: NDArray[np.float64]) -> NDArray[np.float64]:
     """``num / den`` with ``0`` where ``num == 0`` and ``inf`` where only ``den == 0``."""
     num, den = np.broadcast_arrays(num, den)
@@ -139,8 +93,8 @@ def static_mu_ratio(amplitude: ArrayLike) -> FloatOrArray:
     amplitude : array_like
         ``a = du_z / u_z0 >= 0``.
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
-    return _out(np.where(a < 1.0, 1.0 - a, 0.0))
+    a = checked("amplitude", amplitude, minimum=0.0)
+    return as_float_or_array(np.where(a < 1.0, 1.0 - a, 0.0))
 
 
 # --------------------------------------------------------------------------- eqs. (12)-(14)
@@ -159,16 +113,16 @@ def critical_velocity(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike, k_zc: A
     ``0`` at ``k_x + k_xc = m omega^2`` (case III) and ``0`` when ``du_z = 0``
     (no oscillation, no reduction of friction).
     """
-    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
-    omega = _checked("omega", omega, minimum=0.0, strict=True)
-    du_z = _checked("du_z", du_z, minimum=0.0)
-    k_zc = _checked("k_zc", k_zc, minimum=0.0, strict=True)
-    k_xc = _checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True)
-    k_x = _checked("k_x", k_x, minimum=0.0)
-    mass = _checked("mass", mass, minimum=0.0, strict=True)
+    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
+    omega = checked("omega", omega, minimum=0.0, strict=True)
+    du_z = checked("du_z", du_z, minimum=0.0)
+    k_zc = checked("k_zc", k_zc, minimum=0.0, strict=True)
+    k_xc = checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True)
+    k_x = checked("k_x", k_x, minimum=0.0)
+    mass = checked("mass", mass, minimum=0.0, strict=True)
     detuning = k_x - mass * omega**2
     num = mu0 * omega * du_z * k_zc * np.abs(1.0 + detuning / k_xc)
-    return _out(_ratio_or_inf(num, np.abs(detuning)))
+    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning)))
 
 
 def critical_velocity_soft(mu0: ArrayLike, dF_N: ArrayLike, mass: ArrayLike,
@@ -179,11 +133,11 @@ def critical_velocity_soft(mu0: ArrayLike, dF_N: ArrayLike, mass: ArrayLike,
     ``k_x << m omega^2 << k_xc``, with ``dF_N = k_zc du_z``. The paper writes
     ``|m omega^2|`` in the denominator; the modulus is redundant.
     """
-    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
-    dF_N = _checked("dF_N", dF_N, minimum=0.0)
-    mass = _checked("mass", mass, minimum=0.0, strict=True)
-    omega = _checked("omega", omega, minimum=0.0, strict=True)
-    return _out(mu0 * dF_N / (mass * omega))
+    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
+    dF_N = checked("dF_N", dF_N, minimum=0.0)
+    mass = checked("mass", mass, minimum=0.0, strict=True)
+    omega = checked("omega", omega, minimum=0.0, strict=True)
+    return as_float_or_array(mu0 * dF_N / (mass * omega))
 
 
 def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
@@ -194,12 +148,12 @@ def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
     ``k_xc << |k_x - m omega^2|`` (Part I of the series). Independent of the
     inertia; only the Mindlin ratio ``k_zc / k_xc`` enters.
     """
-    mu0 = _checked("mu0", mu0, minimum=0.0, strict=True)
-    omega = _checked("omega", omega, minimum=0.0, strict=True)
-    du_z = _checked("du_z", du_z, minimum=0.0)
-    k_zc = _checked("k_zc", k_zc, minimum=0.0, strict=True)
-    k_xc = _checked("k_xc", k_xc, minimum=0.0, strict=True)
-    return _out(mu0 * omega * du_z * k_zc / k_xc)
+    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
+    omega = checked("omega", omega, minimum=0.0, strict=True)
+    du_z = checked("du_z", du_z, minimum=0.0)
+    k_zc = checked("k_zc", k_zc, minimum=0.0, strict=True)
+    k_xc = checked("k_xc", k_xc, minimum=0.0, strict=True)
+    return as_float_or_array(mu0 * omega * du_z * k_zc / k_xc)
 
 
 def inertial_per_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
@@ -217,12 +171,12 @@ def inertial_per_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -
     and ``0`` at ``a = 0``. In the soft limit (``alpha -> 0``, ``beta -> inf``)
     ``c -> a``, i.e. eq. (13).
     """
-    alpha = _checked("alpha", alpha, minimum=0.0)
-    beta = _check_beta(alpha, beta)
-    a = _checked("amplitude", amplitude, minimum=0.0)
+    alpha = checked("alpha", alpha, minimum=0.0)
+    beta = checked_beta(alpha, beta)
+    a = checked("amplitude", amplitude, minimum=0.0)
     detuning = alpha - 1.0
     num = a * np.abs(1.0 + detuning / (beta - alpha))
-    return _out(_ratio_or_inf(num, np.abs(detuning)))
+    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning)))
 
 
 # --------------------------------------------------------------------------- eqs. (7)-(10)
@@ -260,23 +214,24 @@ def steady_sliding(tau: ArrayLike, alpha: ArrayLike, beta: ArrayLike, amplitude:
     Validity: ``alpha > 0``, ``alpha != 1`` (at resonance there is no periodic
     solution), ``0 <= a <= 1`` (no loss of contact). Arguments broadcast.
     """
-    tau = _checked("tau", tau)
-    alpha = _checked("alpha", alpha, minimum=0.0, strict=True)
+    tau = checked("tau", tau)
+    alpha = checked("alpha", alpha, minimum=0.0, strict=True)
     if np.any(alpha == 1.0):
         raise ValueError(
             "alpha must differ from 1, got 1.0: at resonance (case IV) the sliding "
             "solution of eqs. (7)-(8) does not exist"
         )
-    beta = _check_beta(alpha, beta)
-    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
-    V = _checked("V", V, minimum=0.0)
+    beta = checked_beta(alpha, beta)
+    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    V = checked("V", V, minimum=0.0)
     body_amp = a / (1.0 - alpha)
     contact_gain = 1.0 + (alpha - 1.0) / (beta - alpha)  # (beta - 1)/(beta - alpha)
     y = -1.0 / alpha + body_amp * np.cos(tau)
     velocity = V - body_amp * np.sin(tau)
     contact_velocity = V - body_amp * contact_gain * np.sin(tau)
     y, velocity, contact_velocity = np.broadcast_arrays(y, velocity, contact_velocity)
-    return SteadySliding(_out(y), _out(velocity), _out(contact_velocity))
+    return SteadySliding(as_float_or_array(y), as_float_or_array(velocity),
+                         as_float_or_array(contact_velocity))
 
 
 # --------------------------------------------------------------------------- eqs. (26), (27)
@@ -293,10 +248,10 @@ def mu_ratio_stiff(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     slope. Stated (Fig. 4) for ``0 <= a <= 1``; ``a > 1`` raises ValueError,
     since it would give ``1 - a < 0`` at ``vbar = 0``, contradicting eq. (2).
     """
-    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
     u = np.minimum(v, 1.0) - 1.0
-    return _out(np.where(v < 1.0, 1.0 - a * (0.75 * u**2 + 0.25 * u**4), 1.0))
+    return as_float_or_array(np.where(v < 1.0, 1.0 - a * (0.75 * u**2 + 0.25 * u**4), 1.0))
 
 
 def mu_ratio_soft(vbar: ArrayLike, amplitude: ArrayLike,
@@ -320,12 +275,12 @@ def mu_ratio_soft(vbar: ArrayLike, amplitude: ArrayLike,
     0.29 and with the small-velocity asymptotics.  See :func:`mu_ratio_soft_corrected`
     (``vbar`` under the square root), which agrees within 0.012 (docs/theory.md).
     """
-    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
-    p = float(_checked("exponent", exponent, minimum=0.0, strict=True))
+    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    p = float(checked("exponent", exponent, minimum=0.0, strict=True))
     vc = np.minimum(v, 1.0)
     law = (1.0 - a) + a * (_SOFT_SLOPE * vc + (1.0 - _SOFT_SLOPE) * vc**p)
-    return _out(np.where(v < 1.0, law, 1.0))
+    return as_float_or_array(np.where(v < 1.0, law, 1.0))
 
 
 def mu_ratio_soft_corrected(vbar: ArrayLike, amplitude: ArrayLike,
@@ -347,12 +302,12 @@ def mu_ratio_soft_corrected(vbar: ArrayLike, amplitude: ArrayLike,
     from under the root; the second term (exponent ``p``, printed "1,2") only
     makes the law reach 1 at ``vbar = 1``.  Stated for ``0 <= a <= 1``.
     """
-    v = _checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = _checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
-    p = float(_checked("exponent", exponent, minimum=0.0, strict=True))
+    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    p = float(checked("exponent", exponent, minimum=0.0, strict=True))
     vc = np.minimum(v, 1.0)
     law = (1.0 - a) + a * (_SOFT_SLOPE * np.sqrt(vc) + (1.0 - _SOFT_SLOPE) * vc**p)
-    return _out(np.where(v < 1.0, law, 1.0))
+    return as_float_or_array(np.where(v < 1.0, law, 1.0))
 
 
 # --------------------------------------------------------------------------- jumping
@@ -363,10 +318,13 @@ class Liftoff(NamedTuple):
     tau_on: FloatOrArray
 
 
+#: The kernels' lift-off angle (the one place it is computed), over arrays.
+_liftoff_angles = np.vectorize(_kernel_liftoff_phases, otypes=[float, float])
+
+
 def _contact_half_angle(a: NDArray[np.float64]) -> NDArray[np.float64]:
     """``theta = arccos(-1/a)`` for ``a > 1``, ``pi`` otherwise: contact while ``|tau| < theta``."""
-    with np.errstate(divide="ignore"):
-        return np.where(a > 1.0, np.arccos(-1.0 / np.maximum(a, 1.0)), np.pi)
+    return np.where(a > 1.0, _liftoff_angles(a)[0], np.pi)
 
 
 def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
@@ -380,9 +338,9 @@ def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
 
     which is the denominator of eq. (25) for a jumping body.
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
+    a = checked("amplitude", amplitude, minimum=0.0)
     theta = _contact_half_angle(a)
-    return _out(np.where(a > 1.0, (theta + a * np.sin(theta)) / np.pi, 1.0))
+    return as_float_or_array(np.where(a > 1.0, (theta + a * np.sin(theta)) / np.pi, 1.0))
 
 
 def liftoff_phases(amplitude: ArrayLike) -> Liftoff:
@@ -392,10 +350,9 @@ def liftoff_phases(amplitude: ArrayLike) -> Liftoff:
     for ``a >= 1``; ``a = 1`` gives the grazing point ``(pi, pi)``; ``nan`` for
     ``a < 1`` (no loss of contact).
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
-    with np.errstate(divide="ignore"):
-        off = np.where(a >= 1.0, np.arccos(-1.0 / np.maximum(a, 1.0)), np.nan)
-    return Liftoff(_out(off), _out(2.0 * np.pi - off))
+    a = checked("amplitude", amplitude, minimum=0.0)
+    off = np.where(a >= 1.0, _liftoff_angles(a)[0], np.nan)
+    return Liftoff(as_float_or_array(off), as_float_or_array(2.0 * np.pi - off))
 
 
 # ------------------------------------------------------------------ case IV, eqs. (27)-(32)
@@ -416,9 +373,9 @@ def resonant_velocity_ratio(amplitude: ArrayLike) -> FloatOrArray:
     ``tau* ~ sqrt(2(1 - v0/dv))``. For ``a > 1`` the right-hand side ``pi a``
     becomes ``a theta + sin theta`` (loss of contact, ``theta = arccos(-1/a)``).
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
+    a = checked("amplitude", amplitude, minimum=0.0)
     tau_star = _drive_work(a) / (4.0 * (1.0 + a))
-    return _out(1.0 - 0.5 * tau_star**2)
+    return as_float_or_array(1.0 - 0.5 * tau_star**2)
 
 
 def resonant_tau_star(v_ratio: ArrayLike, *, approximate: bool = False) -> FloatOrArray:
@@ -430,10 +387,10 @@ def resonant_tau_star(v_ratio: ArrayLike, *, approximate: bool = False) -> Float
     ``v_ratio = v0/dv`` must lie in ``[-1, 1]`` (``<= 1`` if approximate).
     """
     if approximate:
-        r = _checked("v_ratio", v_ratio, maximum=1.0)
-        return _out(np.sqrt(2.0 * (1.0 - r)))
-    r = _checked("v_ratio", v_ratio, minimum=-1.0, maximum=1.0)
-    return _out(np.arccos(r))
+        r = checked("v_ratio", v_ratio, maximum=1.0)
+        return as_float_or_array(np.sqrt(2.0 * (1.0 - r)))
+    r = checked("v_ratio", v_ratio, minimum=-1.0, maximum=1.0)
+    return as_float_or_array(np.arccos(r))
 
 
 def _resonant_tau_star_exact(a: float) -> float:
@@ -472,8 +429,8 @@ def resonant_velocity_ratio_exact(amplitude: ArrayLike) -> FloatOrArray:
     assumed in eq. (30) is consistent: the quadrature component of the
     fundamental of the friction force vanishes only for phase 0 or pi.)
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
-    return _out(np.cos(_tau_star_exact(a)))
+    a = checked("amplitude", amplitude, minimum=0.0)
+    return as_float_or_array(np.cos(_tau_star_exact(a)))
 
 
 def resonant_plateau(amplitude: ArrayLike) -> FloatOrArray:
@@ -490,10 +447,10 @@ def resonant_plateau(amplitude: ArrayLike) -> FloatOrArray:
       ``1 - a/2`` would neglect loss of contact (negative for ``a > 2``). This one
       tends to ``1 - pi/4`` as ``a -> inf``.
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
+    a = checked("amplitude", amplitude, minimum=0.0)
     theta = _contact_half_angle(a)
     jumping = 1.0 - (a * theta + np.sin(theta)) / (2.0 * (theta + a * np.sin(theta)))
-    return _out(np.where(a > 1.0, jumping, 1.0 - 0.5 * a))
+    return as_float_or_array(np.where(a > 1.0, jumping, 1.0 - 0.5 * a))
 
 
 def resonant_plateau_exact(amplitude: ArrayLike) -> FloatOrArray:
@@ -514,7 +471,7 @@ def resonant_plateau_exact(amplitude: ArrayLike) -> FloatOrArray:
     (harmonic body velocity, rigid contact ``beta = inf``, ``alpha = 1``,
     large ``v0``); the solver is the judge of the ansatz.
     """
-    a = _checked("amplitude", amplitude, minimum=0.0)
+    a = checked("amplitude", amplitude, minimum=0.0)
     tau = _tau_star_exact(a)
     n_mean = np.asarray(mean_normal_force(a))
-    return _out(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)
+    return as_float_or_array(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)

@@ -6,6 +6,8 @@ SLIP_POS = 1  # contact point slides in +x (s = +1)
 SLIP_NEG = 2  # contact point slides in -x (s = -1)
 FLIGHT = 3  # no contact (jumping, amplitude > 1)
 
+NO_PHASE = -1  # none: no phase to avoid on entry, or no section state (static points)
+
 PHASE_NAMES = ("stick", "slip+", "slip-", "flight")
 
 # event kinds (transitions and cuts)
@@ -15,6 +17,7 @@ EV_REVERSAL = 2  # slip s -> slip -s (rigid contact only)
 EV_LIFTOFF = 3
 EV_TOUCHDOWN = 4
 EV_SECTION = 5  # Poincare section tau = 2 pi k (not a physical event)
+EV_NONE = -1  # no event (the start of a history)
 
 EVENT_NAMES = ("stick->slip", "slip->stick", "reversal", "lift-off", "touchdown", "section")
 
@@ -24,3 +27,4 @@ ST_AVERAGED = 1
 ST_NOT_CONVERGED = 2
 ST_FAILED = 3  # the event budget was exhausted or the integration got stuck
 ST_SLIDING = 4  # continuous forward sliding proven (mu/mu0 = 1 exactly)
+ST_STATIC = -1  # zero velocity: the static limit of eq. (2), not computed by the kernels

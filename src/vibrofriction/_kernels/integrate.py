@@ -18,12 +18,14 @@ import math
 from .basis import derivative, evaluate, integral
 from .codes import (
     EV_LIFTOFF,
+    EV_NONE,
     EV_REVERSAL,
     EV_SECTION,
     EV_SLIP_TO_STICK,
     EV_STICK_TO_SLIP,
     EV_TOUCHDOWN,
     FLIGHT,
+    NO_PHASE,
     SLIP_NEG,
     SLIP_POS,
     STICK,
@@ -90,7 +92,7 @@ def enter(theta, y, xd, f, s_pref, alpha, beta, a, V, T, avoid):
     finite contact stiffness ``f`` is continuous, so slip ``s`` is a candidate only
     when ``f = s n``.  Returns ``(phase, f, ok)``; ``ok`` is False when no candidate
     starts consistently (a degenerate point, counted by the caller).  ``avoid``
-    (a phase code, or -1) is skipped: the phase that has just ended at once, whose
+    (a phase code, or ``NO_PHASE``) is skipped: the phase that has just ended at once, whose
     margin is lost in round-off (a near-tangency), must not be re-entered.
     """
     rigid = math.isinf(beta)
@@ -180,7 +182,7 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
         te = first_root(vr, w, ts, T) if ok else 0.0
         immediate = te >= 0.0 and te <= ts
     hit = te >= 0.0
-    avoid = phase if immediate else -1
+    avoid = phase if immediate else NO_PHASE
     t = te if hit else T
     # state and integrals at the end of the piece (the Zeno approach moves freely)
     y1, xd1, f1 = state_at(FLIGHT if zeno else phase, theta, y, xd, f, t, alpha, beta, a, V)
@@ -218,7 +220,8 @@ def segment(theta, y, xd, f, phase, alpha, beta, a, V, th_off, th_on):
         elif bkind == EV_TOUCHDOWN:
             f1 = 0.0
             sp = 1.0 if xd1 >= 0.0 else -1.0
-            ph1, f1, ok = enter(theta1, y1, xd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1, -1)
+            ph1, f1, ok = enter(theta1, y1, xd1, 0.0, sp, alpha, beta, a, V, TWO_PI - theta1,
+                                  NO_PHASE)
     elif t == T and hit and bkind != EV_SECTION:
         # an event exactly at lift-off / touch-down: the boundary is handled by a
         # zero-length segment next (theta1 == tb keeps it as the next boundary)
@@ -233,7 +236,7 @@ def initial_state(kind, alpha, beta, a, V):
         y, xd, f = -1.0 / alpha, V, 1.0
     else:
         y, xd, f = 0.0, 0.0, 0.0
-    ph, f, _ = enter(0.0, y, xd, f, 1.0, alpha, beta, a, V, TWO_PI, -1)
+    ph, f, _ = enter(0.0, y, xd, f, 1.0, alpha, beta, a, V, TWO_PI, NO_PHASE)
     return y, xd, f, ph
 
 
@@ -251,7 +254,7 @@ def run_periods(theta, y, xd, f, phase, alpha, beta, a, V, periods, max_segments
     m = 0
     cf = 0.0
     cn = 0.0
-    ev = -1
+    ev = EV_NONE
     while True:
         if m >= max_segments:
             return -1
