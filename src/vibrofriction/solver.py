@@ -23,6 +23,7 @@ from ._kernels import codes
 from ._kernels.integrate import TWO_PI, initial_state, run_periods, sample
 from ._kernels.steady import steady_state, steady_state_many
 from .params import Dimensionless, Physical
+from .validation import checked, checked_beta
 
 __all__ = [
     "Event",
@@ -32,7 +33,9 @@ __all__ = [
     "SectionState",
     "SolverSettings",
     "Status",
+    "describe",
     "friction_coefficient",
+    "section_state",
     "simulate",
     "solve_points",
 ]
@@ -81,8 +84,10 @@ STATUS_BY_CODE = {
     codes.ST_NOT_CONVERGED: Status.NOT_CONVERGED,
     codes.ST_FAILED: Status.FAILED,
     codes.ST_SLIDING: Status.SLIDING,
-    -1: Status.STATIC,
+    codes.ST_STATIC: Status.STATIC,
 }
+NO_PHASE = codes.NO_PHASE  # phase code of a point without a section state (static limit)
+PHASE_NAMES = codes.PHASE_NAMES  # phase names by code
 _PHASE_CODE = {name: i for i, name in enumerate(codes.PHASE_NAMES)}
 
 
@@ -97,6 +102,9 @@ class SolverSettings:
     tol_state : relative distance of section states that counts as periodic.
     tol_mean : agreement of successive averaging windows that counts as converged.
     max_events : event budget per point (status ``FAILED`` beyond).
+    tol_trusted : a result is *trusted* when its status is a converged one and its
+        ``error`` (an estimate of ``|mu_ratio - exact|``) is at most this; the one
+        definition used by the figures, the report, the sweep and the command line.
     """
 
     max_periods: int = 20000
@@ -104,21 +112,39 @@ class SolverSettings:
     tol_state: float = 1e-10
     tol_mean: float = 1e-7
     max_events: int = 20_000_000
+    tol_trusted: float = 1e-5
 
     def __post_init__(self) -> None:
         if not (isinstance(self.max_periods, int | np.integer) and self.max_periods >= 1):
             raise ValueError(f"max_periods must be an integer >= 1, got {self.max_periods!r}")
         if not (isinstance(self.min_periods, int | np.integer) and self.min_periods >= 1):
             raise ValueError(f"min_periods must be an integer >= 1, got {self.min_periods!r}")
-        for name in ("tol_state", "tol_mean"):
+        for name in ("tol_state", "tol_mean", "tol_trusted"):
             v = getattr(self, name)
             if not (math.isfinite(v) and 0.0 < v < 1.0):
                 raise ValueError(f"{name} must be in (0, 1), got {v!r}")
         if not (isinstance(self.max_events, int | np.integer) and self.max_events >= 1):
             raise ValueError(f"max_events must be an integer >= 1, got {self.max_events!r}")
 
+    def trusted(self, status: ArrayLike, error: ArrayLike) -> NDArray[np.bool_]:
+        """Which results to trust: a converged status and ``error <= tol_trusted``.
+
+        ``status`` holds integer codes (:data:`STATUS_BY_CODE`) or :class:`Status`
+        members.  This is the package's one notion of a trusted result.
+        """
+        st = np.asarray(status)
+        if st.dtype == object:
+            ok = np.vectorize(lambda x: x.ok, otypes=[bool])(st) if st.size else st.astype(bool)
+        else:
+            ok = np.isin(st, _CONVERGED_CODES)
+        err = np.nan_to_num(np.asarray(error, dtype=float), nan=np.inf)
+        return ok & (err <= self.tol_trusted)
+        if not (isinstance(self.max_events, int | np.integer) and self.max_events >= 1):
+            raise ValueError(f"max_events must be an integer >= 1, got {self.max_events!r}")
+
 
 _DEFAULT_SETTINGS = SolverSettings()
+_CONVERGED_CODES = [c for c, st in STATUS_BY_CODE.items() if st.ok]
 
 
 @dataclass(frozen=True)
@@ -148,16 +174,25 @@ class SectionState:
 class FrictionResult:
     """The steady state at one point (paper eq. 25) and how it was obtained.
 
-    ``mu_ratio`` is ``mu_macro/mu0``; ``error`` an estimate of its absolute error;
-    ``period`` the orbit's period in drive periods (0 when not periodic);
-    ``periods`` and ``events`` the work done; the fractions are of time in the
-    averaging window; ``final_state`` the last section state (a start for
-    continuation).
+    ``mu_ratio`` is ``mu_macro/mu0``; ``error`` an estimate of ``|mu_ratio - exact|``
+    (docs/solver.md explains how it is obtained for each status; ``inf`` when
+    nothing is known); ``trusted`` whether the status is a converged one and
+    ``error <= settings.tol_trusted``; ``period`` the orbit's period in drive
+    periods (0 when not periodic); ``periods`` and ``events`` the work done; the
+    fractions are of time in the averaging window; ``multiplier`` the modulus of
+    the orbit's leading Floquet multiplier (how fast the motion approaches it per
+    ``period`` drive periods; nan when not periodic); ``settling_periods`` the drive
+    periods the motion from the initial state needs to come within ``error`` of the
+    answer; ``window_min``/``window_max`` the range of the averaging windows'
+    means (averaged and not converged results); ``modulation_period`` the period,
+    in drive periods, of a slow modulation found in a motion that does not settle
+    (nan if none); ``final_state`` the last section state (a start for continuation).
     """
 
     mu_ratio: float
     status: Status
     error: float
+    trusted: bool
     period: int
     periods: int
     events: int
@@ -165,14 +200,19 @@ class FrictionResult:
     slip_fraction: float
     reverse_slip_fraction: float
     flight_fraction: float
+    multiplier: float
+    settling_periods: float
+    window_min: float
+    window_max: float
+    modulation_period: float
     final_state: SectionState | None
     system: Dimensionless
     v_inertial: float
 
     @property
     def message(self) -> str:
-        extra = f" (period {self.period})" if self.status is Status.PERIODIC else ""
-        return f"{self.status.value}{extra}: {self.status.message}"
+        """How the result was obtained and what it is worth, in words."""
+        return describe(self)
 
     @property
     def success(self) -> bool:
@@ -187,6 +227,30 @@ class FrictionResult:
             return math.nan
 
 
+#: Drive periods beyond which the approach to a periodic orbit counts as slow.
+SLOW_SETTLING = 1000
+
+
+def describe(r: FrictionResult) -> str:
+    """The message of a result: status, how it was obtained, and its caveats."""
+    head = r.status.value + (f" (period {r.period})" if r.status is Status.PERIODIC else "")
+    parts = [f"{head}: {r.status.message}", f"error estimate {r.error:.2g}"
+             + ("" if r.trusted else " (not trusted)")]
+    if r.status is Status.PERIODIC and math.isfinite(r.settling_periods) \
+            and r.settling_periods > SLOW_SETTLING:
+        parts.append(
+            f"the orbit is reached slowly: leading Floquet multiplier {r.multiplier:.6g}, so "
+            f"the motion from the initial state needs about {r.settling_periods:.3g} drive "
+            "periods to come within the error of this value; a measurement over fewer "
+            "periods sees the transient")
+    if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
+        parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
+    if math.isfinite(r.modulation_period):
+        parts.append(f"the motion is modulated with a period of about "
+                     f"{r.modulation_period:.4g} drive periods (docs/modulation.md)")
+    return "; ".join(parts)
+
+
 @dataclass(frozen=True)
 class FrictionResults:
     """Results over an array of velocities: the fields of :class:`FrictionResult` as arrays."""
@@ -194,6 +258,7 @@ class FrictionResults:
     mu_ratio: NDArray[np.float64]
     status: NDArray[np.object_]
     error: NDArray[np.float64]
+    trusted: NDArray[np.bool_]
     period: NDArray[np.int64]
     periods: NDArray[np.int64]
     events: NDArray[np.int64]
@@ -201,6 +266,11 @@ class FrictionResults:
     slip_fraction: NDArray[np.float64]
     reverse_slip_fraction: NDArray[np.float64]
     flight_fraction: NDArray[np.float64]
+    multiplier: NDArray[np.float64]
+    settling_periods: NDArray[np.float64]
+    window_min: NDArray[np.float64]
+    window_max: NDArray[np.float64]
+    modulation_period: NDArray[np.float64]
     final_state: NDArray[np.object_]
     system: Dimensionless
     v_inertial: NDArray[np.float64]
@@ -213,13 +283,13 @@ class FrictionResults:
         return len(self.mu_ratio)
 
     def __getitem__(self, index: int | tuple[int, ...]) -> FrictionResult:
-        kw = {f.name: getattr(self, f.name) for f in fields(self)}
-        out = {k: (v if k == "system" else v[index]) for k, v in kw.items()}
-        for k in ("mu_ratio", "error", "stick_fraction", "slip_fraction",
-                  "reverse_slip_fraction", "flight_fraction", "v_inertial"):
-            out[k] = float(out[k])
-        for k in ("period", "periods", "events"):
-            out[k] = int(out[k])
+        out = {}
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if f.name != "system":
+                v = v[index]
+                v = v.item() if isinstance(v, np.generic) else v
+            out[f.name] = v
         return FrictionResult(**out)
 
     def __iter__(self):
@@ -318,14 +388,20 @@ def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
     raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
 
 
-def _section_state(y: float, xd: float, f: float, phase: int) -> SectionState | None:
-    if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) or phase > 2:
+def section_state(y: float, xd: float, f: float, phase: int) -> SectionState | None:
+    """The :class:`SectionState` of a solver row, or None where there is none (static)."""
+    if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) \
+            or phase not in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG):
         return None
     return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(phase)])
 
 
 # --------------------------------------------------------------------------- public API
-STATIC_CODE = -1  # status code of a zero-velocity point (the static limit, eq. 2)
+#: Columns of :func:`solve_points` (and of the kernels' output rows), in order.
+FLOAT_COLUMNS = ("mu_ratio", "error", "stick_fraction", "slip_fraction",
+                 "reverse_slip_fraction", "flight_fraction", "y", "x_dot", "f", "multiplier",
+                 "settling_periods", "window_min", "window_max", "modulation_period")
+INT_COLUMNS = ("status", "period", "periods", "events", "phase", "degenerate")
 
 
 def solve_points(
@@ -352,45 +428,49 @@ def solve_points(
                                           for x in (alpha, beta, amplitude, v_inertial)))
     shape = V.shape
     al, be, am, V = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V))
-    if not np.all(np.isfinite(al) & (al > 0)):
-        raise ValueError("alpha must be finite and > 0 at every point")
-    if not np.all(be > al):
-        raise ValueError("beta must be > alpha (or inf) at every point")
-    if not np.all(np.isfinite(am) & (am >= 0)):
-        raise ValueError("amplitude must be finite and >= 0 at every point")
-    if not np.all(np.isfinite(V) & (V >= 0)):
-        raise ValueError("v_inertial must be finite and >= 0 at every point")
+    checked("alpha", al, minimum=0.0, strict=True)
+    checked_beta(al, be)
+    checked("amplitude", am, minimum=0.0)
+    checked("v_inertial", V, minimum=0.0)
     n = V.size
     kind, init = _initial(initial, n)
-    out_f = np.full((n, 9), np.nan)
-    out_i = np.zeros((n, 6), dtype=np.int64)
+    out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
+    out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     moving = V > 0.0
     idx = np.flatnonzero(moving)
     if idx.size:
-        of = np.empty((idx.size, 9))
-        oi = np.empty((idx.size, 6), dtype=np.int64)
+        of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
+        oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
         steady_state_many(al[idx], be[idx], am[idx], V[idx], kind,
-                          np.ascontiguousarray(init[idx]), int(settings.max_periods),
-                          int(settings.min_periods), float(settings.tol_state),
-                          float(settings.tol_mean), int(settings.max_events), of, oi)
+                          np.ascontiguousarray(init[idx]), *_kernel_settings(settings), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
-    still = ~moving
-    if np.any(still):
-        static = np.asarray(theory.static_mu_ratio(am[still]), dtype=float)
-        out_f[still, 0] = static
-        out_f[still, 1] = 0.0
-        contact = am[still] < 1.0
-        out_f[still, 2] = np.where(contact, 1.0, np.nan)
-        out_f[still, 3:6] = np.where(contact[:, None], 0.0, np.nan)
-        out_i[still, 0] = STATIC_CODE
-        out_i[still, 4] = 99  # no section state
-    names_f = ("mu_ratio", "error", "stick_fraction", "slip_fraction", "reverse_slip_fraction",
-               "flight_fraction", "y", "x_dot", "f")
-    names_i = ("status", "period", "periods", "events", "phase", "degenerate")
-    out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(names_f)}
-    out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(names_i)})
+    _static_limit(am[~moving], out_f, out_i, ~moving)
+    out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
+    out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
+    out["trusted"] = settings.trusted(out["status"], out["error"])
     return out
+
+
+def _kernel_settings(settings: SolverSettings) -> tuple:
+    return (int(settings.max_periods), int(settings.min_periods), float(settings.tol_state),
+            float(settings.tol_mean), int(settings.max_events))
+
+
+def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
+                  out_i: NDArray[np.int64], rows: NDArray[np.bool_]) -> None:
+    """Fill the rows of zero-velocity points with the static limit, eq. (2)."""
+    if not np.any(rows):
+        return
+    col = {k: j for j, k in enumerate(FLOAT_COLUMNS)}
+    contact = amplitude < 1.0
+    out_f[rows, col["mu_ratio"]] = theory.static_mu_ratio(amplitude)
+    out_f[rows, col["error"]] = 0.0
+    out_f[rows, col["stick_fraction"]] = np.where(contact, 1.0, np.nan)
+    for k in ("slip_fraction", "reverse_slip_fraction", "flight_fraction"):
+        out_f[rows, col[k]] = np.where(contact, 0.0, np.nan)
+    out_i[rows, INT_COLUMNS.index("status")] = codes.ST_STATIC
+    out_i[rows, INT_COLUMNS.index("phase")] = codes.NO_PHASE
 
 
 def friction_coefficient(
@@ -426,34 +506,42 @@ def friction_coefficient(
         # one point: call the scalar kernel directly (no array bookkeeping)
         settings = settings or _DEFAULT_SETTINGS
         kind, init = _initial(initial, 1)
-        r = steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), kind, init[0, 0],
-                         init[0, 1], init[0, 2], int(init[0, 3]), int(settings.max_periods),
-                         int(settings.min_periods), float(settings.tol_state),
-                         float(settings.tol_mean), int(settings.max_events))
-        return FrictionResult(
-            mu_ratio=r[0], status=STATUS_BY_CODE[r[1]], error=r[3], period=r[2],
-            periods=r[4], events=r[5], stick_fraction=r[6], slip_fraction=r[7],
-            reverse_slip_fraction=r[8], flight_fraction=r[9],
-            final_state=_section_state(r[10], r[11], r[12], r[13]), system=dim,
-            v_inertial=float(V))
+        of = np.empty(len(FLOAT_COLUMNS))
+        oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
+        steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), kind, init[0, 0],
+                     init[0, 1], init[0, 2], int(init[0, 3]), *_kernel_settings(settings),
+                     of, oi)
+        cols = dict(zip(FLOAT_COLUMNS, of.tolist(), strict=True))
+        cols.update(zip(INT_COLUMNS, oi.tolist(), strict=True))
+        cols["trusted"] = bool(settings.trusted(oi[0], of[1]))
+        return _result(cols, dim, float(V))
     cols = solve_points(np.full(shape, dim.alpha), np.full(shape, dim.beta),
                         np.full(shape, dim.amplitude), V, initial=initial, settings=settings)
-    status = np.empty(V.size, dtype=object)
+    if scalar:
+        return _result({k: v[()].item() for k, v in cols.items()}, dim, float(V))
+    status = np.vectorize(STATUS_BY_CODE.__getitem__, otypes=[object])(cols["status"])
     states = np.empty(V.size, dtype=object)
     flat = {k: v.ravel() for k, v in cols.items()}
     for i in range(V.size):
-        status[i] = STATUS_BY_CODE[int(flat["status"][i])]
-        states[i] = _section_state(flat["y"][i], flat["x_dot"][i], flat["f"][i],
-                                   int(flat["phase"][i]))
-    res = FrictionResults(
-        status=status.reshape(shape), final_state=states.reshape(shape), system=dim,
-        v_inertial=V.astype(float),
-        **{k: cols[k] for k in ("mu_ratio", "error", "period", "periods", "events",
-                                "stick_fraction", "slip_fraction", "reverse_slip_fraction",
-                                "flight_fraction")})
-    if scalar:
-        return res[()]
-    return res
+        states[i] = section_state(flat["y"][i], flat["x_dot"][i], flat["f"][i],
+                                  int(flat["phase"][i]))
+    return FrictionResults(
+        status=status, final_state=states.reshape(shape), system=dim,
+        v_inertial=V.astype(float), **{k: cols[k] for k in _RESULT_COLUMNS})
+
+
+_RESULT_COLUMNS = ("mu_ratio", "error", "trusted", "period", "periods", "events",
+                   "stick_fraction", "slip_fraction", "reverse_slip_fraction",
+                   "flight_fraction", "multiplier", "settling_periods", "window_min",
+                   "window_max", "modulation_period")
+
+
+def _result(cols: dict, dim: Dimensionless, V: float) -> FrictionResult:
+    """One point's :class:`FrictionResult` from its columns (Python scalars)."""
+    return FrictionResult(
+        status=STATUS_BY_CODE[int(cols["status"])],
+        final_state=section_state(cols["y"], cols["x_dot"], cols["f"], int(cols["phase"])),
+        system=dim, v_inertial=V, **{k: cols[k] for k in _RESULT_COLUMNS})
 
 
 def simulate(
@@ -469,9 +557,11 @@ def simulate(
 ) -> History:
     """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
 
-    ``initial="steady"`` starts from the steady state found by
-    :func:`friction_coefficient` (its final section state), so the history shows
-    the periodic orbit rather than the transient.
+    ``initial``: ``"sliding"``, ``"rest"``, a :class:`SectionState`, or ``"steady"``:
+    the final section state of :func:`friction_coefficient` at the same point, so the
+    history shows the steady state rather than the transient (ValueError where that
+    result has no section state or is not trusted).  ``final_state`` is the state on
+    the last Poincare section within the history, ``tau = 2 pi floor(periods)``.
     """
     dim = _dimensionless(system)
     V = _inertial_velocity(system, vbar, v_inertial, v0)
@@ -483,9 +573,11 @@ def simulate(
     if not (isinstance(samples_per_period, int) and samples_per_period >= 2):
         raise ValueError(f"samples_per_period must be an integer >= 2, got {samples_per_period!r}")
     if isinstance(initial, str) and initial == "steady":
-        initial = friction_coefficient(dim, v_inertial=V, settings=settings).final_state
-        if initial is None:
-            initial = "sliding"
+        steady = friction_coefficient(dim, v_inertial=V, settings=settings)
+        if steady.final_state is None or not steady.trusted:
+            raise ValueError(f"initial='steady': no trusted steady state at this point "
+                             f"({steady.message})")
+        initial = steady.final_state
     kind, init = _initial(initial, 1)
     if kind == 2:
         y, xd, f, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
@@ -516,9 +608,10 @@ def simulate(
         Event(float(seg[j, 0]), codes.EVENT_NAMES[int(seg[j, 5])],
               codes.PHASE_NAMES[int(seg[j - 1, 4])], codes.PHASE_NAMES[int(seg[j, 4])])
         for j in ev_rows if seg[j, 0] <= tau_end)
-    last = seg[-1]
+    whole_done = int(math.floor(periods + 1e-12))
+    last = seg[np.flatnonzero(seg[:, 0] <= TWO_PI * whole_done * (1 + 1e-14))[-1]]
     return History(
         tau=taus, x=out[:, 0] + V * taus, x_dot=out[:, 1], f=out[:, 2], n=out[:, 3],
         phase=np.asarray(codes.PHASE_NAMES, dtype=str)[out[:, 4].astype(int)],
         events=events, system=dim, v_inertial=V,
-        final_state=_section_state(last[1], last[2], last[3], int(last[4])))
+        final_state=section_state(last[1], last[2], last[3], int(last[4])))

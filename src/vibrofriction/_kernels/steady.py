@@ -3,13 +3,23 @@ r"""The steady state and the macroscopic coefficient of friction (paper eq. 25).
 ``mu_macro / mu0 = <f> / <n>`` over the steady state, with both integrals taken
 from the closed forms, so a periodic orbit gives the ratio exactly.
 
-The section states ``z_k = (y, x', f, phase)`` at ``tau = 2 pi k`` are compared
-with ``z_{k-p}`` for ``p = 1..P``; when they agree to ``tol_state`` the orbit is
-p-periodic and the average is taken over exactly those ``p`` periods.  The error
-estimate is the section distance divided by ``1 - rho``, ``rho`` the observed
-contraction per period.  Otherwise the running average is checked at doubling
-checkpoints (means over ``(K/4, K/2]`` and ``(K/2, K]`` must agree within
-``tol_mean``), and after ``max_periods`` the result is marked not converged.
+The run advances one drive period at a time (:func:`advance_period`).  At each
+Poincare section ``tau = 2 pi k`` the state ``z_k = (y, x', f, phase)`` is
+compared with ``z_{k-p}`` for ``p = 1..MAX_PERIOD`` (:func:`detect_period`);
+Newton's method on the period map is tried on a schedule (:func:`newton_orbit`);
+continuous sliding is proven where its certificate applies
+(:func:`sliding_certificate`); otherwise the running average is checked at
+doubling checkpoints (:func:`check_average`).  Every result states an estimate of
+``|mu_ratio - exact|`` (docs/solver.md, "What error means"):
+
+* periodic: the p-period means of two successive windows differ by ``d_mu``;
+  the window means converge to the orbit's mean like ``lambda^k`` (``lambda``
+  the leading Floquet multiplier, :func:`leading_multiplier`), so the error of
+  the last window is at most ``d_mu / (1 - |lambda|)``, floored at round-off;
+* averaged / not converged: the disagreement of the last two averaging windows;
+* continuous sliding: 0 (proven, eqs. 10-12, only where the contact never opens).
+
+Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS``.
 """
 
 import math
@@ -32,34 +42,77 @@ from .integrate import TWO_PI, initial_state, liftoff_phases, segment
 from .jit import jit
 
 MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
-N_ACC = 6  # accumulators: int_f, int_n, t_stick, t_slip, t_slip_neg, t_flight
 MAX_DEGENERATE = 1000  # transitions decided within round-off before giving up (chatter)
+MAX_ZERO_SEGMENTS = 100  # successive zero-length segments before giving up (stuck)
 FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
+NEWTON_ITERATIONS = 12  # Newton steps per attempt
+NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
+MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
+RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
+ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
+ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
+
+# accumulators: integrals of f and n, times in stick, slip, reverse slip, flight
+A_F, A_N, A_STICK, A_SLIP, A_SLIP_NEG, A_FLIGHT = 0, 1, 2, 3, 4, 5
+N_ACC = 6
+# counters: events, degenerate transitions, successive zero-length segments
+C_EVENTS, C_DEGENERATE, C_ZERO = 0, 1, 2
+# output columns (solver.FLOAT_COLUMNS, solver.INT_COLUMNS)
+O_MU, O_ERR, O_STICK, O_SLIP, O_SLIP_NEG, O_FLIGHT, O_Y, O_XD, O_F = 0, 1, 2, 3, 4, 5, 6, 7, 8
+O_MULT, O_SETTLE, O_WMIN, O_WMAX, O_MOD = 9, 10, 11, 12, 13
+I_STATUS, I_PERIOD, I_PERIODS, I_EVENTS, I_PHASE, I_DEGENERATE = 0, 1, 2, 3, 4, 5
+
+
+@jit
+def advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+    """Integrate one drive period from the section state ``z = (y, x', f, phase)``.
+
+    ``z`` is updated in place, ``acc`` accumulates the integrals and phase times,
+    ``count`` the events, degenerate transitions and zero-length segments.
+    Returns False when the integration must stop (event budget, chatter, stuck).
+    """
+    theta = 0.0
+    y, xd, f, ph = z[0], z[1], z[2], int(z[3])
+    while theta < TWO_PI:
+        t, theta, y, xd, f, ph1, ev, i_f, i_n, ok = segment(
+            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
+        acc[A_F] += i_f
+        acc[A_N] += i_n
+        if ph == STICK:
+            acc[A_STICK] += t
+        elif ph == FLIGHT:
+            acc[A_FLIGHT] += t
+        else:
+            acc[A_SLIP] += t
+            if ph == SLIP_NEG:
+                acc[A_SLIP_NEG] += t
+        if ev != EV_SECTION:
+            count[C_EVENTS] += 1
+        if not ok:
+            count[C_DEGENERATE] += 1
+        count[C_ZERO] = count[C_ZERO] + 1 if t == 0.0 else 0
+        ph = ph1
+        if (count[C_EVENTS] > max_events or count[C_ZERO] > MAX_ZERO_SEGMENTS
+                or count[C_DEGENERATE] > MAX_DEGENERATE):
+            return False
+    z[0], z[1], z[2], z[3] = y, xd, f, ph
+    return True
 
 
 @jit
 def period_map(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
     """Integrate ``p`` drive periods from the section; returns the state and event count."""
-    theta = 0.0
-    k = 0
-    events = 0
-    ok_all = True
-    while k < p:
-        t, theta, y, xd, f, ph, ev, i_f, i_n, ok = segment(
-            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
-        ok_all = ok_all and ok
-        if ev != EV_SECTION:
-            events += 1
-            if events > max_events:
-                return y, xd, f, ph, events, False
-        if theta >= TWO_PI:
-            theta = 0.0
-            k += 1
-    return y, xd, f, ph, events, ok_all
+    z = np.array([y, xd, f, float(ph)])
+    acc = np.zeros(N_ACC)
+    count = np.zeros(3, np.int64)
+    for _ in range(p):
+        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+            return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], False
+    return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE] == 0
 
 
 @jit
-def _unpack(z, ph, alpha, a, V, rigid):
+def _unpack(z, ph, alpha, a, rigid):
     """Section state from the free coordinates ``z`` of phase ``ph``."""
     if ph == STICK:
         if rigid:
@@ -67,6 +120,14 @@ def _unpack(z, ph, alpha, a, V, rigid):
         return z[0], z[1], z[2]
     s = 1.0 if ph == SLIP_POS else -1.0
     return z[0], z[1], s * (1.0 + a)
+
+
+@jit
+def _free_dimension(ph, rigid):
+    """Free coordinates on the section: ``y`` (rigid stick), ``y, x'`` (slip), all three."""
+    if ph == STICK:
+        return 1 if rigid else 3
+    return 2
 
 
 @jit
@@ -100,6 +161,41 @@ def _solve_small(m, r, nd):
 
 
 @jit
+def residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on, max_events, jac):
+    """Difference Jacobian of ``z -> P^p(z) - z`` in the chart of phase ``ph`` (into ``jac``).
+
+    ``r`` is the residual at ``z``.  Returns ``(ok, events)``; not ok when a
+    perturbed image leaves the chart or the integration fails.
+    """
+    rigid = math.isinf(beta)
+    nd = _free_dimension(ph, rigid)
+    events = 0
+    for j in range(nd):
+        h = 1e-7 * (1.0 + abs(z[j]))
+        zp = z.copy()
+        zp[j] += h
+        y2, xd2, f2 = _unpack(zp, ph, alpha, a, rigid)
+        y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
+                                              th_off, th_on, max_events)
+        events += ev
+        if ph3 != ph or not ok:
+            return False, events
+        jac[0, j] = ((y3 - y2) - r[0]) / h
+        jac[1, j] = ((xd3 - xd2) - r[1]) / h
+        jac[2, j] = ((f3 - f2) - r[2]) / h
+    return True, events
+
+
+@jit
+def spectral_radius(jac, nd):
+    """Largest modulus of the eigenvalues of ``DP^p = jac + I`` (the Floquet multipliers)."""
+    if nd == 1:
+        return abs(jac[0, 0] + 1.0)
+    mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
+    return np.max(np.abs(np.linalg.eigvals(mat)))
+
+
+@jit
 def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
     """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
 
@@ -111,18 +207,17 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
     """
     ph_in = ph
     rigid = math.isinf(beta)
-    nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
+    nd = _free_dimension(ph, rigid)
     z = np.array([y, xd, f])
     events = 0
     jac = np.zeros((3, 3))
     have_jac = False
     res_prev = np.inf
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + abs(f)
-    for _ in range(12):
-        # a Newton step that runs far from the start has diverged, not converged
-        if alpha * abs(z[0] - y) + abs(z[1] - xd) + abs(z[2] - f) > 100.0 * scale0:
+    for _ in range(NEWTON_ITERATIONS):
+        if alpha * abs(z[0] - y) + abs(z[1] - xd) + abs(z[2] - f) > NEWTON_DIVERGED * scale0:
             return False, y, xd, f, ph_in, events
-        y0, xd0, f0 = _unpack(z, ph, alpha, a, V, rigid)
+        y0, xd0, f0 = _unpack(z, ph, alpha, a, rigid)
         y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
                                               th_off, th_on, max_events)
         events += ev
@@ -131,7 +226,7 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
             ph = ph1
-            nd = 1 if (ph == STICK and rigid) else (3 if ph == STICK else 2)
+            nd = _free_dimension(ph, rigid)
             z[0], z[1], z[2] = y1, xd1, f1
             have_jac = False
             res_prev = np.inf
@@ -139,33 +234,16 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale0:
-            if not have_jac:
-                return False, y, xd, f, ph_in, events
-            # accept only an attracting orbit: |eig(DP)| < 1 from the last Jacobian
-            if nd >= 2:
-                mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
-                ev_mod = np.abs(np.linalg.eigvals(mat))
-                if not np.max(ev_mod) < 1.0 - 1e-9:
-                    return False, y, xd, f, ph_in, events
-            elif not abs(jac[0, 0] + 1.0) < 1.0 - 1e-9:
+            if not have_jac or not spectral_radius(jac, nd) < ATTRACTING:
                 return False, y, xd, f, ph_in, events
             return True, y0, xd0, f0, ph, events
         if not have_jac or res > 0.25 * res_prev:
-            # (re)build the difference Jacobian of z -> P(z) - z; otherwise chord steps
-            for j in range(nd):
-                h = 1e-7 * (1.0 + abs(z[j]))
-                zp = z.copy()
-                zp[j] += h
-                y2, xd2, f2 = _unpack(zp, ph, alpha, a, V, rigid)
-                y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
-                                                      th_off, th_on, max_events)
-                events += ev
-                if ph3 != ph or not ok:
-                    return False, y, xd, f, ph_in, events
-                jac[0, j] = ((y3 - y2) - r[0]) / h
-                jac[1, j] = ((xd3 - xd2) - r[1]) / h
-                jac[2, j] = ((f3 - f2) - r[2]) / h
-            have_jac = True
+            # (re)build the Jacobian; otherwise chord steps with the old one
+            have_jac, ev = residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on,
+                                             max_events, jac)
+            events += ev
+            if not have_jac:
+                return False, y, xd, f, ph_in, events
         res_prev = res
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
@@ -176,15 +254,39 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
 
 
 @jit
+def leading_multiplier(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
+    """Modulus of the leading Floquet multiplier of the p-periodic orbit through the state.
+
+    ``nan`` when the Jacobian cannot be formed in one chart (a perturbed orbit
+    changes phase on the section).  Returns ``(multiplier, events)``.
+    """
+    rigid = math.isinf(beta)
+    y1, xd1, f1, ph1, events, ok = period_map(y, xd, f, ph, p, alpha, beta, a, V,
+                                              th_off, th_on, max_events)
+    if not ok or ph1 != ph:
+        return math.nan, events
+    z = np.array([y, xd, f])
+    r = np.array([y1 - y, xd1 - xd, f1 - f])
+    jac = np.zeros((3, 3))
+    ok, ev = residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on, max_events, jac)
+    if not ok:
+        return math.nan, events + ev
+    return spectral_radius(jac, _free_dimension(ph, rigid)), events + ev
+
+
+@jit
 def sliding_certificate(y, xd, ph, alpha, beta, a, V):
     """Is continuous forward sliding proven from this section state (eqs. 7-12)?
 
     In slip+ the motion is the steady sliding solution plus a free oscillation at
     ``sqrt(alpha)`` (undamped: slip dissipates nothing it could store).  The
     contact point never stops if ``V - V*`` exceeds the free oscillation's velocity
-    amplitude; then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.
+    amplitude; then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.  The argument
+    needs the contact to stay closed (``n = 1 + a cos tau >= 0``), so it is made for
+    ``a <= 1`` only: a jumping body (``a > 1``) flies every period and touches down
+    in stick, whatever its velocity.
     """
-    if ph != SLIP_POS or alpha == 1.0:
+    if ph != SLIP_POS or alpha == 1.0 or a > 1.0:
         return False
     if math.isinf(beta):
         vstar = a / abs(alpha - 1.0)
@@ -202,165 +304,246 @@ def _distance(alpha, z1, z2):
 
 
 @jit
-def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0,
-                 max_periods, min_periods, tol_state, tol_mean, max_events):
-    """Long-time average from a given start.
+def _pure_forward_slip(win):
+    """A window without stick, reverse slip or flight: ``f = n`` throughout."""
+    return win[A_STICK] == 0.0 and win[A_SLIP_NEG] == 0.0 and win[A_FLIGHT] == 0.0
+
+
+@jit
+def _window_mu(win):
+    return 1.0 if _pure_forward_slip(win) else win[A_F] / win[A_N]
+
+
+@jit
+def detect_period(ring_z, dprev, k, alpha, tol_state):
+    """The shortest ``p`` with ``z_k`` within ``tol_state`` of ``z_{k-p}`` (same phase).
+
+    Returns ``(p, d, rho)``: ``p = 0`` if none; ``d`` the section distance and
+    ``rho`` the contraction observed since the previous period (``dprev`` keeps the
+    last distance for every ``p`` and is updated).
+    """
+    nring = MAX_PERIOD + 1
+    slot = k % nring
+    z = ring_z[slot]
+    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + abs(z[2])
+    for p in range(1, MAX_PERIOD + 1):
+        if p > k:
+            break
+        old = (k - p) % nring
+        if ring_z[old, 3] != z[3]:
+            dprev[p] = np.inf
+            continue
+        d = _distance(alpha, z, ring_z[old])
+        if d <= tol_state * scale:
+            rho = d / dprev[p] if dprev[p] > 0.0 and np.isfinite(dprev[p]) else 0.0
+            return p, d, min(rho, RHO_MAX)
+        dprev[p] = d
+    return 0, math.inf, 0.0
+
+
+@jit
+def _window(acc, ring_c, k, p, win):
+    """The accumulators over the last ``p`` periods (into ``win``)."""
+    old = (k - p) % (MAX_PERIOD + 1)
+    for j in range(N_ACC):
+        win[j] = acc[j] - ring_c[old, j]
+
+
+@jit
+def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, th_off,
+                    th_on, max_events, out_f):
+    """Average, error, multiplier and settling time of a p-periodic orbit.
+
+    ``win`` holds the accumulators of the last ``p`` periods (one period of the
+    orbit).  One more window is integrated to measure ``d_mu``, the change of the
+    p-period mean; with the leading multiplier ``lam`` the window means converge
+    geometrically, so the error is ``d_mu / (1 - lam)`` (``rho``, the contraction
+    seen on the section, stands in where ``lam`` cannot be formed).  The settling
+    time counts the periods the motion from the initial state needs until its
+    p-period means stay within that error of the orbit's: ``k`` when the orbit was
+    reached by plain iteration, else extrapolated from the first Newton jump
+    (period ``first_jump``, window mean ``mu_first``) at the rate ``lam``.
+    Returns the events spent.
+    """
+    mu = _window_mu(win)
+    z2 = z.copy()
+    acc2 = np.zeros(N_ACC)
+    count = np.zeros(3, np.int64)
+    d_mu = 0.0
+    for _ in range(p):
+        if not advance_period(z2, acc2, count, alpha, beta, a, V, th_off, th_on, max_events):
+            d_mu = math.inf
+    d_mu = max(d_mu, abs(_window_mu(acc2) - mu))
+    lam, ev = leading_multiplier(z[0], z[1], z[2], int(z[3]), p, alpha, beta, a, V, th_off,
+                                 th_on, max_events)
+    rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
+    err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
+    settle = float(k)
+    if first_jump >= 0:
+        settle = float(first_jump)
+        e0 = abs(mu_first - mu)
+        if e0 > err and rate > 0.0:
+            settle += math.log(err / e0) / math.log(rate)
+    out_f[O_MU] = mu
+    out_f[O_ERR] = err
+    out_f[O_MULT] = lam
+    out_f[O_SETTLE] = settle
+    return count[C_EVENTS] + ev
+
+
+@jit
+def try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on, tol_state, max_events):
+    """Newton on the period whose section distance is smallest, then on ``p = 1``.
+
+    On success ``z`` (and its ring slot) become the orbit's state.  Returns
+    ``(p, events)`` with ``p = 0`` if no attracting orbit was found.
+    """
+    pbest = 1
+    for p in range(2, min(k, MAX_PERIOD) + 1):
+        if dprev[p] < dprev[pbest]:
+            pbest = p
+    events = 0
+    for attempt in range(2):
+        p = pbest if attempt == 0 else 1
+        if attempt == 1 and pbest == 1:
+            break
+        ok, y, xd, f, ph, ev = newton_orbit(z[0], z[1], z[2], int(z[3]), p, alpha, beta, a,
+                                            V, th_off, th_on, 0.1 * tol_state, max_events)
+        events += ev
+        if ok:
+            z[0], z[1], z[2], z[3] = y, xd, f, ph
+            ring_z[k % (MAX_PERIOD + 1), :] = z
+            dprev[:] = np.inf
+            return p, events
+    return 0, events
+
+
+@jit
+def check_average(chk_c, nchk, final, tol_mean, win, out_f):
+    """Running-average test at the doubling checkpoints ``K/4, K/2, K``.
+
+    The mean over ``(K/2, K]`` is the answer and its disagreement with the mean over
+    ``(K/4, K/2]`` the error.  Returns True when converged: they agree within
+    ``tol_mean`` and the last window is not pure forward slip (which averages to 1
+    whatever the state: without the certificate it is a transient, e.g. a resonance
+    still building up).
+    """
+    if not (nchk >= 3 or (final and nchk >= 2)):
+        return False
+    i2, i1 = nchk - 1, nchk - 2
+    for j in range(N_ACC):
+        win[j] = chk_c[i2, j] - chk_c[i1, j]
+    m1 = win[A_F] / win[A_N]
+    if nchk >= 3:
+        i0 = nchk - 3
+        m0 = (chk_c[i1, A_F] - chk_c[i0, A_F]) / (chk_c[i1, A_N] - chk_c[i0, A_N])
+    else:
+        m0 = chk_c[i1, A_F] / chk_c[i1, A_N]
+    out_f[O_MU] = m1
+    out_f[O_ERR] = abs(m1 - m0)
+    out_f[O_WMIN] = min(m0, m1)
+    out_f[O_WMAX] = max(m0, m1)
+    return out_f[O_ERR] <= tol_mean and not _pure_forward_slip(win)
+
+
+@jit
+def _fractions(win, status, out_f):
+    total = win[A_STICK] + win[A_SLIP] + win[A_FLIGHT]
+    if total <= 0.0 or status == ST_FAILED:
+        total = math.nan
+    out_f[O_STICK] = win[A_STICK] / total
+    out_f[O_SLIP] = win[A_SLIP] / total
+    out_f[O_SLIP_NEG] = win[A_SLIP_NEG] / total
+    out_f[O_FLIGHT] = win[A_FLIGHT] / total
+
+
+@jit
+def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, min_periods,
+                 tol_state, tol_mean, max_events, out_f, out_i):
+    """Long-time average from a given start, written into the rows ``out_f``, ``out_i``.
 
     ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, y0', f0, ph0)``
-    at ``tau = 0``.  Returns ``(mu_ratio, status, period, error, periods, events,
-    stick, slip, slip_neg, flight, y, x', f, phase, degenerate)`` where the four
-    fractions are of time in the averaging window and the state is the final one
-    on the section.
+    at ``tau = 0``.  The columns are ``solver.FLOAT_COLUMNS`` and
+    ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and
+    the state is the final one on the section.
     """
+    z = np.empty(4)
     if init_kind == 2:
-        y, xd, f, ph = y0, xd0, f0, ph0
+        z[0], z[1], z[2], z[3] = y0, xd0, f0, ph0
     else:
-        y, xd, f, ph = initial_state(init_kind, alpha, beta, a, V)
+        z[0], z[1], z[2], z[3] = initial_state(init_kind, alpha, beta, a, V)
     th_off, th_on = liftoff_phases(a)
-    theta = 0.0
-    ring_z = np.zeros((MAX_PERIOD + 1, 4))
-    ring_c = np.zeros((MAX_PERIOD + 1, N_ACC))
-    dprev = np.full(MAX_PERIOD + 1, np.inf)
-    ncheck = 64
-    chk_k = np.zeros(ncheck, np.int64)
-    chk_c = np.zeros((ncheck, N_ACC))
+    nring = MAX_PERIOD + 1
+    ring_z = np.zeros((nring, 4))
+    ring_c = np.zeros((nring, N_ACC))
+    dprev = np.full(nring, np.inf)
+    chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
     acc = np.zeros(N_ACC)
-    ring_z[0, 0], ring_z[0, 1], ring_z[0, 2], ring_z[0, 3] = y, xd, f, ph
+    count = np.zeros(3, np.int64)
+    win = np.zeros(N_ACC)
+    ring_z[0, :] = z
+    out_f[:] = math.nan
     nchk = 0
     next_chk = min_periods
     next_newton = FIRST_NEWTON
+    first_jump = -1
+    mu_first = math.nan
     k = 0
-    events = 0
-    degenerate = 0
-    zero_run = 0
-    status = ST_NOT_CONVERGED
     period = 0
-    mu = math.nan
-    err = math.inf
-    win = np.zeros(N_ACC)
     while True:
-        t, theta, y, xd, f, ph1, ev, i_f, i_n, ok = segment(
-            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
-        acc[0] += i_f
-        acc[1] += i_n
-        if ph == STICK:
-            acc[2] += t
-        elif ph == FLIGHT:
-            acc[5] += t
-        else:
-            acc[3] += t
-            if ph == SLIP_NEG:
-                acc[4] += t
-        if ev != EV_SECTION:
-            events += 1
-        if not ok:
-            degenerate += 1
-        zero_run = zero_run + 1 if t == 0.0 else 0
-        ph = ph1
-        if events > max_events or zero_run > 100 or degenerate > MAX_DEGENERATE:
+        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
             status = ST_FAILED
             break
-        if theta < TWO_PI:
-            continue
-        # ---- Poincare section tau = 2 pi k ----
-        theta = 0.0
         k += 1
-        slot = k % (MAX_PERIOD + 1)
-        ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2], ring_z[slot, 3] = y, xd, f, ph
-        ring_c[slot, :] = acc
-        scale = 1.0 + alpha * abs(y) + abs(xd) + abs(f)
-        found = False
-        for p in range(1, MAX_PERIOD + 1):
-            if p > k:
-                break
-            old = (k - p) % (MAX_PERIOD + 1)
-            if ring_z[old, 3] != ph:
-                dprev[p] = np.inf
-                continue
-            d = _distance(alpha, ring_z[slot], ring_z[old])
-            if d <= tol_state * scale:
-                rho = d / dprev[p] if dprev[p] > 0.0 and np.isfinite(dprev[p]) else 0.0
-                rho = min(rho, 0.999)
-                for j in range(N_ACC):
-                    win[j] = acc[j] - ring_c[old, j]
-                mu = win[0] / win[1]
-                if win[2] == 0.0 and win[4] == 0.0 and win[5] == 0.0:
-                    mu = 1.0  # pure forward slip: f = n identically, not just on average
-                err = max(d / (1.0 - rho), 1e-15)
-                status = ST_PERIODIC
-                period = p
-                found = True
-                break
-            dprev[p] = d
-        if found:
+        ring_z[k % nring, :] = z
+        ring_c[k % nring, :] = acc
+        p, d, rho = detect_period(ring_z, dprev, k, alpha, tol_state)
+        if p > 0:
+            _window(acc, ring_c, k, p, win)
+            count[C_EVENTS] += periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha,
+                                               beta, a, V, th_off, th_on, max_events, out_f)
+            status = ST_PERIODIC
+            period = p
             break
-        if sliding_certificate(y, xd, ph, alpha, beta, a, V):
-            mu = 1.0
-            err = 0.0
-            status = ST_SLIDING
+        if sliding_certificate(z[0], z[1], int(z[3]), alpha, beta, a, V):
+            out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
             win[:] = 0.0
-            win[3] = 1.0
+            win[A_SLIP] = 1.0
+            status = ST_SLIDING
             break
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
-            # try the period whose section distance is smallest, then p = 1
-            pbest = 1
-            for p in range(2, min(k, MAX_PERIOD) + 1):
-                if dprev[p] < dprev[pbest]:
-                    pbest = p
-            for attempt in range(2):
-                p = pbest if attempt == 0 else 1
-                if attempt == 1 and pbest == 1:
-                    break
-                nok, ny, nxd, nf, nph, nev = newton_orbit(
-                    y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, 0.1 * tol_state,
-                    max_events)
-                events += nev
-                if nok:
-                    y, xd, f, ph = ny, nxd, nf, nph
-                    ring_z[slot, 0], ring_z[slot, 1], ring_z[slot, 2] = y, xd, f
-                    ring_z[slot, 3] = ph
-                    dprev[:] = np.inf
-                    break
+            pn, ev = try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on,
+                                tol_state, max_events)
+            count[C_EVENTS] += ev
+            if pn > 0 and first_jump < 0:
+                _window(acc, ring_c, k, pn, win)
+                first_jump, mu_first = k, _window_mu(win)
         if k == next_chk or k >= max_periods:
-            if nchk < ncheck:
-                chk_k[nchk] = k
+            if nchk < MAX_CHECKPOINTS:
                 chk_c[nchk, :] = acc
                 nchk += 1
             next_chk *= 2
-            # checkpoints are min_periods * 2^j: (K/4, K/2] and (K/2, K]
-            if nchk >= 3 or (k >= max_periods and nchk >= 2):
-                i2, i1 = nchk - 1, nchk - 2
-                i0 = max(nchk - 3, 0) if nchk >= 3 else -1
-                for j in range(N_ACC):
-                    win[j] = chk_c[i2, j] - chk_c[i1, j]
-                m1 = win[0] / win[1]
-                if i0 >= 0:
-                    m0 = (chk_c[i1, 0] - chk_c[i0, 0]) / (chk_c[i1, 1] - chk_c[i0, 1])
-                else:
-                    m0 = chk_c[i1, 0] / chk_c[i1, 1]
-                mu = m1
-                err = abs(m1 - m0)
-                # a window of pure forward slip averages to exactly 1 whatever the state;
-                # without the sliding certificate it is a transient (e.g. a resonance
-                # still building up), not evidence of convergence
-                pure_slip = win[2] == 0.0 and win[4] == 0.0 and win[5] == 0.0
-                if err <= tol_mean and not pure_slip:
-                    status = ST_AVERAGED
-                    break
+            if check_average(chk_c, nchk, k >= max_periods, tol_mean, win, out_f):
+                out_f[O_SETTLE] = k
+                status = ST_AVERAGED
+                break
             if k >= max_periods:
                 status = ST_NOT_CONVERGED
                 if nchk < 2:
-                    for j in range(N_ACC):
-                        win[j] = acc[j]
-                    mu = acc[0] / acc[1]
+                    win[:] = acc
+                    out_f[O_MU] = acc[A_F] / acc[A_N]
                 break
-    total = win[2] + win[3] + win[5]
-    if total <= 0.0 or status == ST_FAILED:
-        total = math.nan
-    return (mu, status, period, err, k, events,
-            win[2] / total, win[3] / total, win[4] / total, win[5] / total,
-            y, xd, f, ph, degenerate)
+    if status == ST_FAILED or not math.isfinite(out_f[O_ERR]):
+        out_f[O_ERR] = math.inf  # no estimate: nothing is known about the value
+    _fractions(win, status, out_f)
+    out_f[O_Y], out_f[O_XD], out_f[O_F] = z[0], z[1], z[2]
+    out_i[I_STATUS] = status
+    out_i[I_PERIOD] = period
+    out_i[I_PERIODS] = k
+    out_i[I_EVENTS] = count[C_EVENTS]
+    out_i[I_PHASE] = int(z[3])
+    out_i[I_DEGENERATE] = count[C_DEGENERATE]
 
 
 @jit
@@ -368,26 +551,10 @@ def steady_state_many(alpha, beta, a, V, init_kind, init, max_periods, min_perio
                       tol_state, tol_mean, max_events, out_f, out_i):
     """:func:`steady_state` over arrays of points (one compiled loop, no Python calls).
 
-    ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); ``out_f`` gets
-    columns ``mu, error, stick, slip, slip_neg, flight, y, x', f`` and ``out_i``
-    ``status, period, periods, events, phase, degenerate``.
+    ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row ``i`` of
+    ``out_f`` and ``out_i`` receives point ``i``.
     """
     for i in range(V.shape[0]):
-        r = steady_state(alpha[i], beta[i], a[i], V[i], init_kind, init[i, 0], init[i, 1],
-                         init[i, 2], int(init[i, 3]), max_periods, min_periods, tol_state,
-                         tol_mean, max_events)
-        out_f[i, 0] = r[0]
-        out_f[i, 1] = r[3]
-        out_f[i, 2] = r[6]
-        out_f[i, 3] = r[7]
-        out_f[i, 4] = r[8]
-        out_f[i, 5] = r[9]
-        out_f[i, 6] = r[10]
-        out_f[i, 7] = r[11]
-        out_f[i, 8] = r[12]
-        out_i[i, 0] = r[1]
-        out_i[i, 1] = r[2]
-        out_i[i, 2] = r[4]
-        out_i[i, 3] = r[5]
-        out_i[i, 4] = r[13]
-        out_i[i, 5] = r[14]
+        steady_state(alpha[i], beta[i], a[i], V[i], init_kind, init[i, 0], init[i, 1],
+                     init[i, 2], int(init[i, 3]), max_periods, min_periods, tol_state,
+                     tol_mean, max_events, out_f[i], out_i[i])
