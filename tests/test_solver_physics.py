@@ -29,11 +29,12 @@ def _contact_velocity(h, k):
     return h.x_dot + s * a * np.sin(h.tau) / k
 
 
-@pytest.mark.parametrize("alpha,beta,a", [r for r in REGIMES if r[1] != 0.9])
+@pytest.mark.parametrize("alpha,beta,a", [r for r in REGIMES if r[1] != 0.9 and r[2] <= 1])
 @pytest.mark.parametrize("vbar", [1.05, 1.5, 3.0])
 def test_continuous_sliding_above_critical_velocity_gives_exactly_one(alpha, beta, a, vbar):
+    """Eqs. (10)-(12), for a contact that never opens (jumping: tests/test_trust.py)."""
     r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), vbar=vbar)
-    assert r.success
+    assert r.trusted
     assert r.mu_ratio == pytest.approx(1.0, abs=1e-12)
     assert r.stick_fraction == 0.0
 

@@ -243,6 +243,11 @@ def describe(r: FrictionResult) -> str:
             f"the motion from the initial state needs about {r.settling_periods:.3g} drive "
             "periods to come within the error of this value; a measurement over fewer "
             "periods sees the transient")
+    if r.status is Status.PERIODIC and math.isnan(r.settling_periods):
+        parts.append(
+            f"the orbit is neutrally stable (leading Floquet multiplier {r.multiplier:.9g}): "
+            "the motion from the initial state need not approach it, and a transient (e.g. "
+            "rare sticks of an undamped free oscillation) can persist for many periods")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
     if math.isfinite(r.modulation_period):

@@ -16,7 +16,9 @@ doubling checkpoints (:func:`check_average`).  Every result states an estimate o
   the window means converge to the orbit's mean like ``lambda^k`` (``lambda``
   the leading Floquet multiplier, :func:`leading_multiplier`), so the error of
   the last window is at most ``d_mu / (1 - |lambda|)``, floored at round-off;
-* averaged / not converged: the disagreement of the last two averaging windows;
+* averaged / not converged: the disagreement of the last two averaging windows
+  (``inf`` when the last window is pure forward slip: its mean is exactly 1
+  whatever the state, so it says nothing about the long-time average);
 * continuous sliding: 0 (proven, eqs. 10-12, only where the contact never opens).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS``.
@@ -51,6 +53,7 @@ MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
 ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
 ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
+NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral (to difference accuracy)
 
 # accumulators: integrals of f and n, times in stick, slip, reverse slip, flight
 A_F, A_N, A_STICK, A_SLIP, A_SLIP_NEG, A_FLIGHT = 0, 1, 2, 3, 4, 5
@@ -305,8 +308,8 @@ def _distance(alpha, z1, z2):
 
 @jit
 def _pure_forward_slip(win):
-    """A window without stick, reverse slip or flight: ``f = n`` throughout."""
-    return win[A_STICK] == 0.0 and win[A_SLIP_NEG] == 0.0 and win[A_FLIGHT] == 0.0
+    """A window without stick or reverse slip: ``f = n`` throughout (``0 = 0`` in flight)."""
+    return win[A_STICK] == 0.0 and win[A_SLIP_NEG] == 0.0
 
 
 @jit
@@ -379,7 +382,9 @@ def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, 
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
     err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)
-    if first_jump >= 0:
+    if first_jump >= 0 and not lam < NEUTRAL:
+        settle = math.nan  # a neutral orbit (undamped slip): the motion need not approach it
+    elif first_jump >= 0:
         settle = float(first_jump)
         e0 = abs(mu_first - mu)
         if e0 > err and rate > 0.0:
@@ -443,7 +448,11 @@ def check_average(chk_c, nchk, final, tol_mean, win, out_f):
     out_f[O_ERR] = abs(m1 - m0)
     out_f[O_WMIN] = min(m0, m1)
     out_f[O_WMAX] = max(m0, m1)
-    return out_f[O_ERR] <= tol_mean and not _pure_forward_slip(win)
+    if _pure_forward_slip(win):
+        # exactly 1 whatever the state: no evidence about the long-time average
+        out_f[O_ERR] = math.inf
+        return False
+    return out_f[O_ERR] <= tol_mean
 
 
 @jit

@@ -1,0 +1,180 @@
+"""No result claims more than it knows: certificates, error estimates, settling, trust.
+
+The reference values here come from the package's own exact integrator run for
+many periods (``advance_period``, no orbit detection, no Newton) or from the
+independent fixed-step integrator (:mod:`vibrofriction_reference`).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction._kernels.integrate import initial_state, liftoff_phases
+from vibrofriction._kernels.steady import N_ACC, advance_period, sliding_certificate
+
+
+def _period_means(s: vf.Dimensionless, V: float, n: int) -> np.ndarray:
+    """``<f>/<n>`` over each of the first ``n`` drive periods from the default start."""
+    z = np.array(initial_state(0, s.alpha, s.beta, s.amplitude, V), dtype=float)
+    off, on = liftoff_phases(s.amplitude)
+    count = np.zeros(3, np.int64)
+    out = np.empty(n)
+    for k in range(n):
+        acc = np.zeros(N_ACC)
+        assert advance_period(z, acc, count, s.alpha, s.beta, s.amplitude, V, off, on, 10**9)
+        out[k] = acc[0] / acc[1]
+    return out
+
+
+# ----------------------------------------------------------------- finding 1: certificate
+@pytest.mark.parametrize("seed", range(6))
+def test_no_sliding_certificate_for_a_jumping_body(seed):
+    """Eqs. (10)-(12) assume permanent contact: a jumping body is never 'proven' sliding."""
+    rng = np.random.default_rng(seed)
+    alpha = float(rng.uniform(0.05, 40.0))
+    s = vf.Dimensionless(alpha, alpha * float(rng.uniform(1.05, 5.0)),
+                         float(rng.uniform(1.02, 3.0)))
+    if abs(s.alpha - 1) < 0.05 or abs(s.beta - 1) < 0.05:
+        pytest.skip("resonance")
+    r = vf.friction_coefficient(s, vbar=float(rng.uniform(1.05, 2.0)))
+    assert r.status is not vf.Status.SLIDING
+    # pure forward slip with flight is no proof: either an orbit, or said not to be known
+    assert r.trusted or (r.status is vf.Status.NOT_CONVERGED and r.error == math.inf)
+    assert r.flight_fraction > 0.0  # a jumping body is in flight part of every period
+
+
+@pytest.mark.parametrize("alpha,beta,a,vbar", [(10.467, 49.110, 1.302, 1.460),
+                                               (15.730, 56.390, 2.761, 1.314)])
+def test_jumping_points_above_vstar_that_were_falsely_proven(alpha, beta, a, vbar):
+    """Found by a user: 'continuous sliding, mu = 1, proven'; the truth is below 1."""
+    s = vf.Dimensionless(alpha, beta, a)
+    r = vf.friction_coefficient(s, vbar=vbar)
+    V = float(s.vbar_to_inertial(vbar))
+    m = _period_means(s, V, 400)
+    assert r.mu_ratio < 0.999
+    assert abs(m[-1] - r.mu_ratio) <= r.error + 1e-12
+
+
+def test_certificate_still_proves_sliding_where_the_contact_stays_closed():
+    s = vf.Dimensionless(0.5, 2.0, 0.5)
+    V = float(s.vbar_to_inertial(1.5))
+    y, xd = -1.0 / s.alpha - s.amplitude / (s.alpha - 1.0), V  # the sliding orbit, eq. (7)
+    assert sliding_certificate(y, xd, 1, s.alpha, s.beta, s.amplitude, V)
+    assert not sliding_certificate(y, xd, 1, s.alpha, s.beta, 1.5, 3 * V)  # a > 1: never
+    r = vf.friction_coefficient(s, vbar=1.5)
+    assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0 and r.trusted
+    # from the default start an undamped free oscillation survives and sticks now and
+    # then: the orbit is neutral, the message says so and names no settling time
+    assert r.multiplier == pytest.approx(1.0, abs=1e-6)
+    assert math.isnan(r.settling_periods) and "neutrally stable" in r.message
+    assert abs(_period_means(s, V, 4000).mean() - 1.0) < 1e-4
+
+
+# ----------------------------------------------------------------- finding 2: error
+@pytest.mark.parametrize("p", [(0.5, 2.0, 0.5, 0.3), (0.01, 0.02, 0.5, 0.5),
+                               (0.5, 2.0, 1.5, 0.5), (2.0, 5.0, 0.8, 0.4),
+                               (31.083, 33.976, 0.8507, 0.23652)])
+def test_periodic_error_bounds_the_distance_to_the_long_time_mean(p):
+    """The error of a periodic result bounds |mu - lim of period means| (same start)."""
+    s = vf.Dimensionless(*p[:3])
+    r = vf.friction_coefficient(s, vbar=p[3])
+    assert r.status is vf.Status.PERIODIC
+    n = int(min(r.settling_periods * 1.5 + 200, 300_000))
+    m = _period_means(s, r.v_inertial, n)
+    tail = m[-r.period * 20:].reshape(-1, r.period).mean(axis=1)
+    assert np.max(np.abs(tail - r.mu_ratio)) <= r.error
+    # and the estimate is not vacuous: it is far below the tolerance of trust
+    assert r.error < 1e-9
+
+
+@pytest.mark.parametrize("p", [(3.7775, 69.8283, 0.4093, 0.4286), (3.6299, 30.607, 1.1909, 0.6844),
+                               (4.1131, 32.7758, 0.1751, 0.0635)])
+def test_averaged_error_bounds_the_distance_to_a_long_run(p):
+    """An averaged result (no orbit within the period bound) against 8x more periods."""
+    s = vf.Dimensionless(*p[:3])
+    r = vf.friction_coefficient(s, v_inertial=p[3])
+    assert r.status is vf.Status.AVERAGED, r.message
+    m = _period_means(s, p[3], 8 * r.periods)
+    long_mean = m[len(m) // 2:].mean()
+    assert abs(r.mu_ratio - long_mean) <= r.error
+    assert r.window_min <= r.mu_ratio <= r.window_max
+
+
+def test_not_converged_error_is_the_window_disagreement():
+    s = vf.Dimensionless(0.01, 1.01, 1.0)
+    nc = vf.friction_coefficient(s, vbar=0.02, settings=vf.SolverSettings(max_periods=256))
+    assert nc.status is vf.Status.NOT_CONVERGED and not nc.trusted
+    assert nc.error > 0.0 and nc.window_min <= nc.mu_ratio <= nc.window_max
+
+
+def test_failed_result_has_no_error_estimate_and_is_not_trusted():
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3,
+                                settings=vf.SolverSettings(max_events=3))
+    assert r.status is vf.Status.FAILED
+    assert r.error == math.inf and not r.trusted
+    assert "failed" in r.message
+
+
+# ----------------------------------------------------------------- finding 3: trusted
+def test_trusted_is_status_and_error_against_the_settings_tolerance():
+    s = vf.Dimensionless(0.01, 1.01, 1.0)  # near the contact resonance: does not settle
+    c = vf.friction_coefficient(s, vbar=np.array([0.02, 0.5, 3.0]),
+                                settings=vf.SolverSettings(max_periods=2000))
+    expect = vf.SolverSettings().trusted(
+        np.array([list(vf.solver.STATUS_BY_CODE.values()).index(x) for x in c.status]) * 0
+        + np.array([{v: k for k, v in vf.solver.STATUS_BY_CODE.items()}[x] for x in c.status]),
+        c.error)
+    assert np.array_equal(c.trusted, expect)
+    assert np.array_equal(c.trusted, c.success & (c.error <= 1e-5))
+    strict = vf.SolverSettings(tol_trusted=1e-14)
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, settings=strict)
+    assert r.status is vf.Status.PERIODIC and r.error > 1e-14 and not r.trusted
+
+
+# ----------------------------------------------------------------- finding 5: settling
+@pytest.mark.parametrize("p", [(31.083, 33.976, 0.8507, 0.23652), (0.5, 2.0, 0.5, 0.3),
+                               (10.467, 49.110, 1.302, 1.460)])
+def test_settling_time_and_multiplier_match_a_long_integration(p):
+    s = vf.Dimensionless(*p[:3])
+    r = vf.friction_coefficient(s, vbar=p[3])
+    assert r.status is vf.Status.PERIODIC and r.period == 1
+    assert 0.0 < r.multiplier < 1.0  # attracting
+    n = int(r.settling_periods * 1.5 + 100)
+    dev = np.abs(_period_means(s, r.v_inertial, n) - r.mu_ratio)
+    outside = np.flatnonzero(dev > r.error)
+    measured = outside[-1] + 1 if outside.size else 0
+    assert 0.7 * r.settling_periods - 20 <= measured <= 1.05 * r.settling_periods + 20
+    # the multiplier is the rate at which the period means approach the orbit
+    k = np.arange(measured // 4, measured // 2)
+    k = k[dev[k] > 1e3 * r.error]
+    if k.size > 10:
+        rate = np.exp(np.polyfit(k, np.log(dev[k]), 1)[0])
+        assert rate == pytest.approx(r.multiplier, abs=0.1 * (1 - r.multiplier))
+
+
+def test_slow_settling_is_said_in_the_message():
+    r = vf.friction_coefficient(vf.Dimensionless(31.083, 33.976, 0.8507), vbar=0.23652)
+    assert r.settling_periods > 1000
+    assert "multiplier" in r.message and "periods" in r.message
+    fast = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3)
+    assert "slowly" not in fast.message
+
+
+# ----------------------------------------------------------------- simulate
+def test_simulate_steady_refuses_an_unsettled_point_and_unknown_starts():
+    s = vf.Dimensionless(0.01, 1.01, 1.0)
+    with pytest.raises(ValueError, match="no trusted steady state"):
+        vf.simulate(s, vbar=0.02, initial="steady",
+                    settings=vf.SolverSettings(max_periods=500))
+    with pytest.raises(ValueError, match="initial must be"):
+        vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, initial="stady")
+
+
+def test_simulate_final_state_lies_within_the_history():
+    s = vf.Dimensionless(0.5, 2.0, 0.5)
+    h = vf.simulate(s, vbar=0.3, periods=2.5)
+    ref = vf.simulate(s, vbar=0.3, periods=2.0)
+    assert h.final_state == ref.final_state
+    assert h.tau[-1] == pytest.approx(2.5 * 2 * math.pi)
