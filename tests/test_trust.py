@@ -89,7 +89,7 @@ def test_periodic_error_bounds_the_distance_to_the_long_time_mean(p):
     assert r.error < 1e-9
 
 
-@pytest.mark.parametrize("p", [(3.7775, 69.8283, 0.4093, 0.4286), (3.6299, 30.607, 1.1909, 0.6844),
+@pytest.mark.parametrize("p", [(3.7775, 69.8283, 0.4093, 0.4286),
                                (4.1131, 32.7758, 0.1751, 0.0635)])
 def test_averaged_error_bounds_the_distance_to_a_long_run(p):
     """An averaged result (no orbit within the period bound) against 8x more periods."""
