@@ -102,6 +102,15 @@ def test_cli_mu_json_lines():
     assert json.loads(case4.stdout)["mu_ratio"] == pytest.approx(0.7427, abs=1e-3)
 
 
+def test_cli_mu_exits_3_with_a_count_when_a_point_is_not_trusted():
+    out = _cli("mu", "--alpha", "0.01", "--beta", "1.01", "--amplitude", "1",
+               "--vbar", "0.02,3", "--max-periods", "300")
+    assert out.returncode == 3, out.stderr
+    assert "NOT TRUSTED" in out.stdout
+    line, = out.stderr.strip().splitlines()
+    assert "1 of 2 points are not trusted" in line
+
+
 @pytest.mark.parametrize("args,needle", [
     (("--alpha", "0.5", "--beta", "0.2", "--amplitude", "0.5", "--vbar", "0.3"), "beta"),
     (("--alpha", "-1", "--beta", "2", "--amplitude", "0.5", "--vbar", "0.3"), "alpha"),

@@ -8,6 +8,7 @@ import sys
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
 import typer
 
 app = typer.Typer(
@@ -31,6 +32,20 @@ def friendly(func: Callable[..., Any]) -> Callable[..., Any]:
             raise typer.Exit(2) from None
 
     return wrapper
+
+
+UNTRUSTED_EXIT = 3  # exit code when any computed point is not trusted
+
+
+def exit_if_untrusted(trusted: Any, tol_trusted: float) -> None:
+    """One line on stderr and exit 3 when any point is not trusted (``SolverSettings``)."""
+    flags = np.asarray(trusted, dtype=bool)
+    bad = int(flags.size - np.count_nonzero(flags))
+    if bad:
+        print(f"warning: {bad} of {flags.size} points are not trusted (status not converged "
+              f"or error > tol_trusted = {tol_trusted:g}); exit code {UNTRUSTED_EXIT}",
+              file=sys.stderr)
+        raise typer.Exit(UNTRUSTED_EXIT)
 
 
 def parse_float(text: str, name: str) -> float:

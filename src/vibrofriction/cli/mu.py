@@ -10,7 +10,7 @@ import typer
 
 from ..params import Dimensionless
 from ..solver import SolverSettings, friction_coefficient
-from ._app import app, friendly, json_number, parse_float, parse_list
+from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
 
 @app.command("mu")
@@ -27,6 +27,9 @@ def mu_command(
         "list allowed")] = None,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
     max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
+    tol_trusted: Annotated[float, typer.Option(
+        help="largest error of a trusted point; exit code 3 if any point is not trusted")
+    ] = SolverSettings.tol_trusted,
     as_json: Annotated[bool, typer.Option("--json", help="one JSON object per point")] = False,
 ) -> None:
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25)."""
@@ -34,7 +37,7 @@ def mu_command(
                            parse_float(amplitude, "amplitude"))
     if (vbar is None) == (v_inertial is None):
         raise ValueError("give exactly one of --vbar and --v-inertial")
-    settings = SolverSettings(max_periods=max_periods)
+    settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
     if vbar is not None:
         speeds = np.array(parse_list(vbar, "vbar"))
         results = friction_coefficient(system, vbar=speeds, initial=initial, settings=settings)
@@ -53,6 +56,8 @@ def mu_command(
                 "amplitude": system.amplitude, "vbar": json_number(r.vbar),
                 "v_inertial": r.v_inertial, "mu_ratio": json_number(r.mu_ratio),
                 "status": r.status.value, "period": r.period, "error": json_number(r.error),
+                "trusted": r.trusted, "multiplier": json_number(r.multiplier),
+                "settling_periods": json_number(r.settling_periods),
                 "periods": r.periods, "events": r.events,
                 "stick_fraction": json_number(r.stick_fraction),
                 "slip_fraction": json_number(r.slip_fraction),
@@ -61,4 +66,6 @@ def mu_command(
         else:
             typer.echo(f"{r.vbar:>10.4g} {r.v_inertial:>12.5g} {r.mu_ratio:>14.10f} "
                        f"{r.error:>9.1e}  {r.status.value}"
-                       + (f" (period {r.period})" if r.period else ""))
+                       + (f" (period {r.period})" if r.period else "")
+                       + ("" if r.trusted else "  NOT TRUSTED"))
+    exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)
