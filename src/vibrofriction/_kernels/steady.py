@@ -445,7 +445,7 @@ def check_average(chk_c, nchk, final, tol_mean, win, out_f):
     else:
         m0 = chk_c[i1, A_F] / chk_c[i1, A_N]
     out_f[O_MU] = m1
-    out_f[O_ERR] = abs(m1 - m0)
+    out_f[O_ERR] = max(abs(m1 - m0), ROUNDOFF_MU * (1.0 + abs(m1)))
     out_f[O_WMIN] = min(m0, m1)
     out_f[O_WMAX] = max(m0, m1)
     if _pure_forward_slip(win):
