@@ -36,7 +36,8 @@ def test_continuous_sliding_above_critical_velocity_gives_exactly_one(alpha, bet
     r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), vbar=vbar)
     assert r.trusted
     assert r.mu_ratio == pytest.approx(1.0, abs=1e-12)
-    assert r.stick_fraction == 0.0
+    # rare grazing sticks of the undamped free oscillation may remain (docs/solver.md)
+    assert r.stick_fraction < 1e-6
 
 
 @pytest.mark.parametrize("a", [0.0, 0.2, 0.5, 0.9, 1.0, 1.5])

@@ -247,7 +247,8 @@ def describe(r: FrictionResult) -> str:
         parts.append(
             f"the orbit is neutrally stable (leading Floquet multiplier {r.multiplier:.9g}): "
             "the motion from the initial state need not approach it, and a transient (e.g. "
-            "rare sticks of an undamped free oscillation) can persist for many periods")
+            "rare sticks of an undamped free oscillation) can persist for many periods; "
+            "the error is that of the orbit's mean, not of finite-time averages of the motion")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
     if math.isfinite(r.modulation_period):

@@ -202,11 +202,13 @@ def spectral_radius(jac, nd):
 def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
     """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
 
-    Only attracting orbits are accepted (spectral radius of ``DP^p`` below 1), so
-    the answer is the attractor the iteration was approaching, not a nearby
-    unstable orbit.  An iterate whose image is in another phase on the section
-    (the orbit sticks at ``tau = 2 pi k`` where the guess slid, or vice versa)
-    continues in that phase's coordinates.  Returns ``(ok, y, x', f, phase, events)``.
+    Only attracting orbits are accepted (spectral radius of ``DP^p`` below
+    ``NEUTRAL``), so the answer is the attractor the iteration was approaching, not a
+    nearby unstable orbit, nor a neutral one (the undamped free oscillation of pure
+    slip) that the motion from the start need never approach.  An iterate whose
+    image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
+    where the guess slid, or vice versa) continues in that phase's coordinates.
+    Returns ``(ok, y, x', f, phase, events)``.
     """
     ph_in = ph
     rigid = math.isinf(beta)
@@ -237,7 +239,7 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
         r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
         res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale0:
-            if not have_jac or not spectral_radius(jac, nd) < ATTRACTING:
+            if not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
                 return False, y, xd, f, ph_in, events
             return True, y0, xd0, f0, ph, events
         if not have_jac or res > 0.25 * res_prev:
@@ -383,7 +385,9 @@ def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, 
     err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)
     if first_jump >= 0 and not lam < NEUTRAL:
-        settle = math.nan  # a neutral orbit (undamped slip): the motion need not approach it
+        # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
+        # need not approach it (no settling time; said in the message, docs/solver.md)
+        settle = math.nan
     elif first_jump >= 0:
         settle = float(first_jump)
         e0 = abs(mu_first - mu)
