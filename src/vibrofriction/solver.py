@@ -184,9 +184,8 @@ class FrictionResult:
     ``period`` drive periods; nan when not periodic); ``settling_periods`` the drive
     periods the motion from the initial state needs to come within ``error`` of the
     answer; ``window_min``/``window_max`` the range of the averaging windows'
-    means (averaged and not converged results); ``modulation_period`` the period,
-    in drive periods, of a slow modulation found in a motion that does not settle
-    (nan if none); ``final_state`` the last section state (a start for continuation).
+    means (averaged and not converged results); ``final_state`` the last section
+    state (a start for continuation).
     """
 
     mu_ratio: float
@@ -204,7 +203,6 @@ class FrictionResult:
     settling_periods: float
     window_min: float
     window_max: float
-    modulation_period: float
     final_state: SectionState | None
     system: Dimensionless
     v_inertial: float
@@ -251,9 +249,10 @@ def describe(r: FrictionResult) -> str:
             "the error is that of the orbit's mean, not of finite-time averages of the motion")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
-    if math.isfinite(r.modulation_period):
-        parts.append(f"the motion is modulated with a period of about "
-                     f"{r.modulation_period:.4g} drive periods (docs/modulation.md)")
+    if r.status is Status.NOT_CONVERGED:
+        parts.append("the value is the mean of the last window only, not a long-time "
+                     "average: the motion has not settled (near beta = 1 it can be modulated "
+                     "for thousands of periods)")
     return "; ".join(parts)
 
 
@@ -276,7 +275,6 @@ class FrictionResults:
     settling_periods: NDArray[np.float64]
     window_min: NDArray[np.float64]
     window_max: NDArray[np.float64]
-    modulation_period: NDArray[np.float64]
     final_state: NDArray[np.object_]
     system: Dimensionless
     v_inertial: NDArray[np.float64]
@@ -406,7 +404,7 @@ def section_state(y: float, xd: float, f: float, phase: int) -> SectionState | N
 #: Columns of :func:`solve_points` (and of the kernels' output rows), in order.
 FLOAT_COLUMNS = ("mu_ratio", "error", "stick_fraction", "slip_fraction",
                  "reverse_slip_fraction", "flight_fraction", "y", "x_dot", "f", "multiplier",
-                 "settling_periods", "window_min", "window_max", "modulation_period")
+                 "settling_periods", "window_min", "window_max")
 INT_COLUMNS = ("status", "period", "periods", "events", "phase", "degenerate")
 
 
@@ -539,7 +537,7 @@ def friction_coefficient(
 _RESULT_COLUMNS = ("mu_ratio", "error", "trusted", "period", "periods", "events",
                    "stick_fraction", "slip_fraction", "reverse_slip_fraction",
                    "flight_fraction", "multiplier", "settling_periods", "window_min",
-                   "window_max", "modulation_period")
+                   "window_max")
 
 
 def _result(cols: dict, dim: Dimensionless, V: float) -> FrictionResult:
