@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
-from vibrofriction.sweep import make_plan, sweep
-from vibrofriction.sweep._compute import warm_up
+from vibrofriction.sweep import identity, make_plan, sweep, warm_up
+from vibrofriction.sweep.pool import process_pool
 
 #: the throughput grid: 20 000 points in 20 blocks of exactly 1000 points
 GRID = dict(alpha=np.geomspace(0.01, 0.5, 20), beta=[2.0, 5.0, 20.0, 50.0, 200.0],
@@ -128,12 +128,8 @@ def _best(fn, repeat: int) -> tuple[float, float, float]:
 
 def _pool_startup(workers: int) -> float:
     """Wall time to start `workers` local processes and load the kernels in each."""
-    from concurrent.futures import ProcessPoolExecutor
-
-    from vibrofriction.sweep._run import _context, _worker_init
-
     t = time.perf_counter()
-    with ProcessPoolExecutor(workers, mp_context=_context(), initializer=_worker_init) as pool:
+    with process_pool(workers, warm_up) as pool:
         list(pool.map(abs, range(workers)))
     return time.perf_counter() - t
 
@@ -142,8 +138,7 @@ RAW_SCRIPT = """
 import sys, time
 sys.path.insert(0, {bench!r})
 from bench_sweep import GRID, CHUNK
-from vibrofriction.sweep import make_plan
-from vibrofriction.sweep._compute import compute_block, warm_up
+from vibrofriction.sweep import compute_block, make_plan, warm_up
 plan = make_plan(**GRID, chunk_size=CHUNK)
 warm_up()
 print("ready", flush=True)
@@ -367,8 +362,6 @@ def main() -> None:
     parser.add_argument("--seconds", type=float, default=None,
                         help="memory: kill the sweep after this long (default: run to the end)")
     args = parser.parse_args()
-    from vibrofriction.sweep._compute import identity
-
     header = {"python": platform.python_version(), "machine": platform.machine(),
               "cores": os.cpu_count(), "command": " ".join(sys.argv),
               "vibrofriction": identity()[0], "solver_fingerprint": identity()[1]}

@@ -75,11 +75,11 @@ def test_parse_axis_errors(text, message) -> None:
 @pytest.mark.parametrize(("changes", "message"), [
     (dict(alpha=[]), r"alpha: empty grid"),
     (dict(vbar=np.array([])), r"vbar: empty grid"),
-    (dict(alpha=[0.1, math.nan]), r"alpha must be finite, got nan"),
-    (dict(beta=[2.0, math.nan]), r"beta must be finite \(or inf\), got nan"),
-    (dict(amplitude=[0.5, math.inf]), r"amplitude must be finite, got inf"),
-    (dict(vbar=[0.1, -0.1]), r"vbar must be >= 0 at every grid point, got -0.1"),
-    (dict(alpha=[0.0, 0.1]), r"alpha must be > 0 at every grid point, got 0.0"),
+    (dict(alpha=[0.1, math.nan]), r"alpha must be finite and > 0, got nan"),
+    (dict(beta=[2.0, math.nan]), r"beta must be > 0 \(math.inf allowed\), got nan"),
+    (dict(amplitude=[0.5, math.inf]), r"amplitude must be finite and >= 0, got inf"),
+    (dict(vbar=[0.1, -0.1]), r"vbar must be finite and >= 0, got -0.1"),
+    (dict(alpha=[0.0, 0.1]), r"alpha must be finite and > 0, got 0.0"),
     (dict(alpha=[0.1, 3.0]), r"beta must be > alpha at every grid point: beta = 2.0 <= "
                              r"alpha = 3.0"),
     (dict(beta=[0.3, 2.0]), r"beta must be > alpha at every grid point"),

@@ -19,8 +19,7 @@ import zarr
 import vibrofriction.sweep as vsweep
 from test_sweep import GRID, assert_bitwise
 from vibrofriction.solver import SolverSettings
-from vibrofriction.sweep import open_atlas, sweep
-from vibrofriction.sweep._compute import compute_block
+from vibrofriction.sweep import compute_block, open_atlas, sweep
 
 
 @pytest.fixture(scope="module")

@@ -14,16 +14,16 @@ processes.
 
 from __future__ import annotations
 
+import functools
 import math
-import multiprocessing as mp
 import os
 import platform
 import time
 from collections import deque
-from collections.abc import Callable, Mapping, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 from tqdm.auto import tqdm
@@ -34,6 +34,9 @@ from .figures.recipe import Check, Recipe, Rendered, Table, curve_table, max_dev
 from .figures.series import Curve, Series, series_at_vbar, solve
 from .params import Dimensionless
 from .solver import STATUS_BY_CODE, simulate, solve_points
+
+if TYPE_CHECKING:
+    from .sweep.pool import Task
 
 __all__ = ["Reproduction", "check_recipe", "reproduce", "recipes"]
 
@@ -110,14 +113,19 @@ def recipes(quick: bool = False) -> list[Recipe]:
     return [*all_recipes(quick), check_recipe(quick)]
 
 
-# --------------------------------------------------------------------------- workers
-# Set in the parent before the worker processes fork; read by the workers.
-_RECIPES: list[Recipe] = []
-_OUT: Path | None = None
+# --------------------------------------------------------------------------- tasks
+# The functions below run in the worker processes of the package's one pool
+# (vibrofriction.sweep.pool), or in this process with workers=1.  They get everything
+# as arguments: the recipes, which hold closures, are rebuilt in the worker from
+# ``quick`` and looked up by name.
+@functools.cache
+def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
+    return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(alpha, beta, amplitude, v_inertial) -> dict[str, np.ndarray]:
-    return solve_points(alpha, beta, amplitude, v_inertial)
+def _solve_chunk(alpha, beta, amplitude, v_inertial) -> tuple[int, dict[str, np.ndarray]]:
+    """``(pid, solve_points(...))``: the pid says which process did the work."""
+    return os.getpid(), solve_points(alpha, beta, amplitude, v_inertial)
 
 
 @dataclass(frozen=True)
@@ -132,20 +140,21 @@ class _Done:
     untrusted: int
     points: int
     seconds: float
+    pid: int
 
 
-def _render(index: int, curves: Mapping[str, Curve]) -> _Done:
+def _render(index: int, quick: bool, name: str, out: Path,
+            curves: Mapping[str, Curve]) -> _Done:
     t0 = time.perf_counter()
-    r = _RECIPES[index]
-    assert _OUT is not None
-    out: Rendered = r.render(curves)
+    r = _recipes_by_name(quick)[name]
+    rendered: Rendered = r.render(curves)
     files: list[str] = []
-    if out.figure is not None:
-        files += [p.name for p in style.save(out.figure, _OUT, r.name)]
-    data = _OUT / "data"
-    for k, table in enumerate(out.tables):
-        name = r.name if len(out.tables) == 1 else f"{r.name}_{k}"
-        files.append("data/" + table.write_csv(data / f"{name}.csv").name)
+    if rendered.figure is not None:
+        files += [p.name for p in style.save(rendered.figure, out, r.name)]
+    data = out / "data"
+    for k, table in enumerate(rendered.tables):
+        stem = r.name if len(rendered.tables) == 1 else f"{r.name}_{k}"
+        files.append("data/" + table.write_csv(data / f"{stem}.csv").name)
     suspicious = []
     untrusted = 0
     for c in curves.values():
@@ -157,8 +166,9 @@ def _render(index: int, curves: Mapping[str, Curve]) -> _Done:
                 f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
-    return _Done(index, tuple(files), out.checks, out.notes, tuple(suspicious), untrusted,
-                 sum(s.size for s in r.series), time.perf_counter() - t0)
+    return _Done(index, tuple(files), rendered.checks, rendered.notes, tuple(suspicious),
+                 untrusted, sum(s.size for s in r.series), time.perf_counter() - t0,
+                 os.getpid())
 
 
 # --------------------------------------------------------------------------- scheduler
@@ -205,9 +215,65 @@ def _curves(recipe: Recipe, batch: _Batch) -> dict[str, Curve]:
     return solve(recipe.series, runner=batch.runner)
 
 
+class _Schedule:
+    """The next task: rendering a recipe whose data are complete, else a chunk of points.
+
+    Called by :func:`vibrofriction.sweep.pool.run_tasks` (or :func:`_run_here`) each
+    time a slot is free; the largest recipes' chunks go first.
+    """
+
+    def __init__(self, todo: Sequence[Recipe], batches: list[_Batch], quick: bool, out: Path,
+                 pbar, fbar) -> None:
+        self.todo, self.batches, self.quick, self.out = todo, batches, quick, out
+        self.pbar, self.fbar = pbar, fbar
+        self.compute: deque[tuple[_Batch, np.ndarray]] = deque(
+            (b, idx) for b in sorted(batches, key=lambda b: -b.v_inertial.size)
+            for idx in b.chunks)
+        self.renders: deque[int] = deque(b.index for b in batches if b.remaining == 0)
+        self.done: list[_Done] = []
+        self.pids: set[int] = set()
+
+    def __call__(self) -> Task | None:
+        if self.renders:
+            i = self.renders.popleft()
+            args = (i, self.quick, self.todo[i].name, self.out,
+                    _curves(self.todo[i], self.batches[i]))
+            return _render, args, self._rendered
+        if self.compute:
+            b, idx = self.compute.popleft()
+            args = (b.alpha[idx], b.beta[idx], b.amplitude[idx], b.v_inertial[idx])
+            return _solve_chunk, args, functools.partial(self._solved, b, idx)
+        return None
+
+    def _solved(self, batch: _Batch, idx: np.ndarray,
+                result: tuple[int, dict[str, np.ndarray]]) -> None:
+        pid, cols = result
+        self.pids.add(pid)
+        batch.store(idx, cols)
+        self.pbar.update(idx.size)
+        if batch.remaining == 0:
+            self.renders.append(batch.index)
+
+    def _rendered(self, done: _Done) -> None:
+        self.pids.add(done.pid)
+        self.done.append(done)
+        self.fbar.update(1)
+
+
+def _run_here(schedule: _Schedule) -> None:
+    """Run every task of ``schedule`` in this process (``workers=1``)."""
+    while (task := schedule()) is not None:
+        func, args, done = task
+        done(func(*args))
+
+
 @dataclass(frozen=True)
 class Reproduction:
-    """What :func:`reproduce` wrote and measured."""
+    """What :func:`reproduce` wrote and measured.
+
+    ``workers`` is the size of the process pool (1: everything ran in the calling
+    process); ``processes`` the pids of the processes that solved or rendered.
+    """
 
     out: Path
     report: Path
@@ -218,13 +284,25 @@ class Reproduction:
     workers: int
     untrusted: int
     suspicious: tuple[str, ...]
+    processes: tuple[int, ...] = ()
 
 
 def _warm_up() -> None:
-    """Compile (or load from the numba cache) the kernels once, before the workers fork."""
+    """Compile (or load from the numba cache) the kernels the solving and rendering use."""
     solve_points(0.5, 2.0, 0.5, 0.3)
     solve_points(1.0, math.inf, 1.5, 0.3)
     simulate(Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=1, samples_per_period=8)
+
+
+def _select(todo: list[Recipe], only: Sequence[str] | None) -> list[Recipe]:
+    if only is None:
+        return todo
+    wanted = tuple(only)
+    chosen = [r for r in todo if r.name.startswith(wanted)]
+    if not chosen:
+        names = ", ".join(r.name for r in todo)
+        raise ValueError(f"only={list(wanted)!r} matches no figure; names: {names}")
+    return chosen
 
 
 def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = None,
@@ -235,48 +313,34 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     ----------
     out : output folder (created).
     quick : reduced velocity grids and maps (for CI); the figures keep their layout.
-    workers : processes for solving and rendering; default ``min(2, cpu count)``;
-        ``1`` runs everything in this process.  Results do not depend on it.
+    workers : processes for solving and rendering (the package's one process pool,
+        :mod:`vibrofriction.sweep.pool`); default ``min(2, available cores)``; ``1`` runs
+        everything in this process.  Results do not depend on it.
     progress : show tqdm progress bars (on stderr).
     only : names (or name prefixes, e.g. ``fig04``) of the recipes to run; default all.
     """
-    global _RECIPES, _OUT
+    from .sweep.pool import available_cores, check_workers, run_tasks
+
     t0 = time.perf_counter()
+    workers = min(2, available_cores()) if workers is None else check_workers(workers)
+    todo = _select(recipes(quick), only)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     (out / "data").mkdir(exist_ok=True)
-    todo = recipes(quick)
-    if only is not None:
-        wanted = tuple(only)
-        todo = [r for r in todo if r.name.startswith(wanted)]
-        if not todo:
-            names = ", ".join(r.name for r in recipes(quick))
-            raise ValueError(f"only={list(wanted)!r} matches no recipe; names: {names}")
-    _RECIPES, _OUT = todo, out
-    if workers is None:
-        workers = min(2, os.cpu_count() or 1)
-    if workers > 1 and "fork" not in mp.get_all_start_methods():
-        workers = 1  # the recipes hold closures: workers must inherit them
     batches = [_Batch.of(i, r, _CHUNK) for i, r in enumerate(todo)]
     n_points = sum(b.v_inertial.size for b in batches)
     bar_kw = {"disable": not progress, "dynamic_ncols": True, "leave": True}
     with tqdm(total=1, desc="compiling", unit="", **bar_kw) as bar:
         _warm_up()
         bar.update(1)
-    done: list[_Done] = []
     with tqdm(total=n_points, desc="solving", unit="pt", smoothing=0.1, **bar_kw) as pbar, \
             tqdm(total=len(todo), desc="figures", unit="fig", **bar_kw) as fbar:
+        schedule = _Schedule(todo, batches, quick, out, pbar, fbar)
         if workers == 1:
-            for b, r in zip(batches, todo, strict=True):
-                for idx in b.chunks:
-                    b.store(idx, _solve_chunk(b.alpha[idx], b.beta[idx], b.amplitude[idx],
-                                              b.v_inertial[idx]))
-                    pbar.update(idx.size)
-                done.append(_render(b.index, _curves(r, b)))
-                fbar.update(1)
-        else:
-            done = _run_pool(todo, batches, workers, pbar, fbar)
-    done.sort(key=lambda d: d.index)
+            _run_here(schedule)
+        else:  # one extra task in flight keeps every core busy
+            run_tasks(schedule, workers=workers, warm_up=_warm_up, in_flight=workers + 1)
+    done = sorted(schedule.done, key=lambda d: d.index)
     seconds = time.perf_counter() - t0
     checks = tuple(c for d in done for c in d.checks)
     _write_deviations(out / "deviations.csv", checks)
@@ -286,54 +350,8 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
                          | {report, out / "deviations.csv"}))
     return Reproduction(out, report, files, checks, n_points, seconds, workers,
                         sum(d.untrusted for d in done),
-                        tuple(s for d in done for s in d.suspicious))
-
-
-def _run_pool(todo: Sequence[Recipe], batches: list[_Batch], workers: int, pbar, fbar
-              ) -> list[_Done]:
-    """Feed chunks to the pool, renders first as soon as a recipe's data are complete."""
-    compute: deque[tuple[_Batch, np.ndarray]] = deque(
-        (b, idx) for b in sorted(batches, key=lambda b: -b.v_inertial.size) for idx in b.chunks)
-    renders: deque[int] = deque(b.index for b in batches if b.remaining == 0)
-    running: dict[Future, Callable[[object], None]] = {}
-    done: list[_Done] = []
-    ctx = mp.get_context("fork")
-    with ProcessPoolExecutor(max_workers=workers, mp_context=ctx) as pool:
-        def submit_next() -> bool:
-            if renders:
-                i = renders.popleft()
-                fut = pool.submit(_render, i, _curves(todo[i], batches[i]))
-
-                def finish(res, _i=i) -> None:
-                    done.append(res)
-                    fbar.update(1)
-
-                running[fut] = finish
-                return True
-            if compute:
-                b, idx = compute.popleft()
-                fut = pool.submit(_solve_chunk, b.alpha[idx], b.beta[idx], b.amplitude[idx],
-                                  b.v_inertial[idx])
-
-                def store(res, _b=b, _idx=idx) -> None:
-                    _b.store(_idx, res)
-                    pbar.update(_idx.size)
-                    if _b.remaining == 0:
-                        renders.append(_b.index)
-
-                running[fut] = store
-                return True
-            return False
-
-        for _ in range(workers + 1):  # one extra task in flight keeps both cores busy
-            submit_next()
-        while running:
-            finished, _ = wait(list(running), return_when=FIRST_COMPLETED)
-            for fut in finished:
-                running.pop(fut)(fut.result())
-            while len(running) < workers + 1 and submit_next():
-                pass
-    return done
+                        tuple(s for d in done for s in d.suspicious),
+                        tuple(sorted(schedule.pids)))
 
 
 # --------------------------------------------------------------------------- writing

@@ -7,7 +7,7 @@ from typing import Annotated
 
 import typer
 
-from ..report import reproduce
+from ..report import recipes, reproduce
 from ._app import app, friendly
 
 
@@ -18,16 +18,20 @@ def reproduce_command(
         "reproduction"),
     quick: Annotated[bool, typer.Option("--quick", help="reduced grids (CI)")] = False,
     workers: Annotated[int | None, typer.Option(
-        help="processes for solving and rendering (default: min(2, CPUs)); results do not "
-        "depend on it")] = None,
+        help="processes for solving and rendering, >= 1 (default: min(2, cores); 1 = this "
+        "process only); results do not depend on it")] = None,
     progress: Annotated[bool, typer.Option(help="show progress bars")] = True,
     only: Annotated[list[str] | None, typer.Option(
         help="run only the figures whose names start with this (repeatable), e.g. fig04")
     ] = None,
 ) -> None:
     """Regenerate every figure of the paper (PNG + PDF), its data (CSV) and report.md."""
-    if workers is not None and workers < 1:
-        raise ValueError(f"workers must be >= 1, got {workers}")
+    from ..sweep.pool import check_workers
+
+    if workers is not None:
+        check_workers(workers, "--workers")
+    if only:
+        _check_only(only, quick)
     result = reproduce(out, quick=quick, workers=workers, progress=progress,
                        only=only or None)
     figures = sum(1 for f in result.files if f.suffix == ".png")
@@ -39,3 +43,12 @@ def reproduce_command(
     if result.suspicious:
         typer.echo(f"warning: {len(result.suspicious)} solver results look wrong "
                    "(listed in report.md)")
+
+
+def _check_only(only: list[str], quick: bool) -> None:
+    """ValueError naming ``--only`` and the figure names if a prefix matches nothing."""
+    names = [r.name for r in recipes(quick)]
+    unknown = [o for o in only if not any(n.startswith(o) for n in names)]
+    if unknown:
+        raise ValueError(f"--only {', '.join(map(repr, unknown))} matches no figure; "
+                         f"names: {', '.join(names)}")

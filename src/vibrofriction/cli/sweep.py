@@ -57,59 +57,118 @@ def sweep_command(
 ) -> None:
     """Compute an atlas of mu/mu0 (eq. 25) over a grid into a resumable zarr store.
 
+    Exit status 0 if every point is trusted (converged status and error <= tol_trusted),
+    3 if some are not (everything is still written), 2 for bad input.
+
     Example: vibrofriction sweep --alpha 1e-2:0.5:41:log --beta 2:400:20:log
     --amplitude 0.5 --vbar 0:1.2:121 --out atlas.zarr
     """
-    from ..sweep import parse_axis, sweep
+    from ..sweep.pool import check_workers
 
+    if workers is not None:
+        check_workers(workers, "--workers")
+    if scheduler is not None and workers is not None:
+        raise ValueError("give either --scheduler or --workers")
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
-    settings = SolverSettings(max_periods=max_periods)
-    common = dict(store=out, workers=workers, chunk_size=chunk_size, settings=settings,
-                  initial=initial, continuation=continuation, progress=progress,
-                  overwrite=overwrite)
-    if any(v is not None for v in phys.values()) or v0 is not None:
-        missing = [k for k, v in phys.items() if v is None] + (["v0"] if v0 is None else [])
-        if missing:
-            raise ValueError("a physical sweep needs every SI parameter and v0; missing "
-                             + ", ".join("--" + m.replace("_", "-") for m in missing))
-        if any(v is not None for v in (alpha, beta, amplitude, vbar, v_inertial)):
-            raise ValueError("give either the dimensionless parameters or the physical ones")
-        values = {k: parse_axis(v, k) for k, v in phys.items()}
-        base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
-        grid = dict(system=base, v0=parse_axis(v0, "v0"), **values)
-    else:
-        missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
-                   if v is None]
-        if missing:
-            raise ValueError("missing " + ", ".join("--" + m for m in missing))
-        if (vbar is None) == (v_inertial is None):
-            raise ValueError("give exactly one of --vbar and --v-inertial")
-        grid = dict(alpha=parse_axis(alpha, "alpha"), beta=parse_axis(beta, "beta"),
-                    amplitude=parse_axis(amplitude, "amplitude"))
-        if vbar is not None:
-            grid["vbar"] = parse_axis(vbar, "vbar")
-        else:
-            grid["v_inertial"] = parse_axis(v_inertial, "v_inertial")
-
+    grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
+                      v_inertial=v_inertial), phys, v0)
+    options = dict(store=out, chunk_size=chunk_size,
+                   settings=SolverSettings(max_periods=max_periods), initial=initial,
+                   continuation=continuation, progress=progress, overwrite=overwrite)
     start = time.perf_counter()
-    if scheduler is not None:
-        if workers is not None:
-            raise ValueError("give either --scheduler or --workers")
-        from distributed import Client
+    ds = _run(grid, options, scheduler=scheduler, workers=workers)
+    typer.echo(_summary(out, ds, time.perf_counter() - start))
+    untrusted = _untrusted(ds)
+    if untrusted:
+        typer.echo(untrusted, err=True)
+        raise typer.Exit(3)
 
-        common.pop("workers")
-        with Client(scheduler) as client:
-            ds = sweep(**grid, client=client, **common)
+
+def _flag(name: str) -> str:
+    return "--" + name.replace("_", "-")
+
+
+def _grid(dimensionless: dict[str, str | None], phys: dict[str, str | None],
+          v0: str | None) -> dict:
+    """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid."""
+    if any(v is not None for v in phys.values()) or v0 is not None:
+        if any(v is not None for v in dimensionless.values()):
+            raise ValueError("give either the dimensionless parameters or the physical ones")
+        return _physical_grid(phys, v0)
+    return _dimensionless_grid(**dimensionless)
+
+
+def _physical_grid(phys: dict[str, str | None], v0: str | None) -> dict:
+    from ..sweep import parse_axis
+
+    missing = [k for k, v in phys.items() if v is None] + (["v0"] if v0 is None else [])
+    if missing:
+        raise ValueError("a physical sweep needs every SI parameter and v0; missing "
+                         + ", ".join(_flag(m) for m in missing))
+    values = {k: parse_axis(v, k) for k, v in phys.items() if v is not None}
+    base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
+    return dict(system=base, v0=parse_axis(v0, "v0"), **values)
+
+
+def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
+                        vbar: str | None, v_inertial: str | None) -> dict:
+    from ..sweep import parse_axis
+
+    given = {"alpha": alpha, "beta": beta, "amplitude": amplitude}
+    missing = [n for n, v in given.items() if v is None]
+    if missing:
+        raise ValueError("missing " + ", ".join(_flag(m) for m in missing))
+    if (vbar is None) == (v_inertial is None):
+        raise ValueError("give exactly one of --vbar and --v-inertial")
+    grid = {n: parse_axis(v, n) for n, v in given.items() if v is not None}
+    if vbar is not None:
+        grid["vbar"] = parse_axis(vbar, "vbar")
     else:
-        ds = sweep(**grid, **common)
-    elapsed = time.perf_counter() - start
+        grid["v_inertial"] = parse_axis(v_inertial, "v_inertial")
+    return grid
+
+
+def _run(grid: dict, options: dict, *, scheduler: str | None, workers: int | None):
+    """The sweep, on the Dask cluster at ``scheduler`` or on local processes."""
+    from ..sweep import sweep
+
+    if scheduler is None:
+        return sweep(**grid, workers=workers, **options)
+    from distributed import Client
+
+    with Client(scheduler) as client:
+        return sweep(**grid, client=client, **options)
+
+
+def _summary(out: str, ds, elapsed: float) -> str:
+    """``OUT: N points (dims) in T s; status counts``."""
     codes, counts = np.unique(ds["status"].values, return_counts=True)
-    summary = ", ".join(f"{STATUS_BY_CODE[int(c)].value} {n}" for c, n in
-                        zip(codes, counts, strict=True) if int(c) in STATUS_BY_CODE)
+    statuses = ", ".join(f"{STATUS_BY_CODE[int(c)].value} {n}" for c, n in
+                         zip(codes, counts, strict=True) if int(c) in STATUS_BY_CODE)
     sizes = " x ".join(f"{d} {n}" for d, n in ds.sizes.items())
-    typer.echo(f"{out}: {int(np.prod(list(ds.sizes.values())))} points ({sizes}) "
-               f"in {elapsed:.1f} s; {summary}")
+    return (f"{out}: {int(np.prod(list(ds.sizes.values())))} points ({sizes}) "
+            f"in {elapsed:.1f} s; {statuses}")
+
+
+def _untrusted(ds) -> str:
+    """One line counting the points that are not trusted, by reason (empty if none)."""
+    trusted = np.asarray(ds["trusted"].values, dtype=bool)
+    if trusted.all():
+        return ""
+    status = np.asarray(ds["status"].values)
+    bad = ~trusted
+    converged = np.isin(status, [c for c, st in STATUS_BY_CODE.items() if st.ok])
+    parts = [f"status {STATUS_BY_CODE[int(c)].value}: {int(np.sum(bad & (status == c)))}"
+             for c in np.unique(status[bad & ~converged]) if int(c) in STATUS_BY_CODE]
+    pending = int(np.sum(bad & ~np.isin(status, list(STATUS_BY_CODE))))
+    if pending:
+        parts.append(f"not computed: {pending}")
+    large = int(np.sum(bad & converged))
+    if large:
+        parts.append(f"error > tol_trusted = {ds.attrs.get('solver_tol_trusted', 'nan'):g}: "
+                     f"{large}")
+    return f"{int(bad.sum())} of {bad.size} points are not trusted ({', '.join(parts)})"
 
 
 @app.command("plot")

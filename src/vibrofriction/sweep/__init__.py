@@ -23,12 +23,21 @@ import xarray as xr
 from numpy.typing import ArrayLike
 
 from ..solver import SolverSettings
-from ._compute import identity
-from ._grid import DEFAULT_CHUNK_SIZE, make_plan, parse_axis
-from ._run import available_cores, check_executor, run_blocks
+from ._compute import compute_block, identity, warm_up
+from ._grid import DEFAULT_CHUNK_SIZE, Plan, make_plan, parse_axis
+from ._run import check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
+from .edges import cell_edges, is_geometric
+from .pool import available_cores
 
-__all__ = ["available_cores", "make_plan", "open_atlas", "parse_axis", "plot_atlas", "sweep"]
+__all__ = ["Plan", "available_cores", "cell_edges", "compute_block", "fingerprint",
+           "identity", "is_geometric", "make_plan", "open_atlas", "parse_axis",
+           "plot_atlas", "sweep", "warm_up"]
+
+
+def fingerprint() -> str:
+    """Hash of the source code that computes a sweep's values (see :func:`identity`)."""
+    return identity()[1]
 
 
 def sweep(
@@ -76,6 +85,8 @@ def sweep(
         initial state, package version or solver source is an error.  ``None``: results in memory.
     client : a ``dask.distributed.Client``: run the blocks on its cluster.
     workers : local processes (default: all cores available); 1 runs in this process.
+        Workers die with the process that started them, even when it is killed
+        (:mod:`vibrofriction.sweep.pool`).
     chunk_size : points per block of work (and per zarr chunk), about.  An existing
         store keeps its own block shape.
     settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
@@ -92,11 +103,15 @@ def sweep(
     -------
     xarray.Dataset
         ``mu_ratio``, ``status`` (codes with ``flag_values``/``flag_meanings``),
-        ``error``, ``period``, ``periods``, ``events``, the stick/slip/reverse-slip/
-        flight fractions, ``v_inertial``, the final section state, and
-        ``critical_velocity`` (eq. 12) over the non-velocity parameters; units, long
-        names and symbols in the attributes, package version and solver settings in
-        the Dataset's attributes.  With a store the Dataset is opened lazily from it.
+        ``error``, ``trusted`` (converged status and ``error <= tol_trusted``, the
+        package's one notion, :meth:`~vibrofriction.solver.SolverSettings.trusted`),
+        ``period``, ``periods``, ``events``, the stick/slip/reverse-slip/flight
+        fractions, the orbit's ``multiplier``, ``settling_periods``, ``window_min``,
+        ``window_max``, ``modulation_period``, ``v_inertial``, the final section
+        state, and ``critical_velocity`` (eq. 12) over the non-velocity parameters;
+        units, long names and symbols in the attributes, package version and solver
+        settings (``solver_tol_trusted``, ...) in the Dataset's attributes.  With a
+        store the Dataset is opened lazily from it.
 
     Results are bitwise identical however the work is split (one process, local
     cores, a Dask cluster, any ``chunk_size``): each point depends on its own

@@ -12,15 +12,13 @@ from __future__ import annotations
 
 import functools
 import hashlib
-import math
 from pathlib import Path
 
 import numpy as np
 
 from .. import theory
-from .._kernels import codes
-from ..params import Physical
-from ..solver import SectionState, solve_points
+from ..params import Physical, vbar_to_inertial
+from ..solver import section_state, solve_points
 from ._grid import Plan
 from ._variables import point_variables, row_variables
 
@@ -81,12 +79,14 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     """``alpha, beta, amplitude`` per row, the row variables and ``V`` per (row, velocity)."""
     p = _rows(plan, block)
     al, be, am = p["alpha"], p["beta"], p["amplitude"]
-    c = np.asarray(theory.inertial_per_vbar(al, be, am), dtype=float).reshape(al.shape)
+    # V at vbar = 1, eq. (12): also where vbar does not exist (inf in case IV, 0 in case III)
+    critical = np.asarray(theory.inertial_per_vbar(al, be, am), dtype=float).reshape(al.shape)
     if plan.velocity.name == "vbar":
-        V = c[..., None] * vel  # = Dimensionless.vbar_to_inertial, element by element
+        V = np.asarray(vbar_to_inertial(al[..., None], be[..., None], am[..., None], vel),
+                       dtype=float).reshape((*al.shape, vel.size))
     else:
         V = np.broadcast_to(vel, (*al.shape, vel.size)).copy()
-    return (al, be, am), {"critical_velocity": c}, V
+    return (al, be, am), {"critical_velocity": critical}, V
 
 
 def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
@@ -106,14 +106,6 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     return (al, be, am), rows, V
 
 
-def _state(cols: dict[str, np.ndarray], j: int) -> SectionState | None:
-    """The final section state of point ``j`` of a solve, or None where there is none."""
-    y, xd, f, ph = (cols[k].ravel()[j] for k in ("y", "x_dot", "f", "phase"))
-    if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) or not 0 <= ph <= 2:
-        return None
-    return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(ph)])
-
-
 def _continuation(al, be, am, V, plan: Plan) -> dict[str, np.ndarray]:
     """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``."""
     rshape, nv = al.shape, V.shape[-1]
@@ -129,7 +121,8 @@ def _continuation(al, be, am, V, plan: Plan) -> dict[str, np.ndarray]:
                 out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
             for k, v in cols.items():
                 out[k][(*i, d, j)] = v
-            state = _state(cols, 0)
+            state = section_state(*(float(cols[k]) for k in ("y", "x_dot", "f")),
+                                  int(cols["phase"]))
     assert out is not None
     return out
 

@@ -24,8 +24,10 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..params import Physical
+from ..params import Dimensionless, Physical
 from ..solver import SolverSettings
+from ..validation import checked
+from ._variables import signature as variables_signature
 
 __all__ = [
     "DIMENSIONLESS",
@@ -71,23 +73,6 @@ def _axis(name: str, value: ArrayLike) -> Axis:
         raise ValueError(f"{name}: empty grid (no values given)")
     arr.setflags(write=False)
     return Axis(name, arr)
-
-
-def _first_bad(arr: NDArray[np.float64], bad: NDArray[np.bool_]) -> float:
-    return float(np.atleast_1d(arr)[np.atleast_1d(bad)][0])
-
-
-def _check(axis: Axis, *, minimum: float, strict: bool, allow_inf: bool = False) -> None:
-    v = axis.values
-    finite = np.isfinite(v) | (allow_inf & (v == math.inf))
-    if not np.all(finite):
-        raise ValueError(f"{axis.name} must be finite{' (or inf)' if allow_inf else ''}, "
-                         f"got {_first_bad(v, ~finite)!r}")
-    below = (v <= minimum) if strict else (v < minimum)
-    if np.any(below):
-        rel = ">" if strict else ">="
-        raise ValueError(f"{axis.name} must be {rel} {minimum:g} at every grid point, "
-                         f"got {_first_bad(v, below)!r}")
 
 
 def parse_axis(text: str, name: str) -> float | NDArray[np.float64]:
@@ -231,6 +216,7 @@ class Plan:
             "continuation": self.continuation,
             "version": self.version,
             "fingerprint": self.fingerprint,
+            "variables": variables_signature(self.kind, self.velocity.name),
         }
 
     def token(self) -> str:
@@ -284,9 +270,26 @@ def make_plan(
     fingerprint: str = "",
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work."""
-    from ..params import Dimensionless
+    settings = _checked_options(settings, initial, chunk_size)
+    if isinstance(system, Physical):
+        kind = "physical"
+        params, velocity = _physical_axes(system, dict(physical or {}), v0, dict(
+            alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar, v_inertial=v_inertial))
+    else:
+        kind = "dimensionless"
+        params, velocity = _dimensionless_axes(system, alpha, beta, amplitude, vbar,
+                                               v_inertial, dict(physical or {}), v0)
+    if continuation:
+        _check_continuation(velocity)
+    plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
+                initial=initial, continuation=bool(continuation), chunks=(),
+                version=version, fingerprint=fingerprint)
+    n_tail = int(continuation) + int(velocity.swept)
+    return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
 
-    physical = dict(physical or {})
+
+def _checked_options(settings: Any, initial: str, chunk_size: Any) -> SolverSettings:
+    """The solver settings (default ones for None); ValueError for a bad option."""
     settings = settings if settings is not None else SolverSettings()
     if not isinstance(settings, SolverSettings):
         raise TypeError(f"settings must be a SolverSettings, got {type(settings).__name__}")
@@ -295,79 +298,89 @@ def make_plan(
     if isinstance(chunk_size, bool) or not isinstance(chunk_size, int | np.integer) \
             or chunk_size < 1:
         raise ValueError(f"chunk_size must be an integer >= 1, got {chunk_size!r}")
+    return settings
 
-    if isinstance(system, Physical):
-        if any(v is not None for v in (alpha, beta, amplitude, vbar, v_inertial)):
-            raise ValueError("a Physical system is swept over its SI parameters and v0; "
-                             "alpha, beta, amplitude, vbar, v_inertial are not allowed")
-        unknown = sorted(set(physical) - set(PHYSICAL))
-        if unknown:
-            raise ValueError(f"unknown physical parameter(s) {unknown}; "
-                             f"choose from {list(PHYSICAL)}")
-        if v0 is None:
-            raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
-        base = dataclasses.asdict(system)
-        params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
-        velocity = _axis("v0", v0)
-        _check(velocity, minimum=0.0, strict=False)
-        for a in params:  # each value of each axis, with the others at their base values
-            for x in np.atleast_1d(a.values):
-                system.with_(**{a.name: float(x)})
-        _check_physical_corners(params, velocity)
-        kind = "physical"
-    else:
-        if physical:
-            raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
-                             "system (sweep(Physical(...), v0=..., ...))")
-        if v0 is not None:
-            raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
-        if isinstance(system, Dimensionless):
-            alpha = system.alpha if alpha is None else alpha
-            beta = system.beta if beta is None else beta
-            amplitude = system.amplitude if amplitude is None else amplitude
-        elif system is not None:
-            raise TypeError(f"system must be a Dimensionless or Physical, "
-                            f"got {type(system).__name__}")
-        missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
-                   if v is None]
-        if missing:
-            raise ValueError(f"missing parameter(s) {missing}: give a value or an array each")
-        given = [n for n, v in (("vbar", vbar), ("v_inertial", v_inertial)) if v is not None]
-        if len(given) != 1:
-            raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
-                             f"(got {given or 'none'})")
-        al, be, am = _axis("alpha", alpha), _axis("beta", beta), _axis("amplitude", amplitude)
-        velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
-        _check(al, minimum=0.0, strict=True)
-        _check(be, minimum=0.0, strict=True, allow_inf=True)
-        _check(am, minimum=0.0, strict=False)
-        _check(velocity, minimum=0.0, strict=False)
-        if not float(np.min(be.values)) > float(np.max(al.values)):
-            raise ValueError(
-                f"beta must be > alpha at every grid point: beta = {float(np.min(be.values))!r}"
-                f" <= alpha = {float(np.max(al.values))!r} (beta = (k_x + k_xc)/(m omega^2) "
-                "exceeds alpha = k_x/(m omega^2))")
-        if velocity.name == "vbar":
-            for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
-                                     (be, 1.0, "beta == 1 (case III: v0* is zero)"),
-                                     (am, 0.0, "amplitude == 0 (v0* is zero)")):
-                if np.any(axis.values == value):
-                    raise ValueError(f"vbar does not exist where {why}, and {axis.name} = "
-                                     f"{value:g} is in the grid: sweep v_inertial instead")
-        params = (al, be, am)
-        kind = "dimensionless"
 
-    if continuation:
-        if not velocity.swept or len(velocity) < 2:
-            raise ValueError(f"continuation needs a swept velocity axis ({velocity.name}) "
-                             "with at least two values")
-        if not np.all(np.diff(velocity.values) > 0):
-            raise ValueError(f"continuation needs {velocity.name} strictly increasing")
-    plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
-                initial=initial, continuation=bool(continuation), chunks=(),
-                version=version, fingerprint=fingerprint)
-    n_tail = int(continuation) + int(velocity.swept)
-    return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
+def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLike | None,
+                   dimensionless: dict[str, ArrayLike | None]) -> tuple[tuple[Axis, ...], Axis]:
+    """The SI axes (canonical order) and ``v0`` of a sweep around ``system``."""
+    if any(v is not None for v in dimensionless.values()):
+        raise ValueError("a Physical system is swept over its SI parameters and v0; "
+                         "alpha, beta, amplitude, vbar, v_inertial are not allowed")
+    unknown = sorted(set(physical) - set(PHYSICAL))
+    if unknown:
+        raise ValueError(f"unknown physical parameter(s) {unknown}; "
+                         f"choose from {list(PHYSICAL)}")
+    if v0 is None:
+        raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
+    base = dataclasses.asdict(system)
+    params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
+    velocity = _axis("v0", v0)
+    checked("v0", velocity.values, minimum=0.0)
+    for a in params:  # each value of each axis, with the others at their base values
+        for x in np.atleast_1d(a.values):
+            system.with_(**{a.name: float(x)})
+    _check_physical_corners(params, velocity)
+    return params, velocity
+
+
+def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | None,
+                        amplitude: ArrayLike | None, vbar: ArrayLike | None,
+                        v_inertial: ArrayLike | None, physical: dict[str, ArrayLike],
+                        v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
+    """The ``alpha, beta, amplitude`` axes and the velocity axis (``vbar`` or ``v_inertial``)."""
+    if physical:
+        raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
+                         "system (sweep(Physical(...), v0=..., ...))")
+    if v0 is not None:
+        raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
+    if isinstance(system, Dimensionless):
+        alpha = system.alpha if alpha is None else alpha
+        beta = system.beta if beta is None else beta
+        amplitude = system.amplitude if amplitude is None else amplitude
+    elif system is not None:
+        raise TypeError(f"system must be a Dimensionless or Physical, "
+                        f"got {type(system).__name__}")
+    missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
+               if v is None]
+    if missing:
+        raise ValueError(f"missing parameter(s) {missing}: give a value or an array each")
+    given = [n for n, v in (("vbar", vbar), ("v_inertial", v_inertial)) if v is not None]
+    if len(given) != 1:
+        raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
+                         f"(got {given or 'none'})")
+    al, be, am = _axis("alpha", alpha), _axis("beta", beta), _axis("amplitude", amplitude)
+    velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
+    checked("alpha", al.values, minimum=0.0, strict=True)
+    checked("beta", be.values, minimum=0.0, strict=True, allow_inf=True)
+    checked("amplitude", am.values, minimum=0.0)
+    checked(velocity.name, velocity.values, minimum=0.0)
+    if not float(np.min(be.values)) > float(np.max(al.values)):
+        raise ValueError(
+            f"beta must be > alpha at every grid point: beta = {float(np.min(be.values))!r}"
+            f" <= alpha = {float(np.max(al.values))!r} (beta = (k_x + k_xc)/(m omega^2) "
+            "exceeds alpha = k_x/(m omega^2))")
+    if velocity.name == "vbar":
+        _check_vbar_exists(al, be, am)
+    return (al, be, am), velocity
+
+
+def _check_vbar_exists(al: Axis, be: Axis, am: Axis) -> None:
+    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16)."""
+    for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
+                             (be, 1.0, "beta == 1 (case III: v0* is zero)"),
+                             (am, 0.0, "amplitude == 0 (v0* is zero)")):
+        if np.any(axis.values == value):
+            raise ValueError(f"vbar does not exist where {why}, and {axis.name} = "
+                             f"{value:g} is in the grid: sweep v_inertial instead")
+
+
+def _check_continuation(velocity: Axis) -> None:
+    if not velocity.swept or len(velocity) < 2:
+        raise ValueError(f"continuation needs a swept velocity axis ({velocity.name}) "
+                         "with at least two values")
+    if not np.all(np.diff(velocity.values) > 0):
+        raise ValueError(f"continuation needs {velocity.name} strictly increasing")
 
 
 def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis) -> None:

@@ -1,7 +1,11 @@
 """Quick look at an atlas: curves along one dimension, or a map over two.
 
-matplotlib is imported here only (lazily, by :func:`vibrofriction.sweep.plot_atlas`),
-and without pyplot, so it works headless.
+Drawn with xarray's own plotting (``DataArray.plot.line``, ``.plot.pcolormesh``) on
+a matplotlib ``Figure`` made without pyplot, so it works headless; matplotlib is
+imported only here (lazily, by :func:`vibrofriction.sweep.plot_atlas`).  Points
+that are not trusted (the Dataset's ``trusted`` variable: a converged status and
+``error <= tol_trusted``) are never drawn as results: crosses on curves, hatched
+cells on maps; points not computed yet are left blank.
 """
 
 from __future__ import annotations
@@ -12,9 +16,9 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from ..solver import STATUS_BY_CODE
 from ._store import open_atlas
 from ._variables import STATUS_PENDING
+from .edges import cell_edges, is_geometric
 
 __all__ = ["plot_atlas"]
 
@@ -26,52 +30,7 @@ _TEX = {
     "du_z": r"$\Delta u_z$ [m]", "omega": r"$\omega$ [rad/s]", "mu0": r"$\mu_0$",
     "critical_velocity": r"$v_0^*$",
 }
-_OK_CODES = [code for code, status in STATUS_BY_CODE.items() if status.ok]
-
-
-def _label(ds: xr.Dataset, name: str) -> str:
-    if name in _TEX:
-        return _TEX[name]
-    attrs = ds[name].attrs
-    units = attrs.get("units", "")
-    return name + (f" [{units}]" if units and units != "1" else "")
-
-
-def _geometric(values: np.ndarray) -> bool:
-    v = np.asarray(values, dtype=float)
-    if v.size < 3 or not np.all(np.isfinite(v)) or np.any(v <= 0):
-        return False
-    steps = np.diff(np.log(v))
-    return bool(np.allclose(steps, steps[0], rtol=1e-6) and abs(steps[0]) > 0)
-
-
-def _edges(values: np.ndarray, name: str) -> np.ndarray:
-    """Cell edges of a map axis: midpoints, geometric ones for a geometric axis."""
-    v = np.asarray(values, dtype=float)
-    if not np.all(np.isfinite(v)):
-        raise ValueError(f"cannot draw a map over {name}, which holds non-finite values; "
-                         "plot curves instead")
-    if v.size == 1:
-        return np.array([v[0] - 0.5, v[0] + 0.5]) if v[0] <= 0 else v[0] * np.array([0.9, 1.1])
-    geo = _geometric(v)
-    w = np.log(v) if geo else v
-    mid = (w[1:] + w[:-1]) / 2
-    edges = np.concatenate([[w[0] - (mid[0] - w[0])], mid, [w[-1] + (w[-1] - mid[-1])]])
-    return np.exp(edges) if geo else edges
-
-
-def _select(ds: xr.Dataset, sel: dict[str, Any] | None) -> xr.Dataset:
-    for dim, value in (sel or {}).items():
-        if dim not in ds.dims:
-            raise ValueError(f"--sel {dim}: not a dimension of the atlas "
-                             f"(dimensions: {', '.join(map(str, ds.dims))})")
-        if dim == "direction":
-            if value not in ("up", "down"):
-                raise ValueError(f"direction must be 'up' or 'down', got {value!r}")
-            ds = ds.sel(direction=value)
-        else:
-            ds = ds.sel({dim: float(value)}, method="nearest")
-    return ds
+_LEGEND_MAX = 8  # more curves than this: a colour bar instead of a legend
 
 
 def plot_atlas(
@@ -91,105 +50,188 @@ def plot_atlas(
     * ``y`` given: a map over ``x`` and ``y``.
 
     Other swept dimensions must be fixed with ``sel={dim: value}`` (nearest value).
-    Points whose status is not usable (not converged, failed, not computed) are
-    left out (curves: marked with crosses).  Log axes for geometric coordinates.
+    Untrusted points (``trusted`` is False) are marked, not drawn as results: crosses
+    on curves, hatched cells on maps.  Log axes for geometric coordinates.
     ``out``: write the figure there (PNG, PDF, SVG by extension).
     """
     from matplotlib.figure import Figure
 
-    ds = open_atlas(source) if not isinstance(source, xr.Dataset) else source
+    ds = _select(open_atlas(source) if not isinstance(source, xr.Dataset) else source, sel)
+    da, trusted, pending = _variable(ds, var, keep=(x, y))
+    x = _x_axis(ds, da, x, var)
+    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
+    ax = fig.add_subplot()
+    if y is None:
+        note = _draw_curves(fig, ax, ds, da, trusted, x, max_curves)
+    else:
+        note = _draw_map(fig, ax, ds, da, trusted, pending, x, _y_axis(da, x, y, var))
+    ax.set_xlabel(_label(ds, x))
+    ax.set_ylabel(_label(ds, var if y is None else y))
+    ax.set_title(_title(ds, int(pending.sum())) + note, fontsize="medium")
+    if out is not None:
+        fig.savefig(out, dpi=150)
+    return fig
+
+
+# --------------------------------------------------------------------------- choosing
+def _select(ds: xr.Dataset, sel: dict[str, Any] | None) -> xr.Dataset:
+    for dim, value in (sel or {}).items():
+        if dim not in ds.dims:
+            raise ValueError(f"--sel {dim}: not a dimension of the atlas "
+                             f"(dimensions: {', '.join(map(str, ds.dims))})")
+        if dim == "direction":
+            if value not in ("up", "down"):
+                raise ValueError(f"direction must be 'up' or 'down', got {value!r}")
+            ds = ds.sel(direction=value)
+        else:
+            try:
+                number = float(value)
+            except (TypeError, ValueError):
+                raise ValueError(f"--sel {dim}={value!r}: the value must be a number") from None
+            ds = ds.sel({dim: number}, method="nearest")
+    return ds
+
+
+def _variable(ds: xr.Dataset, var: str, keep: tuple[str | None, ...]
+              ) -> tuple[xr.DataArray, xr.DataArray, xr.DataArray]:
+    """``var``, ``trusted`` and "not computed yet" over the swept dims (size > 1 or kept)."""
     if var not in ds.data_vars:
         raise ValueError(f"unknown variable {var!r}; choose from {', '.join(ds.data_vars)}")
-    ds = _select(ds, sel)
-    da = ds[var]
-    dims = [d for d in da.dims if ds.sizes[d] > 1 or d in (x, y)]
-    da = da.squeeze([d for d in da.dims if d not in dims])
+    if "trusted" not in ds.data_vars:
+        raise ValueError("the atlas has no 'trusted' variable: it was written by an older "
+                         "version; recompute it")
+    drop = [d for d in ds[var].dims if ds.sizes[d] == 1 and d not in keep]
+    da = ds[var].squeeze(drop).load()
+    pending = ds["status"] == STATUS_PENDING
+    pending = pending.any([d for d in pending.dims if d not in da.dims]).squeeze(drop)
+    if set(ds["trusted"].dims) == set(ds[var].dims):
+        trusted = ds["trusted"].squeeze(drop)
+    else:  # a row variable (v0*, eq. 12): a closed form, no solver result to trust
+        trusted = xr.ones_like(da, dtype=bool)
+    return da, trusted.transpose(*da.dims).load(), pending.transpose(*da.dims).load()
+
+
+def _x_axis(ds: xr.Dataset, da: xr.DataArray, x: str | None, var: str) -> str:
     velocity = ds.attrs.get("velocity")
     if x is None:
-        x = velocity if velocity in dims else (dims[-1] if dims else None)
+        x = velocity if velocity in da.dims else (da.dims[-1] if da.dims else None)
     if x is None or x not in da.dims:
         raise ValueError(f"x must be a swept dimension of {var} "
-                         f"(swept: {', '.join(dims) or 'none'}), got {x!r}")
-    if y is not None and (y not in da.dims or y == x):
-        raise ValueError(f"y must be another swept dimension of {var} "
-                         f"(swept: {', '.join(dims)}), got {y!r}")
-    status = ds["status"].squeeze([d for d in ds["status"].dims if d not in dims])
-    usable = status.isin(_OK_CODES)
-    pending = int((status == STATUS_PENDING).sum())
+                         f"(swept: {', '.join(map(str, da.dims)) or 'none'}), got {x!r}")
+    return str(x)
 
+
+def _y_axis(da: xr.DataArray, x: str, y: str, var: str) -> str:
+    if y not in da.dims or y == x:
+        raise ValueError(f"y must be another swept dimension of {var} "
+                         f"(swept: {', '.join(map(str, da.dims))}), got {y!r}")
+    return y
+
+
+def _label(ds: xr.Dataset, name: str) -> str:
+    if name in _TEX:
+        return _TEX[name]
+    units = ds[name].attrs.get("units", "")
+    return name + (f" [{units}]" if units and units != "1" else "")
+
+
+def _title(ds: xr.Dataset, pending: int) -> str:
     fixed = {k: float(v) for k, v in ds.coords.items()
              if v.ndim == 0 and k != "direction" and np.issubdtype(v.dtype, np.number)}
     title = ", ".join(f"{k}={v:.4g}" for k, v in fixed.items())
     if "direction" in ds.coords and ds["direction"].ndim == 0:
         title += f", {ds['direction'].item()}"
-
-    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
-    ax = fig.add_subplot()
-    if y is None:
-        others = [d for d in da.dims if d not in (x, "direction")]
-        if len(others) > 1:
-            raise ValueError(f"curves along {x} need at most one other swept dimension; "
-                             f"fix some of {', '.join(others)} with sel (--sel dim=value)")
-        group = others[0] if others else None
-        n = ds.sizes[group] if group else 1
-        pick = np.unique(np.linspace(0, n - 1, min(n, max_curves)).round().astype(int))
-        import matplotlib as mpl
-
-        cmap = mpl.colormaps["viridis"]
-        directions = list(ds["direction"].values) if "direction" in da.dims else [None]
-        for k, i in enumerate(pick):
-            curve = da.isel({group: i}) if group else da
-            ok = usable.isel({group: i}) if group else usable
-            color = cmap(k / max(1, len(pick) - 1)) if len(pick) > 1 else "C0"
-            for d in directions:
-                c = curve.sel(direction=d) if d is not None else curve
-                o = ok.sel(direction=d) if d is not None else ok
-                xs = c[x].values
-                vals = c.values.astype(float)
-                label = None
-                if d in (None, "up"):
-                    label = f"{group}={float(ds[group][i]):.4g}" if group else None
-                ax.plot(xs, np.where(o.values, vals, np.nan), color=color,
-                        ls="--" if d == "down" else "-", label=label)
-                bad = ~o.values & np.isfinite(vals)
-                if np.any(bad):
-                    ax.plot(xs[bad], vals[bad], "x", color=color, ms=4)
-        if group and len(pick) <= 8:
-            ax.legend(fontsize="small")
-        elif group:  # many curves: a colour bar over the group's values instead
-            values = np.asarray(ds[group].values, dtype=float)[pick]
-            lines = mpl.colors.ListedColormap([cmap(k / (len(pick) - 1))
-                                               for k in range(len(pick))])
-            norm = mpl.colors.BoundaryNorm(_edges(values, group), lines.N)
-            bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=lines), ax=ax,
-                               label=_label(ds, group))
-            if _geometric(values):
-                bar.ax.set_yscale("log")
-        if directions != [None]:
-            title += " (solid: up, dashed: down)"
-        ax.set_xlabel(_label(ds, x))
-        ax.set_ylabel(_label(ds, var))
-        if _geometric(ds[x].values):
-            ax.set_xscale("log")
-        ax.grid(True, alpha=0.3)
-    else:
-        others = [d for d in da.dims if d not in (x, y)]
-        if others:
-            raise ValueError(f"a map over {x} and {y} needs the other swept dimensions "
-                             f"fixed: {', '.join(others)} (--sel dim=value)")
-        z = da.where(usable).transpose(y, x)
-        mesh = ax.pcolormesh(_edges(ds[x].values, x), _edges(ds[y].values, y), z.values,
-                             shading="flat", cmap="viridis")
-        fig.colorbar(mesh, ax=ax, label=_label(ds, var))
-        ax.set_xlabel(_label(ds, x))
-        ax.set_ylabel(_label(ds, y))
-        if _geometric(ds[x].values):
-            ax.set_xscale("log")
-        if _geometric(ds[y].values):
-            ax.set_yscale("log")
     if pending:
         title += f" [{pending} points not computed yet]"
-    ax.set_title(title, fontsize="medium")
-    if out is not None:
-        fig.savefig(out, dpi=150)
-    return fig
+    return title
+
+
+# --------------------------------------------------------------------------- drawing
+def _draw_curves(fig, ax, ds: xr.Dataset, da: xr.DataArray, trusted: xr.DataArray, x: str,
+                 max_curves: int) -> str:
+    """Trusted values as lines, untrusted ones as crosses; returns a note for the title."""
+    import matplotlib as mpl
+
+    others = [d for d in da.dims if d not in (x, "direction")]
+    if len(others) > 1:
+        raise ValueError(f"curves along {x} need at most one other swept dimension; "
+                         f"fix some of {', '.join(map(str, others))} with sel "
+                         "(--sel dim=value)")
+    group = others[0] if others else None
+    if group is not None:
+        n = ds.sizes[group]
+        pick = np.unique(np.linspace(0, n - 1, min(n, max_curves)).round().astype(int))
+        da, trusted = da.isel({group: pick}), trusted.isel({group: pick})
+    count = da.sizes[group] if group is not None else 1
+    cmap = mpl.colormaps["viridis"]
+    colors = [cmap(k / (count - 1)) for k in range(count)] if count > 1 else ["C0"]
+    directions = list(da["direction"].values) if "direction" in da.dims else [None]
+    for d in directions:
+        values = da.sel(direction=d) if d is not None else da
+        ok = trusted.sel(direction=d) if d is not None else trusted
+        ax.set_prop_cycle(color=colors)
+        lines = values.where(ok).plot.line(x=x, hue=group, ax=ax, add_legend=False,
+                                           linestyle="--" if d == "down" else "-")
+        ax.set_prop_cycle(color=colors)
+        values.where(~ok & np.isfinite(values)).plot.line(
+            x=x, hue=group, ax=ax, add_legend=False, linestyle="none", marker="x",
+            markersize=4)
+        if group is not None and d in (None, "up"):
+            for line, v in zip(lines, da[group].values, strict=True):
+                line.set_label(f"{group}={float(v):.4g}")
+    if group is not None:
+        _curve_key(fig, ax, ds, da[group].values, group, colors)
+    if is_geometric(ds[x].values):
+        ax.set_xscale("log")
+    ax.grid(True, alpha=0.3)
+    note = " (solid: up, dashed: down)" if directions != [None] else ""
+    return note + (" (x: not trusted)" if not bool(trusted.all()) else "")
+
+
+def _curve_key(fig, ax, ds: xr.Dataset, values: np.ndarray, group: str,
+               colors: list) -> None:
+    """A legend for a few curves, a colour bar over the group's values for many."""
+    import matplotlib as mpl
+
+    if len(values) <= _LEGEND_MAX:
+        ax.legend(fontsize="small")
+        return
+    values = np.asarray(values, dtype=float)
+    lines = mpl.colors.ListedColormap(colors)
+    norm = mpl.colors.BoundaryNorm(cell_edges(values, name=group), lines.N)
+    bar = fig.colorbar(mpl.cm.ScalarMappable(norm=norm, cmap=lines), ax=ax,
+                       label=_label(ds, group))
+    if is_geometric(values):
+        bar.ax.set_yscale("log")
+
+
+def _draw_map(fig, ax, ds: xr.Dataset, da: xr.DataArray, trusted: xr.DataArray,
+              pending: xr.DataArray, x: str, y: str) -> str:
+    """Trusted values as coloured cells, untrusted ones hatched, pending ones blank."""
+    from matplotlib.collections import PatchCollection
+    from matplotlib.patches import Rectangle
+
+    others = [d for d in da.dims if d not in (x, y)]
+    if others:
+        raise ValueError(f"a map over {x} and {y} needs the other swept dimensions "
+                         f"fixed: {', '.join(map(str, others))} (--sel dim=value)")
+    edges = {}
+    for d in (x, y):
+        v = np.asarray(ds[d].values, dtype=float)
+        if v.size < 2 or not np.all(np.isfinite(v)):
+            raise ValueError(f"cannot draw a map over {d}: it needs two or more finite "
+                             "values; plot curves instead")
+        edges[d] = cell_edges(v, name=d)
+    scale = {d: "log" if is_geometric(ds[d].values) else "linear" for d in (x, y)}
+    da.where(trusted).plot.pcolormesh(x=x, y=y, ax=ax, cmap="viridis", xscale=scale[x],
+                                      yscale=scale[y],
+                                      cbar_kwargs={"label": _label(ds, da.name)})
+    bad = (~trusted & ~pending).transpose(y, x).values
+    if not bad.any():
+        return ""
+    ex, ey = edges[x], edges[y]
+    cells = [Rectangle((ex[j], ey[i]), ex[j + 1] - ex[j], ey[i + 1] - ey[i])
+             for i, j in zip(*np.nonzero(bad), strict=True)]
+    ax.add_collection(PatchCollection(cells, facecolor="none", edgecolor="0.35",
+                                      hatch="xxx", linewidth=0.0))
+    return " (hatched: not trusted)"

@@ -192,6 +192,8 @@ def _describe(key: str, stored: dict[str, Any], wanted: dict[str, Any]) -> str:
     if key == "fingerprint":
         return ("fingerprint: the solver's source code differs from the one that wrote the "
                 "store")
+    if key == "variables":
+        return "variables: the store was written with another set of variables (layout)"
     return f"{key}: store has {show(get(stored, key))}, this call {show(get(wanted, key))}"
 
 

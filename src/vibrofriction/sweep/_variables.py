@@ -3,8 +3,8 @@
 *Point* variables have one value per grid point (all dimensions); *row*
 variables depend only on the non-velocity parameters (no ``direction``, no
 velocity dimension).  The fill value of each is what a point not yet computed
-reads as; ``status`` uses a code the solver never returns, so an unfinished
-point is never mistaken for a result.
+reads as; ``status`` and ``final_phase`` use a code the solver never returns and
+``trusted`` reads False, so an unfinished point is never mistaken for a result.
 """
 
 from __future__ import annotations
@@ -14,13 +14,12 @@ from typing import Any
 
 import numpy as np
 
-from .._kernels import codes
-from ..solver import STATUS_BY_CODE
+from ..solver import FLOAT_COLUMNS, NO_PHASE, PHASE_NAMES, STATUS_BY_CODE
 
-__all__ = ["COORD_ATTRS", "STATUS_PENDING", "Variable", "point_variables", "row_variables"]
+__all__ = ["COORD_ATTRS", "STATUS_PENDING", "Variable", "point_variables", "row_variables",
+           "signature"]
 
-STATUS_PENDING = -128  # fill value of `status`: not computed yet
-PHASE_NONE = 99  # solver's phase code when there is no section state (static points)
+STATUS_PENDING = -128  # fill value of `status` and `final_phase`: not computed yet
 
 _VEL_UNIT = "mu0 F_N0 / (m omega)"  # unit of the inertial velocity (docs/model.md)
 
@@ -76,6 +75,25 @@ COORD_ATTRS: dict[str, dict[str, Any]] = {
                   "symbol": ""},
 }
 
+#: How the steady state was reached (solver columns; those the solver returns are stored).
+_ORBIT_ATTRS: dict[str, dict[str, Any]] = {
+    "multiplier": {"long_name": "modulus of the leading Floquet multiplier of the periodic "
+                                "orbit (contraction per orbit period; nan if not periodic)",
+                   "symbol": "|lambda|", "units": "1"},
+    "settling_periods": {"long_name": "drive periods the motion from the initial state "
+                                      "needs to come within error of the steady state",
+                         "symbol": "", "units": "drive periods"},
+    "window_min": {"long_name": "smallest mean of mu_ratio over the averaging windows "
+                                "(averaged and not converged results; nan otherwise)",
+                   "symbol": "", "units": "1"},
+    "window_max": {"long_name": "largest mean of mu_ratio over the averaging windows "
+                                "(averaged and not converged results; nan otherwise)",
+                   "symbol": "", "units": "1"},
+    "modulation_period": {"long_name": "period of a slow modulation of a motion that does "
+                                       "not settle (nan if none)",
+                          "symbol": "", "units": "drive periods"},
+}
+
 
 def point_variables(velocity: str) -> tuple[Variable, ...]:
     """Variables with one value per grid point; ``velocity`` is the swept velocity's name."""
@@ -92,8 +110,14 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
             "comment": " | ".join(f"{STATUS_BY_CODE[c].value}: {STATUS_BY_CODE[c].message}"
                                   for c in _STATUS_CODES)}, "status"),
         Variable("error", "f8", np.nan, {
-            "long_name": "estimated absolute error of mu_ratio", "symbol": "",
-            "units": "1"}, "error"),
+            "long_name": "estimated absolute error of mu_ratio, |mu_ratio - exact|",
+            "symbol": "", "units": "1"}, "error"),
+        Variable("trusted", "bool", False, {
+            "long_name": "the result is trusted: converged status and error <= tol_trusted",
+            "comment": "converged status: periodic, averaged, continuous sliding or static "
+                       "limit; tol_trusted is the Dataset attribute solver_tol_trusted "
+                       "(SolverSettings.tol_trusted); False where not computed yet",
+            "flag_values": [0, 1], "flag_meanings": "not_trusted trusted"}, "trusted"),
         Variable("period", "i4", -1, {
             "long_name": "period of the steady orbit in drive periods (0 = not periodic)",
             "symbol": "", "units": "1"}, "period"),
@@ -115,6 +139,8 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
             "long_name": "fraction of time without contact, jumping (averaging window)",
             "symbol": "", "units": "1"}, "flight_fraction"),
     ]
+    out += [Variable(name, "f8", np.nan, dict(attrs), name)
+            for name, attrs in _ORBIT_ATTRS.items() if name in FLOAT_COLUMNS]
     if velocity != "v_inertial":
         out.append(Variable("v_inertial", "f8", np.nan, dict(COORD_ATTRS["v_inertial"])))
     out += [
@@ -128,12 +154,11 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
         Variable("final_f", "f8", np.nan, {
             "long_name": "final state on the Poincare section: tangential contact force",
             "symbol": "f", "units": "mu0 F_N0"}, "f"),
-        Variable("final_phase", "i1", -1, {
+        Variable("final_phase", "i1", STATUS_PENDING, {
             "long_name": "final state on the Poincare section: phase of the contact",
-            "flag_values": [-1, *range(len(codes.PHASE_NAMES)), PHASE_NONE],
-            "flag_meanings": " ".join(["not_computed",
-                                       *(_flag_words(p) for p in codes.PHASE_NAMES),
-                                       "no_state"])}, "phase"),
+            "flag_values": [STATUS_PENDING, NO_PHASE, *range(len(PHASE_NAMES))],
+            "flag_meanings": " ".join(["not_computed", "no_state",
+                                       *(_flag_words(p) for p in PHASE_NAMES)])}, "phase"),
     ]
     return tuple(out)
 
@@ -156,3 +181,13 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
         Variable("beta", "f8", np.nan, dict(COORD_ATTRS["beta"])),
         Variable("amplitude", "f8", np.nan, dict(COORD_ATTRS["amplitude"])),
     )
+
+
+def signature(kind: str, velocity: str) -> dict[str, list]:
+    """``{name: [dtype, fill]}`` of every variable: part of a store's signature."""
+    def fill(v: Variable):
+        return None if isinstance(v.fill, float) and np.isnan(v.fill) else np.asarray(
+            v.fill).item()
+
+    return {v.name: [v.dtype, fill(v)]
+            for v in (*point_variables(velocity), *row_variables(kind))}
