@@ -65,27 +65,28 @@ def _sample(regime: str):
 
 @pytest.mark.parametrize("regime", REGIMES)
 def test_stated_error_covers_the_deviation_from_the_reference(regime):
-    checked = neutral = 0
+    checked = neutral = 0  # noqa: F841 (neutral is counted for the failure message)
     for s, V in _sample(regime):
         r = vf.friction_coefficient(s, v_inertial=V)
         if not r.trusted:
             assert r.error > vf.SolverSettings().tol_trusted or not r.success, r.message
             continue
+        average = 100
         if math.isnan(r.settling_periods):
             # a neutral pure-slip orbit: the motion from the start need not approach it
-            # (rare sticks persist); a known limit, said in the message (docs/solver.md)
+            # (rare sticks persist); its error covers the motion over periods 512-1024
             assert "neutrally stable" in r.message
             neutral += 1
+            transient = average = 512
+        elif r.settling_periods > AFFORDABLE_SETTLING:
             continue
-        settle = r.settling_periods
-        if settle > AFFORDABLE_SETTLING:
-            continue
-        transient = int(max(300, settle + 100))
+        else:
+            transient = int(max(300, r.settling_periods + 100))
         steps = 6400 if s.is_rigid else 1600
         m1, m2 = (return_mapping_mu(s.alpha, s.beta, s.amplitude, V, steps_per_period=n,
-                                    transient_periods=transient, average_periods=100)
+                                    transient_periods=transient, average_periods=average)
                   for n in (steps, 2 * steps))
         ref_err = 4 * abs(m2 - m1) + 1e-6
         assert abs(r.mu_ratio - m2) <= r.error + ref_err, (s, V, r.message, m1, m2)
         checked += 1
-    assert checked + neutral >= POINTS_PER_REGIME // 2 and checked >= 1 - (neutral > 0)
+    assert checked >= POINTS_PER_REGIME // 2

@@ -12,7 +12,12 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction._kernels.integrate import initial_state, liftoff_phases
-from vibrofriction._kernels.steady import N_ACC, advance_period, sliding_certificate
+from vibrofriction._kernels.steady import (
+    N_ACC,
+    advance_period,
+    sliding_certificate,
+    sliding_orbit,
+)
 
 
 def _period_means(s: vf.Dimensionless, V: float, n: int) -> np.ndarray:
@@ -30,8 +35,9 @@ def _period_means(s: vf.Dimensionless, V: float, n: int) -> np.ndarray:
 
 # ----------------------------------------------------------------- finding 1: certificate
 @pytest.mark.parametrize("seed", range(6))
-def test_no_sliding_certificate_for_a_jumping_body(seed):
-    """Eqs. (10)-(12) assume permanent contact: a jumping body is never 'proven' sliding."""
+def test_jumping_bodies_above_vstar_are_proven_sliding_only_when_they_slide(seed):
+    """Eqs. (10)-(12) assume permanent contact: for a jumping body the proof is the
+    generalised one (flight included), and a long run must confirm it."""
     rng = np.random.default_rng(seed)
     alpha = float(rng.uniform(0.05, 40.0))
     s = vf.Dimensionless(alpha, alpha * float(rng.uniform(1.05, 5.0)),
@@ -39,10 +45,13 @@ def test_no_sliding_certificate_for_a_jumping_body(seed):
     if abs(s.alpha - 1) < 0.05 or abs(s.beta - 1) < 0.05:
         pytest.skip("resonance")
     r = vf.friction_coefficient(s, vbar=float(rng.uniform(1.05, 2.0)))
-    assert r.status is not vf.Status.SLIDING
-    # pure forward slip with flight is no proof: either an orbit, or said not to be known
-    assert r.trusted or (r.status is vf.Status.NOT_CONVERGED and r.error == math.inf)
-    assert r.flight_fraction > 0.0  # a jumping body is in flight part of every period
+    m = _period_means(s, r.v_inertial, max(2 * r.periods, 600))
+    if r.status is vf.Status.SLIDING:
+        assert np.all(np.abs(m[r.periods:] - 1.0) < 1e-12)
+    elif r.trusted:
+        assert r.flight_fraction > 0.0  # in flight part of every period
+    else:  # pure forward slip with flight, not proven: said not to be known
+        assert r.status is vf.Status.NOT_CONVERGED and r.error == math.inf
 
 
 @pytest.mark.parametrize("alpha,beta,a,vbar", [(10.467, 49.110, 1.302, 1.460),
@@ -59,17 +68,15 @@ def test_jumping_points_above_vstar_that_were_falsely_proven(alpha, beta, a, vba
 
 def test_certificate_still_proves_sliding_where_the_contact_stays_closed():
     s = vf.Dimensionless(0.5, 2.0, 0.5)
-    V = float(s.vbar_to_inertial(1.5))
-    y, xd = -1.0 / s.alpha - s.amplitude / (s.alpha - 1.0), V  # the sliding orbit, eq. (7)
-    assert sliding_certificate(y, xd, 1, s.alpha, s.beta, s.amplitude, V)
-    assert not sliding_certificate(y, xd, 1, s.alpha, s.beta, 1.5, 3 * V)  # a > 1: never
+    r = vf.friction_coefficient(s, vbar=3.0)
+    assert r.status is vf.Status.SLIDING and r.mu_ratio == 1.0 and r.error == 0.0
+    assert np.allclose(_period_means(s, r.v_inertial, 200)[r.periods:], 1.0, atol=1e-13)
+    # closer to v0* from the default start an undamped free oscillation survives and
+    # sticks now and then: the orbit is neutral and the message says so
     r = vf.friction_coefficient(s, vbar=1.5)
-    assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0 and r.trusted
-    # from the default start an undamped free oscillation survives and sticks now and
-    # then: the orbit is neutral, the message says so and names no settling time
-    assert r.multiplier == pytest.approx(1.0, abs=1e-6)
+    assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0
     assert math.isnan(r.settling_periods) and "neutrally stable" in r.message
-    assert abs(_period_means(s, V, 4000).mean() - 1.0) < 1e-4
+    assert abs(_period_means(s, r.v_inertial, 1024)[512:].mean() - 1.0) <= r.error
 
 
 # ----------------------------------------------------------------- finding 2: error
@@ -178,3 +185,48 @@ def test_simulate_final_state_lies_within_the_history():
     ref = vf.simulate(s, vbar=0.3, periods=2.0)
     assert h.final_state == ref.final_state
     assert h.tau[-1] == pytest.approx(2.5 * 2 * math.pi)
+
+
+# ----------------------------------------------------------------- the certificate itself
+@pytest.mark.parametrize("seed", range(4))
+def test_certificate_reduces_to_eq12_where_the_contact_stays_closed(seed):
+    """For a <= 1 the orbit's slowest contact velocity is V - V* (eqs. 10-12)."""
+    rng = np.random.default_rng(100 + seed)
+    for _ in range(50):
+        alpha = float(rng.uniform(0.05, 5.0))
+        if abs(math.sqrt(alpha) - round(math.sqrt(alpha))) < 0.05:
+            continue
+        beta = alpha * float(rng.uniform(1.1, 20.0)) if rng.random() < 0.8 else math.inf
+        a = float(rng.uniform(0.05, 1.0))
+        s = vf.Dimensionless(alpha, beta, a)
+        vstar = s.critical_inertial_velocity()
+        V = vstar * float(rng.uniform(1.0, 3.0))
+        off, on = liftoff_phases(a)
+        ok, ys, yds = sliding_orbit(alpha, beta, a, off, on)
+        assert ok
+        # eq. (7): y = -1/alpha - a cos(tau)/(alpha - 1) at tau = 0, y' = 0
+        assert ys == pytest.approx(-1 / alpha - a / (alpha - 1), rel=1e-9, abs=1e-12)
+        assert yds == pytest.approx(0.0, abs=1e-9 * (1 + abs(ys)))
+        amp = float(rng.uniform(0.0, 1.2)) * (V - vstar)
+        phi = float(rng.uniform(0, 2 * math.pi))
+        y = ys + amp / math.sqrt(alpha) * math.cos(phi)
+        xd = V + yds + amp * math.sin(phi)
+        closed_form = V - vstar - amp > 1e-6 * (1 + V)
+        if abs(V - vstar - amp) > 1e-6 * (1 + V):
+            assert sliding_certificate(y, xd, 1, alpha, beta, a, V, ok, ys, yds, off,
+                                       on) == closed_form
+
+
+@pytest.mark.parametrize("p", [(0.5, 2.0, 1.5, 3.0), (32.21, 136.614, 2.055, 1.893),
+                               (0.631, 2.987, 1.217, 3.543), (19.206, 92.881, 1.669, 2.236)])
+def test_a_jumping_body_proven_sliding_never_sticks(p):
+    """Where the generalised certificate proves sliding for a > 1, a long run agrees."""
+    s = vf.Dimensionless(*p[:3])
+    r = vf.friction_coefficient(s, vbar=p[3])
+    assert r.status is vf.Status.SLIDING, r.message
+    h = vf.simulate(s, vbar=p[3], periods=300, samples_per_period=20)
+    later = h.tau > 2 * math.pi * r.periods
+    assert not np.any(h.phase[later] == "stick") and not np.any(h.phase[later] == "slip-")
+    assert np.any(h.phase[later] == "flight")
+    m = _period_means(s, r.v_inertial, 1000)
+    assert np.all(np.abs(m[r.periods:] - 1.0) < 1e-12)

@@ -246,7 +246,7 @@ def describe(r: FrictionResult) -> str:
             f"the orbit is neutrally stable (leading Floquet multiplier {r.multiplier:.9g}): "
             "the motion from the initial state need not approach it, and a transient (e.g. "
             "rare sticks of an undamped free oscillation) can persist for many periods; "
-            "the error is that of the orbit's mean, not of finite-time averages of the motion")
+            "the error includes how far the motion's mean over periods 512-1024 is from it")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
     if r.status is Status.NOT_CONVERGED:

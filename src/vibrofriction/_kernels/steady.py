@@ -19,7 +19,7 @@ doubling checkpoints (:func:`check_average`).  Every result states an estimate o
 * averaged / not converged: the disagreement of the last two averaging windows
   (``inf`` when the last window is pure forward slip: its mean is exactly 1
   whatever the state, so it says nothing about the long-time average);
-* continuous sliding: 0 (proven, eqs. 10-12, only where the contact never opens).
+* continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS``.
 """
@@ -28,6 +28,7 @@ import math
 
 import numpy as np
 
+from .basis import derivative, evaluate
 from .codes import (
     EV_SECTION,
     FLIGHT,
@@ -42,6 +43,8 @@ from .codes import (
 )
 from .integrate import TWO_PI, initial_state, liftoff_phases, segment
 from .jit import jit
+from .phases import free_y, slip_velocity
+from .roots import first_root, start_margin
 
 MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
 MAX_DEGENERATE = 1000  # transitions decided within round-off before giving up (chatter)
@@ -53,6 +56,7 @@ MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
 ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
 ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
+NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral (to difference accuracy)
 
 # accumulators: integrals of f and n, times in stick, slip, reverse slip, flight
@@ -280,27 +284,91 @@ def leading_multiplier(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_ev
 
 
 @jit
-def sliding_certificate(y, xd, ph, alpha, beta, a, V):
+def _slip_arcs(a, th_off, th_on):
+    """The arcs of one period in contact: ``[0, 2 pi]``, or both sides of the flight."""
+    if a > 1.0:
+        return 2, 0.0, th_off, th_on, TWO_PI
+    return 1, 0.0, TWO_PI, TWO_PI, TWO_PI
+
+
+@jit
+def _slip_flight_period(alpha, a, y, yd, th_off, th_on):
+    """``(y, y')`` after one period of forward slip in contact and flight out of it.
+
+    ``y'' + alpha y = -n(tau)``, ``n = max(0, 1 + a cos tau)``: the motion of a body
+    whose contact point never stops (``f = n``), closed form arc by arc.
+    """
+    w = math.sqrt(alpha)
+    narcs, t0, t1, t2, t3 = _slip_arcs(a, th_off, th_on)
+    c = free_y(alpha, w, t0, y, yd, 1.0, a)
+    y, yd = evaluate(c, w, t1 - t0), evaluate(derivative(c, w), w, t1 - t0)
+    if narcs == 2:
+        c = free_y(alpha, w, t1, y, yd, 0.0, a)
+        y, yd = evaluate(c, w, t2 - t1), evaluate(derivative(c, w), w, t2 - t1)
+        c = free_y(alpha, w, t2, y, yd, 1.0, a)
+        y, yd = evaluate(c, w, t3 - t2), evaluate(derivative(c, w), w, t3 - t2)
+    return y, yd
+
+
+@jit
+def sliding_orbit(alpha, beta, a, th_off, th_on):
+    """The periodic solution of forward slip (and flight): ``(ok, y*, y*')`` at ``tau = 0``.
+
+    Forward slip is linear, so its period map is affine, ``z -> R z + b`` with ``R``
+    the free rotation at ``sqrt(alpha)``; the fixed point solves ``(I - R) z = b``.
+    Not ok where ``sqrt(alpha)`` is (nearly) an integer (a harmonic of ``n``
+    resonates and no bounded sliding solution exists) or ``a = 0``.
+    """
+    if a == 0.0:
+        return False, 0.0, 0.0
+    b0, b1 = _slip_flight_period(alpha, a, 0.0, 0.0, th_off, th_on)
+    r00, r10 = _slip_flight_period(alpha, a, 1.0, 0.0, th_off, th_on)
+    r01, r11 = _slip_flight_period(alpha, a, 0.0, 1.0, th_off, th_on)
+    m00, m01 = 1.0 - (r00 - b0), -(r01 - b0)
+    m10, m11 = -(r10 - b1), 1.0 - (r11 - b1)
+    det = m00 * m11 - m01 * m10  # = 2 - 2 cos(2 pi sqrt(alpha))
+    if not abs(det) > 1e-6:
+        return False, 0.0, 0.0
+    return True, (m11 * b0 - m01 * b1) / det, (m00 * b1 - m10 * b0) / det
+
+
+@jit
+def sliding_certificate(y, xd, ph, alpha, beta, a, V, orbit_ok, ys, yds, th_off, th_on):
     """Is continuous forward sliding proven from this section state (eqs. 7-12)?
 
-    In slip+ the motion is the steady sliding solution plus a free oscillation at
-    ``sqrt(alpha)`` (undamped: slip dissipates nothing it could store).  The
-    contact point never stops if ``V - V*`` exceeds the free oscillation's velocity
-    amplitude; then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.  The argument
-    needs the contact to stay closed (``n = 1 + a cos tau >= 0``), so it is made for
-    ``a <= 1`` only: a jumping body (``a > 1``) flies every period and touches down
-    in stick, whatever its velocity.
+    Without stick the motion is the sliding orbit ``(ys, yds)`` of
+    :func:`sliding_orbit` plus a free oscillation at ``sqrt(alpha)`` whose velocity
+    amplitude ``A`` is conserved (slip and flight dissipate nothing it could store).
+    The contact point keeps sliding forward, and at every touch-down starts sliding
+    again rather than sticking, as long as its velocity on the orbit,
+    ``V + y*' - n'/k``, exceeds ``A`` on every arc in contact.  That is checked with
+    the event root finder (which never misses a zero) on ``V + y*' - n'/k - A``;
+    then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.  For ``a <= 1`` the minimum
+    of the orbit's contact velocity is ``V - V*`` (eq. 12), the classic condition.
     """
-    if ph != SLIP_POS or alpha == 1.0 or a > 1.0:
+    if ph != SLIP_POS or not orbit_ok:
         return False
-    if math.isinf(beta):
-        vstar = a / abs(alpha - 1.0)
-    else:
-        vstar = a * abs(beta - 1.0) / ((beta - alpha) * abs(alpha - 1.0))
-    yh = y + 1.0 / alpha + a / (alpha - 1.0)  # minus the particular solution at tau = 0
-    yhd = xd - V  # the particular solution's velocity vanishes at tau = 0
-    amp = math.sqrt(yhd * yhd + alpha * yh * yh)
-    return V - vstar - amp > 1e-9 * (1.0 + V)
+    w = math.sqrt(alpha)
+    k = beta - alpha
+    amp = math.sqrt((xd - V - yds) ** 2 + alpha * (y - ys) ** 2)
+    margin = amp * (1.0 + 1e-9) + 1e-9 * (1.0 + V)
+    if margin >= V + a / w + a / k + abs(yds) + 10.0 * (1.0 + a):
+        return False  # cannot hold: skip the root search
+    narcs, t0, t1, t2, t3 = _slip_arcs(a, th_off, th_on)
+    y0, yd0 = ys, yds
+    for i in range(narcs):
+        theta, T = (t0, t1 - t0) if i == 0 else (t2, t3 - t2)
+        if i == 1:
+            c = free_y(alpha, w, t1, y0, yd0, 0.0, a)  # through the flight
+            y0, yd0 = evaluate(c, w, t2 - t1), evaluate(derivative(c, w), w, t2 - t1)
+        c = free_y(alpha, w, theta, y0, yd0, 1.0, a)
+        g = slip_velocity(c, w, theta, 1.0, a, V, k)
+        g = (g[0] - margin, g[1], g[2], g[3], g[4], g[5], g[6], g[7])
+        ok, ts = start_margin(g, w, T)
+        if not ok or first_root(g, w, ts, T) >= 0.0:
+            return False
+        y0, yd0 = evaluate(c, w, T), evaluate(derivative(c, w), w, T)
+    return True
 
 
 @jit
@@ -355,7 +423,27 @@ def _window(acc, ring_c, k, p, win):
 
 
 @jit
-def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, th_off,
+def transient_deviation(z0, mu, alpha, beta, a, V, th_off, th_on, max_events):
+    """``|mean over periods (N, 2N] - mu|`` of the motion from ``z0`` (``N = NEUTRAL_WINDOW``).
+
+    Used where the orbit is neutral: the motion from the start need not approach it
+    (an undamped free oscillation in slip survives and sticks now and then), so the
+    distance of a long window of the real motion is what the error can honestly say.
+    Returns ``(deviation, events)``.
+    """
+    z = z0.copy()
+    acc = np.zeros(N_ACC)
+    count = np.zeros(3, np.int64)
+    for k in range(2 * NEUTRAL_WINDOW):
+        if k == NEUTRAL_WINDOW:
+            acc[:] = 0.0
+        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+            return math.inf, count[C_EVENTS]
+    return abs(acc[A_F] / acc[A_N] - mu), count[C_EVENTS]
+
+
+@jit
+def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, th_off,
                     th_on, max_events, out_f):
     """Average, error, multiplier and settling time of a p-periodic orbit.
 
@@ -367,7 +455,9 @@ def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, 
     time counts the periods the motion from the initial state needs until its
     p-period means stay within that error of the orbit's: ``k`` when the orbit was
     reached by plain iteration, else extrapolated from the first Newton jump
-    (period ``first_jump``, window mean ``mu_first``) at the rate ``lam``.
+    (period ``first_jump``, window mean ``mu_first``) at the rate ``lam``.  A
+    neutral orbit reached by a jump has no settling time, and its error includes
+    :func:`transient_deviation` of the motion from the start ``z0``.
     Returns the events spent.
     """
     mu = _window_mu(win)
@@ -388,6 +478,9 @@ def periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, 
         # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
         # need not approach it (no settling time; said in the message, docs/solver.md)
         settle = math.nan
+        dev, ev2 = transient_deviation(z0, mu, alpha, beta, a, V, th_off, th_on, max_events)
+        ev += ev2
+        err = max(err, dev)
     elif first_jump >= 0:
         settle = float(first_jump)
         e0 = abs(mu_first - mu)
@@ -485,7 +578,9 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
         z[0], z[1], z[2], z[3] = y0, xd0, f0, ph0
     else:
         z[0], z[1], z[2], z[3] = initial_state(init_kind, alpha, beta, a, V)
+    z0 = z.copy()
     th_off, th_on = liftoff_phases(a)
+    orbit_ok, ys, yds = sliding_orbit(alpha, beta, a, th_off, th_on)
     nring = MAX_PERIOD + 1
     ring_z = np.zeros((nring, 4))
     ring_c = np.zeros((nring, N_ACC))
@@ -513,12 +608,14 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
         p, d, rho = detect_period(ring_z, dprev, k, alpha, tol_state)
         if p > 0:
             _window(acc, ring_c, k, p, win)
-            count[C_EVENTS] += periodic_result(z, win, p, k, rho, first_jump, mu_first, alpha,
-                                               beta, a, V, th_off, th_on, max_events, out_f)
+            count[C_EVENTS] += periodic_result(z, z0, win, p, k, rho, first_jump, mu_first,
+                                               alpha, beta, a, V, th_off, th_on, max_events,
+                                               out_f)
             status = ST_PERIODIC
             period = p
             break
-        if sliding_certificate(z[0], z[1], int(z[3]), alpha, beta, a, V):
+        if sliding_certificate(z[0], z[1], int(z[3]), alpha, beta, a, V, orbit_ok, ys, yds,
+                               th_off, th_on):
             out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
             win[:] = 0.0
             win[A_SLIP] = 1.0
