@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -86,8 +87,15 @@ def test_fig4_stiff_law_eq26(out: Path) -> None:
     stiff = d["beta"] == 0.02
     assert stiff.sum() >= 100
     np.testing.assert_allclose(d["mu_ratio"][stiff], d["eq26"][stiff], atol=EQ26_TOL, rtol=0)
-    again = theory.mu_ratio_stiff(d["vbar"][stiff], d["amplitude"][stiff])
-    np.testing.assert_allclose(d["eq26"][stiff], again, rtol=0, atol=1e-12)
+    # the column is eq. (26) as printed, at vbar = V/c with c of eqs. (12), (16), (20):
+    # both written out here, independently of the package
+    al, be, a, V = (d[k][stiff] for k in ("alpha", "beta", "amplitude", "v_inertial"))
+    c = a * np.abs(be - 1) / ((be - al) * np.abs(al - 1))
+    np.testing.assert_allclose(d["vbar"][stiff], V / c, rtol=1e-12, atol=0)
+    u = np.minimum(d["vbar"][stiff], 1.0) - 1.0
+    eq26 = np.where(u < 0, 1 - a * (0.75 * u**2 + 0.25 * u**4), 1.0)
+    np.testing.assert_allclose(d["eq26"][stiff], eq26, rtol=0, atol=1e-12)
+    assert np.any(u < 0) and np.any(u == 0)  # both branches are exercised
 
 
 def test_fig4_soft_law_eq27_corrected_and_printed(out: Path) -> None:
@@ -163,16 +171,42 @@ def test_eq12_mu_is_mu0_above_the_critical_velocity(out: Path) -> None:
 
 
 def test_fig10_states_physical_parameters_and_reaches_mu0(out: Path) -> None:
-    text = (out / "data" / "fig10_dimensional.csv").read_text()
-    for word in ("mass", "k_x", "k_xc", "k_zc", "u_z0", "du_z", "omega", "mu0"):
-        assert word in text.split("\n", 8)[1] or word in text[:2000]
     d = read_csv(out / "data" / "fig10_dimensional.csv")
+    stated = fig10_header(out / "data" / "fig10_dimensional.csv")
+    assert set(stated) == set(np.unique(d["series"]))
+    for key, p in stated.items():
+        # the data were computed for the stated SI parameters (eqs. 20, 24 and the
+        # inertial velocity v0 m omega/(mu0 F_N0), F_N0 = k_zc u_z0), to the 6 digits stated
+        rows = d["series"] == key
+        inertia = p["mass"] * p["omega"] ** 2
+        np.testing.assert_allclose(d["alpha"][rows], p["k_x"] / inertia, rtol=2e-5)
+        np.testing.assert_allclose(d["beta"][rows], (p["k_x"] + p["k_xc"]) / inertia,
+                                   rtol=2e-5)
+        np.testing.assert_allclose(d["amplitude"][rows], p["du_z"] / p["u_z0"], rtol=2e-5)
+        unit = p["mu0"] * p["k_zc"] * p["u_z0"] / (p["mass"] * p["omega"])
+        np.testing.assert_allclose(d["v_inertial"][rows], d["v0_m_per_s"][rows] / unit,
+                                   rtol=3e-5)
     assert np.allclose(d["cof"], 0.3 * d["mu_ratio"], equal_nan=True)
     resonant = d["series"] == "resonant (IV)"
     assert d["cof"][resonant].max() < 0.3 * 0.8  # never reaches mu0
     for key in ("stiff (II)", "soft (I)", "in between"):
         rows = d["series"] == key
         assert d["cof"][rows][-1] == pytest.approx(0.3)
+
+
+def fig10_header(path: Path) -> dict[str, dict[str, float]]:
+    """``{series: {SI parameter: value}}`` from the ``# series: mass = ..., ...`` lines."""
+    names = ("mass", "k_x", "k_xc", "k_zc", "u_z0", "du_z", "omega", "mu0")
+    out = {}
+    for line in path.read_text().splitlines():
+        if not line.startswith("# ") or " = " not in line or ":" not in line:
+            continue
+        key, _, rest = line[2:].partition(": ")
+        pairs = dict(item.split(" = ") for item in rest.split(" (")[0].split(", ")
+                     if " = " in item)
+        if set(pairs) == set(names):
+            out[key] = {k: float(v) for k, v in pairs.items()}
+    return out
 
 
 def test_prediction_is_labelled_as_such(out: Path) -> None:
@@ -183,13 +217,59 @@ def test_prediction_is_labelled_as_such(out: Path) -> None:
                                           "du_z=60um"}
 
 
+def _files(folder: Path) -> dict[str, bytes]:
+    """Every file written, by relative path; PDFs (which carry their creation date) and
+    the timings of report.md left out."""
+    files = {}
+    for path in sorted(folder.rglob("*")):
+        if path.is_file() and path.suffix != ".pdf":
+            data = path.read_bytes()
+            if path.name == "report.md":
+                data = re.sub(rb"[0-9.]+ s wall time on [0-9]+ worker", b"", data)
+                data = re.sub(rb"rendered in [0-9.]+ s", b"", data)
+            files[path.relative_to(folder).as_posix()] = data
+    return files
+
+
 def test_results_do_not_depend_on_the_number_of_workers(tmp_path: Path) -> None:
     from vibrofriction.report import reproduce
 
-    one = reproduce(tmp_path / "one", quick=True, workers=1, progress=False, only=["fig04"])
-    two = reproduce(tmp_path / "two", quick=True, workers=2, progress=False, only=["fig04"])
-    assert one.workers == 1 and two.workers in (1, 2)
-    a = (tmp_path / "one" / "data" / "fig04_limits.csv").read_bytes()
-    b = (tmp_path / "two" / "data" / "fig04_limits.csv").read_bytes()
-    assert a == b
+    only = ["fig02", "fig04", "checks"]
+    one = reproduce(tmp_path / "one", quick=True, workers=1, progress=False, only=only)
+    two = reproduce(tmp_path / "two", quick=True, workers=2, progress=False, only=only)
+    assert one.workers == 1 and one.processes == (os.getpid(),)
+    # a pool of two processes did all the work (no silent fallback to this process)
+    assert two.workers == 2
+    assert two.processes and os.getpid() not in two.processes
+    assert len(two.processes) <= 2
+    a, b = _files(tmp_path / "one"), _files(tmp_path / "two")
+    assert sorted(a) == ["data/checks_static_limit.csv", "data/fig02_history.csv",
+                         "data/fig04_limits.csv", "deviations.csv", "fig02_history.png",
+                         "fig04_limits.png", "report.md"]
+    assert a.keys() == b.keys()
+    for name in a:
+        assert a[name] == b[name], name
     assert math.isfinite(one.seconds)
+
+
+# --------------------------------------------------------------------------- CLI errors
+def _reproduce_cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
+    exe = Path(sys.executable).with_name("vibrofriction")
+    return subprocess.run([str(exe), "reproduce", "--quick", "--no-progress", *args],
+                          capture_output=True, text=True, cwd=cwd, timeout=120,
+                          env={**os.environ, "PYTHONWARNINGS": "ignore"})
+
+
+@pytest.mark.parametrize(("args", "words"), [
+    (["--workers", "0"], ["--workers", ">= 1", "got 0"]),
+    (["--workers", "-3"], ["--workers", ">= 1", "got -3"]),
+    (["--only", "fig99"], ["--only 'fig99' matches no figure", "fig04_limits"]),
+    (["--only", "fig04", "--only", "nope"], ["--only 'nope' matches no figure"]),
+])
+def test_cli_bad_input_is_one_line_and_exit_2(tmp_path: Path, args, words) -> None:
+    r = _reproduce_cli("--out", "out", *args, cwd=tmp_path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert r.stderr.count("\n") == 1 and r.stderr.startswith("error: "), r.stderr
+    for word in words:
+        assert word in r.stderr
+    assert not (tmp_path / "out").exists()  # nothing started

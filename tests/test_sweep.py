@@ -16,8 +16,14 @@ import xarray as xr
 import vibrofriction
 import vibrofriction.sweep as vsweep
 from vibrofriction import Dimensionless, Physical, friction_coefficient
-from vibrofriction.solver import STATUS_BY_CODE, SolverSettings, solve_points
-from vibrofriction.sweep import make_plan, parse_axis, sweep
+from vibrofriction.solver import (
+    FLOAT_COLUMNS,
+    STATUS_BY_CODE,
+    SectionState,
+    SolverSettings,
+    solve_points,
+)
+from vibrofriction.sweep import cell_edges, is_geometric, make_plan, parse_axis, sweep
 
 VBAR = np.linspace(0.0, 1.2, 13)
 GRID = dict(alpha=[0.01, 0.1, 0.3], beta=[2.0, 5.0], amplitude=0.5, vbar=VBAR)
@@ -143,12 +149,20 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
     assert ds.sizes == {"alpha": 3, "beta": 2, "vbar": 13}
     assert float(ds.amplitude) == 0.5 and ds.amplitude.ndim == 0  # fixed: scalar coord
     assert ds.critical_velocity.dims == ("alpha", "beta")
-    for name in ("mu_ratio", "status", "error", "periods", "period", "events",
+    for name in ("mu_ratio", "status", "error", "trusted", "periods", "period", "events",
                  "stick_fraction", "slip_fraction", "reverse_slip_fraction",
-                 "flight_fraction", "v_inertial", "final_y", "final_x_dot", "final_f",
+                 "flight_fraction", "multiplier", "settling_periods", "window_min",
+                 "window_max", "v_inertial", "final_y", "final_x_dot", "final_f",
                  "final_phase", "critical_velocity"):
         assert name in ds.data_vars, name
         assert ds[name].attrs.get("long_name"), name
+    # every float result of the solver is stored (the section state as final_*)
+    assert set(FLOAT_COLUMNS) - {"y", "x_dot", "f"} <= set(ds.data_vars)
+    for name in ("multiplier", "settling_periods", "window_min", "window_max"):
+        assert ds[name].attrs["units"] in ("1", "drive periods"), name
+    assert ds.trusted.dtype == bool
+    assert "error <= tol_trusted" in ds.trusted.attrs["long_name"]
+    assert ds.attrs["solver_tol_trusted"] == SolverSettings().tol_trusted
     for name in ("mu_ratio", "critical_velocity", "alpha", "beta", "amplitude", "vbar"):
         assert "symbol" in ds[name].attrs and "units" in ds[name].attrs, name
     assert ds.mu_ratio.attrs["equation"] == "(25)"
@@ -178,6 +192,26 @@ def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:
         assert np.array_equal(row.periods.values, ref.periods)
         assert float(serial.critical_velocity.sel(alpha=al, beta=5.0)) == \
             system.critical_inertial_velocity()
+
+
+CONVERGED = [code for code, status in STATUS_BY_CODE.items() if status.ok]
+
+
+def test_trusted_is_converged_status_and_error_within_tol_trusted() -> None:
+    settings = SolverSettings(max_periods=20, min_periods=8, tol_trusted=1e-12)
+    ds = sweep(**GRID, settings=settings, workers=1, progress=False)
+    status, error = ds.status.values, ds.error.values
+    expected = np.isin(status, CONVERGED) & (error <= 1e-12)
+    assert np.array_equal(ds.trusted.values, expected)
+    # both reasons occur here: a status that did not converge, an error above tolerance
+    assert np.any(~np.isin(status, CONVERGED))
+    assert np.any(np.isin(status, CONVERGED) & (error > 1e-12))
+    assert ds.trusted.values.any()
+    assert ds.attrs["solver_tol_trusted"] == 1e-12
+    # the same notion as a single result's
+    system = Dimensionless(0.1, 5.0, 0.5)
+    ref = friction_coefficient(system, vbar=VBAR, settings=settings)
+    assert np.array_equal(ds.trusted.sel(alpha=0.1, beta=5.0).values, ref.trusted)
 
 
 def test_static_limit_and_continuous_sliding(serial: xr.Dataset) -> None:
@@ -268,6 +302,48 @@ def test_continuation_up_then_down_from_previous_states() -> None:
                              continuation=True, workers=2, chunk_size=1, progress=False))
 
 
+def _state(point: xr.Dataset) -> SectionState | None:
+    """The final section state stored for one point, or None where there is none."""
+    phase = int(point.final_phase)
+    if phase not in (0, 1, 2):
+        return None
+    return SectionState(float(point.final_y), float(point.final_x_dot), float(point.final_f),
+                        ("stick", "slip+", "slip-")[phase])
+
+
+def _walk_by_hand(alpha: float, beta: float, amplitude: float, V: np.ndarray,
+                  row: xr.Dataset) -> tuple[list[float], list[float]]:
+    """mu up then down in V, each point solved alone from the previous point's final
+    state as stored in ``row`` (dims direction, velocity)."""
+    up, down = [], []
+    for direction, order, out in (("up", range(len(V)), up),
+                                  ("down", range(len(V) - 1, -1, -1), down)):
+        previous = None if direction == "up" else row.sel(direction="up").isel(
+            {row.mu_ratio.dims[-1]: -1})
+        for j in order:
+            state = _state(previous) if previous is not None else None
+            cols = solve_points(alpha, beta, amplitude, V[j],
+                                initial=state if state is not None else "sliding")
+            out.append(float(cols["mu_ratio"]))
+            previous = row.sel(direction=direction).isel({row.mu_ratio.dims[-1]: j})
+    return up, down[::-1]
+
+
+def test_continuation_over_v_inertial() -> None:
+    V = np.array([0.0, 0.05, 0.1, 0.2, 0.4, 0.8])  # starts at the static limit (no state)
+    ds = sweep(alpha=[0.01, 1.0], beta=4.0, amplitude=0.5, v_inertial=V, continuation=True,
+               workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("alpha", "direction", "v_inertial")
+    for al in (0.01, 1.0):  # alpha = 1: case IV, where vbar does not exist
+        row = ds.sel(alpha=al)
+        up, down = _walk_by_hand(al, 4.0, 0.5, V, row)
+        assert row.sel(direction="up").mu_ratio.values.tolist() == up
+        assert row.sel(direction="down").mu_ratio.values.tolist() == down
+        assert np.isnan(row.final_y.sel(direction="up").values[0])  # V = 0: no state
+    assert_bitwise(ds, sweep(alpha=[0.01, 1.0], beta=4.0, amplitude=0.5, v_inertial=V,
+                             continuation=True, workers=2, chunk_size=1, progress=False))
+
+
 # --------------------------------------------------------------------------- physical
 def pin(**changes) -> Physical:
     base = dict(mass=0.01, k_x=0.01 * (2 * math.pi * 800) ** 2, k_xc=2.0e5, k_zc=2.5e5,
@@ -296,6 +372,24 @@ def test_physical_sweep() -> None:
             assert float(point.critical_velocity) == s.critical_velocity()
     assert_bitwise(ds, sweep(system, k_xc=[1.0e5, 2.0e5], du_z=[1.0e-6, 2.0e-6], v0=v0,
                              workers=2, chunk_size=4, progress=False))
+
+
+def test_continuation_over_a_physical_grid() -> None:
+    system = pin()
+    v0 = np.linspace(0.2, 1.6, 5) * system.critical_velocity()
+    ds = sweep(system, du_z=[1.0e-6, 2.0e-6], v0=v0, continuation=True, workers=1,
+               progress=False)
+    assert ds.mu_ratio.dims == ("du_z", "direction", "v0")
+    for du_z in (1.0e-6, 2.0e-6):
+        s = system.with_(du_z=du_z)
+        d = s.to_dimensionless()
+        row = ds.sel(du_z=du_z)
+        up, down = _walk_by_hand(d.alpha, d.beta, d.amplitude,
+                                 np.asarray(s.v0_to_inertial(v0)), row)
+        assert row.sel(direction="up").mu_ratio.values.tolist() == up
+        assert row.sel(direction="down").mu_ratio.values.tolist() == down
+    assert_bitwise(ds, sweep(system, du_z=[1.0e-6, 2.0e-6], v0=v0, continuation=True,
+                             workers=2, chunk_size=1, progress=False))
 
 
 @pytest.mark.parametrize(("kwargs", "message"), [
@@ -376,3 +470,82 @@ def test_plot_function_curves_and_map(serial: xr.Dataset, tmp_path: Path) -> Non
         vsweep.plot_atlas(serial, x="vbar", y="alpha")
     with pytest.raises(ValueError, match="unknown variable"):
         vsweep.plot_atlas(serial, var="nope")
+
+
+def test_cli_sweep_exits_3_when_points_are_not_trusted(tmp_path: Path) -> None:
+    r = _cli("sweep", "--alpha", "0.01,0.1,0.3", "--beta", "2,5", "--amplitude", "0.5",
+             "--vbar", "0:1.2:13", "--out", "atlas.zarr", "--workers", "1",
+             "--max-periods", "20", "--tol-trusted", "1e-12", "--no-progress", cwd=tmp_path)
+    assert r.returncode == 3, (r.stdout, r.stderr)
+    stored = vsweep.open_atlas(tmp_path / "atlas.zarr").load()
+    assert stored.attrs["blocks_done"] == stored.attrs["blocks_total"]  # all written
+    assert "78 points" in r.stdout
+    trusted, status, error = (stored[k].values for k in ("trusted", "status", "error"))
+    bad = ~trusted
+    assert r.stderr.count("\n") == 1
+    assert r.stderr.startswith(f"{int(bad.sum())} of 78 points are not trusted (")
+    not_converged = int(np.sum(status == 2))
+    assert not_converged and f"status not converged: {not_converged}" in r.stderr
+    large = int(np.sum(np.isin(status, CONVERGED) & (error > 1e-12)))
+    assert large and f"error > tol_trusted = 1e-12: {large}" in r.stderr
+
+
+@pytest.fixture(scope="module")
+def store(tmp_path_factory) -> Path:
+    path = tmp_path_factory.mktemp("plot") / "atlas.zarr"
+    sweep(**GRID, store=path, workers=1, progress=False)
+    return path
+
+
+@pytest.mark.parametrize(("sel", "message"), [
+    ("beta", "--sel takes dim=value, got 'beta'"),
+    ("=2", "--sel takes dim=value"),
+    ("gamma=2", "--sel gamma: not a dimension of the atlas (dimensions: alpha, beta, vbar)"),
+    ("beta=abc", "--sel beta='abc': the value must be a number"),
+    ("direction=up", "--sel direction: not a dimension"),
+])
+def test_cli_plot_bad_sel_is_one_line_and_exit_2(store: Path, tmp_path: Path, sel,
+                                                message) -> None:
+    r = _cli("plot", str(store), "--sel", sel, "--out", "x.png", cwd=tmp_path)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert r.stderr.count("\n") == 1 and message in r.stderr, r.stderr
+    assert not (tmp_path / "x.png").exists()
+
+
+def test_plot_marks_points_by_trusted_not_by_status(serial: xr.Dataset) -> None:
+    from matplotlib.collections import PatchCollection
+
+    ds = serial.copy(deep=True)
+    assert ds.trusted.values.all()
+    # two converged points declared untrusted: only `trusted` can tell the plot so
+    picks = [dict(alpha=0.1, vbar=VBAR[5]), dict(alpha=0.3, vbar=VBAR[7])]
+    for pick in picks:
+        ds["trusted"].loc[dict(beta=2.0, **pick)] = False
+    assert np.all(np.isin(ds.status.values, CONVERGED))
+    fig = vsweep.plot_atlas(ds, sel={"beta": 2.0})
+    ax = fig.axes[0]
+    crosses = [line for line in ax.lines if line.get_marker() == "x"]
+    marked = sorted(float(y) for line in crosses for y in line.get_ydata() if np.isfinite(y))
+    expected = sorted(float(ds.mu_ratio.sel(beta=2.0, **pick)) for pick in picks)
+    assert marked == expected
+    drawn = [y for line in ax.lines if line.get_marker() != "x" for y in line.get_ydata()]
+    assert all(float(ds.mu_ratio.sel(beta=2.0, **pick)) not in drawn for pick in picks)
+    fig = vsweep.plot_atlas(ds, x="vbar", y="alpha", sel={"beta": 2.0})
+    hatched = [c for c in fig.axes[0].collections if isinstance(c, PatchCollection)]
+    assert len(hatched) == 1 and len(hatched[0].get_paths()) == 2
+    assert hatched[0].get_hatch()
+    mesh = fig.axes[0].collections[0].get_array()  # untrusted cells carry no colour
+    assert int(np.ma.count_masked(mesh)) == 2
+
+
+def test_cell_edges() -> None:
+    # geometric: midpoints in log, outer edges mirrored: 10^-0.5, 10^0.5, 10^1.5, 10^2.5
+    np.testing.assert_allclose(cell_edges([1.0, 10.0, 100.0]),
+                               [10**-0.5, 10**0.5, 10**1.5, 10**2.5], rtol=1e-14)
+    np.testing.assert_allclose(cell_edges([0.0, 1.0, 3.0]), [-0.5, 0.5, 2.0, 4.0])
+    np.testing.assert_allclose(cell_edges([2.0, 4.0], log=True),
+                               [2**0.5, 2 * 2**0.5, 4 * 2**0.5])
+    np.testing.assert_allclose(cell_edges([5.0]), [4.5, 5.5])
+    assert is_geometric(np.geomspace(0.01, 100, 9)) and not is_geometric([1.0, 2.0, 3.0])
+    with pytest.raises(ValueError, match="cannot draw cells along beta"):
+        cell_edges([2.0, math.inf], name="beta")

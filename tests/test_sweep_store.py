@@ -3,6 +3,7 @@ SIGKILL in the middle of a multi-process sweep."""
 
 from __future__ import annotations
 
+import json
 import os
 import signal
 import subprocess
@@ -96,6 +97,26 @@ def test_store_of_another_sweep_is_a_clear_error(tmp_path: Path, changes, messag
     sweep(**GRID, store=path, workers=1, chunk_size=40, progress=False)
     with pytest.raises(ValueError, match=r"holds a different sweep \(" + message):
         sweep(**{**GRID, **changes}, store=path, workers=1, progress=False)
+
+
+@pytest.mark.parametrize(("edit", "message"), [
+    (lambda sig: sig["variables"].pop("trusted"),
+     r"variables.trusted: store has absent, this call \['bool', False\]"),
+    (lambda sig: sig["variables"].update(final_phase=["i1", -1]),
+     r"variables.final_phase: store has \['i1', -1\], this call \['i1', -128\]"),
+    (lambda sig: sig.pop("variables"), r"variables: the store was written with another set"),
+])
+def test_store_with_other_variables_is_an_error(tmp_path: Path, edit, message) -> None:
+    """The variables (names, dtypes, fill values) are part of a store's signature."""
+    path = tmp_path / "atlas.zarr"
+    sweep(**GRID, store=path, workers=1, chunk_size=40, progress=False)
+    meta = zarr.open_group(str(path), mode="r+")["_sweep"]
+    signature = json.loads(meta.attrs["signature"])
+    assert {"trusted", "multiplier", "settling_periods"} <= set(signature["variables"])
+    edit(signature)
+    meta.attrs["signature"] = json.dumps(signature, sort_keys=True)
+    with pytest.raises(ValueError, match=r"holds a different sweep \(" + message):
+        sweep(**GRID, store=path, workers=1, progress=False)
 
 
 def test_store_of_another_version_or_solver_is_an_error(tmp_path: Path, monkeypatch) -> None:

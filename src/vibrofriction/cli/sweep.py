@@ -52,6 +52,8 @@ def sweep_command(
         help="walk each velocity curve up then down from the previous final state")] = False,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
     max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
+    tol_trusted: Annotated[float, typer.Option(
+        help="largest error estimate of a trusted point")] = SolverSettings.tol_trusted,
     overwrite: Annotated[bool, typer.Option(help="replace the store, do not resume")] = False,
     progress: Annotated[bool, typer.Option(help="progress bar on stderr")] = True,
 ) -> None:
@@ -74,7 +76,8 @@ def sweep_command(
     grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
                       v_inertial=v_inertial), phys, v0)
     options = dict(store=out, chunk_size=chunk_size,
-                   settings=SolverSettings(max_periods=max_periods), initial=initial,
+                   settings=SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted),
+                   initial=initial,
                    continuation=continuation, progress=progress, overwrite=overwrite)
     start = time.perf_counter()
     ds = _run(grid, options, scheduler=scheduler, workers=workers)
