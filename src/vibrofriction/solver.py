@@ -139,8 +139,6 @@ class SolverSettings:
             ok = np.isin(st, _CONVERGED_CODES)
         err = np.nan_to_num(np.asarray(error, dtype=float), nan=np.inf)
         return ok & (err <= self.tol_trusted)
-        if not (isinstance(self.max_events, int | np.integer) and self.max_events >= 1):
-            raise ValueError(f"max_events must be an integer >= 1, got {self.max_events!r}")
 
 
 _DEFAULT_SETTINGS = SolverSettings()
