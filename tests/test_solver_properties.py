@@ -34,7 +34,7 @@ def test_random_points_are_honest(la, lk, rigid, a, v):
     assert r.mu_ratio >= -1.0 - 1e-9
     if r.status is vf.Status.PERIODIC:
         assert r.period >= 1 and 0.0 < r.error
-        assert math.isnan(r.multiplier) or 0.0 <= r.multiplier < 1.0 + 1e-6  # nan: no chart
+        assert math.isnan(r.multiplier) or r.multiplier >= 0.0  # nan: no single chart
         # a periodic result is exact to round-off unless the orbit is neutral, where the
         # error covers the real motion over periods 512-1024 (docs/solver.md), or the
         # verification window could not be integrated (error inf, not trusted)
