@@ -1,12 +1,12 @@
 """The two peer integrators the event-driven solver is benchmarked against.
 
-Thin wrappers over :mod:`vibrofriction.reference` with the period counts used
+Thin wrappers over :mod:`vibrofriction_reference` with the period counts used
 for benchmarking (see ``benchmarks/README.md`` for why these counts):
 
-* ``peer_a`` -- :func:`vibrofriction.reference.solve_ivp_mu`: scipy ``solve_ivp``
+* ``peer_a`` -- :func:`vibrofriction_reference.solve_ivp_mu`: scipy ``solve_ivp``
   (DOP853, rtol 1e-10, atol 1e-12) phase by phase with terminal events;
   200 transient + 20 averaging drive periods.
-* ``peer_b`` -- :func:`vibrofriction.reference.return_mapping_mu`: numba
+* ``peer_b`` -- :func:`vibrofriction_reference.return_mapping_mu`: numba
   fixed-step velocity Verlet + Jenkins return mapping (Moreau time-stepping for
   a rigid contact); 200 transient + 50 averaging drive periods.
 
@@ -16,7 +16,7 @@ Both start from the default "sliding" initial state of docs/model.md and return
 
 from __future__ import annotations
 
-from vibrofriction.reference import return_mapping_mu, solve_ivp_mu
+from vibrofriction_reference import return_mapping_mu, solve_ivp_mu
 
 __all__ = [
     "PEER_A_AVERAGE_PERIODS",

@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
-from vibrofriction.reference import return_mapping_mu
+from vibrofriction_reference import return_mapping_mu
 
 REGIMES = ("soft", "stiff", "general", "alpha>1", "jumping above v0*",
            "jumping above v0*, alpha>1", "rigid", "resonant IV")

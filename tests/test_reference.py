@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pytest
 
-from vibrofriction.reference import (
+from vibrofriction_reference import (
     INITIAL_REST,
     return_mapping_history,
     return_mapping_mu,

@@ -1,6 +1,6 @@
 """Agreement with an independent fixed-step integrator (return-mapping Jenkins element).
 
-The reference (:mod:`vibrofriction.reference`) shares no code with the kernels: velocity
+The reference (:mod:`vibrofriction_reference`) shares no code with the kernels: velocity
 Verlet for the body, an elastic-predictor / plastic-corrector step for the contact,
 Moreau time-stepping for a rigid contact.  Its error falls with the step, so agreement
 is asserted at the reference's own accuracy and the error must shrink as it is refined.
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
-from vibrofriction.reference import return_mapping_mu
+from vibrofriction_reference import return_mapping_mu
 
 # (alpha, beta, amplitude, vbar) spread over every regime; vbar None: case III/IV,
 # then the last entry is v_inertial.

@@ -1,0 +1,57 @@
+"""Independent reference integrators for the in-plane model (Mao et al. 2017, Part II).
+
+A package of its own: it imports nothing from ``vibrofriction`` (checked by an
+import-linter contract), so that agreeing with it means something.
+
+Two peers of the exact event-driven solver, written from the model statement
+alone (``docs/model.md``) and sharing no code with it, so that tests can
+use them to check it and benchmarks can time it against them.
+
+Scaled variables (docs/model.md): time ``tau = omega t``, body position ``x``,
+contact force ``f`` in units of ``mu0 F_N0``, pulling velocity ``V``::
+
+    x'' = alpha (V tau - x) - f            n(tau) = max(0, 1 + a cos tau)
+    |f| <= n;  finite contact stiffness k = beta - alpha: f = k (x - x_c),
+    x_c' = 0 while |f| < n (stick), |f| = n with sign(x_c') = sign(f) (slip),
+    f = 0 in flight (n = 0), touchdown in stick with f = 0;
+    rigid contact (beta = inf): stick means x' = 0.
+
+    mu_ratio = mu_macro / mu0 = <f> / <n>         (paper eq. 25)
+
+Both peers work with the drift removed, ``y = x - V tau``, so that nothing grows
+over long runs.
+
+* **Peer B**, :func:`return_mapping_mu` -- fixed-step explicit dynamics in numba.
+  Finite contact stiffness: velocity Verlet for the body, and the contact force
+  from a return mapping (elastic predictor / plastic corrector) of the Jenkins
+  element at every step. Rigid contact: Moreau's midpoint time-stepping (the
+  friction impulse of each step is chosen in ``[-n dt, n dt]`` so that the
+  body stops if it can). Averages by the trapezoid rule (Verlet) or the
+  midpoint rule (Moreau), matching where each scheme evaluates the force.
+* **Peer A**, :func:`solve_ivp_mu` -- what a Python user would write today:
+  :func:`scipy.integrate.solve_ivp` phase by phase with terminal events for the
+  stick/slip switches; lift-off and touchdown times are known in closed form
+  and cut the time axis; quadrature state variables accumulate the integrals of
+  ``f`` and ``n``.
+
+Neither peer detects a periodic orbit: each averages over a fixed window after a
+fixed transient, from a stated initial state. Compare them (and the main
+solver) at the same transient/average windows when checking discretisation
+error, or with windows long enough that the steady state is reached.
+"""
+
+from .events import PeerRun, solve_ivp_mu, solve_ivp_run
+from .fixed_step import ReferenceHistory, return_mapping_history, return_mapping_mu
+from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
+
+__all__ = [
+    "INITIAL_REST",
+    "INITIAL_SLIDING",
+    "PeerRun",
+    "ReferenceHistory",
+    "return_mapping_history",
+    "return_mapping_mu",
+    "solve_ivp_mu",
+    "solve_ivp_run",
+    "steps_per_drive_period",
+]

@@ -1,0 +1,80 @@
+"""What both reference integrators share: initial states, the normal force, contact angles.
+
+Written from the model statement (``docs/model.md``), independently of the
+``vibrofriction`` package (an import-linter contract forbids any import from it).
+Parameters are plain floats; checking physical parameters is the caller's task
+(the tests build every point from ``vibrofriction.Dimensionless``), and only what
+an integrator cannot run without is refused here.
+"""
+
+from __future__ import annotations
+
+import math
+
+from numba import njit
+
+__all__ = ["INITIAL_REST", "INITIAL_SLIDING", "TWO_PI", "check_parameters", "contact_angle",
+           "initial_code", "normal", "steps_per_drive_period"]
+
+INITIAL_SLIDING = 0
+"""Initial state ``tau = 0, x = -1/alpha, x' = V, f = 1`` (sliding before the oscillation)."""
+INITIAL_REST = 1
+"""Initial state ``tau = 0, x = 0, x' = 0, f = 0``."""
+
+TWO_PI = 2.0 * math.pi
+
+
+def initial_code(initial) -> int:
+    """0 (sliding) or 1 (rest) from a name or a code."""
+    if isinstance(initial, str):
+        codes = {"sliding": INITIAL_SLIDING, "rest": INITIAL_REST}
+        if initial not in codes:
+            raise ValueError(f"initial must be 'sliding' or 'rest', got {initial!r}")
+        return codes[initial]
+    code = int(initial)
+    if code not in (INITIAL_SLIDING, INITIAL_REST):
+        raise ValueError(f"initial must be 0 (sliding) or 1 (rest), got {initial!r}")
+    return code
+
+
+def check_parameters(alpha, beta, amplitude, V) -> tuple[float, float, float, float]:
+    """Plain floats, or ValueError where the integrators cannot run (the least they need)."""
+    alpha, beta, amplitude, V = float(alpha), float(beta), float(amplitude), float(V)
+    if not (alpha > 0.0 and math.isfinite(alpha)):
+        raise ValueError(f"alpha must be positive and finite, got {alpha}")
+    if not beta > alpha:
+        raise ValueError(f"beta must exceed alpha (or be math.inf), got beta={beta}")
+    if not (amplitude >= 0.0 and math.isfinite(amplitude)):
+        raise ValueError(f"amplitude must be >= 0 and finite, got {amplitude}")
+    if not math.isfinite(V):
+        raise ValueError(f"V must be finite, got {V}")
+    return alpha, beta, amplitude, V
+
+
+def steps_per_drive_period(alpha: float, beta: float, steps_per_period: float) -> int:
+    """Number of fixed steps per drive period ``2 pi`` used by :func:`return_mapping_mu`.
+
+    ``steps_per_period`` steps per period of the fastest of the drive (frequency 1),
+    the slip oscillation (``sqrt(alpha)``) and, for a finite contact, the stick
+    oscillation (``sqrt(beta)``), rounded up to a whole number per drive period.
+    """
+    w = max(1.0, math.sqrt(alpha))
+    if math.isfinite(beta):
+        w = max(w, math.sqrt(beta))
+    return max(4, int(math.ceil(steps_per_period * w - 1e-9)))
+
+
+@njit(cache=True)
+def normal(tau, a):
+    """``n = max(0, 1 + a cos tau)``."""
+    n = 1.0 + a * math.cos(tau)
+    return n if n > 0.0 else 0.0
+
+
+@njit(cache=True)
+def contact_angle(a):
+    """``theta = arccos(-1/a)`` (``a >= 1``): in contact while ``|tau mod 2 pi| < theta``.
+
+    Lift-off at ``2 pi j + theta``, touch-down at ``2 pi (j + 1) - theta``.
+    """
+    return math.acos(-1.0 / a)
