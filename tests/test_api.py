@@ -130,3 +130,9 @@ def test_sweep_is_reachable_from_the_package_without_eager_import():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          timeout=120)
     assert out.returncode == 0, out.stderr
+
+
+def test_the_version_is_the_installed_distributions():
+    from importlib.metadata import version
+
+    assert vf.__version__ == version("vibrofriction") != "0+unknown"

@@ -10,10 +10,11 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
+import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.figures import all_recipes, history, maps, style
 from vibrofriction.figures.recipe import Table, curve_table, max_deviation, solve_recipes
-from vibrofriction.figures.series import TRUSTED_ERROR, Curve, Series, series_at_vbar, solve
+from vibrofriction.figures.series import Series, series_at_vbar, solve
 from vibrofriction.solver import solve_points
 
 C0 = math.sqrt(4.0 * math.pi / 9.0)
@@ -42,7 +43,7 @@ def test_series_validates_and_converts() -> None:
     with pytest.raises(ValueError, match="v_inertial must be"):
         Series("bad", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))
     for alpha, beta in ((0.5, 1.0), (1.0, 3.0)):  # cases III and IV: no vbar
-        with pytest.raises(ValueError, match="vbar does not exist"):
+        with pytest.raises(ValueError, match="vbar is undefined"):
             series_at_vbar("k", alpha, beta, 0.5, [0.1])
 
 
@@ -58,14 +59,20 @@ def test_solve_cuts_the_batch_back_into_curves() -> None:
         solve([a, a])
 
 
-def test_untrusted_points_are_flagged() -> None:
-    s = Series("k", 0.5, 2.0, 0.5, np.array([0.1, 0.2, 0.3]), np.full(3, np.nan))
-    c = Curve(s, np.array([0.5, 0.6, 1e-9]), np.array([1e-12, 1e-3, 1e10]),
-              np.array([0, 2, 0]), np.zeros(3, int), np.zeros(3), np.zeros(3))
-    np.testing.assert_array_equal(c.ok, [True, False, False])       # not converged; error
-    np.testing.assert_array_equal(c.suspicious, [False, False, True])  # "periodic" but 1e10
-    assert np.isnan(c.trusted_mu[1:]).all() and c.trusted_mu[0] == 0.5
-    assert TRUSTED_ERROR < 1e-3
+def test_curves_carry_the_solvers_trusted_flags() -> None:
+    """The figures hide exactly what the solver does not trust (one definition)."""
+    s = series_at_vbar("k", 0.01, 1.01, 1.0, [0.02, 0.5])  # near beta = 1: does not settle
+    tight = vf.SolverSettings(max_periods=500)
+    c = solve([s], settings=tight)["k"]
+    direct = vf.friction_coefficient(vf.Dimensionless(0.01, 1.01, 1.0), vbar=[0.02, 0.5],
+                                     settings=tight)
+    np.testing.assert_array_equal(c.trusted, direct.trusted)
+    assert not c.trusted.all()
+    np.testing.assert_array_equal(np.isnan(c.trusted_mu), ~c.trusted)
+    # a converged status with an error above tol_trusted is 'suspicious', not trusted
+    strict = solve([series_at_vbar("g", 0.5, 2.0, 0.5, [0.3])],
+                   settings=vf.SolverSettings(tol_trusted=1e-15))["g"]
+    assert strict.suspicious.all() and not strict.trusted.any()
 
 
 # --------------------------------------------------------------------------- tables
@@ -165,3 +172,21 @@ def test_soft_law_corrected_against_the_solver_near_the_soft_limit() -> None:
     c = theory.inertial_per_vbar(0.01, 1.0e4, a)
     mu = solve_points(0.01, 1.0e4, a, c * vbar)["mu_ratio"]
     np.testing.assert_allclose(mu, theory.mu_ratio_soft_corrected(vbar, a), atol=0.006)
+
+
+def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Path) -> None:
+    """A notebook's backend must survive ``import vibrofriction.figures`` (and a save)."""
+    import subprocess
+    import sys
+
+    code = ("import matplotlib; matplotlib.use('svg'); "
+            "import vibrofriction.figures as f; from vibrofriction.figures import style; "
+            "fig = style.figure(); fig.add_subplot().plot([0, 1]); "
+            f"style.save(fig, {str(tmp_path)!r}, 'x'); print(matplotlib.get_backend())")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip() == "svg"
+    assert (tmp_path / "x.png").stat().st_size > 1000
+    pdf = (tmp_path / "x.pdf").read_bytes()
+    assert b"CreationDate" not in pdf

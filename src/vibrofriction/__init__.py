@@ -4,6 +4,8 @@ Implements and extends X. Mao, V. L. Popov, J. Starcevic, M. Popov, "Reduction o
 friction by normal oscillations. II. In-plane system dynamics", Friction (2017).
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from .params import Case, Dimensionless, Physical, classify
 from .solver import (
     Event,
@@ -17,7 +19,10 @@ from .solver import (
     simulate,
 )
 
-__version__ = "0.1.0"
+try:  # the one place the version is written is pyproject.toml
+    __version__ = version("vibrofriction")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree not installed
+    __version__ = "0+unknown"
 
 
 def __getattr__(name: str):

@@ -33,7 +33,7 @@ from .figures import all_recipes, style
 from .figures.recipe import Check, Recipe, Rendered, Table, curve_table, max_deviation
 from .figures.series import Curve, Series, series_at_vbar, solve
 from .params import Dimensionless
-from .solver import STATUS_BY_CODE, simulate, solve_points
+from .solver import STATUS_BY_CODE, SolverSettings, simulate, solve_points
 
 if TYPE_CHECKING:
     from .sweep.pool import Task
@@ -158,7 +158,7 @@ def _render(index: int, quick: bool, name: str, out: Path,
     suspicious = []
     untrusted = 0
     for c in curves.values():
-        untrusted += int(np.sum(~c.ok))
+        untrusted += int(np.sum(~c.trusted))
         for i in np.flatnonzero(c.suspicious):
             s = c.series
             suspicious.append(
@@ -409,14 +409,14 @@ def _write_report(out: Path, todo: Sequence[Recipe], done: Sequence[_Done],
     suspicious = [s for d in done for s in d.suspicious]
     lines += ["", "## Solver results that look wrong", ""]
     if suspicious:
-        lines.append("These points report a converged status but an error estimate far "
-                     "above tolerance; they are excluded from the curves and reported to "
-                     "the solver's maintainers:")
+        lines.append("These points report a converged status but an error estimate above "
+                     f"tol_trusted = {SolverSettings().tol_trusted:g} (not trusted); they are "
+                     "excluded from the curves:")
         lines.append("")
         lines += [f"* {s}" for s in suspicious]
     else:
         lines.append("None: every point with a converged status has an error estimate "
-                     "below 1e-5.")
+                     f"within tol_trusted = {SolverSettings().tol_trusted:g}.")
     lines += ["", "## Figures", ""]
     for d in done:
         r = todo[d.index]

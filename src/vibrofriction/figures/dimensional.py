@@ -87,7 +87,7 @@ def _draw(curves: Mapping[str, Curve]):
         c = curves[name]
         v0 = c.series.meta["v0"]
         m = v0 > 0
-        ok = c.ok[m]
+        ok = c.trusted[m]
         phys = physical_system(name)
         dim = phys.to_dimensionless()
         label = (f"{name}: {f / 1000:g} kHz, " + rf"$\alpha$={dim.alpha:.2g}, "
@@ -141,7 +141,7 @@ def fig10(quick: bool = False) -> Recipe:
                          f"case {dim.case.value}, v0* = {vstar:.4g} m/s (eq. 12)")
             if math.isfinite(vstar):
                 v0 = c.series.meta["v0"]
-                m = (v0 >= vstar) & c.ok
+                m = (v0 >= vstar) & c.trusted
                 d = float(np.max(np.abs(c.mu_ratio[m] - 1.0))) if np.any(m) else math.nan
                 checks.append(Check("eq. (12) in m/s: COF = mu0 above v0*", f"fig10: {name}, "
                                     f"v0 in [{vstar:.3g}, {v0[-1]:g}] m/s", d, "",

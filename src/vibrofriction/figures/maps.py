@@ -18,6 +18,7 @@ from matplotlib import colors as mcolors
 
 from .. import theory
 from ..params import Case, classify
+from ..sweep import cell_edges
 from . import style
 from .recipe import Recipe, Rendered, Table
 from .series import Curve, Series
@@ -40,12 +41,6 @@ def grid(n_alpha: int, n_beta: int) -> tuple[np.ndarray, np.ndarray]:
     if np.any(alpha == 1.0) or np.any(beta == 1.0):
         raise ValueError("the map grid must avoid alpha = 1 and beta = 1 (vbar undefined)")
     return alpha, beta
-
-
-def _edges(x: np.ndarray) -> np.ndarray:
-    lx = np.log(x)
-    mid = 0.5 * (lx[1:] + lx[:-1])
-    return np.exp(np.concatenate([[2 * lx[0] - mid[0]], mid, [2 * lx[-1] - mid[-1]]]))
 
 
 def _series(quick: bool) -> tuple[Series, ...]:
@@ -80,7 +75,7 @@ def _field(curves: Mapping[str, Curve], kind: str, alpha: np.ndarray, beta: np.n
             continue
         i, j = int(s.meta["row"]), index[s.meta["alpha"]]
         mu[i, j] = c.mu_ratio[0]
-        ok[i, j] = bool(c.ok[0])
+        ok[i, j] = bool(c.trusted[0])
     return mu, ok
 
 
@@ -92,7 +87,7 @@ def _decorate(ax, alpha: np.ndarray, beta: np.ndarray, cases: np.ndarray) -> Non
     ax.axvline(1.0, color=style.RESONANT, lw=1.0, zorder=3)
     ax.axhline(1.0, color=style.RESONANT, lw=1.0, zorder=3)
     # case regions (classify with its default thresholds) as outlines
-    ea, eb = _edges(alpha), _edges(beta)
+    ea, eb = cell_edges(alpha, log=True, name="alpha"), cell_edges(beta, log=True, name="beta")
     for code in (1, 2):
         ax.contour(alpha, beta, (cases == code).astype(float), levels=[0.5], colors="white",
                    linewidths=0.8, zorder=4)
@@ -124,7 +119,7 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
                          otypes=[int])(A, B)
     ratio = np.where(valid, np.asarray(theory.inertial_per_vbar(A, np.where(valid, B, A + 1),
                                                                 1.0)), np.nan)
-    ea, eb = _edges(alpha), _edges(beta)
+    ea, eb = cell_edges(alpha, log=True, name="alpha"), cell_edges(beta, log=True, name="beta")
     m = axes[0].pcolormesh(ea, eb, np.ma.masked_invalid(ratio), shading="flat",
                            norm=mcolors.LogNorm(1e-2, 1e2), cmap="cividis", rasterized=True)
     cb = fig.colorbar(m, ax=axes[0], pad=0.02, shrink=0.9, extend="both")

@@ -85,7 +85,7 @@ def _draw_fig6(curves: Mapping[str, Curve]):
         c = curves[f"a={a:g}"]
         color = "black" if a <= 1.0 else "0.55"
         ax.plot(c.v_inertial, c.trusted_mu, color=color, lw=1.1)
-        bad = ~c.ok
+        bad = ~c.trusted
         ax.plot(c.v_inertial[bad], np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.5, mfc="none",
                 mec=style.THEORY, mew=0.6)
         exact = float(theory.resonant_plateau_exact(a))
@@ -234,7 +234,7 @@ def _draw_fig89(curves: Mapping[str, Curve]):
         ax.plot(v0, mu0 * c.trusted_mu, color=col, lw=1.1,
                 label=rf"({EXPERIMENT_AMPLITUDES_UM.index(du) + 1}) $\Delta u_z = {du:g}$ $\mu$m"
                       rf" ($a = {a:.2f}$)")
-        bad = ~c.ok
+        bad = ~c.trusted
         ax.plot(v0[bad], mu0 * np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.5, mfc="none",
                 mec=style.THEORY, mew=0.6)
     ax.set_xlim(0, float(_v0_grid(False)[-1]))

@@ -12,21 +12,17 @@ does not depend on how the batch is split.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import theory
+from ..params import vbar_to_inertial
 from ..solver import STATUS_BY_CODE, SolverSettings, solve_points
+from ..validation import checked
 
-__all__ = ["TRUSTED_ERROR", "Curve", "Runner", "Series", "solve", "series_at_vbar",
-           "status_counts"]
-
-#: Largest error estimate (absolute, in ``mu/mu0``) of a point that is drawn as trusted.
-TRUSTED_ERROR: float = 1e-5
+__all__ = ["Curve", "Runner", "Series", "solve", "series_at_vbar", "status_counts"]
 
 #: ``runner(alpha, beta, amplitude, v_inertial, settings=...) -> dict of arrays``.
 Runner = Callable[..., dict[str, NDArray]]
@@ -51,10 +47,10 @@ class Series:
     meta: Mapping[str, object] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
-        v = np.asarray(self.v_inertial, dtype=float)
-        if v.ndim != 1 or not np.all(np.isfinite(v) & (v >= 0.0)):
-            raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array of "
-                             "finite velocities >= 0")
+        v = checked(f"series {self.key!r}: v_inertial", self.v_inertial, minimum=0.0)
+        if v.ndim != 1:
+            raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array, "
+                             f"got shape {v.shape}")
         object.__setattr__(self, "v_inertial", v)
         vb = np.broadcast_to(np.asarray(self.vbar, dtype=float), v.shape).copy()
         object.__setattr__(self, "vbar", vb)
@@ -68,16 +64,17 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
                    vbar: ArrayLike, **meta: object) -> Series:
     """A series on a grid of ``vbar = v0/v0*`` (eqs. 12, 16); needs ``alpha != 1 != beta``."""
     vb = np.asarray(vbar, dtype=float)
-    c = float(theory.inertial_per_vbar(alpha, beta, amplitude))
-    if c == 0.0 or math.isinf(c):
-        raise ValueError(f"series {key!r}: vbar does not exist at alpha={alpha}, beta={beta} "
-                         f"(v0* is {c}); use the inertial velocity")
-    return Series(key, alpha, beta, amplitude, c * vb, vb, meta)
+    try:
+        V = vbar_to_inertial(alpha, beta, amplitude, vb)
+    except ValueError as exc:
+        raise ValueError(f"series {key!r}: {exc}") from None
+    return Series(key, alpha, beta, amplitude, np.atleast_1d(V), vb, meta)
 
 
 @dataclass(frozen=True)
 class Curve:
-    """A solved :class:`Series`: ``mu_ratio`` (eq. 25), its ``error`` and status codes."""
+    """A solved :class:`Series`: ``mu_ratio`` (eq. 25), its ``error``, status codes and
+    ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`)."""
 
     series: Series
     mu_ratio: NDArray[np.float64]
@@ -86,29 +83,19 @@ class Curve:
     period: NDArray[np.int64]
     stick_fraction: NDArray[np.float64]
     flight_fraction: NDArray[np.float64]
-
-    @property
-    def ok(self) -> NDArray[np.bool_]:
-        """Points to trust: a converged status and an error estimate below :data:`TRUSTED_ERROR`.
-
-        The second condition catches a result whose status claims convergence although
-        its own error estimate says otherwise (seen for a periodic orbit accepted from a
-        diverged Newton step); such points are drawn as open circles and listed in the
-        report instead of being joined into the curve.
-        """
-        status_ok = np.array([STATUS_BY_CODE[int(s)].ok for s in self.status], dtype=bool)
-        return status_ok & (np.nan_to_num(self.error, nan=np.inf) <= TRUSTED_ERROR)
+    trusted: NDArray[np.bool_]
 
     @property
     def suspicious(self) -> NDArray[np.bool_]:
-        """Points whose status claims convergence but whose error estimate is large."""
+        """Points whose status claims convergence but whose error estimate is too large
+        to trust; drawn as open circles and listed in the report."""
         status_ok = np.array([STATUS_BY_CODE[int(s)].ok for s in self.status], dtype=bool)
-        return status_ok & ~self.ok
+        return status_ok & ~self.trusted
 
     @property
     def trusted_mu(self) -> NDArray[np.float64]:
-        """``mu_ratio`` with untrusted points (see :attr:`ok`) replaced by nan, for lines."""
-        return np.where(self.ok, self.mu_ratio, np.nan)
+        """``mu_ratio`` with untrusted points replaced by nan, for lines."""
+        return np.where(self.trusted, self.mu_ratio, np.nan)
 
     # shortcuts
     @property
@@ -143,7 +130,7 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         curves[s.key] = Curve(s, out["mu_ratio"][sl].copy(), out["error"][sl].copy(),
                               out["status"][sl].copy(), out["period"][sl].copy(),
                               out["stick_fraction"][sl].copy(),
-                              out["flight_fraction"][sl].copy())
+                              out["flight_fraction"][sl].copy(), out["trusted"][sl].copy())
         start += n
     return curves
 

@@ -1,4 +1,8 @@
-"""One matplotlib style for every figure: Agg backend, column widths, the paper's symbols.
+"""One matplotlib style for every figure: column widths, the paper's symbols.
+
+Figures are built with the object-oriented API (``matplotlib.figure.Figure``, no
+pyplot), so importing this package leaves the backend of a notebook or script as
+it was and works headless.
 
 Sizes follow a two-column journal page: :data:`COLUMN` (one column, 3.4 in) and
 :data:`PAGE` (both columns, 7.0 in); fonts are 8 pt so that the figures are
@@ -15,11 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import matplotlib
-
-matplotlib.use("Agg")  # headless; must precede pyplot
-
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.figure import Figure
 
 __all__ = [
     "COLUMN",
@@ -136,7 +136,8 @@ def save(fig: Figure, directory: Path, name: str) -> list[Path]:
     with matplotlib.rc_context(RC):
         for ext in ("png", "pdf"):
             path = directory / f"{name}.{ext}"
-            fig.savefig(path)
+            # no creation date in the PDF: a reproduction is byte-for-byte repeatable
+            fig.savefig(path, metadata={"CreationDate": None} if ext == "pdf" else None)
             paths.append(path)
             fig.set_layout_engine("none")
     return paths
@@ -145,7 +146,7 @@ def save(fig: Figure, directory: Path, name: str) -> list[Path]:
 def sequence_colors(n: int, cmap: str = "viridis", lo: float = 0.0,
                     hi: float = 0.85) -> list[tuple[float, float, float, float]]:
     """``n`` colours evenly spaced along a perceptually uniform colormap."""
-    cm = plt.get_cmap(cmap)
+    cm = matplotlib.colormaps[cmap]
     if n == 1:
         return [cm(lo)]
     return [cm(lo + (hi - lo) * i / (n - 1)) for i in range(n)]
@@ -153,7 +154,7 @@ def sequence_colors(n: int, cmap: str = "viridis", lo: float = 0.0,
 
 def amplitude_colors(amplitudes) -> list[tuple[float, float, float, float]]:
     """Colours for a series of amplitudes (dark = large), consistent across figures."""
-    cm = plt.get_cmap("plasma")
+    cm = matplotlib.colormaps["plasma"]
     return [cm(0.8 * (1.0 - min(float(a), 2.0) / 2.0)) for a in amplitudes]
 
 

@@ -119,7 +119,7 @@ def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
             ax = fig.add_subplot(grid[row, j])
             resonant = c.series.meta.get("axis") == "v_inertial"
             x = c.v_inertial if resonant else c.vbar
-            ok = c.ok
+            ok = c.trusted
             ax.plot(x, c.trusted_mu, color=style.NUMERIC, lw=0.9)
             if np.any(~ok):
                 ax.plot(x[~ok], np.clip(c.mu_ratio[~ok], 0, 1), "o", ms=2.0, mfc="none",
@@ -237,7 +237,7 @@ def _monotonicity(curves: Mapping[str, Curve]) -> tuple[float, str]:
     for c in curves.values():
         if c.series.meta.get("axis") == "plateau":
             continue
-        d = -np.diff(np.where(c.ok, c.mu_ratio, np.nan))
+        d = -np.diff(np.where(c.trusted, c.mu_ratio, np.nan))
         if d.size and not np.all(np.isnan(d)) and np.nanmax(d) > worst:
             i = int(np.nanargmax(d))
             worst = float(d[i])
@@ -258,7 +258,7 @@ def _status_note(curves: Mapping[str, Curve]) -> str:
     if bad:
         where = []
         for c in curves.values():
-            nbad = int(np.sum(~c.ok))
+            nbad = int(np.sum(~c.trusted))
             if nbad:
                 where.append(f"({c.series.alpha:g}, {c.series.beta:g}): {nbad}")
         text += " (not trustworthy: " + "; ".join(where) + ")"
@@ -504,7 +504,7 @@ def _draw_fig5(curves: Mapping[str, Curve]):
         for b, col in zip(betas, colors, strict=True):
             c = curves[f"beta={b:g}"]
             ax.plot(c.vbar, c.trusted_mu, color=col, lw=0.8, label=rf"$\beta = {b:g}$")
-            bad = ~c.ok
+            bad = ~c.trusted
             if np.any(bad):
                 ax.plot(c.vbar[bad], np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.0, mfc="none",
                         mec=col, mew=0.5)
@@ -540,7 +540,7 @@ def fig5(quick: bool = False) -> Recipe:
         # the upper envelope of the curves above beta = 1 tends to the soft limit
         for b in FIG5_BETAS_ABOVE[2:]:
             c = curves[f"beta={b:g}"]
-            ok = c.ok
+            ok = c.trusted
             excess = np.where(ok, c.mu_ratio - np.asarray(
                 theory.mu_ratio_soft_corrected(c.vbar, 1.0)), np.nan)
             i = int(np.nanargmax(excess))
@@ -565,8 +565,8 @@ def fig5(quick: bool = False) -> Recipe:
         plateau = []
         for b in FIG5_BETAS_BELOW[-3:] + FIG5_BETAS_ABOVE[:2]:
             c = curves[f"beta={b:g}"]
-            ones = np.flatnonzero(c.ok & (c.mu_ratio > 1.0 - 1e-9))
-            near = np.flatnonzero(c.ok & (c.mu_ratio > 0.99))
+            ones = np.flatnonzero(c.trusted & (c.mu_ratio > 1.0 - 1e-9))
+            near = np.flatnonzero(c.trusted & (c.mu_ratio > 0.99))
             plateau.append(f"beta = {b:g}: mu/mu0 > 0.99 from vbar = "
                            + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
                            + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
