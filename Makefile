@@ -3,7 +3,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
 
-.PHONY: demo test lint bench clean clean-cache
+.PHONY: demo test fast lint bench clean clean-cache
 
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -15,12 +15,17 @@ demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 	$(BIN)/vibrofriction reproduce --out $(OUT)
 
 test: $(BIN)/vibrofriction  ## the whole test suite, slow tests included
-	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -q
 
+fast: $(BIN)/vibrofriction  ## the development loop: lint, contracts, tests not marked slow
+	$(BIN)/ruff check src tests benchmarks examples
+	$(BIN)/lint-imports
+	$(BIN)/python -m pytest -q -x -m "not slow"
+
 lint: $(BIN)/vibrofriction
-	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/ruff check src tests benchmarks examples
 
 bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/results/
 	$(BIN)/python benchmarks/bench_solver.py

@@ -107,7 +107,7 @@ def sweep(
         package's one notion, :meth:`~vibrofriction.solver.SolverSettings.trusted`),
         ``period``, ``periods``, ``events``, the stick/slip/reverse-slip/flight
         fractions, the orbit's ``multiplier``, ``settling_periods``, ``window_min``,
-        ``window_max``, ``modulation_period``, ``v_inertial``, the final section
+        ``window_max``, ``v_inertial``, the final section
         state, and ``critical_velocity`` (eq. 12) over the non-velocity parameters;
         units, long names and symbols in the attributes, package version and solver
         settings (``solver_tol_trusted``, ...) in the Dataset's attributes.  With a

@@ -1,0 +1,66 @@
+"""Every example runs as a user would run it, and pins a number it computes."""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction import theory
+
+EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+
+
+def _load(name: str):
+    spec = importlib.util.spec_from_file_location(name, EXAMPLES / f"{name}.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.mark.parametrize("name,pngs", [
+    ("pin_si_units", ["pin_si_units.png"]),
+    ("resonant_case_iv", ["resonant_case_iv.png"]),
+    pytest.param("atlas_on_dask", ["atlas_map.png", "atlas_curves.png"],
+                 marks=pytest.mark.slow),
+])
+def test_example_runs_as_a_script(name, pngs, tmp_path):
+    out = subprocess.run([sys.executable, str(EXAMPLES / f"{name}.py"), str(tmp_path)],
+                         capture_output=True, text=True, timeout=300, cwd=tmp_path)
+    assert out.returncode == 0, out.stderr
+    for png in pngs:
+        assert (tmp_path / png).stat().st_size > 20_000, png  # a real figure, not a blank
+
+
+def test_pin_example_numbers(tmp_path):
+    ex = _load("pin_si_units")
+    got = ex.main(tmp_path)
+    p = ex.PIN
+    # eq. (2): at rest the friction is mu0 (1 - a); eq. (12) written out here
+    assert got["cof_at_rest"] == pytest.approx(p.mu0 * (1 - p.du_z / p.u_z0), rel=1e-12)
+    mw2 = p.mass * p.omega**2
+    v_star = p.mu0 * p.omega * p.du_z * p.k_zc / p.k_xc * abs(p.k_x + p.k_xc - mw2) \
+        / abs(p.k_x - mw2)
+    assert got["v_star"] == pytest.approx(v_star, rel=1e-12)
+    assert got["cof_at_rest"] < got["cof_slowest"] < p.mu0
+
+
+def test_resonant_example_reaches_the_energy_balance_plateau(tmp_path):
+    got = _load("resonant_case_iv").main(tmp_path)
+    assert got["mu_at_largest_V_a0.5"] == pytest.approx(
+        float(theory.resonant_plateau_exact(0.5)), abs=1e-3)
+
+
+@pytest.mark.slow
+def test_dask_example_equals_a_serial_sweep(tmp_path):
+    got = _load("atlas_on_dask").main(tmp_path)
+    serial = vf.sweep(alpha=0.5, beta=np.geomspace(0.6, 20.0, 12), amplitude=0.5,
+                      vbar=np.linspace(0.05, 1.2, 24), workers=1, progress=False)
+    assert math.isclose(got["mu_sum"], float(serial["mu_ratio"].sum()), rel_tol=0,
+                        abs_tol=0)
