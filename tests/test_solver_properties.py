@@ -27,18 +27,19 @@ def test_random_points_are_honest(la, lk, rigid, a, v):
              else 1.0)
     r = vf.friction_coefficient(s, v_inertial=V, settings=BUDGET)
     assert r.status in tuple(vf.Status)
-    if r.status is vf.Status.FAILED:
-        return  # allowed only with an honest status; never silently
+    if r.status in (vf.Status.FAILED, vf.Status.NOT_CONVERGED):
+        # allowed only with an honest status, no value and no claimed accuracy
+        assert not r.trusted and r.error == math.inf
+        assert r.status is vf.Status.FAILED or math.isnan(r.mu_ratio)
+        return
     assert math.isfinite(r.mu_ratio)
     assert r.mu_ratio <= 1.0 + 1e-9 + r.error
     assert r.mu_ratio >= -1.0 - 1e-9
     if r.status is vf.Status.PERIODIC:
         assert r.period >= 1 and 0.0 < r.error
         assert math.isnan(r.multiplier) or r.multiplier >= 0.0  # nan: no single chart
-        # a periodic result is exact to round-off unless the orbit is neutral, where the
-        # error covers the real motion over periods 512-1024 (docs/solver.md), or the
-        # verification window could not be integrated (error inf, not trusted)
-        assert r.error < 1e-6 or math.isnan(r.settling_periods) or r.error == math.inf
+        # the error is what the orbit's verification says; trust follows from it alone
+        # (its calibration is tested in tests/test_calibration.py and test_trust.py)
     assert r.trusted == (r.success and r.error <= BUDGET.tol_trusted)
     if r.status in (vf.Status.PERIODIC, vf.Status.AVERAGED, vf.Status.SLIDING):
         total = r.stick_fraction + r.slip_fraction + r.flight_fraction

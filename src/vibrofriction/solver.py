@@ -70,8 +70,7 @@ _STATUS_MESSAGES = {
     Status.AVERAGED: "no periodic orbit within the period bound; the running average over "
     "the last half of the run agrees with the half before within tol_mean",
     Status.NOT_CONVERGED: "max_periods was reached before a periodic orbit was found or the "
-    "running average settled; `error` is the disagreement of the last two averaging windows: "
-    "try increasing `max_periods`",
+    "running average settled",
     Status.FAILED: "the event budget `max_events` was exhausted, or the integration could not "
     "advance, or more than 1000 transitions could only be decided within round-off (chatter "
     "along a tangency of the friction cone); the value is not reliable",
@@ -248,9 +247,10 @@ def describe(r: FrictionResult) -> str:
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
     if r.status is Status.NOT_CONVERGED:
-        parts.append("the value is the mean of the last window only, not a long-time "
-                     "average: the motion has not settled (near beta = 1 it can be modulated "
-                     "for thousands of periods)")
+        parts.append("mu_ratio is nan: the motion has not settled, and a window mean is not "
+                     "the long-time average (near beta = 1 the motion drifts for 1e4-1e6 "
+                     "periods before it reaches its orbit, docs/solver.md): raise "
+                     "max_periods")
     return "; ".join(parts)
 
 

@@ -16,9 +16,9 @@ doubling checkpoints (:func:`check_average`).  Every result states an estimate o
   the window means converge to the orbit's mean like ``lambda^k`` (``lambda``
   the leading Floquet multiplier, :func:`leading_multiplier`), so the error of
   the last window is at most ``d_mu / (1 - |lambda|)``, floored at round-off;
-* averaged / not converged: the disagreement of the last two averaging windows
-  (``inf`` when the last window is pure forward slip: its mean is exactly 1
-  whatever the state, so it says nothing about the long-time average);
+* averaged: the disagreement of the last two averaging windows;
+* not converged: no value (``nan``) and ``inf``; the last windows' means are
+  reported as a range, never as the answer;
 * continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS``.
@@ -639,10 +639,13 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
                 status = ST_AVERAGED
                 break
             if k >= max_periods:
+                # no answer: the window means (range in O_WMIN, O_WMAX) are not one
                 status = ST_NOT_CONVERGED
                 if nchk < 2:
                     win[:] = acc
-                    out_f[O_MU] = acc[A_F] / acc[A_N]
+                    out_f[O_WMIN] = out_f[O_WMAX] = acc[A_F] / acc[A_N]
+                out_f[O_MU] = math.nan
+                out_f[O_ERR] = math.inf
                 break
     if status == ST_FAILED or not math.isfinite(out_f[O_ERR]):
         out_f[O_ERR] = math.inf  # no estimate: nothing is known about the value

@@ -95,7 +95,7 @@ def _draw(curves: Mapping[str, Curve]):
         ax.plot(v0[m], mu0 * np.where(ok, c.mu_ratio[m], np.nan), color=color, lw=1.1,
                 label=label)
         if np.any(~ok):
-            ax.plot(v0[m][~ok], mu0 * c.mu_ratio[m][~ok], "o", ms=2.5, mfc="none", mec=color)
+            style.mark_untrusted(ax, v0[m], c, color, scale=mu0, ms=2.5, where=m)
         vstar = phys.critical_velocity()
         if math.isfinite(vstar):
             ax.plot([vstar], [mu0 * 1.035], "v", color=color, ms=4, clip_on=False)

@@ -85,9 +85,7 @@ def _draw_fig6(curves: Mapping[str, Curve]):
         c = curves[f"a={a:g}"]
         color = "black" if a <= 1.0 else "0.55"
         ax.plot(c.v_inertial, c.trusted_mu, color=color, lw=1.1)
-        bad = ~c.trusted
-        ax.plot(c.v_inertial[bad], np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.5, mfc="none",
-                mec=style.THEORY, mew=0.6)
+        style.mark_untrusted(ax, c.v_inertial, c, style.THEORY, ms=2.5)
         exact = float(theory.resonant_plateau_exact(a))
         approx = 1.0 - a / 2.0
         ax.axhline(exact, color=style.THEORY, lw=0.6, ls=(0, (1, 1.5)))
@@ -234,9 +232,7 @@ def _draw_fig89(curves: Mapping[str, Curve]):
         ax.plot(v0, mu0 * c.trusted_mu, color=col, lw=1.1,
                 label=rf"({EXPERIMENT_AMPLITUDES_UM.index(du) + 1}) $\Delta u_z = {du:g}$ $\mu$m"
                       rf" ($a = {a:.2f}$)")
-        bad = ~c.trusted
-        ax.plot(v0[bad], mu0 * np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.5, mfc="none",
-                mec=style.THEORY, mew=0.6)
+        style.mark_untrusted(ax, v0, c, style.THEORY, scale=mu0, ms=2.5)
     ax.set_xlim(0, float(_v0_grid(False)[-1]))
     ax.set_ylim(-0.008, mu0 * 1.05)
     ax.axhline(mu0, color="0.6", lw=0.5, ls=":")

@@ -84,6 +84,8 @@ class Curve:
     stick_fraction: NDArray[np.float64]
     flight_fraction: NDArray[np.float64]
     trusted: NDArray[np.bool_]
+    window_min: NDArray[np.float64]
+    window_max: NDArray[np.float64]
 
     @property
     def suspicious(self) -> NDArray[np.bool_]:
@@ -130,7 +132,8 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         curves[s.key] = Curve(s, out["mu_ratio"][sl].copy(), out["error"][sl].copy(),
                               out["status"][sl].copy(), out["period"][sl].copy(),
                               out["stick_fraction"][sl].copy(),
-                              out["flight_fraction"][sl].copy(), out["trusted"][sl].copy())
+                              out["flight_fraction"][sl].copy(), out["trusted"][sl].copy(),
+                              out["window_min"][sl].copy(), out["window_max"][sl].copy())
         start += n
     return curves
 

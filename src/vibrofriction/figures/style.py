@@ -162,3 +162,28 @@ def panel_label(ax, text: str, *, x: float = 0.02, y: float = 0.97, **kwargs) ->
     """A bold panel label such as ``(a)`` in the upper-left corner of ``ax``."""
     ax.text(x, y, text, transform=ax.transAxes, ha="left", va="top", fontweight="bold",
             **kwargs)
+
+
+def mark_untrusted(ax: Any, x: Any, curve: Any, color: Any, scale: float = 1.0,
+                   ms: float = 2.0, where: Any = None) -> None:
+    """Draw a curve's untrusted points as what they are, never as results.
+
+    A converged status whose error is too large: an open circle at its value.  A
+    motion that did not settle (no value): a thin vertical bar over the range of its
+    last averaging windows' means.  ``scale`` multiplies ``mu/mu0`` (e.g. ``mu0``);
+    ``where`` (a mask over the curve) restricts the points, with ``x`` given for those.
+    """
+    import numpy as np
+
+    sel = np.ones(curve.mu_ratio.shape, bool) if where is None else np.asarray(where)
+    x = np.asarray(x)
+    mu, lo, hi = (np.asarray(v)[sel] for v in (curve.mu_ratio, curve.window_min,
+                                                  curve.window_max))
+    bad = ~np.asarray(curve.trusted)[sel]
+    valued = bad & np.isfinite(mu)
+    if np.any(valued):
+        ax.plot(x[valued], scale * np.clip(mu[valued], 0, 1), "o", ms=ms, mfc="none",
+                mec=color, mew=0.5)
+    ranged = bad & ~np.isfinite(mu) & np.isfinite(lo)
+    if np.any(ranged):
+        ax.vlines(x[ranged], scale * lo[ranged], scale * hi[ranged], colors=color, lw=0.6)

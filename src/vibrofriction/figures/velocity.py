@@ -122,8 +122,7 @@ def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
             ok = c.trusted
             ax.plot(x, c.trusted_mu, color=style.NUMERIC, lw=0.9)
             if np.any(~ok):
-                ax.plot(x[~ok], np.clip(c.mu_ratio[~ok], 0, 1), "o", ms=2.0, mfc="none",
-                        mec=style.THEORY, mew=0.5)
+                style.mark_untrusted(ax, x, c, style.THEORY)
             ax.axhline(static, color="0.6", lw=0.5, ls=":")
             ax.set_ylim(-0.03, 1.08)
             ax.set_yticks([0, 0.5, 1])
@@ -504,10 +503,7 @@ def _draw_fig5(curves: Mapping[str, Curve]):
         for b, col in zip(betas, colors, strict=True):
             c = curves[f"beta={b:g}"]
             ax.plot(c.vbar, c.trusted_mu, color=col, lw=0.8, label=rf"$\beta = {b:g}$")
-            bad = ~c.trusted
-            if np.any(bad):
-                ax.plot(c.vbar[bad], np.clip(c.mu_ratio[bad], 0, 1), "o", ms=2.0, mfc="none",
-                        mec=col, mew=0.5)
+            style.mark_untrusted(ax, c.vbar, c, col)
         if lab == "b":
             ax.plot(vfine, theory.mu_ratio_soft_corrected(vfine, 1.0), color="black", lw=0.8,
                     ls="--", label="soft limit, eq. (27) corrected")
@@ -517,7 +513,8 @@ def _draw_fig5(curves: Mapping[str, Curve]):
         ax.set_title(rf"({lab}) $\alpha = 0.01$, $\Delta u_z/u_{{z,0}} = 1$, {where}",
                      fontsize=7.5)
         if lab == "b":
-            ax.plot([], [], "o", ms=2.5, mfc="none", mec="0.3", label="not converged")
+            ax.plot([], [], "|", ms=5, color="0.3",
+                    label="not settled: range of window means")
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=4, fontsize=6,
                   handlelength=1.5, columnspacing=1.0)
     axes[0].set_ylabel(style.MU)
