@@ -407,7 +407,7 @@ def _write_report(out: Path, todo: Sequence[Recipe], done: Sequence[_Done],
         lines.append(f"| {_md(c.formula)} | {_md(c.where)} | {_fmt_dev(c.deviation)} | "
                      f"{_md(c.at)} | {_md(c.remark)} |")
     suspicious = [s for d in done for s in d.suspicious]
-    lines += ["", "## Solver results that look wrong", ""]
+    lines += ["", "## Converged results whose error estimate is too large to trust", ""]
     if suspicious:
         lines.append("These points report a converged status but an error estimate above "
                      f"tol_trusted = {SolverSettings().tol_trusted:g} (not trusted); they are "

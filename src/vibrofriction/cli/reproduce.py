@@ -38,11 +38,12 @@ def reproduce_command(
     typer.echo(f"{figures} figures, {len(result.files)} files, {result.points} steady states "
                f"in {result.seconds:.1f} s -> {result.report}")
     if result.untrusted:
-        typer.echo(f"note: {result.untrusted} points did not converge or are untrusted "
-                   "(open circles; see report.md)")
+        typer.echo(f"note: {result.untrusted} points are not trusted (drawn as open circles, "
+                   "or as bars over the window means where the motion did not settle; "
+                   "see report.md)")
     if result.suspicious:
-        typer.echo(f"warning: {len(result.suspicious)} solver results look wrong "
-                   "(listed in report.md)")
+        typer.echo(f"note: {len(result.suspicious)} of them have a converged status but an "
+                   "error estimate above tol_trusted (listed in report.md)")
 
 
 def _check_only(only: list[str], quick: bool) -> None:

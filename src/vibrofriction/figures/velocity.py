@@ -172,7 +172,7 @@ def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
             "I soft, II stiff, III $\\beta=1$, IV $\\alpha=1$\n"
             "dotted: static value, eq. (2)\n"
             "red dashed: case IV plateau (exact)\n"
-            "red circles: not converged",
+            "red circles / bars: not trusted",
             ha="center", va="center", fontsize=6, color="0.3", transform=ax.transAxes)
     return fig
 
@@ -578,6 +578,7 @@ def fig5(quick: bool = False) -> Recipe:
                  "$\\Delta u_z/u_{z,0} = 1$ and (a) $\\beta$ = "
                  + ", ".join(_fmt(b) for b in FIG5_BETAS_BELOW) + " (below the resonance "
                  "$\\beta = 1$), (b) $\\beta$ = " + ", ".join(_fmt(b) for b in FIG5_BETAS_ABOVE)
-                 + " (above), with the soft limit eq. (27) dashed. Open circles: points "
-                 "whose steady state did not converge."),
+                 + " (above), with the soft limit eq. (27) dashed. Vertical bars: points whose "
+                 "motion did not settle within the period budget (the range of the last "
+                 "window means; a slow drift to an orbit, docs/solver.md)."),
         series=_fig5_series(quick), render=render)
