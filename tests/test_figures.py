@@ -190,3 +190,25 @@ def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Pat
     assert (tmp_path / "x.png").stat().st_size > 1000
     pdf = (tmp_path / "x.pdf").read_bytes()
     assert b"CreationDate" not in pdf
+
+
+def test_checks_report_a_violation_they_are_fed() -> None:
+    """The physics checks are pure functions of curves: a decreasing curve is caught."""
+    from vibrofriction.figures.checks import monotonicity, status_note
+    from vibrofriction.figures.series import Curve
+
+    s = series_at_vbar("k", 0.5, 2.0, 0.5, [0.1, 0.2, 0.3, 0.4])
+    n = 4
+    c = Curve(s, np.array([0.5, 0.6, 0.55, 0.7]), np.full(n, 1e-12), np.zeros(n, int),
+              np.ones(n, int), np.zeros(n), np.zeros(n), np.ones(n, bool), np.full(n, np.nan),
+              np.full(n, np.nan))
+    worst, where = monotonicity({"k": c})
+    assert worst == pytest.approx(0.05) and "vbar = 0.2..0.3" in where
+    ok = Curve(s, np.array([0.5, 0.6, 0.65, 0.7]), *[getattr(c, f) for f in (
+        "error", "status", "period", "stick_fraction", "flight_fraction", "trusted",
+        "window_min", "window_max")])
+    assert monotonicity({"k": ok})[0] == 0.0
+    nc = Curve(s, np.array([0.5, np.nan, 0.65, 0.7]), np.array([0, np.inf, 0, 0]),
+               np.array([0, 2, 0, 0]), np.ones(n, int), np.zeros(n), np.zeros(n),
+               np.array([True, False, True, True]), np.full(n, 0.4), np.full(n, 0.6))
+    assert "1 not converged" in status_note({"k": nc}) and "(0.5, 2): 1" in status_note({"k": nc})

@@ -19,8 +19,9 @@ import numpy as np
 from .. import theory
 from ..params import Case, classify
 from . import style
+from .checks import fit_soft_exponent, matrix_checks, monotonicity, status_note
 from .recipe import Check, Recipe, Rendered, curve_table, max_deviation
-from .series import Curve, Series, series_at_vbar, status_counts
+from .series import Curve, Series, series_at_vbar
 
 __all__ = [
     "MATRIX_ALPHAS",
@@ -177,93 +178,6 @@ def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
     return fig
 
 
-def _matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str) -> list[Check]:
-    checks = []
-    if amplitude <= 1.0:
-        # case III: mu = mu0 at every V > 0
-        dev, at = [], []
-        for c in curves.values():
-            if c.series.beta == 1.0:
-                m = c.v_inertial > 0
-                dev.extend(np.abs(c.mu_ratio[m] - 1.0))
-                at.extend(f"alpha={c.series.alpha:g}, V={v:.3g}" for v in c.v_inertial[m])
-        d, where = max_deviation(np.array(dev), np.zeros(len(dev)), at)
-        checks.append(Check("case III: mu = mu0 for all v0 > 0", f"{fig}: beta = 1, "
-                            f"a = {amplitude:g}, V in (0, {_V_MAX_CASE_III:g}]", d, where,
-                            "holds exactly (continuous sliding is proven)" if d == 0.0
-                            else "holds to the stated accuracy"))
-        # eq. (12): mu = 1 for vbar >= 1 and mu < 1 below
-        above, above_at, below_max = [], [], -np.inf
-        for c in curves.values():
-            if c.series.meta.get("axis") != "vbar":
-                continue
-            vb = c.vbar
-            m = vb >= 1.0
-            above.extend(np.abs(c.mu_ratio[m] - 1.0))
-            above_at.extend(f"({c.series.alpha:g}, {c.series.beta:g}), vbar={v:.3g}"
-                            for v in vb[m])
-            sub = (vb < 1.0) & (vb > 0)
-            if np.any(sub):
-                below_max = max(below_max, float(np.max(c.mu_ratio[sub])))
-        d, where = max_deviation(np.array(above), np.zeros(len(above)), above_at)
-        top = max(float(c.vbar.max()) for c in curves.values()
-                  if c.series.meta.get("axis") == "vbar")
-        checks.append(Check(
-            "eq. (12): mu = mu0 exactly for vbar >= 1", f"{fig}: all non-resonant panels, "
-            f"a = {amplitude:g}, vbar in [1, {top:.3g}]",
-            d, where, f"and max mu/mu0 below vbar = 1 is {below_max:.6f} (< 1: the critical "
-            "velocity is sharp)"))
-    # case IV at finite beta against the rigid-contact plateau
-    plateau = float(theory.resonant_plateau_exact(amplitude))
-    for c in curves.values():
-        if c.series.meta.get("axis") != "plateau":
-            continue
-        shown = curves[c.series.key.split(":", 1)[1]]
-        v_edge, mu_edge = float(shown.v_inertial[-1]), float(shown.mu_ratio[-1])
-        checks.append(Check(
-            "case IV plateau (exact, rigid contact) at finite beta",
-            f"{fig}: alpha = 1, beta = {c.series.beta:g}, a = {amplitude:g}, "
-            f"V = {c.v_inertial[-1]:g}",
-            abs(float(c.mu_ratio[-1]) - plateau), f"V={c.v_inertial[-1]:g}",
-            f"numerics {c.mu_ratio[-1]:.5f} vs {plateau:.5f}; at V = {v_edge:g} (panel edge) "
-            f"{mu_edge:.4f}: a finite contact stiffness delays the approach, not the level"))
-    return checks
-
-
-def _monotonicity(curves: Mapping[str, Curve]) -> tuple[float, str]:
-    """Largest decrease of mu/mu0 between successive velocities over all curves."""
-    worst, where = 0.0, "none"
-    for c in curves.values():
-        if c.series.meta.get("axis") == "plateau":
-            continue
-        d = -np.diff(np.where(c.trusted, c.mu_ratio, np.nan))
-        if d.size and not np.all(np.isnan(d)) and np.nanmax(d) > worst:
-            i = int(np.nanargmax(d))
-            worst = float(d[i])
-            on_vbar = not np.all(np.isnan(c.vbar))
-            x = c.vbar if on_vbar else c.v_inertial
-            name = "vbar" if on_vbar else "V"
-            where = (f"(alpha, beta) = ({c.series.alpha:g}, {c.series.beta:g}), "
-                     f"{name} = {x[i]:.3g}..{x[i + 1]:.3g}")
-    return worst, where
-
-
-def _status_note(curves: Mapping[str, Curve]) -> str:
-    counts = status_counts(curves)
-    total = sum(counts.values())
-    bad = {k: v for k, v in counts.items()
-           if k in ("not converged", "failed")}
-    text = ", ".join(f"{v} {k}" for k, v in sorted(counts.items()))
-    if bad:
-        where = []
-        for c in curves.values():
-            nbad = int(np.sum(~c.trusted))
-            if nbad:
-                where.append(f"({c.series.alpha:g}, {c.series.beta:g}): {nbad}")
-        text += " (not trustworthy: " + "; ".join(where) + ")"
-    return f"{total} points: {text}."
-
-
 def matrix(name: str, amplitude: float, label: str, title: str, quick: bool) -> Recipe:
     """The (alpha, beta) matrix of ``mu/mu0`` curves at one amplitude (Figs. 3, 7)."""
     vbar_max = 1.2 if amplitude <= 1.0 else 1.6
@@ -278,12 +192,12 @@ def matrix(name: str, amplitude: float, label: str, title: str, quick: bool) -> 
                   "not exist (nan) and v_inertial = v0 m omega/(mu0 F_N0) is the axis",
                   "initial state: steady sliding before the oscillation is switched on")
         table = curve_table(f"{title}: mu/mu0 over the (alpha, beta) matrix", curves, params)
-        checks = _matrix_checks(curves, amplitude, name)
-        worst, where = _monotonicity(curves)
+        checks = matrix_checks(curves, amplitude, name, _V_MAX_CASE_III)
+        worst, where = monotonicity(curves)
         checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
                             f"{name}: all panels, a = {amplitude:g}", worst, where,
                             "largest decrease between successive grid points"))
-        notes = _status_note(curves)
+        notes = status_note(curves)
         if amplitude > 1.0:
             first = []
             for c in curves.values():
@@ -347,23 +261,6 @@ def _closed_form(name: str, vbar, amplitude: float, *, printed: bool = False):
     if printed:
         return np.asarray(theory.mu_ratio_soft(vbar, amplitude))
     return np.asarray(theory.mu_ratio_soft_corrected(vbar, amplitude))
-
-
-def _fit_soft_exponent(curves: Mapping[str, Curve]) -> tuple[float, float]:
-    """Least-squares exponent p of corrected eq. (27) over the soft curves; its max deviation."""
-    from scipy.optimize import minimize_scalar
-
-    soft = [c for c in curves.values() if c.series.meta.get("system") == "soft"]
-
-    def law(c: Curve, p: float):
-        return np.asarray(theory.mu_ratio_soft_corrected(c.vbar, c.series.amplitude, p))
-
-    def cost(p: float) -> float:
-        return float(np.sum(np.concatenate([c.mu_ratio - law(c, p) for c in soft]) ** 2))
-
-    p = float(minimize_scalar(cost, bounds=(0.5, 4.0), method="bounded").x)
-    dev = max(float(np.max(np.abs(c.mu_ratio - law(c, p)))) for c in soft)
-    return p, dev
 
 
 @style.styled
@@ -457,17 +354,17 @@ def fig4(quick: bool = False) -> Recipe:
                       "at small velocity")
             checks.append(Check(eq, f"fig04: (alpha, beta) = ({al:g}, {be:g}), a = 0.2..1, "
                                 f"vbar in [0, 1.2], {len(num)} points", d, at, remark))
-        worst, where = _monotonicity({k: c for k, c in curves.items()
+        worst, where = monotonicity({k: c for k, c in curves.items()
                                       if c.series.meta["system"] == "soft"})
         checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
                             "fig04: soft system (0.01, 400.01), a = 0.2..1", worst, where,
                             "largest decrease between successive grid points: the 'fine "
                             "structure' of the soft curves"))
-        p, dev = _fit_soft_exponent(curves)
+        p, dev = fit_soft_exponent(curves)
         checks.append(Check("eq. (27) corrected, exponent p fitted to the numerics",
                             "fig04 soft curves", dev, f"best p = {p:.3f}",
                             "p = 1.2 (the printed '1,2') is close to the best fit"))
-        notes = _status_note(curves)
+        notes = status_note(curves)
         return Rendered(fig, (table,), tuple(checks), notes)
 
     return Recipe(
@@ -547,9 +444,9 @@ def fig5(quick: bool = False) -> Recipe:
                 f"fig05: alpha = 0.01, beta = {b:g}, a = 1, vbar in [0, 1.2]",
                 float(excess[i]), f"vbar={c.vbar[i]:.3g}",
                 f"max |numerics - eq. 27| = {abs(excess[j]):.3f} at vbar = {c.vbar[j]:.3g}"))
-        below, below_at = _monotonicity({k: c for k, c in curves.items()
+        below, below_at = monotonicity({k: c for k, c in curves.items()
                                          if c.series.beta < 1.0})
-        above, above_at = _monotonicity({k: c for k, c in curves.items()
+        above, above_at = monotonicity({k: c for k, c in curves.items()
                                          if c.series.beta > 1.0})
         checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
                             "fig05: alpha = 0.01, a = 1, beta < 1", below, below_at,
@@ -567,7 +464,7 @@ def fig5(quick: bool = False) -> Recipe:
             plateau.append(f"beta = {b:g}: mu/mu0 > 0.99 from vbar = "
                            + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
                            + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
-        notes = (_status_note(curves) + " The plateau near mu0 grows towards small vbar "
+        notes = (status_note(curves) + " The plateau near mu0 grows towards small vbar "
                  "near the resonance: " + "; ".join(plateau) + ".")
         return Rendered(fig, (table,), tuple(checks), notes)
 
