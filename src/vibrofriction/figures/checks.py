@@ -15,7 +15,8 @@ from .. import theory
 from .recipe import Check, max_deviation
 from .series import Curve, status_counts
 
-__all__ = ["fit_soft_exponent", "matrix_checks", "monotonicity", "status_note"]
+__all__ = ["closed_form", "fig4_checks", "fig5_checks", "fit_soft_exponent", "matrix_checks",
+           "monotonicity", "status_note"]
 
 
 def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
@@ -124,3 +125,92 @@ def fit_soft_exponent(curves: Mapping[str, Curve]) -> tuple[float, float]:
     p = float(minimize_scalar(cost, bounds=(0.5, 4.0), method="bounded").x)
     dev = max(float(np.max(np.abs(c.mu_ratio - law(c, p)))) for c in soft)
     return p, dev
+
+
+def closed_form(name: str, vbar, amplitude: float, *, printed: bool = False):
+    """Eq. (26) for the stiff system; eq. (27) corrected (or as printed) for the soft one."""
+    if name == "stiff":
+        return np.asarray(theory.mu_ratio_stiff(vbar, amplitude))
+    if printed:
+        return np.asarray(theory.mu_ratio_soft(vbar, amplitude))
+    return np.asarray(theory.mu_ratio_soft_corrected(vbar, amplitude))
+
+
+def fig4_checks(curves: Mapping[str, Curve],
+                systems: Mapping[str, tuple[float, float]]) -> list[Check]:
+    """Fig. 4: eq. (26) on the stiff curves, eq. (27) corrected and as printed on the soft
+    ones, monotonicity of the soft curves and the best-fitting exponent of eq. (27).
+
+    ``systems`` maps ``"stiff"`` and ``"soft"`` to their ``(alpha, beta)``."""
+    checks = []
+    for name, printed in (("stiff", False), ("soft", False), ("soft", True)):
+        al, be = systems[name]
+        cs = [c for c in curves.values() if c.series.meta["system"] == name]
+        refs = [closed_form(name, c.vbar, c.series.amplitude, printed=printed)
+                for c in cs]
+        num = np.concatenate([c.mu_ratio for c in cs])
+        labels = [f"a={c.series.amplitude:g}, vbar={v:.3g}" for c in cs for v in c.vbar]
+        d, at = max_deviation(num, np.concatenate(refs), labels)
+        rel = max(float(np.max(np.abs(c.mu_ratio - r))) / c.series.amplitude
+                  for c, r in zip(cs, refs, strict=True))
+        eq = {("stiff", False): "eq. (26), stiff law",
+              ("soft", False): "eq. (27) corrected: sqrt(4 pi vbar/9), p = 1.2",
+              ("soft", True): "eq. (27) as printed: sqrt(4 pi/9) vbar, p = 1.2"}[
+                  (name, printed)]
+        remark = (f"largest deviation / a = {rel:.3f}" if not printed else
+                  "the printed law is wrong: it misses the sqrt(vbar) rise "
+                  "at small velocity")
+        checks.append(Check(eq, f"fig04: (alpha, beta) = ({al:g}, {be:g}), a = 0.2..1, "
+                            f"vbar in [0, 1.2], {len(num)} points", d, at, remark))
+    worst, where = monotonicity({k: c for k, c in curves.items()
+                                  if c.series.meta["system"] == "soft"})
+    checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
+                        "fig04: soft system (0.01, 400.01), a = 0.2..1", worst, where,
+                        "largest decrease between successive grid points: the 'fine "
+                        "structure' of the soft curves"))
+    p, dev = fit_soft_exponent(curves)
+    checks.append(Check("eq. (27) corrected, exponent p fitted to the numerics",
+                        "fig04 soft curves", dev, f"best p = {p:.3f}",
+                        "p = 1.2 (the printed '1,2') is close to the best fit"))
+    return checks
+
+
+def fig5_checks(curves: Mapping[str, Curve], betas_below: tuple[float, ...],
+                betas_above: tuple[float, ...]) -> tuple[list[Check], list[str]]:
+    """Fig. 5: corrected eq. (27) as the upper envelope above beta = 1, monotonicity, and
+    (as sentences) where the plateau at mu0 begins near the resonance."""
+    checks = []
+    # the upper envelope of the curves above beta = 1 tends to the soft limit
+    for b in betas_above[2:]:
+        c = curves[f"beta={b:g}"]
+        ok = c.trusted
+        excess = np.where(ok, c.mu_ratio - np.asarray(
+            theory.mu_ratio_soft_corrected(c.vbar, 1.0)), np.nan)
+        i = int(np.nanargmax(excess))
+        j = int(np.nanargmax(np.abs(excess)))
+        checks.append(Check(
+            "eq. (27) corrected as upper envelope (Fig. 5b): max(numerics - eq. 27)",
+            f"fig05: alpha = 0.01, beta = {b:g}, a = 1, vbar in [0, 1.2]",
+            float(excess[i]), f"vbar={c.vbar[i]:.3g}",
+            f"max |numerics - eq. 27| = {abs(excess[j]):.3f} at vbar = {c.vbar[j]:.3g}"))
+    below, below_at = monotonicity({k: c for k, c in curves.items()
+                                     if c.series.beta < 1.0})
+    above, above_at = monotonicity({k: c for k, c in curves.items()
+                                     if c.series.beta > 1.0})
+    checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
+                        "fig05: alpha = 0.01, a = 1, beta < 1", below, below_at,
+                        "largest decrease between successive grid points"))
+    checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
+                        "fig05: alpha = 0.01, a = 1, beta > 1", above, above_at,
+                        "largest decrease between successive grid points: the "
+                        "'oscillating curves' of Section 5"))
+    # plateau width near beta = 1 (Fig. 5a, beta = 0.91, 0.99)
+    plateau = []
+    for b in betas_below[-3:] + betas_above[:2]:
+        c = curves[f"beta={b:g}"]
+        ones = np.flatnonzero(c.trusted & (c.mu_ratio > 1.0 - 1e-9))
+        near = np.flatnonzero(c.trusted & (c.mu_ratio > 0.99))
+        plateau.append(f"beta = {b:g}: mu/mu0 > 0.99 from vbar = "
+                       + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
+                       + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
+    return checks, plateau

@@ -19,8 +19,15 @@ import numpy as np
 from .. import theory
 from ..params import Case, classify
 from . import style
-from .checks import fit_soft_exponent, matrix_checks, monotonicity, status_note
-from .recipe import Check, Recipe, Rendered, curve_table, max_deviation
+from .checks import (
+    closed_form,
+    fig4_checks,
+    fig5_checks,
+    matrix_checks,
+    monotonicity,
+    status_note,
+)
+from .recipe import Check, Recipe, Rendered, curve_table
 from .series import Curve, Series, series_at_vbar
 
 __all__ = [
@@ -254,15 +261,6 @@ def _fig4_series(quick: bool) -> tuple[Series, ...]:
                  for name, (al, be) in FIG4_SYSTEMS.items() for a in FIG4_AMPLITUDES)
 
 
-def _closed_form(name: str, vbar, amplitude: float, *, printed: bool = False):
-    """Eq. (26) for the stiff system; eq. (27) corrected (or as printed) for the soft one."""
-    if name == "stiff":
-        return np.asarray(theory.mu_ratio_stiff(vbar, amplitude))
-    if printed:
-        return np.asarray(theory.mu_ratio_soft(vbar, amplitude))
-    return np.asarray(theory.mu_ratio_soft_corrected(vbar, amplitude))
-
-
 @style.styled
 def _draw_fig4(curves: Mapping[str, Curve]):
     from matplotlib.lines import Line2D
@@ -274,9 +272,9 @@ def _draw_fig4(curves: Mapping[str, Curve]):
         for a in FIG4_AMPLITUDES:
             c = curves[f"{name},a={a:g}"]
             if name == "soft":
-                ax.plot(vfine, _closed_form(name, vfine, a, printed=True), color=style.THEORY,
+                ax.plot(vfine, closed_form(name, vfine, a, printed=True), color=style.THEORY,
                         lw=0.6, ls=":")
-            ax.plot(vfine, _closed_form(name, vfine, a), color=style.THEORY, lw=1.0)
+            ax.plot(vfine, closed_form(name, vfine, a), color=style.THEORY, lw=1.0)
             ax.plot(c.vbar, c.trusted_mu, color=style.NUMERIC, lw=0.5)
             step = max(1, c.series.size // 40)
             ax.plot(c.vbar[::step], c.trusted_mu[::step], "x", color=style.NUMERIC, ms=3,
@@ -319,11 +317,11 @@ def fig4(quick: bool = False) -> Recipe:
             name = c.series.meta["system"]
             nan = np.full(c.series.size, np.nan)
             if name == "stiff":
-                return {"eq26": _closed_form(name, c.vbar, c.series.amplitude),
+                return {"eq26": closed_form(name, c.vbar, c.series.amplitude),
                         "eq27_corrected": nan, "eq27_printed": nan}
             return {"eq26": nan,
-                    "eq27_corrected": _closed_form(name, c.vbar, c.series.amplitude),
-                    "eq27_printed": _closed_form(name, c.vbar, c.series.amplitude,
+                    "eq27_corrected": closed_form(name, c.vbar, c.series.amplitude),
+                    "eq27_printed": closed_form(name, c.vbar, c.series.amplitude,
                                                  printed=True)}
 
         table = curve_table("Fig. 4: stiff and soft limits against eqs. (26), (27)", curves, (
@@ -334,36 +332,7 @@ def fig4(quick: bool = False) -> Recipe:
             "eq27_printed = (1-a) + a[sqrt(4pi/9) vbar + (1 - sqrt(4pi/9)) vbar^1.2]; "
             "1 for vbar >= 1",
         ), extra=extra)
-        checks = []
-        for name, printed in (("stiff", False), ("soft", False), ("soft", True)):
-            al, be = FIG4_SYSTEMS[name]
-            cs = [c for c in curves.values() if c.series.meta["system"] == name]
-            refs = [_closed_form(name, c.vbar, c.series.amplitude, printed=printed)
-                    for c in cs]
-            num = np.concatenate([c.mu_ratio for c in cs])
-            labels = [f"a={c.series.amplitude:g}, vbar={v:.3g}" for c in cs for v in c.vbar]
-            d, at = max_deviation(num, np.concatenate(refs), labels)
-            rel = max(float(np.max(np.abs(c.mu_ratio - r))) / c.series.amplitude
-                      for c, r in zip(cs, refs, strict=True))
-            eq = {("stiff", False): "eq. (26), stiff law",
-                  ("soft", False): "eq. (27) corrected: sqrt(4 pi vbar/9), p = 1.2",
-                  ("soft", True): "eq. (27) as printed: sqrt(4 pi/9) vbar, p = 1.2"}[
-                      (name, printed)]
-            remark = (f"largest deviation / a = {rel:.3f}" if not printed else
-                      "the printed law is wrong: it misses the sqrt(vbar) rise "
-                      "at small velocity")
-            checks.append(Check(eq, f"fig04: (alpha, beta) = ({al:g}, {be:g}), a = 0.2..1, "
-                                f"vbar in [0, 1.2], {len(num)} points", d, at, remark))
-        worst, where = monotonicity({k: c for k, c in curves.items()
-                                      if c.series.meta["system"] == "soft"})
-        checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
-                            "fig04: soft system (0.01, 400.01), a = 0.2..1", worst, where,
-                            "largest decrease between successive grid points: the 'fine "
-                            "structure' of the soft curves"))
-        p, dev = fit_soft_exponent(curves)
-        checks.append(Check("eq. (27) corrected, exponent p fitted to the numerics",
-                            "fig04 soft curves", dev, f"best p = {p:.3f}",
-                            "p = 1.2 (the printed '1,2') is close to the best fit"))
+        checks = fig4_checks(curves, FIG4_SYSTEMS)
         notes = status_note(curves)
         return Rendered(fig, (table,), tuple(checks), notes)
 
@@ -430,40 +399,7 @@ def fig5(quick: bool = False) -> Recipe:
             "soft_limit_eq27 = eq. (27) at a = 1 for comparison"),
             extra=lambda c: {"soft_limit_eq27": np.asarray(
                 theory.mu_ratio_soft_corrected(c.vbar, 1.0))})
-        checks = []
-        # the upper envelope of the curves above beta = 1 tends to the soft limit
-        for b in FIG5_BETAS_ABOVE[2:]:
-            c = curves[f"beta={b:g}"]
-            ok = c.trusted
-            excess = np.where(ok, c.mu_ratio - np.asarray(
-                theory.mu_ratio_soft_corrected(c.vbar, 1.0)), np.nan)
-            i = int(np.nanargmax(excess))
-            j = int(np.nanargmax(np.abs(excess)))
-            checks.append(Check(
-                "eq. (27) corrected as upper envelope (Fig. 5b): max(numerics - eq. 27)",
-                f"fig05: alpha = 0.01, beta = {b:g}, a = 1, vbar in [0, 1.2]",
-                float(excess[i]), f"vbar={c.vbar[i]:.3g}",
-                f"max |numerics - eq. 27| = {abs(excess[j]):.3f} at vbar = {c.vbar[j]:.3g}"))
-        below, below_at = monotonicity({k: c for k, c in curves.items()
-                                         if c.series.beta < 1.0})
-        above, above_at = monotonicity({k: c for k, c in curves.items()
-                                         if c.series.beta > 1.0})
-        checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
-                            "fig05: alpha = 0.01, a = 1, beta < 1", below, below_at,
-                            "largest decrease between successive grid points"))
-        checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
-                            "fig05: alpha = 0.01, a = 1, beta > 1", above, above_at,
-                            "largest decrease between successive grid points: the "
-                            "'oscillating curves' of Section 5"))
-        # plateau width near beta = 1 (Fig. 5a, beta = 0.91, 0.99)
-        plateau = []
-        for b in FIG5_BETAS_BELOW[-3:] + FIG5_BETAS_ABOVE[:2]:
-            c = curves[f"beta={b:g}"]
-            ones = np.flatnonzero(c.trusted & (c.mu_ratio > 1.0 - 1e-9))
-            near = np.flatnonzero(c.trusted & (c.mu_ratio > 0.99))
-            plateau.append(f"beta = {b:g}: mu/mu0 > 0.99 from vbar = "
-                           + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
-                           + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
+        checks, plateau = fig5_checks(curves, FIG5_BETAS_BELOW, FIG5_BETAS_ABOVE)
         notes = (status_note(curves) + " The plateau near mu0 grows towards small vbar "
                  "near the resonance: " + "; ".join(plateau) + ".")
         return Rendered(fig, (table,), tuple(checks), notes)
