@@ -181,8 +181,9 @@ class FrictionResult:
     ``period`` drive periods; nan when not periodic); ``settling_periods`` the drive
     periods the motion from the initial state needs to come within ``error`` of the
     answer; ``window_min``/``window_max`` the range of the averaging windows'
-    means (averaged and not converged results); ``final_state`` the last section
-    state (a start for continuation).
+    means (averaged and not converged results) and ``drift_rate`` their change per
+    drive period where the last three move one way (0 where they do not, nan with
+    fewer windows); ``final_state`` the last section state (a start for continuation).
     """
 
     mu_ratio: float
@@ -200,6 +201,7 @@ class FrictionResult:
     settling_periods: float
     window_min: float
     window_max: float
+    drift_rate: float
     final_state: SectionState | None
     system: Dimensionless
     v_inertial: float
@@ -245,12 +247,16 @@ def describe(r: FrictionResult) -> str:
             "rare sticks of an undamped free oscillation) can persist for many periods; "
             "the error includes how far the motion's mean over periods 512-1024 is from it")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
-        parts.append(f"window means range from {r.window_min:.4g} to {r.window_max:.4g}")
+        parts.append(f"window means range from {r.window_min:.6g} to {r.window_max:.6g}")
     if r.status is Status.NOT_CONVERGED:
-        parts.append("mu_ratio is nan: the motion has not settled, and a window mean is not "
-                     "the long-time average (near beta = 1 the motion drifts for 1e4-1e6 "
-                     "periods before it reaches its orbit, docs/solver.md): raise "
-                     "max_periods")
+        if math.isfinite(r.drift_rate) and r.drift_rate != 0.0:
+            how = (f"the window means drift one way ({r.drift_rate:+.2g} per period): a slow "
+                   "transient still on its way to a steady state (near beta = 1 such drifts "
+                   "last 1e4-1e6 periods, docs/modulation.md)")
+        else:
+            how = "the window means do not move one way"
+        parts.append(f"mu_ratio is nan: the motion has not settled and a window mean is not "
+                     f"the long-time average; {how}: raise max_periods")
     return "; ".join(parts)
 
 
@@ -273,6 +279,7 @@ class FrictionResults:
     settling_periods: NDArray[np.float64]
     window_min: NDArray[np.float64]
     window_max: NDArray[np.float64]
+    drift_rate: NDArray[np.float64]
     final_state: NDArray[np.object_]
     system: Dimensionless
     v_inertial: NDArray[np.float64]
@@ -402,7 +409,7 @@ def section_state(y: float, xd: float, f: float, phase: int) -> SectionState | N
 #: Columns of :func:`solve_points` (and of the kernels' output rows), in order.
 FLOAT_COLUMNS = ("mu_ratio", "error", "stick_fraction", "slip_fraction",
                  "reverse_slip_fraction", "flight_fraction", "y", "x_dot", "f", "multiplier",
-                 "settling_periods", "window_min", "window_max")
+                 "settling_periods", "window_min", "window_max", "drift_rate")
 INT_COLUMNS = ("status", "period", "periods", "events", "phase", "degenerate")
 
 
@@ -535,7 +542,7 @@ def friction_coefficient(
 _RESULT_COLUMNS = ("mu_ratio", "error", "trusted", "period", "periods", "events",
                    "stick_fraction", "slip_fraction", "reverse_slip_fraction",
                    "flight_fraction", "multiplier", "settling_periods", "window_min",
-                   "window_max")
+                   "window_max", "drift_rate")
 
 
 def _result(cols: dict, dim: Dimensionless, V: float) -> FrictionResult:

@@ -66,7 +66,7 @@ N_ACC = 6
 C_EVENTS, C_DEGENERATE, C_ZERO = 0, 1, 2
 # output columns (solver.FLOAT_COLUMNS, solver.INT_COLUMNS)
 O_MU, O_ERR, O_STICK, O_SLIP, O_SLIP_NEG, O_FLIGHT, O_Y, O_XD, O_F = 0, 1, 2, 3, 4, 5, 6, 7, 8
-O_MULT, O_SETTLE, O_WMIN, O_WMAX = 9, 10, 11, 12
+O_MULT, O_SETTLE, O_WMIN, O_WMAX, O_DRIFT = 9, 10, 11, 12, 13
 I_STATUS, I_PERIOD, I_PERIODS, I_EVENTS, I_PHASE, I_DEGENERATE = 0, 1, 2, 3, 4, 5
 
 
@@ -521,14 +521,16 @@ def try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on, tol_state,
 
 
 @jit
-def check_average(chk_c, nchk, final, tol_mean, win, out_f):
+def check_average(chk_k, chk_c, nchk, final, tol_mean, win, out_f):
     """Running-average test at the doubling checkpoints ``K/4, K/2, K``.
 
     The mean over ``(K/2, K]`` is the answer and its disagreement with the mean over
     ``(K/4, K/2]`` the error.  Returns True when converged: they agree within
     ``tol_mean`` and the last window is not pure forward slip (which averages to 1
     whatever the state: without the certificate it is a transient, e.g. a resonance
-    still building up).
+    still building up).  Where the means of the last three windows move one way,
+    their drift per period (between the last two windows' centres) is recorded;
+    0 where they do not, nan with fewer than three windows.
     """
     if not (nchk >= 3 or (final and nchk >= 2)):
         return False
@@ -545,6 +547,15 @@ def check_average(chk_c, nchk, final, tol_mean, win, out_f):
     out_f[O_ERR] = max(abs(m1 - m0), ROUNDOFF_MU * (1.0 + abs(m1)))
     out_f[O_WMIN] = min(m0, m1)
     out_f[O_WMAX] = max(m0, m1)
+    out_f[O_DRIFT] = math.nan
+    if nchk >= 4:
+        i0, im = nchk - 3, nchk - 4
+        mm = (chk_c[i0, A_F] - chk_c[im, A_F]) / (chk_c[i0, A_N] - chk_c[im, A_N])
+        out_f[O_WMIN] = min(out_f[O_WMIN], mm)
+        out_f[O_WMAX] = max(out_f[O_WMAX], mm)
+        span = 0.5 * ((chk_k[i2] + chk_k[i1]) - (chk_k[i1] + chk_k[i0]))
+        monotone = (m1 - m0) * (m0 - mm) > 0.0
+        out_f[O_DRIFT] = (m1 - m0) / span if monotone else 0.0
     if _pure_forward_slip(win):
         # exactly 1 whatever the state: no evidence about the long-time average
         out_f[O_ERR] = math.inf
@@ -586,6 +597,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
     ring_c = np.zeros((nring, N_ACC))
     dprev = np.full(nring, np.inf)
     chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
+    chk_k = np.zeros(MAX_CHECKPOINTS)
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
@@ -632,9 +644,10 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
         if k == next_chk or k >= max_periods:
             if nchk < MAX_CHECKPOINTS:
                 chk_c[nchk, :] = acc
+                chk_k[nchk] = k
                 nchk += 1
             next_chk *= 2
-            if check_average(chk_c, nchk, k >= max_periods, tol_mean, win, out_f):
+            if check_average(chk_k, chk_c, nchk, k >= max_periods, tol_mean, win, out_f):
                 out_f[O_SETTLE] = k
                 status = ST_AVERAGED
                 break

@@ -89,9 +89,10 @@ _ORBIT_ATTRS: dict[str, dict[str, Any]] = {
     "window_max": {"long_name": "largest mean of mu_ratio over the averaging windows "
                                 "(averaged and not converged results; nan otherwise)",
                    "symbol": "", "units": "1"},
-    "modulation_period": {"long_name": "period of a slow modulation of a motion that does "
-                                       "not settle (nan if none)",
-                          "symbol": "", "units": "drive periods"},
+    "drift_rate": {"long_name": "change of the averaging windows' means per drive period where "
+                                "the last three move one way (0 where they do not; nan with "
+                                "fewer windows)",
+                   "symbol": "", "units": "1 / drive period"},
 }
 
 
