@@ -19,6 +19,8 @@ import pytest
 import vibrofriction as vf
 from vibrofriction_reference import return_mapping_mu
 
+pytestmark = pytest.mark.slow  # the reference at two resolutions per point
+
 REGIMES = ("soft", "stiff", "general", "alpha>1", "jumping above v0*",
            "jumping above v0*, alpha>1", "rigid", "resonant IV")
 POINTS_PER_REGIME = 6

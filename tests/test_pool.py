@@ -17,7 +17,8 @@ from vibrofriction.sweep.pool import check_workers, run_tasks
 
 psutil = pytest.importorskip("psutil")  # installed with distributed
 
-pytestmark = pytest.mark.skipif(sys.platform != "linux", reason="SIGKILL and /proc: Linux")
+pytestmark = [pytest.mark.skipif(sys.platform != "linux", reason="SIGKILL and /proc: Linux"),
+              pytest.mark.slow]  # real processes killed and waited for
 
 #: about 40 s of work on one core (20 496 points); blocks of 2000 points take seconds
 #: each, so the kill lands while both workers are inside a compiled kernel (GIL held)

@@ -231,6 +231,7 @@ def _files(folder: Path) -> dict[str, bytes]:
     return files
 
 
+@pytest.mark.slow
 def test_results_do_not_depend_on_the_number_of_workers(tmp_path: Path) -> None:
     from vibrofriction.report import reproduce
 

@@ -417,6 +417,7 @@ def _cli(*args: str, cwd: Path) -> subprocess.CompletedProcess:
                           timeout=300, env=env)
 
 
+@pytest.mark.slow
 def test_cli_sweep_and_plot(tmp_path: Path) -> None:
     r = _cli("sweep", "--alpha", "0.01,0.1,0.3", "--beta", "2,5", "--amplitude", "0.5",
              "--vbar", "0:1.2:13", "--out", "atlas.zarr", "--workers", "1",

@@ -17,6 +17,8 @@ import vibrofriction.sweep as vsweep
 from test_sweep import GRID, assert_bitwise
 from vibrofriction.sweep import open_atlas, sweep
 
+pytestmark = pytest.mark.slow  # a Dask cluster per module; the fast lane skips it
+
 distributed = pytest.importorskip("distributed")
 
 

@@ -198,6 +198,7 @@ def _done_markers(path: Path) -> int:
         return 0
 
 
+@pytest.mark.slow
 def test_sigkill_mid_sweep_then_resume_is_identical(tmp_path: Path, monkeypatch) -> None:
     """Kill -9 a two-process sweep (parent and workers) mid-run, resume, compare."""
     path = tmp_path / "atlas.zarr"
