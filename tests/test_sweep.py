@@ -218,7 +218,11 @@ def test_static_limit_and_continuous_sliding(serial: xr.Dataset) -> None:
     # eq. (2) at vbar = 0 and mu = mu0 exactly above vbar = 1 (away from resonances)
     assert np.all(serial.mu_ratio.sel(vbar=0.0).values == 0.5)
     assert np.all(serial.status.sel(vbar=0.0).values == -1)
-    assert np.all(serial.mu_ratio.sel(vbar=1.2).values == 1.0)
+    # (from the default start rare sticks of the undamped free oscillation may remain:
+    # mu = mu0 within the stated error, docs/solver.md)
+    above = serial.sel(vbar=1.2)
+    assert np.all(above.trusted.values)
+    assert np.all(np.abs(above.mu_ratio.values - 1.0) <= above.error.values)
 
 
 @pytest.mark.parametrize("chunk_size", [1, 7, 13, 50, 10_000])

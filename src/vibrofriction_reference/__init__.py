@@ -28,6 +28,8 @@ over long runs.
   friction impulse of each step is chosen in ``[-n dt, n dt]`` so that the
   body stops if it can). Averages by the trapezoid rule (Verlet) or the
   midpoint rule (Moreau), matching where each scheme evaluates the force.
+  :func:`return_mapping_periods` gives the same run's mean ``f`` and ``n`` over
+  each averaged drive period (to see whether a run has settled).
 * **Peer A**, :func:`solve_ivp_mu` -- what a Python user would write today:
   :func:`scipy.integrate.solve_ivp` phase by phase with terminal events for the
   stick/slip switches; lift-off and touchdown times are known in closed form
@@ -38,19 +40,31 @@ Neither peer detects a periodic orbit: each averages over a fixed window after a
 fixed transient, from a stated initial state. Compare them (and the main
 solver) at the same transient/average windows when checking discretisation
 error, or with windows long enough that the steady state is reached.
+
+Parameters are plain floats and are not validated as physical parameters (that is
+the caller's task, e.g. ``vibrofriction.Dimensionless``); only what an integrator
+cannot run without is refused, with a ValueError naming the parameter and its range.
 """
 
 from .events import PeerRun, solve_ivp_mu, solve_ivp_run
-from .fixed_step import ReferenceHistory, return_mapping_history, return_mapping_mu
+from .fixed_step import (
+    PeriodMeans,
+    ReferenceHistory,
+    return_mapping_history,
+    return_mapping_mu,
+    return_mapping_periods,
+)
 from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
 
 __all__ = [
     "INITIAL_REST",
     "INITIAL_SLIDING",
     "PeerRun",
+    "PeriodMeans",
     "ReferenceHistory",
     "return_mapping_history",
     "return_mapping_mu",
+    "return_mapping_periods",
     "solve_ivp_mu",
     "solve_ivp_run",
     "steps_per_drive_period",

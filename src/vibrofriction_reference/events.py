@@ -9,7 +9,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .model import INITIAL_SLIDING, TWO_PI, check_parameters, contact_angle, initial_code
+from .model import (
+    INITIAL_SLIDING,
+    TWO_PI,
+    check_parameters,
+    check_windows,
+    contact_angle,
+    initial_code,
+)
 
 __all__ = ["PeerRun", "solve_ivp_mu", "solve_ivp_run"]
 
@@ -324,6 +331,22 @@ class _Run:
         z[2] = s * n_here  # contact point came to rest: stick at the edge of the cone
         return _STICK, 0.0, z
 
+    def enter_segment(self, phase, s, t0, t1, z):
+        """The phase at the start of the segment ``t0..t1`` between two cuts.
+
+        A segment whose middle has ``n <= 0`` is a flight (``f = 0``); the first
+        contact segment after a flight starts with a touchdown; any other keeps
+        the phase reached at ``t0``.
+        """
+        a = self.ode.a
+        if a > 1.0 and 1.0 + a * math.cos(0.5 * (t0 + t1)) <= 0.0:
+            z[2] = 0.0
+            return _FLIGHT, 0.0, z
+        if phase == _FLIGHT:
+            phase, s, z = self.touchdown(t0, z)
+            self.log(t0, phase, s, z)
+        return phase, s, z
+
     def piece(self, phase, s, t0, t1, z):
         """Integrate from ``t0`` to ``t1`` (one contact arc or one flight), switching at events."""
         t = t0
@@ -372,37 +395,47 @@ def solve_ivp_run(
     retried with a tiny first step.
     """
     alpha, beta, a, V = check_parameters(alpha, beta, amplitude, V)
-    if average_periods < 1 or transient_periods < 0:
-        raise ValueError("need average_periods >= 1 and transient_periods >= 0")
+    transient_periods, average_periods = check_windows(transient_periods, average_periods)
+    if not (steps_per_fastest_period > 0.0 and math.isfinite(steps_per_fastest_period)):
+        raise ValueError("steps_per_fastest_period must be in (0, inf) (finite and > 0), "
+                         f"got {steps_per_fastest_period}")
     ode = _PhaseODE(alpha, beta, a, V)
-    w = max(1.0, math.sqrt(alpha)) if ode.rigid else max(1.0, math.sqrt(alpha), math.sqrt(beta))
+    w = _fastest_frequency(ode)
     # a cap on the step (the minimum test catches what it still misses)
     run = _Run(ode, method, rtol, atol, TWO_PI / (steps_per_fastest_period * w), TWO_PI / w,
                max_events_per_period, event_log)
-    periods = int(transient_periods) + int(average_periods)
-    t_avg, t_end = TWO_PI * int(transient_periods), TWO_PI * periods
-    if initial_code(initial) == INITIAL_SLIDING:
-        z = np.array([-1.0 / alpha, V, 1.0, 0.0, 0.0])
-    else:
-        z = np.zeros(5)
-    phase, s, z = ode.entry_phase(0.0, z)
+    periods = transient_periods + average_periods
+    t_avg, t_end = TWO_PI * transient_periods, TWO_PI * periods
+    phase, s, z = ode.entry_phase(0.0, _initial_state(initial, alpha, V))
     integrals_at_avg = (0.0, 0.0)
     cuts = _contact_cuts(a, t_avg, t_end, periods)
     for t0, t1 in zip(cuts[:-1], cuts[1:], strict=True):
-        if a > 1.0 and 1.0 + a * math.cos(0.5 * (t0 + t1)) <= 0.0:  # flight
-            phase, s = _FLIGHT, 0.0
-            z[2] = 0.0
-        elif phase == _FLIGHT:
-            phase, s, z = run.touchdown(t0, z)
-            run.log(t0, phase, s, z)
+        phase, s, z = run.enter_segment(phase, s, t0, t1, z)
         phase, s, z = run.piece(phase, s, t0, t1, z)
         if t1 == t_avg:
             integrals_at_avg = (z[3], z[4])
-    span = t_end - t_avg
-    mean_f = (z[3] - integrals_at_avg[0]) / span
-    mean_n = (z[4] - integrals_at_avg[1]) / span
+    mean_f, mean_n = _window_means(z, integrals_at_avg, t_end - t_avg)
     final = (t_end, float(z[0]) + V * t_end, float(z[1]), float(z[2]))
     return PeerRun(mean_f / mean_n, mean_f, mean_n, run.n_events, run.n_calls, run.nfev, final)
+
+
+def _fastest_frequency(ode: _PhaseODE) -> float:
+    """The fastest of the drive (1), slip (``sqrt(alpha)``) and stick (``sqrt(beta)``)."""
+    w = max(1.0, math.sqrt(ode.alpha))
+    return w if ode.rigid else max(w, math.sqrt(ode.beta))
+
+
+def _initial_state(initial, alpha: float, V: float) -> np.ndarray:
+    """``[y, x', f, I_f, I_n]`` at ``tau = 0`` (docs/model.md, initial states)."""
+    if initial_code(initial) == INITIAL_SLIDING:
+        return np.array([-1.0 / alpha, V, 1.0, 0.0, 0.0])
+    return np.zeros(5)
+
+
+def _window_means(z: np.ndarray, integrals_at_avg: tuple[float, float],
+                  span: float) -> tuple[float, float]:
+    """``<f>`` and ``<n>`` over the averaging window from the quadrature variables."""
+    return (z[3] - integrals_at_avg[0]) / span, (z[4] - integrals_at_avg[1]) / span
 
 
 def solve_ivp_mu(

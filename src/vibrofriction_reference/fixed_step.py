@@ -11,14 +11,17 @@ from numba import njit
 
 from .model import (
     INITIAL_SLIDING,
+    check_count,
     check_parameters,
+    check_windows,
     contact_angle,
     initial_code,
     normal,
     steps_per_drive_period,
 )
 
-__all__ = ["ReferenceHistory", "return_mapping_history", "return_mapping_mu"]
+__all__ = ["PeriodMeans", "ReferenceHistory", "return_mapping_history", "return_mapping_mu",
+           "return_mapping_periods"]
 
 
 @njit(cache=True)
@@ -26,8 +29,9 @@ def _verlet_return_mapping(alpha, beta, a, V, N, n_total, avg_start, initial, re
     """Velocity Verlet + Jenkins return mapping, finite contact stiffness.
 
     State at step m (tau_m = m dt): y = x - V tau, v = y', f. Returns the
-    trapezoid sums of f and n over steps avg_start..n_total and, if ``record``,
-    the history at every step (arrays of length n_total + 1, else length 1).
+    trapezoid sums of f and n over steps avg_start..n_total, the same sums over
+    each drive period of that window, and, if ``record``, the history at every
+    step (arrays of length n_total + 1, else length 1).
     """
     k = beta - alpha
     dt = 2.0 * math.pi / N
@@ -53,6 +57,8 @@ def _verlet_return_mapping(alpha, beta, a, V, N, n_total, avg_start, initial, re
         h_n[0] = nn
     sf = 0.0
     sn = 0.0
+    pf = np.zeros((n_total - avg_start) // N)
+    pn = np.zeros((n_total - avg_start) // N)
     if avg_start == 0:
         sf += 0.5 * f
         sn += 0.5 * nn
@@ -60,6 +66,7 @@ def _verlet_return_mapping(alpha, beta, a, V, N, n_total, avg_start, initial, re
     t_down = 2.0 * math.pi - contact_angle(a) if a > 1.0 else -1.0
     acc = -alpha * y - f
     for i in range(n_total):
+        f_prev = f
         vh = v + 0.5 * dt * acc
         y += dt * vh
         m = i + 1
@@ -87,6 +94,9 @@ def _verlet_return_mapping(alpha, beta, a, V, N, n_total, avg_start, initial, re
             w = 0.5 if m == n_total else 1.0
             sf += w * f
             sn += w * nn
+            j = (i - avg_start) // N
+            pf[j] += 0.5 * (f_prev + f)
+            pn[j] += 0.5 * (n_prev + nn)
         elif m == avg_start:
             sf += 0.5 * f
             sn += 0.5 * nn
@@ -97,7 +107,7 @@ def _verlet_return_mapping(alpha, beta, a, V, N, n_total, avg_start, initial, re
             h_xd[m] = v + V
             h_f[m] = f
             h_n[m] = nn
-    return sf, sn, h_tau, h_x, h_xd, h_f, h_n
+    return sf, sn, pf, pn, h_tau, h_x, h_xd, h_f, h_n
 
 
 @njit(cache=True)
@@ -107,8 +117,9 @@ def _moreau_rigid(alpha, a, V, N, n_total, avg_start, initial, record):
     Per step: half drift of y, friction impulse at the midpoint chosen in
     [-n dt, n dt] so that the body velocity u = x' becomes zero if possible
     (stick), else of full size opposing the free velocity (slip); half drift.
-    Returns the midpoint sums of f and n over steps avg_start..n_total - 1 and
-    the optional history (f, n of the step ending at each tau).
+    Returns the midpoint sums of f and n over steps avg_start..n_total - 1, the
+    same sums over each drive period of that window, and the optional history
+    (f, n of the step ending at each tau).
     """
     dt = 2.0 * math.pi / N
     if initial == 0:
@@ -130,6 +141,8 @@ def _moreau_rigid(alpha, a, V, N, n_total, avg_start, initial, record):
         h_n[0] = normal(0.0, a)
     sf = 0.0
     sn = 0.0
+    pf = np.zeros((n_total - avg_start) // N)
+    pn = np.zeros((n_total - avg_start) // N)
     for i in range(n_total):
         ym = y + 0.5 * dt * (u - V)
         nm = normal(((i % N) + 0.5) * dt, a)
@@ -144,6 +157,9 @@ def _moreau_rigid(alpha, a, V, N, n_total, avg_start, initial, record):
         if i >= avg_start:
             sf += f
             sn += nm
+            j = (i - avg_start) // N
+            pf[j] += f
+            pn[j] += nm
         if record:
             m = i + 1
             tau = m * dt
@@ -152,7 +168,7 @@ def _moreau_rigid(alpha, a, V, N, n_total, avg_start, initial, record):
             h_xd[m] = u
             h_f[m] = f
             h_n[m] = nm
-    return sf, sn, h_tau, h_x, h_xd, h_f, h_n
+    return sf, sn, pf, pn, h_tau, h_x, h_xd, h_f, h_n
 
 
 @njit(cache=True)
@@ -189,16 +205,59 @@ def return_mapping_mu(
     ``dt``; about 2-3 ms per point at 400 steps and 250 periods when
     ``sqrt(beta) <= 1.5``, scaling with ``max(1, sqrt(beta))``.
     """
+    sf, sn, _, _, _ = _averaging_sums(alpha, beta, amplitude, V, steps_per_period,
+                                      transient_periods, average_periods, initial)
+    return sf / sn
+
+
+def _averaging_sums(alpha, beta, amplitude, V, steps_per_period, transient_periods,
+                    average_periods, initial):
+    """Checked arguments, one run: the window's sums of f and n, per-period sums, N."""
     alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
-    if average_periods < 1 or transient_periods < 0:
-        raise ValueError("need average_periods >= 1 and transient_periods >= 0")
+    transient_periods, average_periods = check_windows(transient_periods, average_periods)
     N = steps_per_drive_period(alpha, beta, steps_per_period)
-    n_total = N * (int(transient_periods) + int(average_periods))
-    avg_start = N * int(transient_periods)
-    sf, sn, *_ = _fixed_step(
+    n_total = N * (transient_periods + average_periods)
+    avg_start = N * transient_periods
+    sf, sn, pf, pn, *_ = _fixed_step(
         alpha, beta, amplitude, V, N, n_total, avg_start, initial_code(initial), False
     )
-    return sf / sn
+    return sf, sn, pf, pn, N
+
+
+@dataclass(frozen=True)
+class PeriodMeans:
+    """Means of ``f`` and ``n`` over each drive period of the averaging window.
+
+    From :func:`return_mapping_periods`: ``f[j]`` and ``n[j]`` are the means over
+    drive period ``transient_periods + j`` (same quadrature as
+    :func:`return_mapping_mu`), so that the ratio over any run of whole periods
+    can be formed afterwards, e.g. over each half of the window to see whether the
+    run has settled.
+    """
+
+    f: np.ndarray
+    n: np.ndarray
+    steps_per_drive_period: int
+
+    def mu_ratio(self, start: int = 0, stop: int | None = None) -> float:
+        """``<f> / <n>`` (eq. 25) over the window's periods ``start..stop - 1``."""
+        return float(np.sum(self.f[start:stop]) / np.sum(self.n[start:stop]))
+
+
+def return_mapping_periods(
+    alpha: float,
+    beta: float,
+    amplitude: float,
+    V: float,
+    steps_per_period: float = 400,
+    transient_periods: int = 200,
+    average_periods: int = 50,
+    initial: int | str = INITIAL_SLIDING,
+) -> PeriodMeans:
+    """The run of :func:`return_mapping_mu`, with the means of each averaged period."""
+    _, _, pf, pn, N = _averaging_sums(alpha, beta, amplitude, V, steps_per_period,
+                                      transient_periods, average_periods, initial)
+    return PeriodMeans(pf / N, pn / N, N)
 
 
 @dataclass(frozen=True)
@@ -230,9 +289,10 @@ def return_mapping_history(
 ) -> ReferenceHistory:
     """The trajectory of :func:`return_mapping_mu` over ``periods`` drive periods from 0."""
     alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
+    periods = check_count("periods", periods, 1)
     N = steps_per_drive_period(alpha, beta, steps_per_period)
-    n_total = N * int(periods)
-    _, _, tau, x, xd, f, n = _fixed_step(
+    n_total = N * periods
+    _, _, _, _, tau, x, xd, f, n = _fixed_step(
         alpha, beta, amplitude, V, N, n_total, 0, initial_code(initial), True
     )
     return ReferenceHistory(tau, x, xd, f, n, N)

@@ -13,8 +13,8 @@ import math
 
 from numba import njit
 
-__all__ = ["INITIAL_REST", "INITIAL_SLIDING", "TWO_PI", "check_parameters", "contact_angle",
-           "initial_code", "normal", "steps_per_drive_period"]
+__all__ = ["INITIAL_REST", "INITIAL_SLIDING", "TWO_PI", "check_count", "check_parameters",
+           "check_windows", "contact_angle", "initial_code", "normal", "steps_per_drive_period"]
 
 INITIAL_SLIDING = 0
 """Initial state ``tau = 0, x = -1/alpha, x' = V, f = 1`` (sliding before the oscillation)."""
@@ -38,17 +38,43 @@ def initial_code(initial) -> int:
 
 
 def check_parameters(alpha, beta, amplitude, V) -> tuple[float, float, float, float]:
-    """Plain floats, or ValueError where the integrators cannot run (the least they need)."""
+    """Plain floats, or ValueError where the integrators cannot run (the least they need).
+
+    This is not the package's parameter validation (``vibrofriction.Dimensionless``
+    does that for the caller); it refuses only what would make the integrators
+    meaningless: ``1/alpha`` in the initial state, a negative contact stiffness
+    ``beta - alpha``, ``arccos(-1/a)`` and non-finite inputs.
+    """
     alpha, beta, amplitude, V = float(alpha), float(beta), float(amplitude), float(V)
     if not (alpha > 0.0 and math.isfinite(alpha)):
-        raise ValueError(f"alpha must be positive and finite, got {alpha}")
+        raise ValueError(f"alpha must be in (0, inf) (finite and > 0), got {alpha}")
     if not beta > alpha:
-        raise ValueError(f"beta must exceed alpha (or be math.inf), got beta={beta}")
+        raise ValueError(
+            f"beta must be in (alpha, inf] (> alpha = {alpha}, math.inf for a rigid "
+            f"contact), got beta={beta}")
     if not (amplitude >= 0.0 and math.isfinite(amplitude)):
-        raise ValueError(f"amplitude must be >= 0 and finite, got {amplitude}")
+        raise ValueError(f"amplitude must be in [0, inf) (finite and >= 0), got {amplitude}")
     if not math.isfinite(V):
-        raise ValueError(f"V must be finite, got {V}")
+        raise ValueError(f"V must be a finite number, got {V}")
     return alpha, beta, amplitude, V
+
+
+def check_count(name: str, value, minimum: int) -> int:
+    """``value`` as an int, or ValueError naming ``name`` unless it is a whole number
+    ``>= minimum``."""
+    try:
+        count = int(value)
+    except (TypeError, ValueError, OverflowError):
+        count = None
+    if count is None or count != value or count < minimum:
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {value!r}")
+    return count
+
+
+def check_windows(transient_periods, average_periods) -> tuple[int, int]:
+    """The transient and averaging windows as whole numbers of drive periods."""
+    return (check_count("transient_periods", transient_periods, 0),
+            check_count("average_periods", average_periods, 1))
 
 
 def steps_per_drive_period(alpha: float, beta: float, steps_per_period: float) -> int:
@@ -56,8 +82,13 @@ def steps_per_drive_period(alpha: float, beta: float, steps_per_period: float) -
 
     ``steps_per_period`` steps per period of the fastest of the drive (frequency 1),
     the slip oscillation (``sqrt(alpha)``) and, for a finite contact, the stick
-    oscillation (``sqrt(beta)``), rounded up to a whole number per drive period.
+    oscillation (``sqrt(beta)``), rounded up to a whole number per drive period
+    (at least 4). ``steps_per_period`` must be a finite number > 0.
     """
+    steps_per_period = float(steps_per_period)
+    if not (steps_per_period > 0.0 and math.isfinite(steps_per_period)):
+        raise ValueError(
+            f"steps_per_period must be in (0, inf) (finite and > 0), got {steps_per_period}")
     w = max(1.0, math.sqrt(alpha))
     if math.isfinite(beta):
         w = max(w, math.sqrt(beta))

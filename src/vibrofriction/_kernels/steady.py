@@ -46,7 +46,7 @@ from .jit import jit
 from .phases import free_y, slip_velocity
 from .roots import first_root, start_margin
 
-MAX_PERIOD = 8  # longest periodic orbit looked for, in drive periods
+MAX_PERIOD = 12  # longest periodic orbit looked for, in drive periods
 MAX_DEGENERATE = 1000  # transitions decided within round-off before giving up (chatter)
 MAX_ZERO_SEGMENTS = 100  # successive zero-length segments before giving up (stuck)
 FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods

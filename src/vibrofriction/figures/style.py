@@ -185,5 +185,7 @@ def mark_untrusted(ax: Any, x: Any, curve: Any, color: Any, scale: float = 1.0,
         ax.plot(x[valued], scale * np.clip(mu[valued], 0, 1), "o", ms=ms, mfc="none",
                 mec=color, mew=0.5)
     ranged = bad & ~np.isfinite(mu) & np.isfinite(lo)
-    if np.any(ranged):
+    if np.any(ranged):  # a bar with end ticks (visible even where the range is tiny)
         ax.vlines(x[ranged], scale * lo[ranged], scale * hi[ranged], colors=color, lw=0.6)
+        for end in (lo, hi):
+            ax.plot(x[ranged], scale * end[ranged], "_", ms=ms + 1, color=color, mew=0.6)
