@@ -67,7 +67,7 @@ def _log_uniform(rng: np.random.Generator, low: float, high: float) -> float:
 
 
 def _away_from_one(draw, *, alpha_gap: float = 0.05, beta_gap: float = 0.05):
-    """Redraw ``(alpha, beta)`` until ``|alpha - 1| >= alpha_gap`` and ``|beta - 1| >= beta_gap``."""
+    """Redraw ``(alpha, beta)`` until ``|alpha - 1| >= alpha_gap``, ``|beta - 1| >= beta_gap``."""
     while True:
         alpha, beta = draw()
         if abs(alpha - 1.0) >= alpha_gap and abs(beta - 1.0) >= beta_gap:
