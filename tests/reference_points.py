@@ -6,24 +6,42 @@ solver against the independent fixed-step integrator of :mod:`vibrofriction_refe
 ``vibrofriction.Dimensionless`` (the package's parameter validation; the reference
 validates nothing physical).
 
-``reference_mu`` returns ``(mu, err)`` where ``err`` bounds the reference's own error:
+``reference_mu`` returns ``(mu, err)``, ``mu`` from the finest of three step sizes
+(3200 steps per fastest period for a finite contact, 12800 for a rigid one) and ``err``
+the sum of three bounds, each on one error of the reference, all measured:
 
-* discretisation: ``|mu(fine) - mu(coarse)|`` with steps in the ratio 4. For an error
-  ``C dt^p`` the fine run's error is ``|mu(fine) - mu(coarse)| / (4^p - 1)``; taking the
-  whole difference is a safety factor ``4^p - 1`` = 15 at the order ``p ~ 2`` measured
-  in ``tests/test_reference.py`` (fitted slopes 1.7-2.3), 8 at its asserted floor
-  1.6, and still 3 for first order (Moreau's scheme at very fine steps). The factor
-  is that large because the order is irregular: switches fall anywhere between two
-  steps, so the error of one resolution is not a smooth function of ``dt``;
-* averaging and transient: the ratio ``<f>/<n>`` over each half of the averaging window
-  (largest difference over both resolutions), times 2. The window is 120 drive
-  periods, so a periodic orbit of period 1-6 drive periods is averaged exactly in
-  either half; a difference of the halves is then a transient or a motion that is not
-  periodic. For a transient decaying by a factor ``q = rho^(W/2)`` over half the window
-  ``W``, the full mean is off by ``(1 + q) / (2 (1 - q))`` times the halves'
-  difference, which is at most 2 while ``q <= 0.6`` (a decay time below ~120
-  periods). A slower creep (near ``beta = 1`` with a small ``alpha``,
-  ``docs/modulation.md``) is not bounded by this estimate.
+* discretisation: the largest ``|mu(fine) - mu(coarse)|`` over two coarser runs, with
+  8 and ``sqrt 8`` times fewer steps. For an error ``C dt^p`` the fine run's error is
+  ``|mu(fine) - mu(coarse)| / (8^p - 1)``: the safety factor is 63 at the order
+  ``p ~ 2`` of ``tests/test_reference.py`` (fitted slopes 1.7-2.3) and 7 at first
+  order (Moreau's scheme at fine steps). It has to be that large, and a second coarse
+  run is needed, because the error is not a smooth function of ``dt``: the switches fall
+  anywhere between two steps, the error changes sign from one resolution to the next,
+  and in nearly neutral orbits it stays on plateaus (measured: at ``alpha, beta, a =
+  0.103, 0.618, 2.33`` the runs at 400 and 3200 steps agree to 5e-10 but both are 5e-8
+  off; a rigid point at ``alpha = 1.13`` sits at 2.4e-5 from 6400 to 38400 steps). On
+  134 finite-contact points of all regimes the fine error over ``|fine - coarse|``
+  was at most 0.4 at the ratio 8 and reached 2.4 at the ratio 4 (400 vs 1600 steps);
+  on 48 rigid points, against the event-driven peer A, at most 0.35 (1600 vs 12800);
+* averaging: the ratio ``<f>/<n>`` over each half of the averaging window (largest
+  difference over the runs), times 4. With the defaults (transient 120 periods, window
+  240) each half is 120 periods, so a periodic orbit of 1-6 drive periods is averaged
+  exactly in both halves, and the halves' ages differ by the factor 2 that makes the
+  check scale-free: a deficit decaying like ``k^-g`` leaves the full window off by
+  ``(H1 + H2) / 2``, at most 1.9 (``g = 1``) and 3.8 (``g = 1/2``) times the halves'
+  difference ``H1 - H2``; a geometric decay with ratio ``q`` per half gives
+  ``(1 + q) / (2 (1 - q))``, at most 4 for ``q <= 0.78``;
+* transient: ``|mu - mu(later)|`` at the coarsest step, where ``mu(later)`` is averaged
+  over the same window after 600 periods instead of 120. It catches transients that the
+  halves miss (rare stick events that stop, e.g. just above ``V*``, where the window
+  means go 8e-8, 0, 2e-9, 0 below 1) and slow algebraic ones (case IV at resonance:
+  ``mu`` still rises by 1e-4 between periods 3000 and 6000).
+
+Not bounded: a drift slower than these windows see (near ``beta = 1`` with a small
+``alpha``, ``docs/modulation.md``), and a coexisting attractor reached by the solver but
+not by the reference (both start from the same state). Cost (2 shared cores, numba
+warm): 25-285 ms per point, about 80 ms typical, proportional to
+``max(1, sqrt(alpha), sqrt(beta))``.
 """
 
 from __future__ import annotations
@@ -46,12 +64,13 @@ REGIMES = (
     "contact_resonance_III",
 )
 
-# Steps per period of the fastest oscillation (coarse, fine): Verlet for a finite
-# contact (second order); Moreau for a rigid one (drifts to first order), with more.
-STEPS = {"finite": (400, 1600), "rigid": (1600, 6400)}
-TRANSIENT_PERIODS = 300
-AVERAGE_PERIODS = 120
-AVERAGING_SAFETY = 2.0
+# Steps per period of the fastest oscillation (coarse, middle, fine): Verlet for a finite
+# contact (second order), Moreau for a rigid one (drifts to first order), with more.
+STEPS = {"finite": (400, 1131, 3200), "rigid": (1600, 4525, 12800)}
+TRANSIENT_PERIODS = 120
+AVERAGE_PERIODS = 240
+LONG_TRANSIENT_PERIODS = 600
+AVERAGING_SAFETY = 4.0
 ROUND_OFF = 1e-12
 
 
@@ -140,22 +159,29 @@ def reference_mu(
     initial: str = "sliding",
     transient_periods: int = TRANSIENT_PERIODS,
     average_periods: int = AVERAGE_PERIODS,
-    steps: tuple[float, float] | None = None,
+    steps: tuple[float, ...] | None = None,
 ) -> tuple[float, float]:
-    """``(mu, err)``: the fixed-step reference's ``mu_macro/mu0`` (eq. 25) and a bound
-    on its own error (module docstring) after ``transient_periods`` from ``initial``.
+    """``(mu, err)``: the fixed-step reference's ``mu_macro/mu0`` (eq. 25) from ``initial``
+    and a bound on its own error (module docstring).
 
-    ``mu`` is the fine run's mean over ``average_periods`` drive periods (an even
-    number); ``steps`` are the (coarse, fine) steps per fastest period
-    (default ``STEPS``).
+    ``mu`` is the finest run's mean over ``average_periods`` drive periods (an even
+    number) after ``transient_periods``; ``steps`` are the steps per fastest period,
+    coarsest first and finest last (default ``STEPS``).
     """
     if average_periods % 2:
         raise ValueError(f"average_periods must be even (two halves), got {average_periods}")
     steps = steps or STEPS["rigid" if math.isinf(beta) else "finite"]
+    if len(steps) < 2:
+        raise ValueError(f"steps must name at least two resolutions, got {steps!r}")
     half = average_periods // 2
     runs = [return_mapping_periods(alpha, beta, a, V, s, transient_periods, average_periods,
                                    initial) for s in steps]
-    mu_coarse, mu = runs[0].mu_ratio(), runs[1].mu_ratio()
+    mu = runs[-1].mu_ratio()
+    discretisation = max(abs(mu - r.mu_ratio()) for r in runs[:-1])
     halves = max(abs(r.mu_ratio(0, half) - r.mu_ratio(half)) for r in runs)
-    err = abs(mu - mu_coarse) + AVERAGING_SAFETY * halves + ROUND_OFF
+    later = return_mapping_periods(alpha, beta, a, V, steps[0],
+                                   max(LONG_TRANSIENT_PERIODS, 5 * transient_periods),
+                                   average_periods, initial)
+    transient = abs(later.mu_ratio() - runs[0].mu_ratio())
+    err = discretisation + AVERAGING_SAFETY * halves + transient + ROUND_OFF
     return mu, err
