@@ -9,10 +9,15 @@ covers its discretisation error and its transient/averaging error (see
 ``reference_points``).
 
 Two jumping points above ``V*`` are included by name: the solver once claimed a proven
-continuous sliding (``mu = 1``) there, while the truth is below 1.
+continuous sliding (``mu = 1``) there, while the truth is below 1 (0.980172, 0.995723 by
+both reference peers). Run against the solver as it was before commit 60f0fc2, this file
+fails at both (|difference| 1.98e-2 and 4.28e-3, allowed 4.3e-7 and 5.0e-7) and at one
+random jumping point (``alpha, beta, a = 0.503, 0.878, 2.24``: 1.21e-2).
 """
 
 from __future__ import annotations
+
+import math
 
 import pytest
 
@@ -34,14 +39,20 @@ def inertial_point(alpha: float, beta: float, a: float, vbar: float):
     return alpha, beta, a, vbar * v_star(alpha, beta, a)
 
 
+UNBOUNDED = "the reference cannot bound its transient"
+
+
 def disagreement(point: tuple[float, float, float, float]) -> str | None:
     """``None`` if the solver agrees with the reference at ``point`` (or claims no value),
-    else a line saying by how much it does not."""
+    ``UNBOUNDED`` if the reference's error bar is infinite there, else a line saying by
+    how much the solver disagrees."""
     alpha, beta, a, V = point
     r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), v_inertial=V)
     if r.status.value not in CLAIMS_A_VALUE:
         return None
     mu_ref, err_ref = reference_mu(alpha, beta, a, V)
+    if math.isinf(err_ref):
+        return UNBOUNDED
     allowed = max(r.error, 1e-9) + err_ref
     if abs(r.mu_ratio - mu_ref) <= allowed:
         return None
@@ -53,12 +64,14 @@ def disagreement(point: tuple[float, float, float, float]) -> str | None:
 
 @pytest.mark.parametrize("regime", REGIMES)
 def test_solver_agrees_with_reference(regime):
-    failures = [line for p in random_points(SEED, POINTS_PER_REGIME, regime)
-                if (line := disagreement(p)) is not None]
+    lines = [disagreement(p) for p in random_points(SEED, POINTS_PER_REGIME, regime)]
+    failures = [line for line in lines if line not in (None, UNBOUNDED)]
     assert not failures, "\n".join(failures)
+    # the harness itself: most points must be checkable, or the test says nothing
+    assert lines.count(UNBOUNDED) <= POINTS_PER_REGIME // 2
 
 
 @pytest.mark.parametrize("point", list(KNOWN_JUMPING.values()), ids=list(KNOWN_JUMPING))
 def test_solver_agrees_with_reference_at_known_jumping_points(point):
     line = disagreement(inertial_point(*point))
-    assert line is None, line
+    assert line is None, line  # (UNBOUNDED fails too: these points must be checked)
