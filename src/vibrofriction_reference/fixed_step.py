@@ -201,7 +201,11 @@ def return_mapping_mu(
     between two steps), with or without jumping -- a touchdown inside a step is
     placed at its closed-form time, without which the scheme is first order.
     The rigid (Moreau) scheme shows about second order down to errors of 1e-6
-    and drifts towards first order below. Relative cost: one numba step per
+    and drifts towards first order below. The error is not a smooth function of
+    ``dt``: it changes sign from one resolution to the next and can stay on a
+    plateau (Moreau at ``alpha, a, V = 1.13, 0.98, 3.80``: 2.4e-5 from 6400 to 38400
+    steps, then 1.1e-6), so estimate it from more than two resolutions
+    (``tests/reference_points.py``). Relative cost: one numba step per
     ``dt``; about 2-3 ms per point at 400 steps and 250 periods when
     ``sqrt(beta) <= 1.5``, scaling with ``max(1, sqrt(beta))``.
     """
