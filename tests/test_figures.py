@@ -6,6 +6,7 @@ import math
 from pathlib import Path
 
 import matplotlib
+import matplotlib.figure
 import numpy as np
 import pytest
 from scipy.integrate import quad
@@ -14,16 +15,17 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.figures import all_recipes, history, maps, style
 from vibrofriction.figures.recipe import Table, curve_table, max_deviation, solve_recipes
-from vibrofriction.figures.series import Series, series_at_vbar, solve
-from vibrofriction.solver import solve_points
+from vibrofriction.figures.series import Curve, Series, series_at_vbar, solve
+from vibrofriction.solver import STATUS_BY_CODE, solve_points
 
 C0 = math.sqrt(4.0 * math.pi / 9.0)
 
 
 # --------------------------------------------------------------------------- style
 def test_style_is_headless_and_saves_png_and_pdf(tmp_path: Path) -> None:
-    assert matplotlib.get_backend().lower() == "agg"
     fig = style.figure()
+    # a plain Figure, not registered with pyplot: nothing to close, no notebook state
+    assert isinstance(fig, matplotlib.figure.Figure) and fig.canvas.manager is None
     assert fig.get_size_inches()[0] == pytest.approx(style.COLUMN)
     ax = fig.add_subplot()
     ax.plot([0, 1], [0, 1])
@@ -174,20 +176,32 @@ def test_soft_law_corrected_against_the_solver_near_the_soft_limit() -> None:
     np.testing.assert_allclose(mu, theory.mu_ratio_soft_corrected(vbar, a), atol=0.006)
 
 
-def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Path) -> None:
-    """A notebook's backend must survive ``import vibrofriction.figures`` (and a save)."""
+@pytest.mark.parametrize("how", ["use", "env"])
+def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Path,
+                                                                    how: str) -> None:
+    """A notebook's backend must survive ``import vibrofriction.figures``, the rendering of
+    a recipe and a save; no pyplot is imported on the way."""
+    import os
     import subprocess
     import sys
 
-    code = ("import matplotlib; matplotlib.use('svg'); "
-            "import vibrofriction.figures as f; from vibrofriction.figures import style; "
-            "fig = style.figure(); fig.add_subplot().plot([0, 1]); "
-            f"style.save(fig, {str(tmp_path)!r}, 'x'); print(matplotlib.get_backend())")
+    env = {k: v for k, v in os.environ.items() if k != "MPLBACKEND"}
+    if how == "env":
+        env["MPLBACKEND"] = "pdf"
+        chosen, first = "pdf", "import matplotlib; before = matplotlib.get_backend(); "
+    else:
+        chosen, first = "svg", ("import matplotlib; matplotlib.use('svg'); "
+                                "before = matplotlib.get_backend(); ")
+    code = (first + "import sys; import vibrofriction.figures as f; "
+            "from vibrofriction.figures import history, style; "
+            "out = history.fig2().render({}); "
+            f"style.save(out.figure, {str(tmp_path)!r}, 'x'); "
+            "print(before, matplotlib.get_backend(), 'matplotlib.pyplot' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=300)
+                         timeout=300, env=env)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.strip() == "svg"
-    assert (tmp_path / "x.png").stat().st_size > 1000
+    assert out.stdout.split() == [chosen, chosen, "False"]
+    assert (tmp_path / "x.png").stat().st_size > 10_000
     pdf = (tmp_path / "x.pdf").read_bytes()
     assert b"CreationDate" not in pdf
 
@@ -212,3 +226,190 @@ def test_checks_report_a_violation_they_are_fed() -> None:
                np.array([0, 2, 0, 0]), np.ones(n, int), np.zeros(n), np.zeros(n),
                np.array([True, False, True, True]), np.full(n, 0.4), np.full(n, 0.6))
     assert "1 not converged" in status_note({"k": nc}) and "(0.5, 2): 1" in status_note({"k": nc})
+
+
+# ------------------------------------------------ the checks module, on hand-made curves
+_CODE = {status: code for code, status in STATUS_BY_CODE.items()}
+
+
+def _curve(s: Series, mu, *, trusted=None, status: vf.Status = vf.Status.PERIODIC) -> Curve:
+    """A solved-looking curve with the given values (error 0 where trusted, inf elsewhere)."""
+    n = s.size
+    mu = np.asarray(mu, dtype=float)
+    ok = np.ones(n, bool) if trusted is None else np.asarray(trusted, bool)
+    return Curve(s, mu, np.where(ok, 0.0, np.inf), np.full(n, _CODE[status]), np.ones(n, int),
+                 np.zeros(n), np.zeros(n), ok, np.full(n, np.nan), np.full(n, np.nan))
+
+
+def test_matrix_checks_report_eq12_case_iii_and_plateau_violations() -> None:
+    from vibrofriction.figures.checks import matrix_checks
+
+    vb = np.array([0.0, 0.5, 1.0, 1.2])
+    gen = series_at_vbar("g", 0.5, 2.0, 0.5, vb, axis="vbar")
+    V = np.array([0.0, 1.0, 2.0])
+    iii = Series("iii", 0.2, 1.0, 0.5, V, np.full(3, np.nan), {"axis": "v_inertial"})
+    iv = Series("iv", 1.0, 5.3, 0.5, V, np.full(3, np.nan), {"axis": "v_inertial"})
+    far = Series("plateau:iv", 1.0, 5.3, 0.5, np.array([100.0, 1000.0]), np.full(2, np.nan),
+                 {"axis": "plateau"})
+    exact = float(theory.resonant_plateau_exact(0.5))
+    curves = {"g": _curve(gen, [0.5, 0.8, 0.97, 1.0]),          # 0.03 below 1 at vbar = 1
+              "iii": _curve(iii, [0.5, 1.0, 0.996]),             # case III off by 0.004
+              "iv": _curve(iv, [0.5, 0.7, 0.74]),
+              "plateau:iv": _curve(far, [0.70, exact + 0.002])}
+    by = {c.formula: c for c in matrix_checks(curves, 0.5, "figX", 2.0)}
+    eq12 = by["eq. (12): mu = mu0 exactly for vbar >= 1"]
+    assert eq12.deviation == pytest.approx(0.03) and "vbar=1" in eq12.at
+    case3 = by["case III: mu = mu0 for all v0 > 0"]
+    assert case3.deviation == pytest.approx(0.004) and "V=2" in case3.at
+    assert "stated accuracy" in case3.remark           # not "holds exactly"
+    plateau = by["case IV plateau (exact, rigid contact) at finite beta"]
+    assert plateau.deviation == pytest.approx(0.002)
+    mono = by["Fig. 3 caption: mu/mu0 increases monotonically with vbar"]
+    assert mono.deviation == pytest.approx(0.004) and "(0.2, 1), V = 1..2" in mono.at
+    # the same curves without the defects pass
+    curves["g"] = _curve(gen, [0.5, 0.8, 1.0, 1.0])
+    curves["iii"] = _curve(iii, [0.5, 1.0, 1.0])
+    by = {c.formula: c for c in matrix_checks(curves, 0.5, "figX", 2.0)}
+    assert by["eq. (12): mu = mu0 exactly for vbar >= 1"].deviation == 0.0
+    assert by["case III: mu = mu0 for all v0 > 0"].remark.startswith("holds exactly")
+
+
+def test_fig4_checks_measure_the_closed_forms_and_fit_the_exponent() -> None:
+    from vibrofriction.figures.checks import fig4_checks, fit_soft_exponent
+
+    vb = np.linspace(0.0, 1.2, 25)
+    systems = {"stiff": (0.01, 0.02), "soft": (0.01, 400.01)}
+    curves = {}
+    for a in (0.4, 1.0):
+        st = series_at_vbar(f"stiff,a={a:g}", 0.01, 0.02, a, vb, system="stiff")
+        so = series_at_vbar(f"soft,a={a:g}", 0.01, 400.01, a, vb, system="soft")
+        stiff_mu = np.array(theory.mu_ratio_stiff(vb, a))
+        stiff_mu[6] += 0.01                             # one defect on the stiff law
+        curves[st.key] = _curve(st, stiff_mu)
+        curves[so.key] = _curve(so, theory.mu_ratio_soft_corrected(vb, a, 1.5))  # p = 1.5
+    p, dev = fit_soft_exponent(curves)
+    assert p == pytest.approx(1.5, abs=1e-3) and dev < 1e-4
+    by = {c.formula: c for c in fig4_checks(curves, systems)}
+    stiff = by["eq. (26), stiff law"]
+    assert stiff.deviation == pytest.approx(0.01) and stiff.at == f"a=0.4, vbar={vb[6]:.3g}"
+    gap = max(float(np.max(np.abs(theory.mu_ratio_soft_corrected(vb, a, 1.5)
+                                  - theory.mu_ratio_soft_corrected(vb, a)))) for a in (0.4, 1))
+    assert by["eq. (27) corrected: sqrt(4 pi vbar/9), p = 1.2"].deviation == pytest.approx(gap)
+    assert "best p = 1.500" in by["eq. (27) corrected, exponent p fitted to the numerics"].at
+
+
+def test_fig5_envelope_counts_only_trusted_points() -> None:
+    from vibrofriction.figures.checks import fig5_checks
+
+    vb = np.linspace(0.0, 1.2, 13)
+    below, above = (0.5,), (1.01, 1.1, 10.0)
+    curves = {}
+    for b in below + above:
+        s = series_at_vbar(f"beta={b:g}", 0.01, b, 1.0, vb)
+        mu = np.array(theory.mu_ratio_soft_corrected(vb, 1.0)) - 0.05 * (vb < 1)
+        trusted = np.ones(vb.size, bool)
+        if b == 10.0:
+            mu[3] += 0.08                              # 0.03 above the soft law
+            mu[8] += 0.5                               # far above, but not trusted
+            trusted[8] = False
+        if b == 1.1:
+            mu[6] = mu[5] - 0.02                       # a decrease of 0.02
+        curves[s.key] = _curve(s, mu, trusted=trusted)
+    checks, plateau = fig5_checks(curves, below, above)
+    env = checks[0]
+    assert env.where.startswith("fig05: alpha = 0.01, beta = 10")
+    assert env.deviation == pytest.approx(0.03) and env.at == f"vbar={vb[3]:.3g}"
+    mono = [c for c in checks if "beta > 1" in c.where][0]
+    assert mono.deviation == pytest.approx(0.02) and "(0.01, 1.1), vbar = 0.5..0.6" in mono.at
+    assert [c for c in checks if "beta < 1" in c.where][0].deviation == 0.0
+    assert len(plateau) == 3 and all(p.startswith("beta = ") for p in plateau)
+
+
+def test_fig6_checks_measure_the_plateau_against_eq32() -> None:
+    from vibrofriction.figures.checks import fig6_checks, fig6_note
+
+    amps = (0.5, 1.5)
+    curves = {}
+    for a, offset in zip(amps, (0.004, -0.001), strict=True):
+        V = np.array([0.0, 12.0])
+        curves[f"a={a:g}"] = _curve(Series(f"a={a:g}", 1.0, math.inf, a, V, np.full(2, np.nan),
+                                           {"role": "curve"}), [1 - a, 1 - a / 2 + offset])
+        far = Series(f"plateau,a={a:g}", 1.0, math.inf, a, np.array([50.0, 200.0]),
+                     np.full(2, np.nan), {"role": "plateau"})
+        curves[far.key] = _curve(far, [0.0, 1 - a / 2 + offset])
+    by = {c.formula: c for c in fig6_checks(curves, amps, 200.0, 12.0,
+                                            velocity_amplitudes=(0.5,))}
+    paper = by["1 - a/2 (last eq. 32)"]
+    assert paper.deviation == pytest.approx(0.004) and paper.at == "a=0.5"
+    assert by["1 - a/2 (last eq. 32) for jumping"].deviation == pytest.approx(0.001)
+    exact15 = float(theory.resonant_plateau_exact(1.5))
+    assert by["Fig. 6: curves approach the plateau"].deviation >= abs(0.249 - exact15)
+    # v0/dv from a simulation of the true case IV: the exact energy balance holds
+    assert by["v0/dv, exact root of the energy balance (eq. 32)"].deviation < 1e-3
+    assert "a = 0.5: numerics 0.7540" in fig6_note(curves, amps, 200.0)
+
+
+def test_fig10_check_catches_cof_below_mu0_above_the_critical_velocity() -> None:
+    from vibrofriction.figures.checks import fig10_checks
+    from vibrofriction.figures.dimensional import SYSTEMS, physical_system
+
+    systems = {n: (SYSTEMS[n][0], physical_system(n)) for n in ("soft (I)", "stiff (II)")}
+    curves = {}
+    for name, (_, phys) in systems.items():
+        vstar = phys.critical_velocity()
+        v0 = np.array([0.0, 0.5 * vstar, vstar, 2 * vstar, 4 * vstar])
+        s = Series(name, 0.5, 2.0, 0.5, np.zeros(5), np.full(5, np.nan), {"v0": v0})
+        mu = np.array([0.5, 0.9, 1.0, 1.0, 1.0])
+        trusted = np.ones(5, bool)
+        if name == "soft (I)":
+            mu[3] = 0.98                               # below mu0 above v0*: a violation
+            mu[4], trusted[4] = 0.5, False             # untrusted: not counted
+        curves[name] = _curve(s, mu, trusted=trusted)
+    checks, note = fig10_checks(curves, systems, soft="soft (I)", stiff="stiff (II)")
+    dev = {c.where.split(",")[0]: c.deviation for c in checks}
+    assert dev["fig10: soft (I)"] == pytest.approx(0.02) and dev["fig10: stiff (II)"] == 0.0
+    assert "soft eq. (13)" in note and "stiff eq. (14)" in note
+
+
+def test_map_note_and_jumping_note_from_hand_made_curves() -> None:
+    from vibrofriction.figures.checks import jumping_note, map_field, map_note
+
+    alpha, beta = np.array([0.1, 2.0]), np.array([0.5, 3.0])   # beta > alpha: 3 cells
+    curves = {}
+    values = {(0, 0): 0.6, (1, 0): 0.7, (1, 1): 0.9}
+    for kind in ("vbar", "V"):
+        for (i, j), mu in values.items():
+            s = Series(f"{kind}:{i}:{j}", float(alpha[j]), float(beta[i]), 0.5, np.array([1.0]),
+                       np.array([0.5]), {"map": kind, "row": i, "alpha": float(alpha[j])})
+            curves[s.key] = _curve(s, [mu], trusted=[not (kind == "V" and (i, j) == (1, 1))])
+    mu, ok = map_field(curves, "V", alpha, beta)
+    assert np.isnan(mu[0, 1]) and not ok[0, 1] and not ok[1, 1] and ok[1, 0]
+    note = map_note(curves, alpha, beta)
+    assert note.startswith("3 points per map; untrusted: 0 at fixed vbar, 1 at fixed V")
+    assert "between 0.600 and 0.900" in note
+
+    vb = np.array([0.0, 0.5, 1.0, 1.5])
+    reach = series_at_vbar("r", 0.5, 2.0, 1.5, vb, axis="vbar")
+    never = series_at_vbar("n", 0.2, 0.22, 1.5, vb, axis="vbar")
+    text = jumping_note({"r": _curve(reach, [0, 0.8, 1.0, 1.0]),
+                         "n": _curve(never, [0, 0.5, 0.9, 0.99])}, 1.6)
+    assert "(0.5, 2): 1;" in text and "(0.2, 0.22): > 1.6" in text
+
+
+def test_history_summary_from_a_hand_made_history() -> None:
+    from vibrofriction.figures.checks import history_mu_ratio, history_note, history_transitions
+    from vibrofriction.solver import Event, History
+
+    tau = np.linspace(0.0, 4 * math.pi, 401)
+    n = 1.0 + 0.5 * np.cos(tau)
+    phase = np.where(np.sin(tau) > 0, "stick", "slip+")
+    events = (Event(1.0, "slip->stick", "slip+", "stick"), Event(4.0, "stick->slip", "stick",
+                                                                  "slip+"),
+              Event(8.0, "slip->stick", "slip+", "stick"), Event(5.0, "lift-off", "slip+",
+                                                                 "flight"))
+    h = History(tau, np.zeros_like(tau), np.zeros_like(tau), 0.25 * n, n, phase, events,
+                vf.Dimensionless(0.3, 3.0, 0.5), 0.1)
+    assert history_mu_ratio(h) == pytest.approx(0.25, rel=1e-12)
+    window = (0.1, 1.0)                                 # periods: tau in (0.63, 6.28)
+    assert [e.tau for e in history_transitions(h, window)] == [1.0, 4.0]
+    assert "2 stick/slip transitions" in history_note(h, (0.3, 3.0, 0.5, 0.5), window)

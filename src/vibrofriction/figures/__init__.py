@@ -8,7 +8,10 @@ the solver series a figure needs and how to draw, table and check them.
 * :mod:`.resonant`: Fig. 6 (case IV) and the prediction for Figs. 8-9;
 * :mod:`.dimensional`: Fig. 10, COF against ``v0`` in m/s;
 * :mod:`.maps`: maps over the ``(alpha, beta)`` plane;
-* :mod:`.style`: the shared matplotlib style (Agg backend).
+* :mod:`.checks`: the physics checks of the curves (numerics against the closed forms),
+  pure functions without drawing;
+* :mod:`.style`: the shared matplotlib style.  Figures are ``matplotlib.figure.Figure``
+  objects (no pyplot): importing this package never changes the matplotlib backend.
 """
 
 from __future__ import annotations

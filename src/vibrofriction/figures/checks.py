@@ -1,28 +1,40 @@
 """Physics checks of the figures' data: pure functions from solved curves to numbers.
 
-Each returns :class:`~.recipe.Check` records (or the numbers behind them) for the
-report's table and ``deviations.csv``; nothing here draws.  The drawing modules
-(:mod:`.velocity`, ...) call these from their recipes.
+Each returns :class:`~.recipe.Check` records (or the numbers and sentences behind
+them) for the report's table, its notes and ``deviations.csv``; nothing here draws
+or imports matplotlib.  The drawing modules (:mod:`.history`, :mod:`.velocity`,
+:mod:`.resonant`, :mod:`.dimensional`, :mod:`.maps`) call these from their recipes
+and pass in their own constants (amplitudes, systems, grids), so every check can be
+fed hand-made curves in a test.  Monotonicity, the envelope of Fig. 5 and the
+checks of Fig. 10 use only the points the solver trusts (``Curve.trusted``, from
+:meth:`vibrofriction.SolverSettings.trusted`); the others compare every point that has
+a value.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+import math
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 
 from .. import theory
+from ..params import Dimensionless, Physical
+from ..solver import Event, History, simulate
 from .recipe import Check, max_deviation
 from .series import Curve, status_counts
 
-__all__ = ["closed_form", "fig4_checks", "fig5_checks", "fit_soft_exponent", "matrix_checks",
-           "monotonicity", "status_note"]
+__all__ = ["closed_form", "fig4_checks", "fig5_checks", "fig6_checks", "fig6_note",
+           "fig10_checks", "fit_soft_exponent", "history_mu_ratio", "history_note",
+           "history_transitions", "jumping_note", "map_field", "map_note", "matrix_checks",
+           "monotonicity", "prediction_note", "resonant_velocity_amplitude", "status_note"]
 
 
 def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
                   v_max_case_iii: float) -> list[Check]:
     """Figs. 3 and 7: case III (mu = mu0), eq. (12) (mu = mu0 exactly above v0*, below
-    under it) and the case IV plateau at finite beta against the rigid-contact one."""
+    under it), the case IV plateau at finite beta against the rigid-contact one (eq. 32)
+    and the monotonicity the caption of Fig. 3 states."""
     checks = []
     if amplitude <= 1.0:
         # case III: mu = mu0 at every V > 0
@@ -72,7 +84,26 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
             abs(float(c.mu_ratio[-1]) - plateau), f"V={c.v_inertial[-1]:g}",
             f"numerics {c.mu_ratio[-1]:.5f} vs {plateau:.5f}; at V = {v_edge:g} (panel edge) "
             f"{mu_edge:.4f}: a finite contact stiffness delays the approach, not the level"))
+    worst, where = monotonicity(curves)
+    checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
+                        f"{fig}: all panels, a = {amplitude:g}", worst, where,
+                        "largest decrease between successive grid points"))
     return checks
+
+
+def jumping_note(curves: Mapping[str, Curve], vbar_max: float) -> str:
+    """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn
+    against ``vbar``; with loss of contact eq. (12) no longer marks that onset."""
+    first = []
+    for c in curves.values():
+        if c.series.meta.get("axis") != "vbar":
+            continue
+        ones = np.flatnonzero(np.abs(c.mu_ratio - 1.0) < 1e-9)
+        v = c.vbar[ones[0]] if ones.size else math.nan
+        first.append(f"({c.series.alpha:g}, {c.series.beta:g}): "
+                     + (f"{v:.3g}" if ones.size else f"> {vbar_max:g}"))
+    return (" Jumping: eq. (12) no longer marks the onset of continuous "
+            "sliding; mu/mu0 first reaches 1 at vbar = " + "; ".join(first) + ".")
 
 
 def monotonicity(curves: Mapping[str, Curve]) -> tuple[float, str]:
@@ -214,3 +245,201 @@ def fig5_checks(curves: Mapping[str, Curve], betas_below: tuple[float, ...],
                        + (f"{c.vbar[near[0]]:.3g}" if near.size else "-")
                        + ", = 1 from " + (f"{c.vbar[ones[0]]:.3g}" if ones.size else "-"))
     return checks, plateau
+
+
+# --------------------------------------------------------------------------- Fig. 6
+def resonant_velocity_amplitude(amplitude: float, v_inertial: float) -> tuple[float, float]:
+    """``(Delta v, phase)`` of the fundamental of the body velocity in the case IV steady state.
+
+    Simulates ``alpha = 1``, ``beta = inf`` from the steady state and projects the
+    body velocity of the last period on ``cos tau`` and ``sin tau``.  In the paper's
+    frame (substrate moving, eq. 30) the body velocity is ``Delta v cos tau``; here
+    the substrate is fixed, so ``x' = V - Delta v cos tau`` and the phase is ``pi``.
+    """
+    h = simulate(Dimensionless(1.0, math.inf, amplitude), v_inertial=v_inertial, periods=3,
+                 samples_per_period=4000, initial="steady")
+    m = h.tau >= h.tau[-1] - 2.0 * math.pi
+    tau, xd = h.tau[m], h.x_dot[m]
+    c = float(np.trapezoid(xd * np.cos(tau), tau)) / math.pi
+    s = float(np.trapezoid(xd * np.sin(tau), tau)) / math.pi
+    return math.hypot(c, s), math.atan2(s, c)
+
+
+def _by_amplitude(curves: Mapping[str, Curve], role: str) -> dict[float, Curve]:
+    return {c.series.amplitude: c for c in curves.values() if c.series.meta.get("role") == role}
+
+
+def fig6_checks(curves: Mapping[str, Curve], amplitudes: Sequence[float],
+                plateau_v: float, v_max: float,
+                velocity_amplitudes: Sequence[float] = (0.2, 0.5, 1.0, 1.5)) -> list[Check]:
+    """Fig. 6 (case IV, ``alpha = 1``, ``beta = inf``): the plateau against ``1 - a/2`` (last
+    eq. 32) and against :func:`~vibrofriction.theory.resonant_plateau` (small ``tau*``) and
+    ``resonant_plateau_exact`` (exact root of the energy balance, first eq. 32); the
+    distance of the drawn curves from it at their right edge ``v_max``; and ``v0/dv``
+    (eq. 32) from the simulated body velocity at ``V = plateau_v``.
+
+    ``curves`` holds the drawn curves (``meta["role"] == "curve"``) and one series per
+    amplitude ending at ``V = plateau_v`` (``meta["role"] == "plateau"``).
+    """
+    plateau = _by_amplitude(curves, "plateau")
+    shown = _by_amplitude(curves, "curve")
+    checks = []
+    for label, func, amps in (
+            ("1 - a/2 (last eq. 32)", lambda a: 1.0 - a / 2.0,
+             [a for a in amplitudes if a <= 1.0]),
+            ("1 - a/2 (last eq. 32) for jumping", lambda a: 1.0 - a / 2.0,
+             [a for a in amplitudes if a > 1.0]),
+            ("case IV plateau, small-tau* approximation with <F_N> (theory.resonant_plateau)",
+             lambda a: float(theory.resonant_plateau(a)), list(amplitudes)),
+            ("case IV plateau, exact tau* (theory.resonant_plateau_exact)",
+             lambda a: float(theory.resonant_plateau_exact(a)), list(amplitudes))):
+        devs = [(abs(float(plateau[a].mu_ratio[-1]) - func(a)), a) for a in amps]
+        d, a = max(devs)
+        checks.append(Check(label, "fig06: alpha = 1, beta = inf, a = "
+                            + ", ".join(f"{x:g}" for x in amps)
+                            + f", mu at V = {plateau_v:g}", d, f"a={a:g}", ""))
+    # approach of the plateau within the figure's range
+    dev_end = max(abs(float(shown[a].mu_ratio[-1]) - float(theory.resonant_plateau_exact(a)))
+                  for a in amplitudes)
+    checks.append(Check("Fig. 6: curves approach the plateau", f"fig06: V = {v_max:g} "
+                        "(right edge of the figure)", dev_end, "largest over amplitudes",
+                        "distance from the exact plateau at the edge of the plot"))
+    # eq. (32): v0/dv
+    rows = []
+    for a in velocity_amplitudes:
+        dv, phase = resonant_velocity_amplitude(a, plateau_v)
+        rows.append((a, plateau_v / dv, phase))
+    for label, func in (("v0/dv, paper's approximation (eq. 32)",
+                         theory.resonant_velocity_ratio),
+                        ("v0/dv, exact root of the energy balance (eq. 32)",
+                         theory.resonant_velocity_ratio_exact)):
+        d, a = max((abs(r - float(func(a))), a) for a, r, _ in rows)
+        checks.append(Check(label, "alpha = 1, beta = inf, V = "
+                            f"{plateau_v:g}, a = " + ", ".join(f"{x:g}" for x in
+                                                               velocity_amplitudes)
+                            + "; dv = fundamental of the simulated body velocity", d,
+                            f"a={a:g}",
+                            "phase of the body velocity: "
+                            + ", ".join(f"{math.degrees(p):.1f} deg" for _, _, p in rows)
+                            + " (ansatz eq. 30: 180 deg in this frame)"))
+    return checks
+
+
+def fig6_note(curves: Mapping[str, Curve], amplitudes: Sequence[float],
+              plateau_v: float) -> str:
+    """The measured plateau at ``V = plateau_v`` against eq. (32), and the status counts."""
+    plateau = _by_amplitude(curves, "plateau")
+    text = "; ".join(
+        f"a = {a:g}: numerics {float(plateau[a].mu_ratio[-1]):.4f}, "
+        f"exact {float(theory.resonant_plateau_exact(a)):.4f}, 1 - a/2 = {1 - a / 2:.4f}"
+        for a in amplitudes)
+    counts = status_counts(curves)
+    return (f"Plateau at V = {plateau_v:g}: {text}. Status: "
+            + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) + ".")
+
+
+def prediction_note(mu0: float, u_z0: float, amplitudes_um: Sequence[float],
+                    velocity_unit: float) -> str:
+    """Figs. 8-9: the predicted plateau COF ``mu0 * resonant_plateau_exact(du_z/u_z0)``
+    (first eq. 32) for each amplitude (micrometres), in words."""
+    plateaus = ", ".join(
+        f"{du:g} um: {mu0 * float(theory.resonant_plateau_exact(du * 1e-6 / u_z0)):.3f}"
+        for du in amplitudes_um)
+    return ("The measured data of Fig. 9 are not given in the paper's text, so they "
+            "cannot be reproduced. Shown instead is the model's prediction under the "
+            "assumptions listed with the figure. Predicted plateau COF (mu0 = "
+            f"{mu0}): {plateaus}. The curves are flat beyond about "
+            f"{10 * velocity_unit:.2g} m/s (V = 10), consistent with the paper's observation "
+            "of an approximately velocity-independent COF at resonance; the plateau level "
+            "depends on the unknown mean indentation u_z0 (panel b).")
+
+
+# --------------------------------------------------------------------------- Fig. 10
+def fig10_checks(curves: Mapping[str, Curve], systems: Mapping[str, tuple[float, Physical]],
+                 soft: str, stiff: str) -> tuple[list[Check], str]:
+    """Fig. 10: eq. (12) in m/s (trusted COF = mu0 at every ``v0 >= v0*``) per system, and a
+    note comparing eq. (12) with the limits eq. (13) (``soft``) and eq. (14) (``stiff``).
+
+    ``systems`` maps each curve's key to ``(drive frequency in Hz, Physical)``; each
+    curve carries its velocities in m/s as ``meta["v0"]``.
+    """
+    lines = []
+    checks = []
+    for name, (f, phys) in systems.items():
+        dim = phys.to_dimensionless()
+        vstar = phys.critical_velocity()
+        c = curves[name]
+        lines.append(f"{name} ({f:g} Hz): alpha = {dim.alpha:.4g}, beta = {dim.beta:.4g}, "
+                     f"case {dim.case.value}, v0* = {vstar:.4g} m/s (eq. 12)")
+        if math.isfinite(vstar):
+            v0 = c.series.meta["v0"]
+            m = (v0 >= vstar) & c.trusted
+            d = float(np.max(np.abs(c.mu_ratio[m] - 1.0))) if np.any(m) else math.nan
+            checks.append(Check("eq. (12) in m/s: COF = mu0 above v0*", f"fig10: {name}, "
+                                f"v0 in [{vstar:.3g}, {v0[-1]:g}] m/s", d, "",
+                                f"v0* = {vstar:.4g} m/s"))
+    s, t = systems[soft][1], systems[stiff][1]
+    v_soft = theory.critical_velocity_soft(s.mu0, s.dF_N, s.mass, s.omega)
+    v_stiff = theory.critical_velocity_stiff(t.mu0, t.omega, t.du_z, t.k_zc, t.k_xc)
+    lines.append(
+        f"limits: soft eq. (13) mu0 dF_N/(m omega) = {v_soft:.4g} m/s vs eq. (12) "
+        f"{s.critical_velocity():.4g}; stiff eq. (14) = {v_stiff:.4g} m/s vs eq. (12) "
+        f"{t.critical_velocity():.4g}")
+    return checks, "; ".join(lines) + "."
+
+
+# --------------------------------------------------------------------------- maps
+def map_field(curves: Mapping[str, Curve], kind: str, alpha: np.ndarray, beta: np.ndarray
+              ) -> tuple[np.ndarray, np.ndarray]:
+    """``(mu/mu0, trusted)`` on the ``(beta, alpha)`` grid of one map (``kind`` = ``"vbar"``
+    or ``"V"``), from one-point curves carrying ``meta`` ``map``, ``row`` and ``alpha``;
+    nan and False where no curve lies."""
+    mu = np.full((beta.size, alpha.size), np.nan)
+    ok = np.zeros_like(mu, dtype=bool)
+    index = {a: j for j, a in enumerate(alpha)}
+    for c in curves.values():
+        s = c.series
+        if s.meta["map"] != kind:
+            continue
+        i, j = int(s.meta["row"]), index[s.meta["alpha"]]
+        mu[i, j] = c.mu_ratio[0]
+        ok[i, j] = bool(c.trusted[0])
+    return mu, ok
+
+
+def map_note(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray) -> str:
+    """Untrusted points per map and the range of ``mu/mu0`` over each map (``beta > alpha``)."""
+    A, B = np.meshgrid(alpha, beta)
+    valid = B > A
+    mu_vbar, ok_vbar = map_field(curves, "vbar", alpha, beta)
+    mu_V, ok_V = map_field(curves, "V", alpha, beta)
+    n = int(valid.sum())
+    return (f"{n} points per map; untrusted: {int((~ok_vbar[valid]).sum())} at fixed vbar, "
+            f"{int((~ok_V[valid]).sum())} at fixed V (red crosses). At fixed vbar the "
+            f"map varies between {np.nanmin(mu_vbar[valid]):.3f} and "
+            f"{np.nanmax(mu_vbar[valid]):.3f}; at fixed V between "
+            f"{np.nanmin(mu_V[valid]):.3f} and {np.nanmax(mu_V[valid]):.3f}.")
+
+
+# --------------------------------------------------------------------------- Fig. 2
+def history_transitions(h: History, window: tuple[float, float]) -> list[Event]:
+    """Stick/slip transitions strictly inside ``window`` (in drive periods)."""
+    return [e for e in h.events if e.kind in ("slip->stick", "stick->slip")
+            and window[0] < e.tau / (2.0 * math.pi) < window[1]]
+
+
+def history_mu_ratio(h: History) -> float:
+    """``mu/mu0`` of a sampled history: the time average of ``f`` over that of ``n`` (eq. 25,
+    trapezoidal rule over the samples)."""
+    return float(np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau))
+
+
+def history_note(h: History, point: tuple[float, float, float, float],
+                 window: tuple[float, float]) -> str:
+    """Fig. 2 in words: transitions in the window shown, stick fraction, ``mu/mu0``."""
+    stick = float(np.mean(h.phase == "stick"))
+    return (f"Steady state at (alpha, beta, a, vbar) = {point}: "
+            f"{len(history_transitions(h, window))} stick/slip transitions in the "
+            f"{window[1] - window[0]:g} periods shown, "
+            f"stick about {100 * stick:.0f}% of the time, mu/mu0 = {history_mu_ratio(h):.4f} "
+            "(time average of the sampled history).")

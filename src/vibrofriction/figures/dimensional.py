@@ -24,7 +24,8 @@ import numpy as np
 from .. import theory
 from ..params import Physical
 from . import style
-from .recipe import Check, Recipe, Rendered, curve_table
+from .checks import fig10_checks
+from .recipe import Recipe, Rendered, curve_table
 from .series import Curve, Series
 
 __all__ = ["CONTACTS", "PIN", "SYSTEMS", "fig10", "physical_system"]
@@ -130,32 +131,9 @@ def fig10(quick: bool = False) -> Recipe:
         table = curve_table("Fig. 10: law of friction in dimensional variables", curves, params,
                             x=lambda c: {"v0_m_per_s": c.series.meta["v0"]},
                             extra=lambda c: {"cof": p["mu0"] * c.mu_ratio})
-        lines = []
-        checks = []
-        for name, (f, _, _) in SYSTEMS.items():
-            phys = physical_system(name)
-            dim = phys.to_dimensionless()
-            vstar = phys.critical_velocity()
-            c = curves[name]
-            lines.append(f"{name} ({f:g} Hz): alpha = {dim.alpha:.4g}, beta = {dim.beta:.4g}, "
-                         f"case {dim.case.value}, v0* = {vstar:.4g} m/s (eq. 12)")
-            if math.isfinite(vstar):
-                v0 = c.series.meta["v0"]
-                m = (v0 >= vstar) & c.trusted
-                d = float(np.max(np.abs(c.mu_ratio[m] - 1.0))) if np.any(m) else math.nan
-                checks.append(Check("eq. (12) in m/s: COF = mu0 above v0*", f"fig10: {name}, "
-                                    f"v0 in [{vstar:.3g}, {v0[-1]:g}] m/s", d, "",
-                                    f"v0* = {vstar:.4g} m/s"))
-        soft = physical_system("soft (I)")
-        stiff = physical_system("stiff (II)")
-        v_soft = theory.critical_velocity_soft(soft.mu0, soft.dF_N, soft.mass, soft.omega)
-        v_stiff = theory.critical_velocity_stiff(stiff.mu0, stiff.omega, stiff.du_z, stiff.k_zc,
-                                                 stiff.k_xc)
-        lines.append(
-            f"limits: soft eq. (13) mu0 dF_N/(m omega) = {v_soft:.4g} m/s vs eq. (12) "
-            f"{soft.critical_velocity():.4g}; stiff eq. (14) = {v_stiff:.4g} m/s vs eq. (12) "
-            f"{stiff.critical_velocity():.4g}")
-        notes = "; ".join(lines) + "."
+        checks, notes = fig10_checks(
+            curves, {name: (SYSTEMS[name][0], physical_system(name)) for name in SYSTEMS},
+            soft="soft (I)", stiff="stiff (II)")
         return Rendered(fig, (table,), tuple(checks), notes)
 
     return Recipe(

@@ -15,6 +15,7 @@ import numpy as np
 from ..params import Dimensionless
 from ..solver import simulate
 from . import style
+from .checks import history_mu_ratio, history_note, history_transitions
 from .recipe import Recipe, Rendered, Table
 from .series import Curve
 
@@ -51,7 +52,7 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
     system = Dimensionless(alpha, beta, a)
     h = simulate(system, vbar=vbar, periods=_PERIODS, samples_per_period=600, initial="steady")
     t = h.tau / (2.0 * math.pi)
-    mean_f = np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau)
+    mean_f = history_mu_ratio(h)
 
     fig = style.figure(style.COLUMN, 2.5)
     ax = fig.add_subplot()
@@ -61,8 +62,7 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
     ax.plot(t[w], h.n[w], color="#1f77b4", lw=1.3, label=r"$\mu_0 F_N$")
     ax.plot(t[w], h.f[w], color="#2ca02c", lw=1.1, ls="--",
             label=r"$k_{x,c}(u_x - u_{x,c})$")
-    transitions = [e for e in h.events if e.kind in ("slip->stick", "stick->slip")
-                   and _WINDOW[0] < e.tau / (2.0 * math.pi) < _WINDOW[1]]
+    transitions = history_transitions(h, _WINDOW)
     ymax = 1.0 + a
     for k, e in enumerate(transitions, start=1):
         x = e.tau / (2.0 * math.pi)
@@ -86,12 +86,7 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
         "events: " + "; ".join(f"{e.kind} at tau={e.tau:.6f}" for e in h.events),
     ), {"tau": h.tau, "n": h.n, "f": h.f, "x": h.x, "x_dot": h.x_dot,
         "phase": np.asarray(h.phase, dtype=object)})
-    stick = float(np.mean(h.phase == "stick"))
-    notes = (f"Steady state at (alpha, beta, a, vbar) = {FIG2_POINT}: "
-             f"{len(transitions)} stick/slip transitions in the {_WINDOW[1] - _WINDOW[0]:g} "
-             "periods shown, "
-             f"stick about {100 * stick:.0f}% of the time, mu/mu0 = {mean_f:.4f} "
-             "(time average of the sampled history).")
+    notes = history_note(h, FIG2_POINT, _WINDOW)
     return Rendered(fig, (table,), (), notes)
 
 

@@ -20,6 +20,7 @@ from .. import theory
 from ..params import Case, classify
 from ..sweep import cell_edges
 from . import style
+from .checks import map_field, map_note
 from .recipe import Recipe, Rendered, Table
 from .series import Curve, Series
 
@@ -64,21 +65,6 @@ def _series(quick: bool) -> tuple[Series, ...]:
     return tuple(out)
 
 
-def _field(curves: Mapping[str, Curve], kind: str, alpha: np.ndarray, beta: np.ndarray
-           ) -> tuple[np.ndarray, np.ndarray]:
-    mu = np.full((beta.size, alpha.size), np.nan)
-    ok = np.zeros_like(mu, dtype=bool)
-    index = {a: j for j, a in enumerate(alpha)}
-    for c in curves.values():
-        s = c.series
-        if s.meta["map"] != kind:
-            continue
-        i, j = int(s.meta["row"]), index[s.meta["alpha"]]
-        mu[i, j] = c.mu_ratio[0]
-        ok[i, j] = bool(c.trusted[0])
-    return mu, ok
-
-
 def _decorate(ax, alpha: np.ndarray, beta: np.ndarray, cases: np.ndarray) -> None:
     lo, hi = min(_ALPHA_RANGE[0], _BETA_RANGE[0]), max(_ALPHA_RANGE[1], _BETA_RANGE[1])
     d = np.geomspace(lo, hi, 10)
@@ -87,11 +73,9 @@ def _decorate(ax, alpha: np.ndarray, beta: np.ndarray, cases: np.ndarray) -> Non
     ax.axvline(1.0, color=style.RESONANT, lw=1.0, zorder=3)
     ax.axhline(1.0, color=style.RESONANT, lw=1.0, zorder=3)
     # case regions (classify with its default thresholds) as outlines
-    ea, eb = cell_edges(alpha, log=True, name="alpha"), cell_edges(beta, log=True, name="beta")
     for code in (1, 2):
         ax.contour(alpha, beta, (cases == code).astype(float), levels=[0.5], colors="white",
                    linewidths=0.8, zorder=4)
-    del ea, eb
     kw = {"fontsize": 7, "fontweight": "bold", "ha": "center", "va": "center", "zorder": 5}
     ax.text(0.03, 200.0, "I", color="white", **kw)
     ax.text(0.03, 0.045, "II", color="white", **kw)
@@ -129,7 +113,7 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
     for ax, kind, title in (
             (axes[1], "vbar", rf"(b) $\mu_{{\mathrm{{macro}}}}/\mu_0$ at $\bar v = {MAP_VBAR:g}$"),
             (axes[2], "V", rf"(c) $\mu_{{\mathrm{{macro}}}}/\mu_0$ at $V = {MAP_V_INERTIAL:g}$")):
-        mu, ok = _field(curves, kind, alpha, beta)
+        mu, ok = map_field(curves, kind, alpha, beta)
         mm = ax.pcolormesh(ea, eb, np.ma.masked_invalid(np.where(ok | ~valid, mu, np.nan)),
                            shading="flat", vmin=1 - MAP_AMPLITUDE, vmax=1.0, cmap="viridis",
                            rasterized=True)
@@ -155,8 +139,8 @@ def maps(quick: bool = False) -> Recipe:
         fig = _draw(curves, alpha, beta)
         A, B = np.meshgrid(alpha, beta)
         valid = B > A
-        mu_vbar, ok_vbar = _field(curves, "vbar", alpha, beta)
-        mu_V, ok_V = _field(curves, "V", alpha, beta)
+        mu_vbar, ok_vbar = map_field(curves, "vbar", alpha, beta)
+        mu_V, ok_V = map_field(curves, "V", alpha, beta)
         ratio = np.asarray(theory.inertial_per_vbar(A[valid], B[valid], 1.0))
         cases = [classify(a, b).value for a, b in zip(A[valid], B[valid], strict=True)]
         table = Table("Maps over (alpha, beta)", (
@@ -170,12 +154,7 @@ def maps(quick: bool = False) -> Recipe:
              "vstar_over_soft": ratio, "mu_at_vbar": mu_vbar[valid],
              "mu_at_vbar_ok": ok_vbar[valid].astype(int), "mu_at_V": mu_V[valid],
              "mu_at_V_ok": ok_V[valid].astype(int)})
-        n = int(valid.sum())
-        notes = (f"{n} points per map; untrusted: {int((~ok_vbar[valid]).sum())} at fixed vbar, "
-                 f"{int((~ok_V[valid]).sum())} at fixed V (red crosses). At fixed vbar the "
-                 f"map varies between {np.nanmin(mu_vbar[valid]):.3f} and "
-                 f"{np.nanmax(mu_vbar[valid]):.3f}; at fixed V between "
-                 f"{np.nanmin(mu_V[valid]):.3f} and {np.nanmax(mu_V[valid]):.3f}.")
+        notes = map_note(curves, alpha, beta)
         return Rendered(fig, (table,), (), notes)
 
     return Recipe(

@@ -13,11 +13,15 @@ from collections.abc import Mapping
 import numpy as np
 
 from .. import theory
-from ..params import Dimensionless
-from ..solver import simulate
 from . import style
-from .recipe import Check, Recipe, Rendered, curve_table
-from .series import Curve, Series, status_counts
+from .checks import (
+    fig6_checks,
+    fig6_note,
+    prediction_note,
+    resonant_velocity_amplitude,  # re-exported: moved to .checks
+)
+from .recipe import Recipe, Rendered, curve_table
+from .series import Curve, Series
 
 __all__ = [
     "FIG6_AMPLITUDES",
@@ -46,23 +50,6 @@ EXPERIMENT: dict[str, float] = {
 #: Oscillation amplitudes of Fig. 9 (stated), micrometres.
 EXPERIMENT_AMPLITUDES_UM: tuple[float, ...] = (1.3, 5.4, 8.2, 60.0)
 _U_Z0_ALTERNATIVES_UM = (5.0, 10.0, 30.0)
-
-
-def resonant_velocity_amplitude(amplitude: float, v_inertial: float) -> tuple[float, float]:
-    """``(Delta v, phase)`` of the fundamental of the body velocity in the case IV steady state.
-
-    Simulates ``alpha = 1``, ``beta = inf`` from the steady state and projects the
-    body velocity of the last period on ``cos tau`` and ``sin tau``.  In the paper's
-    frame (substrate moving, eq. 30) the body velocity is ``Delta v cos tau``; here
-    the substrate is fixed, so ``x' = V - Delta v cos tau`` and the phase is ``pi``.
-    """
-    h = simulate(Dimensionless(1.0, math.inf, amplitude), v_inertial=v_inertial, periods=3,
-                 samples_per_period=4000, initial="steady")
-    m = h.tau >= h.tau[-1] - 2.0 * math.pi
-    tau, xd = h.tau[m], h.x_dot[m]
-    c = float(np.trapezoid(xd * np.cos(tau), tau)) / math.pi
-    s = float(np.trapezoid(xd * np.sin(tau), tau)) / math.pi
-    return math.hypot(c, s), math.atan2(s, c)
 
 
 # --------------------------------------------------------------------------- Fig. 6
@@ -121,7 +108,6 @@ def fig6(quick: bool = False) -> Recipe:
 
     def render(curves: Mapping[str, Curve]) -> Rendered:
         fig = _draw_fig6(curves)
-        shown = {k: c for k, c in curves.items() if c.series.meta["role"] == "curve"}
         table = curve_table("Fig. 6: resonant case IV", curves, (
             "alpha = 1, beta = inf (rigid contact); amplitudes a = dF_N/F_N0 = "
             f"{FIG6_AMPLITUDES}",
@@ -136,52 +122,8 @@ def fig6(quick: bool = False) -> Recipe:
                                           float(theory.resonant_plateau(c.series.amplitude))),
                 "plateau_exact": np.full(c.series.size, float(theory.resonant_plateau_exact(
                     c.series.amplitude)))})
-        checks = []
-        for label, func, amps in (
-                ("1 - a/2 (last eq. 32)", lambda a: 1.0 - a / 2.0,
-                 [a for a in FIG6_AMPLITUDES if a <= 1.0]),
-                ("1 - a/2 (last eq. 32) for jumping", lambda a: 1.0 - a / 2.0,
-                 [a for a in FIG6_AMPLITUDES if a > 1.0]),
-                ("case IV plateau, small-tau* approximation with <F_N> (theory.resonant_plateau)",
-                 lambda a: float(theory.resonant_plateau(a)), list(FIG6_AMPLITUDES)),
-                ("case IV plateau, exact tau* (theory.resonant_plateau_exact)",
-                 lambda a: float(theory.resonant_plateau_exact(a)), list(FIG6_AMPLITUDES))):
-            devs = [(abs(float(curves[f"plateau,a={a:g}"].mu_ratio[-1]) - func(a)), a)
-                    for a in amps]
-            d, a = max(devs)
-            checks.append(Check(label, "fig06: alpha = 1, beta = inf, a = "
-                                + ", ".join(f"{x:g}" for x in amps)
-                                + f", mu at V = {_PLATEAU_V[-1]:g}", d, f"a={a:g}",
-                                ""))
-        # approach of the plateau within the figure's range
-        dev_end = max(abs(float(shown[f"a={a:g}"].mu_ratio[-1])
-                          - float(theory.resonant_plateau_exact(a))) for a in FIG6_AMPLITUDES)
-        checks.append(Check("Fig. 6: curves approach the plateau", f"fig06: V = {FIG6_V_MAX:g} "
-                            "(right edge of the figure)", dev_end, "largest over amplitudes",
-                            "distance from the exact plateau at the edge of the plot"))
-        # eq. (32): v0/dv
-        rows = []
-        for a in (0.2, 0.5, 1.0, 1.5):
-            dv, phase = resonant_velocity_amplitude(a, _PLATEAU_V[-1])
-            rows.append((a, _PLATEAU_V[-1] / dv, phase))
-        for label, func in (("v0/dv, paper's approximation (eq. 32)",
-                             theory.resonant_velocity_ratio),
-                            ("v0/dv, exact root of the energy balance (eq. 32)",
-                             theory.resonant_velocity_ratio_exact)):
-            d, a = max((abs(r - float(func(a))), a) for a, r, _ in rows)
-            checks.append(Check(label, "alpha = 1, beta = inf, V = "
-                                f"{_PLATEAU_V[-1]:g}, a = 0.2, 0.5, 1, 1.5; dv = fundamental "
-                                "of the simulated body velocity", d, f"a={a:g}",
-                                "phase of the body velocity: "
-                                + ", ".join(f"{math.degrees(p):.1f} deg" for _, _, p in rows)
-                                + " (ansatz eq. 30: 180 deg in this frame)"))
-        plateau_note = "; ".join(
-            f"a = {a:g}: numerics {float(curves[f'plateau,a={a:g}'].mu_ratio[-1]):.4f}, "
-            f"exact {float(theory.resonant_plateau_exact(a)):.4f}, 1 - a/2 = {1 - a / 2:.4f}"
-            for a in FIG6_AMPLITUDES)
-        counts = status_counts(curves)
-        notes = (f"Plateau at V = {_PLATEAU_V[-1]:g}: {plateau_note}. Status: "
-                 + ", ".join(f"{v} {k}" for k, v in sorted(counts.items())) + ".")
+        checks = fig6_checks(curves, FIG6_AMPLITUDES, _PLATEAU_V[-1], FIG6_V_MAX)
+        notes = fig6_note(curves, FIG6_AMPLITUDES, _PLATEAU_V[-1])
         return Rendered(fig, (table,), tuple(checks), notes)
 
     return Recipe(
@@ -279,17 +221,7 @@ def fig8_9(quick: bool = False) -> Recipe:
         table = curve_table("Figs. 8-9: model prediction for the resonant experiment", curves,
                             params, x=lambda c: {"v0_m_per_s": c.series.meta["v0"]},
                             extra=lambda c: {"cof": e["mu0"] * c.mu_ratio})
-        plateaus = ", ".join(
-            f"{du:g} um: "
-            f"{e['mu0'] * float(theory.resonant_plateau_exact(du * 1e-6 / e['u_z0'])):.3f}"
-            for du in EXPERIMENT_AMPLITUDES_UM)
-        notes = ("The measured data of Fig. 9 are not given in the paper's text, so they "
-                 "cannot be reproduced. Shown instead is the model's prediction under the "
-                 "assumptions listed with the figure. Predicted plateau COF (mu0 = "
-                 f"{e['mu0']}): {plateaus}. The curves are flat beyond about "
-                 f"{10 * unit:.2g} m/s (V = 10), consistent with the paper's observation of "
-                 "an approximately velocity-independent COF at resonance; the plateau level "
-                 "depends on the unknown mean indentation u_z0 (panel b).")
+        notes = prediction_note(e["mu0"], e["u_z0"], EXPERIMENT_AMPLITUDES_UM, unit)
         return Rendered(fig, (table,), (), notes)
 
     return Recipe(

@@ -11,7 +11,6 @@ r"""Figs. 3, 4, 5 and 7: ``mu_macro/mu0`` against the velocity ``vbar = v0/v0*``
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 
 import numpy as np
@@ -23,11 +22,11 @@ from .checks import (
     closed_form,
     fig4_checks,
     fig5_checks,
+    jumping_note,
     matrix_checks,
-    monotonicity,
     status_note,
 )
-from .recipe import Check, Recipe, Rendered, curve_table
+from .recipe import Recipe, Rendered, curve_table
 from .series import Curve, Series, series_at_vbar
 
 __all__ = [
@@ -200,22 +199,9 @@ def matrix(name: str, amplitude: float, label: str, title: str, quick: bool) -> 
                   "initial state: steady sliding before the oscillation is switched on")
         table = curve_table(f"{title}: mu/mu0 over the (alpha, beta) matrix", curves, params)
         checks = matrix_checks(curves, amplitude, name, _V_MAX_CASE_III)
-        worst, where = monotonicity(curves)
-        checks.append(Check("Fig. 3 caption: mu/mu0 increases monotonically with vbar",
-                            f"{name}: all panels, a = {amplitude:g}", worst, where,
-                            "largest decrease between successive grid points"))
         notes = status_note(curves)
         if amplitude > 1.0:
-            first = []
-            for c in curves.values():
-                if c.series.meta.get("axis") != "vbar":
-                    continue
-                ones = np.flatnonzero(np.abs(c.mu_ratio - 1.0) < 1e-9)
-                v = c.vbar[ones[0]] if ones.size else math.nan
-                first.append(f"({c.series.alpha:g}, {c.series.beta:g}): "
-                             + (f"{v:.3g}" if ones.size else f"> {vbar_max:g}"))
-            notes += (" Jumping: eq. (12) no longer marks the onset of continuous "
-                      "sliding; mu/mu0 first reaches 1 at vbar = " + "; ".join(first) + ".")
+            notes += jumping_note(curves, vbar_max)
         return Rendered(fig, (table,), tuple(checks), notes)
 
     return Recipe(name=name, title=title, caption="", series=series, render=render)
