@@ -181,7 +181,8 @@ def _draw_fig89(curves: Mapping[str, Curve]):
     ax.text(0.299, mu0 * 1.0, r"$\mu_0$", ha="right", va="bottom", fontsize=6.5, color="0.4")
     ax.set_xlabel(r"$v_0$ (m/s)")
     ax.set_ylabel(r"COF $\mu_{\mathrm{macro}}$")
-    ax.plot([], [], "o", ms=2.5, mfc="none", mec=style.THEORY, label="solver result rejected")
+    if any(not c.trusted.all() for c in curves.values()):
+        ax.plot([], [], "o", ms=2.5, mfc="none", mec=style.THEORY, label="not trusted")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=6)
     ax.set_title("(a) PREDICTION for the experiment of Figs. 8-9 (data not available)",
                  fontsize=7)
