@@ -263,24 +263,24 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
 
 
 @jit
-def leading_multiplier(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
-    """Modulus of the leading Floquet multiplier of the p-periodic orbit through the state.
+def leading_multiplier(z, z1, p, alpha, beta, a, V, th_off, th_on, max_events):
+    """Modulus of the leading Floquet multiplier of the p-periodic orbit through ``z``.
 
-    ``nan`` when the Jacobian cannot be formed in one chart (a perturbed orbit
-    changes phase on the section).  Returns ``(multiplier, events)``.
+    ``z1`` is the image of the section state ``z`` after ``p`` periods (already
+    integrated by the caller).  ``nan`` when the Jacobian cannot be formed in one
+    chart (a perturbed orbit changes phase on the section).  Returns
+    ``(multiplier, events)``.
     """
-    rigid = math.isinf(beta)
-    y1, xd1, f1, ph1, events, ok = period_map(y, xd, f, ph, p, alpha, beta, a, V,
-                                              th_off, th_on, max_events)
-    if not ok or ph1 != ph:
-        return math.nan, events
-    z = np.array([y, xd, f])
-    r = np.array([y1 - y, xd1 - xd, f1 - f])
+    ph = int(z[3])
+    if int(z1[3]) != ph:
+        return math.nan, 0
+    r = np.array([z1[0] - z[0], z1[1] - z[1], z1[2] - z[2]])
     jac = np.zeros((3, 3))
-    ok, ev = residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on, max_events, jac)
+    ok, ev = residual_jacobian(z[:3].copy(), r, ph, p, alpha, beta, a, V, th_off, th_on,
+                               max_events, jac)
     if not ok:
-        return math.nan, events + ev
-    return spectral_radius(jac, _free_dimension(ph, rigid)), events + ev
+        return math.nan, ev
+    return spectral_radius(jac, _free_dimension(ph, math.isinf(beta))), ev
 
 
 @jit
@@ -469,8 +469,9 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a,
         if not advance_period(z2, acc2, count, alpha, beta, a, V, th_off, th_on, max_events):
             d_mu = math.inf
     d_mu = max(d_mu, abs(_window_mu(acc2) - mu))
-    lam, ev = leading_multiplier(z[0], z[1], z[2], int(z[3]), p, alpha, beta, a, V, th_off,
-                                 th_on, max_events)
+    lam, ev = math.nan, 0
+    if math.isfinite(d_mu) and count[C_DEGENERATE] == 0:  # z2 is the exact image of z
+        lam, ev = leading_multiplier(z, z2, p, alpha, beta, a, V, th_off, th_on, max_events)
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
     err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)

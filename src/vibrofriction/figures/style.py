@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 import matplotlib
+import numpy as np
 from matplotlib.figure import Figure
 
 __all__ = [
@@ -173,8 +174,6 @@ def mark_untrusted(ax: Any, x: Any, curve: Any, color: Any, scale: float = 1.0,
     last averaging windows' means.  ``scale`` multiplies ``mu/mu0`` (e.g. ``mu0``);
     ``where`` (a mask over the curve) restricts the points, with ``x`` given for those.
     """
-    import numpy as np
-
     sel = np.ones(curve.mu_ratio.shape, bool) if where is None else np.asarray(where)
     x = np.asarray(x)
     mu, lo, hi = (np.asarray(v)[sel] for v in (curve.mu_ratio, curve.window_min,
