@@ -407,8 +407,10 @@ def test_history_summary_from_a_hand_made_history() -> None:
                                                                   "slip+"),
               Event(8.0, "slip->stick", "slip+", "stick"), Event(5.0, "lift-off", "slip+",
                                                                  "flight"))
-    h = History(tau, np.zeros_like(tau), np.zeros_like(tau), 0.25 * n, n, phase, events,
-                vf.Dimensionless(0.3, 3.0, 0.5), 0.1)
+    zero = np.zeros_like(tau)
+    h = History(tau, zero, zero, 0.25 * n, n, phase, events, vf.Dimensionless(0.3, 3.0, 0.5),
+                0.1, e=zero, work_input=zero, dissipated_pin=zero, dissipated_contact=zero,
+                dissipated_friction=zero)
     assert history_mu_ratio(h) == pytest.approx(0.25, rel=1e-12)
     window = (0.1, 1.0)                                 # periods: tau in (0.63, 6.28)
     assert [e.tau for e in history_transitions(h, window)] == [1.0, 4.0]

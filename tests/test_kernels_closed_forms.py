@@ -1,4 +1,5 @@
-"""The closed forms of the kernels satisfy their ODEs; the basis is exact near resonance."""
+"""The closed forms of the kernels satisfy their (damped) ODEs; the basis is exact near
+resonance, through critical damping and as the damping vanishes."""
 
 import math
 
@@ -10,129 +11,243 @@ from vibrofriction._kernels.roots import first_root, start_margin
 
 TS = np.linspace(0.0, 2 * math.pi, 13)
 
-
-def _fd(c, w, t, h=1e-4):
-    """Second-order central differences of the first two derivatives."""
-    f = [basis.evaluate(c, w, t + k * h) for k in (-2, -1, 0, 1, 2)]
-    d1 = (f[3] - f[1]) / (2 * h)
-    d2 = (f[3] - 2 * f[2] + f[1]) / h**2
-    return d1, d2
+# (w0^2, sigma): undamped, light, resonant, near-critical, critical, over-damped, stiff
+MODES = [(0.01, 0.0), (0.3, 0.0), (1.0 - 1e-9, 0.0), (1.0, 0.0), (1.0 + 1e-7, 0.0),
+         (1.0, 1e-6), (1.0, 0.05), (0.9, 0.2), (3.0, 0.0), (2.0, 1.0), (1.0, 1.0),
+         (1.0, 1.0 + 1e-9), (1.0, 1.3), (0.5, 5.0), (1e6, 0.05), (1e6, 5e5)]
 
 
-@pytest.mark.parametrize("w", [0.01, 0.3, 1.0 - 1e-9, 1.0, 1.0 + 1e-7, 1.7, 31.6])
-def test_cs_kernels_are_driven_responses_from_rest(w):
-    """C'' + w^2 C = cos t, S'' + w^2 S = sin t, C(0) = S(0) = C'(0) = S'(0) = 0."""
+def _mode(w0sq, sig, r=0.0):
+    return basis.make_mode(w0sq, sig, r)
+
+
+def _d(c, m, k=1):
+    for _ in range(k):
+        c = basis.derivative(c, m)
+    return c
+
+
+def _unit(col):
+    c = [0.0] * 9
+    c[col] = 1.0
+    return tuple(c)
+
+
+@pytest.mark.parametrize("w0sq, sig", MODES)
+def test_homogeneous_pair_solves_the_free_equation(w0sq, sig):
+    """h'' + 2 sig h' + w0^2 h = 0, h1(0) = 1, h1'(0) = -sig (OSC/NEAR) and the
+    initial pair reproduces given initial values in every kind of mode."""
+    m = _mode(w0sq, sig)
+    for col in (4, 5):
+        c = _unit(col)
+        for t in TS[1:]:
+            h = basis.evaluate(c, m, t)
+            res = (basis.evaluate(_d(c, m, 2), m, t) + 2 * sig * basis.evaluate(_d(c, m), m, t)
+                   + w0sq * h)
+            scale = 1 + w0sq + sig * sig
+            assert abs(res) <= 1e-9 * scale * (1 + abs(h))
+    D, E = basis.initial_pair(m, 0.7, -0.4)
+    c = (0.0, 0.0, 0.0, 0.0, D, E, 0.0, 0.0, 0.0)
+    assert basis.evaluate(c, m, 0.0) == pytest.approx(0.7, abs=1e-12)
+    assert basis.evaluate(_d(c, m), m, 0.0) == pytest.approx(-0.4, abs=1e-9 * (1 + 2 * sig))
+
+
+@pytest.mark.parametrize("w0sq, sig", [ms for ms in MODES if ms[0] < 100])
+def test_resonant_pair_is_the_driven_response_from_rest(w0sq, sig):
+    """C'' + 2 sig C' + w0^2 C = cos t, S'' + ... = sin t, all zero at t = 0."""
+    m = _mode(w0sq, sig)
     for t in TS[1:]:
         for col, drive in ((6, math.cos(t)), (7, math.sin(t))):
-            c = [0.0] * 8
-            c[col] = 1.0
-            c = tuple(c)
-            d2 = basis.evaluate(basis.derivative(basis.derivative(c, w), w), w, t)
-            assert d2 + w * w * basis.evaluate(c, w, t) == pytest.approx(drive, abs=1e-12)
-    c0, s0 = basis.cs_kernels(0.0, w)
-    assert c0 == 0.0 and s0 == 0.0
+            c = _unit(col)
+            lhs = (basis.evaluate(_d(c, m, 2), m, t) + 2 * sig * basis.evaluate(_d(c, m), m, t)
+                   + w0sq * basis.evaluate(c, m, t))
+            assert lhs == pytest.approx(drive, abs=1e-11)
+    for col in (6, 7):
+        assert basis.evaluate(_unit(col), m, 0.0) == 0.0
+        assert basis.evaluate(_d(_unit(col), m), m, 0.0) == pytest.approx(0.0, abs=1e-15)
 
 
-def test_cs_kernels_tend_to_the_secular_terms_at_resonance():
+def test_resonant_pair_is_continuous_as_damping_vanishes_and_at_resonance():
+    """C -> t sin t / 2 at w0 = 1, sig = 0; sig = 1e-12 and w0^2 = 1 + 1e-9 stay close."""
+    m0 = _mode(1.0, 0.0)
     for t in TS:
-        c, s = basis.cs_kernels(t, 1.0)
+        c = basis.evaluate(_unit(6), m0, t)
+        s = basis.evaluate(_unit(7), m0, t)
         assert c == pytest.approx(t * math.sin(t) / 2, abs=1e-15)
         assert s == pytest.approx((math.sin(t) - t * math.cos(t)) / 2, abs=1e-15)
-        c9, s9 = basis.cs_kernels(t, 1.0 + 1e-9)
-        assert c9 == pytest.approx(c, abs=1e-8) and s9 == pytest.approx(s, abs=1e-8)
+        for m in (_mode(1.0, 1e-12), _mode(1.0 + 1e-9, 0.0), _mode(1.0 + 1e-9, 1e-12)):
+            assert basis.evaluate(_unit(6), m, t) == pytest.approx(c, abs=1e-8)
+            assert basis.evaluate(_unit(7), m, t) == pytest.approx(s, abs=1e-8)
+    # far from resonance too: sig -> 0 is continuous (direct formula)
+    for t in TS:
+        for col in (6, 7):
+            a0 = basis.evaluate(_unit(col), _mode(0.3, 0.0), t)
+            assert basis.evaluate(_unit(col), _mode(0.3, 1e-12), t) == pytest.approx(a0,
+                                                                                    abs=1e-10)
 
 
-@pytest.mark.parametrize("w", [0.2, 1.0, 3.0])
-def test_derivative_map_matches_finite_differences(w, rng):
+def test_over_damped_modes_are_continuous_through_critical_damping():
+    """The NEAR (cosh/sinh) and EXP forms agree at the switch and with critical damping."""
+    w0sq = 1.0
+    sep = basis.SEPARATED
+    sig_switch = 1.0 / math.sqrt(1 - sep**2)  # q = SEPARATED sig here
+    for t in (0.1, 1.0, 3.0):
+        vals = []
+        for sig in (sig_switch * (1 - 1e-9), sig_switch * (1 + 1e-9)):
+            m = _mode(w0sq, sig)
+            D, E = basis.initial_pair(m, 1.0, 0.5)
+            vals.append(basis.evaluate((0, 0, 0, 0, D, E, 0, 0, 0), m, t))
+        assert vals[0] == pytest.approx(vals[1], rel=1e-7)
+        crit = []
+        for sig in (1.0 - 1e-10, 1.0, 1.0 + 1e-10):
+            m = _mode(w0sq, sig)
+            D, E = basis.initial_pair(m, 1.0, 0.5)
+            crit.append(basis.evaluate((0, 0, 0, 0, D, E, 0, 0, 0), m, t))
+        assert crit[0] == pytest.approx(crit[1], rel=1e-8)
+        assert crit[2] == pytest.approx(crit[1], rel=1e-8)
+        assert crit[1] == pytest.approx((1.0 + 1.5 * t) * math.exp(-t), rel=1e-12)
+
+
+@pytest.mark.parametrize("w0sq, sig, r", [(0.2, 0.0, 0.0), (1.0, 0.0, 0.0), (3.0, 0.3, 2.0),
+                                          (2.0, 3.0, 0.5), (1.0, 1.0, 7.0)])
+def test_derivative_map_matches_finite_differences(w0sq, sig, r, rng):
+    m = _mode(w0sq, sig, r)
+    h = 1e-4
     for _ in range(5):
-        c = tuple(rng.normal(size=8))
+        c = tuple(rng.normal(size=9))
         for t in (0.3, 2.0, 5.5):
-            d1, d2 = _fd(c, w, t)
-            c1 = basis.derivative(c, w)
-            assert basis.evaluate(c1, w, t) == pytest.approx(d1, rel=1e-6, abs=1e-6)
-            assert basis.evaluate(basis.derivative(c1, w), w, t) == pytest.approx(
-                d2, rel=1e-4, abs=1e-4)
+            f = [basis.evaluate(c, m, t + k * h) for k in (-1, 0, 1)]
+            d1 = (f[2] - f[0]) / (2 * h)
+            d2 = (f[2] - 2 * f[1] + f[0]) / h**2
+            assert basis.evaluate(_d(c, m), m, t) == pytest.approx(d1, rel=1e-6, abs=1e-6)
+            assert basis.evaluate(_d(c, m, 2), m, t) == pytest.approx(d2, rel=1e-4, abs=1e-4)
 
 
-def test_integral_matches_quadrature(rng):
+@pytest.mark.parametrize("w0sq, sig, r", [(0.3, 0.0, 0.0), (1.0, 0.0, 0.0), (2.5, 0.2, 3.0),
+                                          (2.0, 2.0, 0.0), (1.0, 1.0, 0.0), (4.0, 10.0, 1.0)])
+def test_integral_matches_quadrature(w0sq, sig, r, rng):
     from scipy.integrate import quad
 
-    for w in (0.3, 1.0, 2.5):
-        c = tuple(rng.normal(size=7)) + (0.0,)
-        val = basis.integral(c, w, 4.0)
-        ref = quad(lambda t, c=c, w=w: basis.evaluate(c, w, t), 0.0, 4.0, epsabs=1e-13)[0]
-        assert val == pytest.approx(ref, abs=1e-11)
+    m = _mode(w0sq, sig, r)
+    c = tuple(rng.normal(size=6)) + (0.0, 0.0, float(rng.normal()) if r else 0.0)
+    val = basis.integral(c, m, 4.0)
+    ref = quad(lambda t: basis.evaluate(c, m, t), 0.0, 4.0, epsabs=1e-13, limit=200)[0]
+    assert val == pytest.approx(ref, abs=1e-11)
 
 
-@pytest.mark.parametrize("alpha", [1e-4, 0.3, 1.0 - 1e-9, 1.0, 4.0, 1e3])
-def test_slip_solution_satisfies_its_ode(alpha):
-    """y'' + alpha y = -s (1 + a cos tau) with the stated initial values."""
-    w = math.sqrt(alpha)
+@pytest.mark.parametrize("alpha, zeta", [(1e-4, 0.0), (0.3, 0.0), (1.0 - 1e-9, 0.0), (1.0, 0.0),
+                                         (1.0, 0.01), (4.0, 0.2), (1e3, 0.0), (0.5, 1.0),
+                                         (2.0, 3.0)])
+def test_slip_body_satisfies_its_damped_ode(alpha, zeta):
+    """y'' + gamma y' + alpha y = -s (1 + a cos tau) with the stated initial values."""
+    M = phases.make_model(alpha, alpha + 2.0, 0.7, 0.4, zeta, 0.0)
+    m = M[phases.M_SLIP]
+    gamma = 2 * zeta * math.sqrt(alpha)
     a, theta, y0, yd0 = 0.7, 0.9, 0.4, -0.3
     for s in (1.0, -1.0, 0.0):
-        c = phases.free_y(alpha, w, theta, y0, yd0, s, a)
-        assert basis.evaluate(c, w, 0.0) == pytest.approx(y0, abs=1e-12)
-        assert basis.evaluate(basis.derivative(c, w), w, 0.0) == pytest.approx(yd0, abs=1e-12)
+        c = phases.body(M, theta, y0, yd0, s)
+        assert basis.evaluate(c, m, 0.0) == pytest.approx(y0, abs=1e-12)
+        assert basis.evaluate(_d(c, m), m, 0.0) == pytest.approx(yd0, abs=1e-12)
         for t in TS:
-            ydd = basis.evaluate(basis.derivative(basis.derivative(c, w), w), w, t)
+            y = basis.evaluate(c, m, t)
+            lhs = basis.evaluate(_d(c, m, 2), m, t) + gamma * basis.evaluate(_d(c, m), m, t)
             rhs = -s * (1 + a * math.cos(theta + t)) if s else 0.0
-            scale = 1 + abs(basis.evaluate(c, w, t)) * alpha
-            assert ydd + alpha * basis.evaluate(c, w, t) == pytest.approx(rhs, abs=1e-10 * scale)
+            assert lhs + alpha * y == pytest.approx(rhs, abs=1e-10 * (1 + abs(y) * alpha))
 
 
-@pytest.mark.parametrize("beta", [0.02, 1.0, 2.0, 400.01, 1e6])
-def test_stick_solution_satisfies_its_ode(beta):
-    """x'' = alpha (V tau - x) - f with f = k (x - x_c), x_c fixed."""
-    alpha, V, y0, xd0, f0 = 0.01, 0.7, -80.0, 0.2, 0.6
+@pytest.mark.parametrize("eta", [0.0, 1e-3, 0.3, 1.0, 5.0])
+def test_slip_elongation_relaxes_towards_the_friction_force(eta):
+    """eta e' + e = s n / k (e = s n / k when eta = 0), e(0) = e0 when eta > 0."""
+    alpha, beta = 0.3, 4.0
     k = beta - alpha
-    W = math.sqrt(beta)
-    c = phases.stick_force(alpha, beta, k, W, V, y0, xd0, f0)
-    xc = y0 - f0 / k  # contact point (x = y at tau = 0)
-    assert basis.evaluate(c, W, 0.0) == pytest.approx(f0)
-    for t in TS[1:4]:
-        f = basis.evaluate(c, W, t)
-        x = xc + f / k
-        xdd = basis.evaluate(basis.derivative(basis.derivative(c, W), W), W, t) / k
-        assert xdd == pytest.approx(alpha * (V * t - x) - f, abs=1e-9 * (1 + abs(f)))
+    M = phases.make_model(alpha, beta, 0.8, 0.5, 0.1, eta)
+    m = M[phases.M_SLIP]
+    theta, e0 = 1.3, 0.05
+    for s in (1.0, -1.0):
+        c = phases.elongation(M, theta, e0, s)
+        if eta > 0:
+            assert basis.evaluate(c, m, 0.0) == pytest.approx(e0, abs=1e-14)
+        for t in TS[1:]:
+            n = 1 + 0.8 * math.cos(theta + t)
+            lhs = eta * basis.evaluate(_d(c, m), m, t) + basis.evaluate(c, m, t)
+            assert lhs == pytest.approx(s * n / k, abs=1e-13)
+    flight = phases.elongation(M, theta, e0, 0.0)
+    for t in TS:
+        expected = e0 * math.exp(-t / eta) if eta > 0 else 0.0
+        assert basis.evaluate(flight, m, t) == pytest.approx(expected, abs=1e-15)
+
+
+@pytest.mark.parametrize("beta, zeta, eta", [(0.02, 0.0, 0.0), (1.0, 0.0, 0.0), (2.0, 0.0, 0.0),
+                                             (400.01, 0.0, 0.0), (1e6, 0.0, 0.0),
+                                             (2.0, 0.3, 0.2), (400.01, 0.01, 1.0),
+                                             (1e6, 1e-3, 0.0), (1e6, 1e-3, 1.0)])
+def test_stick_solution_satisfies_its_ode(beta, zeta, eta):
+    """x'' = alpha (V tau - x) + gamma (V - x') - f with f = k e + c e', e = x - x_c."""
+    alpha, V, y0, xd0 = 0.01, 0.7, -80.0, 0.2
+    k = beta - alpha
+    e0 = 0.6 / k
+    gamma = 2 * zeta * math.sqrt(alpha)
+    M = phases.make_model(alpha, beta, 0.5, V, zeta, eta)
+    m = M[phases.M_STICK]
+    ec = phases.stick_elongation(M, y0, xd0, e0)
+    fc = phases.stick_force(M, ec)
+    assert basis.evaluate(ec, m, 0.0) == pytest.approx(e0, rel=1e-12)
+    assert basis.evaluate(_d(ec, m), m, 0.0) == pytest.approx(xd0, rel=1e-9)
+    xc = y0 - e0  # contact point (x = y at tau = 0)
+    for t in (1e-3, 0.1, 0.5, 2.0):
+        e = basis.evaluate(ec, m, t)
+        f = basis.evaluate(fc, m, t)
+        x = xc + e
+        xd = basis.evaluate(_d(ec, m), m, t)
+        xdd = basis.evaluate(_d(ec, m, 2), m, t)
+        assert f == pytest.approx(k * e + eta * k * xd, rel=1e-12, abs=1e-12)
+        rhs = alpha * (V * t - x) + gamma * (V - xd) - f
+        assert xdd == pytest.approx(rhs, abs=1e-8 * (1 + abs(f) + abs(xdd)))
 
 
 def test_first_root_finds_the_earliest_of_close_roots():
     """g = cos(w t) - 0.999 has pairs of roots 0.09 apart: the first is returned."""
     w = 10.0
-    c = (-0.999, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-    t = first_root(c, w, 0.0, 2 * math.pi)
+    m = _mode(w * w, 0.0)
+    c = (-0.999, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+    t = first_root(c, m, 0.0, 2 * math.pi)
     assert t == pytest.approx(math.acos(0.999) / w, rel=1e-12)
     # a narrow dip that only just reaches zero: the shallow pair near t = pi/w
-    c2 = (0.99999, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0)  # g = 0.99999 - cos(w t) > 0 nearly
-    t2 = first_root(c2, w, 1e-3, 2 * math.pi)
+    c2 = (0.99999, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0)
+    t2 = first_root(c2, m, 1e-3, 2 * math.pi)
     assert t2 == pytest.approx((2 * math.pi - math.acos(0.99999)) / w, rel=1e-12)
 
 
-def test_first_root_misses_nothing_against_dense_sampling(rng):
-    for _ in range(200):
-        w = float(rng.choice([0.1, 0.7, 1.0, 3.0, 30.0]))
-        c = tuple(rng.normal(size=6)) + (0.0, 0.0)
-        c = (abs(c[0]) + 2.0,) + c[1:]
-        T = 2 * math.pi
-        ts = np.linspace(0, T, 200001)
-        g = np.array([basis.evaluate(c, w, t) for t in ts[::50]])
+@pytest.mark.parametrize("w0sq, sig, r", [(0.01, 0.0, 0.0), (0.49, 0.0, 0.0), (1.0, 0.0, 0.0),
+                                          (9.0, 0.0, 0.0), (900.0, 0.0, 0.0), (1.0, 0.05, 0.0),
+                                          (900.0, 0.3, 0.0), (1.0, 2.0, 0.0), (4.0, 50.0, 0.0),
+                                          (1.0, 0.1, 30.0), (1e4, 1e3, 0.0)])
+def test_first_root_misses_nothing_against_dense_sampling(w0sq, sig, r, rng):
+    m = _mode(w0sq, sig, r)
+    T = 2 * math.pi
+    ts = np.linspace(0, T, 40001)
+    for _ in range(25):
+        c = tuple(rng.normal(size=6)) + (0.0, 0.0, float(rng.normal()) if r else 0.0)
+        c = (abs(c[0]) + 1.5,) + c[1:]
+        g = np.array([basis.evaluate(c, m, t) for t in ts])
         if g[0] <= 0.0:
             continue
-        ok, t0 = start_margin(c, w, T)
+        ok, t0 = start_margin(c, m, T)
         assert ok
-        r = first_root(c, w, t0, T)
+        root = first_root(c, m, t0, T)
         neg = np.flatnonzero(g <= 0.0)
         if neg.size == 0:
-            assert r == -1.0 or basis.evaluate(c, w, r) == pytest.approx(0.0, abs=1e-9)
+            assert root == -1.0 or basis.evaluate(c, m, root) == pytest.approx(0.0, abs=1e-9)
         else:
-            assert 0 <= r <= ts[::50][neg[0]] + 1e-12
-            assert basis.evaluate(c, w, r) == pytest.approx(0.0, abs=1e-10)
+            assert 0 <= root <= ts[neg[0]] + 1e-12
+            assert basis.evaluate(c, m, root) == pytest.approx(0.0, abs=1e-9)
 
 
 def test_start_margin_decides_a_double_root_by_curvature():
+    m = _mode(4.0, 0.0)
     # g = 1 - cos t: zero with zero slope at t = 0, positive curvature -> valid
-    ok, t_safe = start_margin((1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0), 1.0, 1.0)
+    ok, t_safe = start_margin((1.0, 0.0, -1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), m, 1.0)
     assert ok and t_safe > 0
     # g = cos t - 1: invalid
-    ok, _ = start_margin((-1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0), 1.0, 1.0)
+    ok, _ = start_margin((-1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), m, 1.0)
     assert not ok

@@ -157,7 +157,7 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
         assert name in ds.data_vars, name
         assert ds[name].attrs.get("long_name"), name
     # every float result of the solver is stored (the section state as final_*)
-    assert set(FLOAT_COLUMNS) - {"y", "x_dot", "f"} <= set(ds.data_vars)
+    assert set(FLOAT_COLUMNS) - {"y", "x_dot", "f", "e"} <= set(ds.data_vars)
     for name in ("multiplier", "settling_periods", "window_min", "window_max"):
         assert ds[name].attrs["units"] in ("1", "drive periods"), name
     assert ds.trusted.dtype == bool
@@ -177,7 +177,7 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
     assert ds.attrs["vibrofriction_version"] == vibrofriction.__version__
     assert ds.attrs["solver_max_periods"] == SolverSettings().max_periods
     assert '"tol_mean": 1e-07' in ds.attrs["solver_settings"]
-    assert ds.attrs["velocity"] == "vbar" and ds.attrs["fixed"] == "amplitude"
+    assert ds.attrs["velocity"] == "vbar" and ds.attrs["fixed"] == "amplitude eta_c zeta"
 
 
 def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:
@@ -312,7 +312,7 @@ def _state(point: xr.Dataset) -> SectionState | None:
     if phase not in (0, 1, 2):
         return None
     return SectionState(float(point.final_y), float(point.final_x_dot), float(point.final_f),
-                        ("stick", "slip+", "slip-")[phase])
+                        ("stick", "slip+", "slip-")[phase], float(point.final_e))
 
 
 def _walk_by_hand(alpha: float, beta: float, amplitude: float, V: np.ndarray,
@@ -400,7 +400,7 @@ def test_continuation_over_a_physical_grid() -> None:
     (dict(mass=[0.01, -1.0]), r"mass must be finite and > 0, got -1.0"),
     (dict(k_x=[]), r"k_x: empty grid"),
     (dict(mas=[1.0]), r"unknown physical parameter\(s\) \['mas'\]"),
-    (dict(alpha=[0.1]), r"alpha, beta, amplitude, vbar, v_inertial are not allowed"),
+    (dict(alpha=[0.1]), r"alpha, beta, amplitude, zeta, eta_c, vbar, v_inertial are not allowed"),
     (dict(k_xc=[1e-30]), r"invalid corner .*beta must be > alpha"),
 ])
 def test_physical_grid_errors(kwargs, message) -> None:

@@ -22,7 +22,7 @@ from numpy.typing import ArrayLike, NDArray
 from vibrofriction import theory
 from vibrofriction.validation import as_float_or_array, checked, checked_beta
 
-__all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar",
+__all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar", "pin_damping",
            "vbar_factor", "vbar_to_inertial"]
 
 FloatOrArray = float | NDArray[np.float64]
@@ -35,6 +35,25 @@ def _positive(name: str, value: Any) -> float:
 
 def _nonnegative(name: str, value: Any) -> float:
     return float(checked(name, value, minimum=0.0))
+
+
+def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
+                quality_factor: float | None = None) -> float:
+    """The pin dashpot ``c_x`` (N s/m) from its damping ratio or its quality factor.
+
+    ``c_x = 2 zeta sqrt(k_x m)`` with ``zeta = 1/(2Q)``: ``Q`` is what an impact test
+    gives (the free decay of the pin with the contact open, paper Fig. 8b).  Exactly
+    one of ``zeta`` (``>= 0``) and ``quality_factor`` (``> 0``, ``inf`` undamped).
+    """
+    if (zeta is None) == (quality_factor is None):
+        raise ValueError("give exactly one of zeta and quality_factor")
+    k_x = _positive("k_x", k_x)
+    mass = _positive("mass", mass)
+    if zeta is None:
+        q = float(checked("quality_factor", quality_factor, minimum=0.0, strict=True,
+                          allow_inf=True))
+        zeta = 0.0 if math.isinf(q) else 1.0 / (2.0 * q)
+    return 2.0 * _nonnegative("zeta", zeta) * math.sqrt(k_x * mass)
 
 
 # --------------------------------------------------------------------------- vbar <-> V
@@ -53,11 +72,13 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
     return "beta == 1 (case III): v0* is zero"
 
 
-def vbar_factor(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> NDArray[np.float64]:
-    """``c = V/vbar`` (eqs. 12, 16, 20) elementwise; ValueError where ``vbar`` is undefined."""
+def vbar_factor(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike, zeta: ArrayLike = 0.0,
+                eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
+    """``c = V/vbar = V_c`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
+    ValueError where ``vbar`` is undefined."""
     al = checked("alpha", alpha, minimum=0.0, strict=True)
     am = checked("amplitude", amplitude, minimum=0.0)
-    c = np.asarray(theory.inertial_per_vbar(al, beta, am), dtype=float)
+    c = np.asarray(theory.critical_inertial_velocity(al, beta, am, zeta, eta_c), dtype=float)
     why = _undefined_vbar(al, am, c)
     if why is not None:
         raise ValueError(f"vbar is undefined for {why}; use the inertial velocity "
@@ -66,21 +87,23 @@ def vbar_factor(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> NDAr
 
 
 def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
-                     vbar: ArrayLike) -> FloatOrArray:
+                     vbar: ArrayLike, zeta: ArrayLike = 0.0,
+                     eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """Inertial velocity ``V = v0 m omega/(mu0 F_N0) = c vbar`` (eqs. 12, 16), elementwise.
 
     The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.  ValueError where
     ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
     """
     v = checked("vbar", vbar, minimum=0.0)
-    return as_float_or_array(vbar_factor(alpha, beta, amplitude) * v)
+    return as_float_or_array(vbar_factor(alpha, beta, amplitude, zeta, eta_c) * v)
 
 
 def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
-                     v_inertial: ArrayLike) -> FloatOrArray:
+                     v_inertial: ArrayLike, zeta: ArrayLike = 0.0,
+                     eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
     V = checked("v_inertial", v_inertial, minimum=0.0)
-    return as_float_or_array(V / vbar_factor(alpha, beta, amplitude))
+    return as_float_or_array(V / vbar_factor(alpha, beta, amplitude, zeta, eta_c))
 
 
 # --------------------------------------------------------------------------- cases
@@ -178,17 +201,33 @@ class Dimensionless:
         ``(k_x + k_xc) / (m omega^2)``, > ``alpha``; ``math.inf`` is a rigid contact.
     amplitude : float
         ``a = du_z / u_z0 = dF_N / F_N0``, finite and >= 0; ``a > 1`` is jumping.
+    zeta : float
+        Damping ratio of the pin, ``c_x / (2 sqrt(k_x m))`` (``= 1/(2Q)`` of its free
+        decay with the contact open), finite and >= 0 (docs/damping.md).
+    eta_c : float
+        Loss factor of the contact, ``omega c_xc / k_xc`` (the loss tangent of the
+        tangential contact at the drive frequency), finite and >= 0; ignored by a
+        rigid contact.
     """
 
     alpha: float
     beta: float
     amplitude: float
+    zeta: float = 0.0
+    eta_c: float = 0.0
 
     def __post_init__(self) -> None:
         alpha = _positive("alpha", self.alpha)
         object.__setattr__(self, "alpha", alpha)
         object.__setattr__(self, "beta", float(checked_beta(alpha, self.beta)))
         object.__setattr__(self, "amplitude", _nonnegative("amplitude", self.amplitude))
+        object.__setattr__(self, "zeta", _nonnegative("zeta", self.zeta))
+        object.__setattr__(self, "eta_c", _nonnegative("eta_c", self.eta_c))
+
+    @property
+    def damped(self) -> bool:
+        """``True`` if the pin or the contact has a dashpot."""
+        return self.zeta > 0.0 or (self.eta_c > 0.0 and not self.is_rigid)
 
     @property
     def case(self) -> Case:
@@ -207,23 +246,28 @@ class Dimensionless:
 
     @property
     def inertial_per_vbar(self) -> float:
-        """``c`` with ``V = c vbar``: ``a|beta - 1| / ((beta - alpha)|alpha - 1|)``, eq. (12).
-
-        ``inf`` in case IV (``alpha = 1``), ``0`` in case III (``beta = 1``) or if ``a = 0``.
-        """
-        return float(theory.inertial_per_vbar(self.alpha, self.beta, self.amplitude))
+        """``c`` with ``V = c vbar``: the critical inertial velocity ``V_c``."""
+        return self.critical_inertial_velocity()
 
     def critical_inertial_velocity(self) -> float:
-        """Inertial velocity ``V*`` at ``vbar = 1`` (eq. 12 over ``mu0 F_N0/(m omega)``)."""
-        return self.inertial_per_vbar
+        """``V_c``, the inertial velocity at ``vbar = 1`` (eq. 12 with damping).
+
+        Undamped ``a|beta - 1| / ((beta - alpha)|alpha - 1|)``: ``inf`` in case IV
+        (``alpha = 1``), ``0`` in case III (``beta = 1``); damping makes both finite
+        and positive (``theory.critical_inertial_velocity``, docs/damping.md).
+        """
+        return float(theory.critical_inertial_velocity(self.alpha, self.beta, self.amplitude,
+                                                       self.zeta, self.eta_c))
 
     def vbar_to_inertial(self, vbar: ArrayLike) -> FloatOrArray:
-        """Inertial velocity ``V = c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
-        return vbar_to_inertial(self.alpha, self.beta, self.amplitude, vbar)
+        """Inertial velocity ``V = V_c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
+        return vbar_to_inertial(self.alpha, self.beta, self.amplitude, vbar, self.zeta,
+                                self.eta_c)
 
     def inertial_to_vbar(self, v_inertial: ArrayLike) -> FloatOrArray:
-        """``vbar = V / c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""
-        return inertial_to_vbar(self.alpha, self.beta, self.amplitude, v_inertial)
+        """``vbar = V / V_c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""
+        return inertial_to_vbar(self.alpha, self.beta, self.amplitude, v_inertial, self.zeta,
+                                self.eta_c)
 
 
 # --------------------------------------------------------------------------- physical
@@ -249,6 +293,11 @@ class Physical:
         Angular frequency of the oscillation, rad/s.
     mu0 : float
         Local (microscopic) coefficient of friction.
+    c_x : float
+        Pin dashpot parallel to ``k_x``, N s/m, ``>= 0`` (:func:`pin_damping` gives it
+        from a damping ratio or quality factor; :meth:`with_damping`).
+    c_xc : float
+        Tangential contact dashpot parallel to ``k_xc`` (Kelvin-Voigt), N s/m, ``>= 0``.
     """
 
     mass: float
@@ -259,10 +308,14 @@ class Physical:
     du_z: float
     omega: float
     mu0: float
+    c_x: float = 0.0
+    c_xc: float = 0.0
 
     def __post_init__(self) -> None:
         for name in ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0"):
             object.__setattr__(self, name, _positive(name, getattr(self, name)))
+        for name in ("c_x", "c_xc"):
+            object.__setattr__(self, name, _nonnegative(name, getattr(self, name)))
         k_xc = float(checked("k_xc", self.k_xc, minimum=0.0, strict=True, allow_inf=True))
         object.__setattr__(self, "k_xc", k_xc)
         object.__setattr__(self, "du_z", _nonnegative("du_z", self.du_z))
@@ -285,23 +338,55 @@ class Physical:
         """``omega_0 = sqrt(k_x / m)`` of the body on the system spring, rad/s."""
         return math.sqrt(self.k_x / self.mass)
 
+    @property
+    def zeta(self) -> float:
+        """Damping ratio of the pin, ``c_x / (2 sqrt(k_x m))``."""
+        return self.c_x / (2.0 * math.sqrt(self.k_x * self.mass))
+
+    @property
+    def quality_factor(self) -> float:
+        """Quality factor ``Q = 1/(2 zeta)`` of the pin's free decay (``inf`` undamped)."""
+        return math.inf if self.c_x == 0.0 else 1.0 / (2.0 * self.zeta)
+
+    @property
+    def eta_c(self) -> float:
+        """Loss factor of the contact at the drive frequency, ``omega c_xc / k_xc``."""
+        return 0.0 if math.isinf(self.k_xc) else self.omega * self.c_xc / self.k_xc
+
+    def with_damping(self, *, zeta: float | None = None, quality_factor: float | None = None,
+                     eta_c: float | None = None) -> Physical:
+        """A copy with the pin's damping given as a ratio or a quality factor (not both)
+        and/or the contact's loss factor at ``omega``."""
+        changes: dict[str, float] = {}
+        if zeta is not None or quality_factor is not None:
+            changes["c_x"] = pin_damping(self.k_x, self.mass, zeta=zeta,
+                                         quality_factor=quality_factor)
+        if eta_c is not None:
+            eta = _nonnegative("eta_c", eta_c)
+            changes["c_xc"] = 0.0 if math.isinf(self.k_xc) else eta * self.k_xc / self.omega
+        return self.with_(**changes)
+
     def to_dimensionless(self) -> Dimensionless:
-        """``alpha``, ``beta`` (eq. 20) and ``a = du_z/u_z0``."""
+        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta`` and ``eta_c``."""
         stiffness = self.mass * self.omega**2
         return Dimensionless(
             alpha=self.k_x / stiffness,
             beta=(self.k_x + self.k_xc) / stiffness,
             amplitude=self.du_z / self.u_z0,
+            zeta=self.zeta,
+            eta_c=self.eta_c,
         )
 
     def critical_velocity(self) -> float:
-        """``v0*`` of eq. (12), m/s.
+        """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``).
 
-        ``inf`` if ``k_x = m omega^2`` (case IV), 0 if ``k_x + k_xc = m omega^2`` (case III)
-        or ``du_z = 0``; ``k_xc = inf`` gives ``mu0 omega du_z k_zc / |k_x - m omega^2|``.
+        Undamped: ``inf`` if ``k_x = m omega^2`` (case IV), 0 if ``k_x + k_xc = m omega^2``
+        (case III) or ``du_z = 0``; ``k_xc = inf`` gives ``mu0 omega du_z k_zc /
+        |k_x - m omega^2 + i omega c_x|``.
         """
         return float(theory.critical_velocity(self.mu0, self.omega, self.du_z, self.k_zc,
-                                              self.k_xc, self.k_x, self.mass))
+                                              self.k_xc, self.k_x, self.mass, self.c_x,
+                                              self.c_xc))
 
     def _velocity_unit(self) -> float:
         return self.mu0 * self.F_N0 / (self.mass * self.omega)

@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import theory
 from ._kernels import codes
-from ._kernels.integrate import TWO_PI, initial_state, run_periods, sample
+from ._kernels.integrate import N_SEG_COLUMNS, TWO_PI, initial_point, run_periods, sample
 from ._kernels.steady import steady_state, steady_state_many
 from .params import Dimensionless, Physical
 from .validation import checked, checked_beta
@@ -150,14 +150,17 @@ class SectionState:
 
     ``y = x - V tau`` is the body displacement without the drift (unit
     ``mu0 F_N0/(m omega^2)``), ``x_dot`` the body velocity (unit ``mu0 F_N0/(m omega)``),
-    ``f`` the tangential contact force (unit ``mu0 F_N0``) and ``phase`` one of
-    ``stick``, ``slip+``, ``slip-``.
+    ``f`` the tangential contact force (unit ``mu0 F_N0``), ``phase`` one of
+    ``stick``, ``slip+``, ``slip-``, and ``e`` the elongation of the contact spring
+    (unit of ``y``; ``nan``: derived from ``f``, which needs ``f = k e + c x_dot`` to
+    determine it, i.e. not in slip on a viscoelastic contact).
     """
 
     y: float
     x_dot: float
     f: float
     phase: str
+    e: float = math.nan
 
     def __post_init__(self) -> None:
         if self.phase not in ("stick", "slip+", "slip-"):
@@ -165,6 +168,20 @@ class SectionState:
         for name in ("y", "x_dot", "f"):
             if not math.isfinite(getattr(self, name)):
                 raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+
+    def elongation(self, system: Dimensionless) -> float:
+        """``e``, or where it is not given, the one ``f`` implies for ``system``."""
+        if math.isfinite(self.e):
+            return self.e
+        k = system.beta - system.alpha
+        if math.isinf(k):
+            return 0.0
+        if self.phase == "stick":
+            return (self.f - system.eta_c * k * self.x_dot) / k
+        if system.eta_c > 0.0:
+            raise ValueError("a SectionState in slip on a viscoelastic contact (eta_c > 0) "
+                             "needs its elongation e")
+        return self.f / k
 
 
 @dataclass(frozen=True)
@@ -329,7 +346,13 @@ class History:
     ``f`` the tangential contact force and ``n`` the ``mu0``-scaled normal force, both
     in units of ``mu0 F_N0``; ``phase`` the phase name at each sample; ``events``
     every transition with its exact time.  Sample times include every event time
-    (on both sides), so phase boundaries are sharp.
+    (on both sides), so phase boundaries are sharp.  ``e`` is the elongation of the
+    contact spring; ``work_input`` the work done by the pulled end since the start and
+    ``dissipated_pin``, ``dissipated_contact``, ``dissipated_friction`` the energy
+    dissipated by the pin dashpot, the contact dashpot and friction (unit
+    ``(mu0 F_N0)^2/(m omega^2)``; Gauss-Legendre quadrature of the closed forms, relative
+    accuracy ~1e-10), so that ``work_input - sum(dissipated) = stored_energy() -
+    stored_energy()[0]`` (docs/damping.md).
     """
 
     tau: NDArray[np.float64]
@@ -341,7 +364,21 @@ class History:
     events: tuple[Event, ...]
     system: Dimensionless
     v_inertial: float
+    e: NDArray[np.float64]
+    work_input: NDArray[np.float64]
+    dissipated_pin: NDArray[np.float64]
+    dissipated_contact: NDArray[np.float64]
+    dissipated_friction: NDArray[np.float64]
     final_state: SectionState | None = field(default=None)
+
+    def stored_energy(self) -> NDArray[np.float64]:
+        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2``."""
+        d = self.system
+        y = self.x - self.v_inertial * self.tau
+        out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
+        if not d.is_rigid:
+            out = out + 0.5 * (d.beta - d.alpha) * self.e**2
+        return out
 
     def time(self, physical: Physical) -> NDArray[np.float64]:
         """Sample times in seconds for a physical system (``t = tau/omega``)."""
@@ -381,14 +418,16 @@ def _inertial_velocity(system: System, vbar, v_inertial, v0) -> NDArray[np.float
     return arr
 
 
-def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
+def _initial(initial, n: int, systems) -> tuple[int, NDArray[np.float64]]:
+    """Kernel start ``(kind, rows (y, x', e, phase))``; ``systems(i)`` is point i's system."""
     init = np.zeros((n, 4))
     if isinstance(initial, SectionState):
-        init[:] = (initial.y, initial.x_dot, initial.f, _PHASE_CODE[initial.phase])
+        init[:] = (initial.y, initial.x_dot, initial.elongation(systems(0)),
+                   _PHASE_CODE[initial.phase])
         return 2, init
     if isinstance(initial, np.ndarray) and initial.dtype == object:
         for i, s in enumerate(initial.ravel()):
-            init[i] = (s.y, s.x_dot, s.f, _PHASE_CODE[s.phase])
+            init[i] = (s.y, s.x_dot, s.elongation(systems(i)), _PHASE_CODE[s.phase])
         return 2, init
     if initial == "sliding":
         return 0, init
@@ -397,19 +436,19 @@ def _initial(initial, n: int) -> tuple[int, NDArray[np.float64]]:
     raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
 
 
-def section_state(y: float, xd: float, f: float, phase: int) -> SectionState | None:
+def section_state(y: float, xd: float, f: float, phase: int, e: float) -> SectionState | None:
     """The :class:`SectionState` of a solver row, or None where there is none (static)."""
     if not (math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)) \
             or phase not in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG):
         return None
-    return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(phase)])
+    return SectionState(float(y), float(xd), float(f), codes.PHASE_NAMES[int(phase)], float(e))
 
 
 # --------------------------------------------------------------------------- public API
 #: Columns of :func:`solve_points` (and of the kernels' output rows), in order.
 FLOAT_COLUMNS = ("mu_ratio", "error", "stick_fraction", "slip_fraction",
                  "reverse_slip_fraction", "flight_fraction", "y", "x_dot", "f", "multiplier",
-                 "settling_periods", "window_min", "window_max", "drift_rate")
+                 "settling_periods", "window_min", "window_max", "drift_rate", "e")
 INT_COLUMNS = ("status", "period", "periods", "events", "phase", "degenerate")
 
 
@@ -418,31 +457,36 @@ def solve_points(
     beta: ArrayLike,
     amplitude: ArrayLike,
     v_inertial: ArrayLike,
+    zeta: ArrayLike = 0.0,
+    eta_c: ArrayLike = 0.0,
     *,
     initial: str | SectionState | NDArray[np.object_] = "sliding",
     settings: SolverSettings | None = None,
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The four parameters broadcast together; validation is the caller's duty beyond
+    The six parameters broadcast together; validation is the caller's duty beyond
     what is checked here (finite, ``alpha > 0``, ``beta > alpha``, ``a >= 0``,
-    ``V >= 0``).  Returns arrays of that shape: ``mu_ratio``, ``error``, the four time
-    fractions, ``status`` (integer codes, see :data:`STATUS_BY_CODE`; ``-1`` = static
-    limit at ``V = 0``), ``period``, ``periods``, ``events`` and the final section state
-    ``y``, ``x_dot``, ``f``, ``phase`` (phase code).  Results are bitwise reproducible:
+    ``V >= 0``, ``zeta >= 0``, ``eta_c >= 0``).  Returns arrays of that shape:
+    ``mu_ratio``, ``error``, the four time fractions, ``status`` (integer codes, see
+    :data:`STATUS_BY_CODE`; ``-1`` = static limit at ``V = 0``), ``period``,
+    ``periods``, ``events`` and the final section state ``y``, ``x_dot``, ``f``, ``e``,
+    ``phase`` (phase code).  Results are bitwise reproducible:
     each point depends only on its own parameters.
     """
     settings = settings or SolverSettings()
-    al, be, am, V = np.broadcast_arrays(*(np.asarray(x, dtype=float)
-                                          for x in (alpha, beta, amplitude, v_inertial)))
+    al, be, am, V, ze, et = np.broadcast_arrays(*(
+        np.asarray(x, dtype=float) for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c)))
     shape = V.shape
-    al, be, am, V = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V))
+    al, be, am, V, ze, et = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et))
     checked("alpha", al, minimum=0.0, strict=True)
     checked_beta(al, be)
     checked("amplitude", am, minimum=0.0)
     checked("v_inertial", V, minimum=0.0)
+    checked("zeta", ze, minimum=0.0)
+    checked("eta_c", et, minimum=0.0)
     n = V.size
-    kind, init = _initial(initial, n)
+    kind, init = _initial(initial, n, lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i]))
     out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     moving = V > 0.0
@@ -450,7 +494,7 @@ def solve_points(
     if idx.size:
         of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
-        steady_state_many(al[idx], be[idx], am[idx], V[idx], kind,
+        steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], kind,
                           np.ascontiguousarray(init[idx]), *_kernel_settings(settings), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
@@ -514,18 +558,18 @@ def friction_coefficient(
     if scalar and V > 0.0:
         # one point: call the scalar kernel directly (no array bookkeeping)
         settings = settings or _DEFAULT_SETTINGS
-        kind, init = _initial(initial, 1)
+        kind, init = _initial(initial, 1, lambda i: dim)
         of = np.empty(len(FLOAT_COLUMNS))
         oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
-        steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), kind, init[0, 0],
-                     init[0, 1], init[0, 2], int(init[0, 3]), *_kernel_settings(settings),
-                     of, oi)
+        steady_state(dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, kind,
+                     init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]),
+                     *_kernel_settings(settings), of, oi)
         cols = dict(zip(FLOAT_COLUMNS, of.tolist(), strict=True))
         cols.update(zip(INT_COLUMNS, oi.tolist(), strict=True))
         cols["trusted"] = bool(settings.trusted(oi[0], of[1]))
         return _result(cols, dim, float(V))
-    cols = solve_points(np.full(shape, dim.alpha), np.full(shape, dim.beta),
-                        np.full(shape, dim.amplitude), V, initial=initial, settings=settings)
+    cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
+                        initial=initial, settings=settings)
     if scalar:
         return _result({k: v[()].item() for k, v in cols.items()}, dim, float(V))
     status = np.vectorize(STATUS_BY_CODE.__getitem__, otypes=[object])(cols["status"])
@@ -533,7 +577,7 @@ def friction_coefficient(
     flat = {k: v.ravel() for k, v in cols.items()}
     for i in range(V.size):
         states[i] = section_state(flat["y"][i], flat["x_dot"][i], flat["f"][i],
-                                  int(flat["phase"][i]))
+                                  int(flat["phase"][i]), flat["e"][i])
     return FrictionResults(
         status=status, final_state=states.reshape(shape), system=dim,
         v_inertial=V.astype(float), **{k: cols[k] for k in _RESULT_COLUMNS})
@@ -549,7 +593,8 @@ def _result(cols: dict, dim: Dimensionless, V: float) -> FrictionResult:
     """One point's :class:`FrictionResult` from its columns (Python scalars)."""
     return FrictionResult(
         status=STATUS_BY_CODE[int(cols["status"])],
-        final_state=section_state(cols["y"], cols["x_dot"], cols["f"], int(cols["phase"])),
+        final_state=section_state(cols["y"], cols["x_dot"], cols["f"], int(cols["phase"]),
+                                  cols["e"]),
         system=dim, v_inertial=V, **{k: cols[k] for k in _RESULT_COLUMNS})
 
 
@@ -587,17 +632,16 @@ def simulate(
             raise ValueError(f"initial='steady': no trusted steady state at this point "
                              f"({steady.message})")
         initial = steady.final_state
-    kind, init = _initial(initial, 1)
+    kind, init = _initial(initial, 1, lambda i: dim)
     if kind == 2:
-        y, xd, f, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
+        y, xd, e, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
     else:
-        y, xd, f, ph = initial_state(kind, dim.alpha, dim.beta, dim.amplitude, V)
+        y, xd, e, ph = initial_point(kind, *_parameters(dim, V))
     whole = int(math.ceil(periods))
     cap = 4096 * whole
     while True:
-        seg = np.empty((cap, 9))
-        m = run_periods(0.0, y, xd, f, ph, dim.alpha, dim.beta, dim.amplitude, V, whole,
-                        cap, seg)
+        seg = np.empty((cap, N_SEG_COLUMNS))
+        m = run_periods(0.0, y, xd, e, ph, *_parameters(dim, V), whole, cap, seg)
         if m > 0:
             break
         cap *= 4
@@ -611,8 +655,9 @@ def simulate(
     eps = 1e-12 * max(1.0, tau_end)
     taus = np.sort(np.concatenate([grid, ev_tau - eps, ev_tau]))
     taus = taus[(taus >= 0.0) & (taus <= tau_end)]
-    out = np.empty((taus.size, 5))
-    sample(seg, m, dim.alpha, dim.beta, dim.amplitude, V, taus, out)
+    out = np.empty((taus.size, 6))
+    sample(seg, m, *_parameters(dim, V), taus, out)
+    dissipated = _dissipation(seg, m, dim, V, taus)
     events = tuple(
         Event(float(seg[j, 0]), codes.EVENT_NAMES[int(seg[j, 5])],
               codes.PHASE_NAMES[int(seg[j - 1, 4])], codes.PHASE_NAMES[int(seg[j, 4])])
@@ -622,5 +667,60 @@ def simulate(
     return History(
         tau=taus, x=out[:, 0] + V * taus, x_dot=out[:, 1], f=out[:, 2], n=out[:, 3],
         phase=np.asarray(codes.PHASE_NAMES, dtype=str)[out[:, 4].astype(int)],
-        events=events, system=dim, v_inertial=V,
-        final_state=section_state(last[1], last[2], last[3], int(last[4])))
+        events=events, system=dim, v_inertial=V, e=out[:, 5], **dissipated,
+        final_state=section_state(last[1], last[2], last[3], int(last[4]), last[9]))
+
+
+def _parameters(dim: Dimensionless, V: float) -> tuple[float, ...]:
+    """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c)``."""
+    return dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c
+
+
+def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
+           tau: NDArray[np.float64]) -> NDArray[np.float64]:
+    """Power input by the pulled end and dissipated by the pin dashpot, the contact
+    dashpot and friction (docs/damping.md, energy balance), from sampled columns."""
+    y, xd, f, n, ph, e = cols.T
+    gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
+    k = dim.beta - dim.alpha
+    c = 0.0 if math.isinf(k) else dim.eta_c * k
+    stick = ph == codes.STICK
+    if math.isinf(k):
+        e_dot = np.zeros_like(xd)
+    elif c > 0.0:
+        e_dot = (f - k * e) / c  # f = k e + c e' in contact, 0 = k e + c e' in flight
+    else:
+        s = np.where(ph == codes.SLIP_POS, 1.0, np.where(ph == codes.SLIP_NEG, -1.0, 0.0))
+        e_dot = np.where(stick, xd, -s * dim.amplitude * np.sin(tau) / k)  # e = s n / k
+    e_dot = np.where(stick, xd, e_dot)
+    return np.stack([V * (-dim.alpha * y - gamma * (xd - V)), gamma * (xd - V) ** 2,
+                     c * e_dot**2, f * (xd - e_dot)])
+
+
+_GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
+
+
+def _dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
+                 taus: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
+    """Cumulative work and dissipated energies at ``taus``: Gauss-Legendre quadrature of
+    the closed forms between successive samples (no event lies inside one), each cut
+    into pieces shorter than a quarter of the fastest free period."""
+    w_max = max(1.0, math.sqrt(dim.alpha), 0.0 if dim.is_rigid else math.sqrt(dim.beta))
+    h = np.diff(taus)
+    pieces = np.maximum(1, np.ceil(h * w_max / (0.5 * math.pi))).astype(int)
+    owner = np.repeat(np.arange(h.size), pieces)
+    start = np.repeat(taus[:-1], pieces) + (np.arange(owner.size)
+                                            - np.repeat(np.cumsum(pieces) - pieces, pieces)) \
+        * np.repeat(h / pieces, pieces)
+    width = np.repeat(h / pieces, pieces)
+    nodes = (start[:, None] + 0.5 * width[:, None] * (_GAUSS_X[None, :] + 1.0)).ravel()
+    cols = np.empty((nodes.size, 6))
+    sample(seg, m, *_parameters(dim, V), nodes, cols)
+    rates = _rates(dim, V, cols, nodes).reshape(4, -1, _GAUSS_X.size)
+    per_piece = 0.5 * width * (rates * _GAUSS_W).sum(axis=2)
+    per_interval = np.zeros((4, h.size))
+    for j in range(4):
+        per_interval[j] = np.bincount(owner, per_piece[j], minlength=h.size)
+    cum = np.concatenate([np.zeros((4, 1)), np.cumsum(per_interval, axis=1)], axis=1)
+    return dict(zip(("work_input", "dissipated_pin", "dissipated_contact",
+                     "dissipated_friction"), cum, strict=True))

@@ -43,6 +43,7 @@ __all__ = [
     "SOFT_EXPONENT",
     "Liftoff",
     "SteadySliding",
+    "critical_inertial_velocity",
     "critical_velocity",
     "critical_velocity_soft",
     "critical_velocity_stiff",
@@ -99,19 +100,22 @@ def static_mu_ratio(amplitude: ArrayLike) -> FloatOrArray:
 
 # --------------------------------------------------------------------------- eqs. (12)-(14)
 def critical_velocity(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike, k_zc: ArrayLike,
-                      k_xc: ArrayLike, k_x: ArrayLike, mass: ArrayLike) -> FloatOrArray:
-    r"""Critical ("insensitivity") velocity ``v0*`` in m/s, eq. (12).
+                      k_xc: ArrayLike, k_x: ArrayLike, mass: ArrayLike, c_x: ArrayLike = 0.0,
+                      c_xc: ArrayLike = 0.0) -> FloatOrArray:
+    r"""Critical ("insensitivity") velocity ``v0*`` in m/s, eq. (12), with damping.
 
-    .. math:: v_0^* = \mu_0 \omega \Delta u_z \frac{k_{z,c}}{k_{x,c}}
-              \frac{|k_{x,c} + k_x - m\omega^2|}{|k_x - m\omega^2|}
+    .. math:: v_0^* = \mu_0 \omega \Delta u_z k_{z,c}
+              \frac{|1 + (d + i\omega c_x)/k_{x,c} + i\eta_c|}
+                    {|d + i\omega c_x|\sqrt{1 + \eta_c^2}},
+              \quad d = k_x - m\omega^2,\ \eta_c = \omega c_{x,c}/k_{x,c}
 
-    Above ``v0*`` the contact point of the periodic sliding solution, eq. (10),
-    never stops and ``mu = mu0``. Written as
-    ``mu0 omega du_z k_zc |1 + d/k_xc| / |d|`` with ``d = k_x - m omega^2`` so
-    that ``k_xc = inf`` (rigid contact) gives the limit
-    ``mu0 omega du_z k_zc / |d|``. Returns ``inf`` at ``d = 0`` (case IV),
-    ``0`` at ``k_x + k_xc = m omega^2`` (case III) and ``0`` when ``du_z = 0``
-    (no oscillation, no reduction of friction).
+    (docs/damping.md; undamped it is eq. 12,
+    ``mu0 omega du_z (k_zc/k_xc) |k_xc + k_x - m omega^2| / |k_x - m omega^2|``).
+    Above ``v0*`` the contact point of the periodic sliding solution never stops and
+    ``mu = mu0``.  ``k_xc = inf`` (rigid contact) gives
+    ``mu0 omega du_z k_zc / |d + i omega c_x|``.  Returns ``inf`` at ``d = 0`` without
+    pin damping (case IV), ``0`` at ``k_x + k_xc = m omega^2`` without damping (case
+    III) and ``0`` when ``du_z = 0`` (no oscillation, no reduction of friction).
     """
     mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
     omega = checked("omega", omega, minimum=0.0, strict=True)
@@ -120,9 +124,12 @@ def critical_velocity(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike, k_zc: A
     k_xc = checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True)
     k_x = checked("k_x", k_x, minimum=0.0)
     mass = checked("mass", mass, minimum=0.0, strict=True)
-    detuning = k_x - mass * omega**2
-    num = mu0 * omega * du_z * k_zc * np.abs(1.0 + detuning / k_xc)
-    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning)))
+    c_x = checked("c_x", c_x, minimum=0.0)
+    c_xc = checked("c_xc", c_xc, minimum=0.0)
+    detuning = (k_x - mass * omega**2) + 1j * omega * c_x
+    eta = np.where(np.isinf(k_xc), 0.0, omega * c_xc / k_xc)
+    num = mu0 * omega * du_z * k_zc * np.abs(1.0 + detuning / k_xc + 1j * eta)
+    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning) * np.sqrt(1.0 + eta**2)))
 
 
 def critical_velocity_soft(mu0: ArrayLike, dF_N: ArrayLike, mass: ArrayLike,
@@ -156,27 +163,40 @@ def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
     return as_float_or_array(mu0 * omega * du_z * k_zc / k_xc)
 
 
-def inertial_per_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
-    r"""Factor ``c`` in ``V = c * vbar``: the critical inertial velocity, eqs. (12), (16), (20).
+def critical_inertial_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                               zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> FloatOrArray:
+    r"""Critical inertial velocity ``V_c`` (``V = V_c vbar``), eqs. (12), (16), (20) damped.
 
-    With ``k_xc = (beta - alpha) m omega^2``, ``k_x - m omega^2 = (alpha - 1) m omega^2``
-    and ``du_z k_zc = a F_N0``, eq. (12) becomes
-    ``v0* = (mu0 F_N0 / (m omega)) * a |beta - 1| / ((beta - alpha) |alpha - 1|)``, so
+    Continuous forward sliding (``a <= 1``) is the periodic solution
+    ``y = -1/alpha - a Re(e^{i tau}/P)``, ``P = alpha - 1 + i gamma``, of
+    ``y'' + gamma y' + alpha y = -n``, with the contact spring following
+    ``eta_c e' + e = n/k``; its contact point never stops iff (docs/damping.md)
 
-    .. math:: c = \frac{V}{\bar v} = \frac{a\,|\beta - 1|}{(\beta - \alpha)\,|\alpha - 1|}
-              = \frac{a\,|1 + (\alpha - 1)/(\beta - \alpha)|}{|\alpha - 1|}.
+    .. math:: V > V_c = \frac{a\,|(\beta - 1) + i(\gamma + \eta_c k)|}
+              {|(\alpha - 1) + i\gamma|\; k\sqrt{1 + \eta_c^2}}
+              = \frac{a\,|1 + (\alpha - 1 + i\gamma)/k + i\eta_c|}
+              {|\alpha - 1 + i\gamma|\sqrt{1 + \eta_c^2}},
 
-    The second form gives the rigid-contact limit ``beta = inf``: ``c = a/|alpha - 1|``.
-    ``c = inf`` at ``alpha = 1`` (case IV), ``0`` at ``beta = 1`` (case III)
-    and ``0`` at ``a = 0``. In the soft limit (``alpha -> 0``, ``beta -> inf``)
-    ``c -> a``, i.e. eq. (13).
+    ``gamma = 2 zeta sqrt(alpha)``, ``k = beta - alpha``.  Undamped it is eq. (12) over
+    ``mu0 F_N0/(m omega)``, ``a|beta - 1|/((beta - alpha)|alpha - 1|)``; the second
+    form gives the rigid contact ``beta = inf``: ``a/|alpha - 1 + i gamma|``.
+    ``inf`` at ``alpha = 1`` without pin damping (case IV), ``0`` at ``beta = 1``
+    without damping (case III) and ``0`` at ``a = 0``.  In the soft limit
+    (``alpha -> 0``, ``beta -> inf``, undamped) ``V_c -> a``, i.e. eq. (13).
     """
     alpha = checked("alpha", alpha, minimum=0.0)
     beta = checked_beta(alpha, beta)
     a = checked("amplitude", amplitude, minimum=0.0)
-    detuning = alpha - 1.0
-    num = a * np.abs(1.0 + detuning / (beta - alpha))
-    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning)))
+    zeta = checked("zeta", zeta, minimum=0.0)
+    eta = checked("eta_c", eta_c, minimum=0.0)
+    detuning = (alpha - 1.0) + 2j * zeta * np.sqrt(alpha)
+    eta = np.where(np.isinf(beta), 0.0, eta)
+    num = a * np.abs(1.0 + detuning / (beta - alpha) + 1j * eta)
+    return as_float_or_array(_ratio_or_inf(num, np.abs(detuning) * np.sqrt(1.0 + eta**2)))
+
+
+#: The factor ``c`` in ``V = c vbar`` is the critical inertial velocity (eq. 16).
+inertial_per_vbar = critical_inertial_velocity
 
 
 # --------------------------------------------------------------------------- eqs. (7)-(10)

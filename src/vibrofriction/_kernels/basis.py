@@ -1,76 +1,138 @@
-r"""Event functions and phase solutions as coefficients over one fixed basis.
+r"""Event functions and phase solutions as coefficients over one basis per phase.
 
-Every quantity of every phase (body displacement, contact force, contact-point
-velocity, the margin :math:`n - s f` of the friction cone) is, with ``t`` the time
-since the start of the segment and ``w`` the phase's natural frequency,
-
-.. math::
-
-    g(t) = p_0 + p_1 t + A\cos t + B\sin t + D\cos wt + E\sin wt + G\,C(t) + H\,S(t),
-
-where :math:`C` and :math:`S` are the responses of :math:`u'' + w^2 u` to
-:math:`\cos t` and :math:`\sin t` from rest,
+Every quantity of every phase (body displacement, contact elongation and force,
+contact-point velocity, the margin :math:`n - s f` of the friction cone) is, with
+``t`` the time since the start of the segment,
 
 .. math::
 
-    C = \frac{\cos t - \cos wt}{w^2 - 1}, \qquad
-    S = \frac{\sin t - \sin(wt)/w}{w^2 - 1}.
+    g(t) = p_0 + p_1 t + A\cos t + B\sin t + D h_1(t) + E h_2(t)
+           + G\,C(t) + H\,S(t) + K e^{-rt}.
 
-Written through half-sum and half-difference angles they stay exact as
-:math:`w \to 1` (the resonant drive, case IV), where
-:math:`C \to t\sin t/2` and :math:`S \to (\sin t - t\cos t)/2`.  The basis is
-closed under differentiation (:math:`S' = C`, :math:`C' = \sin t - w^2 S`), so
-derivatives are coefficient maps and bounds follow from coefficient sizes.
+* :math:`h_1, h_2` span the free motion of the phase's oscillator
+  :math:`u'' + 2\sigma u' + \omega_0^2 u = 0` (docs/damping.md), chosen by its
+  *mode* (:func:`make_mode`): ``OSC`` (under-damped, undamped included)
+  :math:`e^{-\sigma t}\cos\omega_d t,\ e^{-\sigma t}\sin(\omega_d t)/\omega_d`;
+  ``NEAR`` (critical or nearly) the same with :math:`\cosh, \sinh`, which stay
+  regular through :math:`\omega_d = 0`; ``EXP`` (over-damped, well separated)
+  :math:`e^{\lambda_1 t},\ e^{\lambda_2 t}`, so that a fast decay and a slow one
+  are bounded separately.  In ``OSC``/``NEAR``, :math:`h_2` is the impulse response.
+* :math:`C, S` are the responses to :math:`\cos t` and :math:`\sin t` from rest
+  (the drive of the slip phase).  Near resonance (:math:`|\omega_0^2 - 1 + 2i\sigma|`
+  small) they are written as divided differences of exponentials, exact through
+  the undamped resonance :math:`\omega_0 = 1` where :math:`C \to t\sin t/2`.
+* :math:`e^{-rt}` is the relaxation of a viscoelastic contact in slip and flight
+  (``r = 1/eta_c``).
 
-Coefficient tuples are ``(p0, p1, A, B, D, E, G, H)``.
+The basis is closed under differentiation (:math:`S' = C`,
+:math:`C' = -S + \text{impulse response}`), so derivatives are coefficient maps, and
+bounds on any interval :math:`[t_a, t_b]` follow from coefficient sizes and the
+decay rates (:func:`bound_parts`).  Coefficient tuples are
+``(p0, p1, A, B, D, E, G, H, K)``; a mode is ``(kind, sigma, w2, q, lam1, lam2, r,
+w0sq)`` with ``w2 = w0sq - sigma^2`` and ``q = sqrt(|w2|)``.
 """
 
 import math
 
 from .jit import jit
 
-
-@jit
-def cs_kernels(t, w):
-    """Return ``(C(t), S(t))`` accurately for every ``w > 0`` including ``w = 1``."""
-    q = 0.5 * (1.0 - w) * t
-    if abs(q) < 1e-4:
-        sinc = 1.0 - q * q / 6.0
-    else:
-        sinc = math.sin(q) / q
-    two_sh = t * sinc  # = 2 sin(q) / (1 - w)
-    p = 0.5 * (1.0 + w) * t
-    c = math.sin(p) * two_sh / (1.0 + w)
-    s = -math.cos(p) * two_sh / (1.0 + w) + math.sin(w * t) / (w * (1.0 + w))
-    return c, s
-
-
-RESONANT_BAND = 0.25  # |w^2 - 1| below which C and S need the half-angle forms
+OSC = 0.0  # e^{-sig t} cos(q t), e^{-sig t} sin(q t)/q
+NEAR = 1.0  # e^{-sig t} cosh(q t), e^{-sig t} sinh(q t)/q (q may be 0)
+EXP = 2.0  # e^{lam1 t}, e^{lam2 t}
+SEPARATED = 0.5  # over-damped modes with q >= SEPARATED sigma use EXP
+RESONANT_BAND = 0.25  # |w0^2 - 1 + 2 i sig| below which C, S use divided differences
+FAST = 4.0  # oscillations or decays faster than this are bounded by their envelope
 
 
 @jit
-def basis_values(w, t, with_cs):
-    """The eight basis functions at ``t`` (``C = S = 0`` unless ``with_cs``)."""
+def make_mode(w0sq, sig, r):
+    """The free motions of ``u'' + 2 sig u' + w0sq u = 0`` and the relaxation rate ``r``."""
+    w0 = math.sqrt(w0sq)
+    w2 = (w0 - sig) * (w0 + sig)
+    if w2 > 0.0:
+        return (OSC, sig, w2, math.sqrt(w2), 0.0, 0.0, r, w0sq)
+    q = math.sqrt(-w2)
+    if q < SEPARATED * sig:
+        return (NEAR, sig, w2, q, 0.0, 0.0, r, w0sq)
+    lam2 = -(sig + q)
+    return (EXP, sig, w2, q, w0sq / lam2, lam2, r, w0sq)  # lam1 lam2 = w0sq
+
+
+@jit
+def initial_pair(m, v0, d0):
+    """``(D, E)`` of the free motion with value ``v0`` and derivative ``d0`` at ``t = 0``."""
+    if m[0] == EXP:
+        d = m[4] - m[5]
+        return (d0 - m[5] * v0) / d, (m[4] * v0 - d0) / d
+    return v0, d0 + m[1] * v0
+
+
+@jit
+def homogeneous(m, t):
+    """``(h1(t), h2(t))``."""
+    if m[0] == EXP:
+        return math.exp(m[4] * t), math.exp(m[5] * t)
+    sig, q = m[1], m[3]
+    es = math.exp(-sig * t) if sig != 0.0 else 1.0
+    if m[0] == OSC:
+        return es * math.cos(q * t), es * math.sin(q * t) / q
+    if q == 0.0:
+        return es, es * t
+    e1 = math.exp(-(sig - q) * t)
+    em = math.expm1(-2.0 * q * t)
+    return 0.5 * e1 * (2.0 + em), -0.5 * e1 * em / q
+
+
+@jit
+def _em1(z, t):
+    """``(e^{z t} - 1)/z`` without cancellation (``Re z <= 0``); ``t`` at ``z = 0``."""
+    x = z.real * t
+    y = z.imag * t
+    if x == 0.0 and y == 0.0:
+        return complex(t, 0.0)
+    ex = math.expm1(x)
+    s = math.sin(0.5 * y)
+    return complex(ex * math.cos(y) - 2.0 * s * s, (ex + 1.0) * math.sin(y)) / z
+
+
+@jit
+def resonant(m, t, ct, st, h1, h2):
+    """``(C(t), S(t))``: responses to ``cos t``, ``sin t`` from rest, at every damping."""
+    sig = m[1]
+    p = complex(m[7] - 1.0, 2.0 * sig)
+    if abs(p) > RESONANT_BAND:
+        if m[0] == EXP:
+            l1, l2 = m[4], m[5]
+            u = (complex(ct, st) + ((l2 - 1j) * h1 + (1j - l1) * h2) / (l1 - l2)) / p
+        else:
+            u = (complex(ct, st) - h1 - complex(sig, 1.0) * h2) / p
+        return u.real, u.imag
+    # near the resonance (then under-damped with q ~ 1): divided differences
+    q = m[3]
+    u = complex(ct, st) * (_em1(complex(-sig, q - 1.0), t) - _em1(complex(-sig, -q - 1.0), t))
+    u = u / complex(0.0, 2.0 * q)
+    return u.real, u.imag
+
+
+@jit
+def basis_values(m, t, with_cs, with_exp):
+    """The nine basis functions at ``t`` (``C = S = 0`` unless ``with_cs``, the
+    relaxation 0 unless ``with_exp``)."""
     ct = math.cos(t)
     st = math.sin(t)
-    cw = math.cos(w * t)
-    sw = math.sin(w * t)
+    h1, h2 = homogeneous(m, t)
     cc = 0.0
     ss = 0.0
     if with_cs:
-        d = w * w - 1.0
-        if abs(d) > RESONANT_BAND:
-            cc = (ct - cw) / d
-            ss = (st - sw / w) / d
-        else:
-            cc, ss = cs_kernels(t, w)
-    return (1.0, t, ct, st, cw, sw, cc, ss)
+        cc, ss = resonant(m, t, ct, st, h1, h2)
+    ex = math.exp(-m[6] * t) if with_exp else 0.0
+    return (1.0, t, ct, st, h1, h2, cc, ss, ex)
 
 
 @jit
 def dot(c, b):
-    return (c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3]
-            + c[4] * b[4] + c[5] * b[5] + c[6] * b[6] + c[7] * b[7])
+    return (c[0] * b[0] + c[1] * b[1] + c[2] * b[2] + c[3] * b[3] + c[4] * b[4]
+            + c[5] * b[5] + c[6] * b[6] + c[7] * b[7] + c[8] * b[8])
 
 
 @jit
@@ -79,61 +141,130 @@ def has_cs(c):
 
 
 @jit
-def evaluate(c, w, t):
+def evaluate(c, m, t):
     """Value of the coefficient tuple ``c`` at local time ``t``."""
-    return dot(c, basis_values(w, t, has_cs(c)))
+    return dot(c, basis_values(m, t, has_cs(c), c[8] != 0.0))
 
 
 @jit
-def value_at_zero(c):
-    """``g(0)``: the basis at ``t = 0`` is ``(1, 0, 1, 0, 1, 0, 0, 0)``."""
-    return c[0] + c[2] + c[4]
+def value_at_zero(c, m):
+    """``g(0)``: ``h1(0) = 1``; ``h2(0)`` is 1 in ``EXP``, else 0; ``C(0) = S(0) = 0``."""
+    v = c[0] + c[2] + c[4] + c[8]
+    return v + c[5] if m[0] == EXP else v
 
 
 @jit
-def derivative(c, w):
+def derivative(c, m):
     """Coefficients of ``g'`` (the basis is closed under d/dt)."""
-    return (c[1], 0.0, c[3], c[6] - c[2], c[5] * w, -c[4] * w, c[7], -c[6] * w * w)
+    if m[0] == EXP:
+        d = m[4] - m[5]  # the impulse response is (h1 - h2)/d
+        return (c[1], 0.0, c[3], -c[2], m[4] * c[4] + c[6] / d, m[5] * c[5] - c[6] / d,
+                c[7], -c[6], -m[6] * c[8])
+    sig, w2 = m[1], m[2]
+    return (c[1], 0.0, c[3], -c[2], -sig * c[4] + c[5], -w2 * c[4] - sig * c[5] + c[6],
+            c[7], -c[6], -m[6] * c[8])
 
 
 @jit
 def add(c, d):
-    return (c[0] + d[0], c[1] + d[1], c[2] + d[2], c[3] + d[3],
-            c[4] + d[4], c[5] + d[5], c[6] + d[6], c[7] + d[7])
+    return (c[0] + d[0], c[1] + d[1], c[2] + d[2], c[3] + d[3], c[4] + d[4],
+            c[5] + d[5], c[6] + d[6], c[7] + d[7], c[8] + d[8])
 
 
 @jit
 def scale(c, k):
-    return (c[0] * k, c[1] * k, c[2] * k, c[3] * k, c[4] * k, c[5] * k, c[6] * k, c[7] * k)
+    return (c[0] * k, c[1] * k, c[2] * k, c[3] * k, c[4] * k, c[5] * k, c[6] * k,
+            c[7] * k, c[8] * k)
 
 
 @jit
-def cs_bound(w, t):
-    """Upper bound of ``|C|`` and ``|S|`` on ``[0, t]`` (Duhamel and closed form)."""
-    b = min(0.5 * t * t, t / w)
-    d = abs(w * w - 1.0)
-    if d > 0.0:
-        b = min(b, (1.0 + 1.0 / w) / d)
+def _u_bound(m, t):
+    """Upper bound of ``|C + i S|`` on ``[0, t]`` (impulse response ``|g(s)| <= s``)."""
+    b = 0.5 * t * t
+    p = math.hypot(m[7] - 1.0, 2.0 * m[1])
+    if m[0] == OSC:
+        q = m[3]
+        b = min(b, t / q)
+        if p > 0.0:
+            b = min(b, (2.0 + (1.0 + m[1]) / q) / p)
+    elif m[0] == EXP and p > 0.0:
+        d = m[4] - m[5]
+        b = min(b, (1.0 + (math.hypot(m[5], 1.0) + math.hypot(m[4], 1.0)) / d) / p)
     return b
 
 
 @jit
-def sup_bound(c, w, t):
-    """Upper bound of ``|g|`` on ``[0, t]``."""
-    b = max(abs(c[0]), abs(c[0] + c[1] * t))
-    b += math.hypot(c[2], c[3]) + math.hypot(c[4], c[5])
-    if c[6] != 0.0 or c[7] != 0.0:
-        b += (abs(c[6]) + abs(c[7])) * cs_bound(w, t)
-    return b
+def fast_mask(m):
+    """Which of ``h1``, ``h2`` and the relaxation are fast (bounded by their envelope)."""
+    fe = m[6] > FAST
+    if m[0] == EXP:
+        return -m[4] > FAST, -m[5] > FAST, fe
+    fh = m[3] > FAST or m[1] > FAST if m[0] == OSC else m[1] - m[3] > FAST
+    return fh, fh, fe
 
 
 @jit
-def integral(c, w, t):
-    """Integral of ``g`` over ``[0, t]`` (requires ``H = 0``; ``S' = C``)."""
+def bound_parts(c, m, T, f1, f2, fe, sel):
+    """A bound of ``|g|`` on ``[t_a, T]`` as ``B0 + B1 e^{-d1 t_a} + B2 e^{-d2 t_a} +
+    B3 e^{-d3 t_a}``: the tuple ``(B0, B1, d1, B2, d2, B3, d3)``.
+
+    ``sel`` 0 bounds every term, 1 only the slow ones, 2 only the fast ones (the
+    masks of :func:`fast_mask`; polynomial, drive and resonant terms are slow).
+    """
+    b0 = b1 = b2 = b3 = 0.0
+    d1 = d2 = d3 = 0.0
+    if sel != 2:
+        b0 = max(abs(c[0]), abs(c[0] + c[1] * T)) + math.hypot(c[2], c[3])
+        if c[6] != 0.0 or c[7] != 0.0:
+            b0 += math.hypot(c[6], c[7]) * _u_bound(m, T)
+    D, E = c[4], c[5]
+    if m[0] == EXP:
+        if sel == 0 or (sel == 1) != f1:
+            b1, d1 = abs(D), -m[4]
+        if sel == 0 or (sel == 1) != f2:
+            b2, d2 = abs(E), -m[5]
+    elif sel == 0 or (sel == 1) != f1:
+        if m[0] == OSC:
+            b1, d1 = min(math.hypot(D, E / m[3]), abs(D) + abs(E) * T), m[1]
+        else:
+            b1, d1 = abs(D) + abs(E) * T, m[1] - m[3]
+    if c[8] != 0.0 and (sel == 0 or (sel == 1) != fe):
+        b3, d3 = abs(c[8]), m[6]
+    return (b0, b1, d1, b2, d2, b3, d3)
+
+
+@jit
+def bound_at(p, ta):
+    """Evaluate the bound of :func:`bound_parts` at the interval start ``ta``."""
+    b = p[0]
+    if p[1] != 0.0:
+        b += p[1] if p[2] == 0.0 else p[1] * math.exp(-p[2] * ta)
+    if p[3] != 0.0:
+        b += p[3] if p[4] == 0.0 else p[3] * math.exp(-p[4] * ta)
+    if p[5] != 0.0:
+        b += p[5] if p[6] == 0.0 else p[5] * math.exp(-p[6] * ta)
+    return b * (1.0 + 1e-12)
+
+
+@jit
+def sup_bound(c, m, T):
+    """Upper bound of ``|g|`` on ``[0, T]``."""
+    return bound_at(bound_parts(c, m, T, False, False, False, 0), 0.0)
+
+
+@jit
+def integral(c, m, t):
+    """Integral of ``g`` over ``[0, t]`` (requires ``G = H = 0``: not for slip bodies)."""
     v = c[0] * t + 0.5 * c[1] * t * t + c[2] * math.sin(t) + c[3] * (1.0 - math.cos(t))
-    v += c[4] * math.sin(w * t) / w + c[5] * (1.0 - math.cos(w * t)) / w
-    if c[6] != 0.0:
-        v += c[6] * cs_kernels(t, w)[1]
+    if c[4] != 0.0 or c[5] != 0.0:
+        if m[0] == EXP:
+            v += c[4] * math.expm1(m[4] * t) / m[4] + c[5] * math.expm1(m[5] * t) / m[5]
+        else:
+            h1, h2 = homogeneous(m, t)
+            sig = m[1]
+            v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
+    if c[8] != 0.0:
+        v -= c[8] * math.expm1(-m[6] * t) / m[6]
     return v
 
 
@@ -141,4 +272,4 @@ def integral(c, w, t):
 def magnitude(c):
     """A scale for round-off tolerances: the sum of coefficient sizes."""
     return (abs(c[0]) + abs(c[2]) + abs(c[3]) + abs(c[4]) + abs(c[5])
-            + abs(c[6]) + abs(c[7]) + 1e-300)
+            + abs(c[6]) + abs(c[7]) + abs(c[8]) + 1e-300)

@@ -1,58 +1,129 @@
-r"""Closed-form solutions of the three phases (docs/model.md, paper eqs. 4, 5, 15).
+r"""Closed-form solutions of the three phases (docs/model.md, docs/damping.md; eqs. 4, 5, 15).
 
 Scaled variables: time ``tau = omega t``, forces in ``mu0 F_N0``, lengths in
 ``mu0 F_N0 / (m omega^2)``; ``y = x - V tau`` is the body displacement with the
-drift removed, ``f`` the tangential contact force, ``n = 1 + a cos tau`` the
-normal force and ``k = beta - alpha`` the contact stiffness (``inf`` = rigid).
-``theta`` is the drive phase at the segment start, ``t`` the time since then.
+drift removed, ``e = x - x_c`` the elongation of the contact spring, ``f`` the
+tangential contact force, ``n = 1 + a cos tau`` the normal force, ``k = beta - alpha``
+the contact stiffness (``inf`` = rigid), ``gamma = 2 zeta sqrt(alpha)`` the pin
+dashpot and ``c = eta_c k`` the contact dashpot.  ``theta`` is the drive phase at
+the segment start, ``t`` the time since then.
 
-* slip ``s``:  ``y'' + alpha y = -s (1 + a cos tau)``, ``f = s n`` (natural
-  frequency ``sqrt(alpha)``, driven at 1, resonant at ``alpha = 1``);
-* flight:     ``y'' + alpha y = 0``, ``f = 0``;
-* stick:      ``f'' + beta f = alpha (f_0 - k y_0) + alpha k V t`` with the
-  contact point fixed, so ``y = y_0 + (f - f_0)/k - V t`` (natural frequency
-  ``sqrt(beta)``); rigid contact: ``y' = -V``, ``f = -alpha y``.
+* body in slip ``s`` (``s = 0``: flight): ``y'' + gamma y' + alpha y = -s n``;
+* contact in slip: ``f = s n``, ``eta_c e' + e = s n / k`` (``e = s n/k`` when
+  ``eta_c = 0``); in flight ``f = 0`` and ``e`` relaxes, ``eta_c e' + e = 0``;
+* stick (contact point fixed, ``e' = x'``):
+  ``e'' + (gamma + c) e' + beta e = alpha (e_0 - y_0) + gamma V + alpha V t``,
+  ``f = k e + c e'``, ``y = y_0 + (e - e_0) - V t``; rigid contact: ``x' = 0``,
+  ``f = -alpha y + gamma V``.
 
-Each function returns coefficient tuples over :mod:`.basis`.
+The model tuple (:func:`make_model`) carries the parameters and the two modes
+(free motions) of slip and stick.  Each function returns coefficient tuples over
+:mod:`.basis`.
 """
 
 import math
 
-from .basis import add, derivative, scale
+from .basis import add, derivative, initial_pair, make_mode, scale
 from .jit import jit
 
-
-@jit
-def free_y(alpha, w, theta, y0, yd0, s, a):
-    """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``."""
-    return (-s / alpha, 0.0, 0.0, 0.0, y0 + s / alpha, yd0 / w,
-            -s * a * math.cos(theta), s * a * math.sin(theta))
-
-
-@jit
-def slip_velocity(ycoef, w, theta, s, a, V, k):
-    """Contact-point velocity times ``s``: ``s (V + y') + (a/k) sin tau`` (eq. 10)."""
-    ak = a / k  # 0 for a rigid contact
-    v = scale(derivative(ycoef, w), s)
-    return add(v, (s * V, 0.0, ak * math.sin(theta), ak * math.cos(theta), 0.0, 0.0, 0.0, 0.0))
+# fields of the model tuple
+M_ALPHA, M_BETA, M_A, M_V, M_GAMMA, M_ETA, M_K, M_C, M_R = 0, 1, 2, 3, 4, 5, 6, 7, 8
+M_OFF, M_ON, M_SLIP, M_STICK = 9, 10, 11, 12
+TWO_PI = 2.0 * math.pi
+ZERO9 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
 @jit
-def stick_force(alpha, beta, k, W, V, y0, xd0, f0):
-    """``f(t)`` in stick (finite contact stiffness), harmonic at ``W = sqrt(beta)``.
+def liftoff_phases(a):
+    """Drive phases of lift-off and touch-down, ``cos theta = -1/a`` (a >= 1).
 
-    Takes the body velocity ``xd0 = x'`` itself, not ``y' = x' - V``: ``f' = k x'``
-    with ``k`` up to 1e6 would amplify the cancellation in ``V + y'``.
+    At ``a = 1`` both are ``pi``: the grazing point, where ``n`` touches zero.
     """
-    p0 = alpha * (f0 / beta - (k / beta) * y0)
-    p1 = alpha * (k / beta) * V
-    return (p0, p1, 0.0, 0.0, f0 - p0, (k * xd0 - p1) / W, 0.0, 0.0)
+    if a < 1.0:
+        return TWO_PI, TWO_PI
+    th = math.acos(-1.0 / a)
+    return th, TWO_PI - th
 
 
 @jit
-def rigid_stick_force(alpha, V, y0):
-    """``f(t) = -alpha y`` with ``y = y0 - V t`` (rigid contact, body at rest)."""
-    return (-alpha * y0, alpha * V, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+def make_model(alpha, beta, a, V, zeta, eta):
+    """The parameters of one point and the modes of slip and stick (see module doc)."""
+    rigid = math.isinf(beta)
+    k = math.inf if rigid else beta - alpha
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+    viscous = eta > 0.0 and not rigid
+    c = eta * k if viscous else 0.0
+    r = 1.0 / eta if viscous else 0.0
+    slip = make_mode(alpha, 0.5 * gamma, r)
+    stick = slip if rigid else make_mode(beta, 0.5 * (gamma + c), 0.0)
+    th_off, th_on = liftoff_phases(a)
+    return (alpha, beta, a, V, gamma, eta if viscous else 0.0, k, c, r, th_off, th_on,
+            slip, stick)
+
+
+@jit
+def body(M, theta, y0, yd0, s):
+    """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``."""
+    a = M[M_A]
+    p = -s / M[M_ALPHA]
+    D, E = initial_pair(M[M_SLIP], y0 - p, yd0)
+    return (p, 0.0, 0.0, 0.0, D, E, -s * a * math.cos(theta), s * a * math.sin(theta), 0.0)
+
+
+@jit
+def elongation(M, theta, e0, s):
+    """``e(t)`` in slip ``s`` (``s = 0``: flight) from ``e0`` (zero for a rigid contact)."""
+    if math.isinf(M[M_K]):
+        return ZERO9
+    eta, k = M[M_ETA], M[M_K]
+    K = e0 if eta > 0.0 else 0.0
+    if s == 0.0:
+        return (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, K)
+    g = s * M[M_A] / (k * (1.0 + eta * eta))
+    ct = math.cos(theta)
+    st = math.sin(theta)
+    A = g * (ct + eta * st)
+    B = g * (eta * ct - st)
+    p = s / k
+    if eta > 0.0:
+        K = e0 - (p + A)
+    return (p, 0.0, A, B, 0.0, 0.0, 0.0, 0.0, K)
+
+
+@jit
+def slip_velocity(M, ycoef, ecoef, s):
+    """Contact-point velocity times ``s``: ``s (V + y' - e')`` (eq. 10 generalised)."""
+    m = M[M_SLIP]
+    v = scale(add(derivative(ycoef, m), scale(derivative(ecoef, m), -1.0)), s)
+    return (v[0] + s * M[M_V], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8])
+
+
+@jit
+def stick_elongation(M, y0, xd0, e0):
+    """``e(t)`` in stick (finite contact), from the body velocity ``x' = xd0``.
+
+    Takes ``x'`` itself, not ``y' = x' - V``: ``f' = k x'`` with ``k`` up to 1e6
+    would amplify the cancellation in ``V + y'``.
+    """
+    alpha, beta, V = M[M_ALPHA], M[M_BETA], M[M_V]
+    m = M[M_STICK]
+    p1 = alpha * V / beta
+    p0 = (alpha * (e0 - y0) + M[M_GAMMA] * V - 2.0 * m[1] * p1) / beta
+    D, E = initial_pair(m, e0 - p0, xd0 - p1)
+    return (p0, p1, 0.0, 0.0, D, E, 0.0, 0.0, 0.0)
+
+
+@jit
+def stick_force(M, ecoef):
+    """``f = k e + c e'`` in stick (finite contact)."""
+    return add(scale(ecoef, M[M_K]), scale(derivative(ecoef, M[M_STICK]), M[M_C]))
+
+
+@jit
+def rigid_stick_force(M, y0):
+    """``f(t) = -alpha y + gamma V`` with ``y = y0 - V t`` (rigid contact, body at rest)."""
+    alpha, V = M[M_ALPHA], M[M_V]
+    return (-alpha * y0 + M[M_GAMMA] * V, alpha * V, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
 @jit
@@ -61,17 +132,12 @@ def cone_margin(fcoef, theta, s, a):
     ca = a * math.cos(theta)
     sa = a * math.sin(theta)
     return (1.0 - s * fcoef[0], -s * fcoef[1], ca - s * fcoef[2], -sa - s * fcoef[3],
-            -s * fcoef[4], -s * fcoef[5], -s * fcoef[6], -s * fcoef[7])
+            -s * fcoef[4], -s * fcoef[5], -s * fcoef[6], -s * fcoef[7], -s * fcoef[8])
 
 
 @jit
 def normal_force(theta, a):
     return 1.0 + a * math.cos(theta)
-
-
-@jit
-def normal_force_rate(theta, a):
-    return -a * math.sin(theta)
 
 
 @jit

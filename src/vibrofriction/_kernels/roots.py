@@ -1,12 +1,16 @@
 r"""The first zero of an event function on a segment, never missed.
 
 An interval ``[t_a, t_b]`` on which ``g`` is positive at both ends is excluded
-when a bound on ``|g''|`` proves that ``g`` cannot reach zero inside:
+when a bound on ``|g''|`` over it (:func:`.basis.bound_parts`, which shrinks with
+``t_a`` for decaying terms) proves that ``g`` cannot reach zero inside:
 
-* ``min(g_a, g_b) > M_2 h^2 / 8`` (the linear interpolant's error bound), or
-* ``min(s_a, s_b) - M_{2,s} h^2/8 - R > 0`` where ``s`` is ``g`` without the free
-  oscillation ``D cos wt + E sin wt`` of amplitude ``R`` (this keeps very stiff
-  contacts, ``w = sqrt(beta)`` up to 1e3, from being cut into tiny pieces).
+* ``min(g_a, g_b) > M_2 h^2 / 8`` (the linear interpolant's error bound), or the
+  two tangent parabolas from the ends stay positive, or
+* ``min(s_a, s_b) - M_{2,s} h^2/8 - R(t_a) > 0`` where ``s`` is ``g`` without its
+  fast terms (a stiff contact's oscillation at ``sqrt(beta)`` up to 1e3, an
+  over-damped contact's fast decay, a viscoelastic relaxation) whose envelope on
+  the interval is ``R(t_a)``; this keeps fast terms from cutting the segment
+  into tiny pieces.
 
 Intervals that can be neither excluded nor shown to hold exactly one crossing are
 bisected, leftmost first, so the earliest crossing is the one returned.  A
@@ -15,66 +19,76 @@ touching (double) zero is decided by the derivatives at the segment start
 ``H_MIN`` without a sign change: a touch without crossing is not an event.
 """
 
-import math
 
 import numpy as np
 
-from .basis import basis_values, derivative, dot, has_cs, magnitude, sup_bound, value_at_zero
+from .basis import (
+    basis_values,
+    bound_at,
+    bound_parts,
+    derivative,
+    dot,
+    fast_mask,
+    has_cs,
+    magnitude,
+    sup_bound,
+    value_at_zero,
+)
 from .jit import jit
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
-FAST = 4.0  # free oscillations faster than this (w > FAST) are bounded by their amplitude
 REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
 
 
 @jit
-def start_margin(c, w, T):
+def start_margin(c, m, T):
     """Does ``g`` stay positive just after ``t = 0``?
 
     Returns ``(ok, t_safe)``: ``ok`` is True when ``g > 0`` on ``(0, t_safe]``.  A
     zero value at the start is decided by the first non-vanishing derivative
     (up to the third), each compared with its own round-off level.
     """
-    g0 = value_at_zero(c)
+    g0 = value_at_zero(c, m)
     tol = REL_TOL * magnitude(c)
     if g0 > tol:
         return True, 0.0
     if g0 < -tol:
         return False, 0.0
-    c1 = derivative(c, w)
-    c2 = derivative(c1, w)
-    c3 = derivative(c2, w)
-    g1 = value_at_zero(c1)
+    c1 = derivative(c, m)
+    c2 = derivative(c1, m)
+    c3 = derivative(c2, m)
+    g1 = value_at_zero(c1, m)
     tol = REL_TOL * magnitude(c1)
     if g1 > tol:
-        m = sup_bound(c2, w, T)
-        return True, min(T, g1 / m) if m > 0.0 else T
+        b = sup_bound(c2, m, T)
+        return True, min(T, g1 / b) if b > 0.0 else T
     if g1 < -tol:
         return False, 0.0
-    g2 = value_at_zero(c2)
+    g2 = value_at_zero(c2, m)
     tol = REL_TOL * magnitude(c2)
     if g2 > tol:
-        m = sup_bound(c3, w, T)
-        return True, min(T, 1.5 * g2 / m) if m > 0.0 else T
+        b = sup_bound(c3, m, T)
+        return True, min(T, 1.5 * g2 / b) if b > 0.0 else T
     if g2 < -tol:
         return False, 0.0
-    g3 = value_at_zero(c3)
+    g3 = value_at_zero(c3, m)
     tol = REL_TOL * magnitude(c3)
     if g3 > tol:
-        m = sup_bound(derivative(c3, w), w, T)
-        return True, min(T, 2.0 * g3 / m) if m > 0.0 else T
+        b = sup_bound(derivative(c3, m), m, T)
+        return True, min(T, 2.0 * g3 / b) if b > 0.0 else T
     return False, 0.0
 
 
 @jit
-def _refine(c, c1, w, a, b, ga, gb):
+def _refine(c, c1, m, a, b, ga, gb):
     """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone."""
     cs = has_cs(c) or has_cs(c1)
+    ce = c[8] != 0.0
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
     for _ in range(60):
         if not (a < t < b):
             t = 0.5 * (a + b)
-        bv = basis_values(w, t, cs)
+        bv = basis_values(m, t, cs, ce)
         gt = dot(c, bv)
         if gt > 0.0:
             a = t
@@ -96,32 +110,41 @@ def _refine(c, c1, w, a, b, ga, gb):
 
 
 @jit
-def _point(c, c1, w, t, cs):
-    """``g``, its slow part (without ``D cos wt + E sin wt``) and ``g'`` at ``t``."""
-    bv = basis_values(w, t, cs)
+def _point(c, c1, m, t, cs, ce, f1, f2, fe):
+    """``g``, its slow part (without the fast terms) and ``g'`` at ``t``."""
+    bv = basis_values(m, t, cs, ce)
     g = dot(c, bv)
-    return g, g - c[4] * bv[4] - c[5] * bv[5], dot(c1, bv)
+    fast = 0.0
+    if f1:
+        fast += c[4] * bv[4]
+    if f2:
+        fast += c[5] * bv[5]
+    if fe:
+        fast += c[8] * bv[8]
+    return g, g - fast, dot(c1, bv)
 
 
 @jit
-def first_root(c, w, t0, T):
+def first_root(c, m, t0, T):
     """Earliest ``t`` in ``(t0, T]`` where ``g`` crosses from positive to ``<= 0``.
 
     ``g`` must be positive on ``(0, t0]`` (see :func:`start_margin`).  Returns -1.0
     when ``g`` stays positive, and ``t0`` when ``g(t0) <= 0`` already.
     """
-    c1 = derivative(c, w)
-    c2 = derivative(c1, w)
+    c1 = derivative(c, m)
+    c2 = derivative(c1, m)
     cs = has_cs(c) or has_cs(c1)
-    m2 = sup_bound(c2, w, T)
-    # split off the free oscillation only where it is fast (stiff contacts)
-    r = math.hypot(c[4], c[5]) if w > FAST else 0.0
-    m2s = 0.0
-    if r > 0.0:
-        slow = (c[0], c[1], c[2], c[3], 0.0, 0.0, c[6], c[7])
-        m2s = sup_bound(derivative(derivative(slow, w), w), w, T)
+    ce = c[8] != 0.0
+    f1, f2, fe = fast_mask(m)
+    f1 = f1 and c[4] != 0.0
+    f2 = f2 and c[5] != 0.0
+    fe = fe and ce
+    split = f1 or f2 or fe
+    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
+    pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
+    pr = bound_parts(c, m, T, f1, f2, fe, 2)
     a = t0
-    ga, sa, da = _point(c, c1, w, a, cs)
+    ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
         return a
     stack_t = np.empty(96)
@@ -129,7 +152,7 @@ def first_root(c, w, t0, T):
     stack_s = np.empty(96)
     stack_d = np.empty(96)
     stack_t[0] = T
-    stack_g[0], stack_s[0], stack_d[0] = _point(c, c1, w, T, cs)
+    stack_g[0], stack_s[0], stack_d[0] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
     top = 0
     while top >= 0:
         b = stack_t[top]
@@ -137,25 +160,26 @@ def first_root(c, w, t0, T):
         sb = stack_s[top]
         db = stack_d[top]
         h = b - a
+        m2 = bound_at(pm2, a)
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
             if da < 0.0 and -da > m2 * h or h < H_MIN or top >= 95:
-                return _refine(c, c1, w, a, b, ga, gb)
+                return _refine(c, c1, m, a, b, ga, gb)
         else:
             q = 0.125 * h * h
             hh = 0.5 * h
             # lower bounds: the linear interpolant, the two tangent parabolas meeting at
-            # the midpoint, and the slow part minus the fast amplitude
+            # the midpoint, and the slow part minus the fast envelope
             if (min(ga, gb) > m2 * q
                     or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
                         and gb - db * hh - 0.5 * m2 * hh * hh > 0.0)
-                    or (r > 0.0 and min(sa, sb) - m2s * q - r > 0.0)
+                    or (split and min(sa, sb) - bound_at(pm2s, a) * q - bound_at(pr, a) > 0.0)
                     or h < H_MIN or top >= 95):
                 a, ga, sa, da = b, gb, sb, db
                 top -= 1
                 continue
-        m = 0.5 * (a + b)
+        mid = 0.5 * (a + b)
         top += 1
-        stack_t[top] = m
-        stack_g[top], stack_s[top], stack_d[top] = _point(c, c1, w, m, cs)
+        stack_t[top] = mid
+        stack_g[top], stack_s[top], stack_d[top] = _point(c, c1, m, mid, cs, ce, f1, f2, fe)
     return -1.0

@@ -4,7 +4,7 @@ r"""The steady state and the macroscopic coefficient of friction (paper eq. 25).
 from the closed forms, so a periodic orbit gives the ratio exactly.
 
 The run advances one drive period at a time (:func:`advance_period`).  At each
-Poincare section ``tau = 2 pi k`` the state ``z_k = (y, x', f, phase)`` is
+Poincare section ``tau = 2 pi k`` the state ``z_k = (y, x', e, phase)`` is
 compared with ``z_{k-p}`` for ``p = 1..MAX_PERIOD`` (:func:`detect_period`);
 Newton's method on the period map is tried on a schedule (:func:`newton_orbit`);
 continuous sliding is proven where its certificate applies
@@ -19,7 +19,8 @@ doubling checkpoints (:func:`check_average`).  Every result states an estimate o
 * averaged: the disagreement of the last two averaging windows;
 * not converged: no value (``nan``) and ``inf``; the last windows' means are
   reported as a range, never as the answer;
-* continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens).
+* continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens
+  and to damping, docs/damping.md).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS``.
 """
@@ -28,7 +29,7 @@ import math
 
 import numpy as np
 
-from .basis import derivative, evaluate
+from .basis import derivative, evaluate, sup_bound
 from .codes import (
     EV_SECTION,
     FLIGHT,
@@ -41,9 +42,23 @@ from .codes import (
     ST_SLIDING,
     STICK,
 )
-from .integrate import TWO_PI, initial_state, liftoff_phases, segment
+from .integrate import TWO_PI, contact_force, initial_state, segment
 from .jit import jit
-from .phases import free_y, slip_velocity
+from .phases import (
+    M_A,
+    M_ALPHA,
+    M_C,
+    M_K,
+    M_OFF,
+    M_ON,
+    M_R,
+    M_SLIP,
+    M_V,
+    body,
+    elongation,
+    make_model,
+    slip_velocity,
+)
 from .roots import first_root, start_margin
 
 MAX_PERIOD = 12  # longest periodic orbit looked for, in drive periods
@@ -66,23 +81,22 @@ N_ACC = 6
 C_EVENTS, C_DEGENERATE, C_ZERO = 0, 1, 2
 # output columns (solver.FLOAT_COLUMNS, solver.INT_COLUMNS)
 O_MU, O_ERR, O_STICK, O_SLIP, O_SLIP_NEG, O_FLIGHT, O_Y, O_XD, O_F = 0, 1, 2, 3, 4, 5, 6, 7, 8
-O_MULT, O_SETTLE, O_WMIN, O_WMAX, O_DRIFT = 9, 10, 11, 12, 13
+O_MULT, O_SETTLE, O_WMIN, O_WMAX, O_DRIFT, O_E = 9, 10, 11, 12, 13, 14
 I_STATUS, I_PERIOD, I_PERIODS, I_EVENTS, I_PHASE, I_DEGENERATE = 0, 1, 2, 3, 4, 5
 
 
 @jit
-def advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
-    """Integrate one drive period from the section state ``z = (y, x', f, phase)``.
+def advance_period(z, acc, count, M, max_events):
+    """Integrate one drive period from the section state ``z = (y, x', e, phase)``.
 
     ``z`` is updated in place, ``acc`` accumulates the integrals and phase times,
     ``count`` the events, degenerate transitions and zero-length segments.
     Returns False when the integration must stop (event budget, chatter, stuck).
     """
     theta = 0.0
-    y, xd, f, ph = z[0], z[1], z[2], int(z[3])
+    y, xd, e, ph = z[0], z[1], z[2], int(z[3])
     while theta < TWO_PI:
-        t, theta, y, xd, f, ph1, ev, i_f, i_n, ok = segment(
-            theta, y, xd, f, ph, alpha, beta, a, V, th_off, th_on)
+        t, theta, y, xd, e, f, ph1, ev, i_f, i_n, ok = segment(theta, y, xd, e, ph, M)
         acc[A_F] += i_f
         acc[A_N] += i_n
         if ph == STICK:
@@ -102,39 +116,52 @@ def advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
         if (count[C_EVENTS] > max_events or count[C_ZERO] > MAX_ZERO_SEGMENTS
                 or count[C_DEGENERATE] > MAX_DEGENERATE):
             return False
-    z[0], z[1], z[2], z[3] = y, xd, f, ph
+    z[0], z[1], z[2], z[3] = y, xd, e, ph
     return True
 
 
 @jit
-def period_map(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, max_events):
+def period_map(y, xd, e, ph, p, M, max_events):
     """Integrate ``p`` drive periods from the section; returns the state and event count."""
-    z = np.array([y, xd, f, float(ph)])
+    z = np.array([y, xd, e, float(ph)])
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
     for _ in range(p):
-        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+        if not advance_period(z, acc, count, M, max_events):
             return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], False
     return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE] == 0
 
 
 @jit
-def _unpack(z, ph, alpha, a, rigid):
-    """Section state from the free coordinates ``z`` of phase ``ph``."""
-    if ph == STICK:
-        if rigid:
-            return z[0], 0.0, -alpha * z[0]
-        return z[0], z[1], z[2]
-    s = 1.0 if ph == SLIP_POS else -1.0
-    return z[0], z[1], s * (1.0 + a)
+def _spring(M):
+    """The contact stiffness as a weight of ``e`` in distances (0 for a rigid contact)."""
+    return 0.0 if math.isinf(M[M_K]) else M[M_K]
 
 
 @jit
-def _free_dimension(ph, rigid):
-    """Free coordinates on the section: ``y`` (rigid stick), ``y, x'`` (slip), all three."""
+def _unpack(z, ph, M):
+    """Section state ``(y, x', e)`` from the free coordinates ``z`` of phase ``ph``."""
+    rigid = math.isinf(M[M_K])
+    if ph == STICK:
+        if rigid:
+            return z[0], 0.0, 0.0
+        return z[0], z[1], z[2]
+    if rigid:
+        return z[0], z[1], 0.0
+    if M[M_C] > 0.0:
+        return z[0], z[1], z[2]
+    s = 1.0 if ph == SLIP_POS else -1.0
+    return z[0], z[1], s * (1.0 + M[M_A]) / M[M_K]
+
+
+@jit
+def _free_dimension(ph, M):
+    """Free coordinates on the section: ``y`` (rigid stick), ``y, x'`` (elastic slip),
+    ``y, x', e`` (stick, viscoelastic slip)."""
+    rigid = math.isinf(M[M_K])
     if ph == STICK:
         return 1 if rigid else 3
-    return 2
+    return 3 if (M[M_C] > 0.0 and not rigid) else 2
 
 
 @jit
@@ -168,28 +195,30 @@ def _solve_small(m, r, nd):
 
 
 @jit
-def residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on, max_events, jac):
+def residual_jacobian(z, r, ph, p, M, max_events, jac):
     """Difference Jacobian of ``z -> P^p(z) - z`` in the chart of phase ``ph`` (into ``jac``).
 
     ``r`` is the residual at ``z``.  Returns ``(ok, events)``; not ok when a
     perturbed image leaves the chart or the integration fails.
     """
-    rigid = math.isinf(beta)
-    nd = _free_dimension(ph, rigid)
+    nd = _free_dimension(ph, M)
+    kk = _spring(M)
     events = 0
     for j in range(nd):
-        h = 1e-7 * (1.0 + abs(z[j]))
+        if j == 2:  # e: the step of a force change 1e-7 (1 + |f|)
+            h = 1e-7 * (abs(z[2]) + 1.0 / kk)
+        else:
+            h = 1e-7 * (1.0 + abs(z[j]))
         zp = z.copy()
         zp[j] += h
-        y2, xd2, f2 = _unpack(zp, ph, alpha, a, rigid)
-        y3, xd3, f3, ph3, ev, ok = period_map(y2, xd2, f2, ph, p, alpha, beta, a, V,
-                                              th_off, th_on, max_events)
+        y2, xd2, e2 = _unpack(zp, ph, M)
+        y3, xd3, e3, ph3, ev, ok = period_map(y2, xd2, e2, ph, p, M, max_events)
         events += ev
         if ph3 != ph or not ok:
             return False, events
         jac[0, j] = ((y3 - y2) - r[0]) / h
         jac[1, j] = ((xd3 - xd2) - r[1]) / h
-        jac[2, j] = ((f3 - f2) - r[2]) / h
+        jac[2, j] = ((e3 - e2) - r[2]) / h
     return True, events
 
 
@@ -203,7 +232,7 @@ def spectral_radius(jac, nd):
 
 
 @jit
-def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_events):
+def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
 
     Only attracting orbits are accepted (spectral radius of ``DP^p`` below
@@ -212,58 +241,58 @@ def newton_orbit(y, xd, f, ph, p, alpha, beta, a, V, th_off, th_on, tol, max_eve
     slip) that the motion from the start need never approach.  An iterate whose
     image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
     where the guess slid, or vice versa) continues in that phase's coordinates.
-    Returns ``(ok, y, x', f, phase, events)``.
+    Returns ``(ok, y, x', e, phase, events)``.
     """
     ph_in = ph
-    rigid = math.isinf(beta)
-    nd = _free_dimension(ph, rigid)
-    z = np.array([y, xd, f])
+    alpha = M[M_ALPHA]
+    kk = _spring(M)
+    nd = _free_dimension(ph, M)
+    z = np.array([y, xd, e])
     events = 0
     jac = np.zeros((3, 3))
     have_jac = False
     res_prev = np.inf
-    scale0 = 1.0 + alpha * abs(y) + abs(xd) + abs(f)
+    scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
     for _ in range(NEWTON_ITERATIONS):
-        if alpha * abs(z[0] - y) + abs(z[1] - xd) + abs(z[2] - f) > NEWTON_DIVERGED * scale0:
-            return False, y, xd, f, ph_in, events
-        y0, xd0, f0 = _unpack(z, ph, alpha, a, rigid)
-        y1, xd1, f1, ph1, ev, ok = period_map(y0, xd0, f0, ph, p, alpha, beta, a, V,
-                                              th_off, th_on, max_events)
+        if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
+                > NEWTON_DIVERGED * scale0):
+            return False, y, xd, e, ph_in, events
+        y0, xd0, e0 = _unpack(z, ph, M)
+        y1, xd1, e1, ph1, ev, ok = period_map(y0, xd0, e0, ph, p, M, max_events)
         events += ev
         if not ok:
-            return False, y, xd, f, ph_in, events
+            return False, y, xd, e, ph_in, events
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
             ph = ph1
-            nd = _free_dimension(ph, rigid)
-            z[0], z[1], z[2] = y1, xd1, f1
+            nd = _free_dimension(ph, M)
+            z[0], z[1], z[2] = y1, xd1, e1
             have_jac = False
             res_prev = np.inf
             continue
-        r = np.array([y1 - y0, xd1 - xd0, f1 - f0])
-        res = alpha * abs(r[0]) + abs(r[1]) + (abs(r[2]) if nd == 3 else 0.0)
+        r = np.array([y1 - y0, xd1 - xd0, e1 - e0])
+        res = alpha * abs(r[0]) + abs(r[1]) + (kk * abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale0:
             if not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
-                return False, y, xd, f, ph_in, events
-            return True, y0, xd0, f0, ph, events
+                return False, y, xd, e, ph_in, events
+            return True, y0, xd0, e0, ph, events
         if not have_jac or res > 0.25 * res_prev:
             # (re)build the Jacobian; otherwise chord steps with the old one
-            have_jac, ev = residual_jacobian(z, r, ph, p, alpha, beta, a, V, th_off, th_on,
-                                             max_events, jac)
+            have_jac, ev = residual_jacobian(z, r, ph, p, M, max_events, jac)
             events += ev
             if not have_jac:
-                return False, y, xd, f, ph_in, events
+                return False, y, xd, e, ph_in, events
         res_prev = res
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
-            return False, y, xd, f, ph_in, events
+            return False, y, xd, e, ph_in, events
         for j in range(nd):
             z[j] += dz[j]
-    return False, y, xd, f, ph_in, events
+    return False, y, xd, e, ph_in, events
 
 
 @jit
-def leading_multiplier(z, z1, p, alpha, beta, a, V, th_off, th_on, max_events):
+def leading_multiplier(z, z1, p, M, max_events):
     """Modulus of the leading Floquet multiplier of the p-periodic orbit through ``z``.
 
     ``z1`` is the image of the section state ``z`` after ``p`` periods (already
@@ -276,11 +305,10 @@ def leading_multiplier(z, z1, p, alpha, beta, a, V, th_off, th_on, max_events):
         return math.nan, 0
     r = np.array([z1[0] - z[0], z1[1] - z[1], z1[2] - z[2]])
     jac = np.zeros((3, 3))
-    ok, ev = residual_jacobian(z[:3].copy(), r, ph, p, alpha, beta, a, V, th_off, th_on,
-                               max_events, jac)
+    ok, ev = residual_jacobian(z[:3].copy(), r, ph, p, M, max_events, jac)
     if not ok:
         return math.nan, ev
-    return spectral_radius(jac, _free_dimension(ph, math.isinf(beta))), ev
+    return spectral_radius(jac, _free_dimension(ph, M)), ev
 
 
 @jit
@@ -292,88 +320,99 @@ def _slip_arcs(a, th_off, th_on):
 
 
 @jit
-def _slip_flight_period(alpha, a, y, yd, th_off, th_on):
-    """``(y, y')`` after one period of forward slip in contact and flight out of it.
-
-    ``y'' + alpha y = -n(tau)``, ``n = max(0, 1 + a cos tau)``: the motion of a body
-    whose contact point never stops (``f = n``), closed form arc by arc.
-    """
-    w = math.sqrt(alpha)
-    narcs, t0, t1, t2, t3 = _slip_arcs(a, th_off, th_on)
-    c = free_y(alpha, w, t0, y, yd, 1.0, a)
-    y, yd = evaluate(c, w, t1 - t0), evaluate(derivative(c, w), w, t1 - t0)
-    if narcs == 2:
-        c = free_y(alpha, w, t1, y, yd, 0.0, a)
-        y, yd = evaluate(c, w, t2 - t1), evaluate(derivative(c, w), w, t2 - t1)
-        c = free_y(alpha, w, t2, y, yd, 1.0, a)
-        y, yd = evaluate(c, w, t3 - t2), evaluate(derivative(c, w), w, t3 - t2)
-    return y, yd
+def _free_arc(M, theta, T, y, yd, e, s):
+    """``(y, y', e)`` after ``T`` of forward slip (``s = 1``) or flight (``s = 0``)."""
+    m = M[M_SLIP]
+    c = body(M, theta, y, yd, s)
+    ce = elongation(M, theta, e, s)
+    return evaluate(c, m, T), evaluate(derivative(c, m), m, T), evaluate(ce, m, T)
 
 
 @jit
-def sliding_orbit(alpha, beta, a, th_off, th_on):
-    """The periodic solution of forward slip (and flight): ``(ok, y*, y*')`` at ``tau = 0``.
+def _slip_flight_period(M, y, yd, e):
+    """``(y, y', e)`` after one period of forward slip in contact and flight out of it.
+
+    ``y'' + gamma y' + alpha y = -n(tau)``, ``n = max(0, 1 + a cos tau)``: the motion
+    of a body whose contact point never stops (``f = n``), closed form arc by arc.
+    """
+    narcs, t0, t1, t2, t3 = _slip_arcs(M[M_A], M[M_OFF], M[M_ON])
+    y, yd, e = _free_arc(M, t0, t1 - t0, y, yd, e, 1.0)
+    if narcs == 2:
+        y, yd, e = _free_arc(M, t1, t2 - t1, y, yd, e, 0.0)
+        y, yd, e = _free_arc(M, t2, t3 - t2, y, yd, e, 1.0)
+    return y, yd, e
+
+
+@jit
+def sliding_orbit(M):
+    """The periodic solution of forward slip (and flight): ``(ok, y*, y*', e*)`` at ``tau = 0``.
 
     Forward slip is linear, so its period map is affine, ``z -> R z + b`` with ``R``
-    the free rotation at ``sqrt(alpha)``; the fixed point solves ``(I - R) z = b``.
-    Not ok where ``sqrt(alpha)`` is (nearly) an integer (a harmonic of ``n``
-    resonates and no bounded sliding solution exists) or ``a = 0``.
+    the free motion at ``sqrt(alpha)`` (decaying with the pin's damping) and ``e``
+    relaxing on its own; the fixed point solves ``(I - R) z = b``.  Not ok where the
+    undamped ``sqrt(alpha)`` is (nearly) an integer (a harmonic of ``n`` resonates
+    and no bounded sliding solution exists) or ``a = 0``.
     """
+    a = M[M_A]
     if a == 0.0:
-        return False, 0.0, 0.0
-    b0, b1 = _slip_flight_period(alpha, a, 0.0, 0.0, th_off, th_on)
-    r00, r10 = _slip_flight_period(alpha, a, 1.0, 0.0, th_off, th_on)
-    r01, r11 = _slip_flight_period(alpha, a, 0.0, 1.0, th_off, th_on)
+        return False, 0.0, 0.0, 0.0
+    b0, b1, be = _slip_flight_period(M, 0.0, 0.0, 0.0)
+    r00, r10, _ = _slip_flight_period(M, 1.0, 0.0, 0.0)
+    r01, r11, _ = _slip_flight_period(M, 0.0, 1.0, 0.0)
     m00, m01 = 1.0 - (r00 - b0), -(r01 - b0)
     m10, m11 = -(r10 - b1), 1.0 - (r11 - b1)
-    det = m00 * m11 - m01 * m10  # = 2 - 2 cos(2 pi sqrt(alpha))
+    det = m00 * m11 - m01 * m10  # = 2 - 2 cos(2 pi sqrt(alpha)) undamped
     if not abs(det) > 1e-6:
-        return False, 0.0, 0.0
-    return True, (m11 * b0 - m01 * b1) / det, (m00 * b1 - m10 * b0) / det
+        return False, 0.0, 0.0, 0.0
+    es = 0.0
+    if M[M_C] > 0.0:
+        es = be / -math.expm1(-TWO_PI * M[M_R])  # e -> e^{-2 pi r} e + be
+    return True, (m11 * b0 - m01 * b1) / det, (m00 * b1 - m10 * b0) / det, es
 
 
 @jit
-def sliding_certificate(y, xd, ph, alpha, beta, a, V, orbit_ok, ys, yds, th_off, th_on):
+def sliding_certificate(y, xd, e, ph, M, orbit_ok, ys, yds, es):
     """Is continuous forward sliding proven from this section state (eqs. 7-12)?
 
-    Without stick the motion is the sliding orbit ``(ys, yds)`` of
-    :func:`sliding_orbit` plus a free oscillation at ``sqrt(alpha)`` whose velocity
-    amplitude ``A`` is conserved (slip and flight dissipate nothing it could store).
-    The contact point keeps sliding forward, and at every touch-down starts sliding
-    again rather than sticking, as long as its velocity on the orbit,
-    ``V + y*' - n'/k``, exceeds ``A`` on every arc in contact.  That is checked with
-    the event root finder (which never misses a zero) on ``V + y*' - n'/k - A``;
-    then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.  For ``a <= 1`` the minimum
-    of the orbit's contact velocity is ``V - V*`` (eq. 12), the classic condition.
+    Without stick the motion is the sliding orbit ``(ys, yds, es)`` of
+    :func:`sliding_orbit` plus a free motion of the body, whose energy
+    ``(z'^2 + alpha z^2)/2`` slip and flight never increase, and a relaxation of
+    ``e`` that only decays.  The contact point keeps sliding forward, and at every
+    touch-down starts sliding again rather than sticking, as long as its velocity on
+    the orbit, ``V + y*' - e*'``, exceeds the bound ``A + r |e - e*|`` of those on
+    every arc in contact.  That is checked with the event root finder (which never
+    misses a zero); then ``f = n`` for ever and ``mu/mu0 = 1`` exactly.  For
+    ``a <= 1`` the minimum of the orbit's contact velocity is ``V - V_c``
+    (eq. 12 generalised, docs/damping.md), the classic condition.
     """
     if ph != SLIP_POS or not orbit_ok:
         return False
-    w = math.sqrt(alpha)
-    k = beta - alpha
-    amp = math.sqrt((xd - V - yds) ** 2 + alpha * (y - ys) ** 2)
+    alpha, V = M[M_ALPHA], M[M_V]
+    m = M[M_SLIP]
+    amp = math.sqrt((xd - V - yds) ** 2 + alpha * (y - ys) ** 2) + M[M_R] * abs(e - es)
     margin = amp * (1.0 + 1e-9) + 1e-9 * (1.0 + V)
-    if margin >= V + a / w + a / k + abs(yds) + 10.0 * (1.0 + a):
-        return False  # cannot hold: skip the root search
-    narcs, t0, t1, t2, t3 = _slip_arcs(a, th_off, th_on)
-    y0, yd0 = ys, yds
+    narcs, t0, t1, t2, t3 = _slip_arcs(M[M_A], M[M_OFF], M[M_ON])
+    y0, yd0, e0 = ys, yds, es
     for i in range(narcs):
         theta, T = (t0, t1 - t0) if i == 0 else (t2, t3 - t2)
-        if i == 1:
-            c = free_y(alpha, w, t1, y0, yd0, 0.0, a)  # through the flight
-            y0, yd0 = evaluate(c, w, t2 - t1), evaluate(derivative(c, w), w, t2 - t1)
-        c = free_y(alpha, w, theta, y0, yd0, 1.0, a)
-        g = slip_velocity(c, w, theta, 1.0, a, V, k)
-        g = (g[0] - margin, g[1], g[2], g[3], g[4], g[5], g[6], g[7])
-        ok, ts = start_margin(g, w, T)
-        if not ok or first_root(g, w, ts, T) >= 0.0:
+        if i == 1:  # through the flight
+            y0, yd0, e0 = _free_arc(M, t1, t2 - t1, y0, yd0, e0, 0.0)
+        c = body(M, theta, y0, yd0, 1.0)
+        ce = elongation(M, theta, e0, 1.0)
+        g = slip_velocity(M, c, ce, 1.0)
+        if margin >= sup_bound(g, m, T):
+            return False  # cannot hold: skip the root search
+        g = (g[0] - margin, g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8])
+        ok, ts = start_margin(g, m, T)
+        if not ok or first_root(g, m, ts, T) >= 0.0:
             return False
-        y0, yd0 = evaluate(c, w, T), evaluate(derivative(c, w), w, T)
+        y0, yd0, e0 = evaluate(c, m, T), evaluate(derivative(c, m), m, T), evaluate(ce, m, T)
     return True
 
 
 @jit
-def _distance(alpha, z1, z2):
-    return alpha * abs(z1[0] - z2[0]) + abs(z1[1] - z2[1]) + abs(z1[2] - z2[2])
+def _distance(alpha, kk, z1, z2):
+    return alpha * abs(z1[0] - z2[0]) + abs(z1[1] - z2[1]) + kk * abs(z1[2] - z2[2])
 
 
 @jit
@@ -388,7 +427,7 @@ def _window_mu(win):
 
 
 @jit
-def detect_period(ring_z, dprev, k, alpha, tol_state):
+def detect_period(ring_z, dprev, k, M, tol_state):
     """The shortest ``p`` with ``z_k`` within ``tol_state`` of ``z_{k-p}`` (same phase).
 
     Returns ``(p, d, rho)``: ``p = 0`` if none; ``d`` the section distance and
@@ -398,7 +437,9 @@ def detect_period(ring_z, dprev, k, alpha, tol_state):
     nring = MAX_PERIOD + 1
     slot = k % nring
     z = ring_z[slot]
-    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + abs(z[2])
+    alpha = M[M_ALPHA]
+    kk = _spring(M)
+    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + kk * abs(z[2])
     for p in range(1, MAX_PERIOD + 1):
         if p > k:
             break
@@ -406,7 +447,7 @@ def detect_period(ring_z, dprev, k, alpha, tol_state):
         if ring_z[old, 3] != z[3]:
             dprev[p] = np.inf
             continue
-        d = _distance(alpha, z, ring_z[old])
+        d = _distance(alpha, kk, z, ring_z[old])
         if d <= tol_state * scale:
             rho = d / dprev[p] if dprev[p] > 0.0 and np.isfinite(dprev[p]) else 0.0
             return p, d, min(rho, RHO_MAX)
@@ -423,7 +464,7 @@ def _window(acc, ring_c, k, p, win):
 
 
 @jit
-def transient_deviation(z0, mu, alpha, beta, a, V, th_off, th_on, max_events):
+def transient_deviation(z0, mu, M, max_events):
     """``|mean over periods (N, 2N] - mu|`` of the motion from ``z0`` (``N = NEUTRAL_WINDOW``).
 
     Used where the orbit is neutral: the motion from the start need not approach it
@@ -437,14 +478,13 @@ def transient_deviation(z0, mu, alpha, beta, a, V, th_off, th_on, max_events):
     for k in range(2 * NEUTRAL_WINDOW):
         if k == NEUTRAL_WINDOW:
             acc[:] = 0.0
-        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+        if not advance_period(z, acc, count, M, max_events):
             return math.inf, count[C_EVENTS]
     return abs(acc[A_F] / acc[A_N] - mu), count[C_EVENTS]
 
 
 @jit
-def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a, V, th_off,
-                    th_on, max_events, out_f):
+def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, out_f):
     """Average, error, multiplier and settling time of a p-periodic orbit.
 
     ``win`` holds the accumulators of the last ``p`` periods (one period of the
@@ -466,12 +506,12 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a,
     count = np.zeros(3, np.int64)
     d_mu = 0.0
     for _ in range(p):
-        if not advance_period(z2, acc2, count, alpha, beta, a, V, th_off, th_on, max_events):
+        if not advance_period(z2, acc2, count, M, max_events):
             d_mu = math.inf
     d_mu = max(d_mu, abs(_window_mu(acc2) - mu))
     lam, ev = math.nan, 0
     if math.isfinite(d_mu) and count[C_DEGENERATE] == 0:  # z2 is the exact image of z
-        lam, ev = leading_multiplier(z, z2, p, alpha, beta, a, V, th_off, th_on, max_events)
+        lam, ev = leading_multiplier(z, z2, p, M, max_events)
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
     err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)
@@ -479,7 +519,7 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a,
         # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
         # need not approach it (no settling time; said in the message, docs/solver.md)
         settle = math.nan
-        dev, ev2 = transient_deviation(z0, mu, alpha, beta, a, V, th_off, th_on, max_events)
+        dev, ev2 = transient_deviation(z0, mu, M, max_events)
         ev += ev2
         err = max(err, dev)
     elif first_jump >= 0:
@@ -495,7 +535,7 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, alpha, beta, a,
 
 
 @jit
-def try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on, tol_state, max_events):
+def try_newton(z, ring_z, dprev, k, M, tol_state, max_events):
     """Newton on the period whose section distance is smallest, then on ``p = 1``.
 
     On success ``z`` (and its ring slot) become the orbit's state.  Returns
@@ -510,11 +550,11 @@ def try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on, tol_state,
         p = pbest if attempt == 0 else 1
         if attempt == 1 and pbest == 1:
             break
-        ok, y, xd, f, ph, ev = newton_orbit(z[0], z[1], z[2], int(z[3]), p, alpha, beta, a,
-                                            V, th_off, th_on, 0.1 * tol_state, max_events)
+        ok, y, xd, e, ph, ev = newton_orbit(z[0], z[1], z[2], int(z[3]), p, M,
+                                            0.1 * tol_state, max_events)
         events += ev
         if ok:
-            z[0], z[1], z[2], z[3] = y, xd, f, ph
+            z[0], z[1], z[2], z[3] = y, xd, e, ph
             ring_z[k % (MAX_PERIOD + 1), :] = z
             dprev[:] = np.inf
             return p, events
@@ -576,23 +616,23 @@ def _fractions(win, status, out_f):
 
 
 @jit
-def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, min_periods,
-                 tol_state, tol_mean, max_events, out_f, out_i):
+def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_periods,
+                 min_periods, tol_state, tol_mean, max_events, out_f, out_i):
     """Long-time average from a given start, written into the rows ``out_f``, ``out_i``.
 
-    ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, y0', f0, ph0)``
+    ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)``
     at ``tau = 0``.  The columns are ``solver.FLOAT_COLUMNS`` and
     ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and
     the state is the final one on the section.
     """
+    M = make_model(alpha, beta, a, V, zeta, eta)
     z = np.empty(4)
     if init_kind == 2:
-        z[0], z[1], z[2], z[3] = y0, xd0, f0, ph0
+        z[0], z[1], z[2], z[3] = y0, xd0, e0, ph0
     else:
-        z[0], z[1], z[2], z[3] = initial_state(init_kind, alpha, beta, a, V)
+        z[0], z[1], z[2], z[3], _ = initial_state(init_kind, M)
     z0 = z.copy()
-    th_off, th_on = liftoff_phases(a)
-    orbit_ok, ys, yds = sliding_orbit(alpha, beta, a, th_off, th_on)
+    orbit_ok, ys, yds, es = sliding_orbit(M)
     nring = MAX_PERIOD + 1
     ring_z = np.zeros((nring, 4))
     ring_c = np.zeros((nring, N_ACC))
@@ -612,23 +652,21 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
     k = 0
     period = 0
     while True:
-        if not advance_period(z, acc, count, alpha, beta, a, V, th_off, th_on, max_events):
+        if not advance_period(z, acc, count, M, max_events):
             status = ST_FAILED
             break
         k += 1
         ring_z[k % nring, :] = z
         ring_c[k % nring, :] = acc
-        p, d, rho = detect_period(ring_z, dprev, k, alpha, tol_state)
+        p, d, rho = detect_period(ring_z, dprev, k, M, tol_state)
         if p > 0:
             _window(acc, ring_c, k, p, win)
             count[C_EVENTS] += periodic_result(z, z0, win, p, k, rho, first_jump, mu_first,
-                                               alpha, beta, a, V, th_off, th_on, max_events,
-                                               out_f)
+                                               M, max_events, out_f)
             status = ST_PERIODIC
             period = p
             break
-        if sliding_certificate(z[0], z[1], int(z[3]), alpha, beta, a, V, orbit_ok, ys, yds,
-                               th_off, th_on):
+        if sliding_certificate(z[0], z[1], z[2], int(z[3]), M, orbit_ok, ys, yds, es):
             out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
             win[:] = 0.0
             win[A_SLIP] = 1.0
@@ -636,8 +674,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
             break
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
-            pn, ev = try_newton(z, ring_z, dprev, k, alpha, beta, a, V, th_off, th_on,
-                                tol_state, max_events)
+            pn, ev = try_newton(z, ring_z, dprev, k, M, tol_state, max_events)
             count[C_EVENTS] += ev
             if pn > 0 and first_jump < 0:
                 _window(acc, ring_c, k, pn, win)
@@ -664,7 +701,8 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
     if status == ST_FAILED or not math.isfinite(out_f[O_ERR]):
         out_f[O_ERR] = math.inf  # no estimate: nothing is known about the value
     _fractions(win, status, out_f)
-    out_f[O_Y], out_f[O_XD], out_f[O_F] = z[0], z[1], z[2]
+    out_f[O_Y], out_f[O_XD], out_f[O_E] = z[0], z[1], z[2]
+    out_f[O_F] = contact_force(M, int(z[3]), 0.0, z[0], z[1], z[2])
     out_i[I_STATUS] = status
     out_i[I_PERIOD] = period
     out_i[I_PERIODS] = k
@@ -674,7 +712,7 @@ def steady_state(alpha, beta, a, V, init_kind, y0, xd0, f0, ph0, max_periods, mi
 
 
 @jit
-def steady_state_many(alpha, beta, a, V, init_kind, init, max_periods, min_periods,
+def steady_state_many(alpha, beta, a, V, zeta, eta, init_kind, init, max_periods, min_periods,
                       tol_state, tol_mean, max_events, out_f, out_i):
     """:func:`steady_state` over arrays of points (one compiled loop, no Python calls).
 
@@ -682,6 +720,7 @@ def steady_state_many(alpha, beta, a, V, init_kind, init, max_periods, min_perio
     ``out_f`` and ``out_i`` receives point ``i``.
     """
     for i in range(V.shape[0]):
-        steady_state(alpha[i], beta[i], a[i], V[i], init_kind, init[i, 0], init[i, 1],
+        steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], init_kind, init[i, 0],
+                     init[i, 1],
                      init[i, 2], int(init[i, 3]), max_periods, min_periods, tol_state,
                      tol_mean, max_events, out_f[i], out_i[i])

@@ -46,6 +46,8 @@ def sweep(
     alpha: ArrayLike | None = None,
     beta: ArrayLike | None = None,
     amplitude: ArrayLike | None = None,
+    zeta: ArrayLike | None = None,
+    eta_c: ArrayLike | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -72,9 +74,11 @@ def sweep(
         (``alpha``, ``beta``, ``amplitude`` keywords override it) or a
         :class:`~vibrofriction.params.Physical` system, swept over any of its SI
         fields passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
-        du_z=..., omega=..., mu0=...``) and the velocity ``v0`` (m/s).
+        du_z=..., omega=..., mu0=..., c_x=..., c_xc=...``) and the velocity ``v0`` (m/s).
     alpha, beta, amplitude : eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid
         contact.  ``beta > alpha`` must hold at every grid point.
+    zeta, eta_c : the pin's damping ratio and the contact's loss factor (docs/damping.md);
+        default the system's, or 0.  Physical systems sweep ``c_x``, ``c_xc`` (N s/m).
     vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
         exist where ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``) or the inertial
         velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6).
@@ -118,7 +122,8 @@ def sweep(
     parameters only.  Raises ``ValueError`` before any work for a bad grid.
     """
     version, fingerprint = identity()
-    plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
+    plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,
+                     eta_c=eta_c, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=version, fingerprint=fingerprint)

@@ -76,45 +76,50 @@ def _velocity_values(plan: Plan, block: int) -> np.ndarray:
 
 
 def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
-    """``alpha, beta, amplitude`` per row, the row variables and ``V`` per (row, velocity)."""
+    """``alpha, beta, amplitude, zeta, eta_c`` per row, the row variables and ``V`` per
+    (row, velocity)."""
     p = _rows(plan, block)
-    al, be, am = p["alpha"], p["beta"], p["amplitude"]
-    # V at vbar = 1, eq. (12): also where vbar does not exist (inf in case IV, 0 in case III)
-    critical = np.asarray(theory.inertial_per_vbar(al, be, am), dtype=float).reshape(al.shape)
+    point = tuple(p[n] for n in ("alpha", "beta", "amplitude", "zeta", "eta_c"))
+    shape = point[0].shape
+    # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
+    critical = np.asarray(theory.critical_inertial_velocity(*point), dtype=float).reshape(shape)
     if plan.velocity.name == "vbar":
-        V = np.asarray(vbar_to_inertial(al[..., None], be[..., None], am[..., None], vel),
-                       dtype=float).reshape((*al.shape, vel.size))
+        al, be, am, ze, et = (x[..., None] for x in point)
+        V = np.asarray(vbar_to_inertial(al, be, am, vel, ze, et),
+                       dtype=float).reshape((*shape, vel.size))
     else:
-        V = np.broadcast_to(vel, (*al.shape, vel.size)).copy()
-    return (al, be, am), {"critical_velocity": critical}, V
+        V = np.broadcast_to(vel, (*shape, vel.size)).copy()
+    return point, {"critical_velocity": critical}, V
 
 
 def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     p = _rows(plan, block)
     shape = p["mass"].shape
-    al, be, am = (np.empty(shape) for _ in range(3))
+    al, be, am, ze, et = (np.empty(shape) for _ in range(5))
     V = np.empty((*shape, vel.size))
+    vstar = np.empty(shape)
     for i in np.ndindex(shape):
         system = Physical(**{name: float(arr[i]) for name, arr in p.items()})
         dim = system.to_dimensionless()
-        al[i], be[i], am[i] = dim.alpha, dim.beta, dim.amplitude
+        al[i], be[i], am[i], ze[i], et[i] = (dim.alpha, dim.beta, dim.amplitude, dim.zeta,
+                                             dim.eta_c)
         V[i] = system.v0_to_inertial(vel)
-    vstar = np.asarray(theory.critical_velocity(p["mu0"], p["omega"], p["du_z"], p["k_zc"],
-                                                p["k_xc"], p["k_x"], p["mass"]),
-                       dtype=float).reshape(shape)
-    rows = {"critical_velocity": vstar, "alpha": al, "beta": be, "amplitude": am}
-    return (al, be, am), rows, V
+        vstar[i] = system.critical_velocity()
+    rows = {"critical_velocity": vstar, "alpha": al, "beta": be, "amplitude": am,
+            "zeta": ze, "eta_c": et}
+    return (al, be, am, ze, et), rows, V
 
 
-def _continuation(al, be, am, V, plan: Plan) -> dict[str, np.ndarray]:
+def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
     """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``."""
-    rshape, nv = al.shape, V.shape[-1]
+    rshape, nv = point[0].shape, V.shape[-1]
     out: dict[str, np.ndarray] | None = None
     for i in np.ndindex(rshape):
         state = None
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
-            cols = solve_points(al[i], be[i], am[i], V[i][j],
+            al, be, am, ze, et = (x[i] for x in point)
+            cols = solve_points(al, be, am, V[i][j], ze, et,
                                 initial=state if state is not None else plan.initial,
                                 settings=plan.settings)
             if out is None:
@@ -122,7 +127,7 @@ def _continuation(al, be, am, V, plan: Plan) -> dict[str, np.ndarray]:
             for k, v in cols.items():
                 out[k][(*i, d, j)] = v
             state = section_state(*(float(cols[k]) for k in ("y", "x_dot", "f")),
-                                  int(cols["phase"]))
+                                  int(cols["phase"]), float(cols["e"]))
     assert out is not None
     return out
 
@@ -134,16 +139,17 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
     """
     vel = _velocity_values(plan, block)
     if plan.kind == "physical":
-        (al, be, am), rows, V = _physical_rows(plan, block, vel)
+        point, rows, V = _physical_rows(plan, block, vel)
     else:
-        (al, be, am), rows, V = _dimensionless_rows(plan, block, vel)
+        point, rows, V = _dimensionless_rows(plan, block, vel)
     if plan.continuation:
-        cols = _continuation(al, be, am, V, plan)
+        cols = _continuation(point, V, plan)
         shape = V.shape[:-1] + (2, V.shape[-1])
         V = np.broadcast_to(V[..., None, :], shape)
     else:
-        b = tuple(x[..., None] for x in (al, be, am))
-        cols = solve_points(*b, V, initial=plan.initial, settings=plan.settings)
+        al, be, am, ze, et = (x[..., None] for x in point)
+        cols = solve_points(al, be, am, V, ze, et, initial=plan.initial,
+                            settings=plan.settings)
         shape = V.shape
     cols["v_inertial"] = V
     block_shape = tuple(s.stop - s.start for s in plan.block_slices(block))

@@ -65,7 +65,7 @@ def template(plan: Plan, values: dict[str, np.ndarray] | None) -> xr.Dataset:
         data_vars[var.name] = (plan.dims, data(var, plan.shape, plan.chunks), var.attrs)
     for var in row_variables(plan.kind):
         item = (plan.row_dims, data(var, plan.row_shape, plan.chunks[:nrow]), var.attrs)
-        if var.name in ("alpha", "beta", "amplitude"):  # physical sweeps: derived coords
+        if var.name in ("alpha", "beta", "amplitude", "zeta", "eta_c"):  # physical: derived
             coords[var.name] = item
         else:
             data_vars[var.name] = item

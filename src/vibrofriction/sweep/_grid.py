@@ -38,7 +38,7 @@ __all__ = [
     "parse_axis",
 ]
 
-DIMENSIONLESS = ("alpha", "beta", "amplitude")
+DIMENSIONLESS = ("alpha", "beta", "amplitude", "zeta", "eta_c")
 PHYSICAL = tuple(f.name for f in dataclasses.fields(Physical))
 DIRECTIONS = ("up", "down")
 DEFAULT_CHUNK_SIZE = 1000
@@ -258,6 +258,8 @@ def make_plan(
     alpha: ArrayLike | None = None,
     beta: ArrayLike | None = None,
     amplitude: ArrayLike | None = None,
+    zeta: ArrayLike | None = None,
+    eta_c: ArrayLike | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -274,11 +276,12 @@ def make_plan(
     if isinstance(system, Physical):
         kind = "physical"
         params, velocity = _physical_axes(system, dict(physical or {}), v0, dict(
-            alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar, v_inertial=v_inertial))
+            alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, vbar=vbar,
+            v_inertial=v_inertial))
     else:
         kind = "dimensionless"
-        params, velocity = _dimensionless_axes(system, alpha, beta, amplitude, vbar,
-                                               v_inertial, dict(physical or {}), v0)
+        params, velocity = _dimensionless_axes(system, alpha, beta, amplitude, zeta, eta_c,
+                                               vbar, v_inertial, dict(physical or {}), v0)
     if continuation:
         _check_continuation(velocity)
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
@@ -306,7 +309,8 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     """The SI axes (canonical order) and ``v0`` of a sweep around ``system``."""
     if any(v is not None for v in dimensionless.values()):
         raise ValueError("a Physical system is swept over its SI parameters and v0; "
-                         "alpha, beta, amplitude, vbar, v_inertial are not allowed")
+                         "alpha, beta, amplitude, zeta, eta_c, vbar, v_inertial are not "
+                         "allowed (sweep c_x, c_xc instead of zeta, eta_c)")
     unknown = sorted(set(physical) - set(PHYSICAL))
     if unknown:
         raise ValueError(f"unknown physical parameter(s) {unknown}; "
@@ -325,10 +329,12 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
 
 
 def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | None,
-                        amplitude: ArrayLike | None, vbar: ArrayLike | None,
+                        amplitude: ArrayLike | None, zeta: ArrayLike | None,
+                        eta_c: ArrayLike | None, vbar: ArrayLike | None,
                         v_inertial: ArrayLike | None, physical: dict[str, ArrayLike],
                         v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
-    """The ``alpha, beta, amplitude`` axes and the velocity axis (``vbar`` or ``v_inertial``)."""
+    """The ``alpha, beta, amplitude, zeta, eta_c`` axes and the velocity axis (``vbar`` or
+    ``v_inertial``); ``zeta`` and ``eta_c`` default to the system's (0 without one)."""
     if physical:
         raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
                          "system (sweep(Physical(...), v0=..., ...))")
@@ -338,6 +344,8 @@ def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | 
         alpha = system.alpha if alpha is None else alpha
         beta = system.beta if beta is None else beta
         amplitude = system.amplitude if amplitude is None else amplitude
+        zeta = system.zeta if zeta is None else zeta
+        eta_c = system.eta_c if eta_c is None else eta_c
     elif system is not None:
         raise TypeError(f"system must be a Dimensionless or Physical, "
                         f"got {type(system).__name__}")
@@ -350,10 +358,14 @@ def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | 
         raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
                          f"(got {given or 'none'})")
     al, be, am = _axis("alpha", alpha), _axis("beta", beta), _axis("amplitude", amplitude)
+    ze = _axis("zeta", 0.0 if zeta is None else zeta)
+    et = _axis("eta_c", 0.0 if eta_c is None else eta_c)
     velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
     checked("alpha", al.values, minimum=0.0, strict=True)
     checked("beta", be.values, minimum=0.0, strict=True, allow_inf=True)
     checked("amplitude", am.values, minimum=0.0)
+    checked("zeta", ze.values, minimum=0.0)
+    checked("eta_c", et.values, minimum=0.0)
     checked(velocity.name, velocity.values, minimum=0.0)
     if not float(np.min(be.values)) > float(np.max(al.values)):
         raise ValueError(
@@ -361,18 +373,25 @@ def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | 
             f" <= alpha = {float(np.max(al.values))!r} (beta = (k_x + k_xc)/(m omega^2) "
             "exceeds alpha = k_x/(m omega^2))")
     if velocity.name == "vbar":
-        _check_vbar_exists(al, be, am)
-    return (al, be, am), velocity
+        _check_vbar_exists(al, be, am, ze, et)
+    return (al, be, am, ze, et), velocity
 
 
-def _check_vbar_exists(al: Axis, be: Axis, am: Axis) -> None:
-    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16)."""
+def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:
+    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16): without
+    damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``."""
+    undamped = not np.any(ze.values > 0)
     for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
                              (be, 1.0, "beta == 1 (case III: v0* is zero)"),
                              (am, 0.0, "amplitude == 0 (v0* is zero)")):
-        if np.any(axis.values == value):
+        relevant = axis is am or (undamped and (axis is al or not np.any(et.values > 0)))
+        if relevant and np.any(axis.values == value):
             raise ValueError(f"vbar does not exist where {why}, and {axis.name} = "
                              f"{value:g} is in the grid: sweep v_inertial instead")
+    if np.any(ze.values == 0.0) and np.any(al.values == 1.0):
+        raise ValueError("vbar does not exist where alpha == 1 and zeta == 0 (case IV: "
+                         "v0* is infinite), and both are in the grid: sweep v_inertial "
+                         "instead")
 
 
 def _check_continuation(velocity: Axis) -> None:

@@ -50,6 +50,14 @@ COORD_ATTRS: dict[str, dict[str, Any]] = {
              "symbol": "beta", "units": "1", "equation": "(20)"},
     "amplitude": {"long_name": "relative amplitude of the normal oscillation, du_z / u_z0",
                   "symbol": "a", "units": "1", "equation": "(1), (24)"},
+    "zeta": {"long_name": "damping ratio of the pin, c_x / (2 sqrt(k_x m)) = 1/(2Q)",
+             "symbol": "zeta", "units": "1", "equation": "docs/damping.md"},
+    "eta_c": {"long_name": "loss factor of the contact at the drive frequency, "
+                           "omega c_xc / k_xc",
+              "symbol": "eta_c", "units": "1", "equation": "docs/damping.md"},
+    "c_x": {"long_name": "pin dashpot parallel to k_x", "symbol": "c_x", "units": "N s m-1"},
+    "c_xc": {"long_name": "tangential contact dashpot parallel to k_xc (Kelvin-Voigt)",
+             "symbol": "c_x,c", "units": "N s m-1"},
     "vbar": {"long_name": "sliding velocity over the critical velocity, v0 / v0*",
              "symbol": "vbar", "units": "1", "equation": "(16)"},
     "v_inertial": {"long_name": "inertial sliding velocity, v0 m omega / (mu0 F_N0)",
@@ -155,6 +163,10 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
         Variable("final_f", "f8", np.nan, {
             "long_name": "final state on the Poincare section: tangential contact force",
             "symbol": "f", "units": "mu0 F_N0"}, "f"),
+        Variable("final_e", "f8", np.nan, {
+            "long_name": "final state on the Poincare section: elongation of the contact "
+                         "spring, x - x_c (0 for a rigid contact)",
+            "symbol": "e", "units": "mu0 F_N0 / (m omega^2)"}, "e"),
         Variable("final_phase", "i1", STATUS_PENDING, {
             "long_name": "final state on the Poincare section: phase of the contact",
             "flag_values": [STATUS_PENDING, NO_PHASE, *range(len(PHASE_NAMES))],
@@ -168,8 +180,9 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
     """Variables of the non-velocity parameters only (one value per curve)."""
     if kind == "dimensionless":
         return (Variable("critical_velocity", "f8", np.nan, {
-            "long_name": "critical velocity v0* in inertial units (V at vbar = 1); inf in "
-                         "case IV (alpha = 1), 0 in case III (beta = 1) or at amplitude 0",
+            "long_name": "critical velocity v0* in inertial units (V at vbar = 1), damped; "
+                         "undamped inf in case IV (alpha = 1), 0 in case III (beta = 1); "
+                         "0 at amplitude 0",
             "symbol": "v0* m omega / (mu0 F_N0)", "units": _VEL_UNIT,
             "equation": "(12)"}),)
     return (
@@ -181,6 +194,8 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
         Variable("alpha", "f8", np.nan, dict(COORD_ATTRS["alpha"])),
         Variable("beta", "f8", np.nan, dict(COORD_ATTRS["beta"])),
         Variable("amplitude", "f8", np.nan, dict(COORD_ATTRS["amplitude"])),
+        Variable("zeta", "f8", np.nan, dict(COORD_ATTRS["zeta"])),
+        Variable("eta_c", "f8", np.nan, dict(COORD_ATTRS["eta_c"])),
     )
 
 
