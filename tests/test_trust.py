@@ -24,7 +24,7 @@ from vibrofriction._kernels.steady import (
 def _period_means(s: vf.Dimensionless, V: float, n: int) -> np.ndarray:
     """``<f>/<n>`` over each of the first ``n`` drive periods from the default start."""
     M = make_model(s.alpha, s.beta, s.amplitude, V, s.zeta, s.eta_c)
-    z = np.array(initial_state(0, M)[:4], dtype=float)
+    z = np.array(initial_state(0, M), dtype=float)
     count = np.zeros(3, np.int64)
     out = np.empty(n)
     for k in range(n):

@@ -634,14 +634,14 @@ def simulate(
         initial = steady.final_state
     kind, init = _initial(initial, 1, lambda i: dim)
     if kind == 2:
-        y, xd, e, ph = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3])
+        y, xd, e, ph, ed = init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]), math.nan
     else:
-        y, xd, e, ph = initial_point(kind, *_parameters(dim, V))
+        y, xd, e, ph, ed = initial_point(kind, *_parameters(dim, V))
     whole = int(math.ceil(periods))
     cap = 4096 * whole
     while True:
         seg = np.empty((cap, N_SEG_COLUMNS))
-        m = run_periods(0.0, y, xd, e, ph, *_parameters(dim, V), whole, cap, seg)
+        m = run_periods(0.0, y, xd, e, ed, ph, *_parameters(dim, V), whole, cap, seg)
         if m > 0:
             break
         cap *= 4

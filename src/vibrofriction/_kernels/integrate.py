@@ -62,7 +62,7 @@ from .phases import (
 from .roots import first_root, start_margin
 
 TWO_PI = 2.0 * math.pi
-N_SEG_COLUMNS = 10  # columns of a history row (run_periods)
+N_SEG_COLUMNS = 11  # columns of a history row (run_periods)
 ZENO_N = 1e-10  # relative normal force below which the approach to n = 0 is free motion
 
 
@@ -105,7 +105,7 @@ def contact_force(M, phase, theta, y, xd, e):
 
 
 @jit
-def enter(theta, y, xd, e, f, s_pref, M, T, avoid):
+def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
     """Choose the phase that starts consistently at ``theta``.
 
     Candidates, in order: stick (both cone margins must start positive; for a rigid
@@ -113,8 +113,9 @@ def enter(theta, y, xd, e, f, s_pref, M, T, avoid):
     finite elastic contact ``f = k e`` is continuous, so slip ``s`` is a candidate
     only when ``f = s n``; a viscoelastic contact may change its force at once (the
     contact point is massless), and exactly one phase is consistent: stick while
-    ``|k e + c x'| <= n``, else slip in the direction of that force.  Returns
-    ``(phase, e, f, ok)``; ``ok`` is False when no candidate starts consistently (a
+    ``|k e + c x'| <= n``, else slip in the direction of that force.  ``ed`` is the
+    exact rate ``e'`` where known (else nan, see :func:`.phases.elongation`).  Returns
+    ``(phase, e, ed, f, ok)``; ``ok`` is False when no candidate starts consistently (a
     degenerate point, counted by the caller).  ``avoid`` (a phase code, or
     ``NO_PHASE``) is skipped: the phase that has just ended at once, whose margin is
     lost in round-off (a near-tangency), must not be re-entered.
@@ -129,7 +130,7 @@ def enter(theta, y, xd, e, f, s_pref, M, T, avoid):
         if ok1:
             ok2, _ = start_margin(cone_margin(fc, theta, -1.0, a), mst, T)
             if ok2:
-                return STICK, e, evaluate(fc, mst, 0.0), True
+                return STICK, e, xd, evaluate(fc, mst, 0.0), True
     tol = 1e-12 * (1.0 + abs(n))
     m = M[M_SLIP]
     for i in range(2):
@@ -138,43 +139,45 @@ def enter(theta, y, xd, e, f, s_pref, M, T, avoid):
             continue
         if free or abs(f - s * n) <= tol:
             e1 = e if free else s * n / k
-            vr = slip_velocity(M, body(M, theta, y, xd - V, s), elongation(M, theta, e1, s), s)
+            ec = elongation(M, theta, e1, ed, s)
+            vr = slip_velocity(M, body(M, theta, y, xd - V, s), ec, s)
             ok, _ = start_margin(vr, m, T)
             if ok:
-                return (SLIP_POS if s > 0 else SLIP_NEG), e1, s * n, True
+                return (SLIP_POS if s > 0 else SLIP_NEG), e1, ed, s * n, True
     # degenerate: keep what continuity allows
     if free or abs(f - s_pref * n) <= tol:
-        return (SLIP_POS if s_pref > 0 else SLIP_NEG), (e if free else s_pref * n / k), \
+        return (SLIP_POS if s_pref > 0 else SLIP_NEG), (e if free else s_pref * n / k), ed, \
             s_pref * n, False
-    return STICK, e, f, False
+    return STICK, e, xd, f, False
 
 
 @jit
-def state_at(M, phase, theta, y, xd, e, t):
-    """``(y, x', e, f)`` a time ``t`` into a phase that started at ``theta`` in ``(y, x', e)``."""
+def state_at(M, phase, theta, y, xd, e, ed, t):
+    """``(y, x', e, e', f)`` a time ``t`` into a phase that started at ``theta`` in
+    ``(y, x', e)`` (``ed``: the exact ``e'`` at the start where known, else nan)."""
     V = M[M_V]
     if phase == STICK:
         if math.isinf(M[M_K]):
             y1 = y - V * t
-            return y1, 0.0, 0.0, -M[M_ALPHA] * y1 + M[M_GAMMA] * V
+            return y1, 0.0, 0.0, 0.0, -M[M_ALPHA] * y1 + M[M_GAMMA] * V
         m = M[M_STICK]
         ec = stick_elongation(M, y, xd, e)
         e1 = evaluate(ec, m, t)
         xd1 = evaluate(derivative(ec, m), m, t)
-        return y + (e1 - e) - V * t, xd1, e1, M[M_K] * e1 + M[M_C] * xd1
+        return y + (e1 - e) - V * t, xd1, e1, xd1, M[M_K] * e1 + M[M_C] * xd1
     m = M[M_SLIP]
     s = 0.0 if phase == FLIGHT else slip_sign(phase)
     yc = body(M, theta, y, xd - V, s)
-    ec = elongation(M, theta, e, s)
+    ec = elongation(M, theta, e, ed, s)
     return (evaluate(yc, m, t), V + evaluate(derivative(yc, m), m, t), evaluate(ec, m, t),
-            s * normal_force(theta + t, M[M_A]))
+            evaluate(derivative(ec, m), m, t), s * normal_force(theta + t, M[M_A]))
 
 
 @jit
-def segment(theta, y, xd, e, phase, M):
+def segment(theta, y, xd, e, ed, phase, M):
     """Advance one segment.
 
-    Returns ``(t, theta_end, y, x', e, f, phase, event, int_f, int_n, ok)`` where
+    Returns ``(t, theta_end, y, x', e, e', f, phase, event, int_f, int_n, ok)`` where
     ``event`` is the kind of what ended the segment (a transition or a boundary),
     ``int_f`` and ``int_n`` the integrals of ``f`` and ``n`` over it and ``ok`` False
     when a transition was degenerate.
@@ -206,7 +209,7 @@ def segment(theta, y, xd, e, phase, M):
                 immediate = r <= ts
     elif phase != FLIGHT and not zeno:
         s = slip_sign(phase)
-        ec = elongation(M, theta, e, s)
+        ec = elongation(M, theta, e, ed, s)
         vr = slip_velocity(M, body(M, theta, y, xd - V, s), ec, s)
         ok, ts = start_margin(vr, m, T)
         te = first_root(vr, m, ts, T) if ok else 0.0
@@ -215,7 +218,7 @@ def segment(theta, y, xd, e, phase, M):
     avoid = phase if immediate else NO_PHASE
     t = te if hit else T
     # state and integrals at the end of the piece (the Zeno approach moves freely)
-    y1, xd1, e1, f1 = state_at(M, FLIGHT if zeno else phase, theta, y, xd, e, t)
+    y1, xd1, e1, ed1, f1 = state_at(M, FLIGHT if zeno else phase, theta, y, xd, e, ed, t)
     if zeno or phase == FLIGHT:
         int_f = 0.0
         int_n = 0.0 if phase == FLIGHT else normal_integral(theta, t, a)
@@ -239,13 +242,14 @@ def segment(theta, y, xd, e, phase, M):
             f1 = es * normal_force(theta1, a)
             if not rigid:
                 e1 = (f1 - M[M_C] * xd1) / k
-            ph1, e1, f1, ok = enter(theta1, y1, xd1, e1, f1, es, M, Tn, avoid)
+            # the contact point starts from rest: e' = x' exactly
+            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, es, M, Tn, avoid)
             event = EV_STICK_TO_SLIP
         else:
             s = slip_sign(phase)
             # slip -> stick: project onto zero contact-point velocity, x' = e'
             xd1 = 0.0 if rigid else evaluate(derivative(ec, m), m, t)
-            ph1, e1, f1, ok = enter(theta1, y1, xd1, e1, f1, -s, M, Tn, avoid)
+            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, -s, M, Tn, avoid)
             event = EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL
     if t == T and not hit:
         if bkind == EV_LIFTOFF:
@@ -253,41 +257,44 @@ def segment(theta, y, xd, e, phase, M):
             f1 = 0.0
             if M[M_C] == 0.0:
                 e1 = 0.0
+                ed1 = 0.0
         elif bkind == EV_TOUCHDOWN:
             # f = 0 at n = 0; the contact point arrives with velocity x' + r e
             sp = 1.0 if xd1 + M[M_R] * e1 >= 0.0 else -1.0
-            ph1, e1, f1, ok = enter(theta1, y1, xd1, e1, 0.0, sp, M, TWO_PI - theta1,
-                                    NO_PHASE)
+            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, ed1, 0.0, sp, M,
+                                         TWO_PI - theta1, NO_PHASE)
     elif t == T and hit and bkind != EV_SECTION:
         # an event exactly at lift-off / touch-down: the boundary is handled by a
         # zero-length segment next (theta1 == tb keeps it as the next boundary)
         theta1 = math.nextafter(tb, -math.inf)
-    return t, theta1, y1, xd1, e1, f1, ph1, event, int_f, int_n, ok
+    return t, theta1, y1, xd1, e1, ed1, f1, ph1, event, int_f, int_n, ok
 
 
 @jit
 def initial_state(kind, M):
     """``kind`` 0: steady sliding before the oscillation starts; 1: rest.
 
-    Returns ``(y, x', e, phase, f)``.
+    Returns ``(y, x', e, phase, e')``.
     """
     if kind == 0:
         k = M[M_K]
         y, xd, e, f = -1.0 / M[M_ALPHA], M[M_V], (0.0 if math.isinf(k) else 1.0 / k), 1.0
+        ed = 0.0  # steady sliding: the spring's elongation is constant
     else:
-        y, xd, e, f = 0.0, 0.0, 0.0, 0.0
-    ph, e, f, _ = enter(0.0, y, xd, e, f, 1.0, M, TWO_PI, NO_PHASE)
-    return y, xd, e, ph, f
+        y, xd, e, f, ed = 0.0, 0.0, 0.0, 0.0, 0.0
+    ph, e, ed, f, _ = enter(0.0, y, xd, e, ed, f, 1.0, M, TWO_PI, NO_PHASE)
+    return y, xd, e, ph, ed
 
 
 @jit
-def run_periods(theta, y, xd, e, phase, alpha, beta, a, V, zeta, eta, periods, max_segments,
-                seg):
+def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, periods,
+                max_segments, seg):
     """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
 
     ``seg`` has shape ``(max_segments, N_SEG_COLUMNS)`` with columns ``tau, y, x', f,
     phase, event that ended the previous segment, int_f, int_n`` (cumulative), the
-    drive phase ``theta`` of the segment start and ``e``.  Returns the number of rows
+    drive phase ``theta`` of the segment start, ``e`` and ``e'`` (nan where not known
+    exactly, :func:`.phases.elongation`).  Returns the number of rows
     written (``-1`` if ``max_segments`` was too small).
     """
     M = make_model(alpha, beta, a, V, zeta, eta)
@@ -300,13 +307,14 @@ def run_periods(theta, y, xd, e, phase, alpha, beta, a, V, zeta, eta, periods, m
         if m >= max_segments:
             return -1
         f = contact_force(M, phase, theta, y, xd, e)
-        row = (TWO_PI * k + theta, y, xd, f, float(phase), float(ev), cf, cn, theta, e)
+        row = (TWO_PI * k + theta, y, xd, f, float(phase), float(ev), cf, cn, theta, e, ed)
         for j in range(N_SEG_COLUMNS):
             seg[m, j] = row[j]
         m += 1
         if k >= periods:
             return m
-        t, theta, y, xd, e, f, phase, ev, i_f, i_n, ok = segment(theta, y, xd, e, phase, M)
+        t, theta, y, xd, e, ed, f, phase, ev, i_f, i_n, ok = segment(theta, y, xd, e, ed,
+                                                                      phase, M)
         cf += i_f
         cn += i_n
         if theta >= TWO_PI:
@@ -326,7 +334,8 @@ def sample(seg, nseg, alpha, beta, a, V, zeta, eta, taus, out):
         theta = seg[j, 8]
         t = tau - seg[j, 0]
         phase = int(seg[j, 4])
-        y1, xd1, e1, f1 = state_at(M, phase, theta, seg[j, 1], seg[j, 2], seg[j, 9], t)
+        y1, xd1, e1, _, f1 = state_at(M, phase, theta, seg[j, 1], seg[j, 2], seg[j, 9],
+                                      seg[j, 10], t)
         out[i, 0] = y1
         out[i, 1] = xd1
         out[i, 2] = f1
@@ -337,6 +346,5 @@ def sample(seg, nseg, alpha, beta, a, V, zeta, eta, taus, out):
 
 @jit
 def initial_point(kind, alpha, beta, a, V, zeta, eta):
-    """:func:`initial_state` from the parameters: ``(y, x', e, phase)``."""
-    y, xd, e, ph, _ = initial_state(kind, make_model(alpha, beta, a, V, zeta, eta))
-    return y, xd, e, ph
+    """:func:`initial_state` from the parameters: ``(y, x', e, phase, e')``."""
+    return initial_state(kind, make_model(alpha, beta, a, V, zeta, eta))

@@ -30,6 +30,12 @@ from .jit import jit
 M_ALPHA, M_BETA, M_A, M_V, M_GAMMA, M_ETA, M_K, M_C, M_R = 0, 1, 2, 3, 4, 5, 6, 7, 8
 M_OFF, M_ON, M_SLIP, M_STICK = 9, 10, 11, 12
 TWO_PI = 2.0 * math.pi
+# Loss factors below this are treated as an elastic contact: the relaxation time
+# eta_c/omega is then shorter than round-off can resolve in the contact-point velocity
+# (its error ~ eps/(k eta_c)).  mu depends on eta_c linearly near 0 (measured
+# |mu(eta_c) - mu(0)| <= 1.5 eta_c), so ETA_SLOPE * eta_c is added to the error.
+ETA_ELASTIC = 1e-6
+ETA_SLOPE = 10.0
 ZERO9 = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
@@ -51,7 +57,7 @@ def make_model(alpha, beta, a, V, zeta, eta):
     rigid = math.isinf(beta)
     k = math.inf if rigid else beta - alpha
     gamma = 2.0 * zeta * math.sqrt(alpha)
-    viscous = eta > 0.0 and not rigid
+    viscous = eta >= ETA_ELASTIC and not rigid
     c = eta * k if viscous else 0.0
     r = 1.0 / eta if viscous else 0.0
     slip = make_mode(alpha, 0.5 * gamma, r)
@@ -71,8 +77,14 @@ def body(M, theta, y0, yd0, s):
 
 
 @jit
-def elongation(M, theta, e0, s):
-    """``e(t)`` in slip ``s`` (``s = 0``: flight) from ``e0`` (zero for a rigid contact)."""
+def elongation(M, theta, e0, ed0, s):
+    """``e(t)`` in slip ``s`` (``s = 0``: flight) from ``e0`` (zero for a rigid contact).
+
+    ``ed0``, when finite, is the exact rate ``e'(0)`` (``x'`` when slip starts from
+    stick): the relaxing part then follows from it, ``K = eta_c (e_p'(0) - ed0)``,
+    without the cancellation of ``e0 - e_p(0)``, whose round-off ``eps/k`` becomes
+    ``eps/(k eta_c)`` in the contact-point velocity.
+    """
     if math.isinf(M[M_K]):
         return ZERO9
     eta, k = M[M_ETA], M[M_K]
@@ -86,7 +98,7 @@ def elongation(M, theta, e0, s):
     B = g * (eta * ct - st)
     p = s / k
     if eta > 0.0:
-        K = e0 - (p + A)
+        K = eta * (B - ed0) if math.isfinite(ed0) else e0 - (p + A)
     return (p, 0.0, A, B, 0.0, 0.0, 0.0, 0.0, K)
 
 

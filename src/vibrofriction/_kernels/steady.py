@@ -45,6 +45,8 @@ from .codes import (
 from .integrate import TWO_PI, contact_force, initial_state, segment
 from .jit import jit
 from .phases import (
+    ETA_ELASTIC,
+    ETA_SLOPE,
     M_A,
     M_ALPHA,
     M_C,
@@ -87,16 +89,17 @@ I_STATUS, I_PERIOD, I_PERIODS, I_EVENTS, I_PHASE, I_DEGENERATE = 0, 1, 2, 3, 4, 
 
 @jit
 def advance_period(z, acc, count, M, max_events):
-    """Integrate one drive period from the section state ``z = (y, x', e, phase)``.
+    """Integrate one drive period from the section state ``z = (y, x', e, phase, e')``
+    (``e'``: the exact rate where known, else nan; :func:`.phases.elongation`).
 
     ``z`` is updated in place, ``acc`` accumulates the integrals and phase times,
     ``count`` the events, degenerate transitions and zero-length segments.
     Returns False when the integration must stop (event budget, chatter, stuck).
     """
     theta = 0.0
-    y, xd, e, ph = z[0], z[1], z[2], int(z[3])
+    y, xd, e, ph, ed = z[0], z[1], z[2], int(z[3]), z[4]
     while theta < TWO_PI:
-        t, theta, y, xd, e, f, ph1, ev, i_f, i_n, ok = segment(theta, y, xd, e, ph, M)
+        t, theta, y, xd, e, ed, f, ph1, ev, i_f, i_n, ok = segment(theta, y, xd, e, ed, ph, M)
         acc[A_F] += i_f
         acc[A_N] += i_n
         if ph == STICK:
@@ -116,14 +119,14 @@ def advance_period(z, acc, count, M, max_events):
         if (count[C_EVENTS] > max_events or count[C_ZERO] > MAX_ZERO_SEGMENTS
                 or count[C_DEGENERATE] > MAX_DEGENERATE):
             return False
-    z[0], z[1], z[2], z[3] = y, xd, e, ph
+    z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, ed
     return True
 
 
 @jit
 def period_map(y, xd, e, ph, p, M, max_events):
     """Integrate ``p`` drive periods from the section; returns the state and event count."""
-    z = np.array([y, xd, e, float(ph)])
+    z = np.array([y, xd, e, float(ph), math.nan])
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
     for _ in range(p):
@@ -324,7 +327,7 @@ def _free_arc(M, theta, T, y, yd, e, s):
     """``(y, y', e)`` after ``T`` of forward slip (``s = 1``) or flight (``s = 0``)."""
     m = M[M_SLIP]
     c = body(M, theta, y, yd, s)
-    ce = elongation(M, theta, e, s)
+    ce = elongation(M, theta, e, math.nan, s)
     return evaluate(c, m, T), evaluate(derivative(c, m), m, T), evaluate(ce, m, T)
 
 
@@ -398,7 +401,7 @@ def sliding_certificate(y, xd, e, ph, M, orbit_ok, ys, yds, es):
         if i == 1:  # through the flight
             y0, yd0, e0 = _free_arc(M, t1, t2 - t1, y0, yd0, e0, 0.0)
         c = body(M, theta, y0, yd0, 1.0)
-        ce = elongation(M, theta, e0, 1.0)
+        ce = elongation(M, theta, e0, math.nan, 1.0)
         g = slip_velocity(M, c, ce, 1.0)
         if margin >= sup_bound(g, m, T):
             return False  # cannot hold: skip the root search
@@ -554,7 +557,7 @@ def try_newton(z, ring_z, dprev, k, M, tol_state, max_events):
                                             0.1 * tol_state, max_events)
         events += ev
         if ok:
-            z[0], z[1], z[2], z[3] = y, xd, e, ph
+            z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, math.nan
             ring_z[k % (MAX_PERIOD + 1), :] = z
             dprev[:] = np.inf
             return p, events
@@ -626,15 +629,15 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
     the state is the final one on the section.
     """
     M = make_model(alpha, beta, a, V, zeta, eta)
-    z = np.empty(4)
+    z = np.empty(5)  # y, x', e, phase, e' (exact rate where known, else nan)
     if init_kind == 2:
-        z[0], z[1], z[2], z[3] = y0, xd0, e0, ph0
+        z[0], z[1], z[2], z[3], z[4] = y0, xd0, e0, ph0, math.nan
     else:
-        z[0], z[1], z[2], z[3], _ = initial_state(init_kind, M)
+        z[0], z[1], z[2], z[3], z[4] = initial_state(init_kind, M)
     z0 = z.copy()
     orbit_ok, ys, yds, es = sliding_orbit(M)
     nring = MAX_PERIOD + 1
-    ring_z = np.zeros((nring, 4))
+    ring_z = np.zeros((nring, 5))
     ring_c = np.zeros((nring, N_ACC))
     dprev = np.full(nring, np.inf)
     chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
@@ -700,6 +703,8 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
                 break
     if status == ST_FAILED or not math.isfinite(out_f[O_ERR]):
         out_f[O_ERR] = math.inf  # no estimate: nothing is known about the value
+    elif 0.0 < eta < ETA_ELASTIC and not math.isinf(beta):
+        out_f[O_ERR] += ETA_SLOPE * eta  # solved as an elastic contact (phases.ETA_ELASTIC)
     _fractions(win, status, out_f)
     out_f[O_Y], out_f[O_XD], out_f[O_E] = z[0], z[1], z[2]
     out_f[O_F] = contact_force(M, int(z[3]), 0.0, z[0], z[1], z[2])
