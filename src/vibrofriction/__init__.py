@@ -6,7 +6,7 @@ friction by normal oscillations. II. In-plane system dynamics", Friction (2017).
 
 from importlib.metadata import PackageNotFoundError, version
 
-from .params import Case, Dimensionless, Physical, classify
+from .params import Case, Dimensionless, Physical, classify, pin_damping
 from .solver import (
     Event,
     FrictionResult,
@@ -47,6 +47,7 @@ __all__ = [
     "Status",
     "classify",
     "friction_coefficient",
+    "pin_damping",
     "simulate",
     "sweep",
     "__version__",
