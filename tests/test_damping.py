@@ -1,6 +1,9 @@
 """The damped model (docs/damping.md): parameters, limits, energy balance, critical velocity."""
 
+import json
 import math
+import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -173,3 +176,49 @@ def test_modulated_points_near_beta_1_settle_with_small_damping():
     damped = vf.friction_coefficient(vf.Dimensionless(0.01, 1.01, 1.0, 0.02), v_inertial=V)
     assert damped.trusted and damped.periods < 2000
     assert undamped.periods >= damped.periods
+
+
+# --------------------------------------------------------------------------- command line
+def _cli(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "vibrofriction.cli", *args], capture_output=True,
+                          text=True, timeout=300)
+
+
+def test_cli_mu_with_damping_and_for_a_physical_set_up():
+    out = _cli("mu", "--alpha", "1", "--beta", "inf", "--amplitude", "0.5", "--zeta", "0.02",
+               "--vbar", "0.5,1.01", "--json")
+    assert out.returncode == 0, out.stderr
+    rows = [json.loads(line) for line in out.stdout.splitlines()]
+    assert rows[0]["zeta"] == 0.02 and rows[0]["v_inertial"] == pytest.approx(0.5 * 12.5)
+    assert rows[0]["mu_ratio"] < 1.0 and rows[1]["mu_ratio"] == pytest.approx(1.0, abs=1e-9)
+    phys = ("--mass", "0.01", "--k-x", "2.5e5", "--k-xc", "2e5", "--k-zc", "2.5e5", "--u-z0",
+            "4e-6", "--du-z", "2e-6", "--omega", "6283", "--mu0", "0.3")
+    out = _cli("mu", *phys, "--quality-factor", "50", "--v0", "0.001", "--json")
+    assert out.returncode == 0, out.stderr
+    row = json.loads(out.stdout)
+    p = vf.Physical(0.01, 2.5e5, 2e5, 2.5e5, 4e-6, 2e-6, 6283.0, 0.3).with_damping(
+        quality_factor=50.0)
+    assert row["zeta"] == pytest.approx(0.01) and row["mu_ratio"] == pytest.approx(
+        vf.friction_coefficient(p, v0=0.001).mu_ratio, abs=1e-12)
+    bad = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--eta-c", "-1",
+               "--vbar", "0.5")
+    assert bad.returncode == 2 and "eta_c" in bad.stderr and "Traceback" not in bad.stderr
+    bad = _cli("mu", *phys, "--c-x", "1", "--quality-factor", "50", "--v0", "0.001")
+    assert bad.returncode == 2 and "--quality-factor" in bad.stderr
+
+
+def test_sweep_over_damping_axes(tmp_path):
+    ds = vf.sweep(alpha=0.5, beta=2.0, amplitude=0.5, zeta=[0.0, 0.05], eta_c=[0.0, 0.2],
+                  vbar=[0.5, 1.2], workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("zeta", "eta_c", "vbar")
+    direct = solver.solve_points(0.5, 2.0, 0.5, ds.v_inertial.values,
+                                 ds.zeta.values[:, None, None], ds.eta_c.values[None, :, None])
+    np.testing.assert_array_equal(ds.mu_ratio.values, direct["mu_ratio"])
+    vc = theory.critical_inertial_velocity(0.5, 2.0, 0.5, ds.zeta.values[:, None],
+                                           ds.eta_c.values[None, :])
+    np.testing.assert_allclose(ds.critical_velocity.values, vc, rtol=1e-14)
+    # physical sweeps take the dashpots in N s/m
+    p = vf.Physical(0.01, 2.5e5, 2e5, 2.5e5, 4e-6, 2e-6, 6283.0, 0.3)
+    ds = vf.sweep(p, c_x=[0.0, 1.0], v0=[1e-3, 1e-2], workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("c_x", "v0")
+    assert ds.zeta.values[1] == pytest.approx(p.with_(c_x=1.0).zeta)

@@ -8,7 +8,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from ..params import Dimensionless
+from ..params import Dimensionless, Physical
 from ..solver import SolverSettings, friction_coefficient
 from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
@@ -16,15 +16,37 @@ from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, pa
 @app.command("mu")
 @friendly
 def mu_command(
-    alpha: Annotated[str, typer.Option(help="alpha = k_x/(m omega^2), eq. (20); > 0")],
-    beta: Annotated[str, typer.Option(help="beta = (k_x + k_xc)/(m omega^2) > alpha; 'inf' = "
-                                      "rigid contact")],
-    amplitude: Annotated[str, typer.Option(help="a = du_z/u_z0 >= 0 (> 1: jumping)")],
+    alpha: Annotated[str | None, typer.Option(help="alpha = k_x/(m omega^2), eq. (20); > 0")]
+    = None,
+    beta: Annotated[str | None, typer.Option(
+        help="beta = (k_x + k_xc)/(m omega^2) > alpha; 'inf' = rigid contact")] = None,
+    amplitude: Annotated[str | None, typer.Option(help="a = du_z/u_z0 >= 0 (> 1: jumping)")]
+    = None,
+    zeta: Annotated[str, typer.Option(
+        help="damping ratio of the pin c_x/(2 sqrt(k_x m)) = 1/(2Q) >= 0")] = "0",
+    eta_c: Annotated[str, typer.Option(
+        "--eta-c", help="loss factor of the contact omega c_xc/k_xc >= 0")] = "0",
     vbar: Annotated[str | None, typer.Option(help="v0/v0* (eq. 16); comma-separated list "
                                              "allowed")] = None,
     v_inertial: Annotated[str | None, typer.Option(
-        "--v-inertial", help="v0 m omega/(mu0 F_N0) (Fig. 6; needed in cases III, IV); "
-        "list allowed")] = None,
+        "--v-inertial", help="v0 m omega/(mu0 F_N0) (Fig. 6; needed in cases III, IV "
+        "undamped); list allowed")] = None,
+    mass: Annotated[str | None, typer.Option(help="physical set-up: mass m, kg")] = None,
+    k_x: Annotated[str | None, typer.Option("--k-x", help="system spring k_x, N/m")] = None,
+    k_xc: Annotated[str | None, typer.Option(
+        "--k-xc", help="tangential contact stiffness, N/m ('inf' = rigid)")] = None,
+    k_zc: Annotated[str | None, typer.Option("--k-zc", help="normal contact stiffness, N/m")]
+    = None,
+    u_z0: Annotated[str | None, typer.Option("--u-z0", help="mean indentation, m")] = None,
+    du_z: Annotated[str | None, typer.Option("--du-z", help="oscillation amplitude, m")] = None,
+    omega: Annotated[str | None, typer.Option(help="angular frequency, rad/s")] = None,
+    mu0: Annotated[str | None, typer.Option(help="local coefficient of friction")] = None,
+    c_x: Annotated[str, typer.Option("--c-x", help="pin dashpot, N s/m")] = "0",
+    c_xc: Annotated[str, typer.Option("--c-xc", help="contact dashpot, N s/m")] = "0",
+    quality_factor: Annotated[str | None, typer.Option(
+        "--quality-factor", help="the pin's Q from an impact test (instead of --c-x)")] = None,
+    v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s; list "
+                                           "allowed")] = None,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
     max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
     tol_trusted: Annotated[float, typer.Option(
@@ -32,28 +54,76 @@ def mu_command(
     ] = SolverSettings.tol_trusted,
     as_json: Annotated[bool, typer.Option("--json", help="one JSON object per point")] = False,
 ) -> None:
-    """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25)."""
-    system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
-                           parse_float(amplitude, "amplitude"))
+    """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
+
+    Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c]) with
+    --vbar or --v-inertial, or a physical set-up in SI units (--mass --k-x --k-xc --k-zc
+    --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor, --c-xc]) with --v0.
+    """
+    phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
+            "du_z": du_z, "omega": omega, "mu0": mu0}
+    settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
+    if any(v is not None for v in phys.values()) or v0 is not None:
+        physical = _physical(phys, c_x, c_xc, quality_factor, (alpha, beta, amplitude, vbar,
+                                                                v_inertial))
+        if v0 is None:
+            raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
+        system = physical.to_dimensionless()
+        results = friction_coefficient(physical, v0=np.array(parse_list(v0, "v0")),
+                                       initial=initial, settings=settings)
+    else:
+        missing = [f"--{n}" for n, v in (("alpha", alpha), ("beta", beta),
+                                         ("amplitude", amplitude)) if v is None]
+        if missing:
+            raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
+        system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
+                               parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
+                               parse_float(eta_c, "eta_c"))
+        results = _dimensionless(system, vbar, v_inertial, initial, settings)
+    _print(system, results, as_json)
+    exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)
+
+
+def _physical(phys: dict, c_x: str, c_xc: str, quality_factor: str | None,
+              dimensionless: tuple) -> Physical:
+    if any(v is not None for v in dimensionless):
+        raise ValueError("give either the dimensionless system or the physical set-up")
+    missing = ["--" + k.replace("_", "-") for k, v in phys.items() if v is None]
+    if missing:
+        raise ValueError("a physical set-up needs " + ", ".join(missing))
+    values = {k: parse_float(v, k) for k, v in phys.items()}
+    system = Physical(**values, c_x=parse_float(c_x, "c_x"), c_xc=parse_float(c_xc, "c_xc"))
+    if quality_factor is not None:
+        if system.c_x != 0.0:
+            raise ValueError("give either --c-x or --quality-factor")
+        system = system.with_damping(
+            quality_factor=parse_float(quality_factor, "quality_factor"))
+    return system
+
+
+def _dimensionless(system: Dimensionless, vbar: str | None, v_inertial: str | None,
+                   initial: str, settings: SolverSettings):
     if (vbar is None) == (v_inertial is None):
         raise ValueError("give exactly one of --vbar and --v-inertial")
-    settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
     if vbar is not None:
         speeds = np.array(parse_list(vbar, "vbar"))
-        results = friction_coefficient(system, vbar=speeds, initial=initial, settings=settings)
-    else:
-        speeds = np.array(parse_list(v_inertial, "v_inertial"))
-        results = friction_coefficient(system, v_inertial=speeds, initial=initial,
-                                       settings=settings)
+        return friction_coefficient(system, vbar=speeds, initial=initial, settings=settings)
+    speeds = np.array(parse_list(v_inertial, "v_inertial"))
+    return friction_coefficient(system, v_inertial=speeds, initial=initial, settings=settings)
+
+
+def _print(system: Dimensionless, results, as_json: bool) -> None:
     if not as_json:
-        typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g} "
-                   f"case {system.case.value}")
+        damping = (f" zeta={system.zeta:g} eta_c={system.eta_c:g}" if system.damped else "")
+        typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g}"
+                   f"{damping} case {system.case.value}")
         typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} {'error':>9}  status")
     for r in results:
         if as_json:
             typer.echo(json.dumps({
                 "alpha": json_number(system.alpha), "beta": json_number(system.beta),
-                "amplitude": system.amplitude, "vbar": json_number(r.vbar),
+                "amplitude": system.amplitude, "zeta": system.zeta, "eta_c": system.eta_c,
+                "vbar": json_number(r.vbar),
                 "v_inertial": r.v_inertial, "mu_ratio": json_number(r.mu_ratio),
                 "status": r.status.value, "period": r.period, "error": json_number(r.error),
                 "trusted": r.trusted, "multiplier": json_number(r.multiplier),
@@ -68,4 +138,3 @@ def mu_command(
                        f"{r.error:>9.1e}  {r.status.value}"
                        + (f" (period {r.period})" if r.period else "")
                        + ("" if r.trusted else "  NOT TRUSTED"))
-    exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)

@@ -31,6 +31,9 @@ def sweep_command(
     beta: Annotated[str | None, _opt("beta = (k_x + k_xc)/(m omega^2) > alpha; inf = rigid")]
     = None,
     amplitude: Annotated[str | None, _opt("a = du_z/u_z0 >= 0")] = None,
+    zeta: Annotated[str | None, _opt("damping ratio of the pin (default 0)")] = None,
+    eta_c: Annotated[str | None, typer.Option(
+        "--eta-c", help=f"loss factor of the contact (default 0); {_AXIS}")] = None,
     vbar: Annotated[str | None, _opt("velocity v0/v0* (eq. 16)")] = None,
     v_inertial: Annotated[str | None, typer.Option(
         "--v-inertial", help=f"velocity v0 m omega/(mu0 F_N0) (Fig. 6); {_AXIS}")] = None,
@@ -42,6 +45,10 @@ def sweep_command(
     du_z: Annotated[str | None, typer.Option("--du-z", help=f"du_z, m; {_AXIS}")] = None,
     omega: Annotated[str | None, _opt("omega, rad/s")] = None,
     mu0: Annotated[str | None, _opt("local coefficient of friction mu0")] = None,
+    c_x: Annotated[str | None, typer.Option(
+        "--c-x", help=f"physical sweep: pin dashpot, N s/m (default 0); {_AXIS}")] = None,
+    c_xc: Annotated[str | None, typer.Option(
+        "--c-xc", help=f"physical sweep: contact dashpot, N s/m (default 0); {_AXIS}")] = None,
     v0: Annotated[str | None, _opt("physical sweep: velocity v0, m/s")] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="Dask scheduler address (tcp://host:port): run on that cluster")] = None,
@@ -73,8 +80,9 @@ def sweep_command(
         raise ValueError("give either --scheduler or --workers")
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
-    grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, vbar=vbar,
-                      v_inertial=v_inertial), phys, v0)
+    damping = {"c_x": c_x, "c_xc": c_xc}
+    grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
+                      vbar=vbar, v_inertial=v_inertial), phys, damping, v0)
     options = dict(store=out, chunk_size=chunk_size,
                    settings=SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted),
                    initial=initial,
@@ -93,16 +101,17 @@ def _flag(name: str) -> str:
 
 
 def _grid(dimensionless: dict[str, str | None], phys: dict[str, str | None],
-          v0: str | None) -> dict:
+          damping: dict[str, str | None], v0: str | None) -> dict:
     """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid."""
-    if any(v is not None for v in phys.values()) or v0 is not None:
+    if any(v is not None for v in (*phys.values(), *damping.values())) or v0 is not None:
         if any(v is not None for v in dimensionless.values()):
             raise ValueError("give either the dimensionless parameters or the physical ones")
-        return _physical_grid(phys, v0)
+        return _physical_grid(phys, damping, v0)
     return _dimensionless_grid(**dimensionless)
 
 
-def _physical_grid(phys: dict[str, str | None], v0: str | None) -> dict:
+def _physical_grid(phys: dict[str, str | None], damping: dict[str, str | None],
+                   v0: str | None) -> dict:
     from ..sweep import parse_axis
 
     missing = [k for k, v in phys.items() if v is None] + (["v0"] if v0 is None else [])
@@ -110,12 +119,14 @@ def _physical_grid(phys: dict[str, str | None], v0: str | None) -> dict:
         raise ValueError("a physical sweep needs every SI parameter and v0; missing "
                          + ", ".join(_flag(m) for m in missing))
     values = {k: parse_axis(v, k) for k, v in phys.items() if v is not None}
+    values.update({k: parse_axis(v, k) for k, v in damping.items() if v is not None})
     base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
     return dict(system=base, v0=parse_axis(v0, "v0"), **values)
 
 
 def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
-                        vbar: str | None, v_inertial: str | None) -> dict:
+                        zeta: str | None, eta_c: str | None, vbar: str | None,
+                        v_inertial: str | None) -> dict:
     from ..sweep import parse_axis
 
     given = {"alpha": alpha, "beta": beta, "amplitude": amplitude}
@@ -125,6 +136,9 @@ def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | No
     if (vbar is None) == (v_inertial is None):
         raise ValueError("give exactly one of --vbar and --v-inertial")
     grid = {n: parse_axis(v, n) for n, v in given.items() if v is not None}
+    for n, v in (("zeta", zeta), ("eta_c", eta_c)):
+        if v is not None:
+            grid[n] = parse_axis(v, n)
     if vbar is not None:
         grid["vbar"] = parse_axis(vbar, "vbar")
     else:
