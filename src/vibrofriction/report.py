@@ -123,9 +123,10 @@ def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
     return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(alpha, beta, amplitude, v_inertial) -> tuple[int, dict[str, np.ndarray]]:
+def _solve_chunk(alpha, beta, amplitude, v_inertial, zeta,
+                 eta_c) -> tuple[int, dict[str, np.ndarray]]:
     """``(pid, solve_points(...))``: the pid says which process did the work."""
-    return os.getpid(), solve_points(alpha, beta, amplitude, v_inertial)
+    return os.getpid(), solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c)
 
 
 @dataclass(frozen=True)
@@ -163,7 +164,8 @@ def _render(index: int, quick: bool, name: str, out: Path,
             s = c.series
             suspicious.append(
                 f"alpha={s.alpha!r}, beta={s.beta!r}, amplitude={s.amplitude!r}, "
-                f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
+                + (f"zeta={s.zeta!r}, eta_c={s.eta_c!r}, " if s.zeta or s.eta_c else "")
+                + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
     return _Done(index, tuple(files), rendered.checks, rendered.notes, tuple(suspicious),
@@ -181,6 +183,8 @@ class _Batch:
     beta: np.ndarray
     amplitude: np.ndarray
     v_inertial: np.ndarray
+    zeta: np.ndarray
+    eta_c: np.ndarray
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
@@ -192,10 +196,12 @@ class _Batch:
         be = np.concatenate([np.full(x.size, x.beta) for x in s]) if s else np.empty(0)
         am = np.concatenate([np.full(x.size, x.amplitude) for x in s]) if s else np.empty(0)
         V = np.concatenate([x.v_inertial for x in s]) if s else np.empty(0)
+        ze = np.concatenate([np.full(x.size, x.zeta) for x in s]) if s else np.empty(0)
+        et = np.concatenate([np.full(x.size, x.eta_c) for x in s]) if s else np.empty(0)
         n = V.size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, al, be, am, V, chunks, {}, len(chunks))
+        return cls(index, al, be, am, V, ze, et, chunks, {}, len(chunks))
 
     def store(self, idx: np.ndarray, part: Mapping[str, np.ndarray]) -> None:
         for key, val in part.items():
@@ -241,7 +247,8 @@ class _Schedule:
             return _render, args, self._rendered
         if self.compute:
             b, idx = self.compute.popleft()
-            args = (b.alpha[idx], b.beta[idx], b.amplitude[idx], b.v_inertial[idx])
+            args = (b.alpha[idx], b.beta[idx], b.amplitude[idx], b.v_inertial[idx],
+                    b.zeta[idx], b.eta_c[idx])
             return _solve_chunk, args, functools.partial(self._solved, b, idx)
         return None
 

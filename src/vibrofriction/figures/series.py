@@ -1,7 +1,8 @@
 """Velocity series: what a figure asks the solver for, and what it gets back.
 
 A :class:`Series` is one curve of a figure: a fixed system ``(alpha, beta, a)``
-(eq. 20) and an array of inertial velocities ``V = v0 m omega/(mu0 F_N0)``.
+(eq. 20; with ``zeta``, ``eta_c`` for a damped one, docs/damping.md) and an array
+of inertial velocities ``V = v0 m omega/(mu0 F_N0)``.
 :func:`solve` flattens any number of series into one batch for
 :func:`vibrofriction.solver.solve_points` and cuts the answer back into
 :class:`Curve` objects.  The batch can be run by any *runner* with the signature
@@ -45,6 +46,8 @@ class Series:
     v_inertial: NDArray[np.float64]
     vbar: NDArray[np.float64]
     meta: Mapping[str, object] = field(default_factory=dict)
+    zeta: float = 0.0
+    eta_c: float = 0.0
 
     def __post_init__(self) -> None:
         v = checked(f"series {self.key!r}: v_inertial", self.v_inertial, minimum=0.0)
@@ -124,7 +127,9 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     be = np.concatenate([np.full(s.size, s.beta) for s in series])
     am = np.concatenate([np.full(s.size, s.amplitude) for s in series])
     V = np.concatenate([s.v_inertial for s in series])
-    out = run(al, be, am, V, settings=settings)
+    ze = np.concatenate([np.full(s.size, s.zeta) for s in series])
+    et = np.concatenate([np.full(s.size, s.eta_c) for s in series])
+    out = run(al, be, am, V, ze, et, settings=settings)
     curves: dict[str, Curve] = {}
     start = 0
     for s, n in zip(series, sizes, strict=True):
