@@ -99,14 +99,22 @@ def _em1(z, t):
 def resonant(m, t, ct, st, h1, h2):
     """``(C(t), S(t))``: responses to ``cos t``, ``sin t`` from rest, at every damping."""
     sig = m[1]
-    p = complex(m[7] - 1.0, 2.0 * sig)
-    if abs(p) > RESONANT_BAND:
+    pr = m[7] - 1.0
+    pi = 2.0 * sig
+    p2 = pr * pr + pi * pi
+    if p2 > RESONANT_BAND * RESONANT_BAND:
+        # (e^{it} + homogeneous part) / P, in real arithmetic
         if m[0] == EXP:
             l1, l2 = m[4], m[5]
-            u = (complex(ct, st) + ((l2 - 1j) * h1 + (1j - l1) * h2) / (l1 - l2)) / p
+            d = l1 - l2
+            nr = ct + (l2 * h1 - l1 * h2) / d
+            ni = st + (h2 - h1) / d
         else:
-            u = (complex(ct, st) - h1 - complex(sig, 1.0) * h2) / p
-        return u.real, u.imag
+            nr = ct - h1 - sig * h2
+            ni = st - h2
+        if pi == 0.0:
+            return nr / pr, ni / pr
+        return (nr * pr + ni * pi) / p2, (ni * pr - nr * pi) / p2
     # near the resonance (then under-damped with q ~ 1): divided differences
     q = m[3]
     u = complex(ct, st) * (_em1(complex(-sig, q - 1.0), t) - _em1(complex(-sig, -q - 1.0), t))
@@ -185,8 +193,8 @@ def _u_bound(m, t):
     if m[0] == OSC:
         q = m[3]
         b = min(b, t / q)
-        if p > 0.0:
-            b = min(b, (2.0 + (1.0 + m[1]) / q) / p)
+        if p > 0.0:  # |h1 + (sig + i) h2| <= max(1, sqrt(1 + sig^2)/q)
+            b = min(b, (1.0 + max(1.0, math.sqrt(1.0 + m[1] * m[1]) / q)) / p)
     elif m[0] == EXP and p > 0.0:
         d = m[4] - m[5]
         b = min(b, (1.0 + (math.hypot(m[5], 1.0) + math.hypot(m[4], 1.0)) / d) / p)

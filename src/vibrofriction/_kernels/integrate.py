@@ -18,7 +18,7 @@ tolerance that could flip back and forth.
 
 import math
 
-from .basis import derivative, evaluate, integral
+from .basis import basis_values, derivative, dot, evaluate, has_cs, integral
 from .codes import (
     EV_LIFTOFF,
     EV_NONE,
@@ -162,15 +162,17 @@ def state_at(M, phase, theta, y, xd, e, ed, t):
             return y1, 0.0, 0.0, 0.0, -M[M_ALPHA] * y1 + M[M_GAMMA] * V
         m = M[M_STICK]
         ec = stick_elongation(M, y, xd, e)
-        e1 = evaluate(ec, m, t)
-        xd1 = evaluate(derivative(ec, m), m, t)
+        bv = basis_values(m, t, False, False)
+        e1 = dot(ec, bv)
+        xd1 = dot(derivative(ec, m), bv)
         return y + (e1 - e) - V * t, xd1, e1, xd1, M[M_K] * e1 + M[M_C] * xd1
     m = M[M_SLIP]
     s = 0.0 if phase == FLIGHT else slip_sign(phase)
     yc = body(M, theta, y, xd - V, s)
     ec = elongation(M, theta, e, ed, s)
-    return (evaluate(yc, m, t), V + evaluate(derivative(yc, m), m, t), evaluate(ec, m, t),
-            evaluate(derivative(ec, m), m, t), s * normal_force(theta + t, M[M_A]))
+    bv = basis_values(m, t, has_cs(yc), ec[8] != 0.0)  # one evaluation for all four
+    return (dot(yc, bv), V + dot(derivative(yc, m), bv), dot(ec, bv),
+            dot(derivative(ec, m), bv), s * normal_force(theta + t, M[M_A]))
 
 
 @jit

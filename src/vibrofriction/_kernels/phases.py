@@ -23,7 +23,7 @@ The model tuple (:func:`make_model`) carries the parameters and the two modes
 
 import math
 
-from .basis import add, derivative, initial_pair, make_mode, scale
+from .basis import RESONANT_BAND, add, derivative, initial_pair, make_mode, scale
 from .jit import jit
 
 # fields of the model tuple
@@ -69,10 +69,27 @@ def make_model(alpha, beta, a, V, zeta, eta):
 
 @jit
 def body(M, theta, y0, yd0, s):
-    """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``."""
+    """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``.
+
+    Away from the resonance (``|P| > RESONANT_BAND``, ``P = alpha - 1 + i gamma``) the
+    forced response is the periodic one, ``Re(-s a e^{i tau}/P)``, plus free motion;
+    near it, the responses from rest ``C``, ``S`` (:mod:`.basis`), exact through it.
+    """
     a = M[M_A]
+    m = M[M_SLIP]
     p = -s / M[M_ALPHA]
-    D, E = initial_pair(M[M_SLIP], y0 - p, yd0)
+    pr = m[7] - 1.0
+    pi = 2.0 * m[1]
+    p2 = pr * pr + pi * pi
+    if s == 0.0 or a == 0.0 or p2 > RESONANT_BAND * RESONANT_BAND:
+        # Z = -s a e^{i theta} / P; y_p = Re(Z e^{it}) = Zr cos t - Zi sin t
+        wr = -s * a * math.cos(theta)
+        wi = -s * a * math.sin(theta)
+        zr = (wr * pr + wi * pi) / p2 if p2 > 0.0 else 0.0
+        zi = (wi * pr - wr * pi) / p2 if p2 > 0.0 else 0.0
+        D, E = initial_pair(m, y0 - p - zr, yd0 + zi)
+        return (p, 0.0, zr, -zi, D, E, 0.0, 0.0, 0.0)
+    D, E = initial_pair(m, y0 - p, yd0)
     return (p, 0.0, 0.0, 0.0, D, E, -s * a * math.cos(theta), s * a * math.sin(theta), 0.0)
 
 

@@ -141,8 +141,11 @@ def first_root(c, m, t0, T):
     fe = fe and ce
     split = f1 or f2 or fe
     pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
-    pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
-    pr = bound_parts(c, m, T, f1, f2, fe, 2)
+    pm2s = pm2
+    pr = pm2
+    if split:
+        pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
+        pr = bound_parts(c, m, T, f1, f2, fe, 2)
     a = t0
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:

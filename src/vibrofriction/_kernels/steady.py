@@ -15,7 +15,8 @@ doubling checkpoints (:func:`check_average`).  Every result states an estimate o
 * periodic: the p-period means of two successive windows differ by ``d_mu``;
   the window means converge to the orbit's mean like ``lambda^k`` (``lambda``
   the leading Floquet multiplier, :func:`leading_multiplier`), so the error of
-  the last window is at most ``d_mu / (1 - |lambda|)``, floored at round-off;
+  the last window is about ``d_mu / (1 - |lambda|)``; twice that is stated (other
+  modes add to it), floored at round-off;
 * averaged: the disagreement of the last two averaging windows;
 * not converged: no value (``nan``) and ``inf``; the last windows' means are
   reported as a range, never as the answer;
@@ -72,6 +73,7 @@ NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start h
 MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
 ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
+ERROR_SAFETY = 2.0  # d_mu/(1 - lambda) assumes one real leading mode; others add to it
 ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral (to difference accuracy)
@@ -125,14 +127,20 @@ def advance_period(z, acc, count, M, max_events):
 
 @jit
 def period_map(y, xd, e, ph, p, M, max_events):
-    """Integrate ``p`` drive periods from the section; returns the state and event count."""
+    """Integrate ``p`` drive periods from the section; returns the state, the event count
+    and the number of degenerate transitions (-1: the integration did not finish).
+
+    Transitions decided within round-off (degenerate, e.g. among the hundreds of
+    micro-slips per period of a stiff contact) do not make the map unusable for Newton's
+    iterations and Jacobians; the orbit is accepted only from a map without them.
+    """
     z = np.array([y, xd, e, float(ph), math.nan])
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
     for _ in range(p):
         if not advance_period(z, acc, count, M, max_events):
-            return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], False
-    return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE] == 0
+            return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], -1
+    return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE]
 
 
 @jit
@@ -215,9 +223,9 @@ def residual_jacobian(z, r, ph, p, M, max_events, jac):
         zp = z.copy()
         zp[j] += h
         y2, xd2, e2 = _unpack(zp, ph, M)
-        y3, xd3, e3, ph3, ev, ok = period_map(y2, xd2, e2, ph, p, M, max_events)
+        y3, xd3, e3, ph3, ev, degenerate = period_map(y2, xd2, e2, ph, p, M, max_events)
         events += ev
-        if ph3 != ph or not ok:
+        if ph3 != ph or degenerate < 0:
             return False, events
         jac[0, j] = ((y3 - y2) - r[0]) / h
         jac[1, j] = ((xd3 - xd2) - r[1]) / h
@@ -261,9 +269,9 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
                 > NEWTON_DIVERGED * scale0):
             return False, y, xd, e, ph_in, events
         y0, xd0, e0 = _unpack(z, ph, M)
-        y1, xd1, e1, ph1, ev, ok = period_map(y0, xd0, e0, ph, p, M, max_events)
+        y1, xd1, e1, ph1, ev, degenerate = period_map(y0, xd0, e0, ph, p, M, max_events)
         events += ev
-        if not ok:
+        if degenerate < 0:
             return False, y, xd, e, ph_in, events
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
@@ -276,7 +284,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
         r = np.array([y1 - y0, xd1 - xd0, e1 - e0])
         res = alpha * abs(r[0]) + abs(r[1]) + (kk * abs(r[2]) if nd == 3 else 0.0)
         if res <= tol * scale0:
-            if not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
+            if degenerate > 0 or not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
                 return False, y, xd, e, ph_in, events
             return True, y0, xd0, e0, ph, events
         if not have_jac or res > 0.25 * res_prev:
@@ -516,7 +524,7 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, 
     if math.isfinite(d_mu) and count[C_DEGENERATE] == 0:  # z2 is the exact image of z
         lam, ev = leading_multiplier(z, z2, p, M, max_events)
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
-    err = max(d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
+    err = max(ERROR_SAFETY * d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)
     if first_jump >= 0 and not lam < NEUTRAL:
         # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
