@@ -150,18 +150,15 @@ def first_root(c, m, t0, T):
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
         return a
-    stack_t = np.empty(96)
-    stack_g = np.empty(96)
-    stack_s = np.empty(96)
-    stack_d = np.empty(96)
-    stack_t[0] = T
-    stack_g[0], stack_s[0], stack_d[0] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
+    stack = np.empty((96, 4))  # right ends: t, g, slow part of g, g' (one allocation)
+    stack[0, 0] = T
+    stack[0, 1], stack[0, 2], stack[0, 3] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
     top = 0
     while top >= 0:
-        b = stack_t[top]
-        gb = stack_g[top]
-        sb = stack_s[top]
-        db = stack_d[top]
+        b = stack[top, 0]
+        gb = stack[top, 1]
+        sb = stack[top, 2]
+        db = stack[top, 3]
         h = b - a
         m2 = bound_at(pm2, a)
         if gb <= 0.0:
@@ -183,6 +180,6 @@ def first_root(c, m, t0, T):
                 continue
         mid = 0.5 * (a + b)
         top += 1
-        stack_t[top] = mid
-        stack_g[top], stack_s[top], stack_d[top] = _point(c, c1, m, mid, cs, ce, f1, f2, fe)
+        stack[top, 0] = mid
+        stack[top, 1], stack[top, 2], stack[top, 3] = _point(c, c1, m, mid, cs, ce, f1, f2, fe)
     return -1.0

@@ -243,8 +243,26 @@ def spectral_radius(jac, nd):
 
 
 @jit
+def _broyden(jac, nd, dr, dz):
+    """Broyden's ("good") rank-one update of ``jac`` after the step ``dz`` changed the
+    residual by ``dr``: saves the ``nd`` period maps of a fresh difference Jacobian."""
+    den = 0.0
+    for j in range(nd):
+        den += dz[j] * dz[j]
+    if den == 0.0:
+        return
+    for i in range(nd):
+        u = dr[i]
+        for j in range(nd):
+            u -= jac[i, j] * dz[j]
+        for j in range(nd):
+            jac[i, j] += u * dz[j] / den
+
+
+@jit
 def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
-    """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian.
+    """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian
+    (updated by Broyden's rule between rebuilds).
 
     Only attracting orbits are accepted (spectral radius of ``DP^p`` below
     ``NEUTRAL``), so the answer is the attractor the iteration was approaching, not a
@@ -263,6 +281,8 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     jac = np.zeros((3, 3))
     have_jac = False
     res_prev = np.inf
+    r_prev = np.zeros(3)
+    dz = np.zeros(3)
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
     for _ in range(NEWTON_ITERATIONS):
         if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
@@ -283,17 +303,20 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
             continue
         r = np.array([y1 - y0, xd1 - xd0, e1 - e0])
         res = alpha * abs(r[0]) + abs(r[1]) + (kk * abs(r[2]) if nd == 3 else 0.0)
+        if have_jac and np.isfinite(res_prev):
+            _broyden(jac, nd, r - r_prev, dz)
         if res <= tol * scale0:
             if degenerate > 0 or not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
                 return False, y, xd, e, ph_in, events
             return True, y0, xd0, e0, ph, events
-        if not have_jac or res > 0.25 * res_prev:
-            # (re)build the Jacobian; otherwise chord steps with the old one
+        if not have_jac or res > 0.5 * res_prev:
+            # (re)build the Jacobian; otherwise Broyden's updates of the old one
             have_jac, ev = residual_jacobian(z, r, ph, p, M, max_events, jac)
             events += ev
             if not have_jac:
                 return False, y, xd, e, ph_in, events
         res_prev = res
+        r_prev = r
         dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
         if not ok:
             return False, y, xd, e, ph_in, events
