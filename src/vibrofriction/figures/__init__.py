@@ -8,6 +8,8 @@ the solver series a figure needs and how to draw, table and check them.
 * :mod:`.resonant`: Fig. 6 (case IV) and the prediction for Figs. 8-9;
 * :mod:`.dimensional`: Fig. 10, COF against ``v0`` in m/s;
 * :mod:`.maps`: maps over the ``(alpha, beta)`` plane;
+* :mod:`.damped`: beyond the paper, the damped model (Figs. 11-13: case IV, Fig. 10
+  and Fig. 5 with pin damping);
 * :mod:`.checks`: the physics checks of the curves (numerics against the closed forms),
   pure functions without drawing;
 * :mod:`.style`: the shared matplotlib style.  Figures are ``matplotlib.figure.Figure``
@@ -16,7 +18,7 @@ the solver series a figure needs and how to draw, table and check them.
 
 from __future__ import annotations
 
-from . import dimensional, history, maps, resonant, style, velocity
+from . import damped, dimensional, history, maps, resonant, style, velocity
 from .recipe import Check, Recipe, Rendered, Table, solve_recipes
 from .series import Curve, Series, solve
 
@@ -46,4 +48,7 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         resonant.fig8_9(quick),
         dimensional.fig10(quick),
         maps.maps(quick),
+        damped.damped_case_iv(quick),
+        damped.damped_fig10(quick),
+        damped.damped_fig5(quick),
     ]
