@@ -175,9 +175,12 @@ def reference_mu(
     transient_periods: int = TRANSIENT_PERIODS,
     average_periods: int = AVERAGE_PERIODS,
     steps: tuple[float, ...] | None = None,
+    zeta: float = 0.0,
+    eta_c: float = 0.0,
 ) -> tuple[float, float]:
     """``(mu, err)``: the fixed-step reference's ``mu_macro/mu0`` (eq. 25) from ``initial``
-    and a bound on its own error (module docstring).
+    and a bound on its own error (module docstring); ``zeta``, ``eta_c``: the dashpots
+    (docs/damping.md).
 
     ``mu`` is the finest run's mean over ``average_periods`` drive periods (an even
     number) after ``transient_periods``; ``steps`` are the steps per fastest period,
@@ -191,9 +194,10 @@ def reference_mu(
     half = average_periods // 2
     # the coarsest run goes on for the later windows, each 2 windows after the last
     stride = 2 * average_periods
+    damping = {"zeta": zeta, "eta_c": eta_c} if (zeta or eta_c) else {}
     runs = [return_mapping_periods(alpha, beta, a, V, s, transient_periods,
                                    average_periods + (stride * LATER_WINDOWS if i == 0 else 0),
-                                   initial) for i, s in enumerate(steps)]
+                                   initial, **damping) for i, s in enumerate(steps)]
     mu = runs[-1].mu_ratio(0, average_periods)
     discretisation = max(abs(mu - r.mu_ratio(0, average_periods)) for r in runs[:-1])
     if math.isinf(beta):

@@ -36,6 +36,13 @@ over long runs.
   and cut the time axis; quadrature state variables accumulate the integrals of
   ``f`` and ``n``.
 
+Damping (``docs/damping.md``): peer B takes ``zeta`` (the pin's damping ratio) and
+``eta_c`` (the contact's loss factor); when they are not both zero it runs the scheme
+of :mod:`.damped` (the pin dashpot trapezoidal, a return mapping of the Kelvin-Voigt
+element in series with the slider; first order where the contact is viscoelastic,
+second with the pin dashpot alone: ``tests/test_reference_damped.py``).  Peer A is
+undamped only.
+
 Neither peer detects a periodic orbit: each averages over a fixed window after a
 fixed transient, from a stated initial state. Compare them (and the main
 solver) at the same transient/average windows when checking discretisation

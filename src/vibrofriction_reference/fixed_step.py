@@ -9,9 +9,11 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from .damped import damped_steps_per_drive_period, fixed_step_damped
 from .model import (
     INITIAL_SLIDING,
     check_count,
+    check_damping,
     check_parameters,
     check_windows,
     contact_angle,
@@ -187,8 +189,13 @@ def return_mapping_mu(
     transient_periods: int = 200,
     average_periods: int = 50,
     initial: int | str = INITIAL_SLIDING,
+    zeta: float = 0.0,
+    eta_c: float = 0.0,
 ) -> float:
     """``mu_macro / mu0 = <f> / <n>`` (paper eq. 25) by a fixed-step integrator (peer B).
+
+    ``zeta`` (pin damping ratio) and ``eta_c`` (contact loss factor), when not both
+    zero, select the damped scheme of :mod:`.damped` (``docs/damping.md``).
 
     Finite ``beta``: velocity Verlet for the body with a return-mapping Jenkins
     element for the contact; ``beta = math.inf``: Moreau midpoint time-stepping.
@@ -210,21 +217,43 @@ def return_mapping_mu(
     ``sqrt(beta) <= 1.5``, scaling with ``max(1, sqrt(beta))``.
     """
     sf, sn, _, _, _ = _averaging_sums(alpha, beta, amplitude, V, steps_per_period,
-                                      transient_periods, average_periods, initial)
+                                      transient_periods, average_periods, initial, zeta,
+                                      eta_c)
     return sf / sn
 
 
+def _steps(alpha, beta, zeta, eta_c, steps_per_period) -> int:
+    if zeta or eta_c:
+        return damped_steps_per_drive_period(alpha, beta, zeta, eta_c, steps_per_period)
+    return steps_per_drive_period(alpha, beta, steps_per_period)
+
+
+def _run(alpha, beta, amplitude, V, zeta, eta_c, N, n_total, avg_start, initial, record):
+    """``(sf, sn, pf, pn, tau, x, x', f, n, e)``: the undamped scheme unchanged, or the
+    damped one."""
+    if not (zeta or eta_c):
+        out = _fixed_step(alpha, beta, amplitude, V, N, n_total, avg_start, initial, record)
+        return (*out, np.zeros_like(out[4]))
+    sf, sn, pf, pn, hist = fixed_step_damped(alpha, beta, amplitude, V, zeta, eta_c, N,
+                                             n_total, avg_start, initial, record)
+    n = np.array([normal(t, amplitude) for t in hist[0]]) if record else hist[0]
+    if record and math.isinf(beta):  # Moreau: n at the midpoint of the step ending there
+        n = np.concatenate([[normal(0.0, amplitude)],
+                            [normal(t - math.pi / N, amplitude) for t in hist[0][1:]]])
+    return sf, sn, pf, pn, hist[0], hist[1], hist[2], hist[3], n, hist[4]
+
+
 def _averaging_sums(alpha, beta, amplitude, V, steps_per_period, transient_periods,
-                    average_periods, initial):
+                    average_periods, initial, zeta=0.0, eta_c=0.0):
     """Checked arguments, one run: the window's sums of f and n, per-period sums, N."""
     alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
+    zeta, eta_c = check_damping(zeta, eta_c)
     transient_periods, average_periods = check_windows(transient_periods, average_periods)
-    N = steps_per_drive_period(alpha, beta, steps_per_period)
+    N = _steps(alpha, beta, zeta, eta_c, steps_per_period)
     n_total = N * (transient_periods + average_periods)
     avg_start = N * transient_periods
-    sf, sn, pf, pn, *_ = _fixed_step(
-        alpha, beta, amplitude, V, N, n_total, avg_start, initial_code(initial), False
-    )
+    sf, sn, pf, pn, *_ = _run(alpha, beta, amplitude, V, zeta, eta_c, N, n_total, avg_start,
+                              initial_code(initial), False)
     return sf, sn, pf, pn, N
 
 
@@ -257,10 +286,13 @@ def return_mapping_periods(
     transient_periods: int = 200,
     average_periods: int = 50,
     initial: int | str = INITIAL_SLIDING,
+    zeta: float = 0.0,
+    eta_c: float = 0.0,
 ) -> PeriodMeans:
     """The run of :func:`return_mapping_mu`, with the means of each averaged period."""
     _, _, pf, pn, N = _averaging_sums(alpha, beta, amplitude, V, steps_per_period,
-                                      transient_periods, average_periods, initial)
+                                      transient_periods, average_periods, initial, zeta,
+                                      eta_c)
     return PeriodMeans(pf / N, pn / N, N)
 
 
@@ -271,7 +303,8 @@ class ReferenceHistory:
     ``tau``, ``x``, ``xdot`` are on the step grid. With a finite contact ``f`` and
     ``n`` are the values at the same instants; with a rigid contact (Moreau)
     they are the mean force of the step ending at ``tau`` and ``n`` at that
-    step's midpoint (entry 0 is the initial state).
+    step's midpoint (entry 0 is the initial state).  ``e`` is the elongation of the
+    contact spring of a damped run (zeros otherwise).
     """
 
     tau: np.ndarray
@@ -280,6 +313,7 @@ class ReferenceHistory:
     f: np.ndarray
     n: np.ndarray
     steps_per_drive_period: int
+    e: np.ndarray
 
 
 def return_mapping_history(
@@ -290,15 +324,17 @@ def return_mapping_history(
     periods: int = 10,
     steps_per_period: float = 400,
     initial: int | str = INITIAL_SLIDING,
+    zeta: float = 0.0,
+    eta_c: float = 0.0,
 ) -> ReferenceHistory:
     """The trajectory of :func:`return_mapping_mu` over ``periods`` drive periods from 0."""
     alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
+    zeta, eta_c = check_damping(zeta, eta_c)
     periods = check_count("periods", periods, 1)
-    N = steps_per_drive_period(alpha, beta, steps_per_period)
+    N = _steps(alpha, beta, zeta, eta_c, steps_per_period)
     n_total = N * periods
-    _, _, _, _, tau, x, xd, f, n = _fixed_step(
-        alpha, beta, amplitude, V, N, n_total, 0, initial_code(initial), True
-    )
-    return ReferenceHistory(tau, x, xd, f, n, N)
+    _, _, _, _, tau, x, xd, f, n, e = _run(alpha, beta, amplitude, V, zeta, eta_c, N, n_total,
+                                           0, initial_code(initial), True)
+    return ReferenceHistory(tau, x, xd, f, n, N, e)
 
 

@@ -13,7 +13,8 @@ import math
 
 from numba import njit
 
-__all__ = ["INITIAL_REST", "INITIAL_SLIDING", "TWO_PI", "check_count", "check_parameters",
+__all__ = ["INITIAL_REST", "INITIAL_SLIDING", "TWO_PI", "check_count", "check_damping",
+           "check_parameters",
            "check_windows", "contact_angle", "initial_code", "normal", "steps_per_drive_period"]
 
 INITIAL_SLIDING = 0
@@ -57,6 +58,18 @@ def check_parameters(alpha, beta, amplitude, V) -> tuple[float, float, float, fl
     if not math.isfinite(V):
         raise ValueError(f"V must be a finite number, got {V}")
     return alpha, beta, amplitude, V
+
+
+def check_damping(zeta, eta_c) -> tuple[float, float]:
+    """The pin's damping ratio and the contact's loss factor as floats, or ValueError
+    naming the one that is negative or not finite."""
+    out = []
+    for name, value in (("zeta", zeta), ("eta_c", eta_c)):
+        value = float(value)
+        if not (value >= 0.0 and math.isfinite(value)):
+            raise ValueError(f"{name} must be in [0, inf) (finite and >= 0), got {value}")
+        out.append(value)
+    return out[0], out[1]
 
 
 def check_count(name: str, value, minimum: int) -> int:
