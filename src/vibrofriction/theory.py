@@ -53,6 +53,8 @@ __all__ = [
     "mu_ratio_soft",
     "mu_ratio_soft_corrected",
     "mu_ratio_stiff",
+    "mu_ratio_stiff_exact",
+    "resonant_damped_mu_ratio",
     "resonant_plateau",
     "resonant_plateau_exact",
     "resonant_tau_star",
@@ -495,3 +497,101 @@ def resonant_plateau_exact(amplitude: ArrayLike) -> FloatOrArray:
     tau = _tau_star_exact(a)
     n_mean = np.asarray(mean_normal_force(a))
     return as_float_or_array(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)
+
+
+# --------------------------------------------------------------------------- case IV, damped
+def _damped_tau_star(x: float, a: float) -> float:
+    """Root ``tau*`` of ``G(tau*) cos tau* = x`` on ``[0, tau*_0]`` (``x = pi gamma V``)."""
+    work = float(_drive_work(np.asarray(a)))
+    if x >= work:
+        return 0.0
+    from scipy.optimize import brentq
+
+    def balance(t: float) -> float:
+        g = work - 4.0 * math.sin(t) - 2.0 * a * (t + math.sin(t) * math.cos(t))
+        return g * math.cos(t) - x
+
+    hi = _resonant_tau_star_exact(a)  # the undamped root, where G = 0
+    if balance(hi) >= 0.0:  # x = 0 (no damping) or below G's round-off there
+        return hi
+    return float(brentq(balance, 0.0, hi, xtol=1e-300, rtol=1e-15))
+
+
+def resonant_damped_mu_ratio(v_inertial: ArrayLike, amplitude: ArrayLike,
+                             zeta: ArrayLike) -> FloatOrArray:
+    r"""The rise of ``mu/mu0`` to 1 in case IV with a damped pin (docs/damping.md).
+
+    The paper's energy balance of case IV (first eq. 32) with the pin dashpot
+    ``gamma = 2 zeta`` (``alpha = 1``, rigid contact, harmonic body velocity
+    ``x' = V - dv cos tau``): the mean power friction feeds into the oscillation now
+    equals what the dashpot dissipates, ``gamma dv^2/2``, instead of 0,
+
+    .. math:: \pi\gamma\,dv = G(\tau^*) = E(a) - 4\sin\tau^*
+              - 2a(\tau^* + \sin\tau^*\cos\tau^*), \qquad V = dv\cos\tau^*,
+
+    (``E(a) = pi a`` for ``a <= 1``, ``a theta + sin theta`` with loss of contact), so
+    ``tau*`` solves ``G(tau*) cos tau* = pi gamma V`` and, as for the plateau,
+
+    .. math:: \mu/\mu_0 = 1 - \frac{2}{\pi}\frac{\tau^* + a\sin\tau^*}{\langle n\rangle}.
+
+    At ``gamma = 0`` it is :func:`resonant_plateau_exact`; ``tau*`` closes (``mu = mu0``)
+    at ``V = E(a)/(pi gamma)``, which is the critical velocity ``a/(2 zeta)`` for
+    ``a <= 1``.  Within the ansatz (large ``V``, harmonic motion); the solver is the judge.
+    """
+    V = checked("v_inertial", v_inertial, minimum=0.0)
+    a = checked("amplitude", amplitude, minimum=0.0)
+    zeta = checked("zeta", zeta, minimum=0.0)
+    V, a, zeta = np.broadcast_arrays(V, a, zeta)
+    x = np.pi * 2.0 * zeta * V
+    tau = np.vectorize(_damped_tau_star, otypes=[float])(x, a)
+    n_mean = np.asarray(mean_normal_force(a))
+    return as_float_or_array(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)
+
+
+# --------------------------------------------------------------------------- stiff limit
+def _stiff_tau2(vbar: float) -> tuple[float, float]:
+    """``(tau1, tau2)``: stick starts where ``n' = k V`` on the rising branch and ends
+    where the stick line ``n(tau1) + a vbar (tau - tau1)`` meets ``n`` again."""
+    tau1 = math.pi + math.asin(vbar)
+    if vbar >= 1.0:
+        return tau1, tau1
+    if vbar == 0.0:
+        return tau1, tau1 + 2.0 * math.pi
+    from scipy.optimize import brentq
+
+    def gap(t: float) -> float:  # (n - stick line)/a: positive while the contact sticks
+        return math.cos(tau1 + t) - math.cos(tau1) - vbar * t
+
+    # the gap grows while n' > k V, i.e. until t = pi - 2 asin(vbar), then falls to
+    # -2 pi vbar at t = 2 pi: one crossing in between
+    t_max = math.pi - 2.0 * math.asin(vbar)
+    return tau1, tau1 + brentq(gap, t_max, 2.0 * math.pi, xtol=1e-15, rtol=1e-15)
+
+
+def _stiff_exact(vbar: float, a: float) -> float:
+    if vbar >= 1.0 or a == 0.0:
+        return 1.0
+    tau1, tau2 = _stiff_tau2(vbar)
+    d = tau2 - tau1
+    deficit = math.sin(tau2) - math.sin(tau1) - d * math.cos(tau1) - 0.5 * vbar * d * d
+    return 1.0 - a * deficit / (2.0 * math.pi)
+
+
+def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
+    r"""The exact law of the stiff limit (Part I's flat contact), of which eq. (26) is a fit.
+
+    For ``alpha, beta -> 0`` the body moves at the pulling velocity and only the contact
+    spring sees it: stick ``f' = k V``, forward slip ``f = n`` while the contact point
+    moves forward, ``n' < k V``, ``vbar = k V / a`` (eq. 14).  Slip ends at
+    ``tau1 = pi + asin(vbar)`` where ``n'`` rises through ``k V``; the stick line
+    ``f = n(tau1) + a vbar (tau - tau1)`` meets ``n`` again at ``tau2`` (one root of
+    ``cos tau2 - cos tau1 = vbar (tau2 - tau1)``), so (docs/damping.md)
+
+    .. math:: rac{\mu}{\mu_0} = 1 - rac{a}{2\pi}\Big[\sin	au_2 - \sin	au_1
+              - (	au_2 - 	au_1)\cos	au_1 - 	frac{ar v}{2}(	au_2 - 	au_1)^2\Big],
+
+    ``1 - a`` at ``vbar = 0`` (eq. 2), 1 for ``vbar >= 1``.  For ``0 <= a <= 1``.
+    """
+    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
+    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    return as_float_or_array(np.vectorize(_stiff_exact, otypes=[float])(v, a))
