@@ -502,6 +502,17 @@ def damped_case_iv_checks(curves: Mapping[str, Curve], tolerance: float = 0.01
             f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}, "
             f"V in (0, {0.95 * vc:.3g}]", m, f"V_c = {vc:.4g}",
             "below 1: the critical velocity is sharp" if m < 1.0 else "NOT below 1"))
+        law_v = c.v_inertial[(c.v_inertial >= 0.3 * vc) & (c.v_inertial <= 0.97 * vc)]
+        if law_v.size:
+            sel = np.isin(c.v_inertial, law_v)
+            law = np.asarray(theory.resonant_damped_mu_ratio(law_v, a, z))
+            dev = np.abs(c.mu_ratio[sel] - law)
+            checks.append(Check(
+                "damped case IV: rise law (theory.resonant_damped_mu_ratio)",
+                f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}, "
+                f"0.3 V_c <= V <= 0.97 V_c ({law_v.size} points)", float(np.max(dev)),
+                f"V = {float(law_v[np.argmax(dev)]):.3g}",
+                "the energy balance of eq. (32) with the dashpot; harmonic ansatz"))
         text = f"{_zeta_label(z)}: V_c = {vc:.4g}"
         if undamped:
             u = undamped[0]

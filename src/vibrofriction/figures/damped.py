@@ -100,6 +100,11 @@ def _draw_case_iv(curves: Mapping[str, Curve]):
                  r"$\zeta = 0$ (undamped)")
         ax.plot(c.v_inertial, c.trusted_mu, color=col, lw=1.1, label=label, zorder=3)
         style.mark_untrusted(ax, c.v_inertial, c, col, ms=2.5)
+        if z > 0:  # the rise law: energy balance with the dashpot (docs/damping.md),
+            # drawn where its ansatz (an oscillation large against V) can hold
+            V = c.v_inertial[c.v_inertial >= 0.1 * c.series.meta["v_c"]]
+            ax.plot(V, theory.resonant_damped_mu_ratio(V, a, z), color="black", lw=0.6,
+                    ls=(0, (1, 1.5)), zorder=4)
         vc = c.series.meta["v_c"]
         if math.isfinite(vc):
             ax.axvline(vc, color=col, lw=0.6, ls=(0, (2, 2)), zorder=2)
@@ -112,7 +117,11 @@ def _draw_case_iv(curves: Mapping[str, Curve]):
     ax.set_ylabel(style.MU)
     ax.set_title(rf"case IV damped: $\alpha = 1$, $\beta = \infty$, "
                  rf"$\Delta F_N/F_{{N,0}} = {a:g}$; $V_c = a/(2\zeta)$", fontsize=7)
-    ax.legend(loc="upper left", fontsize=6, handlelength=1.8)
+    from matplotlib.lines import Line2D
+    handles, _ = ax.get_legend_handles_labels()
+    handles.append(Line2D([], [], color="black", lw=0.6, ls=(0, (1, 1.5)),
+                          label="rise law (energy balance with damping)"))
+    ax.legend(handles=handles, loc="upper left", fontsize=6, handlelength=1.8)
     return fig
 
 
@@ -141,7 +150,9 @@ def damped_case_iv(quick: bool = False) -> Recipe:
                  f"{CASE_IV_AMPLITUDE:g}) for the pin damping ratios $\\zeta$ = "
                  + ", ".join(f"{z:g}" for z in CASE_IV_ZETAS) + " ($Q = 1/(2\\zeta)$). Red "
                  "dashed: the undamped plateau (exact, eq. 32); dashed verticals: the damped "
-                 "critical velocities $V_c = a/(2\\zeta)$, above which $\\mu = \\mu_0$. At $V = 0$ "
+                 "critical velocities $V_c = a/(2\\zeta)$, above which $\\mu = \\mu_0$; black "
+                 "dotted: the rise law from the energy balance with the dashpot "
+                 "(docs/damping.md), drawn from $0.1 V_c$. At $V = 0$ "
                  "(off the log axis) every curve starts at the static value "
                  f"{1 - CASE_IV_AMPLITUDE:g} (eq. 2)."),
         series=_case_iv_series(quick), render=render, parameters=params)
