@@ -29,7 +29,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
 import vibrofriction as vf  # noqa: E402
-from bench_solver import POINTS  # noqa: E402
+from bench_solver import POINTS, _median_time  # noqa: E402
 from vibrofriction_reference import return_mapping_mu  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
@@ -40,18 +40,6 @@ CORNER_BETAS = (1e4, 1e5, 1e6)
 CORNER_AMPLITUDES = (0.5, 1.0, 1.5)
 CORNER_VBARS = (0.1, 0.5, 0.9)
 CORNER_DAMPINGS = [(0.0, 0.0), (1e-3, 0.0), (1e-2, 0.0), (1e-3, 0.1)]
-
-
-def _median_time(fn, repeats: int, budget: float):
-    times, out = [], None
-    start = time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-        if time.perf_counter() - start > budget:
-            break
-    return statistics.median(times), out
 
 
 def _peer(alpha, beta, a, V, zeta, eta):

@@ -24,7 +24,7 @@ from . import style
 from .checks import damped_beta_series_checks, damped_case_iv_checks, damped_law_checks
 from .dimensional import PIN, SYSTEMS, physical_system
 from .recipe import Recipe, Rendered, curve_table
-from .series import Curve, Series, series_at_vbar
+from .series import Curve, Series, series_at_vbar, series_of_physical
 from .velocity import FIG5_BETAS_ABOVE, FIG5_BETAS_BELOW
 
 __all__ = [
@@ -172,15 +172,7 @@ def _law_series(quick: bool) -> tuple[Series, ...]:
     for name, (f, _, _) in SYSTEMS.items():
         for key, phys in ((name, damped_system(name)),
                           (f"undamped:{name}", physical_system(name))):
-            dim = phys.to_dimensionless()
-            V = np.asarray(phys.v0_to_inertial(v0))
-            try:
-                vbar = np.asarray(phys.v0_to_vbar(v0))
-            except ValueError:
-                vbar = np.full(v0.size, np.nan)
-            out.append(Series(key, dim.alpha, dim.beta, dim.amplitude, V, vbar,
-                              {"v0": v0, "frequency_hz": f, "system": name},
-                              zeta=dim.zeta, eta_c=dim.eta_c))
+            out.append(series_of_physical(key, phys, v0, frequency_hz=f, system=name))
     return tuple(out)
 
 

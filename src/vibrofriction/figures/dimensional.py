@@ -26,7 +26,7 @@ from ..params import Physical
 from . import style
 from .checks import fig10_checks
 from .recipe import Recipe, Rendered, curve_table
-from .series import Curve, Series
+from .series import Curve, Series, series_of_physical
 
 __all__ = ["CONTACTS", "PIN", "SYSTEMS", "fig10", "physical_system"]
 
@@ -66,15 +66,7 @@ def _series(quick: bool) -> tuple[Series, ...]:
     v0 = np.concatenate([[0.0], np.geomspace(*_V0_RANGE, n)])
     out = []
     for name, (f, _, _) in SYSTEMS.items():
-        phys = physical_system(name)
-        dim = phys.to_dimensionless()
-        V = np.asarray(phys.v0_to_inertial(v0))
-        try:
-            vbar = np.asarray(phys.v0_to_vbar(v0))
-        except ValueError:
-            vbar = np.full(v0.size, np.nan)
-        out.append(Series(name, dim.alpha, dim.beta, dim.amplitude, V, vbar,
-                          {"v0": v0, "frequency_hz": f}))
+        out.append(series_of_physical(name, physical_system(name), v0, frequency_hz=f))
     return tuple(out)
 
 

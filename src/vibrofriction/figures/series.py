@@ -19,11 +19,12 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..params import vbar_to_inertial
+from ..params import Physical, vbar_to_inertial
 from ..solver import STATUS_BY_CODE, SolverSettings, solve_points
 from ..validation import checked
 
-__all__ = ["Curve", "Runner", "Series", "solve", "series_at_vbar", "status_counts"]
+__all__ = ["Curve", "Runner", "Series", "series_at_vbar", "series_of_physical", "solve",
+           "status_counts"]
 
 #: ``runner(alpha, beta, amplitude, v_inertial, settings=...) -> dict of arrays``.
 Runner = Callable[..., dict[str, NDArray]]
@@ -72,6 +73,21 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
     except ValueError as exc:
         raise ValueError(f"series {key!r}: {exc}") from None
     return Series(key, alpha, beta, amplitude, np.atleast_1d(V), vb, meta)
+
+
+def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: object) -> Series:
+    """A series of a :class:`Physical` system on a grid of ``v0`` (m/s): its dimensionless
+    groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or infinite);
+    ``v0`` is kept in ``meta``."""
+    v0 = np.asarray(v0, dtype=float)
+    dim = physical.to_dimensionless()
+    V = np.asarray(physical.v0_to_inertial(v0))
+    try:
+        vbar = np.asarray(physical.v0_to_vbar(v0))
+    except ValueError:
+        vbar = np.full(v0.size, np.nan)
+    return Series(key, dim.alpha, dim.beta, dim.amplitude, V, vbar, {"v0": v0, **meta},
+                  zeta=dim.zeta, eta_c=dim.eta_c)
 
 
 @dataclass(frozen=True)
