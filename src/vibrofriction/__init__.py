@@ -32,6 +32,10 @@ def __getattr__(name: str):
         import importlib
 
         return importlib.import_module(".sweep", __name__)
+    if name == "read_measurements":  # pandas, likewise on first use
+        from .measurements import read_measurements
+
+        return read_measurements
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
@@ -48,6 +52,7 @@ __all__ = [
     "classify",
     "friction_coefficient",
     "pin_damping",
+    "read_measurements",
     "simulate",
     "sweep",
     "__version__",

@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
+from vibrofriction.contact import FlatPunch, Sphere
 from vibrofriction.validation import as_float_or_array, checked, checked_beta
 
 __all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar", "pin_damping",
@@ -319,6 +320,67 @@ class Physical:
         k_xc = float(checked("k_xc", self.k_xc, minimum=0.0, strict=True, allow_inf=True))
         object.__setattr__(self, "k_xc", k_xc)
         object.__setattr__(self, "du_z", _nonnegative("du_z", self.du_z))
+
+    @classmethod
+    def from_bench(cls, *, natural_frequency_hz: float, normal_load: float,
+                   drive_frequency_hz: float, mu0: float, mass: float | None = None,
+                   k_x: float | None = None, quality_factor: float | None = None,
+                   damping_ratio: float | None = None, k_zc: float | None = None,
+                   k_xc: float | None = None, contact: FlatPunch | Sphere | None = None,
+                   eta_c: float = 0.0, du_z: float | None = None,
+                   dF_N: float | None = None) -> Physical:
+        """The model of a tribometer from what the experimenter knows (docs/bench.md).
+
+        * the pin: its natural frequency (Hz, from an impact test with the contact
+          open) and its modal ``mass`` (kg) or its stiffness ``k_x`` (N/m), the other
+          following from ``k_x = m (2 pi f_n)^2``; optionally its ``quality_factor`` or
+          ``damping_ratio`` (the same decay record);
+        * the contact: ``k_zc`` and ``k_xc`` (N/m), or a ``contact`` model
+          (:class:`~vibrofriction.contact.FlatPunch`, :class:`~vibrofriction.contact.Sphere`:
+          Hertz and Mindlin at ``normal_load``); optionally its loss factor ``eta_c``;
+        * the load ``normal_load = F_N0`` (N), the drive frequency (Hz) and the
+          oscillation as an indentation amplitude ``du_z`` (m) or a normal-force
+          amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted).
+        """
+        f_n = float(checked("natural_frequency_hz", natural_frequency_hz, minimum=0.0,
+                            strict=True))
+        load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
+        f_d = float(checked("drive_frequency_hz", drive_frequency_hz, minimum=0.0, strict=True))
+        w_n2 = (2.0 * math.pi * f_n) ** 2
+        if (mass is None) == (k_x is None):
+            raise ValueError("give exactly one of mass (kg) and k_x (N/m): the natural "
+                             "frequency gives the other")
+        if mass is not None:
+            mass = _positive("mass", mass)
+            k_x = mass * w_n2
+        else:
+            k_x = _positive("k_x", k_x)
+            mass = k_x / w_n2
+        if contact is not None:
+            if k_zc is not None or k_xc is not None:
+                raise ValueError("give either contact (a contact model) or k_zc and k_xc")
+            if not isinstance(contact, FlatPunch | Sphere):
+                raise TypeError(f"contact must be a FlatPunch or a Sphere, got "
+                                f"{type(contact).__name__}")
+            k_zc, k_xc = contact.stiffness(load)
+        elif k_zc is None or k_xc is None:
+            raise ValueError("give the contact stiffnesses k_zc and k_xc (N/m) or a contact "
+                             "model (contact=FlatPunch(...) or Sphere(...))")
+        k_zc = _positive("k_zc", k_zc)
+        k_xc = float(checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True))
+        if (du_z is None) == (dF_N is None):
+            raise ValueError("give exactly one of du_z (m) and dF_N (N) for the oscillation")
+        du_z = _nonnegative("du_z", du_z) if du_z is not None else \
+            _nonnegative("dF_N", dF_N) / k_zc
+        system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
+                     omega=2.0 * math.pi * f_d, mu0=mu0)
+        if quality_factor is not None and damping_ratio is not None:
+            raise ValueError("give at most one of quality_factor and damping_ratio")
+        if quality_factor is not None or damping_ratio is not None:
+            system = system.with_damping(zeta=damping_ratio, quality_factor=quality_factor)
+        if eta_c:
+            system = system.with_damping(eta_c=eta_c)
+        return system
 
     def with_(self, **changes: float) -> Physical:
         """A copy with some fields replaced (validated again)."""

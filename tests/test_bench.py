@@ -1,0 +1,118 @@
+"""The set-up in the experimenter's terms (Physical.from_bench, contact models) and the
+measurement table (read_measurements): docs/bench.md."""
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import vibrofriction as vf
+from vibrofriction.contact import FlatPunch, Material, Sphere, rigid
+
+STEEL = Material(210e9, 0.3)
+
+
+def test_hertz_and_mindlin_by_hand():
+    s = Sphere(3e-3, STEEL, STEEL)
+    e_star = 210e9 / (2 * (1 - 0.3**2))
+    a = (3 * 20.0 * 3e-3 / (4 * e_star)) ** (1 / 3)
+    assert s.contact_radius(20.0) == pytest.approx(a, rel=1e-14)
+    k_z, k_x = s.stiffness(20.0)
+    assert k_z == pytest.approx(2 * e_star * a, rel=1e-14)
+    assert k_x / k_z == pytest.approx(2 * (1 - 0.3) / (2 - 0.3), rel=1e-14)  # Mindlin ratio
+    # the tangent stiffness is dF/d(delta) of Hertz's F = 4/3 E* sqrt(R) delta^1.5
+    delta = a * a / 3e-3
+    def force(d):
+        return 4 / 3 * e_star * math.sqrt(3e-3) * d**1.5
+    h = 1e-6 * delta
+    assert (force(delta + h) - force(delta - h)) / (2 * h) == pytest.approx(k_z, rel=1e-8)
+
+
+def test_flat_punch_on_a_rigid_counterface():
+    p = FlatPunch(1e-3, Material(70e9, 1 / 3), rigid())
+    k_z, k_x = p.stiffness(10.0)
+    G = 70e9 / (2 * (1 + 1 / 3))
+    assert k_z == pytest.approx(2 * 70e9 / (1 - 1 / 9) * 1e-3, rel=1e-14)
+    assert k_x == pytest.approx(8 * G * 1e-3 / (2 - 1 / 3), rel=1e-14)
+    assert k_z / k_x == pytest.approx(1.25, rel=1e-14)  # the ratio the paper uses
+    with pytest.raises(ValueError, match="rigid"):
+        FlatPunch(1e-3, rigid(), rigid()).stiffness(1.0)
+
+
+def test_from_bench_reproduces_what_the_experimenter_knows():
+    p = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+                               normal_load=20.0, contact=Sphere(3e-3, STEEL, STEEL),
+                               drive_frequency_hz=800.0, dF_N=10.0, mu0=0.3, eta_c=0.1)
+    assert p.natural_frequency() == pytest.approx(2 * math.pi * 800.0, rel=1e-14)
+    assert p.F_N0 == pytest.approx(20.0, rel=1e-14) and p.dF_N == pytest.approx(10.0)
+    assert p.quality_factor == pytest.approx(50.0) and p.eta_c == pytest.approx(0.1)
+    d = p.to_dimensionless()
+    assert d.alpha == pytest.approx(1.0, rel=1e-14) and d.amplitude == pytest.approx(0.5)
+    q = vf.Physical.from_bench(natural_frequency_hz=800.0, k_x=p.k_x, damping_ratio=0.01,
+                               normal_load=20.0, k_zc=p.k_zc, k_xc=p.k_xc,
+                               drive_frequency_hz=600.0, du_z=p.du_z, mu0=0.3)
+    assert q.mass == pytest.approx(0.01, rel=1e-14) and q.zeta == pytest.approx(0.01)
+    assert q.to_dimensionless().alpha == pytest.approx((800 / 600) ** 2, rel=1e-14)
+
+
+@pytest.mark.parametrize("changes, message", [
+    (dict(mass=None), "exactly one of mass"),
+    (dict(k_x=1e5), "exactly one of mass"),
+    (dict(contact=None), "k_zc and k_xc"),
+    (dict(k_zc=1e6), "either contact"),
+    (dict(dF_N=None), "exactly one of du_z"),
+    (dict(du_z=1e-6), "exactly one of du_z"),
+    (dict(natural_frequency_hz=-1.0), "natural_frequency_hz"),
+    (dict(normal_load=0.0), "normal_load"),
+    (dict(quality_factor=50.0, damping_ratio=0.01), "at most one"),
+    (dict(eta_c=-0.1), "eta_c"),
+])
+def test_from_bench_errors_name_the_input(changes, message):
+    kwargs = dict(natural_frequency_hz=800.0, mass=0.01, normal_load=20.0,
+                  contact=Sphere(3e-3, STEEL, STEEL), drive_frequency_hz=800.0, dF_N=10.0,
+                  mu0=0.3)
+    kwargs.update(changes)
+    kwargs = {k: v for k, v in kwargs.items() if v is not None}
+    with pytest.raises(ValueError, match=message):
+        vf.Physical.from_bench(**kwargs)
+
+
+def test_material_errors():
+    with pytest.raises(ValueError, match="nu"):
+        Material(1e9, 0.5)
+    with pytest.raises(ValueError, match="E"):
+        Material(-1.0, 0.3)
+
+
+# --------------------------------------------------------------------------- measurements
+def test_read_measurements_converts_units(tmp_path):
+    path = tmp_path / "m.csv"
+    path.write_text("# pin-on-disk, 800 Hz\n"
+                    "v0 [mm/s],cof,du_z [um],omega [Hz],sigma\n"
+                    "1.0,0.21,1.3,800,0.005\n"
+                    "10.0,0.27,5.4,800,0.004\n")
+    d = vf.read_measurements(path)
+    np.testing.assert_allclose(d["v0"], [1e-3, 1e-2])
+    np.testing.assert_allclose(d["du_z"], [1.3e-6, 5.4e-6])
+    np.testing.assert_allclose(d["omega"], 2 * math.pi * 800.0)
+    np.testing.assert_allclose(d["sigma"], [0.005, 0.004])
+    same = vf.read_measurements(pd.DataFrame({"v0": [1e-3], "cof": [0.2], "du_z": [1e-6],
+                                              "omega": [5000.0]}))
+    assert list(same.columns) == ["v0", "cof", "du_z", "omega", "sigma"]
+    assert math.isnan(same["sigma"][0])
+
+
+@pytest.mark.parametrize("text, message", [
+    ("v0,cof,du_z\n1,0.2,1e-6\n", r"lacks the column\(s\) \['omega'\]"),
+    ("v0 [km/h],cof,du_z,omega\n1,0.2,1e-6,5000\n", r"column 'v0': unit 'km/h'"),
+    ("v0,cof,du_z,omega\n1,0.2,1e-6,5000\n2,nan,1e-6,5000\n", r"column 'cof', line 3"),
+    ("v0,cof,du_z,omega\n-1,0.2,1e-6,5000\n", r"column 'v0', line 2"),
+    ("v0,cof,du_z,omega\n1,0.2,1e-6,0\n", r"column 'omega', line 2: .* > 0"),
+    ("v0,cof,du_z,omega,sigma\n1,0.2,1e-6,5,abc\n", r"column 'sigma', line 2"),
+])
+def test_read_measurements_errors_name_column_and_row(tmp_path, text, message):
+    path = tmp_path / "bad.csv"
+    path.write_text(text)
+    with pytest.raises(ValueError, match=message):
+        vf.read_measurements(path)
