@@ -36,6 +36,10 @@ def __getattr__(name: str):
         from .measurements import read_measurements
 
         return read_measurements
+    if name == "fit":  # lmfit and pandas, likewise
+        from .fitting import fit
+
+        return fit
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
@@ -50,6 +54,7 @@ __all__ = [
     "SolverSettings",
     "Status",
     "classify",
+    "fit",
     "friction_coefficient",
     "pin_damping",
     "read_measurements",

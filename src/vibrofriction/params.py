@@ -413,7 +413,7 @@ class Physical:
     @property
     def eta_c(self) -> float:
         """Loss factor of the contact at the drive frequency, ``omega c_xc / k_xc``."""
-        return 0.0 if math.isinf(self.k_xc) else self.omega * self.c_xc / self.k_xc
+        return float(self.groups(self.du_z, self.omega)[4])
 
     def with_damping(self, *, zeta: float | None = None, quality_factor: float | None = None,
                      eta_c: float | None = None) -> Physical:
@@ -430,14 +430,20 @@ class Physical:
 
     def to_dimensionless(self) -> Dimensionless:
         """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta`` and ``eta_c``."""
-        stiffness = self.mass * self.omega**2
-        return Dimensionless(
-            alpha=self.k_x / stiffness,
-            beta=(self.k_x + self.k_xc) / stiffness,
-            amplitude=self.du_z / self.u_z0,
-            zeta=self.zeta,
-            eta_c=self.eta_c,
-        )
+        alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
+        return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
+                             zeta=float(zeta), eta_c=float(eta_c))
+
+    def groups(self, du_z: ArrayLike, omega: ArrayLike) -> tuple[NDArray[np.float64], ...]:
+        """``(alpha, beta, a, zeta, eta_c)`` (eq. 20, docs/damping.md) of this pin driven at
+        ``omega`` (rad/s) with amplitude ``du_z`` (m), elementwise: the one conversion
+        from SI, for one point or a measured table."""
+        du_z = np.asarray(du_z, dtype=float)
+        omega = np.asarray(omega, dtype=float)
+        stiffness = self.mass * omega**2
+        eta_c = np.zeros_like(omega) if math.isinf(self.k_xc) else omega * self.c_xc / self.k_xc
+        return (self.k_x / stiffness, (self.k_x + self.k_xc) / stiffness, du_z / self.u_z0,
+                np.full(np.shape(omega), self.zeta), eta_c)
 
     def critical_velocity(self) -> float:
         """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``).
@@ -450,8 +456,10 @@ class Physical:
                                               self.k_xc, self.k_x, self.mass, self.c_x,
                                               self.c_xc))
 
-    def _velocity_unit(self) -> float:
-        return self.mu0 * self.F_N0 / (self.mass * self.omega)
+    def _velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
+        """``mu0 F_N0 / (m omega)`` (at this pin's ``omega`` unless another is given)."""
+        omega = self.omega if omega is None else np.asarray(omega, dtype=float)
+        return self.mu0 * self.F_N0 / (self.mass * omega)
 
     def v0_to_inertial(self, v0: ArrayLike) -> FloatOrArray:
         """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6."""

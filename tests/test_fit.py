@@ -1,0 +1,97 @@
+"""Fitting measured friction curves (vibrofriction.fitting): recovery, honest
+uncertainties over seeded synthetic data sets, warnings for what the data cannot tell,
+save and load."""
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import vibrofriction as vf
+from vibrofriction.fitting import FitResult, predict_cof
+
+TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
+                              du_z=0.5e-6, mu0=0.3)
+
+
+def synthetic(true: vf.Physical, amplitudes, rng, sigma=0.003, n=20, v=(1e-3, 0.2)):
+    rows = []
+    for du in amplitudes:
+        v0 = np.geomspace(*v, n)
+        cof = predict_cof(true, v0, np.full(n, du), np.full(n, true.omega))
+        rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
+                                  "du_z": du, "omega": true.omega, "sigma": sigma}))
+    return pd.concat(rows, ignore_index=True)
+
+
+@pytest.mark.slow
+def test_noise_free_data_give_back_the_parameters():
+    data = synthetic(TRUE, (0.3e-6, 0.6e-6, 0.9e-6), np.random.default_rng(0), sigma=1e-6)
+    # the experimenter's guess: the measured f_n and Q, a wrong modal mass, k_xc and mu0
+    guess = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.015, quality_factor=50.0,
+                                   normal_load=20.0, k_zc=2e7, k_xc=3e7,
+                                   drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.4)
+    res = vf.fit(data, guess, free=["mu0", "mass", "k_x", "k_xc"], progress=False)
+    for n in ("mu0", "mass", "k_x", "k_xc"):
+        assert res.params[n].value == pytest.approx(getattr(TRUE, n), rel=1e-3)
+    assert res.system.k_x / res.system.mass == pytest.approx(TRUE.k_x / TRUE.mass, rel=1e-12)
+    assert res.system.quality_factor == pytest.approx(50.0, rel=1e-12)
+
+
+@pytest.mark.slow
+def test_reported_uncertainties_cover_the_truth_about_95_percent_of_the_time():
+    """20 seeded data sets (3 amplitudes, noise 0.003; undamped and damped pins, soft and
+    stiff contacts, a jumping amplitude in every fourth): the true value within 2
+    reported standard errors."""
+    inside = total = 0
+    rng = np.random.default_rng(2026)
+    for k in range(20):
+        true = TRUE.with_(k_xc=float(rng.choice([5e6, 1.5e7, 6e7])),
+                          mu0=float(rng.uniform(0.2, 0.5)),
+                          c_x=TRUE.c_x * float(rng.choice([0.0, 1.0, 4.0])))
+        amps = (0.3e-6, 0.6e-6, 1.3e-6) if k % 4 == 0 else (0.3e-6, 0.6e-6, 0.9e-6)
+        data = synthetic(true, amps, rng)
+        guess = true.with_(mu0=true.mu0 * 1.3, k_xc=true.k_xc / 1.6, u_z0=true.u_z0 * 1.2,
+                           k_zc=true.k_zc / 1.2)
+        res = vf.fit(data, guess, free=["mu0", "k_xc", "u_z0"], progress=False, seed=k,
+                     workers=2)
+        for n in ("mu0", "k_xc", "u_z0"):
+            p = res.params[n]
+            total += 1
+            inside += p.stderr is not None and abs(p.value - getattr(true, n)) <= 2 * p.stderr
+    assert 0.85 <= inside / total <= 1.0, (inside, total)
+
+
+def test_a_single_curve_of_a_stiff_system_cannot_tell_mass_from_k_x():
+    stiff = vf.Physical(mass=1.0, k_x=1e3, k_xc=2e3, k_zc=2.5e3, u_z0=4e-3, du_z=2e-3,
+                        omega=2 * math.pi * 100, mu0=0.3)  # alpha, beta ~ 0.0025, 0.0076
+    data = synthetic(stiff, (2e-3,), np.random.default_rng(3), v=(1e-3, 0.5), n=15)
+    res = vf.fit(data, stiff.with_(mass=1.5, k_x=2e3), free=["mass", "k_x"],
+                 natural_frequency=False, progress=False, maxiter=5, popsize=5)
+    text = " ".join(res.warnings)
+    assert "mass" in text and "k_x" in text
+
+
+def test_save_and_load(tmp_path):
+    data = synthetic(TRUE, (0.3e-6, 0.9e-6), np.random.default_rng(4), n=10)
+    res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False, global_stage=False)
+    back = FitResult.from_json(res.to_json(tmp_path / "fit.json"))
+    assert back.params["mu0"].value == res.params["mu0"].value
+    assert back.params["mu0"].stderr == res.params["mu0"].stderr
+    assert back.system == res.system and back.free == res.free
+    assert "mu0" in back.report()
+    fig = res.plot()
+    assert len(fig.axes) == 2
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(free=["mu0", "nope"]), "free must name"),
+    (dict(free=[]), "free must name"),
+    (dict(free=["mu0", "mu0"]), "twice"),
+])
+def test_fit_errors(kwargs, message):
+    data = synthetic(TRUE, (0.5e-6,), np.random.default_rng(5), n=5)
+    with pytest.raises(ValueError, match=message):
+        vf.fit(data, TRUE, progress=False, **kwargs)
