@@ -40,6 +40,10 @@ def __getattr__(name: str):
         from .fitting import fit
 
         return fit
+    if name == "design":
+        from .designing import design
+
+        return design
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
@@ -54,6 +58,7 @@ __all__ = [
     "SolverSettings",
     "Status",
     "classify",
+    "design",
     "fit",
     "friction_coefficient",
     "pin_damping",
