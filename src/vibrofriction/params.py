@@ -13,14 +13,16 @@ from __future__ import annotations
 import dataclasses
 import enum
 import math
+import os
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
-from vibrofriction.contact import FlatPunch, Sphere
+from vibrofriction.contact import FlatPunch, Material, Sphere
 from vibrofriction.validation import as_float_or_array, checked, checked_beta
 
 __all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar", "pin_damping",
@@ -381,6 +383,37 @@ class Physical:
         if eta_c:
             system = system.with_damping(eta_c=eta_c)
         return system
+
+    @classmethod
+    def from_bench_file(cls, path: str | os.PathLike) -> Physical:
+        """:meth:`from_bench` from a JSON file of its keyword arguments (docs/bench.md);
+        a contact model is ``{"type": "sphere" | "flat_punch", "radius": ..., "pin":
+        {"E": ..., "nu": ...}, "counterface": {...}}``."""
+        import json
+
+        try:
+            spec = json.loads(Path(path).read_text())
+        except FileNotFoundError:
+            raise ValueError(f"no bench file {os.fspath(path)!r}") from None
+        except json.JSONDecodeError as exc:
+            raise ValueError(f"{os.fspath(path)!r} is not valid JSON: {exc}") from None
+        if not isinstance(spec, dict):
+            raise ValueError(f"{os.fspath(path)!r} must hold a JSON object")
+        contact = spec.pop("contact", None)
+        if contact is not None:
+            kinds = {"sphere": Sphere, "flat_punch": FlatPunch}
+            try:
+                kind = kinds[contact["type"]]
+                spec["contact"] = kind(float(contact["radius"]), Material(**contact["pin"]),
+                                       Material(**contact["counterface"]))
+            except (KeyError, TypeError) as exc:
+                raise ValueError(f"contact must be {{'type': 'sphere' | 'flat_punch', "
+                                 f"'radius', 'pin': {{'E', 'nu'}}, 'counterface': {{...}}}}, "
+                                 f"got {contact!r} ({exc})") from None
+        try:
+            return cls.from_bench(**spec)
+        except TypeError as exc:
+            raise ValueError(f"bench file {os.fspath(path)!r}: {exc}") from None
 
     def with_(self, **changes: float) -> Physical:
         """A copy with some fields replaced (validated again)."""

@@ -47,6 +47,8 @@ def mu_command(
         "--quality-factor", help="the pin's Q from an impact test (instead of --c-x)")] = None,
     v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s; list "
                                            "allowed")] = None,
+    bench: Annotated[str | None, typer.Option(
+        help="physical set-up from a bench file (JSON, docs/bench.md), with --v0")] = None,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
     max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
     tol_trusted: Annotated[float, typer.Option(
@@ -63,9 +65,14 @@ def mu_command(
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
     settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
-    if any(v is not None for v in phys.values()) or v0 is not None:
-        physical = _physical(phys, c_x, c_xc, quality_factor, (alpha, beta, amplitude, vbar,
-                                                                v_inertial))
+    if bench is not None or any(v is not None for v in phys.values()) or v0 is not None:
+        if bench is not None:
+            if any(v is not None for v in phys.values()):
+                raise ValueError("give either --bench or the SI flags")
+            physical = Physical.from_bench_file(bench)
+        else:
+            physical = _physical(phys, c_x, c_xc, quality_factor,
+                                 (alpha, beta, amplitude, vbar, v_inertial))
         if v0 is None:
             raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
         system = physical.to_dimensionless()

@@ -1,0 +1,99 @@
+"""``vibrofriction fit`` and ``vibrofriction design``: from the bench to the model and back
+(docs/bench.md).  The pin is described by a bench file (JSON, ``Physical.from_bench``)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..params import Physical
+from ._app import app, friendly, parse_float
+
+
+def _fixes(text: str | None) -> dict[str, float]:
+    """``name=value,name=value``: fields of the guess to set before fitting."""
+    if not text:
+        return {}
+    out = {}
+    for item in text.split(","):
+        name, sep, value = item.partition("=")
+        if not sep:
+            raise ValueError(f"--fix takes name=value pairs, got {item!r}")
+        out[name.strip()] = parse_float(value, name.strip())
+    return out
+
+
+def _range(text: str, name: str, scale: float = 1.0) -> tuple[float, float]:
+    lo, sep, hi = text.partition(":")
+    if not sep:
+        raise ValueError(f"{name} takes low:high, got {text!r}")
+    return parse_float(lo, name) * scale, parse_float(hi, name) * scale
+
+
+@app.command("fit")
+@friendly
+def fit_command(
+    data: Annotated[str, typer.Argument(help="measurement table (CSV, docs/bench.md)")],
+    bench: Annotated[str, typer.Option(help="bench file (JSON): the guess")],
+    free: Annotated[str, typer.Option(help="fields to fit, comma-separated")] =
+    "mu0,mass,k_x,k_xc,u_z0",
+    fix: Annotated[str | None, typer.Option(
+        help="fields of the guess to set first: name=value,...")] = None,
+    natural_frequency: Annotated[bool, typer.Option(
+        help="keep k_x/m (the measured natural frequency)")] = True,
+    normal_load: Annotated[bool, typer.Option(help="keep k_zc u_z0 = F_N0")] = True,
+    quality_factor: Annotated[bool, typer.Option(help="keep the pin's damping ratio")] = True,
+    workers: Annotated[int, typer.Option(help="processes of the global stage")] = 1,
+    out: Annotated[str, typer.Option(help="folder for report.txt, fit.png, fit.json")] = "fit",
+    progress: Annotated[bool, typer.Option(help="progress bars on stderr")] = True,
+) -> None:
+    """Fit the model to measured friction curves (report, figure, JSON)."""
+    from ..fitting import fit
+
+    guess = Physical.from_bench_file(bench)
+    if fix:
+        guess = guess.with_(**_fixes(fix))
+    res = fit(data, guess, free=[f.strip() for f in free.split(",") if f.strip()],
+              natural_frequency=natural_frequency, normal_load=normal_load,
+              quality_factor=quality_factor, workers=workers, progress=progress)
+    folder = Path(out)
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "report.txt").write_text(res.report() + "\n")
+    res.plot().savefig(folder / "fit.png", dpi=150)
+    res.to_json(folder / "fit.json")
+    typer.echo(res.report())
+    typer.echo(f"-> {folder}/report.txt, fit.png, fit.json")
+
+
+@app.command("design")
+@friendly
+def design_command(
+    bench: Annotated[str, typer.Option(help="bench file (JSON): the pin")],
+    v0: Annotated[str, typer.Option(help="operating sliding velocity, m/s")],
+    frequency_hz: Annotated[str, typer.Option(
+        "--frequency-hz", help="drive frequency range low:high, Hz")],
+    du_z: Annotated[str, typer.Option("--du-z", help="amplitude range low:high, m")],
+    max_velocity_amplitude: Annotated[str | None, typer.Option(
+        "--max-velocity-amplitude", help="limit of omega * du_z, m/s")] = None,
+    out: Annotated[str, typer.Option(help="folder for report.txt, map.png, map.zarr")] =
+    "design",
+) -> None:
+    """The oscillation that minimises friction at v0 within the actuator's limits."""
+    from ..designing import design
+
+    pin = Physical.from_bench_file(bench)
+    res = design(pin, v0=parse_float(v0, "v0"),
+                 omega=_range(frequency_hz, "frequency_hz", 2.0 * math.pi),
+                 du_z=_range(du_z, "du_z"),
+                 max_velocity_amplitude=None if max_velocity_amplitude is None else
+                 parse_float(max_velocity_amplitude, "max_velocity_amplitude"))
+    folder = Path(out)
+    folder.mkdir(parents=True, exist_ok=True)
+    (folder / "report.txt").write_text(res.report() + "\n")
+    res.plot().savefig(folder / "map.png", dpi=150)
+    res.map.to_zarr(folder / "map.zarr", mode="w", consolidated=False)
+    typer.echo(res.report())
+    typer.echo(f"-> {folder}/report.txt, map.png, map.zarr")

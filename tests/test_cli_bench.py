@@ -1,0 +1,69 @@
+"""The bench on the command line: mu --bench, fit, design (docs/bench.md)."""
+
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import vibrofriction as vf
+from vibrofriction.fitting import predict_cof
+
+BENCH = {"natural_frequency_hz": 800, "mass": 0.01, "quality_factor": 50, "normal_load": 20,
+         "contact": {"type": "sphere", "radius": 0.003, "pin": {"E": 210e9, "nu": 0.3},
+                     "counterface": {"E": 210e9, "nu": 0.3}},
+         "drive_frequency_hz": 1000, "dF_N": 10, "mu0": 0.3}
+
+
+def _cli(*args: str, cwd=None) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "vibrofriction.cli", *args], cwd=cwd,
+                          capture_output=True, text=True, timeout=600)
+
+
+@pytest.fixture
+def bench_file(tmp_path):
+    path = tmp_path / "bench.json"
+    path.write_text(json.dumps(BENCH))
+    return path
+
+
+def test_mu_for_a_bench_file(bench_file):
+    out = _cli("mu", "--bench", str(bench_file), "--v0", "0.01", "--json")
+    assert out.returncode == 0, out.stderr
+    row = json.loads(out.stdout)
+    pin = vf.Physical.from_bench_file(bench_file)
+    assert row["mu_ratio"] == pytest.approx(vf.friction_coefficient(pin, v0=0.01).mu_ratio,
+                                            abs=1e-12)
+    bad = _cli("mu", "--bench", str(bench_file) + ".missing", "--v0", "0.01")
+    assert bad.returncode == 2 and "no bench file" in bad.stderr
+
+
+def test_fit_from_the_command_line(bench_file, tmp_path):
+    pin = vf.Physical.from_bench_file(bench_file)
+    v0 = np.geomspace(1e-3, 0.1, 12)
+    cof = predict_cof(pin, v0, np.full(12, pin.du_z), np.full(12, pin.omega))
+    csv = tmp_path / "m.csv"
+    pd.DataFrame({"v0 [mm/s]": v0 * 1e3, "cof": cof, "du_z [um]": pin.du_z * 1e6,
+                  "omega [Hz]": 1000.0, "sigma": 1e-4}).to_csv(csv, index=False)
+    out = _cli("fit", str(csv), "--bench", str(bench_file), "--free", "mu0", "--fix",
+               "mu0=0.4", "--out", str(tmp_path / "fit"), "--no-progress")
+    assert out.returncode == 0, out.stderr
+    saved = json.loads((tmp_path / "fit" / "fit.json").read_text())
+    assert saved["params"]["mu0"]["value"] == pytest.approx(0.3, rel=1e-6)
+    assert (tmp_path / "fit" / "fit.png").stat().st_size > 0
+    bad = _cli("fit", str(csv), "--bench", str(bench_file), "--free", "mu0,oops")
+    assert bad.returncode == 2 and "free must name" in bad.stderr
+
+
+def test_design_from_the_command_line(bench_file, tmp_path):
+    out = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz",
+               "300:3000", "--du-z", "1e-7:5e-7", "--max-velocity-amplitude", "0.005",
+               "--out", str(tmp_path / "design"))
+    assert out.returncode == 0, out.stderr
+    assert "optimum at v0 = 0.01" in out.stdout
+    assert (tmp_path / "design" / "map.png").stat().st_size > 0
+    bad = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz", "300",
+               "--du-z", "1e-7:5e-7")
+    assert bad.returncode == 2 and "low:high" in bad.stderr
