@@ -29,6 +29,9 @@ def _load(name: str):
     ("resonant_case_iv", ["resonant_case_iv.png"]),
     pytest.param("atlas_on_dask", ["atlas_map.png", "atlas_curves.png"],
                  marks=pytest.mark.slow),
+    ("bench_design", ["bench_design.png"]),
+    ("paper_experiment", ["paper_experiment.png"]),
+    pytest.param("bench_fit", ["bench_fit.png"], marks=pytest.mark.slow),
 ])
 def test_example_runs_as_a_script(name, pngs, tmp_path):
     out = subprocess.run([sys.executable, str(EXAMPLES / f"{name}.py"), str(tmp_path)],
@@ -64,3 +67,29 @@ def test_dask_example_equals_a_serial_sweep(tmp_path):
                       vbar=np.linspace(0.05, 1.2, 24), workers=1, progress=False)
     assert math.isclose(got["mu_sum"], float(serial["mu_ratio"].sum()), rel_tol=0,
                         abs_tol=0)
+
+
+@pytest.mark.slow
+def test_bench_fit_example_recovers_the_pin(tmp_path):
+    ex = _load("bench_fit")
+    got = ex.main(tmp_path)
+    for name, (value, stderr) in got.items():
+        assert abs(value - getattr(ex.TRUE, name)) <= 3 * stderr, name
+
+
+def test_bench_design_example_respects_the_limits(tmp_path):
+    got = _load("bench_design").main(tmp_path)
+    assert 200 <= got["frequency_hz"] <= 5000 and 0.05e-6 <= got["du_z"] <= 0.5e-6
+    assert got["velocity_amplitude"] <= 0.01 * (1 + 1e-9)
+    assert got["cof"] < 0.3
+
+
+def test_paper_experiment_prediction_ends_at_the_damped_critical_velocity(tmp_path):
+    ex = _load("paper_experiment")
+    got = ex.main(tmp_path)
+    for du in ex.AMPLITUDES_UM:
+        p = ex.pin(du * 1e-6)
+        # rigid contact, alpha = 1: V_c = a/(2 zeta) in units of mu0 F_N0/(m omega)
+        v_c = (du * 1e-6 / ex.U_Z0) / (2 * p.zeta) * p.mu0 * p.F_N0 / (p.mass * p.omega)
+        assert got[f"v_star_{du:g}um"] == pytest.approx(v_c, rel=1e-12)
+        assert got[f"cof_at_0.01_{du:g}um"] < p.mu0
