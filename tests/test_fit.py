@@ -56,7 +56,7 @@ def test_reported_uncertainties_cover_the_truth_about_95_percent_of_the_time():
         guess = true.with_(mu0=true.mu0 * 1.3, k_xc=true.k_xc / 1.6, u_z0=true.u_z0 * 1.2,
                            k_zc=true.k_zc / 1.2)
         res = vf.fit(data, guess, free=["mu0", "k_xc", "u_z0"], progress=False, seed=k,
-                     workers=2)
+                     workers=2, maxiter=15)
         for n in ("mu0", "k_xc", "u_z0"):
             p = res.params[n]
             total += 1

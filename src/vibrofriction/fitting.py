@@ -227,6 +227,13 @@ class FitResult:
         return fig
 
 
+def _tick(bar) -> bool:
+    """Advance a progress bar; False, so that differential evolution goes on (a callback
+    returning True stops it, and tqdm's ``update`` returns True when it redraws)."""
+    bar.update(1)
+    return False
+
+
 def _json_default(x):
     if isinstance(x, float | np.floating):
         return None if not np.isfinite(x) else float(x)
@@ -288,9 +295,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     if global_stage:
         bar = tqdm(total=maxiter, desc="fit: global stage", unit="gen", disable=not progress)
         de = differential_evolution(problem.cost, bounds, maxiter=maxiter, popsize=popsize,
-                                    seed=seed, polish=False, init="sobol", x0=x0,
+                                    seed=seed, polish=False, init="sobol", x0=x0, tol=0.0,
                                     workers=workers, updating="deferred" if workers != 1
-                                    else "immediate", callback=lambda *a, **k: bar.update(1))
+                                    else "immediate", callback=lambda *a, **k: _tick(bar))
         bar.close()
         nfev += int(de.nfev)
         x0 = de.x if de.fun <= problem.cost(x0) else x0
