@@ -41,7 +41,8 @@ def test_noise_free_data_give_back_the_parameters():
 
 
 @pytest.mark.slow
-def test_reported_uncertainties_cover_the_truth_about_95_percent_of_the_time():
+@pytest.mark.timeout(1800)  # 20 fits with the default global stage: about 7 min on 2 cores
+def test_reported_uncertainties_cover_the_truth_in_most_cases():
     """20 seeded data sets (3 amplitudes, noise 0.003; undamped and damped pins, soft and
     stiff contacts, a jumping amplitude in every fourth): the true value within 2
     reported standard errors."""
@@ -56,12 +57,16 @@ def test_reported_uncertainties_cover_the_truth_about_95_percent_of_the_time():
         guess = true.with_(mu0=true.mu0 * 1.3, k_xc=true.k_xc / 1.6, u_z0=true.u_z0 * 1.2,
                            k_zc=true.k_zc / 1.2)
         res = vf.fit(data, guess, free=["mu0", "k_xc", "u_z0"], progress=False, seed=k,
-                     workers=2, maxiter=15)
+                     workers=2)
         for n in ("mu0", "k_xc", "u_z0"):
             p = res.params[n]
             total += 1
             inside += p.stderr is not None and abs(p.value - getattr(true, n)) <= 2 * p.stderr
-    assert 0.85 <= inside / total <= 1.0, (inside, total)
+    # measured: 52 of 60 (87 %; 60 % within one standard error). The target is 95 %:
+    # where the fit ends in a neighbouring valley of the kinked objective the Jacobian's
+    # errors are too small (with maxiter = 15 instead of 30 only 68 % are covered).
+    # This guards the present state; closing the gap is open work (the bench issue).
+    assert inside / total >= 0.85, (inside, total)
 
 
 def test_a_single_curve_of_a_stiff_system_cannot_tell_mass_from_k_x():
