@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 from .validation import checked
 
-__all__ = ["FlatPunch", "Material", "Sphere", "effective_modulus", "effective_shear_modulus"]
+__all__ = ["FlatPunch", "Material", "Sphere", "effective_modulus", "effective_shear_modulus",
+           "rigid"]
 
 
 @dataclass(frozen=True)
@@ -69,28 +70,8 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
 
 
 @dataclass(frozen=True)
-class FlatPunch:
-    """A flat circular pin end of radius ``radius`` (m) on the counterface."""
-
-    radius: float
-    pin: Material
-    counterface: Material
-
-    def __post_init__(self) -> None:
-        object.__setattr__(self, "radius", float(checked("radius", self.radius, minimum=0.0,
-                                                         strict=True)))
-
-    def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc)`` in N/m (independent of the load for a flat punch)."""
-        checked("normal_load", normal_load, minimum=0.0, strict=True)
-        r = self.radius
-        return (2.0 * effective_modulus(self.pin, self.counterface) * r,
-                8.0 * effective_shear_modulus(self.pin, self.counterface) * r)
-
-
-@dataclass(frozen=True)
-class Sphere:
-    """A spherical pin end of radius ``radius`` (m): Hertz and Mindlin at the load."""
+class _Circular:
+    """A circular contact of radius ``a``: ``k_z = 2 E* a``, ``k_x = 8 G* a``."""
 
     radius: float
     pin: Material
@@ -101,23 +82,34 @@ class Sphere:
                                                          strict=True)))
 
     def contact_radius(self, normal_load: float) -> float:
-        """Hertz: ``a = (3 F_N R / (4 E*))^{1/3}``, m."""
-        load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
-        e_star = effective_modulus(self.pin, self.counterface)
-        return (3.0 * load * self.radius / (4.0 * e_star)) ** (1.0 / 3.0)
+        raise NotImplementedError
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc)`` in N/m: the tangent stiffnesses at ``normal_load``."""
+        """``(k_zc, k_xc)`` in N/m at ``normal_load`` (the tangent stiffnesses)."""
         a = self.contact_radius(normal_load)
         return (2.0 * effective_modulus(self.pin, self.counterface) * a,
                 8.0 * effective_shear_modulus(self.pin, self.counterface) * a)
 
 
-Contact = FlatPunch | Sphere
+@dataclass(frozen=True)
+class FlatPunch(_Circular):
+    """A flat circular pin end of radius ``radius`` (m) on the counterface: the contact
+    radius is the punch's at any load."""
+
+    def contact_radius(self, normal_load: float) -> float:
+        checked("normal_load", normal_load, minimum=0.0, strict=True)
+        return self.radius
 
 
-def _is_contact(x: object) -> bool:
-    return isinstance(x, FlatPunch | Sphere)
+@dataclass(frozen=True)
+class Sphere(_Circular):
+    """A spherical pin end of radius ``radius`` (m): Hertz and Mindlin at the load."""
+
+    def contact_radius(self, normal_load: float) -> float:
+        """Hertz: ``a = (3 F_N R / (4 E*))^{1/3}``, m."""
+        load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
+        e_star = effective_modulus(self.pin, self.counterface)
+        return (3.0 * load * self.radius / (4.0 * e_star)) ** (1.0 / 3.0)
 
 
 def rigid() -> Material:
