@@ -4,7 +4,9 @@ Written from the model statement (``docs/model.md``), independently of the
 ``vibrofriction`` package (an import-linter contract forbids any import from it).
 Parameters are plain floats; checking physical parameters is the caller's task
 (the tests build every point from ``vibrofriction.Dimensionless``), and only what
-an integrator cannot run without is refused here.
+an integrator cannot run without is refused here: :func:`check_parameters` for the
+model, :func:`check_damping` for the dashpots (``zeta``, the pin's damping ratio, and
+``eta_c``, the contact's loss factor: finite and ``>= 0``; ``docs/damping.md``).
 """
 
 from __future__ import annotations
