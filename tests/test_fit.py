@@ -86,9 +86,48 @@ def test_save_and_load(tmp_path):
     assert back.params["mu0"].value == res.params["mu0"].value
     assert back.params["mu0"].stderr == res.params["mu0"].stderr
     assert back.system == res.system and back.free == res.free
-    assert "mu0" in back.report()
+    assert back.intervals == res.intervals
+    assert "mu0" in back.report() and "95 % interval" in back.report()
     fig = res.plot()
     assert len(fig.axes) == 2
+
+
+def test_profile_interval_is_where_chi_square_rises_by_four():
+    """One free parameter: its profile is chi-square itself.  Scanned on a fine grid of
+    ``mu0`` with :func:`predict_cof` (``mu0`` also sets the velocity scale, so the curve
+    is not a parabola), the rise by ``4 s^2`` (``s^2`` the reduced chi-square, at least 1)
+    is met where the fit's interval ends."""
+    data = synthetic(TRUE, (0.3e-6, 0.9e-6), np.random.default_rng(6), n=12)
+    res = vf.fit(data, TRUE.with_(mu0=0.4), free=["mu0"], progress=False, global_stage=False)
+    cols = (data.v0.to_numpy(), data.du_z.to_numpy(), data.omega.to_numpy())
+
+    def chi2(mu0):
+        r = (predict_cof(TRUE.with_(mu0=mu0), *cols) - data.cof) / data.sigma
+        return float(np.sum(r * r))
+
+    best, lo, hi = res.params["mu0"].value, *res.intervals["mu0"]
+    assert lo < best < hi
+    level = 4.0 * max(res.redchi, 1.0)
+    for end in (lo, hi):
+        grid = np.linspace(best, best + 1.5 * (end - best), 301)
+        rise = np.array([chi2(m) for m in grid]) - chi2(best)
+        k = int(np.argmax(rise > level))
+        crossing = np.interp(level, rise[k - 1:k + 1], grid[k - 1:k + 1])
+        assert end == pytest.approx(crossing, abs=0.03 * abs(crossing - best))
+    assert res.params["mu0"].stderr == pytest.approx((hi - lo) / 4)
+
+
+def test_intervals_widen_with_a_poor_fit():
+    """With understated ``sigma`` (the noise 4x the stated one) the reduced chi-square is
+    ~16, and the intervals widen by its square root (s^2 = reduced chi-square)."""
+    rng = np.random.default_rng(7)
+    data = synthetic(TRUE, (0.3e-6, 0.9e-6), rng, n=12)
+    noisy = data.assign(cof=data.cof + rng.normal(0.0, 4 * 0.003, len(data)))
+    fair = vf.fit(data, TRUE, free=["mu0"], progress=False, global_stage=False)
+    poor = vf.fit(noisy, TRUE, free=["mu0"], progress=False, global_stage=False)
+    assert poor.redchi > 4.0
+    ratio = poor.params["mu0"].stderr / fair.params["mu0"].stderr
+    assert ratio == pytest.approx(math.sqrt(poor.redchi / max(fair.redchi, 1.0)), rel=0.05)
 
 
 @pytest.mark.parametrize("kwargs, message", [
