@@ -41,12 +41,12 @@ def test_noise_free_data_give_back_the_parameters():
 
 
 @pytest.mark.slow
-@pytest.mark.timeout(1800)  # 20 fits with the default global stage: about 7 min on 2 cores
-def test_reported_uncertainties_cover_the_truth_in_most_cases():
+@pytest.mark.timeout(2400)  # 20 fits with the default global stage: about 15 min on 2 cores
+def test_reported_uncertainties_cover_the_truth_in_about_95_percent():
     """20 seeded data sets (3 amplitudes, noise 0.003; undamped and damped pins, soft and
     stiff contacts, a jumping amplitude in every fourth): the true value within 2
-    reported standard errors."""
-    inside = total = 0
+    reported standard errors, and within the reported 95.4 % interval."""
+    within_2se = within_interval = total = 0
     rng = np.random.default_rng(2026)
     for k in range(20):
         true = TRUE.with_(k_xc=float(rng.choice([5e6, 1.5e7, 6e7])),
@@ -59,14 +59,16 @@ def test_reported_uncertainties_cover_the_truth_in_most_cases():
         res = vf.fit(data, guess, free=["mu0", "k_xc", "u_z0"], progress=False, seed=k,
                      workers=2)
         for n in ("mu0", "k_xc", "u_z0"):
-            p = res.params[n]
+            p, t = res.params[n], getattr(true, n)
+            lo, hi = res.intervals[n]
             total += 1
-            inside += p.stderr is not None and abs(p.value - getattr(true, n)) <= 2 * p.stderr
-    # measured: 52 of 60 (87 %; 60 % within one standard error). The target is 95 %:
-    # where the fit ends in a neighbouring valley of the kinked objective the Jacobian's
-    # errors are too small (with maxiter = 15 instead of 30 only 68 % are covered).
-    # This guards the present state; closing the gap is open work (the bench issue).
-    assert inside / total >= 0.85, (inside, total)
+            within_2se += abs(p.value - t) <= 2 * p.stderr
+            within_interval += lo <= t <= hi
+    # measured: 55 of 60 within 2 standard errors, 58 of 60 within the intervals (the
+    # Jacobian's errors, before the profiles: 52 of 60; 95.4 % expected); 14 min on 2 cores
+    print(f"within 2 stderr {within_2se}/{total}, within the intervals {within_interval}/{total}")
+    assert within_2se / total >= 0.9, (within_2se, total)
+    assert within_interval / total >= 0.9, (within_interval, total)
 
 
 def test_a_single_curve_of_a_stiff_system_cannot_tell_mass_from_k_x():

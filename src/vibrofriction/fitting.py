@@ -67,6 +67,9 @@ FLAT = 1e-4
 PROFILE_LEVEL = 4.0
 #: Local least-squares starts: the global stage's best point and its next best.
 STARTS = 4
+#: A weighted fit with a reduced chi-square above this runs a second global stage (with
+#: another seed) and, if still above, says it may sit in a local minimum.
+POOR_FIT = 2.0
 
 
 def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
@@ -304,9 +307,6 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     (:func:`scipy.optimize.differential_evolution`).  ``workers``: processes for the
     global stage, the local starts and the profiles (``-1``: every core).
     """
-    from scipy.optimize import differential_evolution
-    from tqdm.auto import tqdm
-
     t0 = time.perf_counter()
     data = read_measurements(data)
     free = tuple(free)
@@ -331,21 +331,21 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     x0 = np.array([math.log(getattr(guess, n)) for n in free])
     workers = workers if workers >= 1 else os.cpu_count() or 1
     with _mapper(workers) as map_:
-        starts, nfev = [x0], 0
-        if global_stage:
-            bar = tqdm(total=maxiter, desc="fit: global stage", unit="gen",
-                       disable=not progress)
-            de = differential_evolution(
-                problem.cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed,
-                polish=False, init="sobol", x0=x0, tol=0.0,
-                workers=map_ if workers != 1 else 1,
-                updating="deferred" if workers != 1 else "immediate",
-                callback=lambda *a, **k: _tick(bar))
-            bar.close()
-            nfev += int(de.nfev)
-            starts = _distinct_starts(de, x0, STARTS)
-        out, minima, n = _local_fit(problem, starts, bounds, map_)
-        nfev += n
+        nfev, out, minima = 0, None, []
+        for attempt in range(2 if global_stage else 1):
+            starts = [x0]
+            if global_stage:
+                de = _global_stage(problem, bounds, x0, maxiter, popsize, seed + attempt,
+                                   map_ if workers != 1 else 1, progress)
+                nfev += int(de.nfev)
+                starts = _distinct_starts(de, x0, STARTS)
+            found, more, n = _local_fit(problem, starts, bounds, map_)
+            nfev += n
+            minima = sorted(minima + more, key=lambda r: r[0])
+            if out is None or found.chisqr < out.chisqr:
+                out = found
+            if not _poor(problem, out):
+                break  # else a second global stage with another seed, the better kept
         dists, lower, n = _profiles(problem, out, minima, bounds, map_, progress)
         nfev += n
         if lower is not None:  # the profile found a deeper valley: fit again from there
@@ -365,6 +365,27 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
                      nfev=nfev, seconds=time.perf_counter() - t0, weighted=problem.weighted,
                      guess=guess, intervals=intervals,
                      extra={"local_minima": [float(m[0]) for m in minima]})
+
+
+def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
+                  seed: int, workers, progress: bool):
+    """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
+    that includes the guess."""
+    from scipy.optimize import differential_evolution
+    from tqdm.auto import tqdm
+
+    with tqdm(total=maxiter, desc="fit: global stage", unit="gen",
+              disable=not progress) as bar:
+        return differential_evolution(
+            problem.cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed,
+            polish=False, init="sobol", x0=x0, tol=0.0, workers=workers,
+            updating="deferred" if workers != 1 else "immediate",
+            callback=lambda *a, **k: _tick(bar))
+
+
+def _poor(problem: _Problem, out) -> bool:
+    """A weighted fit whose reduced chi-square exceeds :data:`POOR_FIT`."""
+    return problem.weighted and float(out.redchi) > POOR_FIT
 
 
 @contextmanager
@@ -563,11 +584,11 @@ def _identifiability(out, problem: _Problem, ln: NDArray, bounds, params) -> lis
             warnings.append(f"{n}: no uncertainty could be estimated (singular covariance)")
     sigma = problem.data["sigma"].to_numpy()
     dof = len(problem.data) - len(free)
-    if np.all(np.isfinite(sigma)) and dof > 0 and out.chisqr / dof > 2.0:
+    if np.all(np.isfinite(sigma)) and dof > 0 and out.chisqr / dof > POOR_FIT:
         warnings.append(f"reduced chi-square {out.chisqr / dof:.3g} with the stated sigma: the "
                         "fit may sit in a local minimum (widen the global stage: maxiter, "
-                        "popsize) or the model does not describe these data; the standard "
-                        "errors then understate the uncertainty")
+                        "popsize) or the model does not describe these data; the intervals "
+                        "are widened by its square root")
     return warnings
 
 
