@@ -3,7 +3,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
 
-.PHONY: demo test fast lint bench clean clean-cache
+.PHONY: demo test fast lint bench clean clean-cache browser
 
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -14,12 +14,15 @@ $(BIN)/vibrofriction: pyproject.toml
 demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 	$(BIN)/vibrofriction reproduce --out $(OUT)
 
-test: $(BIN)/vibrofriction  ## the whole test suite, slow tests included
+browser:  ## the distribution's headless Chromium for the explorer's browser tests
+	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
+
+test: $(BIN)/vibrofriction browser  ## the whole test suite, slow tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -q
 
-fast: $(BIN)/vibrofriction  ## the development loop: lint, contracts, tests not marked slow
+fast: $(BIN)/vibrofriction browser  ## the development loop: lint, contracts, tests not marked slow
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -q -x -m "not slow"

@@ -1,0 +1,239 @@
+"""What the views show, computed by the library: plain, picklable functions of a
+:class:`~vibrofriction.explorer.state.State`, run in worker processes (:mod:`.pool`)."""
+
+from __future__ import annotations
+
+import functools
+import math
+import time
+
+import numpy as np
+
+import vibrofriction as vf
+from vibrofriction import theory
+
+from .state import AXES, State
+
+__all__ = ["case_map", "curve", "history", "measurement_curves", "parse_measurements",
+           "run_fit"]
+
+PHASE_COLORS = {"stick": "#9ecae1", "slip+": "#fdd0a2", "slip-": "#fcbba1",
+                "flight": "#d9d9d9"}
+CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
+               "general": "#f0f0f0"}
+
+
+def _dimensionless(system) -> vf.Dimensionless:
+    return system.to_dimensionless() if isinstance(system, vf.Physical) else system
+
+
+def _to_axis(state: State, system, V: np.ndarray) -> np.ndarray:
+    """Inertial velocities ``V`` on the state's axis (the library's conversions)."""
+    if state.axis == "V":
+        return np.asarray(V, dtype=float)
+    if state.axis == "vbar":
+        return np.asarray(_dimensionless(system).inertial_to_vbar(V), dtype=float)
+    return np.asarray(system.inertial_to_v0(V), dtype=float)
+
+
+_POINT_COLUMNS = ("x", "y", "trusted", "status", "error", "V")
+
+
+def _inertial(state: State, system, x: np.ndarray) -> np.ndarray:
+    """The curve's velocities ``x`` as inertial velocities (the library's conversions)."""
+    if state.axis == "V":
+        return np.asarray(x, dtype=float)
+    if state.axis == "vbar":
+        return np.asarray(_dimensionless(system).vbar_to_inertial(x), dtype=float)
+    return np.asarray(system.v0_to_inertial(x), dtype=float)
+
+
+def merge(parts: list[dict]) -> dict:
+    """One curve from the interleaved shares of :func:`curve` (in share order)."""
+    n = len(parts)
+    out = dict(parts[0])
+    size = sum(len(p["x"]) for p in parts)
+    for name in _POINT_COLUMNS:
+        col = np.empty(size, dtype=np.asarray(parts[0][name]).dtype)
+        for i, p in enumerate(parts):
+            col[i::n] = p[name]
+        out[name] = col
+    out["seconds"] = max(p["seconds"] for p in parts)
+    return out
+
+
+def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
+    """``mu/mu0`` (or the COF on a bench) over the state's velocities by the exact solver,
+    with the static value (eq. 2), the critical velocity (eq. 12), the case and the
+    closed forms that apply.  ``part = (i, n)``: only the ``i``-th of ``n`` interleaved
+    shares of the points (:func:`merge` joins them; the closed forms come with share 0)."""
+    t0 = time.perf_counter()
+    system = state.system()
+    dim = _dimensionless(system)
+    i, n = part
+    x = state.velocities()[i::n]
+    res = vf.friction_coefficient(system, **{state.velocity_keyword(): x})
+    scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
+    V_c = dim.critical_inertial_velocity()
+    critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
+    if state.axis == "v0":
+        critical = system.critical_velocity()
+    if not (V_c > 0.0 and math.isfinite(V_c)):
+        critical = math.nan
+    case = vf.classify(dim.alpha, dim.beta)
+    y = np.asarray(res.mu_ratio, dtype=float) * scale
+    trusted = np.asarray(res.trusted, dtype=bool)
+    return {
+        "x": x, "y": y, "trusted": trusted,
+        "status": np.asarray([s.value for s in res.status], dtype=object),
+        "error": np.asarray(res.error, dtype=float), "V": np.asarray(res.v_inertial),
+        "static": float(theory.static_mu_ratio(dim.amplitude)) * scale,
+        "critical": float(critical), "jumping": dim.jumping,
+        "case": case.value, "case_text": case.description,
+        "alpha": dim.alpha, "beta": dim.beta, "amplitude": dim.amplitude,
+        "zeta": dim.zeta, "eta_c": dim.eta_c,
+        "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
+                                                  scale),
+        "x_label": AXES[state.axis][1],
+        "y_label": "COF = mu" if scale != 1.0 else "mu/mu0",
+        "mu0": scale if scale != 1.0 else None,
+        "seconds": time.perf_counter() - t0,
+    }
+
+
+def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
+                 scale: float) -> list[dict]:
+    """The paper's closed forms (docs/theory.md) that apply to this system, each with its
+    label and its points at the curve's velocities ``x``; none outside their regime."""
+    dim = _dimensionless(system)
+    V = _inertial(state, system, x)
+    a = dim.amplitude
+    out = []
+    V_c = dim.critical_inertial_velocity()
+    vbar = V / V_c if 0.0 < V_c < math.inf else None
+
+    def add(label: str, y, where=None) -> None:
+        y = np.asarray(y, dtype=float) * scale
+        keep = np.ones(x.size, bool) if where is None else where
+        out.append({"label": label, "x": x[keep], "y": np.broadcast_to(y, x.shape)[keep]})
+
+    if a <= 1.0 and not dim.damped and vbar is not None:
+        if case is vf.Case.STIFF:
+            add("exact stiff law (alpha, beta -> 0)", theory.mu_ratio_stiff_exact(vbar, a))
+            add("eq. (26), stiff law of Part I", theory.mu_ratio_stiff(vbar, a))
+        elif case is vf.Case.SOFT:
+            add("eq. (27) corrected, soft law", theory.mu_ratio_soft_corrected(vbar, a))
+    if case is vf.Case.RESONANT_SYSTEM:
+        if dim.zeta == 0.0:
+            add("eq. (32): case IV plateau, exact tau* (V -> inf)",
+                theory.resonant_plateau_exact(a))
+        elif math.isfinite(V_c):
+            where = (V >= 0.3 * V_c)
+            add("case IV damped rise (energy balance, docs/damping.md)",
+                theory.resonant_damped_mu_ratio(V, a, dim.zeta), where)
+    if case is vf.Case.RESONANT_CONTACT and a <= 1.0 and not dim.damped:
+        add("case III: mu = mu0 for v0 > 0", 1.0, V > 0.0)
+    return out
+
+
+def history(state: State, x: float, periods: float = 3.0) -> dict:
+    """The time history at the curve's velocity ``x`` (Fig. 2): forces, phases, events;
+    the steady state where the solver trusts it, else the motion from steady sliding."""
+    system = state.system()
+    kw = {state.velocity_keyword(): float(x)}
+    try:
+        h = vf.simulate(system, **kw, periods=periods, initial="steady")
+        steady = True
+    except ValueError:
+        h = vf.simulate(system, **kw, periods=periods)
+        steady = False
+    t = h.tau / (2.0 * math.pi)
+    change = np.flatnonzero(h.phase[1:] != h.phase[:-1]) + 1
+    starts = np.concatenate([[0], change])
+    ends = np.concatenate([change, [t.size - 1]])
+    r = vf.friction_coefficient(system, **kw)
+    return {
+        "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot,
+        "spans": [(float(t[i]), float(t[j]), str(h.phase[i])) for i, j in
+                  zip(starts, ends, strict=True) if t[j] > t[i]],
+        "events": [(e.tau / (2.0 * math.pi), e.kind) for e in h.events],
+        "steady": steady, "x": float(x), "mu_ratio": float(r.mu_ratio),
+        "status": r.status.value, "trusted": bool(r.trusted), "message": r.message,
+    }
+
+
+@functools.lru_cache(maxsize=4)
+def case_map(n: int = 90, alpha=(1e-3, 1e2), beta=(1e-3, 1e4)) -> dict:
+    """The cases I-IV of ``vf.classify`` over a log grid of ``(alpha, beta)``; ``""``
+    where ``beta <= alpha`` (no system)."""
+    al = np.geomspace(*alpha, n)
+    be = np.geomspace(*beta, n)
+    cases = np.full((n, n), "", dtype=object)
+    for j, b in enumerate(be):
+        for i, a in enumerate(al):
+            if b > a:
+                cases[j, i] = vf.classify(a, b).value
+    return {"alpha": al, "beta": be, "cases": cases, "alpha_range": alpha,
+            "beta_range": beta}
+
+
+def parse_measurements(content: bytes, name: str = "measurements.csv"):
+    """A dropped CSV as the library's measurement table (``vf.read_measurements``; its
+    messages name the file and the line)."""
+    import tempfile
+    from pathlib import Path
+
+    name = Path(name).name or "measurements.csv"
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / name
+        path.write_bytes(content)
+        try:
+            return vf.read_measurements(path)
+        except UnicodeDecodeError as exc:
+            raise ValueError(f"{name!r} is not a text (CSV) file: {exc}") from None
+        except ValueError as exc:
+            raise ValueError(str(exc).replace(str(path), name)) from None
+        except Exception as exc:  # a parser error of pandas: not a table
+            raise ValueError(f"{name!r} is not a CSV table: {exc}") from None
+
+
+def measurement_curves(state: State, data) -> list[dict]:
+    """The measured points per (amplitude, frequency) on the state's axis, with the model's
+    COF at the same points (the bench's system at that amplitude and frequency)."""
+    system = state.system()
+    if not isinstance(system, vf.Physical):
+        raise ValueError("measurements are in SI units: choose the bench inputs to overlay "
+                         "them")
+    out = []
+    for (du_z, omega), g in data.groupby(["du_z", "omega"], sort=True):
+        point = system.with_(du_z=float(du_z), omega=float(omega))
+        V = point.v0_to_inertial(g["v0"].to_numpy())
+        x = _to_axis(state, point, V) if state.axis != "vbar" else \
+            np.asarray(point.v0_to_vbar(g["v0"].to_numpy()))
+        out.append({"label": f"du_z = {du_z * 1e6:.3g} um, f = {omega / (2 * math.pi):.4g} Hz",
+                    "x": np.asarray(x, float), "cof": g["cof"].to_numpy(),
+                    "sigma": g["sigma"].to_numpy(), "du_z": float(du_z),
+                    "omega": float(omega)})
+    return out
+
+
+def run_fit(state: State, data, free: tuple[str, ...]) -> dict:
+    """``vf.fit`` of the bench to the measurements: its report and the fitted COF per
+    measured (amplitude, frequency) on the state's axis."""
+    guess = state.system()
+    if not isinstance(guess, vf.Physical):
+        raise ValueError("the fit needs the bench inputs (a Physical guess)")
+    res = vf.fit(data, guess, free=list(free), progress=False)
+    curves = []
+    for (du_z, omega), g in data.groupby(["du_z", "omega"], sort=True):
+        v0 = np.geomspace(max(g["v0"].min(), 1e-9), max(g["v0"].max(), 2e-9), 80)
+        cof = res.predict(v0, np.full(v0.size, du_z), np.full(v0.size, omega))
+        point = res.system.with_(du_z=float(du_z), omega=float(omega))
+        x = v0 if state.axis == "v0" else (
+            np.asarray(point.v0_to_inertial(v0)) if state.axis == "V"
+            else np.asarray(point.v0_to_vbar(v0)))
+        curves.append({"x": x, "cof": cof})
+    return {"report": res.report(), "curves": curves,
+            "system": {k: getattr(res.system, k) for k in (
+                "mass", "k_x", "k_xc", "k_zc", "u_z0", "du_z", "omega", "mu0", "c_x",
+                "c_xc")}}

@@ -1,0 +1,91 @@
+"""Share and reuse: the curve as CSV, as a figure (PNG, SVG), and as a Python snippet
+that recomputes it with the library."""
+
+from __future__ import annotations
+
+import io
+import math
+
+import numpy as np
+
+from .state import State
+
+__all__ = ["curve_csv", "figure_bytes", "snippet"]
+
+
+def curve_csv(state: State, curve: dict) -> str:
+    """The curve as CSV: velocity, value, status, error, trusted (one row a point)."""
+    axis = state.axis
+    lines = [f"# vibrofriction explorer: {_system_text(state)}",
+             f"# case {curve['case']}; static value {curve['static']:.10g}; "
+             f"critical velocity ({axis}) {curve['critical']:.10g}",
+             f"{axis},{'cof' if curve['mu0'] else 'mu_ratio'},status,error,trusted"]
+    for x, y, s, e, t in zip(curve["x"], curve["y"], curve["status"], curve["error"],
+                             curve["trusted"], strict=True):
+        lines.append(f"{float(x)!r},{float(y)!r},{s},{float(e)!r},{bool(t)}")
+    return "\n".join(lines) + "\n"
+
+
+def _system_text(state: State) -> str:
+    if state.mode == "dimensionless":
+        return (f"alpha = {state.alpha!r}, beta = {state.beta!r}, a = {state.amplitude!r}, "
+                f"zeta = {state.zeta!r}, eta_c = {state.eta_c!r}")
+    return ", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
+
+
+def snippet(state: State) -> str:
+    """Python code that recomputes the current curve with the library."""
+    if state.mode == "dimensionless":
+        make = (f"system = vf.Dimensionless(alpha={state.alpha!r}, beta={_num(state.beta)}, "
+                f"amplitude={state.amplitude!r}, zeta={state.zeta!r}, eta_c={state.eta_c!r})")
+    else:
+        args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
+        make = f"system = vf.Physical.from_bench(\n    {args})"
+    space = "geomspace" if state.log_x else "linspace"
+    scale = " * system.mu0" if state.mode == "bench" else ""
+    return "\n".join([
+        "import math",
+        "",
+        "import numpy as np",
+        "",
+        "import vibrofriction as vf",
+        "",
+        make,
+        f"{state.axis} = np.{space}({state.v_min!r}, {state.v_max!r}, {state.points})",
+        f"r = vf.friction_coefficient(system, {state.velocity_keyword()}={state.axis})",
+        f"y = r.mu_ratio{scale}  # {'COF' if scale else 'mu/mu0'}; r.trusted flags each point",
+    ]) + "\n"
+
+
+def _num(x: float) -> str:
+    return "math.inf" if math.isinf(x) else repr(x)
+
+
+def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
+    """The curve as a matplotlib figure (``png`` or ``svg``): trusted points solid,
+    untrusted hollow grey, the static value, the critical velocity, the closed forms."""
+    from matplotlib.figure import Figure
+
+    if fmt not in ("png", "svg"):
+        raise ValueError(f"fmt must be 'png' or 'svg', got {fmt!r}")
+    fig = Figure(figsize=(6.4, 4.2), layout="constrained")
+    ax = fig.subplots()
+    x, y, ok = curve["x"], curve["y"], curve["trusted"]
+    ax.plot(x, np.where(ok, y, np.nan), "-", color="C0", lw=1.5, label="exact solver")
+    if np.any(~ok):
+        ax.plot(x[~ok], y[~ok], "o", mfc="none", color="0.5", ms=4,
+                label="not trusted (solver)")
+    for k, form in enumerate(curve["closed_forms"]):
+        ax.plot(form["x"], form["y"], "--", color=f"C{k + 1}", lw=1.2, label=form["label"])
+    ax.plot([x[0]], [curve["static"]], "s", color="k", ms=5, label="static value, eq. (2)")
+    if math.isfinite(curve["critical"]):
+        ax.axvline(curve["critical"], color="C3", lw=0.8, ls=":",
+                   label="critical velocity, eq. (12)")
+    ax.set_xlabel(curve["x_label"])
+    ax.set_ylabel(curve["y_label"])
+    ax.set_title(f"alpha = {curve['alpha']:.4g}, beta = {curve['beta']:.4g}, "
+                 f"a = {curve['amplitude']:.4g}: case {curve['case']}", fontsize=9)
+    ax.legend(fontsize=7)
+    buf = io.BytesIO()
+    fig.savefig(buf, format=fmt, dpi=150)
+    return buf.getvalue()

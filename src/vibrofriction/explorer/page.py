@@ -1,0 +1,475 @@
+"""The explorer's page: inputs, views, measurements and sharing, wired with Panel.
+
+Every computation runs in a worker process (:mod:`.pool`) from an async callback, the
+newest input wins (moves that arrive during a computation are merged into one), and a
+bad input leaves the last good view in place with the library's message beside it.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import io
+import math
+from functools import partial
+from urllib.parse import urlencode
+
+import numpy as np
+import panel as pn
+from bokeh.events import Tap
+
+from vibrofriction.fitting import FITTABLE
+
+from . import compute, exports, pool
+from .messages import GENERAL, field_of, read_inputs
+from .state import AXES, BENCH, DIMENSIONLESS, VELOCITY, Field, State, format_value
+from .views import CurveView, HistoryView, MapView
+
+__all__ = ["Explorer", "app"]
+
+_ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
+
+
+class Input:
+    """A numeric input: a slider (logarithmic where the range spans decades), a box for
+    the exact value, and the inline message."""
+
+    def __init__(self, field: Field, value: float, on_change) -> None:
+        self.field = field
+        lo, hi = (math.log10(field.low), math.log10(field.high)) if field.log else \
+            (field.low, field.high)
+        self.slider = pn.widgets.FloatSlider(name=field.label, start=lo, end=hi,
+                                             step=(hi - lo) / 200, value=self._position(value),
+                                             show_value=False, width=190,
+                                             css_classes=[f"vf-slider-{field.name}"])
+        self.text = pn.widgets.TextInput(value=format_value(value), width=110,
+                                         css_classes=[f"vf-text-{field.name}"],
+                                         margin=(22, 5, 5, 5))
+        self.message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310,
+                                    css_classes=[f"vf-message-{field.name}"])
+        self._quiet = False
+        self._on_change = on_change
+        self.slider.param.watch(self._slid, "value")
+        self.text.param.watch(self._typed, "value")
+        self.layout = pn.Column(pn.Row(self.slider, self.text, margin=0), self.message,
+                                margin=0)
+
+    def _position(self, value: float) -> float:
+        f = self.field
+        if not math.isfinite(value):
+            return math.log10(f.high) if f.log else f.high
+        v = min(max(value, f.low), f.high)
+        return math.log10(max(v, 1e-300)) if f.log else v
+
+    def _slid(self, event) -> None:
+        if self._quiet:
+            return
+        value = 10.0 ** event.new if self.field.log else event.new
+        self.text.value = format_value(float(f"{value:.4g}"))
+
+    def _typed(self, event) -> None:
+        self._on_change()
+
+    def set(self, value: float) -> None:
+        """Show ``value`` (from the URL, the map or a bench file)."""
+        self.text.value = format_value(value)
+
+    def sync_slider(self, value: float) -> None:
+        self._quiet = True
+        try:
+            self.slider.value = self._position(value)
+        finally:
+            self._quiet = False
+
+    def show_message(self, text: str) -> None:
+        self.message.object = text
+        self.message.visible = bool(text)
+
+
+class Explorer:
+    """One page (one browser tab or one notebook cell)."""
+
+    def __init__(self, state: State | None = None) -> None:
+        query_problems: dict[str, str] = {}
+        if state is None:
+            args = dict(pn.state.session_args) if pn.state.curdoc is not None and \
+                pn.state.curdoc.session_context else {}
+            state, query_problems = State.from_query(args)
+        self.state = state
+        self.curve: dict | None = None
+        self.data = None
+        self._doc = pn.state.curdoc if (pn.state.curdoc is not None and
+                                        pn.state.curdoc.session_context) else None
+        self._location = pn.state.location if self._doc is not None else None
+        self._want: State | None = None
+        self._busy = False
+        self._history_want: float | None = None
+        self._history_busy = False
+        self._picked_x: float | None = None
+        self._build()
+        self._changed()
+        for name, text in query_problems.items():  # kept: the defaults stand in for them
+            self._message(name, f"URL parameter {name}: {text}")
+
+    # ------------------------------------------------------------------ layout
+    def _build(self) -> None:
+        s = self.state
+        self.inputs = {f.name: Input(f, getattr(s, f.name), self._changed)
+                       for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
+        self.mode = pn.widgets.RadioButtonGroup(
+            options={"dimensionless (alpha, beta, a)": "dimensionless", "bench (SI)": "bench"},
+            value=s.mode, button_type="primary", width=320)
+        self.axis = pn.widgets.RadioButtonGroup(options={k: k for k in AXES}, value=s.axis,
+                                                width=200, name="velocity axis")
+        self.axis_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
+        self.log_x = pn.widgets.Checkbox(name="logarithmic velocity axis", value=s.log_x)
+        self.general = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
+        for w in (self.mode, self.axis, self.log_x):
+            w.param.watch(lambda e: self._changed(), "value")
+        self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
+        self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
+        self.history_text = pn.pane.Markdown("click a point of the curve for its history",
+                                             css_classes=["vf-history"])
+        self.case_text = pn.pane.Markdown("", width=330)
+
+        self.curve_view = CurveView()
+        self.history_view = HistoryView()
+        self.map_view = MapView(compute.case_map())
+        for fig in self.curve_view.figures.values():
+            fig.on_event(Tap, self._tapped_curve)
+        self.map_view.figure.on_event(Tap, self._tapped_map)
+        self.curve_pane = pn.pane.Bokeh(self.curve_view.figures["linear"],
+                                        sizing_mode="stretch_width", min_height=400)
+        self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
+                                 margin=0)
+        self.bench_box = pn.Column(*(self.inputs[f.name].layout for f in BENCH), margin=0)
+        self.bench_file = pn.widgets.FileInput(accept=".json", width=300)
+        self.bench_file.param.watch(self._bench_file, "value")
+        self.bench_box.append(pn.Column(pn.pane.Markdown("bench file (JSON, docs/bench.md):"),
+                                        self.bench_file, margin=0))
+        sidebar = pn.Column(
+            pn.pane.Markdown("## vibrofriction explorer\nFriction under normal oscillations "
+                             "(Mao, Popov, Starcevic, Popov 2017), by the exact solver."),
+            self.mode, self.general, self.dim_box, self.bench_box,
+            pn.pane.Markdown("**velocity**"), self.axis, self.axis_message,
+            *(self.inputs[f.name].layout for f in VELOCITY), self.log_x,
+            pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.readout,
+            self.case_text, width=350)
+        main = pn.Column(self.curve_pane,
+                         pn.Row(pn.Column(self.history_view.figure, self.history_text,
+                                          sizing_mode="stretch_width"),
+                                self.map_view.figure, sizing_mode="stretch_width"),
+                         pn.Tabs(("Measurements & fit", self._measurements_panel()),
+                                 ("Export & share", self._share_panel()), dynamic=False),
+                         sizing_mode="stretch_width")
+        self.layout = pn.Row(sidebar, main, sizing_mode="stretch_width")
+        self._show_mode()
+
+    def _measurements_panel(self):
+        self.csv_input = pn.widgets.FileInput(accept=".csv", name="measurements",
+                                              css_classes=["vf-csv"])
+        self.csv_input.param.watch(self._csv_dropped, "value")
+        self.csv_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False)
+        self.csv_info = pn.pane.Markdown("no measurements loaded", css_classes=["vf-csv-info"])
+        self.free = pn.widgets.MultiChoice(name="free parameters of the fit",
+                                           value=["mu0", "mass", "k_xc"],
+                                           options=list(FITTABLE),
+                                           width=400)
+        self.fit_button = pn.widgets.Button(name="fit", button_type="primary", disabled=True,
+                                            width=100)
+        self.fit_button.on_click(self._fit_clicked)
+        self.fit_busy = pn.indicators.Progress(active=False, visible=False, width=200)
+        self.fit_report = pn.pane.Markdown("", sizing_mode="stretch_width")
+        return pn.Column(
+            pn.pane.Markdown("Drop a measurement table (CSV, the format of docs/bench.md: "
+                             "`v0`, `cof`, `du_z`, `omega`, optional `sigma`) on the box, or "
+                             "click it: the points are overlaid (bench inputs)."),
+            self.csv_input, self.csv_message, self.csv_info, pn.Row(self.free, self.fit_button,
+                                                     self.fit_busy), self.fit_report)
+
+    def _share_panel(self):
+        self.snippet = pn.pane.Markdown("", sizing_mode="stretch_width")
+        downloads = [pn.widgets.FileDownload(callback=partial(self._export, fmt),
+                                             filename=f"vibrofriction_curve.{fmt}",
+                                             label=f"download {fmt.upper()}",
+                                             button_type="default", width=160)
+                     for fmt in ("png", "svg", "csv")]
+        self.link = pn.pane.Markdown("")
+        return pn.Column(pn.Row(*downloads), self.link,
+                         pn.pane.Markdown("Python that recomputes this curve:"), self.snippet)
+
+    def _show_mode(self) -> None:
+        bench = self.mode.value == "bench"
+        self.dim_box.visible = not bench
+        self.bench_box.visible = bench
+
+    # ------------------------------------------------------------------ inputs
+    def _names(self) -> list[str]:
+        fields = BENCH if self.mode.value == "bench" else DIMENSIONLESS
+        return [f.name for f in (*fields, *VELOCITY)]
+
+    def _changed(self) -> None:
+        """Read every input; on success ask for the curve, else place the message."""
+        self._show_mode()
+        base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
+                                log_x=bool(self.log_x.value))
+        texts = {n: self.inputs[n].text.value for n in self._names()}
+        state, problems = read_inputs(texts, base)
+        for name, inp in self.inputs.items():
+            inp.show_message(problems.get(name, ""))
+        self.general.object = problems.get(GENERAL, "")
+        self.general.visible = GENERAL in problems
+        self.axis_message.object = problems.get("axis", "")
+        self.axis_message.visible = "axis" in problems
+        if state is None:
+            return
+        for n in self._names():
+            self.inputs[n].sync_slider(getattr(state, n))
+        self.state = state
+        self._want = state
+        if not self._busy:
+            pn.state.execute(self._refresh)
+
+    def _message(self, name: str, text: str) -> None:
+        if name in self.inputs:
+            self.inputs[name].show_message(text)
+        else:
+            self.general.object = text
+            self.general.visible = bool(text)
+
+    def _on_doc(self, func) -> None:
+        """Run ``func`` with the document lock held (server) or at once (notebook)."""
+        if self._doc is not None:
+            self._doc.add_next_tick_callback(func)
+        else:
+            func()
+
+    # ------------------------------------------------------------------ the curve
+    async def _refresh(self) -> None:
+        if self._busy:
+            return
+        self._busy = True
+        self._on_doc(partial(setattr, self.busy, "value", True))
+        try:
+            while self._want is not None:
+                state, self._want = self._want, None
+                try:
+                    curve = await pool.run_shared(compute.curve, compute.merge, state)
+                except Exception as exc:  # the last good view stays; say why, no traceback
+                    self._on_doc(partial(self._failed, state, exc))
+                    continue
+                self._on_doc(partial(self._show_curve, state, curve))
+        finally:
+            self._busy = False
+            self._on_doc(partial(setattr, self.busy, "value", False))
+
+    def _failed(self, state: State, exc: Exception) -> None:
+        text = str(exc) if isinstance(exc, ValueError) else \
+            f"could not compute: {type(exc).__name__}: {exc}"
+        self._message(field_of(text, state.mode), text)
+
+    def _show_curve(self, state: State, curve: dict) -> None:
+        if self._want is not None and self._want != state:
+            return  # a newer state is on its way
+        self.curve = curve
+        fig = self.curve_view.figures["log" if state.log_x else "linear"]
+        if self.curve_pane.object is not fig:  # setting it again would re-render the figure
+            self.curve_pane.object = fig
+        self.curve_view.show(curve, state.log_x)
+        self.map_view.show(curve["alpha"], curve["beta"])
+        y = curve["y"][np.isfinite(curve["y"])]
+        n_ok = int(np.count_nonzero(curve["trusted"]))
+        self.readout.object = (
+            f"mean {curve['y_label']} = {np.mean(y):.6f} over {y.size} points, "
+            f"{n_ok} of {len(curve['y'])} trusted; computed in {curve['seconds']:.2f} s")
+        crit = curve["critical"]
+        self.case_text.object = (
+            f"**case {curve['case']}**: {curve['case_text']}\n\n"
+            f"static value {curve['static']:.4g}; critical velocity "
+            f"({state.axis}) {crit:.4g}" + (" (a > 1: eq. 12 is not the onset of sliding)"
+                                            if curve["jumping"] else ""))
+        self.snippet.object = f"```python\n{exports.snippet(state)}```"
+        query = urlencode(state.to_query())
+        self.link.object = f"Share this view: the page's address holds it (`?{query}`)."
+        if self._location is not None:
+            self._location.search = f"?{query}" if query else ""
+        self._overlay_measurements()
+        pn.state.execute(partial(self._history_at_rest, state))
+
+    async def _history_at_rest(self, state: State, rest: float = 0.4) -> None:
+        """The history follows the curve once the inputs rest (not at every step of a
+        slider: it would hold up the next curve)."""
+        await asyncio.sleep(rest)
+        if self.state is not state or self._want is not None or self._busy:
+            return
+        x = np.asarray(self.curve["x"], float)
+        i = len(x) // 4 if self._picked_x is None or not x[0] <= self._picked_x <= x[-1] \
+            else int(np.argmin(np.abs(x - self._picked_x)))
+        self._on_doc(partial(self._pick, i))
+
+    # ------------------------------------------------------------------ history
+    def _tapped_curve(self, event) -> None:
+        c = self.curve
+        if c is None or event.x is None:
+            return
+        x = np.asarray(c["x"], float)
+        i = int(np.argmin(np.abs(np.log(np.maximum(x, 1e-300) / max(event.x, 1e-300)))
+                          if self.state.log_x else np.abs(x - event.x)))
+        self._picked_x = float(x[i])
+        self._pick(i)
+
+    def _pick(self, i: int) -> None:
+        """Show the history of the curve's point ``i``."""
+        c = self.curve
+        x = np.asarray(c["x"], float)
+        if not np.isfinite(c["y"][i]):
+            return
+        self.curve_view.pick(float(x[i]), float(c["y"][i]))
+        self._history_want = float(x[i])
+        if not self._history_busy:
+            pn.state.execute(self._refresh_history)
+
+    async def _refresh_history(self) -> None:
+        self._history_busy = True
+        try:
+            while self._history_want is not None:
+                x, self._history_want = self._history_want, None
+                state = self.state
+                try:
+                    h = await pool.run(compute.history, state, x)
+                except Exception as exc:
+                    self._on_doc(partial(self._failed, state, exc))
+                    continue
+                self._on_doc(partial(self._show_history, state, h))
+        finally:
+            self._history_busy = False
+
+    def _show_history(self, state: State, h: dict) -> None:
+        where = f"{state.axis} = {h['x']:.4g}"
+        self.history_view.show(h, where)
+        kinds = sorted({e[1] for e in h["events"]})
+        self.history_text.object = (
+            f"history at {where}: mu/mu0 = {h['mu_ratio']:.6g} ({h['status']}"
+            f"{'' if h['trusted'] else ', not trusted'}); "
+            f"{'steady state' if h['steady'] else 'from steady sliding (no trusted steady state)'}"
+            f", {len(h['events'])} events ({', '.join(kinds) or 'none'})")
+
+    # ------------------------------------------------------------------ map
+    def _tapped_map(self, event) -> None:
+        if event.x is None or event.y is None:
+            return
+        if self.mode.value != "dimensionless":
+            self.general.object = ("the map moves the dimensionless inputs: choose "
+                                   "'dimensionless' to move there")
+            self.general.visible = True
+            return
+        alpha, beta = float(f"{event.x:.3g}"), float(f"{event.y:.3g}")
+        self.inputs["alpha"].text.value = format_value(alpha)
+        self.inputs["beta"].text.value = format_value(beta)
+
+    # ------------------------------------------------------------------ bench file
+    def _bench_file(self, event) -> None:
+        if not event.new:
+            return
+        import json
+
+        try:
+            spec = json.loads(event.new)
+            if not isinstance(spec, dict):
+                raise ValueError("a bench file holds a JSON object (docs/bench.md)")
+            known = {f.name for f in BENCH} | {"du_z", "eta_c"}
+            for k in spec:
+                if k not in known:
+                    raise ValueError(f"bench key {k!r}: the explorer takes "
+                                     f"{sorted(known)} (a contact model: use the library)")
+        except ValueError as exc:
+            self.general.object = f"bench file: {exc}"
+            self.general.visible = True
+            return
+        if "du_z" in spec:
+            spec["du_z_um"] = float(spec.pop("du_z")) * 1e6
+        if "eta_c" in spec:
+            spec["bench_eta_c"] = spec.pop("eta_c")
+        for k, v in spec.items():
+            self.inputs[k].text.value = format_value(float(v))
+
+    # ------------------------------------------------------------------ measurements
+    def _csv_dropped(self, event) -> None:
+        if event.new is None:
+            return
+        try:
+            data = compute.parse_measurements(event.new, self.csv_input.filename or "the file")
+        except ValueError as exc:
+            self.csv_message.object = str(exc)
+            self.csv_message.visible = True
+            return
+        self.csv_message.visible = False
+        self.data = data
+        self.fit_button.disabled = False
+        if self.mode.value != "bench":
+            self.csv_message.object = ("measurements are in SI units: choose the bench inputs "
+                                       "to overlay them")
+            self.csv_message.visible = True
+        self._overlay_measurements()
+
+    def _overlay_measurements(self) -> None:
+        if self.data is None:
+            return
+        if self.state.mode != "bench":
+            self.curve_view.show_measurements([])
+            return
+        try:
+            groups = compute.measurement_curves(self.state, self.data)
+        except ValueError as exc:
+            self.csv_message.object = str(exc)
+            self.csv_message.visible = True
+            return
+        self.curve_view.show_measurements(groups)
+        self.csv_info.object = (f"overlaid {sum(len(g['x']) for g in groups)} measured points "
+                                f"in {len(groups)} group(s): "
+                                + "; ".join(g["label"] for g in groups))
+        self.csv_message.object = ""
+        self.csv_message.visible = False
+
+    def _fit_clicked(self, event) -> None:
+        if self.data is None or self.fit_busy.visible:
+            return
+        pn.state.execute(partial(self._fit, self.state, self.data, tuple(self.free.value)))
+
+    async def _fit(self, state: State, data, free: tuple[str, ...]) -> None:
+        self._on_doc(partial(self._fit_running, True))
+        try:
+            out = await pool.run(compute.run_fit, state, data, free, kind="fit")
+        except Exception as exc:
+            text = str(exc) if isinstance(exc, ValueError) else f"{type(exc).__name__}: {exc}"
+            self._on_doc(partial(self._fit_done, None, f"fit failed: {text}"))
+            return
+        self._on_doc(partial(self._fit_done, out, None))
+
+    def _fit_running(self, running: bool) -> None:
+        self.fit_busy.visible = running
+        self.fit_busy.active = running
+        self.fit_button.disabled = running
+        if running:
+            self.fit_report.object = "fitting (tens of seconds; other tabs are not held up)..."
+
+    def _fit_done(self, out: dict | None, error: str | None) -> None:
+        self._fit_running(False)
+        if out is None:
+            self.fit_report.object = error
+            return
+        self.curve_view.show_fit(out["curves"])
+        self.fit_report.object = f"```\n{out['report']}\n```"
+
+    # ------------------------------------------------------------------ export
+    def _export(self, fmt: str) -> io.BytesIO:
+        if self.curve is None:
+            return io.BytesIO(b"")
+        if fmt == "csv":
+            return io.BytesIO(exports.curve_csv(self.state, self.curve).encode())
+        return io.BytesIO(exports.figure_bytes(self.curve, fmt))
+
+
+def app(state: State | None = None) -> pn.viewable.Viewable:
+    """The explorer as a Panel object: serve it, or show it in a notebook
+    (``pn.extension()`` first)."""
+    return Explorer(state).layout

@@ -1,0 +1,27 @@
+"""Serve the explorer on a local Bokeh server (``vibrofriction explore``)."""
+
+from __future__ import annotations
+
+__all__ = ["serve"]
+
+
+def serve(port: int = 5006, show: bool = True) -> None:
+    """Serve the explorer at ``http://127.0.0.1:port/`` until interrupted."""
+    import signal
+    import sys
+
+    import panel as pn
+
+    from . import pool
+    from .page import app
+
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # stop the workers too
+    pool.warm_up()
+    pn.extension()
+    print(f"vibrofriction explorer: http://127.0.0.1:{port}/  (Ctrl-C stops it)", flush=True)
+    try:
+        pn.serve(app, port=port, address="127.0.0.1", show=show, title="vibrofriction explorer",
+                 websocket_origin=[f"127.0.0.1:{port}", f"localhost:{port}"],
+                 threaded=False, print_url=False)
+    finally:
+        pool.shutdown()

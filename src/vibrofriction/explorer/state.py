@@ -1,0 +1,203 @@
+"""The explorer's state: the inputs as one value, its URL form and the system it describes.
+
+Every range check is the library's own: :meth:`State.system` builds a
+:class:`~vibrofriction.Dimensionless` or :meth:`~vibrofriction.Physical.from_bench`, and a
+bad value is the ``ValueError`` they raise (docs/explorer.md).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+import vibrofriction as vf
+from vibrofriction.validation import checked
+
+__all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "Field", "State", "parse_number"]
+
+MODES = ("dimensionless", "bench")
+#: velocity axes: the keyword of ``friction_coefficient`` and the axis label
+AXES = {"vbar": ("vbar", "vbar = v0/v0*"),
+        "V": ("v_inertial", "V = v0 m omega/(mu0 F_N0)"),
+        "v0": ("v0", "v0 (m/s)")}
+
+
+@dataclass(frozen=True)
+class Field:
+    """One numeric input: its name (the library's), label, slider range and scale."""
+
+    name: str
+    label: str
+    low: float
+    high: float
+    log: bool = True
+    allow_inf: bool = False
+
+
+DIMENSIONLESS = (
+    Field("alpha", "alpha = k_x/(m omega^2)", 1e-3, 1e2),
+    Field("beta", "beta = (k_x + k_xc)/(m omega^2)", 1e-3, 1e4, allow_inf=True),
+    Field("amplitude", "a = du_z/u_z0", 0.0, 3.0, log=False),
+    Field("zeta", "zeta (pin damping ratio)", 0.0, 0.2, log=False),
+    Field("eta_c", "eta_c (contact loss factor)", 0.0, 1.0, log=False),
+)
+BENCH = (
+    Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
+    Field("mass", "pin modal mass (kg)", 1e-4, 10.0),
+    Field("quality_factor", "pin quality factor Q", 1.0, 1e4, allow_inf=True),
+    Field("normal_load", "normal load F_N0 (N)", 0.01, 1e4),
+    Field("k_zc", "normal contact stiffness k_zc (N/m)", 1e4, 1e10),
+    Field("k_xc", "tangential contact stiffness k_xc (N/m)", 1e4, 1e10, allow_inf=True),
+    Field("drive_frequency_hz", "drive frequency (Hz)", 10.0, 1e5),
+    Field("du_z_um", "oscillation amplitude du_z (um)", 1e-3, 100.0),
+    Field("mu0", "mu0 (local coefficient of friction)", 0.01, 2.0),
+    Field("bench_eta_c", "eta_c (contact loss factor)", 0.0, 1.0, log=False),
+)
+VELOCITY = (
+    Field("v_min", "velocity from", 0.0, 1e3, log=False, allow_inf=False),
+    Field("v_max", "velocity to", 1e-6, 1e3),
+)
+FIELDS = {f.name: f for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
+
+
+def parse_number(name: str, text: str | float) -> float:
+    """A typed value as a float (``inf`` accepted), or the library's ValueError naming it."""
+    if isinstance(text, str):
+        text = text.strip()
+    return float(checked(name, text, allow_inf=True))
+
+
+@dataclass(frozen=True)
+class State:
+    """Every input of the explorer (defaults: the general system of the README)."""
+
+    mode: str = "dimensionless"
+    alpha: float = 0.5
+    beta: float = 2.0
+    amplitude: float = 0.5
+    zeta: float = 0.0
+    eta_c: float = 0.0
+    natural_frequency_hz: float = 800.0
+    mass: float = 0.01
+    quality_factor: float = 50.0
+    normal_load: float = 20.0
+    k_zc: float = 2e7
+    k_xc: float = 1.5e7
+    drive_frequency_hz: float = 1000.0
+    du_z_um: float = 0.5
+    mu0: float = 0.3
+    bench_eta_c: float = 0.0
+    axis: str = "vbar"
+    v_min: float = 0.0
+    v_max: float = 1.5
+    log_x: bool = False
+    points: int = 200
+
+    def __post_init__(self) -> None:
+        if self.mode not in MODES:
+            raise ValueError(f"mode must be one of {list(MODES)}, got {self.mode!r}")
+        if self.axis not in AXES:
+            raise ValueError(f"axis must be one of {list(AXES)}, got {self.axis!r}")
+
+    # ------------------------------------------------------------------ system
+    def system(self) -> vf.Dimensionless | vf.Physical:
+        """The library's system for these inputs (its validators raise ValueError)."""
+        if self.mode == "dimensionless":
+            return vf.Dimensionless(self.alpha, self.beta, self.amplitude, zeta=self.zeta,
+                                    eta_c=self.eta_c)
+        return vf.Physical.from_bench(**self.bench_arguments())
+
+    def bench_arguments(self) -> dict[str, float]:
+        """The keyword arguments of :meth:`Physical.from_bench` (the bench file's keys)."""
+        return dict(natural_frequency_hz=self.natural_frequency_hz, mass=self.mass,
+                    quality_factor=self.quality_factor, normal_load=self.normal_load,
+                    k_zc=self.k_zc, k_xc=self.k_xc,
+                    drive_frequency_hz=self.drive_frequency_hz, du_z=self.du_z_um * 1e-6,
+                    mu0=self.mu0, eta_c=self.bench_eta_c)
+
+    def velocities(self) -> np.ndarray:
+        """The ``points`` velocities of the curve, on the chosen axis."""
+        lo = float(checked("v_min", self.v_min, minimum=0.0))
+        hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
+        if self.log_x:
+            lo = float(checked("v_min", lo, minimum=0.0, strict=True))
+            return np.geomspace(lo, hi, self.points)
+        return np.linspace(lo, hi, self.points)
+
+    def velocity_keyword(self) -> str:
+        """``vbar``, ``v_inertial`` or ``v0``: the keyword of ``friction_coefficient``."""
+        return AXES[self.axis][0]
+
+    # ------------------------------------------------------------------ URL
+    def to_query(self) -> dict[str, str]:
+        """The inputs that differ from the defaults, as URL query parameters."""
+        default = State()
+        out = {}
+        for f in dataclasses.fields(self):
+            value = getattr(self, f.name)
+            if value != getattr(default, f.name):
+                out[f.name] = _text(value)
+        return out
+
+    @classmethod
+    def from_query(cls, query: Mapping[str, str | bytes | list]) -> tuple[State, dict[str, str]]:
+        """A state from URL query parameters, and a message per parameter it could not read
+        (those keep their defaults; unknown names are ignored)."""
+        values: dict[str, object] = {}
+        problems: dict[str, str] = {}
+        names = {f.name: f for f in dataclasses.fields(cls)}
+        for key, raw in query.items():
+            if key not in names:
+                continue
+            if isinstance(raw, list):
+                raw = raw[-1] if raw else ""
+            text = raw.decode() if isinstance(raw, bytes) else str(raw)
+            try:
+                values[key] = _value(key, text)
+            except ValueError as exc:
+                problems[key] = str(exc)
+        try:
+            return cls(**values), problems
+        except ValueError as exc:
+            bad = "mode" if "mode" in str(exc) else "axis"
+            problems[bad] = str(exc)
+            values.pop(bad, None)
+            return cls(**values), problems
+
+    def with_(self, **changes: object) -> State:
+        """A copy with some inputs replaced."""
+        return dataclasses.replace(self, **changes)
+
+
+def _text(value: object) -> str:
+    """A value as typed or written in a URL: floats with round-trip precision."""
+    if isinstance(value, bool):
+        return "1" if value else "0"
+    if isinstance(value, float):
+        if math.isinf(value):
+            return "inf" if value > 0 else "-inf"
+        short = f"{value:g}"
+        return short if float(short) == value else repr(value)
+    return str(value)
+
+
+def _value(name: str, text: str) -> object:
+    if name in ("mode", "axis"):
+        return text
+    if name == "log_x":
+        return text.strip().lower() in ("1", "true", "yes", "on")
+    if name == "points":
+        n = int(parse_number(name, text))
+        if not 2 <= n <= 2000:
+            raise ValueError(f"points must be an integer in [2, 2000], got {text!r}")
+        return n
+    return parse_number(name, text)
+
+
+def format_value(value: float) -> str:
+    """A float as shown in a typed-entry box (round-trips exactly)."""
+    return _text(float(value))

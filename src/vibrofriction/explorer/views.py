@@ -1,0 +1,229 @@
+"""The Bokeh figures of the explorer and how a computed result is drawn into them."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from bokeh.models import ColumnDataSource, HoverTool, Range1d
+from bokeh.plotting import figure
+
+from .compute import CASE_COLORS, PHASE_COLORS
+
+__all__ = ["CurveView", "HistoryView", "MapView"]
+
+_TOOLS = "pan,wheel_zoom,box_zoom,reset,save"
+_FORM_COLORS = ("#d95f02", "#7570b3", "#e7298a")
+_DATA_COLORS = ("#1b9e77", "#e6ab02", "#a6761d", "#666666", "#66a61e", "#e41a1c")
+
+
+def _empty(**columns) -> ColumnDataSource:
+    return ColumnDataSource({k: [] for k in columns} if columns else {"x": [], "y": []})
+
+
+def _legend_follows_data(figures) -> None:
+    """Show a legend entry only while its renderers have something to draw."""
+    for fig in figures:
+        for item in fig.legend[0].items:
+            item.visible = any(len(next(iter(r.data_source.data.values()), [])) > 0
+                               for r in item.renderers)
+
+
+def _legend_outside(fig, location: str = "bottom_right") -> None:
+    fig.legend.location = location
+    fig.legend.label_text_font_size = "8pt"
+    fig.legend.background_fill_alpha = 0.7
+    fig.legend.click_policy = "hide"
+
+
+class CurveView:
+    """``mu/mu0`` (or the COF) against velocity: trusted points, untrusted points, the
+    static value, the critical velocity, the closed forms, measurements and the fit."""
+
+    def __init__(self, x_log: bool = False) -> None:
+        self.trusted = _empty(x=1, y=1)
+        self.untrusted = _empty(x=1, y=1, status=1)
+        self.static = _empty(x=1, y=1)
+        self.critical = _empty(x0=1, x1=1, y0=1, y1=1)
+        self.forms = _empty(xs=1, ys=1, form=1, color=1)
+        self.measured = _empty(x=1, y=1, group=1, color=1)
+        self.fitted = _empty(xs=1, ys=1, color=1)
+        self.picked = _empty(x=1, y=1)
+        self.figures = {kind: self._figure(kind) for kind in ("linear", "log")}
+
+    def _figure(self, kind: str):
+        fig = figure(height=400, sizing_mode="stretch_width", tools=_TOOLS + ",tap",
+                     x_axis_type=kind, title="mu/mu0 against velocity (exact solver)",
+                     toolbar_location="above")
+        fig.line("x", "y", source=self.trusted, line_width=2, color="#1f77b4",
+                 legend_label="exact solver (trusted)")
+        pts = fig.scatter("x", "y", source=self.trusted, size=4, color="#1f77b4",
+                          legend_label="exact solver (trusted)")
+        fig.scatter("x", "y", source=self.untrusted, size=7, fill_color=None,
+                    line_color="#888888", line_width=1.5,
+                    legend_label="not trusted (solver error > tol)")
+        fig.multi_line("xs", "ys", source=self.forms, color="color", line_dash="dashed",
+                       line_width=2, legend_field="form")
+        fig.scatter("x", "y", source=self.static, marker="square", size=10, color="black",
+                    legend_label="static value mu(v0 -> 0), eq. (2)")
+        fig.segment("x0", "y0", "x1", "y1", source=self.critical, color="#d62728",
+                    line_dash="dotted", line_width=2,
+                    legend_label="critical velocity, eq. (12)")
+        fig.scatter("x", "y", source=self.measured, size=8, marker="triangle",
+                    color="color", legend_field="group")
+        fig.multi_line("xs", "ys", source=self.fitted, color="color", line_width=2,
+                       line_dash="dotdash", legend_label="fit")
+        fig.scatter("x", "y", source=self.picked, size=14, fill_color=None,
+                    line_color="#ff7f0e", line_width=3, legend_label="point of the history")
+        fig.add_tools(HoverTool(renderers=[pts], tooltips=[("v", "@x{0.0000g}"),
+                                                           ("mu", "@y{0.000000}")]))
+        _legend_outside(fig)
+        return fig
+
+    def show(self, curve: dict, log_x: bool) -> None:
+        """Draw a computed curve (``compute.curve``)."""
+        x, y, ok = curve["x"], curve["y"], curve["trusted"]
+        self.trusted.data = {"x": x, "y": np.where(ok, y, np.nan)}
+        bad = ~ok & np.isfinite(y)
+        self.untrusted.data = {"x": x[bad], "y": y[bad], "status": curve["status"][bad]}
+        self.static.data = {"x": [x[0]], "y": [curve["static"]]}
+        ymax = max(1.0 if curve["mu0"] is None else curve["mu0"],
+                   float(np.nanmax(y)) if np.any(np.isfinite(y)) else 1.0)
+        crit = curve["critical"]
+        in_range = math.isfinite(crit) and x[0] <= crit <= x[-1]
+        self.critical.data = {"x0": [crit] if in_range else [], "x1": [crit] if in_range else [],
+                              "y0": [0.0] if in_range else [],
+                              "y1": [1.05 * ymax] if in_range else []}
+        forms = curve["closed_forms"]
+        self.forms.data = {"xs": [f["x"] for f in forms], "ys": [f["y"] for f in forms],
+                           "form": [f["label"] for f in forms],
+                           "color": list(_FORM_COLORS[:len(forms)])}
+        for fig in self.figures.values():
+            fig.yaxis.axis_label = curve["y_label"]
+            fig.xaxis.axis_label = curve["x_label"]
+            fig.title.text = (f"{curve['y_label']} against velocity (exact solver): case "
+                              f"{curve['case']}")
+            fig.y_range.start = -0.04 * ymax  # the static value may be 0
+            fig.y_range.end = 1.08 * ymax
+        self.picked.data = {"x": [], "y": []}
+        _legend_follows_data(self.figures.values())
+
+    def show_measurements(self, groups: list[dict]) -> None:
+        xs, ys, labels, colors = [], [], [], []
+        for k, g in enumerate(groups):
+            xs += list(g["x"])
+            ys += list(g["cof"])
+            labels += [f"measured: {g['label']}"] * len(g["x"])
+            colors += [_DATA_COLORS[k % len(_DATA_COLORS)]] * len(g["x"])
+        self.measured.data = {"x": xs, "y": ys, "group": labels, "color": colors}
+        _legend_follows_data(self.figures.values())
+
+    def show_fit(self, curves: list[dict]) -> None:
+        self.fitted.data = {"xs": [c["x"] for c in curves], "ys": [c["cof"] for c in curves],
+                            "color": [_DATA_COLORS[k % len(_DATA_COLORS)]
+                                      for k in range(len(curves))]}
+        _legend_follows_data(self.figures.values())
+
+    def pick(self, x: float, y: float) -> None:
+        self.picked.data = {"x": [x], "y": [y]}
+        _legend_follows_data(self.figures.values())
+
+
+class HistoryView:
+    """A point's time history: forces, the phases shaded, the events marked."""
+
+    def __init__(self) -> None:
+        self.lines = _empty(t=1, f=1, n=1)
+        self.spans = _empty(left=1, right=1, bottom=1, top=1, color=1, phase=1)
+        self.events = _empty(t=1, y=1, kind=1)
+        fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
+                     title="time history: click a point of the curve",
+                     x_axis_label="t/T (drive periods)",
+                     y_axis_label="force / (mu0 F_N0)", toolbar_location="above")
+        fig.quad("left", "right", "bottom", "top", source=self.spans, color="color",
+                 alpha=0.6, legend_field="phase")
+        fig.line("t", "n", source=self.lines, color="black", line_width=1.5,
+                 legend_label="n = F_N/F_N0 (friction limit)")
+        fig.line("t", "f", source=self.lines, color="#1f77b4", line_width=2,
+                 legend_label="f = F_x/(mu0 F_N0)")
+        ev = fig.scatter("t", "y", source=self.events, marker="diamond", size=8,
+                         color="#d62728", legend_label="events")
+        fig.add_tools(HoverTool(renderers=[ev], tooltips=[("event", "@kind"),
+                                                          ("t/T", "@t{0.0000}")]))
+        _legend_outside(fig, "top_center")
+        fig.legend.orientation = "horizontal"
+        self.figure = fig
+
+    def show(self, h: dict, where: str) -> None:
+        t, f, n = h["t"], h["f"], h["n"]
+        self.lines.data = {"t": t, "f": f, "n": n}
+        lo = min(0.0, float(np.min(f)), float(np.min(n)))
+        hi = max(float(np.max(f)), float(np.max(n)))
+        pad = 0.35 * (hi - lo or 1.0)
+        self.spans.data = {
+            "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
+            "bottom": [lo - 0.05 * pad] * len(h["spans"]),
+            "top": [hi + pad] * len(h["spans"]),
+            "color": [PHASE_COLORS.get(s[2], "#ffffff") for s in h["spans"]],
+            "phase": [s[2] for s in h["spans"]]}
+        ev_t = np.array([e[0] for e in h["events"]], dtype=float)
+        self.events.data = {"t": ev_t, "y": np.interp(ev_t, t, f) if ev_t.size else ev_t,
+                            "kind": [e[1] for e in h["events"]]}
+        self.figure.y_range.start = lo - 0.05 * pad
+        self.figure.y_range.end = hi + pad
+        self.figure.x_range.start = float(t[0])
+        self.figure.x_range.end = float(t[-1])
+        self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
+                                  f"{'' if h['steady'] else ' (transient)'}")
+
+
+class MapView:
+    """The ``(alpha, beta)`` plane coloured by the case of ``vf.classify``; click to move."""
+
+    def __init__(self, case_map: dict) -> None:
+        al, cases = case_map["alpha"], case_map["cases"]
+        n = len(al)
+        img = np.zeros((n, n), dtype=np.uint32)
+        view = img.view(dtype=np.uint8).reshape((n, n, 4))
+        for j in range(n):
+            for i in range(n):
+                view[j, i] = _rgba(CASE_COLORS.get(cases[j, i], "#ffffff"))
+        (a0, a1), (b0, b1) = case_map["alpha_range"], case_map["beta_range"]
+        fig = figure(height=330, width=500, x_axis_type="log", y_axis_type="log",
+                     x_range=Range1d(a0, a1), y_range=Range1d(b0, b1),
+                     tools="tap,pan,wheel_zoom,reset,save", toolbar_location="above",
+                     title="cases I-IV (vf.classify): click to move there",
+                     x_axis_label="alpha", y_axis_label="beta")
+        fig.image_rgba(image=[img], x=a0, y=b0, dw=a1 - a0, dh=b1 - b0)
+        # the resonance bands are thinner than a pixel of the grid: draw them as lines
+        fig.segment(x0=[1.0], x1=[1.0], y0=[1.0], y1=[b1], color=CASE_COLORS["IV"],
+                    line_width=4)
+        fig.segment(x0=[a0], x1=[1.0], y0=[1.0], y1=[1.0], color=CASE_COLORS["III"],
+                    line_width=4)
+        for label, case in (("I soft", "I"), ("II stiff", "II"), ("III beta ~ 1", "III"),
+                            ("IV alpha ~ 1", "IV"), ("general", "general")):
+            fig.scatter([a0 / 10], [b0 / 10], marker="square", size=10, color=CASE_COLORS[case],
+                        line_color="#555555", legend_label=label)
+        fig.scatter([a0 / 10], [b0 / 10], marker="square", size=10, color="#ffffff",
+                    line_color="#555555",
+                    legend_label="beta <= alpha: no system")
+        self.current = _empty(x=1, y=1, marker=1)
+        fig.scatter("x", "y", source=self.current, size=16, marker="marker",
+                    fill_color="#d62728", line_color="black", legend_label="current system")
+        fig.add_layout(fig.legend[0], "right")
+        fig.legend.label_text_font_size = "8pt"
+        fig.legend.background_fill_alpha = 0.8
+        fig.legend.spacing = 0
+        fig.legend.padding = 4
+        self.figure = fig
+        self.beta_top = b1
+
+    def show(self, alpha: float, beta: float) -> None:
+        infinite = math.isinf(beta)
+        self.current.data = {"x": [alpha], "y": [self.beta_top * 0.8 if infinite else beta],
+                             "marker": ["triangle" if infinite else "circle"]}
+
+
+def _rgba(color: str) -> tuple[int, int, int, int]:
+    c = color.lstrip("#")
+    return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16), 255

@@ -1,0 +1,235 @@
+"""The explorer without a browser: state and URL, messages, snippet, exports, overlays."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction.explorer import compute, exports
+from vibrofriction.explorer.messages import GENERAL, field_of, read_inputs
+from vibrofriction.explorer.state import State
+
+
+def test_import_vibrofriction_does_not_import_panel():
+    import subprocess
+    import sys
+
+    code = "import sys, vibrofriction, vibrofriction.cli; print('panel' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == "False"
+
+
+@pytest.mark.parametrize("state", [
+    State(),
+    State(alpha=0.01, beta=math.inf, amplitude=1.5, zeta=0.02, axis="V", v_max=30.0),
+    State(mode="bench", du_z_um=0.123456789, k_xc=math.inf, axis="v0", v_min=1e-4,
+          v_max=0.1, log_x=True, points=57),
+])
+def test_state_round_trips_through_the_url(state):
+    query = state.to_query()
+    assert all(isinstance(v, str) for v in query.values())
+    back, problems = State.from_query(query)
+    assert problems == {}
+    assert back == state
+
+
+def test_url_reads_bytes_lists_and_reports_bad_values():
+    state, problems = State.from_query({"alpha": [b"0.01"], "beta": [b"abc"],
+                                        "axis": [b"sideways"], "unknown": [b"1"]})
+    assert state.alpha == 0.01 and state.beta == State().beta and state.axis == "vbar"
+    assert "beta must be a number" in problems["beta"]
+    assert "axis must be one of" in problems["axis"]
+
+
+@pytest.mark.parametrize("texts, field, words", [
+    ({"beta": "0.3"}, "beta", "beta must be > alpha (= 0.5)"),
+    ({"amplitude": "-0.1"}, "amplitude", "amplitude must be finite and >= 0"),
+    ({"alpha": "abc"}, "alpha", "alpha must be a number"),
+    ({"zeta": "nan"}, "zeta", "zeta must be"),
+    ({"v_max": "-1"}, "v_max", "v_max must be"),
+])
+def test_bad_input_gives_the_library_message_next_to_its_input(texts, field, words):
+    state, problems = read_inputs(texts, State())
+    assert state is None
+    assert list(problems) == [field]
+    assert words in problems[field]
+
+
+def test_bench_messages_and_axis_messages():
+    _, problems = read_inputs({"du_z_um": "-2"}, State(mode="bench"))
+    assert "du_z must be" in problems["du_z_um"]
+    _, problems = read_inputs({"mass": "0"}, State(mode="bench"))
+    assert "mass" in problems
+    _, problems = read_inputs({"alpha": "1", "beta": "inf"}, State())
+    assert "v0* is infinite" in problems["axis"]
+    _, problems = read_inputs({}, State(axis="v0"))
+    assert "needs a Physical system" in problems["axis"]
+    state, problems = read_inputs({"alpha": "1", "beta": "inf"}, State(axis="V"))
+    assert problems == {} and state.beta == math.inf
+    assert field_of("give exactly one of mass (kg) and k_x (N/m)") == GENERAL
+    assert field_of("something else") == GENERAL
+
+
+def _run_snippet(state: State) -> np.ndarray:
+    scope: dict = {}
+    exec(exports.snippet(state), scope)  # noqa: S102 - the snippet shown to the user
+    return np.asarray(scope["y"])
+
+
+@pytest.mark.parametrize("state", [
+    State(points=40),
+    State(mode="bench", axis="v0", v_min=1e-4, v_max=0.05, log_x=True, points=30),
+    State(alpha=1.0, beta=math.inf, amplitude=0.5, axis="V", v_max=8.0, points=30),
+])
+def test_snippet_reproduces_the_curve(state):
+    c = compute.curve(state)
+    np.testing.assert_array_equal(_run_snippet(state), c["y"])
+
+
+def test_curve_marks_static_critical_case_and_trust():
+    c = compute.curve(State(alpha=0.01, beta=0.02, amplitude=0.8, points=60))
+    assert c["case"] == "II"
+    assert c["static"] == pytest.approx(0.2)
+    assert c["critical"] == 1.0
+    assert [f["label"][:10] for f in c["closed_forms"]] == ["exact stif", "eq. (26), "]
+    assert c["trusted"].dtype == bool and c["trusted"].all()
+    soft = compute.curve(State(alpha=0.01, beta=400.01, amplitude=1.0, points=20))
+    assert [f["label"] for f in soft["closed_forms"]] == ["eq. (27) corrected, soft law"]
+    general = compute.curve(State(points=20))
+    assert general["closed_forms"] == []  # no closed form outside its regime
+    iv = compute.curve(State(alpha=1.0, beta=math.inf, axis="V", v_max=10.0, points=20))
+    assert iv["case"] == "IV" and math.isnan(iv["critical"])
+    assert iv["closed_forms"][0]["y"][0] == pytest.approx(
+        vf.theory.resonant_plateau_exact(0.5) if hasattr(vf, "theory") else 0.0)
+
+
+def test_bench_curve_is_the_cof():
+    state = State(mode="bench", axis="v0", v_max=0.05, points=20)
+    c = compute.curve(state)
+    assert c["y_label"].startswith("COF")
+    system = state.system()
+    assert c["critical"] == pytest.approx(system.critical_velocity())
+    assert c["static"] == pytest.approx(system.mu0 * max(0.0, 1 - system.du_z / system.u_z0))
+
+
+def test_history_has_phases_and_events():
+    h = compute.history(State(), 0.3)
+    assert h["steady"] and h["trusted"]
+    assert {s[2] for s in h["spans"]} >= {"stick", "slip+"}
+    assert h["events"] and h["t"][-1] == pytest.approx(3.0)
+
+
+def test_case_map_uses_classify():
+    m = compute.case_map(20)
+    assert m["cases"].shape == (20, 20)
+    j, i = 19, 0  # beta = 1e4, alpha = 1e-3: case I
+    assert m["cases"][j, i] == vf.classify(m["alpha"][i], m["beta"][j]).value == "I"
+    assert m["cases"][0, 19] == ""  # beta < alpha
+
+
+CSV = (b"# pin-on-disk\nv0 [mm/s],cof,du_z [um],omega [Hz],sigma\n"
+       b"1.0,0.21,0.5,1000,0.005\n10.0,0.27,0.5,1000,0.004\n2.0,0.2,1.0,1000,0.005\n")
+
+
+def test_csv_overlay_and_malformed_csv():
+    data = compute.parse_measurements(CSV, "bench.csv")
+    groups = compute.measurement_curves(State(mode="bench", axis="v0"), data)
+    assert [len(g["x"]) for g in groups] == [2, 1]
+    np.testing.assert_allclose(groups[0]["x"], [1e-3, 1e-2])
+    with pytest.raises(ValueError, match="lacks the column"):
+        compute.parse_measurements(b"v0,cof\n1,2\n")
+    with pytest.raises(ValueError, match="column 'cof', line 2"):
+        compute.parse_measurements(b"v0,cof,du_z,omega\n1,abc,1e-6,100\n")
+    with pytest.raises(ValueError, match="'x.csv' holds no table"):
+        compute.parse_measurements(b"", "x.csv")
+    with pytest.raises(ValueError, match="choose the bench inputs"):
+        compute.measurement_curves(State(), data)
+
+
+def test_exports():
+    state = State(points=12)
+    c = compute.curve(state)
+    csv = exports.curve_csv(state, c)
+    lines = [ln for ln in csv.splitlines() if not ln.startswith("#")]
+    assert lines[0] == "vbar,mu_ratio,status,error,trusted" and len(lines) == 13
+    assert float(lines[1].split(",")[1]) == c["y"][0]
+    assert exports.figure_bytes(c, "png")[:8] == b"\x89PNG\r\n\x1a\n"
+    assert b"<svg" in exports.figure_bytes(c, "svg")[:500]
+    with pytest.raises(ValueError, match="fmt"):
+        exports.figure_bytes(c, "gif")
+
+
+def test_explorer_builds_and_refuses_bad_input_inline(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page as app_module
+
+    scheduled = []
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: scheduled.append(cb))
+    ex = app_module.Explorer(State())
+    assert scheduled, "the first curve is requested"
+    before = ex.state
+    ex.inputs["beta"].text.value = "0.1"
+    assert ex.inputs["beta"].message.visible
+    assert "beta must be > alpha" in ex.inputs["beta"].message.object
+    assert ex.state == before  # the last good state stays
+    ex.inputs["beta"].text.value = "3"
+    assert not ex.inputs["beta"].message.visible and ex.state.beta == 3.0
+    ex.inputs["alpha"].slider.value = 0.0  # log10: alpha = 1
+    assert ex.inputs["alpha"].text.value == "1"
+
+
+def test_shares_of_the_curve_merge_into_the_whole():
+    state = State(points=31)
+    whole = compute.curve(state)
+    merged = compute.merge([compute.curve(state, part=(i, 3)) for i in range(3)])
+    for name in ("x", "y", "trusted", "status", "error", "V"):
+        np.testing.assert_array_equal(merged[name], whole[name])
+    assert merged["closed_forms"] == whole["closed_forms"] == []
+    stiff = State(alpha=0.01, beta=0.02, points=9)
+    merged = compute.merge([compute.curve(stiff, part=(i, 2)) for i in range(2)])
+    np.testing.assert_array_equal(merged["closed_forms"][0]["y"],
+                                  compute.curve(stiff)["closed_forms"][0]["y"])
+
+
+def test_explorer_computes_in_worker_processes_without_a_server(monkeypatch):
+    """The notebook path: no Bokeh server, the computations awaited on an event loop."""
+    import asyncio
+
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page, pool
+
+    scheduled = []
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: scheduled.append(cb))
+
+    async def run() -> page.Explorer:
+        ex = page.Explorer(State(points=24))
+        await ex._refresh()
+        ex._pick(5)
+        await ex._refresh_history()
+        return ex
+
+    try:
+        ex = asyncio.run(run())
+    finally:
+        pool.shutdown()
+    expected = compute.curve(State(points=24))
+    np.testing.assert_array_equal(ex.curve["y"], expected["y"])
+    assert "over 24 points" in ex.readout.object
+    assert ex.history_text.object.startswith("history at vbar = ")
+
+
+def test_a_bad_url_parameter_is_said_next_to_its_input(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    monkeypatch.setattr(State, "from_query", classmethod(
+        lambda cls, q: (State(), {"beta": "beta must be a number or an array of numbers, "
+                                          "got 'x'"})))
+    ex = page.Explorer()
+    assert ex.inputs["beta"].message.visible
+    assert "URL parameter beta" in ex.inputs["beta"].message.object

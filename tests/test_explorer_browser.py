@@ -1,0 +1,191 @@
+"""The explorer in a real browser: the distribution's headless Chromium driven by
+Playwright (no browser download; ``make test`` installs ``chromium`` where missing)."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from pathlib import Path
+
+import pytest
+
+playwright_api = pytest.importorskip("playwright.sync_api")
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+pytestmark = pytest.mark.skipif(
+    CHROMIUM is None, reason="no chromium on PATH (apt-get install chromium; `make test` "
+                             "installs it)")
+TIMEOUT_MS = 60_000
+READOUT = re.compile(r"mean (mu/mu0|COF = mu) = ([0-9.]+)")
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def server():
+    """``vibrofriction explore --port P --no-show`` in a subprocess, until it answers."""
+    port = _free_port()
+    proc = subprocess.Popen([sys.executable, "-m", "vibrofriction.cli", "explore", "--port",
+                             str(port), "--no-show"], start_new_session=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    url = f"http://127.0.0.1:{port}/"
+    deadline = time.monotonic() + 120
+    while True:
+        try:
+            with urllib.request.urlopen(url, timeout=5) as r:
+                if r.status == 200:
+                    break
+        except OSError:
+            pass
+        if proc.poll() is not None or time.monotonic() > deadline:
+            out = proc.stdout.read().decode() if proc.poll() is not None else ""
+            proc.kill()
+            pytest.fail(f"the explorer did not answer at {url}: {out}")
+        time.sleep(0.3)
+    yield url
+    proc.send_signal(signal.SIGINT)
+    try:
+        proc.wait(timeout=15)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+
+
+@pytest.fixture(scope="module")
+def browser():
+    with playwright_api.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, headless=True)
+        yield b
+        b.close()
+
+
+@pytest.fixture
+def page(browser, server):
+    context = browser.new_context(viewport={"width": 1500, "height": 1100})
+    page = context.new_page()
+    page.set_default_timeout(TIMEOUT_MS)
+    yield page
+    context.close()
+
+
+def _open(page, url: str) -> str:
+    page.goto(url)
+    readout = page.get_by_text(READOUT)
+    readout.wait_for()
+    return readout.inner_text()
+
+
+def _changed(page, locator_text: str, before: str) -> str:
+    """Wait until the element holding ``locator_text`` shows something else than ``before``."""
+    loc = page.get_by_text(re.compile(locator_text))
+    deadline = time.monotonic() + TIMEOUT_MS / 1000
+    while time.monotonic() < deadline:
+        text = loc.inner_text()
+        if text != before:
+            return text
+        page.wait_for_timeout(100)
+    raise AssertionError(f"{locator_text!r} still shows {before!r}")
+
+
+def _text_box(page, index: int):
+    return page.locator("input.bk-input[type=text]").nth(index)
+
+
+def test_page_loads_with_curve_history_and_case(page, server):
+    text = _open(page, server)
+    assert "200 of 200 trusted" in text or "trusted" in text
+    page.get_by_text("case general").wait_for()
+    page.get_by_text(re.compile(r"history at vbar = ")).wait_for()  # a point is shown at once
+    assert page.locator("canvas").count() >= 3  # curve, history, map
+
+
+def test_url_holds_the_state(page, server):
+    _open(page, server + "?alpha=0.01&beta=0.02&amplitude=0.8")
+    page.get_by_text("case II").wait_for()
+    assert _text_box(page, 0).input_value() == "0.01"
+    assert _text_box(page, 1).input_value() == "0.02"
+    assert _text_box(page, 2).input_value() == "0.8"
+
+
+def test_slider_redraws_the_curve(page, server):
+    before = _open(page, server)
+    handle = page.locator(".noUi-handle").first  # alpha's slider
+    handle.focus()
+    for _ in range(5):
+        handle.press("ArrowRight")
+    after = _changed(page, READOUT.pattern, before)
+    assert READOUT.search(after).group(2) != READOUT.search(before).group(2)
+    assert _text_box(page, 0).input_value() != "0.5"
+    page.wait_for_function("() => window.location.search.includes('alpha=')")
+
+
+def test_click_on_the_curve_shows_its_history(page, server):
+    _open(page, server)
+    shown = page.get_by_text(re.compile(r"history at vbar = ")).inner_text()
+    box = page.locator("canvas").first.bounding_box()
+    page.mouse.click(box["x"] + 0.8 * box["width"], box["y"] + 0.5 * box["height"])
+    after = _changed(page, r"history at vbar = ", shown)
+    x = float(re.search(r"vbar = ([0-9.e+-]+)", after).group(1))
+    x_before = float(re.search(r"vbar = ([0-9.e+-]+)", shown).group(1))
+    assert x > x_before
+    assert "events" in after
+
+
+def test_invalid_typed_beta_shows_the_message_and_keeps_the_view(page, server):
+    before = _open(page, server)
+    beta = _text_box(page, 1)
+    beta.fill("0.3")
+    beta.press("Enter")
+    page.get_by_text("beta must be > alpha (= 0.5)").wait_for()
+    assert page.get_by_text(READOUT).inner_text() == before
+    beta.fill("2")
+    beta.press("Enter")
+    amplitude = _text_box(page, 2)
+    amplitude.fill("-1")
+    amplitude.press("Enter")
+    page.get_by_text(re.compile("amplitude must be finite and >= 0")).wait_for()
+    assert "Traceback" not in page.content()
+
+
+def _csv(tmp_path: Path, text: str, name: str = "bench.csv") -> Path:
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_dropped_csv_is_overlaid_and_a_bad_one_is_refused(page, server, tmp_path):
+    _open(page, server + "?mode=bench&axis=v0&v_max=0.05")
+    page.get_by_text(re.compile(r"mean COF = mu")).wait_for()
+    bad = _csv(tmp_path, "v0,cof,du_z\n0.01,0.2,1e-6\n", "bad.csv")
+    page.locator("input[type=file][accept='.csv']").set_input_files(str(bad))
+    page.get_by_text(re.compile(r"lacks the column\(s\) \['omega'\]")).wait_for()
+    good = _csv(tmp_path, "# bench\nv0 [mm/s],cof,du_z [um],omega [Hz],sigma\n"
+                "1.0,0.21,0.5,1000,0.005\n5.0,0.25,0.5,1000,0.005\n20.0,0.29,0.5,1000,0.004\n"
+                "2.0,0.15,1.0,1000,0.005\n")
+    page.locator("input[type=file][accept='.csv']").set_input_files(str(good))
+    page.get_by_text(re.compile(r"overlaid 4 measured points in 2 group")).wait_for()
+
+
+def test_exports_download_and_snippet(page, server):
+    _open(page, server + "?alpha=0.01&beta=0.02&points=20")
+    page.get_by_text(re.compile(r"over 20 points")).wait_for()
+    page.get_by_text("Export & share").click()
+    page.get_by_text(re.compile(r"vf\.Dimensionless\(alpha=0\.01, beta=0\.02")).wait_for()
+    with page.expect_download() as info:
+        page.get_by_text("download CSV").click()
+    text = Path(info.value.path()).read_text()
+    rows = [ln for ln in text.splitlines() if not ln.startswith("#")]
+    assert rows[0].startswith("vbar,mu_ratio") and len(rows) == 21
+    with page.expect_download() as info:
+        page.get_by_text("download PNG").click()
+    assert Path(info.value.path()).read_bytes()[:4] == b"\x89PNG"
