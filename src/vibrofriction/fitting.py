@@ -67,6 +67,9 @@ FLAT = 1e-4
 PROFILE_LEVEL = 4.0
 #: Local least-squares starts: the global stage's best point and its next best.
 STARTS = 4
+#: Model evaluations per varied parameter (plus one) that a local least-squares run may
+#: spend (measured: converging starts need 20-30; some crawl for thousands).
+LOCAL_BUDGET = 60
 #: A weighted fit with a reduced chi-square above this runs a second global stage (with
 #: another seed) and, if still above, says it may sit in a local minimum.
 POOR_FIT = 2.0
@@ -425,8 +428,12 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
         return problem.residual(np.array([p[n].value for n in problem.free]))
 
     loose = {"ftol": 1e-6, "xtol": 1e-6} if hold is not None else {}  # chi^2 to ~1e-4
+    nvary = len(problem.free) - (hold is not None)
+    # a start that crawls along a kinked valley for thousands of evaluations does not win:
+    # the budget is LOCAL_BUDGET evaluations per varied parameter
     return lmfit.minimize(residual, params, method="leastsq",
-                          scale_covar=not problem.weighted, epsfcn=1e-8, **loose)
+                          scale_covar=not problem.weighted, epsfcn=1e-8,
+                          max_nfev=LOCAL_BUDGET * (nvary + 1), **loose)
 
 
 def _polish(task) -> tuple[float, NDArray, int]:
