@@ -23,6 +23,7 @@ touching (double) zero is decided by the derivatives at the segment start
 import numpy as np
 
 from .basis import (
+    EXP,
     basis_values,
     bound_at,
     bound_parts,
@@ -136,8 +137,11 @@ def first_root(c, m, t0, T):
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
     f1, f2, fe = fast_mask(m)
-    f1 = f1 and c[4] != 0.0
-    f2 = f2 and c[5] != 0.0
+    if m[0] == EXP:  # two exponentials, each bounded by itself
+        f1 = f1 and c[4] != 0.0
+        f2 = f2 and c[5] != 0.0
+    else:  # h1 and h2 share one envelope (bound_parts): both fast or both slow
+        f1 = f2 = f1 and (c[4] != 0.0 or c[5] != 0.0)
     fe = fe and ce
     split = f1 or f2 or fe
     pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
