@@ -119,6 +119,34 @@ def test_profile_interval_is_where_chi_square_rises_by_four():
     assert res.params["mu0"].stderr == pytest.approx((hi - lo) / 4)
 
 
+@pytest.mark.slow
+def test_two_parameter_profile_ends_where_the_minimum_over_the_other_rises_by_four():
+    """Two free parameters (``mu0``, ``k_xc``): at each end of the ``k_xc`` interval the
+    chi-square minimised over ``mu0`` alone (bounded scalar search, independent of the
+    fit's refits) has risen by ``4 s^2`` from the best fit, to the bisection's 3 %."""
+    from scipy.optimize import minimize_scalar
+
+    data = synthetic(TRUE, (0.3e-6, 0.9e-6), np.random.default_rng(8), n=12)
+    res = vf.fit(data, TRUE.with_(mu0=0.35, k_xc=2e7), free=["mu0", "k_xc"], progress=False,
+                 global_stage=False)
+    cols = (data.v0.to_numpy(), data.du_z.to_numpy(), data.omega.to_numpy())
+
+    def profile(k_xc):
+        def chi2(mu0):
+            r = (predict_cof(TRUE.with_(mu0=mu0, k_xc=k_xc), *cols) - data.cof) / data.sigma
+            return float(np.sum(r * r))
+        mu0 = res.params["mu0"].value
+        return minimize_scalar(chi2, bounds=(0.8 * mu0, 1.2 * mu0), method="bounded",
+                               options={"xatol": 1e-7}).fun
+
+    best, (lo, hi) = res.params["k_xc"].value, res.intervals["k_xc"]
+    level = 4.0 * max(res.redchi, 1.0)
+    for end in (lo, hi):
+        d = math.log(end / best)
+        inside, outside = (profile(best * math.exp(f * d)) - res.chisqr for f in (0.97, 1.03))
+        assert inside < level < outside, (end, inside, outside, level)
+
+
 def test_intervals_widen_with_a_poor_fit():
     """With understated ``sigma`` (the noise 4x the stated one) the reduced chi-square is
     ~16, and the intervals widen by its square root (s^2 = reduced chi-square)."""

@@ -13,10 +13,13 @@ experimenter's knowns can be imposed as constraints:
 
 The objective has kinks where the stick-slip pattern changes, so a local least-squares
 fit from a poor start can stop in the wrong valley: a global stage (differential
-evolution over ``ln`` of the free parameters, within a factor ``span`` of the guess)
-comes first, then Levenberg-Marquardt with lmfit from its best point and from the next
-best distinct members of its population (the lowest chi-square wins).  Parameters are
-fitted as logarithms (all are positive and span decades).
+evolution over ``ln`` of the free parameters, within a factor ``span`` of the guess,
+on every other row of the table: half the cost per generation) comes first, then
+Levenberg-Marquardt with lmfit on every row from its best point and from the next best
+distinct members of its population (the lowest chi-square wins).  A weighted fit still
+poor after the first starts (reduced chi-square above 2) runs a second global stage
+with another seed.  Parameters are fitted as logarithms (all are positive and span
+decades).
 
 Uncertainties are profile-likelihood intervals, not the curvature at the minimum: the
 kinks make the chi-square surface far from a parabola on the scale of the errors (the
@@ -28,7 +31,9 @@ the 95.4 % interval ``res.intervals[name]``, asymmetric in general; ``stderr`` i
 quarter of its width, so that ``value +- 2 stderr`` spans it.  Correlations come from
 the covariance of the least-squares stage.  Another local minimum (from the other
 starts) within the level widens the interval to reach it, and a profile that finds a
-lower chi-square than the fit restarts the fit from there.
+lower chi-square than the fit restarts the fit from there (and the profiles, if the
+drop exceeds ``s^2/2``; a smaller one keeps the intervals, which then hold the true
+ones: the new level set lies inside the old).
 """
 
 from __future__ import annotations
@@ -42,6 +47,7 @@ import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -70,6 +76,18 @@ STARTS = 4
 #: Model evaluations per varied parameter (plus one) that a local least-squares run may
 #: spend (measured: converging starts need 20-30; some crawl for thousands).
 LOCAL_BUDGET = 60
+#: The global stage compares the model with every other row of a table this long or
+#: longer: an evaluation costs half, so it runs twice the generations for the same
+#: time, and more generations find the narrow valleys more often (measured on the
+#: 5-parameter data sets of benchmarks/bench_fit.py, 4 noise seeds x 2 seeds of the
+#: global stage: 30 generations on every row ended in a wrong valley in 7 runs of 7,
+#: 60 generations on every other row in 1 of 8).
+COARSE_ROWS = 20
+#: A profile that meets a chi-square lower than the fit's by more than this (in units of
+#: ``s^2``) makes the fit start again from there and the profiles be run again; a
+#: smaller drop keeps the intervals found, which hold the new level set (it lies within
+#: the old one), re-centred on the new best fit.
+RESTART_PROFILES = 0.5
 #: A weighted fit with a reduced chi-square above this runs a second global stage (with
 #: another seed) and, if still above, says it may sit in a local minimum.
 POOR_FIT = 2.0
@@ -138,6 +156,13 @@ class _Problem:
         r = self.residual(ln)
         return float(r @ r)
 
+    def coarse(self) -> _Problem:
+        """The same problem on every other row of a table of at least
+        :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square)."""
+        if len(self.data) < COARSE_ROWS:
+            return self
+        return dataclasses.replace(self, data=self.data.iloc[::2].reset_index(drop=True))
+
     @property
     def weighted(self) -> bool:
         """Residuals divided by the measured ``sigma`` (given on every row)."""
@@ -184,6 +209,10 @@ class FitResult:
                  f"{self.nfev} model evaluations, {self.seconds:.1f} s",
                  "constraints: " + (", ".join(k for k, v in self.constraints.items() if v)
                                     or "none")]
+        if self.extra.get("stages"):
+            lines.append("time: " + ", ".join(
+                f"{r['stage']} {r['seconds']:.1f} s ({r['evaluations']} evaluations)"
+                for r in self.extra["stages"]))
         for name in self.params:
             p = self.params[name]
             err = f"+- {p.stderr:.3g} ({100 * p.stderr / abs(p.value):.2g} %)" \
@@ -299,7 +328,7 @@ def _bounds(problem: _Problem, span: float) -> list[tuple[float, float]]:
 def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tuple[str, ...] = (
         "mu0", "mass", "k_x", "k_xc", "u_z0"), *, natural_frequency: bool = True,
         normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
-        global_stage: bool = True, maxiter: int = 30, popsize: int = 12, seed: int = 0,
+        global_stage: bool = True, maxiter: int = 60, popsize: int = 12, seed: int = 0,
         workers: int = 1, progress: bool = True,
         settings: SolverSettings | None = None) -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
@@ -307,55 +336,29 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     ``data``: a table of :func:`~vibrofriction.measurements.read_measurements` (or its
     path).  ``span``: each free parameter is searched within a factor ``span`` of the
     guess (``mu0`` as well).  ``maxiter``, ``popsize``, ``seed``: the global stage
-    (:func:`scipy.optimize.differential_evolution`).  ``workers``: processes for the
-    global stage, the local starts and the profiles (``-1``: every core).
+    (:func:`scipy.optimize.differential_evolution`, on every other row of a table of
+    20 rows or more).  ``workers``: processes for the global stage, the local starts
+    and the profiles (``-1``: every core).  ``res.extra["stages"]`` says where the time
+    went.
     """
     t0 = time.perf_counter()
     data = read_measurements(data)
-    free = tuple(free)
-    unknown = [n for n in free if n not in FITTABLE]
-    if unknown or not free:
-        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)}, "
-                         f"got {list(free)}")
-    if len(set(free)) != len(free):
-        raise ValueError(f"free names a parameter twice: {list(free)}")
-    tied: dict[str, tuple[str, float]] = {}  # reported too, following a free one
-    if natural_frequency and "mass" in free and "k_x" in free:
-        free = tuple(n for n in free if n != "k_x")  # k_x follows the mass
-        tied["k_x"] = ("mass", 1.0)
-    if normal_load and "k_zc" in free and "u_z0" in free:
-        free = tuple(n for n in free if n != "u_z0")  # u_z0 follows k_zc
-        tied["u_z0"] = ("k_zc", -1.0)
-    if len(free) > len(data):
-        raise ValueError(f"{len(free)} free parameters but only {len(data)} data points")
+    free, tied = _free_and_tied(tuple(free), natural_frequency, normal_load, len(data))
     problem = _Problem(guess, free, natural_frequency, normal_load, quality_factor, data,
                        settings)
     bounds = _bounds(problem, span)
     x0 = np.array([math.log(getattr(guess, n)) for n in free])
     workers = workers if workers >= 1 else os.cpu_count() or 1
+    stages = _Stages()
     with _mapper(workers) as map_:
-        nfev, out, minima = 0, None, []
-        for attempt in range(2 if global_stage else 1):
-            starts = [x0]
-            if global_stage:
-                de = _global_stage(problem, bounds, x0, maxiter, popsize, seed + attempt,
-                                   map_ if workers != 1 else 1, progress)
-                nfev += int(de.nfev)
-                starts = _distinct_starts(de, x0, STARTS)
-            found, more, n = _local_fit(problem, starts, bounds, map_)
-            nfev += n
-            minima = sorted(minima + more, key=lambda r: r[0])
-            if out is None or found.chisqr < out.chisqr:
-                out = found
-            if not _poor(problem, out):
-                break  # else a second global stage with another seed, the better kept
-        dists, lower, n = _profiles(problem, out, minima, bounds, map_, progress)
-        nfev += n
-        if lower is not None:  # the profile found a deeper valley: fit again from there
-            out, more, n = _local_fit(problem, [lower], bounds, map_)
-            minima = sorted(minima + more, key=lambda r: r[0])
-            dists, lower, n2 = _profiles(problem, out, minima, bounds, map_, progress)
-            nfev += n + n2
+        if global_stage:
+            out, minima = _search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
+                                  stages, maxiter, popsize, seed, progress, workers)
+        else:
+            with stages.timed("local") as row:
+                out, minima, row["evaluations"] = _local_fit(problem, [x0], bounds, map_)
+        out, minima, dists, lower = _uncertainties(problem, out, minima, bounds, map_,
+                                                   stages, progress)
     ln = _ln(out, free)
     system = problem.system(ln)
     result_params, intervals = _physical_params(out, free, system, tied, dists)
@@ -365,9 +368,117 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
                      constraints={"natural_frequency": natural_frequency,
                                   "normal_load": normal_load, "quality_factor": quality_factor},
                      warnings=warnings, chisqr=float(out.chisqr), redchi=float(out.redchi),
-                     nfev=nfev, seconds=time.perf_counter() - t0, weighted=problem.weighted,
-                     guess=guess, intervals=intervals,
-                     extra={"local_minima": [float(m[0]) for m in minima]})
+                     nfev=stages.nfev, seconds=time.perf_counter() - t0,
+                     weighted=problem.weighted, guess=guess, intervals=intervals,
+                     extra={"local_minima": [float(m[0]) for m in minima],
+                            "stages": stages.rows})
+
+
+def _free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
+                   points: int) -> tuple[tuple[str, ...], dict[str, tuple[str, float]]]:
+    """The varied parameters, and those that follow one of them by a constraint (``name:
+    (source, +-1)``, ``ln name = +-ln source + const``); ``free`` validated."""
+    unknown = [n for n in free if n not in FITTABLE]
+    if unknown or not free:
+        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)}, "
+                         f"got {list(free)}")
+    if len(set(free)) != len(free):
+        raise ValueError(f"free names a parameter twice: {list(free)}")
+    tied: dict[str, tuple[str, float]] = {}
+    if natural_frequency and "mass" in free and "k_x" in free:
+        free = tuple(n for n in free if n != "k_x")  # k_x follows the mass
+        tied["k_x"] = ("mass", 1.0)
+    if normal_load and "k_zc" in free and "u_z0" in free:
+        free = tuple(n for n in free if n != "u_z0")  # u_z0 follows k_zc
+        tied["u_z0"] = ("k_zc", -1.0)
+    if len(free) > points:
+        raise ValueError(f"{len(free)} free parameters but only {points} data points")
+    return free, tied
+
+
+@dataclass
+class _Stages:
+    """Where the fit spent its time: a row per stage (name, seconds, model evaluations)."""
+
+    rows: list[dict[str, Any]] = field(default_factory=list)
+
+    @contextmanager
+    def timed(self, name: str) -> Iterator[dict[str, Any]]:
+        row = {"stage": name, "seconds": 0.0, "evaluations": 0}
+        self.rows.append(row)
+        t = time.perf_counter()
+        yield row
+        row["seconds"] = time.perf_counter() - t
+
+    @property
+    def nfev(self) -> int:
+        return sum(r["evaluations"] for r in self.rows)
+
+
+def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _Stages,
+            maxiter: int, popsize: int, seed: int, progress: bool, first: int):
+    """The global stage, then least squares from its best distinct points, ``first`` of
+    them before the others.  A first global stage that ends poor (reduced chi-square
+    above :data:`POOR_FIT`), or whose first starts do, is followed by a second one
+    (another seed) before its remaining starts are tried: a wrong valley is left
+    rather than explored.  The best fit and the local minima reached (chi-square,
+    point)."""
+    out, minima, deferred = None, [], []
+
+    def polish(batch):
+        nonlocal out, minima
+        with stages.timed("local") as row:
+            found, more, row["evaluations"] = _local_fit(problem, batch, bounds, map_)
+        minima = sorted(minima + more, key=lambda r: r[0])
+        if out is None or found.chisqr < out.chisqr:
+            out = found
+
+    coarse = problem.coarse()
+    for attempt in range(2):
+        last = attempt == 1
+        with stages.timed("global") as row:
+            de = _global_stage(coarse, bounds, x0, maxiter, popsize, seed + attempt,
+                               de_workers, progress)
+            row["evaluations"] = int(de.nfev)
+        starts = _distinct_starts(de, x0, STARTS)
+        if not last and _poor(coarse, float(de.fun)):
+            deferred = starts
+            continue
+        polish(starts[:first])
+        if not last and _poor(problem, out.chisqr):
+            deferred = starts[first:]
+            continue
+        if starts[first:]:
+            polish(starts[first:])
+        if not _poor(problem, out.chisqr):
+            return out, minima
+    if deferred:
+        polish(deferred)
+    return out, minima
+
+
+def _uncertainties(problem: _Problem, out, minima, bounds, map_, stages: _Stages,
+                   progress: bool):
+    """The profile intervals about ``out`` (module docstring); a lower chi-square met on
+    the way is fitted from.  The fit, the minima, the distances of the interval ends and
+    the lower point if the profiles met one again."""
+    free = problem.free
+    with stages.timed("profiles") as row:
+        dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
+                                                     progress)
+    if lower is None:
+        return out, minima, dists, None
+    old, old_best = out, _ln(out, free)
+    with stages.timed("local") as row:
+        out, more, row["evaluations"] = _local_fit(problem, [lower[1]], bounds, map_)
+    minima = sorted(minima + more, key=lambda r: r[0])
+    if old.chisqr - out.chisqr <= RESTART_PROFILES * _s2(problem, out):
+        # the old level set holds the new one: its intervals, re-centred
+        return out, minima, _recentre(dists, free, old_best, _ln(out, free)), None
+    with stages.timed("profiles") as row:
+        dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
+                                                     progress)
+    return out, minima, dists, lower
 
 
 def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
@@ -386,9 +497,11 @@ def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize:
             callback=lambda *a, **k: _tick(bar))
 
 
-def _poor(problem: _Problem, out) -> bool:
-    """A weighted fit whose reduced chi-square exceeds :data:`POOR_FIT`."""
-    return problem.weighted and float(out.redchi) > POOR_FIT
+def _poor(problem: _Problem, chisqr: float) -> bool:
+    """A weighted fit whose reduced chi-square (``chisqr`` over the degrees of freedom)
+    exceeds :data:`POOR_FIT`."""
+    dof = max(len(problem.data) - len(problem.free), 1)
+    return problem.weighted and chisqr / dof > POOR_FIT
 
 
 @contextmanager
@@ -398,7 +511,8 @@ def _mapper(workers: int) -> Iterator[Callable]:
         yield map
         return
     with multiprocessing.Pool(workers) as pool:
-        yield pool.map
+        # one task at a time: model evaluations vary in cost by 10x (stiff contacts)
+        yield partial(pool.map, chunksize=1)
 
 
 def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
@@ -436,38 +550,53 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
                           max_nfev=LOCAL_BUDGET * (nvary + 1), **loose)
 
 
-def _polish(task) -> tuple[float, NDArray, int]:
+@dataclass
+class _Fit:
+    """What the fit keeps of an lmfit run (picklable, so that a worker can send it)."""
+
+    params: lmfit.Parameters
+    chisqr: float
+    redchi: float
+    covar: NDArray | None
+    nfev: int
+
+    @classmethod
+    def of(cls, out) -> _Fit:
+        covar = getattr(out, "covar", None)
+        return cls(out.params, float(out.chisqr), float(out.redchi),
+                   None if covar is None else np.array(covar), int(out.nfev))
+
+
+def _polish(task) -> _Fit:
     problem, x0, bounds = task
-    out = _least_squares(problem, x0, bounds)
-    return float(out.chisqr), _ln(out, problem.free), int(out.nfev)
+    return _Fit.of(_least_squares(problem, x0, bounds))
 
 
 def _local_fit(problem: _Problem, starts: list[NDArray], bounds, map_):
-    """Least squares from every start (in parallel); the lowest chi-square, refitted here
-    for its covariance.  Also the chi-squares reached from each start, and the count of
-    model evaluations."""
+    """Least squares from every start (in parallel): the lowest chi-square, the
+    chi-squares and points reached from each start, and the count of model evaluations."""
     found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
-    best = min(found, key=lambda r: r[0])
-    out = _least_squares(problem, best[1], bounds)
-    minima = sorted(((r[0], r[1]) for r in found), key=lambda r: r[0])
-    return out, minima, sum(r[2] for r in found) + int(out.nfev)
+    minima = sorted(((r.chisqr, _ln(r, problem.free)) for r in found), key=lambda r: r[0])
+    return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
 
 
 def _profiles(problem: _Problem, out, minima, bounds, map_, progress: bool):
     """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
     parameter from the best fit (module docstring), in parallel over parameters and
-    sides, widened to reach the other local ``minima`` within the level; and a point of
-    lower chi-square if a profile met one."""
+    sides, widened to reach the other local ``minima`` within the level; and the point
+    of lowest chi-square a profile met, if lower than the fit's."""
     from tqdm.auto import tqdm
 
     best = _ln(out, problem.free)
     chi = float(out.chisqr)
-    s2 = max(float(out.redchi), 1.0) if problem.weighted else float(out.redchi)
+    level = PROFILE_LEVEL * _s2(problem, out)
+    covar = out.covar
     tasks = []
     for j, n in enumerate(problem.free):
         se = out.params[n].stderr
         step = 2.2 * se if se is not None and np.isfinite(se) and se > 0 else 0.05
-        tasks += [(problem, best, bounds, j, side, step, PROFILE_LEVEL * s2, chi)
+        slope = _conditional_slope(covar, j, len(best))
+        tasks += [(problem, best, bounds, j, side, step, slope, level, chi)
                   for side in (-1.0, 1.0)]
     with tqdm(total=len(tasks), desc="fit: profile intervals", disable=not progress) as bar:
         found = []
@@ -476,41 +605,79 @@ def _profiles(problem: _Problem, out, minima, bounds, map_, progress: bool):
             bar.update(1)
     dists = {n: (found[2 * j][0], found[2 * j + 1][0]) for j, n in enumerate(problem.free)}
     for chi_k, x in minima:  # another valley within the level widens the interval to it
-        if chi_k - chi <= PROFILE_LEVEL * s2:
-            for j, n in enumerate(problem.free):
-                below, above = dists[n]
-                dists[n] = (max(below, best[j] - x[j]), max(above, x[j] - best[j]))
-    lower = min((r for r in found if r[1] is not None), key=lambda r: r[1][0], default=None)
-    return dists, None if lower is None else lower[1][1], sum(r[2] for r in found)
+        if chi_k - chi <= level:
+            dists = _reach(dists, problem.free, best, x)
+    lower = min((r[1] for r in found if r[1] is not None), key=lambda r: r[0], default=None)
+    return dists, lower, sum(r[2] for r in found)
+
+
+def _recentre(dists, free: tuple[str, ...], old: NDArray, new: NDArray):
+    """Distances from ``old`` as distances from ``new``: the same intervals."""
+    return {n: (max(dists[n][0] + new[j] - old[j], 0.0), max(dists[n][1] + old[j] - new[j], 0.0))
+            for j, n in enumerate(free)}
+
+
+def _s2(problem: _Problem, out) -> float:
+    """The scale ``s^2`` of the profile level: the reduced chi-square, at least 1 when
+    the residuals are weighted by the measured ``sigma``."""
+    return max(float(out.redchi), 1.0) if problem.weighted else float(out.redchi)
+
+
+def _reach(dists, free: tuple[str, ...], best: NDArray, x: NDArray):
+    """The distances ``dists`` from ``best`` widened so that each interval holds ``x``."""
+    out = {}
+    for j, n in enumerate(free):
+        below, above = dists[n]
+        out[n] = (max(below, best[j] - x[j]), max(above, x[j] - best[j]))
+    return out
+
+
+def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
+    """How the others move with parameter ``j`` along the valley, to first order: column
+    ``j`` of the covariance over its diagonal entry (zeros without a covariance).  Only a
+    starting point for the profile's refits."""
+    if covar is None or np.shape(covar) != (size, size) or not covar[j, j] > 0:
+        return np.zeros(size)
+    slope = np.asarray(covar[:, j], dtype=float) / covar[j, j]
+    return np.where(np.isfinite(slope), slope, 0.0)
 
 
 def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
     """How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
     chi-square (the others refitted) has risen by ``target``: doubling steps to a
-    bracket, then Brent's method; ``inf`` if it never does within the search range."""
+    bracket, then Brent's method; ``inf`` if it never does within the search range.
+    Each refit starts from the previous one moved along ``slope`` (the valley's
+    direction at the best fit); a distance already refitted is not refitted again."""
     from scipy.optimize import brentq
 
-    problem, best, bounds, j, side, step, target, chi_best = task
+    problem, best, bounds, j, side, step, slope, target, chi_best = task
     limit = bounds[j][1] - best[j] if side > 0 else best[j] - bounds[j][0]
-    state = {"x": best.copy(), "nfev": 0, "lower": None}
+    state = {"x": best.copy(), "d": 0.0, "nfev": 0, "lower": None}
+    rises = {0.0: 0.0}
 
-    def excess(d: float) -> float:
-        x = state["x"].copy()
+    def rise(d: float) -> float:
+        if d in rises:
+            return rises[d]
+        x = state["x"] + side * (d - state["d"]) * slope
         x[j] = best[j] + side * d
+        lo, hi = np.array(bounds).T
+        x = np.clip(x, lo, hi)
         if len(best) == 1:
             chi, state["nfev"] = problem.cost(x), state["nfev"] + 1
         else:
             out = _least_squares(problem, x, bounds, hold=j)
             x, chi = _ln(out, problem.free), float(out.chisqr)
-            state["x"], state["nfev"] = x, state["nfev"] + int(out.nfev)
+            state["nfev"] += int(out.nfev)
+        state["x"], state["d"] = x, d
         if chi < chi_best - 1e-6 * max(chi_best, 1.0) and (
                 state["lower"] is None or chi < state["lower"][0]):
             state["lower"] = (chi, x)
-        return chi - chi_best - target
+        rises[d] = chi - chi_best
+        return rises[d]
 
     def root(d: float) -> float:  # nearly linear in d where the profile is a parabola
-        rise = excess(d) + target
-        return math.copysign(math.sqrt(abs(rise)), rise) - math.sqrt(target)
+        r = rise(d)
+        return math.copysign(math.sqrt(abs(r)), r) - math.sqrt(target)
 
     inner, d = 0.0, min(step, limit)
     while root(d) <= 0.0:
@@ -589,10 +756,8 @@ def _identifiability(out, problem: _Problem, ln: NDArray, bounds, params) -> lis
     for n in free:
         if params[n].stderr is None:
             warnings.append(f"{n}: no uncertainty could be estimated (singular covariance)")
-    sigma = problem.data["sigma"].to_numpy()
-    dof = len(problem.data) - len(free)
-    if np.all(np.isfinite(sigma)) and dof > 0 and out.chisqr / dof > POOR_FIT:
-        warnings.append(f"reduced chi-square {out.chisqr / dof:.3g} with the stated sigma: the "
+    if _poor(problem, out.chisqr):
+        warnings.append(f"reduced chi-square {out.redchi:.3g} with the stated sigma: the "
                         "fit may sit in a local minimum (widen the global stage: maxiter, "
                         "popsize) or the model does not describe these data; the intervals "
                         "are widened by its square root")
