@@ -46,7 +46,9 @@ def fit_command(
         help="keep k_x/m (the measured natural frequency)")] = True,
     normal_load: Annotated[bool, typer.Option(help="keep k_zc u_z0 = F_N0")] = True,
     quality_factor: Annotated[bool, typer.Option(help="keep the pin's damping ratio")] = True,
-    workers: Annotated[int, typer.Option(help="processes of the global stage")] = 1,
+    workers: Annotated[int, typer.Option(
+        help="processes for the global stage, the local starts and the profiles "
+             "(-1: every core)")] = -1,
     out: Annotated[str, typer.Option(help="folder for report.txt, fit.png, fit.json")] = "fit",
     progress: Annotated[bool, typer.Option(help="progress bars on stderr")] = True,
 ) -> None:
