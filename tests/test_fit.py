@@ -64,11 +64,12 @@ def test_reported_uncertainties_cover_the_truth_in_about_95_percent():
             total += 1
             within_2se += abs(p.value - t) <= 2 * p.stderr
             within_interval += lo <= t <= hi
-    # measured: 55 of 60 within 2 standard errors, 58 of 60 within the intervals (the
-    # Jacobian's errors, before the profiles: 52 of 60; 95.4 % expected); 14 min on 2 cores
+    # measured: 57 of 60 within the intervals (95.4 % expected), and so within 2 standard
+    # errors (value +- 2 stderr holds the interval); the Jacobian's errors, before the
+    # profiles: 52 of 60.  10 min on 2 cores
     print(f"within 2 stderr {within_2se}/{total}, within the intervals {within_interval}/{total}")
-    assert within_2se / total >= 0.9, (within_2se, total)
     assert within_interval / total >= 0.9, (within_interval, total)
+    assert within_2se >= within_interval
 
 
 def test_a_single_curve_of_a_stiff_system_cannot_tell_mass_from_k_x():
@@ -116,7 +117,7 @@ def test_profile_interval_is_where_chi_square_rises_by_four():
         k = int(np.argmax(rise > level))
         crossing = np.interp(level, rise[k - 1:k + 1], grid[k - 1:k + 1])
         assert end == pytest.approx(crossing, abs=0.03 * abs(crossing - best))
-    assert res.params["mu0"].stderr == pytest.approx((hi - lo) / 4)
+    assert res.params["mu0"].stderr == pytest.approx(max(best - lo, hi - best) / 2)
 
 
 @pytest.mark.slow
@@ -156,8 +157,10 @@ def test_intervals_widen_with_a_poor_fit():
     fair = vf.fit(data, TRUE, free=["mu0"], progress=False, global_stage=False)
     poor = vf.fit(noisy, TRUE, free=["mu0"], progress=False, global_stage=False)
     assert poor.redchi > 4.0
-    ratio = poor.params["mu0"].stderr / fair.params["mu0"].stderr
+    (lo, hi), (plo, phi) = fair.intervals["mu0"], poor.intervals["mu0"]
+    ratio = (phi - plo) / (hi - lo)
     assert ratio == pytest.approx(math.sqrt(poor.redchi / max(fair.redchi, 1.0)), rel=0.05)
+    assert poor.params["mu0"].stderr > 2 * fair.params["mu0"].stderr
 
 
 @pytest.mark.parametrize("kwargs, message", [

@@ -27,8 +27,9 @@ Jacobian's errors covered the truth within two standard errors in only 87 % of s
 synthetic fits).  For each free parameter and each side, the parameter is held and the
 others refitted until the chi-square has risen by ``4 s^2`` (``s^2`` the reduced
 chi-square, at least 1 when ``sigma`` is given, so that a poor fit widens its intervals):
-the 95.4 % interval ``res.intervals[name]``, asymmetric in general; ``stderr`` is a
-quarter of its width, so that ``value +- 2 stderr`` spans it.  Correlations come from
+the 95.4 % interval ``res.intervals[name]``, asymmetric in general; ``stderr`` is half
+its longer side, so that ``value +- 2 stderr`` holds the whole interval (a symmetric
+summary that claims no more than the interval).  Correlations come from
 the covariance of the least-squares stage.  Another local minimum (from the other
 starts) within the level widens the interval to reach it, and a profile that finds a
 lower chi-square than the fit restarts the fit from there (and the profiles, if the
@@ -176,7 +177,7 @@ class FitResult:
     ``params``: lmfit ``Parameters`` of the free fields (``.value``, ``.stderr``,
     ``.correl``; a field tied to a free one by a constraint, e.g. ``k_x`` to ``mass``, is
     listed with the same relative error); ``intervals``: the 95.4 % profile-likelihood
-    interval of each (``stderr`` is a quarter of its width; module docstring);
+    interval of each (``stderr`` is half its longer side; module docstring);
     ``system``: the best-fit :class:`Physical`;
     ``warnings``: one sentence per parameter the data do not identify; ``chisqr``,
     ``redchi``, ``nfev`` (model evaluations, global stage included) and ``seconds``.
@@ -692,7 +693,7 @@ def _physical_params(out, free: tuple[str, ...], system: Physical,
                      tied: dict[str, tuple[str, float]],
                      dists: dict[str, tuple[float, float]]):
     """The fitted parameters in physical units with their 95.4 % profile intervals and
-    ``stderr`` a quarter of the interval's width; the correlations of the least-squares
+    ``stderr`` half the interval's longer side; the correlations of the least-squares
     covariance.  A parameter tied to a free one by a constraint, ``ln x = +-ln y +
     const``, gets the mapped interval of its source."""
     params, intervals = lmfit.Parameters(), {}
@@ -705,7 +706,7 @@ def _physical_params(out, free: tuple[str, ...], system: Physical,
         lo, hi = value * math.exp(-below), value * math.exp(above) if np.isfinite(above) \
             else math.inf
         params.add(n, value=value, vary=False)
-        params[n].stderr = (hi - lo) / 4.0
+        params[n].stderr = max(value - lo, hi - value) / 2.0
         params[n].correl = dict(out.params[n].correl or {}) if n in free else {}
         intervals[n] = (lo, hi)
     return params, intervals
