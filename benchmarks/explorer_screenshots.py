@@ -1,0 +1,115 @@
+"""The explorer's screenshots in docs/img/, taken in the distribution's headless Chromium.
+
+Starts ``vibrofriction explore`` on a free port (as bench_explorer.py does) and saves
+``explorer_default.png`` (the default view), ``explorer_history.png`` (a point's time
+history after a click on the curve), ``explorer_map.png`` (the case map, soft contact),
+``explorer_error.png`` (the inline message for a typed ``beta`` below ``alpha``) and
+``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted).
+
+Run:  python benchmarks/explorer_screenshots.py [default history map error fit]
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import signal
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+from playwright.sync_api import Page, sync_playwright
+
+import vibrofriction as vf
+from bench_explorer import READOUT, free_port, start_server
+from vibrofriction.explorer.state import State
+
+IMG = Path(__file__).resolve().parent.parent / "docs" / "img"
+WIDTH, HEIGHT = 1500, 1000
+HISTORY = re.compile("history at")
+
+
+def measurements(folder: Path) -> Path:
+    """A synthetic bench CSV: two amplitudes, 10 velocities each, noise 0.004."""
+    truth = State(mode="bench", mu0=0.32, k_xc=1.0e7).system()
+    rng = np.random.default_rng(3)
+    rows = ["v0 [mm/s],cof,du_z [um],omega [Hz],sigma"]
+    for du in (0.4, 0.8):
+        v0 = np.geomspace(1e-3, 0.2, 10)
+        cof = vf.friction_coefficient(truth.with_(du_z=du * 1e-6), v0=v0).mu_ratio * truth.mu0
+        rows += [f"{v * 1e3:.5g},{c:.4f},{du},1000,0.004"
+                 for v, c in zip(v0, cof + rng.normal(0.0, 0.004, v0.size), strict=True)]
+    path = folder / "bench_measurements.csv"
+    path.write_text("\n".join(rows) + "\n")
+    return path
+
+
+def opened(browser, url: str) -> Page:
+    """A page at ``url`` once its curve and its first history are drawn."""
+    page = browser.new_page(viewport={"width": WIDTH, "height": HEIGHT})
+    page.set_default_timeout(180_000)
+    page.goto(url)
+    page.get_by_text(READOUT).wait_for()
+    page.get_by_text(HISTORY).wait_for()
+    time.sleep(1.0)  # let the canvases settle
+    return page
+
+
+def shoot(page: Page, name: str, height: int | None = None) -> None:
+    path = IMG / f"explorer_{name}.png"
+    if height is None:
+        page.screenshot(path=path, full_page=True)
+    else:
+        page.screenshot(path=path, clip={"x": 0, "y": 0, "width": WIDTH, "height": height})
+    page.close()
+    print(path)
+
+
+def main(which: list[str]) -> None:
+    IMG.mkdir(exist_ok=True)
+    port = free_port()
+    server = start_server(port)
+    url = f"http://127.0.0.1:{port}/"
+    try:
+        with sync_playwright() as p, tempfile.TemporaryDirectory() as tmp:
+            browser = p.chromium.launch(executable_path=shutil.which("chromium"),
+                                        headless=True)
+            if "default" in which:
+                shoot(opened(browser, url), "default")
+            if "history" in which:
+                page = opened(browser, url + "?alpha=0.2&beta=5.3&amplitude=1.5&v_max=1.2")
+                shown = page.get_by_text(HISTORY).inner_text()
+                box = page.locator("canvas").first.bounding_box()
+                page.mouse.click(box["x"] + 0.45 * box["width"], box["y"] + 0.5 * box["height"])
+                while page.get_by_text(HISTORY).inner_text() == shown:
+                    time.sleep(0.1)
+                time.sleep(1.0)
+                shoot(page, "history", 760)
+            if "map" in which:
+                shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
+            if "error" in which:
+                page = opened(browser, url)
+                beta = page.locator("input.bk-input[type=text]").nth(1)
+                beta.fill("0.3")
+                beta.press("Enter")
+                page.get_by_text("beta must be > alpha").wait_for()
+                time.sleep(0.5)
+                shoot(page, "error", 520)
+            if "fit" in which:
+                page = opened(browser, url + "?mode=bench&axis=v0&v_min=0.001&v_max=0.2&log_x=1")
+                page.locator("input[type=file][accept='.csv']").set_input_files(
+                    str(measurements(Path(tmp))))
+                page.get_by_text(re.compile("overlaid 20 measured")).wait_for()
+                page.get_by_role("button", name="fit").click()
+                page.get_by_text(re.compile(r"fit of \d+ points|fit failed")).wait_for()
+                time.sleep(1.0)
+                shoot(page, "fit")
+    finally:
+        server.send_signal(signal.SIGINT)
+        server.wait(20)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:] or ["default", "history", "map", "error", "fit"])
