@@ -189,3 +189,34 @@ def test_exports_download_and_snippet(page, server):
     with page.expect_download() as info:
         page.get_by_text("download PNG").click()
     assert Path(info.value.path()).read_bytes()[:4] == b"\x89PNG"
+
+
+def test_fit_button_fits_the_overlaid_measurements(page, server, tmp_path):
+    """Measurements made by the model (mu0 = 0.32, k_xc = 1e7 N/m; the page's guess has
+    mu0 = 0.3, k_xc = 1.5e7) plus noise: the fit's report appears on the page, and its
+    95 % intervals hold the true values."""
+    import numpy as np
+
+    import vibrofriction as vf
+    from vibrofriction.explorer.state import State
+
+    truth = State(mode="bench", mu0=0.32, k_xc=1.0e7).system()
+    rng = np.random.default_rng(3)
+    rows = ["v0 [mm/s],cof,du_z [um],omega [Hz],sigma"]
+    for du in (0.4, 0.8):
+        v0 = np.geomspace(1e-3, 0.2, 10)
+        cof = vf.friction_coefficient(truth.with_(du_z=du * 1e-6), v0=v0).mu_ratio * truth.mu0
+        rows += [f"{v * 1e3:.6g},{c:.5f},{du},1000,0.004"
+                 for v, c in zip(v0, cof + rng.normal(0.0, 0.004, v0.size), strict=True)]
+    _open(page, server + "?mode=bench&axis=v0&v_min=0.001&v_max=0.2&log_x=1")
+    page.locator("input[type=file][accept='.csv']").set_input_files(
+        str(_csv(tmp_path, "\n".join(rows) + "\n")))
+    page.get_by_text(re.compile(r"overlaid 20 measured points")).wait_for()
+    page.get_by_role("button", name="fit").click()
+    report = page.get_by_text(re.compile(r"fit of 20 points"))
+    report.wait_for(timeout=300_000)  # the fit runs in its own worker process
+    text = report.inner_text()
+    for name, true in (("mu0", 0.32), ("k_xc", 1.0e7)):
+        lo, hi = map(float, re.search(rf"{name}\s+=.*interval \[([^,]+), ([^\]]+)\]",
+                                      text).groups())
+        assert lo <= true <= hi, (name, lo, hi)
