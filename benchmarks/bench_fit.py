@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 
 import vibrofriction as vf
-from vibrofriction.fitting import predict_cof
+from vibrofriction.fitting import synthetic_measurements
 
 HERE = Path(__file__).resolve().parent
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
@@ -45,13 +45,8 @@ CALLS = {  # the first keeps the measured natural frequency; the second guesses 
 
 
 def data(rng: np.random.Generator) -> pd.DataFrame:
-    rows = []
-    for du in (0.3e-6, 0.6e-6, 0.9e-6):
-        v0 = np.geomspace(1e-3, 0.2, 20)
-        cof = predict_cof(TRUE, v0, np.full(20, du), np.full(20, TRUE.omega))
-        rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, 0.003, 20),
-                                  "du_z": du, "omega": TRUE.omega, "sigma": 0.003}))
-    return pd.concat(rows, ignore_index=True)
+    return synthetic_measurements(TRUE, (0.3e-6, 0.6e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 20),
+                                  0.003, rng)
 
 
 def main() -> None:

@@ -22,9 +22,9 @@ from pathlib import Path
 import numpy as np
 from playwright.sync_api import Page, sync_playwright
 
-import vibrofriction as vf
 from bench_explorer import READOUT, free_port, start_server
 from vibrofriction.explorer.state import State
+from vibrofriction.fitting import synthetic_measurements
 
 IMG = Path(__file__).resolve().parent.parent / "docs" / "img"
 WIDTH, HEIGHT = 1500, 1000
@@ -34,15 +34,10 @@ HISTORY = re.compile("history at")
 def measurements(folder: Path) -> Path:
     """A synthetic bench CSV: two amplitudes, 10 velocities each, noise 0.004."""
     truth = State(mode="bench", mu0=0.32, k_xc=1.0e7).system()
-    rng = np.random.default_rng(3)
-    rows = ["v0 [mm/s],cof,du_z [um],omega [Hz],sigma"]
-    for du in (0.4, 0.8):
-        v0 = np.geomspace(1e-3, 0.2, 10)
-        cof = vf.friction_coefficient(truth.with_(du_z=du * 1e-6), v0=v0).mu_ratio * truth.mu0
-        rows += [f"{v * 1e3:.5g},{c:.4f},{du},1000,0.004"
-                 for v, c in zip(v0, cof + rng.normal(0.0, 0.004, v0.size), strict=True)]
+    table = synthetic_measurements(truth, (0.4e-6, 0.8e-6), np.geomspace(1e-3, 0.2, 10), 0.004,
+                                   np.random.default_rng(3))
     path = folder / "bench_measurements.csv"
-    path.write_text("\n".join(rows) + "\n")
+    table.to_csv(path, index=False)
     return path
 
 

@@ -10,6 +10,7 @@ Run:  python examples/bench_fit.py [output directory]
 
 from __future__ import annotations
 
+import math
 import sys
 from pathlib import Path
 
@@ -18,7 +19,7 @@ import pandas as pd
 
 import vibrofriction as vf
 from vibrofriction.contact import Material, Sphere
-from vibrofriction.fitting import predict_cof
+from vibrofriction.fitting import synthetic_measurements
 
 STEEL = Material(E=210e9, nu=0.3)
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
@@ -28,13 +29,12 @@ AMPLITUDES_UM = (0.2, 0.4, 0.8)
 
 
 def measured(rng: np.random.Generator) -> pd.DataFrame:
-    rows = []
-    for du in AMPLITUDES_UM:
-        v0 = np.geomspace(1e-3, 0.3, 20)
-        cof = predict_cof(TRUE, v0, np.full(20, du * 1e-6), np.full(20, TRUE.omega))
-        rows.append(pd.DataFrame({"v0 [mm/s]": v0 * 1e3, "cof": cof + rng.normal(0, 3e-3, 20),
-                                  "du_z [um]": du, "omega [Hz]": 1000.0, "sigma": 3e-3}))
-    return pd.concat(rows, ignore_index=True)
+    """The table as a bench would write it: velocities in mm/s, amplitudes in um, Hz."""
+    t = synthetic_measurements(TRUE, [du * 1e-6 for du in AMPLITUDES_UM],
+                               np.geomspace(1e-3, 0.3, 20), 3e-3, rng)
+    return pd.DataFrame({"v0 [mm/s]": t.v0 * 1e3, "cof": t.cof,
+                         "du_z [um]": (t.du_z * 1e6).round(6),
+                         "omega [Hz]": (t.omega / (2 * math.pi)).round(6), "sigma": t.sigma})
 
 
 def main(out_dir: str | Path = "example_output") -> dict[str, float]:

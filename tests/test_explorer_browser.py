@@ -197,20 +197,15 @@ def test_fit_button_fits_the_overlaid_measurements(page, server, tmp_path):
     95 % intervals hold the true values."""
     import numpy as np
 
-    import vibrofriction as vf
     from vibrofriction.explorer.state import State
+    from vibrofriction.fitting import synthetic_measurements
 
     truth = State(mode="bench", mu0=0.32, k_xc=1.0e7).system()
-    rng = np.random.default_rng(3)
-    rows = ["v0 [mm/s],cof,du_z [um],omega [Hz],sigma"]
-    for du in (0.4, 0.8):
-        v0 = np.geomspace(1e-3, 0.2, 10)
-        cof = vf.friction_coefficient(truth.with_(du_z=du * 1e-6), v0=v0).mu_ratio * truth.mu0
-        rows += [f"{v * 1e3:.6g},{c:.5f},{du},1000,0.004"
-                 for v, c in zip(v0, cof + rng.normal(0.0, 0.004, v0.size), strict=True)]
+    table = synthetic_measurements(truth, (0.4e-6, 0.8e-6), np.geomspace(1e-3, 0.2, 10), 0.004,
+                                   np.random.default_rng(3))
     _open(page, server + "?mode=bench&axis=v0&v_min=0.001&v_max=0.2&log_x=1")
     page.locator("input[type=file][accept='.csv']").set_input_files(
-        str(_csv(tmp_path, "\n".join(rows) + "\n")))
+        str(_csv(tmp_path, table.to_csv(index=False))))
     page.get_by_text(re.compile(r"overlaid 20 measured points")).wait_for()
     page.get_by_role("button", name="fit").click()
     report = page.get_by_text(re.compile(r"fit of 20 points"))

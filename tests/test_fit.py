@@ -5,11 +5,10 @@ save and load."""
 import math
 
 import numpy as np
-import pandas as pd
 import pytest
 
 import vibrofriction as vf
-from vibrofriction.fitting import FitResult, predict_cof
+from vibrofriction.fitting import FitResult, predict_cof, synthetic_measurements
 
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
@@ -17,13 +16,7 @@ TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_fac
 
 
 def synthetic(true: vf.Physical, amplitudes, rng, sigma=0.003, n=20, v=(1e-3, 0.2)):
-    rows = []
-    for du in amplitudes:
-        v0 = np.geomspace(*v, n)
-        cof = predict_cof(true, v0, np.full(n, du), np.full(n, true.omega))
-        rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
-                                  "du_z": du, "omega": true.omega, "sigma": sigma}))
-    return pd.concat(rows, ignore_index=True)
+    return synthetic_measurements(true, amplitudes, np.geomspace(*v, n), sigma, rng)
 
 
 @pytest.mark.slow

@@ -61,7 +61,7 @@ from .measurements import read_measurements
 from .params import Physical
 from .solver import SolverSettings, solve_points
 
-__all__ = ["FITTABLE", "FitResult", "fit", "predict_cof"]
+__all__ = ["FITTABLE", "FitResult", "fit", "predict_cof", "synthetic_measurements"]
 
 #: The fields of :class:`Physical` that can be fitted.
 FITTABLE = ("mu0", "mass", "k_x", "k_xc", "k_zc", "u_z0", "c_x", "c_xc")
@@ -107,6 +107,23 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
     mu = np.where(np.isfinite(out["mu_ratio"]), out["mu_ratio"],
                   0.5 * (out["window_min"] + out["window_max"]))
     return system.mu0 * mu
+
+
+def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
+                           rng: np.random.Generator) -> pd.DataFrame:
+    """A measurement table made by the model, for a fit whose truth is known: at each
+    amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
+    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma``
+    (drawn per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the
+    format of :func:`~vibrofriction.measurements.read_measurements`."""
+    v0 = np.asarray(v0, dtype=float)
+    n = v0.size
+    rows = []
+    for du in np.atleast_1d(np.asarray(du_z, dtype=float)):
+        cof = predict_cof(system, v0, np.full(n, du), np.full(n, system.omega))
+        rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
+                                  "du_z": du, "omega": system.omega, "sigma": sigma}))
+    return pd.concat(rows, ignore_index=True)
 
 
 @dataclass

@@ -229,9 +229,7 @@ def run_fit(state: State, data, free: tuple[str, ...]) -> dict:
         v0 = np.geomspace(max(g["v0"].min(), 1e-9), max(g["v0"].max(), 2e-9), 80)
         cof = res.predict(v0, np.full(v0.size, du_z), np.full(v0.size, omega))
         point = res.system.with_(du_z=float(du_z), omega=float(omega))
-        x = v0 if state.axis == "v0" else (
-            np.asarray(point.v0_to_inertial(v0)) if state.axis == "V"
-            else np.asarray(point.v0_to_vbar(v0)))
+        x = _to_axis(state, point, np.asarray(point.v0_to_inertial(v0)))
         curves.append({"x": x, "cof": cof})
     return {"report": res.report(), "curves": curves,
             "system": {k: getattr(res.system, k) for k in (
