@@ -471,6 +471,41 @@ def _zeta_label(zeta: float) -> str:
     return f"zeta = {zeta:g} (Q = {1.0 / (2.0 * zeta):g})" if zeta > 0 else "zeta = 0"
 
 
+def _damped_curve_checks(c: Curve, a: float, undamped: Curve | None, tolerance: float
+                         ) -> tuple[list[Check], str]:
+    """The checks of one damped case IV curve and its sentence for the note."""
+    z = c.series.zeta
+    vc, d, m = damped_onset(c)
+    n_hi = int(np.sum(c.v_inertial >= 1.02 * vc))
+    where = f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}"
+    checks = [
+        Check("damped case IV: mu = mu0 above V_c = a/(2 zeta)",
+              f"{where}, V in [{1.02 * vc:.3g}, {c.v_inertial.max():.3g}] ({n_hi} points)",
+              d, f"V_c = {vc:.4g}", "continuous sliding: the friction is mu0 again"),
+        Check("damped case IV: max mu/mu0 below 0.95 V_c (must be < 1)",
+              f"{where}, V in (0, {0.95 * vc:.3g}]", m, f"V_c = {vc:.4g}",
+              "below 1: the critical velocity is sharp" if m < 1.0 else "NOT below 1")]
+    law_v = c.v_inertial[(c.v_inertial >= 0.3 * vc) & (c.v_inertial <= 0.97 * vc)]
+    if law_v.size:
+        sel = np.isin(c.v_inertial, law_v)
+        law = np.asarray(theory.resonant_damped_mu_ratio(law_v, a, z))
+        dev = np.abs(c.mu_ratio[sel] - law)
+        checks.append(Check(
+            "damped case IV: rise law (theory.resonant_damped_mu_ratio)",
+            f"{where}, 0.3 V_c <= V <= 0.97 V_c ({law_v.size} points)", float(np.max(dev)),
+            f"V = {float(law_v[np.argmax(dev)]):.3g}",
+            "the energy balance of eq. (32) with the dashpot; harmonic ansatz"))
+    text = f"{_zeta_label(z)}: V_c = {vc:.4g}"
+    if undamped is not None:
+        _, iu, ic = np.intersect1d(undamped.v_inertial, c.v_inertial, return_indices=True)
+        far = np.abs(c.mu_ratio[ic] - undamped.mu_ratio[iu]) > tolerance
+        if np.any(far):
+            v_off = float(c.v_inertial[ic][far].min())
+            text += (f", departs by more than {tolerance:g} from the undamped curve at "
+                     f"V = {v_off:.3g} ({v_off / vc:.2f} V_c)")
+    return checks, text
+
+
 def damped_case_iv_checks(curves: Mapping[str, Curve], tolerance: float = 0.01
                           ) -> tuple[list[Check], str]:
     """Fig. 11 (case IV with pin damping ``zeta``): for each damped curve ``mu = mu0`` above
@@ -489,40 +524,10 @@ def damped_case_iv_checks(curves: Mapping[str, Curve], tolerance: float = 0.01
     plateau = float(theory.resonant_plateau_exact(a))
     sentences = []
     for c in damped:
-        z = c.series.zeta
-        vc, d, m = damped_onset(c)
-        n_hi = int(np.sum(c.v_inertial >= 1.02 * vc))
-        checks.append(Check(
-            "damped case IV: mu = mu0 above V_c = a/(2 zeta)",
-            f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}, "
-            f"V in [{1.02 * vc:.3g}, {c.v_inertial.max():.3g}] ({n_hi} points)",
-            d, f"V_c = {vc:.4g}", "continuous sliding: the friction is mu0 again"))
-        checks.append(Check(
-            "damped case IV: max mu/mu0 below 0.95 V_c (must be < 1)",
-            f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}, "
-            f"V in (0, {0.95 * vc:.3g}]", m, f"V_c = {vc:.4g}",
-            "below 1: the critical velocity is sharp" if m < 1.0 else "NOT below 1"))
-        law_v = c.v_inertial[(c.v_inertial >= 0.3 * vc) & (c.v_inertial <= 0.97 * vc)]
-        if law_v.size:
-            sel = np.isin(c.v_inertial, law_v)
-            law = np.asarray(theory.resonant_damped_mu_ratio(law_v, a, z))
-            dev = np.abs(c.mu_ratio[sel] - law)
-            checks.append(Check(
-                "damped case IV: rise law (theory.resonant_damped_mu_ratio)",
-                f"fig11: alpha = 1, beta = inf, a = {a:g}, {_zeta_label(z)}, "
-                f"0.3 V_c <= V <= 0.97 V_c ({law_v.size} points)", float(np.max(dev)),
-                f"V = {float(law_v[np.argmax(dev)]):.3g}",
-                "the energy balance of eq. (32) with the dashpot; harmonic ansatz"))
-        text = f"{_zeta_label(z)}: V_c = {vc:.4g}"
-        if undamped:
-            u = undamped[0]
-            _, iu, ic = np.intersect1d(u.v_inertial, c.v_inertial, return_indices=True)
-            far = np.abs(c.mu_ratio[ic] - u.mu_ratio[iu]) > tolerance
-            if np.any(far):
-                v_off = float(c.v_inertial[ic][far].min())
-                text += (f", departs by more than {tolerance:g} from the undamped curve at "
-                         f"V = {v_off:.3g} ({v_off / vc:.2f} V_c)")
-        sentences.append(text)
+        more, sentence = _damped_curve_checks(c, a, undamped[0] if undamped else None,
+                                              tolerance)
+        checks += more
+        sentences.append(sentence)
     for u in undamped:
         i = int(np.argmax(u.v_inertial))
         checks.append(Check(

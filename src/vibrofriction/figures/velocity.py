@@ -104,6 +104,46 @@ def _case_label(alpha: float, beta: float) -> str:
     return "" if case is Case.GENERAL else case.value
 
 
+def _matrix_panel(ax, c: Curve, alpha: float, beta: float, amplitude: float,
+                  vbar_max: float, static: float) -> None:
+    """One panel of the matrix: the curve, its untrusted points, the static value, the
+    case, the named point and, on the resonance lines, the axis ``V`` in orange."""
+    resonant = c.series.meta.get("axis") == "v_inertial"
+    x = c.v_inertial if resonant else c.vbar
+    ax.plot(x, c.trusted_mu, color=style.NUMERIC, lw=0.9)
+    if np.any(~c.trusted):
+        style.mark_untrusted(ax, x, c, style.THEORY)
+    ax.axhline(static, color="0.6", lw=0.5, ls=":")
+    ax.set_ylim(-0.03, 1.08)
+    ax.set_yticks([0, 0.5, 1])
+    ax.tick_params(labelsize=5.5, length=2, pad=1.5)
+    if resonant:
+        for side in ax.spines.values():
+            side.set_color(style.RESONANT)
+            side.set_linewidth(1.0)
+        vmax = float(x[-1])
+        ax.set_xlim(0, vmax)
+        ax.set_xticks([0, vmax / 2, vmax])
+        ax.set_xticklabels([_fmt(0), _fmt(vmax / 2), _fmt(vmax)])
+        ax.text(0.97, 0.05, r"vs $V$", transform=ax.transAxes, ha="right",
+                va="bottom", fontsize=5.5, color=style.RESONANT)
+        if alpha == 1.0:
+            plateau = float(theory.resonant_plateau_exact(amplitude))
+            ax.axhline(plateau, color=style.THEORY, lw=0.6, ls="--")
+    else:
+        ax.set_xlim(0, vbar_max)
+        ax.set_xticks([0, 0.5, 1.0] + ([1.5] if vbar_max >= 1.5 else []))
+        ax.axvline(1.0, color="0.75", lw=0.5)
+    case = _case_label(alpha, beta)
+    if case:
+        ax.text(0.97, 0.17 if resonant else 0.05, case, transform=ax.transAxes,
+                ha="right", va="bottom", fontsize=6, color="0.35")
+    for name, (pa, pb) in MATRIX_POINTS.items():
+        if (pa, pb) == (alpha, beta):
+            ax.text(0.05, 0.93, name, transform=ax.transAxes, ha="left", va="top",
+                    fontsize=8, fontweight="bold", color="#1f5fa8")
+
+
 @style.styled
 def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
                  label: str):
@@ -122,45 +162,11 @@ def _draw_matrix(curves: Mapping[str, Curve], amplitude: float, vbar_max: float,
                             ha="center", va="center", fontsize=6, color="0.4",
                             transform=ax.transAxes)
                 continue
-            c = curves[_key(alpha, beta, amplitude)]
             ax = fig.add_subplot(grid[row, j])
-            resonant = c.series.meta.get("axis") == "v_inertial"
-            x = c.v_inertial if resonant else c.vbar
-            ok = c.trusted
-            ax.plot(x, c.trusted_mu, color=style.NUMERIC, lw=0.9)
-            if np.any(~ok):
-                style.mark_untrusted(ax, x, c, style.THEORY)
-            ax.axhline(static, color="0.6", lw=0.5, ls=":")
-            ax.set_ylim(-0.03, 1.08)
-            ax.set_yticks([0, 0.5, 1])
-            ax.tick_params(labelsize=5.5, length=2, pad=1.5)
-            if resonant:
-                for side in ax.spines.values():
-                    side.set_color(style.RESONANT)
-                    side.set_linewidth(1.0)
-                vmax = float(x[-1])
-                ax.set_xlim(0, vmax)
-                ax.set_xticks([0, vmax / 2, vmax])
-                ax.set_xticklabels([_fmt(0), _fmt(vmax / 2), _fmt(vmax)])
-                ax.text(0.97, 0.05, r"vs $V$", transform=ax.transAxes, ha="right",
-                        va="bottom", fontsize=5.5, color=style.RESONANT)
-                if alpha == 1.0:
-                    plateau = float(theory.resonant_plateau_exact(amplitude))
-                    ax.axhline(plateau, color=style.THEORY, lw=0.6, ls="--")
-            else:
-                ax.set_xlim(0, vbar_max)
-                ax.set_xticks([0, 0.5, 1.0] + ([1.5] if vbar_max >= 1.5 else []))
-                ax.axvline(1.0, color="0.75", lw=0.5)
+            _matrix_panel(ax, curves[_key(alpha, beta, amplitude)], alpha, beta, amplitude,
+                          vbar_max, static)
             if j > 0:
                 ax.set_yticklabels([])
-            case = _case_label(alpha, beta)
-            if case:
-                ax.text(0.97, 0.17 if resonant else 0.05, case, transform=ax.transAxes,
-                        ha="right", va="bottom", fontsize=6, color="0.35")
-            for name, (pa, pb) in MATRIX_POINTS.items():
-                if (pa, pb) == (alpha, beta):
-                    ax.text(0.05, 0.93, name, transform=ax.transAxes, ha="left", va="top",
-                            fontsize=8, fontweight="bold", color="#1f5fa8")
             if i == nb - 1 or (beta == MATRIX_BETAS[-1]):
                 ax.set_title(rf"$\alpha = {alpha:g}$", fontsize=7, pad=2)
             if j == 0:
