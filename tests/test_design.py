@@ -171,6 +171,9 @@ def test_an_amplitude_range_from_zero():
     kwargs = dict(v0=0.01, omega=OMEGA, max_velocity_amplitude=0.01, n_omega=21, n_du_z=6)
     res = vf.design(PIN, du_z=(0.0, 8e-7), **kwargs)
     assert res.map.du_z.values[0] == 0.0 and res.map.du_z.size == 6
+    at_rest = res.map.isel(du_z=0)
+    assert at_rest.trusted.values.any()  # nothing oscillates: mu = mu0 (eq. 2 with a = 0)
+    np.testing.assert_allclose(at_rest.cof.values[at_rest.trusted.values], PIN.mu0, rtol=1e-12)
     same = vf.design(PIN, du_z=(8e-9, 8e-7), **{**kwargs, "n_du_z": 5})
     assert res.system.du_z > 0.0
     assert res.cof == pytest.approx(same.cof, abs=1e-12)
