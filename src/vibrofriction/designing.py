@@ -202,9 +202,10 @@ def _refine(pin, v0, settings, starts, limits, steps):
         x0 = np.log([w, d])
         simplex = np.array([x0, x0 + [steps[0], 0.0], x0 + [0.0, -steps[1]]])
         rejected["run"] = 0
-        res = minimize(objective, x0, method="Nelder-Mead",
-                       options={"xatol": 1e-7, "fatol": 1e-10, "maxfev": 150,
-                                "initial_simplex": simplex})
+        with np.errstate(invalid="ignore"):  # inf - inf in the simplex's spread
+            res = minimize(objective, x0, method="Nelder-Mead",
+                           options={"xatol": 1e-7, "fatol": 1e-10, "maxfev": 150,
+                                    "initial_simplex": simplex})
         rejected["all"] += rejected["run"]
         if res.fun < best[2]:
             best = (math.exp(res.x[0]), math.exp(res.x[1]), float(res.fun))
