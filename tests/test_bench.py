@@ -109,10 +109,37 @@ def test_read_measurements_converts_units(tmp_path):
     ("v0,cof,du_z,omega\n1,0.2,1e-6,5000\n2,nan,1e-6,5000\n", r"column 'cof', line 3"),
     ("v0,cof,du_z,omega\n-1,0.2,1e-6,5000\n", r"column 'v0', line 2"),
     ("v0,cof,du_z,omega\n1,0.2,1e-6,0\n", r"column 'omega', line 2: .* > 0"),
-    ("v0,cof,du_z,omega,sigma\n1,0.2,1e-6,5,abc\n", r"column 'sigma', line 2"),
+    ("v0,cof,du_z,omega,sigma\n1,0.2,1e-6,5,abc\n", r"column 'sigma', line 2: 'abc'"),
+    # the line as an editor numbers it: comments (the documented format starts with one),
+    # blank lines and inline comments count
+    ("# pin-on-disk\n# 20 N\nv0,cof,du_z,omega\n1,0.2,1e-6,5000\n2,nan,1e-6,5000\n",
+     r"column 'cof', line 5: nan is not"),
+    ("# c\n\nv0,cof,du_z,omega # SI\n\n1,0.2,1e-6,5000 # ok\n# mid\n2,0.2,1e-6,-5\n",
+     r"column 'omega', line 7: -5 is not"),
+    ("# c\r\nv0,cof,du_z,omega\r\n1,0.2,1e-6,5000\r\n2,0.2,-1,5000\r\n",
+     r"column 'du_z', line 4"),
+    # names match regardless of case: a Sigma column is read (and checked)
+    ("v0,cof,du_z,omega,Sigma\n1,0.2,1e-6,5000,-1\n", r"column 'sigma', line 2"),
+    ("v0,cof,COF,du_z,omega\n1,0.2,0.2,1e-6,5000\n", r"'cof' appears twice .*'COF'"),
+    # a name close to a known one is a misspelling, not an ignored column
+    ("v0,cof,du_z,omega,sigm\n1,0.2,1e-6,5000,0.01\n", r"column 'sigm' .* close to 'sigma'"),
+    ("v0,cof,du-z [um],omega\n1,0.2,1,5000\n", r"column 'du-z \[um\]' .* close to 'du_z'"),
 ])
 def test_read_measurements_errors_name_column_and_row(tmp_path, text, message):
     path = tmp_path / "bad.csv"
-    path.write_text(text)
+    path.write_bytes(text.encode())
     with pytest.raises(ValueError, match=message):
         vf.read_measurements(path)
+
+
+def test_read_measurements_matches_names_regardless_of_case(tmp_path):
+    path = tmp_path / "m.csv"
+    path.write_text("# other columns are ignored\n"
+                    "time,V0 [MM/S],Cof,DU_Z [um],Omega [Hz],Sigma,load\n"
+                    "0,1.0,0.21,1.3,800,0.005,20\n")
+    d = vf.read_measurements(path)
+    assert d.iloc[0].to_dict() == pytest.approx({"v0": 1e-3, "cof": 0.21, "du_z": 1.3e-6,
+                                                 "omega": 2 * math.pi * 800, "sigma": 0.005})
+    frame = pd.DataFrame({"v0": [1e-3], "cof": [0.2], "du_z": [1e-6], "omega": [5e3],
+                          "Sigma": [0.01]})
+    assert vf.read_measurements(frame)["sigma"][0] == 0.01

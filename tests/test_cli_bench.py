@@ -7,6 +7,7 @@ import sys
 import numpy as np
 import pandas as pd
 import pytest
+import xarray as xr
 
 import vibrofriction as vf
 from vibrofriction.fitting import predict_cof
@@ -59,11 +60,18 @@ def test_fit_from_the_command_line(bench_file, tmp_path):
 
 def test_design_from_the_command_line(bench_file, tmp_path):
     out = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz",
-               "300:3000", "--du-z", "1e-7:5e-7", "--max-velocity-amplitude", "0.005",
+               "300:3000", "--du-z", "0:5e-7", "--max-velocity-amplitude", "0.005",
                "--out", str(tmp_path / "design"))
     assert out.returncode == 0, out.stderr
     assert "optimum at v0 = 0.01" in out.stdout
+    status = [line for line in out.stdout.splitlines() if line.startswith("status: ")]
+    assert len(status) == 1 and "map points within the limits untrusted" in status[0]
     assert (tmp_path / "design" / "map.png").stat().st_size > 0
+    saved = xr.open_zarr(tmp_path / "design" / "map.zarr", consolidated=False)
+    assert saved.du_z.values[0] == 0.0  # the actuator's range from rest
+    assert saved.attrs["n_untrusted"] == int((saved.feasible & ~saved.trusted).sum())
+    assert saved.attrs["status"] in status[0]
+    assert status[0].startswith("status: trusted") == (saved.attrs["n_untrusted"] == 0)
     bad = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz", "300",
                "--du-z", "1e-7:5e-7")
     assert bad.returncode == 2 and "low:high" in bad.stderr

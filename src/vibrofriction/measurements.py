@@ -15,13 +15,18 @@ sigma     standard deviation of ``cof`` (optional)               1
 A unit is written in brackets after the name (``v0 [mm/s]``, ``du_z [um]``, ``omega
 [Hz]``); without one the column is in the first unit of its row (SI).  Values are
 converted to SI (``omega`` to rad/s).  Every value must be finite; ``v0`` and ``du_z``
-``>= 0``, ``omega`` and ``sigma`` ``> 0``, ``cof >= 0``.  A missing column, an unknown
-unit or a bad value is a ``ValueError`` naming the column and, for a value, the row
-(the line of a CSV file, counting the header as line 1).
+``>= 0``, ``omega`` and ``sigma`` ``> 0``, ``cof >= 0``.  Names match regardless of case
+(``Sigma``, ``V0 [mm/s]``); other columns are ignored, unless a name is close to a known
+one (``sigm``, ``du-z``: a misspelling, an error naming both).  A missing column, an
+unknown unit or a bad value is a ``ValueError`` naming the column and, for a value, the
+row (the line of a CSV file as an editor numbers it: comment lines and blank lines
+count).
 """
 
 from __future__ import annotations
 
+import difflib
+import io
 import math
 import os
 import re
@@ -42,7 +47,9 @@ COLUMNS: dict[str, dict[str, float]] = {
 _REQUIRED = ("v0", "cof", "du_z", "omega")
 _MINIMUM = {"v0": (0.0, False), "cof": (0.0, False), "du_z": (0.0, False),
             "omega": (0.0, True), "sigma": (0.0, True)}
-_HEADER = re.compile(r"^\s*([A-Za-z_0-9]+)\s*(?:[\[(]\s*([^\])]*)\s*[\])])?\s*$")
+#: How close (difflib's ratio) an unknown column's name may come to a known one.
+_MISSPELLING_CUTOFF = 0.75
+_HEADER = re.compile(r"^\s*([^\[(]*?)\s*(?:[\[(]\s*([^\])]*)\s*[\])])?\s*$")
 
 
 def _parse_header(name: object) -> tuple[str, str | None]:
@@ -52,35 +59,63 @@ def _parse_header(name: object) -> tuple[str, str | None]:
     return m.group(1), (m.group(2).strip() if m.group(2) is not None else None)
 
 
+def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
+    """The table of a CSV file and, per row, its line in the file (1-based, every line
+    counted: comments, blank lines and the header)."""
+    where = os.fspath(source)
+    try:
+        with open(source, encoding="utf-8-sig", newline="") as fh:
+            text = fh.read()
+    except FileNotFoundError:
+        raise ValueError(f"no measurement file {where!r}") from None
+    except UnicodeDecodeError as e:
+        raise ValueError(f"{where!r} is not UTF-8 text ({e.reason} at byte {e.start})") from None
+    records = [i for i, line in enumerate(re.split(r"\r\n|\r|\n", text), start=1)
+               if line.split("#", 1)[0].strip()]
+    try:
+        frame = pd.read_csv(io.StringIO(text), comment="#", skipinitialspace=True)
+    except pd.errors.EmptyDataError:
+        raise ValueError(f"{where!r} holds no table") from None
+    lines = records[1:] if len(records) == len(frame) + 1 else []  # else: quoted newlines
+    return frame, lines
+
+
+def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | None]]:
+    """The known columns of ``frame`` (matched regardless of case) with their header
+    and unit; a name close to a known one but not it is an error."""
+    columns: dict[str, tuple[object, str | None]] = {}
+    for raw in frame.columns:
+        name, unit = _parse_header(raw)
+        key = name.lower()
+        if key in COLUMNS:
+            if key in columns:
+                raise ValueError(f"column {key!r} appears twice in {where} "
+                                 f"({columns[key][0]!r} and {raw!r})")
+            columns[key] = (raw, unit)
+            continue
+        close = difflib.get_close_matches(key, COLUMNS, n=1, cutoff=_MISSPELLING_CUTOFF)
+        if close:
+            raise ValueError(f"column {raw!r} of {where} is not a measurement column but "
+                             f"close to {close[0]!r}: rename it to {close[0]!r} or to a "
+                             f"name unlike {list(COLUMNS)} (such columns are ignored)")
+    missing = [c for c in _REQUIRED if c not in columns]
+    if missing:
+        raise ValueError(f"{where} lacks the column(s) {missing}; a measurement table has "
+                         f"{list(_REQUIRED)} and optionally 'sigma' (docs/bench.md)")
+    return columns
+
+
 def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
     """A measured table (CSV path or DataFrame) as a DataFrame in SI units, checked.
 
     Returns the columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s) and
     ``sigma`` (nan where not given), in the order of the input rows.
     """
-    from_file = not isinstance(source, pd.DataFrame)
-    if from_file:
-        try:
-            frame = pd.read_csv(source, comment="#", skipinitialspace=True)
-        except FileNotFoundError:
-            raise ValueError(f"no measurement file {os.fspath(source)!r}") from None
-        except pd.errors.EmptyDataError:
-            raise ValueError(f"{os.fspath(source)!r} holds no table") from None
-        where = os.fspath(source)
+    if isinstance(source, pd.DataFrame):
+        frame, lines, where = source, None, "the DataFrame"
     else:
-        frame = source
-        where = "the DataFrame"
-    columns: dict[str, tuple[object, str | None]] = {}
-    for raw in frame.columns:
-        name, unit = _parse_header(raw)
-        if name in COLUMNS:
-            if name in columns:
-                raise ValueError(f"column {name!r} appears twice in {where}")
-            columns[name] = (raw, unit)
-    missing = [c for c in _REQUIRED if c not in columns]
-    if missing:
-        raise ValueError(f"{where} lacks the column(s) {missing}; a measurement table has "
-                         f"{list(_REQUIRED)} and optionally 'sigma' (docs/bench.md)")
+        (frame, lines), where = _read_csv(source), os.fspath(source)
+    columns = _columns(frame, where)
     if len(frame) == 0:
         raise ValueError(f"{where} has no rows")
     out = {}
@@ -95,10 +130,12 @@ def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
         bad = ~np.isfinite(values) | ((values <= low) if strict else (values < low))
         if np.any(bad):
             i = int(np.flatnonzero(bad)[0])
-            row = f"line {i + 2}" if from_file else f"row {frame.index[i]!r}"
+            row = (f"row {frame.index[i]!r}" if lines is None else
+                   f"line {lines[i]}" if lines else f"data row {i + 1}")
             rule = f"> {low:g}" if strict else f">= {low:g}"
-            raise ValueError(f"column {name!r}, {row}: {frame[raw].iloc[i]!r} is not a finite "
-                             f"number {rule}")
+            value = frame[raw].iloc[i]
+            value = repr(value) if isinstance(value, str) else str(value)
+            raise ValueError(f"column {name!r}, {row}: {value} is not a finite number {rule}")
         out[name] = values * units[key]
     if "sigma" not in out:
         out["sigma"] = np.full(len(frame), np.nan)

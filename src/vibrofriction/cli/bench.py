@@ -77,13 +77,15 @@ def design_command(
     v0: Annotated[str, typer.Option(help="operating sliding velocity, m/s")],
     frequency_hz: Annotated[str, typer.Option(
         "--frequency-hz", help="drive frequency range low:high, Hz")],
-    du_z: Annotated[str, typer.Option("--du-z", help="amplitude range low:high, m")],
+    du_z: Annotated[str, typer.Option(
+        "--du-z", help="amplitude range low:high, m (low may be 0: no oscillation)")],
     max_velocity_amplitude: Annotated[str | None, typer.Option(
         "--max-velocity-amplitude", help="limit of omega * du_z, m/s")] = None,
     out: Annotated[str, typer.Option(help="folder for report.txt, map.png, map.zarr")] =
     "design",
 ) -> None:
-    """The oscillation that minimises friction at v0 within the actuator's limits."""
+    """The oscillation that minimises friction at v0 within the actuator's limits (the
+    report's status line counts the untrusted points of the map)."""
     from ..designing import design
 
     pin = Physical.from_bench_file(bench)
