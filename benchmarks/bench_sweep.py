@@ -28,8 +28,8 @@ from pathlib import Path
 
 import numpy as np
 
+from vibrofriction.parallel import process_pool
 from vibrofriction.sweep import identity, make_plan, sweep, warm_up
-from vibrofriction.sweep.pool import process_pool
 
 #: the throughput grid: 20 000 points in 20 blocks of exactly 1000 points
 GRID = dict(alpha=np.geomspace(0.01, 0.5, 20), beta=[2.0, 5.0, 20.0, 50.0, 200.0],

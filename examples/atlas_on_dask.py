@@ -17,7 +17,7 @@ import numpy as np
 from dask.distributed import Client, LocalCluster
 
 import vibrofriction as vf
-from vibrofriction.sweep import plot_atlas
+from vibrofriction.figures import plot_atlas
 
 
 def main(out_dir: str | Path = "example_output") -> dict[str, float]:

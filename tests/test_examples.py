@@ -29,9 +29,9 @@ def _load(name: str):
     ("resonant_case_iv", ["resonant_case_iv.png"]),
     pytest.param("atlas_on_dask", ["atlas_map.png", "atlas_curves.png"],
                  marks=pytest.mark.slow),
-    ("bench_design", ["bench_design.png"]),
+    ("design_oscillation", ["design_oscillation.png"]),
     ("paper_experiment", ["paper_experiment.png"]),
-    pytest.param("bench_fit", ["bench_fit.png"], marks=pytest.mark.slow),
+    pytest.param("fit_pin_on_disk", ["fit_pin_on_disk.png"], marks=pytest.mark.slow),
 ])
 def test_example_runs_as_a_script(name, pngs, tmp_path):
     out = subprocess.run([sys.executable, str(EXAMPLES / f"{name}.py"), str(tmp_path)],
@@ -70,15 +70,15 @@ def test_dask_example_equals_a_serial_sweep(tmp_path):
 
 
 @pytest.mark.slow
-def test_bench_fit_example_recovers_the_pin(tmp_path):
-    ex = _load("bench_fit")
+def test_fit_example_recovers_the_pin(tmp_path):
+    ex = _load("fit_pin_on_disk")
     got = ex.main(tmp_path)
     for name, (value, stderr) in got.items():
         assert abs(value - getattr(ex.TRUE, name)) <= 3 * stderr, name
 
 
-def test_bench_design_example_respects_the_limits(tmp_path):
-    got = _load("bench_design").main(tmp_path)
+def test_design_example_respects_the_limits(tmp_path):
+    got = _load("design_oscillation").main(tmp_path)
     assert 200 <= got["frequency_hz"] <= 5000 and 0.05e-6 <= got["du_z"] <= 0.5e-6
     assert got["velocity_amplitude"] <= 0.01 * (1 + 1e-9)
     assert got["cof"] < 0.3

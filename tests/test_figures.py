@@ -206,6 +206,31 @@ def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Pat
     assert b"CreationDate" not in pdf
 
 
+def test_the_figures_need_no_sweep_machinery() -> None:
+    """The maps' cell edges are the figures' own: importing the figures loads neither the
+    sweep nor xarray, zarr or Dask (an atlas plot loads them when it is drawn)."""
+    import subprocess
+    import sys
+
+    heavy = ("vibrofriction.sweep", "xarray", "zarr", "dask")
+    code = ("import sys; import vibrofriction.figures; "
+            f"print([m for m in {heavy!r} if m in sys.modules])")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["[]"]
+
+
+def test_the_phases_have_one_palette() -> None:
+    """The explorer shades the phases in the figures' colours (one definition)."""
+    pytest.importorskip("bokeh")
+    from vibrofriction.explorer import views
+    from vibrofriction.figures import style
+
+    assert views.PHASE_COLORS is style.PHASE_COLORS
+    assert set(style.PHASE_COLORS) == {"stick", "slip+", "slip-", "flight"}
+
+
 def test_checks_report_a_violation_they_are_fed() -> None:
     """The physics checks are pure functions of curves: a decreasing curve is caught."""
     from vibrofriction.figures.checks import monotonicity, status_note

@@ -1,6 +1,7 @@
-"""The package's one process pool (vibrofriction.sweep.pool): workers never outlive the
-process that started them, even when it is killed with SIGKILL; a worker that dies is
-an error, not a silent fallback."""
+"""The package's one process pool (vibrofriction.parallel): workers never outlive the
+process that started them, even when it is killed with SIGKILL, by any of its entries (a
+sweep and a reproduction through run_tasks, a fit's map, the explorer's long-lived pool);
+a worker that dies is an error, not a silent fallback."""
 
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from vibrofriction.sweep.pool import check_workers, run_tasks
+from vibrofriction.parallel import check_workers, mapper, run_tasks, start_pool
 
 psutil = pytest.importorskip("psutil")  # installed with distributed
 
@@ -27,6 +28,21 @@ SWEEP = ["sweep", "--alpha", "1e-2:0.5:56:log", "--beta", "2,5,20", "--amplitude
          "--no-progress"]
 REPRODUCE = ["reproduce", "--out", "out", "--quick", "--workers", "2", "--no-progress"]
 GONE_WITHIN = 10.0  # seconds
+#: a map (the fit's) and a long-lived pool (the explorer's) on two workers, each busy in a
+#: C loop that holds the GIL and never returns in time (as a compiled kernel would)
+SCRIPT = """\
+import sys
+from vibrofriction.parallel import mapper, start_pool
+
+if __name__ == "__main__":
+    if sys.argv[1] == "map":
+        with mapper(2) as map_:
+            map_(sum, [range(10**13)] * 2)
+    else:
+        pool = start_pool(2)
+        futures = [pool.submit(sum, range(10**13)) for _ in range(2)]
+        futures[0].result()
+"""
 
 
 def _alive(procs: list) -> list:
@@ -40,12 +56,17 @@ def _alive(procs: list) -> list:
     return alive
 
 
-@pytest.mark.parametrize("args", [SWEEP, REPRODUCE], ids=["sweep", "reproduce"])
-def test_sigkill_of_the_caller_leaves_no_process_behind(tmp_path: Path, args) -> None:
+@pytest.mark.parametrize("entry", ["sweep", "reproduce", "map", "start_pool"])
+def test_sigkill_of_the_caller_leaves_no_process_behind(tmp_path: Path, entry) -> None:
     """SIGKILL the command (only it, not its process group): its fork server, resource
     tracker and both workers must exit by themselves."""
-    exe = Path(sys.executable).with_name("vibrofriction")
-    proc = subprocess.Popen([str(exe), *args], cwd=tmp_path, start_new_session=True,
+    if entry in ("sweep", "reproduce"):
+        exe = Path(sys.executable).with_name("vibrofriction")
+        command = [str(exe), *(SWEEP if entry == "sweep" else REPRODUCE)]
+    else:
+        (tmp_path / "busy.py").write_text(SCRIPT)
+        command = [sys.executable, "busy.py", entry]
+    proc = subprocess.Popen(command, cwd=tmp_path, start_new_session=True,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                             env={**os.environ, "PYTHONWARNINGS": "ignore"})
     caller = psutil.Process(proc.pid)
@@ -70,7 +91,7 @@ def test_sigkill_of_the_caller_leaves_no_process_behind(tmp_path: Path, args) ->
         while _alive(tree) and time.monotonic() - t0 < GONE_WITHIN:
             time.sleep(0.02)
         left = _alive(tree)
-        print(f"{args[0]}: {len(tree)} descendants gone {time.monotonic() - t0:.2f} s "
+        print(f"{entry}: {len(tree)} descendants gone {time.monotonic() - t0:.2f} s "
               "after SIGKILL")
         assert not left, [(p.pid, p.cmdline()) for p in left]
     finally:
@@ -89,6 +110,16 @@ def _exit_worker(code: int) -> None:
 
 def _double(x: int) -> int:
     return 2 * x
+
+
+def _pid(_: object) -> int:
+    return os.getpid()
+
+
+def _refuse(x: int) -> int:
+    if x == 3:
+        raise ValueError("three")
+    return x
 
 
 def test_a_dying_worker_is_an_error_not_a_fallback() -> None:
@@ -113,3 +144,47 @@ def test_results_come_back_in_this_process_and_next_task_sees_them() -> None:
 def test_workers_must_be_an_integer_at_least_one(workers) -> None:
     with pytest.raises(ValueError, match=r"--workers must be an integer >= 1 .*got"):
         check_workers(workers, "--workers")
+
+
+@pytest.mark.parametrize("workers", [1, 2])
+def test_a_map_keeps_the_order_of_its_items(workers) -> None:
+    with mapper(workers) as map_:
+        assert map_(_double, range(7)) == [2 * x for x in range(7)]
+        assert map_(_double, iter([])) == []
+        pids = set(map_(_pid, range(6)))
+    # two workers: the items ran in other processes (no silent fallback to this one)
+    assert (pids == {os.getpid()}) if workers == 1 else (os.getpid() not in pids)
+
+
+def test_a_map_raises_a_task_s_error_and_a_dead_worker() -> None:
+    with mapper(2) as map_:
+        with pytest.raises(ValueError, match="three"):
+            map_(_refuse, range(6))
+        with pytest.raises(RuntimeError, match="a local worker process died"):
+            map_(_exit_worker, [3, 3])
+
+
+def test_a_map_drives_differential_evolution_as_its_workers() -> None:
+    """The fit's global stage: scipy calls ``workers(func, population)``; the answer is
+    the one of the serial run (same seed, deferred updating), found in the workers."""
+    from scipy.optimize import differential_evolution, rosen
+
+    kw = dict(bounds=[(-2.0, 2.0)] * 3, seed=1, maxiter=15, polish=False,
+              updating="deferred")
+    serial = differential_evolution(rosen, workers=lambda f, x: list(map(f, x)), **kw)
+    with mapper(2) as map_:
+        pooled = differential_evolution(rosen, workers=map_, **kw)
+    assert pooled.nfev == serial.nfev and pooled.fun == serial.fun
+    assert pooled.x.tolist() == serial.x.tolist()
+
+
+def test_a_long_lived_pool_runs_elsewhere_and_stops_on_shutdown() -> None:
+    pool = start_pool(2)
+    try:
+        pids = {pool.submit(_pid, k).result() for k in range(4)}
+        assert os.getpid() not in pids
+        procs = [psutil.Process(pid) for pid in pids]
+    finally:
+        pool.shutdown(wait=True)
+    psutil.wait_procs(procs, timeout=GONE_WITHIN)
+    assert not _alive(procs)

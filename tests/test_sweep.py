@@ -16,6 +16,7 @@ import xarray as xr
 import vibrofriction
 import vibrofriction.sweep as vsweep
 from vibrofriction import Dimensionless, Physical, friction_coefficient
+from vibrofriction.figures import cell_edges, is_geometric, plot_atlas
 from vibrofriction.solver import (
     FLOAT_COLUMNS,
     STATUS_BY_CODE,
@@ -23,7 +24,7 @@ from vibrofriction.solver import (
     SolverSettings,
     solve_points,
 )
-from vibrofriction.sweep import cell_edges, is_geometric, make_plan, parse_axis, sweep
+from vibrofriction.sweep import make_plan, parse_axis, sweep
 
 VBAR = np.linspace(0.0, 1.2, 13)
 GRID = dict(alpha=[0.01, 0.1, 0.3], beta=[2.0, 5.0], amplitude=0.5, vbar=VBAR)
@@ -464,17 +465,17 @@ def test_cli_bad_input_is_one_line_and_exit_2(tmp_path: Path, args, message) -> 
 
 
 def test_plot_function_curves_and_map(serial: xr.Dataset, tmp_path: Path) -> None:
-    fig = vsweep.plot_atlas(serial, sel={"beta": 2.0}, out=tmp_path / "c.png")
+    fig = plot_atlas(serial, sel={"beta": 2.0}, out=tmp_path / "c.png")
     ax = fig.axes[0]
-    assert len(ax.lines) >= 3 and ax.get_xlabel() == r"$\bar v$"
-    fig = vsweep.plot_atlas(serial, x="vbar", y="alpha", sel={"beta": 5.0})
+    assert len(ax.lines) >= 3 and ax.get_xlabel() == r"$\bar v = v_0/v_0^*$"
+    fig = plot_atlas(serial, x="vbar", y="alpha", sel={"beta": 5.0})
     assert len(fig.axes) == 2  # map and colour bar
     with pytest.raises(ValueError, match="fix some of alpha, beta"):
-        vsweep.plot_atlas(serial)
+        plot_atlas(serial)
     with pytest.raises(ValueError, match="needs the other swept dimensions fixed: beta"):
-        vsweep.plot_atlas(serial, x="vbar", y="alpha")
+        plot_atlas(serial, x="vbar", y="alpha")
     with pytest.raises(ValueError, match="unknown variable"):
-        vsweep.plot_atlas(serial, var="nope")
+        plot_atlas(serial, var="nope")
 
 
 def test_cli_sweep_exits_3_when_points_are_not_trusted(tmp_path: Path) -> None:
@@ -527,7 +528,7 @@ def test_plot_marks_points_by_trusted_not_by_status(serial: xr.Dataset) -> None:
     for pick in picks:
         ds["trusted"].loc[dict(beta=2.0, **pick)] = False
     assert np.all(np.isin(ds.status.values, CONVERGED))
-    fig = vsweep.plot_atlas(ds, sel={"beta": 2.0})
+    fig = plot_atlas(ds, sel={"beta": 2.0})
     ax = fig.axes[0]
     crosses = [line for line in ax.lines if line.get_marker() == "x"]
     marked = sorted(float(y) for line in crosses for y in line.get_ydata() if np.isfinite(y))
@@ -535,7 +536,7 @@ def test_plot_marks_points_by_trusted_not_by_status(serial: xr.Dataset) -> None:
     assert marked == expected
     drawn = [y for line in ax.lines if line.get_marker() != "x" for y in line.get_ydata()]
     assert all(float(ds.mu_ratio.sel(beta=2.0, **pick)) not in drawn for pick in picks)
-    fig = vsweep.plot_atlas(ds, x="vbar", y="alpha", sel={"beta": 2.0})
+    fig = plot_atlas(ds, x="vbar", y="alpha", sel={"beta": 2.0})
     hatched = [c for c in fig.axes[0].collections if isinstance(c, PatchCollection)]
     assert len(hatched) == 1 and len(hatched[0].get_paths()) == 2
     assert hatched[0].get_hatch()

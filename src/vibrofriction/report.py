@@ -36,7 +36,7 @@ from .params import Dimensionless
 from .solver import STATUS_BY_CODE, SolverSettings, simulate, solve_points
 
 if TYPE_CHECKING:
-    from .sweep.pool import Task
+    from .parallel import Task
 
 __all__ = ["Reproduction", "check_recipe", "reproduce", "recipes"]
 
@@ -115,7 +115,7 @@ def recipes(quick: bool = False) -> list[Recipe]:
 
 # --------------------------------------------------------------------------- tasks
 # The functions below run in the worker processes of the package's one pool
-# (vibrofriction.sweep.pool), or in this process with workers=1.  They get everything
+# (vibrofriction.parallel), or in this process with workers=1.  They get everything
 # as arguments: the recipes, which hold closures, are rebuilt in the worker from
 # ``quick`` and looked up by name.
 @functools.cache
@@ -224,7 +224,7 @@ def _curves(recipe: Recipe, batch: _Batch) -> dict[str, Curve]:
 class _Schedule:
     """The next task: rendering a recipe whose data are complete, else a chunk of points.
 
-    Called by :func:`vibrofriction.sweep.pool.run_tasks` (or :func:`_run_here`) each
+    Called by :func:`vibrofriction.parallel.run_tasks` (or :func:`_run_here`) each
     time a slot is free; the largest recipes' chunks go first.
     """
 
@@ -321,12 +321,12 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     out : output folder (created).
     quick : reduced velocity grids and maps (for CI); the figures keep their layout.
     workers : processes for solving and rendering (the package's one process pool,
-        :mod:`vibrofriction.sweep.pool`); default ``min(2, available cores)``; ``1`` runs
+        :mod:`vibrofriction.parallel`); default ``min(2, available cores)``; ``1`` runs
         everything in this process.  Results do not depend on it.
     progress : show tqdm progress bars (on stderr).
     only : names (or name prefixes, e.g. ``fig04``) of the recipes to run; default all.
     """
-    from .sweep.pool import available_cores, check_workers, run_tasks
+    from .parallel import available_cores, check_workers, run_tasks
 
     t0 = time.perf_counter()
     workers = min(2, available_cores()) if workers is None else check_workers(workers)

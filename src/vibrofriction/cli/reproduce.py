@@ -26,7 +26,7 @@ def reproduce_command(
     ] = None,
 ) -> None:
     """Regenerate every figure of the paper (PNG + PDF), its data (CSV) and report.md."""
-    from ..sweep.pool import check_workers
+    from ..parallel import check_workers
 
     if workers is not None:
         check_workers(workers, "--workers")

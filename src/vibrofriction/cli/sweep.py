@@ -72,7 +72,7 @@ def sweep_command(
     Example: vibrofriction sweep --alpha 1e-2:0.5:41:log --beta 2:400:20:log
     --amplitude 0.5 --vbar 0:1.2:121 --out atlas.zarr
     """
-    from ..sweep.pool import check_workers
+    from ..parallel import check_workers
 
     if workers is not None:
         check_workers(workers, "--workers")
@@ -201,7 +201,8 @@ def plot_command(
         help="fix a dimension: dim=value (nearest; direction=up|down); repeatable")] = None,
 ) -> None:
     """Quick look at an atlas: curves along one dimension or a map over two."""
-    from ..sweep import open_atlas, plot_atlas
+    from ..figures import plot_atlas
+    from ..sweep import open_atlas
 
     chosen = {}
     for item in sel or []:

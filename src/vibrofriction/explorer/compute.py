@@ -17,8 +17,6 @@ from .state import AXES, State
 __all__ = ["case_map", "curve", "history", "measurement_curves", "parse_measurements",
            "run_fit"]
 
-PHASE_COLORS = {"stick": "#9ecae1", "slip+": "#fdd0a2", "slip-": "#fcbba1",
-                "flight": "#d9d9d9"}
 CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
                "general": "#f0f0f0"}
 

@@ -1,42 +1,31 @@
 """Worker processes: the numba kernels hold the GIL, so every computation of the explorer
 runs in a process of its own, off the server's event loop, and tabs do not wait for each
-other (a separate process serves the fits, which take tens of seconds)."""
+other (a separate process serves the fits, which take tens of seconds).
+
+The processes are the package's one pool (:func:`vibrofriction.parallel.start_pool`): they
+die with the server, even when it is killed with SIGKILL."""
 
 from __future__ import annotations
 
 import asyncio
 import atexit
-import multiprocessing
 import os
 from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from functools import partial
 from typing import Any
 
+from ..parallel import available_cores, start_pool
+
 __all__ = ["run", "run_shared", "shutdown", "warm_up"]
 
 _POOLS: dict[str, ProcessPoolExecutor] = {}
-_SIZES = {"curve": max(2, min(4, os.cpu_count() or 2)), "fit": 1}
-
-
-def _watch_parent(parent: int) -> None:
-    """In a worker: exit when the server is gone (killed without shutting its pool)."""
-    import threading
-    import time
-
-    def watch() -> None:
-        while os.getppid() == parent:
-            time.sleep(1.0)
-        os._exit(0)
-
-    threading.Thread(target=watch, daemon=True).start()
+_SIZES = {"curve": max(2, min(4, available_cores())), "fit": 1}
 
 
 def _pool(kind: str) -> ProcessPoolExecutor:
     if kind not in _POOLS:
-        _POOLS[kind] = ProcessPoolExecutor(_SIZES[kind],
-                                           mp_context=multiprocessing.get_context("spawn"),
-                                           initializer=_watch_parent, initargs=(os.getpid(),))
+        _POOLS[kind] = start_pool(_SIZES[kind])
     return _POOLS[kind]
 
 

@@ -8,7 +8,8 @@ import numpy as np
 from bokeh.models import ColumnDataSource, HoverTool, Range1d
 from bokeh.plotting import figure
 
-from .compute import CASE_COLORS, PHASE_COLORS
+from ..figures.style import PHASE_COLORS
+from .compute import CASE_COLORS
 
 __all__ = ["CurveView", "HistoryView", "MapView"]
 

@@ -10,6 +10,9 @@ the solver series a figure needs and how to draw, table and check them.
 * :mod:`.maps`: maps over the ``(alpha, beta)`` plane;
 * :mod:`.damped`: beyond the paper, the damped model (Figs. 11-13: case IV, Fig. 10
   and Fig. 5 with pin damping);
+* :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
+  imported on first use, with xarray and the sweep);
+* :mod:`.edges`: cell edges of a plotted grid axis (maps, atlases);
 * :mod:`.checks`: the physics checks of the curves (numerics against the closed forms),
   pure functions without drawing;
 * :mod:`.style`: the shared matplotlib style.  Figures are ``matplotlib.figure.Figure``
@@ -18,9 +21,16 @@ the solver series a figure needs and how to draw, table and check them.
 
 from __future__ import annotations
 
+import os
+from typing import TYPE_CHECKING, Any
+
 from . import damped, dimensional, history, maps, resonant, style, velocity
+from .edges import cell_edges, is_geometric
 from .recipe import Check, Recipe, Rendered, Table, solve_recipes
 from .series import Curve, Series, solve
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 __all__ = [
     "Check",
@@ -30,6 +40,9 @@ __all__ = [
     "Series",
     "Table",
     "all_recipes",
+    "cell_edges",
+    "is_geometric",
+    "plot_atlas",
     "solve",
     "solve_recipes",
     "style",
@@ -52,3 +65,14 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         damped.damped_fig10(quick),
         damped.damped_fig5(quick),
     ]
+
+
+def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
+    """Plot an atlas of :func:`vibrofriction.sweep.sweep` (a Dataset or a store path).
+
+    See :func:`vibrofriction.figures.atlas.plot_atlas` (xarray and the sweep are
+    imported on first use).
+    """
+    from .atlas import plot_atlas as _plot
+
+    return _plot(source, **kwargs)

@@ -31,14 +31,15 @@ _WINDOW = (0.5, 2.75)
 
 
 def _shade_phases(ax, tau_p, phase) -> None:
-    """Shade every maximal run of samples in stick, reverse slip or flight."""
+    """Shade every maximal run of samples in stick, reverse slip or flight (forward slip,
+    the ordinary sliding, stays unshaded)."""
     labelled = set()
     start = 0
     for i in range(1, len(phase) + 1):
         if i == len(phase) or phase[i] != phase[start]:
             name = str(phase[start])
             color = style.PHASE_COLORS.get(name, "none")
-            if color != "none":
+            if color != "none" and name != "slip+":
                 label = None if name in labelled else name.replace("slip-", "reverse slip")
                 labelled.add(name)
                 ax.axvspan(tau_p[start], tau_p[i - 1], color=color, alpha=0.6, lw=0,

@@ -18,9 +18,9 @@ from matplotlib import colors as mcolors
 
 from .. import theory
 from ..params import Case, classify
-from ..sweep import cell_edges
 from . import style
 from .checks import map_field, map_note
+from .edges import cell_edges
 from .recipe import Recipe, Rendered, Table
 from .series import Curve, Series
 

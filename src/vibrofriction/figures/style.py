@@ -62,7 +62,11 @@ AMPLITUDE = r"$\Delta u_z/u_{z,0}$"
 NUMERIC = "black"
 THEORY = "#d62728"
 RESONANT = "#e08a00"
-PHASE_COLORS = {"stick": "#9ecae1", "slip+": "none", "slip-": "#fcbba1", "flight": "#d9d9d9"}
+#: The phases of the motion (stick, slip forward and backward, flight), one colour each
+#: for every view that shades them (Fig. 2 leaves forward slip, the ordinary sliding,
+#: unshaded; the explorer shades all four).
+PHASE_COLORS = {"stick": "#9ecae1", "slip+": "#fdd0a2", "slip-": "#fcbba1",
+                "flight": "#d9d9d9"}
 
 RC: dict[str, object] = {
     "font.size": 8,

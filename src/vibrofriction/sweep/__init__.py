@@ -8,7 +8,8 @@
 ('alpha', 'vbar')
 
 The module itself is callable (``vibrofriction.sweep(...)`` is :func:`sweep`).
-See ``docs/sweeps.md`` for the store layout, resume semantics and Dask clusters.
+See ``docs/sweeps.md`` for the store layout, resume semantics and Dask clusters;
+:func:`vibrofriction.figures.plot_atlas` draws an atlas.
 """
 
 from __future__ import annotations
@@ -22,17 +23,16 @@ import numpy as np
 import xarray as xr
 from numpy.typing import ArrayLike
 
+from ..parallel import available_cores
 from ..solver import SolverSettings
 from ._compute import compute_block, identity, warm_up
 from ._grid import DEFAULT_CHUNK_SIZE, Plan, make_plan, parse_axis
 from ._run import check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
-from .edges import cell_edges, is_geometric
-from .pool import available_cores
+from ._variables import STATUS_PENDING
 
-__all__ = ["Plan", "available_cores", "cell_edges", "compute_block", "fingerprint",
-           "identity", "is_geometric", "make_plan", "open_atlas", "parse_axis",
-           "plot_atlas", "sweep", "warm_up"]
+__all__ = ["STATUS_PENDING", "Plan", "available_cores", "compute_block", "fingerprint",
+           "identity", "make_plan", "open_atlas", "parse_axis", "sweep", "warm_up"]
 
 
 def fingerprint() -> str:
@@ -90,7 +90,7 @@ def sweep(
     client : a ``dask.distributed.Client``: run the blocks on its cluster.
     workers : local processes (default: all cores available); 1 runs in this process.
         Workers die with the process that started them, even when it is killed
-        (:mod:`vibrofriction.sweep.pool`).
+        (:mod:`vibrofriction.parallel`).
     chunk_size : points per block of work (and per zarr chunk), about.  An existing
         store keeps its own block shape.
     settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
@@ -141,16 +141,6 @@ def sweep(
     finally:
         sink.close()
     return sink.dataset()
-
-
-def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
-    """Quick look at an atlas: curves along one dimension or a map over two.
-
-    See :func:`vibrofriction.sweep._plot.plot_atlas` (matplotlib is imported lazily).
-    """
-    from ._plot import plot_atlas as _plot
-
-    return _plot(source, **kwargs)
 
 
 class _CallableModule(types.ModuleType):

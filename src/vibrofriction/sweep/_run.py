@@ -4,7 +4,7 @@ Whatever runs the blocks, this process is the only writer: it receives each
 finished block, writes it to the sink (memory or store) and ticks the progress
 bar.  At most a few blocks per worker are in flight, so memory stays bounded
 by the block size, not the grid size.  Local cores use the package's one
-process pool (:mod:`vibrofriction.sweep.pool`).
+process pool (:mod:`vibrofriction.parallel`).
 """
 
 from __future__ import annotations
@@ -15,9 +15,9 @@ from typing import Any
 
 import numpy as np
 
+from ..parallel import available_cores, check_workers, run_tasks
 from ._compute import compute_block, identity, warm_up
 from ._grid import Plan
-from .pool import available_cores, check_workers, run_tasks
 
 __all__ = ["available_cores", "check_executor", "run_blocks"]
 

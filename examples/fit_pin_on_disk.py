@@ -5,7 +5,7 @@ The data are made from a known pin (800 Hz, Q = 50, a steel sphere of 3 mm on st
 the natural frequency, Q, the load and the drive, and fits mu0, the modal mass (with
 k_x tied to it by the natural frequency) and the tangential contact stiffness.
 
-Run:  python examples/bench_fit.py [output directory]
+Run:  python examples/fit_pin_on_disk.py [output directory]
 """
 
 from __future__ import annotations
@@ -48,8 +48,8 @@ def main(out_dir: str | Path = "example_output") -> dict[str, float]:
     res = vf.fit(vf.read_measurements(csv), guess, free=["mu0", "mass", "k_x", "k_xc"],
                  progress=False)
     print(res.report())
-    res.plot().savefig(out / "bench_fit.png", dpi=150)
-    res.to_json(out / "bench_fit.json")
+    res.plot().savefig(out / "fit_pin_on_disk.png", dpi=150)
+    res.to_json(out / "fit_pin_on_disk.json")
     return {n: (res.params[n].value, res.params[n].stderr) for n in ("mu0", "mass", "k_xc")}
 
 

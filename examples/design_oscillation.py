@@ -2,7 +2,7 @@
 the operating speed, within the shaker's range and velocity limit, and how sensitive
 the optimum is.
 
-Run:  python examples/bench_design.py [output directory]
+Run:  python examples/design_oscillation.py [output directory]
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ def main(out_dir: str | Path = "example_output") -> dict[str, float]:
     res = vf.design(PIN, v0=0.05, omega=(2 * math.pi * 200, 2 * math.pi * 5000),
                     du_z=(0.05e-6, 0.5e-6), max_velocity_amplitude=0.01)
     print(res.report())
-    res.plot().savefig(out / "bench_design.png", dpi=150)
+    res.plot().savefig(out / "design_oscillation.png", dpi=150)
     return {"frequency_hz": res.system.omega / (2 * math.pi), "du_z": res.system.du_z,
             "cof": res.cof, "velocity_amplitude": res.system.omega * res.system.du_z}
 

@@ -1,11 +1,13 @@
-"""Quick look at an atlas: curves along one dimension, or a map over two.
+"""Quick look at an atlas (:func:`vibrofriction.sweep.sweep`): curves along one
+dimension, or a map over two.
 
 Drawn with xarray's own plotting (``DataArray.plot.line``, ``.plot.pcolormesh``) on
-a matplotlib ``Figure`` made without pyplot, so it works headless; matplotlib is
-imported only here (lazily, by :func:`vibrofriction.sweep.plot_atlas`).  Points
-that are not trusted (the Dataset's ``trusted`` variable: a converged status and
-``error <= tol_trusted``) are never drawn as results: crosses on curves, hatched
-cells on maps; points not computed yet are left blank.
+a figure of the shared style (:mod:`.style`, no pyplot), so it works headless.  This
+module, and with it xarray and the sweep, is imported only when an atlas is plotted
+(:func:`vibrofriction.figures.plot_atlas`).  Points that are not trusted (the
+Dataset's ``trusted`` variable: a converged status and ``error <= tol_trusted``) are
+never drawn as results: crosses on curves, hatched cells on maps; points not computed
+yet are left blank.
 """
 
 from __future__ import annotations
@@ -16,16 +18,16 @@ from typing import Any
 import numpy as np
 import xarray as xr
 
-from ._store import open_atlas
-from ._variables import STATUS_PENDING
+from ..sweep import STATUS_PENDING, open_atlas
+from . import style
 from .edges import cell_edges, is_geometric
 
 __all__ = ["plot_atlas"]
 
 _TEX = {
-    "alpha": r"$\alpha$", "beta": r"$\beta$", "amplitude": r"$a$", "vbar": r"$\bar v$",
-    "v_inertial": r"$v_0 m\omega/(\mu_0 F_{N0})$", "v0": r"$v_0$ [m/s]",
-    "mu_ratio": r"$\mu/\mu_0$", "mass": r"$m$ [kg]", "k_x": r"$k_x$ [N/m]",
+    "alpha": style.ALPHA, "beta": style.BETA, "amplitude": style.AMPLITUDE,
+    "vbar": style.VBAR, "v_inertial": style.V_INERTIAL, "v0": r"$v_0$ [m/s]",
+    "mu_ratio": style.MU, "mass": r"$m$ [kg]", "k_x": r"$k_x$ [N/m]",
     "k_xc": r"$k_{x,c}$ [N/m]", "k_zc": r"$k_{z,c}$ [N/m]", "u_z0": r"$u_{z0}$ [m]",
     "du_z": r"$\Delta u_z$ [m]", "omega": r"$\omega$ [rad/s]", "mu0": r"$\mu_0$",
     "critical_velocity": r"$v_0^*$",
@@ -33,6 +35,7 @@ _TEX = {
 _LEGEND_MAX = 8  # more curves than this: a colour bar instead of a legend
 
 
+@style.styled
 def plot_atlas(
     source: xr.Dataset | str | os.PathLike,
     *,
@@ -54,12 +57,10 @@ def plot_atlas(
     on curves, hatched cells on maps.  Log axes for geometric coordinates.
     ``out``: write the figure there (PNG, PDF, SVG by extension).
     """
-    from matplotlib.figure import Figure
-
     ds = _select(open_atlas(source) if not isinstance(source, xr.Dataset) else source, sel)
     da, trusted, pending = _variable(ds, var, keep=(x, y))
     x = _x_axis(ds, da, x, var)
-    fig = Figure(figsize=(7.0, 4.8), layout="constrained")
+    fig = style.figure(style.PAGE, 4.8)
     ax = fig.add_subplot()
     if y is None:
         note = _draw_curves(fig, ax, ds, da, trusted, x, max_curves)

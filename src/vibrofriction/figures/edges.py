@@ -1,4 +1,4 @@
-"""Cell edges of a plotted grid axis: the package's one helper (sweep plots, figure maps)."""
+"""Cell edges of a plotted grid axis: the package's one helper (atlas plots, figure maps)."""
 
 from __future__ import annotations
 

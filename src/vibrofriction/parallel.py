@@ -1,4 +1,10 @@
-"""The package's one pool of local worker processes (sweeps and ``vibrofriction reproduce``).
+"""The package's one pool of local worker processes.
+
+Every local parallel computation runs here: sweeps (:func:`run_tasks`), ``vibrofriction
+reproduce`` (:func:`run_tasks`), the fit's global stage and local starts (:func:`mapper`,
+also a ``workers=`` argument of :func:`scipy.optimize.differential_evolution`) and the
+explorer's long-lived workers (:func:`start_pool`).  The module imports nothing of the
+package: it sits below every consumer (``pyproject.toml``, the layers contract).
 
 Workers are started with multiprocessing's ``forkserver`` method (``spawn`` where
 there is none), never ``fork``: the calling process may hold threads (zarr's event
@@ -22,8 +28,9 @@ copy of the queue's write end itself).  So each worker
    the worker was re-parented: the portable fallback (``spawn``, other systems; it
    runs between kernel calls, since the kernels hold the GIL).
 
-``tests/test_pool.py`` SIGKILLs a running two-worker sweep and checks that the fork
-server, the resource tracker and both workers are gone within seconds.
+``tests/test_pool.py`` SIGKILLs a running two-worker sweep, reproduction, map and
+long-lived pool and checks that the fork server, the resource tracker and both workers
+are gone within seconds.
 """
 
 from __future__ import annotations
@@ -34,7 +41,7 @@ import signal
 import sys
 import threading
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from concurrent.futures.process import BrokenProcessPool
 from contextlib import contextmanager
@@ -42,12 +49,14 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["Task", "available_cores", "check_workers", "process_pool", "run_tasks",
-           "start_method"]
+__all__ = ["Map", "Task", "available_cores", "check_workers", "mapper", "process_pool",
+           "run_tasks", "start_method", "start_pool"]
 
 #: ``(function, args, done)``: ``function(*args)`` runs in a worker (both must pickle:
 #: a module-level function and plain data), ``done(result)`` in the calling process.
 Task = tuple[Callable[..., Any], tuple[Any, ...], Callable[[Any], None]]
+#: ``map_(function, items)``: the list ``[function(item) for item in items]``.
+Map = Callable[[Callable[[Any], Any], Iterable[Any]], list[Any]]
 
 _WATCH_SECONDS = 0.5  # period of the watchdog thread (fallback only)
 _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
@@ -144,20 +153,73 @@ def _init_worker(caller: int, warm_up: Callable[[], None] | None) -> None:
 
 
 # --------------------------------------------------------------------------- in the caller
-@contextmanager
-def process_pool(workers: int, warm_up: Callable[[], None] | None = None
-                 ) -> Iterator[ProcessPoolExecutor]:
-    """A ``ProcessPoolExecutor`` of ``workers`` processes that die with this process.
+def _worker_died() -> RuntimeError:
+    """The error for a worker that died (or could not start)."""
+    return RuntimeError(
+        "a local worker process died. Workers are started with multiprocessing's "
+        f"{start_method()!r} method, which imports the main script again: protect "
+        "the call with `if __name__ == \"__main__\":`, or use 1 worker to run in "
+        "this process")
 
-    ``warm_up`` (a module-level function) runs once in each worker before any task,
-    e.g. to load the compiled kernels from numba's cache.  The caller should run it
-    itself first, so that kernels are compiled once and only loaded by the workers.
+
+def start_pool(workers: int, warm_up: Callable[[], None] | None = None
+               ) -> ProcessPoolExecutor:
+    """A long-lived ``ProcessPoolExecutor`` of ``workers`` processes that die with this one.
+
+    The caller owns it and stops it with ``shutdown()``.  Workers start on demand (on
+    the first tasks); ``warm_up`` (a module-level function) runs once in each, before
+    any task, e.g. to load the compiled kernels from numba's cache.  The caller should
+    run it itself first, so that kernels are compiled once and only loaded by workers.
     """
     workers = check_workers(workers)
     context = multiprocessing.get_context(start_method())
-    with ProcessPoolExecutor(max_workers=workers, mp_context=context,
-                             initializer=_init_worker, initargs=(os.getpid(), warm_up)) as pool:
+    return ProcessPoolExecutor(max_workers=workers, mp_context=context,
+                               initializer=_init_worker, initargs=(os.getpid(), warm_up))
+
+
+@contextmanager
+def process_pool(workers: int, warm_up: Callable[[], None] | None = None
+                 ) -> Iterator[ProcessPoolExecutor]:
+    """:func:`start_pool` for the duration of a ``with`` block.
+
+    Leaving the block waits for the running tasks; leaving it by an exception (Ctrl-C
+    included) cancels the tasks not yet started first.
+    """
+    pool = start_pool(workers, warm_up)
+    try:
         yield pool
+    except BaseException:
+        pool.shutdown(wait=True, cancel_futures=True)
+        raise
+    pool.shutdown(wait=True)
+
+
+@contextmanager
+def mapper(workers: int, warm_up: Callable[[], None] | None = None) -> Iterator[Map]:
+    """A :data:`Map` over ``workers`` processes (``1``: in this process, no pool).
+
+    Each item is a task of its own (the model's cost varies 10x between items), the
+    results come back in the order of the items; the function and the items must
+    pickle.  Usable as ``differential_evolution(..., workers=map_)``.  A worker that
+    dies raises RuntimeError; an exception in a task is raised here and cancels the
+    items not started.
+    """
+    if check_workers(workers) == 1:
+        yield lambda func, items: [func(item) for item in items]
+        return
+    with process_pool(workers, warm_up) as pool:
+
+        def map_(func: Callable[[Any], Any], items: Iterable[Any]) -> list[Any]:
+            futures = [pool.submit(func, item) for item in items]
+            try:
+                return [f.result() for f in futures]
+            except BrokenProcessPool as exc:
+                raise _worker_died() from exc
+            finally:
+                for f in futures:
+                    f.cancel()
+
+        yield map_
 
 
 def run_tasks(next_task: Callable[[], Task | None], *, workers: int,
@@ -194,11 +256,7 @@ def run_tasks(next_task: Callable[[], Task | None], *, workers: int,
         except BrokenProcessPool as exc:
             for fut in running:
                 fut.cancel()
-            raise RuntimeError(
-                "a local worker process died. Workers are started with multiprocessing's "
-                f"{start_method()!r} method, which imports the main script again: protect "
-                "the call with `if __name__ == \"__main__\":`, or use 1 worker to run in "
-                "this process") from exc
+            raise _worker_died() from exc
         except BaseException:
             for fut in running:
                 fut.cancel()
