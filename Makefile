@@ -17,15 +17,15 @@ demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 browser:  ## the distribution's headless Chromium for the explorer's browser tests
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
 
-test: $(BIN)/vibrofriction browser  ## the whole test suite, slow tests included
+test: $(BIN)/vibrofriction browser  ## the whole test suite, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
-	$(BIN)/python -m pytest -q
+	VIBROFRICTION_BROWSER_TESTS=required $(BIN)/python -m pytest -q
 
-fast: $(BIN)/vibrofriction browser  ## the development loop: lint, contracts, tests not marked slow
+fast: $(BIN)/vibrofriction  ## the development loop: lint, contracts, tests not marked slow or browser
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
-	$(BIN)/python -m pytest -q -x -m "not slow"
+	$(BIN)/python -m pytest -q -x -m "not slow and not browser"
 
 lint: $(BIN)/vibrofriction
 	$(BIN)/ruff check src tests benchmarks examples

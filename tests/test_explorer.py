@@ -103,17 +103,50 @@ def test_curve_marks_static_critical_case_and_trust():
     assert general["closed_forms"] == []  # no closed form outside its regime
     iv = compute.curve(State(alpha=1.0, beta=math.inf, axis="V", v_max=10.0, points=20))
     assert iv["case"] == "IV" and math.isnan(iv["critical"])
-    assert iv["closed_forms"][0]["y"][0] == pytest.approx(
-        vf.theory.resonant_plateau_exact(0.5) if hasattr(vf, "theory") else 0.0)
+    assert iv["closed_forms"][0]["label"].startswith("eq. (32)")
+    np.testing.assert_allclose(iv["closed_forms"][0]["y"], _plateau_by_quadrature(0.5),
+                               rtol=1e-9)
+
+
+def _plateau_by_quadrature(a: float) -> float:
+    """Case IV's plateau from its definition, by numerical quadrature (not the closed form
+    of ``theory``): the body velocity ``dv cos tau`` with ``r = v0/dv`` such that friction
+    feeds no mean power, ``<n cos tau sign(r - cos tau)> = 0`` (first eq. 32), then
+    ``mu/mu0 = <n sign(r - cos tau)>/<n>`` (eq. 25), ``n = 1 + a cos tau`` (``a <= 1``)."""
+    from scipy.integrate import quad
+    from scipy.optimize import brentq
+
+    def mean(g, r: float) -> float:
+        t = math.acos(r)  # the sign changes at +-t: split the integral there
+        parts = [(0.0, t), (t, 2 * math.pi - t), (2 * math.pi - t, 2 * math.pi)]
+        return sum(quad(lambda x: g(x) * math.copysign(1.0, r - math.cos(x)), lo, hi,
+                        epsabs=1e-13, epsrel=1e-12)[0] for lo, hi in parts) / (2 * math.pi)
+
+    def n(x: float) -> float:
+        return 1.0 + a * math.cos(x)
+
+    r = brentq(lambda r: mean(lambda x: n(x) * math.cos(x), r), 0.0, 1.0 - 1e-12,
+               xtol=1e-15)
+    return mean(n, r)  # <n> = 1 for a <= 1
 
 
 def test_bench_curve_is_the_cof():
     state = State(mode="bench", axis="v0", v_max=0.05, points=20)
     c = compute.curve(state)
     assert c["y_label"].startswith("COF")
-    system = state.system()
-    assert c["critical"] == pytest.approx(system.critical_velocity())
-    assert c["static"] == pytest.approx(system.mu0 * max(0.0, 1 - system.du_z / system.u_z0))
+    assert c["static"] == pytest.approx(0.3 * (1 - 0.5))  # mu0 (1 - a), a = du_z/u_z0 (eq. 2)
+    # eq. (12) with the pin's dashpot by hand from the bench's numbers (State's defaults):
+    # 800 Hz, 10 g, Q = 50, 20 N, k_zc = 2e7, k_xc = 1.5e7 N/m, 1000 Hz, 0.5 um, mu0 = 0.3
+    m, w_n, w = 0.01, 2 * math.pi * 800, 2 * math.pi * 1000
+    d = m * w_n**2 - m * w**2 + 1j * w * m * w_n / 50  # k_x - m w^2 + i w c_x
+    v_star = 0.3 * w * 0.5e-6 * 2e7 * abs(1 + d / 1.5e7) / abs(d)
+    assert c["critical"] == pytest.approx(v_star, rel=1e-12)
+    # and the solver says it is the onset of continuous sliding: mu = mu0 just above it
+    above = vf.friction_coefficient(state.system(), v0=1.001 * v_star)
+    below = vf.friction_coefficient(state.system(), v0=0.99 * v_star)
+    assert above.trusted and above.slip_fraction == 1.0
+    assert above.mu_ratio == pytest.approx(1.0, abs=above.error)
+    assert below.trusted and below.stick_fraction > 0.0 and below.mu_ratio < 0.99
 
 
 def test_history_has_phases_and_events():
@@ -218,7 +251,7 @@ def test_explorer_computes_in_worker_processes_without_a_server(monkeypatch):
         pool.shutdown()
     expected = compute.curve(State(points=24))
     np.testing.assert_array_equal(ex.curve["y"], expected["y"])
-    assert "over 24 points" in ex.readout.object
+    assert "over the 24 trusted of 24 points" in ex.readout.object
     assert ex.history_text.object.startswith("history at vbar = ")
 
 
@@ -233,3 +266,34 @@ def test_a_bad_url_parameter_is_said_next_to_its_input(monkeypatch):
     ex = page.Explorer()
     assert ex.inputs["beta"].message.visible
     assert "URL parameter beta" in ex.inputs["beta"].message.object
+
+
+def test_readout_averages_only_trusted_points():
+    pytest.importorskip("panel")
+    from vibrofriction.explorer.page import readout_text
+
+    curve = {"y": np.array([0.5, 0.7, 9.0, np.nan]), "y_label": "mu/mu0", "seconds": 0.25,
+             "trusted": np.array([True, True, False, False])}
+    text = readout_text(curve)
+    assert text.startswith("mean mu/mu0 = 0.600000 over the 2 trusted of 4 points")
+    none = readout_text({**curve, "trusted": np.zeros(4, bool)})
+    assert none.startswith("no trusted point of 4: no mean")
+
+
+def test_no_export_before_a_curve_and_the_export_is_the_curve_shown(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    ex = page.Explorer(State(points=12))
+    assert ex.curve is None and all(b.disabled for b in ex.downloads)
+    with pytest.raises(RuntimeError, match="nothing to export"):
+        ex._export("csv")
+    shown = State(alpha=0.01, beta=0.02, points=12)
+    ex._want = shown
+    ex._show_curve(shown, compute.curve(shown))
+    ex.state = State(alpha=0.2, points=12)  # inputs changed, their curve not yet computed
+    assert not any(b.disabled for b in ex.downloads)
+    csv = ex._export("csv").getvalue().decode()
+    assert csv.startswith("# vibrofriction explorer: alpha = 0.01, beta = 0.02")
+    assert len([ln for ln in csv.splitlines() if not ln.startswith("#")]) == 13

@@ -587,8 +587,8 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     ``f = n(tau1) + a vbar (tau - tau1)`` meets ``n`` again at ``tau2`` (one root of
     ``cos tau2 - cos tau1 = vbar (tau2 - tau1)``), so (docs/damping.md)
 
-    .. math:: rac{\mu}{\mu_0} = 1 - rac{a}{2\pi}\Big[\sin	au_2 - \sin	au_1
-              - (	au_2 - 	au_1)\cos	au_1 - 	frac{ar v}{2}(	au_2 - 	au_1)^2\Big],
+    .. math:: \frac{\mu}{\mu_0} = 1 - \frac{a}{2\pi}\Big[\sin\tau_2 - \sin\tau_1
+              - (\tau_2 - \tau_1)\cos\tau_1 - \tfrac{\bar v}{2}(\tau_2 - \tau_1)^2\Big],
 
     ``1 - a`` at ``vbar = 0`` (eq. 2), 1 for ``vbar >= 1``.  For ``0 <= a <= 1``.
     """

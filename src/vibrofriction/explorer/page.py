@@ -24,7 +24,7 @@ from .messages import GENERAL, field_of, read_inputs
 from .state import AXES, BENCH, DIMENSIONLESS, VELOCITY, Field, State, format_value
 from .views import CurveView, HistoryView, MapView
 
-__all__ = ["Explorer", "app"]
+__all__ = ["Explorer", "app", "readout_text"]
 
 _ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
 
@@ -96,6 +96,7 @@ class Explorer:
             state, query_problems = State.from_query(args)
         self.state = state
         self.curve: dict | None = None
+        self.curve_state: State | None = None  # the inputs of the curve shown
         self.data = None
         self._doc = pn.state.curdoc if (pn.state.curdoc is not None and
                                         pn.state.curdoc.session_context) else None
@@ -188,13 +189,15 @@ class Explorer:
 
     def _share_panel(self):
         self.snippet = pn.pane.Markdown("", sizing_mode="stretch_width")
-        downloads = [pn.widgets.FileDownload(callback=partial(self._export, fmt),
-                                             filename=f"vibrofriction_curve.{fmt}",
-                                             label=f"download {fmt.upper()}",
-                                             button_type="default", width=160)
-                     for fmt in ("png", "svg", "csv")]
+        # disabled until a curve is shown: there is nothing to export before
+        self.downloads = [pn.widgets.FileDownload(callback=partial(self._export, fmt),
+                                                  filename=f"vibrofriction_curve.{fmt}",
+                                                  label=f"download {fmt.upper()}",
+                                                  button_type="default", width=160,
+                                                  disabled=True)
+                          for fmt in ("png", "svg", "csv")]
         self.link = pn.pane.Markdown("")
-        return pn.Column(pn.Row(*downloads), self.link,
+        return pn.Column(pn.Row(*self.downloads), self.link,
                          pn.pane.Markdown("Python that recomputes this curve:"), self.snippet)
 
     def _show_mode(self) -> None:
@@ -270,17 +273,15 @@ class Explorer:
     def _show_curve(self, state: State, curve: dict) -> None:
         if self._want is not None and self._want != state:
             return  # a newer state is on its way
-        self.curve = curve
+        self.curve, self.curve_state = curve, state
+        for button in self.downloads:
+            button.disabled = False
         fig = self.curve_view.figures["log" if state.log_x else "linear"]
         if self.curve_pane.object is not fig:  # setting it again would re-render the figure
             self.curve_pane.object = fig
         self.curve_view.show(curve, state.log_x)
         self.map_view.show(curve["alpha"], curve["beta"])
-        y = curve["y"][np.isfinite(curve["y"])]
-        n_ok = int(np.count_nonzero(curve["trusted"]))
-        self.readout.object = (
-            f"mean {curve['y_label']} = {np.mean(y):.6f} over {y.size} points, "
-            f"{n_ok} of {len(curve['y'])} trusted; computed in {curve['seconds']:.2f} s")
+        self.readout.object = readout_text(curve)
         crit = curve["critical"]
         self.case_text.object = (
             f"**case {curve['case']}**: {curve['case_text']}\n\n"
@@ -462,11 +463,25 @@ class Explorer:
 
     # ------------------------------------------------------------------ export
     def _export(self, fmt: str) -> io.BytesIO:
+        """The curve shown (with the inputs it was computed for) as a file: never an empty
+        one (the buttons are disabled until the first curve is shown)."""
         if self.curve is None:
-            return io.BytesIO(b"")
+            raise RuntimeError("no curve has been computed yet: nothing to export")
         if fmt == "csv":
-            return io.BytesIO(exports.curve_csv(self.state, self.curve).encode())
+            return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
         return io.BytesIO(exports.figure_bytes(self.curve, fmt))
+
+
+def readout_text(curve: dict) -> str:
+    """The curve's summary: the mean over its trusted points only (an untrusted value is
+    no answer), how many of the points are trusted, and the time it took."""
+    y, ok = np.asarray(curve["y"], dtype=float), np.asarray(curve["trusted"], dtype=bool)
+    n_ok = int(np.count_nonzero(ok))
+    took = f"computed in {curve['seconds']:.2f} s"
+    if n_ok == 0:
+        return f"no trusted point of {y.size}: no mean; {took}"
+    return (f"mean {curve['y_label']} = {np.mean(y[ok]):.6f} over the {n_ok} trusted of "
+            f"{y.size} points; {took}")
 
 
 def app(state: State | None = None) -> pn.viewable.Viewable:

@@ -1,0 +1,117 @@
+"""The README runs: its Python examples as doctests (each output checked, a number to
+the digits it shows) and its command lines against the command line's own options."""
+
+from __future__ import annotations
+
+import doctest
+import re
+import shlex
+from pathlib import Path
+
+import pytest
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.M | re.S)
+# a number not inside a name (u_z0, k_x) or a longer number
+NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?(?![\w.])")
+
+
+def blocks(language: str) -> list[str]:
+    return [body for lang, body in FENCE.findall(README.read_text()) if lang == language]
+
+
+def _tolerance(shown: str) -> float:
+    """Half a unit of the last digit ``shown`` (``0.848``: 5e-4; ``9.0e-07``: 5e-9)."""
+    mantissa, _, exponent = shown.lower().lstrip("+-").partition("e")
+    decimals = len(mantissa.partition(".")[2])
+    return 0.5 * 10.0 ** (int(exponent or 0) - decimals) * (1 + 1e-9)
+
+
+class NumberChecker(doctest.OutputChecker):
+    """Doctest's comparison, except that each number of the expected output matches a
+    computed one that rounds to it (as pytest's NUMBER option)."""
+
+    def check_output(self, want: str, got: str, optionflags: int) -> bool:
+        if super().check_output(want, got, optionflags):
+            return True
+        shown, computed = NUMBER.findall(want), NUMBER.findall(got)
+        if not shown or len(shown) != len(computed):
+            return False
+        if any(abs(float(c) - float(s)) > _tolerance(s)
+               for s, c in zip(shown, computed, strict=True)):
+            return False
+        it = iter(shown)
+        return super().check_output(want, NUMBER.sub(lambda m: next(it), got), optionflags)
+
+
+def test_every_python_block_is_a_doctest():
+    python = blocks("python")
+    assert python, "the README shows no Python"
+    for body in python:
+        first = next(line for line in body.splitlines() if line.strip())
+        assert first.startswith(">>> "), f"not a doctest, so not checked: {first!r}"
+
+
+def test_readme_python_runs_and_prints_what_it_shows():
+    """All Python blocks in order in one namespace (``vf.design`` takes about 13 s)."""
+    parser = doctest.DocTestParser()
+    runner = doctest.DocTestRunner(
+        checker=NumberChecker(), verbose=False,
+        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    namespace: dict = {}
+    examples = 0
+    for k, body in enumerate(blocks("python")):
+        test = parser.get_doctest(body, namespace, f"README.md python block {k}", str(README), 0)
+        examples += len(test.examples)
+        runner.run(test, clear_globs=False)
+    result = runner.summarize(verbose=False)
+    assert examples > 20
+    assert result.failed == 0, f"{result.failed} of {result.attempted} README examples failed"
+
+
+# ------------------------------------------------------------------ command line
+def command_lines() -> list[str]:
+    """Each ``vibrofriction ...`` line of the README's shell blocks, continuation lines
+    joined, comments dropped."""
+    out = []
+    for body in blocks("sh"):
+        for line in body.replace("\\\n", " ").splitlines():
+            line = line.partition("#")[0].strip()
+            if line.startswith("vibrofriction "):
+                out.append(line)
+    return out
+
+
+LINES = command_lines()
+
+
+def test_the_readme_shows_every_subcommand():
+    from typer.main import get_command
+
+    from vibrofriction.cli import app
+
+    shown = {shlex.split(line)[1] for line in LINES}
+    assert shown >= {"mu", "fit", "design", "reproduce", "sweep", "explore"}
+    assert shown <= set(get_command(app).commands)
+
+
+@pytest.mark.parametrize("line", LINES)
+def test_readme_command_line_parses(line):
+    """Each option exists on its subcommand and ``--help`` works; the cheap ``mu`` lines
+    run (exit 0: every point computed and trusted)."""
+    from typer.main import get_command
+    from typer.testing import CliRunner
+
+    from vibrofriction.cli import app
+
+    args = shlex.split(line)[1:]
+    command = get_command(app).commands[args[0]]
+    known = {opt for p in command.params for opt in (*p.opts, *p.secondary_opts)}
+    used = {a.partition("=")[0] for a in args[1:] if a.startswith("--")} - {"--help"}
+    assert used <= known, f"{line!r}: unknown options {sorted(used - known)}"
+    runner = CliRunner()
+    help_ = runner.invoke(app, [args[0], "--help"])
+    assert help_.exit_code == 0, help_.output
+    if args[0] == "mu":
+        run = runner.invoke(app, args)
+        assert run.exit_code == 0, run.output
