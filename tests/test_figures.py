@@ -40,7 +40,7 @@ def test_style_is_headless_and_saves_png_and_pdf(tmp_path: Path) -> None:
 # --------------------------------------------------------------------------- series
 def test_series_validates_and_converts() -> None:
     s = series_at_vbar("k", 0.5, 2.0, 0.5, [0.0, 0.5, 1.0])
-    c = theory.inertial_per_vbar(0.5, 2.0, 0.5)
+    c = theory.critical_inertial_velocity(0.5, 2.0, 0.5)
     np.testing.assert_allclose(s.v_inertial, c * np.array([0.0, 0.5, 1.0]))
     with pytest.raises(ValueError, match="v_inertial must be"):
         Series("bad", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))
@@ -171,7 +171,7 @@ def test_soft_law_leading_term_from_the_rigid_body_slip_window() -> None:
 def test_soft_law_corrected_against_the_solver_near_the_soft_limit() -> None:
     vbar = np.array([0.05, 0.2, 0.5, 0.8])
     a = 0.6
-    c = theory.inertial_per_vbar(0.01, 1.0e4, a)
+    c = theory.critical_inertial_velocity(0.01, 1.0e4, a)
     mu = solve_points(0.01, 1.0e4, a, c * vbar)["mu_ratio"]
     np.testing.assert_allclose(mu, theory.mu_ratio_soft_corrected(vbar, a), atol=0.006)
 
