@@ -131,7 +131,7 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     alpha, beta, a, zeta, eta = pin.groups(D, W)
     from .solver import solve_points
 
-    out = solve_points(alpha, beta, a, v0 / pin._velocity_unit(W), zeta, eta)
+    out = solve_points(alpha, beta, a, pin.v0_to_inertial(v0, W), zeta, eta)
     cof = pin.mu0 * out["mu_ratio"]
     feasible = W * D <= vmax * (1 + 1e-12)
     candidates = np.where(feasible & out["trusted"], cof, np.inf)

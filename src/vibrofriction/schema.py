@@ -68,7 +68,7 @@ FIELDS: tuple[Field, ...] = (
     Field("error", "float", "1", "estimated absolute error of mu_ratio, |mu_ratio - exact| "
           "(inf: nothing is known)", "docs/solver.md", column=("float", 1), dtype="f8"),
     Field("trusted", "bool", "1", "the result is trusted: converged status and error <= "
-          "SolverSettings.tol_trusted", dtype="bool"),
+          "tol_trusted (SolverSettings)", dtype="bool"),
     Field("period", "int", "drive periods", "period of the steady orbit (0 = not periodic)",
           column=("int", 1), dtype="i4"),
     Field("periods", "int", "drive periods", "drive periods integrated", column=("int", 2),

@@ -101,8 +101,8 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
     valid = B > A
     cases = np.vectorize(lambda a, b: _CASE_CODE[classify(a, b)] if b > a else -1,
                          otypes=[int])(A, B)
-    ratio = np.where(valid, np.asarray(theory.critical_inertial_velocity(A, np.where(valid, B, A + 1),
-                                                                1.0)), np.nan)
+    ratio = np.where(valid, np.asarray(theory.critical_inertial_velocity(
+        A, np.where(valid, B, A + 1), 1.0)), np.nan)
     ea, eb = cell_edges(alpha, log=True, name="alpha"), cell_edges(beta, log=True, name="beta")
     m = axes[0].pcolormesh(ea, eb, np.ma.masked_invalid(ratio), shading="flat",
                            norm=mcolors.LogNorm(1e-2, 1e2), cmap="cividis", rasterized=True)
