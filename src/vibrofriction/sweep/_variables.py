@@ -117,7 +117,7 @@ def _trusted_attrs() -> dict[str, Any]:
 
 
 def _phase_attrs(prefix: str) -> dict[str, Any]:
-    return {"long_name": prefix + "phase of the contact",
+    return {"long_name": prefix + FIELD["phase"].long_name,
             "flag_values": [STATUS_PENDING, NO_PHASE, *range(len(PHASE_NAMES))],
             "flag_meanings": " ".join(["not_computed", "no_state",
                                        *(_flag_words(p) for p in PHASE_NAMES)])}
