@@ -247,3 +247,15 @@ def test_one_name_for_the_critical_velocity() -> None:
         text = path.read_text()
         assert "_velocity_unit" not in text, path
         assert "inertial_per_vbar" not in text, path
+
+
+def test_the_sweep_fingerprint_covers_the_solver_and_the_schema() -> None:
+    """A store is resumed only by the same solver: every file that computes values counts."""
+    from vibrofriction.sweep import _compute
+
+    root = SRC
+    hashed = {p.resolve() for pattern in _compute._VALUE_SOURCES for p in root.glob(pattern)}
+    for module in (SRC / "solver").glob("*.py"):
+        assert module.resolve() in hashed, module
+    assert (SRC / "schema.py").resolve() in hashed
+    assert all(any(root.glob(pattern)) for pattern in _compute._VALUE_SOURCES)
