@@ -40,7 +40,7 @@ MAPS = ((161, 41, 8), (161, 41, 1), (41, 9, 8), (41, 9, 1), (21, 5, 8), (21, 5, 
 
 def _reference_cof(system: vf.Physical, v0: float) -> float:
     al, be, a, ze, et = (float(x) for x in system.groups(system.du_z, system.omega))
-    V = float(v0 / system._velocity_unit(system.omega))
+    V = float(v0 / system.velocity_unit(system.omega))
     return system.mu0 * return_mapping_mu(al, be, a, V, steps_per_period=1600, zeta=ze,
                                           eta_c=et)
 

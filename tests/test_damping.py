@@ -189,7 +189,7 @@ def test_cli_mu_with_damping_and_for_a_physical_set_up():
                "--vbar", "0.5,1.01", "--json")
     assert out.returncode == 0, out.stderr
     rows = [json.loads(line) for line in out.stdout.splitlines()]
-    assert rows[0]["zeta"] == 0.02 and rows[0]["v_inertial"] == pytest.approx(0.5 * 12.5)
+    assert rows[0]["system"]["zeta"] == 0.02 and rows[0]["v_inertial"] == pytest.approx(0.5 * 12.5)
     assert rows[0]["mu_ratio"] < 1.0 and rows[1]["mu_ratio"] == pytest.approx(1.0, abs=1e-9)
     phys = ("--mass", "0.01", "--k-x", "2.5e5", "--k-xc", "2e5", "--k-zc", "2.5e5", "--u-z0",
             "4e-6", "--du-z", "2e-6", "--omega", "6283", "--mu0", "0.3")
@@ -198,7 +198,7 @@ def test_cli_mu_with_damping_and_for_a_physical_set_up():
     row = json.loads(out.stdout)
     p = vf.Physical(0.01, 2.5e5, 2e5, 2.5e5, 4e-6, 2e-6, 6283.0, 0.3).with_damping(
         quality_factor=50.0)
-    assert row["zeta"] == pytest.approx(0.01) and row["mu_ratio"] == pytest.approx(
+    assert row["system"]["zeta"] == pytest.approx(0.01) and row["mu_ratio"] == pytest.approx(
         vf.friction_coefficient(p, v0=0.001).mu_ratio, abs=1e-12)
     bad = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--eta-c", "-1",
                "--vbar", "0.5")

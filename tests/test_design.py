@@ -25,7 +25,7 @@ SMALL = dict(n_omega=41, n_du_z=9)  # a coarse map: the refinement has to do the
 def _reference_cof(pin, v0, omega, du_z, steps=400):
     """``mu0 mu/mu0`` by peer B (fixed-step Verlet + return mapping; shares no code)."""
     al, be, a, ze, et = (float(x) for x in pin.groups(du_z, omega))
-    V = float(v0 / pin._velocity_unit(omega))
+    V = float(v0 / pin.velocity_unit(omega))
     return pin.mu0 * return_mapping_mu(al, be, a, V, steps_per_period=steps, zeta=ze,
                                        eta_c=et)
 
@@ -76,7 +76,7 @@ def test_the_optimum_beats_a_finer_grid_checked_by_the_reference(result):
     d = np.geomspace(*DU_Z, 33)
     W, D = np.meshgrid(w, d, indexing="ij")
     al, be, a, ze, et = PIN.groups(D, W)
-    out = solve_points(al, be, a, 0.01 / PIN._velocity_unit(W), ze, et)
+    out = solve_points(al, be, a, 0.01 / PIN.velocity_unit(W), ze, et)
     cof = np.where(out["trusted"] & (W * D <= 0.01), PIN.mu0 * out["mu_ratio"], np.inf)
     best = np.argsort(cof, axis=None)[:3]
     reference = [_reference_cof(PIN, 0.01, W.flat[k], D.flat[k]) for k in best]
@@ -92,7 +92,7 @@ def test_the_optimum_recomputed_with_tighter_settings(result):
     s = result.system
     tight = SolverSettings(tol_mean=1e-10, tol_state=1e-13, tol_trusted=1e-8)
     al, be, a, ze, et = PIN.groups(s.du_z, s.omega)
-    out = solve_points(al, be, a, 0.01 / PIN._velocity_unit(s.omega), ze, et, settings=tight)
+    out = solve_points(al, be, a, 0.01 / PIN.velocity_unit(s.omega), ze, et, settings=tight)
     assert bool(out["trusted"])
     bound = PIN.mu0 * (result.error + float(out["error"])) + 1e-15
     assert abs(PIN.mu0 * float(out["mu_ratio"]) - result.cof) <= bound
@@ -162,7 +162,7 @@ def test_untrusted_values_are_never_the_optimum_and_are_counted(monkeypatch):
 
 def _groups_at(s, v0):
     al, be, a, ze, et = s.groups(s.du_z, s.omega)
-    return al, be, a, v0 / s._velocity_unit(s.omega), ze, et
+    return al, be, a, v0 / s.velocity_unit(s.omega), ze, et
 
 
 def test_an_amplitude_range_from_zero():

@@ -219,7 +219,7 @@ def test_shares_of_the_curve_merge_into_the_whole():
     state = State(points=31)
     whole = compute.curve(state)
     merged = compute.merge([compute.curve(state, part=(i, 3)) for i in range(3)])
-    for name in ("x", "y", "trusted", "status", "error", "V"):
+    for name in compute.POINT_COLUMNS:
         np.testing.assert_array_equal(merged[name], whole[name])
     assert merged["closed_forms"] == whole["closed_forms"] == []
     stiff = State(alpha=0.01, beta=0.02, points=9)

@@ -40,7 +40,7 @@ def test_style_is_headless_and_saves_png_and_pdf(tmp_path: Path) -> None:
 # --------------------------------------------------------------------------- series
 def test_series_validates_and_converts() -> None:
     s = series_at_vbar("k", 0.5, 2.0, 0.5, [0.0, 0.5, 1.0])
-    c = theory.inertial_per_vbar(0.5, 2.0, 0.5)
+    c = theory.critical_inertial_velocity(0.5, 2.0, 0.5)
     np.testing.assert_allclose(s.v_inertial, c * np.array([0.0, 0.5, 1.0]))
     with pytest.raises(ValueError, match="v_inertial must be"):
         Series("bad", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))
@@ -171,7 +171,7 @@ def test_soft_law_leading_term_from_the_rigid_body_slip_window() -> None:
 def test_soft_law_corrected_against_the_solver_near_the_soft_limit() -> None:
     vbar = np.array([0.05, 0.2, 0.5, 0.8])
     a = 0.6
-    c = theory.inertial_per_vbar(0.01, 1.0e4, a)
+    c = theory.critical_inertial_velocity(0.01, 1.0e4, a)
     mu = solve_points(0.01, 1.0e4, a, c * vbar)["mu_ratio"]
     np.testing.assert_allclose(mu, theory.mu_ratio_soft_corrected(vbar, a), atol=0.006)
 
@@ -237,19 +237,15 @@ def test_checks_report_a_violation_they_are_fed() -> None:
     from vibrofriction.figures.series import Curve
 
     s = series_at_vbar("k", 0.5, 2.0, 0.5, [0.1, 0.2, 0.3, 0.4])
-    n = 4
-    c = Curve(s, np.array([0.5, 0.6, 0.55, 0.7]), np.full(n, 1e-12), np.zeros(n, int),
-              np.ones(n, int), np.zeros(n), np.zeros(n), np.ones(n, bool), np.full(n, np.nan),
-              np.full(n, np.nan))
+    c = Curve.of(s, mu_ratio=[0.5, 0.6, 0.55, 0.7], error=1e-12, status=0, period=1,
+                 stick_fraction=0.0, flight_fraction=0.0, trusted=True)
     worst, where = monotonicity({"k": c})
     assert worst == pytest.approx(0.05) and "vbar = 0.2..0.3" in where
-    ok = Curve(s, np.array([0.5, 0.6, 0.65, 0.7]), *[getattr(c, f) for f in (
-        "error", "status", "period", "stick_fraction", "flight_fraction", "trusted",
-        "window_min", "window_max")])
+    ok = Curve(s, {**c.columns, "mu_ratio": np.array([0.5, 0.6, 0.65, 0.7])})
     assert monotonicity({"k": ok})[0] == 0.0
-    nc = Curve(s, np.array([0.5, np.nan, 0.65, 0.7]), np.array([0, np.inf, 0, 0]),
-               np.array([0, 2, 0, 0]), np.ones(n, int), np.zeros(n), np.zeros(n),
-               np.array([True, False, True, True]), np.full(n, 0.4), np.full(n, 0.6))
+    nc = Curve.of(s, mu_ratio=[0.5, np.nan, 0.65, 0.7], error=[0, np.inf, 0, 0],
+                  status=[0, 2, 0, 0], period=1, stick_fraction=0.0, flight_fraction=0.0,
+                  trusted=[True, False, True, True], window_min=0.4, window_max=0.6)
     assert "1 not converged" in status_note({"k": nc}) and "(0.5, 2): 1" in status_note({"k": nc})
 
 
@@ -262,8 +258,8 @@ def _curve(s: Series, mu, *, trusted=None, status: vf.Status = vf.Status.PERIODI
     n = s.size
     mu = np.asarray(mu, dtype=float)
     ok = np.ones(n, bool) if trusted is None else np.asarray(trusted, bool)
-    return Curve(s, mu, np.where(ok, 0.0, np.inf), np.full(n, _CODE[status]), np.ones(n, int),
-                 np.zeros(n), np.zeros(n), ok, np.full(n, np.nan), np.full(n, np.nan))
+    return Curve.of(s, mu_ratio=mu, error=np.where(ok, 0.0, np.inf), status=_CODE[status],
+                    period=1, stick_fraction=0.0, flight_fraction=0.0, trusted=ok)
 
 
 def test_matrix_checks_report_eq12_case_iii_and_plateau_violations() -> None:

@@ -126,8 +126,9 @@ def _curve(s: Series, mu, trusted=None) -> Curve:
     ok = np.ones(n, bool) if trusted is None else np.asarray(trusted, bool)
     mu = np.asarray(mu, dtype=float)
     status = np.where(np.isfinite(mu), _CODE[vf.Status.PERIODIC], _CODE[vf.Status.NOT_CONVERGED])
-    return Curve(s, mu, np.where(ok, 0.0, np.inf), status, np.ones(n, int), np.zeros(n),
-                 np.zeros(n), ok, np.full(n, 0.4), np.full(n, 0.6))
+    return Curve.of(s, mu_ratio=mu, error=np.where(ok, 0.0, np.inf), status=status, period=1,
+                    stick_fraction=0.0, flight_fraction=0.0, trusted=ok, window_min=0.4,
+                    window_max=0.6)
 
 
 def test_damped_onset_and_case_iv_checks_report_violations() -> None:

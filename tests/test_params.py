@@ -60,13 +60,12 @@ def test_dimensionless_flags() -> None:
     assert Dimensionless(1.0, math.inf, 0.5).case is Case.RESONANT_SYSTEM
 
 
-def test_inertial_per_vbar_formula() -> None:
+def test_critical_inertial_velocity_formula() -> None:
     alpha, beta, a = 0.3, 2.5, 0.8
     c = a * abs(beta - 1) / ((beta - alpha) * abs(alpha - 1))
     d = Dimensionless(alpha, beta, a)
-    assert d.inertial_per_vbar == pytest.approx(c, rel=1e-15)
     assert d.critical_inertial_velocity() == pytest.approx(c, rel=1e-15)
-    assert Dimensionless(0.3, math.inf, a).inertial_per_vbar == pytest.approx(a / 0.7)
+    assert Dimensionless(0.3, math.inf, a).critical_inertial_velocity() == pytest.approx(a / 0.7)
     assert d.vbar_to_inertial(1.0) == pytest.approx(c)
     np.testing.assert_allclose(d.vbar_to_inertial(np.array([0.0, 2.0])), [0.0, 2 * c])
 

@@ -105,29 +105,29 @@ def test_critical_velocity_rejects() -> None:
         theory.critical_velocity(MU0, W, DUZ, KZC, MW2, MW2, -1.0)
 
 
-def test_inertial_per_vbar_matches_eq12() -> None:
+def test_critical_inertial_velocity_matches_eq12() -> None:
     """c * mu0 F_N0 / (m omega) is v0* of eq. (12)."""
     u_z0 = 4.0 * DUZ
     unit = MU0 * KZC * u_z0 / (M * W)
     for k_x, k_xc in [(0.3, 2.0), (2.0, 0.01), (0.01, 400.0), (5.0, math.inf)]:
         alpha, beta = k_x, k_x + k_xc
-        c = theory.inertial_per_vbar(alpha, beta, DUZ / u_z0)
+        c = theory.critical_inertial_velocity(alpha, beta, DUZ / u_z0)
         v = theory.critical_velocity(MU0, W, DUZ, KZC, k_xc * MW2, k_x * MW2, M)
         assert c * unit == pytest.approx(v, rel=1e-12)
 
 
-def test_inertial_per_vbar_limits() -> None:
+def test_critical_inertial_velocity_limits() -> None:
     a = 0.7
-    assert theory.inertial_per_vbar(0.5, math.inf, a) == pytest.approx(a / 0.5)
-    assert theory.inertial_per_vbar(0.5, 1e12, a) == pytest.approx(a / 0.5, rel=1e-11)
-    assert theory.inertial_per_vbar(1e-9, 1e9, a) == pytest.approx(a, rel=1e-8)  # eq. (13)
-    assert theory.inertial_per_vbar(1.0, 2.0, a) == math.inf
-    assert theory.inertial_per_vbar(0.5, 1.0, a) == 0.0
-    assert theory.inertial_per_vbar(1.0, 2.0, 0.0) == 0.0
+    assert theory.critical_inertial_velocity(0.5, math.inf, a) == pytest.approx(a / 0.5)
+    assert theory.critical_inertial_velocity(0.5, 1e12, a) == pytest.approx(a / 0.5, rel=1e-11)
+    assert theory.critical_inertial_velocity(1e-9, 1e9, a) == pytest.approx(a, rel=1e-8)  # eq. (13)
+    assert theory.critical_inertial_velocity(1.0, 2.0, a) == math.inf
+    assert theory.critical_inertial_velocity(0.5, 1.0, a) == 0.0
+    assert theory.critical_inertial_velocity(1.0, 2.0, 0.0) == 0.0
     with pytest.raises(ValueError, match=r"beta must be > alpha \(= 0.5\) or math.inf, got 0.3"):
-        theory.inertial_per_vbar(0.5, 0.3, a)
+        theory.critical_inertial_velocity(0.5, 0.3, a)
     with pytest.raises(ValueError, match="beta must be > alpha"):
-        theory.inertial_per_vbar(0.5, math.nan, a)
+        theory.critical_inertial_velocity(0.5, math.nan, a)
 
 
 # --------------------------------------------------------------------------- eqs. (7)-(10)
@@ -174,7 +174,7 @@ def test_steady_sliding_matches_dimensional_eq10() -> None:
 @pytest.mark.parametrize(("alpha", "beta", "a"), [c for c in STEADY_CASES if c[1] != 1.0])
 def test_contact_velocity_threshold_is_vbar_one(alpha: float, beta: float, a: float) -> None:
     """x_c' > 0 for vbar > 1, min exactly 0 at vbar = 1 (eqs. 11-12)."""
-    c = theory.inertial_per_vbar(alpha, beta, a)
+    c = theory.critical_inertial_velocity(alpha, beta, a)
     tau = np.concatenate([np.linspace(0.0, TWO_PI, 2001), [0.5 * math.pi, 1.5 * math.pi]])
     at_one = np.asarray(theory.steady_sliding(tau, alpha, beta, a, c).contact_velocity)
     assert np.min(at_one) == pytest.approx(0.0, abs=1e-12 * c)
@@ -370,7 +370,7 @@ def test_steady_sliding_contact_never_reverses_above_critical(
 ) -> None:
     if abs(alpha - 1.0) < 1e-6 or abs(alpha + gap - 1.0) < 1e-9:
         return
-    c = theory.inertial_per_vbar(alpha, alpha + gap, a)
+    c = theory.critical_inertial_velocity(alpha, alpha + gap, a)
     tau = np.linspace(0.0, TWO_PI, 257)
     s = theory.steady_sliding(tau, alpha, alpha + gap, a, vbar * c)
     assert np.min(s.contact_velocity) >= -1e-9 * max(c, 1.0)

@@ -144,7 +144,7 @@ def _solve(pin: Physical, v0: float, omega, du_z,
     driven at ``omega`` (rad/s) with ``du_z`` (m), at the sliding velocity ``v0`` (m/s)."""
     omega, du_z = np.broadcast_arrays(np.asarray(omega, float), np.asarray(du_z, float))
     alpha, beta, a, zeta, eta = pin.groups(du_z, omega)
-    out = solve_points(alpha, beta, a, v0 / pin._velocity_unit(omega), zeta, eta,
+    out = solve_points(alpha, beta, a, pin.v0_to_inertial(v0, omega), zeta, eta,
                        settings=settings)
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),

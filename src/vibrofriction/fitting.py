@@ -102,7 +102,7 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
     (nan where it has none at all).
     """
     alpha, beta, a, zeta, eta = system.groups(du_z, omega)
-    V = np.asarray(v0, dtype=float) / system._velocity_unit(omega)
+    V = system.v0_to_inertial(v0, omega)
     out = solve_points(alpha, beta, a, V, zeta, eta, settings=settings)
     mu = np.where(np.isfinite(out["mu_ratio"]), out["mu_ratio"],
                   0.5 * (out["window_min"] + out["window_max"]))

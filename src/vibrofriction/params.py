@@ -25,8 +25,8 @@ from vibrofriction import theory
 from vibrofriction.contact import FlatPunch, Material, Sphere
 from vibrofriction.validation import as_float_or_array, checked, checked_beta
 
-__all__ = ["Case", "Dimensionless", "Physical", "classify", "inertial_to_vbar", "pin_damping",
-           "vbar_factor", "vbar_to_inertial"]
+__all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
+           "inertial_to_vbar", "inertial_velocity", "pin_damping", "vbar_to_inertial"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -75,9 +75,9 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
     return "beta == 1 (case III): v0* is zero"
 
 
-def vbar_factor(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike, zeta: ArrayLike = 0.0,
-                eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
-    """``c = V/vbar = V_c`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
+def _critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                       zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
+    """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
     ValueError where ``vbar`` is undefined."""
     al = checked("alpha", alpha, minimum=0.0, strict=True)
     am = checked("amplitude", amplitude, minimum=0.0)
@@ -98,7 +98,7 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
     """
     v = checked("vbar", vbar, minimum=0.0)
-    return as_float_or_array(vbar_factor(alpha, beta, amplitude, zeta, eta_c) * v)
+    return as_float_or_array(_critical_for_vbar(alpha, beta, amplitude, zeta, eta_c) * v)
 
 
 def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
@@ -106,7 +106,7 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
     V = checked("v_inertial", v_inertial, minimum=0.0)
-    return as_float_or_array(V / vbar_factor(alpha, beta, amplitude, zeta, eta_c))
+    return as_float_or_array(V / _critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 
 
 # --------------------------------------------------------------------------- cases
@@ -246,11 +246,6 @@ class Dimensionless:
     def jumping(self) -> bool:
         """``True`` if the contact opens once per period, ``a > 1``."""
         return self.amplitude > 1.0
-
-    @property
-    def inertial_per_vbar(self) -> float:
-        """``c`` with ``V = c vbar``: the critical inertial velocity ``V_c``."""
-        return self.critical_inertial_velocity()
 
     def critical_inertial_velocity(self) -> float:
         """``V_c``, the inertial velocity at ``vbar = 1`` (eq. 12 with damping).
@@ -489,19 +484,22 @@ class Physical:
                                               self.k_xc, self.k_x, self.mass, self.c_x,
                                               self.c_xc))
 
-    def _velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
-        """``mu0 F_N0 / (m omega)`` (at this pin's ``omega`` unless another is given)."""
-        omega = self.omega if omega is None else np.asarray(omega, dtype=float)
-        return self.mu0 * self.F_N0 / (self.mass * omega)
+    def velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
+        """The unit of the inertial velocity, ``mu0 F_N0 / (m omega)`` in m/s (Fig. 6), at
+        this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s)."""
+        omega = self.omega if omega is None else checked("omega", omega, minimum=0.0,
+                                                         strict=True)
+        return as_float_or_array(self.mu0 * self.F_N0 / (self.mass * omega))
 
-    def v0_to_inertial(self, v0: ArrayLike) -> FloatOrArray:
-        """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6."""
-        return as_float_or_array(checked("v0", v0, minimum=0.0) / self._velocity_unit())
+    def v0_to_inertial(self, v0: ArrayLike, omega: ArrayLike | None = None) -> FloatOrArray:
+        """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6 (at this pin's
+        ``omega`` or, elementwise, at other drive frequencies ``omega``, rad/s)."""
+        return as_float_or_array(checked("v0", v0, minimum=0.0) / self.velocity_unit(omega))
 
     def inertial_to_v0(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``v0 = V mu0 F_N0 / (m omega)``, m/s."""
         return as_float_or_array(checked("v_inertial", v_inertial, minimum=0.0)
-                                 * self._velocity_unit())
+                                 * self.velocity_unit())
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
         """``vbar = v0 / v0*`` (eq. 16); ValueError where ``v0*`` is 0 or infinite."""
@@ -510,3 +508,47 @@ class Physical:
     def vbar_to_v0(self, vbar: ArrayLike) -> FloatOrArray:
         """``v0 = vbar v0*`` (eq. 16), m/s; ValueError where ``v0*`` is 0 or infinite."""
         return self.inertial_to_v0(self.to_dimensionless().vbar_to_inertial(vbar))
+
+
+# --------------------------------------------------------------------------- the one conversion
+System = Dimensionless | Physical
+
+
+def dimensionless(system: System) -> Dimensionless:
+    """The :class:`Dimensionless` groups of ``system`` (eq. 20; itself if it is one)."""
+    if isinstance(system, Physical):
+        return system.to_dimensionless()
+    if isinstance(system, Dimensionless):
+        return system
+    raise TypeError(f"system must be a Dimensionless or Physical, got {type(system).__name__}")
+
+
+def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
+                      v_inertial: ArrayLike | None = None,
+                      v0: ArrayLike | None = None) -> FloatOrArray:
+    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6) from exactly one of
+    ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
+    :class:`Physical` system only), elementwise: the package's one decision of which
+    velocity was given.  ValueError naming the parameter where it is invalid (negative,
+    not finite) or undefined (``vbar`` in cases III and IV: :meth:`Dimensionless.
+    critical_inertial_velocity` is 0 or inf there).
+    """
+    if v_inertial.__class__ is float and vbar is None and v0 is None:  # the common fast path
+        if not (math.isfinite(v_inertial) and v_inertial >= 0.0):
+            raise ValueError(f"v_inertial must be finite and >= 0, got {v_inertial!r}")
+        return v_inertial
+    given = [name for name, v in (("vbar", vbar), ("v_inertial", v_inertial), ("v0", v0))
+             if v is not None]
+    if len(given) != 1:
+        raise ValueError("give exactly one velocity: vbar (v0/v0*), v_inertial "
+                         f"(v0 m omega/(mu0 F_N0)) or v0 (m/s); got "
+                         f"{' and '.join(given) or 'none'}")
+    if v0 is not None:
+        if not isinstance(system, Physical):
+            dimensionless(system)  # a TypeError for what is no system at all
+            raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
+        return system.v0_to_inertial(v0)
+    if vbar is not None:
+        return dimensionless(system).vbar_to_inertial(vbar)
+    dimensionless(system)
+    return as_float_or_array(checked("v_inertial", v_inertial, minimum=0.0))

@@ -47,7 +47,6 @@ __all__ = [
     "critical_velocity",
     "critical_velocity_soft",
     "critical_velocity_stiff",
-    "inertial_per_vbar",
     "liftoff_phases",
     "mean_normal_force",
     "mu_ratio_soft",
@@ -197,10 +196,6 @@ def critical_inertial_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arr
     return as_float_or_array(_ratio_or_inf(num, np.abs(detuning) * np.sqrt(1.0 + eta**2)))
 
 
-#: The factor ``c`` in ``V = c vbar`` is the critical inertial velocity (eq. 16).
-inertial_per_vbar = critical_inertial_velocity
-
-
 # --------------------------------------------------------------------------- eqs. (7)-(10)
 class SteadySliding(NamedTuple):
     """Periodic continuous-sliding solution, eqs. (7), (8), (10), scaled (see module doc)."""
@@ -230,7 +225,7 @@ def steady_sliding(tau: ArrayLike, alpha: ArrayLike, beta: ArrayLike, amplitude:
     .. math:: x_c' = V - a \sin\tau \frac{\beta - 1}{(1 - \alpha)(\beta - \alpha)},
 
     (``x_c' = x'`` for ``beta = inf``), whose minimum over a period is ``V - c``
-    with ``c = inertial_per_vbar(alpha, beta, a)``: the solution is a physical
+    with ``c = critical_inertial_velocity(alpha, beta, a)``: the solution is a physical
     motion (no stick) exactly when ``vbar >= 1``, eqs. (11)-(12).
 
     Validity: ``alpha > 0``, ``alpha != 1`` (at resonance there is no periodic

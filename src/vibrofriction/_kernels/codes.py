@@ -1,4 +1,10 @@
-"""Named integer constants shared by the kernels and the Python layer."""
+"""Named integer constants shared by the kernels and the Python layer.
+
+The output column indices and the status codes are derived from
+:mod:`vibrofriction.schema` (standard library only), the one place they are defined.
+"""
+
+from vibrofriction.schema import Status, column_index
 
 # phases of the contact
 STICK = 0
@@ -21,10 +27,39 @@ EV_NONE = -1  # no event (the start of a history)
 
 EVENT_NAMES = ("stick->slip", "slip->stick", "reversal", "lift-off", "touchdown", "section")
 
-# steady-state status
-ST_PERIODIC = 0
-ST_AVERAGED = 1
-ST_NOT_CONVERGED = 2
-ST_FAILED = 3  # the event budget was exhausted or the integration got stuck
-ST_SLIDING = 4  # continuous forward sliding proven (mu/mu0 = 1 exactly)
-ST_STATIC = -1  # zero velocity: the static limit of eq. (2), not computed by the kernels
+# steady-state status (vibrofriction.schema.Status)
+ST_PERIODIC = Status.PERIODIC.code
+ST_AVERAGED = Status.AVERAGED.code
+ST_NOT_CONVERGED = Status.NOT_CONVERGED.code
+ST_FAILED = Status.FAILED.code  # the event budget was exhausted or the integration got stuck
+ST_SLIDING = Status.SLIDING.code  # continuous forward sliding proven (mu/mu0 = 1 exactly)
+ST_STATIC = Status.STATIC.code  # zero velocity: the static limit, not computed by the kernels
+
+# output rows of the steady state (vibrofriction.schema.FLOAT_COLUMNS, INT_COLUMNS)
+O_MU = column_index("mu_ratio")
+O_ERR = column_index("error")
+O_STICK = column_index("stick_fraction")
+O_SLIP = column_index("slip_fraction")
+O_SLIP_NEG = column_index("reverse_slip_fraction")
+O_FLIGHT = column_index("flight_fraction")
+O_Y = column_index("y")
+O_XD = column_index("x_dot")
+O_F = column_index("f")
+O_MULT = column_index("multiplier")
+O_SETTLE = column_index("settling_periods")
+O_WMIN = column_index("window_min")
+O_WMAX = column_index("window_max")
+O_DRIFT = column_index("drift_rate")
+O_E = column_index("e")
+I_STATUS = column_index("status")
+I_PERIOD = column_index("period")
+I_PERIODS = column_index("periods")
+I_EVENTS = column_index("events")
+I_PHASE = column_index("phase")
+I_DEGENERATE = column_index("degenerate")
+
+# columns of a history row (integrate.run_periods)
+SEG_TAU, SEG_Y, SEG_XD, SEG_F, SEG_PHASE, SEG_EVENT, SEG_INT_F, SEG_INT_N = range(8)
+SEG_THETA, SEG_E, SEG_E_DOT = 8, 9, 10
+# columns of a sampled history (integrate.sample)
+SMP_Y, SMP_XD, SMP_F, SMP_N, SMP_PHASE, SMP_E = range(6)

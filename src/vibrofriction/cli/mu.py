@@ -9,7 +9,7 @@ import numpy as np
 import typer
 
 from ..params import Dimensionless, Physical
-from ..solver import SolverSettings, friction_coefficient
+from ..solver import FrictionResult, SolverSettings, friction_coefficient
 from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
 
@@ -54,7 +54,8 @@ def mu_command(
     tol_trusted: Annotated[float, typer.Option(
         help="largest error of a trusted point; exit code 3 if any point is not trusted")
     ] = SolverSettings.tol_trusted,
-    as_json: Annotated[bool, typer.Option("--json", help="one JSON object per point")] = False,
+    as_json: Annotated[bool, typer.Option(
+        "--json", help="one JSON object per point: every field of the result")] = False,
 ) -> None:
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
 
@@ -110,13 +111,26 @@ def _physical(phys: dict, c_x: str, c_xc: str, quality_factor: str | None,
 
 def _dimensionless(system: Dimensionless, vbar: str | None, v_inertial: str | None,
                    initial: str, settings: SolverSettings):
-    if (vbar is None) == (v_inertial is None):
-        raise ValueError("give exactly one of --vbar and --v-inertial")
-    if vbar is not None:
-        speeds = np.array(parse_list(vbar, "vbar"))
-        return friction_coefficient(system, vbar=speeds, initial=initial, settings=settings)
-    speeds = np.array(parse_list(v_inertial, "v_inertial"))
-    return friction_coefficient(system, v_inertial=speeds, initial=initial, settings=settings)
+    speeds = {name: None if text is None else np.array(parse_list(text, name))
+              for name, text in (("vbar", vbar), ("v_inertial", v_inertial))}
+    return friction_coefficient(system, **speeds, initial=initial, settings=settings)
+
+
+def _json_value(v):
+    if isinstance(v, float):
+        return json_number(v)
+    if isinstance(v, dict):
+        return {k: _json_value(x) for k, x in v.items()}
+    return v
+
+
+def json_row(r: FrictionResult) -> dict:
+    """Every field of a result (:data:`vibrofriction.schema.RESULT_FIELDS`, JSON-safe:
+    nan as null, inf as "inf"), its ``vbar`` and its message."""
+    row = {k: _json_value(v) for k, v in r.as_dict().items()}
+    row["vbar"] = json_number(r.vbar)
+    row["message"] = r.message
+    return row
 
 
 def _print(system: Dimensionless, results, as_json: bool) -> None:
@@ -127,19 +141,7 @@ def _print(system: Dimensionless, results, as_json: bool) -> None:
         typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} {'error':>9}  status")
     for r in results:
         if as_json:
-            typer.echo(json.dumps({
-                "alpha": json_number(system.alpha), "beta": json_number(system.beta),
-                "amplitude": system.amplitude, "zeta": system.zeta, "eta_c": system.eta_c,
-                "vbar": json_number(r.vbar),
-                "v_inertial": r.v_inertial, "mu_ratio": json_number(r.mu_ratio),
-                "status": r.status.value, "period": r.period, "error": json_number(r.error),
-                "trusted": r.trusted, "multiplier": json_number(r.multiplier),
-                "settling_periods": json_number(r.settling_periods),
-                "periods": r.periods, "events": r.events,
-                "stick_fraction": json_number(r.stick_fraction),
-                "slip_fraction": json_number(r.slip_fraction),
-                "flight_fraction": json_number(r.flight_fraction),
-                "message": r.message}))
+            typer.echo(json.dumps(json_row(r)))
         else:
             typer.echo(f"{r.vbar:>10.4g} {r.v_inertial:>12.5g} {r.mu_ratio:>14.10f} "
                        f"{r.error:>9.1e}  {r.status.value}"

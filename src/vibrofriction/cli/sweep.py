@@ -13,7 +13,7 @@ import numpy as np
 import typer
 
 from ..params import Physical
-from ..solver import STATUS_BY_CODE, SolverSettings
+from ..solver import STATUS_BY_CODE, SolverSettings, converged
 from ._app import app, friendly
 
 _AXIS = "a value, a comma list, or start:stop:num[:log]"
@@ -175,13 +175,13 @@ def _untrusted(ds) -> str:
         return ""
     status = np.asarray(ds["status"].values)
     bad = ~trusted
-    converged = np.isin(status, [c for c, st in STATUS_BY_CODE.items() if st.ok])
+    ok = converged(status)
     parts = [f"status {STATUS_BY_CODE[int(c)].value}: {int(np.sum(bad & (status == c)))}"
-             for c in np.unique(status[bad & ~converged]) if int(c) in STATUS_BY_CODE]
+             for c in np.unique(status[bad & ~ok]) if int(c) in STATUS_BY_CODE]
     pending = int(np.sum(bad & ~np.isin(status, list(STATUS_BY_CODE))))
     if pending:
         parts.append(f"not computed: {pending}")
-    large = int(np.sum(bad & converged))
+    large = int(np.sum(bad & ok))
     if large:
         parts.append(f"error > tol_trusted = {ds.attrs.get('solver_tol_trusted', 'nan'):g}: "
                      f"{large}")

@@ -11,6 +11,9 @@ import numpy as np
 
 import vibrofriction as vf
 from vibrofriction import theory
+from vibrofriction.params import dimensionless as _dimensionless
+from vibrofriction.params import inertial_velocity
+from vibrofriction.schema import RESULT_FIELDS
 
 from .state import AXES, State
 
@@ -19,10 +22,6 @@ __all__ = ["case_map", "curve", "history", "measurement_curves", "parse_measurem
 
 CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
                "general": "#f0f0f0"}
-
-
-def _dimensionless(system) -> vf.Dimensionless:
-    return system.to_dimensionless() if isinstance(system, vf.Physical) else system
 
 
 def _to_axis(state: State, system, V: np.ndarray) -> np.ndarray:
@@ -34,16 +33,16 @@ def _to_axis(state: State, system, V: np.ndarray) -> np.ndarray:
     return np.asarray(system.inertial_to_v0(V), dtype=float)
 
 
-_POINT_COLUMNS = ("x", "y", "trusted", "status", "error", "V")
+#: The result fields a curve holds, one value per point (the schema's, by name; ``status``
+#: as its name): every field but the section state and the system.
+RESULT_COLUMNS = tuple(f.name for f in RESULT_FIELDS if f.name not in ("final_state", "system"))
+#: Every per-point array of a curve: the axis ``x``, the plotted ``y`` and the results.
+POINT_COLUMNS = ("x", "y", *RESULT_COLUMNS)
 
 
 def _inertial(state: State, system, x: np.ndarray) -> np.ndarray:
-    """The curve's velocities ``x`` as inertial velocities (the library's conversions)."""
-    if state.axis == "V":
-        return np.asarray(x, dtype=float)
-    if state.axis == "vbar":
-        return np.asarray(_dimensionless(system).vbar_to_inertial(x), dtype=float)
-    return np.asarray(system.v0_to_inertial(x), dtype=float)
+    """The curve's velocities ``x`` as inertial velocities (the library's conversion)."""
+    return np.asarray(inertial_velocity(system, **{state.velocity_keyword(): x}), dtype=float)
 
 
 def merge(parts: list[dict]) -> dict:
@@ -51,7 +50,7 @@ def merge(parts: list[dict]) -> dict:
     n = len(parts)
     out = dict(parts[0])
     size = sum(len(p["x"]) for p in parts)
-    for name in _POINT_COLUMNS:
+    for name in POINT_COLUMNS:
         col = np.empty(size, dtype=np.asarray(parts[0][name]).dtype)
         for i, p in enumerate(parts):
             col[i::n] = p[name]
@@ -79,12 +78,10 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
     case = vf.classify(dim.alpha, dim.beta)
-    y = np.asarray(res.mu_ratio, dtype=float) * scale
-    trusted = np.asarray(res.trusted, dtype=bool)
+    results = {k: np.asarray(getattr(res, k)) for k in RESULT_COLUMNS}
+    results["status"] = np.asarray([s.value for s in res.status], dtype=object)
     return {
-        "x": x, "y": y, "trusted": trusted,
-        "status": np.asarray([s.value for s in res.status], dtype=object),
-        "error": np.asarray(res.error, dtype=float), "V": np.asarray(res.v_inertial),
+        "x": x, "y": np.asarray(res.mu_ratio, dtype=float) * scale, **results,
         "static": float(theory.static_mu_ratio(dim.amplitude)) * scale,
         "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,

@@ -54,7 +54,7 @@ def _series(quick: bool) -> tuple[Series, ...]:
         al = alpha[valid[i]]
         if al.size == 0:
             continue
-        c = np.asarray(theory.inertial_per_vbar(al, b, a))
+        c = np.asarray(theory.critical_inertial_velocity(al, b, a))
         for kind, V, vb in (("vbar", c * MAP_VBAR, np.full(al.size, MAP_VBAR)),
                             ("V", np.full(al.size, MAP_V_INERTIAL), MAP_V_INERTIAL / c)):
             # one series per (row, map) with varying alpha: carry alpha in meta
@@ -101,8 +101,8 @@ def _draw(curves: Mapping[str, Curve], alpha: np.ndarray, beta: np.ndarray):
     valid = B > A
     cases = np.vectorize(lambda a, b: _CASE_CODE[classify(a, b)] if b > a else -1,
                          otypes=[int])(A, B)
-    ratio = np.where(valid, np.asarray(theory.inertial_per_vbar(A, np.where(valid, B, A + 1),
-                                                                1.0)), np.nan)
+    ratio = np.where(valid, np.asarray(theory.critical_inertial_velocity(
+        A, np.where(valid, B, A + 1), 1.0)), np.nan)
     ea, eb = cell_edges(alpha, log=True, name="alpha"), cell_edges(beta, log=True, name="beta")
     m = axes[0].pcolormesh(ea, eb, np.ma.masked_invalid(ratio), shading="flat",
                            norm=mcolors.LogNorm(1e-2, 1e2), cmap="cividis", rasterized=True)
@@ -141,7 +141,7 @@ def maps(quick: bool = False) -> Recipe:
         valid = B > A
         mu_vbar, ok_vbar = map_field(curves, "vbar", alpha, beta)
         mu_V, ok_V = map_field(curves, "V", alpha, beta)
-        ratio = np.asarray(theory.inertial_per_vbar(A[valid], B[valid], 1.0))
+        ratio = np.asarray(theory.critical_inertial_velocity(A[valid], B[valid], 1.0))
         cases = [classify(a, b).value for a, b in zip(A[valid], B[valid], strict=True)]
         table = Table("Maps over (alpha, beta)", (
             f"amplitude a = {MAP_AMPLITUDE}; grid alpha in {_ALPHA_RANGE} ({alpha.size} log "

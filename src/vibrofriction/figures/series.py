@@ -20,11 +20,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..params import Physical, vbar_to_inertial
-from ..solver import STATUS_BY_CODE, SolverSettings, solve_points
+from ..schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE
+from ..solver import SolverSettings, converged, solve_points
 from ..validation import checked
 
-__all__ = ["Curve", "Runner", "Series", "series_at_vbar", "series_of_physical", "solve",
-           "status_counts"]
+__all__ = ["CURVE_COLUMNS", "Curve", "Runner", "Series", "series_at_vbar",
+           "series_of_physical", "solve", "status_counts"]
 
 #: ``runner(alpha, beta, amplitude, v_inertial, settings=...) -> dict of arrays``.
 Runner = Callable[..., dict[str, NDArray]]
@@ -90,28 +91,52 @@ def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: obje
                   zeta=dim.zeta, eta_c=dim.eta_c)
 
 
+#: The columns of a :class:`Curve`: those of :func:`solve_points` (the schema's kernel
+#: columns and ``trusted``), by name.
+CURVE_COLUMNS = (*FLOAT_COLUMNS, *INT_COLUMNS, "trusted")
+
+
 @dataclass(frozen=True)
 class Curve:
-    """A solved :class:`Series`: ``mu_ratio`` (eq. 25), its ``error``, status codes and
-    ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`)."""
+    """A solved :class:`Series`: every column :func:`solve_points` returns (named by
+    :mod:`vibrofriction.schema`: ``mu_ratio`` (eq. 25), its ``error``, status codes,
+    ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`) ...) as an
+    attribute of the same name."""
 
     series: Series
-    mu_ratio: NDArray[np.float64]
-    error: NDArray[np.float64]
-    status: NDArray[np.int64]
-    period: NDArray[np.int64]
-    stick_fraction: NDArray[np.float64]
-    flight_fraction: NDArray[np.float64]
-    trusted: NDArray[np.bool_]
-    window_min: NDArray[np.float64]
-    window_max: NDArray[np.float64]
+    columns: Mapping[str, NDArray]
+
+    def __post_init__(self) -> None:
+        missing = [k for k in CURVE_COLUMNS if k not in self.columns]
+        if missing:
+            raise ValueError(f"curve {self.series.key!r} lacks the columns {missing}")
+
+    @classmethod
+    def of(cls, series: Series, **columns: ArrayLike) -> Curve:
+        """A curve with the given columns; the others hold what no result holds (nan, -1,
+        not trusted): for curves made by hand."""
+        def filled(k: str) -> NDArray:
+            if k in columns:
+                return np.broadcast_to(np.asarray(columns[k]), (series.size,)).copy()
+            kind = "bool" if k == "trusted" else FIELD[k].column[0]
+            return np.full(series.size, {"float": np.nan, "int": -1, "bool": False}[kind])
+
+        unknown = set(columns) - set(CURVE_COLUMNS)
+        if unknown:
+            raise ValueError(f"unknown curve columns {sorted(unknown)}")
+        return cls(series, {k: filled(k) for k in CURVE_COLUMNS})
+
+    def __getattr__(self, name: str) -> NDArray:
+        columns = self.__dict__.get("columns", {})
+        if name in columns:
+            return columns[name]
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     @property
     def suspicious(self) -> NDArray[np.bool_]:
         """Points whose status claims convergence but whose error estimate is too large
         to trust; drawn as open circles and listed in the report."""
-        status_ok = np.array([STATUS_BY_CODE[int(s)].ok for s in self.status], dtype=bool)
-        return status_ok & ~self.trusted
+        return converged(self.status) & ~self.trusted
 
     @property
     def trusted_mu(self) -> NDArray[np.float64]:
@@ -150,11 +175,7 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     start = 0
     for s, n in zip(series, sizes, strict=True):
         sl = slice(start, start + n)
-        curves[s.key] = Curve(s, out["mu_ratio"][sl].copy(), out["error"][sl].copy(),
-                              out["status"][sl].copy(), out["period"][sl].copy(),
-                              out["stick_fraction"][sl].copy(),
-                              out["flight_fraction"][sl].copy(), out["trusted"][sl].copy(),
-                              out["window_min"][sl].copy(), out["window_max"][sl].copy())
+        curves[s.key] = Curve(s, {k: out[k][sl].copy() for k in CURVE_COLUMNS})
         start += n
     return curves
 

@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import theory
-from ..params import Physical, vbar_to_inertial
+from ..params import Dimensionless, Physical, inertial_velocity
 from ..solver import section_state, solve_points
 from ._grid import Plan
 from ._variables import point_variables, row_variables
@@ -25,7 +25,8 @@ from ._variables import point_variables, row_variables
 __all__ = ["compute_block", "identity", "warm_up"]
 
 #: the source files that determine the values of a sweep (relative to the package)
-_VALUE_SOURCES = ("_kernels/*.py", "solver.py", "params.py", "theory.py", "sweep/_compute.py")
+_VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "schema.py", "params.py", "theory.py",
+                  "sweep/_compute.py")
 
 
 @functools.cache
@@ -83,12 +84,10 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     shape = point[0].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
     critical = np.asarray(theory.critical_inertial_velocity(*point), dtype=float).reshape(shape)
-    if plan.velocity.name == "vbar":
-        al, be, am, ze, et = (x[..., None] for x in point)
-        V = np.asarray(vbar_to_inertial(al, be, am, vel, ze, et),
-                       dtype=float).reshape((*shape, vel.size))
-    else:
-        V = np.broadcast_to(vel, (*shape, vel.size)).copy()
+    V = np.empty((*shape, vel.size))
+    for i in np.ndindex(shape):
+        system = Dimensionless(*(float(x[i]) for x in point))
+        V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
     return point, {"critical_velocity": critical}, V
 
 
@@ -103,7 +102,7 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
         dim = system.to_dimensionless()
         al[i], be[i], am[i], ze[i], et[i] = (dim.alpha, dim.beta, dim.amplitude, dim.zeta,
                                              dim.eta_c)
-        V[i] = system.v0_to_inertial(vel)
+        V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         vstar[i] = system.critical_velocity()
     rows = {"critical_velocity": vstar, "alpha": al, "beta": be, "amplitude": am,
             "zeta": ze, "eta_c": et}

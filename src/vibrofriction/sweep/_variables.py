@@ -14,14 +14,23 @@ from typing import Any
 
 import numpy as np
 
-from ..solver import FLOAT_COLUMNS, NO_PHASE, PHASE_NAMES, STATUS_BY_CODE
+from ..schema import (
+    FIELD,
+    RESULT_FIELDS,
+    STATE_FIELDS,
+    STATUS_BY_CODE,
+    VELOCITY_UNIT,
+    Field,
+    Status,
+)
+from ..solver import NO_PHASE, PHASE_NAMES
 
 __all__ = ["COORD_ATTRS", "STATUS_PENDING", "Variable", "point_variables", "row_variables",
            "signature"]
 
 STATUS_PENDING = -128  # fill value of `status` and `final_phase`: not computed yet
 
-_VEL_UNIT = "mu0 F_N0 / (m omega)"  # unit of the inertial velocity (docs/model.md)
+_VEL_UNIT = VELOCITY_UNIT  # unit of the inertial velocity (docs/model.md)
 
 
 @dataclass(frozen=True)
@@ -42,6 +51,14 @@ def _flag_words(text: str) -> str:
 
 _STATUS_CODES = sorted(STATUS_BY_CODE)
 
+
+def _attrs(f: Field, prefix: str = "") -> dict[str, Any]:
+    """CF-style attributes of a schema field."""
+    attrs = {"long_name": prefix + f.long_name, "symbol": f.symbol, "units": f.unit}
+    if f.equation:
+        attrs["equation"] = f.equation
+    return attrs
+
 COORD_ATTRS: dict[str, dict[str, Any]] = {
     "alpha": {"long_name": "system stiffness over inertia, k_x / (m omega^2)",
               "symbol": "alpha", "units": "1", "equation": "(20)"},
@@ -60,9 +77,7 @@ COORD_ATTRS: dict[str, dict[str, Any]] = {
              "symbol": "c_x,c", "units": "N s m-1"},
     "vbar": {"long_name": "sliding velocity over the critical velocity, v0 / v0*",
              "symbol": "vbar", "units": "1", "equation": "(16)"},
-    "v_inertial": {"long_name": "inertial sliding velocity, v0 m omega / (mu0 F_N0)",
-                   "symbol": "v0 m omega / (mu0 F_N0)", "units": _VEL_UNIT,
-                   "equation": "Fig. 6"},
+    "v_inertial": _attrs(FIELD["v_inertial"]),
     "v0": {"long_name": "sliding velocity of the drive", "symbol": "v0", "units": "m s-1"},
     "mass": {"long_name": "mass of the body", "symbol": "m", "units": "kg"},
     "k_x": {"long_name": "tangential stiffness of the system spring", "symbol": "k_x",
@@ -83,96 +98,52 @@ COORD_ATTRS: dict[str, dict[str, Any]] = {
                   "symbol": ""},
 }
 
-#: How the steady state was reached (solver columns; those the solver returns are stored).
-_ORBIT_ATTRS: dict[str, dict[str, Any]] = {
-    "multiplier": {"long_name": "modulus of the leading Floquet multiplier of the periodic "
-                                "orbit (contraction per orbit period; nan if not periodic)",
-                   "symbol": "|lambda|", "units": "1"},
-    "settling_periods": {"long_name": "drive periods the motion from the initial state "
-                                      "needs to come within error of the steady state",
-                         "symbol": "", "units": "drive periods"},
-    "window_min": {"long_name": "smallest mean of mu_ratio over the averaging windows "
-                                "(averaged and not converged results; nan otherwise)",
-                   "symbol": "", "units": "1"},
-    "window_max": {"long_name": "largest mean of mu_ratio over the averaging windows "
-                                "(averaged and not converged results; nan otherwise)",
-                   "symbol": "", "units": "1"},
-    "drift_rate": {"long_name": "change of the averaging windows' means per drive period where "
-                                "the last three move one way (0 where they do not; nan with "
-                                "fewer windows)",
-                   "symbol": "", "units": "1 / drive period"},
-}
+def _status_attrs() -> dict[str, Any]:
+    return {"long_name": FIELD["status"].long_name,
+            "flag_values": [STATUS_PENDING, *_STATUS_CODES],
+            "flag_meanings": " ".join(["not_computed", *(_flag_words(STATUS_BY_CODE[c].value)
+                                                         for c in _STATUS_CODES)]),
+            "comment": " | ".join(f"{STATUS_BY_CODE[c].value}: {STATUS_BY_CODE[c].message}"
+                                  for c in _STATUS_CODES)}
+
+
+def _trusted_attrs() -> dict[str, Any]:
+    ok = [s.value for s in Status if s.ok]
+    return {"long_name": FIELD["trusted"].long_name,
+            "comment": f"converged status: {', '.join(ok[:-1])} or {ok[-1]}; tol_trusted is "
+                       "the Dataset attribute solver_tol_trusted (SolverSettings.tol_trusted); "
+                       "False where not computed yet",
+            "flag_values": [0, 1], "flag_meanings": "not_trusted trusted"}
+
+
+def _phase_attrs(prefix: str) -> dict[str, Any]:
+    return {"long_name": prefix + FIELD["phase"].long_name,
+            "flag_values": [STATUS_PENDING, NO_PHASE, *range(len(PHASE_NAMES))],
+            "flag_meanings": " ".join(["not_computed", "no_state",
+                                       *(_flag_words(p) for p in PHASE_NAMES)])}
+
+
+def _fill(f: Field) -> float | int | bool:
+    if f.name in ("status", "phase"):
+        return STATUS_PENDING
+    return {"f8": np.nan, "bool": False}.get(f.dtype, -1)
 
 
 def point_variables(velocity: str) -> tuple[Variable, ...]:
-    """Variables with one value per grid point; ``velocity`` is the swept velocity's name."""
-    out = [
-        Variable("mu_ratio", "f8", np.nan, {
-            "long_name": "macroscopic coefficient of friction over the local one in the "
-                         "steady state, <F_x>/(mu0 <F_N>)",
-            "symbol": "mu_macro / mu0", "units": "1", "equation": "(25)"}, "mu_ratio"),
-        Variable("status", "i1", STATUS_PENDING, {
-            "long_name": "how the steady state was obtained",
-            "flag_values": [STATUS_PENDING, *_STATUS_CODES],
-            "flag_meanings": " ".join(
-                ["not_computed", *(_flag_words(STATUS_BY_CODE[c].value) for c in _STATUS_CODES)]),
-            "comment": " | ".join(f"{STATUS_BY_CODE[c].value}: {STATUS_BY_CODE[c].message}"
-                                  for c in _STATUS_CODES)}, "status"),
-        Variable("error", "f8", np.nan, {
-            "long_name": "estimated absolute error of mu_ratio, |mu_ratio - exact|",
-            "symbol": "", "units": "1"}, "error"),
-        Variable("trusted", "bool", False, {
-            "long_name": "the result is trusted: converged status and error <= tol_trusted",
-            "comment": "converged status: periodic, averaged, continuous sliding or static "
-                       "limit; tol_trusted is the Dataset attribute solver_tol_trusted "
-                       "(SolverSettings.tol_trusted); False where not computed yet",
-            "flag_values": [0, 1], "flag_meanings": "not_trusted trusted"}, "trusted"),
-        Variable("period", "i4", -1, {
-            "long_name": "period of the steady orbit in drive periods (0 = not periodic)",
-            "symbol": "", "units": "1"}, "period"),
-        Variable("periods", "i4", -1, {
-            "long_name": "drive periods integrated", "symbol": "", "units": "1"}, "periods"),
-        Variable("events", "i8", -1, {
-            "long_name": "phase transitions integrated (stick, slip, lift-off, touchdown)",
-            "symbol": "", "units": "1"}, "events"),
-        Variable("stick_fraction", "f8", np.nan, {
-            "long_name": "fraction of time the contact sticks (averaging window)",
-            "symbol": "", "units": "1"}, "stick_fraction"),
-        Variable("slip_fraction", "f8", np.nan, {
-            "long_name": "fraction of time the contact slips forward (averaging window)",
-            "symbol": "", "units": "1"}, "slip_fraction"),
-        Variable("reverse_slip_fraction", "f8", np.nan, {
-            "long_name": "fraction of time the contact slips backward (averaging window)",
-            "symbol": "", "units": "1"}, "reverse_slip_fraction"),
-        Variable("flight_fraction", "f8", np.nan, {
-            "long_name": "fraction of time without contact, jumping (averaging window)",
-            "symbol": "", "units": "1"}, "flight_fraction"),
-    ]
-    out += [Variable(name, "f8", np.nan, dict(attrs), name)
-            for name, attrs in _ORBIT_ATTRS.items() if name in FLOAT_COLUMNS]
+    """Variables with one value per grid point (``velocity`` is the swept velocity's
+    name): every field of :data:`vibrofriction.schema.RESULT_FIELDS` stored under its name
+    with its unit, long name and equation, ``v_inertial`` where another velocity is
+    swept, and the final section state as ``final_*``."""
+    special = {"status": _status_attrs, "trusted": _trusted_attrs}
+    out = [Variable(f.name, f.dtype, _fill(f), special.get(f.name, lambda f=f: _attrs(f))(),
+                    f.name)
+           for f in RESULT_FIELDS if f.dtype and f.name != "v_inertial"]
     if velocity != "v_inertial":
         out.append(Variable("v_inertial", "f8", np.nan, dict(COORD_ATTRS["v_inertial"])))
-    out += [
-        Variable("final_y", "f8", np.nan, {
-            "long_name": "final state on the Poincare section tau = 2 pi k: body "
-                         "displacement without the drift, y = x - V tau",
-            "symbol": "y", "units": "mu0 F_N0 / (m omega^2)"}, "y"),
-        Variable("final_x_dot", "f8", np.nan, {
-            "long_name": "final state on the Poincare section: body velocity",
-            "symbol": "x'", "units": _VEL_UNIT}, "x_dot"),
-        Variable("final_f", "f8", np.nan, {
-            "long_name": "final state on the Poincare section: tangential contact force",
-            "symbol": "f", "units": "mu0 F_N0"}, "f"),
-        Variable("final_e", "f8", np.nan, {
-            "long_name": "final state on the Poincare section: elongation of the contact "
-                         "spring, x - x_c (0 for a rigid contact)",
-            "symbol": "e", "units": "mu0 F_N0 / (m omega^2)"}, "e"),
-        Variable("final_phase", "i1", STATUS_PENDING, {
-            "long_name": "final state on the Poincare section: phase of the contact",
-            "flag_values": [STATUS_PENDING, NO_PHASE, *range(len(PHASE_NAMES))],
-            "flag_meanings": " ".join(["not_computed", "no_state",
-                                       *(_flag_words(p) for p in PHASE_NAMES)])}, "phase"),
-    ]
+    prefix = "final state on the Poincare section tau = 2 pi k: "
+    out += [Variable(f"final_{f.name}", f.dtype, _fill(f),
+                     _phase_attrs(prefix) if f.name == "phase" else _attrs(f, prefix), f.name)
+            for f in STATE_FIELDS]
     return tuple(out)
 
 

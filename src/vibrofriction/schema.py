@@ -1,0 +1,193 @@
+"""The result vocabulary: every quantity the solver returns, and its status, once.
+
+Each :class:`Field` carries its name, kind, unit, long name and the paper's equation
+(Mao, Popov, Starcevic & Popov, *Friction* 2017, Part II); the kernels' output columns
+(:data:`FLOAT_COLUMNS`, :data:`INT_COLUMNS`), :class:`~vibrofriction.FrictionResult`,
+the sweep's variables, the figures' curves, ``vibrofriction mu --json`` and the
+explorer's curves are derived from :data:`FIELDS`.  :class:`Status` is the one status
+vocabulary: each member carries its kernel code, its name, whether it is converged
+and its message.
+
+Standard library only: the numba kernels import it (their column indices and status
+codes come from here, :mod:`vibrofriction._kernels.codes`).
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+__all__ = ["CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS", "INT_COLUMNS",
+           "LENGTH_UNIT", "RESULT_FIELDS", "STATE_FIELDS", "STATUS_BY_CODE", "VELOCITY_UNIT",
+           "Field", "Status", "column_index"]
+
+#: Units of the scaled variables (docs/model.md).
+VELOCITY_UNIT = "mu0 F_N0 / (m omega)"
+LENGTH_UNIT = "mu0 F_N0 / (m omega^2)"
+FORCE_UNIT = "mu0 F_N0"
+
+
+@dataclass(frozen=True)
+class Field:
+    """One quantity of a steady-state result.
+
+    ``kind`` is its Python type in a :class:`~vibrofriction.FrictionResult` (``float``,
+    ``int``, ``bool`` or ``object``); ``unit`` UDUNITS-style (``"1"``: dimensionless);
+    ``column`` its place ``("float" | "int", index)`` in the kernels' output rows (None:
+    computed in Python); ``role`` ``"result"`` (a field of ``FrictionResult``),
+    ``"state"`` (a component of its ``final_state``) or ``"kernel"`` (bookkeeping of the
+    kernels only); ``dtype`` the numpy dtype an atlas stores it in.
+    """
+
+    name: str
+    kind: str
+    unit: str
+    long_name: str
+    equation: str = ""
+    symbol: str = ""
+    column: tuple[str, int] | None = None
+    role: str = "result"
+    dtype: str = ""
+
+
+def _fraction(what: str, index: int) -> Field:
+    name = {"stick": "stick_fraction", "forward slip": "slip_fraction",
+            "backward slip": "reverse_slip_fraction", "flight": "flight_fraction"}[what]
+    return Field(name, "float", "1", f"fraction of time in {what} (averaging window)",
+                 column=("float", index), dtype="f8")
+
+
+#: Every quantity, in the order of :class:`~vibrofriction.FrictionResult` (results
+#: first, then the components of the final section state, then kernel bookkeeping).
+FIELDS: tuple[Field, ...] = (
+    Field("mu_ratio", "float", "1", "macroscopic coefficient of friction over the local "
+          "one in the steady state, <F_x>/(mu0 <F_N>)", "(25)", "mu_macro / mu0",
+          ("float", 0), dtype="f8"),
+    Field("status", "object", "1", "how the steady state was obtained (Status; the kernels "
+          "return its code)", column=("int", 0), dtype="i1"),
+    Field("error", "float", "1", "estimated absolute error of mu_ratio, |mu_ratio - exact| "
+          "(inf: nothing is known)", "docs/solver.md", column=("float", 1), dtype="f8"),
+    Field("trusted", "bool", "1", "the result is trusted: converged status and error <= "
+          "tol_trusted (SolverSettings)", dtype="bool"),
+    Field("period", "int", "drive periods", "period of the steady orbit (0 = not periodic)",
+          column=("int", 1), dtype="i4"),
+    Field("periods", "int", "drive periods", "drive periods integrated", column=("int", 2),
+          dtype="i4"),
+    Field("events", "int", "1", "phase transitions integrated (stick, slip, lift-off, "
+          "touchdown)", column=("int", 3), dtype="i8"),
+    _fraction("stick", 2),
+    _fraction("forward slip", 3),
+    _fraction("backward slip", 4),
+    _fraction("flight", 5),
+    Field("multiplier", "float", "1", "modulus of the leading Floquet multiplier of the "
+          "periodic orbit (contraction per orbit period; nan if not periodic)",
+          symbol="|lambda|", column=("float", 9), dtype="f8"),
+    Field("settling_periods", "float", "drive periods", "drive periods the motion from the "
+          "initial state needs to come within error of the steady state",
+          column=("float", 10), dtype="f8"),
+    Field("window_min", "float", "1", "smallest mean of mu_ratio over the averaging windows "
+          "(averaged and not converged results; nan otherwise)", column=("float", 11),
+          dtype="f8"),
+    Field("window_max", "float", "1", "largest mean of mu_ratio over the averaging windows "
+          "(averaged and not converged results; nan otherwise)", column=("float", 12),
+          dtype="f8"),
+    Field("drift_rate", "float", "1 / drive period", "change of the averaging windows' means "
+          "per drive period where the last three move one way (0 where they do not; nan "
+          "with fewer windows)", column=("float", 13), dtype="f8"),
+    Field("final_state", "object", "", "the last state on the Poincare section tau = 2 pi k "
+          "(SectionState: y, x_dot, f, phase, e; None for the static limit)"),
+    Field("system", "object", "", "the dimensionless system (alpha, beta, amplitude, zeta, "
+          "eta_c)", "(20), (24)"),
+    Field("v_inertial", "float", VELOCITY_UNIT, "inertial sliding velocity, "
+          "v0 m omega / (mu0 F_N0)", "Fig. 6", "v0 m omega / (mu0 F_N0)", dtype="f8"),
+    # the final section state, in the order of SectionState
+    Field("y", "float", LENGTH_UNIT, "body displacement without the drift, y = x - V tau",
+          symbol="y", column=("float", 6), role="state", dtype="f8"),
+    Field("x_dot", "float", VELOCITY_UNIT, "body velocity", symbol="x'",
+          column=("float", 7), role="state", dtype="f8"),
+    Field("f", "float", FORCE_UNIT, "tangential contact force", symbol="f",
+          column=("float", 8), role="state", dtype="f8"),
+    Field("phase", "int", "1", "phase of the contact (stick, slip+, slip-, flight; -1: no "
+          "state)", column=("int", 4), role="state", dtype="i1"),
+    Field("e", "float", LENGTH_UNIT, "elongation of the contact spring, x - x_c (0 for a "
+          "rigid contact)", symbol="e", column=("float", 14), role="state", dtype="f8"),
+    Field("degenerate", "int", "1", "transitions decided only within round-off (chatter "
+          "along a tangency of the friction cone)", column=("int", 5), role="kernel",
+          dtype="i8"),
+)
+
+FIELD: dict[str, Field] = {f.name: f for f in FIELDS}
+RESULT_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "result")
+STATE_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "state")
+
+
+def _columns(kind: str) -> tuple[str, ...]:
+    cols = sorted((f.column[1], f.name) for f in FIELDS if f.column and f.column[0] == kind)
+    if [i for i, _ in cols] != list(range(len(cols))):
+        raise AssertionError(f"the {kind} kernel columns are not 0..n-1: {cols}")
+    return tuple(name for _, name in cols)
+
+
+#: The kernels' output rows, in order (``solve_points`` returns these and ``trusted``).
+FLOAT_COLUMNS: tuple[str, ...] = _columns("float")
+INT_COLUMNS: tuple[str, ...] = _columns("int")
+
+
+def column_index(name: str) -> int:
+    """The index of ``name`` in its kernel output row (:data:`FLOAT_COLUMNS` or
+    :data:`INT_COLUMNS`)."""
+    col = FIELD[name].column
+    if col is None:
+        raise KeyError(f"{name!r} is not a kernel column")
+    return col[1]
+
+
+class Status(enum.Enum):
+    """How a steady-state result was obtained: ``.value`` its name, ``.code`` the kernels'
+    code, ``.ok`` whether it is converged, ``.message`` what it means for humans."""
+
+    PERIODIC = ("periodic", 0, True,
+                "a periodic orbit was found on the Poincare section and averaged over "
+                "exactly one of its periods")
+    SLIDING = ("continuous sliding", 4, True,
+               "continuous forward sliding is proven: the contact point can never stop "
+               "again (the free oscillation is smaller than v0 - v0*, eqs. 10-12), so "
+               "mu = mu0 exactly")
+    AVERAGED = ("averaged", 1, True,
+                "no periodic orbit within the period bound; the running average over the "
+                "last half of the run agrees with the half before within tol_mean")
+    NOT_CONVERGED = ("not converged", 2, False,
+                     "max_periods was reached before a periodic orbit was found or the "
+                     "running average settled")
+    FAILED = ("failed", 3, False,
+              "the event budget `max_events` was exhausted, or the integration could not "
+              "advance, or more than 1000 transitions could only be decided within "
+              "round-off (chatter along a tangency of the friction cone); the value is "
+              "not reliable")
+    STATIC = ("static limit", -1, True,
+              "zero sliding velocity: the static limit of eq. (2), the limit of the steady "
+              "state as v0 -> 0+")
+
+    def __new__(cls, value: str, code: int, ok: bool, message: str) -> Status:
+        member = object.__new__(cls)
+        member._value_ = value
+        member.code = code
+        member.ok = ok  # converged: the value is a steady-state answer
+        member.message = message
+        return member
+
+    @classmethod
+    def from_code(cls, code: int) -> Status:
+        """The member of a kernel status code; ValueError for an unknown code."""
+        try:
+            return STATUS_BY_CODE[int(code)]
+        except KeyError:
+            raise ValueError(f"unknown status code {code!r}; known: "
+                             f"{sorted(STATUS_BY_CODE)}") from None
+
+
+#: Members by kernel code, in code order (non-negative codes first, then ``STATIC``).
+STATUS_BY_CODE: dict[int, Status] = {
+    s.code: s for s in sorted(Status, key=lambda s: (s.code < 0, s.code))}
+#: The codes of converged statuses (``Status.ok``).
+CONVERGED_CODES: tuple[int, ...] = tuple(c for c, s in STATUS_BY_CODE.items() if s.ok)

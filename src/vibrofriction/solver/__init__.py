@@ -1,0 +1,50 @@
+r"""The macroscopic coefficient of friction and time histories (paper eqs. 21-25).
+
+:func:`friction_coefficient` returns ``mu_macro / mu0 = <F_x>/<F_N>`` (eq. 25) in the
+steady state, computed by the exact event-driven kernels of
+:mod:`vibrofriction._kernels`; :func:`simulate` returns a densely sampled time
+history (Fig. 2).  Velocities are given as ``vbar = v0/v0*`` (eq. 16), as the
+inertial velocity ``v_inertial = v0 m omega/(mu0 F_N0)`` (the axis of Fig. 6, the
+only one that exists in cases III and IV) or, for a :class:`Physical` system, as
+``v0`` in m/s (:func:`vibrofriction.params.inertial_velocity`).
+
+Modules: :mod:`.settings` (accuracy bounds, what is trusted), :mod:`.results` (what is
+returned; its fields are :mod:`vibrofriction.schema`'s), :mod:`.engine` (the batch
+engine), :mod:`.history` (time histories) and :mod:`.energy` (their energy balance).
+"""
+
+from .._kernels.codes import NO_PHASE, PHASE_NAMES
+from ..schema import FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE, Status
+from .engine import friction_coefficient, solve_points
+from .history import Event, History, simulate
+from .results import (
+    SLOW_SETTLING,
+    FrictionResult,
+    FrictionResults,
+    SectionState,
+    describe,
+    section_state,
+)
+from .settings import SolverSettings, converged
+
+__all__ = [
+    "FLOAT_COLUMNS",
+    "INT_COLUMNS",
+    "NO_PHASE",
+    "PHASE_NAMES",
+    "SLOW_SETTLING",
+    "STATUS_BY_CODE",
+    "Event",
+    "FrictionResult",
+    "FrictionResults",
+    "History",
+    "SectionState",
+    "SolverSettings",
+    "Status",
+    "converged",
+    "describe",
+    "friction_coefficient",
+    "section_state",
+    "simulate",
+    "solve_points",
+]

@@ -1,0 +1,172 @@
+r"""The batch engine: steady states at arbitrary points (paper eqs. 21-25).
+
+:func:`solve_points` runs the exact event-driven kernels of :mod:`vibrofriction._kernels`
+over arrays of points in one compiled loop and returns their named output columns
+(:data:`vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS``); :func:`friction_coefficient`
+wraps them as :class:`FrictionResult` objects for a system and its velocities.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import theory
+from .._kernels import codes
+from .._kernels.steady import steady_state, steady_state_many
+from ..params import Dimensionless, System, dimensionless, inertial_velocity
+from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
+from ..validation import checked, checked_beta
+from .results import (
+    PHASE_CODE,
+    FrictionResult,
+    FrictionResults,
+    SectionState,
+    result_from_columns,
+    results_from_columns,
+)
+from .settings import DEFAULT_SETTINGS, SolverSettings
+
+__all__ = ["friction_coefficient", "solve_points"]
+
+Initial = str | SectionState
+
+
+def initial_rows(initial: Initial | NDArray[np.object_], n: int,
+                 systems: Callable[[int], Dimensionless]) -> tuple[int, NDArray[np.float64]]:
+    """Kernel start ``(kind, rows (y, x', e, phase))``; ``systems(i)`` is point i's system."""
+    init = np.zeros((n, 4))
+    if isinstance(initial, SectionState):
+        init[:] = (initial.y, initial.x_dot, initial.elongation(systems(0)),
+                   PHASE_CODE[initial.phase])
+        return 2, init
+    if isinstance(initial, np.ndarray) and initial.dtype == object:
+        for i, s in enumerate(initial.ravel()):
+            init[i] = (s.y, s.x_dot, s.elongation(systems(i)), PHASE_CODE[s.phase])
+        return 2, init
+    if initial == "sliding":
+        return 0, init
+    if initial == "rest":
+        return 1, init
+    raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
+
+
+def solve_points(
+    alpha: ArrayLike,
+    beta: ArrayLike,
+    amplitude: ArrayLike,
+    v_inertial: ArrayLike,
+    zeta: ArrayLike = 0.0,
+    eta_c: ArrayLike = 0.0,
+    *,
+    initial: Initial | NDArray[np.object_] = "sliding",
+    settings: SolverSettings | None = None,
+) -> dict[str, NDArray]:
+    """Steady states at arbitrary points, one compiled loop: the batch engine.
+
+    The six parameters broadcast together and are validated (finite, ``alpha > 0``,
+    ``beta > alpha``, ``a >= 0``, ``V >= 0``, ``zeta >= 0``, ``eta_c >= 0``).  Returns
+    arrays of that shape named by :data:`~vibrofriction.schema.FLOAT_COLUMNS` and
+    ``INT_COLUMNS`` (``status`` as :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``,
+    ``phase`` the final section state) and ``trusted``.  Results are bitwise
+    reproducible: each point depends only on its own parameters.
+    """
+    settings = settings or DEFAULT_SETTINGS
+    al, be, am, V, ze, et = np.broadcast_arrays(*(
+        np.asarray(x, dtype=float) for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c)))
+    shape = V.shape
+    al, be, am, V, ze, et = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et))
+    checked("alpha", al, minimum=0.0, strict=True)
+    checked_beta(al, be)
+    checked("amplitude", am, minimum=0.0)
+    checked("v_inertial", V, minimum=0.0)
+    checked("zeta", ze, minimum=0.0)
+    checked("eta_c", et, minimum=0.0)
+    n = V.size
+    kind, init = initial_rows(initial, n,
+                              lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i]))
+    out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
+    out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
+    moving = V > 0.0
+    idx = np.flatnonzero(moving)
+    if idx.size:
+        of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
+        oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
+        steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], kind,
+                          np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
+        out_f[idx] = of
+        out_i[idx] = oi
+    _static_limit(am[~moving], out_f, out_i, ~moving)
+    out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
+    out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
+    out["trusted"] = settings.trusted(out["status"], out["error"])
+    return out
+
+
+def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
+                  out_i: NDArray[np.int64], rows: NDArray[np.bool_]) -> None:
+    """Fill the rows of zero-velocity points with the static limit, eq. (2)."""
+    if not np.any(rows):
+        return
+    contact = amplitude < 1.0
+    out_f[rows, column_index("mu_ratio")] = theory.static_mu_ratio(amplitude)
+    out_f[rows, column_index("error")] = 0.0
+    out_f[rows, column_index("stick_fraction")] = np.where(contact, 1.0, np.nan)
+    for k in ("slip_fraction", "reverse_slip_fraction", "flight_fraction"):
+        out_f[rows, column_index(k)] = np.where(contact, 0.0, np.nan)
+    out_i[rows, column_index("status")] = Status.STATIC.code
+    out_i[rows, column_index("phase")] = codes.NO_PHASE
+
+
+def _one_point(dim: Dimensionless, V: float, initial: Initial,
+               settings: SolverSettings) -> FrictionResult:
+    """One moving point by the scalar kernel directly (no array bookkeeping)."""
+    kind, init = initial_rows(initial, 1, lambda i: dim)
+    of = np.empty(len(FLOAT_COLUMNS))
+    oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
+    steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, kind,
+                 init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]),
+                 *settings.kernel_arguments(), of, oi)
+    cols = dict(zip(FLOAT_COLUMNS, of.tolist(), strict=True))
+    cols.update(zip(INT_COLUMNS, oi.tolist(), strict=True))
+    cols["trusted"] = bool(settings.trusted(cols["status"], cols["error"]))
+    return result_from_columns(cols, dim, V)
+
+
+def friction_coefficient(
+    system: System,
+    vbar: ArrayLike | None = None,
+    *,
+    v_inertial: ArrayLike | None = None,
+    v0: ArrayLike | None = None,
+    initial: Initial = "sliding",
+    settings: SolverSettings | None = None,
+) -> FrictionResult | FrictionResults:
+    """Macroscopic coefficient of friction ``mu_macro/mu0`` in the steady state (eq. 25).
+
+    Parameters
+    ----------
+    system : a :class:`Dimensionless` ``(alpha, beta, amplitude)`` (eq. 20) or a
+        :class:`Physical` system in SI units.
+    vbar, v_inertial, v0 : the sliding velocity, exactly one of: ``v0/v0*`` (eq. 16),
+        ``v0 m omega/(mu0 F_N0)`` (Fig. 6; required in cases III and IV), or m/s
+        (Physical systems only); :func:`vibrofriction.params.inertial_velocity`.
+        Scalars give a :class:`FrictionResult`, arrays a :class:`FrictionResults` of
+        the same shape.
+    initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
+        on at ``tau = 0``, docs/model.md), ``"rest"``, or a :class:`SectionState` (e.g. the
+        ``final_state`` of another result, for continuation).  Coexisting attractors
+        make the initial state part of the result's definition.
+    settings : accuracy and effort bounds (:class:`SolverSettings`).
+    """
+    dim = dimensionless(system)
+    V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
+    if V.ndim == 0 and V > 0.0:
+        return _one_point(dim, float(V), initial, settings or DEFAULT_SETTINGS)
+    cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
+                        initial=initial, settings=settings)
+    if V.ndim == 0:
+        return result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, float(V))
+    return results_from_columns(cols, dim, V)

@@ -1,0 +1,239 @@
+"""What the solver returns: section states and steady-state results (paper eq. 25).
+
+The fields of :class:`FrictionResult` and :class:`FrictionResults` are those of
+:data:`vibrofriction.schema.RESULT_FIELDS`, in that order, with their units and meanings
+(the docstrings below are generated from it); :func:`results_from_columns` builds them
+from the kernels' named output columns.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, fields
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._kernels import codes
+from ..params import Dimensionless
+from ..schema import RESULT_FIELDS, STATE_FIELDS, Field, Status
+from .settings import converged
+
+__all__ = ["SLOW_SETTLING", "FrictionResult", "FrictionResults", "SectionState", "describe",
+           "result_from_columns", "results_from_columns", "section_state"]
+
+PHASE_CODE = {name: i for i, name in enumerate(codes.PHASE_NAMES)}
+
+
+@dataclass(frozen=True)
+class SectionState:
+    """A state on the Poincare section ``tau = 2 pi k`` in the scaled variables.
+
+    ``y = x - V tau`` is the body displacement without the drift (unit
+    ``mu0 F_N0/(m omega^2)``), ``x_dot`` the body velocity (unit ``mu0 F_N0/(m omega)``),
+    ``f`` the tangential contact force (unit ``mu0 F_N0``), ``phase`` one of
+    ``stick``, ``slip+``, ``slip-``, and ``e`` the elongation of the contact spring
+    (unit of ``y``; ``nan``: derived from ``f``, which needs ``f = k e + c x_dot`` to
+    determine it, i.e. not in slip on a viscoelastic contact).
+    """
+
+    y: float
+    x_dot: float
+    f: float
+    phase: str
+    e: float = math.nan
+
+    def __post_init__(self) -> None:
+        if self.phase not in ("stick", "slip+", "slip-"):
+            raise ValueError(f"phase must be 'stick', 'slip+' or 'slip-', got {self.phase!r}")
+        for name in ("y", "x_dot", "f"):
+            if not math.isfinite(getattr(self, name)):
+                raise ValueError(f"{name} must be finite, got {getattr(self, name)!r}")
+
+    def elongation(self, system: Dimensionless) -> float:
+        """``e``, or where it is not given, the one ``f`` implies for ``system``."""
+        if math.isfinite(self.e):
+            return self.e
+        k = system.beta - system.alpha
+        if math.isinf(k):
+            return 0.0
+        if self.phase == "stick":
+            return (self.f - system.eta_c * k * self.x_dot) / k
+        if system.eta_c > 0.0:
+            raise ValueError("a SectionState in slip on a viscoelastic contact (eta_c > 0) "
+                             "needs its elongation e")
+        return self.f / k
+
+
+assert tuple(f.name for f in STATE_FIELDS) == tuple(f.name for f in fields(SectionState))
+
+
+def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> SectionState | None:
+    """The :class:`SectionState` of a solver row, or None where there is none (static)."""
+    if not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)) \
+            or phase not in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG):
+        return None
+    return SectionState(float(y), float(x_dot), float(f), codes.PHASE_NAMES[int(phase)],
+                        float(e))
+
+
+# --------------------------------------------------------------------------- the results
+_SCALAR = {"float": float, "int": int, "bool": bool}
+_OBJECT = {"status": Status, "final_state": SectionState | None, "system": Dimensionless}
+_ARRAY = {"float": NDArray[np.float64], "int": NDArray[np.int64], "bool": NDArray[np.bool_]}
+
+
+def _field_doc(f: Field) -> str:
+    where = f"; eq. {f.equation}" if f.equation.startswith("(") else ""
+    unit = f" [{f.unit}]" if f.unit not in ("", "1") else ""
+    return f"* ``{f.name}``{unit}: {f.long_name}{where}"
+
+
+_FIELDS_DOC = "\n".join(_field_doc(f) for f in RESULT_FIELDS)
+
+
+@dataclass(frozen=True)
+class FrictionResult:
+    __annotations__ = {f.name: _OBJECT.get(f.name) or _SCALAR[f.kind] for f in RESULT_FIELDS}
+    __doc__ = f"""The steady state at one point (paper eq. 25) and how it was obtained.
+
+    Its fields are :data:`vibrofriction.schema.RESULT_FIELDS`; docs/solver.md explains
+    how ``error`` is obtained for each status.
+
+{_FIELDS_DOC}
+    """
+
+    @property
+    def message(self) -> str:
+        """How the result was obtained and what it is worth, in words."""
+        return describe(self)
+
+    @property
+    def success(self) -> bool:
+        return self.status.ok
+
+    @property
+    def vbar(self) -> float:
+        """``v0/v0*``, or nan where ``v0*`` is zero or infinite (cases III, IV)."""
+        try:
+            return float(self.system.inertial_to_vbar(self.v_inertial))
+        except ValueError:
+            return math.nan
+
+    def as_dict(self) -> dict[str, Any]:
+        """Every field by name (:data:`~vibrofriction.schema.RESULT_FIELDS`): ``status`` as
+        its name, ``final_state`` and ``system`` as dicts (None: no section state)."""
+        out = {}
+        for f in RESULT_FIELDS:
+            v = getattr(self, f.name)
+            if isinstance(v, Status):
+                v = v.value
+            elif v is not None and f.kind == "object":
+                v = {g.name: getattr(v, g.name) for g in fields(v)}
+            out[f.name] = v
+        return out
+
+
+@dataclass(frozen=True)
+class FrictionResults:
+    __annotations__ = {f.name: (Dimensionless if f.name == "system" else
+                                _ARRAY.get(f.kind, NDArray[np.object_]))
+                       for f in RESULT_FIELDS}
+    __doc__ = """Results over an array of velocities: the fields of :class:`FrictionResult`
+    as arrays of one shape (``system`` is shared)."""
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        return self.mu_ratio.shape
+
+    def __len__(self) -> int:
+        return len(self.mu_ratio)
+
+    def __getitem__(self, index: int | tuple[int, ...]) -> FrictionResult:
+        out = {}
+        for f in RESULT_FIELDS:
+            v = getattr(self, f.name)
+            if f.name != "system":
+                v = v[index]
+                v = v.item() if isinstance(v, np.generic) else v
+            out[f.name] = v
+        return FrictionResult(**out)
+
+    def __iter__(self) -> Iterator[FrictionResult]:
+        for i in np.ndindex(self.shape):
+            yield self[i]
+
+    @property
+    def success(self) -> NDArray[np.bool_]:
+        return converged(self.status)
+
+
+#: Drive periods beyond which the approach to a periodic orbit counts as slow.
+SLOW_SETTLING = 1000
+
+
+def describe(r: FrictionResult) -> str:
+    """The message of a result: status, how it was obtained, and its caveats."""
+    head = r.status.value + (f" (period {r.period})" if r.status is Status.PERIODIC else "")
+    parts = [f"{head}: {r.status.message}", f"error estimate {r.error:.2g}"
+             + ("" if r.trusted else " (not trusted)")]
+    if r.status is Status.PERIODIC and math.isfinite(r.settling_periods) \
+            and r.settling_periods > SLOW_SETTLING:
+        parts.append(
+            f"the orbit is reached slowly: leading Floquet multiplier {r.multiplier:.6g}, so "
+            f"the motion from the initial state needs about {r.settling_periods:.3g} drive "
+            "periods to come within the error of this value; a measurement over fewer "
+            "periods sees the transient")
+    if r.status is Status.PERIODIC and math.isnan(r.settling_periods):
+        parts.append(
+            f"the orbit is neutrally stable (leading Floquet multiplier {r.multiplier:.9g}): "
+            "the motion from the initial state need not approach it, and a transient (e.g. "
+            "rare sticks of an undamped free oscillation) can persist for many periods; "
+            "the error includes how far the motion's mean over periods 512-1024 is from it")
+    if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
+        parts.append(f"window means range from {r.window_min:.6g} to {r.window_max:.6g}")
+    if r.status is Status.NOT_CONVERGED:
+        parts.append(_not_converged_note(r.drift_rate))
+    return "; ".join(parts)
+
+
+def _not_converged_note(drift_rate: float) -> str:
+    if math.isfinite(drift_rate) and drift_rate != 0.0:
+        how = (f"the window means drift one way ({drift_rate:+.2g} per period): a slow "
+               "transient still on its way to a steady state (near beta = 1 such drifts "
+               "last 1e4-1e6 periods, docs/modulation.md)")
+    else:
+        how = "the window means do not move one way"
+    return (f"mu_ratio is nan: the motion has not settled and a window mean is not the "
+            f"long-time average; {how}: raise max_periods")
+
+
+# --------------------------------------------------------------------------- from columns
+#: Result fields copied from the columns as they are (the rest are built below).
+_PLAIN = tuple(f.name for f in RESULT_FIELDS
+               if f.name not in ("status", "final_state", "system", "v_inertial"))
+
+
+def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
+                        v_inertial: float) -> FrictionResult:
+    """One point's :class:`FrictionResult` from its named columns (Python scalars, the
+    kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and ``trusted``)."""
+    return FrictionResult(
+        status=Status.from_code(cols["status"]),
+        final_state=section_state(*(cols[f.name] for f in STATE_FIELDS)),
+        system=system, v_inertial=v_inertial, **{k: cols[k] for k in _PLAIN})
+
+
+def results_from_columns(cols: Mapping[str, NDArray], system: Dimensionless,
+                         v_inertial: NDArray[np.float64]) -> FrictionResults:
+    """:class:`FrictionResults` from the named column arrays of :func:`solve_points`."""
+    shape = v_inertial.shape
+    status = np.empty(shape, dtype=object)
+    states = np.empty(shape, dtype=object)
+    for i in np.ndindex(shape):
+        status[i] = Status.from_code(cols["status"][i])
+        states[i] = section_state(*(cols[f.name][i] for f in STATE_FIELDS))
+    return FrictionResults(status=status, final_state=states, system=system,
+                           v_inertial=v_inertial.astype(float), **{k: cols[k] for k in _PLAIN})

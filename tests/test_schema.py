@@ -1,0 +1,261 @@
+"""One schema, one status vocabulary, one velocity conversion (issue 18, the house).
+
+Each consumer of the result vocabulary is checked against :mod:`vibrofriction.schema`:
+a field added there and not carried by a consumer fails here.
+"""
+
+from __future__ import annotations
+
+import ast
+import dataclasses
+import json
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction import schema
+from vibrofriction.params import inertial_velocity
+from vibrofriction.schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, RESULT_FIELDS, Status
+
+SRC = Path(vf.__file__).parent
+POINT = vf.Dimensionless(0.5, 2.0, 0.5)
+
+
+# --------------------------------------------------------------------------- the schema
+def test_schema_is_standard_library_only() -> None:
+    tree = ast.parse((SRC / "schema.py").read_text())
+    imported = {alias.name.split(".")[0] for node in ast.walk(tree)
+                if isinstance(node, ast.Import) for alias in node.names}
+    imported |= {node.module.split(".")[0] for node in ast.walk(tree)
+                 if isinstance(node, ast.ImportFrom) and node.module}
+    assert imported <= {"__future__", "enum", "dataclasses"}, imported
+
+
+def test_every_field_has_a_unit_a_long_name_and_a_known_kind() -> None:
+    assert len({f.name for f in schema.FIELDS}) == len(schema.FIELDS)
+    for f in schema.FIELDS:
+        assert f.kind in ("float", "int", "bool", "object"), f
+        assert f.long_name and len(f.long_name) > 10, f
+        assert f.role in ("result", "state", "kernel"), f
+        assert f.kind == "object" or f.unit, f  # every number has a unit ("1": none)
+    assert FIELD["mu_ratio"].equation == "(25)"
+
+
+def test_kernel_indices_come_from_the_schema() -> None:
+    """The kernels' output constants are the schema's columns, in the kernels' order."""
+    from vibrofriction._kernels import codes, steady
+
+    names = {"O_MU": "mu_ratio", "O_ERR": "error", "O_STICK": "stick_fraction",
+             "O_SLIP": "slip_fraction", "O_SLIP_NEG": "reverse_slip_fraction",
+             "O_FLIGHT": "flight_fraction", "O_Y": "y", "O_XD": "x_dot", "O_F": "f",
+             "O_MULT": "multiplier", "O_SETTLE": "settling_periods", "O_WMIN": "window_min",
+             "O_WMAX": "window_max", "O_DRIFT": "drift_rate", "O_E": "e"}
+    for const, name in names.items():
+        assert getattr(codes, const) == FLOAT_COLUMNS.index(name), const
+        assert getattr(steady, const) == getattr(codes, const), const
+    for const, name in {"I_STATUS": "status", "I_PERIOD": "period", "I_PERIODS": "periods",
+                        "I_EVENTS": "events", "I_PHASE": "phase",
+                        "I_DEGENERATE": "degenerate"}.items():
+        assert getattr(codes, const) == INT_COLUMNS.index(name), const
+        assert getattr(steady, const) == getattr(codes, const), const
+    assert vf.solver.FLOAT_COLUMNS is FLOAT_COLUMNS and vf.solver.INT_COLUMNS is INT_COLUMNS
+
+
+def test_solve_points_returns_every_kernel_column() -> None:
+    out = vf.solver.solve_points(0.5, 2.0, 0.5, [0.0, 0.3])
+    assert set(out) == {*FLOAT_COLUMNS, *INT_COLUMNS, "trusted"}
+
+
+# --------------------------------------------------------------------------- status
+def test_every_status_carries_its_code_and_message() -> None:
+    from vibrofriction._kernels import codes
+
+    assert {s.code for s in Status} == set(schema.STATUS_BY_CODE)
+    for s in Status:
+        assert len(s.message) > 30 and s.value
+        assert Status.from_code(s.code) is s and Status(s.value) is s
+        assert vf.solver.STATUS_BY_CODE[s.code] is s
+    assert set(schema.CONVERGED_CODES) == {s.code for s in Status if s.ok}
+    assert {s for s in Status if not s.ok} == {Status.NOT_CONVERGED, Status.FAILED}
+    assert (codes.ST_PERIODIC, codes.ST_AVERAGED, codes.ST_NOT_CONVERGED, codes.ST_FAILED,
+            codes.ST_SLIDING, codes.ST_STATIC) == tuple(
+        s.code for s in (Status.PERIODIC, Status.AVERAGED, Status.NOT_CONVERGED,
+                         Status.FAILED, Status.SLIDING, Status.STATIC))
+    with pytest.raises(ValueError, match="unknown status code 7"):
+        Status.from_code(7)
+    assert vf.Status is Status
+
+
+def test_converged_and_trusted_agree_for_codes_and_members() -> None:
+    codes = np.array([s.code for s in Status])
+    members = np.array(list(Status), dtype=object)
+    expected = np.array([s.ok for s in Status])
+    np.testing.assert_array_equal(vf.solver.converged(codes), expected)
+    np.testing.assert_array_equal(vf.solver.converged(members), expected)
+    settings = vf.SolverSettings(tol_trusted=1e-6)
+    err = np.where(expected, 1e-7, 0.0)
+    np.testing.assert_array_equal(settings.trusted(codes, err), expected)
+    np.testing.assert_array_equal(settings.trusted(codes, np.full(codes.size, 1e-5)),
+                                  np.zeros(codes.size, bool))
+
+
+# --------------------------------------------------------------------------- consumers
+def test_friction_result_fields_are_the_schema() -> None:
+    names = tuple(f.name for f in RESULT_FIELDS)
+    assert tuple(f.name for f in dataclasses.fields(vf.FrictionResult)) == names
+    assert tuple(f.name for f in dataclasses.fields(vf.FrictionResults)) == names
+    r = vf.friction_coefficient(POINT, vbar=0.5)
+    assert r.trusted and set(r.as_dict()) == set(names)
+    for f in RESULT_FIELDS:
+        assert f.name in vf.FrictionResult.__doc__, f.name
+    rs = vf.friction_coefficient(POINT, vbar=np.array([0.0, 0.5]))
+    assert rs[1].mu_ratio == r.mu_ratio and rs[0].status is Status.STATIC
+
+
+def test_cli_json_prints_every_field() -> None:
+    out = subprocess.run([sys.executable, "-m", "vibrofriction.cli", "mu", "--alpha", "0.5",
+                          "--beta", "inf", "--amplitude", "0.5", "--vbar", "0,0.5", "--json"],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    static, moving = (json.loads(line) for line in out.stdout.splitlines())
+    for row in (static, moving):
+        assert {f.name for f in RESULT_FIELDS} <= set(row), set(row)
+        assert {"vbar", "message"} <= set(row)
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, math.inf, 0.5), vbar=0.5)
+    assert moving["mu_ratio"] == r.mu_ratio and moving["status"] == r.status.value
+    assert moving["system"]["beta"] == "inf" and moving["final_state"]["phase"] in (
+        "stick", "slip+", "slip-")
+    assert static["final_state"] is None and static["status"] == "static limit"
+    assert moving["window_min"] is None  # nan as null: not averaged
+
+
+def test_sweep_variables_carry_every_schema_field_with_its_unit() -> None:
+    from vibrofriction.sweep._variables import point_variables
+
+    for velocity in ("vbar", "v_inertial"):
+        variables = {v.name: v for v in point_variables(velocity)}
+        for f in schema.FIELDS:
+            if f.role == "kernel" or f.kind == "object" and f.name != "status":
+                continue
+            name = f"final_{f.name}" if f.role == "state" else f.name
+            if name == "v_inertial" and velocity == "v_inertial":
+                continue  # the coordinate
+            var = variables.pop(name)
+            assert var.dtype == f.dtype and var.attrs["long_name"].endswith(f.long_name)
+            if f.name not in ("status", "trusted", "phase"):  # flags have no unit
+                assert var.attrs["units"] == f.unit, name
+        assert not variables, variables  # nothing the schema does not define
+
+
+def test_sweep_dataset_has_every_field_with_its_unit() -> None:
+    ds = vf.sweep(alpha=0.5, beta=2.0, amplitude=0.5, vbar=[0.0, 0.5], workers=1,
+                  progress=False)
+    for f in RESULT_FIELDS:
+        if f.dtype and f.name != "status" and f.name != "trusted":
+            assert ds[f.name].attrs["units"] == f.unit, f.name
+    assert ds.status.attrs["flag_values"][1:] == sorted(schema.STATUS_BY_CODE)
+    r = vf.friction_coefficient(POINT, vbar=0.5)
+    assert float(ds.mu_ratio.sel(vbar=0.5)) == r.mu_ratio
+
+
+def test_figure_curves_hold_every_solver_column() -> None:
+    from vibrofriction.figures.series import CURVE_COLUMNS, Curve, series_at_vbar, solve
+
+    assert set(CURVE_COLUMNS) == {*FLOAT_COLUMNS, *INT_COLUMNS, "trusted"}
+    s = series_at_vbar("k", 0.5, 2.0, 0.5, [0.0, 0.5])
+    c = solve([s])["k"]
+    for name in CURVE_COLUMNS:
+        assert getattr(c, name).shape == (2,), name
+    assert c.mu_ratio[1] == vf.friction_coefficient(POINT, vbar=0.5).mu_ratio
+    with pytest.raises(ValueError, match="lacks the columns"):
+        Curve(s, {"mu_ratio": c.mu_ratio})
+    with pytest.raises(ValueError, match="unknown curve columns"):
+        Curve.of(s, mu=c.mu_ratio)
+
+
+def test_explorer_curve_holds_every_result_field() -> None:
+    from vibrofriction.explorer import compute
+    from vibrofriction.explorer.state import State
+
+    curve = compute.curve(State(alpha=0.5, beta=2.0, amplitude=0.5, axis="vbar", v_max=1.0,
+                                points=3))
+    for f in RESULT_FIELDS:
+        if f.name not in ("final_state", "system"):
+            assert len(curve[f.name]) == 3, f.name
+    r = vf.friction_coefficient(POINT, vbar=0.5)
+    assert curve["mu_ratio"][1] == r.mu_ratio and curve["status"][1] == r.status.value
+
+
+# --------------------------------------------------------------------------- velocity
+def test_velocity_conversion_round_trips() -> None:
+    pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6, du_z=2e-6,
+                      omega=6283.0, mu0=0.3)
+    dim = pin.to_dimensionless()
+    vbar = np.array([0.0, 0.3, 1.7])
+    V = inertial_velocity(pin, vbar)
+    np.testing.assert_allclose(V, vbar * dim.critical_inertial_velocity(), rtol=1e-15)
+    v0 = pin.inertial_to_v0(V)
+    np.testing.assert_allclose(v0, vbar * pin.critical_velocity(), rtol=1e-12)
+    np.testing.assert_allclose(inertial_velocity(pin, v0=v0), V, rtol=1e-14)
+    np.testing.assert_allclose(inertial_velocity(dim, v_inertial=V), V, rtol=0)
+    np.testing.assert_allclose(dim.inertial_to_vbar(inertial_velocity(pin, v0=v0)), vbar,
+                               rtol=1e-12, atol=1e-300)
+    assert inertial_velocity(dim, v_inertial=0.25) == 0.25
+    assert pin.velocity_unit() * pin.mass * pin.omega == pytest.approx(pin.mu0 * pin.F_N0)
+    np.testing.assert_allclose(pin.v0_to_inertial(0.01, np.array([pin.omega, 2 * pin.omega])),
+                               [pin.v0_to_inertial(0.01), 2 * pin.v0_to_inertial(0.01)],
+                               rtol=1e-15)
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    ({}, "give exactly one velocity.*got none"),
+    ({"vbar": 0.5, "v_inertial": 0.3}, "give exactly one velocity.*got vbar and v_inertial"),
+    ({"vbar": 0.5, "v0": 0.3}, "got vbar and v0"),
+    ({"vbar": -0.5}, "vbar must be finite and >= 0, got -0.5"),
+    ({"v_inertial": -1.0}, "v_inertial must be finite and >= 0, got -1.0"),
+    ({"v_inertial": [0.1, np.nan]}, "v_inertial must be finite and >= 0, got nan"),
+    ({"v0": 0.1}, "v0 \\(m/s\\) needs a Physical system"),
+])
+def test_velocity_conversion_refuses_none_two_and_bad_values(kwargs, message) -> None:
+    with pytest.raises(ValueError, match=message):
+        inertial_velocity(POINT, **kwargs)
+    with pytest.raises(ValueError, match=message):
+        vf.friction_coefficient(POINT, **kwargs)
+
+
+def test_vbar_is_refused_where_it_does_not_exist() -> None:
+    with pytest.raises(ValueError, match="vbar is undefined for alpha == 1"):
+        inertial_velocity(vf.Dimensionless(1.0, 3.0, 0.5), vbar=0.5)
+    with pytest.raises(TypeError, match="system must be a Dimensionless or Physical"):
+        inertial_velocity("not a system", v_inertial=[0.5])
+
+
+def test_one_name_for_the_critical_velocity() -> None:
+    """``V_c`` is ``critical_inertial_velocity`` everywhere; the old aliases are gone, and
+    no module outside params uses the private velocity unit."""
+    from vibrofriction import params, theory
+
+    assert not hasattr(theory, "inertial_per_vbar")
+    assert not hasattr(vf.Dimensionless, "inertial_per_vbar")
+    assert not hasattr(params, "vbar_factor")
+    for path in SRC.rglob("*.py"):
+        text = path.read_text()
+        assert "_velocity_unit" not in text, path
+        assert "inertial_per_vbar" not in text, path
+
+
+def test_the_sweep_fingerprint_covers_the_solver_and_the_schema() -> None:
+    """A store is resumed only by the same solver: every file that computes values counts."""
+    from vibrofriction.sweep import _compute
+
+    root = SRC
+    hashed = {p.resolve() for pattern in _compute._VALUE_SOURCES for p in root.glob(pattern)}
+    for module in (SRC / "solver").glob("*.py"):
+        assert module.resolve() in hashed, module
+    assert (SRC / "schema.py").resolve() in hashed
+    assert all(any(root.glob(pattern)) for pattern in _compute._VALUE_SOURCES)
