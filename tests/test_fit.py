@@ -167,7 +167,7 @@ def test_every_named_parameter_is_varied_and_derived_quantities_are_reported():
     assert "derived: f_n [Hz]" in res.report() and "c_x [N s/m]" in res.report()
 
 
-def test_a_wrong_constraint_gives_a_poor_verdict_and_intervals_that_hold_the_truth():
+def test_a_wrong_constraint_gives_a_poor_verdict_and_intervals_that_hold_the_truth(tmp_path):
     """The guess's natural frequency is 14 % high and ``natural_frequency`` holds it: the
     fit cannot reach the truth.  Its profile intervals (conditional on the fit being right)
     exclude the truth; the verdict says the fit is poor, first, and the reported intervals
@@ -184,6 +184,11 @@ def test_a_wrong_constraint_gives_a_poor_verdict_and_intervals_that_hold_the_tru
         assert lo <= getattr(TRUE, n) <= hi
         assert (lo, hi) == pytest.approx((getattr(guess, n) / 10, getattr(guess, n) * 10))
     assert "search range (the fit is poor)" in res.report()
+    back = FitResult.from_json(res.to_json(tmp_path / "fit.json"))
+    assert back.intervals == res.intervals and back.report().splitlines()[0] == \
+        res.report().splitlines()[0]
+    for n, interval in profile.items():
+        assert back.extra["profile_intervals"][n] == pytest.approx(interval)
 
 
 def test_an_understated_sigma_gives_a_poor_verdict_and_profiles_scaled_by_it():
@@ -367,6 +372,7 @@ def test_save_and_load(tmp_path):
     assert back.intervals == res.intervals
     assert (back.quality, back.p_value, back.penalised) == (res.quality, res.p_value,
                                                             res.penalised)
+    assert back.extra["at_lowest_minimum"] is True
     assert back.report().splitlines()[0] == res.report().splitlines()[0]
     assert "mu0" in back.report() and "95 % interval" in back.report()
     fig = res.plot()

@@ -332,6 +332,9 @@ class FitResult:
             "intervals": {n: [_finite_or_none(lo), _finite_or_none(hi)]
                           for n, (lo, hi) in self.intervals.items()},
             "derived": {k: v for k, (v, _) in self.derived().items()},
+            "at_lowest_minimum": self.extra.get("at_lowest_minimum", True),
+            "profile_intervals": {n: [_finite_or_none(lo), _finite_or_none(hi)] for n, (lo, hi)
+                                  in self.extra.get("profile_intervals", {}).items()},
             "data": self.data.to_dict(orient="list"),
         }
         path.write_text(json.dumps(doc, indent=1, default=_json_default))
@@ -351,9 +354,9 @@ class FitResult:
                    chisqr=doc["chisqr"], redchi=doc["redchi"], nfev=doc["nfev"],
                    seconds=doc["seconds"], weighted=doc["weighted"],
                    guess=Physical(**doc["guess"]) if doc["guess"] else None,
-                   intervals={n: (-math.inf if lo is None else float(lo),
-                                  math.inf if hi is None else float(hi))
-                              for n, (lo, hi) in doc.get("intervals", {}).items()},
+                   intervals=_intervals(doc.get("intervals", {})),
+                   extra={"at_lowest_minimum": doc.get("at_lowest_minimum", True),
+                          "profile_intervals": _intervals(doc.get("profile_intervals", {}))},
                    quality=doc.get("quality", "unjudged"),
                    p_value=math.nan if doc.get("p_value") is None else doc["p_value"],
                    penalised=doc.get("penalised", {}))
@@ -393,6 +396,12 @@ def _tick(bar) -> bool:
     returning True stops it, and tqdm's ``update`` returns True when it redraws)."""
     bar.update(1)
     return False
+
+
+def _intervals(saved: dict) -> dict[str, tuple[float, float]]:
+    """Intervals as saved: ``None`` is an unbounded end."""
+    return {n: (-math.inf if lo is None else float(lo), math.inf if hi is None else float(hi))
+            for n, (lo, hi) in saved.items()}
 
 
 def _finite_or_none(x: float) -> float | None:
