@@ -53,6 +53,7 @@ def test_fit_from_the_command_line(bench_file, tmp_path):
     assert out.returncode == 0, out.stderr
     saved = json.loads((tmp_path / "fit" / "fit.json").read_text())
     assert saved["params"]["mu0"]["value"] == pytest.approx(0.3, rel=1e-6)
+    assert saved["quality"] == "good" and out.stdout.startswith("GOOD FIT")
     assert (tmp_path / "fit" / "fit.png").stat().st_size > 0
     bad = _cli("fit", str(csv), "--bench", str(bench_file), "--free", "mu0,oops")
     assert bad.returncode == 2 and "free must name" in bad.stderr
@@ -75,3 +76,14 @@ def test_design_from_the_command_line(bench_file, tmp_path):
     bad = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz", "300",
                "--du-z", "1e-7:5e-7")
     assert bad.returncode == 2 and "low:high" in bad.stderr
+
+
+def test_fit_from_the_command_line_refuses_a_parameter_a_constraint_holds(bench_file,
+                                                                          tmp_path):
+    csv = tmp_path / "m.csv"
+    pd.DataFrame({"v0": [0.001, 0.01, 0.1], "cof": [0.2, 0.25, 0.28], "du_z": 5e-7,
+                  "omega": 6283.0, "sigma": 0.003}).to_csv(csv, index=False)
+    bad = _cli("fit", str(csv), "--bench", str(bench_file), "--free", "mu0,mass,k_x",
+               "--no-progress")
+    assert bad.returncode == 2
+    assert "natural_frequency" in bad.stderr and "mass and k_x" in bad.stderr

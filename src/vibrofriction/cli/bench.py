@@ -39,7 +39,7 @@ def fit_command(
     data: Annotated[str, typer.Argument(help="measurement table (CSV, docs/bench.md)")],
     bench: Annotated[str, typer.Option(help="bench file (JSON): the guess")],
     free: Annotated[str, typer.Option(help="fields to fit, comma-separated")] =
-    "mu0,mass,k_x,k_xc,u_z0",
+    "mu0,mass,k_xc,u_z0",
     fix: Annotated[str | None, typer.Option(
         help="fields of the guess to set first: name=value,...")] = None,
     natural_frequency: Annotated[bool, typer.Option(
