@@ -28,3 +28,9 @@ ST_NOT_CONVERGED = 2
 ST_FAILED = 3  # the event budget was exhausted or the integration got stuck
 ST_SLIDING = 4  # continuous forward sliding proven (mu/mu0 = 1 exactly)
 ST_STATIC = -1  # zero velocity: the static limit of eq. (2), not computed by the kernels
+
+# output columns of the steady-state rows: they follow solver.FLOAT_COLUMNS and
+# solver.INT_COLUMNS, in that order (plain named ints, the one place the kernels read)
+O_MU, O_ERR, O_STICK, O_SLIP, O_SLIP_NEG, O_FLIGHT, O_Y, O_XD, O_F = 0, 1, 2, 3, 4, 5, 6, 7, 8
+O_MULT, O_SETTLE, O_WMIN, O_WMAX, O_DRIFT, O_E = 9, 10, 11, 12, 13, 14
+I_STATUS, I_PERIOD, I_PERIODS, I_EVENTS, I_PHASE, I_DEGENERATE = 0, 1, 2, 3, 4, 5
