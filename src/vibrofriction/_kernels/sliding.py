@@ -16,6 +16,7 @@ from .phases import (
     M_A,
     M_ALPHA,
     M_C,
+    M_K,
     M_OFF,
     M_ON,
     M_R,
@@ -125,3 +126,26 @@ def sliding_certificate(y, xd, e, ph, M, orbit_ok, ys, yds, es):
             return False
         y0, yd0, e0 = evaluate(c, m, T), evaluate(derivative(c, m), m, T), evaluate(ce, m, T)
     return True
+
+
+@jit
+def unmodulated_sliding(y, xd, e, M):
+    r"""Without oscillation (``a = 0``) the long-time average is ``mu/mu0 = 1`` from any start.
+
+    With ``n = 1`` the energy about steady sliding,
+    ``E = (y'^2 + alpha (y + 1/alpha)^2 + k (e - 1/k)^2)/2`` (no ``e`` term for a rigid
+    contact), obeys ``E' = -gamma y'^2 - c e'^2 - (1 - f)(V - v_c)`` with ``v_c`` the
+    contact-point velocity: ``v_c = 0`` and ``f <= 1`` in stick, ``f = 1`` in forward
+    slip, ``f = -1`` and ``v_c < 0`` in reverse slip.  So ``E`` never increases (the
+    motion is bounded) and ``V * integral(1 - f) <= E(0)``: the mean of ``f`` over the
+    first ``tau`` is within ``E(0)/(V tau)`` of 1, and ``<f>/<n> = 1`` exactly (eq. 25).
+
+    Returns ``E(0)`` and the steady sliding state ``(y, x', e)`` the motion approaches
+    (around which an undamped one keeps its free oscillation).
+    """
+    alpha, V, k = M[M_ALPHA], M[M_V], M[M_K]
+    es = 0.0 if math.isinf(k) else 1.0 / k
+    energy = 0.5 * ((xd - V) ** 2 + alpha * (y + 1.0 / alpha) ** 2)
+    if not math.isinf(k):
+        energy += 0.5 * k * (e - es) ** 2
+    return energy, -1.0 / alpha, V, es

@@ -21,7 +21,8 @@ otherwise the running average is checked at doubling checkpoints
 * not converged, failed: no value (``nan``) and ``inf``; the last windows' means
   are reported as a range, never as the answer;
 * continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens
-  and to damping, docs/damping.md).
+  and to damping, docs/damping.md; without oscillation, ``a = 0``, from any start
+  by an energy argument, :func:`.sliding.unmodulated_sliding`).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS`` (:mod:`.codes`).
 """
@@ -51,6 +52,7 @@ from .codes import (
     O_WMIN,
     O_XD,
     O_Y,
+    SLIP_POS,
     ST_AVERAGED,
     ST_FAILED,
     ST_NOT_CONVERGED,
@@ -74,7 +76,7 @@ from .period import (
     advance_period,
 )
 from .phases import ETA_ELASTIC, ETA_SLOPE, make_model
-from .sliding import sliding_certificate, sliding_orbit
+from .sliding import sliding_certificate, sliding_orbit, unmodulated_sliding
 
 # re-exported: the kernels' entry points and what the tests drive directly
 __all__ = ["N_ACC", "advance_period", "sliding_certificate", "sliding_orbit", "steady_state",
@@ -181,6 +183,20 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
 
 
 @jit
+def _unmodulated(z, M, win, out_f):
+    """``a = 0``: ``mu/mu0 = 1`` is proven from any start (:func:`.sliding.unmodulated_sliding`);
+    the final state is steady sliding, reached at once from it (settling 0), else at
+    an unknown time (nan).  Returns ``(status, period, periods)``."""
+    energy, z[0], z[1], z[2] = unmodulated_sliding(z[0], z[1], z[2], M)
+    z[3], z[4] = SLIP_POS, 0.0
+    out_f[O_MU], out_f[O_ERR] = 1.0, 0.0
+    out_f[O_SETTLE] = 0.0 if energy == 0.0 else math.nan
+    win[:] = 0.0
+    win[A_SLIP] = 1.0
+    return ST_SLIDING, 0, 0
+
+
+@jit
 def _fractions(win, status, out_f):
     total = win[A_STICK] + win[A_SLIP] + win[A_FLIGHT]
     if total <= 0.0 or status == ST_FAILED:
@@ -194,7 +210,10 @@ def _fractions(win, status, out_f):
 @jit
 def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
     """The error's last terms, the fractions, the final state and the integer columns."""
-    if status == ST_FAILED or not math.isfinite(out_f[O_ERR]):
+    if status == ST_FAILED or status == ST_NOT_CONVERGED:
+        out_f[O_MU] = math.nan  # no value: a window mean of an earlier checkpoint is none
+        out_f[O_ERR] = math.inf
+    elif not math.isfinite(out_f[O_ERR]):
         out_f[O_ERR] = math.inf  # no estimate: nothing is known about the value
     elif 0.0 < eta < ETA_ELASTIC and not math.isinf(beta):
         out_f[O_ERR] += ETA_SLOPE * eta  # solved as an elastic contact (phases.ETA_ELASTIC)
@@ -217,16 +236,21 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
     ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)``
     at ``tau = 0``.  The columns are ``solver.FLOAT_COLUMNS`` and
     ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and
-    the state is the final one on the section.
+    the state is the final one on the section.  A failed or not converged run has
+    no value (``nan``) and no error estimate (``inf``).
     """
     M = make_model(alpha, beta, a, V, zeta, eta)
     z = _start(init_kind, y0, xd0, e0, ph0, M)
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
     out_f[:] = math.nan
-    status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
-                             count, win, out_f)
-    _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i)
+    if a == 0.0:
+        status, period, k = _unmodulated(z, M, win, out_f)
+    else:
+        status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
+                                 max_events, count, win, out_f)
+    # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
+    _finish(status, period, k, z, count, win, M, beta, eta if a != 0.0 else 0.0, out_f, out_i)
 
 
 @jit
