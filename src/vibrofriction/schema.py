@@ -150,9 +150,10 @@ class Status(enum.Enum):
                 "a periodic orbit was found on the Poincare section and averaged over "
                 "exactly one of its periods")
     SLIDING = ("continuous sliding", 4, True,
-               "continuous forward sliding is proven: the contact point can never stop "
-               "again (the free oscillation is smaller than v0 - v0*, eqs. 10-12), so "
-               "mu = mu0 exactly")
+               "continuous forward sliding is proven, so mu = mu0 exactly: the contact "
+               "point can never stop again (the free oscillation is smaller than v0 - v0*, "
+               "eqs. 10-12), or, without oscillation (a = 0), the energy about steady "
+               "sliding bounds the work of the friction deficit (docs/solver.md)")
     AVERAGED = ("averaged", 1, True,
                 "no periodic orbit within the period bound; the running average over the "
                 "last half of the run agrees with the half before within tol_mean")

@@ -18,7 +18,16 @@ tolerance that could flip back and forth.
 
 import math
 
-from .basis import basis_values, derivative, dot, evaluate, has_cs, integral
+from .basis import (
+    basis_values,
+    derivative,
+    dot,
+    evaluate,
+    has_cs,
+    integral,
+    magnitude,
+    value_at_zero,
+)
 from .codes import (
     EV_LIFTOFF,
     EV_NONE,
@@ -59,7 +68,7 @@ from .phases import (
     stick_elongation,
     stick_force,
 )
-from .roots import first_root, start_margin
+from .roots import REL_TOL, first_root, start_margin
 
 TWO_PI = 2.0 * math.pi
 N_SEG_COLUMNS = 11  # columns of a history row (run_periods)
@@ -90,6 +99,26 @@ def stick_coefficients(M, y, xd, e):
         return rigid_stick_force(M, y), M[M_SLIP], ZERO9
     ec = stick_elongation(M, y, xd, e)
     return stick_force(M, ec), M[M_STICK], ec
+
+
+@jit
+def stick_margin(fc, m, theta, s, a):
+    """The cone margin ``n - s f`` of stick (eq. 15), its round-off at the start removed.
+
+    Its value at the start is the difference of ``n`` and ``s f``, both about 1; the
+    round-off of that difference, ``REL_TOL (1 + |f_0|)``, is not seen by
+    :func:`.roots.start_margin`, which scales it by the coefficients left after the
+    cancellation (small where ``a cos theta`` and the free motion are, e.g. ``a = 0``).
+    A value within it is zero, so that the derivatives decide.  Without this, a force
+    projected onto the edge, ``k (1/k) = 1 - eps``, re-entered stick after every
+    stick->slip event and left it ``eps/(k V)`` later: 2e7 events in one period.
+    """
+    g = cone_margin(fc, theta, s, a)
+    g0 = value_at_zero(g, m)
+    tol = REL_TOL * magnitude(g)
+    if tol < abs(g0) <= tol + REL_TOL * (1.0 + abs(fc[0])):
+        g = (g[0] - g0, g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8])
+    return g
 
 
 @jit
@@ -126,9 +155,9 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
     n = normal_force(theta, a)
     if avoid != STICK and (not rigid or xd == 0.0):
         fc, mst, _ = stick_coefficients(M, y, xd, e)
-        ok1, _ = start_margin(cone_margin(fc, theta, 1.0, a), mst, T)
+        ok1, _ = start_margin(stick_margin(fc, mst, theta, 1.0, a), mst, T)
         if ok1:
-            ok2, _ = start_margin(cone_margin(fc, theta, -1.0, a), mst, T)
+            ok2, _ = start_margin(stick_margin(fc, mst, theta, -1.0, a), mst, T)
             if ok2:
                 return STICK, e, xd, evaluate(fc, mst, 0.0), True
     tol = 1e-12 * (1.0 + abs(n))
@@ -201,7 +230,7 @@ def segment(theta, y, xd, e, ed, phase, M):
     if phase == STICK and not zeno:
         for i in range(2):
             s = 1.0 if i == 0 else -1.0
-            g = cone_margin(fc, theta, s, a)
+            g = stick_margin(fc, mst, theta, s, a)
             ok, ts = start_margin(g, mst, T)
             tlim = T if te < 0.0 else te
             r = first_root(g, mst, ts, tlim) if ok else 0.0
