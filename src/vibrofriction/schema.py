@@ -227,10 +227,11 @@ class Range:
 
     def text(self, above_value: float | None = None) -> str:
         """The range in words, as the validator's errors say it: ``"finite and > 0"``,
-        ``"> 0 (math.inf allowed)"``; with ``above_value`` (the value of the parameter
-        named by ``above``) ``"> alpha (= 0.5) or math.inf"``."""
-        if self.above and above_value is not None:
-            return f"> {self.above} (= {above_value!r}) or math.inf"
+        ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with ``above_value``, the
+        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``)."""
+        if self.above:
+            value = "" if above_value is None else f" (= {above_value!r})"
+            return f"> {self.above}{value} or math.inf"
         lo, hi = self.minimum, self.maximum
         if lo is not None and hi is not None:
             text = f"in {'(' if self.strict else '['}{_number(lo)}, {_number(hi)}]"
