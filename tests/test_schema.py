@@ -10,17 +10,31 @@ import ast
 import dataclasses
 import json
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import settings as hypothesis_settings
+from hypothesis import strategies as st
 
 import vibrofriction as vf
 from vibrofriction import schema
 from vibrofriction.params import inertial_velocity
-from vibrofriction.schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, RESULT_FIELDS, Status
+from vibrofriction.schema import (
+    FIELD,
+    FLOAT_COLUMNS,
+    INT_COLUMNS,
+    MODELS,
+    PARAMETER,
+    PARAMETERS,
+    RESULT_FIELDS,
+    Status,
+    parameter_names,
+)
 
 SRC = Path(vf.__file__).parent
 POINT = vf.Dimensionless(0.5, 2.0, 0.5)
@@ -139,6 +153,9 @@ def test_cli_json_prints_every_field() -> None:
     assert moving["mu_ratio"] == r.mu_ratio and moving["status"] == r.status.value
     assert moving["system"]["beta"] == "inf" and moving["final_state"]["phase"] in (
         "stick", "slip+", "slip-")
+    for row in (static, moving):  # every parameter of the dimensionless model, by value
+        assert list(row["system"]) == list(parameter_names("dimensionless"))
+        assert row["system"]["alpha"] == 0.5 and row["system"]["eta_c"] == 0.0
     assert static["final_state"] is None and static["status"] == "static limit"
     assert moving["window_min"] is None  # nan as null: not averaged
 
@@ -268,3 +285,136 @@ def test_the_sweep_fingerprint_covers_the_solver_and_the_schema() -> None:
         assert module.resolve() in hashed, module
     assert (SRC / "schema.py").resolve() in hashed
     assert all(any(root.glob(pattern)) for pattern in _compute._VALUE_SOURCES)
+
+
+# --------------------------------------------------------------------------- parameters
+def test_every_parameter_is_described() -> None:
+    assert len(PARAMETER) == len(PARAMETERS)
+    for p in PARAMETERS:
+        assert p.model in MODELS and p.unit and p.symbol and p.equation, p
+        assert len(p.long_name) > 10, p
+        r = p.range
+        assert r.minimum is not None or r.maximum is not None, p  # every one is bounded
+        if r.above:  # checked after the parameter it must exceed
+            assert parameter_names(p.model).index(r.above) < parameter_names(
+                p.model).index(p.name), p
+    assert PARAMETER["beta"].range.above == "alpha" and PARAMETER["beta"].range.allow_inf
+    assert PARAMETER["k_xc"].range.allow_inf and PARAMETER["k_xc"].range.strict
+    assert set(parameter_names("velocity")) == {"vbar", "v_inertial", "v0"}
+    with pytest.raises(ValueError, match="model must be one of"):
+        schema.parameters("geometry")
+
+
+@pytest.mark.parametrize(("cls", "model"), [(vf.Dimensionless, "dimensionless"),
+                                            (vf.Physical, "physical")])
+def test_model_dataclasses_are_the_schema(cls, model) -> None:
+    """Every field of Dimensionless and Physical is a schema parameter of its model, in
+    the schema's order, with the schema's default (None: required)."""
+    fields = dataclasses.fields(cls)
+    assert tuple(f.name for f in fields) == parameter_names(model)
+    for f in fields:
+        default = None if f.default is dataclasses.MISSING else f.default
+        assert default == PARAMETER[f.name].default, f.name
+
+
+def _bad_values(r: schema.Range, margin: float) -> list[float]:
+    """Values outside the range ``r`` (``margin > 0`` away from a bound, or on it)."""
+    bad = [math.nan]
+    if not r.allow_inf:
+        bad.append(math.inf)
+    if r.minimum is not None:
+        bad += [r.minimum - margin, -math.inf] + ([r.minimum] if r.strict else [])
+    if r.maximum is not None:
+        bad.append(r.maximum + margin)
+    return bad
+
+
+def _good_values(r: schema.Range, margin: float) -> list[float]:
+    lo = r.minimum if r.minimum is not None else -1.0
+    hi = r.maximum if r.maximum is not None else lo + 2.0 * margin + 1.0
+    good = [min(lo + margin, hi)] + ([lo] if not r.strict else [])
+    return good + ([math.inf] if r.allow_inf else [])
+
+
+BASES = {"dimensionless": dict(alpha=0.5, beta=2.0, amplitude=0.5),
+         "physical": dict(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6,
+                          du_z=2e-6, omega=6283.0, mu0=0.3)}
+
+
+@given(margin=st.floats(1e-9, 1e9, allow_nan=False, allow_infinity=False),
+       index=st.integers(0, len(PARAMETERS) - 1))
+@hypothesis_settings(max_examples=150, deadline=None)
+def test_validator_refuses_every_out_of_range_value(margin: float, index: int) -> None:
+    """For each schema parameter, values just outside its range (and nan, inf where not
+    allowed) are refused by ``validated``, by its dataclass and by ``solve_points``, each
+    with the sentence naming the parameter, the schema's range and the value; values
+    inside pass."""
+    from vibrofriction.validation import validated
+
+    p = PARAMETERS[index]
+    own = dataclasses.replace(p.range, above="")  # alone, without the one it must exceed
+    for bad in _bad_values(own, margin):
+        message = re.escape(f"{p.name} must be {own.text()}, got {bad!r}")
+        with pytest.raises(ValueError, match=message):
+            validated({p.name: bad})
+        with pytest.raises(ValueError, match=message):  # inside an array
+            validated({p.name: np.array([_good_values(own, margin)[0], bad])})
+    for good in _good_values(own, margin):
+        assert validated({p.name: good})[p.name] == good
+    if p.range.above:  # beta: not above alpha
+        low = 0.5
+        for bad in (low, low - margin, math.nan, -math.inf):
+            message = re.escape(f"{p.name} must be {p.range.text(low)}, got {bad!r}")
+            with pytest.raises(ValueError, match=message):
+                validated({p.range.above: low, p.name: bad})
+            with pytest.raises(ValueError, match=message):
+                vf.Dimensionless(**{**BASES["dimensionless"], p.range.above: low,
+                                    p.name: bad})
+        assert validated({p.range.above: low, p.name: low + margin})[p.name] == low + margin
+        return
+    if p.model in BASES:  # the dataclass refuses it with the same sentence
+        cls = vf.Dimensionless if p.model == "dimensionless" else vf.Physical
+        for bad in _bad_values(p.range, margin):
+            with pytest.raises(ValueError, match=re.escape(f"{p.name} must be "
+                                                           f"{p.range.text()}, got {bad!r}")):
+                cls(**{**BASES[p.model], p.name: bad})
+    if p.name in (*parameter_names("dimensionless"), "v_inertial"):
+        point = dict(alpha=0.5, beta=2.0, amplitude=0.5, v_inertial=0.3)
+        bad = _bad_values(p.range, margin)[-1]
+        with pytest.raises(ValueError, match=re.escape(f"{p.name} must be")):
+            vf.solver.solve_points(**{**point, p.name: np.array([point.get(p.name, 0.0),
+                                                                 bad])})
+
+
+def test_validator_names_unknown_parameters_and_keeps_the_callers_order() -> None:
+    from vibrofriction.validation import validated
+
+    with pytest.raises(ValueError, match=r"unknown model parameter\(s\) \['gamma'\]"):
+        validated({"alpha": 0.5, "gamma": 1.0})
+    assert list(validated({"beta": 2.0, "alpha": 0.5})) == ["beta", "alpha"]
+    # a closed form's own domain replaces the schema's range
+    with pytest.raises(ValueError, match=r"amplitude must be finite and in \[0, 1\], got 1.5"):
+        validated({"amplitude": 1.5}, ranges={"amplitude": schema.Range(0.0, maximum=1.0)})
+
+
+def test_sweep_parameters_and_coordinates_are_the_schema() -> None:
+    """The sweep's parameter names and every coordinate's units and long name come from
+    the schema, for a dimensionless and a physical grid."""
+    from vibrofriction.sweep import _grid, make_plan
+    from vibrofriction.sweep._dataset import template
+
+    assert _grid.DIMENSIONLESS == parameter_names("dimensionless")
+    assert _grid.PHYSICAL == parameter_names("physical")
+    pin = vf.Physical(**BASES["physical"])
+    for plan in (make_plan(alpha=[0.1, 0.2], beta=2.0, amplitude=0.5, vbar=[0.5]),
+                 make_plan(alpha=0.1, beta=2.0, amplitude=[0.5], v_inertial=0.5),
+                 make_plan(system=pin, v0=[0.001, 0.01], physical={"mass": [0.01, 0.02]})):
+        ds = template(plan, None)
+        names = (parameter_names(plan.kind) + (plan.velocity.name,)
+                 + (parameter_names("dimensionless") if plan.kind == "physical" else ()))
+        assert set(names) <= set(ds.coords), (names, list(ds.coords))
+        for name in names:
+            p = PARAMETER[name]
+            assert ds[name].attrs["units"] == p.unit, name
+            assert ds[name].attrs["long_name"] == p.long_name, name
+            assert ds[name].attrs["equation"] == p.equation, name

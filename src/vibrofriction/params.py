@@ -23,7 +23,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
 from vibrofriction.contact import FlatPunch, Material, Sphere
-from vibrofriction.validation import as_float_or_array, checked, checked_beta
+from vibrofriction.schema import parameter_names
+from vibrofriction.validation import as_float_or_array, checked, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
            "inertial_to_vbar", "inertial_velocity", "pin_damping", "vbar_to_inertial"]
@@ -32,12 +33,22 @@ FloatOrArray = float | NDArray[np.float64]
 
 
 # --------------------------------------------------------------------------- validation
-def _positive(name: str, value: Any) -> float:
-    return float(checked(name, value, minimum=0.0, strict=True))
+def _valid(name: str, value: Any) -> float:
+    """One model parameter as a float, checked against its schema range."""
+    return float(validated({name: value})[name])
 
 
-def _nonnegative(name: str, value: Any) -> float:
-    return float(checked(name, value, minimum=0.0))
+def _valid_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """One model parameter as a float array, checked against its schema range."""
+    return validated({name: value})[name]
+
+
+def _validate_fields(obj: Any, model: str) -> None:
+    """Check the fields of a frozen model dataclass against the schema's ranges
+    (:func:`~vibrofriction.validation.validated`) and store them as floats."""
+    values = validated({name: getattr(obj, name) for name in parameter_names(model)})
+    for name, value in values.items():
+        object.__setattr__(obj, name, float(value))
 
 
 def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
@@ -50,13 +61,13 @@ def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
     """
     if (zeta is None) == (quality_factor is None):
         raise ValueError("give exactly one of zeta and quality_factor")
-    k_x = _positive("k_x", k_x)
-    mass = _positive("mass", mass)
+    k_x = _valid("k_x", k_x)
+    mass = _valid("mass", mass)
     if zeta is None:
         q = float(checked("quality_factor", quality_factor, minimum=0.0, strict=True,
                           allow_inf=True))
         zeta = 0.0 if math.isinf(q) else 1.0 / (2.0 * q)
-    return 2.0 * _nonnegative("zeta", zeta) * math.sqrt(k_x * mass)
+    return 2.0 * _valid("zeta", zeta) * math.sqrt(k_x * mass)
 
 
 # --------------------------------------------------------------------------- vbar <-> V
@@ -79,8 +90,7 @@ def _critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                        zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
     """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
     ValueError where ``vbar`` is undefined."""
-    al = checked("alpha", alpha, minimum=0.0, strict=True)
-    am = checked("amplitude", amplitude, minimum=0.0)
+    al, am = validated({"alpha": alpha, "amplitude": amplitude}).values()
     c = np.asarray(theory.critical_inertial_velocity(al, beta, am, zeta, eta_c), dtype=float)
     why = _undefined_vbar(al, am, c)
     if why is not None:
@@ -97,7 +107,7 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.  ValueError where
     ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
     """
-    v = checked("vbar", vbar, minimum=0.0)
+    v = _valid_array("vbar", vbar)
     return as_float_or_array(_critical_for_vbar(alpha, beta, amplitude, zeta, eta_c) * v)
 
 
@@ -105,7 +115,7 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      v_inertial: ArrayLike, zeta: ArrayLike = 0.0,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
-    V = checked("v_inertial", v_inertial, minimum=0.0)
+    V = _valid_array("v_inertial", v_inertial)
     return as_float_or_array(V / _critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 
 
@@ -174,9 +184,8 @@ def classify(alpha: float, beta: float, rtol: float = 0.05, ratio: float = 0.1) 
     ratio : float
         What "much smaller" means, in ``(0, 1)``.
     """
-    alpha = _positive("alpha", alpha)
-    beta = float(checked_beta(alpha, beta))
-    rtol = _nonnegative("rtol", rtol)
+    alpha, beta = (float(x) for x in validated({"alpha": alpha, "beta": beta}).values())
+    rtol = float(checked("rtol", rtol, minimum=0.0))
     ratio = float(ratio)
     if not 0.0 < ratio < 1.0:
         raise ValueError(f"ratio must be in (0, 1), got {ratio!r}")
@@ -220,12 +229,7 @@ class Dimensionless:
     eta_c: float = 0.0
 
     def __post_init__(self) -> None:
-        alpha = _positive("alpha", self.alpha)
-        object.__setattr__(self, "alpha", alpha)
-        object.__setattr__(self, "beta", float(checked_beta(alpha, self.beta)))
-        object.__setattr__(self, "amplitude", _nonnegative("amplitude", self.amplitude))
-        object.__setattr__(self, "zeta", _nonnegative("zeta", self.zeta))
-        object.__setattr__(self, "eta_c", _nonnegative("eta_c", self.eta_c))
+        _validate_fields(self, "dimensionless")
 
     @property
     def damped(self) -> bool:
@@ -310,13 +314,7 @@ class Physical:
     c_xc: float = 0.0
 
     def __post_init__(self) -> None:
-        for name in ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0"):
-            object.__setattr__(self, name, _positive(name, getattr(self, name)))
-        for name in ("c_x", "c_xc"):
-            object.__setattr__(self, name, _nonnegative(name, getattr(self, name)))
-        k_xc = float(checked("k_xc", self.k_xc, minimum=0.0, strict=True, allow_inf=True))
-        object.__setattr__(self, "k_xc", k_xc)
-        object.__setattr__(self, "du_z", _nonnegative("du_z", self.du_z))
+        _validate_fields(self, "physical")
 
     @classmethod
     def from_bench(cls, *, natural_frequency_hz: float, normal_load: float,
@@ -348,10 +346,10 @@ class Physical:
             raise ValueError("give exactly one of mass (kg) and k_x (N/m): the natural "
                              "frequency gives the other")
         if mass is not None:
-            mass = _positive("mass", mass)
+            mass = _valid("mass", mass)
             k_x = mass * w_n2
         else:
-            k_x = _positive("k_x", k_x)
+            k_x = _valid("k_x", k_x)
             mass = k_x / w_n2
         if contact is not None:
             if k_zc is not None or k_xc is not None:
@@ -363,12 +361,11 @@ class Physical:
         elif k_zc is None or k_xc is None:
             raise ValueError("give the contact stiffnesses k_zc and k_xc (N/m) or a contact "
                              "model (contact=FlatPunch(...) or Sphere(...))")
-        k_zc = _positive("k_zc", k_zc)
-        k_xc = float(checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True))
+        k_zc, k_xc = (float(x) for x in validated({"k_zc": k_zc, "k_xc": k_xc}).values())
         if (du_z is None) == (dF_N is None):
             raise ValueError("give exactly one of du_z (m) and dF_N (N) for the oscillation")
-        du_z = _nonnegative("du_z", du_z) if du_z is not None else \
-            _nonnegative("dF_N", dF_N) / k_zc
+        du_z = _valid("du_z", du_z) if du_z is not None else \
+            float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0)
         if quality_factor is not None and damping_ratio is not None:
@@ -452,7 +449,7 @@ class Physical:
             changes["c_x"] = pin_damping(self.k_x, self.mass, zeta=zeta,
                                          quality_factor=quality_factor)
         if eta_c is not None:
-            eta = _nonnegative("eta_c", eta_c)
+            eta = _valid("eta_c", eta_c)
             changes["c_xc"] = 0.0 if math.isinf(self.k_xc) else eta * self.k_xc / self.omega
         return self.with_(**changes)
 
@@ -487,18 +484,17 @@ class Physical:
     def velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
         """The unit of the inertial velocity, ``mu0 F_N0 / (m omega)`` in m/s (Fig. 6), at
         this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s)."""
-        omega = self.omega if omega is None else checked("omega", omega, minimum=0.0,
-                                                         strict=True)
+        omega = self.omega if omega is None else _valid_array("omega", omega)
         return as_float_or_array(self.mu0 * self.F_N0 / (self.mass * omega))
 
     def v0_to_inertial(self, v0: ArrayLike, omega: ArrayLike | None = None) -> FloatOrArray:
         """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6 (at this pin's
         ``omega`` or, elementwise, at other drive frequencies ``omega``, rad/s)."""
-        return as_float_or_array(checked("v0", v0, minimum=0.0) / self.velocity_unit(omega))
+        return as_float_or_array(_valid_array("v0", v0) / self.velocity_unit(omega))
 
     def inertial_to_v0(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``v0 = V mu0 F_N0 / (m omega)``, m/s."""
-        return as_float_or_array(checked("v_inertial", v_inertial, minimum=0.0)
+        return as_float_or_array(_valid_array("v_inertial", v_inertial)
                                  * self.velocity_unit())
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
@@ -535,7 +531,7 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     """
     if v_inertial.__class__ is float and vbar is None and v0 is None:  # the common fast path
         if not (math.isfinite(v_inertial) and v_inertial >= 0.0):
-            raise ValueError(f"v_inertial must be finite and >= 0, got {v_inertial!r}")
+            _valid("v_inertial", v_inertial)  # raises the schema's sentence
         return v_inertial
     given = [name for name, v in (("vbar", vbar), ("v_inertial", v_inertial), ("v0", v0))
              if v is not None]
@@ -551,4 +547,4 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     if vbar is not None:
         return dimensionless(system).vbar_to_inertial(vbar)
     dimensionless(system)
-    return as_float_or_array(checked("v_inertial", v_inertial, minimum=0.0))
+    return as_float_or_array(_valid_array("v_inertial", v_inertial))

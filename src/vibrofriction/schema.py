@@ -1,4 +1,4 @@
-"""The result vocabulary: every quantity the solver returns, and its status, once.
+"""The vocabulary: every parameter of the model and every quantity the solver returns, once.
 
 Each :class:`Field` carries its name, kind, unit, long name and the paper's equation
 (Mao, Popov, Starcevic & Popov, *Friction* 2017, Part II); the kernels' output columns
@@ -6,7 +6,11 @@ Each :class:`Field` carries its name, kind, unit, long name and the paper's equa
 the sweep's variables, the figures' curves, ``vibrofriction mu --json`` and the
 explorer's curves are derived from :data:`FIELDS`.  :class:`Status` is the one status
 vocabulary: each member carries its kernel code, its name, whether it is converged
-and its message.
+and its message.  :data:`PARAMETERS` is the model's description: each
+:class:`Parameter` carries its name, model, unit, long name, symbol, equation, allowed
+:class:`Range` and default; :func:`vibrofriction.validation.validated` checks values
+against it, and :class:`~vibrofriction.Dimensionless`, :class:`~vibrofriction.Physical`,
+the sweep's coordinates, ``vibrofriction mu --json`` and the explorer follow it.
 
 Standard library only: the numba kernels import it (their column indices and status
 codes come from here, :mod:`vibrofriction._kernels.codes`).
@@ -18,8 +22,9 @@ import enum
 from dataclasses import dataclass
 
 __all__ = ["CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS", "INT_COLUMNS",
-           "LENGTH_UNIT", "RESULT_FIELDS", "STATE_FIELDS", "STATUS_BY_CODE", "VELOCITY_UNIT",
-           "Field", "Status", "column_index"]
+           "LENGTH_UNIT", "MODELS", "PARAMETER", "PARAMETERS", "RESULT_FIELDS", "STATE_FIELDS",
+           "STATUS_BY_CODE", "VELOCITY_UNIT", "Field", "Parameter", "Range", "Status",
+           "column_index", "parameter_names", "parameters"]
 
 #: Units of the scaled variables (docs/model.md).
 VELOCITY_UNIT = "mu0 F_N0 / (m omega)"
@@ -96,8 +101,8 @@ FIELDS: tuple[Field, ...] = (
           "with fewer windows)", column=("float", 13), dtype="f8"),
     Field("final_state", "object", "", "the last state on the Poincare section tau = 2 pi k "
           "(SectionState: y, x_dot, f, phase, e; None for the static limit)"),
-    Field("system", "object", "", "the dimensionless system (alpha, beta, amplitude, zeta, "
-          "eta_c)", "(20), (24)"),
+    Field("system", "object", "", "the dimensionless system (Dimensionless: the parameters "
+          "of the dimensionless model, PARAMETERS)", "(20), (24)"),
     Field("v_inertial", "float", VELOCITY_UNIT, "inertial sliding velocity, "
           "v0 m omega / (mu0 F_N0)", "Fig. 6", "v0 m omega / (mu0 F_N0)", dtype="f8"),
     # the final section state, in the order of SectionState
@@ -192,3 +197,147 @@ STATUS_BY_CODE: dict[int, Status] = {
     s.code: s for s in sorted(Status, key=lambda s: (s.code < 0, s.code))}
 #: The codes of converged statuses (``Status.ok``).
 CONVERGED_CODES: tuple[int, ...] = tuple(c for c, s in STATUS_BY_CODE.items() if s.ok)
+
+
+# --------------------------------------------------------------------------- parameters
+#: The models a parameter belongs to: the paper's dimensionless groups
+#: (:class:`~vibrofriction.Dimensionless`), the SI set-up
+#: (:class:`~vibrofriction.Physical`) and the sliding velocity (one of three forms).
+MODELS = ("dimensionless", "physical", "velocity")
+
+
+def _number(x: float) -> str:
+    return f"{x:g}"
+
+
+@dataclass(frozen=True)
+class Range:
+    """The values a parameter may take.
+
+    ``minimum`` (exclusive when ``strict``), ``maximum`` (inclusive), ``allow_inf``
+    admits ``+inf`` (never ``nan``); ``above`` names a parameter the value must exceed
+    (``beta > alpha``), where ``inf`` is always allowed and ``minimum`` is what is
+    checked when that parameter is not given.
+    """
+
+    minimum: float | None = None
+    strict: bool = False
+    maximum: float | None = None
+    allow_inf: bool = False
+    above: str = ""
+
+    def text(self, above_value: float | None = None) -> str:
+        """The range in words, as the validator's errors say it: ``"finite and > 0"``,
+        ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with ``above_value``, the
+        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``)."""
+        if self.above:
+            value = "" if above_value is None else f" (= {above_value!r})"
+            return f"> {self.above}{value} or math.inf"
+        lo, hi = self.minimum, self.maximum
+        if lo is not None and hi is not None:
+            text = f"in {'(' if self.strict else '['}{_number(lo)}, {_number(hi)}]"
+        elif lo is not None:
+            text = f"{'>' if self.strict else '>='} {_number(lo)}"
+        else:
+            return "a number (not nan)" if self.allow_inf else "finite"
+        return f"{text} (math.inf allowed)" if self.allow_inf else f"finite and {text}"
+
+
+POSITIVE = Range(0.0, strict=True)
+NONNEGATIVE = Range(0.0)
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of the model: what it is, where it comes from, what it may be.
+
+    ``model`` is one of :data:`MODELS`; ``unit`` UDUNITS-style (``"1"``: dimensionless);
+    ``definition`` the parameter in terms of others (``"k_x / (m omega^2)"``; empty for
+    a primary one); ``range`` its allowed values; ``default`` its value when it is not
+    given (None: required).
+    """
+
+    name: str
+    model: str
+    unit: str
+    long_name: str
+    symbol: str
+    equation: str
+    range: Range
+    default: float | None = None
+    definition: str = ""
+
+    @property
+    def label(self) -> str:
+        """``symbol = definition`` (or ``symbol, unit``): a short caption for a form."""
+        return (f"{self.symbol} = {self.definition}" if self.definition
+                else f"{self.symbol} ({self.unit})")
+
+
+def _p(name: str, model: str, unit: str, long_name: str, symbol: str, equation: str = "",
+       range: Range = POSITIVE, default: float | None = None, definition: str = "") -> Parameter:
+    return Parameter(name, model, unit, long_name, symbol, equation, range, default,
+                     definition)
+
+
+_D, _P, _V = MODELS
+
+#: Every parameter of the model, in the order of the fields of
+#: :class:`~vibrofriction.Dimensionless`, then :class:`~vibrofriction.Physical`, then
+#: the velocities.  A new parameter is one entry here (docs/model.md, "Adding a
+#: parameter"): the validator, the sweep's coordinates, ``vibrofriction mu --json`` and
+#: the explorer follow.
+PARAMETERS: tuple[Parameter, ...] = (
+    _p("alpha", _D, "1", "system stiffness over inertia, k_x / (m omega^2)", "alpha", "(20)",
+       definition="k_x / (m omega^2)"),
+    _p("beta", _D, "1", "system plus contact stiffness over inertia, (k_x + k_xc) / "
+       "(m omega^2); inf = rigid contact", "beta", "(20)",
+       Range(0.0, strict=True, allow_inf=True, above="alpha"),
+       definition="(k_x + k_xc) / (m omega^2)"),
+    _p("amplitude", _D, "1", "relative amplitude of the normal oscillation, du_z / u_z0 "
+       "(> 1: jumping)", "a", "(1), (24)", NONNEGATIVE, definition="du_z / u_z0"),
+    _p("zeta", _D, "1", "damping ratio of the pin, c_x / (2 sqrt(k_x m)) = 1/(2Q)", "zeta",
+       "docs/damping.md", NONNEGATIVE, 0.0, "c_x / (2 sqrt(k_x m))"),
+    _p("eta_c", _D, "1", "loss factor of the contact at the drive frequency, "
+       "omega c_xc / k_xc (ignored by a rigid contact)", "eta_c", "docs/damping.md",
+       NONNEGATIVE, 0.0, "omega c_xc / k_xc"),
+    _p("mass", _P, "kg", "mass of the body", "m", "Fig. 1b"),
+    _p("k_x", _P, "N m-1", "tangential stiffness of the system spring", "k_x", "Fig. 1b"),
+    _p("k_xc", _P, "N m-1", "tangential contact stiffness; inf = rigid contact", "k_x,c",
+       "Fig. 1b", Range(0.0, strict=True, allow_inf=True)),
+    _p("k_zc", _P, "N m-1", "normal contact stiffness", "k_z,c", "(3)"),
+    _p("u_z0", _P, "m", "mean indentation", "u_z0", "(1)"),
+    _p("du_z", _P, "m", "amplitude of the normal oscillation", "Delta u_z", "(1)",
+       NONNEGATIVE),
+    _p("omega", _P, "rad s-1", "angular frequency of the normal oscillation", "omega", "(1)"),
+    _p("mu0", _P, "1", "local (microscopic) coefficient of friction", "mu0", "Fig. 1b"),
+    _p("c_x", _P, "N s m-1", "pin dashpot parallel to k_x", "c_x", "docs/damping.md",
+       NONNEGATIVE, 0.0),
+    _p("c_xc", _P, "N s m-1", "tangential contact dashpot parallel to k_xc (Kelvin-Voigt)",
+       "c_x,c", "docs/damping.md", NONNEGATIVE, 0.0),
+    _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
+       "(16)", NONNEGATIVE, definition="v0 / v0*"),
+    _p("v_inertial", _V, VELOCITY_UNIT, FIELD["v_inertial"].long_name, "V", "Fig. 6",
+       NONNEGATIVE, definition="v0 m omega / (mu0 F_N0)"),
+    _p("v0", _V, "m s-1", "sliding velocity of the drive", "v0", "Fig. 1b", NONNEGATIVE),
+)
+
+PARAMETER: dict[str, Parameter] = {p.name: p for p in PARAMETERS}
+if len(PARAMETER) != len(PARAMETERS) or any(
+        p.model not in MODELS or (p.range.above and p.range.above not in
+                                  [q.name for q in PARAMETERS[:i]])
+        for i, p in enumerate(PARAMETERS)):  # the validator checks in this order
+    raise AssertionError("PARAMETERS: names must be unique, models known, and a parameter "
+                         "that must exceed another must come after it")
+
+
+def parameters(model: str) -> tuple[Parameter, ...]:
+    """The parameters of ``model`` (one of :data:`MODELS`), in the schema's order."""
+    if model not in MODELS:
+        raise ValueError(f"model must be one of {list(MODELS)}, got {model!r}")
+    return tuple(p for p in PARAMETERS if p.model == model)
+
+
+def parameter_names(model: str) -> tuple[str, ...]:
+    """The names of :func:`parameters` of ``model``."""
+    return tuple(p.name for p in parameters(model))

@@ -37,7 +37,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._kernels.integrate import liftoff_phases as _kernel_liftoff_phases
-from .validation import as_float_or_array, checked, checked_beta
+from .schema import POSITIVE, Range
+from .validation import as_float_or_array, checked, validated
 
 __all__ = [
     "SOFT_EXPONENT",
@@ -62,6 +63,19 @@ __all__ = [
     "static_mu_ratio",
     "steady_sliding",
 ]
+
+#: Domains of closed forms wider or narrower than the model's (the schema's ranges):
+#: the soft limit ``k_x = 0`` (``alpha = 0``) is a point of the formulas, the laws of
+#: eqs. (26), (27) hold without jumping (``a <= 1``) and at every ``vbar`` up to ``inf``.
+_SOFT_LIMIT = Range(0.0)
+_NO_JUMPING = Range(0.0, maximum=1.0)
+_ANY_VBAR = Range(0.0, allow_inf=True)
+
+
+def _valid(name: str, value: ArrayLike, domain: Range | None = None) -> NDArray[np.float64]:
+    """One model parameter checked by the one validator (in ``domain`` if given)."""
+    return validated({name: value}, ranges=None if domain is None else {name: domain})[name]
+
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -95,7 +109,7 @@ def static_mu_ratio(amplitude: ArrayLike) -> FloatOrArray:
     amplitude : array_like
         ``a = du_z / u_z0 >= 0``.
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     return as_float_or_array(np.where(a < 1.0, 1.0 - a, 0.0))
 
 
@@ -118,15 +132,9 @@ def critical_velocity(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike, k_zc: A
     pin damping (case IV), ``0`` at ``k_x + k_xc = m omega^2`` without damping (case
     III) and ``0`` when ``du_z = 0`` (no oscillation, no reduction of friction).
     """
-    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
-    omega = checked("omega", omega, minimum=0.0, strict=True)
-    du_z = checked("du_z", du_z, minimum=0.0)
-    k_zc = checked("k_zc", k_zc, minimum=0.0, strict=True)
-    k_xc = checked("k_xc", k_xc, minimum=0.0, strict=True, allow_inf=True)
-    k_x = checked("k_x", k_x, minimum=0.0)
-    mass = checked("mass", mass, minimum=0.0, strict=True)
-    c_x = checked("c_x", c_x, minimum=0.0)
-    c_xc = checked("c_xc", c_xc, minimum=0.0)
+    mu0, omega, du_z, k_zc, k_xc, k_x, mass, c_x, c_xc = validated(
+        {"mu0": mu0, "omega": omega, "du_z": du_z, "k_zc": k_zc, "k_xc": k_xc, "k_x": k_x,
+         "mass": mass, "c_x": c_x, "c_xc": c_xc}, ranges={"k_x": _SOFT_LIMIT}).values()
     detuning = (k_x - mass * omega**2) + 1j * omega * c_x
     eta = np.where(np.isinf(k_xc), 0.0, omega * c_xc / k_xc)
     num = mu0 * omega * du_z * k_zc * np.abs(1.0 + detuning / k_xc + 1j * eta)
@@ -141,10 +149,8 @@ def critical_velocity_soft(mu0: ArrayLike, dF_N: ArrayLike, mass: ArrayLike,
     ``k_x << m omega^2 << k_xc``, with ``dF_N = k_zc du_z``. The paper writes
     ``|m omega^2|`` in the denominator; the modulus is redundant.
     """
-    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
+    mu0, mass, omega = validated({"mu0": mu0, "mass": mass, "omega": omega}).values()
     dF_N = checked("dF_N", dF_N, minimum=0.0)
-    mass = checked("mass", mass, minimum=0.0, strict=True)
-    omega = checked("omega", omega, minimum=0.0, strict=True)
     return as_float_or_array(mu0 * dF_N / (mass * omega))
 
 
@@ -156,11 +162,9 @@ def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
     ``k_xc << |k_x - m omega^2|`` (Part I of the series). Independent of the
     inertia; only the Mindlin ratio ``k_zc / k_xc`` enters.
     """
-    mu0 = checked("mu0", mu0, minimum=0.0, strict=True)
-    omega = checked("omega", omega, minimum=0.0, strict=True)
-    du_z = checked("du_z", du_z, minimum=0.0)
-    k_zc = checked("k_zc", k_zc, minimum=0.0, strict=True)
-    k_xc = checked("k_xc", k_xc, minimum=0.0, strict=True)
+    mu0, omega, du_z, k_zc, k_xc = validated(
+        {"mu0": mu0, "omega": omega, "du_z": du_z, "k_zc": k_zc, "k_xc": k_xc},
+        ranges={"k_xc": POSITIVE}).values()  # a compliant contact: eq. (14) needs k_xc < inf
     return as_float_or_array(mu0 * omega * du_z * k_zc / k_xc)
 
 
@@ -185,11 +189,9 @@ def critical_inertial_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arr
     without damping (case III) and ``0`` at ``a = 0``.  In the soft limit
     (``alpha -> 0``, ``beta -> inf``, undamped) ``V_c -> a``, i.e. eq. (13).
     """
-    alpha = checked("alpha", alpha, minimum=0.0)
-    beta = checked_beta(alpha, beta)
-    a = checked("amplitude", amplitude, minimum=0.0)
-    zeta = checked("zeta", zeta, minimum=0.0)
-    eta = checked("eta_c", eta_c, minimum=0.0)
+    alpha, beta, a, zeta, eta = validated(
+        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
+        ranges={"alpha": _SOFT_LIMIT}).values()
     detuning = (alpha - 1.0) + 2j * zeta * np.sqrt(alpha)
     eta = np.where(np.isinf(beta), 0.0, eta)
     num = a * np.abs(1.0 + detuning / (beta - alpha) + 1j * eta)
@@ -232,14 +234,14 @@ def steady_sliding(tau: ArrayLike, alpha: ArrayLike, beta: ArrayLike, amplitude:
     solution), ``0 <= a <= 1`` (no loss of contact). Arguments broadcast.
     """
     tau = checked("tau", tau)
-    alpha = checked("alpha", alpha, minimum=0.0, strict=True)
+    alpha = _valid("alpha", alpha)
     if np.any(alpha == 1.0):
         raise ValueError(
             "alpha must differ from 1, got 1.0: at resonance (case IV) the sliding "
             "solution of eqs. (7)-(8) does not exist"
         )
-    beta = checked_beta(alpha, beta)
-    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    _, beta, a = validated({"alpha": alpha, "beta": beta, "amplitude": amplitude},
+                           ranges={"amplitude": _NO_JUMPING}).values()
     V = checked("V", V, minimum=0.0)
     body_amp = a / (1.0 - alpha)
     contact_gain = 1.0 + (alpha - 1.0) / (beta - alpha)  # (beta - 1)/(beta - alpha)
@@ -265,8 +267,8 @@ def mu_ratio_stiff(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     slope. Stated (Fig. 4) for ``0 <= a <= 1``; ``a > 1`` raises ValueError,
     since it would give ``1 - a < 0`` at ``vbar = 0``, contradicting eq. (2).
     """
-    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude, _NO_JUMPING)
     u = np.minimum(v, 1.0) - 1.0
     return as_float_or_array(np.where(v < 1.0, 1.0 - a * (0.75 * u**2 + 0.25 * u**4), 1.0))
 
@@ -292,8 +294,8 @@ def mu_ratio_soft(vbar: ArrayLike, amplitude: ArrayLike,
     0.29 and with the small-velocity asymptotics.  See :func:`mu_ratio_soft_corrected`
     (``vbar`` under the square root), which agrees within 0.012 (docs/theory.md).
     """
-    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude, _NO_JUMPING)
     p = float(checked("exponent", exponent, minimum=0.0, strict=True))
     vc = np.minimum(v, 1.0)
     law = (1.0 - a) + a * (_SOFT_SLOPE * vc + (1.0 - _SOFT_SLOPE) * vc**p)
@@ -319,8 +321,8 @@ def mu_ratio_soft_corrected(vbar: ArrayLike, amplitude: ArrayLike,
     from under the root; the second term (exponent ``p``, printed "1,2") only
     makes the law reach 1 at ``vbar = 1``.  Stated for ``0 <= a <= 1``.
     """
-    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude, _NO_JUMPING)
     p = float(checked("exponent", exponent, minimum=0.0, strict=True))
     vc = np.minimum(v, 1.0)
     law = (1.0 - a) + a * (_SOFT_SLOPE * np.sqrt(vc) + (1.0 - _SOFT_SLOPE) * vc**p)
@@ -355,7 +357,7 @@ def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
 
     which is the denominator of eq. (25) for a jumping body.
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     theta = _contact_half_angle(a)
     return as_float_or_array(np.where(a > 1.0, (theta + a * np.sin(theta)) / np.pi, 1.0))
 
@@ -367,7 +369,7 @@ def liftoff_phases(amplitude: ArrayLike) -> Liftoff:
     for ``a >= 1``; ``a = 1`` gives the grazing point ``(pi, pi)``; ``nan`` for
     ``a < 1`` (no loss of contact).
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     off = np.where(a >= 1.0, _liftoff_angles(a)[0], np.nan)
     return Liftoff(as_float_or_array(off), as_float_or_array(2.0 * np.pi - off))
 
@@ -390,7 +392,7 @@ def resonant_velocity_ratio(amplitude: ArrayLike) -> FloatOrArray:
     ``tau* ~ sqrt(2(1 - v0/dv))``. For ``a > 1`` the right-hand side ``pi a``
     becomes ``a theta + sin theta`` (loss of contact, ``theta = arccos(-1/a)``).
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     tau_star = _drive_work(a) / (4.0 * (1.0 + a))
     return as_float_or_array(1.0 - 0.5 * tau_star**2)
 
@@ -446,7 +448,7 @@ def resonant_velocity_ratio_exact(amplitude: ArrayLike) -> FloatOrArray:
     assumed in eq. (30) is consistent: the quadrature component of the
     fundamental of the friction force vanishes only for phase 0 or pi.)
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     return as_float_or_array(np.cos(_tau_star_exact(a)))
 
 
@@ -464,7 +466,7 @@ def resonant_plateau(amplitude: ArrayLike) -> FloatOrArray:
       ``1 - a/2`` would neglect loss of contact (negative for ``a > 2``). This one
       tends to ``1 - pi/4`` as ``a -> inf``.
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     theta = _contact_half_angle(a)
     jumping = 1.0 - (a * theta + np.sin(theta)) / (2.0 * (theta + a * np.sin(theta)))
     return as_float_or_array(np.where(a > 1.0, jumping, 1.0 - 0.5 * a))
@@ -488,7 +490,7 @@ def resonant_plateau_exact(amplitude: ArrayLike) -> FloatOrArray:
     (harmonic body velocity, rigid contact ``beta = inf``, ``alpha = 1``,
     large ``v0``); the solver is the judge of the ansatz.
     """
-    a = checked("amplitude", amplitude, minimum=0.0)
+    a = _valid("amplitude", amplitude)
     tau = _tau_star_exact(a)
     n_mean = np.asarray(mean_normal_force(a))
     return as_float_or_array(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)
@@ -533,9 +535,9 @@ def resonant_damped_mu_ratio(v_inertial: ArrayLike, amplitude: ArrayLike,
     at ``V = E(a)/(pi gamma)``, which is the critical velocity ``a/(2 zeta)`` for
     ``a <= 1``.  Within the ansatz (large ``V``, harmonic motion); the solver is the judge.
     """
-    V = checked("v_inertial", v_inertial, minimum=0.0)
-    a = checked("amplitude", amplitude, minimum=0.0)
-    zeta = checked("zeta", zeta, minimum=0.0)
+    V = _valid("v_inertial", v_inertial)
+    a = _valid("amplitude", amplitude)
+    zeta = _valid("zeta", zeta)
     V, a, zeta = np.broadcast_arrays(V, a, zeta)
     x = np.pi * 2.0 * zeta * V
     tau = np.vectorize(_damped_tau_star, otypes=[float])(x, a)
@@ -587,6 +589,6 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
 
     ``1 - a`` at ``vbar = 0`` (eq. 2), 1 for ``vbar >= 1``.  For ``0 <= a <= 1``.
     """
-    v = checked("vbar", vbar, minimum=0.0, allow_inf=True)
-    a = checked("amplitude", amplitude, minimum=0.0, maximum=1.0)
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude, _NO_JUMPING)
     return as_float_or_array(np.vectorize(_stiff_exact, otypes=[float])(v, a))

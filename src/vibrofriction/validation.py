@@ -3,29 +3,36 @@
 Every public entry point (parameters, closed forms, solver, sweep grids, figures)
 checks its inputs through :func:`checked` and :func:`checked_beta`, so that a bad
 value is refused with the same sentence everywhere: the parameter's name, the
-allowed range and the first offending value.
+allowed range and the first offending value.  The model's parameters are checked by
+:func:`validated`, against their ranges in :data:`vibrofriction.schema.PARAMETERS`.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["as_float_or_array", "checked", "checked_beta", "range_text"]
+from .schema import PARAMETER, PARAMETERS, Range
+
+__all__ = ["as_float_or_array", "checked", "checked_beta", "range_text", "validated"]
 
 FloatOrArray = float | NDArray[np.float64]
 
 
 def range_text(minimum: float | None = None, strict: bool = False,
                maximum: float | None = None, allow_inf: bool = False) -> str:
-    """The allowed range in words, e.g. ``"finite and > 0"``."""
-    if minimum is not None and maximum is not None:
-        text = f"in {'(' if strict else '['}{minimum:g}, {maximum:g}]"  # maximum inclusive
-    elif minimum is not None:
-        text = f"{'>' if strict else '>='} {minimum:g}"
-    else:
-        return "a number (not nan)" if allow_inf else "finite"
-    return f"{text} (math.inf allowed)" if allow_inf else f"finite and {text}"
+    """The allowed range in words, e.g. ``"finite and > 0"`` (:meth:`Range.text`)."""
+    return Range(minimum, strict, maximum, allow_inf).text()
+
+
+def _floats(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    try:
+        return np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number or an array of numbers, "
+                         f"got {value!r}") from None
 
 
 def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
@@ -36,11 +43,7 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
     ``minimum`` is exclusive when ``strict``; ``maximum`` is inclusive; ``allow_inf``
     admits ``+inf`` (a rigid contact, ``beta = inf``) but never ``nan``.
     """
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number or an array of numbers, "
-                         f"got {value!r}") from None
+    arr = _floats(name, value)
     bad = np.isnan(arr)
     if not allow_inf:
         bad |= np.isinf(arr)
@@ -56,17 +59,55 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
     return arr
 
 
+def _checked_above(name: str, value: ArrayLike, other: str,
+                   other_value: ArrayLike) -> NDArray[np.float64]:
+    """``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
+    allowed; ``nan`` never), elementwise."""
+    low = np.asarray(other_value, dtype=float)
+    arr = _floats(name, value)
+    with np.errstate(invalid="ignore"):
+        bad = ~(arr > low)  # also nan
+    if np.any(bad):
+        low_b, arr_b, bad_b = np.broadcast_arrays(low, arr, bad)
+        raise ValueError(f"{name} must be "
+                         f"{Range(above=other).text(float(low_b[bad_b][0]))}, "
+                         f"got {float(arr_b[bad_b][0])!r}")
+    return arr
+
+
 def checked_beta(alpha: ArrayLike, beta: ArrayLike) -> NDArray[np.float64]:
     """``beta`` as a float array, or ValueError unless ``beta > alpha`` (``inf`` allowed)."""
-    a = np.asarray(alpha, dtype=float)
-    b = checked("beta", beta, allow_inf=True) if np.ndim(beta) else np.asarray(beta, float)
-    with np.errstate(invalid="ignore"):
-        bad = ~(b > a)  # also nan
-    if np.any(bad):
-        a_b, b_b, bad_b = np.broadcast_arrays(a, b, bad)
-        raise ValueError(f"beta must be > alpha (= {float(a_b[bad_b][0])!r}) or math.inf, "
-                         f"got {float(b_b[bad_b][0])!r}")
-    return b
+    return _checked_above("beta", beta, "alpha", alpha)
+
+
+def validated(values: Mapping[str, ArrayLike], *,
+              ranges: Mapping[str, Range] | None = None) -> dict[str, NDArray[np.float64]]:
+    """The model's parameters ``values`` (scalars or arrays, by the names of
+    :data:`~vibrofriction.schema.PARAMETERS`) as float arrays, each checked against its
+    schema :class:`~vibrofriction.schema.Range`: the one check of a model parameter.
+
+    Checked in the schema's order, so the first bad one named is the first in the
+    schema; a parameter that must exceed another (``beta > alpha``) is compared with
+    it elementwise where both are given, and against its own ``minimum`` otherwise.
+    ``ranges`` replaces the schema's range of some parameters, for a closed form whose
+    domain is not the model's (``amplitude <= 1``: no jumping).  ValueError naming the
+    parameter, its range and the first bad value; or naming an unknown parameter.
+    """
+    unknown = [n for n in values if n not in PARAMETER]
+    if unknown:
+        raise ValueError(f"unknown model parameter(s) {unknown}; known: {list(PARAMETER)}")
+    ranges = ranges or {}
+    out: dict[str, NDArray[np.float64]] = {}
+    for p in PARAMETERS:
+        if p.name not in values:
+            continue
+        r = ranges.get(p.name, p.range)
+        if r.above and r.above in out:
+            out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
+        else:
+            out[p.name] = checked(p.name, values[p.name], minimum=r.minimum, strict=r.strict,
+                                  maximum=r.maximum, allow_inf=r.allow_inf)
+    return {n: out[n] for n in values}
 
 
 def as_float_or_array(x: ArrayLike) -> FloatOrArray:

@@ -9,6 +9,7 @@ import numpy as np
 import typer
 
 from ..params import Dimensionless, Physical
+from ..schema import parameter_names
 from ..solver import FrictionResult, SolverSettings, friction_coefficient
 from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
@@ -126,8 +127,11 @@ def _json_value(v):
 
 def json_row(r: FrictionResult) -> dict:
     """Every field of a result (:data:`vibrofriction.schema.RESULT_FIELDS`, JSON-safe:
-    nan as null, inf as "inf"), its ``vbar`` and its message."""
+    nan as null, inf as "inf"; ``system`` as every parameter of the schema's
+    dimensionless model), its ``vbar`` and its message."""
     row = {k: _json_value(v) for k, v in r.as_dict().items()}
+    row["system"] = {n: json_number(getattr(r.system, n))
+                     for n in parameter_names("dimensionless")}
     row["vbar"] = json_number(r.vbar)
     row["message"] = r.message
     return row

@@ -13,7 +13,7 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.params import dimensionless as _dimensionless
 from vibrofriction.params import inertial_velocity
-from vibrofriction.schema import RESULT_FIELDS
+from vibrofriction.schema import RESULT_FIELDS, parameter_names
 
 from .state import AXES, State
 
@@ -85,8 +85,7 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "static": float(theory.static_mu_ratio(dim.amplitude)) * scale,
         "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
-        "alpha": dim.alpha, "beta": dim.beta, "amplitude": dim.amplitude,
-        "zeta": dim.zeta, "eta_c": dim.eta_c,
+        **{n: getattr(dim, n) for n in parameter_names("dimensionless")},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
                                                   scale),
         "x_label": AXES[state.axis][1],

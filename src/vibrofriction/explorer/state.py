@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 import vibrofriction as vf
+from vibrofriction.schema import PARAMETER, parameter_names
 from vibrofriction.validation import checked
 
 __all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "Field", "State", "parse_number"]
@@ -38,23 +39,30 @@ class Field:
     allow_inf: bool = False
 
 
-DIMENSIONLESS = (
-    Field("alpha", "alpha = k_x/(m omega^2)", 1e-3, 1e2),
-    Field("beta", "beta = (k_x + k_xc)/(m omega^2)", 1e-3, 1e4, allow_inf=True),
-    Field("amplitude", "a = du_z/u_z0", 0.0, 3.0, log=False),
-    Field("zeta", "zeta (pin damping ratio)", 0.0, 0.2, log=False),
-    Field("eta_c", "eta_c (contact loss factor)", 0.0, 1.0, log=False),
-)
+def _model_field(name: str, low: float, high: float, log: bool = True,
+                 label: str = "") -> Field:
+    """The input of a model parameter: its label (unless given) and whether ``inf`` is
+    allowed from the schema (:data:`vibrofriction.schema.PARAMETERS`); the slider range
+    and scale are the explorer's choice."""
+    p = PARAMETER[name]
+    return Field(name, label or p.label, low, high, log, allow_inf=p.range.allow_inf)
+
+
+#: the sliders of the dimensionless model (ranges: UI choices, not the model's limits)
+_SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
+           "amplitude": (0.0, 3.0, False), "zeta": (0.0, 0.2, False),
+           "eta_c": (0.0, 1.0, False)}
+DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless"))
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
-    Field("mass", "pin modal mass (kg)", 1e-4, 10.0),
+    _model_field("mass", 1e-4, 10.0, label="pin modal mass (kg)"),
     Field("quality_factor", "pin quality factor Q", 1.0, 1e4, allow_inf=True),
     Field("normal_load", "normal load F_N0 (N)", 0.01, 1e4),
-    Field("k_zc", "normal contact stiffness k_zc (N/m)", 1e4, 1e10),
-    Field("k_xc", "tangential contact stiffness k_xc (N/m)", 1e4, 1e10, allow_inf=True),
+    _model_field("k_zc", 1e4, 1e10, label="normal contact stiffness k_zc (N/m)"),
+    _model_field("k_xc", 1e4, 1e10, label="tangential contact stiffness k_xc (N/m)"),
     Field("drive_frequency_hz", "drive frequency (Hz)", 10.0, 1e5),
     Field("du_z_um", "oscillation amplitude du_z (um)", 1e-3, 100.0),
-    Field("mu0", "mu0 (local coefficient of friction)", 0.01, 2.0),
+    _model_field("mu0", 0.01, 2.0, label="mu0 (local coefficient of friction)"),
     Field("bench_eta_c", "eta_c (contact loss factor)", 0.0, 1.0, log=False),
 )
 VELOCITY = (
@@ -79,8 +87,8 @@ class State:
     alpha: float = 0.5
     beta: float = 2.0
     amplitude: float = 0.5
-    zeta: float = 0.0
-    eta_c: float = 0.0
+    zeta: float = PARAMETER["zeta"].default
+    eta_c: float = PARAMETER["eta_c"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
     quality_factor: float = 50.0
@@ -107,8 +115,8 @@ class State:
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
-            return vf.Dimensionless(self.alpha, self.beta, self.amplitude, zeta=self.zeta,
-                                    eta_c=self.eta_c)
+            return vf.Dimensionless(**{n: getattr(self, n)
+                                       for n in parameter_names("dimensionless")})
         return vf.Physical.from_bench(**self.bench_arguments())
 
     def bench_arguments(self) -> dict[str, float]:

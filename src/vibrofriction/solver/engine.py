@@ -18,7 +18,7 @@ from .._kernels import codes
 from .._kernels.steady import steady_state, steady_state_many
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
-from ..validation import checked, checked_beta
+from ..validation import validated
 from .results import (
     PHASE_CODE,
     FrictionResult,
@@ -66,8 +66,9 @@ def solve_points(
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The six parameters broadcast together and are validated (finite, ``alpha > 0``,
-    ``beta > alpha``, ``a >= 0``, ``V >= 0``, ``zeta >= 0``, ``eta_c >= 0``).  Returns
+    The six parameters broadcast together and are validated against their ranges in
+    :data:`vibrofriction.schema.PARAMETERS` (``alpha > 0``, ``beta > alpha``, ``a >= 0``,
+    ``V >= 0``, ``zeta >= 0``, ``eta_c >= 0``, finite but ``beta``).  Returns
     arrays of that shape named by :data:`~vibrofriction.schema.FLOAT_COLUMNS` and
     ``INT_COLUMNS`` (``status`` as :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``,
     ``phase`` the final section state) and ``trusted``.  Results are bitwise
@@ -78,12 +79,8 @@ def solve_points(
         np.asarray(x, dtype=float) for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c)))
     shape = V.shape
     al, be, am, V, ze, et = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et))
-    checked("alpha", al, minimum=0.0, strict=True)
-    checked_beta(al, be)
-    checked("amplitude", am, minimum=0.0)
-    checked("v_inertial", V, minimum=0.0)
-    checked("zeta", ze, minimum=0.0)
-    checked("eta_c", et, minimum=0.0)
+    validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
+               "eta_c": et})
     n = V.size
     kind, init = initial_rows(initial, n,
                               lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i]))

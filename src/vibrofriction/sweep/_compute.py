@@ -19,7 +19,7 @@ import numpy as np
 from .. import theory
 from ..params import Dimensionless, Physical, inertial_velocity
 from ..solver import section_state, solve_points
-from ._grid import Plan
+from ._grid import DIMENSIONLESS, Plan
 from ._variables import point_variables, row_variables
 
 __all__ = ["compute_block", "identity", "warm_up"]
@@ -77,16 +77,16 @@ def _velocity_values(plan: Plan, block: int) -> np.ndarray:
 
 
 def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
-    """``alpha, beta, amplitude, zeta, eta_c`` per row, the row variables and ``V`` per
-    (row, velocity)."""
+    """The dimensionless parameters per row (by name, in the schema's order), the row
+    variables and ``V`` per (row, velocity)."""
     p = _rows(plan, block)
-    point = tuple(p[n] for n in ("alpha", "beta", "amplitude", "zeta", "eta_c"))
-    shape = point[0].shape
+    point = {n: p[n] for n in DIMENSIONLESS}
+    shape = p["alpha"].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
-    critical = np.asarray(theory.critical_inertial_velocity(*point), dtype=float).reshape(shape)
+    critical = np.asarray(theory.critical_inertial_velocity(**point), dtype=float).reshape(shape)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
-        system = Dimensionless(*(float(x[i]) for x in point))
+        system = Dimensionless(**{n: float(x[i]) for n, x in point.items()})
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
     return point, {"critical_velocity": critical}, V
 
@@ -94,31 +94,28 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
 def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     p = _rows(plan, block)
     shape = p["mass"].shape
-    al, be, am, ze, et = (np.empty(shape) for _ in range(5))
+    point = {n: np.empty(shape) for n in DIMENSIONLESS}
     V = np.empty((*shape, vel.size))
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
         system = Physical(**{name: float(arr[i]) for name, arr in p.items()})
         dim = system.to_dimensionless()
-        al[i], be[i], am[i], ze[i], et[i] = (dim.alpha, dim.beta, dim.amplitude, dim.zeta,
-                                             dim.eta_c)
+        for n, x in point.items():
+            x[i] = getattr(dim, n)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         vstar[i] = system.critical_velocity()
-    rows = {"critical_velocity": vstar, "alpha": al, "beta": be, "amplitude": am,
-            "zeta": ze, "eta_c": et}
-    return (al, be, am, ze, et), rows, V
+    return point, {"critical_velocity": vstar, **point}, V
 
 
 def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
     """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``."""
-    rshape, nv = point[0].shape, V.shape[-1]
+    rshape, nv = V.shape[:-1], V.shape[-1]
     out: dict[str, np.ndarray] | None = None
     for i in np.ndindex(rshape):
         state = None
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
-            al, be, am, ze, et = (x[i] for x in point)
-            cols = solve_points(al, be, am, V[i][j], ze, et,
+            cols = solve_points(**{n: x[i] for n, x in point.items()}, v_inertial=V[i][j],
                                 initial=state if state is not None else plan.initial,
                                 settings=plan.settings)
             if out is None:
@@ -146,9 +143,8 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
         shape = V.shape[:-1] + (2, V.shape[-1])
         V = np.broadcast_to(V[..., None, :], shape)
     else:
-        al, be, am, ze, et = (x[..., None] for x in point)
-        cols = solve_points(al, be, am, V, ze, et, initial=plan.initial,
-                            settings=plan.settings)
+        cols = solve_points(**{n: x[..., None] for n, x in point.items()}, v_inertial=V,
+                            initial=plan.initial, settings=plan.settings)
         shape = V.shape
     cols["v_inertial"] = V
     block_shape = tuple(s.stop - s.start for s in plan.block_slices(block))

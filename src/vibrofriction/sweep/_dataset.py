@@ -8,7 +8,7 @@ import json
 import numpy as np
 import xarray as xr
 
-from ._grid import DIRECTIONS, Plan
+from ._grid import DIMENSIONLESS, DIRECTIONS, Plan
 from ._variables import COORD_ATTRS, point_variables, row_variables
 
 __all__ = ["template"]
@@ -65,7 +65,7 @@ def template(plan: Plan, values: dict[str, np.ndarray] | None) -> xr.Dataset:
         data_vars[var.name] = (plan.dims, data(var, plan.shape, plan.chunks), var.attrs)
     for var in row_variables(plan.kind):
         item = (plan.row_dims, data(var, plan.row_shape, plan.chunks[:nrow]), var.attrs)
-        if var.name in ("alpha", "beta", "amplitude", "zeta", "eta_c"):  # physical: derived
+        if var.name in DIMENSIONLESS:  # a physical sweep's derived groups: coordinates
             coords[var.name] = item
         else:
             data_vars[var.name] = item

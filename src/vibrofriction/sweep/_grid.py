@@ -25,8 +25,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..params import Dimensionless, Physical
+from ..schema import PARAMETER, parameter_names
 from ..solver import SolverSettings
-from ..validation import checked
+from ..validation import validated
 from ._variables import signature as variables_signature
 
 __all__ = [
@@ -38,8 +39,8 @@ __all__ = [
     "parse_axis",
 ]
 
-DIMENSIONLESS = ("alpha", "beta", "amplitude", "zeta", "eta_c")
-PHYSICAL = tuple(f.name for f in dataclasses.fields(Physical))
+DIMENSIONLESS = parameter_names("dimensionless")
+PHYSICAL = parameter_names("physical")
 DIRECTIONS = ("up", "down")
 DEFAULT_CHUNK_SIZE = 1000
 
@@ -280,8 +281,9 @@ def make_plan(
             v_inertial=v_inertial))
     else:
         kind = "dimensionless"
-        params, velocity = _dimensionless_axes(system, alpha, beta, amplitude, zeta, eta_c,
-                                               vbar, v_inertial, dict(physical or {}), v0)
+        values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c)
+        params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
+                                               dict(physical or {}), v0)
     if continuation:
         _check_continuation(velocity)
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
@@ -320,7 +322,7 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     base = dataclasses.asdict(system)
     params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
     velocity = _axis("v0", v0)
-    checked("v0", velocity.values, minimum=0.0)
+    validated({"v0": velocity.values})
     for a in params:  # each value of each axis, with the others at their base values
         for x in np.atleast_1d(a.values):
             system.with_(**{a.name: float(x)})
@@ -328,53 +330,58 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     return params, velocity
 
 
-def _dimensionless_axes(system: Any, alpha: ArrayLike | None, beta: ArrayLike | None,
-                        amplitude: ArrayLike | None, zeta: ArrayLike | None,
-                        eta_c: ArrayLike | None, vbar: ArrayLike | None,
-                        v_inertial: ArrayLike | None, physical: dict[str, ArrayLike],
+def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
+                        vbar: ArrayLike | None, v_inertial: ArrayLike | None,
+                        physical: dict[str, ArrayLike],
                         v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
-    """The ``alpha, beta, amplitude, zeta, eta_c`` axes and the velocity axis (``vbar`` or
-    ``v_inertial``); ``zeta`` and ``eta_c`` default to the system's (0 without one)."""
+    """The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
+    schema's default) and the velocity axis (``vbar`` or ``v_inertial``)."""
     if physical:
         raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
                          "system (sweep(Physical(...), v0=..., ...))")
     if v0 is not None:
         raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
-    if isinstance(system, Dimensionless):
-        alpha = system.alpha if alpha is None else alpha
-        beta = system.beta if beta is None else beta
-        amplitude = system.amplitude if amplitude is None else amplitude
-        zeta = system.zeta if zeta is None else zeta
-        eta_c = system.eta_c if eta_c is None else eta_c
-    elif system is not None:
+    if system is not None and not isinstance(system, Dimensionless):
         raise TypeError(f"system must be a Dimensionless or Physical, "
                         f"got {type(system).__name__}")
-    missing = [n for n, v in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude))
-               if v is None]
+    def base(name: str) -> float | None:
+        return PARAMETER[name].default if system is None else getattr(system, name)
+
+    values = {n: base(n) if values.get(n) is None else values[n] for n in DIMENSIONLESS}
+    missing = [n for n, v in values.items() if v is None]
     if missing:
         raise ValueError(f"missing parameter(s) {missing}: give a value or an array each")
     given = [n for n, v in (("vbar", vbar), ("v_inertial", v_inertial)) if v is not None]
     if len(given) != 1:
         raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
                          f"(got {given or 'none'})")
-    al, be, am = _axis("alpha", alpha), _axis("beta", beta), _axis("amplitude", amplitude)
-    ze = _axis("zeta", 0.0 if zeta is None else zeta)
-    et = _axis("eta_c", 0.0 if eta_c is None else eta_c)
+    axes = tuple(_axis(n, v) for n, v in values.items())
     velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
-    checked("alpha", al.values, minimum=0.0, strict=True)
-    checked("beta", be.values, minimum=0.0, strict=True, allow_inf=True)
-    checked("amplitude", am.values, minimum=0.0)
-    checked("zeta", ze.values, minimum=0.0)
-    checked("eta_c", et.values, minimum=0.0)
-    checked(velocity.name, velocity.values, minimum=0.0)
-    if not float(np.min(be.values)) > float(np.max(al.values)):
-        raise ValueError(
-            f"beta must be > alpha at every grid point: beta = {float(np.min(be.values))!r}"
-            f" <= alpha = {float(np.max(al.values))!r} (beta = (k_x + k_xc)/(m omega^2) "
-            "exceeds alpha = k_x/(m omega^2))")
+    for a in (*axes, velocity):  # each axis alone: the ranges, not the relations
+        validated({a.name: a.values})
+    _check_above(axes)
     if velocity.name == "vbar":
-        _check_vbar_exists(al, be, am, ze, et)
-    return (al, be, am, ze, et), velocity
+        by_name = {a.name: a for a in axes}
+        _check_vbar_exists(*(by_name[n] for n in ("alpha", "beta", "amplitude", "zeta",
+                                                  "eta_c")))
+    return axes, velocity
+
+
+def _check_above(axes: tuple[Axis, ...]) -> None:
+    """A parameter that must exceed another (``beta > alpha``, the schema's
+    ``Range.above``) does so at every point of the outer product."""
+    by_name = {a.name: a for a in axes}
+    for a in axes:
+        other = PARAMETER[a.name].range.above
+        if not other:
+            continue
+        lo, hi = float(np.min(a.values)), float(np.max(by_name[other].values))
+        if not lo > hi:
+            p, q = PARAMETER[a.name], PARAMETER[other]
+            raise ValueError(
+                f"{a.name} must be > {other} at every grid point: {a.name} = {lo!r} <= "
+                f"{other} = {hi!r} ({a.name} = {p.definition} exceeds {other} = "
+                f"{q.definition})")
 
 
 def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:

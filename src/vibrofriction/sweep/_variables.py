@@ -16,12 +16,15 @@ import numpy as np
 
 from ..schema import (
     FIELD,
+    PARAMETERS,
     RESULT_FIELDS,
     STATE_FIELDS,
     STATUS_BY_CODE,
     VELOCITY_UNIT,
     Field,
+    Parameter,
     Status,
+    parameter_names,
 )
 from ..solver import NO_PHASE, PHASE_NAMES
 
@@ -59,44 +62,22 @@ def _attrs(f: Field, prefix: str = "") -> dict[str, Any]:
         attrs["equation"] = f.equation
     return attrs
 
+def _parameter_attrs(p: Parameter) -> dict[str, Any]:
+    """CF-style attributes of a model parameter (a coordinate of an atlas)."""
+    attrs = {"long_name": p.long_name, "symbol": p.symbol, "units": p.unit}
+    if p.equation:
+        attrs["equation"] = p.equation
+    return attrs
+
+
+#: Attributes of every coordinate: the schema's parameters, and ``direction``.
 COORD_ATTRS: dict[str, dict[str, Any]] = {
-    "alpha": {"long_name": "system stiffness over inertia, k_x / (m omega^2)",
-              "symbol": "alpha", "units": "1", "equation": "(20)"},
-    "beta": {"long_name": "system plus contact stiffness over inertia, "
-                          "(k_x + k_xc) / (m omega^2); inf = rigid contact",
-             "symbol": "beta", "units": "1", "equation": "(20)"},
-    "amplitude": {"long_name": "relative amplitude of the normal oscillation, du_z / u_z0",
-                  "symbol": "a", "units": "1", "equation": "(1), (24)"},
-    "zeta": {"long_name": "damping ratio of the pin, c_x / (2 sqrt(k_x m)) = 1/(2Q)",
-             "symbol": "zeta", "units": "1", "equation": "docs/damping.md"},
-    "eta_c": {"long_name": "loss factor of the contact at the drive frequency, "
-                           "omega c_xc / k_xc",
-              "symbol": "eta_c", "units": "1", "equation": "docs/damping.md"},
-    "c_x": {"long_name": "pin dashpot parallel to k_x", "symbol": "c_x", "units": "N s m-1"},
-    "c_xc": {"long_name": "tangential contact dashpot parallel to k_xc (Kelvin-Voigt)",
-             "symbol": "c_x,c", "units": "N s m-1"},
-    "vbar": {"long_name": "sliding velocity over the critical velocity, v0 / v0*",
-             "symbol": "vbar", "units": "1", "equation": "(16)"},
-    "v_inertial": _attrs(FIELD["v_inertial"]),
-    "v0": {"long_name": "sliding velocity of the drive", "symbol": "v0", "units": "m s-1"},
-    "mass": {"long_name": "mass of the body", "symbol": "m", "units": "kg"},
-    "k_x": {"long_name": "tangential stiffness of the system spring", "symbol": "k_x",
-            "units": "N m-1"},
-    "k_xc": {"long_name": "tangential contact stiffness; inf = rigid contact",
-             "symbol": "k_x,c", "units": "N m-1"},
-    "k_zc": {"long_name": "normal contact stiffness", "symbol": "k_z,c", "units": "N m-1"},
-    "u_z0": {"long_name": "mean indentation", "symbol": "u_z0", "units": "m",
-             "equation": "(1)"},
-    "du_z": {"long_name": "amplitude of the normal oscillation", "symbol": "Delta u_z",
-             "units": "m", "equation": "(1)"},
-    "omega": {"long_name": "angular frequency of the normal oscillation", "symbol": "omega",
-              "units": "rad s-1"},
-    "mu0": {"long_name": "local (microscopic) coefficient of friction", "symbol": "mu0",
-            "units": "1"},
+    **{p.name: _parameter_attrs(p) for p in PARAMETERS},
     "direction": {"long_name": "direction of the velocity continuation: each point starts "
                                "from the final state of its predecessor in this direction",
                   "symbol": ""},
 }
+
 
 def _status_attrs() -> dict[str, Any]:
     return {"long_name": FIELD["status"].long_name,
@@ -162,11 +143,8 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "inf at k_x = m omega^2 (case IV), 0 at k_x + k_xc = m omega^2 "
                          "(case III)",
             "symbol": "v0*", "units": "m s-1", "equation": "(12)"}),
-        Variable("alpha", "f8", np.nan, dict(COORD_ATTRS["alpha"])),
-        Variable("beta", "f8", np.nan, dict(COORD_ATTRS["beta"])),
-        Variable("amplitude", "f8", np.nan, dict(COORD_ATTRS["amplitude"])),
-        Variable("zeta", "f8", np.nan, dict(COORD_ATTRS["zeta"])),
-        Variable("eta_c", "f8", np.nan, dict(COORD_ATTRS["eta_c"])),
+        *(Variable(n, "f8", np.nan, dict(COORD_ATTRS[n]))
+          for n in parameter_names("dimensionless")),  # derived from the SI ones
     )
 
 
