@@ -28,7 +28,7 @@ import numpy as np
 import pandas as pd
 
 import vibrofriction as vf
-from vibrofriction.fitting import synthetic_measurements
+from vibrofriction.bench import synthetic_measurements
 
 HERE = Path(__file__).resolve().parent
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,

@@ -23,8 +23,8 @@ import numpy as np
 from playwright.sync_api import Page, sync_playwright
 
 from bench_explorer import READOUT, free_port, start_server
+from vibrofriction.bench import synthetic_measurements
 from vibrofriction.explorer.state import State
-from vibrofriction.fitting import synthetic_measurements
 
 IMG = Path(__file__).resolve().parent.parent / "docs" / "img"
 WIDTH, HEIGHT = 1500, 1000

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import vibrofriction as vf
 from vibrofriction.contact import Material, Sphere
+from vibrofriction.figures import plot_design
 
 STEEL = Material(E=210e9, nu=0.3)
 PIN = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
@@ -26,7 +27,7 @@ def main(out_dir: str | Path = "example_output") -> dict[str, float]:
     res = vf.design(PIN, v0=0.05, omega=(2 * math.pi * 200, 2 * math.pi * 5000),
                     du_z=(0.05e-6, 0.5e-6), max_velocity_amplitude=0.01)
     print(res.report())
-    res.plot().savefig(out / "design_oscillation.png", dpi=150)
+    plot_design(res).savefig(out / "design_oscillation.png", dpi=150)
     return {"frequency_hz": res.system.omega / (2 * math.pi), "du_z": res.system.du_z,
             "cof": res.cof, "velocity_amplitude": res.system.omega * res.system.du_z}
 

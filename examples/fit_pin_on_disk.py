@@ -18,8 +18,9 @@ import numpy as np
 import pandas as pd
 
 import vibrofriction as vf
+from vibrofriction.bench import synthetic_measurements
 from vibrofriction.contact import Material, Sphere
-from vibrofriction.fitting import synthetic_measurements
+from vibrofriction.figures import plot_fit
 
 STEEL = Material(E=210e9, nu=0.3)
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
@@ -48,7 +49,7 @@ def main(out_dir: str | Path = "example_output") -> dict[str, float]:
     res = vf.fit(vf.read_measurements(csv), guess, free=["mu0", "mass", "k_xc"],
                  progress=False)
     print(res.report())
-    res.plot().savefig(out / "fit_pin_on_disk.png", dpi=150)
+    plot_fit(res).savefig(out / "fit_pin_on_disk.png", dpi=150)
     res.to_json(out / "fit_pin_on_disk.json")
     return {n: (res.params[n].value, res.params[n].stderr) for n in ("mu0", "mass", "k_xc")}
 

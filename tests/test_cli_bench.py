@@ -10,7 +10,7 @@ import pytest
 import xarray as xr
 
 import vibrofriction as vf
-from vibrofriction.fitting import predict_cof
+from vibrofriction.bench import predict_cof
 
 BENCH = {"natural_frequency_hz": 800, "mass": 0.01, "quality_factor": 50, "normal_load": 20,
          "contact": {"type": "sphere", "radius": 0.003, "pin": {"E": 210e9, "nu": 0.3},

@@ -1,4 +1,4 @@
-"""Designing the oscillation (vibrofriction.designing): the optimum is the global one
+"""Designing the oscillation (vibrofriction.bench.designing): the optimum is the global one
 within the actuator's limits (checked against the independent reference integrator and
 the stiff limit's closed form, not against the design's own function), the limits hold,
 only trusted values are used and the untrusted ones are counted, the sensitivity is
@@ -10,7 +10,9 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
-from vibrofriction import designing, theory
+from vibrofriction import theory
+from vibrofriction.bench import designing
+from vibrofriction.figures import plot_design
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction_reference import return_mapping_mu
 
@@ -55,7 +57,7 @@ def test_the_optimum_respects_the_limits_and_says_what_it_rests_on(result):
     assert table.loc["optimum", "cof"] == pytest.approx(result.cof, abs=1e-12)
     report = result.report()
     assert "optimum" in report and "status: trusted" in report and "0 of" in report
-    assert result.plot().axes
+    assert plot_design(result).axes
 
 
 def test_the_optimum_agrees_with_the_reference_integrator(result):
@@ -177,7 +179,7 @@ def test_an_amplitude_range_from_zero():
     same = vf.design(PIN, du_z=(8e-9, 8e-7), **{**kwargs, "n_du_z": 5})
     assert res.system.du_z > 0.0
     assert res.cof == pytest.approx(same.cof, abs=1e-12)
-    assert res.plot().axes
+    assert plot_design(res).axes
 
 
 @pytest.mark.parametrize("kwargs, message", [

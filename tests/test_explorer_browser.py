@@ -220,8 +220,8 @@ def test_fit_button_fits_the_overlaid_measurements(page, server, tmp_path):
     95 % intervals hold the true values."""
     import numpy as np
 
+    from vibrofriction.bench import synthetic_measurements
     from vibrofriction.explorer.state import State
-    from vibrofriction.fitting import synthetic_measurements
 
     truth = State(mode="bench", mu0=0.32, k_xc=1.0e7).system()
     table = synthetic_measurements(truth, (0.4e-6, 0.8e-6), np.geomspace(1e-3, 0.2, 10), 0.004,

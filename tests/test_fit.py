@@ -1,4 +1,4 @@
-"""Fitting measured friction curves (vibrofriction.fitting): recovery, on data made by the
+"""Fitting measured friction curves (vibrofriction.bench.fitting): recovery, on data made by the
 model and by the independent reference; honest uncertainties and an honest verdict;
 constraints that never override ``free``; rows the model cannot evaluate; save and load."""
 
@@ -11,7 +11,8 @@ import pytest
 from scipy.stats import binom
 
 import vibrofriction as vf
-from vibrofriction.fitting import FitResult, _Problem, predict_cof, synthetic_measurements
+from vibrofriction.bench.fitting import FitResult, _Problem, predict_cof, synthetic_measurements
+from vibrofriction.figures import plot_fit
 from vibrofriction.solver import SolverSettings, solve_points
 
 DATA = Path(__file__).resolve().parent / "data"
@@ -88,7 +89,7 @@ def test_a_model_error_is_not_turned_into_a_chi_square(monkeypatch):
     def broken(*args, **kwargs):
         raise ValueError("a programming error")
 
-    monkeypatch.setattr("vibrofriction.fitting.predict_cof", broken)
+    monkeypatch.setattr("vibrofriction.bench.fitting.predict_cof", broken)
     with pytest.raises(ValueError, match="a programming error"):
         _problem(data).residual(np.array([math.log(0.3)]))
 
@@ -103,7 +104,7 @@ def test_penalised_rows_are_counted_and_make_the_fit_poor(monkeypatch):
         out = real(system, v0, *args, **kwargs)
         return np.where(v0 == v0.min(), np.nan, out)
 
-    monkeypatch.setattr("vibrofriction.fitting.predict_cof", untrusted_at_the_slowest)
+    monkeypatch.setattr("vibrofriction.bench.fitting.predict_cof", untrusted_at_the_slowest)
     res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False,
                  global_stage=False)
     assert res.penalised == {"untrusted": 2, "outside the model's domain": 0}
@@ -375,7 +376,7 @@ def test_save_and_load(tmp_path):
     assert back.extra["at_lowest_minimum"] is True
     assert back.report().splitlines()[0] == res.report().splitlines()[0]
     assert "mu0" in back.report() and "95 % interval" in back.report()
-    fig = res.plot()
+    fig = plot_fit(res)
     assert len(fig.axes) == 2
 
 

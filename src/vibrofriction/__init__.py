@@ -25,6 +25,9 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree no
     __version__ = "0+unknown"
 
 
+_BENCH = ("read_measurements", "fit", "design", "synthetic_measurements")
+
+
 def __getattr__(name: str):
     # ``vibrofriction.sweep`` (a callable module) is imported on first use: it pulls in
     # xarray, zarr and Dask, which a plain ``import vibrofriction`` should not pay for
@@ -32,18 +35,10 @@ def __getattr__(name: str):
         import importlib
 
         return importlib.import_module(".sweep", __name__)
-    if name == "read_measurements":  # pandas, likewise on first use
-        from .measurements import read_measurements
+    if name in _BENCH:  # lmfit, pandas and xarray, likewise on first use
+        from . import bench
 
-        return read_measurements
-    if name == "fit":  # lmfit and pandas, likewise
-        from .fitting import fit
-
-        return fit
-    if name == "design":
-        from .designing import design
-
-        return design
+        return getattr(bench, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 __all__ = [
@@ -65,5 +60,6 @@ __all__ = [
     "read_measurements",
     "simulate",
     "sweep",
+    "synthetic_measurements",
     "__version__",
 ]

@@ -9,6 +9,7 @@ from typing import Annotated
 
 import typer
 
+from ..figures import plot_design, plot_fit
 from ..params import Physical
 from ._app import app, friendly, parse_float
 
@@ -53,7 +54,7 @@ def fit_command(
     progress: Annotated[bool, typer.Option(help="progress bars on stderr")] = True,
 ) -> None:
     """Fit the model to measured friction curves (report, figure, JSON)."""
-    from ..fitting import fit
+    from ..bench import fit
 
     guess = Physical.from_bench_file(bench)
     if fix:
@@ -64,7 +65,7 @@ def fit_command(
     folder = Path(out)
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")
-    res.plot().savefig(folder / "fit.png", dpi=150)
+    plot_fit(res).savefig(folder / "fit.png", dpi=150)
     res.to_json(folder / "fit.json")
     typer.echo(res.report())
     typer.echo(f"-> {folder}/report.txt, fit.png, fit.json")
@@ -86,7 +87,7 @@ def design_command(
 ) -> None:
     """The oscillation that minimises friction at v0 within the actuator's limits (the
     report's status line counts the untrusted points of the map)."""
-    from ..designing import design
+    from ..bench import design
 
     pin = Physical.from_bench_file(bench)
     res = design(pin, v0=parse_float(v0, "v0"),
@@ -97,7 +98,7 @@ def design_command(
     folder = Path(out)
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")
-    res.plot().savefig(folder / "map.png", dpi=150)
+    plot_design(res).savefig(folder / "map.png", dpi=150)
     res.map.to_zarr(folder / "map.zarr", mode="w", consolidated=False)
     typer.echo(res.report())
     typer.echo(f"-> {folder}/report.txt, map.png, map.zarr")

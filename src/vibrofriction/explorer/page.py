@@ -17,7 +17,7 @@ import numpy as np
 import panel as pn
 from bokeh.events import Tap
 
-from vibrofriction.fitting import FITTABLE
+from vibrofriction.bench import FITTABLE
 
 from . import compute, exports, pool
 from .messages import GENERAL, field_of, read_inputs

@@ -12,6 +12,8 @@ the solver series a figure needs and how to draw, table and check them.
   and Fig. 5 with pin damping);
 * :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
   imported on first use, with xarray and the sweep);
+* :mod:`.bench`: the bench's figures, a fit against its data (:func:`plot_fit`) and a
+  design's map (:func:`plot_design`; imported on first use, with the bench);
 * :mod:`.edges`: cell edges of a plotted grid axis (maps, atlases);
 * :mod:`.checks`: the physics checks of the curves (numerics against the closed forms),
   pure functions without drawing;
@@ -31,6 +33,9 @@ from .series import Curve, Series, solve
 
 if TYPE_CHECKING:
     import xarray as xr
+    from matplotlib.figure import Figure
+
+    from ..bench import DesignResult, FitResult
 
 __all__ = [
     "Check",
@@ -43,6 +48,8 @@ __all__ = [
     "cell_edges",
     "is_geometric",
     "plot_atlas",
+    "plot_design",
+    "plot_fit",
     "solve",
     "solve_recipes",
     "style",
@@ -76,3 +83,19 @@ def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
     from .atlas import plot_atlas as _plot
 
     return _plot(source, **kwargs)
+
+
+def plot_fit(result: FitResult) -> Figure:
+    """A fit against its data and its residuals (:func:`vibrofriction.figures.bench.plot_fit`;
+    the bench is imported on first use)."""
+    from .bench import plot_fit as _plot
+
+    return _plot(result)
+
+
+def plot_design(result: DesignResult) -> Figure:
+    """A design's map with its optimum (:func:`vibrofriction.figures.bench.plot_design`;
+    the bench is imported on first use)."""
+    from .bench import plot_design as _plot
+
+    return _plot(result)

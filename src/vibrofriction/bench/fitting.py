@@ -55,13 +55,10 @@ from __future__ import annotations
 import dataclasses
 import json
 import math
-import multiprocessing
-import os
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import partial
 from pathlib import Path
 from typing import Any
 
@@ -70,9 +67,10 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
+from ..parallel import available_cores, mapper
+from ..params import Physical
+from ..solver import SolverSettings, solve_points
 from .measurements import read_measurements
-from .params import Physical
-from .solver import SolverSettings, solve_points
 
 __all__ = ["FITTABLE", "FitResult", "fit", "predict_cof", "synthetic_measurements"]
 
@@ -123,7 +121,7 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
     amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
     ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma``
     (drawn per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the
-    format of :func:`~vibrofriction.measurements.read_measurements`.  A truth the solver
+    format of :func:`~vibrofriction.bench.read_measurements`.  A truth the solver
     does not trust at some point is refused (ValueError naming the points)."""
     v0 = np.asarray(v0, dtype=float)
     n = v0.size
@@ -361,35 +359,6 @@ class FitResult:
                    p_value=math.nan if doc.get("p_value") is None else doc["p_value"],
                    penalised=doc.get("penalised", {}))
 
-    def plot(self):
-        """Data with error bars and the fitted curves per (amplitude, frequency), and the
-        residuals (a matplotlib Figure)."""
-        from matplotlib.figure import Figure
-
-        fig = Figure(figsize=(6.0, 5.0), layout="constrained")
-        ax, axr = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
-        d = self.data
-        groups = d.groupby(["du_z", "omega"], sort=True)
-        for k, ((du, om), g) in enumerate(groups):
-            color = f"C{k % 10}"
-            v = np.geomspace(max(g["v0"].min(), 1e-9) / 1.5, g["v0"].max() * 1.5, 120)
-            ax.plot(v, self.predict(v, np.full(v.size, du), np.full(v.size, om)), color=color,
-                    lw=1.2, label=f"du_z = {du * 1e6:.3g} um, f = {om / (2 * math.pi):.4g} Hz")
-            yerr = g["sigma"] if np.all(np.isfinite(g["sigma"])) else None
-            ax.errorbar(g["v0"], g["cof"], yerr=yerr, fmt="o", ms=3, color=color, capsize=2)
-            res = g["cof"] - self.predict(g["v0"].to_numpy(), g["du_z"].to_numpy(),
-                                          g["omega"].to_numpy())
-            axr.errorbar(g["v0"], res, yerr=yerr, fmt="o", ms=3, color=color, capsize=2)
-        axr.axhline(0.0, color="0.5", lw=0.6)
-        ax.set_xscale("log")
-        ax.set_ylabel("COF")
-        axr.set_ylabel("residual")
-        axr.set_xlabel("sliding velocity v0 (m/s)")
-        ax.legend(fontsize=7)
-        ax.set_title(f"fit: {', '.join(self.free)} free; reduced chi-square {self.redchi:.3g}",
-                     fontsize=8)
-        return fig
-
 
 def _tick(bar) -> bool:
     """Advance a progress bar; False, so that differential evolution goes on (a callback
@@ -497,14 +466,17 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
         settings: SolverSettings | None = None) -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
 
-    ``data``: a table of :func:`~vibrofriction.measurements.read_measurements` (or its
+    ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
     path).  ``natural_frequency``, ``normal_load``, ``quality_factor``: the constraints
     (module docstring); a parameter in ``free`` that one of them would hold is refused,
     naming the keyword that releases it.  ``span``: each free parameter is searched
     within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``,
     ``seed``: the global stage (:func:`scipy.optimize.differential_evolution`, on every
     other row of a table of 20 rows or more).  ``workers``: processes for the global
-    stage, the local starts and the profiles (``-1``: every core).
+    stage, the local starts and the profiles (``-1``: every core), from the package's one
+    pool (:mod:`vibrofriction.parallel`, forkserver workers that die with their parent):
+    a script that fits with ``workers != 1`` runs the fit under
+    ``if __name__ == "__main__":``.
     ``res.extra["stages"]`` says where the time went; ``res.quality`` whether the fit
     describes the data.
     """
@@ -518,9 +490,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     if "mu0" in free:
         problem.mu0_max = math.exp(bounds[free.index("mu0")][1])
     x0 = np.array([math.log(getattr(guess, n)) for n in free])
-    workers = workers if workers >= 1 else os.cpu_count() or 1
+    workers = workers if workers >= 1 else available_cores()
     stages = _Stages()
-    with _mapper(workers) as map_:
+    with mapper(workers) as map_:
         if global_stage:
             out, minima = _search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
                                   stages, maxiter, popsize, seed, progress, workers)
@@ -723,17 +695,6 @@ def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize:
 def _poor(problem: _Problem, chisqr: float) -> bool:
     """A weighted fit whose chi-square has a probability below :data:`POOR_P`."""
     return problem.weighted and _p_value(problem, chisqr) < POOR_P
-
-
-@contextmanager
-def _mapper(workers: int) -> Iterator[Callable]:
-    """A map over ``workers`` processes (the built-in ``map`` for one)."""
-    if workers == 1:
-        yield map
-        return
-    with multiprocessing.Pool(workers) as pool:
-        # one task at a time: model evaluations vary in cost by 10x (stiff contacts)
-        yield partial(pool.map, chunksize=1)
 
 
 def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:

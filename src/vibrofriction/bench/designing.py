@@ -25,9 +25,9 @@ import numpy as np
 import pandas as pd
 import xarray as xr
 
-from .params import Physical
-from .solver import SolverSettings, solve_points
-from .validation import checked
+from ..params import Physical
+from ..solver import SolverSettings, solve_points
+from ..validation import checked
 
 __all__ = ["DESIGN_STATUSES", "DesignResult", "design"]
 
@@ -83,35 +83,6 @@ class DesignResult:
     def trusted(self) -> bool:
         """Whether every point of the map within the limits is trusted (status ``trusted``)."""
         return self.status == "trusted"
-
-    def plot(self):
-        """The map of the COF over the actuator's range with the optimum (a Figure)."""
-        from matplotlib.figure import Figure
-        from matplotlib.ticker import NullFormatter
-
-        fig = Figure(figsize=(5.6, 4.2), layout="constrained")
-        ax = fig.add_subplot()
-        m = self.map
-        f_hz = m["omega"].values / (2 * math.pi)
-        m = m.isel(du_z=m["du_z"].values > 0)  # no oscillation (COF = mu0): off the log axis
-        cof = np.where(m["feasible"].values & m["trusted"].values, m["cof"].values, np.nan)
-        mesh = ax.pcolormesh(f_hz, m["du_z"].values * 1e6, cof.T, shading="nearest",
-                             cmap="viridis")
-        fig.colorbar(mesh, ax=ax, label="COF (white: untrusted or beyond the limit)")
-        ax.plot([self.system.omega / (2 * math.pi)], [self.system.du_z * 1e6], "r*", ms=12,
-                label=f"optimum: COF {self.cof:.4g}")
-        f_n = math.sqrt(self.system.k_x / self.system.mass) / (2 * math.pi)
-        ax.axvline(f_n, color="w", lw=0.8, ls="--", label=f"pin resonance {f_n:.4g} Hz")
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        for axis in (ax.xaxis, ax.yaxis):
-            axis.set_minor_formatter(NullFormatter())
-        ax.set_xlabel("drive frequency (Hz)")
-        ax.set_ylabel("amplitude du_z (um)")
-        ax.set_title(f"COF at v0 = {self.v0:g} m/s over the actuator's range; "
-                     f"{self.n_untrusted} untrusted", fontsize=8)
-        ax.legend(fontsize=7, loc="lower left")
-        return fig
 
     def report(self) -> str:
         s = self.system
