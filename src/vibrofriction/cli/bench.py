@@ -4,6 +4,7 @@
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 from typing import Annotated
 
@@ -59,9 +60,14 @@ def fit_command(
     guess = Physical.from_bench_file(bench)
     if fix:
         guess = guess.with_(**_fixes(fix))
-    res = fit(data, guess, free=[f.strip() for f in free.split(",") if f.strip()],
-              natural_frequency=natural_frequency, normal_load=normal_load,
-              quality_factor=quality_factor, workers=workers, progress=progress)
+    try:
+        res = fit(data, guess, free=[f.strip() for f in free.split(",") if f.strip()],
+                  natural_frequency=natural_frequency, normal_load=normal_load,
+                  quality_factor=quality_factor, workers=workers, progress=progress)
+    except ValueError as err:  # name the command line's flag, not the Python keyword
+        raise ValueError(re.sub(r"\b(natural_frequency|normal_load|quality_factor)=False",
+                                lambda m: "--no-" + m.group(1).replace("_", "-"),
+                                str(err))) from err
     folder = Path(out)
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")
