@@ -89,7 +89,7 @@ def test_a_model_error_is_not_turned_into_a_chi_square(monkeypatch):
     def broken(*args, **kwargs):
         raise ValueError("a programming error")
 
-    monkeypatch.setattr("vibrofriction.bench.fitting.predict_cof", broken)
+    monkeypatch.setattr("vibrofriction.bench.fit_problem.predict_cof", broken)
     with pytest.raises(ValueError, match="a programming error"):
         _problem(data).residual(np.array([math.log(0.3)]))
 
@@ -104,7 +104,7 @@ def test_penalised_rows_are_counted_and_make_the_fit_poor(monkeypatch):
         out = real(system, v0, *args, **kwargs)
         return np.where(v0 == v0.min(), np.nan, out)
 
-    monkeypatch.setattr("vibrofriction.bench.fitting.predict_cof", untrusted_at_the_slowest)
+    monkeypatch.setattr("vibrofriction.bench.fit_problem.predict_cof", untrusted_at_the_slowest)
     res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False,
                  global_stage=False)
     assert res.penalised == {"untrusted": 2, "outside the model's domain": 0}

@@ -1,0 +1,208 @@
+"""The fit's problem (:mod:`.fitting`): the free parameters in ``ln`` and the constraints
+that tie others to them, the residuals (with the penalty of a row the model cannot
+evaluate), and the model's COF at measured points (:func:`predict_cof`,
+:func:`synthetic_measurements`)."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from numpy.typing import NDArray
+
+from ..params import Physical
+from ..solver import SolverSettings, solve_points
+
+__all__ = ["FITTABLE", "predict_cof", "synthetic_measurements"]
+
+#: The fields of :class:`Physical` that can be fitted.
+FITTABLE = ("mu0", "mass", "k_x", "k_xc", "k_zc", "u_z0", "c_x", "c_xc")
+#: The global stage compares the model with every other row of a table this long or
+#: longer: an evaluation costs half, so it runs twice the generations for the same
+#: time, and more generations find the narrow valleys more often.
+COARSE_ROWS = 20
+
+
+def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
+                settings: SolverSettings | None = None) -> NDArray[np.float64]:
+    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega)`` (eq. 25), ``nan``
+    where the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count
+    of untrusted points is ``np.isnan(...).sum()``."""
+    alpha, beta, a, zeta, eta = system.groups(du_z, omega)
+    V = system.v0_to_inertial(v0, omega)
+    out = solve_points(alpha, beta, a, V, zeta, eta, settings=settings)
+    return system.mu0 * np.where(out["trusted"], out["mu_ratio"], np.nan)
+
+
+def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
+                           rng: np.random.Generator, *,
+                           settings: SolverSettings | None = None) -> pd.DataFrame:
+    """A measurement table made by the model, for a fit whose truth is known: at each
+    amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
+    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma``
+    (drawn per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the
+    format of :func:`~vibrofriction.bench.read_measurements`.  A truth the solver
+    does not trust at some point is refused (ValueError naming the points)."""
+    v0 = np.asarray(v0, dtype=float)
+    n = v0.size
+    rows = []
+    for du in np.atleast_1d(np.asarray(du_z, dtype=float)):
+        cof = predict_cof(system, v0, np.full(n, du), np.full(n, system.omega), settings)
+        if np.any(np.isnan(cof)):
+            bad = v0[np.isnan(cof)]
+            shown = ", ".join(f"{v:.4g}" for v in bad[:5]) + (", ..." if bad.size > 5 else "")
+            raise ValueError(f"the solver has no trusted value of the truth at {bad.size} of "
+                             f"{n} points at du_z = {du:g} m (v0 = {shown} m/s): no "
+                             "synthetic measurement is made from an untrusted value")
+        rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
+                                  "du_z": du, "omega": system.omega, "sigma": sigma}))
+    return pd.concat(rows, ignore_index=True)
+
+
+@dataclass
+class _Problem:
+    """The free parameters in ``ln`` and how they map onto a :class:`Physical`."""
+
+    guess: Physical
+    free: tuple[str, ...]
+    natural_frequency: bool
+    normal_load: bool
+    quality_factor: bool
+    data: pd.DataFrame
+    settings: SolverSettings | None = None
+    #: the largest ``mu0`` of the search (the bound of an honest misfit, :meth:`penalty`)
+    mu0_max: float | None = None
+
+    def values(self, ln: NDArray[np.float64]) -> dict[str, float]:
+        """The fields of the system at ``ln`` of the free parameters, constraints applied."""
+        values = dataclasses.asdict(self.guess)
+        values.update({n: math.exp(x) for n, x in zip(self.free, ln, strict=True)})
+        g = self.guess
+        if self.natural_frequency:
+            wn2 = g.k_x / g.mass
+            if "mass" in self.free:
+                values["k_x"] = values["mass"] * wn2
+            elif "k_x" in self.free:
+                values["mass"] = values["k_x"] / wn2
+        if self.normal_load:
+            if "k_zc" in self.free:
+                values["u_z0"] = g.F_N0 / values["k_zc"]
+            elif "u_z0" in self.free:
+                values["k_zc"] = g.F_N0 / values["u_z0"]
+        if self.quality_factor:
+            values["c_x"] = 2.0 * g.zeta * math.sqrt(values["k_x"] * values["mass"])
+        return values
+
+    def system(self, ln: NDArray[np.float64]) -> Physical:
+        return Physical(**self.values(ln))
+
+    def penalty(self) -> NDArray[np.float64]:
+        """The residual of a row the model cannot evaluate: twice the largest honest one,
+        ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``, eq. 25), so that a failed
+        row always costs more than any misfit of it."""
+        mu0_max = self.guess.mu0 if self.mu0_max is None else self.mu0_max
+        return 2.0 * (mu0_max + np.abs(self.data["cof"].to_numpy())) / self._scale()
+
+    def _scale(self) -> NDArray[np.float64] | float:
+        return self.data["sigma"].to_numpy() if self.weighted else 1.0
+
+    def evaluate(self, ln: NDArray[np.float64]) -> tuple[NDArray[np.float64], int, int]:
+        """The residuals, and the counts of rows penalised (:meth:`penalty`) because the
+        parameters leave the model's domain (every row) or the solver's value is not
+        trusted."""
+        d = self.data
+        values = self.values(ln)
+        if not _in_domain(values):  # e.g. exp overflow, or k_x + k_xc == k_x in floats
+            return self.penalty(), len(d), 0
+        model = predict_cof(Physical(**values), d["v0"].to_numpy(), d["du_z"].to_numpy(),
+                            d["omega"].to_numpy(), self.settings)
+        r = (model - d["cof"].to_numpy()) / self._scale()
+        bad = np.isnan(r)
+        return np.where(bad, self.penalty(), r), 0, int(bad.sum())
+
+    def residual(self, ln: NDArray[np.float64]) -> NDArray[np.float64]:
+        return self.evaluate(ln)[0]
+
+    def cost(self, ln: NDArray[np.float64]) -> float:
+        r = self.residual(ln)
+        return float(r @ r)
+
+    def coarse(self) -> _Problem:
+        """The same problem on every other row of a table of at least
+        :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square)."""
+        if len(self.data) < COARSE_ROWS:
+            return self
+        return dataclasses.replace(self, data=self.data.iloc[::2].reset_index(drop=True))
+
+    @property
+    def weighted(self) -> bool:
+        """Residuals divided by the measured ``sigma`` (given on every row)."""
+        return bool(np.all(np.isfinite(self.data["sigma"].to_numpy())))
+
+
+def _in_domain(values: dict[str, float]) -> bool:
+    """Whether ``values`` make a valid :class:`Physical` whose every point has
+    ``beta > alpha`` (checked here, so that no error of the model is swallowed)."""
+    positive = ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0")
+    if not all(math.isfinite(values[n]) and values[n] > 0.0 for n in positive):
+        return False
+    if not values["k_xc"] > 0.0:  # math.inf: a rigid contact
+        return False
+    if not all(math.isfinite(values[n]) and values[n] >= 0.0 for n in ("c_x", "c_xc", "du_z")):
+        return False
+    return values["k_x"] + values["k_xc"] > values["k_x"]
+
+
+def _bounds(problem: _Problem, span: float) -> list[tuple[float, float]]:
+    out = []
+    for n in problem.free:
+        x = math.log(getattr(problem.guess, n)) if getattr(problem.guess, n) > 0 else None
+        if x is None:
+            raise ValueError(f"{n} of the guess must be > 0 to be fitted, got "
+                             f"{getattr(problem.guess, n)!r}")
+        out.append((x - math.log(span), x + math.log(span)))
+    return out
+
+
+#: The pairs a constraint ties together (the first follows the second when that is free,
+#: and the other way round), and the single field it sets.
+_CONSTRAINED = {"natural_frequency": ("mass", "k_x", "k_x = mass (2 pi f_n)^2"),
+                "normal_load": ("k_zc", "u_z0", "k_zc u_z0 = F_N0")}
+
+
+def _free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
+                   quality_factor: bool, points: int
+                   ) -> tuple[tuple[str, ...], dict[str, tuple[str, float]]]:
+    """``free`` validated (a field a constraint holds is refused, naming the keyword that
+    releases it), and the fields that follow a free one by a constraint (``name:
+    (source, +-1)``, ``ln name = +-ln source + const``)."""
+    unknown = [n for n in free if n not in FITTABLE]
+    if unknown or not free:
+        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)}, "
+                         f"got {list(free)}")
+    if len(set(free)) != len(free):
+        raise ValueError(f"free names a parameter twice: {list(free)}")
+    on = {"natural_frequency": natural_frequency, "normal_load": normal_load}
+    tied: dict[str, tuple[str, float]] = {}
+    for key, (a, b, law) in _CONSTRAINED.items():
+        if not on[key]:
+            continue
+        if a in free and b in free:
+            raise ValueError(f"free names both {a} and {b}, but the constraint {key} "
+                             f"({law}, of the guess) holds {b} to {a}: pass {key}=False to "
+                             f"fit both, or leave one out of free")
+        sign = 1.0 if key == "natural_frequency" else -1.0
+        if a in free:
+            tied[b] = (a, sign)
+        elif b in free:
+            tied[a] = (b, sign)
+    if quality_factor and "c_x" in free:
+        raise ValueError("free names c_x, but the constraint quality_factor (c_x = 2 zeta "
+                         "sqrt(k_x mass), zeta of the guess) holds it: pass "
+                         "quality_factor=False to fit c_x")
+    if len(free) > points:
+        raise ValueError(f"{len(free)} free parameters but only {points} data points")
+    return free, tied

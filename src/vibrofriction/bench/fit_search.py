@@ -1,0 +1,177 @@
+"""The fit's search (:mod:`.fitting`): the global stage (differential evolution on ``ln``
+of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
+second global stage when the first ends poor; where the time went (:class:`_Stages`)."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import Any
+
+import lmfit
+import numpy as np
+from numpy.typing import NDArray
+
+from .fit_problem import _Problem
+from .fit_result import POOR_P, _p_value
+
+#: Local least-squares starts: the global stage's best point and its next best.
+STARTS = 4
+#: Model evaluations per varied parameter (plus one) that a local least-squares run may
+#: spend: a start that crawls along a kinked valley does not win.
+LOCAL_BUDGET = 60
+
+
+@dataclass
+class _Stages:
+    """Where the fit spent its time: a row per stage (name, seconds, model evaluations)."""
+
+    rows: list[dict[str, Any]] = field(default_factory=list)
+
+    @contextmanager
+    def timed(self, name: str) -> Iterator[dict[str, Any]]:
+        row = {"stage": name, "seconds": 0.0, "evaluations": 0}
+        self.rows.append(row)
+        t = time.perf_counter()
+        yield row
+        row["seconds"] = time.perf_counter() - t
+
+    @property
+    def nfev(self) -> int:
+        return sum(r["evaluations"] for r in self.rows)
+
+
+def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _Stages,
+            maxiter: int, popsize: int, seed: int, progress: bool, first: int):
+    """The global stage, then least squares from its best distinct points, ``first`` of
+    them before the others.  A first global stage that ends poor (:func:`_poor`), or
+    whose first starts do, is followed by a second one (another seed) before its
+    remaining starts are tried: a wrong valley is left rather than explored.  The best
+    fit and the local minima reached (chi-square, point)."""
+    out, minima, deferred = None, [], []
+
+    def polish(batch):
+        nonlocal out, minima
+        with stages.timed("local") as row:
+            found, more, row["evaluations"] = _local_fit(problem, batch, bounds, map_)
+        minima = sorted(minima + more, key=lambda r: r[0])
+        if out is None or found.chisqr < out.chisqr:
+            out = found
+
+    coarse = problem.coarse()
+    for attempt in range(2):
+        last = attempt == 1
+        with stages.timed("global") as row:
+            de = _global_stage(coarse, bounds, x0, maxiter, popsize, seed + attempt,
+                               de_workers, progress)
+            row["evaluations"] = int(de.nfev)
+        starts = _distinct_starts(de, x0, STARTS)
+        if not last and _poor(coarse, float(de.fun)):
+            deferred = starts
+            continue
+        polish(starts[:first])
+        if not last and _poor(problem, out.chisqr):
+            deferred = starts[first:]
+            continue
+        if starts[first:]:
+            polish(starts[first:])
+        if not _poor(problem, out.chisqr):
+            return out, minima
+    if deferred:
+        polish(deferred)
+    return out, minima
+
+
+def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
+                  seed: int, workers, progress: bool):
+    """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
+    that includes the guess."""
+    from scipy.optimize import differential_evolution
+    from tqdm.auto import tqdm
+
+    with tqdm(total=maxiter, desc="fit: global stage", unit="gen",
+              disable=not progress) as bar:
+        return differential_evolution(
+            problem.cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed,
+            polish=False, init="sobol", x0=x0, tol=0.0, workers=workers,
+            updating="deferred" if workers != 1 else "immediate",
+            callback=lambda *a, **k: _tick(bar))
+
+
+def _poor(problem: _Problem, chisqr: float) -> bool:
+    """A weighted fit whose chi-square has a probability below :data:`POOR_P`."""
+    return problem.weighted and _p_value(problem, chisqr) < POOR_P
+
+
+def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
+    """The global stage's best point, then its next best distinct population members."""
+    starts = [np.asarray(de.x, dtype=float)]
+    for i in np.argsort(de.population_energies):
+        x = np.asarray(de.population[i], dtype=float)
+        if len(starts) == count:
+            break
+        if all(np.max(np.abs(x - y)) > 1e-3 for y in starts):
+            starts.append(x)
+    return starts
+
+
+def _ln(out, free: tuple[str, ...]) -> NDArray[np.float64]:
+    return np.array([out.params[n].value for n in free])
+
+
+def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = None):
+    """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``;
+    ``hold``: the index of a parameter kept at its value in ``x0`` (a profile)."""
+    params = lmfit.Parameters()
+    for i, (n, x, (lo, hi)) in enumerate(zip(problem.free, x0, bounds, strict=True)):
+        params.add(n, value=float(np.clip(x, lo, hi)), min=lo, max=hi, vary=i != hold)
+
+    def residual(p):
+        return problem.residual(np.array([p[n].value for n in problem.free]))
+
+    loose = {"ftol": 1e-6, "xtol": 1e-6} if hold is not None else {}  # chi^2 to ~1e-4
+    nvary = len(problem.free) - (hold is not None)
+    # a start that crawls along a kinked valley for thousands of evaluations does not win:
+    # the budget is LOCAL_BUDGET evaluations per varied parameter
+    return lmfit.minimize(residual, params, method="leastsq",
+                          scale_covar=not problem.weighted, epsfcn=1e-8,
+                          max_nfev=LOCAL_BUDGET * (nvary + 1), **loose)
+
+
+@dataclass
+class _Fit:
+    """What the fit keeps of an lmfit run (picklable, so that a worker can send it)."""
+
+    params: lmfit.Parameters
+    chisqr: float
+    redchi: float
+    covar: NDArray | None
+    nfev: int
+
+    @classmethod
+    def of(cls, out) -> _Fit:
+        covar = getattr(out, "covar", None)
+        return cls(out.params, float(out.chisqr), float(out.redchi),
+                   None if covar is None else np.array(covar), int(out.nfev))
+
+
+def _polish(task) -> _Fit:
+    problem, x0, bounds = task
+    return _Fit.of(_least_squares(problem, x0, bounds))
+
+
+def _local_fit(problem: _Problem, starts: list[NDArray], bounds, map_):
+    """Least squares from every start (in parallel): the lowest chi-square, the
+    chi-squares and points reached from each start, and the count of model evaluations."""
+    found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
+    minima = sorted(((r.chisqr, _ln(r, problem.free)) for r in found), key=lambda r: r[0])
+    return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
+
+
+def _tick(bar) -> bool:
+    """Advance a progress bar; False, so that differential evolution goes on (a callback
+    returning True stops it, and tqdm's ``update`` returns True when it redraws)."""
+    bar.update(1)
+    return False
