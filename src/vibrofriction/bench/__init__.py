@@ -3,7 +3,10 @@ oscillation (docs/bench.md).
 
 * :mod:`.measurements`: the table of measured points (:func:`read_measurements`);
 * :mod:`.fitting`: the model fitted with honest uncertainties (:func:`fit`,
-  :class:`FitResult`, :func:`synthetic_measurements` to try a fit before measuring);
+  :class:`FitResult`, :func:`synthetic_measurements` to try a fit before measuring),
+  its parts one job each: :mod:`.fit_problem` (parameters, constraints, residuals),
+  :mod:`.fit_search` (global stage, local starts), :mod:`.fit_uncertainty` (profiles,
+  identifiability), :mod:`.fit_result` (:class:`FitResult`, the verdict);
 * :mod:`.designing`: the oscillation that lowers friction most within an actuator's
   limits (:func:`design`, :class:`DesignResult`).
 
