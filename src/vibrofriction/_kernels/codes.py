@@ -61,5 +61,7 @@ I_DEGENERATE = column_index("degenerate")
 # columns of a history row (integrate.run_periods)
 SEG_TAU, SEG_Y, SEG_XD, SEG_F, SEG_PHASE, SEG_EVENT, SEG_INT_F, SEG_INT_N = range(8)
 SEG_THETA, SEG_E, SEG_E_DOT = 8, 9, 10
+N_SEG_COLUMNS = 11
 # columns of a sampled history (integrate.sample)
 SMP_Y, SMP_XD, SMP_F, SMP_N, SMP_PHASE, SMP_E = range(6)
+N_SMP_COLUMNS = 6

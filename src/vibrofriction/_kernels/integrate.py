@@ -38,11 +38,28 @@ from .codes import (
     EV_TOUCHDOWN,
     FLIGHT,
     NO_PHASE,
+    SEG_E,
+    SEG_E_DOT,
+    SEG_EVENT,
+    SEG_F,
+    SEG_INT_F,
+    SEG_INT_N,
+    SEG_PHASE,
+    SEG_TAU,
+    SEG_THETA,
+    SEG_XD,
+    SEG_Y,
     SLIP_NEG,
     SLIP_POS,
+    SMP_E,
+    SMP_F,
+    SMP_N,
+    SMP_PHASE,
+    SMP_XD,
+    SMP_Y,
     STICK,
 )
-from .jit import jit
+from .jit import jit, jit_inline
 from .phases import (
     M_A,
     M_ALPHA,
@@ -71,7 +88,6 @@ from .phases import (
 from .roots import REL_TOL, first_root, start_margin
 
 TWO_PI = 2.0 * math.pi
-N_SEG_COLUMNS = 11  # columns of a history row (run_periods)
 ZENO_N = 1e-10  # relative normal force below which the approach to n = 0 is free motion
 
 
@@ -204,6 +220,89 @@ def state_at(M, phase, theta, y, xd, e, ed, t):
             dot(derivative(ec, m), bv), s * normal_force(theta + t, M[M_A]))
 
 
+@jit_inline
+def _stick_event(fc, mst, theta, a, T):
+    """The first stick->slip event within ``T``: ``(t or -1, direction s, immediate)``.
+
+    Both cone margins ``n -+ f`` are searched; ``immediate`` when the event fires at the
+    start offset (a round-off tangency).
+    """
+    te = -1.0
+    es = 0.0
+    immediate = False
+    for i in range(2):
+        s = 1.0 if i == 0 else -1.0
+        g = stick_margin(fc, mst, theta, s, a)
+        ok, ts = start_margin(g, mst, T)
+        tlim = T if te < 0.0 else te
+        r = first_root(g, mst, ts, tlim) if ok else 0.0
+        if r >= 0.0 and (te < 0.0 or r < te):
+            te = r
+            es = s
+            immediate = r <= ts
+    return te, es, immediate
+
+
+@jit_inline
+def _slip_event(vr, m, T):
+    """The first zero of the contact point's slip velocity ``vr`` within ``T``:
+    ``(t or -1, immediate)``."""
+    ok, ts = start_margin(vr, m, T)
+    te = first_root(vr, m, ts, T) if ok else 0.0
+    return te, te >= 0.0 and te <= ts
+
+
+@jit_inline
+def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1):
+    """``(int_f, int_n)``: the integrals of ``f`` and ``n`` over a piece of length ``t``."""
+    a = M[M_A]
+    if zeno or phase == FLIGHT:
+        return 0.0, (0.0 if phase == FLIGHT else normal_integral(theta, t, a))
+    int_n = normal_integral(theta, t, a)
+    if phase != STICK:
+        return slip_sign(phase) * int_n, int_n
+    if math.isinf(M[M_K]):
+        return integral(fc, mst, t), int_n
+    return M[M_K] * integral(ec, mst, t) + M[M_C] * (e1 - e), int_n
+
+
+@jit
+def _transition(M, phase, theta1, y1, xd1, e1, f1, es, ec, t, Tn, avoid):
+    """The phase after the event that ended ``phase``: the state is projected onto the
+    event surface, then :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok,
+    event)``."""
+    rigid = math.isinf(M[M_K])
+    if phase == STICK:
+        # stick -> slip in direction es: project onto |f| = n
+        f1 = es * normal_force(theta1, M[M_A])
+        if not rigid:
+            e1 = (f1 - M[M_C] * xd1) / M[M_K]
+        # the contact point starts from rest: e' = x' exactly
+        ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, es, M, Tn, avoid)
+        return ph1, xd1, e1, ed1, f1, ok, EV_STICK_TO_SLIP
+    s = slip_sign(phase)
+    m = M[M_SLIP]
+    # slip -> stick: project onto zero contact-point velocity, x' = e'
+    xd1 = 0.0 if rigid else evaluate(derivative(ec, m), m, t)
+    ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, -s, M, Tn, avoid)
+    return ph1, xd1, e1, ed1, f1, ok, (EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL)
+
+
+@jit
+def _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1):
+    """The phase after reaching lift-off, touch-down or the section without an event.
+    Returns ``(phase, e, e', f, ok)``."""
+    if bkind == EV_LIFTOFF:
+        if M[M_C] == 0.0:
+            return FLIGHT, 0.0, 0.0, 0.0, True
+        return FLIGHT, e1, ed1, 0.0, True
+    if bkind == EV_TOUCHDOWN:
+        # f = 0 at n = 0; the contact point arrives with velocity x' + r e
+        sp = 1.0 if xd1 + M[M_R] * e1 >= 0.0 else -1.0
+        return enter(theta1, y1, xd1, e1, ed1, 0.0, sp, M, TWO_PI - theta1, NO_PHASE)
+    return ph1, e1, ed1, f1, True
+
+
 @jit
 def segment(theta, y, xd, e, ed, phase, M):
     """Advance one segment.
@@ -213,87 +312,39 @@ def segment(theta, y, xd, e, ed, phase, M):
     ``int_f`` and ``int_n`` the integrals of ``f`` and ``n`` over it and ``ok`` False
     when a transition was degenerate.
     """
-    a, V, k = M[M_A], M[M_V], M[M_K]
-    rigid = math.isinf(k)
+    a = M[M_A]
     m = M[M_SLIP]
     tb, bkind = next_boundary(theta, a, M[M_OFF], M[M_ON])
     T = tb - theta
-    te = -1.0
-    es = 0.0
     # Zeno guard: where the cone closes (n -> 0 at lift-off or grazing) stick and slip
     # can alternate infinitely often.  Once n < ZENO_N the force |f| <= n is negligible
     # (its integral over the rest of the approach is < 1e-14): move freely to the boundary.
     zeno = (phase != FLIGHT and bkind != EV_SECTION
             and normal_force(theta, a) <= ZENO_N * (1.0 + a))
+    te = -1.0
+    es = 0.0
     immediate = False  # the event fired at the start offset: a round-off tangency
     fc, mst, ec = stick_coefficients(M, y, xd, e) if phase == STICK else (ZERO9, m, ZERO9)
     if phase == STICK and not zeno:
-        for i in range(2):
-            s = 1.0 if i == 0 else -1.0
-            g = stick_margin(fc, mst, theta, s, a)
-            ok, ts = start_margin(g, mst, T)
-            tlim = T if te < 0.0 else te
-            r = first_root(g, mst, ts, tlim) if ok else 0.0
-            if r >= 0.0 and (te < 0.0 or r < te):
-                te = r
-                es = s
-                immediate = r <= ts
+        te, es, immediate = _stick_event(fc, mst, theta, a, T)
     elif phase != FLIGHT and not zeno:
         s = slip_sign(phase)
         ec = elongation(M, theta, e, ed, s)
-        vr = slip_velocity(M, body(M, theta, y, xd - V, s), ec, s)
-        ok, ts = start_margin(vr, m, T)
-        te = first_root(vr, m, ts, T) if ok else 0.0
-        immediate = te >= 0.0 and te <= ts
+        te, immediate = _slip_event(slip_velocity(M, body(M, theta, y, xd - M[M_V], s), ec, s),
+                                    m, T)
     hit = te >= 0.0
-    avoid = phase if immediate else NO_PHASE
     t = te if hit else T
     # state and integrals at the end of the piece (the Zeno approach moves freely)
     y1, xd1, e1, ed1, f1 = state_at(M, FLIGHT if zeno else phase, theta, y, xd, e, ed, t)
-    if zeno or phase == FLIGHT:
-        int_f = 0.0
-        int_n = 0.0 if phase == FLIGHT else normal_integral(theta, t, a)
-    elif phase == STICK:
-        if rigid:
-            int_f = integral(fc, mst, t)
-        else:
-            int_f = k * integral(ec, mst, t) + M[M_C] * (e1 - e)
-        int_n = normal_integral(theta, t, a)
-    else:
-        int_n = normal_integral(theta, t, a)
-        int_f = slip_sign(phase) * int_n
+    int_f, int_n = _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1)
     theta1 = tb if t == T else theta + t
-    ph1 = phase
-    ok = True
-    event = bkind
-    Tn = tb - theta1 if tb > theta1 else TWO_PI
+    ph1, ok, event = phase, True, bkind
     if hit:
-        if phase == STICK:
-            # stick -> slip in direction es: project onto |f| = n
-            f1 = es * normal_force(theta1, a)
-            if not rigid:
-                e1 = (f1 - M[M_C] * xd1) / k
-            # the contact point starts from rest: e' = x' exactly
-            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, es, M, Tn, avoid)
-            event = EV_STICK_TO_SLIP
-        else:
-            s = slip_sign(phase)
-            # slip -> stick: project onto zero contact-point velocity, x' = e'
-            xd1 = 0.0 if rigid else evaluate(derivative(ec, m), m, t)
-            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, -s, M, Tn, avoid)
-            event = EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL
+        ph1, xd1, e1, ed1, f1, ok, event = _transition(
+            M, phase, theta1, y1, xd1, e1, f1, es, ec, t, tb - theta1 if tb > theta1 else TWO_PI,
+            phase if immediate else NO_PHASE)
     if t == T and not hit:
-        if bkind == EV_LIFTOFF:
-            ph1 = FLIGHT
-            f1 = 0.0
-            if M[M_C] == 0.0:
-                e1 = 0.0
-                ed1 = 0.0
-        elif bkind == EV_TOUCHDOWN:
-            # f = 0 at n = 0; the contact point arrives with velocity x' + r e
-            sp = 1.0 if xd1 + M[M_R] * e1 >= 0.0 else -1.0
-            ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, ed1, 0.0, sp, M,
-                                         TWO_PI - theta1, NO_PHASE)
+        ph1, e1, ed1, f1, ok = _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1)
     elif t == T and hit and bkind != EV_SECTION:
         # an event exactly at lift-off / touch-down: the boundary is handled by a
         # zero-length segment next (theta1 == tb keeps it as the next boundary)
@@ -322,10 +373,10 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, period
                 max_segments, seg):
     """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
 
-    ``seg`` has shape ``(max_segments, N_SEG_COLUMNS)`` with columns ``tau, y, x', f,
-    phase, event that ended the previous segment, int_f, int_n`` (cumulative), the
-    drive phase ``theta`` of the segment start, ``e`` and ``e'`` (nan where not known
-    exactly, :func:`.phases.elongation`).  Returns the number of rows
+    ``seg`` has shape ``(max_segments, N_SEG_COLUMNS)`` with columns (``codes.SEG_*``)
+    ``tau, y, x', f, phase, event that ended the previous segment, int_f, int_n``
+    (cumulative), the drive phase ``theta`` of the segment start, ``e`` and ``e'`` (nan
+    where not known exactly, :func:`.phases.elongation`).  Returns the number of rows
     written (``-1`` if ``max_segments`` was too small).
     """
     M = make_model(alpha, beta, a, V, zeta, eta)
@@ -337,10 +388,17 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, period
     while True:
         if m >= max_segments:
             return -1
-        f = contact_force(M, phase, theta, y, xd, e)
-        row = (TWO_PI * k + theta, y, xd, f, float(phase), float(ev), cf, cn, theta, e, ed)
-        for j in range(N_SEG_COLUMNS):
-            seg[m, j] = row[j]
+        seg[m, SEG_TAU] = TWO_PI * k + theta
+        seg[m, SEG_Y] = y
+        seg[m, SEG_XD] = xd
+        seg[m, SEG_F] = contact_force(M, phase, theta, y, xd, e)
+        seg[m, SEG_PHASE] = float(phase)
+        seg[m, SEG_EVENT] = float(ev)
+        seg[m, SEG_INT_F] = cf
+        seg[m, SEG_INT_N] = cn
+        seg[m, SEG_THETA] = theta
+        seg[m, SEG_E] = e
+        seg[m, SEG_E_DOT] = ed
         m += 1
         if k >= periods:
             return m
@@ -355,24 +413,25 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, period
 
 @jit
 def sample(seg, nseg, alpha, beta, a, V, zeta, eta, taus, out):
-    """Evaluate the closed forms at sorted times ``taus`` (columns y, x', f, n, phase, e)."""
+    """Evaluate the closed forms at sorted times ``taus`` into ``out`` (shape ``(len(taus),
+    N_SMP_COLUMNS)``, columns ``codes.SMP_*``: y, x', f, n, phase, e)."""
     M = make_model(alpha, beta, a, V, zeta, eta)
     j = 0
     for i in range(taus.shape[0]):
         tau = taus[i]
-        while j + 1 < nseg - 1 and seg[j + 1, 0] <= tau:
+        while j + 1 < nseg - 1 and seg[j + 1, SEG_TAU] <= tau:
             j += 1
-        theta = seg[j, 8]
-        t = tau - seg[j, 0]
-        phase = int(seg[j, 4])
-        y1, xd1, e1, _, f1 = state_at(M, phase, theta, seg[j, 1], seg[j, 2], seg[j, 9],
-                                      seg[j, 10], t)
-        out[i, 0] = y1
-        out[i, 1] = xd1
-        out[i, 2] = f1
-        out[i, 3] = max(0.0, normal_force(theta + t, a))
-        out[i, 4] = phase
-        out[i, 5] = e1
+        theta = seg[j, SEG_THETA]
+        t = tau - seg[j, SEG_TAU]
+        phase = int(seg[j, SEG_PHASE])
+        y1, xd1, e1, _, f1 = state_at(M, phase, theta, seg[j, SEG_Y], seg[j, SEG_XD],
+                                      seg[j, SEG_E], seg[j, SEG_E_DOT], t)
+        out[i, SMP_Y] = y1
+        out[i, SMP_XD] = xd1
+        out[i, SMP_F] = f1
+        out[i, SMP_N] = max(0.0, normal_force(theta + t, a))
+        out[i, SMP_PHASE] = phase
+        out[i, SMP_E] = e1
 
 
 @jit

@@ -131,6 +131,23 @@ def _broyden(jac, nd, dr, dz):
 
 
 @jit
+def _newton_step(z, r, ph, p, M, max_events, jac, nd, rebuild):
+    """One Newton step ``z += dz`` with ``jac dz = -r``, the Jacobian rebuilt by differences
+    first when ``rebuild`` (else Broyden's update of the old one, already applied).
+    Returns ``(ok, dz, events)``."""
+    events = 0
+    if rebuild:
+        ok, events = residual_jacobian(z, r, ph, p, M, max_events, jac)
+        if not ok:
+            return False, r, events
+    dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
+    if ok:
+        for j in range(nd):
+            z[j] += dz[j]
+    return ok, dz, events
+
+
+@jit
 def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian
     (updated by Broyden's rule between rebuilds).
@@ -158,12 +175,12 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     for _ in range(NEWTON_ITERATIONS):
         if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
                 > NEWTON_DIVERGED * scale0):
-            return False, y, xd, e, ph_in, events
+            break
         y0, xd0, e0 = _unpack(z, ph, M)
         y1, xd1, e1, ph1, ev, degenerate = period_map(y0, xd0, e0, ph, p, M, max_events)
         events += ev
         if degenerate < 0:
-            return False, y, xd, e, ph_in, events
+            break
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
             ph = ph1
@@ -178,21 +195,16 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
             _broyden(jac, nd, r - r_prev, dz)
         if res <= tol * scale0:
             if degenerate > 0 or not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
-                return False, y, xd, e, ph_in, events
+                break
             return True, y0, xd0, e0, ph, events
-        if not have_jac or res > 0.5 * res_prev:
-            # (re)build the Jacobian; otherwise Broyden's updates of the old one
-            have_jac, ev = residual_jacobian(z, r, ph, p, M, max_events, jac)
-            events += ev
-            if not have_jac:
-                return False, y, xd, e, ph_in, events
+        ok, dz, ev = _newton_step(z, r, ph, p, M, max_events, jac, nd,
+                                  not have_jac or res > 0.5 * res_prev)
+        events += ev
+        if not ok:
+            break
+        have_jac = True  # built, or updated by Broyden's rule
         res_prev = res
         r_prev = r
-        dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
-        if not ok:
-            return False, y, xd, e, ph_in, events
-        for j in range(nd):
-            z[j] += dz[j]
     return False, y, xd, e, ph_in, events
 
 

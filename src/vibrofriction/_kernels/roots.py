@@ -35,7 +35,7 @@ from .basis import (
     sup_bound,
     value_at_zero,
 )
-from .jit import jit
+from .jit import jit, jit_inline
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
 REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
@@ -125,6 +125,30 @@ def _point(c, c1, m, t, cs, ce, f1, f2, fe):
     return g, g - fast, dot(c1, bv)
 
 
+@jit_inline
+def _fast_terms(c, m):
+    """Which terms of ``g`` are fast (:func:`.basis.fast_mask`) and present: ``(f1, f2,
+    fe)`` for ``h1``, ``h2`` and the viscoelastic relaxation."""
+    f1, f2, fe = fast_mask(m)
+    if m[0] == EXP:  # two exponentials, each bounded by itself
+        f1 = f1 and c[4] != 0.0
+        f2 = f2 and c[5] != 0.0
+    else:  # h1 and h2 share one envelope (bound_parts): both fast or both slow
+        f1 = f2 = f1 and (c[4] != 0.0 or c[5] != 0.0)
+    return f1, f2, fe and c[8] != 0.0
+
+
+@jit_inline
+def _bounds(c, c2, m, T, f1, f2, fe):
+    """The bounds of the exclusion tests on ``[t_a, T]``: ``|g''|``, ``|g''|`` of the slow
+    part and the envelope of the fast part of ``g`` (the first for both where no term
+    is fast)."""
+    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
+    if not (f1 or f2 or fe):
+        return pm2, pm2, pm2
+    return pm2, bound_parts(c2, m, T, f1, f2, fe, 1), bound_parts(c, m, T, f1, f2, fe, 2)
+
+
 @jit
 def first_root(c, m, t0, T):
     """Earliest ``t`` in ``(t0, T]`` where ``g`` crosses from positive to ``<= 0``.
@@ -136,20 +160,9 @@ def first_root(c, m, t0, T):
     c2 = derivative(c1, m)
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
-    f1, f2, fe = fast_mask(m)
-    if m[0] == EXP:  # two exponentials, each bounded by itself
-        f1 = f1 and c[4] != 0.0
-        f2 = f2 and c[5] != 0.0
-    else:  # h1 and h2 share one envelope (bound_parts): both fast or both slow
-        f1 = f2 = f1 and (c[4] != 0.0 or c[5] != 0.0)
-    fe = fe and ce
+    f1, f2, fe = _fast_terms(c, m)
     split = f1 or f2 or fe
-    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
-    pm2s = pm2
-    pr = pm2
-    if split:
-        pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
-        pr = bound_parts(c, m, T, f1, f2, fe, 2)
+    pm2, pm2s, pr = _bounds(c, c2, m, T, f1, f2, fe)
     a = t0
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:

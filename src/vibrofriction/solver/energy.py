@@ -21,7 +21,6 @@ __all__ = ["ENERGY_NAMES", "dissipation", "kernel_point"]
 ENERGY_NAMES = ("work_input", "dissipated_pin", "dissipated_contact", "dissipated_friction")
 
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
-_SAMPLE_COLUMNS = 6  # columns of integrate.sample (codes.SMP_*)
 
 
 def kernel_point(dim: Dimensionless, V: float) -> tuple[float, ...]:
@@ -79,7 +78,7 @@ def dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
     lies inside one), relative accuracy ~1e-10."""
     w_max = max(1.0, math.sqrt(dim.alpha), 0.0 if dim.is_rigid else math.sqrt(dim.beta))
     nodes, owner, width = _quadrature_nodes(taus, w_max)
-    cols = np.empty((nodes.size, _SAMPLE_COLUMNS))
+    cols = np.empty((nodes.size, codes.N_SMP_COLUMNS))
     sample(seg, m, *kernel_point(dim, V), nodes, cols)
     rates = _rates(dim, V, cols, nodes).reshape(len(ENERGY_NAMES), -1, _GAUSS_X.size)
     per_piece = 0.5 * width * (rates * _GAUSS_W).sum(axis=2)

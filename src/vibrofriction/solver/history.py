@@ -9,7 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._kernels import codes
-from .._kernels.integrate import N_SEG_COLUMNS, TWO_PI, initial_point, run_periods, sample
+from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
 from .energy import dissipation, kernel_point
 from .engine import friction_coefficient, initial_rows
@@ -105,7 +105,7 @@ def _segments(dim: Dimensionless, V: float, start: tuple, whole: int) -> NDArray
     """The segment rows (:data:`codes.SEG_TAU` ...) of ``whole`` drive periods."""
     cap = 4096 * whole
     while True:
-        seg = np.empty((cap, N_SEG_COLUMNS))
+        seg = np.empty((cap, codes.N_SEG_COLUMNS))
         m = run_periods(0.0, *start, *kernel_point(dim, V), whole, cap, seg)
         if m > 0:
             return seg[:m]
@@ -148,7 +148,7 @@ def simulate(
     eps = 1e-12 * max(1.0, tau_end)
     taus = np.sort(np.concatenate([grid, ev_tau - eps, ev_tau]))
     taus = taus[(taus >= 0.0) & (taus <= tau_end)]
-    out = np.empty((taus.size, 6))
+    out = np.empty((taus.size, codes.N_SMP_COLUMNS))
     sample(seg, m, *kernel_point(dim, V), taus, out)
     phases = np.asarray(codes.PHASE_NAMES, dtype=str)
     events = tuple(
