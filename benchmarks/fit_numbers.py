@@ -27,7 +27,7 @@ k_zc = 2e7 N/m, 20 N, mu0 = 0.3, driven at 1 kHz).
    synthetic data sets, seed 2027), the count and the binomial tail probabilities.
 
 Run: ``python benchmarks/fit_numbers.py [--workers 2] [--full]`` (writes
-benchmarks/results/fit_numbers.md; about 4 min with 2 workers on 2 cores, 7 with
+benchmarks/results/fit_numbers.md; about 2.5 min with 2 workers on 2 cores, 6-7 with
 ``--full``).
 """
 
