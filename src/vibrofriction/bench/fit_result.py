@@ -18,12 +18,15 @@ from numpy.typing import NDArray
 from ..params import Physical
 from .fit_problem import _Problem, predict_cof
 
-__all__ = ["POOR_P", "FitResult"]
+__all__ = ["DOUBTFUL_P", "POOR_P", "FitResult"]
 
 #: A weighted fit whose chi-square has a probability below this (``points - free``
 #: degrees of freedom) is poor: it runs a second global stage (with another seed) and,
 #: if still poor, says so and reports the search range as its intervals.
 POOR_P = 1e-3
+#: Chi-square probability below which a weighted fit is doubtful (a finding, not a
+#: footnote): a second global stage is run, and the report says what it may mean.
+DOUBTFUL_P = 0.05
 
 
 @dataclass
@@ -36,9 +39,10 @@ class FitResult:
     profile-likelihood interval of each (``-inf``/``inf`` for a side the data do not
     close; the search range when the fit is poor; :mod:`.fitting`), ``stderr`` half its
     longer side; ``system``: the best-fit :class:`Physical`; ``quality``: ``"good"``,
-    ``"poor"`` (chi-square probability ``p_value`` below :data:`POOR_P`, a profile met a
-    lower chi-square twice, or rows could not be evaluated) or ``"unjudged"`` (no
-    ``sigma``);
+    ``"doubtful"`` (``p_value`` below :data:`DOUBTFUL_P`: a second global stage found no
+    lower minimum, the intervals are conditional on this one), ``"poor"`` (chi-square
+    probability ``p_value`` below :data:`POOR_P`, a profile met a lower chi-square twice,
+    or rows could not be evaluated) or ``"unjudged"`` (no ``sigma``);
     ``penalised``: rows the model could not evaluate at the best fit, by reason;
     ``warnings``: one sentence per parameter the data do not identify; ``chisqr``,
     ``redchi``, ``nfev`` (model evaluations, global stage included) and ``seconds``.
@@ -170,6 +174,10 @@ def _verdict(res: FitResult) -> str:
     chi = f"chi-square {res.chisqr:.4g} for {dof} degrees of freedom (p = {res.p_value:.2g}"
     if res.quality == "good":
         return f"GOOD FIT: {chi})"
+    if res.quality == "doubtful":
+        return (f"DOUBTFUL FIT: {chi} < {DOUBTFUL_P:g}): the fit may sit in a wrong valley "
+                "(a second global stage found no lower one), or a constraint, the model or "
+                "sigma may be off; the intervals hold only if this minimum is the right one")
     rows = sum(res.penalised.values())
     why = [f"{chi} < {POOR_P:g})"] if res.weighted and res.p_value < POOR_P else []
     if not res.extra.get("at_lowest_minimum", True):
@@ -238,6 +246,8 @@ def _judge(problem: _Problem, chisqr: float, lower, penalised: int) -> tuple[str
     p_value = _p_value(problem, chisqr) if problem.weighted else math.nan
     if lower is not None or penalised or (problem.weighted and p_value < POOR_P):
         return "poor", p_value
+    if problem.weighted and p_value < DOUBTFUL_P:
+        return "doubtful", p_value
     return ("good" if problem.weighted else "unjudged"), p_value
 
 

@@ -1,6 +1,6 @@
 """The fit's search (:mod:`.fitting`): the global stage (differential evolution on ``ln``
 of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
-second global stage when the first ends poor; where the time went (:class:`_Stages`)."""
+second global stage when the first is not clearly good; where the time went (:class:`_Stages`)."""
 
 from __future__ import annotations
 
@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .fit_problem import _Problem
-from .fit_result import POOR_P, _p_value
+from .fit_result import DOUBTFUL_P, _p_value
 
 #: Local least-squares starts: the global stage's best point and its next best.
 STARTS = 4
@@ -46,7 +46,7 @@ class _Stages:
 def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _Stages,
             maxiter: int, popsize: int, seed: int, progress: bool, first: int):
     """The global stage, then least squares from its best distinct points, ``first`` of
-    them before the others.  A first global stage that ends poor (:func:`_poor`), or
+    them before the others.  A first global stage that is not clearly good (:func:`_poor`), or
     whose first starts do, is followed by a second one (another seed) before its
     remaining starts are tried: a wrong valley is left rather than explored.  The best
     fit and the local minima reached (chi-square, point)."""
@@ -101,8 +101,9 @@ def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize:
 
 
 def _poor(problem: _Problem, chisqr: float) -> bool:
-    """A weighted fit whose chi-square has a probability below :data:`POOR_P`."""
-    return problem.weighted and _p_value(problem, chisqr) < POOR_P
+    """A weighted fit that is not clearly good: its chi-square has a probability below
+    :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for)."""
+    return problem.weighted and _p_value(problem, chisqr) < DOUBTFUL_P
 
 
 def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
