@@ -227,6 +227,8 @@ def test_a_chi_square_probability_between_1e_3_and_5_percent_makes_the_fit_doubt
         assert res.p_value == pytest.approx(p, rel=1e-3)
         assert res.quality == quality
         assert res.report().startswith("DOUBTFUL FIT" if quality == "doubtful" else "GOOD")
+        conditional = "95 % interval if this minimum is the right one" in res.report()
+        assert conditional == (quality == "doubtful")
         assert [r["stage"] for r in res.extra["stages"]].count("global") == stages
         assert res.intervals["mu0"][0] < res.params["mu0"].value < res.intervals["mu0"][1]
 

@@ -82,10 +82,12 @@ class FitResult:
             lines.append("time: " + ", ".join(
                 f"{r['stage']} {r['seconds']:.1f} s ({r['evaluations']} evaluations)"
                 for r in self.extra["stages"]))
-        judged = self.quality != "poor"
+        what = {"poor": "search range (the fit is poor)",
+                "doubtful": "95 % interval if this minimum is the right one"}.get(
+                    self.quality, "95 % interval")
         for name in self.params:
             lines.append(_parameter_line(name, self.params[name],
-                                         self.intervals.get(name), judged))
+                                         self.intervals.get(name), what))
         pairs = [(a, b, self.params[a].correl[b]) for i, a in enumerate(self.free)
                  for b in self.free[i + 1:] if self.params[a].correl
                  and b in self.params[a].correl]
@@ -220,14 +222,13 @@ def _constraint_lines(res: FitResult) -> list[str]:
     return ["constraints in force:" if lines else "constraints in force: none", *lines]
 
 
-def _parameter_line(name: str, p, interval: tuple[float, float] | None, judged: bool) -> str:
+def _parameter_line(name: str, p, interval: tuple[float, float] | None, what: str) -> str:
     """``name = value +- stderr, 95 % interval [lo, hi]``, an unbounded side in words."""
     err = (f"+- {p.stderr:.3g} ({100 * p.stderr / abs(p.value):.2g} %)"
            if p.stderr is not None and np.isfinite(p.stderr) else "(not bounded)")
     if interval is None or any(math.isnan(x) for x in interval):
         return f"  {name:6s} = {p.value:.6g} {err}"
     lo, hi = interval
-    what = "95 % interval" if judged else "search range (the fit is poor)"
     ends = [f"{lo:.4g}" if math.isfinite(lo) else "unbounded below",
             f"{hi:.4g}" if math.isfinite(hi) else "unbounded above"]
     return f"  {name:6s} = {p.value:.6g} {err}, {what} [{ends[0]}, {ends[1]}]"
