@@ -273,3 +273,20 @@ def test_physical_round_trips_and_eq12(mass: float, k_x: float, k_xc: float, k_z
     V = p.v0_to_inertial(v0)
     assert p.inertial_to_v0(V) == pytest.approx(v0, rel=1e-12, abs=1e-300)
     assert d.inertial_to_vbar(V) == pytest.approx(vbar, rel=1e-10, abs=1e-300)
+
+
+def test_the_vbar_unit_is_computed_once_and_changes_nothing_else():
+    """``Dimensionless`` keeps ``V_c`` after the first conversion (its fields are frozen):
+    equality, hashing and pickling are unchanged, the value is eq. (12)'s, and where
+    ``vbar`` does not exist every call says so (a refusal is not cached)."""
+    import pickle
+
+    s = Dimensionless(0.5, 2.0, 0.5)
+    fresh = Dimensionless(0.5, 2.0, 0.5)
+    assert s.vbar_to_inertial(0.3) == pytest.approx(0.3 * 0.5 * 1.0 / (1.5 * 0.5))
+    assert s == fresh and hash(s) == hash(fresh)
+    assert pickle.loads(pickle.dumps(s)) == s
+    resonant = Dimensionless(1.0, 2.0, 0.5)
+    for _ in range(2):
+        with pytest.raises(ValueError, match="case IV"):
+            resonant.vbar_to_inertial(0.3)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import enum
+import functools
 import math
 import os
 from dataclasses import dataclass
@@ -261,10 +262,16 @@ class Dimensionless:
         return float(theory.critical_inertial_velocity(self.alpha, self.beta, self.amplitude,
                                                        self.zeta, self.eta_c))
 
+    @functools.cached_property
+    def _vbar_unit(self) -> float:
+        """``V_c`` where ``vbar`` exists (computed once per system: the fields are frozen
+        and validated); ValueError where it does not (not cached)."""
+        return float(_critical_for_vbar(self.alpha, self.beta, self.amplitude, self.zeta,
+                                        self.eta_c))
+
     def vbar_to_inertial(self, vbar: ArrayLike) -> FloatOrArray:
         """Inertial velocity ``V = V_c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
-        return vbar_to_inertial(self.alpha, self.beta, self.amplitude, vbar, self.zeta,
-                                self.eta_c)
+        return as_float_or_array(self._vbar_unit * _valid_array("vbar", vbar))
 
     def inertial_to_vbar(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``vbar = V / V_c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""

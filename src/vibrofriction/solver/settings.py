@@ -17,6 +17,8 @@ def converged(status: ArrayLike) -> NDArray[np.bool_]:
     """Which statuses are converged (:attr:`Status.ok`), elementwise: integer codes or
     :class:`Status` members.  The package's one test of convergence."""
     st = np.asarray(status)
+    if st.ndim == 0 and st.dtype != object:  # one point: no array machinery
+        return np.bool_(int(st) in CONVERGED_CODES)
     if st.dtype == object:
         flat = [s.ok if isinstance(s, Status) else int(s) in CONVERGED_CODES for s in st.flat]
         return np.array(flat, dtype=bool).reshape(st.shape)
@@ -62,6 +64,8 @@ class SolverSettings:
         ``status`` holds integer codes (:attr:`Status.code`) or :class:`Status`
         members.  This is the package's one notion of a trusted result.
         """
+        if np.ndim(error) == 0:  # one point (nan is never <= tol)
+            return converged(status) & np.bool_(float(error) <= self.tol_trusted)
         err = np.nan_to_num(np.asarray(error, dtype=float), nan=np.inf)
         return converged(status) & (err <= self.tol_trusted)
 
