@@ -22,7 +22,8 @@ test: $(BIN)/vibrofriction browser  ## the whole test suite, slow and browser te
 	$(BIN)/lint-imports
 	VIBROFRICTION_BROWSER_TESTS=required $(BIN)/python -m pytest -q
 
-fast: $(BIN)/vibrofriction  ## the development loop: lint, contracts, tests not marked slow or browser
+fast:  ## the development loop, installs nothing: lint, contracts, tests not slow or browser
+	@test -x $(BIN)/vibrofriction || (echo "make fast installs nothing: run 'make test' once first" >&2; exit 2)
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/python -m pytest -q -x -m "not slow and not browser"
