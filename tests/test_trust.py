@@ -253,3 +253,25 @@ def test_a_jumping_body_proven_sliding_never_sticks(p):
     assert np.any(h.phase[later] == "flight")
     m = _period_means(s, r.v_inertial, 1000)
     assert np.all(np.abs(m[r.periods:] - 1.0) < 1e-12)
+
+
+def test_work_counts_every_period_integrated():
+    """``work`` (drive periods integrated, Newton's maps and verification included) is at
+    least ``periods``, finite wherever the result is converged, 0 where a = 0 is proven
+    sliding at once, and a periodic orbit costs more than its main loop (it is verified)."""
+    from vibrofriction.solver import solve_points
+
+    rng = np.random.default_rng(19)
+    n = 60
+    alpha = 10 ** rng.uniform(-2, 1, n)
+    beta = np.where(rng.random(n) < 0.3, math.inf, alpha * (1 + 10 ** rng.uniform(-1, 2, n)))
+    a = rng.choice([0.0, 0.5, 1.0, 1.5], n)
+    r = solve_points(alpha, beta, a, rng.uniform(0.05, 2.0, n),
+                     rng.choice([0.0, 0.05], n), rng.choice([0.0, 0.2], n))
+    assert np.all(r["work"] >= r["periods"])
+    ok = np.isin(r["status"], [s.code for s in vf.Status if s.ok])
+    assert np.all(np.isfinite(r["work"][ok]))
+    assert np.all(r["work"][a == 0.0] == 0.0) and np.any(a == 0.0)
+    periodic = r["status"] == vf.Status.PERIODIC.code
+    assert np.any(periodic)
+    assert np.all(r["work"][periodic] >= r["periods"][periodic] + r["period"][periodic])

@@ -80,6 +80,8 @@ FIELDS: tuple[Field, ...] = (
           dtype="i4"),
     Field("events", "int", "1", "phase transitions integrated (stick, slip, lift-off, "
           "touchdown)", column=("int", 3), dtype="i8"),
+    Field("work", "float", "drive periods", "drive periods integrated in all, Newton's period "
+          "maps, verification and averaging included", column=("float", 15), dtype="f8"),
     _fraction("stick", 2),
     _fraction("forward slip", 3),
     _fraction("backward slip", 4),

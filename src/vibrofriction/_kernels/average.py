@@ -22,7 +22,7 @@ from .period import (
     C_EVENTS,
     MAX_PERIOD,
     N_ACC,
-    advance_period,
+    advance_counted,
     spring,
 )
 from .phases import M_ALPHA
@@ -94,17 +94,20 @@ def transient_deviation(z0, mu, M, max_events):
     Used where the orbit is neutral: the motion from the start need not approach it
     (an undamped free oscillation in slip survives and sticks now and then), so the
     distance of a long window of the real motion is what the error can honestly say.
-    Returns ``(deviation, events)``.
+    Returns ``(deviation, events, work)`` (``work``: drive periods integrated).
     """
     z = z0.copy()
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
+    work = 0.0
     for k in range(2 * NEUTRAL_WINDOW):
         if k == NEUTRAL_WINDOW:
             acc[:] = 0.0
-        if not advance_period(z, acc, count, M, max_events):
-            return math.inf, count[C_EVENTS]
-    return abs(acc[A_F] / acc[A_N] - mu), count[C_EVENTS]
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        work += w
+        if not ok:
+            return math.inf, count[C_EVENTS], work
+    return abs(acc[A_F] / acc[A_N] - mu), count[C_EVENTS], work
 
 
 @jit
@@ -122,20 +125,23 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, 
     (period ``first_jump``, window mean ``mu_first``) at the rate ``lam``.  A
     neutral orbit reached by a jump has no settling time, and its error includes
     :func:`transient_deviation` of the motion from the start ``z0``.
-    Returns the events spent.
+    Returns the events spent and the drive periods integrated.
     """
     mu = window_mu(win)
     z2 = z.copy()
     acc2 = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
-    d_mu = 0.0
+    d_mu, work = 0.0, 0.0
     for _ in range(p):
-        if not advance_period(z2, acc2, count, M, max_events):
+        ok, w = advance_counted(z2, acc2, count, M, max_events)
+        work += w
+        if not ok:
             d_mu = math.inf
     d_mu = max(d_mu, abs(window_mu(acc2) - mu))
     lam, ev = math.nan, 0
     if math.isfinite(d_mu) and count[C_DEGENERATE] == 0:  # z2 is the exact image of z
-        lam, ev = leading_multiplier(z, z2, p, M, max_events)
+        lam, ev, w = leading_multiplier(z, z2, p, M, max_events)
+        work += w
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
     err = max(ERROR_SAFETY * d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
     settle = float(k)
@@ -143,8 +149,9 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, 
         # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
         # need not approach it (no settling time; said in the message, docs/solver.md)
         settle = math.nan
-        dev, ev2 = transient_deviation(z0, mu, M, max_events)
+        dev, ev2, w = transient_deviation(z0, mu, M, max_events)
         ev += ev2
+        work += w
         err = max(err, dev)
     elif first_jump >= 0:
         settle = float(first_jump)
@@ -155,7 +162,7 @@ def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, 
     out_f[O_ERR] = err
     out_f[O_MULT] = lam
     out_f[O_SETTLE] = settle
-    return count[C_EVENTS] + ev
+    return count[C_EVENTS] + ev, work
 
 
 @jit

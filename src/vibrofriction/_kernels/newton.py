@@ -80,12 +80,13 @@ def _solve_small(m, r, nd):
 def residual_jacobian(z, r, ph, p, M, max_events, jac):
     """Difference Jacobian of ``z -> P^p(z) - z`` in the chart of phase ``ph`` (into ``jac``).
 
-    ``r`` is the residual at ``z``.  Returns ``(ok, events)``; not ok when a
-    perturbed image leaves the chart or the integration fails.
+    ``r`` is the residual at ``z``.  Returns ``(ok, events, work)`` (``work``: drive
+    periods integrated); not ok when a perturbed image leaves the chart or the
+    integration fails.
     """
     nd = _free_dimension(ph, M)
     kk = spring(M)
-    events = 0
+    events, work = 0, 0.0
     for j in range(nd):
         if j == 2:  # e: the step of a force change 1e-7 (1 + |f|)
             h = 1e-7 * (abs(z[2]) + 1.0 / kk)
@@ -94,14 +95,15 @@ def residual_jacobian(z, r, ph, p, M, max_events, jac):
         zp = z.copy()
         zp[j] += h
         y2, xd2, e2 = _unpack(zp, ph, M)
-        y3, xd3, e3, ph3, ev, degenerate = period_map(y2, xd2, e2, ph, p, M, max_events)
+        y3, xd3, e3, ph3, ev, degenerate, w = period_map(y2, xd2, e2, ph, p, M, max_events)
         events += ev
+        work += w
         if ph3 != ph or degenerate < 0:
-            return False, events
+            return False, events, work
         jac[0, j] = ((y3 - y2) - r[0]) / h
         jac[1, j] = ((xd3 - xd2) - r[1]) / h
         jac[2, j] = ((e3 - e2) - r[2]) / h
-    return True, events
+    return True, events, work
 
 
 @jit
@@ -134,17 +136,17 @@ def _broyden(jac, nd, dr, dz):
 def _newton_step(z, r, ph, p, M, max_events, jac, nd, rebuild):
     """One Newton step ``z += dz`` with ``jac dz = -r``, the Jacobian rebuilt by differences
     first when ``rebuild`` (else Broyden's update of the old one, already applied).
-    Returns ``(ok, dz, events)``."""
-    events = 0
+    Returns ``(ok, dz, events, work)``."""
+    events, work = 0, 0.0
     if rebuild:
-        ok, events = residual_jacobian(z, r, ph, p, M, max_events, jac)
+        ok, events, work = residual_jacobian(z, r, ph, p, M, max_events, jac)
         if not ok:
-            return False, r, events
+            return False, r, events, work
     dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
     if ok:
         for j in range(nd):
             z[j] += dz[j]
-    return ok, dz, events
+    return ok, dz, events, work
 
 
 @jit
@@ -158,14 +160,14 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     slip) that the motion from the start need never approach.  An iterate whose
     image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
     where the guess slid, or vice versa) continues in that phase's coordinates.
-    Returns ``(ok, y, x', e, phase, events)``.
+    Returns ``(ok, y, x', e, phase, events, work)`` (``work``: drive periods integrated).
     """
     ph_in = ph
     alpha = M[M_ALPHA]
     kk = spring(M)
     nd = _free_dimension(ph, M)
     z = np.array([y, xd, e])
-    events = 0
+    events, work = 0, 0.0
     jac = np.zeros((3, 3))
     have_jac = False
     res_prev = np.inf
@@ -177,8 +179,9 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
                 > NEWTON_DIVERGED * scale0):
             break
         y0, xd0, e0 = _unpack(z, ph, M)
-        y1, xd1, e1, ph1, ev, degenerate = period_map(y0, xd0, e0, ph, p, M, max_events)
+        y1, xd1, e1, ph1, ev, degenerate, w = period_map(y0, xd0, e0, ph, p, M, max_events)
         events += ev
+        work += w
         if degenerate < 0:
             break
         if ph1 != ph:
@@ -196,16 +199,17 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
         if res <= tol * scale0:
             if degenerate > 0 or not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
                 break
-            return True, y0, xd0, e0, ph, events
-        ok, dz, ev = _newton_step(z, r, ph, p, M, max_events, jac, nd,
-                                  not have_jac or res > 0.5 * res_prev)
+            return True, y0, xd0, e0, ph, events, work
+        ok, dz, ev, w = _newton_step(z, r, ph, p, M, max_events, jac, nd,
+                                     not have_jac or res > 0.5 * res_prev)
         events += ev
+        work += w
         if not ok:
             break
         have_jac = True  # built, or updated by Broyden's rule
         res_prev = res
         r_prev = r
-    return False, y, xd, e, ph_in, events
+    return False, y, xd, e, ph_in, events, work
 
 
 @jit
@@ -215,17 +219,17 @@ def leading_multiplier(z, z1, p, M, max_events):
     ``z1`` is the image of the section state ``z`` after ``p`` periods (already
     integrated by the caller).  ``nan`` when the Jacobian cannot be formed in one
     chart (a perturbed orbit changes phase on the section).  Returns
-    ``(multiplier, events)``.
+    ``(multiplier, events, work)``.
     """
     ph = int(z[3])
     if int(z1[3]) != ph:
-        return math.nan, 0
+        return math.nan, 0, 0.0
     r = np.array([z1[0] - z[0], z1[1] - z[1], z1[2] - z[2]])
     jac = np.zeros((3, 3))
-    ok, ev = residual_jacobian(z[:3].copy(), r, ph, p, M, max_events, jac)
+    ok, ev, work = residual_jacobian(z[:3].copy(), r, ph, p, M, max_events, jac)
     if not ok:
-        return math.nan, ev
-    return spectral_radius(jac, _free_dimension(ph, M)), ev
+        return math.nan, ev, work
+    return spectral_radius(jac, _free_dimension(ph, M)), ev, work
 
 
 @jit
@@ -233,23 +237,24 @@ def try_newton(z, ring_z, dprev, k, M, tol_state, max_events):
     """Newton on the period whose section distance is smallest, then on ``p = 1``.
 
     On success ``z`` (and its ring slot) become the orbit's state.  Returns
-    ``(p, events)`` with ``p = 0`` if no attracting orbit was found.
+    ``(p, events, work)`` with ``p = 0`` if no attracting orbit was found.
     """
     pbest = 1
     for p in range(2, min(k, MAX_PERIOD) + 1):
         if dprev[p] < dprev[pbest]:
             pbest = p
-    events = 0
+    events, work = 0, 0.0
     for attempt in range(2):
         p = pbest if attempt == 0 else 1
         if attempt == 1 and pbest == 1:
             break
-        ok, y, xd, e, ph, ev = newton_orbit(z[0], z[1], z[2], int(z[3]), p, M,
-                                            0.1 * tol_state, max_events)
+        ok, y, xd, e, ph, ev, w = newton_orbit(z[0], z[1], z[2], int(z[3]), p, M,
+                                               0.1 * tol_state, max_events)
         events += ev
+        work += w
         if ok:
             z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, math.nan
             ring_z[k % (MAX_PERIOD + 1), :] = z
             dprev[:] = np.inf
-            return p, events
-    return 0, events
+            return p, events, work
+    return 0, events, work

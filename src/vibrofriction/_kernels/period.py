@@ -63,9 +63,26 @@ def advance_period(z, acc, count, M, max_events):
 
 
 @jit
+def elapsed(acc):
+    """The time integrated into the accumulators ``acc``, in drive periods."""
+    return (acc[A_STICK] + acc[A_SLIP] + acc[A_FLIGHT]) / TWO_PI
+
+
+@jit
+def advance_counted(z, acc, count, M, max_events):
+    """:func:`advance_period` and its work: returns ``(ok, work)``, ``work`` 1 drive period,
+    or the fraction of one integrated before the integration stopped."""
+    t0 = elapsed(acc)
+    if advance_period(z, acc, count, M, max_events):
+        return True, 1.0
+    return False, elapsed(acc) - t0
+
+
+@jit
 def period_map(y, xd, e, ph, p, M, max_events):
-    """Integrate ``p`` drive periods from the section; returns the state, the event count
-    and the number of degenerate transitions (-1: the integration did not finish).
+    """Integrate ``p`` drive periods from the section; returns the state, the event count,
+    the number of degenerate transitions (-1: the integration did not finish) and the
+    drive periods integrated (``p``, less where it did not finish).
 
     Transitions decided within round-off (degenerate, e.g. among the hundreds of
     micro-slips per period of a stiff contact) do not make the map unusable for Newton's
@@ -74,10 +91,13 @@ def period_map(y, xd, e, ph, p, M, max_events):
     z = np.array([y, xd, e, float(ph), math.nan])
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
+    work = 0.0
     for _ in range(p):
-        if not advance_period(z, acc, count, M, max_events):
-            return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], -1
-    return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE]
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        work += w
+        if not ok:
+            return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], -1, work
+    return z[0], z[1], z[2], int(z[3]), count[C_EVENTS], count[C_DEGENERATE], work
 
 
 @jit

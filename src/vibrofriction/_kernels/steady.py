@@ -50,6 +50,7 @@ from .codes import (
     O_STICK,
     O_WMAX,
     O_WMIN,
+    O_WORK,
     O_XD,
     O_Y,
     SLIP_POS,
@@ -73,6 +74,7 @@ from .period import (
     C_EVENTS,
     MAX_PERIOD,
     N_ACC,
+    advance_counted,
     advance_period,
 )
 from .phases import ETA_ELASTIC, ETA_SLOPE, make_model
@@ -102,13 +104,14 @@ def _start(init_kind, y0, xd0, e0, ph0, M):
 def _newton_jump(z, ring_z, ring_c, dprev, acc, k, M, tol_state, max_events, count, win,
                  first_jump, mu_first):
     """Newton on the period map (:func:`.newton.try_newton`); returns the period and window
-    mean of the first successful jump ``(first_jump, mu_first)``."""
-    pn, ev = try_newton(z, ring_z, dprev, k, M, tol_state, max_events)
+    mean of the first successful jump ``(first_jump, mu_first)`` and the drive periods
+    integrated."""
+    pn, ev, work = try_newton(z, ring_z, dprev, k, M, tol_state, max_events)
     count[C_EVENTS] += ev
     if pn > 0 and first_jump < 0:
         last_window(acc, ring_c, k, pn, win)
-        return k, window_mu(win)
-    return first_jump, mu_first
+        return k, window_mu(win), work
+    return first_jump, mu_first, work
 
 
 @jit
@@ -138,7 +141,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     """Advance period by period from ``z`` until an orbit, a proof or an average answers.
 
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
-    ``win`` holds the accumulators of the answering window.
+    ``win`` holds the accumulators of the answering window, ``out_f[O_WORK]`` counts the
+    drive periods integrated (the closed-form sliding orbit and certificate are not
+    integrations of the motion and are not counted).
     """
     z0 = z.copy()
     orbit_ok, ys, yds, es = sliding_orbit(M)
@@ -154,7 +159,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     first_jump, mu_first = -1, math.nan
     k = 0
     while True:
-        if not advance_period(z, acc, count, M, max_events):
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        out_f[O_WORK] += w
+        if not ok:
             return ST_FAILED, 0, k
         k += 1
         ring_z[k % nring, :] = z
@@ -162,8 +169,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
         p, d, rho = detect_period(ring_z, dprev, k, M, tol_state)
         if p > 0:
             last_window(acc, ring_c, k, p, win)
-            count[C_EVENTS] += periodic_result(z, z0, win, p, k, rho, first_jump, mu_first,
-                                               M, max_events, out_f)
+            ev, w = periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M,
+                                    max_events, out_f)
+            count[C_EVENTS] += ev
+            out_f[O_WORK] += w
             return ST_PERIODIC, p, k
         if sliding_certificate(z[0], z[1], z[2], int(z[3]), M, orbit_ok, ys, yds, es):
             out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
@@ -172,8 +181,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             return ST_SLIDING, 0, k
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
-            first_jump, mu_first = _newton_jump(z, ring_z, ring_c, dprev, acc, k, M, tol_state,
-                                                max_events, count, win, first_jump, mu_first)
+            first_jump, mu_first, w = _newton_jump(z, ring_z, ring_c, dprev, acc, k, M,
+                                                   tol_state, max_events, count, win,
+                                                   first_jump, mu_first)
+            out_f[O_WORK] += w
         if k == next_chk or k >= max_periods:
             next_chk *= 2
             nchk, status = _checkpoint(chk_c, chk_k, nchk, acc, k, k >= max_periods, tol_mean,
@@ -244,6 +255,7 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
     out_f[:] = math.nan
+    out_f[O_WORK] = 0.0
     if a == 0.0:
         status, period, k = _unmodulated(z, M, win, out_f)
     else:

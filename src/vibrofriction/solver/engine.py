@@ -110,6 +110,7 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
     contact = amplitude < 1.0
     out_f[rows, column_index("mu_ratio")] = theory.static_mu_ratio(amplitude)
     out_f[rows, column_index("error")] = 0.0
+    out_f[rows, column_index("work")] = 0.0  # nothing integrated
     out_f[rows, column_index("stick_fraction")] = np.where(contact, 1.0, np.nan)
     for k in ("slip_fraction", "reverse_slip_fraction", "flight_fraction"):
         out_f[rows, column_index(k)] = np.where(contact, 0.0, np.nan)
