@@ -304,6 +304,14 @@ def _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1):
 
 
 @jit
+def free_approach(theta, phase, a, bkind):
+    """Whether a segment starting at ``theta`` in ``phase`` moves freely to the boundary
+    ``bkind`` (the Zeno guard of :func:`segment`)."""
+    return (phase != FLIGHT and bkind != EV_SECTION
+            and normal_force(theta, a) <= ZENO_N * (1.0 + a))
+
+
+@jit
 def segment(theta, y, xd, e, ed, phase, M):
     """Advance one segment.
 
@@ -319,8 +327,7 @@ def segment(theta, y, xd, e, ed, phase, M):
     # Zeno guard: where the cone closes (n -> 0 at lift-off or grazing) stick and slip
     # can alternate infinitely often.  Once n < ZENO_N the force |f| <= n is negligible
     # (its integral over the rest of the approach is < 1e-14): move freely to the boundary.
-    zeno = (phase != FLIGHT and bkind != EV_SECTION
-            and normal_force(theta, a) <= ZENO_N * (1.0 + a))
+    zeno = free_approach(theta, phase, a, bkind)
     te = -1.0
     es = 0.0
     immediate = False  # the event fired at the start offset: a round-off tangency

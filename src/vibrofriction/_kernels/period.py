@@ -27,6 +27,34 @@ C_EVENTS, C_DEGENERATE, C_ZERO = 0, 1, 2
 
 
 @jit
+def accumulate(acc, count, ph, t, ev, ok, i_f, i_n):
+    """Add a segment of length ``t`` in phase ``ph`` (integrals ``i_f``, ``i_n``, ended by
+    event ``ev``, ``ok`` False if its transition was degenerate) to ``acc`` and ``count``."""
+    acc[A_F] += i_f
+    acc[A_N] += i_n
+    if ph == STICK:
+        acc[A_STICK] += t
+    elif ph == FLIGHT:
+        acc[A_FLIGHT] += t
+    else:
+        acc[A_SLIP] += t
+        if ph == SLIP_NEG:
+            acc[A_SLIP_NEG] += t
+    if ev != EV_SECTION:
+        count[C_EVENTS] += 1
+    if not ok:
+        count[C_DEGENERATE] += 1
+    count[C_ZERO] = count[C_ZERO] + 1 if t == 0.0 else 0
+
+
+@jit
+def stop_integration(count, max_events):
+    """The integration must stop: event budget, zero-length segments (stuck) or chatter."""
+    return (count[C_EVENTS] > max_events or count[C_ZERO] > MAX_ZERO_SEGMENTS
+            or count[C_DEGENERATE] > MAX_DEGENERATE)
+
+
+@jit
 def advance_period(z, acc, count, M, max_events):
     """Integrate one drive period from the section state ``z = (y, x', e, phase, e')``
     (``e'``: the exact rate where known, else nan; :func:`.phases.elongation`).
@@ -39,24 +67,9 @@ def advance_period(z, acc, count, M, max_events):
     y, xd, e, ph, ed = z[0], z[1], z[2], int(z[3]), z[4]
     while theta < TWO_PI:
         t, theta, y, xd, e, ed, f, ph1, ev, i_f, i_n, ok = segment(theta, y, xd, e, ed, ph, M)
-        acc[A_F] += i_f
-        acc[A_N] += i_n
-        if ph == STICK:
-            acc[A_STICK] += t
-        elif ph == FLIGHT:
-            acc[A_FLIGHT] += t
-        else:
-            acc[A_SLIP] += t
-            if ph == SLIP_NEG:
-                acc[A_SLIP_NEG] += t
-        if ev != EV_SECTION:
-            count[C_EVENTS] += 1
-        if not ok:
-            count[C_DEGENERATE] += 1
-        count[C_ZERO] = count[C_ZERO] + 1 if t == 0.0 else 0
+        accumulate(acc, count, ph, t, ev, ok, i_f, i_n)
         ph = ph1
-        if (count[C_EVENTS] > max_events or count[C_ZERO] > MAX_ZERO_SEGMENTS
-                or count[C_DEGENERATE] > MAX_DEGENERATE):
+        if stop_integration(count, max_events):
             return False
     z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, ed
     return True
