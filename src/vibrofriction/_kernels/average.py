@@ -12,18 +12,15 @@ import numpy as np
 
 from .codes import O_DRIFT, O_ERR, O_MU, O_MULT, O_SETTLE, O_WMAX, O_WMIN
 from .jit import jit
-from .newton import NEUTRAL, leading_multiplier
+from .newton import orbit_multiplier
 from .period import (
     A_F,
     A_N,
-    A_SLIP_NEG,
-    A_STICK,
-    C_DEGENERATE,
-    C_EVENTS,
     MAX_PERIOD,
     N_ACC,
-    advance_counted,
+    pure_forward_slip,
     spring,
+    window_mu,
 )
 from .phases import M_ALPHA
 
@@ -31,23 +28,11 @@ RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
 ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
 ERROR_SAFETY = 2.0  # d_mu/(1 - lambda) assumes one real leading mode; others add to it
 ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
-NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 
 
 @jit
 def _distance(alpha, kk, z1, z2):
     return alpha * abs(z1[0] - z2[0]) + abs(z1[1] - z2[1]) + kk * abs(z1[2] - z2[2])
-
-
-@jit
-def pure_forward_slip(win):
-    """A window without stick or reverse slip: ``f = n`` throughout (``0 = 0`` in flight)."""
-    return win[A_STICK] == 0.0 and win[A_SLIP_NEG] == 0.0
-
-
-@jit
-def window_mu(win):
-    return 1.0 if pure_forward_slip(win) else win[A_F] / win[A_N]
 
 
 @jit
@@ -88,81 +73,60 @@ def last_window(acc, ring_c, k, p, win):
 
 
 @jit
-def transient_deviation(z0, mu, M, max_events):
-    """``|mean over periods (N, 2N] - mu|`` of the motion from ``z0`` (``N = NEUTRAL_WINDOW``).
-
-    Used where the orbit is neutral: the motion from the start need not approach it
-    (an undamped free oscillation in slip survives and sticks now and then), so the
-    distance of a long window of the real motion is what the error can honestly say.
-    Returns ``(deviation, events, work)`` (``work``: drive periods integrated).
-    """
-    z = z0.copy()
-    acc = np.zeros(N_ACC)
-    count = np.zeros(3, np.int64)
-    work = 0.0
-    for k in range(2 * NEUTRAL_WINDOW):
-        if k == NEUTRAL_WINDOW:
-            acc[:] = 0.0
-        ok, w = advance_counted(z, acc, count, M, max_events)
-        work += w
-        if not ok:
-            return math.inf, count[C_EVENTS], work
-    return abs(acc[A_F] / acc[A_N] - mu), count[C_EVENTS], work
+def _settling(k, mu_first, mu, err, rate):
+    """Periods until the p-period means stay within ``err`` of the orbit's ``mu``: ``k``,
+    the period of a Newton jump whose last window mean was ``mu_first``, plus the periods
+    the motion from there needs at the contraction ``rate`` (none when it is within)."""
+    e0 = abs(mu_first - mu)
+    if e0 > err and 0.0 < rate < 1.0:
+        return k + math.log(err / e0) / math.log(rate)
+    return float(k)
 
 
 @jit
-def periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M, max_events, out_f):
-    """Average, error, multiplier and settling time of a p-periodic orbit.
+def periodic_result(z, win, p, k, rho, M, max_events, out_f):
+    """Average, error, multiplier and settling time of a p-periodic orbit found by plain
+    iteration (its state ``z`` repeats after ``p`` periods within ``tol_state``).
 
     ``win`` holds the accumulators of the last ``p`` periods (one period of the
-    orbit).  One more window is integrated to measure ``d_mu``, the change of the
-    p-period mean; with the leading multiplier ``lam`` the window means converge
-    geometrically, so the error is ``d_mu / (1 - lam)`` (``rho``, the contraction
-    seen on the section, stands in where ``lam`` cannot be formed).  The settling
-    time counts the periods the motion from the initial state needs until its
-    p-period means stay within that error of the orbit's: ``k`` when the orbit was
-    reached by plain iteration, else extrapolated from the first Newton jump
-    (period ``first_jump``, window mean ``mu_first``) at the rate ``lam``.  A
-    neutral orbit reached by a jump has no settling time, and its error includes
-    :func:`transient_deviation` of the motion from the start ``z0``.
+    orbit).  One more window is integrated, with the exact Jacobian
+    (:func:`.newton.orbit_multiplier`), to measure ``d_mu``, the change of the p-period
+    mean, and the leading multiplier ``lam``; the window means converge geometrically,
+    so the error is ``d_mu / (1 - lam)`` (``rho``, the contraction seen on the section,
+    stands in where ``lam`` cannot be formed).  The settling time is ``k``.
     Returns the events spent and the drive periods integrated.
     """
     mu = window_mu(win)
-    z2 = z.copy()
     acc2 = np.zeros(N_ACC)
-    count = np.zeros(3, np.int64)
-    d_mu, work = 0.0, 0.0
-    for _ in range(p):
-        ok, w = advance_counted(z2, acc2, count, M, max_events)
-        work += w
-        if not ok:
-            d_mu = math.inf
-    d_mu = max(d_mu, abs(window_mu(acc2) - mu))
-    lam, ev = math.nan, 0
-    if math.isfinite(d_mu) and count[C_DEGENERATE] == 0:  # z2 is the exact image of z
-        lam, ev, w = leading_multiplier(z, z2, p, M, max_events)
-        work += w
+    lam, ok, ev, work = orbit_multiplier(z.copy(), p, M, max_events, acc2)
+    d_mu = abs(window_mu(acc2) - mu) if ok else math.inf
     rate = lam if (math.isfinite(lam) and lam < ATTRACTING) else max(rho, RHO_MAX)
     err = max(ERROR_SAFETY * d_mu / (1.0 - rate), ROUNDOFF_MU * (1.0 + abs(mu)))
-    settle = float(k)
-    if first_jump >= 0 and not lam < NEUTRAL:
-        # a neutral orbit (undamped slip) after a Newton jump: the motion from the start
-        # need not approach it (no settling time; said in the message, docs/solver.md)
-        settle = math.nan
-        dev, ev2, w = transient_deviation(z0, mu, M, max_events)
-        ev += ev2
-        work += w
-        err = max(err, dev)
-    elif first_jump >= 0:
-        settle = float(first_jump)
-        e0 = abs(mu_first - mu)
-        if e0 > err and rate > 0.0:
-            settle += math.log(err / e0) / math.log(rate)
     out_f[O_MU] = mu
     out_f[O_ERR] = err
     out_f[O_MULT] = lam
-    out_f[O_SETTLE] = settle
-    return count[C_EVENTS] + ev, work
+    out_f[O_SETTLE] = float(k)
+    return ev, work
+
+
+@jit
+def newton_result(win, k, lam, shift, mu_first, out_f):
+    """Average, error, multiplier and settling time of the attracting orbit found by
+    Newton's method (:func:`.newton.newton_orbit`) at period ``k``.
+
+    ``win`` holds the accumulators of one period of the orbit from the accepted
+    iterate; the exact orbit is one Newton step ``dz`` away, and the window mean moves
+    by ``G . dz / int n`` to first order (``shift`` bounds it), so the error is
+    ``ERROR_SAFETY * shift``, floored at round-off: no verification window is needed
+    where the exact Jacobian proves the orbit attracting.  The settling time counts from
+    the motion's window that ends at period ``k`` (mean ``mu_first``) at the rate ``lam``.
+    """
+    mu = window_mu(win)
+    err = max(ERROR_SAFETY * shift, ROUNDOFF_MU * (1.0 + abs(mu)))
+    out_f[O_MU] = mu
+    out_f[O_ERR] = err
+    out_f[O_MULT] = lam
+    out_f[O_SETTLE] = _settling(k, mu_first, mu, err, lam)
 
 
 @jit

@@ -1,9 +1,9 @@
-r"""Periodic orbits by Newton's method on the period map, Broyden's updates, Floquet.
+r"""Periodic orbits by Newton's method on the period map, and their Floquet multipliers.
 
 ``P^p(z) = z`` is solved on the section in the free coordinates of the phase there
-(:func:`newton_orbit`); the Jacobian is a difference one, updated by Broyden's
-rule between rebuilds; the leading Floquet multiplier (:func:`leading_multiplier`)
-says how fast the motion approaches the orbit and whether it attracts at all.
+(:func:`newton_orbit`) with the exact Jacobian of the period map (:mod:`.tangent`);
+its leading eigenvalue, the Floquet multiplier, says how fast the motion approaches
+the orbit and whether it attracts at all.
 """
 
 import math
@@ -12,12 +12,13 @@ import numpy as np
 
 from .codes import SLIP_POS, STICK
 from .jit import jit
-from .period import MAX_PERIOD, period_map, spring
+from .period import A_N, MAX_PERIOD, spring, window_mu
 from .phases import M_A, M_ALPHA, M_C, M_K
+from .tangent import period_map_tangent
 
 NEWTON_ITERATIONS = 12  # Newton steps per attempt
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
-NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral (to difference accuracy)
+NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 
 
 @jit
@@ -77,82 +78,17 @@ def _solve_small(m, r, nd):
 
 
 @jit
-def residual_jacobian(z, r, ph, p, M, max_events, jac):
-    """Difference Jacobian of ``z -> P^p(z) - z`` in the chart of phase ``ph`` (into ``jac``).
-
-    ``r`` is the residual at ``z``.  Returns ``(ok, events, work)`` (``work``: drive
-    periods integrated); not ok when a perturbed image leaves the chart or the
-    integration fails.
-    """
-    nd = _free_dimension(ph, M)
-    kk = spring(M)
-    events, work = 0, 0.0
-    for j in range(nd):
-        if j == 2:  # e: the step of a force change 1e-7 (1 + |f|)
-            h = 1e-7 * (abs(z[2]) + 1.0 / kk)
-        else:
-            h = 1e-7 * (1.0 + abs(z[j]))
-        zp = z.copy()
-        zp[j] += h
-        y2, xd2, e2 = _unpack(zp, ph, M)
-        y3, xd3, e3, ph3, ev, degenerate, w = period_map(y2, xd2, e2, ph, p, M, max_events)
-        events += ev
-        work += w
-        if ph3 != ph or degenerate < 0:
-            return False, events, work
-        jac[0, j] = ((y3 - y2) - r[0]) / h
-        jac[1, j] = ((xd3 - xd2) - r[1]) / h
-        jac[2, j] = ((e3 - e2) - r[2]) / h
-    return True, events, work
-
-
-@jit
-def spectral_radius(jac, nd):
-    """Largest modulus of the eigenvalues of ``DP^p = jac + I`` (the Floquet multipliers)."""
+def spectral_radius(J, nd):
+    """Largest modulus of the eigenvalues of ``J[:nd, :nd]`` (the Floquet multipliers)."""
     if nd == 1:
-        return abs(jac[0, 0] + 1.0)
-    mat = (jac[:nd, :nd] + np.eye(nd)).astype(np.complex128)
-    return np.max(np.abs(np.linalg.eigvals(mat)))
+        return abs(J[0, 0])
+    return np.max(np.abs(np.linalg.eigvals(J[:nd, :nd].astype(np.complex128))))
 
 
 @jit
-def _broyden(jac, nd, dr, dz):
-    """Broyden's ("good") rank-one update of ``jac`` after the step ``dz`` changed the
-    residual by ``dr``: saves the ``nd`` period maps of a fresh difference Jacobian."""
-    den = 0.0
-    for j in range(nd):
-        den += dz[j] * dz[j]
-    if den == 0.0:
-        return
-    for i in range(nd):
-        u = dr[i]
-        for j in range(nd):
-            u -= jac[i, j] * dz[j]
-        for j in range(nd):
-            jac[i, j] += u * dz[j] / den
-
-
-@jit
-def _newton_step(z, r, ph, p, M, max_events, jac, nd, rebuild):
-    """One Newton step ``z += dz`` with ``jac dz = -r``, the Jacobian rebuilt by differences
-    first when ``rebuild`` (else Broyden's update of the old one, already applied).
-    Returns ``(ok, dz, events, work)``."""
-    events, work = 0, 0.0
-    if rebuild:
-        ok, events, work = residual_jacobian(z, r, ph, p, M, max_events, jac)
-        if not ok:
-            return False, r, events, work
-    dz, ok = _solve_small(jac[:nd, :nd], -r[:nd], nd)
-    if ok:
-        for j in range(nd):
-            z[j] += dz[j]
-    return ok, dz, events, work
-
-
-@jit
-def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
-    """Solve ``P^p(z) = z`` on the section by Newton's method with a difference Jacobian
-    (updated by Broyden's rule between rebuilds).
+def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
+    """Solve ``P^p(z) = z`` on the section by Newton's method with the exact Jacobian
+    (:func:`.tangent.period_map_tangent`): quadratic convergence, no differences.
 
     Only attracting orbits are accepted (spectral radius of ``DP^p`` below
     ``NEUTRAL``), so the answer is the attractor the iteration was approaching, not a
@@ -160,7 +96,15 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     slip) that the motion from the start need never approach.  An iterate whose
     image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
     where the guess slid, or vice versa) continues in that phase's coordinates.
-    Returns ``(ok, y, x', e, phase, events, work)`` (``work``: drive periods integrated).
+
+    Returns ``(ok, y, x', e, phase, events, work, lam, shift, mu_first)``: on success the
+    orbit's
+    section state, ``acc`` the accumulators of its ``p`` periods from there, ``lam`` the
+    modulus of the leading Floquet multiplier and ``shift`` a bound of the first-order
+    change of the window mean ``<f>/<n>`` to the exact orbit, ``sum_j |G_j dz_j| / int n``
+    (``dz`` the next Newton step, ``G`` the exact gradient of ``int f``); ``work`` the
+    drive periods integrated; ``mu_first`` the window mean of the first map, the motion's
+    own ``p`` periods from the start (nan where the map did not finish).
     """
     ph_in = ph
     alpha = M[M_ALPHA]
@@ -168,76 +112,77 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events):
     nd = _free_dimension(ph, M)
     z = np.array([y, xd, e])
     events, work = 0, 0.0
-    jac = np.zeros((3, 3))
-    have_jac = False
-    res_prev = np.inf
-    r_prev = np.zeros(3)
-    dz = np.zeros(3)
+    J = np.zeros((3, 3))
+    G = np.zeros(3)
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
-    for _ in range(NEWTON_ITERATIONS):
+    mu_first = math.nan
+    for it in range(NEWTON_ITERATIONS):
         if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
                 > NEWTON_DIVERGED * scale0):
             break
         y0, xd0, e0 = _unpack(z, ph, M)
-        y1, xd1, e1, ph1, ev, degenerate, w = period_map(y0, xd0, e0, ph, p, M, max_events)
+        y1, xd1, e1, ph1, ev, degenerate, w, smooth = period_map_tangent(
+            y0, xd0, e0, ph, p, M, max_events, J, G, acc)
         events += ev
         work += w
         if degenerate < 0:
             break
+        if it == 0:
+            mu_first = window_mu(acc)
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
             ph = ph1
             nd = _free_dimension(ph, M)
             z[0], z[1], z[2] = y1, xd1, e1
-            have_jac = False
-            res_prev = np.inf
             continue
         r = np.array([y1 - y0, xd1 - xd0, e1 - e0])
         res = alpha * abs(r[0]) + abs(r[1]) + (kk * abs(r[2]) if nd == 3 else 0.0)
-        if have_jac and np.isfinite(res_prev):
-            _broyden(jac, nd, r - r_prev, dz)
+        jac = J[:nd, :nd] - np.eye(nd)
+        dz, ok = _solve_small(jac, -r[:nd], nd)
         if res <= tol * scale0:
-            if degenerate > 0 or not have_jac or not spectral_radius(jac, nd) < NEUTRAL:
+            if degenerate > 0 or not smooth or not ok:
                 break
-            return True, y0, xd0, e0, ph, events, work
-        ok, dz, ev, w = _newton_step(z, r, ph, p, M, max_events, jac, nd,
-                                     not have_jac or res > 0.5 * res_prev)
-        events += ev
-        work += w
+            lam = spectral_radius(J, nd)
+            if not lam < NEUTRAL:
+                break
+            shift = 0.0
+            for j in range(nd):
+                shift += abs(G[j] * dz[j])
+            return True, y0, xd0, e0, ph, events, work, lam, shift / acc[A_N], mu_first
         if not ok:
             break
-        have_jac = True  # built, or updated by Broyden's rule
-        res_prev = res
-        r_prev = r
-    return False, y, xd, e, ph_in, events, work
+        for j in range(nd):
+            z[j] += dz[j]
+    return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first
 
 
 @jit
-def leading_multiplier(z, z1, p, M, max_events):
-    """Modulus of the leading Floquet multiplier of the p-periodic orbit through ``z``.
-
-    ``z1`` is the image of the section state ``z`` after ``p`` periods (already
-    integrated by the caller).  ``nan`` when the Jacobian cannot be formed in one
-    chart (a perturbed orbit changes phase on the section).  Returns
-    ``(multiplier, events, work)``.
-    """
+def orbit_multiplier(z, p, M, max_events, acc):
+    """Modulus of the leading Floquet multiplier of the p-periodic orbit through ``z``,
+    from the exact Jacobian of one integration of its ``p`` periods; the image into
+    ``z1`` and the accumulators into ``acc``.  ``nan`` when the Jacobian cannot be
+    formed in one chart (the image is in another phase, an event is tangential or a
+    transition degenerate).  Returns ``(multiplier, ok, events, work)``, ``ok`` False when
+    the integration did not finish."""
     ph = int(z[3])
-    if int(z1[3]) != ph:
-        return math.nan, 0, 0.0
-    r = np.array([z1[0] - z[0], z1[1] - z[1], z1[2] - z[2]])
-    jac = np.zeros((3, 3))
-    ok, ev, work = residual_jacobian(z[:3].copy(), r, ph, p, M, max_events, jac)
-    if not ok:
-        return math.nan, ev, work
-    return spectral_radius(jac, _free_dimension(ph, M)), ev, work
+    J = np.zeros((3, 3))
+    G = np.zeros(3)
+    y1, xd1, e1, ph1, ev, degenerate, work, smooth = period_map_tangent(
+        z[0], z[1], z[2], ph, p, M, max_events, J, G, acc)
+    if degenerate < 0:
+        return math.nan, False, ev, work
+    if ph1 != ph or degenerate > 0 or not smooth:
+        return math.nan, True, ev, work
+    return spectral_radius(J, _free_dimension(ph, M)), True, ev, work
 
 
 @jit
-def try_newton(z, ring_z, dprev, k, M, tol_state, max_events):
+def try_newton(z, dprev, k, M, tol_state, max_events, win):
     """Newton on the period whose section distance is smallest, then on ``p = 1``.
 
-    On success ``z`` (and its ring slot) become the orbit's state.  Returns
-    ``(p, events, work)`` with ``p = 0`` if no attracting orbit was found.
+    On success ``z`` becomes the orbit's state and ``win`` the accumulators of its ``p``
+    periods from there.  Returns ``(p, events, work, lam, shift)`` (:func:`newton_orbit`)
+    with ``p = 0`` if no attracting orbit was found.
     """
     pbest = 1
     for p in range(2, min(k, MAX_PERIOD) + 1):
@@ -248,13 +193,11 @@ def try_newton(z, ring_z, dprev, k, M, tol_state, max_events):
         p = pbest if attempt == 0 else 1
         if attempt == 1 and pbest == 1:
             break
-        ok, y, xd, e, ph, ev, w = newton_orbit(z[0], z[1], z[2], int(z[3]), p, M,
-                                               0.1 * tol_state, max_events)
+        ok, y, xd, e, ph, ev, w, lam, shift, mu_first = newton_orbit(
+            z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win)
         events += ev
         work += w
         if ok:
             z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, math.nan
-            ring_z[k % (MAX_PERIOD + 1), :] = z
-            dprev[:] = np.inf
-            return p, events, work
-    return 0, events, work
+            return p, events, work, lam, shift, mu_first
+    return 0, events, work, math.nan, math.nan, math.nan

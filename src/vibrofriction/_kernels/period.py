@@ -76,6 +76,17 @@ def advance_period(z, acc, count, M, max_events):
 
 
 @jit
+def pure_forward_slip(win):
+    """A window without stick or reverse slip: ``f = n`` throughout (``0 = 0`` in flight)."""
+    return win[A_STICK] == 0.0 and win[A_SLIP_NEG] == 0.0
+
+
+@jit
+def window_mu(win):
+    return 1.0 if pure_forward_slip(win) else win[A_F] / win[A_N]
+
+
+@jit
 def elapsed(acc):
     """The time integrated into the accumulators ``acc``, in drive periods."""
     return (acc[A_STICK] + acc[A_SLIP] + acc[A_FLIGHT]) / TWO_PI

@@ -31,7 +31,13 @@ import math
 
 import numpy as np
 
-from .average import check_average, detect_period, last_window, periodic_result, window_mu
+from .average import (
+    check_average,
+    detect_period,
+    last_window,
+    newton_result,
+    periodic_result,
+)
 from .codes import (
     I_DEGENERATE,
     I_EVENTS,
@@ -101,17 +107,19 @@ def _start(init_kind, y0, xd0, e0, ph0, M):
 
 
 @jit
-def _newton_jump(z, ring_z, ring_c, dprev, acc, k, M, tol_state, max_events, count, win,
-                 first_jump, mu_first):
-    """Newton on the period map (:func:`.newton.try_newton`); returns the period and window
-    mean of the first successful jump ``(first_jump, mu_first)`` and the drive periods
-    integrated."""
-    pn, ev, work = try_newton(z, ring_z, dprev, k, M, tol_state, max_events)
+def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
+    """Newton on the period map (:func:`.newton.try_newton`) at period ``k``; on success
+    the result of the orbit is written (:func:`.average.newton_result`), ``win`` holds
+    its window and its period is returned, else 0.  The drive periods integrated are
+    added to ``out_f[O_WORK]``."""
+    pn, ev, work, lam, shift, mu_first = try_newton(z, dprev, k, M, tol_state, max_events,
+                                                    win)
     count[C_EVENTS] += ev
-    if pn > 0 and first_jump < 0:
-        last_window(acc, ring_c, k, pn, win)
-        return k, window_mu(win), work
-    return first_jump, mu_first, work
+    out_f[O_WORK] += work
+    if pn > 0:
+        # the first map from z is the motion's own next pn periods
+        newton_result(win, k + pn, lam, shift, mu_first, out_f)
+    return pn
 
 
 @jit
@@ -145,7 +153,6 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     drive periods integrated (the closed-form sliding orbit and certificate are not
     integrations of the motion and are not counted).
     """
-    z0 = z.copy()
     orbit_ok, ys, yds, es = sliding_orbit(M)
     nring = MAX_PERIOD + 1
     ring_z = np.zeros((nring, 5))
@@ -156,7 +163,6 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     acc = np.zeros(N_ACC)
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
-    first_jump, mu_first = -1, math.nan
     k = 0
     while True:
         ok, w = advance_counted(z, acc, count, M, max_events)
@@ -169,8 +175,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
         p, d, rho = detect_period(ring_z, dprev, k, M, tol_state)
         if p > 0:
             last_window(acc, ring_c, k, p, win)
-            ev, w = periodic_result(z, z0, win, p, k, rho, first_jump, mu_first, M,
-                                    max_events, out_f)
+            ev, w = periodic_result(z, win, p, k, rho, M, max_events, out_f)
             count[C_EVENTS] += ev
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
@@ -181,10 +186,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             return ST_SLIDING, 0, k
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
-            first_jump, mu_first, w = _newton_jump(z, ring_z, ring_c, dprev, acc, k, M,
-                                                   tol_state, max_events, count, win,
-                                                   first_jump, mu_first)
-            out_f[O_WORK] += w
+            pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
+            if pn > 0:
+                return ST_PERIODIC, pn, k
         if k == next_chk or k >= max_periods:
             next_chk *= 2
             nchk, status = _checkpoint(chk_c, chk_k, nchk, acc, k, k >= max_periods, tol_mean,
