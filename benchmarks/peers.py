@@ -56,14 +56,18 @@ def peer_b(
     steps_per_period: float = 400,
     transient_periods: int = PEER_B_TRANSIENT_PERIODS,
     average_periods: int = PEER_B_AVERAGE_PERIODS,
+    zeta: float = 0.0,
+    eta_c: float = 0.0,
 ) -> float:
     """Peer B: numba fixed-step return mapping, ``mu_macro / mu0``.
 
     ``steps_per_period`` counts steps per period of the fastest oscillation
-    (drive, ``sqrt(alpha)`` or ``sqrt(beta)``).
+    (drive, ``sqrt(alpha)`` or ``sqrt(beta)``); ``zeta``, ``eta_c``: the dashpots
+    (docs/damping.md; the damped scheme when either is nonzero).
     """
     return return_mapping_mu(
-        alpha, beta, a, V, steps_per_period, transient_periods, average_periods
+        alpha, beta, a, V, steps_per_period, transient_periods, average_periods,
+        zeta=zeta, eta_c=eta_c,
     )
 
 
