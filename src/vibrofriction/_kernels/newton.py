@@ -19,6 +19,7 @@ from .tangent import period_map_tangent
 NEWTON_ITERATIONS = 12  # Newton steps per attempt
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
+UNSTABLE = 1.0 + 1e-6  # and above this, repelling
 
 
 @jit
@@ -80,6 +81,10 @@ def _solve_small(m, r, nd):
 @jit
 def spectral_radius(J, nd):
     """Largest modulus of the eigenvalues of ``J[:nd, :nd]`` (the Floquet multipliers)."""
+    for i in range(nd):
+        for j in range(nd):
+            if not math.isfinite(J[i, j]):
+                return math.inf
     if nd == 1:
         return abs(J[0, 0])
     return np.max(np.abs(np.linalg.eigvals(J[:nd, :nd].astype(np.complex128))))
@@ -90,10 +95,10 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     """Solve ``P^p(z) = z`` on the section by Newton's method with the exact Jacobian
     (:func:`.tangent.period_map_tangent`): quadratic convergence, no differences.
 
-    Only attracting orbits are accepted (spectral radius of ``DP^p`` below
-    ``NEUTRAL``), so the answer is the attractor the iteration was approaching, not a
-    nearby unstable orbit, nor a neutral one (the undamped free oscillation of pure
-    slip) that the motion from the start need never approach.  An iterate whose
+    Repelling orbits (spectral radius of ``DP^p`` above ``UNSTABLE``) are refused, so the
+    answer is the attractor the iteration was approaching, or a neutral orbit (the
+    undamped free oscillation of pure slip, radius 1), which the caller treats as such
+    (:func:`.average.newton_result`).  An iterate whose
     image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
     where the guess slid, or vice versa) continues in that phase's coordinates.
 
@@ -143,7 +148,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             if degenerate > 0 or not smooth or not ok:
                 break
             lam = spectral_radius(J, nd)
-            if not lam < NEUTRAL:
+            if not lam < UNSTABLE:
                 break
             shift = 0.0
             for j in range(nd):

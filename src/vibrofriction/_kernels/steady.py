@@ -50,6 +50,7 @@ from .codes import (
     O_F,
     O_FLIGHT,
     O_MU,
+    O_MULT,
     O_SETTLE,
     O_SLIP,
     O_SLIP_NEG,
@@ -68,7 +69,7 @@ from .codes import (
 )
 from .integrate import contact_force, initial_state
 from .jit import jit
-from .newton import try_newton
+from .newton import NEUTRAL, try_newton
 from .period import (
     A_F,
     A_FLIGHT,
@@ -93,6 +94,7 @@ __all__ = ["N_ACC", "advance_period", "sliding_certificate", "sliding_orbit", "s
 FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
+NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 
 
 @jit
@@ -108,18 +110,36 @@ def _start(init_kind, y0, xd0, e0, ph0, M):
 
 @jit
 def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
-    """Newton on the period map (:func:`.newton.try_newton`) at period ``k``; on success
-    the result of the orbit is written (:func:`.average.newton_result`), ``win`` holds
-    its window and its period is returned, else 0.  The drive periods integrated are
-    added to ``out_f[O_WORK]``."""
-    pn, ev, work, lam, shift, mu_first = try_newton(z, dprev, k, M, tol_state, max_events,
-                                                    win)
+    """Newton on the period map (:func:`.newton.try_newton`) at period ``k``.
+
+    On success the result of the orbit is written (:func:`.average.newton_result`),
+    ``win`` holds its window and its period is returned; an attracting orbit's state
+    replaces ``z``, a neutral one leaves ``z`` to the motion (:func:`_run` measures how
+    far the motion's mean stays from it).  Returns 0 where no orbit was found, -1 where
+    the event budget is spent.  The drive periods integrated are added to
+    ``out_f[O_WORK]``."""
+    zn = z.copy()
+    pn, ev, work, lam, shift, mu_first = try_newton(zn, dprev, k, M, tol_state,
+                                                    max_events - count[C_EVENTS], win)
     count[C_EVENTS] += ev
     out_f[O_WORK] += work
+    if count[C_EVENTS] > max_events:
+        return -1
     if pn > 0:
         # the first map from z is the motion's own next pn periods
         newton_result(win, k + pn, lam, shift, mu_first, out_f)
+        if lam < NEUTRAL:
+            z[:] = zn
     return pn
+
+
+@jit
+def _neutral_deviation(acc, acc_start, out_f):
+    """A neutral orbit's error includes the distance of the motion's mean over periods
+    ``(NEUTRAL_WINDOW, 2 NEUTRAL_WINDOW]`` (accumulators ``acc - acc_start``) from it."""
+    mean = (acc[A_F] - acc_start[A_F]) / (acc[A_N] - acc_start[A_N])
+    out_f[O_ERR] = max(out_f[O_ERR], abs(mean - out_f[O_MU]))
+    out_f[O_SETTLE] = math.nan
 
 
 @jit
@@ -161,6 +181,11 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
     chk_k = np.zeros(MAX_CHECKPOINTS)
     acc = np.zeros(N_ACC)
+    neutral_win = np.zeros(N_ACC)  # the window of a neutral orbit found by Newton
+    neutral_from = np.zeros(N_ACC)  # the accumulators at period NEUTRAL_WINDOW
+    neutral_out = np.zeros(out_f.shape[0])
+    neutral = False
+    neutral_period = 0
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
     k = 0
@@ -184,11 +209,32 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             win[:] = 0.0
             win[A_SLIP] = 1.0
             return ST_SLIDING, 0, k
+        if neutral:
+            # a neutral orbit: the motion runs on (its certificate may still prove
+            # sliding, or it may settle on an orbit) until its mean is measured
+            if k == NEUTRAL_WINDOW:
+                neutral_from[:] = acc
+            if k == 2 * NEUTRAL_WINDOW:
+                work = out_f[O_WORK]
+                out_f[:] = neutral_out
+                out_f[O_WORK] = work
+                win[:] = neutral_win
+                _neutral_deviation(acc, neutral_from, out_f)
+                return ST_PERIODIC, neutral_period, k
+            continue
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
             pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
-            if pn > 0:
+            if pn > 0 and out_f[O_MULT] < NEUTRAL:
                 return ST_PERIODIC, pn, k
+            if pn > 0:
+                neutral = True
+                neutral_out[:] = out_f
+                neutral_win[:] = win
+                neutral_period = pn
+                out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
+            if pn < 0:
+                return ST_FAILED, 0, k
         if k == next_chk or k >= max_periods:
             next_chk *= 2
             nchk, status = _checkpoint(chk_c, chk_k, nchk, acc, k, k >= max_periods, tol_mean,
