@@ -135,8 +135,9 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
 
 @jit
 def _neutral_deviation(acc, acc_start, out_f):
-    """A neutral orbit's error includes the distance of the motion's mean over periods
-    ``(NEUTRAL_WINDOW, 2 NEUTRAL_WINDOW]`` (accumulators ``acc - acc_start``) from it."""
+    """A neutral orbit's error includes the distance of the motion's mean over the last
+    ``NEUTRAL_WINDOW`` periods (accumulators ``acc - acc_start``) from it: periods
+    512-1024, or the 512 after the orbit was found where that is later."""
     mean = (acc[A_F] - acc_start[A_F]) / (acc[A_N] - acc_start[A_N])
     out_f[O_ERR] = max(out_f[O_ERR], abs(mean - out_f[O_MU]))
     out_f[O_SETTLE] = math.nan
@@ -186,6 +187,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     neutral_out = np.zeros(out_f.shape[0])
     neutral = False
     neutral_period = 0
+    neutral_end = 0
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
     k = 0
@@ -212,9 +214,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
         if neutral:
             # a neutral orbit: the motion runs on (its certificate may still prove
             # sliding, or it may settle on an orbit) until its mean is measured
-            if k == NEUTRAL_WINDOW:
+            if k == neutral_end - NEUTRAL_WINDOW:
                 neutral_from[:] = acc
-            if k == 2 * NEUTRAL_WINDOW:
+            if k == neutral_end:
                 work = out_f[O_WORK]
                 out_f[:] = neutral_out
                 out_f[O_WORK] = work
@@ -232,6 +234,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
                 neutral_out[:] = out_f
                 neutral_win[:] = win
                 neutral_period = pn
+                neutral_end = max(2 * NEUTRAL_WINDOW, k + NEUTRAL_WINDOW)
                 out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
             if pn < 0:
                 return ST_FAILED, 0, k
