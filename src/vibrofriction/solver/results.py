@@ -90,14 +90,19 @@ def _frozen(cls: type, values: dict[str, Any]) -> Any:
     return obj
 
 
+#: The phases a section state can be in, by code.
+_SECTION_PHASES = {c: codes.PHASE_NAMES[c] for c in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG)}
+
+
 def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> SectionState | None:
     """The :class:`SectionState` of a solver row, or None where there is none (static)."""
-    if not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)) \
-            or phase not in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG):
+    name = _SECTION_PHASES.get(phase)
+    if name is None or not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)):
         return None
     # what SectionState.__post_init__ checks holds: finite y, x_dot, f and a named phase
-    return _frozen(SectionState, {"y": float(y), "x_dot": float(x_dot), "f": float(f),
-                                  "phase": codes.PHASE_NAMES[int(phase)], "e": float(e)})
+    state = object.__new__(SectionState)
+    state.__dict__.update(y=float(y), x_dot=float(x_dot), f=float(f), phase=name, e=float(e))
+    return state
 
 
 # --------------------------------------------------------------------------- the results
