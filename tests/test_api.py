@@ -1,5 +1,6 @@
 """The public API: shapes, units, validation and the command line."""
 
+import dataclasses
 import json
 import math
 import subprocess
@@ -21,6 +22,66 @@ def test_scalar_in_result_out_array_in_arrays_out(general_system):
     assert grid[1, 2].mu_ratio == vf.friction_coefficient(general_system, vbar=0.4).mu_ratio
     assert c[2].mu_ratio == c.mu_ratio[2]
     assert [x.mu_ratio for x in c] == list(c.mu_ratio)
+
+
+def _fields(r):
+    """Every field of a result with its type (floats by their bits)."""
+    return {f.name: (type(v), v.hex() if isinstance(v, float) else v)
+            for f in dataclasses.fields(r) for v in [getattr(r, f.name)]}
+
+
+STARVED = vf.SolverSettings(max_events=3)  # FAILED, not trusted
+
+
+@pytest.mark.parametrize(("system", "kw"), [
+    (vf.Dimensionless(0.5, 2.0, 0.5), dict(vbar=0.3)),
+    (vf.Dimensionless(0.5, 2.0, 0.5), dict(vbar=np.float64(1.5))),
+    (vf.Dimensionless(0.5, 2.0, 0.5), dict(vbar=0.3, initial="rest")),
+    (vf.Dimensionless(0.5, 2.0, 0.5), dict(vbar=0.3, settings=STARVED)),
+    (vf.Dimensionless(0.5, math.inf, 1.5), dict(vbar=0.4)),
+    (vf.Dimensionless(0.5, 2.0, 0.5, zeta=0.05, eta_c=0.1), dict(v_inertial=0.2)),
+    (vf.Dimensionless(0.5, 1.0, 0.5), dict(v_inertial=0.3)),
+])
+def test_one_point_is_the_array_path_bit_for_bit(system, kw):
+    """The scalar fast path (the kernel's scalar entry, results built without __init__)
+    gives the object the array path and the dataclasses' checked constructors give."""
+    one = vf.friction_coefficient(system, **kw)
+    velocity = {k: [v] for k, v in kw.items() if k in ("vbar", "v_inertial")}
+    many = vf.friction_coefficient(system, **{**kw, **velocity})
+    assert _fields(one) == _fields(many[0])
+    assert _fields(one) == _fields(dataclasses.replace(one))  # __init__ and its checks
+    assert one.final_state == dataclasses.replace(one.final_state)
+    assert one.trusted == bool(vf.solver.converged(many.status)[0] and one.error <= 1e-5)
+    assert vars(one) == vars(dataclasses.replace(one))
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        one.mu_ratio = 0.0
+
+
+def test_one_point_from_a_section_state_is_the_array_path(general_system):
+    start = vf.friction_coefficient(general_system, vbar=0.3).final_state
+    one = vf.friction_coefficient(general_system, vbar=0.35, initial=start)
+    many = vf.friction_coefficient(general_system, vbar=[0.35],
+                                   initial=np.array([start], dtype=object))
+    assert _fields(one) == _fields(many[0])
+
+
+def test_scalar_velocities_convert_as_arrays_do(general_system):
+    for vbar in (0.0, 0.3, 1.7, np.float64(0.3)):
+        V = vf.params.inertial_velocity(general_system, vbar)
+        assert type(V) is float
+        assert V == general_system.vbar_to_inertial(np.array([vbar]))[0]
+    with pytest.raises(ValueError, match="vbar must be finite and >= 0, got nan"):
+        vf.params.inertial_velocity(general_system, math.nan)
+    with pytest.raises(ValueError, match="vbar is undefined for beta == 1"):
+        vf.friction_coefficient(vf.Dimensionless(0.5, 1.0, 0.5), vbar=0.3)
+
+
+def test_trusted_one_is_trusted_for_every_status():
+    settings = vf.SolverSettings(tol_trusted=1e-6)
+    for status in vf.Status:
+        for error in (0.0, 1e-7, 1e-6, 2e-6, math.inf, math.nan):
+            assert settings.trusted_one(status, error) is bool(
+                settings.trusted(status.code, error)), (status, error)
 
 
 def test_results_state_their_status_and_accuracy(general_system):

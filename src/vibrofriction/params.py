@@ -526,6 +526,10 @@ def dimensionless(system: System) -> Dimensionless:
     raise TypeError(f"system must be a Dimensionless or Physical, got {type(system).__name__}")
 
 
+#: Scalar types of a velocity that :func:`inertial_velocity` converts without numpy.
+_FLOATS = (float, np.float64)
+
+
 def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
                       v_inertial: ArrayLike | None = None,
                       v0: ArrayLike | None = None) -> FloatOrArray:
@@ -540,6 +544,9 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
         if not (math.isfinite(v_inertial) and v_inertial >= 0.0):
             _valid("v_inertial", v_inertial)  # raises the schema's sentence
         return v_inertial
+    if vbar.__class__ in _FLOATS and v_inertial is None and v0 is None \
+            and system.__class__ is Dimensionless and math.isfinite(vbar) and vbar >= 0.0:
+        return float(system._vbar_unit * vbar)  # = vbar_to_inertial's product, bit for bit
     given = [name for name, v in (("vbar", vbar), ("v_inertial", v_inertial), ("v0", v0))
              if v is not None]
     if len(given) != 1:

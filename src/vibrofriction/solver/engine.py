@@ -25,6 +25,7 @@ from .results import (
     FrictionResults,
     SectionState,
     result_from_columns,
+    result_from_rows,
     results_from_columns,
 )
 from .settings import DEFAULT_SETTINGS, SolverSettings
@@ -118,19 +119,23 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
     out_i[rows, column_index("phase")] = codes.NO_PHASE
 
 
+_N_FLOAT, _N_INT = len(FLOAT_COLUMNS), len(INT_COLUMNS)
+#: Kernel start of the named initial states: ``(kind, y, x', e, phase)``.
+_NAMED_START = {"sliding": (0, 0.0, 0.0, 0.0, 0), "rest": (1, 0.0, 0.0, 0.0, 0)}
+
+
 def _one_point(dim: Dimensionless, V: float, initial: Initial,
                settings: SolverSettings) -> FrictionResult:
     """One moving point by the scalar kernel directly (no array bookkeeping)."""
-    kind, init = initial_rows(initial, 1, lambda i: dim)
-    of = np.empty(len(FLOAT_COLUMNS))
-    oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
-    steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, kind,
-                 init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]),
+    start = _NAMED_START.get(initial) if initial.__class__ is str else None
+    if start is None:
+        kind, init = initial_rows(initial, 1, lambda i: dim)
+        start = (kind, init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]))
+    of = np.empty(_N_FLOAT)
+    oi = np.empty(_N_INT, dtype=np.int64)
+    steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, *start,
                  *settings.kernel_arguments(), of, oi)
-    cols = dict(zip(FLOAT_COLUMNS, of.tolist(), strict=True))
-    cols.update(zip(INT_COLUMNS, oi.tolist(), strict=True))
-    cols["trusted"] = bool(settings.trusted(cols["status"], cols["error"]))
-    return result_from_columns(cols, dim, V)
+    return result_from_rows(of.tolist(), oi.tolist(), dim, V, settings)
 
 
 def friction_coefficient(
@@ -160,9 +165,10 @@ def friction_coefficient(
     settings : accuracy and effort bounds (:class:`SolverSettings`).
     """
     dim = dimensionless(system)
-    V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
-    if V.ndim == 0 and V > 0.0:
-        return _one_point(dim, float(V), initial, settings or DEFAULT_SETTINGS)
+    V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
+    if V.__class__ is float and V > 0.0:  # one moving point: a float from inertial_velocity
+        return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
+    V = np.asarray(V, dtype=float)
     cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                         initial=initial, settings=settings)
     if V.ndim == 0:

@@ -3,12 +3,14 @@
 The fields of :class:`FrictionResult` and :class:`FrictionResults` are those of
 :data:`vibrofriction.schema.RESULT_FIELDS`, in that order, with their units and meanings
 (the docstrings below are generated from it); :func:`results_from_columns` builds them
-from the kernels' named output columns.
+from the kernels' named output columns, :func:`result_from_rows` one point's from the
+kernels' rows (the scalar fast path: no dictionary, no dataclass ``__init__``).
 """
 
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, fields
 from typing import Any
@@ -18,11 +20,20 @@ from numpy.typing import NDArray
 
 from .._kernels import codes
 from ..params import Dimensionless
-from ..schema import RESULT_FIELDS, STATE_FIELDS, Field, Status
-from .settings import converged
+from ..schema import (
+    FLOAT_COLUMNS,
+    INT_COLUMNS,
+    RESULT_FIELDS,
+    STATE_FIELDS,
+    Field,
+    Status,
+    column_index,
+)
+from .settings import SolverSettings, converged
 
 __all__ = ["SLOW_SETTLING", "FrictionResult", "FrictionResults", "SectionState", "describe",
-           "result_from_columns", "results_from_columns", "section_state"]
+           "result_from_columns", "result_from_rows", "results_from_columns",
+           "section_state"]
 
 PHASE_CODE = {name: i for i, name in enumerate(codes.PHASE_NAMES)}
 
@@ -70,13 +81,28 @@ class SectionState:
 assert tuple(f.name for f in STATE_FIELDS) == tuple(f.name for f in fields(SectionState))
 
 
+def _frozen(cls: type, values: dict[str, Any]) -> Any:
+    """An instance of the frozen dataclass ``cls`` with the fields ``values`` (all of them,
+    in field order), without its ``__init__``: for values already checked, as the
+    solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner."""
+    obj = object.__new__(cls)
+    obj.__dict__.update(values)
+    return obj
+
+
+#: The phases a section state can be in, by code.
+_SECTION_PHASES = {c: codes.PHASE_NAMES[c] for c in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG)}
+
+
 def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> SectionState | None:
     """The :class:`SectionState` of a solver row, or None where there is none (static)."""
-    if not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)) \
-            or phase not in (codes.STICK, codes.SLIP_POS, codes.SLIP_NEG):
+    name = _SECTION_PHASES.get(phase)
+    if name is None or not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)):
         return None
-    return SectionState(float(y), float(x_dot), float(f), codes.PHASE_NAMES[int(phase)],
-                        float(e))
+    # what SectionState.__post_init__ checks holds: finite y, x_dot, f and a named phase
+    state = object.__new__(SectionState)
+    state.__dict__.update(y=float(y), x_dot=float(x_dot), f=float(f), phase=name, e=float(e))
+    return state
 
 
 # --------------------------------------------------------------------------- the results
@@ -159,7 +185,7 @@ class FrictionResults:
                 v = v[index]
                 v = v.item() if isinstance(v, np.generic) else v
             out[f.name] = v
-        return FrictionResult(**out)
+        return _frozen(FrictionResult, out)  # the fields of a result already built
 
     def __iter__(self) -> Iterator[FrictionResult]:
         for i in np.ndindex(self.shape):
@@ -226,14 +252,41 @@ def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
         system=system, v_inertial=v_inertial, **{k: cols[k] for k in _PLAIN})
 
 
+#: The fields built in Python, after the kernels' rows in :func:`result_from_rows`.
+_BUILT = ("status", "trusted", "final_state", "system", "v_inertial")
+#: Where each result field is in ``floats + ints + [the _BUILT values]``, in field order.
+_PICK = operator.itemgetter(*(
+    _BUILT.index(f.name) + len(FLOAT_COLUMNS) + len(INT_COLUMNS) if f.name in _BUILT
+    else (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1]
+    for f in RESULT_FIELDS))
+_RESULT_NAMES = tuple(f.name for f in RESULT_FIELDS)
+_STATE_PICK = operator.itemgetter(*(
+    (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1] for f in STATE_FIELDS))
+_I_STATUS, _I_ERROR = column_index("status"), column_index("error")
+
+
+def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless,
+                     v_inertial: float, settings: SolverSettings) -> FrictionResult:
+    """One point's :class:`FrictionResult` from the kernels' output rows (as lists, in the
+    order of :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS``): the same
+    result as :func:`result_from_columns` of their named columns with ``trusted`` from
+    ``settings``, built without a dictionary of columns or the dataclass's checks."""
+    status = Status.from_code(ints[_I_STATUS])
+    row = floats + ints
+    row += (status, settings.trusted_one(status, floats[_I_ERROR]),
+            section_state(*_STATE_PICK(row)), system, v_inertial)
+    return _frozen(FrictionResult, dict(zip(_RESULT_NAMES, _PICK(row), strict=True)))
+
+
 def results_from_columns(cols: Mapping[str, NDArray], system: Dimensionless,
                          v_inertial: NDArray[np.float64]) -> FrictionResults:
     """:class:`FrictionResults` from the named column arrays of :func:`solve_points`."""
     shape = v_inertial.shape
     status = np.empty(shape, dtype=object)
     states = np.empty(shape, dtype=object)
-    for i in np.ndindex(shape):
-        status[i] = Status.from_code(cols["status"][i])
-        states[i] = section_state(*(cols[f.name][i] for f in STATE_FIELDS))
+    # C order, as np.ndindex: point by point over Python scalars, not numpy ones
+    status.ravel()[:] = [Status.from_code(c) for c in np.ravel(cols["status"]).tolist()]
+    states.ravel()[:] = list(map(section_state, *(np.ravel(cols[f.name]).tolist()
+                                                  for f in STATE_FIELDS)))
     return FrictionResults(status=status, final_state=states, system=system,
                            v_inertial=v_inertial.astype(float), **{k: cols[k] for k in _PLAIN})

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -69,8 +70,17 @@ class SolverSettings:
         err = np.nan_to_num(np.asarray(error, dtype=float), nan=np.inf)
         return converged(status) & (err <= self.tol_trusted)
 
+    def trusted_one(self, status: Status, error: float) -> bool:
+        """:meth:`trusted` of one point, a :class:`Status` and its ``error``, as a bool."""
+        return status.ok and error <= self.tol_trusted
+
     def kernel_arguments(self) -> tuple[int, int, float, float, int]:
         """``(max_periods, min_periods, tol_state, tol_mean, max_events)`` for the kernels."""
+        return self._kernel_arguments
+
+    @functools.cached_property
+    def _kernel_arguments(self) -> tuple[int, int, float, float, int]:
+        """:meth:`kernel_arguments`, converted once (the fields are frozen)."""
         return (int(self.max_periods), int(self.min_periods), float(self.tol_state),
                 float(self.tol_mean), int(self.max_events))
 
