@@ -110,20 +110,16 @@ def periodic_result(z, win, p, k, rho, M, max_events, out_f):
 
 
 @jit
-def newton_result(win, k, lam, shift, mu_first, out_f):
+def newton_result(mu, k, lam, shift, mu_first, out_f):
     """Average, error, multiplier and settling time of the orbit found by Newton's method
-    (:func:`.newton.newton_orbit`) at period ``k``.
-
-    ``win`` holds the accumulators of one period of the orbit from the accepted
-    iterate; the exact orbit is one Newton step ``dz`` away, and the window mean moves
-    by ``G . dz / int n`` to first order (``shift`` bounds it), so the error is
-    ``ERROR_SAFETY * shift``, floored at round-off: no verification window is needed
-    where the exact Jacobian proves the orbit attracting.  The settling time counts from
-    the motion's window that ends at period ``k`` (mean ``mu_first``) at the rate
-    ``lam`` (a neutral orbit, ``lam`` within ``1 - NEUTRAL`` of 1, is completed by the
-    caller: :func:`.steady._neutral_deviation`).
+    (:func:`.newton.newton_orbit`) at period ``k``: ``mu`` its mean and ``shift`` a bound
+    of its distance to the exact orbit's, from the exact gradient of ``int f`` and the
+    next Newton step, so the error is ``ERROR_SAFETY * shift``, floored at round-off: no
+    verification window is needed where the exact Jacobian proves the orbit attracting.
+    The settling time counts from the motion's window that ends at period ``k`` (mean
+    ``mu_first``) at the rate ``lam`` (a neutral orbit, ``lam`` within ``1 - NEUTRAL`` of
+    1, is completed by the caller: :func:`.steady._neutral_deviation`).
     """
-    mu = window_mu(win)
     err = max(ERROR_SAFETY * shift, ROUNDOFF_MU * (1.0 + abs(mu)))
     out_f[O_MU] = mu
     out_f[O_ERR] = err

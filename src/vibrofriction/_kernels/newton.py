@@ -20,6 +20,8 @@ NEWTON_ITERATIONS = 12  # Newton steps per attempt
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 UNSTABLE = 1.0 + 1e-6  # and above this, repelling
+QUADRATIC = 0.01  # Newton steps shrinking at least this fast are in the quadratic regime
+EARLY_ERROR = 1e-12  # a mean predicted one step early is taken only this accurate
 
 
 @jit
@@ -121,6 +123,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     G = np.zeros(3)
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
     mu_first = math.nan
+    dzn_prev, predicted = math.inf, math.nan
     for it in range(NEWTON_ITERATIONS):
         if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
                 > NEWTON_DIVERGED * scale0):
@@ -139,26 +142,46 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             ph = ph1
             nd = _free_dimension(ph, M)
             z[0], z[1], z[2] = y1, xd1, e1
+            dzn_prev, predicted = math.inf, math.nan
             continue
         r = np.array([y1 - y0, xd1 - xd0, e1 - e0])
         res = alpha * abs(r[0]) + abs(r[1]) + (kk * abs(r[2]) if nd == 3 else 0.0)
         jac = J[:nd, :nd] - np.eye(nd)
         dz, ok = _solve_small(jac, -r[:nd], nd)
-        if res <= tol * scale0:
-            if degenerate > 0 or not smooth or not ok:
+        if not ok:
+            break
+        mu = window_mu(acc)
+        corr, shift = 0.0, 0.0  # the first-order change of the window mean to the orbit
+        for j in range(nd):
+            corr += G[j] * dz[j]
+            shift += abs(G[j] * dz[j])
+        corr /= acc[A_N]
+        shift /= acc[A_N]
+        dzn = alpha * abs(dz[0]) + abs(dz[1]) + (kk * abs(dz[2]) if nd == 3 else 0.0)
+        rho = dzn / dzn_prev
+        converged = res <= tol * scale0
+        # one step early: in the quadratic regime the orbit is z + dz to ~rho^2 |dz|, and
+        # its mean mu + corr to ~|R| rho^2, R the remainder of the previous prediction
+        bound = abs(mu - predicted) * rho * rho + abs(corr) * rho
+        early = (not converged and rho <= QUADRATIC and dzn * rho * rho <= tol * scale0
+                 and bound <= EARLY_ERROR)
+        if converged or early:
+            if degenerate > 0 or not smooth:
                 break
             lam = spectral_radius(J, nd)
             if not lam < UNSTABLE:
                 break
-            shift = 0.0
+            if converged:
+                return True, y0, xd0, e0, ph, events, work, lam, shift, mu_first, mu
             for j in range(nd):
-                shift += abs(G[j] * dz[j])
-            return True, y0, xd0, e0, ph, events, work, lam, shift / acc[A_N], mu_first
-        if not ok:
-            break
+                z[j] += dz[j]
+            y0, xd0, e0 = _unpack(z, ph, M)
+            return True, y0, xd0, e0, ph, events, work, lam, bound, mu_first, mu + corr
+        predicted = mu + corr
+        dzn_prev = dzn
         for j in range(nd):
             z[j] += dz[j]
-    return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first
+    return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first, math.nan
 
 
 @jit
@@ -198,11 +221,11 @@ def try_newton(z, dprev, k, M, tol_state, max_events, win):
         p = pbest if attempt == 0 else 1
         if attempt == 1 and pbest == 1:
             break
-        ok, y, xd, e, ph, ev, w, lam, shift, mu_first = newton_orbit(
+        ok, y, xd, e, ph, ev, w, lam, shift, mu_first, mu = newton_orbit(
             z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win)
         events += ev
         work += w
         if ok:
             z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, math.nan
-            return p, events, work, lam, shift, mu_first
-    return 0, events, work, math.nan, math.nan, math.nan
+            return p, events, work, lam, shift, mu_first, mu
+    return 0, events, work, math.nan, math.nan, math.nan, math.nan

@@ -119,15 +119,15 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     the event budget is spent.  The drive periods integrated are added to
     ``out_f[O_WORK]``."""
     zn = z.copy()
-    pn, ev, work, lam, shift, mu_first = try_newton(zn, dprev, k, M, tol_state,
-                                                    max_events - count[C_EVENTS], win)
+    pn, ev, work, lam, shift, mu_first, mu = try_newton(zn, dprev, k, M, tol_state,
+                                                        max_events - count[C_EVENTS], win)
     count[C_EVENTS] += ev
     out_f[O_WORK] += work
     if count[C_EVENTS] > max_events:
         return -1
     if pn > 0:
         # the first map from z is the motion's own next pn periods
-        newton_result(win, k + pn, lam, shift, mu_first, out_f)
+        newton_result(mu, k + pn, lam, shift, mu_first, out_f)
         if lam < NEUTRAL:
             z[:] = zn
     return pn
