@@ -12,7 +12,7 @@ import numpy as np
 
 from .codes import SLIP_POS, STICK
 from .jit import jit
-from .period import A_N, MAX_PERIOD, N_ACC, spring, window_mu
+from .period import A_N, MAX_PERIOD, spring, window_mu
 from .phases import M_A, M_ALPHA, M_C, M_K
 from .tangent import period_map_tangent
 
@@ -21,7 +21,6 @@ NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start h
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 UNSTABLE = 1.0 + 1e-6  # and above this, repelling
 QUADRATIC = 0.01  # Newton steps shrinking at least this fast are in the quadratic regime
-STALLED = 0.5  # a cautious attempt ends where a step does not halve the residual
 EARLY_ERROR = 1e-12  # a mean predicted one step early is taken only this accurate
 
 
@@ -94,7 +93,7 @@ def spectral_radius(J, nd):
 
 
 @jit
-def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, cautious, first):
+def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     """Solve ``P^p(z) = z`` on the section by Newton's method with the exact Jacobian
     (:func:`.tangent.period_map_tangent`): quadratic convergence, no differences.
 
@@ -125,8 +124,6 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, cautious, first):
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
     mu_first = math.nan
     dzn_prev, predicted = math.inf, math.nan
-    res_prev = math.inf
-    first[3] = -1.0
     for it in range(NEWTON_ITERATIONS):
         if (alpha * abs(z[0] - y) + abs(z[1] - xd) + kk * abs(z[2] - e)
                 > NEWTON_DIVERGED * scale0):
@@ -140,10 +137,6 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, cautious, first):
             break
         if it == 0:
             mu_first = window_mu(acc)
-            first[0], first[1], first[2], first[3] = y1, xd1, e1, ph1
-            first[4:] = acc
-        if ph1 != ph and cautious:
-            break
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
             ph = ph1
@@ -166,9 +159,6 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, cautious, first):
         shift /= acc[A_N]
         dzn = alpha * abs(dz[0]) + abs(dz[1]) + (kk * abs(dz[2]) if nd == 3 else 0.0)
         rho = dzn / dzn_prev
-        if cautious and (res > STALLED * res_prev or (it == 0 and dzn > res)):
-            break
-        res_prev = res
         converged = res <= tol * scale0
         # one step early: in the quadratic regime the orbit is z + dz to ~rho^2 |dz|, and
         # its mean mu + corr to ~|R| rho^2, R the remainder of the previous prediction
@@ -232,8 +222,7 @@ def try_newton(z, dprev, k, M, tol_state, max_events, win):
         if attempt == 1 and pbest == 1:
             break
         ok, y, xd, e, ph, ev, w, lam, shift, mu_first, mu = newton_orbit(
-            z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win, False,
-            np.zeros(4 + N_ACC))
+            z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win)
         events += ev
         work += w
         if ok:

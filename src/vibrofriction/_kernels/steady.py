@@ -69,7 +69,7 @@ from .codes import (
 )
 from .integrate import contact_force, initial_state
 from .jit import jit
-from .newton import NEUTRAL, newton_orbit, try_newton
+from .newton import NEUTRAL, try_newton
 from .period import (
     A_F,
     A_FLIGHT,
@@ -134,31 +134,6 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
 
 
 @jit
-def _cautious_start(z, acc, M, tol_state, max_events, count, win, out_f):
-    """Newton from the start itself, cautiously (:func:`.newton.newton_orbit`): its first
-    map is the motion's first period, so where the attempt ends the motion goes on from
-    its image at no loss.  Returns ``ST_PERIODIC`` where an attracting orbit was found
-    (its result written), ``ST_FAILED`` where the event budget is spent, 1 where ``z``
-    and ``acc`` hold the motion after one period, 0 where nothing was integrated."""
-    first = np.zeros(4 + N_ACC)
-    ok, y, xd, e, ph, ev, w, lam, shift, mu_first, mu = newton_orbit(
-        z[0], z[1], z[2], int(z[3]), 1, M, 0.1 * tol_state, max_events, win, True, first)
-    count[C_EVENTS] += ev
-    out_f[O_WORK] += w
-    if count[C_EVENTS] > max_events:
-        return ST_FAILED
-    if ok and lam < NEUTRAL:
-        newton_result(mu, 1, lam, shift, mu_first, out_f)
-        z[0], z[1], z[2], z[3], z[4] = y, xd, e, ph, math.nan
-        return ST_PERIODIC
-    if first[3] < 0.0:
-        return 0
-    z[0], z[1], z[2], z[3], z[4] = first[0], first[1], first[2], first[3], math.nan
-    acc[:] = first[4:]
-    return 1
-
-
-@jit
 def _neutral_deviation(acc, acc_start, out_f):
     """A neutral orbit's error includes the distance of the motion's mean over the last
     ``NEUTRAL_WINDOW`` periods (accumulators ``acc - acc_start``) from it: periods
@@ -216,19 +191,11 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
     k = 0
-    started = _cautious_start(z, acc, M, tol_state, max_events, count, win, out_f)
-    if started == ST_PERIODIC:
-        return ST_PERIODIC, 1, 0
-    if started == ST_FAILED:
-        return ST_FAILED, 0, 0
     while True:
-        if started == 1:
-            started = 0  # the first period was the cautious attempt's first map
-        else:
-            ok, w = advance_counted(z, acc, count, M, max_events)
-            out_f[O_WORK] += w
-            if not ok:
-                return ST_FAILED, 0, k
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        out_f[O_WORK] += w
+        if not ok:
+            return ST_FAILED, 0, k
         k += 1
         ring_z[k % nring, :] = z
         ring_c[k % nring, :] = acc
