@@ -12,13 +12,14 @@ all three alike:
   which measures the Python around the kernel without the kernel's noise (numba's
   argument dispatch is not in it; the stub's own call, about 0.5 us, is).
 
-Medians of 7 repeats of 200 calls (single points) or 1 call (the curve), warm.  With
+Medians of 7 repeats of 200 calls (single points) or 1 call (the curve), warm, in a
+fresh process; each number is the median of ``--rounds`` (3) such processes.  With
 ``--baseline REV`` the same measurement is run on that revision's ``src`` (exported by
 ``git archive`` to a temporary directory; its numba cache is compiled there first) and
-on the working tree, one after the other, each in a fresh process.  Appends a section
-to ``results/overhead.md`` with the commit(s), date and machine.
+on the working tree, the two in turn.  Appends a section to ``results/overhead.md``
+with the commit(s), date and machine.
 
-Run: ``python benchmarks/bench_overhead.py [--baseline REV]``.
+Run: ``python benchmarks/bench_overhead.py [--baseline REV] [--rounds N]``.
 """
 
 from __future__ import annotations
@@ -151,6 +152,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--baseline", metavar="REV",
                         help="also measure this git revision's src, side by side")
+    parser.add_argument("--rounds", type=int, default=3,
+                        help="measurements of each tree, in turn; their median is reported")
     parser.add_argument("--measure-only", action="store_true", help=argparse.SUPPRESS)
     opts = parser.parse_args()
     if opts.measure_only:
@@ -158,26 +161,35 @@ def main() -> None:
         return
     commit = _git("rev-parse", "--short", "HEAD")
     dirty = " (with uncommitted changes)" if _git("status", "--porcelain", "src") else ""
-    rows = []
-    if opts.baseline:
-        base = _git("rev-parse", "--short", opts.baseline)
-        with tempfile.TemporaryDirectory() as tmp:
+    trees = {commit: ROOT / "src"}
+    with tempfile.TemporaryDirectory() as tmp:
+        if opts.baseline:
+            base = _git("rev-parse", "--short", opts.baseline)
             archive = subprocess.run(["git", "archive", base, "src"], cwd=ROOT, check=True,
                                      capture_output=True).stdout
             subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
             _measure_in(Path(tmp) / "src")  # compiles its numba cache
-            rows += _rows(base, _measure_in(Path(tmp) / "src"))
-    rows += _rows(commit, _measure_in(ROOT / "src"))
+            trees = {base: Path(tmp) / "src", **trees}
+        runs: dict[str, list] = {label: [] for label in trees}
+        for _ in range(opts.rounds):  # the trees in turn, so that load hits both
+            for label, src in trees.items():
+                runs[label].append(_measure_in(src))
+    rows = []
+    for label, measured in runs.items():
+        rows += _rows(label, {case: {k: statistics.median(m[case][k] for m in measured)
+                                     for k in measured[0][case]} for case in measured[0]})
     date = datetime.date.today().isoformat()
     against = f" against {base}" if opts.baseline else ""
     command = "python benchmarks/bench_overhead.py" + (
-        f" --baseline {opts.baseline}" if opts.baseline else "")
+        f" --baseline {opts.baseline}" if opts.baseline else "") + (
+        f" --rounds {opts.rounds}" if opts.rounds != 3 else "")
     section = (
         f"\n## {commit}{dirty}{against}\n\n"
         f"`{command}` on {date}; {platform.processor() or platform.machine()}, Python "
         f"{platform.python_version()}, {os.cpu_count()} cores; alpha = 0.5, beta = 2, "
         f"a = 0.5; medians of {REPEATS} interleaved repeats of 200 warm calls (the curve: "
-        "of 1 call), each tree in a fresh process.\n\n"
+        f"of 1 call) in a fresh process, then the median of {opts.rounds} such "
+        "measurements of each tree, taken in turn.\n\n"
         "| commit | case | whole call (us) | kernel alone (us) | overhead (us) | "
         "Python alone, kernel stubbed (us) |\n|---|---|---|---|---|---|\n"
         + "\n".join(rows) + "\n")
