@@ -157,7 +157,11 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             shift += abs(G[j] * dz[j])
         corr /= acc[A_N]
         shift /= acc[A_N]
-        dzn = alpha * abs(dz[0]) + abs(dz[1]) + (kk * abs(dz[2]) if nd == 3 else 0.0)
+        dzn = alpha * abs(dz[0])  # the section's distance; dz has nd entries
+        if nd > 1:
+            dzn += abs(dz[1])
+        if nd > 2:
+            dzn += kk * abs(dz[2])
         rho = dzn / dzn_prev
         converged = res <= tol * scale0
         # one step early: in the quadratic regime the orbit is z + dz to ~rho^2 |dz|, and
