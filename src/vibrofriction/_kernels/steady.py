@@ -95,6 +95,7 @@ FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
+CERTIFY_EVERY = 8  # the sliding certificate is tried this often near a neutral orbit
 
 
 @jit
@@ -134,13 +135,41 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
 
 
 @jit
-def _neutral_deviation(acc, acc_start, out_f):
-    """A neutral orbit's error includes the distance of the motion's mean over the last
-    ``NEUTRAL_WINDOW`` periods (accumulators ``acc - acc_start``) from it: periods
-    512-1024, or the 512 after the orbit was found where that is later."""
-    mean = (acc[A_F] - acc_start[A_F]) / (acc[A_N] - acc_start[A_N])
+def _neutral(z, acc, count, k, p, M, max_events, orbit_ok, ys, yds, es, win, out_f):
+    """The motion near a neutral orbit found by Newton at period ``k`` (its result in
+    ``out_f``, its window in ``win``): the motion from the start need not approach it, so
+    it runs on to period ``2 NEUTRAL_WINDOW`` (or ``NEUTRAL_WINDOW`` past ``k``) and the
+    error includes the distance of its mean over the last ``NEUTRAL_WINDOW`` periods from
+    the orbit's; the settling time is unknown (nan).  The sliding certificate is tried
+    every ``CERTIFY_EVERY`` periods meanwhile: where it proves continuous sliding, that
+    is the answer.  Returns ``(status, period, periods)``."""
+    orbit_out = out_f.copy()
+    orbit_win = win.copy()
+    end = max(2 * NEUTRAL_WINDOW, k + NEUTRAL_WINDOW)
+    start = np.zeros(N_ACC)
+    while k < end:
+        if k == end - NEUTRAL_WINDOW:
+            start[:] = acc
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        out_f[O_WORK] += w
+        if not ok:
+            return ST_FAILED, 0, k
+        k += 1
+        if k % CERTIFY_EVERY == 0 and sliding_certificate(z[0], z[1], z[2], int(z[3]), M,
+                                                          orbit_ok, ys, yds, es):
+            out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
+            out_f[O_MULT] = math.nan
+            win[:] = 0.0
+            win[A_SLIP] = 1.0
+            return ST_SLIDING, 0, k
+    work = out_f[O_WORK]
+    out_f[:] = orbit_out
+    out_f[O_WORK] = work
+    win[:] = orbit_win
+    mean = (acc[A_F] - start[A_F]) / (acc[A_N] - start[A_N])
     out_f[O_ERR] = max(out_f[O_ERR], abs(mean - out_f[O_MU]))
     out_f[O_SETTLE] = math.nan
+    return ST_PERIODIC, p, k
 
 
 @jit
@@ -182,12 +211,6 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
     chk_k = np.zeros(MAX_CHECKPOINTS)
     acc = np.zeros(N_ACC)
-    neutral_win = np.zeros(N_ACC)  # the window of a neutral orbit found by Newton
-    neutral_from = np.zeros(N_ACC)  # the accumulators at period NEUTRAL_WINDOW
-    neutral_out = np.zeros(out_f.shape[0])
-    neutral = False
-    neutral_period = 0
-    neutral_end = 0
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
     k = 0
@@ -211,31 +234,14 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             win[:] = 0.0
             win[A_SLIP] = 1.0
             return ST_SLIDING, 0, k
-        if neutral:
-            # a neutral orbit: the motion runs on (its certificate may still prove
-            # sliding, or it may settle on an orbit) until its mean is measured
-            if k == neutral_end - NEUTRAL_WINDOW:
-                neutral_from[:] = acc
-            if k == neutral_end:
-                work = out_f[O_WORK]
-                out_f[:] = neutral_out
-                out_f[O_WORK] = work
-                win[:] = neutral_win
-                _neutral_deviation(acc, neutral_from, out_f)
-                return ST_PERIODIC, neutral_period, k
-            continue
         if k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
             pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
             if pn > 0 and out_f[O_MULT] < NEUTRAL:
                 return ST_PERIODIC, pn, k
             if pn > 0:
-                neutral = True
-                neutral_out[:] = out_f
-                neutral_win[:] = win
-                neutral_period = pn
-                neutral_end = max(2 * NEUTRAL_WINDOW, k + NEUTRAL_WINDOW)
-                out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
+                return _neutral(z, acc, count, k, pn, M, max_events, orbit_ok, ys, yds, es, win,
+                                out_f)
             if pn < 0:
                 return ST_FAILED, 0, k
         if k == next_chk or k >= max_periods:
