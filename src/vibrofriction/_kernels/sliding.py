@@ -2,8 +2,9 @@ r"""Proofs of continuous forward sliding: ``mu/mu0 = 1`` exactly (eqs. 7-12).
 
 :func:`sliding_orbit` is the periodic solution of forward slip (and flight);
 :func:`sliding_certificate` proves from a section state that the contact point
-never stops again; :func:`unmodulated_sliding` proves the long-time average for
-``a = 0`` from any start.
+never stops again; :func:`orbit_slides` proves the long-time average from any start
+where the sliding orbit's own contact point never stops, :func:`unmodulated_sliding`
+for ``a = 0``.
 """
 
 import math
@@ -149,3 +150,29 @@ def unmodulated_sliding(y, xd, e, M):
     if not math.isinf(k):
         energy += 0.5 * k * (e - es) ** 2
     return energy, -1.0 / alpha, V, es
+
+
+@jit
+def orbit_slides(M, orbit_ok, ys, yds, es):
+    r"""Where the sliding orbit's contact point never stops, ``mu/mu0 = 1`` from any start.
+
+    Let ``delta = x - x_o`` be the motion's distance from the sliding orbit ``x_o``
+    (:func:`sliding_orbit`, ``f_o = n``) and ``delta_e = e - e_o``.  Both obey the body
+    equation, so ``E = (delta'^2 + alpha delta^2 + k delta_e^2)/2`` (no ``e`` term for a
+    rigid contact) has ``E' = -gamma delta'^2 - c delta_e'^2 - (n - f)(v_o - v_c)`` with
+    ``v_c``, ``v_o`` the contact-point velocities of the motion and of the orbit
+    (``f - n = k delta_e + c delta_e'`` in contact; in flight ``f = n = 0``, and an elastic
+    contact's ``e`` is reset to 0 at lift-off in both).  ``n - f >= 0`` always, and
+    ``v_c = 0`` in stick, ``f = n`` in forward slip, ``f = -n`` and ``v_c < 0`` in reverse
+    slip: every term is ``<= 0``, and ``(n - f)(v_o - v_c) >= (n - f) v_min`` with
+    ``v_min > 0`` the smallest contact-point velocity of the orbit in contact.  Hence
+    ``v_min * integral(n - f) <= E(0)``: the mean of ``f`` over the first ``tau`` is within
+    ``E(0) / (v_min tau)`` of the mean of ``n``, and ``<f>/<n> = 1`` exactly (eq. 25),
+    whatever the stability of the orbit and however the motion sticks on its way.
+
+    ``v_min > 0`` is checked as in :func:`sliding_certificate` with no free motion (the
+    orbit's contact velocity stays above ``1e-9 (1 + V)`` on every arc in contact).
+    """
+    if not orbit_ok:
+        return False
+    return sliding_certificate(ys, M[M_V] + yds, es, SLIP_POS, M, orbit_ok, ys, yds, es)

@@ -67,7 +67,7 @@ from .codes import (
     ST_PERIODIC,
     ST_SLIDING,
 )
-from .integrate import contact_force, initial_state
+from .integrate import TWO_PI, contact_force, initial_state
 from .jit import jit
 from .newton import NEUTRAL, try_newton
 from .period import (
@@ -84,8 +84,8 @@ from .period import (
     advance_counted,
     advance_period,
 )
-from .phases import ETA_ELASTIC, ETA_SLOPE, make_model
-from .sliding import sliding_certificate, sliding_orbit, unmodulated_sliding
+from .phases import ETA_ELASTIC, ETA_SLOPE, M_A, M_OFF, M_ON, M_V, make_model
+from .sliding import orbit_slides, sliding_certificate, sliding_orbit, unmodulated_sliding
 
 # re-exported: the kernels' entry points and what the tests drive directly
 __all__ = ["N_ACC", "advance_period", "sliding_certificate", "sliding_orbit", "steady_state",
@@ -95,6 +95,7 @@ FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
+SLIDING_SETTLE = 64  # periods in which a proven sliding looks for its last stick
 CERTIFY_EVERY = 8  # the sliding certificate is tried this often near a neutral orbit
 
 
@@ -135,33 +136,11 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
 
 
 @jit
-def _neutral(z, acc, count, k, p, M, max_events, orbit_ok, ys, yds, es, win, out_f):
-    """The motion near a neutral orbit found by Newton at period ``k`` (its result in
-    ``out_f``, its window in ``win``): the motion from the start need not approach it, so
-    it runs on to period ``2 NEUTRAL_WINDOW`` (or ``NEUTRAL_WINDOW`` past ``k``) and the
-    error includes the distance of its mean over the last ``NEUTRAL_WINDOW`` periods from
-    the orbit's; the settling time is unknown (nan).  The sliding certificate is tried
-    every ``CERTIFY_EVERY`` periods meanwhile: where it proves continuous sliding, that
-    is the answer.  Returns ``(status, period, periods)``."""
-    orbit_out = out_f.copy()
-    orbit_win = win.copy()
-    end = max(2 * NEUTRAL_WINDOW, k + NEUTRAL_WINDOW)
-    start = np.zeros(N_ACC)
-    while k < end:
-        if k == end - NEUTRAL_WINDOW:
-            start[:] = acc
-        ok, w = advance_counted(z, acc, count, M, max_events)
-        out_f[O_WORK] += w
-        if not ok:
-            return ST_FAILED, 0, k
-        k += 1
-        if k % CERTIFY_EVERY == 0 and sliding_certificate(z[0], z[1], z[2], int(z[3]), M,
-                                                          orbit_ok, ys, yds, es):
-            out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
-            out_f[O_MULT] = math.nan
-            win[:] = 0.0
-            win[A_SLIP] = 1.0
-            return ST_SLIDING, 0, k
+def _neutral_result(acc, start, orbit_out, orbit_win, win, out_f):
+    """The answer of a neutral orbit found by Newton (its result ``orbit_out``, window
+    ``orbit_win``): the motion from the start need not approach it, so its error includes
+    the distance of the motion's mean over the last ``NEUTRAL_WINDOW`` periods
+    (accumulators ``acc - start``) from the orbit's, and its settling time is unknown."""
     work = out_f[O_WORK]
     out_f[:] = orbit_out
     out_f[O_WORK] = work
@@ -169,7 +148,6 @@ def _neutral(z, acc, count, k, p, M, max_events, orbit_ok, ys, yds, es, win, out
     mean = (acc[A_F] - start[A_F]) / (acc[A_N] - start[A_N])
     out_f[O_ERR] = max(out_f[O_ERR], abs(mean - out_f[O_MU]))
     out_f[O_SETTLE] = math.nan
-    return ST_PERIODIC, p, k
 
 
 @jit
@@ -195,7 +173,8 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 
 @jit
-def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f):
+def _run(z, M, orbit_ok, ys, yds, es, max_periods, min_periods, tol_state, tol_mean, max_events,
+         count, win, out_f):
     """Advance period by period from ``z`` until an orbit, a proof or an average answers.
 
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
@@ -203,7 +182,6 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     drive periods integrated (the closed-form sliding orbit and certificate are not
     integrations of the motion and are not counted).
     """
-    orbit_ok, ys, yds, es = sliding_orbit(M)
     nring = MAX_PERIOD + 1
     ring_z = np.zeros((nring, 5))
     ring_c = np.zeros((nring, N_ACC))
@@ -211,6 +189,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     chk_c = np.zeros((MAX_CHECKPOINTS, N_ACC))
     chk_k = np.zeros(MAX_CHECKPOINTS)
     acc = np.zeros(N_ACC)
+    neutral_win = np.zeros(N_ACC)  # the window of a neutral orbit found by Newton
+    neutral_from = np.zeros(N_ACC)  # the accumulators where the motion's window starts
+    neutral_out = np.zeros(out_f.shape[0])
+    neutral_period, neutral_end = 0, 0
     ring_z[0, :] = z
     nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
     k = 0
@@ -229,19 +211,32 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             count[C_EVENTS] += ev
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
-        if sliding_certificate(z[0], z[1], z[2], int(z[3]), M, orbit_ok, ys, yds, es):
+        if ((neutral_end == 0 or k % CERTIFY_EVERY == 0)
+                and sliding_certificate(z[0], z[1], z[2], int(z[3]), M, orbit_ok, ys, yds, es)):
             out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
-            win[:] = 0.0
-            win[A_SLIP] = 1.0
+            out_f[O_MULT] = math.nan
+            _sliding_window(M, win)
             return ST_SLIDING, 0, k
-        if k == next_newton and k < max_periods:
+        if neutral_end > 0:
+            # near a neutral orbit found by Newton the motion runs on: the certificate
+            # (every CERTIFY_EVERY periods) or the running average may still answer;
+            # otherwise the orbit does, with the motion's mean over the last window
+            if k == neutral_end - NEUTRAL_WINDOW:
+                neutral_from[:] = acc
+            if k == neutral_end:
+                _neutral_result(acc, neutral_from, neutral_out, neutral_win, win, out_f)
+                return ST_PERIODIC, neutral_period, k
+        elif k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
             pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
             if pn > 0 and out_f[O_MULT] < NEUTRAL:
                 return ST_PERIODIC, pn, k
             if pn > 0:
-                return _neutral(z, acc, count, k, pn, M, max_events, orbit_ok, ys, yds, es, win,
-                                out_f)
+                neutral_out[:] = out_f
+                neutral_win[:] = win
+                neutral_period = pn
+                neutral_end = max(2 * NEUTRAL_WINDOW, k + NEUTRAL_WINDOW)
+                out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
             if pn < 0:
                 return ST_FAILED, 0, k
         if k == next_chk or k >= max_periods:
@@ -250,6 +245,43 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
                                        win, out_f)
             if status != RUNNING:
                 return status, 0, k
+
+
+@jit
+def _sliding_window(M, win):
+    """The accumulators of one period of the sliding orbit: forward slip in contact,
+    flight out of it (the fractions of a proven continuous sliding)."""
+    win[:] = 0.0
+    flight = M[M_ON] - M[M_OFF] if M[M_A] > 1.0 else 0.0
+    win[A_SLIP] = TWO_PI - flight
+    win[A_FLIGHT] = flight
+
+
+@jit
+def _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f):
+    """The sliding orbit's contact point never stops (:func:`.sliding.orbit_slides`):
+    ``mu/mu0 = 1`` is proven from any start.  The motion is integrated only to say when
+    its contact point stops for the last time: the first period (up to
+    ``SLIDING_SETTLE`` periods) from which the certificate proves that it never stops
+    again is the settling time and ``periods``; where none is found within them the
+    settling time is unknown (nan) and the transient may still stick now and then
+    (the final state is then the orbit's).  Returns ``(status, period, periods)``."""
+    out_f[O_MU], out_f[O_ERR] = 1.0, 0.0
+    _sliding_window(M, win)
+    acc = np.zeros(N_ACC)
+    for k in range(SLIDING_SETTLE + 1):
+        if sliding_certificate(z[0], z[1], z[2], int(z[3]), M, True, ys, yds, es):
+            out_f[O_SETTLE] = k
+            return ST_SLIDING, 0, k
+        if k == SLIDING_SETTLE:
+            break
+        ok, w = advance_counted(z, acc, count, M, max_events)
+        out_f[O_WORK] += w
+        if not ok:
+            break
+    out_f[O_SETTLE] = math.nan
+    z[0], z[1], z[2], z[3], z[4] = ys, M[M_V] + yds, es, SLIP_POS, math.nan
+    return ST_SLIDING, 0, 0
 
 
 @jit
@@ -318,8 +350,12 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
     if a == 0.0:
         status, period, k = _unmodulated(z, M, win, out_f)
     else:
-        status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
-                                 max_events, count, win, out_f)
+        orbit_ok, ys, yds, es = sliding_orbit(M)
+        if orbit_slides(M, orbit_ok, ys, yds, es):
+            status, period, k = _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f)
+        else:
+            status, period, k = _run(z, M, orbit_ok, ys, yds, es, max_periods, min_periods,
+                                     tol_state, tol_mean, max_events, count, win, out_f)
     # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
     _finish(status, period, k, z, count, win, M, beta, eta if a != 0.0 else 0.0, out_f, out_i)
 

@@ -212,6 +212,12 @@ def describe(r: FrictionResult) -> str:
             f"the motion from the initial state needs about {r.settling_periods:.3g} drive "
             "periods to come within the error of this value; a measurement over fewer "
             "periods sees the transient")
+    if r.status is Status.SLIDING and math.isnan(r.settling_periods):
+        parts.append(
+            "the sliding orbit's contact point never stops, which proves the long-time "
+            "average from any start; the motion from the initial state was not seen to "
+            "stop sticking within 64 periods (no settling time): a measurement over a "
+            "finite time can read slightly less than mu0")
     if r.status is Status.PERIODIC and math.isnan(r.settling_periods):
         parts.append(
             f"the orbit is neutrally stable (leading Floquet multiplier {r.multiplier:.9g}): "
