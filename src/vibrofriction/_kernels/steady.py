@@ -95,7 +95,7 @@ FIRST_NEWTON = 1  # first attempt to solve the periodicity condition, in periods
 MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
-SLIDING_SETTLE = 64  # periods in which a proven sliding looks for its last stick
+SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stick
 CERTIFY_EVERY = 8  # the sliding certificate is tried this often near a neutral orbit
 
 

@@ -216,7 +216,7 @@ def describe(r: FrictionResult) -> str:
         parts.append(
             "the sliding orbit's contact point never stops, which proves the long-time "
             "average from any start; the motion from the initial state was not seen to "
-            "stop sticking within 64 periods (no settling time): a measurement over a "
+            "stop sticking within 16 periods (no settling time): a measurement over a "
             "finite time can read slightly less than mu0")
     if r.status is Status.PERIODIC and math.isnan(r.settling_periods):
         parts.append(
