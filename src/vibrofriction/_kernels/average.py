@@ -118,7 +118,7 @@ def newton_result(mu, k, lam, shift, mu_first, out_f):
     verification window is needed where the exact Jacobian proves the orbit attracting.
     The settling time counts from the motion's window that ends at period ``k`` (mean
     ``mu_first``) at the rate ``lam`` (a neutral orbit, ``lam`` within ``1 - NEUTRAL`` of
-    1, is completed by the caller: :func:`.steady._neutral_deviation`).
+    1, is completed by the caller: :func:`.steady._neutral_result`).
     """
     err = max(ERROR_SAFETY * shift, ROUNDOFF_MU * (1.0 + abs(mu)))
     out_f[O_MU] = mu

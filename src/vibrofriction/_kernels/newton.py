@@ -100,18 +100,28 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     Repelling orbits (spectral radius of ``DP^p`` above ``UNSTABLE``) are refused, so the
     answer is the attractor the iteration was approaching, or a neutral orbit (the
     undamped free oscillation of pure slip, radius 1), which the caller treats as such
-    (:func:`.average.newton_result`).  An iterate whose
-    image is in another phase on the section (the orbit sticks at ``tau = 2 pi k``
-    where the guess slid, or vice versa) continues in that phase's coordinates.
+    (:func:`.steady._run`).  An iterate whose image is in another phase on the section
+    (the orbit sticks at ``tau = 2 pi k`` where the guess slid, or vice versa) continues
+    in that phase's coordinates.
 
-    Returns ``(ok, y, x', e, phase, events, work, lam, shift, mu_first)``: on success the
-    orbit's
-    section state, ``acc`` the accumulators of its ``p`` periods from there, ``lam`` the
-    modulus of the leading Floquet multiplier and ``shift`` a bound of the first-order
-    change of the window mean ``<f>/<n>`` to the exact orbit, ``sum_j |G_j dz_j| / int n``
-    (``dz`` the next Newton step, ``G`` the exact gradient of ``int f``); ``work`` the
-    drive periods integrated; ``mu_first`` the window mean of the first map, the motion's
-    own ``p`` periods from the start (nan where the map did not finish).
+    Returns ``(ok, y, x', e, phase, events, work, lam, shift, mu_first, mu)``: on success
+    the orbit's section state, ``acc`` the accumulators of ``p`` periods from the accepted
+    iterate, ``mu`` the orbit's mean ``<f>/<n>``, ``lam`` the modulus of the leading
+    Floquet multiplier and ``shift`` a bound of ``mu``'s distance to the exact orbit's;
+    ``work`` the drive periods integrated; ``mu_first`` the window mean of the first map,
+    the motion's own ``p`` periods from the start (nan where it did not finish).
+
+    With ``dz`` the next Newton step and ``G`` the exact gradient of ``int f``, the window
+    mean moves by ``G . dz / int n`` to the exact orbit to first order.  An iterate whose
+    residual is within ``tol`` is accepted with its own window mean and ``shift = sum_j
+    |G_j dz_j| / int n``.  In the quadratic regime (the step shrank by ``QUADRATIC`` or
+    more, ``rho = |dz| / |dz_prev|``) an iterate is accepted one map earlier, where the
+    next residual, about ``rho^2 |dz|``, would be within ``tol`` and the bound below is
+    within ``EARLY_ERROR``: the state is ``z + dz``, ``mu`` the window mean plus
+    ``G . dz / int n``, and ``shift = |R| rho^2 + |G . dz / int n| rho``, ``R`` the error of
+    the previous iterate's first-order prediction of this window mean (the second-order
+    remainder, which scales as ``|dz|^2``).  The phase-time fractions of ``acc`` are then
+    those of the iterate, within about ``|dz|`` of the orbit's.
     """
     ph_in = ph
     alpha = M[M_ALPHA]

@@ -12,17 +12,22 @@ otherwise the running average is checked at doubling checkpoints
 (:func:`.average.check_average`).  Every result states an estimate of
 ``|mu_ratio - exact|`` (docs/solver.md, "What error means"):
 
-* periodic: the p-period means of two successive windows differ by ``d_mu``;
-  the window means converge to the orbit's mean like ``lambda^k`` (``lambda``
-  the leading Floquet multiplier), so the error of the last window is about
-  ``d_mu / (1 - |lambda|)``; twice that is stated (other modes add to it),
-  floored at round-off;
+* periodic, found by Newton's method with the exact Jacobian: twice the first-order
+  change of the window mean to the exact orbit, ``sum |G_j dz_j| / int n``
+  (:func:`.average.newton_result`); a neutral orbit adds the distance of the
+  motion's mean over 512 more periods;
+* periodic, found by plain iteration: the p-period means of two successive windows
+  differ by ``d_mu``; the window means converge to the orbit's mean like
+  ``lambda^k`` (``lambda`` the leading Floquet multiplier), so the error of the last
+  window is about ``d_mu / (1 - |lambda|)``; twice that is stated (other modes add to
+  it), floored at round-off;
 * averaged: the disagreement of the last two averaging windows;
 * not converged, failed: no value (``nan``) and ``inf``; the last windows' means
   are reported as a range, never as the answer;
 * continuous sliding: 0 (proven: eqs. 10-12 generalised to a contact that opens
-  and to damping, docs/damping.md; without oscillation, ``a = 0``, from any start
-  by an energy argument, :func:`.sliding.unmodulated_sliding`).
+  and to damping, docs/damping.md; from any start by an energy argument where the
+  sliding orbit's contact point never stops, :func:`.sliding.orbit_slides`, and
+  without oscillation, ``a = 0``, :func:`.sliding.unmodulated_sliding`).
 
 Output rows follow ``solver.FLOAT_COLUMNS`` / ``solver.INT_COLUMNS`` (:mod:`.codes`).
 """
