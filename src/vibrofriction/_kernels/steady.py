@@ -101,7 +101,6 @@ MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stick
-CERTIFY_EVERY = 8  # the sliding certificate is tried this often near a neutral orbit
 
 
 @jit
@@ -178,14 +177,17 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 
 @jit
-def _run(z, M, orbit_ok, ys, yds, es, max_periods, min_periods, tol_state, tol_mean, max_events,
-         count, win, out_f):
-    """Advance period by period from ``z`` until an orbit, a proof or an average answers.
+def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f):
+    """Advance period by period from ``z`` until an orbit or an average answers.
+
+    Called where the sliding orbit's contact point stops, or there is no sliding orbit
+    (:func:`.sliding.orbit_slides`): the certificate of continuous sliding cannot hold
+    from any state then (its bound only adds the free motion's amplitude to the
+    orbit's own test), so it is not tried.
 
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
     ``win`` holds the accumulators of the answering window, ``out_f[O_WORK]`` counts the
-    drive periods integrated (the closed-form sliding orbit and certificate are not
-    integrations of the motion and are not counted).
+    drive periods integrated.
     """
     nring = MAX_PERIOD + 1
     ring_z = np.zeros((nring, 5))
@@ -216,16 +218,10 @@ def _run(z, M, orbit_ok, ys, yds, es, max_periods, min_periods, tol_state, tol_m
             count[C_EVENTS] += ev
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
-        if ((neutral_end == 0 or k % CERTIFY_EVERY == 0)
-                and sliding_certificate(z[0], z[1], z[2], int(z[3]), M, orbit_ok, ys, yds, es)):
-            out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
-            out_f[O_MULT] = math.nan
-            _sliding_window(M, win)
-            return ST_SLIDING, 0, k
         if neutral_end > 0:
-            # near a neutral orbit found by Newton the motion runs on: the certificate
-            # (every CERTIFY_EVERY periods) or the running average may still answer;
-            # otherwise the orbit does, with the motion's mean over the last window
+            # near a neutral orbit found by Newton the motion runs on: the running
+            # average may still answer; otherwise the orbit does, with the motion's mean
+            # over the last window
             if k == neutral_end - NEUTRAL_WINDOW:
                 neutral_from[:] = acc
             if k == neutral_end:
@@ -359,8 +355,8 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
         if orbit_slides(M, orbit_ok, ys, yds, es):
             status, period, k = _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f)
         else:
-            status, period, k = _run(z, M, orbit_ok, ys, yds, es, max_periods, min_periods,
-                                     tol_state, tol_mean, max_events, count, win, out_f)
+            status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
+                                     max_events, count, win, out_f)
     # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
     _finish(status, period, k, z, count, win, M, beta, eta if a != 0.0 else 0.0, out_f, out_i)
 

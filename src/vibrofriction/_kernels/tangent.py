@@ -38,7 +38,6 @@ from .jit import jit
 from .period import (
     C_DEGENERATE,
     C_EVENTS,
-    N_ACC,
     accumulate,
     elapsed,
     stop_integration,
@@ -248,4 +247,4 @@ def period_map_tangent(y, xd, e, ph, p, M, max_events, J, G, acc):
             smooth)
 
 
-__all__ = ["N_ACC", "advance_period_tangent", "period_map_tangent", "segment_flow"]
+__all__ = ["advance_period_tangent", "period_map_tangent", "segment_flow"]
