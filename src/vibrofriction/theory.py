@@ -41,13 +41,21 @@ from .schema import POSITIVE, Range
 from .validation import as_float_or_array, checked, validated
 
 __all__ = [
+    "INPLANE_ON",
     "SOFT_EXPONENT",
+    "Cancellation",
+    "InplaneStatic",
     "Liftoff",
     "SteadySliding",
     "critical_inertial_velocity",
     "critical_velocity",
     "critical_velocity_soft",
     "critical_velocity_stiff",
+    "inplane_cancellation",
+    "inplane_critical_velocity",
+    "inplane_static_mu_ratio",
+    "kinematic_mu_longitudinal",
+    "kinematic_mu_transverse",
     "liftoff_phases",
     "mean_normal_force",
     "mu_ratio_soft",
@@ -592,3 +600,207 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     v = _valid("vbar", vbar, _ANY_VBAR)
     a = _valid("amplitude", amplitude, _NO_JUMPING)
     return as_float_or_array(np.vectorize(_stiff_exact, otypes=[float])(v, a))
+
+
+# --------------------------------------------------------------------------- in-plane
+#: Where the in-plane oscillation is imposed (docs/inplane.md).
+INPLANE_ON = ("substrate", "holder")
+
+
+def _inplane_on(inplane_on: str) -> str:
+    if inplane_on not in INPLANE_ON:
+        raise ValueError(f"inplane_on must be one of {INPLANE_ON}, got {inplane_on!r}")
+    return inplane_on
+
+
+def kinematic_mu_longitudinal(v: ArrayLike, a_x: ArrayLike) -> FloatOrArray:
+    r"""Kinematic law of a rigid body, oscillation along the sliding direction (docs/inplane.md).
+
+    The body moves at the constant velocity ``v`` against a substrate whose velocity
+    is ``-a_x sin(theta)``; friction ``-sign(v + a_x sin theta)`` averages to
+
+    .. math:: \frac{\mu}{\mu_0} = \frac{2}{\pi}\arcsin\frac{v}{a_x}, \quad |v| < a_x,
+
+    and ``sign(v)`` for ``|v| >= a_x``.  Any unit, as long as ``v`` and ``a_x`` (the
+    vibration-velocity amplitude ``omega du_x``) share it; ``v`` is signed.
+    """
+    v = checked("v", v)
+    a_x = checked("a_x", a_x, minimum=0.0)
+    v, a_x = np.broadcast_arrays(v, a_x)
+    r = np.array(np.sign(v), dtype=float)
+    np.divide(v, a_x, out=r, where=np.abs(v) < a_x)
+    return as_float_or_array(2.0 / np.pi * np.arcsin(np.clip(r, -1.0, 1.0)))
+
+
+def kinematic_mu_transverse(v: ArrayLike, a_y: ArrayLike) -> FloatOrArray:
+    r"""Kinematic law of a rigid body, oscillation across the sliding direction.
+
+    The slip velocity is ``(v, a_y sin theta)``; isotropic friction opposes it, so its
+    component along the sliding is ``v/sqrt(v^2 + a_y^2 sin^2 theta)``, whose mean is
+
+    .. math:: \frac{\mu}{\mu_0} = \frac{2}{\pi}\frac{K(m)}{\sqrt{1 + \epsilon^2}}, \quad
+              \epsilon = \frac{a_y}{v}, \quad m = \frac{\epsilon^2}{1 + \epsilon^2},
+
+    ``K(m) = int_0^{pi/2} (1 - m sin^2)^{-1/2}`` with the parameter ``m``
+    (``scipy.special.ellipk``).  No critical velocity: ``mu < mu0`` at every ``v``;
+    ``-> 1 - eps^2/4`` for large ``v``, ``(2/pi)(|v|/a_y) ln(4 a_y/|v|)`` for small.
+    """
+    from scipy.special import ellipk
+
+    v = checked("v", v)
+    a_y = checked("a_y", a_y, minimum=0.0)
+    v, a_y = np.broadcast_arrays(v, a_y)
+    av = np.abs(v)
+    # m = a_y^2/(v^2 + a_y^2), 1/sqrt(1 + eps^2) = |v|/sqrt(v^2 + a_y^2), with 0/0 -> 0
+    norm = np.hypot(av, a_y)
+    m = np.zeros(v.shape)
+    np.divide(a_y**2, norm**2, out=m, where=norm > 0)
+    scale = np.zeros(v.shape)
+    np.divide(av, norm, out=scale, where=norm > 0)
+    with np.errstate(invalid="ignore"):
+        law = 2.0 / np.pi * ellipk(np.minimum(m, 1.0)) * scale
+    law = np.where(av == 0.0, 0.0, law)  # K(1) = inf times 0
+    return as_float_or_array(np.sign(v) * law)
+
+
+def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
+                     zeta: NDArray[np.float64], eta: NDArray[np.float64], on: str):
+    """``P``, the contact's slip compliance ``1/(k(1 + i eta_c))``, the contact
+    impedance ``k + i c`` (0 for rigid: then unused) and the in-plane forcing ``G``
+    times ``P`` (substrate: ``-P``; holder: ``alpha + i gamma``)."""
+    gamma = 2.0 * zeta * np.sqrt(alpha)
+    p = (alpha - 1.0) + 1j * gamma
+    rigid = np.isinf(beta)
+    k = np.where(rigid, 1.0, beta - alpha)
+    eta = np.where(rigid, 0.0, eta)
+    slip_compliance = np.where(rigid, 0.0, 1.0 / (k * (1.0 + 1j * eta)))
+    impedance = k * (1.0 + 1j * eta)
+    gp = -p if on == "substrate" else alpha + 1j * gamma
+    return p, slip_compliance, impedance, gp, rigid
+
+
+def inplane_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                              a_x: ArrayLike, phase_x: ArrayLike, zeta: ArrayLike = 0.0,
+                              eta_c: ArrayLike = 0.0,
+                              inplane_on: str = "substrate") -> FloatOrArray:
+    r"""Critical inertial velocity of continuous sliding, normal + longitudinal oscillation.
+
+    In permanent forward slip (``f = n = 1 + a cos tau``, ``a <= 1``) the contact
+    point's slip velocity relative to the substrate is ``V`` plus a harmonic
+    (docs/inplane.md),
+
+    .. math:: w = V - \mathrm{Re}\big(i e^{i\tau}\,[a B - a_x G e^{i\phi_x}]\big),\quad
+              B = \frac1P + \frac{1}{k(1 + i\eta_c)},\quad P = \alpha - 1 + i\gamma,
+
+    ``G = -1`` (substrate) or ``(alpha + i gamma)/P`` (holder), ``gamma = 2 zeta
+    sqrt(alpha)``, ``k = beta - alpha``.  It never reaches 0 iff ``V >= V_c`` with
+
+    .. math:: V_c = |a B - a_x G e^{i\phi_x}|.
+
+    ``a_x = 0`` gives :func:`critical_inertial_velocity`.  For ``V < 0`` (backward
+    sliding) the condition is ``|V| >= V_c(phase_x + pi)``.  ``inf`` at an undamped
+    resonance ``alpha = 1`` unless the holder's forcing cancels the normal one there.
+    """
+    on = _inplane_on(inplane_on)
+    alpha, beta, a, zeta, eta = validated(
+        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
+        ranges={"alpha": _SOFT_LIMIT}).values()
+    a_x = checked("a_x", a_x, minimum=0.0)
+    phase = checked("phase_x", phase_x)
+    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)
+    # a B - a_x G e^{i phi} = N / P + a / (k (1 + i eta_c)), N = a - a_x (G P) e^{i phi}
+    num = a - a_x * gp * np.exp(1j * phase)
+    num, p, rest = np.broadcast_arrays(num, p, a * slip_compliance)
+    resonant = np.zeros(num.shape, dtype=complex)
+    np.divide(num, p, out=resonant, where=p != 0)
+    total = np.abs(resonant + rest)
+    total = np.where((p == 0) & (num != 0), np.inf, total)
+    return as_float_or_array(total)
+
+
+class Cancellation(NamedTuple):
+    """Where the normal and longitudinal oscillations cancel in the sliding velocity."""
+
+    #: ``phase_x`` in ``[0, 2 pi)`` at which ``V_c`` is smallest, ``| a|B| - a_x|G| |``;
+    #: they add (``V_c = a|B| + a_x|G|``) at ``phase_x + pi``.
+    phase_x: FloatOrArray
+    #: The ``a_x = a|B|/|G|`` at which ``V_c = 0`` there (``mu = mu0`` at every ``V > 0``).
+    a_x: FloatOrArray
+
+
+def inplane_cancellation(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                         zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0,
+                         inplane_on: str = "substrate") -> Cancellation:
+    r"""Phase and amplitude at which the longitudinal oscillation cancels the normal one.
+
+    ``V_c^2 = a^2|B|^2 + a_x^2|G|^2 - 2 a a_x |B||G| cos(phase_x - arg B + arg G)``
+    (:func:`inplane_critical_velocity`), so the phase of cancellation is
+    ``arg B - arg G`` (mod ``2 pi``) and ``V_c`` vanishes there for ``a_x = a|B|/|G|``.
+    Undamped, ``B`` and ``G`` are real: the phase is 0 or ``pi``.  At an undamped
+    resonance (``P = 0``) ``B`` and ``G`` are both infinite and their ratio ``1/(alpha +
+    i gamma)`` (holder) sets the phase; the substrate cannot cancel it (``a_x = inf``).
+    """
+    on = _inplane_on(inplane_on)
+    alpha, beta, a, zeta, eta = validated(
+        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
+        ranges={"alpha": _SOFT_LIMIT}).values()
+    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)
+    # B/G = (1 + P/(k(1 + i eta_c))) / (G P): finite also at P = 0
+    bp = 1.0 + p * slip_compliance
+    ratio = np.full(np.broadcast(bp, gp).shape, np.inf, dtype=complex)
+    np.divide(bp, gp, out=ratio, where=gp != 0)
+    phase = np.mod(np.angle(ratio), 2.0 * np.pi)
+    amp = a * np.abs(ratio)
+    amp = np.where(np.isinf(np.abs(ratio)) & (a == 0), 0.0, amp)
+    return Cancellation(as_float_or_array(phase), as_float_or_array(amp))
+
+
+class InplaneStatic(NamedTuple):
+    """Range of mean forces a stuck contact can hold (``mu/mu0``, ``V -> 0+`` and ``0-``)."""
+
+    #: ``mu(V -> 0+)/mu0 = 1 - |a + Q|``: the largest mean force of a permanent stick.
+    upper: FloatOrArray
+    #: ``mu(V -> 0-)/mu0 = -(1 - |a - Q|)``: the most negative one.
+    lower: FloatOrArray
+
+
+def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                            a_x: ArrayLike, phase_x: ArrayLike, zeta: ArrayLike = 0.0,
+                            eta_c: ArrayLike = 0.0,
+                            inplane_on: str = "substrate") -> InplaneStatic:
+    r"""Static friction under normal + longitudinal oscillation, compliant contact.
+
+    With the contact stuck through the whole cycle the system is linear: the contact
+    force is ``F + Re(F^ e^{i tau})``, ``F`` the mean (the measured friction force),
+    ``F^ = -Q``, ``Q = a_x T e^{i phase_x}`` with (docs/inplane.md)
+
+    .. math:: T = \frac{(k + i c)\,P}{P + k + i c}\ \text{(substrate)},\qquad
+              T = -\frac{(k + i c)(\alpha + i\gamma)}{P + k + i c}\ \text{(holder)},
+
+    ``c = eta_c k``, ``P = alpha - 1 + i gamma``; rigid contact: ``T = P`` or
+    ``-(alpha + i gamma)``.  ``|f| <= n`` through the cycle iff
+    ``-1 + |a - Q| <= F <= 1 - |a + Q|``; the body creeping at ``V -> 0+`` raises ``F``
+    to the upper bound, so ``mu(0+)/mu0 = 1 - |a + Q|`` and ``mu(0-)/mu0 =
+    -(1 - |a - Q|)``.  Quasi-statically (``alpha, beta -> 0``: a heavy body) ``T = k``
+    and a pure in-plane oscillation gives ``1 - k a_x`` (the intrinsic length
+    ``1/k``, i.e. ``mu0 F_N0/k_xc``).  ``nan`` where no permanent stick exists
+    (``|a + Q| + |a - Q| > 2``, or ``a > 1``): the contact slips in every cycle.
+    Valid where the stuck orbit is the attractor (damping; the solver is the judge).
+    """
+    on = _inplane_on(inplane_on)
+    alpha, beta, a, zeta, eta = validated(
+        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
+        ranges={"alpha": _SOFT_LIMIT}).values()
+    a_x = checked("a_x", a_x, minimum=0.0)
+    phase = checked("phase_x", phase_x)
+    p, _, impedance, gp, rigid = _inplane_factors(alpha, beta, zeta, eta, on)
+    # T = -(k + i c) G P / (P + k + i c); rigid: -G P
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = np.where(rigid, -gp, -impedance * gp / (p + impedance))
+    with np.errstate(invalid="ignore"):  # T = inf at an undamped beta = 1
+        q = np.where(a_x == 0.0, 0.0, a_x * t * np.exp(1j * phase))
+        plus, minus = np.abs(a + q), np.abs(a - q)
+    ok = (plus + minus <= 2.0) & (a <= 1.0)
+    upper = np.where(ok, 1.0 - plus, np.nan)
+    lower = np.where(ok, minus - 1.0, np.nan)
+    return InplaneStatic(as_float_or_array(upper), as_float_or_array(lower))
