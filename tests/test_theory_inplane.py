@@ -228,12 +228,12 @@ def test_quasi_static_static_friction_is_one_minus_the_cone_shift(q, a, phase):
     k = 1e-5  # heavy limit: alpha, beta -> 0, T -> k
     upper, lower = theory.inplane_static_mu_ratio(0.0, k, a, q / k, phase)
     assert upper == pytest.approx(1.0 - abs(a + q * np.exp(1j * phase)), abs=2e-5)
-    assert upper == pytest.approx(_quasi_static_static(q, a, phase), abs=1e-3)
+    assert upper == pytest.approx(_quasi_static_static(q, a, phase), abs=2e-4)  # O(k V)
 
 
 def test_quasi_static_pure_inplane_oscillation_above_the_intrinsic_length():
     # k a_x > 1: the contact slips both ways every cycle, the loop is symmetric: mu(0+) -> 0
-    assert abs(_quasi_static_static(1.5, 0.0, 0.0)) < 2e-3
+    assert abs(_quasi_static_static(1.5, 0.0, 0.0)) < 1e-4
     assert math.isnan(theory.inplane_static_mu_ratio(0.0, 1e-5, 0.0, 1.5e5, 0.0).upper)
 
 
