@@ -33,7 +33,7 @@ Rows = list[tuple[str, str]]
 @numba.njit(cache=True)
 def _moreau(alpha, zeta, a, V, a_x, phase_x, a_y, phase_y, holder, steps, settle, periods):
     """Mean ``<f_x>/<n>`` and ``<f_y>/<n>`` of the rigid-contact model over ``periods``
-    after ``settle`` periods; start: body at rest at the spring's mean stretch."""
+    after ``settle`` periods; start: steady sliding (spring stretched by 1, ``x' = V``)."""
     dt = 2.0 * math.pi / steps
     gamma = 2.0 * zeta * math.sqrt(alpha)
     x = -1.0 / alpha if alpha > 0 else 0.0

@@ -84,9 +84,10 @@ def _harmonic(tau, g):
     return c, float(np.max(np.abs(g - fit)))
 
 
-def _slip_velocity_amplitude(alpha, beta, a, zeta, eta_c, a_x, phase, on):
-    """Integrate permanent forward slip (f = n) to its periodic state and return the
-    amplitude of the oscillating part of the slip velocity w - V, from its minimum."""
+def _slip_velocity_amplitude(alpha, beta, a, zeta, eta_c, a_x, phase, on, sign=1.0):
+    """Integrate permanent slip (f = sign n; forward for sign = 1) to its periodic state
+    and return the amplitude of the oscillating part of the slip velocity w - V, from its
+    extreme value towards a reversal and from its first harmonic."""
     gamma = 2.0 * zeta * math.sqrt(alpha)
     k = beta - alpha
     rigid, relaxing = math.isinf(beta), (not math.isinf(beta)) and eta_c > 0
@@ -97,7 +98,7 @@ def _slip_velocity_amplitude(alpha, beta, a, zeta, eta_c, a_x, phase, on):
         return (alpha * a_x * np.cos(tau + phase) - gamma * a_x * np.sin(tau + phase))
 
     def rhs(tau, z):
-        n = 1.0 + a * np.cos(tau)
+        n = sign * (1.0 + a * np.cos(tau))
         acc = -gamma * z[1] - alpha * z[0] - n + forcing(tau)
         if relaxing:
             return [z[1], acc, (n / k - z[2]) / eta_c]
@@ -107,20 +108,20 @@ def _slip_velocity_amplitude(alpha, beta, a, zeta, eta_c, a_x, phase, on):
     z0 = _periodic(rhs, dim)
 
     def slip(tau, z):  # w - V = y' - e' - (substrate velocity)
-        n = 1.0 + a * np.cos(tau)
+        n = sign * (1.0 + a * np.cos(tau))
         if rigid:
             e_dot = 0.0
         elif relaxing:
             e_dot = (n / k - z[2]) / eta_c
         else:
-            e_dot = -a * np.sin(tau) / k
+            e_dot = -sign * a * np.sin(tau) / k
         sub = -a_x * np.sin(tau + phase) if on == "substrate" else 0.0
         return z[1] - e_dot - sub
 
     tau, w = _sampled(rhs, z0, slip)
     c, residual = _harmonic(tau, w)
     assert abs(np.mean(w)) < 1e-9 and residual < 1e-9  # V plus a pure harmonic
-    return -float(np.min(w)), abs(c)
+    return -float(np.min(sign * w)), abs(c)
 
 
 CRITICAL_POINTS = [
@@ -145,6 +146,15 @@ def test_inplane_critical_velocity_is_the_amplitude_of_the_sliding_solution(poin
     vc = theory.inplane_critical_velocity(alpha, beta, a, a_x, phase, zeta, eta_c, on)
     assert vc == pytest.approx(amp, rel=1e-8, abs=1e-10)
     assert vc == pytest.approx(low, rel=2e-6)  # the sampled minimum of the harmonic
+
+
+@pytest.mark.parametrize("point", CRITICAL_POINTS[:6])
+def test_backward_sliding_needs_the_critical_velocity_of_the_opposite_phase(point):
+    alpha, beta, a, zeta, eta_c, a_x, phase, on = point
+    low, amp = _slip_velocity_amplitude(alpha, beta, a, zeta, eta_c, a_x, phase, on, -1.0)
+    vc = theory.inplane_critical_velocity(alpha, beta, a, a_x, phase + math.pi, zeta, eta_c,
+                                          on)
+    assert vc == pytest.approx(amp, rel=1e-8) and vc == pytest.approx(low, rel=2e-6)
 
 
 def test_zero_inplane_amplitude_gives_the_normal_only_critical_velocity():
