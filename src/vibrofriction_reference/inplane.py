@@ -80,7 +80,10 @@ _STICK, _SLIP, _FLIGHT = 0, 1, 2
 _DELTA = 1e-7
 """Jenkins contact, ``a > 1``: each contact arc is shortened by this at both ends."""
 _MARGIN = 1e-12
-"""Jenkins slip -> stick: the spring is set to ``|k e| = (1 - _MARGIN) n``, inside the cone."""
+"""At a switch the new phase starts this (relative) distance inside its domain."""
+_VIOLATION = 1e-8
+"""A step end this far outside its phase's domain (``n - |f|`` in stick, the slip speed in
+slip) means an event was missed: RuntimeError."""
 _N_STATE = 11
 # state: 0,1 y; 2,3 v; 4,5 e (or d in Jenkins slip); 6 I_fx; 7 I_fy; 8 I_n; 9 W_in; 10 D
 
@@ -317,11 +320,39 @@ class _Model:
             z[4] = z[5] = 0.0
         return _FLIGHT, z
 
+    def _viscous_to(self, t, z, size):
+        """``e`` moved along ``F`` so that ``|F| = size`` (a change of order ``1e-12 n/k``)."""
+        z = z.copy()
+        _, _, _, _, vsx, vsy = self.drive(t)
+        Fx = self.k * z[4] + self.c * (z[2] - vsx)
+        Fy = self.k * z[5] + self.c * (z[3] - vsy)
+        F = math.hypot(Fx, Fy)
+        z[4] += (size - F) * Fx / (F * self.k)
+        z[5] += (size - F) * Fy / (F * self.k)
+        return z
+
     def switch(self, phase, t, z):
-        """The phase after the terminal event of ``phase`` at ``t``."""
+        """The phase after the terminal event of ``phase`` at ``t``.
+
+        The new phase starts strictly inside its domain (``|F|`` or ``|k e|`` a relative
+        ``_MARGIN`` away from ``n``): an event function that started at a round-off zero
+        on the wrong side would miss its next root if that fell in the first step (a
+        stick across a force reversal shorter than one step).
+        """
+        n = self.n(t)
         if phase == _STICK:
-            return _SLIP, (z if self.viscous else self._jenkins_to_slip(t, z))
-        return _STICK, (z if self.viscous else self._jenkins_to_stick(t, z))
+            if self.viscous:
+                return _SLIP, self._viscous_to(t, z, n * (1.0 + _MARGIN))
+            return _SLIP, self._jenkins_to_slip(t, z)
+        if self.viscous:
+            return _STICK, self._viscous_to(t, z, n * (1.0 - _MARGIN))
+        return _STICK, self._jenkins_to_stick(t, z)
+
+
+def _stick_load(model: _Model, t: float, z: np.ndarray) -> float:
+    """``|f|`` in stick (the load the cone must carry)."""
+    fx, fy = model.contact_force(_STICK, t, z)[:2]
+    return math.hypot(fx, fy)
 
 
 def _initial(initial, model: _Model) -> np.ndarray:
@@ -396,7 +427,9 @@ def inplane_run(
 
     ``alpha_y``, ``zeta_y`` default to ``alpha``, ``zeta``.  ``beta`` must be finite
     (a rigid contact is not covered), ``a = 1`` with ``eta_c = 0`` and ``a_y > 0`` is
-    refused.  More than ``max_events_per_period`` stick/slip switches in one period raise
+    refused.  A step end outside its phase's domain (stick with ``|f| > n``, slip with a
+    negative slip speed) by more than 1e-8 raises RuntimeError (an event was missed: two
+    switches inside one step).  More than ``max_events_per_period`` stick/slip switches in one period raise
     RuntimeError (chatter).  The step is capped at ``1/steps_per_fastest_period`` of the
     fastest natural period (``2 pi / max(1, sqrt(alpha), sqrt(alpha_y), sqrt(beta))``).
     """
@@ -442,8 +475,18 @@ def inplane_run(
             counters["nfev"] += sol.nfev
             if phase != _FLIGHT:
                 for j in range(sol.y.shape[1]):
-                    fx, fy = model.contact_force(phase, sol.t[j], sol.y[:, j])[:2]
+                    fx, fy, _, _, lam = model.contact_force(phase, sol.t[j], sol.y[:, j])
                     excess = max(excess, math.hypot(fx, fy) - model.n(sol.t[j]))
+                    if phase == _STICK:
+                        g = (model.n(sol.t[j]) - _stick_load(model, sol.t[j], sol.y[:, j]))
+                    else:
+                        g = lam
+                    if g < -_VIOLATION:
+                        raise RuntimeError(
+                            f"missed event: {'stick' if phase == _STICK else 'slip'} "
+                            f"outside its domain by {-g:.3g} at tau={sol.t[j]:.9g} (two "
+                            "switches inside one step?); lower steps_per_fastest_period's "
+                            "step cap or rtol")
             if sol.status == 1:
                 t_new = float(sol.t_events[0][0])
                 z = sol.y_events[0][0].copy()
