@@ -41,7 +41,7 @@ def _bar(fun, *args, **kw):
 
 @pytest.mark.parametrize("p", ONE_D, ids=[p[-1] for p in ONE_D])
 def test_zero_inplane_amplitude_is_the_1d_peer_a(p):
-    """Measured differences (2026-11-27): 7e-12 to 1.3e-10."""
+    """Measured differences: 2.4e-12 to 8.6e-11 (benchmarks/inplane_reference_numbers.py)."""
     alpha, beta, a, V, zeta, eta, _ = p
     kw = {"zeta": zeta, "eta_c": eta}
 
@@ -103,19 +103,23 @@ def test_kinematic_laws_of_a_body_with_imposed_velocity(mode, direction, eta_c):
     ``eps = a_y/V``, ``m = eps^2/(1 + eps^2)`` (the imaginary-modulus transformation),
     ``lateral 0`` by symmetry.
 
-    The model approaches it when the springs' deflection under the friction force,
-    ``1/alpha + 1/k`` (pin and contact in series, lengths in ``mu0 F_N0/(m omega^2)``), is
-    small against the vibration amplitude, the pin's resonance ``sqrt(alpha)`` is far
-    above the drive and its ringing is damped (``zeta = 0.7``).  Test point: ``a_x`` (or
-    ``a_y``) ``= 5``, ``alpha = S, k = S``, so the ratio is ``0.4/S``.  Tolerance: the
-    ratio itself at ``S = 100`` (0.004; measured errors 5e-5 to 3.1e-4), and the error
-    must fall at least twice when ``S`` is four times larger (measured: 4-13 times), so
-    that the agreement is the limit, not a coincidence."""
+    The model approaches it when the springs' deflections are small against the vibration
+    amplitude ``A``: ``r = (F_pin/alpha + 1/k)/A`` with lengths in ``mu0 F_N0/(m
+    omega^2)``, ``F_pin`` the pin's force amplitude (the friction, 1, on a substrate; on the
+    holder also the force that shakes the body, ``A``: the body's acceleration amplitude
+    is ``A`` in these units), with the pin's resonance ``sqrt(alpha)`` far above the drive
+    and its ringing damped (``zeta = 0.7``).  Test point: ``A = 5``, ``alpha = S, k = S``:
+    ``r = 0.4/S`` (substrate), ``1.4/S`` (holder).  Tolerance: ``r`` at ``S = 100`` (0.004,
+    0.014; measured errors 5e-5 to 3.1e-4 and 2.1e-3 to 3.6e-3,
+    ``benchmarks/inplane_reference_numbers.py``), and the error must fall at least twice
+    when ``S`` is four times larger (measured: 4 to 13 times), so that the agreement is the
+    limit, not a coincidence."""
     amp, V = 5.0, (2.5 if direction == "x" else 5.0)
     kw = {"a_x": amp} if direction == "x" else {"a_y": amp}
     law = _longitudinal(V, amp) if direction == "x" else _transverse(V, amp)
     err = [_kinematic_error(S, V, law, eta_c, inplane_on=mode, **kw) for S in (100.0, 400.0)]
-    assert err[0] < 0.4 / 100.0, err
+    r = (1.0 + (amp if mode == "holder" else 0.0) + 1.0) / (100.0 * amp)
+    assert err[0] < r, err
     assert err[1] < 0.5 * err[0], err
 
 

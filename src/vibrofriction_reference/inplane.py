@@ -429,9 +429,10 @@ def inplane_run(
     (a rigid contact is not covered), ``a = 1`` with ``eta_c = 0`` and ``a_y > 0`` is
     refused.  A step end outside its phase's domain (stick with ``|f| > n``, slip with a
     negative slip speed) by more than 1e-8 raises RuntimeError (an event was missed: two
-    switches inside one step).  More than ``max_events_per_period`` stick/slip switches in one period raise
-    RuntimeError (chatter).  The step is capped at ``1/steps_per_fastest_period`` of the
-    fastest natural period (``2 pi / max(1, sqrt(alpha), sqrt(alpha_y), sqrt(beta))``).
+    switches inside one step).  More than ``max_events_per_period`` stick/slip switches in
+    one period raise RuntimeError (chatter).  The step is capped at
+    ``1/steps_per_fastest_period`` of the fastest natural period (``2 pi / max(1,
+    sqrt(alpha), sqrt(alpha_y), sqrt(beta))``).
     """
     alpha, beta, a, V = check_parameters(alpha, beta, amplitude, V)
     zeta, eta_c = check_damping(zeta, eta_c)
