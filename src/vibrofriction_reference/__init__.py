@@ -52,6 +52,11 @@ a rigid contact).  Peer A adds ``e`` to its state when ``eta_c > 0`` and the eve
 ``tests/test_reference_damped.py``: the peers agree to 2e-9-2e-7 on ten damped points of
 every regime, peer B's history closes the energy balance at second order.
 
+The in-plane oscillation of issue 20 (a 2-D tangential plane, the substrate or the holder
+oscillating along and across the sliding direction): :func:`inplane_run` and
+:func:`inplane_mean` (:mod:`.inplane`, ``solve_ivp`` phase by phase with events, written
+from the model statement of ``docs/inplane_reference.md``; a finite contact only).
+
 Neither peer detects a periodic orbit: each averages over a fixed window after a
 fixed transient, from a stated initial state. Compare them (and the main
 solver) at the same transient/average windows when checking discretisation
@@ -70,14 +75,19 @@ from .fixed_step import (
     return_mapping_mu,
     return_mapping_periods,
 )
+from .inplane import InplaneMean, InplaneRun, inplane_mean, inplane_run
 from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
 
 __all__ = [
     "INITIAL_REST",
     "INITIAL_SLIDING",
+    "InplaneMean",
+    "InplaneRun",
     "PeerRun",
     "PeriodMeans",
     "ReferenceHistory",
+    "inplane_mean",
+    "inplane_run",
     "return_mapping_history",
     "return_mapping_mu",
     "return_mapping_periods",
