@@ -89,22 +89,42 @@ def test_a_model_error_is_not_turned_into_a_chi_square(monkeypatch):
     def broken(*args, **kwargs):
         raise ValueError("a programming error")
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.predict_cof", broken)
+    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", broken)
     with pytest.raises(ValueError, match="a programming error"):
         _problem(data).residual(np.array([math.log(0.3)]))
+    with pytest.raises(ValueError, match="a programming error"):  # the global stage's call
+        _problem(data).costs(np.full((1, 3), math.log(0.3)), map_=_serial, chunks=2)
+
+
+def _serial(func, items):
+    return [func(item) for item in items]
+
+
+def test_a_generation_costs_what_its_members_cost_one_by_one():
+    """The global stage's vectorised call (a generation's rows solved together, split
+    into interleaved tasks) gives each member the chi-square of its own evaluation, a
+    member outside the model's domain included."""
+    data = synthetic(TRUE, (0.3e-6, 0.9e-6), np.random.default_rng(3), n=5)
+    problem = _problem(data)
+    members = np.array([[math.log(0.3), math.log(0.2), math.log(0.45), -1e4]])  # exp: 0
+    costs = problem.costs(members, map_=_serial, chunks=3)
+    one_by_one = [problem.cost(x) for x in members.T]
+    assert np.array_equal(costs, one_by_one)
+    assert costs[0] < costs[1] and costs[0] < costs[2]
 
 
 def test_penalised_rows_are_counted_and_make_the_fit_poor(monkeypatch):
     """A model whose solver never trusts the slowest velocity of the table: the two rows
     there are penalised wherever the fit goes, counted at the best fit and in the verdict."""
     data = synthetic(TRUE, (0.3e-6, 0.9e-6), np.random.default_rng(3), n=4)
-    real = predict_cof
+    real = solve_points
 
-    def untrusted_at_the_slowest(system, v0, *args, **kwargs):
-        out = real(system, v0, *args, **kwargs)
-        return np.where(v0 == v0.min(), np.nan, out)
+    def untrusted_at_the_slowest(alpha, beta, a, v_inertial, *args, **kwargs):
+        out = real(alpha, beta, a, v_inertial, *args, **kwargs)
+        out["trusted"] = out["trusted"] & (v_inertial != np.min(v_inertial))
+        return out
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.predict_cof", untrusted_at_the_slowest)
+    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", untrusted_at_the_slowest)
     res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False,
                  global_stage=False)
     assert res.penalised == {"untrusted": 2, "outside the model's domain": 0}

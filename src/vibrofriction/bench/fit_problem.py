@@ -113,13 +113,28 @@ class _Problem:
         """The residuals, and the counts of rows penalised (:meth:`penalty`) because the
         parameters leave the model's domain (every row) or the solver's value is not
         trusted."""
-        d = self.data
+        points = self.points(ln)
+        if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
+            return self.penalty(), len(self.data), 0
+        return self._residuals(points[0], _solve_points(points[1:] + (self.settings,)))
+
+    def points(self, ln: NDArray[np.float64]) -> tuple | None:
+        """``(mu0, alpha, beta, a, V, zeta, eta_c)`` of every row at ``ln`` (eq. 20), or
+        None where the parameters leave the model's domain."""
         values = self.values(ln)
-        if not _in_domain(values):  # e.g. exp overflow, or k_x + k_xc == k_x in floats
-            return self.penalty(), len(d), 0
-        model = predict_cof(Physical(**values), d["v0"].to_numpy(), d["du_z"].to_numpy(),
-                            d["omega"].to_numpy(), self.settings)
-        r = (model - d["cof"].to_numpy()) / self._scale()
+        if not _in_domain(values):
+            return None
+        system, d = Physical(**values), self.data
+        groups = system.groups(d["du_z"].to_numpy(), d["omega"].to_numpy())
+        return (system.mu0, *groups[:3], system.v0_to_inertial(d["v0"].to_numpy(),
+                                                                d["omega"].to_numpy()),
+                *groups[3:])
+
+    def _residuals(self, mu0: float, solved: tuple[NDArray, NDArray]
+                   ) -> tuple[NDArray[np.float64], int, int]:
+        mu_ratio, trusted = solved
+        model = mu0 * np.where(trusted, mu_ratio, np.nan)
+        r = (model - self.data["cof"].to_numpy()) / self._scale()
         bad = np.isnan(r)
         return np.where(bad, self.penalty(), r), 0, int(bad.sum())
 
@@ -129,6 +144,34 @@ class _Problem:
     def cost(self, ln: NDArray[np.float64]) -> float:
         r = self.residual(ln)
         return float(r @ r)
+
+    def costs(self, population: NDArray[np.float64], map_, chunks: int) -> NDArray[np.float64]:
+        """:meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
+        :func:`scipy.optimize.differential_evolution`'s vectorised call), the rows of all
+        members solved together in ``chunks`` interleaved tasks of ``map_`` (each point
+        depends only on its own parameters, so the costs are those of :meth:`cost`)."""
+        members = [self.points(x) for x in np.asarray(population, dtype=float).T]
+        inside = [p for p in members if p is not None]
+        out = np.empty(len(members))
+        if inside:
+            columns = [np.concatenate([p[j] for p in inside]) for j in range(1, 7)]
+            size = columns[0].size
+            parts = [np.arange(i, size, chunks) for i in range(min(chunks, size))]
+            mu_ratio, trusted = np.empty(size), np.zeros(size, dtype=bool)
+            tasks = [tuple(c[idx] for c in columns) + (self.settings,) for idx in parts]
+            for idx, (m, t) in zip(parts, map_(_solve_points, tasks), strict=True):
+                mu_ratio[idx], trusted[idx] = m, t
+        rows, start = len(self.data), 0
+        for i, p in enumerate(members):
+            if p is None:
+                r = self.penalty()
+            else:
+                part = slice(start, start + rows)
+                r = self._residuals(p[0], (mu_ratio[part], trusted[part]))[0]
+                start += rows
+            out[i] = r @ r
+        return out
+
 
     def coarse(self) -> _Problem:
         """The same problem on every other row of a table of at least
@@ -141,6 +184,14 @@ class _Problem:
     def weighted(self) -> bool:
         """Residuals divided by the measured ``sigma`` (given on every row)."""
         return bool(np.all(np.isfinite(self.data["sigma"].to_numpy())))
+
+
+def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
+    """``mu_ratio`` and ``trusted`` at the points of ``task`` (six group arrays and the
+    settings): a pool task of :meth:`_Problem.costs`."""
+    *groups, settings = task
+    out = solve_points(*groups, settings=settings)
+    return out["mu_ratio"], out["trusted"]
 
 
 def _in_domain(values: dict[str, float]) -> bool:

@@ -8,6 +8,7 @@ import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 import lmfit
@@ -22,6 +23,9 @@ STARTS = 4
 #: Model evaluations per varied parameter (plus one) that a local least-squares run may
 #: spend: a start that crawls along a kinked valley does not win.
 LOCAL_BUDGET = 60
+#: Tasks per process of a generation of the global stage (:meth:`_Problem.costs`): the
+#: cost of a point varies tenfold, so a few interleaved tasks each even the load out.
+CHUNKS = 4
 
 
 @dataclass
@@ -65,8 +69,8 @@ def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _S
         last = attempt == 1
         with stages.timed("global") as row:
             de = _global_stage(coarse, bounds, x0, maxiter, popsize, seed + attempt,
-                               de_workers, progress)
-            row["evaluations"] = int(de.nfev)
+                               de_workers, progress, first)
+            row["evaluations"] = int(de.nfev) * (1 if de_workers == 1 else len(de.population))
         starts = _distinct_starts(de, x0, STARTS)
         if not last and _poor(coarse, float(de.fun)):
             deferred = starts
@@ -85,19 +89,25 @@ def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _S
 
 
 def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
-                  seed: int, workers, progress: bool):
+                  seed: int, workers, progress: bool, cores: int = 1):
     """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
-    that includes the guess."""
+    that includes the guess; ``workers``: 1 (in this process) or the pool's map over
+    ``cores`` processes, to which each generation goes at once (:meth:`_Problem.costs`:
+    one task per member would cost a pickled problem and a round trip each, and left
+    the second core idle half the time)."""
     from scipy.optimize import differential_evolution
     from tqdm.auto import tqdm
 
+    if workers == 1:
+        cost, how = problem.cost, {"updating": "immediate"}
+    else:  # a generation's members solved together, in CHUNKS tasks per worker
+        cost = partial(problem.costs, map_=workers, chunks=CHUNKS * cores)
+        how = {"updating": "deferred", "vectorized": True}
     with tqdm(total=maxiter, desc="fit: global stage", unit="gen",
               disable=not progress) as bar:
         return differential_evolution(
-            problem.cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed,
-            polish=False, init="sobol", x0=x0, tol=0.0, workers=workers,
-            updating="deferred" if workers != 1 else "immediate",
-            callback=lambda *a, **k: _tick(bar))
+            cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed, polish=False,
+            init="sobol", x0=x0, tol=0.0, callback=lambda *a, **k: _tick(bar), **how)
 
 
 def _poor(problem: _Problem, chisqr: float) -> bool:
