@@ -51,6 +51,22 @@ def _free_dimension(ph, M):
 
 
 @jit
+def _into_cone(z, ph, M):
+    """Bring a stick iterate whose contact force ``f = k e + c x'`` left the friction cone
+    at ``tau = 0`` (``|f| <= 1 + a``) back to its edge: a Newton step taken where the
+    period map is nearly neutral in ``y`` can carry ``e`` by many times ``n/k`` (seen at
+    ``beta = 1e6``), a state no motion has and from which the next map is meaningless.
+    The orbit sticks inside the cone, where this does nothing."""
+    k = M[M_K]
+    if ph != STICK or math.isinf(k):
+        return
+    n0 = 1.0 + M[M_A]
+    f = k * z[2] + M[M_C] * z[1]
+    if abs(f) > n0:
+        z[2] = (math.copysign(n0, f) - M[M_C] * z[1]) / k
+
+
+@jit
 def _solve_small(m, r, nd):
     """Solve ``m x = r`` for ``nd <= 3`` by Gaussian elimination with pivoting."""
     m = m.copy()
@@ -195,6 +211,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
         dzn_prev = dzn
         for j in range(nd):
             z[j] += dz[j]
+        _into_cone(z, ph, M)
     return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first, math.nan
 
 
