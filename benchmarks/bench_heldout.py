@@ -303,9 +303,27 @@ def report(runs: list[dict]) -> str:
         *(_summary_row(run) for run in runs),
         "",
     ]
+    lines += _floor(runs[-1])
     for run in runs:
         lines += section(run)
     return "\n".join(lines)
+
+
+def _floor(run: dict) -> list[str]:
+    """What the ratio would be if every point cost only ``k`` periods of its orbit at its
+    own measured cost per period (``ours / work``): issue 19's limit is "about 3 to 5"."""
+    rows = [r for r in run["rows"] if r["work"] and r["work"] > 0]
+    B = sum(r["peer_b_s"] for r in run["rows"])
+    per = statistics.median(r["ours_s"] / r["work"] for r in rows)
+    out = [f"## The ratio at the limit of a few periods per point (last run, {run['meta']['commit']})",
+           "", f"Median cost of one drive period integrated: {1e6 * per:.1f} us. If every point "
+           "cost only `k` periods of its orbit (`k p` drive periods) at its own measured cost "
+           "per period, the ratio to peer B would be:", "",
+           "| k | ours total (ms) | B/ours total |", "|---|---|---|"]
+    for k in (3, 4, 5):
+        ours = sum(min(r["work"], k * (r["p"] or 1)) * r["ours_s"] / r["work"] for r in rows)
+        out.append(f"| {k} | {1e3 * ours:.2f} | {B / ours:.0f}x |")
+    return out + [""]
 
 
 def wait_for_load() -> None:
