@@ -315,7 +315,8 @@ def _floor(run: dict) -> list[str]:
     rows = [r for r in run["rows"] if r["work"] and r["work"] > 0]
     B = sum(r["peer_b_s"] for r in run["rows"])
     per = statistics.median(r["ours_s"] / r["work"] for r in rows)
-    out = [f"## The ratio at the limit of a few periods per point (last run, {run['meta']['commit']})",
+    commit = run["meta"]["commit"]
+    out = [f"## The ratio at the limit of a few periods per point (last run, {commit})",
            "", f"Median cost of one drive period integrated: {1e6 * per:.1f} us. If every point "
            "cost only `k` periods of its orbit (`k p` drive periods) at its own measured cost "
            "per period, the ratio to peer B would be:", "",
