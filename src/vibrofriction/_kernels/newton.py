@@ -17,6 +17,7 @@ from .phases import M_A, M_ALPHA, M_C, M_K
 from .tangent import period_map_tangent
 
 NEWTON_ITERATIONS = 12  # Newton steps per attempt
+MAX_CHARTS = 2  # changes of chart per attempt: more is an iterate wandering between phases
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 UNSTABLE = 1.0 + 1e-6  # and above this, repelling
@@ -134,6 +135,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     scale0 = 1.0 + alpha * abs(y) + abs(xd) + kk * abs(e)
     mu_first = math.nan
     dzn_prev, predicted = math.inf, math.nan
+    charts = 0
     for it in range(NEWTON_ITERATIONS):
         # the guard watches the body (y, x'): an iterate's contact force may leave the
         # cone for a step where the map is nearly neutral in y (beta = 1e6: k e by 300
@@ -151,6 +153,9 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             mu_first = window_mu(acc)
         if ph1 != ph:
             # change chart: continue from the image, in its phase's coordinates
+            charts += 1
+            if charts > MAX_CHARTS:
+                break
             ph = ph1
             nd = _free_dimension(ph, M)
             z[0], z[1], z[2] = y1, xd1, e1
