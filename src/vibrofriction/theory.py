@@ -37,8 +37,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._kernels.integrate import liftoff_phases as _kernel_liftoff_phases
-from .schema import POSITIVE, Range
-from .validation import as_float_or_array, checked, validated
+from .schema import CHOICES, POSITIVE, Range
+from .validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = [
     "INPLANE_ON",
@@ -604,13 +604,11 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
 
 # --------------------------------------------------------------------------- in-plane
 #: Where the in-plane oscillation is imposed (docs/inplane.md).
-INPLANE_ON = ("substrate", "holder")
+INPLANE_ON = CHOICES["inplane_on"].values
 
 
 def _inplane_on(inplane_on: str) -> str:
-    if inplane_on not in INPLANE_ON:
-        raise ValueError(f"inplane_on must be one of {INPLANE_ON}, got {inplane_on!r}")
-    return inplane_on
+    return checked_choice("inplane_on", inplane_on)
 
 
 def kinematic_mu_longitudinal(v: ArrayLike, a_x: ArrayLike) -> FloatOrArray:

@@ -136,6 +136,10 @@ def simulate(
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
     V = float(V)
+    if dim.a_x > 0.0 or V < 0.0:
+        raise ValueError("simulate with an in-plane oscillation (a_x > 0) or v_inertial < 0 "
+                         "is not implemented yet; friction_coefficient and solve_points "
+                         "compute both")
     _checked_run(periods, samples_per_period)
     seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))
     m = seg.shape[0]
