@@ -199,6 +199,29 @@ def test_contact_force_stays_in_the_cone_along_histories() -> None:
     print(f"largest |f| - n over 40 histories: {worst:.1e}")
 
 
+# --------------------------------------------------------------------------- energy
+@pytest.mark.parametrize("on", ["substrate", "holder"])
+@pytest.mark.parametrize("p, zeta, eta", [((0.5, 2.0, 0.5, 0.3), 0.05, 0.2),
+                                          ((0.3, 2.0, 1.5, 0.4), 0.1, 0.0),
+                                          ((2.0, math.inf, 0.5, 0.3), 0.2, 0.0),
+                                          ((0.3, 1.05, 0.5, 0.1), 0.05, 0.0)])
+def test_energy_balance_with_inplane_oscillation(p, zeta, eta, on):
+    """Work of the pulled end and of the substrate = change of stored energy + pin,
+    contact and friction dissipation at every sample, in the laboratory frame."""
+    al, be, a, V = p
+    s = vf.Dimensionless(al, be, a, zeta, eta, 0.6, 1.1, on)
+    h = vf.simulate(s, v_inertial=V, periods=3.0, samples_per_period=200)
+    lhs = h.work_input - h.dissipated_pin - h.dissipated_contact - h.dissipated_friction
+    rhs = h.stored_energy() - h.stored_energy()[0]
+    scale = np.max(np.abs(h.work_input)) + np.max(np.abs(h.stored_energy()))
+    assert np.max(np.abs(lhs - rhs)) <= 1e-7 * scale
+    assert h.dissipated_friction[-1] >= -1e-12 * scale
+    # the solver's final state (laboratory frame) starts the history where it left off
+    r = vf.friction_coefficient(s, v_inertial=V)
+    h2 = vf.simulate(s, v_inertial=V, periods=1.0, samples_per_period=4000, initial="steady")
+    assert abs(h2.x_dot[0] - r.final_state.x_dot) < 1e-12 * (1.0 + abs(h2.x_dot[0]))
+
+
 # --------------------------------------------------------------------------- zero amplitude
 def test_zero_amplitude_is_the_normal_only_solver() -> None:
     """With ``a_x = 0`` the phase and the mode change nothing, bit for bit; and ``V < 0``
