@@ -24,7 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
 from vibrofriction.contact import FlatPunch, Material, Sphere
-from vibrofriction.schema import parameter_names
+from vibrofriction.schema import NONNEGATIVE, parameter_names
 from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
@@ -115,8 +115,10 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
 def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      v_inertial: ArrayLike, zeta: ArrayLike = 0.0,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
-    """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
-    V = _valid_array("v_inertial", v_inertial)
+    """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
+
+    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``)."""
+    V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
     return as_float_or_array(V / _critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 
 
