@@ -72,13 +72,12 @@ from .phases import (
     M_SLIP,
     M_STICK,
     M_V,
-    M_X0,
-    M_XD0,
     ZERO9,
     body,
     cone_margin,
     elongation,
     forced,
+    frame_offset,
     inplane_force,
     liftoff_phases,  # noqa: F401  (re-exported for theory)
     make_model,
@@ -368,30 +367,30 @@ def segment(theta, y, xd, e, ed, phase, M):
 
 
 @jit
-def to_kernel_frame(M, y, xd):
+def to_kernel_frame(offset, y, xd):
     """A section state ``(y, x')`` of the laboratory frame in the kernels' frame: relative
     to an oscillating substrate, whose position and velocity at ``tau = 2 pi k`` are
-    ``(M_X0, M_XD0)`` (the identity otherwise)."""
-    if M[M_X0] != 0.0 or M[M_XD0] != 0.0:
-        return y - M[M_X0], xd - M[M_XD0]
+    ``offset`` (:func:`.phases.frame_offset`; the identity where it is 0)."""
+    if offset[0] != 0.0 or offset[1] != 0.0:
+        return y - offset[0], xd - offset[1]
     return y, xd
 
 
 @jit
-def to_lab_frame(M, y, xd):
+def to_lab_frame(offset, y, xd):
     """The inverse of :func:`to_kernel_frame`."""
-    if M[M_X0] != 0.0 or M[M_XD0] != 0.0:
-        return y + M[M_X0], xd + M[M_XD0]
+    if offset[0] != 0.0 or offset[1] != 0.0:
+        return y + offset[0], xd + offset[1]
     return y, xd
 
 
 @jit
-def initial_state(kind, M):
+def initial_state(kind, M, offset=(0.0, 0.0)):
     """``kind`` 0: steady sliding before the oscillation starts; 1: rest.
 
     Both are states of the laboratory frame (body velocity ``V`` resp. 0); an oscillating
-    substrate's frame is offset from it (:func:`to_kernel_frame`).  Returns ``(y, x', e,
-    phase, e')``.
+    substrate's frame is offset from it by ``offset`` (:func:`to_kernel_frame`).  Returns
+    ``(y, x', e, phase, e')``.
     """
     if kind == 0:
         k = M[M_K]
@@ -399,7 +398,7 @@ def initial_state(kind, M):
         ed = 0.0  # steady sliding: the spring's elongation is constant
     else:
         y, xd, e, f, ed = 0.0, 0.0, 0.0, 0.0, 0.0
-    y, xd = to_kernel_frame(M, y, xd)
+    y, xd = to_kernel_frame(offset, y, xd)
     ph, e, ed, f, _ = enter(0.0, y, xd, e, ed, f, 1.0, M, TWO_PI, NO_PHASE)
     return y, xd, e, ph, ed
 
@@ -478,4 +477,5 @@ def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
 def initial_point(kind, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
     """:func:`initial_state` from the parameters: ``(y, x', e, phase, e')`` (kernels' frame)."""
     return initial_state(kind, make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x,
-                                          on_substrate))
+                                          on_substrate),
+                         frame_offset(a_x, phase_x, on_substrate))

@@ -35,10 +35,8 @@ from .jit import jit
 # fields of the model tuple
 M_ALPHA, M_BETA, M_A, M_V, M_GAMMA, M_ETA, M_K, M_C, M_R = 0, 1, 2, 3, 4, 5, 6, 7, 8
 M_OFF, M_ON, M_SLIP, M_STICK = 9, 10, 11, 12
-# the in-plane forcing h = hc cos tau + hs sin tau, and the substrate's position and
-# velocity at tau = 0 (the offset of the kernels' frame from the laboratory's; 0 when the
-# holder oscillates)
-M_HC, M_HS, M_X0, M_XD0 = 13, 14, 15, 16
+# the in-plane forcing h = hc cos tau + hs sin tau
+M_HC, M_HS = 13, 14
 TWO_PI = 2.0 * math.pi
 # Loss factors below this are treated as an elastic contact: the relaxation time
 # eta_c/omega is then shorter than round-off can resolve in the contact-point velocity
@@ -95,10 +93,17 @@ def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
     stick = slip if rigid else make_mode(beta, 0.5 * (gamma + c), 0.0)
     th_off, th_on = liftoff_phases(a)
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
-    x0 = a_x * math.cos(phase_x) if on_substrate else 0.0
-    xd0 = -a_x * math.sin(phase_x) if on_substrate else 0.0
     return (alpha, beta, a, V, gamma, eta if viscous else 0.0, k, c, r, th_off, th_on,
-            slip, stick, hc, hs, x0, xd0)
+            slip, stick, hc, hs)
+
+
+@jit
+def frame_offset(a_x, phase_x, on_substrate):
+    """``(X, X')`` at ``tau = 2 pi k``: the offset of the kernels' frame (relative to an
+    oscillating substrate) from the laboratory's; 0 when the holder oscillates."""
+    if a_x == 0.0 or not on_substrate:
+        return 0.0, 0.0
+    return a_x * math.cos(phase_x), -a_x * math.sin(phase_x)
 
 
 @jit

@@ -89,7 +89,17 @@ from .period import (
     advance_counted,
     advance_period,
 )
-from .phases import ETA_ELASTIC, ETA_SLOPE, M_A, M_OFF, M_ON, M_V, forced, make_model
+from .phases import (
+    ETA_ELASTIC,
+    ETA_SLOPE,
+    M_A,
+    M_OFF,
+    M_ON,
+    M_V,
+    forced,
+    frame_offset,
+    make_model,
+)
 from .sliding import orbit_slides, sliding_certificate, sliding_orbit, unmodulated_sliding
 
 # re-exported: the kernels' entry points and what the tests drive directly
@@ -104,15 +114,15 @@ SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stic
 
 
 @jit
-def _start(init_kind, y0, xd0, e0, ph0, M):
+def _start(init_kind, y0, xd0, e0, ph0, M, offset):
     """The section state ``(y, x', e, phase, e')`` at ``tau = 0`` in the kernels' frame (see
     :func:`steady_state`; an explicit state is given in the laboratory frame)."""
     z = np.empty(5)  # y, x', e, phase, e' (exact rate where known, else nan)
     if init_kind == 2:
-        y0, xd0 = to_kernel_frame(M, y0, xd0)
+        y0, xd0 = to_kernel_frame(offset, y0, xd0)
         z[0], z[1], z[2], z[3], z[4] = y0, xd0, e0, ph0, math.nan
     else:
-        z[0], z[1], z[2], z[3], z[4] = initial_state(init_kind, M)
+        z[0], z[1], z[2], z[3], z[4] = initial_state(init_kind, M, offset)
     return z
 
 
@@ -313,7 +323,7 @@ def _fractions(win, status, out_f):
 
 
 @jit
-def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
+def _finish(status, period, k, z, count, win, M, beta, eta, offset, out_f, out_i):
     """The error's last terms, the fractions, the final state and the integer columns."""
     if status == ST_FAILED or status == ST_NOT_CONVERGED:
         out_f[O_MU] = math.nan  # no value: a window mean of an earlier checkpoint is none
@@ -323,7 +333,7 @@ def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
     elif 0.0 < eta < ETA_ELASTIC and not math.isinf(beta):
         out_f[O_ERR] += ETA_SLOPE * eta  # solved as an elastic contact (phases.ETA_ELASTIC)
     _fractions(win, status, out_f)
-    out_f[O_Y], out_f[O_XD] = to_lab_frame(M, z[0], z[1])
+    out_f[O_Y], out_f[O_XD] = to_lab_frame(offset, z[0], z[1])
     out_f[O_E] = z[2]
     out_f[O_F] = contact_force(M, int(z[3]), 0.0, z[0], z[1], z[2])
     out_i[I_STATUS] = status
@@ -349,7 +359,8 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_
     no value (``nan``) and no error estimate (``inf``).
     """
     M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
-    z = _start(init_kind, y0, xd0, e0, ph0, M)
+    offset = frame_offset(a_x, phase_x, on_substrate)
+    z = _start(init_kind, y0, xd0, e0, ph0, M, offset)
     unmodulated = a == 0.0 and not forced(M)
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
@@ -365,8 +376,8 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_
             status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
                                      max_events, count, win, out_f)
     # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
-    _finish(status, period, k, z, count, win, M, beta, 0.0 if unmodulated else eta, out_f,
-            out_i)
+    _finish(status, period, k, z, count, win, M, beta, 0.0 if unmodulated else eta, offset,
+            out_f, out_i)
 
 
 @jit

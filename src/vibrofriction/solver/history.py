@@ -10,7 +10,7 @@ from numpy.typing import NDArray
 
 from .._kernels import codes
 from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample, to_kernel_frame
-from .._kernels.phases import make_model
+from .._kernels.phases import frame_offset
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
 from .energy import dissipation, inplane_motion, kernel_point
 from .engine import friction_coefficient, initial_rows
@@ -103,7 +103,7 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
         initial = steady.final_state
     kind, init = initial_rows(initial, 1, lambda i: dim)
     if kind == 2:  # a laboratory state: into the kernels' frame (docs/inplane.md)
-        y, xd = to_kernel_frame(make_model(*kernel_point(dim, V)), init[0, 0], init[0, 1])
+        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:]), init[0, 0], init[0, 1])
         return y, xd, init[0, 2], math.nan, int(init[0, 3])
     y, xd, e, phase, e_dot = initial_point(kind, *kernel_point(dim, V))
     return y, xd, e, e_dot, phase
