@@ -107,7 +107,8 @@ def measure() -> dict[str, dict[str, float]]:
         of = np.empty(len(vf.solver.FLOAT_COLUMNS))
         oi = np.empty(len(vf.solver.INT_COLUMNS), dtype=np.int64)
         args = (system.alpha, system.beta, system.amplitude, V, system.zeta, system.eta_c,
-                0, 0.0, 0.0, 0.0, 0, *DEFAULT_SETTINGS.kernel_arguments(), of, oi)
+                system.a_x, system.phase_x, True, 0, 0.0, 0.0, 0.0, 0,
+                *DEFAULT_SETTINGS.kernel_arguments(), of, oi)
         stub_one, stub_many = _stub(real_one), _stub(real_many)
         t = _interleaved_medians({
             "whole": _loop(lambda v=vbar: vf.friction_coefficient(system, vbar=v)),

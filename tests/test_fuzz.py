@@ -115,7 +115,7 @@ def test_force_on_the_cone_edge_leaves_stick_at_once():
     """The integration itself (not the a = 0 proof): from steady sliding one period is a
     handful of events; before the fix the stick phase was re-entered 2e7 times."""
     alpha, beta, a, V = EDGE_POINT
-    M = make_model(alpha, beta, a, V, 0.0, 0.0)
+    M = make_model(alpha, beta, a, V, 0.0, 0.0, 0.0, 0.0, True)
     assert (1.0 / (beta - alpha)) * (beta - alpha) < 1.0  # the round-off that triggered it
     z = np.array(initial_state(0, M), dtype=float)
     assert int(z[3]) == SLIP_POS  # f = n and f' > n': the start is forward slip, not stick

@@ -140,7 +140,7 @@ def test_integral_matches_quadrature(w0sq, sig, r, rng):
                                          (2.0, 3.0)])
 def test_slip_body_satisfies_its_damped_ode(alpha, zeta):
     """y'' + gamma y' + alpha y = -s (1 + a cos tau) with the stated initial values."""
-    M = phases.make_model(alpha, alpha + 2.0, 0.7, 0.4, zeta, 0.0)
+    M = phases.make_model(alpha, alpha + 2.0, 0.7, 0.4, zeta, 0.0, 0.0, 0.0, True)
     m = M[phases.M_SLIP]
     gamma = 2 * zeta * math.sqrt(alpha)
     a, theta, y0, yd0 = 0.7, 0.9, 0.4, -0.3
@@ -160,7 +160,7 @@ def test_slip_elongation_relaxes_towards_the_friction_force(eta):
     """eta e' + e = s n / k (e = s n / k when eta = 0), e(0) = e0 when eta > 0."""
     alpha, beta = 0.3, 4.0
     k = beta - alpha
-    M = phases.make_model(alpha, beta, 0.8, 0.5, 0.1, eta)
+    M = phases.make_model(alpha, beta, 0.8, 0.5, 0.1, eta, 0.0, 0.0, True)
     m = M[phases.M_SLIP]
     theta, e0 = 1.3, 0.05
     for s in (1.0, -1.0):
@@ -193,9 +193,9 @@ def test_stick_solution_satisfies_its_ode(beta, zeta, eta):
     k = beta - alpha
     e0 = 0.6 / k
     gamma = 2 * zeta * math.sqrt(alpha)
-    M = phases.make_model(alpha, beta, 0.5, V, zeta, eta)
+    M = phases.make_model(alpha, beta, 0.5, V, zeta, eta, 0.0, 0.0, True)
     m = M[phases.M_STICK]
-    ec = phases.stick_elongation(M, y0, xd0, e0)
+    ec = phases.stick_elongation(M, 0.0, y0, xd0, e0)
     fc = phases.stick_force(M, ec)
     assert basis.evaluate(ec, m, 0.0) == pytest.approx(e0, rel=1e-12)
     assert basis.evaluate(_d(ec, m), m, 0.0) == pytest.approx(xd0, rel=1e-9)

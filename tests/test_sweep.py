@@ -178,7 +178,8 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
     assert ds.attrs["vibrofriction_version"] == vibrofriction.__version__
     assert ds.attrs["solver_max_periods"] == SolverSettings().max_periods
     assert '"tol_mean": 1e-07' in ds.attrs["solver_settings"]
-    assert ds.attrs["velocity"] == "vbar" and ds.attrs["fixed"] == "amplitude eta_c zeta"
+    assert ds.attrs["velocity"] == "vbar"
+    assert ds.attrs["fixed"] == "a_x amplitude eta_c phase_x zeta"
 
 
 def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:

@@ -66,6 +66,13 @@ TOL = 1e-6  # relative to 1 + max |J_fd| (resp. |G_fd|)
 MIN_CHECKED = 0.8  # fraction of the cases of a regime that must be differentiable
 
 
+def _args(pt, zeta, eta):
+    """The kernels' point arguments of ``pt = (alpha, beta, a, V[, a_x, phase_x,
+    on_substrate])`` (no in-plane oscillation when not given)."""
+    inplane = tuple(pt[4:]) if len(pt) > 4 else (0.0, 0.0, True)
+    return (*pt[:4], zeta, eta, *inplane)
+
+
 def _section_state(M, periods=TRANSIENT, start=0):
     """``(y, x', e)`` and the phase on the section after ``periods`` from steady sliding
     (``start`` 0) or rest (1)."""
@@ -103,7 +110,7 @@ def _column(pt, zeta, eta, z3, ph, p, events, j, h):
     phases is locally fixed, so every stencil point must have the sequence ``events`` and
     no segment of zero length (an event at the start of a phase: the state is outside
     that phase's chart and the event time is clamped)."""
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     img = {}
     for k in (-2, -1, 1, 2):
         z = z3.copy()
@@ -129,7 +136,7 @@ def _differences(pt, zeta, eta, z3, ph, p, events):
     first that the next one confirms within ``0.1 TOL``; steps whose stencil is not
     smooth (:func:`_column`) are passed over.
     """
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     nd = _free_dimension(ph, M)
     Jfd = np.zeros((3, nd))
     Gfd = np.zeros(nd)
@@ -168,7 +175,8 @@ def _rel(a, b):
 def _history(pt, zeta, eta, z3, ph, p):
     """The segments of ``p`` periods from the section state (``run_periods``)."""
     seg = np.zeros((50_000, N_SEG_COLUMNS))
-    n = run_periods(0.0, z3[0], z3[1], z3[2], math.nan, ph, *pt, zeta, eta, p, seg.shape[0], seg)
+    n = run_periods(0.0, z3[0], z3[1], z3[2], math.nan, ph, *_args(pt, zeta, eta), p,
+                    seg.shape[0], seg)
     assert n > 0
     return seg[:n]
 
@@ -190,7 +198,7 @@ def _event_kinds(pt, zeta, eta, z3, ph, p):
 
 def _check_against_differences(pt, zeta, eta, p, z3=None, ph=None):
     """``(err_J, err_G, J, J_fd, G, G_fd)`` or the reason the case was skipped."""
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     if z3 is None:
         z3, ph = _section_state(M)
     J, G, out, acc = _tangent(z3, ph, p, M)
@@ -239,7 +247,7 @@ def _sweep(regime, points):
                 assert err_g <= TOL, (pt, zeta, eta, p, err_g)
                 checked += 1
                 worst = [max(worst[0], err_j), max(worst[1], err_g)]
-                M = make_model(*pt, zeta, eta)
+                M = make_model(*_args(pt, zeta, eta))
                 z3, ph = _section_state(M)
                 kinds.update(set(_event_kinds(pt, zeta, eta, z3, ph, p)[0]))
     total = checked + sum(skipped.values())
@@ -252,6 +260,21 @@ def _sweep(regime, points):
 @pytest.mark.parametrize("regime", REGIMES)
 def test_jacobian_and_gradient_match_differences(regime):
     _sweep(regime, random_points(2026, 8, regime))
+
+
+def _with_inplane(points, seed):
+    """``points`` with a longitudinal in-plane oscillation (issue 20): random amplitude and
+    phase, on the substrate and on the holder in turn."""
+    rng = np.random.default_rng(seed)
+    return [(*pt, float(rng.uniform(0.2, 1.5)), float(rng.uniform(0.0, 2.0 * math.pi)),
+             i % 2 == 0) for i, pt in enumerate(points)]
+
+
+@pytest.mark.parametrize("regime", REGIMES)
+def test_jacobian_and_gradient_match_differences_inplane(regime):
+    """The same with the in-plane force ``h`` (in the vector field before and after each
+    event, and in a rigid stick's force and its event's time derivative)."""
+    _sweep(regime, _with_inplane(random_points(2027, 6, regime), 20))
 
 
 @pytest.mark.slow
@@ -338,7 +361,7 @@ EVENT_CASES = [
 @pytest.mark.parametrize("case", EVENT_CASES, ids=[c[0] for c in EVENT_CASES])
 def test_jacobian_across_each_kind_of_event(case):
     _, pt, zeta, eta, kind, mutation, entered = case
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     z3, ph = _section_state(M)
     kinds, _ = _event_kinds(pt, zeta, eta, z3, ph, 1)
     assert kinds[kind] >= 1, kinds  # the period contains the event
@@ -409,7 +432,7 @@ def test_floquet_multiplier_is_the_decay_rate_of_long_runs(pt, zeta, eta, p):
     ``|lambda|`` each period; for a complex pair any component of the deviation obeys
     ``s_{m+2} = 2 Re(lambda) s_{m+1} - |lambda|^2 s_m``, whose coefficients are fitted
     to the run of the plain map (J is used only for the starting direction)."""
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     z3, ph = _orbit(M, p)
     J, _, out, _ = _tangent(z3, ph, p, M)
     assert out[7] and out[3] == ph
@@ -476,7 +499,7 @@ LIOUVILLE_CASES = [
 @pytest.mark.parametrize("case", LIOUVILLE_CASES, ids=[c[0] for c in LIOUVILLE_CASES])
 def test_determinant_follows_liouville(case, p):
     _, pt, zeta, eta, kind = case
-    M = make_model(*pt, zeta, eta)
+    M = make_model(*_args(pt, zeta, eta))
     # stick throughout: from rest, the drift V t loads the spring far below the cone
     z3, ph = _section_state(M, start=1 if kind == "stick" else 0)
     kinds, phases = _event_kinds(pt, zeta, eta, z3, ph, p)

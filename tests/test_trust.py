@@ -23,7 +23,8 @@ from vibrofriction._kernels.steady import (
 
 def _period_means(s: vf.Dimensionless, V: float, n: int) -> np.ndarray:
     """``<f>/<n>`` over each of the first ``n`` drive periods from the default start."""
-    M = make_model(s.alpha, s.beta, s.amplitude, V, s.zeta, s.eta_c)
+    M = make_model(s.alpha, s.beta, s.amplitude, V, s.zeta, s.eta_c, s.a_x, s.phase_x,
+                   s.inplane_on == "substrate")
     z = np.array(initial_state(0, M), dtype=float)
     count = np.zeros(3, np.int64)
     out = np.empty(n)
@@ -252,7 +253,7 @@ def test_certificate_reduces_to_eq12_where_the_contact_stays_closed(seed):
         s = vf.Dimensionless(alpha, beta, a)
         vstar = s.critical_inertial_velocity()
         V = vstar * float(rng.uniform(1.0, 3.0))
-        M = make_model(alpha, beta, a, V, 0.0, 0.0)
+        M = make_model(alpha, beta, a, V, 0.0, 0.0, 0.0, 0.0, True)
         ok, ys, yds, es = sliding_orbit(M)
         assert ok
         # eq. (7): y = -1/alpha - a cos(tau)/(alpha - 1) at tau = 0, y' = 0

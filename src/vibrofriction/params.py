@@ -24,8 +24,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
 from vibrofriction.contact import FlatPunch, Material, Sphere
-from vibrofriction.schema import parameter_names
-from vibrofriction.validation import as_float_or_array, checked, validated
+from vibrofriction.schema import NONNEGATIVE, parameter_names
+from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
            "inertial_to_vbar", "inertial_velocity", "pin_damping", "vbar_to_inertial"]
@@ -115,8 +115,10 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
 def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      v_inertial: ArrayLike, zeta: ArrayLike = 0.0,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
-    """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`."""
-    V = _valid_array("v_inertial", v_inertial)
+    """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
+
+    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``)."""
+    V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
     return as_float_or_array(V / _critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 
 
@@ -221,6 +223,16 @@ class Dimensionless:
         Loss factor of the contact, ``omega c_xc / k_xc`` (the loss tangent of the
         tangential contact at the drive frequency), finite and >= 0; ignored by a
         rigid contact.
+    a_x : float
+        Amplitude of the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)``,
+        ``du_x m omega^2 / (mu0 F_N0)`` (also its velocity amplitude ``omega du_x`` in
+        units of the inertial velocity), finite and >= 0 (docs/inplane.md).
+    phase_x : float
+        Its phase relative to the normal oscillation, radians, finite.
+    inplane_on : str
+        ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
+        slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
+        dashpot oscillates; the substrate is at rest).
     """
 
     alpha: float
@@ -228,9 +240,13 @@ class Dimensionless:
     amplitude: float
     zeta: float = 0.0
     eta_c: float = 0.0
+    a_x: float = 0.0
+    phase_x: float = 0.0
+    inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "dimensionless")
+        checked_choice("inplane_on", self.inplane_on)
 
     @property
     def damped(self) -> bool:
@@ -541,7 +557,7 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     critical_inertial_velocity` is 0 or inf there).
     """
     if v_inertial.__class__ is float and vbar is None and v0 is None:  # the common fast path
-        if not (math.isfinite(v_inertial) and v_inertial >= 0.0):
+        if not math.isfinite(v_inertial):
             _valid("v_inertial", v_inertial)  # raises the schema's sentence
         return v_inertial
     if vbar.__class__ in _FLOATS and v_inertial is None and v0 is None \

@@ -23,8 +23,8 @@ from dataclasses import dataclass
 
 __all__ = ["CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS", "INT_COLUMNS",
            "LENGTH_UNIT", "MODELS", "PARAMETER", "PARAMETERS", "RESULT_FIELDS", "STATE_FIELDS",
-           "STATUS_BY_CODE", "VELOCITY_UNIT", "Field", "Parameter", "Range", "Status",
-           "column_index", "parameter_names", "parameters"]
+           "STATUS_BY_CODE", "VELOCITY_UNIT", "CHOICES", "Choice", "Field", "Parameter",
+           "Range", "Status", "choice_names", "column_index", "parameter_names", "parameters"]
 
 #: Units of the scaled variables (docs/model.md).
 VELOCITY_UNIT = "mu0 F_N0 / (m omega)"
@@ -249,6 +249,7 @@ class Range:
 
 POSITIVE = Range(0.0, strict=True)
 NONNEGATIVE = Range(0.0)
+FINITE = Range()  # any finite real (a phase, a signed velocity)
 
 
 @dataclass(frozen=True)
@@ -305,6 +306,12 @@ PARAMETERS: tuple[Parameter, ...] = (
     _p("eta_c", _D, "1", "loss factor of the contact at the drive frequency, "
        "omega c_xc / k_xc (ignored by a rigid contact)", "eta_c", "docs/damping.md",
        NONNEGATIVE, 0.0, "omega c_xc / k_xc"),
+    _p("a_x", _D, "1", "amplitude of the longitudinal in-plane oscillation (along the "
+       "sliding), du_x m omega^2 / (mu0 F_N0), also its velocity amplitude in units of "
+       "the inertial velocity", "a_x", "docs/inplane.md", NONNEGATIVE, 0.0,
+       "du_x m omega^2 / (mu0 F_N0)"),
+    _p("phase_x", _D, "rad", "phase of the longitudinal in-plane oscillation relative to "
+       "the normal one, a_x cos(tau + phase_x)", "phase_x", "docs/inplane.md", FINITE, 0.0),
     _p("mass", _P, "kg", "mass of the body", "m", "Fig. 1b"),
     _p("k_x", _P, "N m-1", "tangential stiffness of the system spring", "k_x", "Fig. 1b"),
     _p("k_xc", _P, "N m-1", "tangential contact stiffness; inf = rigid contact", "k_x,c",
@@ -322,7 +329,7 @@ PARAMETERS: tuple[Parameter, ...] = (
     _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
        "(16)", NONNEGATIVE, definition="v0 / v0*"),
     _p("v_inertial", _V, VELOCITY_UNIT, FIELD["v_inertial"].long_name, "V", "Fig. 6",
-       NONNEGATIVE, definition="v0 m omega / (mu0 F_N0)"),
+       FINITE, definition="v0 m omega / (mu0 F_N0)"),
     _p("v0", _V, "m s-1", "sliding velocity of the drive", "v0", "Fig. 1b", NONNEGATIVE),
 )
 
@@ -333,6 +340,36 @@ if len(PARAMETER) != len(PARAMETERS) or any(
         for i, p in enumerate(PARAMETERS)):  # the validator checks in this order
     raise AssertionError("PARAMETERS: names must be unique, models known, and a parameter "
                          "that must exceed another must come after it")
+
+
+@dataclass(frozen=True)
+class Choice:
+    """A model input that is one of a few names, not a number (``inplane_on``).
+
+    ``model`` is one of :data:`MODELS`; ``values`` the allowed names, ``default`` one of
+    them.  :func:`vibrofriction.validation.checked_choice` is its one check.  The model
+    dataclasses carry a choice as a field after their numeric parameters.
+    """
+
+    name: str
+    model: str
+    long_name: str
+    values: tuple[str, ...]
+    default: str
+
+
+#: The model's choices (names, not numbers), by name.
+CHOICES: dict[str, Choice] = {
+    "inplane_on": Choice("inplane_on", _D, "where the in-plane oscillation is imposed: the "
+                         "substrate (the contact point sticks to it; slip is relative to "
+                         "it) or the pin's holder (the pulled end of the system spring)",
+                         ("substrate", "holder"), "substrate"),
+}
+
+
+def choice_names(model: str) -> tuple[str, ...]:
+    """The names of the :data:`CHOICES` of ``model``."""
+    return tuple(c.name for c in CHOICES.values() if c.model == model)
 
 
 def parameters(model: str) -> tuple[Parameter, ...]:

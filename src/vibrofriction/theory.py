@@ -37,8 +37,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._kernels.integrate import liftoff_phases as _kernel_liftoff_phases
-from .schema import POSITIVE, Range
-from .validation import as_float_or_array, checked, validated
+from .schema import CHOICES, POSITIVE, Range
+from .validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = [
     "INPLANE_ON",
@@ -177,7 +177,9 @@ def critical_velocity_stiff(mu0: ArrayLike, omega: ArrayLike, du_z: ArrayLike,
 
 
 def critical_inertial_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
-                               zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> FloatOrArray:
+                               zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0,
+                               a_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
+                               inplane_on: str = "substrate") -> FloatOrArray:
     r"""Critical inertial velocity ``V_c`` (``V = V_c vbar``), eqs. (12), (16), (20) damped.
 
     Continuous forward sliding (``a <= 1``) is the periodic solution
@@ -196,7 +198,16 @@ def critical_inertial_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arr
     ``inf`` at ``alpha = 1`` without pin damping (case IV), ``0`` at ``beta = 1``
     without damping (case III) and ``0`` at ``a = 0``.  In the soft limit
     (``alpha -> 0``, ``beta -> inf``, undamped) ``V_c -> a``, i.e. eq. (13).
+
+    With a longitudinal in-plane oscillation (``a_x > 0``, any element) it is
+    :func:`inplane_critical_velocity` (docs/inplane.md), which reproduces the above at
+    ``a_x = 0`` to round-off; without one, the above exactly.
     """
+    if np.any(np.asarray(a_x, dtype=float) != 0.0):
+        return inplane_critical_velocity(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c,
+                                         inplane_on)
+    validated({"a_x": a_x, "phase_x": phase_x})
+    _inplane_on(inplane_on)
     alpha, beta, a, zeta, eta = validated(
         {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
         ranges={"alpha": _SOFT_LIMIT}).values()
@@ -604,13 +615,11 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
 
 # --------------------------------------------------------------------------- in-plane
 #: Where the in-plane oscillation is imposed (docs/inplane.md).
-INPLANE_ON = ("substrate", "holder")
+INPLANE_ON = CHOICES["inplane_on"].values
 
 
 def _inplane_on(inplane_on: str) -> str:
-    if inplane_on not in INPLANE_ON:
-        raise ValueError(f"inplane_on must be one of {INPLANE_ON}, got {inplane_on!r}")
-    return inplane_on
+    return checked_choice("inplane_on", inplane_on)
 
 
 def kinematic_mu_longitudinal(v: ArrayLike, a_x: ArrayLike) -> FloatOrArray:

@@ -14,9 +14,10 @@ from collections.abc import Mapping
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .schema import PARAMETER, PARAMETERS, Range
+from .schema import CHOICES, PARAMETER, PARAMETERS, Range
 
-__all__ = ["as_float_or_array", "checked", "checked_beta", "range_text", "validated"]
+__all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "range_text",
+           "validated"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -108,6 +109,16 @@ def validated(values: Mapping[str, ArrayLike], *,
             out[p.name] = checked(p.name, values[p.name], minimum=r.minimum, strict=r.strict,
                                   maximum=r.maximum, allow_inf=r.allow_inf)
     return {n: out[n] for n in values}
+
+
+def checked_choice(name: str, value: object) -> str:
+    """``value`` if it is one of the allowed names of the choice ``name``
+    (:data:`~vibrofriction.schema.CHOICES`), else ValueError naming both."""
+    allowed = CHOICES[name].values
+    if not (isinstance(value, str) and value in allowed):
+        raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}, "
+                         f"got {value!r}")
+    return value
 
 
 def as_float_or_array(x: ArrayLike) -> FloatOrArray:

@@ -262,15 +262,29 @@ def sup_bound(c, m, T):
 
 @jit
 def integral(c, m, t):
-    """Integral of ``g`` over ``[0, t]`` (requires ``G = H = 0``: not for slip bodies)."""
+    """Integral of ``g`` over ``[0, t]``.
+
+    ``C, S`` integrate through their own equations: ``S' = C`` and ``S'' = -S + g_i``
+    (``g_i`` the impulse response, ``S(0) = S'(0) = 0``), so ``int C = S`` and
+    ``int S = int g_i - C``.
+    """
     v = c[0] * t + 0.5 * c[1] * t * t + c[2] * math.sin(t) + c[3] * (1.0 - math.cos(t))
-    if c[4] != 0.0 or c[5] != 0.0:
+    cs = c[6] != 0.0 or c[7] != 0.0
+    if c[4] != 0.0 or c[5] != 0.0 or cs:
         if m[0] == EXP:
-            v += c[4] * math.expm1(m[4] * t) / m[4] + c[5] * math.expm1(m[5] * t) / m[5]
+            i1 = math.expm1(m[4] * t) / m[4]
+            i2 = math.expm1(m[5] * t) / m[5]
+            v += c[4] * i1 + c[5] * i2
+            ii = (i1 - i2) / (m[4] - m[5])  # the impulse response is (h1 - h2)/d
         else:
             h1, h2 = homogeneous(m, t)
             sig = m[1]
+            ii = (1.0 - h1 - sig * h2) / m[7]  # the impulse response is h2
             v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
+        if cs:
+            h1, h2 = homogeneous(m, t)
+            cc, ss = resonant(m, t, math.cos(t), math.sin(t), h1, h2)
+            v += c[6] * ss + c[7] * (ii - cc)
     if c[8] != 0.0:
         v -= c[8] * math.expm1(-m[6] * t) / m[6]
     return v

@@ -76,6 +76,9 @@ from .phases import (
     body,
     cone_margin,
     elongation,
+    forced,
+    frame_offset,
+    inplane_force,
     liftoff_phases,  # noqa: F401  (re-exported for theory)
     make_model,
     normal_force,
@@ -109,11 +112,12 @@ def next_boundary(theta, a, th_off, th_on):
 
 
 @jit
-def stick_coefficients(M, y, xd, e):
-    """Force and elongation coefficients in stick and their mode (rigid when k = inf)."""
+def stick_coefficients(M, theta, y, xd, e):
+    """Force and elongation coefficients in stick from phase ``theta`` and their mode
+    (rigid when k = inf)."""
     if math.isinf(M[M_K]):
-        return rigid_stick_force(M, y), M[M_SLIP], ZERO9
-    ec = stick_elongation(M, y, xd, e)
+        return rigid_stick_force(M, theta, y), M[M_SLIP], ZERO9
+    ec = stick_elongation(M, theta, y, xd, e)
     return stick_force(M, ec), M[M_STICK], ec
 
 
@@ -139,10 +143,11 @@ def stick_margin(fc, m, theta, s, a):
 
 @jit
 def contact_force(M, phase, theta, y, xd, e):
-    """``f`` of a state: ``k e + c x'`` (stick; ``-alpha y + gamma V`` rigid), ``s n``, 0."""
+    """``f`` of a state: ``k e + c x'`` (stick; ``-alpha y + gamma V + h`` rigid), ``s n``, 0."""
     if phase == STICK:
         if math.isinf(M[M_K]):
-            return -M[M_ALPHA] * y + M[M_GAMMA] * M[M_V]
+            f = -M[M_ALPHA] * y + M[M_GAMMA] * M[M_V]
+            return f + inplane_force(M, theta)[0] if forced(M) else f
         return M[M_K] * e + M[M_C] * xd
     if phase == FLIGHT:
         return 0.0
@@ -170,7 +175,7 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
     free = rigid or M[M_C] > 0.0  # f need not be continuous into slip
     n = normal_force(theta, a)
     if avoid != STICK and (not rigid or xd == 0.0):
-        fc, mst, _ = stick_coefficients(M, y, xd, e)
+        fc, mst, _ = stick_coefficients(M, theta, y, xd, e)
         ok1, _ = start_margin(stick_margin(fc, mst, theta, 1.0, a), mst, T)
         if ok1:
             ok2, _ = start_margin(stick_margin(fc, mst, theta, -1.0, a), mst, T)
@@ -204,10 +209,12 @@ def state_at(M, phase, theta, y, xd, e, ed, t):
     if phase == STICK:
         if math.isinf(M[M_K]):
             y1 = y - V * t
-            return y1, 0.0, 0.0, 0.0, -M[M_ALPHA] * y1 + M[M_GAMMA] * V
+            f1 = -M[M_ALPHA] * y1 + M[M_GAMMA] * V
+            return y1, 0.0, 0.0, 0.0, (f1 + inplane_force(M, theta + t)[0] if forced(M)
+                                       else f1)
         m = M[M_STICK]
-        ec = stick_elongation(M, y, xd, e)
-        bv = basis_values(m, t, False, False)
+        ec = stick_elongation(M, theta, y, xd, e)
+        bv = basis_values(m, t, has_cs(ec), False)
         e1 = dot(ec, bv)
         xd1 = dot(derivative(ec, m), bv)
         return y + (e1 - e) - V * t, xd1, e1, xd1, M[M_K] * e1 + M[M_C] * xd1
@@ -331,7 +338,7 @@ def segment(theta, y, xd, e, ed, phase, M):
     te = -1.0
     es = 0.0
     immediate = False  # the event fired at the start offset: a round-off tangency
-    fc, mst, ec = stick_coefficients(M, y, xd, e) if phase == STICK else (ZERO9, m, ZERO9)
+    fc, mst, ec = stick_coefficients(M, theta, y, xd, e) if phase == STICK else (ZERO9, m, ZERO9)
     if phase == STICK and not zeno:
         te, es, immediate = _stick_event(fc, mst, theta, a, T)
     elif phase != FLIGHT and not zeno:
@@ -360,10 +367,30 @@ def segment(theta, y, xd, e, ed, phase, M):
 
 
 @jit
-def initial_state(kind, M):
+def to_kernel_frame(offset, y, xd):
+    """A section state ``(y, x')`` of the laboratory frame in the kernels' frame: relative
+    to an oscillating substrate, whose position and velocity at ``tau = 2 pi k`` are
+    ``offset`` (:func:`.phases.frame_offset`; the identity where it is 0)."""
+    if offset[0] != 0.0 or offset[1] != 0.0:
+        return y - offset[0], xd - offset[1]
+    return y, xd
+
+
+@jit
+def to_lab_frame(offset, y, xd):
+    """The inverse of :func:`to_kernel_frame`."""
+    if offset[0] != 0.0 or offset[1] != 0.0:
+        return y + offset[0], xd + offset[1]
+    return y, xd
+
+
+@jit
+def initial_state(kind, M, offset=(0.0, 0.0)):
     """``kind`` 0: steady sliding before the oscillation starts; 1: rest.
 
-    Returns ``(y, x', e, phase, e')``.
+    Both are states of the laboratory frame (body velocity ``V`` resp. 0); an oscillating
+    substrate's frame is offset from it by ``offset`` (:func:`to_kernel_frame`).  Returns
+    ``(y, x', e, phase, e')``.
     """
     if kind == 0:
         k = M[M_K]
@@ -371,14 +398,18 @@ def initial_state(kind, M):
         ed = 0.0  # steady sliding: the spring's elongation is constant
     else:
         y, xd, e, f, ed = 0.0, 0.0, 0.0, 0.0, 0.0
+    y, xd = to_kernel_frame(offset, y, xd)
     ph, e, ed, f, _ = enter(0.0, y, xd, e, ed, f, 1.0, M, TWO_PI, NO_PHASE)
     return y, xd, e, ph, ed
 
 
 @jit
-def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, periods,
-                max_segments, seg):
+def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, a_x, phase_x,
+                on_substrate, periods, max_segments, seg):
     """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
+
+    The state is in the kernels' frame (relative to an oscillating substrate,
+    :func:`to_kernel_frame`), and so are the recorded ``y`` and ``x'``.
 
     ``seg`` has shape ``(max_segments, N_SEG_COLUMNS)`` with columns (``codes.SEG_*``)
     ``tau, y, x', f, phase, event that ended the previous segment, int_f, int_n``
@@ -386,7 +417,7 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, period
     where not known exactly, :func:`.phases.elongation`).  Returns the number of rows
     written (``-1`` if ``max_segments`` was too small).
     """
-    M = make_model(alpha, beta, a, V, zeta, eta)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
     k = 0
     m = 0
     cf = 0.0
@@ -419,10 +450,11 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, period
 
 
 @jit
-def sample(seg, nseg, alpha, beta, a, V, zeta, eta, taus, out):
+def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, taus, out):
     """Evaluate the closed forms at sorted times ``taus`` into ``out`` (shape ``(len(taus),
-    N_SMP_COLUMNS)``, columns ``codes.SMP_*``: y, x', f, n, phase, e)."""
-    M = make_model(alpha, beta, a, V, zeta, eta)
+    N_SMP_COLUMNS)``, columns ``codes.SMP_*``: y, x', f, n, phase, e; ``y``, ``x'`` in the
+    kernels' frame)."""
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
     j = 0
     for i in range(taus.shape[0]):
         tau = taus[i]
@@ -442,6 +474,8 @@ def sample(seg, nseg, alpha, beta, a, V, zeta, eta, taus, out):
 
 
 @jit
-def initial_point(kind, alpha, beta, a, V, zeta, eta):
-    """:func:`initial_state` from the parameters: ``(y, x', e, phase, e')``."""
-    return initial_state(kind, make_model(alpha, beta, a, V, zeta, eta))
+def initial_point(kind, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
+    """:func:`initial_state` from the parameters: ``(y, x', e, phase, e')`` (kernels' frame)."""
+    return initial_state(kind, make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x,
+                                          on_substrate),
+                         frame_offset(a_x, phase_x, on_substrate))

@@ -12,9 +12,15 @@ the segment start, ``t`` the time since then.
 * contact in slip: ``f = s n``, ``eta_c e' + e = s n / k`` (``e = s n/k`` when
   ``eta_c = 0``); in flight ``f = 0`` and ``e`` relaxes, ``eta_c e' + e = 0``;
 * stick (contact point fixed, ``e' = x'``):
-  ``e'' + (gamma + c) e' + beta e = alpha (e_0 - y_0) + gamma V + alpha V t``,
+  ``e'' + (gamma + c) e' + beta e = alpha (e_0 - y_0) + gamma V + alpha V t + h``,
   ``f = k e + c e'``, ``y = y_0 + (e - e_0) - V t``; rigid contact: ``x' = 0``,
-  ``f = -alpha y + gamma V``.
+  ``f = -alpha y + gamma V + h``.
+
+With a longitudinal in-plane oscillation ``X = a_x cos(tau + phase_x)`` (issue 20) the
+body is described in the substrate's frame (``x`` relative to the substrate, where the
+contact point is at rest in stick) and the same equations hold with one more force on
+the body in every phase, ``h(tau) = hc cos tau + hs sin tau`` (:func:`inplane_forcing`):
+``y'' + gamma y' + alpha y = -f + h``.  ``h = 0`` without in-plane oscillation.
 
 The model tuple (:func:`make_model`) carries the parameters and the two modes
 (free motions) of slip and stick.  Each function returns coefficient tuples over
@@ -29,6 +35,8 @@ from .jit import jit
 # fields of the model tuple
 M_ALPHA, M_BETA, M_A, M_V, M_GAMMA, M_ETA, M_K, M_C, M_R = 0, 1, 2, 3, 4, 5, 6, 7, 8
 M_OFF, M_ON, M_SLIP, M_STICK = 9, 10, 11, 12
+# the in-plane forcing h = hc cos tau + hs sin tau
+M_HC, M_HS = 13, 14
 TWO_PI = 2.0 * math.pi
 # Loss factors below this are treated as an elastic contact: the relaxation time
 # eta_c/omega is then shorter than round-off can resolve in the contact-point velocity
@@ -52,7 +60,28 @@ def liftoff_phases(a):
 
 
 @jit
-def make_model(alpha, beta, a, V, zeta, eta):
+def inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate):
+    """``(hc, hs)``: the force ``h = hc cos tau + hs sin tau`` of a longitudinal in-plane
+    oscillation ``X = a_x cos(tau + phase_x)`` on the body (docs/inplane.md, "The exact
+    solver").
+
+    On the substrate the body is described relative to it, ``x~ = x - X``: the frame's
+    inertial force ``-X''`` and the spring and dashpot pulling on ``x = x~ + X`` give
+    ``h = -alpha X - gamma X' - X'' = (1 - alpha) X - gamma X'``.  On the holder the
+    pulled end moves by ``X``: ``h = alpha X + gamma X'``.
+    """
+    if a_x == 0.0:
+        return 0.0, 0.0
+    c = a_x * math.cos(phase_x)  # X = c cos tau - d sin tau, X' = -c sin tau - d cos tau
+    d = a_x * math.sin(phase_x)
+    if on_substrate:
+        w = 1.0 - alpha
+        return w * c + gamma * d, -w * d + gamma * c
+    return alpha * c - gamma * d, -alpha * d - gamma * c
+
+
+@jit
+def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
     """The parameters of one point and the modes of slip and stick (see module doc)."""
     rigid = math.isinf(beta)
     k = math.inf if rigid else beta - alpha
@@ -63,17 +92,43 @@ def make_model(alpha, beta, a, V, zeta, eta):
     slip = make_mode(alpha, 0.5 * gamma, r)
     stick = slip if rigid else make_mode(beta, 0.5 * (gamma + c), 0.0)
     th_off, th_on = liftoff_phases(a)
+    hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     return (alpha, beta, a, V, gamma, eta if viscous else 0.0, k, c, r, th_off, th_on,
-            slip, stick)
+            slip, stick, hc, hs)
+
+
+@jit
+def frame_offset(a_x, phase_x, on_substrate):
+    """``(X, X')`` at ``tau = 2 pi k``: the offset of the kernels' frame (relative to an
+    oscillating substrate) from the laboratory's; 0 when the holder oscillates."""
+    if a_x == 0.0 or not on_substrate:
+        return 0.0, 0.0
+    return a_x * math.cos(phase_x), -a_x * math.sin(phase_x)
+
+
+@jit
+def forced(M):
+    """Whether the point has an in-plane forcing ``h``."""
+    return M[M_HC] != 0.0 or M[M_HS] != 0.0
+
+
+@jit
+def inplane_force(M, tau):
+    """``(h, h')`` at drive phase ``tau``."""
+    c = math.cos(tau)
+    s = math.sin(tau)
+    return M[M_HC] * c + M[M_HS] * s, M[M_HS] * c - M[M_HC] * s
 
 
 @jit
 def body(M, theta, y0, yd0, s):
     """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``.
 
-    Away from the resonance (``|P| > RESONANT_BAND``, ``P = alpha - 1 + i gamma``) the
-    forced response is the periodic one, ``Re(-s a e^{i tau}/P)``, plus free motion;
-    near it, the responses from rest ``C``, ``S`` (:mod:`.basis`), exact through it.
+    The harmonic force is ``Re(W e^{i tau})``, ``W = -s a + H`` with the in-plane force
+    ``h = Re(H e^{i tau})``, ``H = hc - i hs`` (0 without in-plane oscillation).  Away
+    from the resonance (``|P| > RESONANT_BAND``, ``P = alpha - 1 + i gamma``) the forced
+    response is the periodic one, ``Re(W e^{i tau}/P)``, plus free motion; near it, the
+    responses from rest ``C``, ``S`` (:mod:`.basis`), exact through it.
     """
     a = M[M_A]
     m = M[M_SLIP]
@@ -81,16 +136,27 @@ def body(M, theta, y0, yd0, s):
     pr = m[7] - 1.0
     pi = 2.0 * m[1]
     p2 = pr * pr + pi * pi
-    if s == 0.0 or a == 0.0 or p2 > RESONANT_BAND * RESONANT_BAND:
-        # Z = -s a e^{i theta} / P; y_p = Re(Z e^{it}) = Zr cos t - Zi sin t
-        wr = -s * a * math.cos(theta)
-        wi = -s * a * math.sin(theta)
+    ct = math.cos(theta)
+    st = math.sin(theta)
+    hc, hs = M[M_HC], M[M_HS]
+    if hc == 0.0 and hs == 0.0:
+        wr = -s * a * ct
+        wi = -s * a * st
+        off = s == 0.0 or a == 0.0
+    else:
+        # W e^{i theta} = (-s a + hc - i hs)(cos theta + i sin theta)
+        wc = -s * a + hc
+        wr = wc * ct + hs * st
+        wi = wc * st - hs * ct
+        off = False
+    if off or p2 > RESONANT_BAND * RESONANT_BAND:
+        # Z = W e^{i theta} / P; y_p = Re(Z e^{it}) = Zr cos t - Zi sin t
         zr = (wr * pr + wi * pi) / p2 if p2 > 0.0 else 0.0
         zi = (wi * pr - wr * pi) / p2 if p2 > 0.0 else 0.0
         D, E = initial_pair(m, y0 - p - zr, yd0 + zi)
         return (p, 0.0, zr, -zi, D, E, 0.0, 0.0, 0.0)
     D, E = initial_pair(m, y0 - p, yd0)
-    return (p, 0.0, 0.0, 0.0, D, E, -s * a * math.cos(theta), s * a * math.sin(theta), 0.0)
+    return (p, 0.0, 0.0, 0.0, D, E, wr, -wi, 0.0)
 
 
 @jit
@@ -128,8 +194,8 @@ def slip_velocity(M, ycoef, ecoef, s):
 
 
 @jit
-def stick_elongation(M, y0, xd0, e0):
-    """``e(t)`` in stick (finite contact), from the body velocity ``x' = xd0``.
+def stick_elongation(M, theta, y0, xd0, e0):
+    """``e(t)`` in stick (finite contact) from phase ``theta``, from the body velocity ``x' = xd0``.
 
     Takes ``x'`` itself, not ``y' = x' - V``: ``f' = k x'`` with ``k`` up to 1e6
     would amplify the cancellation in ``V + y'``.
@@ -138,8 +204,24 @@ def stick_elongation(M, y0, xd0, e0):
     m = M[M_STICK]
     p1 = alpha * V / beta
     p0 = (alpha * (e0 - y0) + M[M_GAMMA] * V - 2.0 * m[1] * p1) / beta
+    if M[M_HC] == 0.0 and M[M_HS] == 0.0:
+        D, E = initial_pair(m, e0 - p0, xd0 - p1)
+        return (p0, p1, 0.0, 0.0, D, E, 0.0, 0.0, 0.0)
+    # the in-plane force h(theta + t) = h0 cos t + h1 sin t drives the stick oscillator
+    # (P_st = beta - 1 + i (gamma + c)): its periodic response, or near the resonance
+    # beta = 1 the responses from rest C, S of the stick mode
+    h0, h1 = inplane_force(M, theta)
+    pr = m[7] - 1.0
+    pi = 2.0 * m[1]
+    p2 = pr * pr + pi * pi
+    if p2 > RESONANT_BAND * RESONANT_BAND:
+        # Z = (h0 - i h1) / P_st, e_p = Zr cos t - Zi sin t
+        zr = (h0 * pr - h1 * pi) / p2
+        zi = (-h1 * pr - h0 * pi) / p2
+        D, E = initial_pair(m, e0 - p0 - zr, xd0 - p1 + zi)
+        return (p0, p1, zr, -zi, D, E, 0.0, 0.0, 0.0)
     D, E = initial_pair(m, e0 - p0, xd0 - p1)
-    return (p0, p1, 0.0, 0.0, D, E, 0.0, 0.0, 0.0)
+    return (p0, p1, 0.0, 0.0, D, E, h0, h1, 0.0)
 
 
 @jit
@@ -149,10 +231,12 @@ def stick_force(M, ecoef):
 
 
 @jit
-def rigid_stick_force(M, y0):
-    """``f(t) = -alpha y + gamma V`` with ``y = y0 - V t`` (rigid contact, body at rest)."""
+def rigid_stick_force(M, theta, y0):
+    """``f(t) = -alpha y + gamma V + h`` with ``y = y0 - V t`` (rigid contact, body at rest
+    relative to the substrate)."""
     alpha, V = M[M_ALPHA], M[M_V]
-    return (-alpha * y0 + M[M_GAMMA] * V, alpha * V, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+    h0, h1 = inplane_force(M, theta) if M[M_HC] != 0.0 or M[M_HS] != 0.0 else (0.0, 0.0)
+    return (-alpha * y0 + M[M_GAMMA] * V, alpha * V, h0, h1, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
 @jit

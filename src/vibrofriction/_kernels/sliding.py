@@ -25,6 +25,7 @@ from .phases import (
     M_V,
     body,
     elongation,
+    forced,
     slip_velocity,
 )
 from .roots import first_root, start_margin
@@ -68,12 +69,14 @@ def sliding_orbit(M):
 
     Forward slip is linear, so its period map is affine, ``z -> R z + b`` with ``R``
     the free motion at ``sqrt(alpha)`` (decaying with the pin's damping) and ``e``
-    relaxing on its own; the fixed point solves ``(I - R) z = b``.  Not ok where the
-    undamped ``sqrt(alpha)`` is (nearly) an integer (a harmonic of ``n`` resonates
-    and no bounded sliding solution exists) or ``a = 0``.
+    relaxing on its own; the fixed point solves ``(I - R) z = b``.  The in-plane force
+    ``h`` (:func:`.phases.inplane_forcing`) is part of the forcing of both slip and
+    flight, so the orbit carries its periodic response.  Not ok where the undamped
+    ``sqrt(alpha)`` is (nearly) an integer (a harmonic of ``n`` resonates and no bounded
+    sliding solution exists) or without any oscillation (``a = 0``, ``h = 0``).
     """
     a = M[M_A]
-    if a == 0.0:
+    if a == 0.0 and not forced(M):
         return False, 0.0, 0.0, 0.0
     b0, b1, be = _slip_flight_period(M, 0.0, 0.0, 0.0)
     r00, r10, _ = _slip_flight_period(M, 1.0, 0.0, 0.0)
@@ -169,6 +172,10 @@ def orbit_slides(M, orbit_ok, ys, yds, es):
     ``v_min * integral(n - f) <= E(0)``: the mean of ``f`` over the first ``tau`` is within
     ``E(0) / (v_min tau)`` of the mean of ``n``, and ``<f>/<n> = 1`` exactly (eq. 25),
     whatever the stability of the orbit and however the motion sticks on its way.
+    The in-plane force ``h`` (issue 20) acts alike on the motion and on the orbit (both
+    are described in the substrate's frame, where ``f``, ``n``, ``e`` and the
+    contact-point velocities are those above): it cancels in ``delta`` and the proof
+    holds unchanged.
 
     ``v_min > 0`` is checked as in :func:`sliding_certificate` with no free motion (the
     orbit's contact velocity stays above ``1e-9 (1 + V)`` on every arc in contact).

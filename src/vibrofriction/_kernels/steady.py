@@ -72,7 +72,7 @@ from .codes import (
     ST_PERIODIC,
     ST_SLIDING,
 )
-from .integrate import TWO_PI, contact_force, initial_state
+from .integrate import TWO_PI, contact_force, initial_state, to_kernel_frame, to_lab_frame
 from .jit import jit
 from .newton import NEUTRAL, try_newton
 from .period import (
@@ -89,7 +89,17 @@ from .period import (
     advance_counted,
     advance_period,
 )
-from .phases import ETA_ELASTIC, ETA_SLOPE, M_A, M_OFF, M_ON, M_V, make_model
+from .phases import (
+    ETA_ELASTIC,
+    ETA_SLOPE,
+    M_A,
+    M_OFF,
+    M_ON,
+    M_V,
+    forced,
+    frame_offset,
+    make_model,
+)
 from .sliding import orbit_slides, sliding_certificate, sliding_orbit, unmodulated_sliding
 
 # re-exported: the kernels' entry points and what the tests drive directly
@@ -104,13 +114,15 @@ SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stic
 
 
 @jit
-def _start(init_kind, y0, xd0, e0, ph0, M):
-    """The section state ``(y, x', e, phase, e')`` at ``tau = 0`` (see :func:`steady_state`)."""
+def _start(init_kind, y0, xd0, e0, ph0, M, offset):
+    """The section state ``(y, x', e, phase, e')`` at ``tau = 0`` in the kernels' frame (see
+    :func:`steady_state`; an explicit state is given in the laboratory frame)."""
     z = np.empty(5)  # y, x', e, phase, e' (exact rate where known, else nan)
     if init_kind == 2:
+        y0, xd0 = to_kernel_frame(offset, y0, xd0)
         z[0], z[1], z[2], z[3], z[4] = y0, xd0, e0, ph0, math.nan
     else:
-        z[0], z[1], z[2], z[3], z[4] = initial_state(init_kind, M)
+        z[0], z[1], z[2], z[3], z[4] = initial_state(init_kind, M, offset)
     return z
 
 
@@ -311,7 +323,7 @@ def _fractions(win, status, out_f):
 
 
 @jit
-def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
+def _finish(status, period, k, z, count, win, M, beta, eta, offset, out_f, out_i):
     """The error's last terms, the fractions, the final state and the integer columns."""
     if status == ST_FAILED or status == ST_NOT_CONVERGED:
         out_f[O_MU] = math.nan  # no value: a window mean of an earlier checkpoint is none
@@ -321,7 +333,8 @@ def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
     elif 0.0 < eta < ETA_ELASTIC and not math.isinf(beta):
         out_f[O_ERR] += ETA_SLOPE * eta  # solved as an elastic contact (phases.ETA_ELASTIC)
     _fractions(win, status, out_f)
-    out_f[O_Y], out_f[O_XD], out_f[O_E] = z[0], z[1], z[2]
+    out_f[O_Y], out_f[O_XD] = to_lab_frame(offset, z[0], z[1])
+    out_f[O_E] = z[2]
     out_f[O_F] = contact_force(M, int(z[3]), 0.0, z[0], z[1], z[2])
     out_i[I_STATUS] = status
     out_i[I_PERIOD] = period
@@ -332,23 +345,28 @@ def _finish(status, period, k, z, count, win, M, beta, eta, out_f, out_i):
 
 
 @jit
-def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_periods,
-                 min_periods, tol_state, tol_mean, max_events, out_f, out_i):
+def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_kind, y0,
+                 xd0, e0, ph0, max_periods, min_periods, tol_state, tol_mean, max_events,
+                 out_f, out_i):
     """Long-time average from a given start, written into the rows ``out_f``, ``out_i``.
 
-    ``init_kind``: 0 steady sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)``
-    at ``tau = 0``.  The columns are ``solver.FLOAT_COLUMNS`` and
+    ``a_x``, ``phase_x``, ``on_substrate``: the longitudinal in-plane oscillation
+    (:func:`.phases.inplane_forcing`; ``a_x = 0``: none).  ``init_kind``: 0 steady
+    sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)`` at ``tau = 0`` (laboratory
+    frame, as the final state written).  The columns are ``solver.FLOAT_COLUMNS`` and
     ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and
     the state is the final one on the section.  A failed or not converged run has
     no value (``nan``) and no error estimate (``inf``).
     """
-    M = make_model(alpha, beta, a, V, zeta, eta)
-    z = _start(init_kind, y0, xd0, e0, ph0, M)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
+    offset = frame_offset(a_x, phase_x, on_substrate)
+    z = _start(init_kind, y0, xd0, e0, ph0, M, offset)
+    unmodulated = a == 0.0 and not forced(M)
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
-    if a == 0.0:
+    if unmodulated:
         status, period, k = _unmodulated(z, M, win, out_f)
     else:
         orbit_ok, ys, yds, es = sliding_orbit(M)
@@ -358,19 +376,21 @@ def steady_state(alpha, beta, a, V, zeta, eta, init_kind, y0, xd0, e0, ph0, max_
             status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
                                      max_events, count, win, out_f)
     # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
-    _finish(status, period, k, z, count, win, M, beta, eta if a != 0.0 else 0.0, out_f, out_i)
+    _finish(status, period, k, z, count, win, M, beta, 0.0 if unmodulated else eta, offset,
+            out_f, out_i)
 
 
 @jit
-def steady_state_many(alpha, beta, a, V, zeta, eta, init_kind, init, max_periods, min_periods,
-                      tol_state, tol_mean, max_events, out_f, out_i):
+def steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_kind, init,
+                      max_periods, min_periods, tol_state, tol_mean, max_events, out_f,
+                      out_i):
     """:func:`steady_state` over arrays of points (one compiled loop, no Python calls).
 
     ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row ``i`` of
     ``out_f`` and ``out_i`` receives point ``i``.
     """
     for i in range(V.shape[0]):
-        steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], init_kind, init[i, 0],
-                     init[i, 1],
-                     init[i, 2], int(init[i, 3]), max_periods, min_periods, tol_state,
-                     tol_mean, max_events, out_f[i], out_i[i])
+        steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i], phase_x[i],
+                     on_substrate[i], init_kind, init[i, 0], init[i, 1], init[i, 2],
+                     int(init[i, 3]), max_periods, min_periods, tol_state, tol_mean,
+                     max_events, out_f[i], out_i[i])

@@ -55,6 +55,8 @@ from .phases import (
     M_SLIP,
     M_STICK,
     M_V,
+    forced,
+    inplane_force,
 )
 
 UNIT_H1 = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
@@ -127,9 +129,12 @@ def segment_flow(M, phase, free, t, J, G):
 
 @jit
 def vector_field(M, phase, tau, y, xd, e):
-    """``(y', x'', e')`` of the motion in ``phase`` at drive phase ``tau``."""
+    """``(y', x'', e')`` of the motion in ``phase`` at drive phase ``tau`` (``x''`` with the
+    in-plane force ``h``)."""
     V = M[M_V]
     drag = -M[M_ALPHA] * y - M[M_GAMMA] * (xd - V)
+    if forced(M):
+        drag += inplane_force(M, tau)[0]
     rigid = math.isinf(M[M_K])
     if phase == STICK:
         if rigid:
@@ -153,7 +158,8 @@ def vector_field(M, phase, tau, y, xd, e):
 def event_gradient(M, phase, tau, y, xd, e):
     """``(grad g, dg/dtau)`` of the event that ends ``phase`` at ``(tau, y, x', e)``:
     the cone margin ``n - s f`` of stick (``s`` the sign of ``f`` there) or the
-    contact point's slip velocity ``s (x' - e')`` of slip."""
+    contact point's slip velocity ``s (x' - e')`` of slip.  A rigid stick's force
+    ``-alpha y + gamma V + h`` depends on ``tau`` through the in-plane force ``h``."""
     a, k = M[M_A], M[M_K]
     rigid = math.isinf(k)
     if phase == STICK:
@@ -161,6 +167,8 @@ def event_gradient(M, phase, tau, y, xd, e):
         s = 1.0 if f >= 0.0 else -1.0
         g_t = -a * math.sin(tau)
         if rigid:
+            if forced(M):
+                g_t -= s * inplane_force(M, tau)[1]
             return s * M[M_ALPHA], 0.0, 0.0, g_t
         return 0.0, -s * M[M_C], -s * k, g_t
     s = slip_sign(phase)

@@ -1,7 +1,9 @@
 """The energy balance of a time history (docs/damping.md): work input and dissipation.
 
-Power input by the pulled end and dissipated by the pin dashpot, the contact dashpot and
-friction, integrated by Gauss-Legendre quadrature of the closed forms between samples.
+Power input by the pulled end (and an oscillating substrate) and dissipated by the pin
+dashpot, the contact dashpot and friction, integrated by Gauss-Legendre quadrature of the
+closed forms between samples.  All in the laboratory frame: the kernels' state relative
+to an oscillating substrate is shifted back (:func:`inplane_motion`).
 """
 
 from __future__ import annotations
@@ -15,7 +17,7 @@ from .._kernels import codes
 from .._kernels.integrate import sample
 from ..params import Dimensionless
 
-__all__ = ["ENERGY_NAMES", "dissipation", "kernel_point"]
+__all__ = ["ENERGY_NAMES", "dissipation", "inplane_motion", "kernel_point"]
 
 #: The cumulative energies of a :class:`~vibrofriction.History`, in order.
 ENERGY_NAMES = ("work_input", "dissipated_pin", "dissipated_contact", "dissipated_friction")
@@ -23,9 +25,19 @@ ENERGY_NAMES = ("work_input", "dissipated_pin", "dissipated_contact", "dissipate
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 
 
-def kernel_point(dim: Dimensionless, V: float) -> tuple[float, ...]:
-    """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c)``."""
-    return dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c
+def kernel_point(dim: Dimensionless, V: float) -> tuple[float | bool, ...]:
+    """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x,
+    on_substrate)``."""
+    return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,
+            dim.phase_x, dim.inplane_on == "substrate")
+
+
+def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
+                   ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(X, X')``: the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)`` and its
+    velocity at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    arg = np.asarray(tau, dtype=float) + dim.phase_x
+    return dim.a_x * np.cos(arg), -dim.a_x * np.sin(arg)
 
 
 def _elongation_rate(dim: Dimensionless, cols: NDArray[np.float64],
@@ -48,14 +60,28 @@ def _elongation_rate(dim: Dimensionless, cols: NDArray[np.float64],
 def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
            tau: NDArray[np.float64]) -> NDArray[np.float64]:
     """Power input by the pulled end and dissipated by the pin dashpot, the contact
-    dashpot and friction (docs/damping.md, energy balance), from sampled columns."""
+    dashpot and friction (docs/damping.md, energy balance), from sampled columns (the
+    kernels' frame).  With an in-plane oscillation (docs/inplane.md): on the substrate the
+    body's laboratory position and velocity are ``y + X``, ``x' + X'`` and the substrate
+    works ``-f X'`` on the contact; on the holder the pulled end moves at ``V + X'`` and
+    the pin's spring and dashpot act on ``V tau + X - x``.  Friction dissipates ``f`` times
+    the slip velocity relative to the substrate, ``x' - e'`` in the kernels' frame."""
     y, xd, f = cols[:, codes.SMP_Y], cols[:, codes.SMP_XD], cols[:, codes.SMP_F]
     gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
     k = dim.beta - dim.alpha
     c = 0.0 if math.isinf(k) else dim.eta_c * k
     e_dot = _elongation_rate(dim, cols, tau)
-    return np.stack([V * (-dim.alpha * y - gamma * (xd - V)), gamma * (xd - V) ** 2,
-                     c * e_dot**2, f * (xd - e_dot)])
+    friction = f * (xd - e_dot)
+    if dim.a_x == 0.0:
+        return np.stack([V * (-dim.alpha * y - gamma * (xd - V)), gamma * (xd - V) ** 2,
+                         c * e_dot**2, friction])
+    X, Xd = inplane_motion(dim, tau)
+    if dim.inplane_on == "substrate":
+        pin = -dim.alpha * (y + X) + gamma * (V - xd - Xd)  # the pin's force on the body
+        return np.stack([V * pin - f * Xd, gamma * (V - xd - Xd) ** 2, c * e_dot**2,
+                         friction])
+    pin = dim.alpha * (X - y) + gamma * (V + Xd - xd)
+    return np.stack([(V + Xd) * pin, gamma * (V + Xd - xd) ** 2, c * e_dot**2, friction])
 
 
 def _quadrature_nodes(taus: NDArray[np.float64], w_max: float):

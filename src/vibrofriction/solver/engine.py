@@ -8,6 +8,7 @@ wraps them as :class:`FrictionResult` objects for a system and its velocities.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -18,7 +19,7 @@ from .._kernels import codes
 from .._kernels.steady import steady_state, steady_state_many
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
-from ..validation import validated
+from ..validation import checked_choice, validated
 from .results import (
     PHASE_CODE,
     FrictionResult,
@@ -54,6 +55,36 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
     raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
 
 
+#: The final-state columns that change sign under the mirror ``x -> -x``.
+_SIGNED = ("mu_ratio", "y", "x_dot", "f", "e", "drift_rate")
+_MIRROR_PHASE = {codes.SLIP_POS: codes.SLIP_NEG, codes.SLIP_NEG: codes.SLIP_POS}
+
+
+def _mirror_rows(init: NDArray[np.float64], rows: NDArray[np.bool_]) -> None:
+    """Mirror explicit start rows ``(y, x', e, phase)`` in place (``x -> -x``)."""
+    init[rows, :3] = -init[rows, :3]
+    ph = init[rows, 3].copy()
+    for a, b in _MIRROR_PHASE.items():
+        ph[init[rows, 3] == a] = b
+    init[rows, 3] = ph
+
+
+def _mirror_outputs(out_f: NDArray[np.float64], out_i: NDArray[np.int64],
+                    rows: NDArray[np.bool_]) -> None:
+    """The results of the mirrored problem as those of the given one: the signed columns
+    negated, the window range negated and swapped, slip+ and slip- swapped in the final
+    phase.  ``reverse_slip_fraction`` (slip against the sliding direction) is unchanged."""
+    for k in _SIGNED:
+        j = column_index(k)
+        out_f[rows, j] = -out_f[rows, j]
+    lo, hi = column_index("window_min"), column_index("window_max")
+    out_f[rows, lo], out_f[rows, hi] = -out_f[rows, hi], -out_f[rows, lo]
+    jp = column_index("phase")
+    ph = out_i[rows, jp]
+    out_i[rows, jp] = np.where(ph == codes.SLIP_POS, codes.SLIP_NEG,
+                               np.where(ph == codes.SLIP_NEG, codes.SLIP_POS, ph))
+
+
 def solve_points(
     alpha: ArrayLike,
     beta: ArrayLike,
@@ -61,30 +92,54 @@ def solve_points(
     v_inertial: ArrayLike,
     zeta: ArrayLike = 0.0,
     eta_c: ArrayLike = 0.0,
+    a_x: ArrayLike = 0.0,
+    phase_x: ArrayLike = 0.0,
     *,
+    inplane_on: str = "substrate",
     initial: Initial | NDArray[np.object_] = "sliding",
     settings: SolverSettings | None = None,
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The six parameters broadcast together and are validated against their ranges in
+    The eight parameters broadcast together and are validated against their ranges in
     :data:`vibrofriction.schema.PARAMETERS` (``alpha > 0``, ``beta > alpha``, ``a >= 0``,
-    ``V >= 0``, ``zeta >= 0``, ``eta_c >= 0``, finite but ``beta``).  Returns
-    arrays of that shape named by :data:`~vibrofriction.schema.FLOAT_COLUMNS` and
-    ``INT_COLUMNS`` (``status`` as :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``,
-    ``phase`` the final section state) and ``trusted``.  Results are bitwise
-    reproducible: each point depends only on its own parameters.
+    ``zeta >= 0``, ``eta_c >= 0``, ``a_x >= 0``; ``V`` and ``phase_x`` any finite real;
+    finite but ``beta``); ``inplane_on`` is ``"substrate"`` or ``"holder"`` for all of
+    them (docs/inplane.md).  ``V < 0`` is solved by the mirror ``x -> -x``: the point
+    ``(-V, phase_x + pi)`` (its ``n`` unchanged, ``h -> -h``) with ``mu_ratio`` and the
+    signed state negated (an explicit initial state is mirrored on the way in).  ``V = 0``
+    is the static limit without in-plane oscillation and refused with it (not computed
+    yet).  Returns arrays of that shape named by
+    :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS`` (``status`` as
+    :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final section state,
+    in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
+    point depends only on its own parameters.
     """
     settings = settings or DEFAULT_SETTINGS
-    al, be, am, V, ze, et = np.broadcast_arrays(*(
-        np.asarray(x, dtype=float) for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c)))
+    on_substrate = checked_choice("inplane_on", inplane_on) == "substrate"
+    al, be, am, V, ze, et, ax, px = np.broadcast_arrays(*(
+        np.asarray(x, dtype=float)
+        for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x)))
     shape = V.shape
-    al, be, am, V, ze, et = (np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et))
+    al, be, am, V, ze, et, ax, px = (np.ascontiguousarray(x.ravel())
+                                     for x in (al, be, am, V, ze, et, ax, px))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
-               "eta_c": et})
+               "eta_c": et, "a_x": ax, "phase_x": px})
+    held = (V == 0.0) & (ax > 0.0)
+    if np.any(held):
+        raise ValueError("v_inertial = 0 with an in-plane oscillation (a_x > 0) is not "
+                         "computed yet: the held body's mean force depends on its preload "
+                         f"(first at a_x = {float(ax[held][0])!r})")
     n = V.size
     kind, init = initial_rows(initial, n,
-                              lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i]))
+                              lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i],
+                                                      ax[i], px[i], inplane_on))
+    backward = V < 0.0
+    if np.any(backward):  # the mirror x -> -x
+        V = np.where(backward, -V, V)
+        px = np.where(backward, px + math.pi, px)
+        if kind == 2:
+            _mirror_rows(init, backward)
     out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     moving = V > 0.0
@@ -92,10 +147,13 @@ def solve_points(
     if idx.size:
         of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
-        steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], kind,
+        steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], ax[idx],
+                          px[idx], np.full(idx.size, on_substrate), kind,
                           np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
+    if np.any(backward):
+        _mirror_outputs(out_f, out_i, backward)
     _static_limit(am[~moving], out_f, out_i, ~moving)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
@@ -133,7 +191,8 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
         start = (kind, init[0, 0], init[0, 1], init[0, 2], int(init[0, 3]))
     of = np.empty(_N_FLOAT)
     oi = np.empty(_N_INT, dtype=np.int64)
-    steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, *start,
+    steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
+                 dim.phase_x, dim.inplane_on == "substrate", *start,
                  *settings.kernel_arguments(), of, oi)
     return result_from_rows(of.tolist(), oi.tolist(), dim, V, settings)
 
@@ -170,7 +229,8 @@ def friction_coefficient(
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)
     cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
-                        initial=initial, settings=settings)
+                        dim.a_x, dim.phase_x, inplane_on=dim.inplane_on, initial=initial,
+                        settings=settings)
     if V.ndim == 0:
         return result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, float(V))
     return results_from_columns(cols, dim, V)

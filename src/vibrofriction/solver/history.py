@@ -9,9 +9,10 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._kernels import codes
-from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample
+from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample, to_kernel_frame
+from .._kernels.phases import frame_offset
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
-from .energy import dissipation, kernel_point
+from .energy import dissipation, inplane_motion, kernel_point
 from .engine import friction_coefficient, initial_rows
 from .results import SectionState, section_state
 from .settings import SolverSettings
@@ -44,7 +45,10 @@ class History:
     dissipated by the pin dashpot, the contact dashpot and friction (unit
     ``(mu0 F_N0)^2/(m omega^2)``; Gauss-Legendre quadrature of the closed forms, relative
     accuracy ~1e-10), so that ``work_input - sum(dissipated) = stored_energy() -
-    stored_energy()[0]`` (docs/damping.md).
+    stored_energy()[0]`` (docs/damping.md).  With a longitudinal in-plane oscillation
+    (docs/inplane.md) ``x``, ``x_dot`` are in the laboratory frame and ``work_input``
+    includes the work of the oscillating substrate on the contact (or is that of the
+    oscillating holder).
     """
 
     tau: NDArray[np.float64]
@@ -64,9 +68,12 @@ class History:
     final_state: SectionState | None = field(default=None)
 
     def stored_energy(self) -> NDArray[np.float64]:
-        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2``."""
+        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
+        oscillating holder the pin's spring is stretched by ``V tau + X - x``)."""
         d = self.system
         y = self.x - self.v_inertial * self.tau
+        if d.a_x > 0.0 and d.inplane_on == "holder":
+            y = y - inplane_motion(d, self.tau)[0]
         out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
         if not d.is_rigid:
             out = out + 0.5 * (d.beta - d.alpha) * self.e**2
@@ -95,8 +102,9 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
                              f"({steady.message})")
         initial = steady.final_state
     kind, init = initial_rows(initial, 1, lambda i: dim)
-    if kind == 2:
-        return init[0, 0], init[0, 1], init[0, 2], math.nan, int(init[0, 3])
+    if kind == 2:  # a laboratory state: into the kernels' frame (docs/inplane.md)
+        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:]), init[0, 0], init[0, 1])
+        return y, xd, init[0, 2], math.nan, int(init[0, 3])
     y, xd, e, phase, e_dot = initial_point(kind, *kernel_point(dim, V))
     return y, xd, e, e_dot, phase
 
@@ -136,6 +144,9 @@ def simulate(
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
     V = float(V)
+    if V < 0.0:
+        raise ValueError("simulate with v_inertial < 0 is not implemented yet "
+                         "(friction_coefficient and solve_points compute it)")
     _checked_run(periods, samples_per_period)
     seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))
     m = seg.shape[0]
@@ -158,10 +169,17 @@ def simulate(
         for j in ev_rows)
     whole_done = int(math.floor(periods + 1e-12))
     last = seg[np.flatnonzero(seg[:, codes.SEG_TAU] <= TWO_PI * whole_done * (1 + 1e-14))[-1]]
+    x, x_dot = out[:, codes.SMP_Y] + V * taus, out[:, codes.SMP_XD]
+    y_last, xd_last = last[codes.SEG_Y], last[codes.SEG_XD]
+    if dim.a_x > 0.0 and dim.inplane_on == "substrate":  # back to the laboratory frame
+        X, Xd = inplane_motion(dim, taus)
+        x, x_dot = x + X, x_dot + Xd
+        X0, Xd0 = inplane_motion(dim, last[codes.SEG_THETA])
+        y_last, xd_last = y_last + X0, xd_last + Xd0
     return History(
-        tau=taus, x=out[:, codes.SMP_Y] + V * taus, x_dot=out[:, codes.SMP_XD],
+        tau=taus, x=x, x_dot=x_dot,
         f=out[:, codes.SMP_F], n=out[:, codes.SMP_N],
         phase=phases[out[:, codes.SMP_PHASE].astype(int)], events=events, system=dim,
         v_inertial=V, e=out[:, codes.SMP_E], **dissipation(seg, m, dim, V, taus),
-        final_state=section_state(*(last[j] for j in (codes.SEG_Y, codes.SEG_XD, codes.SEG_F)),
+        final_state=section_state(y_last, xd_last, last[codes.SEG_F],
                                   int(last[codes.SEG_PHASE]), last[codes.SEG_E]))
