@@ -29,7 +29,8 @@ def curve_csv(state: State, curve: dict) -> str:
 def _system_text(state: State) -> str:
     if state.mode == "dimensionless":
         return (f"alpha = {state.alpha!r}, beta = {state.beta!r}, a = {state.amplitude!r}, "
-                f"zeta = {state.zeta!r}, eta_c = {state.eta_c!r}")
+                f"zeta = {state.zeta!r}, eta_c = {state.eta_c!r}"
+                + (f", a_x = {state.a_x!r}, phase_x = {state.phase_x!r}" if state.a_x else ""))
     return ", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
 
 
@@ -37,7 +38,8 @@ def snippet(state: State) -> str:
     """Python code that recomputes the current curve with the library."""
     if state.mode == "dimensionless":
         make = (f"system = vf.Dimensionless(alpha={state.alpha!r}, beta={_num(state.beta)}, "
-                f"amplitude={state.amplitude!r}, zeta={state.zeta!r}, eta_c={state.eta_c!r})")
+                f"amplitude={state.amplitude!r}, zeta={state.zeta!r}, eta_c={state.eta_c!r}"
+                + (f", a_x={state.a_x!r}, phase_x={state.phase_x!r})" if state.a_x else ")"))
     else:
         args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
         make = f"system = vf.Physical.from_bench(\n    {args})"

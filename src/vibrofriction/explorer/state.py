@@ -51,7 +51,8 @@ def _model_field(name: str, low: float, high: float, log: bool = True,
 #: the sliders of the dimensionless model (ranges: UI choices, not the model's limits)
 _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "amplitude": (0.0, 3.0, False), "zeta": (0.0, 0.2, False),
-           "eta_c": (0.0, 1.0, False)}
+           "eta_c": (0.0, 1.0, False), "a_x": (0.0, 5.0, False),
+           "phase_x": (0.0, 6.283185307179586, False)}
 DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless"))
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
@@ -89,6 +90,8 @@ class State:
     amplitude: float = 0.5
     zeta: float = PARAMETER["zeta"].default
     eta_c: float = PARAMETER["eta_c"].default
+    a_x: float = PARAMETER["a_x"].default
+    phase_x: float = PARAMETER["phase_x"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
     quality_factor: float = 50.0
