@@ -241,9 +241,9 @@ import sys
 import numpy as np
 from vibrofriction.sweep import sweep
 if __name__ == "__main__":
+    # the package's default block size (auto_chunk_size)
     sweep(alpha=np.geomspace(0.01, 0.5, 100), beta=np.geomspace(2.0, 200.0, 100),
-          amplitude=0.5, vbar=np.linspace(0.0, 1.2, 100), store=sys.argv[1],
-          chunk_size=1000, progress=False)
+          amplitude=0.5, vbar=np.linspace(0.0, 1.2, 100), store=sys.argv[1], progress=False)
 """
 
 
@@ -298,24 +298,28 @@ def memory(seconds: float | None) -> list[str]:
     wall = time.perf_counter() - t0
     done = len(os.listdir(marks)) if marks.exists() else 0
     size = sum(f.stat().st_size for f in store.rglob("*") if f.is_file())
+    import zarr
+
+    blocks = zarr.open_array(str(store / "_sweep" / "done"), mode="r").shape[0]
+    per_block = 10**6 // blocks
     shutil.rmtree(tmp, ignore_errors=True)
     arr = np.array(samples)
     mib = 2.0**20
 
     def at(fraction: float) -> str:
-        i = int(np.searchsorted(arr[:, 4], fraction * 1000))
+        i = int(np.searchsorted(arr[:, 4], fraction * blocks))
         i = min(i, len(arr) - 1)
         return f"{arr[i, 2] / mib:.0f} / {arr[i, 3] / mib:.0f}"
 
     how = (f"ran to the end in {wall:.0f} s ({1e6 / wall:,.0f} points/s, start-up included)"
-           if finished else f"killed after {wall:.0f} s with {done} of 1000 blocks done")
+           if finished else f"killed after {wall:.0f} s with {done} of {blocks} blocks done")
     return [
-        "10^6-point grid (alpha 100 x beta 100 x vbar 100, blocks of 1000 points, 2 local "
-        f"processes, into a zarr store): {how}.",
+        f"10^6-point grid (alpha 100 x beta 100 x vbar 100, the default blocks of {per_block} "
+        f"points, 2 local processes, into a zarr store): {how}.",
         "",
         "| quantity | value |",
         "|---|---:|",
-        f"| blocks done | {done} of 1000 |",
+        f"| blocks done | {done} of {blocks} |",
         f"| peak RSS, sweep process | {arr[:, 1].max() / mib:.0f} MiB |",
         f"| peak RSS summed over sweep process + workers + helpers | "
         f"{arr[:, 2].max() / mib:.0f} MiB |",

@@ -54,7 +54,8 @@ def sweep_command(
         help="Dask scheduler address (tcp://host:port): run on that cluster")] = None,
     workers: Annotated[int | None, typer.Option(
         help="local worker processes (default: all cores)")] = None,
-    chunk_size: Annotated[int, typer.Option(help="points per block of work")] = 1000,
+    chunk_size: Annotated[int | None, typer.Option(
+        help="points per block of work [default: about 1% of the grid, 1000 to 10000]")] = None,
     continuation: Annotated[bool, typer.Option(
         help="walk each velocity curve up then down from the previous final state")] = False,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",

@@ -26,13 +26,14 @@ from numpy.typing import ArrayLike
 from ..parallel import available_cores
 from ..solver import SolverSettings
 from ._compute import compute_block, identity, warm_up
-from ._grid import DEFAULT_CHUNK_SIZE, Plan, make_plan, parse_axis
+from ._grid import Plan, auto_chunk_size, make_plan, parse_axis
 from ._run import check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
 from ._variables import STATUS_PENDING
 
-__all__ = ["STATUS_PENDING", "Plan", "available_cores", "compute_block", "fingerprint",
-           "identity", "make_plan", "open_atlas", "parse_axis", "sweep", "warm_up"]
+__all__ = ["STATUS_PENDING", "Plan", "auto_chunk_size", "available_cores", "compute_block",
+           "fingerprint", "identity", "make_plan", "open_atlas", "parse_axis", "sweep",
+           "warm_up"]
 
 
 def fingerprint() -> str:
@@ -54,7 +55,7 @@ def sweep(
     store: str | os.PathLike | None = None,
     client: Any = None,
     workers: int | None = None,
-    chunk_size: int = DEFAULT_CHUNK_SIZE,
+    chunk_size: int | None = None,
     settings: SolverSettings | None = None,
     initial: str = "sliding",
     continuation: bool = False,
@@ -91,8 +92,9 @@ def sweep(
     workers : local processes (default: all cores available); 1 runs in this process.
         Workers die with the process that started them, even when it is killed
         (:mod:`vibrofriction.parallel`).
-    chunk_size : points per block of work (and per zarr chunk), about.  An existing
-        store keeps its own block shape.
+    chunk_size : points per block of work (and per zarr chunk), about; None (default):
+        about 1 % of the grid, from 1000 to 10,000 points (``auto_chunk_size``).  An
+        existing store keeps its own block shape.
     settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
     initial : ``"sliding"`` (default, docs/model.md) or ``"rest"``: the start of every point,
         or with continuation of the first point of each upward sweep.

@@ -43,6 +43,14 @@ DIMENSIONLESS = parameter_names("dimensionless")
 PHYSICAL = parameter_names("physical")
 DIRECTIONS = ("up", "down")
 DEFAULT_CHUNK_SIZE = 1000
+#: The block size when none is given: about 1/AUTO_BLOCKS of the grid, between
+#: DEFAULT_CHUNK_SIZE and AUTO_MAX_CHUNK points.  Writing a block costs the sweep process
+#: about 60 ms whatever its size (zarr's asynchronous writes of some 30 arrays), time
+#: taken from the two workers: 1000-point blocks made a 10^6-point atlas 69 s where
+#: 10,000-point ones make it 54 s (benchmarks/results/sweep.md); a hundred blocks still
+#: balance the cores and show progress.
+AUTO_BLOCKS = 100
+AUTO_MAX_CHUNK = 10_000
 
 
 # --------------------------------------------------------------------------- axes
@@ -268,7 +276,7 @@ def make_plan(
     settings: SolverSettings | None = None,
     initial: str = "sliding",
     continuation: bool = False,
-    chunk_size: int = DEFAULT_CHUNK_SIZE,
+    chunk_size: int | None = None,
     version: str = "",
     fingerprint: str = "",
 ) -> Plan:
@@ -290,7 +298,14 @@ def make_plan(
                 initial=initial, continuation=bool(continuation), chunks=(),
                 version=version, fingerprint=fingerprint)
     n_tail = int(continuation) + int(velocity.swept)
+    if chunk_size is None:
+        chunk_size = auto_chunk_size(int(np.prod(plan.shape)))
     return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
+
+
+def auto_chunk_size(points: int) -> int:
+    """The block size of a grid of ``points`` points when none is given (:data:`AUTO_BLOCKS`)."""
+    return min(AUTO_MAX_CHUNK, max(DEFAULT_CHUNK_SIZE, points // AUTO_BLOCKS))
 
 
 def _checked_options(settings: Any, initial: str, chunk_size: Any) -> SolverSettings:
@@ -300,9 +315,9 @@ def _checked_options(settings: Any, initial: str, chunk_size: Any) -> SolverSett
         raise TypeError(f"settings must be a SolverSettings, got {type(settings).__name__}")
     if initial not in ("sliding", "rest"):
         raise ValueError(f"initial must be 'sliding' or 'rest' for a sweep, got {initial!r}")
-    if isinstance(chunk_size, bool) or not isinstance(chunk_size, int | np.integer) \
-            or chunk_size < 1:
-        raise ValueError(f"chunk_size must be an integer >= 1, got {chunk_size!r}")
+    if chunk_size is not None and (isinstance(chunk_size, bool) or not isinstance(
+            chunk_size, int | np.integer) or chunk_size < 1):
+        raise ValueError(f"chunk_size must be an integer >= 1 or None, got {chunk_size!r}")
     return settings
 
 
