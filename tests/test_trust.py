@@ -139,29 +139,41 @@ def test_averaged_error_bounds_the_distance_to_a_long_run(p):
         assert r.window_min <= r.mu_ratio <= r.window_max
 
 
+#: a jumping point (a = 2.8) whose motion needs ~1000 periods: Newton does not converge
+#: before, and the window means move (found by a scan of 4000 random points at
+#: max_periods = 256; at the default budget it is a neutral orbit)
+SLOW = ((0.5343889244565606, 2.82801636121696, 2.8253189143838906), 0.21615783285176932)
+
+
 def test_not_converged_gives_no_value_only_the_range_of_window_means():
-    s = vf.Dimensionless(0.01, 1.01, 1.0)
-    nc = vf.friction_coefficient(s, vbar=0.02, settings=vf.SolverSettings(max_periods=256))
+    s = vf.Dimensionless(*SLOW[0])
+    nc = vf.friction_coefficient(s, v_inertial=SLOW[1],
+                                 settings=vf.SolverSettings(max_periods=256))
     assert nc.status is vf.Status.NOT_CONVERGED and not nc.trusted
     assert math.isnan(nc.mu_ratio) and nc.error == math.inf
     assert 0.0 <= nc.window_min < nc.window_max <= 1.0
     assert f"{nc.window_min:.6g}" in nc.message and "raise max_periods" in nc.message
-    # with the default budget the last three windows fall one way: a drift, said so
-    d = vf.friction_coefficient(s, vbar=0.02)
-    m = _period_means(s, d.v_inertial, 20_000)
-    early, late = m[5_000:10_000].mean(), m[15_000:20_000].mean()
-    assert d.drift_rate == pytest.approx((late - early) / 10_000, rel=0.3)
-    assert d.drift_rate < 0 and "drift one way" in d.message
+    # with 512 periods the last windows rise one way: a drift, said so, at the rate of
+    # the period means (their quarters, not the solver's windows)
+    d = vf.friction_coefficient(s, v_inertial=SLOW[1],
+                                settings=vf.SolverSettings(max_periods=512))
+    m = _period_means(s, SLOW[1], 512)
+    early, late = m[128:256].mean(), m[384:512].mean()
+    assert d.status is vf.Status.NOT_CONVERGED
+    assert d.drift_rate == pytest.approx((late - early) / 256, rel=0.3)
+    assert d.drift_rate > 0 and "slow transient" in d.message
 
 
 def test_the_unsettled_motion_near_beta_1_is_a_slow_drift_to_an_orbit():
     """Finding 4: (0.01, 1.01, 1, vbar 0.02) is not modulated for ever; its window means
-    fall for ~3e4 periods and then stay at the orbit's mean, which the solver finds
-    once it may run long enough."""
+    fall for ~3e4 periods and then stay at the orbit's mean.  Newton with a limited step
+    finds that orbit within a few periods of the start (before the step limit it was found
+    only by a run of 27,605 periods, the same mean to 3e-11), and its settling time,
+    estimated from the multiplier, says that the motion takes over 10^4 periods."""
     s = vf.Dimensionless(0.01, 1.01, 1.0)
-    r = vf.friction_coefficient(s, vbar=0.02, settings=vf.SolverSettings(max_periods=2**17))
-    assert r.status is vf.Status.PERIODIC and r.trusted
-    assert r.settling_periods > 20_000  # beyond the default budget: why it was not found
+    r = vf.friction_coefficient(s, vbar=0.02)
+    assert r.status is vf.Status.PERIODIC and r.trusted and r.work < 100
+    assert r.settling_periods > 10_000
     m = _period_means(s, r.v_inertial, 100_000)
     windows = m.reshape(-1, 1000).mean(axis=1)
     assert windows[0] > 0.5 and np.all(np.diff(windows[:25]) < 0)  # a drift, not a cycle
@@ -223,10 +235,10 @@ def test_slow_settling_is_said_in_the_message():
 
 # ----------------------------------------------------------------- simulate
 def test_simulate_steady_refuses_an_unsettled_point_and_unknown_starts():
-    s = vf.Dimensionless(0.01, 1.01, 1.0)
+    s = vf.Dimensionless(*SLOW[0])
     with pytest.raises(ValueError, match="no trusted steady state"):
-        vf.simulate(s, vbar=0.02, initial="steady",
-                    settings=vf.SolverSettings(max_periods=500))
+        vf.simulate(s, v_inertial=SLOW[1], initial="steady",
+                    settings=vf.SolverSettings(max_periods=256))
     with pytest.raises(ValueError, match="initial must be"):
         vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, initial="stady")
 

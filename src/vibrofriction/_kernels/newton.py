@@ -17,6 +17,10 @@ from .phases import M_A, M_ALPHA, M_C, M_K
 from .tangent import period_map_tangent
 
 NEWTON_ITERATIONS = 12  # Newton steps per attempt
+# p > 1 is tried where its section distance is this far below p = 1's (and below
+# PERIOD_EVIDENCE itself where p = 1's is large or inf: a change of phase)
+PERIOD_EVIDENCE = 0.1
+STEP_LIMIT = 0.25
 MAX_CHARTS = 2  # changes of chart per attempt: more is an iterate wandering between phases
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
@@ -200,8 +204,11 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             return True, y0, xd0, e0, ph, events, work, lam, bound, mu_first, mu + corr
         predicted = mu + corr
         dzn_prev = dzn
+        cut = min(1.0, STEP_LIMIT * scale0 / dzn) if dzn > 0.0 else 1.0
         for j in range(nd):
-            z[j] += dz[j]
+            z[j] += cut * dz[j]
+        if cut < 1.0:
+            dzn_prev, predicted = math.inf, math.nan
     return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first, math.nan
 
 
@@ -237,6 +244,10 @@ def try_newton(z, dprev, k, M, tol_state, max_events, win):
     for p in range(2, min(k, MAX_PERIOD) + 1):
         if dprev[p] < dprev[pbest]:
             pbest = p
+    if dprev[pbest] > PERIOD_EVIDENCE * min(dprev[1], 1.0):
+        # no period stands out: far from the orbit every distance is alike, and an
+        # attempt on p periods costs p times one on a single period
+        pbest = 1
     events, work = 0, 0.0
     for attempt in range(2):
         p = pbest if attempt == 0 else 1
