@@ -20,7 +20,7 @@ NEWTON_ITERATIONS = 12  # Newton steps per attempt
 # p > 1 is tried where its section distance is this far below p = 1's (and below
 # PERIOD_EVIDENCE itself where p = 1's is large or inf: a change of phase)
 PERIOD_EVIDENCE = 0.1
-STEP_LIMIT = 0.25
+STEP_LIMIT = 0.1  # a Newton step moves the body by at most this fraction of the state's size
 MAX_CHARTS = 2  # changes of chart per attempt: more is an iterate wandering between phases
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
@@ -204,7 +204,11 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             return True, y0, xd0, e0, ph, events, work, lam, bound, mu_first, mu + corr
         predicted = mu + corr
         dzn_prev = dzn
-        cut = min(1.0, STEP_LIMIT * scale0 / dzn) if dzn > 0.0 else 1.0
+        # the step of the body (y, x') is limited, as the divergence guard watches it: a
+        # long one leaves the piece of the map it was linearised on; e is not (at
+        # beta = 1e6 a step of 300 n/k in e is normal and comes back)
+        body = alpha * abs(dz[0]) + (abs(dz[1]) if nd > 1 else 0.0)
+        cut = min(1.0, STEP_LIMIT * scale0 / body) if body > 0.0 else 1.0
         for j in range(nd):
             z[j] += cut * dz[j]
         if cut < 1.0:
