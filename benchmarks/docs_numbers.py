@@ -67,6 +67,19 @@ def long_budget() -> Rows:
     return rows
 
 
+def near_beta_one_default() -> Rows:
+    """docs/solver.md, table near beta = 1 with the default budget (Newton with a limited
+    step, since b903c48): alpha = 0.01, a = 1, and Fig. 5's last point vbar = 0.072."""
+    rows = []
+    for beta, vbar in (*LONG_BUDGET, (1.01, 0.072)):
+        r = vf.friction_coefficient(vf.Dimensionless(0.01, beta, 1.0), vbar=vbar)
+        rows.append((f"beta {beta}, vbar {vbar}",
+                     f"{r.status.name.lower()}, mu/mu0 {r.mu_ratio:.6g}, work {r.work:,.0f}, "
+                     f"multiplier {r.multiplier:.5f}, settling {r.settling_periods:,.0f}, "
+                     f"trusted {r.trusted}"))
+    return rows
+
+
 def stiff_contacts() -> Rows:
     """docs/solver.md, "beta -> inf is a singular limit": cost and distance to the rigid
     contact at beta = 1e4 and 1e6 (a = 0.5, vbar 0.1 and 0.5; median of 3 runs)."""
@@ -252,7 +265,8 @@ def case_iv_plateau() -> Rows:
 
 
 CLAIMS: dict[str, Callable[[], Rows]] = {
-    f.__name__: f for f in (settling, unsettled, long_budget, stiff_contacts, near_alpha_one,
+    f.__name__: f for f in (settling, unsettled, long_budget, near_beta_one_default,
+                            stiff_contacts, near_alpha_one,
                             case_iii_damped, case_iv_rise, stiff_exact_law, loss_factor_floor,
                             fig13_zeta_series, damped_drift_settles, soft_limit,
                             critical_velocity_limits, case_iii_jumping, case_iv_plateau)}
