@@ -688,6 +688,16 @@ def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
     return p, slip_compliance, impedance, gp, rigid
 
 
+def _inplane_inputs(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on):
+    """The validated inputs of the in-plane closed forms (the schema's ranges; ``alpha``
+    as in the soft limit): ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``."""
+    on = _inplane_on(inplane_on)
+    values = validated({"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta,
+                        "eta_c": eta_c, "a_x": a_x, "phase_x": phase_x},
+                       ranges={"alpha": _SOFT_LIMIT})
+    return (on, *values.values())
+
+
 def inplane_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                               a_x: ArrayLike, phase_x: ArrayLike, zeta: ArrayLike = 0.0,
                               eta_c: ArrayLike = 0.0,
@@ -710,12 +720,8 @@ def inplane_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arra
     sliding) the condition is ``|V| >= V_c(phase_x + pi)``.  ``inf`` at an undamped
     resonance ``alpha = 1`` unless the holder's forcing cancels the normal one there.
     """
-    on = _inplane_on(inplane_on)
-    alpha, beta, a, zeta, eta = validated(
-        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
-        ranges={"alpha": _SOFT_LIMIT}).values()
-    a_x = checked("a_x", a_x, minimum=0.0)
-    phase = checked("phase_x", phase_x)
+    on, alpha, beta, a, zeta, eta, a_x, phase = _inplane_inputs(
+        alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on)
     p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)
     # a B - a_x G e^{i phi} = N / P + a / (k (1 + i eta_c)), N = a - a_x (G P) e^{i phi}
     num = a - a_x * gp * np.exp(1j * phase)
@@ -796,12 +802,8 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
     (``|a + Q| + |a - Q| > 2``, or ``a > 1``): the contact slips in every cycle.
     Valid where the stuck orbit is the attractor (damping; the solver is the judge).
     """
-    on = _inplane_on(inplane_on)
-    alpha, beta, a, zeta, eta = validated(
-        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
-        ranges={"alpha": _SOFT_LIMIT}).values()
-    a_x = checked("a_x", a_x, minimum=0.0)
-    phase = checked("phase_x", phase_x)
+    on, alpha, beta, a, zeta, eta, a_x, phase = _inplane_inputs(
+        alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on)
     p, _, impedance, gp, rigid = _inplane_factors(alpha, beta, zeta, eta, on)
     # T = -(k + i c) G P / (P + k + i c); rigid: -G P
     with np.errstate(divide="ignore", invalid="ignore"):
