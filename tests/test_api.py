@@ -164,8 +164,10 @@ def test_cli_mu_json_lines():
 
 
 def test_cli_mu_exits_3_with_a_count_when_a_point_is_not_trusted():
-    out = _cli("mu", "--alpha", "0.01", "--beta", "1.01", "--amplitude", "1",
-               "--vbar", "0.02,3", "--max-periods", "300")
+    # a slow jumping point (tests/test_trust.py's SLOW): not converged within 256 periods
+    out = _cli("mu", "--alpha", "0.5343889244565606", "--beta", "2.82801636121696",
+               "--amplitude", "2.8253189143838906", "--v-inertial", "0.21615783285176932,5",
+               "--max-periods", "256")
     assert out.returncode == 3, out.stderr
     assert "NOT TRUSTED" in out.stdout
     line, = out.stderr.strip().splitlines()
