@@ -20,7 +20,7 @@ TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_fac
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                               du_z=0.5e-6, mu0=0.3)
 #: a solver given too few periods to converge anywhere: nothing it returns is trusted
-STARVED = SolverSettings(max_periods=2, min_periods=1)
+STARVED = SolverSettings(max_periods=1, min_periods=1)  # no Newton attempt
 
 
 def synthetic(true: vf.Physical, amplitudes, rng, sigma=0.003, n=20, v=(1e-3, 0.2)):
