@@ -107,7 +107,10 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     undamped free oscillation of pure slip, radius 1), which the caller treats as such
     (:func:`.steady._run`).  An iterate whose image is in another phase on the section
     (the orbit sticks at ``tau = 2 pi k`` where the guess slid, or vice versa) continues
-    in that phase's coordinates.
+    in that phase's coordinates, twice at most (:data:`MAX_CHARTS`).  A step moves the
+    body by at most :data:`STEP_LIMIT` of the state's size (a long one leaves the piece
+    of the map it was linearised on); the iterate that strays :data:`NEWTON_DIVERGED`
+    times that size from the start has diverged.
 
     Returns ``(ok, y, x', e, phase, events, work, lam, shift, mu_first, mu)``: on success
     the orbit's section state, ``acc`` the accumulators of ``p`` periods from the accepted
@@ -238,7 +241,8 @@ def orbit_multiplier(z, p, M, max_events, acc):
 
 @jit
 def try_newton(z, dprev, k, M, tol_state, max_events, win):
-    """Newton on the period whose section distance is smallest, then on ``p = 1``.
+    """Newton on the period whose section distance is smallest where it stands out
+    (:data:`PERIOD_EVIDENCE`), then on ``p = 1``.
 
     On success ``z`` becomes the orbit's state and ``win`` the accumulators of its ``p``
     periods from there.  Returns ``(p, events, work, lam, shift)`` (:func:`newton_orbit`)
