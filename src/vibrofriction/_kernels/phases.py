@@ -121,6 +121,19 @@ def inplane_force(M, tau):
 
 
 @jit
+def _periodic_response(m, wr, wi):
+    """``Z = W / P`` of the harmonic force ``Re(W e^{it})``, ``W = wr + i wi``, on the
+    oscillator of mode ``m`` (``P = w0^2 - 1 + 2 i sigma``): ``(Zr, Zi, near)``, ``near``
+    where ``|P|`` is within ``RESONANT_BAND`` (use the responses ``C``, ``S`` instead)."""
+    pr = m[7] - 1.0
+    pi = 2.0 * m[1]
+    p2 = pr * pr + pi * pi
+    if p2 <= RESONANT_BAND * RESONANT_BAND:
+        return 0.0, 0.0, True
+    return (wr * pr + wi * pi) / p2, (wi * pr - wr * pi) / p2, False
+
+
+@jit
 def body(M, theta, y0, yd0, s):
     """``y(t)`` in slip ``s`` (``s = 0``: flight) from ``(y0, y0')`` at phase ``theta``.
 
@@ -133,13 +146,10 @@ def body(M, theta, y0, yd0, s):
     a = M[M_A]
     m = M[M_SLIP]
     p = -s / M[M_ALPHA]
-    pr = m[7] - 1.0
-    pi = 2.0 * m[1]
-    p2 = pr * pr + pi * pi
     ct = math.cos(theta)
     st = math.sin(theta)
     hc, hs = M[M_HC], M[M_HS]
-    if hc == 0.0 and hs == 0.0:
+    if not forced(M):
         wr = -s * a * ct
         wi = -s * a * st
         off = s == 0.0 or a == 0.0
@@ -149,10 +159,9 @@ def body(M, theta, y0, yd0, s):
         wr = wc * ct + hs * st
         wi = wc * st - hs * ct
         off = False
-    if off or p2 > RESONANT_BAND * RESONANT_BAND:
-        # Z = W e^{i theta} / P; y_p = Re(Z e^{it}) = Zr cos t - Zi sin t
-        zr = (wr * pr + wi * pi) / p2 if p2 > 0.0 else 0.0
-        zi = (wi * pr - wr * pi) / p2 if p2 > 0.0 else 0.0
+    # Z = W e^{i theta} / P; y_p = Re(Z e^{it}) = Zr cos t - Zi sin t
+    zr, zi, near = (0.0, 0.0, False) if off else _periodic_response(m, wr, wi)
+    if not near:
         D, E = initial_pair(m, y0 - p - zr, yd0 + zi)
         return (p, 0.0, zr, -zi, D, E, 0.0, 0.0, 0.0)
     D, E = initial_pair(m, y0 - p, yd0)
@@ -204,20 +213,15 @@ def stick_elongation(M, theta, y0, xd0, e0):
     m = M[M_STICK]
     p1 = alpha * V / beta
     p0 = (alpha * (e0 - y0) + M[M_GAMMA] * V - 2.0 * m[1] * p1) / beta
-    if M[M_HC] == 0.0 and M[M_HS] == 0.0:
+    if not forced(M):
         D, E = initial_pair(m, e0 - p0, xd0 - p1)
         return (p0, p1, 0.0, 0.0, D, E, 0.0, 0.0, 0.0)
     # the in-plane force h(theta + t) = h0 cos t + h1 sin t drives the stick oscillator
     # (P_st = beta - 1 + i (gamma + c)): its periodic response, or near the resonance
     # beta = 1 the responses from rest C, S of the stick mode
     h0, h1 = inplane_force(M, theta)
-    pr = m[7] - 1.0
-    pi = 2.0 * m[1]
-    p2 = pr * pr + pi * pi
-    if p2 > RESONANT_BAND * RESONANT_BAND:
-        # Z = (h0 - i h1) / P_st, e_p = Zr cos t - Zi sin t
-        zr = (h0 * pr - h1 * pi) / p2
-        zi = (-h1 * pr - h0 * pi) / p2
+    zr, zi, near = _periodic_response(m, h0, -h1)  # Z = (h0 - i h1) / P_st
+    if not near:
         D, E = initial_pair(m, e0 - p0 - zr, xd0 - p1 + zi)
         return (p0, p1, zr, -zi, D, E, 0.0, 0.0, 0.0)
     D, E = initial_pair(m, e0 - p0, xd0 - p1)
@@ -235,7 +239,7 @@ def rigid_stick_force(M, theta, y0):
     """``f(t) = -alpha y + gamma V + h`` with ``y = y0 - V t`` (rigid contact, body at rest
     relative to the substrate)."""
     alpha, V = M[M_ALPHA], M[M_V]
-    h0, h1 = inplane_force(M, theta) if M[M_HC] != 0.0 or M[M_HS] != 0.0 else (0.0, 0.0)
+    h0, h1 = inplane_force(M, theta) if forced(M) else (0.0, 0.0)
     return (-alpha * y0 + M[M_GAMMA] * V, alpha * V, h0, h1, 0.0, 0.0, 0.0, 0.0, 0.0)
 
 
