@@ -31,10 +31,19 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
     """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega)`` (eq. 25), ``nan``
     where the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count
     of untrusted points is ``np.isnan(...).sum()``."""
+    return _cof(system.mu0, _solve_points((*_groups(system, v0, du_z, omega), settings)))
+
+
+def _groups(system: Physical, v0, du_z, omega) -> tuple[NDArray[np.float64], ...]:
+    """``(alpha, beta, a, V, zeta, eta_c)`` of ``system`` at each measured point."""
     alpha, beta, a, zeta, eta = system.groups(du_z, omega)
-    V = system.v0_to_inertial(v0, omega)
-    out = solve_points(alpha, beta, a, V, zeta, eta, settings=settings)
-    return system.mu0 * np.where(out["trusted"], out["mu_ratio"], np.nan)
+    return alpha, beta, a, system.v0_to_inertial(v0, omega), zeta, eta
+
+
+def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
+    """``mu0 * mu_ratio``, nan where the solver does not trust its value."""
+    mu_ratio, trusted = solved
+    return mu0 * np.where(trusted, mu_ratio, np.nan)
 
 
 def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
@@ -125,16 +134,12 @@ class _Problem:
         if not _in_domain(values):
             return None
         system, d = Physical(**values), self.data
-        groups = system.groups(d["du_z"].to_numpy(), d["omega"].to_numpy())
-        return (system.mu0, *groups[:3], system.v0_to_inertial(d["v0"].to_numpy(),
-                                                                d["omega"].to_numpy()),
-                *groups[3:])
+        return (system.mu0, *_groups(system, d["v0"].to_numpy(), d["du_z"].to_numpy(),
+                                     d["omega"].to_numpy()))
 
     def _residuals(self, mu0: float, solved: tuple[NDArray, NDArray]
                    ) -> tuple[NDArray[np.float64], int, int]:
-        mu_ratio, trusted = solved
-        model = mu0 * np.where(trusted, mu_ratio, np.nan)
-        r = (model - self.data["cof"].to_numpy()) / self._scale()
+        r = (_cof(mu0, solved) - self.data["cof"].to_numpy()) / self._scale()
         bad = np.isnan(r)
         return np.where(bad, self.penalty(), r), 0, int(bad.sum())
 
