@@ -153,8 +153,11 @@ def test_cli_json_prints_every_field() -> None:
     assert moving["mu_ratio"] == r.mu_ratio and moving["status"] == r.status.value
     assert moving["system"]["beta"] == "inf" and moving["final_state"]["phase"] in (
         "stick", "slip+", "slip-")
-    for row in (static, moving):  # every parameter of the dimensionless model, by value
-        assert list(row["system"]) == list(parameter_names("dimensionless"))
+    for row in (static, moving):  # every parameter of the dimensionless model, by value,
+        # then its choices
+        assert list(row["system"]) == [*parameter_names("dimensionless"),
+                                       *schema.choice_names("dimensionless")]
+        assert row["system"]["inplane_on"] == "substrate"
         assert row["system"]["alpha"] == 0.5 and row["system"]["eta_c"] == 0.0
     assert static["final_state"] is None and static["status"] == "static limit"
     assert moving["window_min"] is None  # nan as null: not averaged
@@ -291,11 +294,11 @@ def test_the_sweep_fingerprint_covers_the_solver_and_the_schema() -> None:
 def test_every_parameter_is_described() -> None:
     assert len(PARAMETER) == len(PARAMETERS)
     for p in PARAMETERS:
-        assert p.model in MODELS and p.unit and p.symbol and p.equation, p
+        assert set(p.models) <= set(MODELS) and p.unit and p.symbol and p.equation, p
         assert len(p.long_name) > 10, p
         r = p.range
-        # every one is bounded but a phase and the signed velocity: any finite real
-        if p.name in ("phase_x", "v_inertial"):
+        # every one is bounded but a phase and the signed velocities: any finite real
+        if p.name in ("phase_x", "v_inertial", "v0"):
             assert r == schema.FINITE, p
         else:
             assert r.minimum is not None or r.maximum is not None, p

@@ -402,7 +402,8 @@ def test_continuation_over_a_physical_grid() -> None:
     (dict(mass=[0.01, -1.0]), r"mass must be finite and > 0, got -1.0"),
     (dict(k_x=[]), r"k_x: empty grid"),
     (dict(mas=[1.0]), r"unknown physical parameter\(s\) \['mas'\]"),
-    (dict(alpha=[0.1]), r"alpha, beta, amplitude, zeta, eta_c, vbar, v_inertial are not allowed"),
+    (dict(alpha=[0.1]),
+     r"alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not allowed"),
     (dict(k_xc=[1e-30]), r"invalid corner .*beta must be > alpha"),
 ])
 def test_physical_grid_errors(kwargs, message) -> None:

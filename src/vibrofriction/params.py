@@ -269,21 +269,35 @@ class Dimensionless:
         return self.amplitude > 1.0
 
     def critical_inertial_velocity(self) -> float:
-        """``V_c``, the inertial velocity at ``vbar = 1`` (eq. 12 with damping).
+        """``V_c``, the inertial velocity of continuous forward sliding (eq. 12 with
+        damping; with a longitudinal in-plane oscillation, the combined drive's).
 
-        Undamped ``a|beta - 1| / ((beta - alpha)|alpha - 1|)``: ``inf`` in case IV
-        (``alpha = 1``), ``0`` in case III (``beta = 1``); damping makes both finite
-        and positive (``theory.critical_inertial_velocity``, docs/damping.md).
+        Normal oscillation only, it is the velocity at ``vbar = 1``, undamped ``a|beta -
+        1| / ((beta - alpha)|alpha - 1|)``: ``inf`` in case IV (``alpha = 1``), ``0`` in
+        case III (``beta = 1``); damping makes both finite and positive
+        (``theory.critical_inertial_velocity``, docs/damping.md).  With ``a_x > 0`` it is
+        ``theory.inplane_critical_velocity`` (docs/inplane.md); backward sliding needs
+        ``|V|`` above the same expression at ``phase_x + pi``.
         """
-        return float(theory.critical_inertial_velocity(self.alpha, self.beta, self.amplitude,
-                                                       self.zeta, self.eta_c))
+        return float(theory.critical_inertial_velocity(
+            self.alpha, self.beta, self.amplitude, self.zeta, self.eta_c, self.a_x,
+            self.phase_x, self.inplane_on))
 
     @functools.cached_property
     def _vbar_unit(self) -> float:
         """``V_c`` where ``vbar`` exists (computed once per system: the fields are frozen
-        and validated); ValueError where it does not (not cached)."""
+        and validated); ValueError where it does not (not cached), and with an in-plane
+        oscillation, whose velocities are signed and have no ``vbar`` (eq. 16 scales
+        by the normal oscillation's ``v0*`` only)."""
+        self._check_vbar_inplane()
         return float(_critical_for_vbar(self.alpha, self.beta, self.amplitude, self.zeta,
                                         self.eta_c))
+
+    def _check_vbar_inplane(self) -> None:
+        if self.a_x > 0.0:
+            raise ValueError(f"vbar (v0/v0* of eq. 16) is not defined with an in-plane "
+                             f"oscillation (a_x = {self.a_x!r}); use the inertial velocity "
+                             "v_inertial (signed) instead")
 
     def vbar_to_inertial(self, vbar: ArrayLike) -> FloatOrArray:
         """Inertial velocity ``V = V_c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
@@ -291,6 +305,7 @@ class Dimensionless:
 
     def inertial_to_vbar(self, v_inertial: ArrayLike) -> FloatOrArray:
         """``vbar = V / V_c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""
+        self._check_vbar_inplane()
         return inertial_to_vbar(self.alpha, self.beta, self.amplitude, v_inertial, self.zeta,
                                 self.eta_c)
 
@@ -323,6 +338,14 @@ class Physical:
         from a damping ratio or quality factor; :meth:`with_damping`).
     c_xc : float
         Tangential contact dashpot parallel to ``k_xc`` (Kelvin-Voigt), N s/m, ``>= 0``.
+    du_x : float
+        Amplitude of the longitudinal in-plane oscillation ``du_x cos(omega t + phase_x)``,
+        m, ``>= 0`` (docs/inplane.md).
+    phase_x : float
+        Its phase relative to the normal oscillation, radians, finite.
+    inplane_on : str
+        Where it is imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
+        of ``k_x`` and ``c_x``).
     """
 
     mass: float
@@ -335,9 +358,13 @@ class Physical:
     mu0: float
     c_x: float = 0.0
     c_xc: float = 0.0
+    du_x: float = 0.0
+    phase_x: float = 0.0
+    inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "physical")
+        checked_choice("inplane_on", self.inplane_on)
 
     @classmethod
     def from_bench(cls, *, natural_frequency_hz: float, normal_load: float,
@@ -346,7 +373,8 @@ class Physical:
                    damping_ratio: float | None = None, k_zc: float | None = None,
                    k_xc: float | None = None, contact: FlatPunch | Sphere | None = None,
                    eta_c: float = 0.0, du_z: float | None = None,
-                   dF_N: float | None = None) -> Physical:
+                   dF_N: float | None = None, du_x: float = 0.0, phase_x: float = 0.0,
+                   inplane_on: str = "substrate") -> Physical:
         """The model of a tribometer from what the experimenter knows (docs/bench.md).
 
         * the pin: its natural frequency (Hz, from an impact test with the contact
@@ -358,7 +386,9 @@ class Physical:
           Hertz and Mindlin at ``normal_load``); optionally its loss factor ``eta_c``;
         * the load ``normal_load = F_N0`` (N), the drive frequency (Hz) and the
           oscillation as an indentation amplitude ``du_z`` (m) or a normal-force
-          amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted).
+          amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
+        * an in-plane oscillation along the sliding: its amplitude ``du_x`` (m), phase
+          ``phase_x`` (rad) and where it is imposed, ``inplane_on`` (docs/inplane.md).
         """
         f_n = float(checked("natural_frequency_hz", natural_frequency_hz, minimum=0.0,
                             strict=True))
@@ -390,7 +420,8 @@ class Physical:
         du_z = _valid("du_z", du_z) if du_z is not None else \
             float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
-                     omega=2.0 * math.pi * f_d, mu0=mu0)
+                     omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
+                     inplane_on=inplane_on)
         if quality_factor is not None and damping_ratio is not None:
             raise ValueError("give at most one of quality_factor and damping_ratio")
         if quality_factor is not None or damping_ratio is not None:
@@ -477,10 +508,28 @@ class Physical:
         return self.with_(**changes)
 
     def to_dimensionless(self) -> Dimensionless:
-        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta`` and ``eta_c``."""
+        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c`` and the
+        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``inplane_on``."""
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
-                             zeta=float(zeta), eta_c=float(eta_c))
+                             zeta=float(zeta), eta_c=float(eta_c),
+                             a_x=float(self.inplane_amplitude(self.du_x, self.omega)),
+                             phase_x=self.phase_x, inplane_on=self.inplane_on)
+
+    def require_normal_only(self, what: str) -> None:
+        """ValueError if this set-up has an in-plane oscillation, which ``what`` (a
+        feature of the package) does not take yet: refused, never ignored."""
+        if self.du_x > 0.0:
+            raise ValueError(f"{what} does not take an in-plane oscillation yet (du_x = "
+                             f"{self.du_x!r} m): give a set-up with du_x = 0")
+
+    def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
+        """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
+        ``du_x`` (m) at ``omega`` (rad/s), elementwise: the in-plane amplitude in units of
+        the length ``mu0 F_N0/(m omega^2)``, and equally ``omega du_x`` in units of the
+        inertial velocity ``mu0 F_N0/(m omega)``; the one conversion from SI."""
+        du_x = np.asarray(du_x, dtype=float)
+        return du_x * self.mass * np.asarray(omega, dtype=float) ** 2 / (self.mu0 * self.F_N0)
 
     def groups(self, du_z: ArrayLike, omega: ArrayLike) -> tuple[NDArray[np.float64], ...]:
         """``(alpha, beta, a, zeta, eta_c)`` (eq. 20, docs/damping.md) of this pin driven at
@@ -494,12 +543,18 @@ class Physical:
                 np.full(np.shape(omega), self.zeta), eta_c)
 
     def critical_velocity(self) -> float:
-        """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``).
+        """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``): above it
+        the contact slides forward continuously.
 
         Undamped: ``inf`` if ``k_x = m omega^2`` (case IV), 0 if ``k_x + k_xc = m omega^2``
         (case III) or ``du_z = 0``; ``k_xc = inf`` gives ``mu0 omega du_z k_zc /
-        |k_x - m omega^2 + i omega c_x|``.
+        |k_x - m omega^2 + i omega c_x|``.  With a longitudinal in-plane oscillation
+        (``du_x > 0``) the combined drive's (``theory.inplane_critical_velocity`` in m/s,
+        docs/inplane.md).
         """
+        if self.du_x > 0.0:
+            return float(self.to_dimensionless().critical_inertial_velocity()
+                         * self.velocity_unit())
         return float(theory.critical_velocity(self.mu0, self.omega, self.du_z, self.k_zc,
                                               self.k_xc, self.k_x, self.mass, self.c_x,
                                               self.c_xc))
@@ -521,7 +576,9 @@ class Physical:
                                  * self.velocity_unit())
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
-        """``vbar = v0 / v0*`` (eq. 16); ValueError where ``v0*`` is 0 or infinite."""
+        """``vbar = v0 / v0*`` (eq. 16), ``v0 >= 0``; ValueError where ``v0*`` is 0 or
+        infinite (a backward velocity has no ``vbar``)."""
+        v0 = validated({"v0": v0}, ranges={"v0": NONNEGATIVE})["v0"]
         return self.to_dimensionless().inertial_to_vbar(self.v0_to_inertial(v0))
 
     def vbar_to_v0(self, vbar: ArrayLike) -> FloatOrArray:

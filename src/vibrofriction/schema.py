@@ -256,10 +256,11 @@ FINITE = Range()  # any finite real (a phase, a signed velocity)
 class Parameter:
     """One parameter of the model: what it is, where it comes from, what it may be.
 
-    ``model`` is one of :data:`MODELS`; ``unit`` UDUNITS-style (``"1"``: dimensionless);
-    ``definition`` the parameter in terms of others (``"k_x / (m omega^2)"``; empty for
-    a primary one); ``range`` its allowed values; ``default`` its value when it is not
-    given (None: required).
+    ``model`` is one of :data:`MODELS` and ``also`` the other models that share it (a
+    phase is the same number in SI and scaled form); ``unit`` UDUNITS-style (``"1"``:
+    dimensionless); ``definition`` the parameter in terms of others (``"k_x / (m
+    omega^2)"``; empty for a primary one); ``range`` its allowed values; ``default`` its
+    value when it is not given (None: required).
     """
 
     name: str
@@ -271,6 +272,12 @@ class Parameter:
     range: Range
     default: float | None = None
     definition: str = ""
+    also: tuple[str, ...] = ()
+
+    @property
+    def models(self) -> tuple[str, ...]:
+        """Every model this parameter belongs to (``model`` first)."""
+        return (self.model, *self.also)
 
     @property
     def label(self) -> str:
@@ -280,18 +287,19 @@ class Parameter:
 
 
 def _p(name: str, model: str, unit: str, long_name: str, symbol: str, equation: str = "",
-       range: Range = POSITIVE, default: float | None = None, definition: str = "") -> Parameter:
+       range: Range = POSITIVE, default: float | None = None, definition: str = "",
+       also: tuple[str, ...] = ()) -> Parameter:
     return Parameter(name, model, unit, long_name, symbol, equation, range, default,
-                     definition)
+                     definition, also)
 
 
 _D, _P, _V = MODELS
 
 #: Every parameter of the model, in the order of the fields of
 #: :class:`~vibrofriction.Dimensionless`, then :class:`~vibrofriction.Physical`, then
-#: the velocities.  A new parameter is one entry here (docs/model.md, "Adding a
-#: parameter"): the validator, the sweep's coordinates, ``vibrofriction mu --json`` and
-#: the explorer follow.
+#: the velocities (``phase_x`` belongs to both and sits where both orders hold).  A new
+#: parameter is one entry here (docs/model.md, "Adding a parameter"): the validator, the
+#: sweep's coordinates, ``vibrofriction mu --json`` and the explorer follow.
 PARAMETERS: tuple[Parameter, ...] = (
     _p("alpha", _D, "1", "system stiffness over inertia, k_x / (m omega^2)", "alpha", "(20)",
        definition="k_x / (m omega^2)"),
@@ -310,8 +318,6 @@ PARAMETERS: tuple[Parameter, ...] = (
        "sliding), du_x m omega^2 / (mu0 F_N0), also its velocity amplitude in units of "
        "the inertial velocity", "a_x", "docs/inplane.md", NONNEGATIVE, 0.0,
        "du_x m omega^2 / (mu0 F_N0)"),
-    _p("phase_x", _D, "rad", "phase of the longitudinal in-plane oscillation relative to "
-       "the normal one, a_x cos(tau + phase_x)", "phase_x", "docs/inplane.md", FINITE, 0.0),
     _p("mass", _P, "kg", "mass of the body", "m", "Fig. 1b"),
     _p("k_x", _P, "N m-1", "tangential stiffness of the system spring", "k_x", "Fig. 1b"),
     _p("k_xc", _P, "N m-1", "tangential contact stiffness; inf = rigid contact", "k_x,c",
@@ -326,16 +332,23 @@ PARAMETERS: tuple[Parameter, ...] = (
        NONNEGATIVE, 0.0),
     _p("c_xc", _P, "N s m-1", "tangential contact dashpot parallel to k_xc (Kelvin-Voigt)",
        "c_x,c", "docs/damping.md", NONNEGATIVE, 0.0),
+    _p("du_x", _P, "m", "amplitude of the longitudinal in-plane oscillation, du_x cos(omega t "
+       "+ phase_x) (of the substrate or the holder: inplane_on)", "Delta u_x",
+       "docs/inplane.md", NONNEGATIVE, 0.0),
+    _p("phase_x", _D, "rad", "phase of the longitudinal in-plane oscillation relative to "
+       "the normal one, a_x cos(tau + phase_x)", "phase_x", "docs/inplane.md", FINITE, 0.0,
+       also=(_P,)),
     _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
        "(16)", NONNEGATIVE, definition="v0 / v0*"),
     _p("v_inertial", _V, VELOCITY_UNIT, FIELD["v_inertial"].long_name, "V", "Fig. 6",
        FINITE, definition="v0 m omega / (mu0 F_N0)"),
-    _p("v0", _V, "m s-1", "sliding velocity of the drive", "v0", "Fig. 1b", NONNEGATIVE),
+    _p("v0", _V, "m s-1", "sliding velocity of the drive (signed: negative slides the other "
+       "way)", "v0", "Fig. 1b", FINITE),
 )
 
 PARAMETER: dict[str, Parameter] = {p.name: p for p in PARAMETERS}
 if len(PARAMETER) != len(PARAMETERS) or any(
-        p.model not in MODELS or (p.range.above and p.range.above not in
+        any(m not in MODELS for m in p.models) or (p.range.above and p.range.above not in
                                   [q.name for q in PARAMETERS[:i]])
         for i, p in enumerate(PARAMETERS)):  # the validator checks in this order
     raise AssertionError("PARAMETERS: names must be unique, models known, and a parameter "
@@ -346,8 +359,9 @@ if len(PARAMETER) != len(PARAMETERS) or any(
 class Choice:
     """A model input that is one of a few names, not a number (``inplane_on``).
 
-    ``model`` is one of :data:`MODELS`; ``values`` the allowed names, ``default`` one of
-    them.  :func:`vibrofriction.validation.checked_choice` is its one check.  The model
+    ``model`` is one of :data:`MODELS` and ``also`` the other models that share it;
+    ``values`` the allowed names, ``default`` one of them.
+    :func:`vibrofriction.validation.checked_choice` is its one check.  The model
     dataclasses carry a choice as a field after their numeric parameters.
     """
 
@@ -356,6 +370,7 @@ class Choice:
     long_name: str
     values: tuple[str, ...]
     default: str
+    also: tuple[str, ...] = ()
 
 
 #: The model's choices (names, not numbers), by name.
@@ -363,20 +378,20 @@ CHOICES: dict[str, Choice] = {
     "inplane_on": Choice("inplane_on", _D, "where the in-plane oscillation is imposed: the "
                          "substrate (the contact point sticks to it; slip is relative to "
                          "it) or the pin's holder (the pulled end of the system spring)",
-                         ("substrate", "holder"), "substrate"),
+                         ("substrate", "holder"), "substrate", also=(_P,)),
 }
 
 
 def choice_names(model: str) -> tuple[str, ...]:
     """The names of the :data:`CHOICES` of ``model``."""
-    return tuple(c.name for c in CHOICES.values() if c.model == model)
+    return tuple(c.name for c in CHOICES.values() if model in (c.model, *c.also))
 
 
 def parameters(model: str) -> tuple[Parameter, ...]:
     """The parameters of ``model`` (one of :data:`MODELS`), in the schema's order."""
     if model not in MODELS:
         raise ValueError(f"model must be one of {list(MODELS)}, got {model!r}")
-    return tuple(p for p in PARAMETERS if p.model == model)
+    return tuple(p for p in PARAMETERS if model in p.models)
 
 
 def parameter_names(model: str) -> tuple[str, ...]:

@@ -197,6 +197,7 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     solver's (its ``tol_trusted`` decides which values are used).  Raises ValueError
     when no trusted point of the map respects the limits.
     """
+    pin.require_normal_only("the design")
     v0 = float(checked("v0", v0, minimum=0.0, strict=True))
     w_range = _range("omega", omega)
     d_range = _range("du_z", du_z, allow_zero=True)

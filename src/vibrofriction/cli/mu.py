@@ -9,7 +9,7 @@ import numpy as np
 import typer
 
 from ..params import Dimensionless, Physical
-from ..schema import parameter_names
+from ..schema import choice_names, parameter_names
 from ..solver import FrictionResult, SolverSettings, friction_coefficient
 from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
@@ -27,11 +27,19 @@ def mu_command(
         help="damping ratio of the pin c_x/(2 sqrt(k_x m)) = 1/(2Q) >= 0")] = "0",
     eta_c: Annotated[str, typer.Option(
         "--eta-c", help="loss factor of the contact omega c_xc/k_xc >= 0")] = "0",
+    a_x: Annotated[str, typer.Option(
+        "--a-x", help="in-plane oscillation along the sliding, du_x m omega^2/(mu0 F_N0) "
+        ">= 0 (docs/inplane.md)")] = "0",
+    phase_x: Annotated[str, typer.Option(
+        "--phase-x", help="its phase relative to the normal oscillation, rad")] = "0",
+    inplane_on: Annotated[str, typer.Option(
+        "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
+        "holder")] = "substrate",
     vbar: Annotated[str | None, typer.Option(help="v0/v0* (eq. 16); comma-separated list "
                                              "allowed")] = None,
     v_inertial: Annotated[str | None, typer.Option(
         "--v-inertial", help="v0 m omega/(mu0 F_N0) (Fig. 6; needed in cases III, IV "
-        "undamped); list allowed")] = None,
+        "undamped and with an in-plane oscillation; signed); list allowed")] = None,
     mass: Annotated[str | None, typer.Option(help="physical set-up: mass m, kg")] = None,
     k_x: Annotated[str | None, typer.Option("--k-x", help="system spring k_x, N/m")] = None,
     k_xc: Annotated[str | None, typer.Option(
@@ -44,10 +52,13 @@ def mu_command(
     mu0: Annotated[str | None, typer.Option(help="local coefficient of friction")] = None,
     c_x: Annotated[str, typer.Option("--c-x", help="pin dashpot, N s/m")] = "0",
     c_xc: Annotated[str, typer.Option("--c-xc", help="contact dashpot, N s/m")] = "0",
+    du_x: Annotated[str, typer.Option(
+        "--du-x", help="in-plane oscillation amplitude along the sliding, m (with "
+        "--phase-x, --inplane-on)")] = "0",
     quality_factor: Annotated[str | None, typer.Option(
         "--quality-factor", help="the pin's Q from an impact test (instead of --c-x)")] = None,
-    v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s; list "
-                                           "allowed")] = None,
+    v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s "
+                                           "(signed); list allowed")] = None,
     bench: Annotated[str | None, typer.Option(
         help="physical set-up from a bench file (JSON, docs/bench.md), with --v0")] = None,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
@@ -60,10 +71,12 @@ def mu_command(
 ) -> None:
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
 
-    Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c]) with
-    --vbar or --v-inertial, or a physical set-up in SI units (--mass --k-x --k-xc --k-zc
-    --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor, --c-xc]) with --v0.
+    Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c --a-x
+    --phase-x --inplane-on]) with --vbar or --v-inertial, or a physical set-up in SI units
+    (--mass --k-x --k-xc --k-zc --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor,
+    --c-xc, --du-x --phase-x --inplane-on]) with --v0.
     """
+    inplane = {"phase_x": parse_float(phase_x, "phase_x"), "inplane_on": inplane_on}
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
     settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
@@ -72,9 +85,15 @@ def mu_command(
             if any(v is not None for v in phys.values()):
                 raise ValueError("give either --bench or the SI flags")
             physical = Physical.from_bench_file(bench)
+            if parse_float(du_x, "du_x") > 0.0:
+                physical = physical.with_(du_x=parse_float(du_x, "du_x"), **inplane)
         else:
             physical = _physical(phys, c_x, c_xc, quality_factor,
-                                 (alpha, beta, amplitude, vbar, v_inertial))
+                                 (alpha, beta, amplitude, vbar, v_inertial),
+                                 du_x=parse_float(du_x, "du_x"), **inplane)
+        if parse_float(a_x, "a_x") != 0.0:
+            raise ValueError("--a-x is the dimensionless amplitude: a physical set-up takes "
+                             "--du-x (m)")
         if v0 is None:
             raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
         system = physical.to_dimensionless()
@@ -87,21 +106,26 @@ def mu_command(
             raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
         system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
                                parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
-                               parse_float(eta_c, "eta_c"))
+                               parse_float(eta_c, "eta_c"), parse_float(a_x, "a_x"),
+                               **inplane)
+        if parse_float(du_x, "du_x") != 0.0:
+            raise ValueError("--du-x (m) needs a physical set-up: the dimensionless system "
+                             "takes --a-x")
         results = _dimensionless(system, vbar, v_inertial, initial, settings)
     _print(system, results, as_json)
     exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)
 
 
 def _physical(phys: dict, c_x: str, c_xc: str, quality_factor: str | None,
-              dimensionless: tuple) -> Physical:
+              dimensionless: tuple, **inplane) -> Physical:
     if any(v is not None for v in dimensionless):
         raise ValueError("give either the dimensionless system or the physical set-up")
     missing = ["--" + k.replace("_", "-") for k, v in phys.items() if v is None]
     if missing:
         raise ValueError("a physical set-up needs " + ", ".join(missing))
     values = {k: parse_float(v, k) for k, v in phys.items()}
-    system = Physical(**values, c_x=parse_float(c_x, "c_x"), c_xc=parse_float(c_xc, "c_xc"))
+    system = Physical(**values, c_x=parse_float(c_x, "c_x"), c_xc=parse_float(c_xc, "c_xc"),
+                      **inplane)
     if quality_factor is not None:
         if system.c_x != 0.0:
             raise ValueError("give either --c-x or --quality-factor")
@@ -132,6 +156,7 @@ def json_row(r: FrictionResult) -> dict:
     row = {k: _json_value(v) for k, v in r.as_dict().items()}
     row["system"] = {n: json_number(getattr(r.system, n))
                      for n in parameter_names("dimensionless")}
+    row["system"].update({n: getattr(r.system, n) for n in choice_names("dimensionless")})
     row["vbar"] = json_number(r.vbar)
     row["message"] = r.message
     return row
@@ -140,8 +165,11 @@ def json_row(r: FrictionResult) -> dict:
 def _print(system: Dimensionless, results, as_json: bool) -> None:
     if not as_json:
         damping = (f" zeta={system.zeta:g} eta_c={system.eta_c:g}" if system.damped else "")
+        inplane = (f" a_x={system.a_x:g} phase_x={system.phase_x:g} on the "
+                   f"{system.inplane_on} (critical velocity "
+                   f"{system.critical_inertial_velocity():.5g})" if system.a_x > 0 else "")
         typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g}"
-                   f"{damping} case {system.case.value}")
+                   f"{damping}{inplane} case {system.case.value}")
         typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} {'error':>9}  status")
     for r in results:
         if as_json:

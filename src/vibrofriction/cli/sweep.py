@@ -34,9 +34,19 @@ def sweep_command(
     zeta: Annotated[str | None, _opt("damping ratio of the pin (default 0)")] = None,
     eta_c: Annotated[str | None, typer.Option(
         "--eta-c", help=f"loss factor of the contact (default 0); {_AXIS}")] = None,
+    a_x: Annotated[str | None, typer.Option(
+        "--a-x", help=f"in-plane oscillation along the sliding, du_x m omega^2/(mu0 F_N0) "
+        f"(default 0; docs/inplane.md); {_AXIS}")] = None,
+    phase_x: Annotated[str | None, typer.Option(
+        "--phase-x", help=f"its phase relative to the normal oscillation, rad (default 0; "
+        f"physical sweeps too); {_AXIS}")] = None,
+    inplane_on: Annotated[str, typer.Option(
+        "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
+        "holder")] = "substrate",
     vbar: Annotated[str | None, _opt("velocity v0/v0* (eq. 16)")] = None,
     v_inertial: Annotated[str | None, typer.Option(
-        "--v-inertial", help=f"velocity v0 m omega/(mu0 F_N0) (Fig. 6); {_AXIS}")] = None,
+        "--v-inertial", help=f"velocity v0 m omega/(mu0 F_N0) (Fig. 6; signed); {_AXIS}")]
+    = None,
     mass: Annotated[str | None, _opt("physical sweep: mass m, kg")] = None,
     k_x: Annotated[str | None, typer.Option("--k-x", help=f"k_x, N/m; {_AXIS}")] = None,
     k_xc: Annotated[str | None, typer.Option("--k-xc", help=f"k_xc, N/m; {_AXIS}")] = None,
@@ -49,7 +59,10 @@ def sweep_command(
         "--c-x", help=f"physical sweep: pin dashpot, N s/m (default 0); {_AXIS}")] = None,
     c_xc: Annotated[str | None, typer.Option(
         "--c-xc", help=f"physical sweep: contact dashpot, N s/m (default 0); {_AXIS}")] = None,
-    v0: Annotated[str | None, _opt("physical sweep: velocity v0, m/s")] = None,
+    du_x: Annotated[str | None, typer.Option(
+        "--du-x", help=f"physical sweep: in-plane amplitude along the sliding, m (default "
+        f"0); {_AXIS}")] = None,
+    v0: Annotated[str | None, _opt("physical sweep: velocity v0, m/s (signed)")] = None,
     scheduler: Annotated[str | None, typer.Option(
         help="Dask scheduler address (tcp://host:port): run on that cluster")] = None,
     workers: Annotated[int | None, typer.Option(
@@ -81,10 +94,11 @@ def sweep_command(
         raise ValueError("give either --scheduler or --workers")
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
-    damping = {"c_x": c_x, "c_xc": c_xc}
+    optional = {"c_x": c_x, "c_xc": c_xc, "du_x": du_x}
     grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
-                      vbar=vbar, v_inertial=v_inertial), phys, damping, v0)
-    options = dict(store=out, chunk_size=chunk_size,
+                      a_x=a_x, vbar=vbar, v_inertial=v_inertial), phys, optional, v0,
+                 phase_x)
+    options = dict(store=out, chunk_size=chunk_size, inplane_on=inplane_on,
                    settings=SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted),
                    initial=initial,
                    continuation=continuation, progress=progress, overwrite=overwrite)
@@ -102,16 +116,17 @@ def _flag(name: str) -> str:
 
 
 def _grid(dimensionless: dict[str, str | None], phys: dict[str, str | None],
-          damping: dict[str, str | None], v0: str | None) -> dict:
-    """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid."""
-    if any(v is not None for v in (*phys.values(), *damping.values())) or v0 is not None:
+          optional: dict[str, str | None], v0: str | None, phase_x: str | None) -> dict:
+    """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid
+    (``optional``: the SI parameters with a default; ``phase_x`` belongs to both kinds)."""
+    if any(v is not None for v in (*phys.values(), *optional.values())) or v0 is not None:
         if any(v is not None for v in dimensionless.values()):
             raise ValueError("give either the dimensionless parameters or the physical ones")
-        return _physical_grid(phys, damping, v0)
-    return _dimensionless_grid(**dimensionless)
+        return _physical_grid(phys, {**optional, "phase_x": phase_x}, v0)
+    return _dimensionless_grid(**dimensionless, phase_x=phase_x)
 
 
-def _physical_grid(phys: dict[str, str | None], damping: dict[str, str | None],
+def _physical_grid(phys: dict[str, str | None], optional: dict[str, str | None],
                    v0: str | None) -> dict:
     from ..sweep import parse_axis
 
@@ -120,14 +135,15 @@ def _physical_grid(phys: dict[str, str | None], damping: dict[str, str | None],
         raise ValueError("a physical sweep needs every SI parameter and v0; missing "
                          + ", ".join(_flag(m) for m in missing))
     values = {k: parse_axis(v, k) for k, v in phys.items() if v is not None}
-    values.update({k: parse_axis(v, k) for k, v in damping.items() if v is not None})
+    values.update({k: parse_axis(v, k) for k, v in optional.items() if v is not None})
     base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
     return dict(system=base, v0=parse_axis(v0, "v0"), **values)
 
 
 def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
-                        zeta: str | None, eta_c: str | None, vbar: str | None,
-                        v_inertial: str | None) -> dict:
+                        zeta: str | None, eta_c: str | None, a_x: str | None,
+                        vbar: str | None, v_inertial: str | None,
+                        phase_x: str | None) -> dict:
     from ..sweep import parse_axis
 
     given = {"alpha": alpha, "beta": beta, "amplitude": amplitude}
@@ -137,7 +153,7 @@ def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | No
     if (vbar is None) == (v_inertial is None):
         raise ValueError("give exactly one of --vbar and --v-inertial")
     grid = {n: parse_axis(v, n) for n, v in given.items() if v is not None}
-    for n, v in (("zeta", zeta), ("eta_c", eta_c)):
+    for n, v in (("zeta", zeta), ("eta_c", eta_c), ("a_x", a_x), ("phase_x", phase_x)):
         if v is not None:
             grid[n] = parse_axis(v, n)
     if vbar is not None:

@@ -49,6 +49,9 @@ def sweep(
     amplitude: ArrayLike | None = None,
     zeta: ArrayLike | None = None,
     eta_c: ArrayLike | None = None,
+    a_x: ArrayLike | None = None,
+    phase_x: ArrayLike | None = None,
+    inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -75,15 +78,22 @@ def sweep(
         (``alpha``, ``beta``, ``amplitude`` keywords override it) or a
         :class:`~vibrofriction.params.Physical` system, swept over any of its SI
         fields passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
-        du_z=..., omega=..., mu0=..., c_x=..., c_xc=...``) and the velocity ``v0`` (m/s).
+        du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...``) and the
+        velocity ``v0`` (m/s).
     alpha, beta, amplitude : eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid
         contact.  ``beta > alpha`` must hold at every grid point.
     zeta, eta_c : the pin's damping ratio and the contact's loss factor (docs/damping.md);
         default the system's, or 0.  Physical systems sweep ``c_x``, ``c_xc`` (N s/m).
+    a_x, phase_x : the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)``
+        (docs/inplane.md); default the system's, or 0.  Physical systems sweep ``du_x``
+        (m) and ``phase_x`` (rad).
+    inplane_on : where the in-plane oscillation is imposed, ``"substrate"`` or
+        ``"holder"`` (one for the whole grid); default the system's, or ``"substrate"``.
     vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
-        exist where ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``) or the inertial
-        velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6).
-    v0 : velocity in m/s (Physical systems).
+        exist where ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``, nor with an
+        in-plane oscillation) or the inertial velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6;
+        signed: negative slides the other way).
+    v0 : velocity in m/s (Physical systems; signed).
     store : path of a zarr store.  Each finished block is written as soon as it is
         done; calling again with the same arguments resumes, recomputing only
         unfinished blocks.  A store made for another grid, other settings, another
@@ -125,7 +135,7 @@ def sweep(
     """
     version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,
-                     eta_c=eta_c, vbar=vbar,
+                     eta_c=eta_c, a_x=a_x, phase_x=phase_x, inplane_on=inplane_on, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=version, fingerprint=fingerprint)

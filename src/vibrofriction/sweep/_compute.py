@@ -83,10 +83,12 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     point = {n: p[n] for n in DIMENSIONLESS}
     shape = p["alpha"].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
-    critical = np.asarray(theory.critical_inertial_velocity(**point), dtype=float).reshape(shape)
+    critical = np.asarray(theory.critical_inertial_velocity(**point, inplane_on=plan.inplane_on),
+                          dtype=float).reshape(shape)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
-        system = Dimensionless(**{n: float(x[i]) for n, x in point.items()})
+        system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},
+                               inplane_on=plan.inplane_on)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
     return point, {"critical_velocity": critical}, V
 
@@ -98,7 +100,8 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     V = np.empty((*shape, vel.size))
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
-        system = Physical(**{name: float(arr[i]) for name, arr in p.items()})
+        system = Physical(**{name: float(arr[i]) for name, arr in p.items()},
+                          inplane_on=plan.inplane_on)
         dim = system.to_dimensionless()
         for n, x in point.items():
             x[i] = getattr(dim, n)
@@ -116,6 +119,7 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
             cols = solve_points(**{n: x[i] for n, x in point.items()}, v_inertial=V[i][j],
+                                inplane_on=plan.inplane_on,
                                 initial=state if state is not None else plan.initial,
                                 settings=plan.settings)
             if out is None:
@@ -144,6 +148,7 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
         V = np.broadcast_to(V[..., None, :], shape)
     else:
         cols = solve_points(**{n: x[..., None] for n, x in point.items()}, v_inertial=V,
+                            inplane_on=plan.inplane_on,
                             initial=plan.initial, settings=plan.settings)
         shape = V.shape
     cols["v_inertial"] = V

@@ -21,7 +21,7 @@ def _attrs(plan: Plan) -> dict:
     s = dataclasses.asdict(plan.settings)
     attrs = {
         "title": "vibrofriction parameter atlas: steady-state friction under normal "
-                 "oscillations",
+                 "and in-plane oscillations",
         "references": REFERENCE,
         "source": f"vibrofriction {plan.version}",
         "vibrofriction_version": plan.version,
@@ -32,6 +32,7 @@ def _attrs(plan: Plan) -> dict:
                                            else ())),
         "fixed": " ".join(sorted(plan.fixed)),
         "initial": plan.initial,
+        "inplane_on": plan.inplane_on,
         "continuation": int(plan.continuation),
         "solver_settings": json.dumps(s, sort_keys=True),
     }

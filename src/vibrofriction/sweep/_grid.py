@@ -25,9 +25,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..params import Dimensionless, Physical
-from ..schema import PARAMETER, parameter_names
+from ..schema import CHOICES, PARAMETER, choice_names, parameter_names
 from ..solver import SolverSettings
-from ..validation import validated
+from ..validation import checked_choice, validated
 from ._variables import signature as variables_signature
 
 __all__ = [
@@ -150,6 +150,7 @@ class Plan:
     chunks: tuple[int, ...]  # block shape over `dims`
     version: str
     fingerprint: str = ""  # hash of the solver's source (see _compute.identity)
+    inplane_on: str = "substrate"  # where the in-plane oscillation is imposed (schema.CHOICES)
 
     # ---- shape
     @property
@@ -222,6 +223,7 @@ class Plan:
             "velocity": {self.velocity.name: _hex(self.velocity.values)},
             "settings": dataclasses.asdict(self.settings),
             "initial": self.initial,
+            "inplane_on": self.inplane_on,
             "continuation": self.continuation,
             "version": self.version,
             "fingerprint": self.fingerprint,
@@ -269,6 +271,9 @@ def make_plan(
     amplitude: ArrayLike | None = None,
     zeta: ArrayLike | None = None,
     eta_c: ArrayLike | None = None,
+    a_x: ArrayLike | None = None,
+    phase_x: ArrayLike | None = None,
+    inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -282,21 +287,27 @@ def make_plan(
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work."""
     settings = _checked_options(settings, initial, chunk_size)
+    on = getattr(system, "inplane_on", CHOICES["inplane_on"].default) if inplane_on is None \
+        else checked_choice("inplane_on", inplane_on)
     if isinstance(system, Physical):
         kind = "physical"
-        params, velocity = _physical_axes(system, dict(physical or {}), v0, dict(
-            alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, vbar=vbar,
-            v_inertial=v_inertial))
+        physical = dict(physical or {})
+        if phase_x is not None:
+            physical["phase_x"] = phase_x
+        params, velocity = _physical_axes(system.with_(inplane_on=on), physical, v0, dict(
+            alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, a_x=a_x,
+            vbar=vbar, v_inertial=v_inertial))
     else:
         kind = "dimensionless"
-        values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c)
+        values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
+                      a_x=a_x, phase_x=phase_x)
         params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
                                                dict(physical or {}), v0)
     if continuation:
         _check_continuation(velocity)
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
                 initial=initial, continuation=bool(continuation), chunks=(),
-                version=version, fingerprint=fingerprint)
+                version=version, fingerprint=fingerprint, inplane_on=on)
     n_tail = int(continuation) + int(velocity.swept)
     if chunk_size is None:
         chunk_size = auto_chunk_size(int(np.prod(plan.shape)))
@@ -326,8 +337,8 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     """The SI axes (canonical order) and ``v0`` of a sweep around ``system``."""
     if any(v is not None for v in dimensionless.values()):
         raise ValueError("a Physical system is swept over its SI parameters and v0; "
-                         "alpha, beta, amplitude, zeta, eta_c, vbar, v_inertial are not "
-                         "allowed (sweep c_x, c_xc instead of zeta, eta_c)")
+                         "alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not "
+                         "allowed (sweep c_x, c_xc, du_x instead of zeta, eta_c, a_x)")
     unknown = sorted(set(physical) - set(PHYSICAL))
     if unknown:
         raise ValueError(f"unknown physical parameter(s) {unknown}; "
@@ -336,12 +347,13 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
         raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
     base = dataclasses.asdict(system)
     params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
+    choices = {n: base[n] for n in choice_names("physical")}
     velocity = _axis("v0", v0)
     validated({"v0": velocity.values})
     for a in params:  # each value of each axis, with the others at their base values
         for x in np.atleast_1d(a.values):
             system.with_(**{a.name: float(x)})
-    _check_physical_corners(params, velocity)
+    _check_physical_corners(params, velocity, choices)
     return params, velocity
 
 
@@ -377,6 +389,10 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     _check_above(axes)
     if velocity.name == "vbar":
         by_name = {a.name: a for a in axes}
+        if np.any(by_name["a_x"].values > 0.0):
+            raise ValueError("vbar (v0/v0* of eq. 16) is not defined with an in-plane "
+                             "oscillation (a_x > 0 in the grid): sweep v_inertial (signed) "
+                             "instead")
         _check_vbar_exists(*(by_name[n] for n in ("alpha", "beta", "amplitude", "zeta",
                                                   "eta_c")))
     return axes, velocity
@@ -424,22 +440,23 @@ def _check_continuation(velocity: Axis) -> None:
         raise ValueError(f"continuation needs {velocity.name} strictly increasing")
 
 
-def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis) -> None:
+def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis,
+                            choices: dict[str, str]) -> None:
     """The dimensionless groups are monotonic in each SI parameter: check the corners.
 
     Catches combinations that are valid one by one but not together (overflow of
     ``m omega^2``, ``k_xc`` below the rounding of ``k_x`` so that ``beta == alpha``).
     """
     ends = [(float(np.min(a.values)), float(np.max(a.values))) for a in params]
-    vmax = float(np.max(velocity.values))
+    vmin, vmax = float(np.min(velocity.values)), float(np.max(velocity.values))
     for corner in itertools.product(*ends):
-        p = Physical(*corner)
+        p = Physical(**dict(zip(PHYSICAL, corner, strict=True)), **choices)
         try:
             p.to_dimensionless()
-            V = float(p.v0_to_inertial(vmax))
+            V = max(abs(float(p.v0_to_inertial(v))) for v in (vmin, vmax))
         except ValueError as exc:
             raise ValueError(f"the physical grid has an invalid corner "
                              f"{dict(zip(PHYSICAL, corner, strict=True))}: {exc}") from None
         if not math.isfinite(V):
-            raise ValueError(f"v0 = {vmax!r} overflows the inertial velocity at "
+            raise ValueError(f"v0 = {vmin!r}..{vmax!r} overflows the inertial velocity at "
                              f"{dict(zip(PHYSICAL, corner, strict=True))}")

@@ -132,19 +132,22 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
     """Variables of the non-velocity parameters only (one value per curve)."""
     if kind == "dimensionless":
         return (Variable("critical_velocity", "f8", np.nan, {
-            "long_name": "critical velocity v0* in inertial units (V at vbar = 1), damped; "
-                         "undamped inf in case IV (alpha = 1), 0 in case III (beta = 1); "
-                         "0 at amplitude 0",
+            "long_name": "critical velocity of continuous forward sliding in inertial "
+                         "units, damped (V at vbar = 1 without in-plane oscillation; with "
+                         "one, the combined drive's, docs/inplane.md); undamped inf in case "
+                         "IV (alpha = 1), 0 in case III (beta = 1); 0 at amplitude 0",
             "symbol": "v0* m omega / (mu0 F_N0)", "units": _VEL_UNIT,
             "equation": "(12)"}),)
     return (
         Variable("critical_velocity", "f8", np.nan, {
-            "long_name": "critical velocity above which the contact slides continuously; "
-                         "inf at k_x = m omega^2 (case IV), 0 at k_x + k_xc = m omega^2 "
-                         "(case III)",
+            "long_name": "critical velocity above which the contact slides continuously "
+                         "forward (with an in-plane oscillation, the combined drive's); inf "
+                         "at k_x = m omega^2 (case IV), 0 at k_x + k_xc = m omega^2 (case "
+                         "III)",
             "symbol": "v0*", "units": "m s-1", "equation": "(12)"}),
         *(Variable(n, "f8", np.nan, dict(COORD_ATTRS[n]))
-          for n in parameter_names("dimensionless")),  # derived from the SI ones
+          for n in parameter_names("dimensionless")  # derived from the SI ones
+          if n not in parameter_names("physical")),  # phase_x: an SI parameter itself
     )
 
 

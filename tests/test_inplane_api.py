@@ -1,0 +1,193 @@
+"""The in-plane oscillation through the public API: Physical (SI), the sweep, the CLI.
+
+The solver's in-plane physics is tested in tests/test_inplane_solver.py against the
+independent reference; here the SI conversion, the critical velocity of the combined
+drive in m/s, the mirror symmetry through the sweep, validation and the command line.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction import Dimensionless, Physical, friction_coefficient, sweep
+
+#: a pin like tests/test_fit.py's, at 1 kHz, with a 1 um longitudinal oscillation
+PIN = dict(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
+           omega=2 * math.pi * 1000.0, mu0=0.3)
+
+
+def test_physical_inplane_amplitude_is_the_vibration_velocity_in_inertial_units() -> None:
+    """``a_x = du_x m omega^2/(mu0 F_N0)`` is also ``omega du_x`` over the velocity unit:
+    two routes through different methods give the same number."""
+    p = Physical(**PIN, du_x=1e-6, phase_x=1.0, inplane_on="holder")
+    d = p.to_dimensionless()
+    assert d.a_x == pytest.approx(p.omega * p.du_x / p.velocity_unit(), rel=1e-14)
+    assert d.a_x == pytest.approx(p.v0_to_inertial(p.omega * p.du_x), rel=1e-14)
+    assert (d.phase_x, d.inplane_on) == (1.0, "holder")
+    # no in-plane oscillation: the same dimensionless system as before the fields existed
+    assert Physical(**PIN).to_dimensionless() == Dimensionless(
+        *Physical(**PIN).groups(PIN["du_z"], PIN["omega"]))
+
+
+def test_physical_critical_velocity_of_the_combined_drive() -> None:
+    """Above ``critical_velocity()`` (m/s) the contact slides continuously (mu = mu0),
+    below it it does not; backward, the same at ``phase_x + pi`` (docs/inplane.md)."""
+    for on in ("substrate", "holder"):
+        p = Physical(**PIN, du_x=2e-6, phase_x=0.7, inplane_on=on)
+        vc = p.critical_velocity()
+        assert vc > 0.0 and vc != Physical(**PIN).critical_velocity()
+        above = friction_coefficient(p, v0=1.02 * vc)
+        below = friction_coefficient(p, v0=0.9 * vc)
+        assert above.trusted and above.mu_ratio == pytest.approx(1.0, abs=1e-9)
+        assert below.trusted and below.mu_ratio < 1.0 - 1e-3
+        back = p.with_(phase_x=0.7 + math.pi).critical_velocity()
+        assert friction_coefficient(p, v0=-1.02 * back).mu_ratio == pytest.approx(-1.0,
+                                                                                abs=1e-9)
+        assert friction_coefficient(p, v0=-0.9 * back).mu_ratio > -1.0 + 1e-3
+
+
+@pytest.mark.parametrize(("changes", "message"), [
+    ({"du_x": -1e-6}, r"du_x must be finite and >= 0, got -1e-06"),
+    ({"du_x": math.inf}, r"du_x must be finite and >= 0, got inf"),
+    ({"phase_x": math.nan}, r"phase_x must be finite, got nan"),
+    ({"inplane_on": "disk"}, r"inplane_on must be one of 'substrate', 'holder', got 'disk'"),
+])
+def test_physical_inplane_validation(changes, message) -> None:
+    with pytest.raises(ValueError, match=message):
+        Physical(**{**PIN, **changes})
+
+
+def test_vbar_is_refused_with_an_inplane_oscillation() -> None:
+    p = Physical(**PIN, du_x=1e-6)
+    for call in (lambda: p.v0_to_vbar(0.01), lambda: p.vbar_to_v0(0.5),
+                 lambda: friction_coefficient(p.to_dimensionless(), vbar=0.5),
+                 lambda: sweep(Dimensionless(0.5, 2.0, 0.5, a_x=0.2), vbar=[0.5],
+                               workers=1, progress=False)):
+        with pytest.raises(ValueError, match=r"vbar .* not defined with an in-plane"):
+            call()
+
+
+def test_from_bench_takes_the_inplane_oscillation() -> None:
+    p = Physical.from_bench(natural_frequency_hz=800.0, normal_load=20.0,
+                            drive_frequency_hz=1000.0, mu0=0.3, mass=0.01, k_zc=2e7,
+                            k_xc=1.5e7, du_z=5e-7, du_x=1e-6, phase_x=0.5,
+                            inplane_on="holder")
+    assert (p.du_x, p.phase_x, p.inplane_on) == (1e-6, 0.5, "holder")
+
+
+def test_sweep_mirror_symmetry_and_mount() -> None:
+    """``mu(V; phase_x) = -mu(-V; phase_x + pi)`` over a sweep of signed velocities and
+    phases, on the substrate and on the holder; the two mounts differ (alpha != 1/2)."""
+    phases = np.array([0.0, 0.9, math.pi, 0.9 + math.pi])
+    V = np.array([-0.6, -0.05, 0.05, 0.6])
+    out = {}
+    for on in ("substrate", "holder"):
+        ds = sweep(Dimensionless(0.3, 2.0, 0.5, zeta=0.05), a_x=0.5, phase_x=phases,
+                   v_inertial=V, inplane_on=on, workers=1, progress=False)
+        assert ds.attrs["inplane_on"] == on and bool(ds.trusted.all())
+        mu = ds.mu_ratio.values
+        err = ds.error.values
+        for i, j in ((0, 2), (1, 3)):  # phase and phase + pi
+            np.testing.assert_array_less(np.abs(mu[i] + mu[j][::-1]),
+                                         err[i] + err[j][::-1] + 1e-9)
+        out[on] = mu
+        point = friction_coefficient(Dimensionless(0.3, 2.0, 0.5, zeta=0.05, a_x=0.5,
+                                                   phase_x=0.9, inplane_on=on),
+                                     v_inertial=-0.05)
+        assert point.mu_ratio == mu[1, 1]
+    assert np.max(np.abs(out["substrate"] - out["holder"])) > 0.05
+
+
+def test_physical_sweep_over_the_inplane_amplitude() -> None:
+    p = Physical(**PIN, phase_x=1.0, inplane_on="holder")
+    ds = sweep(p, du_x=[0.0, 1e-6], v0=[-0.01, 0.01], workers=1, progress=False)
+    assert ds.mu_ratio.dims == ("du_x", "v0") and float(ds.phase_x) == 1.0
+    assert ds.a_x.values[0] == 0.0
+    assert ds.a_x.values[1] == pytest.approx(p.with_(du_x=1e-6).to_dimensionless().a_x)
+    # without an in-plane oscillation the curve is odd in v0; with one it is not
+    mu = ds.mu_ratio.values
+    assert mu[0, 0] == pytest.approx(-mu[0, 1], abs=1e-9)
+    assert abs(mu[1, 0] + mu[1, 1]) > 1e-3
+    assert float(ds.critical_velocity[1]) == pytest.approx(
+        p.with_(du_x=1e-6).critical_velocity())
+
+
+def test_store_remembers_the_mount(tmp_path) -> None:
+    kwargs = dict(a_x=0.3, v_inertial=[0.1, 0.2], workers=1, progress=False,
+                  store=tmp_path / "a.zarr")
+    sweep(Dimensionless(0.5, 2.0, 0.5), **kwargs)
+    with pytest.raises(ValueError, match="inplane_on"):
+        sweep(Dimensionless(0.5, 2.0, 0.5), inplane_on="holder", **kwargs)
+
+
+def _cli(*args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "vibrofriction.cli", *args],
+                          capture_output=True, text=True, timeout=300)
+
+
+def test_cli_mu_inplane_signed_velocity() -> None:
+    out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--a-x", "0.5",
+               "--phase-x", "0.9", "--inplane-on", "holder", "--v-inertial", "-0.05,0.05",
+               "--json")
+    assert out.returncode == 0, out.stderr
+    rows = [json.loads(line) for line in out.stdout.splitlines()]
+    d = Dimensionless(0.5, 2.0, 0.5, a_x=0.5, phase_x=0.9, inplane_on="holder")
+    assert [r["mu_ratio"] for r in rows] == [
+        friction_coefficient(d, v_inertial=v).mu_ratio for v in (-0.05, 0.05)]
+    assert rows[0]["system"]["inplane_on"] == "holder" and rows[0]["v_inertial"] == -0.05
+    text = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--a-x", "0.5",
+                "--v-inertial", "1")
+    assert "a_x=0.5 phase_x=0 on the substrate (critical velocity" in text.stdout
+    bad = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--du-x", "1e-6",
+               "--v-inertial", "1")
+    assert bad.returncode == 2 and "--du-x (m) needs a physical set-up" in bad.stderr
+
+
+def test_cli_mu_physical_inplane() -> None:
+    si = [f"--{k.replace('_', '-')}={v!r}" for k, v in PIN.items()]
+    out = _cli("mu", *si, "--du-x", "1e-6", "--phase-x", "1", "--v0", "-0.01", "--json")
+    assert out.returncode == 0, out.stderr
+    row = json.loads(out.stdout)
+    expect = friction_coefficient(Physical(**PIN, du_x=1e-6, phase_x=1.0), v0=-0.01)
+    assert row["mu_ratio"] == expect.mu_ratio and row["system"]["a_x"] > 0
+
+
+def test_cli_sweep_inplane(tmp_path) -> None:
+    out = _cli("sweep", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--a-x", "0.5",
+               "--phase-x", "0,1.5", "--v-inertial", "-0.5,0.5", "--inplane-on", "holder",
+               "--workers", "1", "--no-progress", "--out", str(tmp_path / "s.zarr"))
+    assert out.returncode == 0, out.stderr
+    ds = vf.sweep(Dimensionless(0.5, 2.0, 0.5), a_x=0.5, phase_x=[0.0, 1.5],
+                  v_inertial=[-0.5, 0.5], inplane_on="holder", workers=1, progress=False,
+                  store=tmp_path / "s.zarr")  # resumed: the same grid and mount
+    assert ds.attrs["inplane_on"] == "holder" and bool(ds.trusted.all())
+
+
+def test_docs_inplane_code_runs() -> None:
+    """The python blocks of docs/inplane.md run as written."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "inplane.md").read_text()
+    blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
+    assert blocks
+    namespace: dict = {}
+    for block in blocks:
+        exec(compile(block, "docs/inplane.md", "exec"), namespace)
+    assert namespace["r"].mu_ratio < 0 and namespace["atlas"].mu_ratio.shape == (3, 3, 4)
+
+
+def test_fit_and_design_refuse_an_inplane_oscillation_rather_than_ignore_it() -> None:
+    from vibrofriction.bench import design, fit
+
+    pin = Physical(**PIN, du_x=1e-6)
+    with pytest.raises(ValueError, match=r"the design does not take an in-plane oscillation"):
+        design(pin, v0=0.01, omega=(1e3, 1e4), du_z=(0.0, 1e-6))
+    with pytest.raises(ValueError, match=r"the fit does not take an in-plane oscillation"):
+        fit("no-such-file.csv", pin)
