@@ -63,6 +63,11 @@ _AROUND_VC = (0.97, 0.99, 1.01, 1.03)
 _SLIDING_BEYOND = 1.001   # continuous sliding is checked at |V| > this * V_c
 
 
+def _tex(x: float) -> str:
+    """``1e-05`` as ``10^{-5}`` for mathtext (a power of ten)."""
+    return f"10^{{{round(math.log10(x))}}}"
+
+
 def _vc(a: float, a_x: float, phase: float | NDArray, zeta: float = 0.0, eta_c: float = 0.0
         ) -> float | NDArray:
     """Critical velocity of forward continuous sliding (docs/inplane.md, section 2)."""
@@ -617,9 +622,9 @@ def _draw_drive(data: Mapping[tuple[float, float], dict]):
         Line2D([], [], color=colors[0.0], lw=1.2, label="undamped"),
         Line2D([], [], color=colors[zeta], lw=1.2,
                label=rf"$\zeta = {zeta:g}$, $\eta_c = {eta_c:g}$"),
-        Line2D([], [], color="0.3", lw=1.2, label=rf"$\mu(V = +{V_BLOCK[0]:g})$ (solver)"),
+        Line2D([], [], color="0.3", lw=1.2, label=rf"$\mu(V = +{_tex(V_BLOCK[0])})$ (solver)"),
         Line2D([], [], color="0.3", lw=1.2, ls=(0, (4, 1.5)),
-               label=rf"$\mu(V = -{V_BLOCK[0]:g})$ (solver)"),
+               label=rf"$\mu(V = -{_tex(V_BLOCK[0])})$ (solver)"),
         Line2D([], [], color="black", lw=0.5, ls=(0, (1, 1)),
                label="edges of the static band of the stuck contact (theory)"),
         Line2D([], [], color="0.3", lw=0.5, ls=(0, (2, 2)),
@@ -648,6 +653,7 @@ def _drive_checks(data: Mapping[tuple[float, float], dict]) -> tuple[list[Check]
             "not compared there"))
         conv, at = max_deviation(d["block"].ravel(), d["block_coarse"].ravel(),
                                  [lab for lab in labels for _ in (0, 1)])
+        checks.append(_sliding_check(d["rows"], where))
         checks.append(Check(f"convergence in V: |mu(+-{V_BLOCK[1]:g}) - mu(+-{V_BLOCK[0]:g})|",
                             where, conv, at, "the blocking force moves by this much over "
                             "a decade of V (linear creep)"))
@@ -723,7 +729,7 @@ def inplane_drive(quick: bool = False) -> Recipe:
                  f"{be:g})$, $\\Delta F_N/F_{{N,0}} = {a:g}$, $a_x$ = "
                  + ", ".join(f"{x:g}" for x in DRIVE_AMPLITUDES) + f", undamped (blue) and "
                  f"with $\\zeta = {zeta:g}$, $\\eta_c = {eta_c:g}$ (orange). Top: the "
-                 f"blocking forces, $\\mu$ at $V = \\pm{V_BLOCK[0]:g}$ (solid: forward, "
+                 f"blocking forces, $\\mu$ at $V = \\pm {_tex(V_BLOCK[0])}$ (solid: forward, "
                  "dashed: backward), over the static band of the stuck contact (theory, "
                  "black dotted). Bottom: the idle velocity, where the mean force "
                  "vanishes (Brent's method on the solver), with the critical velocities of "
