@@ -43,7 +43,12 @@ def test_series_validates_and_converts() -> None:
     c = theory.critical_inertial_velocity(0.5, 2.0, 0.5)
     np.testing.assert_allclose(s.v_inertial, c * np.array([0.0, 0.5, 1.0]))
     with pytest.raises(ValueError, match="v_inertial must be"):
-        Series("bad", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))
+        Series("bad", 0.5, 2.0, 0.5, np.array([np.nan]), np.array([np.nan]))
+    Series("signed", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))  # V < 0: backward
+    with pytest.raises(ValueError, match="v_inertial = 0 with an in-plane"):
+        Series("held", 0.5, 2.0, 0.5, np.array([0.0]), np.array([np.nan]), a_x=0.5)
+    with pytest.raises(ValueError, match="inplane_on"):
+        Series("k", 0.5, 2.0, 0.5, np.array([1.0]), np.array([np.nan]), inplane_on="disk")
     for alpha, beta in ((0.5, 1.0), (1.0, 3.0)):  # cases III and IV: no vbar
         with pytest.raises(ValueError, match="vbar is undefined"):
             series_at_vbar("k", alpha, beta, 0.5, [0.1])
@@ -104,7 +109,7 @@ def test_curve_table_and_max_deviation() -> None:
 def test_recipe_names_are_unique_and_quick_grids_smaller() -> None:
     quick, full = all_recipes(True), all_recipes(False)
     names = [r.name for r in quick]
-    assert len(set(names)) == len(names) == 13
+    assert len(set(names)) == len(names) == 16
     assert [r.name for r in full] == names
     assert sum(r.points for r in quick) < sum(r.points for r in full) / 3
 

@@ -31,7 +31,7 @@ from tqdm.auto import tqdm
 from . import __version__, theory
 from .figures import all_recipes, style
 from .figures.recipe import Check, Recipe, Rendered, Table, curve_table, max_deviation
-from .figures.series import Curve, Series, series_at_vbar, solve
+from .figures.series import Curve, Series, series_at_vbar, solve, solve_points_on
 from .params import Dimensionless
 from .solver import STATUS_BY_CODE, SolverSettings, simulate, solve_points
 
@@ -123,10 +123,11 @@ def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
     return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(alpha, beta, amplitude, v_inertial, zeta,
-                 eta_c) -> tuple[int, dict[str, np.ndarray]]:
-    """``(pid, solve_points(...))``: the pid says which process did the work."""
-    return os.getpid(), solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c)
+def _solve_chunk(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
+                 inplane_on) -> tuple[int, dict[str, np.ndarray]]:
+    """``(pid, solve_points_on(...))``: the pid says which process did the work."""
+    return os.getpid(), solve_points_on(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x,
+                                        phase_x, inplane_on)
 
 
 @dataclass(frozen=True)
@@ -165,6 +166,8 @@ def _render(index: int, quick: bool, name: str, out: Path,
             suspicious.append(
                 f"alpha={s.alpha!r}, beta={s.beta!r}, amplitude={s.amplitude!r}, "
                 + (f"zeta={s.zeta!r}, eta_c={s.eta_c!r}, " if s.zeta or s.eta_c else "")
+                + (f"a_x={s.a_x!r}, phase_x={s.phase_x!r} ({s.inplane_on}), " if s.a_x
+                   else "")
                 + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
@@ -185,6 +188,9 @@ class _Batch:
     v_inertial: np.ndarray
     zeta: np.ndarray
     eta_c: np.ndarray
+    a_x: np.ndarray
+    phase_x: np.ndarray
+    inplane_on: np.ndarray
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
@@ -198,10 +204,14 @@ class _Batch:
         V = np.concatenate([x.v_inertial for x in s]) if s else np.empty(0)
         ze = np.concatenate([np.full(x.size, x.zeta) for x in s]) if s else np.empty(0)
         et = np.concatenate([np.full(x.size, x.eta_c) for x in s]) if s else np.empty(0)
+        ax = np.concatenate([np.full(x.size, x.a_x) for x in s]) if s else np.empty(0)
+        px = np.concatenate([np.full(x.size, x.phase_x) for x in s]) if s else np.empty(0)
+        on = (np.concatenate([np.full(x.size, x.inplane_on, dtype=object) for x in s]) if s
+              else np.empty(0, dtype=object))
         n = V.size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, al, be, am, V, ze, et, chunks, {}, len(chunks))
+        return cls(index, al, be, am, V, ze, et, ax, px, on, chunks, {}, len(chunks))
 
     def store(self, idx: np.ndarray, part: Mapping[str, np.ndarray]) -> None:
         for key, val in part.items():
@@ -248,7 +258,8 @@ class _Schedule:
         if self.compute:
             b, idx = self.compute.popleft()
             args = (b.alpha[idx], b.beta[idx], b.amplitude[idx], b.v_inertial[idx],
-                    b.zeta[idx], b.eta_c[idx])
+                    b.zeta[idx], b.eta_c[idx], b.a_x[idx], b.phase_x[idx],
+                    b.inplane_on[idx])
             return _solve_chunk, args, functools.partial(self._solved, b, idx)
         return None
 
@@ -298,6 +309,7 @@ def _warm_up() -> None:
     """Compile (or load from the numba cache) the kernels the solving and rendering use."""
     solve_points(0.5, 2.0, 0.5, 0.3)
     solve_points(1.0, math.inf, 1.5, 0.3)
+    solve_points(0.5, 2.0, 0.5, -0.3, 0.05, 0.1, 0.5, 1.0)
     simulate(Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=1, samples_per_period=8)
 
 

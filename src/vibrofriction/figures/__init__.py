@@ -10,6 +10,9 @@ the solver series a figure needs and how to draw, table and check them.
 * :mod:`.maps`: maps over the ``(alpha, beta)`` plane;
 * :mod:`.damped`: beyond the paper, the damped model (Figs. 11-13: case IV, Fig. 10
   and Fig. 5 with pin damping);
+* :mod:`.inplane`: beyond the paper, the longitudinal in-plane oscillation (Figs. 14-16:
+  the directions of oscillation, the combined drive over phase and velocity, the drive's
+  blocking force and idle velocity);
 * :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
   imported on first use, with xarray and the sweep);
 * :mod:`.bench`: the bench's figures, a fit against its data (:func:`plot_fit`) and a
@@ -26,7 +29,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any
 
-from . import damped, dimensional, history, maps, resonant, style, velocity
+from . import damped, dimensional, history, inplane, maps, resonant, style, velocity
 from .edges import cell_edges, is_geometric
 from .recipe import Check, Recipe, Rendered, Table, solve_recipes
 from .series import Curve, Series, solve
@@ -71,6 +74,9 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         damped.damped_case_iv(quick),
         damped.damped_fig10(quick),
         damped.damped_fig5(quick),
+        inplane.inplane_directions(quick),
+        inplane.inplane_map(quick),
+        inplane.inplane_drive(quick),
     ]
 
 

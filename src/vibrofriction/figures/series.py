@@ -1,8 +1,10 @@
 """Velocity series: what a figure asks the solver for, and what it gets back.
 
 A :class:`Series` is one curve of a figure: a fixed system ``(alpha, beta, a)``
-(eq. 20; with ``zeta``, ``eta_c`` for a damped one, docs/damping.md) and an array
-of inertial velocities ``V = v0 m omega/(mu0 F_N0)``.
+(eq. 20; with ``zeta``, ``eta_c`` for a damped one, docs/damping.md; with ``a_x``,
+``phase_x``, ``inplane_on`` for a longitudinal in-plane oscillation, docs/inplane.md) and
+an array of inertial velocities ``V = v0 m omega/(mu0 F_N0)`` (signed: ``V < 0`` slides
+backward).
 :func:`solve` flattens any number of series into one batch for
 :func:`vibrofriction.solver.solve_points` and cuts the answer back into
 :class:`Curve` objects.  The batch can be run by any *runner* with the signature
@@ -22,12 +24,14 @@ from numpy.typing import ArrayLike, NDArray
 from ..params import Physical, vbar_to_inertial
 from ..schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE
 from ..solver import SolverSettings, converged, solve_points
-from ..validation import checked
+from ..validation import checked, checked_choice
 
 __all__ = ["CURVE_COLUMNS", "Curve", "Runner", "Series", "series_at_vbar",
-           "series_of_physical", "solve", "status_counts"]
+           "series_of_physical", "solve", "solve_points_on", "status_counts"]
 
-#: ``runner(alpha, beta, amplitude, v_inertial, settings=...) -> dict of arrays``.
+#: ``runner(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, inplane_on,
+#: settings=...) -> dict of arrays`` (``inplane_on`` an array of ``"substrate"`` /
+#: ``"holder"``, one per point): :func:`solve_points_on` or one with its signature.
 Runner = Callable[..., dict[str, NDArray]]
 
 
@@ -38,7 +42,8 @@ class Series:
     ``key`` names the curve uniquely within a figure; ``vbar`` holds ``v0/v0*``
     (eq. 16) at each point, ``nan`` where it does not exist (cases III, IV);
     ``meta`` carries plotting information (labels, panel) and is written into
-    the data tables.
+    the data tables.  ``V`` is signed (the solver's mirror solves ``V < 0``); ``V = 0``
+    with an in-plane oscillation (``a_x > 0``) is refused, as by the solver.
     """
 
     key: str
@@ -50,12 +55,19 @@ class Series:
     meta: Mapping[str, object] = field(default_factory=dict)
     zeta: float = 0.0
     eta_c: float = 0.0
+    a_x: float = 0.0
+    phase_x: float = 0.0
+    inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
-        v = checked(f"series {self.key!r}: v_inertial", self.v_inertial, minimum=0.0)
+        v = checked(f"series {self.key!r}: v_inertial", self.v_inertial)
         if v.ndim != 1:
             raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array, "
                              f"got shape {v.shape}")
+        if self.a_x > 0 and np.any(v == 0.0):
+            raise ValueError(f"series {self.key!r}: v_inertial = 0 with an in-plane "
+                             "oscillation (a_x > 0) is not computed (docs/inplane.md)")
+        checked_choice("inplane_on", self.inplane_on)
         object.__setattr__(self, "v_inertial", v)
         vb = np.broadcast_to(np.asarray(self.vbar, dtype=float), v.shape).copy()
         object.__setattr__(self, "vbar", vb)
@@ -162,7 +174,7 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         raise ValueError("series keys must be unique")
     if not series:
         return {}
-    run = runner or solve_points
+    run = runner or solve_points_on
     sizes = [s.size for s in series]
     al = np.concatenate([np.full(s.size, s.alpha) for s in series])
     be = np.concatenate([np.full(s.size, s.beta) for s in series])
@@ -170,7 +182,10 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     V = np.concatenate([s.v_inertial for s in series])
     ze = np.concatenate([np.full(s.size, s.zeta) for s in series])
     et = np.concatenate([np.full(s.size, s.eta_c) for s in series])
-    out = run(al, be, am, V, ze, et, settings=settings)
+    ax = np.concatenate([np.full(s.size, s.a_x) for s in series])
+    px = np.concatenate([np.full(s.size, s.phase_x) for s in series])
+    on = np.concatenate([np.full(s.size, s.inplane_on, dtype=object) for s in series])
+    out = run(al, be, am, V, ze, et, ax, px, on, settings=settings)
     curves: dict[str, Curve] = {}
     start = 0
     for s, n in zip(series, sizes, strict=True):
@@ -178,6 +193,30 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         curves[s.key] = Curve(s, {k: out[k][sl].copy() for k in CURVE_COLUMNS})
         start += n
     return curves
+
+
+def solve_points_on(alpha: NDArray, beta: NDArray, amplitude: NDArray, v_inertial: NDArray,
+                    zeta: NDArray, eta_c: NDArray, a_x: NDArray, phase_x: NDArray,
+                    inplane_on: NDArray, *, settings: SolverSettings | None = None
+                    ) -> dict[str, NDArray]:
+    """:func:`solve_points` on 1-d arrays whose ``inplane_on`` differs from point to point
+    (one call per value); the default :data:`Runner`."""
+    on = np.asarray(inplane_on, dtype=object)
+    values = sorted(set(on.tolist()))
+    if len(values) <= 1:
+        return solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
+                            inplane_on=values[0] if values else "substrate", settings=settings)
+    out: dict[str, NDArray] = {}
+    for value in values:
+        idx = np.flatnonzero(on == value)
+        part = solve_points(*(np.asarray(x)[idx] for x in (
+            alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x)),
+            inplane_on=value, settings=settings)
+        for k, col in part.items():
+            if k not in out:
+                out[k] = np.empty(on.size, dtype=col.dtype)
+            out[k][idx] = col
+    return out
 
 
 def status_counts(curves: Sequence[Curve] | Mapping[str, Curve]) -> dict[str, int]:
