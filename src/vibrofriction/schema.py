@@ -174,6 +174,10 @@ class Status(enum.Enum):
               "advance, or more than 1000 transitions could only be decided within "
               "round-off (chatter along a tangency of the friction cone); the value is "
               "not reliable")
+    HELD = ("held", 5, False,
+            "v0 = 0 and the contact sticks through whole cycles of the steady orbit: the "
+            "mean force is the preload the body started with (any force in the stuck band "
+            "is a steady state, docs/inplane.md), not a property of the system")
     STATIC = ("static limit", -1, True,
               "zero sliding velocity: the static limit of eq. (2), the limit of the steady "
               "state as v0 -> 0+")

@@ -56,6 +56,10 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
 
 
 #: The final-state columns that change sign under the mirror ``x -> -x``.
+#: A ``V = 0`` motion that sticks this fraction of its averaging window is held
+#: (:func:`_held`): all of it, no slip and no flight.
+HELD_STICK = 1.0
+
 _SIGNED = ("mu_ratio", "y", "x_dot", "f", "e", "drift_rate")
 _MIRROR_PHASE = {codes.SLIP_POS: codes.SLIP_NEG, codes.SLIP_NEG: codes.SLIP_POS}
 
@@ -125,11 +129,6 @@ def solve_points(
                                      for x in (al, be, am, V, ze, et, ax, px))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
                "eta_c": et, "a_x": ax, "phase_x": px})
-    held = (V == 0.0) & (ax > 0.0)
-    if np.any(held):
-        raise ValueError("v_inertial = 0 with an in-plane oscillation (a_x > 0) is not "
-                         "computed yet: the held body's mean force depends on its preload "
-                         f"(first at a_x = {float(ax[held][0])!r})")
     n = V.size
     kind, init = initial_rows(initial, n,
                               lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i],
@@ -142,23 +141,43 @@ def solve_points(
             _mirror_rows(init, backward)
     out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
-    moving = V > 0.0
-    idx = np.flatnonzero(moving)
-    if idx.size:
+    # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
+    # has no direction there and is the rest, as in the reference (docs/inplane.md)
+    at_zero = (V == 0.0) & (ax > 0.0)
+    for rows, k in ((V > 0.0, kind), (at_zero, 1 if kind == 0 else kind)):
+        idx = np.flatnonzero(rows)
+        if not idx.size:
+            continue
         of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
         steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], ax[idx],
-                          px[idx], np.full(idx.size, on_substrate), kind,
+                          px[idx], np.full(idx.size, on_substrate), k,
                           np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
-    _static_limit(am[~moving], out_f, out_i, ~moving)
+    _held(out_f, out_i, at_zero)
+    static = (V == 0.0) & ~at_zero
+    _static_limit(am[static], out_f, out_i, static)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
     out["trusted"] = settings.trusted(out["status"], out["error"])
     return out
+
+
+def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64],
+          rows: NDArray[np.bool_]) -> None:
+    """Mark :attr:`Status.HELD` the ``V = 0`` rows whose contact sticks through the whole
+    averaging window (no slip, no flight: a stuck orbit, or an undamped motion about one
+    that does not settle): the body carries whatever preload it started with, any force
+    in the stuck band being a steady state.  ``mu_ratio`` and ``error`` stay those of
+    the motion from the given start (nan and inf where it did not settle)."""
+    st = out_i[:, column_index("status")]
+    stuck = out_f[:, column_index("stick_fraction")] >= HELD_STICK
+    mark = rows & stuck & np.isin(st, (Status.PERIODIC.code, Status.AVERAGED.code,
+                                       Status.NOT_CONVERGED.code))
+    out_i[mark, column_index("status")] = Status.HELD.code
 
 
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
