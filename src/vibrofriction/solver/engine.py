@@ -112,8 +112,10 @@ def solve_points(
     them (docs/inplane.md).  ``V < 0`` is solved by the mirror ``x -> -x``: the point
     ``(-V, phase_x + pi)`` (its ``n`` unchanged, ``h -> -h``) with ``mu_ratio`` and the
     signed state negated (an explicit initial state is mirrored on the way in).  ``V = 0``
-    is the static limit without in-plane oscillation and refused with it (not computed
-    yet).  Returns arrays of that shape named by
+    is the static limit without in-plane oscillation; with it (``a_x > 0``) it is
+    integrated (``"sliding"`` is the rest there), and where the contact sticks through
+    the whole averaging window the status is :attr:`Status.HELD` (not trusted: the
+    value is the preload the start implies, docs/inplane.md).  Returns arrays of that shape named by
     :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS`` (``status`` as
     :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final section state,
     in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
@@ -237,7 +239,8 @@ def friction_coefficient(
         Scalars give a :class:`FrictionResult`, arrays a :class:`FrictionResults` of
         the same shape.
     initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
-        on at ``tau = 0``, docs/model.md), ``"rest"``, or a :class:`SectionState` (e.g. the
+        on at ``tau = 0``, docs/model.md; at ``V = 0`` the rest), ``"rest"``, or a
+        :class:`SectionState` (e.g. the
         ``final_state`` of another result, for continuation).  Coexisting attractors
         make the initial state part of the result's definition.
     settings : accuracy and effort bounds (:class:`SolverSettings`).
