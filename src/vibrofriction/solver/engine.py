@@ -159,7 +159,7 @@ def solve_points(
         out_i[idx] = oi
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
-    _held(out_f, out_i, at_zero)
+    _held(out_f, out_i, at_zero, al, be, am, ze, et, ax, px, inplane_on)
     static = (V == 0.0) & ~at_zero
     _static_limit(am[static], out_f, out_i, static)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
@@ -168,18 +168,25 @@ def solve_points(
     return out
 
 
-def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64],
-          rows: NDArray[np.bool_]) -> None:
-    """Mark :attr:`Status.HELD` the ``V = 0`` rows whose contact sticks through the whole
-    averaging window (no slip, no flight: a stuck orbit, or an undamped motion about one
-    that does not settle): the body carries whatever preload it started with, any force
-    in the stuck band being a steady state.  ``mu_ratio`` and ``error`` stay those of
+def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np.bool_],
+          *point: NDArray[np.float64] | str) -> None:
+    """Mark :attr:`Status.HELD` the ``V = 0`` rows ``rows`` where the contact can stick
+    through whole cycles: a stuck band exists (``theory.inplane_static_mu_ratio``; a motion
+    from outside it approaches its edge with slips that die out), or the motion stuck
+    through its whole averaging window (no slip, no flight).  ``point`` is ``(alpha, beta,
+    a, zeta, eta_c, a_x, phase_x, inplane_on)``.  ``mu_ratio`` and ``error`` stay those of
     the motion from the given start (nan and inf where it did not settle)."""
-    st = out_i[:, column_index("status")]
-    stuck = out_f[:, column_index("stick_fraction")] >= HELD_STICK
-    mark = rows & stuck & np.isin(st, (Status.PERIODIC.code, Status.AVERAGED.code,
-                                       Status.NOT_CONVERGED.code))
-    out_i[mark, column_index("status")] = Status.HELD.code
+    idx = np.flatnonzero(rows)
+    if not idx.size:
+        return
+    al, be, am, ze, et, ax, px, on = point
+    band = theory.inplane_static_mu_ratio(al[idx], be[idx], am[idx], ax[idx], px[idx],
+                                          ze[idx], et[idx], on)
+    st = out_i[idx, column_index("status")]
+    stuck = out_f[idx, column_index("stick_fraction")] >= HELD_STICK
+    mark = (np.isfinite(np.atleast_1d(band.upper)) | stuck) & np.isin(
+        st, (Status.PERIODIC.code, Status.AVERAGED.code, Status.NOT_CONVERGED.code))
+    out_i[idx[mark], column_index("status")] = Status.HELD.code
 
 
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
