@@ -5,6 +5,9 @@ by the mirror), its limits V -> 0+ and 0- (the blocking force) beside the static
 the stuck contact (theory.inplane_static_mu_ratio), the idle velocity (where the mean
 force changes sign, if anywhere but V = 0) and the critical velocity of continuous
 sliding (theory.inplane_critical_velocity); undamped and with zeta = 0.05, eta_c = 0.1.
+At V = 0 itself (docs/inplane.md, "v0 = 0"): the mean force from rest and from preloads
+(a body at rest, spring and contact carrying F), with its status (held or not), against
+a_x with the damping, beside the stuck band.
 
 Run:  python benchmarks/inplane_drive_numbers.py   (about 10 s; writes
 benchmarks/results/inplane_drive.md)
@@ -20,8 +23,8 @@ from pathlib import Path
 
 import numpy as np
 
-from vibrofriction import theory
-from vibrofriction.solver import solve_points
+from vibrofriction import Dimensionless, friction_coefficient, theory
+from vibrofriction.solver import SectionState, solve_points
 
 HERE = Path(__file__).resolve().parent
 SYSTEM = (0.5, 2.0, 0.5)
@@ -60,9 +63,44 @@ def main() -> None:
         lines += [f"| {v:+.3g} | {m:+.10f} | {e:.1e} | {bool(t)} |"
                   for v, m, e, t in zip(V, mu, err, trusted, strict=True)]
         lines.append("")
+    lines += zero_velocity()
     text = "\n".join(lines)
     (HERE / "results" / "inplane_drive.md").write_text(text)
     print(text)
+
+
+PRELOADS = (0.0, 0.25, 0.5, 0.9, -0.25)
+ZERO_AX = (0.25, 0.5, 1.0, 1.25, 1.5, 2.0, 3.0)
+
+
+def _at_rest(dim: Dimensionless, force: float) -> SectionState:
+    """A body at rest held by the preload ``force`` (spring and contact carry it)."""
+    k = dim.beta - dim.alpha
+    return SectionState(-force / dim.alpha, 0.0, force, "stick", force / k)
+
+
+def zero_velocity() -> list[str]:
+    """V = 0: the mean force from rest and from preloads, held or not, against a_x."""
+    zeta, eta_c = DAMPING[1]
+    lines = [f"## V = 0, zeta = {zeta}, eta_c = {eta_c}", "",
+             "Mean force at V = 0 from a body at rest held by the preload F (F = 0: the "
+             "rest, also what \"sliding\" means at V = 0), its status and stick fraction; "
+             "the stuck band of theory.inplane_static_mu_ratio (nan: none, the contact "
+             "slips in every cycle).", "",
+             "| a_x | band upper / lower | " + " | ".join(f"F = {f:+g}" for f in PRELOADS)
+             + " |", "|---|---|" + "---|" * len(PRELOADS)]
+    for a_x in ZERO_AX:
+        dim = Dimensionless(*SYSTEM, zeta, eta_c, a_x, PHASE_X)
+        band = theory.inplane_static_mu_ratio(*SYSTEM, a_x, PHASE_X, zeta=zeta, eta_c=eta_c)
+        cells = []
+        for force in PRELOADS:
+            r = friction_coefficient(dim, v_inertial=0.0, initial=_at_rest(dim, force))
+            cells.append(f"{r.mu_ratio:+.6f} {r.status.value} ({r.error:.0e}, stick "
+                         f"{r.stick_fraction:.3f})")
+        lines.append(f"| {a_x:g} | {band.upper:+.4f} / {band.lower:+.4f} | "
+                     + " | ".join(cells) + " |")
+    lines.append("")
+    return lines
 
 
 if __name__ == "__main__":

@@ -238,11 +238,14 @@ def test_zero_amplitude_is_the_normal_only_solver() -> None:
 
 
 # --------------------------------------------------------------------------- refusals
-def test_zero_velocity_with_inplane_oscillation_is_refused() -> None:
-    with pytest.raises(ValueError, match="v_inertial.*a_x.*not computed yet"):
-        solve_points(0.5, 2.0, 0.5, [0.1, 0.0], a_x=0.5)
-    r = solve_points(0.5, 2.0, 0.5, 0.0)  # without it, the static limit as before
+def test_zero_velocity_without_inplane_oscillation_is_the_static_limit() -> None:
+    """``V = 0``, ``a_x = 0``: eq. (2) as before, also next to a point with ``a_x > 0``
+    (integrated: tests/test_inplane_vzero.py)."""
+    r = solve_points(0.5, 2.0, 0.5, 0.0)
     assert r["status"] == Status.STATIC.code and r["mu_ratio"] == 0.5
+    r = solve_points(0.5, 2.0, 0.5, 0.0, a_x=[0.0, 0.5])
+    assert r["status"][0] == Status.STATIC.code and r["mu_ratio"][0] == 0.5
+    assert r["status"][1] != Status.STATIC.code
 
 
 def test_inplane_on_is_a_checked_choice() -> None:

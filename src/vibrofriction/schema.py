@@ -174,6 +174,10 @@ class Status(enum.Enum):
               "advance, or more than 1000 transitions could only be decided within "
               "round-off (chatter along a tangency of the friction cone); the value is "
               "not reliable")
+    HELD = ("held", 5, False,
+            "v0 = 0 and the contact can stick through whole cycles: any mean force in the "
+            "stuck band is a steady state, so the value is that of the preload the body "
+            "started with, not a property of the system (docs/inplane.md, 'v0 = 0')")
     STATIC = ("static limit", -1, True,
               "zero sliding velocity: the static limit of eq. (2), the limit of the steady "
               "state as v0 -> 0+")

@@ -61,7 +61,9 @@ variables, so a run reports the energy balance per period.
 Initial states: ``"sliding"`` with ``s = sign(V)``: ``y = (-s/alpha, 0)``, ``v = (V, 0)``,
 ``e = (s/k, 0)`` (``f = (s, 0)`` if it sticks; with ``c > 0`` the phase follows from ``F``);
 for ``V > 0`` this is the 1-D peers' sliding state, and for ``V = 0`` it is ``"rest"``:
-``y = v = e = 0``.
+``y = v = e = 0``.  An explicit start is a tuple ``(y_x, v_x, e_x)`` (laboratory frame,
+transverse components 0): e.g. a body at rest held by a preload ``F``, ``(-F/alpha, 0,
+F/k)`` (the phase follows from the state as at any start).
 """
 
 from __future__ import annotations
@@ -357,6 +359,12 @@ def _stick_load(model: _Model, t: float, z: np.ndarray) -> float:
 
 def _initial(initial, model: _Model) -> np.ndarray:
     z = np.zeros(_N_STATE)
+    if isinstance(initial, tuple):  # an explicit state (y_x, v_x, e_x) at tau = 0
+        if len(initial) != 3 or not all(math.isfinite(float(v)) for v in initial):
+            raise ValueError(f"an explicit initial state is (y_x, v_x, e_x), finite; got "
+                             f"{initial!r}")
+        z[0], z[2], z[4] = (float(v) for v in initial)
+        return z
     if initial_code(initial) == 0 and model.V != 0.0:
         s = math.copysign(1.0, model.V)
         z[0], z[2], z[4] = -s / model.alpha, model.V, s / model.k
@@ -417,7 +425,7 @@ def inplane_run(
     alpha_y: float | None = None,
     zeta_y: float | None = None,
     inplane_on: str = "substrate",
-    initial: int | str = "sliding",
+    initial: int | str | tuple[float, float, float] = "sliding",
     max_events_per_period: int = 200,
     steps_per_fastest_period: float = 4.0,
 ) -> InplaneRun:

@@ -197,6 +197,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     from any state then (its bound only adds the free motion's amplitude to the
     orbit's own test), so it is not tried.
 
+    Newton's method is not tried at ``V = 0`` (a held body's orbits form a continuum).
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
     ``win`` holds the accumulators of the answering window, ``out_f[O_WORK]`` counts the
     drive periods integrated.
@@ -213,7 +214,11 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     neutral_out = np.zeros(out_f.shape[0])
     neutral_period, neutral_end = 0, 0
     ring_z[0, :] = z
-    nchk, next_chk, next_newton = 0, min_periods, FIRST_NEWTON
+    # V = 0: no Newton.  A held body has a continuum of stuck orbits (any preload in the
+    # band); Newton's period map is singular along it and walks to the band's edge, an
+    # orbit that attracts only from outside the band (docs/inplane.md, "v0 = 0")
+    nchk, next_chk = 0, min_periods
+    next_newton = FIRST_NEWTON if M[M_V] != 0.0 else -1
     k = 0
     while True:
         ok, w = advance_counted(z, acc, count, M, max_events)

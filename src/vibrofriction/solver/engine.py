@@ -56,6 +56,10 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
 
 
 #: The final-state columns that change sign under the mirror ``x -> -x``.
+#: A ``V = 0`` motion that sticks this fraction of its averaging window is held
+#: (:func:`_held`): all of it, no slip and no flight.
+HELD_STICK = 1.0
+
 _SIGNED = ("mu_ratio", "y", "x_dot", "f", "e", "drift_rate")
 _MIRROR_PHASE = {codes.SLIP_POS: codes.SLIP_NEG, codes.SLIP_NEG: codes.SLIP_POS}
 
@@ -108,8 +112,10 @@ def solve_points(
     them (docs/inplane.md).  ``V < 0`` is solved by the mirror ``x -> -x``: the point
     ``(-V, phase_x + pi)`` (its ``n`` unchanged, ``h -> -h``) with ``mu_ratio`` and the
     signed state negated (an explicit initial state is mirrored on the way in).  ``V = 0``
-    is the static limit without in-plane oscillation and refused with it (not computed
-    yet).  Returns arrays of that shape named by
+    is the static limit without in-plane oscillation; with it (``a_x > 0``) it is
+    integrated (``"sliding"`` is the rest there), and where the contact sticks through
+    the whole averaging window the status is :attr:`Status.HELD` (not trusted: the
+    value is the preload the start implies, docs/inplane.md).  Returns arrays of that shape named by
     :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS`` (``status`` as
     :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final section state,
     in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
@@ -125,11 +131,6 @@ def solve_points(
                                      for x in (al, be, am, V, ze, et, ax, px))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
                "eta_c": et, "a_x": ax, "phase_x": px})
-    held = (V == 0.0) & (ax > 0.0)
-    if np.any(held):
-        raise ValueError("v_inertial = 0 with an in-plane oscillation (a_x > 0) is not "
-                         "computed yet: the held body's mean force depends on its preload "
-                         f"(first at a_x = {float(ax[held][0])!r})")
     n = V.size
     kind, init = initial_rows(initial, n,
                               lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i],
@@ -142,23 +143,50 @@ def solve_points(
             _mirror_rows(init, backward)
     out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
-    moving = V > 0.0
-    idx = np.flatnonzero(moving)
-    if idx.size:
+    # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
+    # has no direction there and is the rest, as in the reference (docs/inplane.md)
+    at_zero = (V == 0.0) & (ax > 0.0)
+    for rows, k in ((V > 0.0, kind), (at_zero, 1 if kind == 0 else kind)):
+        idx = np.flatnonzero(rows)
+        if not idx.size:
+            continue
         of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
         steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], ax[idx],
-                          px[idx], np.full(idx.size, on_substrate), kind,
+                          px[idx], np.full(idx.size, on_substrate), k,
                           np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
-    _static_limit(am[~moving], out_f, out_i, ~moving)
+    _held(out_f, out_i, at_zero, al, be, am, ze, et, ax, px, inplane_on)
+    static = (V == 0.0) & ~at_zero
+    _static_limit(am[static], out_f, out_i, static)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
     out["trusted"] = settings.trusted(out["status"], out["error"])
     return out
+
+
+def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np.bool_],
+          *point: NDArray[np.float64] | str) -> None:
+    """Mark :attr:`Status.HELD` the ``V = 0`` rows ``rows`` where the contact can stick
+    through whole cycles: a stuck band exists (``theory.inplane_static_mu_ratio``; a motion
+    from outside it approaches its edge with slips that die out), or the motion stuck
+    through its whole averaging window (no slip, no flight).  ``point`` is ``(alpha, beta,
+    a, zeta, eta_c, a_x, phase_x, inplane_on)``.  ``mu_ratio`` and ``error`` stay those of
+    the motion from the given start (nan and inf where it did not settle)."""
+    idx = np.flatnonzero(rows)
+    if not idx.size:
+        return
+    al, be, am, ze, et, ax, px, on = point
+    band = theory.inplane_static_mu_ratio(al[idx], be[idx], am[idx], ax[idx], px[idx],
+                                          ze[idx], et[idx], on)
+    st = out_i[idx, column_index("status")]
+    stuck = out_f[idx, column_index("stick_fraction")] >= HELD_STICK
+    mark = (np.isfinite(np.atleast_1d(band.upper)) | stuck) & np.isin(
+        st, (Status.PERIODIC.code, Status.AVERAGED.code, Status.NOT_CONVERGED.code))
+    out_i[idx[mark], column_index("status")] = Status.HELD.code
 
 
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
@@ -218,7 +246,8 @@ def friction_coefficient(
         Scalars give a :class:`FrictionResult`, arrays a :class:`FrictionResults` of
         the same shape.
     initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
-        on at ``tau = 0``, docs/model.md), ``"rest"``, or a :class:`SectionState` (e.g. the
+        on at ``tau = 0``, docs/model.md; at ``V = 0`` the rest), ``"rest"``, or a
+        :class:`SectionState` (e.g. the
         ``final_state`` of another result, for continuation).  Coexisting attractors
         make the initial state part of the result's definition.
     settings : accuracy and effort bounds (:class:`SolverSettings`).

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 from numpy.typing import NDArray
@@ -13,7 +13,7 @@ from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample, to_
 from .._kernels.phases import frame_offset
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
 from .energy import dissipation, inplane_motion, kernel_point
-from .engine import friction_coefficient, initial_rows
+from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
 from .results import SectionState, section_state
 from .settings import SolverSettings
 
@@ -105,6 +105,12 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
     if kind == 2:  # a laboratory state: into the kernels' frame (docs/inplane.md)
         y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:]), init[0, 0], init[0, 1])
         return y, xd, init[0, 2], math.nan, int(init[0, 3])
+    if kind == 0 and V == 0.0 and dim.a_x > 0.0:
+        kind = 1  # "sliding" has no direction at V = 0: the rest, as in solve_points
+    if V < 0.0:  # the named starts of -V mirrored (x -> -x, phase_x + pi), as in solve_points
+        mirror = replace(dim, phase_x=dim.phase_x + math.pi)
+        y, xd, e, phase, e_dot = initial_point(kind, *kernel_point(mirror, -V))
+        return -y, -xd, -e, -e_dot, _MIRROR_PHASE.get(phase, phase)
     y, xd, e, phase, e_dot = initial_point(kind, *kernel_point(dim, V))
     return y, xd, e, e_dot, phase
 
@@ -138,15 +144,15 @@ def simulate(
     history shows the steady state rather than the transient (ValueError where that
     result has no section state or is not trusted).  ``final_state`` is the state on
     the last Poincare section within the history, ``tau = 2 pi floor(periods)``.
+    ``V < 0`` is integrated as it stands, from the mirror image of the named start of
+    ``-V`` (``"sliding"``: ``x' = V``, the spring stretched by ``-1``); at ``V = 0`` with
+    an in-plane oscillation ``"sliding"`` is the rest (as in :func:`solve_points`).
     """
     dim = dimensionless(system)
     V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
     V = float(V)
-    if V < 0.0:
-        raise ValueError("simulate with v_inertial < 0 is not implemented yet "
-                         "(friction_coefficient and solve_points compute it)")
     _checked_run(periods, samples_per_period)
     seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))
     m = seg.shape[0]

@@ -224,7 +224,8 @@ def describe(r: FrictionResult) -> str:
             "the motion from the initial state need not approach it, and a transient (e.g. "
             "rare sticks of an undamped free oscillation) can persist for many periods; "
             "the error includes how far the motion's mean over periods 512-1024 is from it")
-    if r.status in (Status.AVERAGED, Status.NOT_CONVERGED) and math.isfinite(r.window_min):
+    if r.status in (Status.AVERAGED, Status.NOT_CONVERGED, Status.HELD) \
+            and math.isfinite(r.window_min):
         parts.append(f"window means range from {r.window_min:.6g} to {r.window_max:.6g}")
     if r.status is Status.NOT_CONVERGED:
         parts.append(_not_converged_note(r.drift_rate))
