@@ -28,6 +28,7 @@ def test_import_vibrofriction_does_not_import_panel():
     State(alpha=0.01, beta=math.inf, amplitude=1.5, zeta=0.02, axis="V", v_max=30.0),
     State(mode="bench", du_z_um=0.123456789, k_xc=math.inf, axis="v0", v_min=1e-4,
           v_max=0.1, log_x=True, points=57),
+    State(a_x=0.5, phase_x=1.25, inplane_on="holder", axis="V", v_min=-1.0, v_max=1.0),
 ])
 def test_state_round_trips_through_the_url(state):
     query = state.to_query()
@@ -84,6 +85,8 @@ def _run_snippet(state: State) -> np.ndarray:
     State(points=40),
     State(mode="bench", axis="v0", v_min=1e-4, v_max=0.05, log_x=True, points=30),
     State(alpha=1.0, beta=math.inf, amplitude=0.5, axis="V", v_max=8.0, points=30),
+    State(a_x=0.5, phase_x=1.25, inplane_on="holder", axis="V", v_min=-1.0, v_max=1.0,
+          points=21),
 ])
 def test_snippet_reproduces_the_curve(state):
     c = compute.curve(state)
@@ -297,3 +300,24 @@ def test_no_export_before_a_curve_and_the_export_is_the_curve_shown(monkeypatch)
     csv = ex._export("csv").getvalue().decode()
     assert csv.startswith("# vibrofriction explorer: alpha = 0.01, beta = 0.02")
     assert len([ln for ln in csv.splitlines() if not ln.startswith("#")]) == 13
+
+
+def test_inplane_mount_and_signed_velocity_axis():
+    """The mount is an input (the curve changes with it where alpha != 1/2), V runs
+    through 0 with an in-plane oscillation, vbar stays non-negative, a bad mount in the
+    URL is said and replaced by the default, and the history works at V < 0."""
+    state = State(alpha=0.3, a_x=0.5, phase_x=0.9, axis="V", v_min=-0.6, v_max=0.6,
+                  points=13)
+    sub, hold = compute.curve(state), compute.curve(state.with_(inplane_on="holder"))
+    for c in (sub, hold):  # V = 0 is held (the mean force depends on the preload)
+        assert c["x"][6] == 0.0 and not c["trusted"][6]
+        assert np.delete(c["trusted"], 6).all()
+    assert np.nanmax(np.abs(sub["y"] - hold["y"])) > 0.05
+    assert np.all(np.sign(sub["y"][:5]) == -1) and np.all(np.sign(sub["y"][-5:]) == 1)
+    _, problems = read_inputs({"v_min": "-1"}, State())  # the vbar axis starts at 0
+    assert "v_min must be finite and >= 0" in problems["v_min"]
+    back, problems = State.from_query({"inplane_on": "belt", "alpha": "0.3"})
+    assert "inplane_on must be one of" in problems["inplane_on"]
+    assert back.inplane_on == "substrate" and back.alpha == 0.3
+    h = compute.history(state.with_(inplane_on="holder"), -0.3)
+    assert h["mu_ratio"] < 0 and h["trusted"] and len(h["t"]) > 10

@@ -183,11 +183,55 @@ def test_docs_inplane_code_runs() -> None:
     assert namespace["r"].mu_ratio < 0 and namespace["atlas"].mu_ratio.shape == (3, 3, 4)
 
 
-def test_fit_and_design_refuse_an_inplane_oscillation_rather_than_ignore_it() -> None:
-    from vibrofriction.bench import design, fit
+def test_design_refuses_an_inplane_oscillation_rather_than_ignore_it() -> None:
+    from vibrofriction.bench import design
 
     pin = Physical(**PIN, du_x=1e-6)
     with pytest.raises(ValueError, match=r"the design does not take an in-plane oscillation"):
         design(pin, v0=0.01, omega=(1e3, 1e4), du_z=(0.0, 1e-6))
-    with pytest.raises(ValueError, match=r"the fit does not take an in-plane oscillation"):
-        fit("no-such-file.csv", pin)
+
+
+# --- the bench: measurements with an in-plane oscillation, fitted -------------------------
+def _inplane_bench():
+    from pathlib import Path
+
+    here = Path(__file__).resolve().parent / "data"
+    meta = json.loads((here / "inplane_bench.json").read_text())
+    return vf.read_measurements(here / "inplane_bench.csv"), meta, Physical(**meta["truth"])
+
+
+def test_inplane_measurements_are_read_and_predicted() -> None:
+    """tests/data/inplane_bench.csv (made by the independent reference with
+    tests/data/make_inplane_bench.py: signed v0 and COF, du_x and phase_x columns): read
+    in SI, and the package's COF at the truth scatters about it as the stated sigma."""
+    from scipy.stats import chi2 as chi2_dist
+
+    from vibrofriction.bench import predict_cof
+
+    data, meta, truth = _inplane_bench()
+    assert list(data.columns) == ["v0", "cof", "du_z", "omega", "sigma", "du_x", "phase_x"]
+    assert (data.v0 < 0).sum() == 10 and (data.cof < 0).any() and set(data.du_x) == {4e-6}
+    model = predict_cof(truth, data.v0, data.du_z, data.omega, du_x=data.du_x,
+                        phase_x=data.phase_x)
+    chi2 = float(np.sum(((model - data.cof) / data.sigma) ** 2))
+    assert 1e-3 < chi2_dist.sf(chi2, len(data)) < 1 - 1e-3, chi2
+    assert meta["reference_error_bar_cof"] < 0.01 * meta["sigma"]
+    # without the du_x column the same signs are refused: they need an in-plane oscillation
+    with pytest.raises(ValueError, match=r"column 'v0', row 0: -0.08 is not a finite number "
+                                         r">= 0"):
+        vf.read_measurements(data.drop(columns=["du_x"]))
+
+
+def test_fit_to_inplane_reference_data_holds_the_truth() -> None:
+    """mu0 and k_xc fitted to the held-out in-plane data from a guess off by 1.3 and 1.6:
+    the 95 % intervals hold the truth, and the mount is the guess's."""
+    data, _, truth = _inplane_bench()
+    guess = truth.with_(mu0=0.39, k_xc=4.8e6, du_x=0.0)  # du_x, phase_x: from the rows
+    res = vf.fit(data, guess, free=["mu0", "k_xc"], progress=False, workers=1)
+    assert res.quality == "good", res.report()
+    for n in ("mu0", "k_xc"):
+        lo, hi = res.intervals[n]
+        assert lo <= getattr(truth, n) <= hi, (n, lo, hi, res.report())
+    holder = vf.fit(data, guess.with_(inplane_on="holder"), free=["mu0", "k_xc"],
+                    progress=False, workers=1)
+    assert holder.chisqr > 4 * res.chisqr  # the wrong mount does not describe the data

@@ -27,17 +27,25 @@ COARSE_ROWS = 20
 
 
 def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
-                settings: SolverSettings | None = None) -> NDArray[np.float64]:
-    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega)`` (eq. 25), ``nan``
-    where the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count
-    of untrusted points is ``np.isnan(...).sum()``."""
-    return _cof(system.mu0, _solve_points((*_groups(system, v0, du_z, omega), settings)))
+                settings: SolverSettings | None = None, *, du_x: NDArray | float = 0.0,
+                phase_x: NDArray | float = 0.0) -> NDArray[np.float64]:
+    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x)``
+    (eq. 25; the in-plane oscillation on ``system.inplane_on``; ``system``'s own ``du_z``,
+    ``omega``, ``du_x``, ``phase_x`` are not used), ``nan`` where the solver's value is
+    not trusted (:meth:`SolverSettings.trusted`): the count of untrusted points is
+    ``np.isnan(...).sum()``."""
+    groups = _groups(system, v0, du_z, omega, du_x, phase_x)
+    return _cof(system.mu0, _solve_points((*groups, system.inplane_on, settings)))
 
 
-def _groups(system: Physical, v0, du_z, omega) -> tuple[NDArray[np.float64], ...]:
-    """``(alpha, beta, a, V, zeta, eta_c)`` of ``system`` at each measured point."""
+def _groups(system: Physical, v0, du_z, omega, du_x, phase_x
+            ) -> tuple[NDArray[np.float64], ...]:
+    """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of ``system`` at each measured
+    point (the arguments of :func:`~vibrofriction.solver.solve_points`)."""
     alpha, beta, a, zeta, eta = system.groups(du_z, omega)
-    return alpha, beta, a, system.v0_to_inertial(v0, omega), zeta, eta
+    a_x = system.inplane_amplitude(du_x, omega)
+    phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
+    return alpha, beta, a, system.v0_to_inertial(v0, omega), zeta, eta, a_x, phase
 
 
 def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
@@ -59,7 +67,8 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
     n = v0.size
     rows = []
     for du in np.atleast_1d(np.asarray(du_z, dtype=float)):
-        cof = predict_cof(system, v0, np.full(n, du), np.full(n, system.omega), settings)
+        cof = predict_cof(system, v0, np.full(n, du), np.full(n, system.omega), settings,
+                          du_x=system.du_x, phase_x=system.phase_x)
         if np.any(np.isnan(cof)):
             bad = v0[np.isnan(cof)]
             shown = ", ".join(f"{v:.4g}" for v in bad[:5]) + (", ..." if bad.size > 5 else "")
@@ -67,7 +76,8 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
                              f"{n} points at du_z = {du:g} m (v0 = {shown} m/s): no "
                              "synthetic measurement is made from an untrusted value")
         rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
-                                  "du_z": du, "omega": system.omega, "sigma": sigma}))
+                                  "du_z": du, "omega": system.omega, "sigma": sigma,
+                                  "du_x": system.du_x, "phase_x": system.phase_x}))
     return pd.concat(rows, ignore_index=True)
 
 
@@ -125,17 +135,18 @@ class _Problem:
         points = self.points(ln)
         if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
             return self.penalty(), len(self.data), 0
-        return self._residuals(points[0], _solve_points(points[1:] + (self.settings,)))
+        return self._residuals(points[0], _solve_points(
+            points[1:] + (self.guess.inplane_on, self.settings)))
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
-        """``(mu0, alpha, beta, a, V, zeta, eta_c)`` of every row at ``ln`` (eq. 20), or
-        None where the parameters leave the model's domain."""
+        """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of every row at ``ln``
+        (eq. 20), or None where the parameters leave the model's domain."""
         values = self.values(ln)
         if not _in_domain(values):
             return None
         system, d = Physical(**values), self.data
-        return (system.mu0, *_groups(system, d["v0"].to_numpy(), d["du_z"].to_numpy(),
-                                     d["omega"].to_numpy()))
+        return (system.mu0, *_groups(system, *(d[c].to_numpy() for c in (
+            "v0", "du_z", "omega", "du_x", "phase_x"))))
 
     def _residuals(self, mu0: float, solved: tuple[NDArray, NDArray]
                    ) -> tuple[NDArray[np.float64], int, int]:
@@ -159,11 +170,13 @@ class _Problem:
         inside = [p for p in members if p is not None]
         out = np.empty(len(members))
         if inside:
-            columns = [np.concatenate([p[j] for p in inside]) for j in range(1, 7)]
+            columns = [np.concatenate([p[j] for p in inside])
+                       for j in range(1, len(inside[0]))]
             size = columns[0].size
             parts = [np.arange(i, size, chunks) for i in range(min(chunks, size))]
             mu_ratio, trusted = np.empty(size), np.zeros(size, dtype=bool)
-            tasks = [tuple(c[idx] for c in columns) + (self.settings,) for idx in parts]
+            tasks = [tuple(c[idx] for c in columns) + (self.guess.inplane_on, self.settings)
+                     for idx in parts]
             for idx, (m, t) in zip(parts, map_(_solve_points, tasks), strict=True):
                 mu_ratio[idx], trusted[idx] = m, t
         rows, start = len(self.data), 0
@@ -192,10 +205,11 @@ class _Problem:
 
 
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """``mu_ratio`` and ``trusted`` at the points of ``task`` (six group arrays and the
-    settings): a pool task of :meth:`_Problem.costs`."""
-    *groups, settings = task
-    out = solve_points(*groups, settings=settings)
+    """``mu_ratio`` and ``trusted`` at the points of ``task`` (the eight group arrays of
+    :func:`_groups`, ``inplane_on`` and the settings): a pool task of
+    :meth:`_Problem.costs`."""
+    *groups, inplane_on, settings = task
+    out = solve_points(*groups, inplane_on=inplane_on, settings=settings)
     return out["mu_ratio"], out["trusted"]
 
 

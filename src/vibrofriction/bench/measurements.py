@@ -10,12 +10,17 @@ cof       measured coefficient of friction, ``<F_x>/<F_N>``      1 (dimensionles
 du_z      amplitude of the normal oscillation (indentation)      m, mm, um, nm
 omega     drive frequency                                        rad/s, Hz
 sigma     standard deviation of ``cof`` (optional)               1
+du_x      amplitude of the longitudinal in-plane oscillation     m, mm, um, nm
+          (optional, docs/inplane.md)
+phase_x   its phase relative to the normal one (optional)        rad, deg
 ========  =====================================================  ==================
 
 A unit is written in brackets after the name (``v0 [mm/s]``, ``du_z [um]``, ``omega
 [Hz]``); without one the column is in the first unit of its row (SI).  Values are
-converted to SI (``omega`` to rad/s).  Every value must be finite; ``v0`` and ``du_z``
-``>= 0``, ``omega`` and ``sigma`` ``> 0``, ``cof >= 0``.  Names match regardless of case
+converted to SI (``omega`` to rad/s, ``phase_x`` to rad).  Every value must be finite;
+``du_z`` and ``du_x`` ``>= 0``, ``omega`` and ``sigma`` ``> 0``; ``v0 >= 0`` and ``cof >= 0``
+unless the table has a ``du_x`` column (an in-plane oscillation makes both signed: sliding
+backward, a drive).  Names match regardless of case
 (``Sigma``, ``V0 [mm/s]``); other columns are ignored, unless a name is close to a known
 one (``sigm``, ``du-z``: a misspelling, an error naming both).  A missing column, an
 unknown unit or a bad value is a ``ValueError`` naming the column and, for a value, the
@@ -43,10 +48,17 @@ COLUMNS: dict[str, dict[str, float]] = {
     "du_z": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9},
     "omega": {"rad/s": 1.0, "hz": 2.0 * math.pi},
     "sigma": {"1": 1.0, "": 1.0, "-": 1.0},
+    "du_x": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9},
+    "phase_x": {"rad": 1.0, "deg": math.pi / 180.0},
 }
+#: The optional columns and their value where a table has none.
+_OPTIONAL = {"sigma": math.nan, "du_x": 0.0, "phase_x": 0.0}
 _REQUIRED = ("v0", "cof", "du_z", "omega")
 _MINIMUM = {"v0": (0.0, False), "cof": (0.0, False), "du_z": (0.0, False),
-            "omega": (0.0, True), "sigma": (0.0, True)}
+            "omega": (0.0, True), "sigma": (0.0, True), "du_x": (0.0, False),
+            "phase_x": (-math.inf, True)}
+#: Columns that are signed where the table has an in-plane oscillation (a ``du_x`` column).
+_SIGNED_INPLANE = ("v0", "cof")
 #: How close (difflib's ratio) an unknown column's name may come to a known one.
 _MISSPELLING_CUTOFF = 0.75
 _HEADER = re.compile(r"^\s*([^\[(]*?)\s*(?:[\[(]\s*([^\])]*)\s*[\])])?\s*$")
@@ -101,15 +113,17 @@ def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | N
     missing = [c for c in _REQUIRED if c not in columns]
     if missing:
         raise ValueError(f"{where} lacks the column(s) {missing}; a measurement table has "
-                         f"{list(_REQUIRED)} and optionally 'sigma' (docs/bench.md)")
+                         f"{list(_REQUIRED)} and optionally {list(_OPTIONAL)} "
+                         "(docs/bench.md)")
     return columns
 
 
 def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
     """A measured table (CSV path or DataFrame) as a DataFrame in SI units, checked.
 
-    Returns the columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s) and
-    ``sigma`` (nan where not given), in the order of the input rows.
+    Returns the columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s),
+    ``sigma`` (nan where not given), ``du_x`` (m) and ``phase_x`` (rad; 0 where not
+    given), in the order of the input rows.
     """
     if isinstance(source, pd.DataFrame):
         frame, lines, where = source, None, "the DataFrame"
@@ -127,16 +141,19 @@ def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
                              f"{[u for u in units if u]}")
         values = pd.to_numeric(frame[raw], errors="coerce").to_numpy(dtype=float)
         low, strict = _MINIMUM[name]
+        if name in _SIGNED_INPLANE and "du_x" in columns:
+            low, strict = -math.inf, True
         bad = ~np.isfinite(values) | ((values <= low) if strict else (values < low))
         if np.any(bad):
             i = int(np.flatnonzero(bad)[0])
             row = (f"row {frame.index[i]!r}" if lines is None else
                    f"line {lines[i]}" if lines else f"data row {i + 1}")
-            rule = f"> {low:g}" if strict else f">= {low:g}"
+            rule = "" if math.isinf(low) else f" > {low:g}" if strict else f" >= {low:g}"
             value = frame[raw].iloc[i]
             value = repr(value) if isinstance(value, str) else str(value)
-            raise ValueError(f"column {name!r}, {row}: {value} is not a finite number {rule}")
+            raise ValueError(f"column {name!r}, {row}: {value} is not a finite number{rule}")
         out[name] = values * units[key]
-    if "sigma" not in out:
-        out["sigma"] = np.full(len(frame), np.nan)
-    return pd.DataFrame({c: out[c] for c in (*_REQUIRED, "sigma")})
+    for name, missing in _OPTIONAL.items():
+        if name not in out:
+            out[name] = np.full(len(frame), missing)
+    return pd.DataFrame({c: out[c] for c in (*_REQUIRED, *_OPTIONAL)})

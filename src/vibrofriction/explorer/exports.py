@@ -30,7 +30,8 @@ def _system_text(state: State) -> str:
     if state.mode == "dimensionless":
         return (f"alpha = {state.alpha!r}, beta = {state.beta!r}, a = {state.amplitude!r}, "
                 f"zeta = {state.zeta!r}, eta_c = {state.eta_c!r}"
-                + (f", a_x = {state.a_x!r}, phase_x = {state.phase_x!r}" if state.a_x else ""))
+                + (f", a_x = {state.a_x!r}, phase_x = {state.phase_x!r} on the "
+                   f"{state.inplane_on}" if state.a_x else ""))
     return ", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
 
 
@@ -39,7 +40,8 @@ def snippet(state: State) -> str:
     if state.mode == "dimensionless":
         make = (f"system = vf.Dimensionless(alpha={state.alpha!r}, beta={_num(state.beta)}, "
                 f"amplitude={state.amplitude!r}, zeta={state.zeta!r}, eta_c={state.eta_c!r}"
-                + (f", a_x={state.a_x!r}, phase_x={state.phase_x!r})" if state.a_x else ")"))
+                + (f", a_x={state.a_x!r}, phase_x={state.phase_x!r}, "
+                   f"inplane_on={state.inplane_on!r})" if state.a_x else ")"))
     else:
         args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
         make = f"system = vf.Physical.from_bench(\n    {args})"

@@ -18,6 +18,7 @@ import panel as pn
 from bokeh.events import Tap
 
 from vibrofriction.bench import FITTABLE
+from vibrofriction.schema import CHOICES
 
 from . import compute, exports, pool
 from .messages import GENERAL, field_of, read_inputs
@@ -123,8 +124,12 @@ class Explorer:
                                                 width=200, name="velocity axis")
         self.axis_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
         self.log_x = pn.widgets.Checkbox(name="logarithmic velocity axis", value=s.log_x)
+        self.inplane_on = pn.widgets.RadioButtonGroup(
+            options={f"in-plane on the {v}": v for v in CHOICES["inplane_on"].values},
+            value=s.inplane_on, width=320, name="inplane_on",
+            css_classes=["vf-inplane-on"])
         self.general = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
-        for w in (self.mode, self.axis, self.log_x):
+        for w in (self.mode, self.axis, self.log_x, self.inplane_on):
             w.param.watch(lambda e: self._changed(), "value")
         self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
         self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
@@ -141,7 +146,7 @@ class Explorer:
         self.curve_pane = pn.pane.Bokeh(self.curve_view.figures["linear"],
                                         sizing_mode="stretch_width", min_height=400)
         self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
-                                 margin=0)
+                                 self.inplane_on, margin=0)
         self.bench_box = pn.Column(*(self.inputs[f.name].layout for f in BENCH), margin=0)
         self.bench_file = pn.widgets.FileInput(accept=".json", width=300)
         self.bench_file.param.watch(self._bench_file, "value")
@@ -214,7 +219,8 @@ class Explorer:
         """Read every input; on success ask for the curve, else place the message."""
         self._show_mode()
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
-                                log_x=bool(self.log_x.value))
+                                log_x=bool(self.log_x.value),
+                                inplane_on=self.inplane_on.value)
         texts = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
         for name, inp in self.inputs.items():

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 import numpy as np
 
 import vibrofriction as vf
-from vibrofriction.schema import PARAMETER, parameter_names
-from vibrofriction.validation import checked
+from vibrofriction.schema import CHOICES, PARAMETER, parameter_names
+from vibrofriction.validation import checked, checked_choice
 
 __all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "Field", "State", "parse_number"]
 
@@ -67,7 +67,7 @@ BENCH = (
     Field("bench_eta_c", "eta_c (contact loss factor)", 0.0, 1.0, log=False),
 )
 VELOCITY = (
-    Field("v_min", "velocity from", 0.0, 1e3, log=False, allow_inf=False),
+    Field("v_min", "velocity from (V, v0: signed)", -1e3, 1e3, log=False, allow_inf=False),
     Field("v_max", "velocity to", 1e-6, 1e3),
 )
 FIELDS = {f.name: f for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
@@ -92,6 +92,7 @@ class State:
     eta_c: float = PARAMETER["eta_c"].default
     a_x: float = PARAMETER["a_x"].default
     phase_x: float = PARAMETER["phase_x"].default
+    inplane_on: str = CHOICES["inplane_on"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
     quality_factor: float = 50.0
@@ -113,13 +114,15 @@ class State:
             raise ValueError(f"mode must be one of {list(MODES)}, got {self.mode!r}")
         if self.axis not in AXES:
             raise ValueError(f"axis must be one of {list(AXES)}, got {self.axis!r}")
+        checked_choice("inplane_on", self.inplane_on)
 
     # ------------------------------------------------------------------ system
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
             return vf.Dimensionless(**{n: getattr(self, n)
-                                       for n in parameter_names("dimensionless")})
+                                       for n in parameter_names("dimensionless")},
+                                    inplane_on=self.inplane_on)
         return vf.Physical.from_bench(**self.bench_arguments())
 
     def bench_arguments(self) -> dict[str, float]:
@@ -131,8 +134,9 @@ class State:
                     mu0=self.mu0, eta_c=self.bench_eta_c)
 
     def velocities(self) -> np.ndarray:
-        """The ``points`` velocities of the curve, on the chosen axis."""
-        lo = float(checked("v_min", self.v_min, minimum=0.0))
+        """The ``points`` velocities of the curve, on the chosen axis (``V`` and ``v0``
+        signed: negative slides the other way; ``vbar`` from 0)."""
+        lo = float(checked("v_min", self.v_min, minimum=0.0 if self.axis == "vbar" else None))
         hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
         if self.log_x:
             lo = float(checked("v_min", lo, minimum=0.0, strict=True))
@@ -174,7 +178,7 @@ class State:
         try:
             return cls(**values), problems
         except ValueError as exc:
-            bad = "mode" if "mode" in str(exc) else "axis"
+            bad = next((n for n in ("mode", "inplane_on") if n in str(exc)), "axis")
             problems[bad] = str(exc)
             values.pop(bad, None)
             return cls(**values), problems
@@ -197,7 +201,7 @@ def _text(value: object) -> str:
 
 
 def _value(name: str, text: str) -> object:
-    if name in ("mode", "axis"):
+    if name in ("mode", "axis", "inplane_on"):
         return text
     if name == "log_x":
         return text.strip().lower() in ("1", "true", "yes", "on")
