@@ -235,3 +235,36 @@ def test_fit_to_inplane_reference_data_holds_the_truth() -> None:
     holder = vf.fit(data, guess.with_(inplane_on="holder"), free=["mu0", "k_xc"],
                     progress=False, workers=1)
     assert holder.chisqr > 4 * res.chisqr  # the wrong mount does not describe the data
+
+
+def test_regimes_of_the_combined_drive_agree_with_the_solver() -> None:
+    """theory.inplane_regime (from the closed-form static band) against the solver's
+    blocking forces mu(V = +-1e-5): actuator where both have one sign, ratchet or
+    reduction where they straddle 0, reduction where they are opposite equals. Random
+    damped systems, both mounts; points within 0.02 of a band edge at 0 are skipped."""
+    from vibrofriction import theory
+
+    rng = np.random.default_rng(7)
+    seen = set()
+    for _ in range(40):
+        alpha = float(rng.uniform(0.1, 0.9))
+        d = dict(alpha=alpha, beta=alpha + float(rng.uniform(1.0, 5.0)),
+                 amplitude=float(rng.uniform(0.0, 0.8)), zeta=float(rng.uniform(0.02, 0.2)),
+                 eta_c=float(rng.uniform(0.0, 0.3)), a_x=float(rng.uniform(0.1, 1.5)),
+                 phase_x=float(rng.uniform(0, 2 * math.pi)),
+                 inplane_on=str(rng.choice(["substrate", "holder"])))
+        upper, lower = theory.inplane_static_mu_ratio(**d)
+        regime = int(theory.inplane_regime(**d))
+        if regime < 0 or min(abs(upper), abs(lower)) < 0.02:
+            continue
+        plus, minus = (friction_coefficient(Dimensionless(**d), v_inertial=v)
+                       for v in (1e-5, -1e-5))
+        assert plus.trusted and minus.trusted, d
+        if regime == 2:
+            assert np.sign(plus.mu_ratio) == np.sign(minus.mu_ratio), d
+        else:
+            assert plus.mu_ratio > 0 > minus.mu_ratio, d
+        seen.add(regime)
+    assert seen >= {1, 2}
+    # the undamped issue system at phase pi/2 is symmetric: friction reduction
+    assert int(theory.inplane_regime(0.5, 2.0, 0.5, 0.5, math.pi / 2)) == 0

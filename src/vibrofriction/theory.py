@@ -53,6 +53,7 @@ __all__ = [
     "critical_velocity_stiff",
     "inplane_cancellation",
     "inplane_critical_velocity",
+    "inplane_regime",
     "inplane_static_mu_ratio",
     "kinematic_mu_longitudinal",
     "kinematic_mu_transverse",
@@ -815,3 +816,37 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
     upper = np.where(ok, 1.0 - plus, np.nan)
     lower = np.where(ok, minus - 1.0, np.nan)
     return InplaneStatic(as_float_or_array(upper), as_float_or_array(lower))
+
+
+#: The regimes of :func:`inplane_regime`, in the order of their codes 0, 1, 2 (-1: the
+#: contact slips in every cycle, no closed form).
+INPLANE_REGIMES = ("reduction", "ratchet", "actuator")
+
+
+def inplane_regime(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                   a_x: ArrayLike, phase_x: ArrayLike, zeta: ArrayLike = 0.0,
+                   eta_c: ArrayLike = 0.0, inplane_on: str = "substrate",
+                   rtol: float = 1e-9) -> NDArray[np.int8]:
+    r"""The regime of the combined drive near ``V = 0``, from the static band of
+    :func:`inplane_static_mu_ratio` (``upper = mu(0+)/mu0``, ``lower = mu(0-)/mu0``):
+
+    * ``0`` **friction reduction**: ``lower < 0 < upper`` and ``upper = -lower`` (within
+      ``rtol``): the oscillation lowers static friction equally both ways;
+    * ``1`` **ratchet**: ``lower < 0 < upper``, ``upper != -lower``: a preferred
+      direction, but a held body needs no force (0 is in the band);
+    * ``2`` **actuator**: the band excludes 0 (``upper < 0`` or ``lower > 0``): the
+      oscillation pushes; a held body carries a force, and the free body moves (at its
+      idle velocity, where ``mu(V) = 0``);
+    * ``-1``: no permanent stick (the contact slips in every cycle); the solver's
+      ``mu(V -> 0+-)`` decide (docs/inplane.md, section 3).
+    """
+    upper, lower = (np.asarray(x, dtype=float) for x in inplane_static_mu_ratio(
+        alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on))
+    out = np.full(upper.shape, -1, dtype=np.int8)
+    held = np.isfinite(upper)
+    out[held & ((upper < 0.0) | (lower > 0.0))] = 2
+    inside = held & (upper >= 0.0) & (lower <= 0.0)
+    symmetric = np.abs(upper + lower) <= rtol * np.maximum(np.abs(upper), np.abs(lower))
+    out[inside & symmetric] = 0
+    out[inside & ~symmetric] = 1
+    return out
