@@ -1,12 +1,13 @@
 """The explorer's screenshots in docs/img/, taken in the distribution's headless Chromium.
 
 Starts ``vibrofriction explore`` on a free port (as bench_explorer.py does) and saves
-``explorer_default.png`` (the default view), ``explorer_history.png`` (a point's time
+``explorer_default.png`` (the default view), ``explorer_inplane.png`` (a combined
+normal + longitudinal drive over signed velocities), ``explorer_history.png`` (a point's time
 history after a click on the curve), ``explorer_map.png`` (the case map, soft contact),
 ``explorer_error.png`` (the inline message for a typed ``beta`` below ``alpha``) and
 ``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted).
 
-Run:  python benchmarks/explorer_screenshots.py [default history map error fit]
+Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit]
 """
 
 from __future__ import annotations
@@ -82,6 +83,9 @@ def main(which: list[str]) -> None:
                     time.sleep(0.1)
                 time.sleep(1.0)
                 shoot(page, "history", 760)
+            if "inplane" in which:
+                shoot(opened(browser, url + "?a_x=1&phase_x=3.1&zeta=0.05&eta_c=0.1&axis=V"
+                             "&v_min=-1.5&v_max=1.5"), "inplane")
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:
@@ -107,4 +111,4 @@ def main(which: list[str]) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:] or ["default", "history", "map", "error", "fit"])
+    main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit"])

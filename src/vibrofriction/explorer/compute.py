@@ -82,8 +82,10 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     results["status"] = np.asarray([s.value for s in res.status], dtype=object)
     return {
         "x": x, "y": np.asarray(res.mu_ratio, dtype=float) * scale, **results,
-        "static": float(theory.static_mu_ratio(dim.amplitude)) * scale,
-        "critical": float(critical), "jumping": dim.jumping,
+        # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
+        "static": (float(theory.static_mu_ratio(dim.amplitude)) * scale
+                   if dim.a_x == 0.0 and x[0] >= 0.0 else math.nan),
+        "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless")},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
@@ -93,6 +95,19 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "mu0": scale if scale != 1.0 else None,
         "seconds": time.perf_counter() - t0,
     }
+
+
+def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | None:
+    """With an in-plane oscillation: the blocking forces ``mu(V -> 0+)``, ``mu(V -> 0-)``
+    of the closed-form stuck band (nan: slips every cycle) and the regime's name."""
+    if dim.a_x == 0.0:
+        return None
+    args = (dim.alpha, dim.beta, dim.amplitude, dim.a_x, dim.phase_x, dim.zeta, dim.eta_c,
+            dim.inplane_on)
+    upper, lower = theory.inplane_static_mu_ratio(*args)
+    code = int(theory.inplane_regime(*args))
+    name = theory.INPLANE_REGIMES[code] if code >= 0 else "slips every cycle near V = 0"
+    return float(upper) * scale, float(lower) * scale, name
 
 
 def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,

@@ -81,7 +81,8 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
                 label="not trusted (solver)")
     for k, form in enumerate(curve["closed_forms"]):
         ax.plot(form["x"], form["y"], "--", color=f"C{k + 1}", lw=1.2, label=form["label"])
-    ax.plot([x[0]], [curve["static"]], "s", color="k", ms=5, label="static value, eq. (2)")
+    if math.isfinite(curve["static"]):
+        ax.plot([x[0]], [curve["static"]], "s", color="k", ms=5, label="static value, eq. (2)")
     if math.isfinite(curve["critical"]):
         ax.axvline(curve["critical"], color="C3", lw=0.8, ls=":",
                    label="critical velocity, eq. (12)")

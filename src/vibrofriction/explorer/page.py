@@ -289,9 +289,13 @@ class Explorer:
         self.map_view.show(curve["alpha"], curve["beta"])
         self.readout.object = readout_text(curve)
         crit = curve["critical"]
+        band = curve["band"]
+        static = (f"static value {curve['static']:.4g}" if band is None else
+                  f"blocking forces (stuck band) {band[0]:.4g} at V -> 0+, {band[1]:.4g} at "
+                  f"V -> 0-: {band[2]}")
         self.case_text.object = (
             f"**case {curve['case']}**: {curve['case_text']}\n\n"
-            f"static value {curve['static']:.4g}; critical velocity "
+            f"{static}; critical velocity "
             f"({state.axis}) {crit:.4g}" + (" (a > 1: eq. 12 is not the onset of sliding)"
                                             if curve["jumping"] else ""))
         self.snippet.object = f"```python\n{exports.snippet(state)}```"

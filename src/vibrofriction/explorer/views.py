@@ -87,7 +87,9 @@ class CurveView:
         self.trusted.data = {"x": x, "y": np.where(ok, y, np.nan)}
         bad = ~ok & np.isfinite(y)
         self.untrusted.data = {"x": x[bad], "y": y[bad], "status": curve["status"][bad]}
-        self.static.data = {"x": [x[0]], "y": [curve["static"]]}
+        shown = math.isfinite(curve["static"])
+        self.static.data = {"x": [x[0]] if shown else [], "y": [curve["static"]] if shown else []}
+        ymin = min(0.0, float(np.nanmin(y)) if np.any(np.isfinite(y)) else 0.0)
         ymax = max(1.0 if curve["mu0"] is None else curve["mu0"],
                    float(np.nanmax(y)) if np.any(np.isfinite(y)) else 1.0)
         crit = curve["critical"]
@@ -104,8 +106,8 @@ class CurveView:
             fig.xaxis.axis_label = curve["x_label"]
             fig.title.text = (f"{curve['y_label']} against velocity (exact solver): case "
                               f"{curve['case']}")
-            fig.y_range.start = -0.04 * ymax  # the static value may be 0
-            fig.y_range.end = 1.08 * ymax
+            fig.y_range.start = ymin - 0.04 * (ymax - ymin)  # the static value may be 0
+            fig.y_range.end = ymax + 0.08 * (ymax - ymin)
         self.picked.data = {"x": [], "y": []}
         _legend_follows_data(self.figures.values())
 
