@@ -240,7 +240,8 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     """The oscillation (``omega`` in rad/s, ``du_z`` in m, within the given ranges and
     ``omega du_z <= max_velocity_amplitude``) that minimises the COF of ``pin`` (eq. 25)
     at the sliding velocity ``v0`` (m/s); ``pin``'s own oscillation (``omega``, ``du_z``,
-    ``du_x``, ``phase_x``) is not used.
+    ``du_x``, ``phase_x``) is not used (a pin with ``du_x > 0`` needs ``du_x=``: refused
+    rather than ignored).
 
     ``du_z`` may start at 0 (no oscillation, ``COF = mu0``); the map then holds 0 and
     logarithmic amplitudes from ``ZERO_AMPLITUDE_FLOOR * high``.  ``settings``: the
@@ -259,6 +260,10 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     drive).  The map is 4-D (default ``41 x 9 x n_du_x x n_phase``); ``directions``
     gives the best normal-only and longitudinal-only choices within the same limits.
     """
+    if du_x is None and pin.du_x > 0.0:
+        raise ValueError(f"the pin has an in-plane oscillation (du_x = {pin.du_x!r} m), which "
+                         f"the design would not use: give du_x=(low, high) to design it, or "
+                         f"a pin with du_x = 0")
     if du_x is None and goal == "friction" and (phase_x, inplane_on) != (None, None):
         raise ValueError("phase_x and inplane_on need an in-plane oscillation: give "
                          "du_x=(low, high)")
@@ -428,8 +433,8 @@ def _solve_inplane(pin: Physical, v0: float, omega, du_z, du_x, phase_x, inplane
 
 
 def _amplitudes(lo: float, hi: float, n: int) -> np.ndarray:
-    if hi == 0.0:
-        return np.zeros(1)
+    if lo == hi:
+        return np.array([lo])
     if lo == 0.0:
         return np.concatenate([[0.0], np.geomspace(ZERO_AMPLITUDE_FLOOR * hi, hi,
                                                    max(n - 1, 1))])
@@ -438,7 +443,8 @@ def _amplitudes(lo: float, hi: float, n: int) -> np.ndarray:
 
 def _map_axes(pin: Physical, space: _Space, n_omega: int, n_du_z: int, n_du_x: int,
               n_phase: int) -> list[np.ndarray]:
-    ws, _ = _axes(pin, space.omega, (1.0, 1.0), n_omega, 1)
+    ws = (np.array([space.omega[0]]) if space.omega[0] == space.omega[1] else
+          _axes(pin, space.omega, (1.0, 1.0), n_omega, 1)[0])
     dxs = _amplitudes(*space.du_x, n_du_x)
     if space.phase is not None:
         phs = np.array([space.phase])
@@ -653,11 +659,13 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
 def _phase_map(pin, v0, on, space: _Space, point, settings, n_phase: int = 73,
                n_du_x: int = 25) -> xr.Dataset | None:
     """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
-    :func:`~vibrofriction.figures.plot_design` shows), when both are free."""
+    :func:`~vibrofriction.figures.plot_design` shows) when the phase is free (one
+    ``du_x`` when its range is a point)."""
     if space.phase is not None or space.du_x[1] == 0.0:
         return None
     w, dz = point[0], point[1]
-    dxs = np.linspace(space.du_x[0], space.du_x[1], n_du_x)
+    dxs = np.linspace(space.du_x[0], space.du_x[1], n_du_x if space.du_x[0] < space.du_x[1]
+                      else 1)
     phs = np.linspace(0.0, 2 * math.pi, n_phase)
     DX, PH = np.meshgrid(dxs, phs, indexing="ij")
     sol = _solve_inplane(pin, v0, w, dz, DX, PH, on, settings)
