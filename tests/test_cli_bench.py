@@ -76,6 +76,21 @@ def test_design_from_the_command_line(bench_file, tmp_path):
     bad = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz", "300",
                "--du-z", "1e-7:5e-7")
     assert bad.returncode == 2 and "low:high" in bad.stderr
+    bad = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz",
+               "300:3000", "--du-z", "0:5e-7", "--goal", "drive")
+    assert bad.returncode == 2 and "needs an in-plane oscillation" in bad.stderr
+
+
+def test_inplane_drive_design_from_the_command_line(bench_file, tmp_path):
+    out = _cli("design", "--bench", str(bench_file), "--v0", "0.002", "--frequency-hz",
+               "300:3000", "--du-z", "0:5e-7", "--du-x", "0:4e-6", "--goal", "drive",
+               "--max-velocity-amplitude", "0.03", "--out", str(tmp_path / "drive"))
+    assert out.returncode == 0, out.stderr
+    assert "largest drive force at v0 = 0.002" in out.stdout
+    assert "blocking force" in out.stdout and "which direction" in out.stdout
+    saved = xr.open_zarr(tmp_path / "drive" / "map.zarr", consolidated=False)
+    assert saved.cof.dims == ("omega", "du_z", "du_x", "phase_x")
+    assert saved.attrs["goal"] == "drive"
 
 
 def test_fit_from_the_command_line_refuses_a_parameter_a_constraint_holds(bench_file,

@@ -187,7 +187,9 @@ def test_design_refuses_an_inplane_oscillation_rather_than_ignore_it() -> None:
     from vibrofriction.bench import design
 
     pin = Physical(**PIN, du_x=1e-6)
-    with pytest.raises(ValueError, match=r"the design does not take an in-plane oscillation"):
+    # the design chooses the in-plane oscillation when given its range (du_x=); without
+    # it a pin's in-plane oscillation is refused, not silently dropped
+    with pytest.raises(ValueError, match=r"the pin has an in-plane oscillation .* du_x=\(low"):
         design(pin, v0=0.01, omega=(1e3, 1e4), du_z=(0.0, 1e-6))
 
 

@@ -27,12 +27,14 @@ import xarray as xr
 
 from ..params import Physical
 from ..solver import SolverSettings, solve_points
-from ..validation import checked
+from ..validation import checked, checked_choice
 
-__all__ = ["DESIGN_STATUSES", "DesignResult", "design"]
+__all__ = ["DESIGN_STATUSES", "GOALS", "VELOCITY_RULES", "DesignResult", "design"]
 
 #: Relative changes of the drive frequency in the sensitivity table.
 FREQUENCY_CHANGES = (-0.05, -0.01, 0.01, 0.05)
+#: Changes of the in-plane phase (rad) in the sensitivity table of an in-plane design.
+PHASE_CHANGES = (-0.1, 0.1)
 #: Relative change of each pin parameter in the sensitivity table.
 PARAMETER_CHANGE = 0.10
 PIN_PARAMETERS = ("mass", "k_x", "k_xc", "k_zc", "c_x", "mu0")
@@ -78,20 +80,64 @@ class DesignResult:
     n_untrusted: int
     n_untrusted_near: int
     n_rejected: int
+    goal: str = "friction"
+    velocity_rule: str = "combined"
+    directions: pd.DataFrame | None = None
+    phase_map: xr.Dataset | None = None
+    blocking: tuple[float, float] | None = None
+    blocking_trusted: bool | None = None
+    idle_velocity: float | None = None
+    idle_message: str = ""
 
     @property
     def trusted(self) -> bool:
         """Whether every point of the map within the limits is trusted (status ``trusted``)."""
         return self.status == "trusted"
 
+    @property
+    def inplane(self) -> bool:
+        """Whether the design was allowed an in-plane oscillation (``du_x`` given)."""
+        return "du_x" in self.map.dims
+
+    @property
+    def drive_ratio(self) -> float:
+        """The drive force at ``v0`` in units of ``mu0 <F_N>``: ``-mu_ratio``, positive
+        where the oscillation pushes the slider forward against a load."""
+        return -self.mu_ratio
+
     def report(self) -> str:
         s = self.system
-        lines = [f"optimum at v0 = {self.v0:g} m/s: f = {s.omega / (2 * math.pi):.6g} Hz, "
-                 f"du_z = {s.du_z:.4g} m (velocity amplitude {s.omega * s.du_z:.4g} m/s): "
-                 f"COF {self.cof:.5g} (mu/mu0 = {self.mu_ratio:.5g}, solver error "
-                 f"{self.error:.1e})",
-                 f"status: {self.status}: {self.message}",
-                 "sensitivity (COF):"]
+        if not self.inplane:
+            lines = [f"optimum at v0 = {self.v0:g} m/s: f = {s.omega / (2 * math.pi):.6g} Hz, "
+                     f"du_z = {s.du_z:.4g} m (velocity amplitude {s.omega * s.du_z:.4g} "
+                     f"m/s): COF {self.cof:.5g} (mu/mu0 = {self.mu_ratio:.5g}, solver error "
+                     f"{self.error:.1e})"]
+        else:
+            what = ("largest drive force" if self.goal == "drive" else
+                    "smallest friction force |COF|")
+            lines = [f"{what} at v0 = {self.v0:g} m/s ({s.inplane_on}): f = "
+                     f"{s.omega / (2 * math.pi):.6g} Hz, du_z = {s.du_z:.4g} m, du_x = "
+                     f"{s.du_x:.4g} m, phase_x = {s.phase_x:.4f} rad (combined velocity "
+                     f"amplitude {s.omega * math.hypot(s.du_z, s.du_x):.4g} m/s): COF "
+                     f"{self.cof:.5g} (mu/mu0 = {self.mu_ratio:.5g}, solver error "
+                     f"{self.error:.1e})"]
+            if self.goal == "drive":
+                lines.append(f"drive force at v0: {self.drive_ratio:.5g} mu0 <F_N>")
+                if self.blocking is not None:
+                    flag = "" if self.blocking_trusted else " (UNTRUSTED)"
+                    lines.append(f"blocking force: mu/mu0 = {self.blocking[0]:+.5g} at V -> 0+, "
+                                 f"{self.blocking[1]:+.5g} at V -> 0-{flag}")
+                lines.append(f"idle velocity: {self.idle_message}")
+        lines += [f"status: {self.status}: {self.message}"]
+        if self.directions is not None:
+            lines.append("which direction (best within the same limits):")
+            for _, row in self.directions.iterrows():
+                value = ("not allowed by the ranges" if not np.isfinite(row["cof"]) else
+                         f"COF {row['cof']:.5g} at f = {row['omega'] / (2 * math.pi):.5g} Hz, "
+                         f"du_z = {row['du_z']:.3g} m, du_x = {row['du_x']:.3g} m, phase_x = "
+                         f"{row['phase_x']:.3f}")
+                lines.append(f"  {row['direction']:>18s}: {value}")
+        lines.append("sensitivity (COF):")
         for _, row in self.sensitivity.iterrows():
             value = f"{row['cof']:.5g}" if row["trusted"] else "untrusted (no value)"
             lines.append(f"  {row['change']:>28s}: {value}")
@@ -186,18 +232,50 @@ def _refine(pin, v0, settings, starts, limits, steps):
 
 def design(pin: Physical, *, v0: float, omega: tuple[float, float],
            du_z: tuple[float, float], max_velocity_amplitude: float | None = None,
-           n_omega: int = 161, n_du_z: int = 41, starts: int = 8,
+           du_x: tuple[float, float] | None = None, phase_x: float | None = None,
+           inplane_on: str | None = None, goal: str = "friction",
+           velocity_rule: str = "combined", n_omega: int | None = None,
+           n_du_z: int | None = None, n_du_x: int = 9, n_phase: int = 16, starts: int = 8,
            settings: SolverSettings | None = None) -> DesignResult:
     """The oscillation (``omega`` in rad/s, ``du_z`` in m, within the given ranges and
     ``omega du_z <= max_velocity_amplitude``) that minimises the COF of ``pin`` (eq. 25)
-    at the sliding velocity ``v0`` (m/s); ``pin``'s own ``omega``, ``du_z`` are not used.
+    at the sliding velocity ``v0`` (m/s); ``pin``'s own oscillation (``omega``, ``du_z``,
+    ``du_x``, ``phase_x``) is not used (a pin with ``du_x > 0`` needs ``du_x=``: refused
+    rather than ignored).
 
     ``du_z`` may start at 0 (no oscillation, ``COF = mu0``); the map then holds 0 and
     logarithmic amplitudes from ``ZERO_AMPLITUDE_FLOOR * high``.  ``settings``: the
     solver's (its ``tol_trusted`` decides which values are used).  Raises ValueError
     when no trusted point of the map respects the limits.
+
+    **In-plane** (docs/bench.md): ``du_x=(lo, hi)`` (m, may start at 0) allows the
+    longitudinal oscillation ``du_x cos(omega t + phase_x)`` on ``inplane_on`` (default
+    the pin's); ``phase_x=None`` optimises the phase over ``[0, 2 pi)`` (a grid of
+    ``n_phase``, then refined), a number fixes it.  The velocity limit applies to
+    ``omega sqrt(du_z^2 + du_x^2)`` (``velocity_rule="combined"``) or to each of
+    ``omega du_z``, ``omega du_x`` (``"each"``).  ``goal="friction"`` minimises the force
+    magnitude ``|COF|`` at ``v0`` (the oscillation may push: ``mu < 0``),
+    ``goal="drive"`` maximises the drive force ``-mu(v0)`` and reports the blocking
+    force and the idle velocity; it needs ``du_x`` (a normal oscillation alone cannot
+    drive).  The map is 4-D (default ``41 x 9 x n_du_x x n_phase``); ``directions``
+    gives the best normal-only and longitudinal-only choices within the same limits.
     """
-    pin.require_normal_only("the design")
+    if du_x is None and pin.du_x > 0.0:
+        raise ValueError(f"the pin has an in-plane oscillation (du_x = {pin.du_x!r} m), which "
+                         f"the design would not use: give du_x=(low, high) to design it, or "
+                         f"a pin with du_x = 0")
+    if du_x is None and goal == "friction" and (phase_x, inplane_on) != (None, None):
+        raise ValueError("phase_x and inplane_on need an in-plane oscillation: give "
+                         "du_x=(low, high)")
+    if du_x is not None or goal != "friction":
+        return _design_inplane(pin, v0=v0, omega=omega, du_z=du_z, du_x=du_x,
+                               phase_x=phase_x, inplane_on=inplane_on, goal=goal,
+                               velocity_rule=velocity_rule, vmax=max_velocity_amplitude,
+                               n_omega=41 if n_omega is None else n_omega,
+                               n_du_z=9 if n_du_z is None else n_du_z, n_du_x=n_du_x,
+                               n_phase=n_phase, starts=starts, settings=settings)
+    n_omega = 161 if n_omega is None else n_omega
+    n_du_z = 41 if n_du_z is None else n_du_z
     v0 = float(checked("v0", v0, minimum=0.0, strict=True))
     w_range = _range("omega", omega)
     d_range = _range("du_z", du_z, allow_zero=True)
@@ -277,6 +355,9 @@ def _sensitivity(chosen: Physical, v0: float, settings: SolverSettings | None) -
     cases = [("optimum", chosen, chosen.omega)]
     cases += [(f"frequency {100 * c:+.0f} %", chosen, chosen.omega * (1 + c))
               for c in FREQUENCY_CHANGES]
+    if chosen.du_x > 0.0:
+        cases += [(f"phase_x {c:+.2f} rad", chosen.with_(phase_x=chosen.phase_x + c),
+                   chosen.omega) for c in PHASE_CHANGES]
     for name in PIN_PARAMETERS:
         base = getattr(chosen, name)
         if base == 0.0 or not math.isfinite(base):
@@ -286,6 +367,385 @@ def _sensitivity(chosen: Physical, v0: float, settings: SolverSettings | None) -
             cases.append((f"{name} {sign * 100 * PARAMETER_CHANGE:+.0f} %", p, p.omega))
     rows = []
     for label, pin, w in cases:
-        sol = _solve(pin, v0, w, pin.du_z, settings)
+        sol = (_solve(pin, v0, w, pin.du_z, settings) if pin.du_x == 0.0 else
+               _solve_inplane(pin, v0, w, pin.du_z, pin.du_x, pin.phase_x, pin.inplane_on,
+                              settings))
         rows.append((label, float(sol["cof"]), bool(sol["trusted"])))
     return pd.DataFrame(rows, columns=["change", "cof", "trusted"])
+
+
+# --------------------------------------------------------------------------------------
+# In-plane design: normal + longitudinal oscillation, friction or drive (docs/bench.md)
+
+#: ``velocity_rule``: what ``max_velocity_amplitude`` limits.
+VELOCITY_RULES = {
+    "combined": "omega sqrt(du_z^2 + du_x^2) (the peak speed of the contact's vibration at "
+                "the worst phase, sqrt(2) times its rms speed at any phase)",
+    "each": "omega du_z and omega du_x separately (two actuators, each with its limit)",
+}
+#: ``goal``: what the design optimises at ``v0``.
+GOALS = {
+    "friction": "the smallest friction force magnitude |COF| = mu0 |mu(v0)|",
+    "drive": "the largest drive force -mu(v0) (forward, against a load, at v0 > 0)",
+}
+#: The blocking force is ``mu`` at ``V = +-BLOCKING_V`` (inertial units).
+BLOCKING_V = 1e-5
+_AXES = ("omega", "du_z", "du_x", "phase_x")
+
+
+@dataclass
+class _Space:
+    """The allowed oscillations: ranges (SI), the phase (``None``: free), the limit."""
+
+    omega: tuple[float, float]
+    du_z: tuple[float, float]
+    du_x: tuple[float, float]
+    phase: float | None
+    vmax: float
+    rule: str
+
+    def feasible(self, w, dz, dx) -> np.ndarray:
+        w, dz, dx = (np.asarray(x, float) for x in (w, dz, dx))
+        speed = w * (np.hypot(dz, dx) if self.rule == "combined" else np.maximum(dz, dx))
+        return speed <= self.vmax * (1 + 1e-12)
+
+    def inside(self, w, dz, dx) -> bool:
+        return (self.omega[0] <= w <= self.omega[1] and self.du_z[0] <= dz <= self.du_z[1]
+                and self.du_x[0] <= dx <= self.du_x[1] and bool(self.feasible(w, dz, dx)))
+
+    def restricted(self, **ranges) -> _Space:
+        return _Space(**{**self.__dict__, **ranges})
+
+
+def _solve_inplane(pin: Physical, v0: float, omega, du_z, du_x, phase_x, inplane_on: str,
+                   settings: SolverSettings | None) -> dict[str, np.ndarray]:
+    """``cof`` (nan where not trusted), ``mu_ratio``, ``error``, ``trusted`` of ``pin``
+    driven at ``omega`` with ``du_z``, ``du_x``, ``phase_x`` (SI), at ``v0`` (m/s)."""
+    omega, du_z, du_x, phase_x = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x)))
+    alpha, beta, a, zeta, eta = pin.groups(du_z, omega)
+    out = solve_points(alpha, beta, a, pin.v0_to_inertial(v0, omega), zeta, eta,
+                       pin.inplane_amplitude(du_x, omega), phase_x, inplane_on=inplane_on,
+                       settings=settings)
+    trusted = out["trusted"]
+    return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
+            "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": trusted}
+
+
+def _amplitudes(lo: float, hi: float, n: int) -> np.ndarray:
+    if lo == hi:
+        return np.array([lo])
+    if lo == 0.0:
+        return np.concatenate([[0.0], np.geomspace(ZERO_AMPLITUDE_FLOOR * hi, hi,
+                                                   max(n - 1, 1))])
+    return np.unique(np.geomspace(lo, hi, n))
+
+
+def _map_axes(pin: Physical, space: _Space, n_omega: int, n_du_z: int, n_du_x: int,
+              n_phase: int) -> list[np.ndarray]:
+    ws = (np.array([space.omega[0]]) if space.omega[0] == space.omega[1] else
+          _axes(pin, space.omega, (1.0, 1.0), n_omega, 1)[0])
+    dxs = _amplitudes(*space.du_x, n_du_x)
+    if space.phase is not None:
+        phs = np.array([space.phase])
+    elif dxs.max() == 0.0:
+        phs = np.zeros(1)  # no in-plane oscillation: the phase means nothing
+    else:
+        phs = np.linspace(0.0, 2 * math.pi, n_phase, endpoint=False)
+    return [ws, _amplitudes(*space.du_z, n_du_z), dxs, phs]
+
+
+def _objective(goal: str, cof: np.ndarray) -> np.ndarray:
+    """The value minimised: ``|COF|`` (friction) or ``COF`` (drive: ``-COF`` maximised)."""
+    return np.abs(cof) if goal == "friction" else cof
+
+
+def _solve_map(pin, v0, axes, on, settings):
+    """The solver on the 4-D grid; points without in-plane amplitude are solved at the
+    first phase only and copied (the phase means nothing there)."""
+    grids = np.meshgrid(*axes, indexing="ij")
+    need = (grids[2] > 0.0) | (np.arange(axes[3].size) == 0)[None, None, None, :]
+    sol = {k: np.full(grids[0].shape, np.nan) for k in ("cof", "mu_ratio", "error")}
+    sol["trusted"] = np.zeros(grids[0].shape, bool)
+    part = _solve_inplane(pin, v0, *(g[need] for g in grids), on, settings)
+    for k, v in part.items():
+        sol[k][need] = v
+        sol[k][:, :, axes[2] == 0.0, :] = sol[k][:, :, axes[2] == 0.0, :1]
+    return grids, sol
+
+
+def _refine_inplane(pin, v0, on, goal, settings, space: _Space, starts, steps):
+    """Nelder-Mead from each start in the free coordinates (``ln omega``, ``ln du_z``,
+    ``ln du_x`` where the start's value is > 0 and its range not a point; ``phase_x``
+    when free), inside the limits, on trusted values only.  Returns the best
+    ``(point, objective)`` (starts included), the rejected evaluations in all and in
+    the winning run."""
+    from scipy.optimize import minimize
+
+    best = min(starts, key=lambda s: s[1])
+    rejected = {"all": 0, "run": 0}
+    best_rejected = 0
+    for point, _ in starts:
+        free = [i for i, (v, rng) in enumerate(zip(point[:3], (space.omega, space.du_z,
+                                                                  space.du_x), strict=True))
+                if v > 0.0 and rng[0] < rng[1]]
+        if space.phase is None and point[2] > 0.0:
+            free.append(3)
+        if not free:
+            continue
+
+        def full(x, point=point, free=free):
+            p = list(point)
+            for i, xi in zip(free, x, strict=True):
+                p[i] = xi % (2 * math.pi) if i == 3 else math.exp(xi)
+            return p
+
+        def objective(x, full=full):
+            w, dz, dx, ph = full(x)
+            if not space.inside(w, dz, dx):
+                return math.inf
+            c = float(_solve_inplane(pin, v0, w, dz, dx, ph, on, settings)["cof"])
+            if math.isnan(c):
+                rejected["run"] += 1
+                return math.inf
+            return float(_objective(goal, np.array(c)))
+
+        x0 = np.array([point[i] if i == 3 else math.log(point[i]) for i in free])
+        simplex = [x0]
+        for k, i in enumerate(free):  # step towards the inside: down in amplitude
+            e = np.zeros(len(free))
+            e[k] = steps[i] if i in (0, 3) else -steps[i]
+            simplex.append(x0 + e)
+        rejected["run"] = 0
+        with np.errstate(invalid="ignore"):
+            res = minimize(objective, x0, method="Nelder-Mead",
+                           options={"xatol": 1e-7, "fatol": 1e-10,
+                                    "maxfev": 60 + 60 * len(free),
+                                    "initial_simplex": np.array(simplex)})
+        rejected["all"] += rejected["run"]
+        if res.fun < best[1]:
+            best = (tuple(full(res.x)), float(res.fun))
+            best_rejected = rejected["run"]
+    return best, rejected["all"], best_rejected
+
+
+def _optimise(pin, v0, on, goal, space: _Space, sizes, starts, settings):
+    """Map and refinement over ``space``: ``(point, objective, grids, axes, sol,
+    feasible, n_rejected, rejected_run)``; ValueError without a trusted feasible point."""
+    axes = _map_axes(pin, space, *sizes)
+    grids, sol = _solve_map(pin, v0, axes, on, settings)
+    feasible = space.feasible(*grids[:3])
+    value = np.where(feasible & sol["trusted"], _objective(goal, sol["cof"]), np.inf)
+    order = [k for k in np.argsort(value, axis=None)[:starts] if np.isfinite(value.flat[k])]
+    if not order:
+        raise ValueError(f"no trusted point of the map respects the limits "
+                         f"({int((feasible & ~sol['trusted']).sum())} untrusted within them)")
+    steps = [_log_step(axes[0]), _log_step(axes[1]), _log_step(axes[2]),
+             2 * math.pi / axes[3].size if axes[3].size > 1 else 0.2]
+    (point, obj), n_rej, rej_run = _refine_inplane(
+        pin, v0, on, goal, settings, space,
+        [(tuple(float(g.flat[k]) for g in grids), float(value.flat[k])) for k in order],
+        steps)
+    return point, obj, grids, axes, sol, feasible, n_rej, rej_run
+
+
+def _untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
+    """Untrusted map points among the neighbours of the map point nearest ``point``
+    (amplitudes and frequency by ratio, the phase by its periodic distance)."""
+    index = []
+    for k, (ax, v) in enumerate(zip(axes, point, strict=True)):
+        if k == 3:
+            d = np.abs(np.angle(np.exp(1j * (ax - v))))
+        elif v == 0.0 or not np.any(ax > 0):
+            d = np.abs(ax - v)
+        else:
+            with np.errstate(divide="ignore"):
+                d = np.abs(np.log(np.where(ax > 0.0, ax, 1e-300) / v))
+        i = int(np.argmin(d))
+        index.append(slice(max(i - 1, 0), i + 2))
+    return int(untrusted[tuple(index)].sum())
+
+
+def _direction_row(name, pin, v0, on, goal, space, sizes, starts, settings):
+    try:
+        point, _, *_ = _optimise(pin, v0, on, goal, space, sizes, starts, settings)
+    except ValueError:
+        return {"direction": name, "omega": math.nan, "du_z": math.nan, "du_x": math.nan,
+                "phase_x": math.nan, "cof": math.nan, "allowed": False}
+    cof = float(_solve_inplane(pin, v0, *point, on, settings)["cof"])
+    return {"direction": name, "omega": point[0], "du_z": point[1], "du_x": point[2],
+            "phase_x": point[3], "cof": cof, "allowed": space.inside(*point[:3])}
+
+
+def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on, goal,
+                    velocity_rule, vmax, n_omega, n_du_z, n_du_x, n_phase, starts,
+                    settings) -> DesignResult:
+    if goal not in GOALS:
+        raise ValueError(f"goal must be one of {sorted(GOALS)}, got {goal!r}")
+    if velocity_rule not in VELOCITY_RULES:
+        raise ValueError(f"velocity_rule must be one of {sorted(VELOCITY_RULES)}, got "
+                         f"{velocity_rule!r}")
+    v0 = float(checked("v0", v0, minimum=0.0, strict=True))
+    w_range = _range("omega", omega)
+    z_range = _range("du_z", du_z, allow_zero=True)
+    x_range = (0.0, 0.0) if du_x is None else _range("du_x", du_x, allow_zero=True)
+    if goal == "drive" and x_range[1] == 0.0:
+        raise ValueError("goal='drive' needs an in-plane oscillation: give du_x=(low, high) "
+                         "with high > 0 (a normal oscillation alone cannot drive: its mean "
+                         "force has the sign of v0, the holder supplies all the energy the "
+                         "contact dissipates)")
+    if phase_x is not None:
+        phase_x = float(checked("phase_x", phase_x))
+    on = pin.inplane_on if inplane_on is None else checked_choice("inplane_on", inplane_on)
+    vmax = math.inf if vmax is None else float(checked(
+        "max_velocity_amplitude", vmax, minimum=0.0, strict=True))
+    for name, n, least in (("n_omega", n_omega, 2), ("n_du_z", n_du_z, 2),
+                           ("n_du_x", n_du_x, 2), ("n_phase", n_phase, 1),
+                           ("starts", starts, 1)):
+        if int(n) != n or n < least:
+            raise ValueError(f"{name} must be an integer >= {least}, got {n!r}")
+    space = _Space(w_range, z_range, x_range, phase_x, vmax, velocity_rule)
+    if not space.feasible(w_range[0], z_range[0], x_range[0]):
+        raise ValueError(f"no oscillation in range respects max_velocity_amplitude = {vmax:g} "
+                         f"m/s ({VELOCITY_RULES[velocity_rule]}): the smallest is "
+                         f"{w_range[0] * math.hypot(z_range[0], x_range[0]):g}")
+    sizes = (n_omega, n_du_z, n_du_x, n_phase)
+    point, obj, grids, axes, sol, feasible, n_rejected, rejected_run = _optimise(
+        pin, v0, on, goal, space, sizes, starts, settings)
+    # which direction: the best normal-only and longitudinal-only choices in the limits
+    rows = [{"direction": "combined", "omega": point[0], "du_z": point[1], "du_x": point[2],
+             "phase_x": point[3], "cof": math.nan, "allowed": True}]
+    if z_range[1] > 0.0:
+        rows.append(_direction_row("normal only", pin, v0, on, goal,
+                                   space.restricted(du_x=(0.0, 0.0)), sizes, starts,
+                                   settings))
+    if x_range[1] > 0.0:
+        rows.append(_direction_row("longitudinal only", pin, v0, on, goal,
+                                   space.restricted(du_z=(0.0, 0.0), phase=0.0), sizes,
+                                   starts, settings))
+    for row in rows[1:]:  # a sub-design inside the allowed set that did better wins
+        if row["allowed"] and np.isfinite(row["cof"]) and \
+                float(_objective(goal, np.array(row["cof"]))) < obj:
+            point = (row["omega"], row["du_z"], row["du_x"], row["phase_x"])
+            obj = float(_objective(goal, np.array(row["cof"])))
+    rows[0].update(omega=point[0], du_z=point[1], du_x=point[2], phase_x=point[3])
+    at_opt = _solve_inplane(pin, v0, *point, on, settings)
+    cof = float(at_opt["cof"])
+    rows[0]["cof"] = cof
+    directions = pd.DataFrame(rows)
+    untrusted = feasible & ~sol["trusted"]
+    near = _untrusted_near_nd(untrusted, axes, point)
+    status, message = _status(untrusted, feasible, near, n_rejected, rejected_run)
+    chosen = pin.with_(omega=point[0], du_z=point[1], du_x=point[2],
+                       phase_x=point[3] if point[2] > 0.0 else 0.0, inplane_on=on)
+    attrs = {"v0": v0, "goal": goal, "inplane_on": on, "velocity_rule": velocity_rule,
+             "max_velocity_amplitude": vmax, "status": status,
+             "n_untrusted": int(untrusted.sum()), "n_untrusted_near": near,
+             "n_rejected": n_rejected, "optimum_cof": cof,
+             **{f"optimum_{k}": v for k, v in zip(_AXES, point, strict=True)}}
+    dmap = _dataset_nd(axes, sol, feasible, attrs)
+    result = DesignResult(
+        system=chosen, v0=v0, cof=cof, mu_ratio=cof / pin.mu0, error=float(at_opt["error"]),
+        map=dmap, sensitivity=_sensitivity(chosen, v0, settings), status=status,
+        message=message, n_untrusted=int(untrusted.sum()), n_untrusted_near=near,
+        n_rejected=n_rejected, goal=goal, velocity_rule=velocity_rule,
+        directions=directions,
+        phase_map=_phase_map(pin, v0, on, space, point, settings))
+    if goal == "drive":
+        _drive_characteristic(result, settings)
+    return result
+
+
+def _phase_map(pin, v0, on, space: _Space, point, settings, n_phase: int = 73,
+               n_du_x: int = 25) -> xr.Dataset | None:
+    """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
+    :func:`~vibrofriction.figures.plot_design` shows) when the phase is free (one
+    ``du_x`` when its range is a point)."""
+    if space.phase is not None or space.du_x[1] == 0.0:
+        return None
+    w, dz = point[0], point[1]
+    dxs = np.linspace(space.du_x[0], space.du_x[1], n_du_x if space.du_x[0] < space.du_x[1]
+                      else 1)
+    phs = np.linspace(0.0, 2 * math.pi, n_phase)
+    DX, PH = np.meshgrid(dxs, phs, indexing="ij")
+    sol = _solve_inplane(pin, v0, w, dz, DX, PH, on, settings)
+    dims = ("du_x", "phase_x")
+    return xr.Dataset(
+        {"cof": (dims, sol["cof"]), "trusted": (dims, sol["trusted"]),
+         "feasible": (dims, space.feasible(w, dz, DX))},
+        coords={"du_x": ("du_x", dxs, {"units": "m"}),
+                "phase_x": ("phase_x", phs, {"units": "rad"})},
+        attrs={"omega": w, "du_z": dz, "v0": v0})
+
+
+def _dataset_nd(axes, sol, feasible, attrs) -> xr.Dataset:
+    return xr.Dataset(
+        {"cof": (_AXES, sol["cof"], {"long_name": "coefficient of friction mu0 mu/mu0 "
+                                                  "(signed; nan where not trusted)"}),
+         "mu_ratio": (_AXES, sol["mu_ratio"], {"long_name": "mu_macro/mu0 as the solver "
+                                                            "left it (trusted or not)"}),
+         "error": (_AXES, sol["error"], {"long_name": "estimate of |mu_ratio - exact|"}),
+         "trusted": (_AXES, sol["trusted"]),
+         "feasible": (_AXES, feasible, {"long_name": "within max_velocity_amplitude"})},
+        coords={"omega": ("omega", axes[0], {"units": "rad s-1"}),
+                "du_z": ("du_z", axes[1], {"units": "m"}),
+                "du_x": ("du_x", axes[2], {"units": "m"}),
+                "phase_x": ("phase_x", axes[3], {"units": "rad"})},
+        attrs=attrs)
+
+
+def _drive_characteristic(result: DesignResult, settings: SolverSettings | None) -> None:
+    """The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
+    velocity (the root of ``mu(V) = 0`` above ``v0``, Brent's method on the solver,
+    bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place."""
+    from scipy.optimize import brentq
+
+    from .. import theory
+
+    s = result.system
+    d = s.to_dimensionless()
+    args = (d.alpha, d.beta, d.amplitude)
+    tail = dict(zeta=d.zeta, eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x,
+                inplane_on=d.inplane_on, settings=settings)
+    block = solve_points(*args, np.array([BLOCKING_V, -BLOCKING_V]), **tail)
+    result.blocking = (float(block["mu_ratio"][0]), float(block["mu_ratio"][1]))
+    result.blocking_trusted = bool(block["trusted"].all())
+    V0 = float(s.v0_to_inertial(result.v0))
+    if not result.mu_ratio < 0.0:
+        result.idle_velocity = math.nan
+        result.idle_message = (f"none: the chosen oscillation does not drive at v0 "
+                               f"(mu/mu0 = {result.mu_ratio:+.4g} >= 0)")
+        return
+    Vc = float(theory.inplane_critical_velocity(*args, d.a_x, d.phase_x, d.zeta, d.eta_c,
+                                                d.inplane_on))
+    if not np.isfinite(Vc) or Vc <= V0:
+        result.idle_velocity = math.nan
+        result.idle_message = "not found (no finite critical velocity above v0 to bracket it)"
+        return
+    V = np.geomspace(V0, 1.01 * Vc, 24)
+    scan = solve_points(*args, V, **tail)
+    mu, ok = scan["mu_ratio"], scan["trusted"]
+    untrusted = {"n": 0}
+
+    def f(v):
+        out = solve_points(*args, v, **tail)
+        untrusted["n"] += int(not out["trusted"])
+        return float(out["mu_ratio"])
+
+    for i in range(V.size - 1):
+        if mu[i] < 0.0 <= mu[i + 1]:
+            if not (ok[i] and ok[i + 1]):
+                result.idle_velocity = math.nan
+                result.idle_message = (f"not found: the bracket {V[i]:.4g}..{V[i + 1]:.4g} "
+                                       f"(inertial units) has an untrusted end")
+                return
+            root = brentq(f, V[i], V[i + 1], xtol=1e-9 * V[i + 1])
+            result.idle_velocity = float(root * s.velocity_unit())
+            flag = ("" if not untrusted["n"] else
+                    f"; {untrusted['n']} untrusted evaluations in the root search")
+            result.idle_message = (f"{result.idle_velocity:.5g} m/s (V = {root:.5g} in "
+                                   f"inertial units; the drive pushes between v0 and it, "
+                                   f"theory's V_c = {Vc:.5g}){flag}")
+            return
+    result.idle_velocity = math.nan
+    result.idle_message = "not found between v0 and 1.01 V_c (no trusted sign change)"

@@ -87,12 +87,25 @@ def design_command(
     du_z: Annotated[str, typer.Option(
         "--du-z", help="amplitude range low:high, m (low may be 0: no oscillation)")],
     max_velocity_amplitude: Annotated[str | None, typer.Option(
-        "--max-velocity-amplitude", help="limit of omega * du_z, m/s")] = None,
+        "--max-velocity-amplitude",
+        help="limit of omega * du_z (with --du-x: of the velocity rule), m/s")] = None,
+    du_x: Annotated[str | None, typer.Option(
+        "--du-x", help="in-plane (longitudinal) amplitude range low:high, m")] = None,
+    phase_x: Annotated[str | None, typer.Option(
+        "--phase-x", help="fixed in-plane phase, rad (default: optimised)")] = None,
+    inplane_on: Annotated[str | None, typer.Option(
+        "--inplane-on", help="substrate or holder (default: the bench file's)")] = None,
+    goal: Annotated[str, typer.Option(help="friction (smallest |COF|) or drive")] =
+    "friction",
+    velocity_rule: Annotated[str, typer.Option(
+        "--velocity-rule", help="combined (omega sqrt(du_z^2 + du_x^2)) or each")] =
+    "combined",
     out: Annotated[str, typer.Option(help="folder for report.txt, map.png, map.zarr")] =
     "design",
 ) -> None:
-    """The oscillation that minimises friction at v0 within the actuator's limits (the
-    report's status line counts the untrusted points of the map)."""
+    """The oscillation that minimises friction at v0 within the actuator's limits, or
+    with --goal drive maximises the drive force (needs --du-x); the report's status line
+    counts the untrusted points of the map."""
     from ..bench import design
 
     pin = Physical.from_bench_file(bench)
@@ -100,7 +113,10 @@ def design_command(
                  omega=_range(frequency_hz, "frequency_hz", 2.0 * math.pi),
                  du_z=_range(du_z, "du_z"),
                  max_velocity_amplitude=None if max_velocity_amplitude is None else
-                 parse_float(max_velocity_amplitude, "max_velocity_amplitude"))
+                 parse_float(max_velocity_amplitude, "max_velocity_amplitude"),
+                 du_x=None if du_x is None else _range(du_x, "du_x"),
+                 phase_x=None if phase_x is None else parse_float(phase_x, "phase_x"),
+                 inplane_on=inplane_on, goal=goal, velocity_rule=velocity_rule)
     folder = Path(out)
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")

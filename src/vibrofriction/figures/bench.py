@@ -58,7 +58,11 @@ def plot_fit(result: FitResult) -> Figure:
 @style.styled
 def plot_design(result: DesignResult) -> Figure:
     """The COF over the actuator's range (white: untrusted or beyond the velocity
-    limit), the optimum and the pin's resonance."""
+    limit), the optimum and the pin's resonance.  An in-plane design: the signed COF
+    over ``(phase_x, du_x)`` at the chosen frequency and ``du_z``, and over
+    ``(omega, du_z)`` at the map's ``du_x`` and ``phase_x`` nearest the optimum."""
+    if result.inplane:
+        return _plot_design_inplane(result)
     fig = style.figure(5.6, 4.2)
     ax = fig.add_subplot()
     m = result.map
@@ -82,4 +86,93 @@ def plot_design(result: DesignResult) -> Figure:
     ax.set_title(f"COF at v0 = {result.v0:g} m/s over the actuator's range; "
                  f"{result.n_untrusted} untrusted", fontsize=8)
     ax.legend(fontsize=7, loc="lower left")
+    return fig
+
+
+def _signed_mesh(ax, x, y, cof, label):
+    """A signed COF in RdBu_r centred on 0 (blue: the oscillation pushes)."""
+    from matplotlib.colors import TwoSlopeNorm
+
+    finite = cof[np.isfinite(cof)]
+    span = max(float(np.max(np.abs(finite))) if finite.size else 1.0, 1e-12)
+    mesh = ax.pcolormesh(x, y, cof, shading="nearest", cmap="RdBu_r",
+                         norm=TwoSlopeNorm(0.0, -span, span))
+    ax.figure.colorbar(mesh, ax=ax, label=label)
+    if finite.size and finite.min() < 0.0 < finite.max():
+        ax.contour(x, y, cof, levels=[0.0], colors="k", linewidths=0.8)
+
+
+def _adding_phase(system) -> float | None:
+    """``theory.inplane_cancellation(...).phase_x + pi`` (mod 2 pi) of the chosen
+    oscillation, where its closed form applies (``a <= 1``), else None."""
+    from .. import theory
+
+    d = system.to_dimensionless()
+    try:
+        c = theory.inplane_cancellation(d.alpha, d.beta, d.amplitude, d.zeta, d.eta_c,
+                                        d.inplane_on)
+    except ValueError:
+        return None
+    phase = float(c.phase_x)
+    return (phase + math.pi) % (2 * math.pi) if math.isfinite(phase) else None
+
+
+def _plot_design_inplane(result: DesignResult) -> Figure:
+    fig = style.figure(10.0, 4.2)
+    left, right = fig.subplots(1, 2)
+    s = result.system
+    goal = "largest drive force" if result.goal == "drive" else "smallest |COF|"
+    star = dict(color="gold", marker="*", ms=14, mec="k", ls="none",
+                label=f"optimum ({goal}): COF {result.cof:.4g}")
+    label = "COF (signed; white: untrusted or beyond the limit; black: 0)"
+    pm = result.phase_map
+    if pm is not None and pm["du_x"].size == 1:
+        cof = np.where(pm["feasible"].values & pm["trusted"].values, pm["cof"].values, np.nan)
+        left.plot(pm["phase_x"].values, cof[0], color="C0", label="COF (trusted)")
+        left.plot([s.phase_x], [result.cof], **star)
+        left.axhline(0.0, color="0.5", lw=0.6)
+        left.set_xlabel("phase_x (rad)")
+        left.set_ylabel(f"COF at du_x = {s.du_x * 1e6:.3g} um")
+    elif pm is not None:
+        cof = np.where(pm["feasible"].values & pm["trusted"].values, pm["cof"].values, np.nan)
+        _signed_mesh(left, pm["phase_x"].values, pm["du_x"].values * 1e6, cof, label)
+        left.set_title(f"at f = {s.omega / (2 * math.pi):.5g} Hz, du_z = {s.du_z * 1e6:.3g} um",
+                       fontsize=8)
+    else:
+        left.text(0.5, 0.5, "phase or du_x fixed:\nno (phase_x, du_x) map",
+                  ha="center", va="center", transform=left.transAxes)
+    adding = _adding_phase(s)
+    if adding is not None:
+        left.axvline(adding, color="0.3", lw=0.8, ls=":",
+                     label="theory: adding phase (largest V_c)")
+    if pm is None or pm["du_x"].size > 1:
+        left.plot([s.phase_x], [s.du_x * 1e6], **star)
+        left.set_xlabel("phase_x (rad)")
+        left.set_ylabel("in-plane amplitude du_x (um)")
+    left.legend(fontsize=7, loc="upper right")
+    m = result.map
+    ix = int(np.argmin(np.abs(m["du_x"].values - s.du_x)))
+    ip = int(np.argmin(np.abs(np.angle(np.exp(1j * (m["phase_x"].values - s.phase_x))))))
+    sl = m.isel(du_x=ix, phase_x=ip)
+    sl = sl.isel(du_z=sl["du_z"].values > 0)
+    if sl["du_z"].size * sl["omega"].size == 1:
+        right.text(0.5, 0.8, "frequency and du_z fixed", ha="center", va="center",
+                   transform=right.transAxes)
+    elif sl["du_z"].size:
+        cof = np.where(sl["feasible"].values & sl["trusted"].values, sl["cof"].values, np.nan)
+        _signed_mesh(right, sl["omega"].values / (2 * math.pi), sl["du_z"].values * 1e6, cof.T,
+                     label)
+        if sl["du_z"].values.max() > 10 * sl["du_z"].values.min():
+            right.set_yscale("log")
+    right.plot([s.omega / (2 * math.pi)], [s.du_z * 1e6], **star)
+    if m["omega"].values.max() > 10 * m["omega"].values.min():
+        right.set_xscale("log")
+    for axis in (right.xaxis, right.yaxis):
+        axis.set_minor_formatter(NullFormatter())
+    right.set_xlabel("drive frequency (Hz)")
+    right.set_ylabel("normal amplitude du_z (um)")
+    right.set_title(f"map at du_x = {m['du_x'].values[ix] * 1e6:.3g} um, phase_x = "
+                    f"{m['phase_x'].values[ip]:.3g} rad (nearest the optimum)", fontsize=8)
+    fig.suptitle(f"{result.goal} design at v0 = {result.v0:g} m/s ({s.inplane_on}); "
+                 f"{result.n_untrusted} untrusted map points", fontsize=9)
     return fig
