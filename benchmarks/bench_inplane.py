@@ -6,9 +6,10 @@ solver's whole work: transient, orbit, error), without in-plane oscillation and 
 interleaved in one process.  Run with any ``vibrofriction`` on the path (an older one
 without in-plane oscillation measures the normal-only points only)::
 
-    PYTHONPATH=src python benchmarks/bench_inplane.py [--kernel] [--json OUT]
+    PYTHONPATH=src python benchmarks/bench_inplane.py [--kernel] [--json OUT] [--record]
 
 ``--kernel`` times the compiled kernel ``steady_state`` alone (no Python around it).
+``--record`` appends the table and the median ratios to benchmarks/results/inplane.md.
 ``--against OTHER/src`` times normal-only points of this kernel against another
 checkout's (main's), alternately in one process: the robust way to see a few per cent.
 
@@ -142,9 +143,48 @@ def main() -> None:
         out[label] = {k: 1e6 * statistics.median(v) for k, v in times.items()}
         print(f"{label:20s} " + "  ".join(f"{k} {v:9.1f} us" for k, v in out[label].items()),
               flush=True)
+    if INPLANE:
+        ratios = {k: [out[lbl][k] / out[lbl]["normal"] for lbl in out]
+                  for k in ("substrate", "holder")}
+        lines = [f"| {lbl} | {t['normal']:.0f} | {t['substrate']:.0f} | {t['holder']:.0f} | "
+                 f"{t['substrate'] / t['normal']:.2f} | {t['holder'] / t['normal']:.2f} |"
+                 for lbl, t in out.items()]
+        summary = (f"median ratio over the regimes: substrate "
+                   f"{statistics.median(ratios['substrate']):.2f}, holder "
+                   f"{statistics.median(ratios['holder']):.2f}")
+        print(summary)
+        if "--record" in sys.argv:
+            _record(lines, summary)
     if "--json" in sys.argv:
         with open(sys.argv[sys.argv.index("--json") + 1], "w") as fh:
             json.dump(out, fh, indent=1)
+
+
+def _record(lines: list[str], summary: str) -> None:
+    """Append this run to benchmarks/results/inplane.md (date, commit, machine)."""
+    import datetime
+    import os
+    import platform
+    import subprocess
+    from pathlib import Path
+
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip()
+    load = os.getloadavg()[0]
+    path = Path(__file__).resolve().parent / "results" / "inplane.md"
+    head = ("# Cost of a 1-D in-plane point against a normal-only one (issue 20)\n\n"
+            "`python benchmarks/bench_inplane.py --record`: per regime the median time of "
+            "one `solve_points` call (whole work: transient, orbit, error) without "
+            "in-plane oscillation and with `a_x = 0.5`, `phase_x = pi/2` on the substrate "
+            "and on the holder, interleaved in one process; the issue allows 1.5x "
+            "(median).\n" if not path.exists() else "")
+    text = (f"{head}\n## {datetime.date.today()}, commit {commit}, {platform.machine()} "
+            f"{os.cpu_count()} cores, load average {load:.1f} at the end\n\n"
+            "| regime | normal (us) | substrate (us) | holder (us) | substrate / normal | "
+            "holder / normal |\n|---|---:|---:|---:|---:|---:|\n" + "\n".join(lines)
+            + f"\n\n{summary}\n")
+    with path.open("a") as fh:
+        fh.write(text)
 
 
 if __name__ == "__main__":
