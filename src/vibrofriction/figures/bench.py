@@ -118,13 +118,13 @@ def _adding_phase(system) -> float | None:
 
 
 def _plot_design_inplane(result: DesignResult) -> Figure:
-    fig = style.figure(10.0, 4.2)
+    fig = style.figure(10.0, 4.8)
     left, right = fig.subplots(1, 2)
     s = result.system
     goal = "largest drive force" if result.goal == "drive" else "smallest |COF|"
     star = dict(color="gold", marker="*", ms=14, mec="k", ls="none",
                 label=f"optimum ({goal}): COF {result.cof:.4g}")
-    label = "COF (signed; white: untrusted or beyond the limit; black: 0)"
+    label = "COF (signed; white: untrusted or beyond the limit; black line: 0)"
     pm = result.phase_map
     if pm is not None and pm["du_x"].size == 1:
         cof = np.where(pm["feasible"].values & pm["trusted"].values, pm["cof"].values, np.nan)
@@ -149,7 +149,8 @@ def _plot_design_inplane(result: DesignResult) -> Figure:
         left.plot([s.phase_x], [s.du_x * 1e6], **star)
         left.set_xlabel("phase_x (rad)")
         left.set_ylabel("in-plane amplitude du_x (um)")
-    left.legend(fontsize=7, loc="upper right")
+    left.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2,
+                frameon=False)  # below the axes: the map stays visible
     m = result.map
     ix = int(np.argmin(np.abs(m["du_x"].values - s.du_x)))
     ip = int(np.argmin(np.abs(np.angle(np.exp(1j * (m["phase_x"].values - s.phase_x))))))
