@@ -47,7 +47,6 @@ from .codes import (
     O_LAT,
     O_MU,
     O_MULT,
-    O_SETTLE,
     O_SLIP,
     O_SLIP_NEG,
     O_STICK,
@@ -292,6 +291,10 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
 @jit
 def _account(mode, P, t, dt, z0, z1, acc, ph):
     acc[ph] += dt
+    if acc.shape[0] > 4 and mode != FLIGHT:  # a check asked for: the largest |f| - n
+        fx, fy, _, _, _ = contact(mode, P, t + dt, z1)
+        n, _ = normal_force(P[P_A], t + dt)
+        acc[4] = max(acc[4], math.hypot(fx, fy) - n)
     if mode == SLIP:
         f0 = contact(SLIP, P, t, z0)[0]
         f1 = contact(SLIP, P, t + dt, z1)[0]
@@ -464,10 +467,11 @@ def mean_normal(a):
 
 
 @jit
-def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, max_iter, J, info):
+def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info):
     """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
-    returns True where the residual fell below ``tol``."""
+    returns True where the residual fell below ``tol``, or stopped falling (the
+    integration's noise) below ``floor``."""
     acc = np.zeros(4)
     ph = np.empty(N_S)
     pp = np.empty(N_S)
@@ -527,7 +531,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, max_iter, J, info):
             break
     info[0], info[1] = it, res
     info[2] += periods
-    return res <= tol
+    return res <= tol or res <= floor
 
 
 @jit
@@ -551,7 +555,9 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     ``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``); ``out_f[O_LAT]`` the lateral ratio.
 
     ``rtol`` the Runge-Kutta tolerance (``atol = rtol``); the error estimate adds the
-    difference from a second solve at ``100 rtol`` to the section residual's effect."""
+    difference from a second solve at ``100 rtol`` to the section residual's effect.
+    ``max_periods`` bounds the averaging fallback; ``max_events`` the switches per
+    period (chatter: status failed)."""
     P = np.empty(N_P)
     P[P_ALPHA] = alpha
     P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
@@ -577,9 +583,8 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     acc = np.zeros(4)
     start_state(P, init_kind, y0, xd0, e0, s)
     k = P[P_K]
-    tol_sec = 1e-11
     periods = 0
-    # a transient by plain iteration: until the map contracts or 20 periods
+    # a transient by plain iteration: until the map moves the state by < 1e-4
     for _ in range(20):
         ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
         periods += 1
@@ -591,11 +596,13 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
         if d < 1e-4:
             break
     status = ST_FAILED
-    res = math.inf
     mult = math.nan
     means = np.zeros(7)
+    s0 = s.copy()
     if cnt[C_FAIL] == 0:
-        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, tol_sec, 12, J, info)
+        scale = 1.0 + _dist(s, np.zeros(N_S), k)
+        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                      100.0 * rtol * scale, 12, J, info)
         periods += int(info[2])
         res = info[1]
         if conv:
@@ -605,67 +612,40 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
                 mult = max(mult, abs(x))
             if mult < 1.0 + 1e-6:
                 status = ST_PERIODIC
-    if status == ST_PERIODIC:
-        orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
-        periods += 1
-        # the tolerance's effect: the same orbit at 100 rtol
-        sl = s.copy()
-        info[:] = 0.0
-        loose = np.zeros(7)
-        if newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                  100.0 * tol_sec, 6, J.copy(), info):
-            orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events, loose)
-            err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
-        else:
-            err = math.inf
-        periods += int(info[2]) + 1
-        # the section residual: a state error res moves a mean by about res/(1 - mult)
-        err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
-        out_f[O_ERR] = err
-        out_i[I_PERIOD] = 1
-        out_f[O_SETTLE] = math.nan
-    elif cnt[C_FAIL] == 0:
-        # the long-time average: 200 more periods, then a window of 200
-        status = ST_AVERAGED
-        z = W[13]
-        for i in range(N_S):
-            z[i] = s[i]
-        z[6] = 0.0
-        z[7] = 0.0
-        mode = entry(P, 0.0, z)
-        nwin = 200
-        pfx = np.zeros(nwin)
-        pfy = np.zeros(nwin)
-        acc[:] = 0.0
-        for j in range(200 + nwin):
-            if periods >= max_periods:
-                break
-            z[6] = 0.0
-            z[7] = 0.0
-            if j == 200:
-                acc[:] = 0.0
-            mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt,
-                                  max_events)
+        if status == ST_PERIODIC:
+            orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
             periods += 1
-            if not ok:
-                status = ST_FAILED
-                break
-            if j >= 200:
-                pfx[j - 200] = z[6]
-                pfy[j - 200] = z[7]
-        if status == ST_AVERAGED and periods < max_periods:
-            nbar = TWO_PI * mean_normal(a)
-            means[0] = pfx.sum() / (nwin * nbar)
-            means[1] = pfy.sum() / (nwin * nbar)
-            for i in range(4):
-                means[2 + i] = acc[i] / (TWO_PI * nwin)
-            h = nwin // 2
-            e1 = abs(pfx[:h].sum() - pfx[h:].sum()) / (h * nbar)
-            e2 = abs(pfy[:h].sum() - pfy[h:].sum()) / (h * nbar)
-            out_f[O_ERR] = max(e1, e2)
+            # the tolerance's effect: the same orbit at 100 rtol
+            sl = s.copy()
+            info[:] = 0.0
+            loose = np.zeros(7)
+            if newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info):
+                orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                           loose)
+                err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
+            else:
+                err = math.inf
+            periods += int(info[2]) + 1
+            # the section residual: a state error res moves a mean by about res/(1 - mult)
+            err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
+            out_f[O_ERR] = err
+            out_i[I_PERIOD] = 1
+        elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
+            # the long-time average from the transient's end (not Newton's last iterate),
+            # its error the window's spread plus the difference from a run at 100 rtol
             for i in range(N_S):
-                s[i] = z[i]
-        elif status == ST_AVERAGED:
+                s[i] = s0[i]
+            sl = s0.copy()
+            spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
+            loose = np.zeros(7)
+            average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
+            periods += 2 * N_AVG
+            if cnt[C_FAIL] == 0:
+                status = ST_AVERAGED
+                out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
+                                            abs(loose[1] - means[1]))
+        elif cnt[C_FAIL] == 0:
             status = ST_NOT_CONVERGED
     if status == ST_PERIODIC or status == ST_AVERAGED:
         out_f[O_MU] = means[0]
@@ -693,6 +673,74 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     out_i[I_PERIODS] = periods
     out_i[I_EVENTS] = cnt[C_EVENTS]
     out_i[I_DEGENERATE] = 0
+
+
+@jit
+def cone_excess(P, periods, rtol):
+    """The largest ``|f| - n`` at the step ends and switches of ``periods`` drive periods
+    from the sliding start of the parameter vector ``P`` (a check of the phase rules)."""
+    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
+    if P[P_C] > 0.0:
+        w = max(w, P[P_K] / P[P_C])
+    hmax = TWO_PI / (8.0 * w)
+    W = np.zeros((14, N_Z))
+    cnt = np.zeros(4, np.int64)
+    acc = np.zeros(5)
+    acc[4] = -math.inf
+    s = np.empty(N_S)
+    start_state(P, 0, 0.0, 0.0, 0.0, s)
+    z = W[13]
+    for i in range(N_S):
+        z[i] = s[i]
+    mode = entry(P, 0.0, z)
+    for j in range(periods):
+        mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000)
+        if not ok:
+            return math.inf
+    return acc[4]
+
+
+N_AVG = 200
+"""The averaging fallback: this many periods of transient, then a window of as many."""
+
+
+@jit
+def average(P, s, rtol, hmax, W, cnt, max_events, means):
+    """The long-time average from the section state ``s``: ``N_AVG`` periods of
+    transient, then means over ``N_AVG`` periods into ``means`` (as :func:`orbit_mean`),
+    ``s`` the end state.  Returns the window's spread: the larger of the difference of its
+    halves' means, in ``mu`` and in the lateral ratio."""
+    z = W[13]
+    for i in range(N_S):
+        z[i] = s[i]
+    z[6] = 0.0
+    z[7] = 0.0
+    mode = entry(P, 0.0, z)
+    pfx = np.zeros(N_AVG)
+    pfy = np.zeros(N_AVG)
+    acc = np.zeros(4)
+    for j in range(2 * N_AVG):
+        z[6] = 0.0
+        z[7] = 0.0
+        if j == N_AVG:
+            acc[:] = 0.0
+        mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events)
+        if not ok:
+            return math.inf
+        if j >= N_AVG:
+            pfx[j - N_AVG] = z[6]
+            pfy[j - N_AVG] = z[7]
+    nbar = TWO_PI * mean_normal(P[P_A])
+    means[0] = pfx.sum() / (N_AVG * nbar)
+    means[1] = pfy.sum() / (N_AVG * nbar)
+    for i in range(4):
+        means[2 + i] = acc[i] / (TWO_PI * N_AVG)
+    for i in range(N_S):
+        s[i] = z[i]
+    h = N_AVG // 2
+    e1 = abs(pfx[:h].sum() - pfx[h:].sum()) / (h * nbar)
+    e2 = abs(pfy[:h].sum() - pfy[h:].sum()) / (h * nbar)
+    return max(e1, e2)
 
 
 @jit

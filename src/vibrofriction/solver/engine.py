@@ -171,7 +171,8 @@ def solve_points(
                                     ax[idx], px[idx], ay[idx], py[idx],
                                     np.full(idx.size, on_substrate), k,
                                     np.ascontiguousarray(init[idx]), PLANE_RTOL,
-                                    settings.max_periods, settings.max_events, of, oi)
+                                    settings.max_periods,
+                                    min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi)
             out_f[idx] = of
             out_i[idx] = oi
             continue
@@ -214,6 +215,8 @@ def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np
 
 #: The Runge-Kutta tolerance of the 2-D solver (docs/inplane.md, "The 2-D solver").
 PLANE_RTOL = 1e-10
+#: Stick/slip switches per drive period beyond which a 2-D point fails (chatter).
+PLANE_EVENTS_PER_PERIOD = 10_000
 
 
 def _check_plane(beta: NDArray[np.float64], amplitude: NDArray[np.float64],
