@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from vibrofriction._kernels import plane
+from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
 from vibrofriction_reference import inplane_mean
 
@@ -80,7 +81,7 @@ def bench() -> list[str]:
         tr = time.perf_counter() - t0
         mu, lat, err = float(c["mu_ratio"]), float(c["lateral_ratio"]), float(c["error"])
         ok += err <= 1e-6
-        status = str(c["status"])
+        status = Status.from_code(int(c["status"])).value
         line = (f"| {r[0]} | {med:.1f} | {mu:+.10f} | {lat:+.10f} | {err:.1e} | "
                 f"{status} | {tr:.1f} | {ref.mu_error:.1e}, {ref.lateral_error:.1e} | "
                 f"{abs(mu - ref.mu_ratio):.1e}, {abs(lat - ref.lateral_ratio):.1e} |")
@@ -152,7 +153,8 @@ def main() -> None:
         head += ["## Order of the method", "",
                  "Normal + transverse, Kelvin-Voigt contact, `(alpha, beta, a, V, zeta, "
                  "eta_c, a_y, phase_y) = (0.5, 2, 0.5, 0.3, 0.05, 0.1, 0.5, 1.0)`: the "
-                 "periodic orbit and its mean at each tolerance against `rtol = 1e-14`, the step not capped; "
+                 "periodic orbit and its mean at each tolerance against `rtol = 1e-14`, "
+                 "the step not capped; "
                  "local order = -d log(error) / d log(steps).", "", *rows, ""]
     RESULTS.write_text("\n".join(head + ["## Regimes", "", *table]) + "\n")
 
