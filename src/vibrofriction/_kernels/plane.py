@@ -47,6 +47,7 @@ from .codes import (
     O_LAT,
     O_MU,
     O_MULT,
+    O_SETTLE,
     O_SLIP,
     O_SLIP_NEG,
     O_STICK,
@@ -582,6 +583,7 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     info = np.zeros(3)
     acc = np.zeros(4)
     start_state(P, init_kind, y0, xd0, e0, s)
+    s_start = s.copy()
     k = P[P_K]
     periods = 0
     # a transient by plain iteration: until the map moves the state by < 1e-4
@@ -631,6 +633,12 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
             err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
             out_f[O_ERR] = err
             out_i[I_PERIOD] = 1
+            # settling: the linearised contraction from the start to within the error
+            d0 = _dist(s_start, s, k)
+            if d0 <= err or mult <= 0.0:
+                out_f[O_SETTLE] = 0.0
+            elif mult < 1.0 - 1e-6:
+                out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
         elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
             # the long-time average from the transient's end (not Newton's last iterate),
             # its error the window's spread plus the difference from a run at 100 rtol
