@@ -659,7 +659,7 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
         out_f[O_MU] = means[0]
         out_f[O_LAT] = means[1]
         out_f[O_STICK] = means[2]
-        out_f[O_SLIP] = means[3]
+        out_f[O_SLIP] = means[3] - means[5]  # forward: f_x >= 0, as the 1-D solver's
         out_f[O_FLIGHT] = means[4]
         out_f[O_SLIP_NEG] = means[5]
         # the final section state (x components, laboratory frame)
