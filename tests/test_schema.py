@@ -298,7 +298,7 @@ def test_every_parameter_is_described() -> None:
         assert len(p.long_name) > 10, p
         r = p.range
         # every one is bounded but a phase and the signed velocities: any finite real
-        if p.name in ("phase_x", "v_inertial", "v0"):
+        if p.name in ("phase_x", "phase_y", "v_inertial", "v0"):
             assert r == schema.FINITE, p
         else:
             assert r.minimum is not None or r.maximum is not None, p

@@ -229,6 +229,12 @@ class Dimensionless:
         units of the inertial velocity), finite and >= 0 (docs/inplane.md).
     phase_x : float
         Its phase relative to the normal oscillation, radians, finite.
+    a_y : float
+        Amplitude of the transverse in-plane oscillation ``a_y cos(tau + phase_y)``
+        (across the sliding), ``du_y m omega^2 / (mu0 F_N0)``, finite and >= 0; ``a_y > 0``
+        is computed by the 2-D solver (docs/inplane.md, "The 2-D solver").
+    phase_y : float
+        Its phase relative to the normal oscillation, radians, finite.
     inplane_on : str
         ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
         slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
@@ -242,6 +248,8 @@ class Dimensionless:
     eta_c: float = 0.0
     a_x: float = 0.0
     phase_x: float = 0.0
+    a_y: float = 0.0
+    phase_y: float = 0.0
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
@@ -277,8 +285,13 @@ class Dimensionless:
         case III (``beta = 1``); damping makes both finite and positive
         (``theory.critical_inertial_velocity``, docs/damping.md).  With ``a_x > 0`` it is
         ``theory.inplane_critical_velocity`` (docs/inplane.md); backward sliding needs
-        ``|V|`` above the same expression at ``phase_x + pi``.
+        ``|V|`` above the same expression at ``phase_x + pi``.  With a transverse
+        oscillation (``a_y > 0``) ``inf``: the friction force turns with the slip
+        velocity and is below ``mu0`` at every velocity (the kinematic law,
+        docs/inplane.md section 1).
         """
+        if self.a_y > 0.0:
+            return math.inf
         return float(theory.critical_inertial_velocity(
             self.alpha, self.beta, self.amplitude, self.zeta, self.eta_c, self.a_x,
             self.phase_x, self.inplane_on))
@@ -294,10 +307,10 @@ class Dimensionless:
                                         self.eta_c))
 
     def _check_vbar_inplane(self) -> None:
-        if self.a_x > 0.0:
+        if self.a_x > 0.0 or self.a_y > 0.0:
             raise ValueError(f"vbar (v0/v0* of eq. 16) is not defined with an in-plane "
-                             f"oscillation (a_x = {self.a_x!r}); use the inertial velocity "
-                             "v_inertial (signed) instead")
+                             f"oscillation (a_x = {self.a_x!r}, a_y = {self.a_y!r}); use the "
+                             "inertial velocity v_inertial (signed) instead")
 
     def vbar_to_inertial(self, vbar: ArrayLike) -> FloatOrArray:
         """Inertial velocity ``V = V_c vbar`` (eqs. 12, 16); ValueError where vbar is undefined."""
@@ -343,8 +356,14 @@ class Physical:
         m, ``>= 0`` (docs/inplane.md).
     phase_x : float
         Its phase relative to the normal oscillation, radians, finite.
+    du_y : float
+        Amplitude of the transverse in-plane oscillation ``du_y cos(omega t + phase_y)``
+        (across the sliding), m, ``>= 0``; the pin is axisymmetric (``k_x``, ``c_x`` in
+        both directions).
+    phase_y : float
+        Its phase relative to the normal oscillation, radians, finite.
     inplane_on : str
-        Where it is imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
+        Where both components are imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
         of ``k_x`` and ``c_x``).
     """
 
@@ -360,6 +379,8 @@ class Physical:
     c_xc: float = 0.0
     du_x: float = 0.0
     phase_x: float = 0.0
+    du_y: float = 0.0
+    phase_y: float = 0.0
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
@@ -514,14 +535,17 @@ class Physical:
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
                              zeta=float(zeta), eta_c=float(eta_c),
                              a_x=float(self.inplane_amplitude(self.du_x, self.omega)),
-                             phase_x=self.phase_x, inplane_on=self.inplane_on)
+                             phase_x=self.phase_x,
+                             a_y=float(self.inplane_amplitude(self.du_y, self.omega)),
+                             phase_y=self.phase_y, inplane_on=self.inplane_on)
 
     def require_normal_only(self, what: str) -> None:
         """ValueError if this set-up has an in-plane oscillation, which ``what`` (a
         feature of the package) does not take yet: refused, never ignored."""
-        if self.du_x > 0.0:
+        if self.du_x > 0.0 or self.du_y > 0.0:
             raise ValueError(f"{what} does not take an in-plane oscillation yet (du_x = "
-                             f"{self.du_x!r} m): give a set-up with du_x = 0")
+                             f"{self.du_x!r} m, du_y = {self.du_y!r} m): give a set-up "
+                             "with du_x = du_y = 0")
 
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
@@ -552,7 +576,7 @@ class Physical:
         (``du_x > 0``) the combined drive's (``theory.inplane_critical_velocity`` in m/s,
         docs/inplane.md).
         """
-        if self.du_x > 0.0:
+        if self.du_x > 0.0 or self.du_y > 0.0:
             return float(self.to_dimensionless().critical_inertial_velocity()
                          * self.velocity_unit())
         return float(theory.critical_velocity(self.mu0, self.omega, self.du_z, self.k_zc,

@@ -101,6 +101,9 @@ FIELDS: tuple[Field, ...] = (
     Field("drift_rate", "float", "1 / drive period", "change of the averaging windows' means "
           "per drive period where the last three move one way (0 where they do not; nan "
           "with fewer windows)", column=("float", 13), dtype="f8"),
+    Field("lateral_ratio", "float", "1", "mean transverse force over the mean normal one, "
+          "<F_y>/(mu0 <F_N>) (0 without a transverse oscillation, a_y = 0)",
+          "docs/inplane.md", "<F_y> / (mu0 <F_N>)", ("float", 16), dtype="f8"),
     Field("final_state", "object", "", "the last state on the Poincare section tau = 2 pi k "
           "(SectionState: y, x_dot, f, phase, e; None for the static limit)"),
     Field("system", "object", "", "the dimensionless system (Dimensionless: the parameters "
@@ -341,6 +344,15 @@ PARAMETERS: tuple[Parameter, ...] = (
        "docs/inplane.md", NONNEGATIVE, 0.0),
     _p("phase_x", _D, "rad", "phase of the longitudinal in-plane oscillation relative to "
        "the normal one, a_x cos(tau + phase_x)", "phase_x", "docs/inplane.md", FINITE, 0.0,
+       also=(_P,)),
+    _p("a_y", _D, "1", "amplitude of the transverse in-plane oscillation (across the "
+       "sliding), du_y m omega^2 / (mu0 F_N0) (the 2-D solver)", "a_y", "docs/inplane.md",
+       NONNEGATIVE, 0.0, "du_y m omega^2 / (mu0 F_N0)"),
+    _p("du_y", _P, "m", "amplitude of the transverse in-plane oscillation, du_y cos(omega t "
+       "+ phase_y) (of the substrate or the holder: inplane_on)", "Delta u_y",
+       "docs/inplane.md", NONNEGATIVE, 0.0),
+    _p("phase_y", _D, "rad", "phase of the transverse in-plane oscillation relative to "
+       "the normal one, a_y cos(tau + phase_y)", "phase_y", "docs/inplane.md", FINITE, 0.0,
        also=(_P,)),
     _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
        "(16)", NONNEGATIVE, definition="v0 / v0*"),

@@ -54,6 +54,7 @@ from .codes import (
     O_ERR,
     O_F,
     O_FLIGHT,
+    O_LAT,
     O_MU,
     O_MULT,
     O_SETTLE,
@@ -371,6 +372,7 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_
     win = np.zeros(N_ACC)
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
+    out_f[O_LAT] = 0.0  # no transverse oscillation here (the 2-D solver: plane.py)
     if unmodulated:
         status, period, k = _unmodulated(z, M, win, out_f)
     else:

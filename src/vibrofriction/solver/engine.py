@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import theory
 from .._kernels import codes
+from .._kernels.plane import plane_steady_state_many
 from .._kernels.steady import steady_state, steady_state_many
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
@@ -98,6 +99,8 @@ def solve_points(
     eta_c: ArrayLike = 0.0,
     a_x: ArrayLike = 0.0,
     phase_x: ArrayLike = 0.0,
+    a_y: ArrayLike = 0.0,
+    phase_y: ArrayLike = 0.0,
     *,
     inplane_on: str = "substrate",
     initial: Initial | NDArray[np.object_] = "sliding",
@@ -120,21 +123,31 @@ def solve_points(
     :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final section state,
     in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
     point depends only on its own parameters.
+
+    A transverse oscillation (``a_y > 0``) is solved by the 2-D solver
+    (:mod:`vibrofriction._kernels.plane`, docs/inplane.md "The 2-D solver"; a finite
+    ``beta``, ``V != 0``, and not ``a = 1`` with ``eta_c = 0``: ValueError otherwise);
+    ``lateral_ratio = <F_y>/(mu0 <F_N>)`` is its mean transverse force (0 for the others).
     """
     settings = settings or DEFAULT_SETTINGS
     on_substrate = checked_choice("inplane_on", inplane_on) == "substrate"
-    al, be, am, V, ze, et, ax, px = np.broadcast_arrays(*(
+    al, be, am, V, ze, et, ax, px, ay, py = np.broadcast_arrays(*(
         np.asarray(x, dtype=float)
-        for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x)))
+        for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, a_y,
+                  phase_y)))
     shape = V.shape
-    al, be, am, V, ze, et, ax, px = (np.ascontiguousarray(x.ravel())
-                                     for x in (al, be, am, V, ze, et, ax, px))
+    al, be, am, V, ze, et, ax, px, ay, py = (np.ascontiguousarray(x.ravel())
+                                             for x in (al, be, am, V, ze, et, ax, px, ay, py))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
-               "eta_c": et, "a_x": ax, "phase_x": px})
+               "eta_c": et, "a_x": ax, "phase_x": px, "a_y": ay, "phase_y": py})
+    plane = ay > 0.0
+    if np.any(plane):
+        _check_plane(be[plane], am[plane], et[plane], V[plane])
     n = V.size
     kind, init = initial_rows(initial, n,
                               lambda i: Dimensionless(al[i], be[i], am[i], ze[i], et[i],
-                                                      ax[i], px[i], inplane_on))
+                                                      ax[i], px[i], ay[i], py[i],
+                                                      inplane_on=inplane_on))
     backward = V < 0.0
     if np.any(backward):  # the mirror x -> -x
         V = np.where(backward, -V, V)
@@ -146,12 +159,23 @@ def solve_points(
     # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
     # has no direction there and is the rest, as in the reference (docs/inplane.md)
     at_zero = (V == 0.0) & (ax > 0.0)
-    for rows, k in ((V > 0.0, kind), (at_zero, 1 if kind == 0 else kind)):
+    for rows, k in ((plane, kind), ((V > 0.0) & ~plane, kind),
+                    (at_zero, 1 if kind == 0 else kind)):
         idx = np.flatnonzero(rows)
         if not idx.size:
             continue
         of = np.full((idx.size, len(FLOAT_COLUMNS)), np.nan)
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
+        if rows is plane:
+            plane_steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx],
+                                    ax[idx], px[idx], ay[idx], py[idx],
+                                    np.full(idx.size, on_substrate), k,
+                                    np.ascontiguousarray(init[idx]), PLANE_RTOL,
+                                    settings.max_periods,
+                                    min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi)
+            out_f[idx] = of
+            out_i[idx] = oi
+            continue
         steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx], ax[idx],
                           px[idx], np.full(idx.size, on_substrate), k,
                           np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
@@ -189,6 +213,27 @@ def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np
     out_i[idx[mark], column_index("status")] = Status.HELD.code
 
 
+#: The Runge-Kutta tolerance of the 2-D solver (docs/inplane.md, "The 2-D solver").
+PLANE_RTOL = 1e-10
+#: Stick/slip switches per drive period beyond which a 2-D point fails (chatter).
+PLANE_EVENTS_PER_PERIOD = 10_000
+
+
+def _check_plane(beta: NDArray[np.float64], amplitude: NDArray[np.float64],
+                 eta_c: NDArray[np.float64], V: NDArray[np.float64]) -> None:
+    """ValueError for the 2-D points the 2-D solver does not cover."""
+    if np.any(np.isinf(beta)):
+        raise ValueError("a transverse oscillation (a_y > 0) needs a finite beta: the 2-D "
+                         "solver does not cover a rigid contact (use a large finite beta)")
+    if np.any((amplitude == 1.0) & (eta_c == 0.0)):
+        raise ValueError("a transverse oscillation (a_y > 0) with amplitude = 1 (grazing) "
+                         "and eta_c = 0 is not covered by the 2-D solver")
+    if np.any(V == 0.0):
+        raise ValueError("a transverse oscillation (a_y > 0) at v = 0 is not computed yet "
+                         "(the held states of docs/inplane.md section 5 are 1-D): give a "
+                         "nonzero velocity")
+
+
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
                   out_i: NDArray[np.int64], rows: NDArray[np.bool_]) -> None:
     """Fill the rows of zero-velocity points with the static limit, eq. (2)."""
@@ -201,6 +246,7 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
     out_f[rows, column_index("stick_fraction")] = np.where(contact, 1.0, np.nan)
     for k in ("slip_fraction", "reverse_slip_fraction", "flight_fraction"):
         out_f[rows, column_index(k)] = np.where(contact, 0.0, np.nan)
+    out_f[rows, column_index("lateral_ratio")] = 0.0
     out_i[rows, column_index("status")] = Status.STATIC.code
     out_i[rows, column_index("phase")] = codes.NO_PHASE
 
@@ -254,12 +300,12 @@ def friction_coefficient(
     """
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
-    if V.__class__ is float and V > 0.0:  # one moving point: a float from inertial_velocity
+    if V.__class__ is float and V > 0.0 and dim.a_y == 0.0:  # one moving point, 1-D
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)
     cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
-                        dim.a_x, dim.phase_x, inplane_on=dim.inplane_on, initial=initial,
-                        settings=settings)
+                        dim.a_x, dim.phase_x, dim.a_y, dim.phase_y,
+                        inplane_on=dim.inplane_on, initial=initial, settings=settings)
     if V.ndim == 0:
         return result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, float(V))
     return results_from_columns(cols, dim, V)

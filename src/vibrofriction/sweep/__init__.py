@@ -51,6 +51,8 @@ def sweep(
     eta_c: ArrayLike | None = None,
     a_x: ArrayLike | None = None,
     phase_x: ArrayLike | None = None,
+    a_y: ArrayLike | None = None,
+    phase_y: ArrayLike | None = None,
     inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
@@ -87,6 +89,9 @@ def sweep(
     a_x, phase_x : the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)``
         (docs/inplane.md); default the system's, or 0.  Physical systems sweep ``du_x``
         (m) and ``phase_x`` (rad).
+    a_y, phase_y : the transverse in-plane oscillation ``a_y cos(tau + phase_y)`` (the 2-D
+        solver, docs/inplane.md section 6); default the system's, or 0.  Physical systems
+        sweep ``du_y`` (m) and ``phase_y`` (rad).
     inplane_on : where the in-plane oscillation is imposed, ``"substrate"`` or
         ``"holder"`` (one for the whole grid); default the system's, or ``"substrate"``.
     vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
@@ -135,7 +140,8 @@ def sweep(
     """
     version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,
-                     eta_c=eta_c, a_x=a_x, phase_x=phase_x, inplane_on=inplane_on, vbar=vbar,
+                     eta_c=eta_c, a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y,
+                     inplane_on=inplane_on, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=version, fingerprint=fingerprint)

@@ -83,8 +83,11 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     point = {n: p[n] for n in DIMENSIONLESS}
     shape = p["alpha"].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
-    critical = np.asarray(theory.critical_inertial_velocity(**point, inplane_on=plan.inplane_on),
+    plain = {n: x for n, x in point.items() if n not in ("a_y", "phase_y")}
+    critical = np.asarray(theory.critical_inertial_velocity(**plain, inplane_on=plan.inplane_on),
                           dtype=float).reshape(shape)
+    # a transverse oscillation: no continuous sliding at full friction (docs/inplane.md)
+    critical = np.where(np.asarray(point["a_y"]).reshape(shape) > 0.0, np.inf, critical)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
         system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},

@@ -273,6 +273,8 @@ def make_plan(
     eta_c: ArrayLike | None = None,
     a_x: ArrayLike | None = None,
     phase_x: ArrayLike | None = None,
+    a_y: ArrayLike | None = None,
+    phase_y: ArrayLike | None = None,
     inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
@@ -294,13 +296,15 @@ def make_plan(
         physical = dict(physical or {})
         if phase_x is not None:
             physical["phase_x"] = phase_x
+        if phase_y is not None:
+            physical["phase_y"] = phase_y
         params, velocity = _physical_axes(system.with_(inplane_on=on), physical, v0, dict(
             alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, a_x=a_x,
-            vbar=vbar, v_inertial=v_inertial))
+            a_y=a_y, vbar=vbar, v_inertial=v_inertial))
     else:
         kind = "dimensionless"
         values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
-                      a_x=a_x, phase_x=phase_x)
+                      a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y)
         params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
                                                dict(physical or {}), v0)
     if continuation:
@@ -338,7 +342,8 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     if any(v is not None for v in dimensionless.values()):
         raise ValueError("a Physical system is swept over its SI parameters and v0; "
                          "alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not "
-                         "allowed (sweep c_x, c_xc, du_x instead of zeta, eta_c, a_x)")
+                         "allowed, nor a_y (sweep c_x, c_xc, du_x, du_y instead of zeta, "
+                         "eta_c, a_x, a_y)")
     unknown = sorted(set(physical) - set(PHYSICAL))
     if unknown:
         raise ValueError(f"unknown physical parameter(s) {unknown}; "
@@ -389,9 +394,9 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     _check_above(axes)
     if velocity.name == "vbar":
         by_name = {a.name: a for a in axes}
-        if np.any(by_name["a_x"].values > 0.0):
+        if np.any(by_name["a_x"].values > 0.0) or np.any(by_name["a_y"].values > 0.0):
             raise ValueError("vbar (v0/v0* of eq. 16) is not defined with an in-plane "
-                             "oscillation (a_x > 0 in the grid): sweep v_inertial (signed) "
+                             "oscillation (a_x or a_y > 0 in the grid): sweep v_inertial (signed) "
                              "instead")
         _check_vbar_exists(*(by_name[n] for n in ("alpha", "beta", "amplitude", "zeta",
                                                   "eta_c")))

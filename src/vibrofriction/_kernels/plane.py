@@ -1,0 +1,763 @@
+"""The 2-D (transverse) in-plane solver: a tangential plane with isotropic friction.
+
+Model (docs/inplane.md, "The 2-D solver"; scaled units): body ``u = (u_x, u_y)``, drift
+removed ``y = u - (V tau, 0)``, velocity ``v``, contact spring elongation ``e = u - u_c``,
+``n = max(0, 1 + a cos tau)``, in-plane oscillation ``X = a_x cos(tau + phase_x)``,
+``Y = a_y cos(tau + phase_y)`` on the substrate (substrate velocity ``v_s = (X', Y')``)
+or on the holder (the spring and dashpot pull on ``(V tau + X, Y)``, ``v_s = 0``)::
+
+    v' = alpha (D - y) + gamma (h' - v) - f,    f = k e + c e',   |f| <= n,
+
+axisymmetric pin (``alpha_y = alpha``, ``gamma_y = gamma``).  Stick: ``e' = v - v_s``,
+``f = k e + c (v - v_s)``.  Slip, Kelvin-Voigt (``c > 0``): ``f = n F/|F|`` with ``F =
+k e + c (v - v_s)``, ``e' = (f - k e)/c``.  Slip, Jenkins (``c = 0``): ``|e| = n/k``,
+``d = e/|e|``, ``f = n d``, ``e' = w - lam d`` with ``w = v - v_s`` and the slip speed
+``lam = d.w - n'/k`` (slip ends where it falls to 0).  Flight: ``f = 0``, ``e' = -k e/c``
+(``e = 0`` for Jenkins).
+
+Method: every phase (stick, slip, flight) is integrated by the Dormand-Prince 5(4)
+embedded Runge-Kutta pair (local extrapolation, error control on ``y, v, e`` and the
+force integrals), the stick/slip switches located by the Illinois method on the step
+length (each trial a fresh RK step from the step's start, so a switch is found to
+round-off of the 5th-order solution), the axis cut at every drive period and, for
+``a > 1``, at lift-off and touch-down (Jenkins contact: the contact arcs shortened by
+``DELTA`` at both ends, where the slip direction's equation is singular).  The steady
+state is a fixed point of the period map on the section ``tau = 2 pi k`` (6 states),
+found by plain iteration and then Newton's method with a forward-difference Jacobian;
+the means are integrated over one period of the orbit.  Where Newton fails or the
+orbit is unstable the long-time average over a window answers (status averaged).
+"""
+
+import math
+
+import numpy as np
+
+from .codes import (
+    FLIGHT,
+    I_DEGENERATE,
+    I_EVENTS,
+    I_PERIOD,
+    I_PERIODS,
+    I_PHASE,
+    I_STATUS,
+    O_E,
+    O_ERR,
+    O_F,
+    O_FLIGHT,
+    O_LAT,
+    O_MU,
+    O_MULT,
+    O_SETTLE,
+    O_SLIP,
+    O_SLIP_NEG,
+    O_STICK,
+    O_WORK,
+    O_XD,
+    O_Y,
+    SLIP_NEG,
+    SLIP_POS,
+    ST_AVERAGED,
+    ST_FAILED,
+    ST_NOT_CONVERGED,
+    ST_PERIODIC,
+    STICK,
+)
+from .jit import jit
+
+TWO_PI = 2.0 * math.pi
+SLIP = 1  # one slip phase in 2-D (its direction is part of the state)
+DELTA = 1e-7
+"""Jenkins contact with ``a > 1``: each contact arc is shortened by this at both ends."""
+MARGIN = 1e-12
+"""After a switch the new phase starts this (relative) distance inside its domain."""
+N_Z = 8  # y_x, y_y, v_x, v_y, e_x, e_y, int f_x, int f_y
+N_S = 6  # the section state: y_x, y_y, v_x, v_y, e_x, e_y
+# parameter vector
+P_ALPHA, P_GAMMA, P_K, P_C, P_A, P_V, P_AX, P_PX, P_AY, P_PY, P_HOLDER = range(11)
+N_P = 11
+# counters: events, steps, rejected steps, failures
+C_EVENTS, C_STEPS, C_REJECT, C_FAIL = range(4)
+
+# Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, table 5.2)
+_C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
+_A21 = 1.0 / 5.0
+_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
+_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
+_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
+_A61, _A62, _A63, _A64, _A65 = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0,
+                                49.0 / 176.0, -5103.0 / 18656.0)
+_B1, _B3, _B4, _B5, _B6 = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
+                           11.0 / 84.0)
+# error coefficients: b - b_hat (b_hat the 4th-order weights, the 7th stage FSAL)
+_E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
+                                -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0)
+
+
+@jit
+def normal_force(a, t):
+    """``n = max(0, 1 + a cos t)`` and ``n'``."""
+    n = 1.0 + a * math.cos(t)
+    if n < 0.0:
+        return 0.0, 0.0
+    return n, -a * math.sin(t)
+
+
+@jit
+def drive(P, t):
+    """``(D_x, D_y, h_x', h_y', v_sx, v_sy)``: the holder's offset from ``(V tau, 0)``, its
+    velocity, and the substrate velocity at ``t``."""
+    ax, ay = P[P_AX], P[P_AY]
+    cx, sx = math.cos(t + P[P_PX]), math.sin(t + P[P_PX])
+    cy, sy = math.cos(t + P[P_PY]), math.sin(t + P[P_PY])
+    if P[P_HOLDER] > 0.0:
+        return ax * cx, ay * cy, P[P_V] - ax * sx, -ay * sy, 0.0, 0.0
+    return 0.0, 0.0, P[P_V], 0.0, -ax * sx, -ay * sy
+
+
+@jit
+def contact(mode, P, t, z):
+    """``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``mode``."""
+    k, c = P[P_K], P[P_C]
+    _, _, _, _, vsx, vsy = drive(P, t)
+    wx, wy = z[2] - vsx, z[3] - vsy
+    if mode == FLIGHT:
+        if c > 0.0:
+            return 0.0, 0.0, -k * z[4] / c, -k * z[5] / c, 0.0
+        return 0.0, 0.0, 0.0, 0.0, 0.0
+    if mode == STICK:
+        return k * z[4] + c * wx, k * z[5] + c * wy, wx, wy, 0.0
+    n, dn = normal_force(P[P_A], t)
+    if c > 0.0:
+        Fx, Fy = k * z[4] + c * wx, k * z[5] + c * wy
+        F = math.hypot(Fx, Fy)
+        fx, fy = n * Fx / F, n * Fy / F
+        return fx, fy, (fx - k * z[4]) / c, (fy - k * z[5]) / c, (F - n) / c
+    r = math.hypot(z[4], z[5])
+    dx, dy = z[4] / r, z[5] / r
+    lam = dx * wx + dy * wy - dn / k
+    return n * dx, n * dy, wx - lam * dx, wy - lam * dy, lam
+
+
+@jit
+def rhs(mode, P, t, z, dz):
+    """The right-hand side of the phase ``mode`` into ``dz``."""
+    al, g = P[P_ALPHA], P[P_GAMMA]
+    Dx, Dy, hdx, hdy, _, _ = drive(P, t)
+    fx, fy, ex, ey, _ = contact(mode, P, t, z)
+    dz[0] = z[2] - P[P_V]
+    dz[1] = z[3]
+    dz[2] = al * (Dx - z[0]) + g * (hdx - z[2]) - fx
+    dz[3] = al * (Dy - z[1]) + g * (hdy - z[3]) - fy
+    dz[4] = ex
+    dz[5] = ey
+    dz[6] = fx
+    dz[7] = fy
+
+
+@jit
+def switch_function(mode, P, t, z):
+    """Positive inside the phase, falling through 0 where it ends (flight: 1)."""
+    if mode == FLIGHT:
+        return 1.0
+    n, _ = normal_force(P[P_A], t)
+    if mode == STICK:
+        fx, fy, _, _, _ = contact(STICK, P, t, z)
+        return n - math.hypot(fx, fy)
+    return contact(SLIP, P, t, z)[4]
+
+
+@jit
+def rk_step(mode, P, t, z, k1, h, znew, k7, K):
+    """One Dormand-Prince step of length ``h`` from ``(t, z)`` (``k1 = f(t, z)``):
+    ``znew``, ``k7 = f(t + h, znew)``; returns the error estimate's components in
+    ``K[6]``.  ``K`` is (7, N_Z) scratch."""
+    tmp = K[6]
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * _A21 * k1[i]
+    rhs(mode, P, t + _C2 * h, tmp, K[1])
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A31 * k1[i] + _A32 * K[1, i])
+    rhs(mode, P, t + _C3 * h, tmp, K[2])
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A41 * k1[i] + _A42 * K[1, i] + _A43 * K[2, i])
+    rhs(mode, P, t + _C4 * h, tmp, K[3])
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A51 * k1[i] + _A52 * K[1, i] + _A53 * K[2, i]
+                             + _A54 * K[3, i])
+    rhs(mode, P, t + _C5 * h, tmp, K[4])
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A61 * k1[i] + _A62 * K[1, i] + _A63 * K[2, i]
+                             + _A64 * K[3, i] + _A65 * K[4, i])
+    rhs(mode, P, t + h, tmp, K[5])
+    for i in range(N_Z):
+        znew[i] = z[i] + h * (_B1 * k1[i] + _B3 * K[2, i] + _B4 * K[3, i]
+                              + _B5 * K[4, i] + _B6 * K[5, i])
+    rhs(mode, P, t + h, znew, k7)
+    for i in range(N_Z):
+        tmp[i] = h * (_E1 * k1[i] + _E3 * K[2, i] + _E4 * K[3, i] + _E5 * K[4, i]
+                      + _E6 * K[5, i] + _E7 * k7[i])
+
+
+@jit
+def error_norm(z, znew, err, rtol, atol):
+    s = 0.0
+    for i in range(N_Z):
+        sc = atol + rtol * max(abs(z[i]), abs(znew[i]))
+        s += (err[i] / sc) ** 2
+    return math.sqrt(s / N_Z)
+
+
+@jit
+def project(mode, P, t, z):
+    """Jenkins slip: put ``e`` back on the cone ``|e| = n/k`` (its direction kept)."""
+    if mode == SLIP and P[P_C] == 0.0:
+        n, _ = normal_force(P[P_A], t)
+        r = math.hypot(z[4], z[5])
+        if r > 0.0:
+            z[4] *= n / (P[P_K] * r)
+            z[5] *= n / (P[P_K] * r)
+
+
+@jit
+def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
+    """Integrate ``mode`` from ``t`` towards ``t1`` until its switch function falls
+    through 0 (located to round-off) or ``t1``.  ``z`` is updated in place.  Returns
+    ``(t_end, event, h)``.  ``acc`` accumulates the time in stick, slip, flight and in
+    slip with ``f_x < 0`` (from step ends, linearly interpolated at a sign change)."""
+    k1, k7, znew, zb, kb, K = W[0], W[1], W[2], W[3], W[4], W[5:12]
+    g0 = switch_function(mode, P, t, z)
+    if g0 < 0.0:
+        return t, True, h
+    rhs(mode, P, t, z, k1)
+    ph = mode if mode != FLIGHT else 2
+    while t < t1:
+        hh = min(h, hmax)
+        last = False
+        if t + hh >= t1:
+            hh = t1 - t
+            last = True
+        rk_step(mode, P, t, z, k1, hh, znew, k7, K)
+        en = error_norm(z, znew, K[6], rtol, atol)
+        cnt[C_STEPS] += 1
+        if not (en <= 1.0):
+            cnt[C_REJECT] += 1
+            if not math.isfinite(en) or hh < 1e-14 * (1.0 + abs(t)):
+                cnt[C_FAIL] += 1
+                return t, False, h
+            h = hh * max(0.2, 0.9 * en ** -0.2)
+            continue
+        tn = t1 if last else t + hh
+        project(mode, P, tn, znew)
+        g1 = switch_function(mode, P, tn, znew)
+        if g1 < 0.0:  # a switch inside the step: Illinois on the step length
+            sl, gl, sr, gr = 0.0, g0, hh, g1
+            side = 0
+            for _ in range(80):
+                if sr - sl <= 4e-16 * (abs(t) + hh):
+                    break
+                s = (sl * gr - sr * gl) / (gr - gl)
+                if not (sl < s < sr):
+                    s = 0.5 * (sl + sr)
+                rk_step(mode, P, t, z, k1, s, zb, kb, K)
+                project(mode, P, t + s, zb)
+                gs = switch_function(mode, P, t + s, zb)
+                if gs < 0.0:
+                    sr, gr = s, gs
+                    if side == -1:
+                        gl *= 0.5
+                    side = -1
+                else:
+                    sl, gl = s, gs
+                    if side == 1:
+                        gr *= 0.5
+                    side = 1
+            rk_step(mode, P, t, z, k1, sr, zb, kb, K)
+            project(mode, P, t + sr, zb)
+            _account(mode, P, t, sr, z, zb, acc, ph)
+            for i in range(N_Z):
+                z[i] = zb[i]
+            cnt[C_EVENTS] += 1
+            return t + sr, True, h
+        _account(mode, P, t, tn - t, z, znew, acc, ph)
+        for i in range(N_Z):
+            z[i] = znew[i]
+            k1[i] = k7[i]
+        t = tn
+        g0 = g1
+        if not last:
+            h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2))
+    return t, False, h
+
+
+@jit
+def _account(mode, P, t, dt, z0, z1, acc, ph):
+    acc[ph] += dt
+    if acc.shape[0] > 4 and mode != FLIGHT:  # a check asked for: the largest |f| - n
+        fx, fy, _, _, _ = contact(mode, P, t + dt, z1)
+        n, _ = normal_force(P[P_A], t + dt)
+        acc[4] = max(acc[4], math.hypot(fx, fy) - n)
+    if mode == SLIP:
+        f0 = contact(SLIP, P, t, z0)[0]
+        f1 = contact(SLIP, P, t + dt, z1)[0]
+        if f0 < 0.0 and f1 < 0.0:
+            acc[3] += dt
+        elif f0 < 0.0 <= f1:
+            acc[3] += dt * f0 / (f0 - f1)
+        elif f1 < 0.0 <= f0:
+            acc[3] += dt * f1 / (f1 - f0)
+
+
+@jit
+def entry(P, t, z):
+    """The phase of a contact state with no history (a section start, a touch-down of a
+    viscous contact); a Jenkins slip state is put on the cone."""
+    k, c = P[P_K], P[P_C]
+    n, _ = normal_force(P[P_A], t)
+    if c > 0.0:
+        fx, fy, _, _, _ = contact(STICK, P, t, z)
+        return STICK if math.hypot(fx, fy) <= n else SLIP
+    r = math.hypot(z[4], z[5])
+    if k * r < n * (1.0 - 1e-9) or r == 0.0:
+        return STICK
+    z[4] *= n / (k * r)
+    z[5] *= n / (k * r)
+    if contact(SLIP, P, t, z)[4] > 0.0:
+        return SLIP
+    z[4] *= 1.0 - MARGIN
+    z[5] *= 1.0 - MARGIN
+    return STICK
+
+
+@jit
+def switch(mode, P, t, z):
+    """The phase after the switch of ``mode`` at ``t`` (``z`` adjusted in place)."""
+    k, c = P[P_K], P[P_C]
+    if c > 0.0:
+        return SLIP if mode == STICK else STICK
+    n, _ = normal_force(P[P_A], t)
+    r = math.hypot(z[4], z[5])
+    if mode == STICK:
+        if r > 0.0:
+            z[4] *= n / (k * r)
+            z[5] *= n / (k * r)
+        return SLIP
+    s = n / (k * r) * (1.0 - MARGIN)
+    z[4] *= s
+    z[5] *= s
+    return STICK
+
+
+@jit
+def touchdown(P, t, z):
+    """Contact begins at ``t`` after a flight."""
+    k = P[P_K]
+    if P[P_C] > 0.0:
+        return entry(P, t, z)
+    n, dn = normal_force(P[P_A], t)
+    _, _, _, _, vsx, vsy = drive(P, t)
+    wx, wy = z[2] - vsx, z[3] - vsy
+    w = math.hypot(wx, wy)
+    z[4] = 0.0
+    z[5] = 0.0
+    if dn >= k * w or w == 0.0:
+        return STICK
+    z[4] = n / k * wx / w
+    z[5] = n / k * wy / w
+    return SLIP
+
+
+@jit
+def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
+    """Integrate one drive period from ``t0 = 2 pi j`` (``z`` in place, the integrals
+    ``z[6:8]`` accumulated); ``mode`` the phase at ``t0``.  Returns ``(mode, ok)``."""
+    a = P[P_A]
+    jenkins = P[P_C] == 0.0
+    ends = np.empty(3)
+    contact_ = np.empty(3, np.bool_)
+    m = 1
+    if a > 1.0:
+        th = math.acos(-1.0 / a)
+        d = DELTA if jenkins else 0.0
+        ends[0], ends[1], ends[2] = t0 + th - d, t0 + TWO_PI - th + d, t0 + TWO_PI
+        contact_[0], contact_[1], contact_[2] = True, False, True
+        m = 3
+    else:
+        ends[0] = t0 + TWO_PI
+        contact_[0] = True
+    t = t0
+    h = hmax
+    ev = 0
+    for j in range(m):
+        t1 = ends[j]
+        if not contact_[j]:
+            if jenkins:
+                z[4] = 0.0
+                z[5] = 0.0
+            mode = FLIGHT
+        elif mode == FLIGHT:
+            mode = touchdown(P, t, z)
+        while t < t1:
+            t, event, h = segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt)
+            if cnt[C_FAIL] > 0:
+                return mode, False
+            if event:
+                mode = switch(mode, P, t, z)
+                ev += 1
+                if ev > max_events:
+                    cnt[C_FAIL] += 1
+                    return mode, False
+    return mode, True
+
+
+@jit
+def period_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events):
+    """The period map of the section state ``s`` (6) into ``sout``; returns
+    ``(ok, int f_x, int f_y)`` over the period.  The phase at the section follows from
+    the state (:func:`entry`)."""
+    z = W[12]
+    for i in range(N_S):
+        z[i] = s[i]
+    z[6] = 0.0
+    z[7] = 0.0
+    mode = entry(P, 0.0, z)
+    mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events)
+    for i in range(N_S):
+        sout[i] = z[i]
+    if ok and mode != FLIGHT:  # put the end state through the same entry rule
+        entry(P, TWO_PI, sout)
+    return ok, z[6], z[7]
+
+
+@jit
+def _scale(s):
+    return 1.0 + max(abs(s[0]), abs(s[1]), abs(s[2]), abs(s[3]))
+
+
+@jit
+def _dist(a, b, k):
+    """Scaled distance of section states (``e`` weighted by ``k``: a force)."""
+    d = 0.0
+    for i in range(4):
+        d = max(d, abs(a[i] - b[i]))
+    for i in range(4, 6):
+        d = max(d, k * abs(a[i] - b[i]))
+    return d
+
+
+@jit
+def orbit_mean(P, s, rtol, atol, hmax, W, cnt, max_events, out):
+    """Means over one period from the section state ``s``: ``out = (mu, lateral,
+    stick, slip, flight, reverse slip, ok)`` and the end state in ``W[13]``."""
+    acc = np.zeros(4)
+    ok, ifx, ify = period_map(P, s, W[13], rtol, atol, hmax, W, acc, cnt, max_events)
+    nbar = mean_normal(P[P_A])
+    out[0] = ifx / (TWO_PI * nbar)
+    out[1] = ify / (TWO_PI * nbar)
+    for i in range(4):
+        out[2 + i] = acc[i] / TWO_PI
+    out[6] = 1.0 if ok else 0.0
+
+
+@jit
+def mean_normal(a):
+    """``<n>`` over a period (the contact opens for ``a > 1``)."""
+    if a <= 1.0:
+        return 1.0
+    th = math.acos(-1.0 / a)
+    return (th + a * math.sin(th)) / math.pi
+
+
+@jit
+def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info):
+    """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
+    ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
+    returns True where the residual fell below ``tol``, or stopped falling (the
+    integration's noise) below ``floor``."""
+    acc = np.zeros(4)
+    ph = np.empty(N_S)
+    pp = np.empty(N_S)
+    sp = np.empty(N_S)
+    k = P[P_K]
+    periods = 0
+    ok, _, _ = period_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events)
+    periods += 1
+    if not ok:
+        info[2] += periods
+        return False
+    res = _dist(ph, s, k)
+    it = 0
+    while it < max_iter:
+        if res <= tol:
+            info[0], info[1] = it, res
+            info[2] += periods
+            return True
+        it += 1
+        for j in range(N_S):
+            hj = 1e-7 * (1.0 + abs(s[j])) if j < 4 else 1e-7 * (1.0 / k + abs(s[j]))
+            for i in range(N_S):
+                sp[i] = s[i]
+            sp[j] += hj
+            ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
+            periods += 1
+            if not ok:
+                info[2] += periods
+                return False
+            for i in range(N_S):
+                J[i, j] = (pp[i] - ph[i]) / hj
+        A = J - np.eye(N_S)
+        r = ph - s
+        try:
+            ds = np.linalg.solve(A, -r)
+        except Exception:  # noqa: BLE001 - a singular matrix
+            info[2] += periods
+            return False
+        lam = 1.0
+        improved = False
+        for _ in range(6):
+            for i in range(N_S):
+                sp[i] = s[i] + lam * ds[i]
+            ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
+            periods += 1
+            if ok:
+                rn = _dist(pp, sp, k)
+                if rn < res:
+                    for i in range(N_S):
+                        s[i] = sp[i]
+                        ph[i] = pp[i]
+                    res = rn
+                    improved = True
+                    break
+            lam *= 0.5
+        if not improved:
+            break
+    info[0], info[1] = it, res
+    info[2] += periods
+    return res <= tol or res <= floor
+
+
+@jit
+def start_state(P, init_kind, y0, xd0, e0, s):
+    """The section state at ``tau = 0``: 0 steady sliding (``x' = V``, spring stretched
+    by ``sign V``, ``e = sign V/k``), 1 rest, 2 explicit ``(y, x', e)`` (transverse 0)."""
+    for i in range(N_S):
+        s[i] = 0.0
+    if init_kind == 0 and P[P_V] != 0.0:
+        sg = 1.0 if P[P_V] > 0.0 else -1.0
+        s[0], s[2], s[4] = -sg / P[P_ALPHA], P[P_V], sg / P[P_K]
+    elif init_kind == 2:
+        s[0], s[2], s[4] = y0, xd0, e0
+
+
+@jit
+def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
+                       on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+                       max_events, out_f, out_i):
+    """Steady state of the 2-D model at one point into the output rows (columns of
+    ``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``); ``out_f[O_LAT]`` the lateral ratio.
+
+    ``rtol`` the Runge-Kutta tolerance (``atol = rtol``); the error estimate adds the
+    difference from a second solve at ``100 rtol`` to the section residual's effect.
+    ``max_periods`` bounds the averaging fallback; ``max_events`` the switches per
+    period (chatter: status failed)."""
+    P = np.empty(N_P)
+    P[P_ALPHA] = alpha
+    P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
+    P[P_K] = beta - alpha
+    P[P_C] = eta * (beta - alpha)
+    P[P_A], P[P_V] = a, V
+    P[P_AX], P[P_PX], P[P_AY], P[P_PY] = a_x, phase_x, a_y, phase_y
+    P[P_HOLDER] = 0.0 if on_substrate else 1.0
+    out_f[:] = math.nan
+    out_f[O_WORK] = 0.0
+    out_i[:] = 0
+    out_i[I_PHASE] = -1
+    w = max(1.0, math.sqrt(alpha), math.sqrt(beta))
+    if P[P_C] > 0.0:
+        w = max(w, P[P_K] / P[P_C])
+    hmax = TWO_PI / (8.0 * w)
+    W = np.zeros((14, N_Z))
+    cnt = np.zeros(4, np.int64)
+    s = np.empty(N_S)
+    s2 = np.empty(N_S)
+    J = np.zeros((N_S, N_S))
+    info = np.zeros(3)
+    acc = np.zeros(4)
+    start_state(P, init_kind, y0, xd0, e0, s)
+    s_start = s.copy()
+    k = P[P_K]
+    periods = 0
+    # a transient by plain iteration: until the map moves the state by < 1e-4
+    for _ in range(20):
+        ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
+        periods += 1
+        if not ok:
+            break
+        d = _dist(s2, s, k)
+        for i in range(N_S):
+            s[i] = s2[i]
+        if d < 1e-4:
+            break
+    status = ST_FAILED
+    mult = math.nan
+    means = np.zeros(7)
+    s0 = s.copy()
+    if cnt[C_FAIL] == 0:
+        scale = 1.0 + _dist(s, np.zeros(N_S), k)
+        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                      100.0 * rtol * scale, 12, J, info)
+        periods += int(info[2])
+        res = info[1]
+        if conv:
+            ev = np.linalg.eigvals(J.astype(np.complex128))
+            mult = 0.0
+            for x in ev:
+                mult = max(mult, abs(x))
+            if mult < 1.0 + 1e-6:
+                status = ST_PERIODIC
+        if status == ST_PERIODIC:
+            orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
+            periods += 1
+            # the tolerance's effect: the same orbit at 100 rtol
+            sl = s.copy()
+            info[:] = 0.0
+            loose = np.zeros(7)
+            if newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info):
+                orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                           loose)
+                err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
+            else:
+                err = math.inf
+            periods += int(info[2]) + 1
+            # the section residual: a state error res moves a mean by about res/(1 - mult)
+            err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
+            out_f[O_ERR] = err
+            out_i[I_PERIOD] = 1
+            # settling: the linearised contraction from the start to within the error
+            d0 = _dist(s_start, s, k)
+            if d0 <= err or mult <= 0.0:
+                out_f[O_SETTLE] = 0.0
+            elif mult < 1.0 - 1e-6:
+                out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
+        elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
+            # the long-time average from the transient's end (not Newton's last iterate),
+            # its error the window's spread plus the difference from a run at 100 rtol
+            for i in range(N_S):
+                s[i] = s0[i]
+            sl = s0.copy()
+            spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
+            loose = np.zeros(7)
+            average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
+            periods += 2 * N_AVG
+            if cnt[C_FAIL] == 0:
+                status = ST_AVERAGED
+                out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
+                                            abs(loose[1] - means[1]))
+        elif cnt[C_FAIL] == 0:
+            status = ST_NOT_CONVERGED
+    if status == ST_PERIODIC or status == ST_AVERAGED:
+        out_f[O_MU] = means[0]
+        out_f[O_LAT] = means[1]
+        out_f[O_STICK] = means[2]
+        out_f[O_SLIP] = means[3] - means[5]  # forward: f_x >= 0, as the 1-D solver's
+        out_f[O_FLIGHT] = means[4]
+        out_f[O_SLIP_NEG] = means[5]
+        # the final section state (x components, laboratory frame)
+        z = W[13]
+        for i in range(N_S):
+            z[i] = s[i]
+        mode = entry(P, 0.0, z)
+        fx = contact(mode, P, 0.0, z)[0]
+        out_f[O_Y] = z[0]
+        out_f[O_XD] = z[2]
+        out_f[O_F] = fx
+        out_f[O_E] = z[4]
+        out_i[I_PHASE] = STICK if mode == STICK else (SLIP_POS if fx >= 0.0 else SLIP_NEG)
+    else:
+        out_f[O_ERR] = math.inf
+    out_f[O_MULT] = mult
+    out_f[O_WORK] = periods
+    out_i[I_STATUS] = status
+    out_i[I_PERIODS] = periods
+    out_i[I_EVENTS] = cnt[C_EVENTS]
+    out_i[I_DEGENERATE] = 0
+
+
+@jit
+def cone_excess(P, periods, rtol):
+    """The largest ``|f| - n`` at the step ends and switches of ``periods`` drive periods
+    from the sliding start of the parameter vector ``P`` (a check of the phase rules)."""
+    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
+    if P[P_C] > 0.0:
+        w = max(w, P[P_K] / P[P_C])
+    hmax = TWO_PI / (8.0 * w)
+    W = np.zeros((14, N_Z))
+    cnt = np.zeros(4, np.int64)
+    acc = np.zeros(5)
+    acc[4] = -math.inf
+    s = np.empty(N_S)
+    start_state(P, 0, 0.0, 0.0, 0.0, s)
+    z = W[13]
+    for i in range(N_S):
+        z[i] = s[i]
+    mode = entry(P, 0.0, z)
+    for j in range(periods):
+        mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000)
+        if not ok:
+            return math.inf
+    return acc[4]
+
+
+N_AVG = 200
+"""The averaging fallback: this many periods of transient, then a window of as many."""
+
+
+@jit
+def average(P, s, rtol, hmax, W, cnt, max_events, means):
+    """The long-time average from the section state ``s``: ``N_AVG`` periods of
+    transient, then means over ``N_AVG`` periods into ``means`` (as :func:`orbit_mean`),
+    ``s`` the end state.  Returns the window's spread: the larger of the difference of its
+    halves' means, in ``mu`` and in the lateral ratio."""
+    z = W[13]
+    for i in range(N_S):
+        z[i] = s[i]
+    z[6] = 0.0
+    z[7] = 0.0
+    mode = entry(P, 0.0, z)
+    pfx = np.zeros(N_AVG)
+    pfy = np.zeros(N_AVG)
+    acc = np.zeros(4)
+    for j in range(2 * N_AVG):
+        z[6] = 0.0
+        z[7] = 0.0
+        if j == N_AVG:
+            acc[:] = 0.0
+        mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events)
+        if not ok:
+            return math.inf
+        if j >= N_AVG:
+            pfx[j - N_AVG] = z[6]
+            pfy[j - N_AVG] = z[7]
+    nbar = TWO_PI * mean_normal(P[P_A])
+    means[0] = pfx.sum() / (N_AVG * nbar)
+    means[1] = pfy.sum() / (N_AVG * nbar)
+    for i in range(4):
+        means[2 + i] = acc[i] / (TWO_PI * N_AVG)
+    for i in range(N_S):
+        s[i] = z[i]
+    h = N_AVG // 2
+    e1 = abs(pfx[:h].sum() - pfx[h:].sum()) / (h * nbar)
+    e2 = abs(pfy[:h].sum() - pfy[h:].sum()) / (h * nbar)
+    return max(e1, e2)
+
+
+@jit
+def plane_steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
+                            on_substrate, init_kind, init, rtol, max_periods, max_events,
+                            out_f, out_i):
+    """:func:`plane_steady_state` over arrays of points (``init`` rows ``(y, x', e)``)."""
+    for i in range(V.shape[0]):
+        plane_steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i],
+                           phase_x[i], a_y[i], phase_y[i], on_substrate[i], init_kind,
+                           init[i, 0], init[i, 1], init[i, 2], rtol, max_periods,
+                           max_events, out_f[i], out_i[i])
