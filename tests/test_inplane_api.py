@@ -77,9 +77,12 @@ def test_vbar_is_refused_with_an_inplane_oscillation() -> None:
 def test_from_bench_takes_the_inplane_oscillation() -> None:
     p = Physical.from_bench(natural_frequency_hz=800.0, normal_load=20.0,
                             drive_frequency_hz=1000.0, mu0=0.3, mass=0.01, k_zc=2e7,
-                            k_xc=1.5e7, du_z=5e-7, du_x=1e-6, phase_x=0.5,
-                            inplane_on="holder")
-    assert (p.du_x, p.phase_x, p.inplane_on) == (1e-6, 0.5, "holder")
+                            k_xc=1.5e7, du_z=5e-7, du_x=1e-6, phase_x=0.5, du_y=2e-6,
+                            phase_y=0.25, inplane_on="holder")
+    assert (p.du_x, p.phase_x, p.du_y, p.phase_y, p.inplane_on) == (1e-6, 0.5, 2e-6, 0.25,
+                                                                    "holder")
+    d = p.to_dimensionless()
+    assert d.a_y == pytest.approx(2 * d.a_x, rel=1e-14) and d.phase_y == 0.25
 
 
 def test_sweep_mirror_symmetry_and_mount() -> None:
@@ -270,3 +273,38 @@ def test_regimes_of_the_combined_drive_agree_with_the_solver() -> None:
     assert seen >= {1, 2}
     # the undamped issue system at phase pi/2 is symmetric: friction reduction
     assert int(theory.inplane_regime(0.5, 2.0, 0.5, 0.5, math.pi / 2)) == 0
+
+
+def test_transverse_oscillation_is_refused_where_not_built() -> None:
+    """The fit, the design and simulate do not take a transverse oscillation yet: each
+    refuses it by name instead of computing without it."""
+    from vibrofriction.bench import design
+
+    pin = Physical(**PIN, du_y=1e-6)
+    with pytest.raises(ValueError, match=r"the design does not take a transverse"):
+        design(pin, v0=0.01, omega=(1e3, 1e4), du_z=(0.0, 1e-6))
+    with pytest.raises(ValueError, match=r"the fit does not take a transverse"):
+        vf.fit("no-such-file.csv", pin)
+    with pytest.raises(ValueError, match=r"simulate does not take a transverse"):
+        vf.simulate(pin.to_dimensionless(), v_inertial=0.3)
+
+
+def test_cli_transverse() -> None:
+    """``--a-y``/``--phase-y`` (and ``--du-y`` in SI) reach the 2-D solver: the table gains
+    the lateral column, --json carries lateral_ratio, and the values are the library's."""
+    out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--zeta", "0.05",
+               "--a-y", "0.5", "--phase-y", "1", "--v-inertial", "0.3", "--json")
+    assert out.returncode == 0, out.stderr
+    row = json.loads(out.stdout)
+    r = friction_coefficient(Dimensionless(0.5, 2.0, 0.5, zeta=0.05, a_y=0.5, phase_y=1.0),
+                             v_inertial=0.3)
+    assert (row["mu_ratio"], row["lateral_ratio"]) == (r.mu_ratio, r.lateral_ratio)
+    assert row["system"]["a_y"] == 0.5 and r.lateral_ratio != 0.0
+    text = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--zeta", "0.05",
+                "--a-y", "0.5", "--v-inertial", "0.3")
+    assert "lateral" in text.stdout.splitlines()[1] and "critical velocity inf" in text.stdout
+    si = [f"--{k.replace('_', '-')}={v!r}" for k, v in PIN.items()]
+    phys = _cli("mu", *si, "--du-y", "1e-6", "--v0", "0.01", "--json")
+    assert phys.returncode == 0, phys.stderr
+    expect = friction_coefficient(Physical(**PIN, du_y=1e-6), v0=0.01)
+    assert json.loads(phys.stdout)["lateral_ratio"] == expect.lateral_ratio

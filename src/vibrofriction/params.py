@@ -395,6 +395,7 @@ class Physical:
                    k_xc: float | None = None, contact: FlatPunch | Sphere | None = None,
                    eta_c: float = 0.0, du_z: float | None = None,
                    dF_N: float | None = None, du_x: float = 0.0, phase_x: float = 0.0,
+                   du_y: float = 0.0, phase_y: float = 0.0,
                    inplane_on: str = "substrate") -> Physical:
         """The model of a tribometer from what the experimenter knows (docs/bench.md).
 
@@ -408,8 +409,9 @@ class Physical:
         * the load ``normal_load = F_N0`` (N), the drive frequency (Hz) and the
           oscillation as an indentation amplitude ``du_z`` (m) or a normal-force
           amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
-        * an in-plane oscillation along the sliding: its amplitude ``du_x`` (m), phase
-          ``phase_x`` (rad) and where it is imposed, ``inplane_on`` (docs/inplane.md).
+        * an in-plane oscillation along the sliding (``du_x`` in m, ``phase_x`` in rad)
+          and across it (``du_y``, ``phase_y``), and where it is imposed, ``inplane_on``
+          (docs/inplane.md).
         """
         f_n = float(checked("natural_frequency_hz", natural_frequency_hz, minimum=0.0,
                             strict=True))
@@ -442,7 +444,7 @@ class Physical:
             float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
-                     inplane_on=inplane_on)
+                     du_y=du_y, phase_y=phase_y, inplane_on=inplane_on)
         if quality_factor is not None and damping_ratio is not None:
             raise ValueError("give at most one of quality_factor and damping_ratio")
         if quality_factor is not None or damping_ratio is not None:
@@ -539,13 +541,12 @@ class Physical:
                              a_y=float(self.inplane_amplitude(self.du_y, self.omega)),
                              phase_y=self.phase_y, inplane_on=self.inplane_on)
 
-    def require_normal_only(self, what: str) -> None:
-        """ValueError if this set-up has an in-plane oscillation, which ``what`` (a
-        feature of the package) does not take yet: refused, never ignored."""
-        if self.du_x > 0.0 or self.du_y > 0.0:
-            raise ValueError(f"{what} does not take an in-plane oscillation yet (du_x = "
-                             f"{self.du_x!r} m, du_y = {self.du_y!r} m): give a set-up "
-                             "with du_x = du_y = 0")
+    def require_no_transverse(self, what: str) -> None:
+        """ValueError if this set-up has a transverse in-plane oscillation, which ``what``
+        (a feature of the package) does not take yet: refused, never ignored."""
+        if self.du_y > 0.0:
+            raise ValueError(f"{what} does not take a transverse oscillation yet (du_y = "
+                             f"{self.du_y!r} m): give a set-up with du_y = 0")
 
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude

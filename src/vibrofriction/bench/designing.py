@@ -260,6 +260,7 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     drive).  The map is 4-D (default ``41 x 9 x n_du_x x n_phase``); ``directions``
     gives the best normal-only and longitudinal-only choices within the same limits.
     """
+    pin.require_no_transverse("the design")
     if du_x is None and pin.du_x > 0.0:
         raise ValueError(f"the pin has an in-plane oscillation (du_x = {pin.du_x!r} m), which "
                          f"the design would not use: give du_x=(low, high) to design it, or "

@@ -32,6 +32,11 @@ def mu_command(
         ">= 0 (docs/inplane.md)")] = "0",
     phase_x: Annotated[str, typer.Option(
         "--phase-x", help="its phase relative to the normal oscillation, rad")] = "0",
+    a_y: Annotated[str, typer.Option(
+        "--a-y", help="in-plane oscillation across the sliding, du_y m omega^2/(mu0 F_N0) "
+        ">= 0 (the 2-D solver)")] = "0",
+    phase_y: Annotated[str, typer.Option(
+        "--phase-y", help="its phase relative to the normal oscillation, rad")] = "0",
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",
@@ -55,6 +60,9 @@ def mu_command(
     du_x: Annotated[str, typer.Option(
         "--du-x", help="in-plane oscillation amplitude along the sliding, m (with "
         "--phase-x, --inplane-on)")] = "0",
+    du_y: Annotated[str, typer.Option(
+        "--du-y", help="in-plane oscillation amplitude across the sliding, m (with "
+        "--phase-y)")] = "0",
     quality_factor: Annotated[str | None, typer.Option(
         "--quality-factor", help="the pin's Q from an impact test (instead of --c-x)")] = None,
     v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s "
@@ -72,11 +80,14 @@ def mu_command(
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
 
     Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c --a-x
-    --phase-x --inplane-on]) with --vbar or --v-inertial, or a physical set-up in SI units
-    (--mass --k-x --k-xc --k-zc --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor,
-    --c-xc, --du-x --phase-x --inplane-on]) with --v0.
+    --phase-x --a-y --phase-y --inplane-on]) with --vbar or --v-inertial, or a physical
+    set-up in SI units (--mass --k-x --k-xc --k-zc --u-z0 --du-z --omega --mu0 [--c-x or
+    --quality-factor, --c-xc, --du-x --phase-x --du-y --phase-y --inplane-on]) with --v0.
     """
-    inplane = {"phase_x": parse_float(phase_x, "phase_x"), "inplane_on": inplane_on}
+    inplane = {"phase_x": parse_float(phase_x, "phase_x"),
+               "phase_y": parse_float(phase_y, "phase_y"), "inplane_on": inplane_on}
+    si_inplane = {"du_x": parse_float(du_x, "du_x"), "du_y": parse_float(du_y, "du_y")}
+    scaled_inplane = {"a_x": parse_float(a_x, "a_x"), "a_y": parse_float(a_y, "a_y")}
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
     settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
@@ -85,15 +96,15 @@ def mu_command(
             if any(v is not None for v in phys.values()):
                 raise ValueError("give either --bench or the SI flags")
             physical = Physical.from_bench_file(bench)
-            if parse_float(du_x, "du_x") > 0.0:
-                physical = physical.with_(du_x=parse_float(du_x, "du_x"), **inplane)
+            if any(v > 0.0 for v in si_inplane.values()):
+                physical = physical.with_(**si_inplane, **inplane)
         else:
             physical = _physical(phys, c_x, c_xc, quality_factor,
                                  (alpha, beta, amplitude, vbar, v_inertial),
-                                 du_x=parse_float(du_x, "du_x"), **inplane)
-        if parse_float(a_x, "a_x") != 0.0:
-            raise ValueError("--a-x is the dimensionless amplitude: a physical set-up takes "
-                             "--du-x (m)")
+                                 **si_inplane, **inplane)
+        if any(v != 0.0 for v in scaled_inplane.values()):
+            raise ValueError("--a-x, --a-y are the dimensionless amplitudes: a physical "
+                             "set-up takes --du-x, --du-y (m)")
         if v0 is None:
             raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
         system = physical.to_dimensionless()
@@ -106,11 +117,10 @@ def mu_command(
             raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
         system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
                                parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
-                               parse_float(eta_c, "eta_c"), parse_float(a_x, "a_x"),
-                               **inplane)
-        if parse_float(du_x, "du_x") != 0.0:
-            raise ValueError("--du-x (m) needs a physical set-up: the dimensionless system "
-                             "takes --a-x")
+                               parse_float(eta_c, "eta_c"), **scaled_inplane, **inplane)
+        if any(v != 0.0 for v in si_inplane.values()):
+            raise ValueError("--du-x, --du-y (m) need a physical set-up: the dimensionless "
+                             "system takes --a-x, --a-y")
         results = _dimensionless(system, vbar, v_inertial, initial, settings)
     _print(system, results, as_json)
     exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)
@@ -165,17 +175,23 @@ def json_row(r: FrictionResult) -> dict:
 def _print(system: Dimensionless, results, as_json: bool) -> None:
     if not as_json:
         damping = (f" zeta={system.zeta:g} eta_c={system.eta_c:g}" if system.damped else "")
-        inplane = (f" a_x={system.a_x:g} phase_x={system.phase_x:g} on the "
-                   f"{system.inplane_on} (critical velocity "
-                   f"{system.critical_inertial_velocity():.5g})" if system.a_x > 0 else "")
+        inplane = "".join(f" a_{c}={getattr(system, 'a_' + c):g} phase_{c}="
+                          f"{getattr(system, 'phase_' + c):g}" for c in "xy"
+                          if getattr(system, "a_" + c) > 0)
+        if inplane:
+            inplane += (f" on the {system.inplane_on} (critical velocity "
+                        f"{system.critical_inertial_velocity():.5g})")
         typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g}"
                    f"{damping}{inplane} case {system.case.value}")
-        typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} {'error':>9}  status")
+        lateral = system.a_y > 0  # the 2-D solver: the mean force across the sliding too
+        typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} "
+                   + (f"{'lateral':>14} " if lateral else "") + f"{'error':>9}  status")
     for r in results:
         if as_json:
             typer.echo(json.dumps(json_row(r)))
         else:
             typer.echo(f"{r.vbar:>10.4g} {r.v_inertial:>12.5g} {r.mu_ratio:>14.10f} "
-                       f"{r.error:>9.1e}  {r.status.value}"
+                       + (f"{r.lateral_ratio:>14.10f} " if lateral else "")
+                       + f"{r.error:>9.1e}  {r.status.value}"
                        + (f" (period {r.period})" if r.period else "")
                        + ("" if r.trusted else "  NOT TRUSTED"))

@@ -40,6 +40,11 @@ def sweep_command(
     phase_x: Annotated[str | None, typer.Option(
         "--phase-x", help=f"its phase relative to the normal oscillation, rad (default 0; "
         f"physical sweeps too); {_AXIS}")] = None,
+    a_y: Annotated[str | None, typer.Option(
+        "--a-y", help=f"in-plane oscillation across the sliding (the 2-D solver; default "
+        f"0); {_AXIS}")] = None,
+    phase_y: Annotated[str | None, typer.Option(
+        "--phase-y", help=f"its phase, rad (default 0; physical sweeps too); {_AXIS}")] = None,
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",
@@ -61,6 +66,9 @@ def sweep_command(
         "--c-xc", help=f"physical sweep: contact dashpot, N s/m (default 0); {_AXIS}")] = None,
     du_x: Annotated[str | None, typer.Option(
         "--du-x", help=f"physical sweep: in-plane amplitude along the sliding, m (default "
+        f"0); {_AXIS}")] = None,
+    du_y: Annotated[str | None, typer.Option(
+        "--du-y", help=f"physical sweep: in-plane amplitude across the sliding, m (default "
         f"0); {_AXIS}")] = None,
     v0: Annotated[str | None, _opt("physical sweep: velocity v0, m/s (signed)")] = None,
     scheduler: Annotated[str | None, typer.Option(
@@ -94,10 +102,10 @@ def sweep_command(
         raise ValueError("give either --scheduler or --workers")
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
-    optional = {"c_x": c_x, "c_xc": c_xc, "du_x": du_x}
+    optional = {"c_x": c_x, "c_xc": c_xc, "du_x": du_x, "du_y": du_y}
     grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
-                      a_x=a_x, vbar=vbar, v_inertial=v_inertial), phys, optional, v0,
-                 phase_x)
+                      a_x=a_x, a_y=a_y, vbar=vbar, v_inertial=v_inertial), phys, optional,
+                 v0, {"phase_x": phase_x, "phase_y": phase_y})
     options = dict(store=out, chunk_size=chunk_size, inplane_on=inplane_on,
                    settings=SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted),
                    initial=initial,
@@ -116,14 +124,15 @@ def _flag(name: str) -> str:
 
 
 def _grid(dimensionless: dict[str, str | None], phys: dict[str, str | None],
-          optional: dict[str, str | None], v0: str | None, phase_x: str | None) -> dict:
+          optional: dict[str, str | None], v0: str | None,
+          phases: dict[str, str | None]) -> dict:
     """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid
-    (``optional``: the SI parameters with a default; ``phase_x`` belongs to both kinds)."""
+    (``optional``: the SI parameters with a default; the ``phases`` belong to both kinds)."""
     if any(v is not None for v in (*phys.values(), *optional.values())) or v0 is not None:
         if any(v is not None for v in dimensionless.values()):
             raise ValueError("give either the dimensionless parameters or the physical ones")
-        return _physical_grid(phys, {**optional, "phase_x": phase_x}, v0)
-    return _dimensionless_grid(**dimensionless, phase_x=phase_x)
+        return _physical_grid(phys, {**optional, **phases}, v0)
+    return _dimensionless_grid(**dimensionless, **phases)
 
 
 def _physical_grid(phys: dict[str, str | None], optional: dict[str, str | None],
@@ -142,8 +151,8 @@ def _physical_grid(phys: dict[str, str | None], optional: dict[str, str | None],
 
 def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
                         zeta: str | None, eta_c: str | None, a_x: str | None,
-                        vbar: str | None, v_inertial: str | None,
-                        phase_x: str | None) -> dict:
+                        a_y: str | None, vbar: str | None, v_inertial: str | None,
+                        phase_x: str | None, phase_y: str | None) -> dict:
     from ..sweep import parse_axis
 
     given = {"alpha": alpha, "beta": beta, "amplitude": amplitude}
@@ -153,7 +162,8 @@ def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | No
     if (vbar is None) == (v_inertial is None):
         raise ValueError("give exactly one of --vbar and --v-inertial")
     grid = {n: parse_axis(v, n) for n, v in given.items() if v is not None}
-    for n, v in (("zeta", zeta), ("eta_c", eta_c), ("a_x", a_x), ("phase_x", phase_x)):
+    for n, v in (("zeta", zeta), ("eta_c", eta_c), ("a_x", a_x), ("phase_x", phase_x),
+                 ("a_y", a_y), ("phase_y", phase_y)):
         if v is not None:
             grid[n] = parse_axis(v, n)
     if vbar is not None:

@@ -149,6 +149,9 @@ def simulate(
     an in-plane oscillation ``"sliding"`` is the rest (as in :func:`solve_points`).
     """
     dim = dimensionless(system)
+    if dim.a_y > 0.0:
+        raise ValueError(f"simulate does not take a transverse oscillation yet (a_y = "
+                         f"{dim.a_y!r}): friction_coefficient computes its steady state")
     V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
