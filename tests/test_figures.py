@@ -45,8 +45,10 @@ def test_series_validates_and_converts() -> None:
     with pytest.raises(ValueError, match="v_inertial must be"):
         Series("bad", 0.5, 2.0, 0.5, np.array([np.nan]), np.array([np.nan]))
     Series("signed", 0.5, 2.0, 0.5, np.array([-1.0]), np.array([np.nan]))  # V < 0: backward
-    with pytest.raises(ValueError, match="v_inertial = 0 with an in-plane"):
-        Series("held", 0.5, 2.0, 0.5, np.array([0.0]), np.array([np.nan]), a_x=0.5)
+    with pytest.raises(ValueError, match="v_inertial = 0 with a transverse"):
+        Series("held", 0.5, 2.0, 0.5, np.array([0.0]), np.array([np.nan]), a_y=0.5)
+    # V = 0 with a longitudinal oscillation is computed (held or driven, docs/inplane.md)
+    assert Series("held", 0.5, 2.0, 0.5, np.array([0.0]), np.array([np.nan]), a_x=0.5).size
     with pytest.raises(ValueError, match="inplane_on"):
         Series("k", 0.5, 2.0, 0.5, np.array([1.0]), np.array([np.nan]), inplane_on="disk")
     for alpha, beta in ((0.5, 1.0), (1.0, 3.0)):  # cases III and IV: no vbar

@@ -51,7 +51,12 @@ def test_each_recipe_renders_a_figure_one_table_and_passing_checks(rendered) -> 
     table = result.tables[0]
     assert len(table) == recipe.points
     assert {"a_x", "phase_x", "inplane_on", "mu_ratio", "status"} <= set(table.columns)
-    assert all(np.all(c.trusted) for c in curves.values())
+    for key, c in curves.items():
+        if key == "transverse":  # undamped 2-D: only the points nearest V = 0 averaged
+            bad = c.series.v_inertial[~c.trusted]
+            assert bad.size <= 4 and np.all(np.abs(bad) < 0.01), bad
+        else:
+            assert np.all(c.trusted), key
     for c in _check(result, "continuous sliding"):   # mu = sign(V) beyond theory's V_c
         assert c.deviation < 1e-9, c
     for c in _check(result, "mirror symmetry"):

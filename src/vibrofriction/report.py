@@ -31,7 +31,14 @@ from tqdm.auto import tqdm
 from . import __version__, theory
 from .figures import all_recipes, style
 from .figures.recipe import Check, Recipe, Rendered, Table, curve_table, max_deviation
-from .figures.series import Curve, Series, series_at_vbar, solve, solve_points_on
+from .figures.series import (
+    Curve,
+    Series,
+    point_columns,
+    series_at_vbar,
+    solve,
+    solve_points_on,
+)
 from .params import Dimensionless
 from .solver import STATUS_BY_CODE, SolverSettings, simulate, solve_points
 
@@ -123,11 +130,9 @@ def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
     return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
-                 inplane_on) -> tuple[int, dict[str, np.ndarray]]:
-    """``(pid, solve_points_on(...))``: the pid says which process did the work."""
-    return os.getpid(), solve_points_on(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x,
-                                        phase_x, inplane_on)
+def _solve_chunk(*columns: np.ndarray) -> tuple[int, dict[str, np.ndarray]]:
+    """``(pid, solve_points_on(*columns))``: the pid says which process did the work."""
+    return os.getpid(), solve_points_on(*columns)
 
 
 @dataclass(frozen=True)
@@ -168,6 +173,7 @@ def _render(index: int, quick: bool, name: str, out: Path,
                 + (f"zeta={s.zeta!r}, eta_c={s.eta_c!r}, " if s.zeta or s.eta_c else "")
                 + (f"a_x={s.a_x!r}, phase_x={s.phase_x!r} ({s.inplane_on}), " if s.a_x
                    else "")
+                + (f"a_y={s.a_y!r}, phase_y={s.phase_y!r}, " if s.a_y else "")
                 + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
@@ -182,41 +188,27 @@ class _Batch:
     """The points of one recipe, split into strided chunks (expensive regions spread out)."""
 
     index: int
-    alpha: np.ndarray
-    beta: np.ndarray
-    amplitude: np.ndarray
-    v_inertial: np.ndarray
-    zeta: np.ndarray
-    eta_c: np.ndarray
-    a_x: np.ndarray
-    phase_x: np.ndarray
-    inplane_on: np.ndarray
+    columns: list[np.ndarray]  # the POINT_ARGS arrays, then inplane_on (point_columns)
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
 
     @classmethod
     def of(cls, index: int, recipe: Recipe, chunk: int) -> _Batch:
-        s = recipe.series
-        al = np.concatenate([np.full(x.size, x.alpha) for x in s]) if s else np.empty(0)
-        be = np.concatenate([np.full(x.size, x.beta) for x in s]) if s else np.empty(0)
-        am = np.concatenate([np.full(x.size, x.amplitude) for x in s]) if s else np.empty(0)
-        V = np.concatenate([x.v_inertial for x in s]) if s else np.empty(0)
-        ze = np.concatenate([np.full(x.size, x.zeta) for x in s]) if s else np.empty(0)
-        et = np.concatenate([np.full(x.size, x.eta_c) for x in s]) if s else np.empty(0)
-        ax = np.concatenate([np.full(x.size, x.a_x) for x in s]) if s else np.empty(0)
-        px = np.concatenate([np.full(x.size, x.phase_x) for x in s]) if s else np.empty(0)
-        on = (np.concatenate([np.full(x.size, x.inplane_on, dtype=object) for x in s]) if s
-              else np.empty(0, dtype=object))
-        n = V.size
+        columns, on = point_columns(recipe.series)
+        n = columns[0].size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, al, be, am, V, ze, et, ax, px, on, chunks, {}, len(chunks))
+        return cls(index, [*columns, on], chunks, {}, len(chunks))
+
+    @property
+    def size(self) -> int:
+        return int(self.columns[0].size)
 
     def store(self, idx: np.ndarray, part: Mapping[str, np.ndarray]) -> None:
         for key, val in part.items():
             if key not in self.results:
-                self.results[key] = np.empty(self.v_inertial.size, dtype=val.dtype)
+                self.results[key] = np.empty(self.size, dtype=val.dtype)
             self.results[key][idx] = val
         self.remaining -= 1
 
@@ -243,7 +235,7 @@ class _Schedule:
         self.todo, self.batches, self.quick, self.out = todo, batches, quick, out
         self.pbar, self.fbar = pbar, fbar
         self.compute: deque[tuple[_Batch, np.ndarray]] = deque(
-            (b, idx) for b in sorted(batches, key=lambda b: -b.v_inertial.size)
+            (b, idx) for b in sorted(batches, key=lambda b: -b.size)
             for idx in b.chunks)
         self.renders: deque[int] = deque(b.index for b in batches if b.remaining == 0)
         self.done: list[_Done] = []
@@ -257,9 +249,7 @@ class _Schedule:
             return _render, args, self._rendered
         if self.compute:
             b, idx = self.compute.popleft()
-            args = (b.alpha[idx], b.beta[idx], b.amplitude[idx], b.v_inertial[idx],
-                    b.zeta[idx], b.eta_c[idx], b.a_x[idx], b.phase_x[idx],
-                    b.inplane_on[idx])
+            args = tuple(c[idx] for c in b.columns)
             return _solve_chunk, args, functools.partial(self._solved, b, idx)
         return None
 
@@ -310,6 +300,7 @@ def _warm_up() -> None:
     solve_points(0.5, 2.0, 0.5, 0.3)
     solve_points(1.0, math.inf, 1.5, 0.3)
     solve_points(0.5, 2.0, 0.5, -0.3, 0.05, 0.1, 0.5, 1.0)
+    solve_points(0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0)  # the 2-D kernel
     simulate(Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=1, samples_per_period=8)
 
 
@@ -347,7 +338,7 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     out.mkdir(parents=True, exist_ok=True)
     (out / "data").mkdir(exist_ok=True)
     batches = [_Batch.of(i, r, _CHUNK) for i, r in enumerate(todo)]
-    n_points = sum(b.v_inertial.size for b in batches)
+    n_points = sum(b.size for b in batches)
     bar_kw = {"disable": not progress, "dynamic_ncols": True, "leave": True}
     with tqdm(total=1, desc="compiling", unit="", **bar_kw) as bar:
         _warm_up()

@@ -165,12 +165,17 @@ def _fig14_series(quick: bool) -> tuple[Series, ...]:
         out.append(Series(key, al, be, amp, V, np.full(V.size, np.nan),
                           {"label": label, "v_c_forward": up, "v_c_backward": down},
                           a_x=a_x, phase_x=phase))
+    # across the sliding (the 2-D solver): no critical velocity, the slip keeps turning
+    V = _fig14_grid(quick, 0.0, 0.0)
+    out.append(Series("transverse", al, be, 0.0, V, np.full(V.size, np.nan),
+                      {"label": "transverse only", "v_c_forward": math.inf,
+                       "v_c_backward": math.inf}, a_y=A_X))
     return tuple(out)
 
 
 def _fig14_colors() -> dict[str, object]:
     cs = style.sequence_colors(3, "plasma", 0.1, 0.75)
-    return {"normal": "black", "longitudinal": "#2ca02c",
+    return {"normal": "black", "longitudinal": "#2ca02c", "transverse": "#17becf",
             **{f"combined,phase_x={p:.6g}": c for (_, p), c in zip(_FIG14_PHASES, cs,
                                                                    strict=True)}}
 
@@ -189,6 +194,10 @@ def _draw_directions(curves: Mapping[str, Curve]):
         V = s.v_inertial
         ax.plot(V, c.trusted_mu, color=col, lw=1.1, zorder=3)
         _mark_untrusted(ax, V, c, col)
+        if s.a_y > 0:  # no critical velocity across the sliding
+            handles.append(Line2D([], [], color=col, lw=1.1,
+                                  label=s.meta["label"] + r" (no $V_c$: 2-D solver)"))
+            continue
         for vc in (s.meta["v_c_forward"], -s.meta["v_c_backward"]):
             ax.axvline(vc, color=col, lw=0.6, ls=(0, (2, 2)), zorder=2)
         handles.append(Line2D([], [], color=col, lw=1.1, label=s.meta["label"]
@@ -199,6 +208,10 @@ def _draw_directions(curves: Mapping[str, Curve]):
             ls=(0, (1, 1.2)), zorder=4)
     handles.append(Line2D([], [], color=style.THEORY, lw=0.6, ls=(0, (1, 1.2)),
                           label=r"rigid body, longitudinal only: $(2/\pi)\arcsin(V/a_x)$"))
+    ax.plot(v, theory.kinematic_mu_transverse(v, A_X), color=colors["transverse"], lw=0.6,
+            ls=(0, (1, 1.2)), zorder=4)
+    handles.append(Line2D([], [], color=colors["transverse"], lw=0.6, ls=(0, (1, 1.2)),
+                          label=r"rigid body, transverse only: $(2/\pi)K(m)/\sqrt{1+\epsilon^2}$"))
     handles.append(Line2D([], [], color="0.3", lw=0.6, ls=(0, (2, 2)),
                           label=r"$V_c$ of continuous sliding (theory), $\pm$"))
     ax.axhline(0, color="0.7", lw=0.4, zorder=1)
@@ -210,7 +223,7 @@ def _draw_directions(curves: Mapping[str, Curve]):
     al, be, a = SYSTEM
     fig.suptitle(rf"$\alpha = {al:g}$, $\beta = {be:g}$ (undamped, elastic contact), "
                  rf"substrate: normal $\Delta F_N/F_{{N,0}} = {a:g}$, longitudinal "
-                 rf"$a_x = {A_X:g}$", fontsize=7.5)
+                 rf"$a_x = {A_X:g}$, transverse $a_y = {A_X:g}$", fontsize=7.5)
     fig.legend(handles=handles, loc="outside right center", fontsize=6, handlelength=2.0)
     return fig
 
@@ -218,8 +231,20 @@ def _draw_directions(curves: Mapping[str, Curve]):
 def _directions_checks(curves: Mapping[str, Curve]) -> tuple[list[Check], str]:
     al, be, a = SYSTEM
     where = f"Fig. 14, (alpha, beta, a) = {SYSTEM}, a_x = {A_X}"
-    checks = [_sliding_check(list(curves.values()), where),
-              _below_check(list(curves.values()), where)]
+    along = {k: c for k, c in curves.items() if c.series.a_y == 0}
+    checks = [_sliding_check(list(along.values()), where),
+              _below_check(list(along.values()), where)]
+    tra = curves["transverse"]
+    ok = tra.trusted
+    checks.append(Check("transverse only: never continuous sliding, largest |mu/mu0|",
+                        where + f", a = 0, a_y = {A_X} ({int(ok.sum())} trusted points)",
+                        float(np.max(np.abs(tra.mu_ratio[ok]))), "",
+                        "below 1: the slip keeps turning (theory: no critical velocity)"))
+    d, at = max_deviation(tra.lateral_ratio[ok], np.zeros(int(ok.sum())),
+                          [f"V = {v:.4g}" for v in tra.series.v_inertial[ok]])
+    checks.append(Check("transverse only: mean lateral force 0 (a = 0: the half-period "
+                        "shift is the mirror y -> -y)", where, d, at,
+                        "the 2-D solver's lateral_ratio at every trusted point"))
     # mirror symmetry: the phase-0 and phase-pi curves share one symmetric grid
     c0, cp = curves[f"combined,phase_x={0.0:.6g}"], curves[f"combined,phase_x={math.pi:.6g}"]
     V0, Vp = c0.series.v_inertial, cp.series.v_inertial
@@ -231,7 +256,7 @@ def _directions_checks(curves: Mapping[str, Curve]) -> tuple[list[Check], str]:
                         d, at, "the solver computes V < 0 as the mirror (phase_x + pi)"))
     # blocking forces against the static band of the stuck contact
     vals, refs, labels = [], [], []
-    for key, c in curves.items():
+    for key, c in along.items():
         s = c.series
         band = theory.inplane_static_mu_ratio(al, be, s.amplitude, s.a_x, s.phase_x)
         V = s.v_inertial
@@ -266,9 +291,11 @@ def inplane_directions(quick: bool = False) -> Recipe:
     params = (f"alpha = {al}, beta = {be}, zeta = 0, eta_c = 0, substrate oscillation "
               "(inplane_on = substrate)",
               f"normal: amplitude = {a}, a_x = 0; longitudinal: amplitude = 0, a_x = {A_X}; "
-              f"combined: amplitude = {a}, a_x = {A_X}, phase_x = 0, pi/2, pi",
+              f"combined: amplitude = {a}, a_x = {A_X}, phase_x = 0, pi/2, pi; "
+              f"transverse: amplitude = 0, a_y = {A_X} (the 2-D solver)",
               "v_inertial = v0 m omega/(mu0 F_N0), signed (V < 0: backward sliding); "
-              "kinematic = (2/pi) arcsin(V/a_x) (rigid body, longitudinal only); "
+              "kinematic = (2/pi) arcsin(V/a_x) (rigid body, longitudinal only) or "
+              "(2/pi) K(m)/sqrt(1 + eps^2) (transverse only); "
               "v_c_forward = V_c(phase_x), v_c_backward = V_c(phase_x + pi) "
               "(theory.inplane_critical_velocity)")
 
@@ -279,7 +306,9 @@ def inplane_directions(quick: bool = False) -> Recipe:
             n = c.series.size
             return {**_inplane_columns(c),
                     "kinematic": (theory.kinematic_mu_longitudinal(c.v_inertial, c.series.a_x)
-                                  if c.series.a_x > 0 else np.full(n, np.nan)),
+                                  if c.series.a_x > 0 else
+                                  theory.kinematic_mu_transverse(c.v_inertial, c.series.a_y)
+                                  if c.series.a_y > 0 else np.full(n, np.nan)),
                     "v_c_forward": np.full(n, c.series.meta["v_c_forward"]),
                     "v_c_backward": np.full(n, c.series.meta["v_c_backward"])}
 
@@ -295,11 +324,14 @@ def inplane_directions(quick: bool = False) -> Recipe:
                  f"elastic contact) with a normal oscillation $\\Delta F_N/F_{{N,0}} = {a:g}$ "
                  f"only, a longitudinal substrate oscillation $a_x = {A_X:g}$ "
                  "(velocity amplitude in units of $\\mu_0 F_{N,0}/(m\\omega)$) only, and both "
-                 "at the phases $\\varphi_x$ = 0, $\\pi/2$, $\\pi$. Dashed verticals: the "
+                 "at the phases $\\varphi_x$ = 0, $\\pi/2$, $\\pi$, and a transverse "
+                 f"oscillation $a_y = {A_X:g}$ only (the 2-D solver). Dashed verticals: the "
                  "critical velocities of continuous sliding $V_c(\\varphi_x)$ and "
-                 "$-V_c(\\varphi_x + \\pi)$ (theory); red dotted: the rigid body's kinematic "
-                 "law, which this soft pin does not reach. At $V \\to 0^\\pm$ the curves "
-                 "tend to the static band of the stuck contact (Fig. 16)."),
+                 "$-V_c(\\varphi_x + \\pi)$ (theory); dotted: the rigid body's kinematic "
+                 "laws (red along, cyan across), which this soft pin does not reach: its "
+                 "contact spring takes up most of the transverse motion ($k a_y < 1$). "
+                 "At $V \\to 0^\\pm$ the curves tend to the static band of the stuck "
+                 "contact (Fig. 16)."),
         series=_fig14_series(quick), render=render, parameters=params)
 
 

@@ -26,12 +26,18 @@ from ..schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE
 from ..solver import SolverSettings, converged, solve_points
 from ..validation import checked, checked_choice
 
-__all__ = ["CURVE_COLUMNS", "Curve", "Runner", "Series", "series_at_vbar",
-           "series_of_physical", "solve", "solve_points_on", "status_counts"]
+__all__ = ["CURVE_COLUMNS", "POINT_ARGS", "Curve", "Runner", "Series", "point_columns",
+           "series_at_vbar", "series_of_physical", "solve", "solve_points_on",
+           "status_counts"]
 
-#: ``runner(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, inplane_on,
-#: settings=...) -> dict of arrays`` (``inplane_on`` an array of ``"substrate"`` /
-#: ``"holder"``, one per point): :func:`solve_points_on` or one with its signature.
+#: The solver's point arguments, in the order of :func:`~vibrofriction.solver.solve_points`
+#: (the :class:`Series` fields of the same names).
+POINT_ARGS = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x",
+              "a_y", "phase_y")
+#: ``runner(*columns, inplane_on, settings=...) -> dict of arrays``: ``columns`` the
+#: :data:`POINT_ARGS` arrays of the points, ``inplane_on`` an array of ``"substrate"`` /
+#: ``"holder"``, one per point (:func:`point_columns`): :func:`solve_points_on` or one with
+#: its signature.
 Runner = Callable[..., dict[str, NDArray]]
 
 
@@ -43,7 +49,7 @@ class Series:
     (eq. 16) at each point, ``nan`` where it does not exist (cases III, IV);
     ``meta`` carries plotting information (labels, panel) and is written into
     the data tables.  ``V`` is signed (the solver's mirror solves ``V < 0``); ``V = 0``
-    with an in-plane oscillation (``a_x > 0``) is refused, as by the solver.
+    with a transverse oscillation (``a_y > 0``) is refused, as by the solver.
     """
 
     key: str
@@ -58,15 +64,17 @@ class Series:
     a_x: float = 0.0
     phase_x: float = 0.0
     inplane_on: str = "substrate"
+    a_y: float = 0.0
+    phase_y: float = 0.0
 
     def __post_init__(self) -> None:
         v = checked(f"series {self.key!r}: v_inertial", self.v_inertial)
         if v.ndim != 1:
             raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array, "
                              f"got shape {v.shape}")
-        if self.a_x > 0 and np.any(v == 0.0):
-            raise ValueError(f"series {self.key!r}: v_inertial = 0 with an in-plane "
-                             "oscillation (a_x > 0) is not computed (docs/inplane.md)")
+        if self.a_y > 0 and np.any(v == 0.0):
+            raise ValueError(f"series {self.key!r}: v_inertial = 0 with a transverse "
+                             "oscillation (a_y > 0) is not computed (docs/inplane.md)")
         checked_choice("inplane_on", self.inplane_on)
         object.__setattr__(self, "v_inertial", v)
         vb = np.broadcast_to(np.asarray(self.vbar, dtype=float), v.shape).copy()
@@ -176,16 +184,8 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         return {}
     run = runner or solve_points_on
     sizes = [s.size for s in series]
-    al = np.concatenate([np.full(s.size, s.alpha) for s in series])
-    be = np.concatenate([np.full(s.size, s.beta) for s in series])
-    am = np.concatenate([np.full(s.size, s.amplitude) for s in series])
-    V = np.concatenate([s.v_inertial for s in series])
-    ze = np.concatenate([np.full(s.size, s.zeta) for s in series])
-    et = np.concatenate([np.full(s.size, s.eta_c) for s in series])
-    ax = np.concatenate([np.full(s.size, s.a_x) for s in series])
-    px = np.concatenate([np.full(s.size, s.phase_x) for s in series])
-    on = np.concatenate([np.full(s.size, s.inplane_on, dtype=object) for s in series])
-    out = run(al, be, am, V, ze, et, ax, px, on, settings=settings)
+    columns, on = point_columns(series)
+    out = run(*columns, on, settings=settings)
     curves: dict[str, Curve] = {}
     start = 0
     for s, n in zip(series, sizes, strict=True):
@@ -195,23 +195,33 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     return curves
 
 
-def solve_points_on(alpha: NDArray, beta: NDArray, amplitude: NDArray, v_inertial: NDArray,
-                    zeta: NDArray, eta_c: NDArray, a_x: NDArray, phase_x: NDArray,
-                    inplane_on: NDArray, *, settings: SolverSettings | None = None
+def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.object_]]:
+    """The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
+    and their ``inplane_on``: the arguments of a :data:`Runner`."""
+    columns = [np.concatenate([s.v_inertial if n == "v_inertial" else
+                               np.full(s.size, getattr(s, n)) for s in series])
+               if series else np.empty(0) for n in POINT_ARGS]
+    on = (np.concatenate([np.full(s.size, s.inplane_on, dtype=object) for s in series])
+          if series else np.empty(0, dtype=object))
+    return columns, on
+
+
+def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
                     ) -> dict[str, NDArray]:
-    """:func:`solve_points` on 1-d arrays whose ``inplane_on`` differs from point to point
-    (one call per value); the default :data:`Runner`."""
+    """:func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
+    whose value differs from point to point (one call per value); the default
+    :data:`Runner`."""
+    *point, inplane_on = columns
     on = np.asarray(inplane_on, dtype=object)
     values = sorted(set(on.tolist()))
     if len(values) <= 1:
-        return solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
-                            inplane_on=values[0] if values else "substrate", settings=settings)
+        return solve_points(*point, inplane_on=values[0] if values else "substrate",
+                            settings=settings)
     out: dict[str, NDArray] = {}
     for value in values:
         idx = np.flatnonzero(on == value)
-        part = solve_points(*(np.asarray(x)[idx] for x in (
-            alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x)),
-            inplane_on=value, settings=settings)
+        part = solve_points(*(np.asarray(x)[idx] for x in point), inplane_on=value,
+                            settings=settings)
         for k, col in part.items():
             if k not in out:
                 out[k] = np.empty(on.size, dtype=col.dtype)
