@@ -7,6 +7,7 @@ docs/contact_geometry.md. Prints the tables quoted there.
 
 from __future__ import annotations
 
+import math
 import platform
 import subprocess
 import time
@@ -23,11 +24,26 @@ WINDOWS = dict(transient_periods=150, average_periods=30)
 REF = (1600, 1600)  # (springs, steps per period) of the "exact" run
 
 
+def closed_forms() -> None:
+    print("\n## closed forms (vibrofriction.theory): flat (n = inf), sphere (2), cone (1)")
+    print("| a | <F_N>/F_N0 flat, sphere, cone | static mu/mu0 flat, sphere, cone |"
+          " stiff law at vbar = 0.1, 0.3, 0.6: flat; sphere; cone |")
+    print("| --- | --- | --- | --- |")
+    for a in (0.2, 0.5, 0.8, 1.0, 1.5, 3.0):
+        ns = (math.inf, 2.0, 1.0)
+        mean = ", ".join(f"{theory.profile_mean_normal_force(a, n):.4f}" for n in ns)
+        static = ", ".join(f"{theory.profile_static_mu_ratio(a, n):.4f}" for n in ns)
+        stiff = "; ".join(", ".join(f"{theory.mu_ratio_stiff_profile(v, a, n):.4f}"
+                                    for v in (0.1, 0.3, 0.6)) for n in ns)
+        print(f"| {a} | {mean} | {static} | {stiff} |")
+
+
 def main() -> None:
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True).stdout.strip()
     print(f"# {time.strftime('%Y-%m-%d')}, commit {commit}, {platform.machine()} "
           f"{platform.python_version()}, windows {WINDOWS}")
+    closed_forms()
     for label, alpha, beta, a, V, n, zeta in POINTS:
         ref = mdr_mean(alpha, beta, a, V, n, REF[0], REF[1], zeta=zeta, **WINDOWS).mu_ratio
         print(f"\n## {label}: alpha={alpha}, beta={beta}, a={a}, V={V}, n={n}, zeta={zeta}; "
