@@ -18,6 +18,18 @@ with the effective moduli of the two bodies (Johnson, *Contact Mechanics*, ch. 7
 
 For two bodies of the same material the ratio ``k_x/k_z = 2(1 - nu)/(2 - nu)``
 depends on Poisson's ratio only (0.8 at ``nu = 1/3``), the Mindlin ratio the paper uses.
+
+**Real contact geometry** by the method of dimensionality reduction (MDR, Popov & Hess;
+docs/contact_geometry.md): an axisymmetric tip ``z = c r^n`` (:class:`PowerLaw`;
+:class:`Cone` ``n = 1``; :class:`Sphere` ``n = 2, c = 1/(2R)``; :class:`FlatPunch` the
+limit ``n -> inf``) becomes a row of independent springs on the 1-D profile
+``g(x) = kappa_n c |x|^n``, ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)``, each of
+normal stiffness ``E* dx`` and tangential stiffness ``G*_mdr dx``, where
+``G*_mdr = 4 G*`` (:func:`mdr_shear_modulus`: ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, the
+issue's convention, so that ``2 G*_mdr a = 8 G* a``). At the indentation ``d``:
+contact radius ``a = (d/(kappa_n c))^{1/n}``, normal force
+``F = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``, normal stiffness ``dF/dd = 2 E* a``,
+tangential stiffness of the fully stuck contact ``2 G*_mdr a``.
 """
 
 from __future__ import annotations
@@ -25,10 +37,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from .validation import checked
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["FlatPunch", "Material", "Sphere", "effective_modulus", "effective_shear_modulus",
-           "rigid"]
+from .validation import as_float_or_array, checked
+
+__all__ = ["Cone", "FlatPunch", "Material", "PowerLaw", "Sphere", "effective_modulus",
+           "effective_shear_modulus", "mdr_kappa", "mdr_shear_modulus", "rigid"]
 
 
 @dataclass(frozen=True)
@@ -69,8 +84,96 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
     return 1.0 / inv
 
 
+def mdr_shear_modulus(a: Material, b: Material) -> float:
+    """``G*`` of the MDR springs (Pa): ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e.
+    ``4 *`` :func:`effective_shear_modulus`; the fully stuck contact of radius ``a`` has
+    the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``, Mindlin)."""
+    return 4.0 * effective_shear_modulus(a, b)
+
+
+def mdr_kappa(exponent: float) -> float:
+    """The MDR factor ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)`` of the profile
+    ``z = c r^n`` (``n > 0``; 2 for a sphere, ``pi/2`` for a cone, ``inf`` for ``n = inf``).
+    """
+    n = float(checked("exponent", exponent, minimum=0.0, strict=True, allow_inf=True))
+    if math.isinf(n):
+        return math.inf
+    return math.exp(0.5 * math.log(math.pi) + math.lgamma(0.5 * n + 1.0)
+                    - math.lgamma(0.5 * n + 0.5))
+
+
+class _MDR:
+    """The MDR of an axisymmetric profile ``z = c r^n`` (SI units throughout).
+
+    Subclasses give ``exponent`` (``n``), ``coefficient`` (``c``, m^(1-n)), ``pin`` and
+    ``counterface``; the flat punch overrides what its limit ``n -> inf`` changes.
+    """
+
+    pin: Material
+    counterface: Material
+
+    @property
+    def exponent(self) -> float:
+        raise NotImplementedError
+
+    @property
+    def coefficient(self) -> float:
+        raise NotImplementedError
+
+    @property
+    def kappa(self) -> float:
+        """``kappa_n`` of :func:`mdr_kappa`."""
+        return mdr_kappa(self.exponent)
+
+    @property
+    def e_star(self) -> float:
+        """``E*`` of the pair, Pa (:func:`effective_modulus`)."""
+        return effective_modulus(self.pin, self.counterface)
+
+    @property
+    def g_star(self) -> float:
+        """``G*_mdr`` of the pair, Pa (:func:`mdr_shear_modulus`)."""
+        return mdr_shear_modulus(self.pin, self.counterface)
+
+    def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
+        """The MDR profile ``g(x) = kappa_n c |x|^n``, m (``x`` in m)."""
+        x = np.abs(checked("x", x))
+        return as_float_or_array(self.kappa * self.coefficient * x**self.exponent)
+
+    def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m; 0 for
+        ``d <= 0``."""
+        d = checked("indentation", indentation)
+        dp = np.maximum(d, 0.0)
+        return as_float_or_array((dp / (self.kappa * self.coefficient)) ** (1.0 / self.exponent))
+
+    def normal_force(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """``F(d) = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``, N; 0 for ``d <= 0``."""
+        d = np.maximum(checked("indentation", indentation), 0.0)
+        n = self.exponent
+        a = np.asarray(self.radius_at(d))
+        return as_float_or_array(2.0 * self.e_star * d * a * n / (n + 1.0))
+
+    def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
+        """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m: the inverse of
+        :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``."""
+        F = checked("normal_load", normal_load, minimum=0.0)
+        n = self.exponent
+        base = F * (n + 1.0) / (2.0 * n * self.e_star)
+        return as_float_or_array(base ** (n / (n + 1.0))
+                                 * (self.kappa * self.coefficient) ** (1.0 / (n + 1.0)))
+
+    def normal_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """``dF/dd = 2 E* a(d)``, N/m."""
+        return as_float_or_array(2.0 * self.e_star * np.asarray(self.radius_at(indentation)))
+
+    def tangential_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """Tangential stiffness of the fully stuck contact, ``2 G*_mdr a(d)``, N/m."""
+        return as_float_or_array(2.0 * self.g_star * np.asarray(self.radius_at(indentation)))
+
+
 @dataclass(frozen=True)
-class _Circular:
+class _Circular(_MDR):
     """A circular contact of radius ``a``: ``k_z = 2 E* a``, ``k_x = 8 G* a``."""
 
     radius: float
@@ -100,6 +203,40 @@ class FlatPunch(_Circular):
         checked("normal_load", normal_load, minimum=0.0, strict=True)
         return self.radius
 
+    @property
+    def exponent(self) -> float:
+        """``inf``: the limit ``n -> inf`` of ``z = (r/A)^n h``."""
+        return math.inf
+
+    @property
+    def coefficient(self) -> float:
+        """Not defined for the limit; the flat punch's methods do without it."""
+        raise AttributeError("a flat punch has no coefficient c (the limit n -> inf)")
+
+    @property
+    def kappa(self) -> float:
+        return math.inf
+
+    def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
+        """``g(x) = 0`` for ``|x| <= A``, ``inf`` beyond."""
+        x = np.abs(checked("x", x))
+        return as_float_or_array(np.where(x <= self.radius, 0.0, np.inf))
+
+    def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """``A`` for ``d > 0``, 0 otherwise."""
+        d = checked("indentation", indentation)
+        return as_float_or_array(np.where(d > 0.0, self.radius, 0.0))
+
+    def normal_force(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
+        """``F = 2 E* A max(0, d)``."""
+        d = np.maximum(checked("indentation", indentation), 0.0)
+        return as_float_or_array(2.0 * self.e_star * self.radius * d)
+
+    def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
+        """``d = F/(2 E* A)``."""
+        F = checked("normal_load", normal_load, minimum=0.0)
+        return as_float_or_array(F / (2.0 * self.e_star * self.radius))
+
 
 @dataclass(frozen=True)
 class Sphere(_Circular):
@@ -110,6 +247,91 @@ class Sphere(_Circular):
         load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
         e_star = effective_modulus(self.pin, self.counterface)
         return (3.0 * load * self.radius / (4.0 * e_star)) ** (1.0 / 3.0)
+
+    @property
+    def exponent(self) -> float:
+        """2 (a paraboloid: Hertz)."""
+        return 2.0
+
+    @property
+    def coefficient(self) -> float:
+        """``c = 1/(2R)``, 1/m."""
+        return 0.5 / self.radius
+
+
+class _Loaded(_MDR):
+    """A profile whose contact radius follows the load (the MDR throughout)."""
+
+    def contact_radius(self, normal_load: float) -> float:
+        """The contact radius at the load ``F > 0``, m."""
+        load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
+        return float(self.radius_at(self.indentation(load)))
+
+    def stiffness(self, normal_load: float) -> tuple[float, float]:
+        """``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
+        normal stiffness and the fully stuck tangential one)."""
+        a = self.contact_radius(normal_load)
+        return 2.0 * self.e_star * a, 2.0 * self.g_star * a
+
+
+@dataclass(frozen=True)
+class PowerLaw(_Loaded):
+    """An axisymmetric tip ``z = c r^n``: ``c > 0`` in m^(1-n), exponent ``0 < n < inf``."""
+
+    c: float
+    n: float
+    pin: Material
+    counterface: Material
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "c", float(checked("c", self.c, minimum=0.0, strict=True)))
+        object.__setattr__(self, "n", float(checked("n", self.n, minimum=0.0, strict=True)))
+
+    @property
+    def exponent(self) -> float:
+        return self.n
+
+    @property
+    def coefficient(self) -> float:
+        return self.c
+
+
+@dataclass(frozen=True)
+class Cone(_Loaded):
+    """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis): the power
+    law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
+    ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`."""
+
+    slope: float
+    pin: Material
+    counterface: Material
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "slope", float(checked("slope", self.slope, minimum=0.0,
+                                                        strict=True)))
+
+    @classmethod
+    def from_half_angle(cls, half_angle: float, pin: Material, counterface: Material) -> Cone:
+        """The cone of half-angle ``theta`` (radians, ``0 < theta < pi/2``)."""
+        theta = float(checked("half_angle", half_angle))
+        if not 0.0 < theta < math.pi / 2:
+            raise ValueError(f"half_angle must be in (0, pi/2) radians, got {half_angle!r}")
+        return cls(1.0 / math.tan(theta), pin, counterface)
+
+    @property
+    def exponent(self) -> float:
+        """1."""
+        return 1.0
+
+    @property
+    def coefficient(self) -> float:
+        """``c = slope = cot(theta)``."""
+        return self.slope
+
+    @property
+    def half_angle(self) -> float:
+        """``theta = arctan(1/slope)``, radians."""
+        return math.atan(1.0 / self.slope)
 
 
 def rigid() -> Material:

@@ -59,10 +59,14 @@ __all__ = [
     "kinematic_mu_transverse",
     "liftoff_phases",
     "mean_normal_force",
+    "profile_mean_normal_force",
+    "profile_static_mu_ratio",
     "mu_ratio_soft",
     "mu_ratio_soft_corrected",
     "mu_ratio_stiff",
     "mu_ratio_stiff_exact",
+    "mu_ratio_stiff_flat",
+    "mu_ratio_stiff_profile",
     "resonant_damped_mu_ratio",
     "resonant_plateau",
     "resonant_plateau_exact",
@@ -850,3 +854,181 @@ def inplane_regime(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     out[inside & symmetric] = 0
     out[inside & ~symmetric] = 1
     return out
+
+
+# --------------------------------------------------------------- real contact geometry (MDR)
+#: ``n = profile_exponent`` of ``z = c r^n``: ``0 < n <= inf`` (``inf``: the flat punch).
+def _exponent(profile_exponent: ArrayLike) -> NDArray[np.float64]:
+    return checked("profile_exponent", profile_exponent, minimum=0.0, strict=True,
+                   allow_inf=True)
+
+
+def _profile_mean_force(a: float, n: float) -> float:
+    """``<max(0, 1 + a cos tau)^p>``, ``p = 1 + 1/n``."""
+    if math.isinf(n) or a == 0.0:
+        return 1.0 if a <= 1.0 else (math.acos(-1.0 / a) + math.sqrt(a * a - 1.0)) / math.pi
+    p = 1.0 + 1.0 / n
+    if a <= 1.0:
+        from scipy.special import hyp2f1
+
+        return float(hyp2f1(-0.5 * p, 0.5 * (1.0 - p), 1.0, a * a))
+    from scipy.integrate import quad
+
+    theta = math.acos(-1.0 / a)
+    return quad(lambda t: (1.0 + a * math.cos(t)) ** p, 0.0, theta, epsabs=0.0,
+                epsrel=1e-13, limit=200)[0] / math.pi
+
+
+def profile_mean_normal_force(amplitude: ArrayLike, profile_exponent: ArrayLike) -> FloatOrArray:
+    r"""``<F_N>/F_N0`` for the indentation ``d = d0 (1 + a cos tau)`` imposed on ``z = c r^n``.
+
+    The MDR force is ``F(d) = F_N0 (d/d0)^p``, ``p = 1 + 1/n`` (0 for ``d <= 0``), so
+
+    .. math:: \frac{\langle F_N\rangle}{F_{N0}} = \langle \max(0, 1 + a\cos\tau)^p\rangle
+              = {}_2F_1\!\left(-\tfrac p2, \tfrac{1 - p}{2}; 1; a^2\right) \quad (a \le 1),
+
+    (the binomial series averaged term by term, ``<cos^{2k}> = (2k)!/(4^k k!^2)``) and
+    ``(1/pi) int_0^theta (1 + a cos tau)^p dtau``, ``cos theta = -1/a``, for a jumping
+    indenter (``a > 1``). A sphere (``p = 3/2``) gains ``3 a^2/16`` to leading order; the
+    flat punch (``n = inf``, ``p = 1``) is :func:`mean_normal_force`.
+    """
+    a = _valid("amplitude", amplitude)
+    n = _exponent(profile_exponent)
+    return as_float_or_array(np.vectorize(_profile_mean_force, otypes=[float])(a, n))
+
+
+def profile_static_mu_ratio(amplitude: ArrayLike, profile_exponent: ArrayLike) -> FloatOrArray:
+    r"""Static limit ``mu(v0 -> 0+)/mu0`` for the profile ``z = c r^n``: eq. (2)'s analogue.
+
+    The pulling force creeps up until the whole contact slides at the smallest normal
+    force of the cycle, ``F(d0 (1 - a)) = F_N0 (1 - a)^p`` (``p = 1 + 1/n``), and stays
+    there, so ``mu/mu0 = (1 - a)^p / <(1 + a cos tau)^p>``
+    (:func:`profile_mean_normal_force`) for ``a < 1`` and 0 for a jumping indenter
+    (``a >= 1``). ``n = inf`` gives :func:`static_mu_ratio`, ``1 - a``.
+    """
+    a = _valid("amplitude", amplitude)
+    n = _exponent(profile_exponent)
+    a, n = np.broadcast_arrays(a, n)
+    p = 1.0 + 1.0 / n
+    low = np.where(a < 1.0, np.maximum(1.0 - a, 0.0) ** p, 0.0)
+    return as_float_or_array(low / np.asarray(profile_mean_normal_force(a, n)))
+
+
+def _stiff_element(c: float, vbar: float) -> tuple[float, float]:
+    """Stiff limit of one flat element with ``n = max(0, c + cos tau)``, pulled at the
+    rate ``f' = vbar`` while it sticks: ``(deficit, <n>)``, ``<f> = <n> - deficit/(2 pi)``.
+
+    Stick starts where ``n' = -sin tau`` rises through ``vbar`` (``tau1 = pi + asin vbar``)
+    or, if the element is out of contact then, at touch-down ``2 pi - theta``
+    (``cos theta = -c``) with ``f = 0`` provided ``n' = sin theta > vbar`` there (else the
+    element never sticks); it ends where the stick line meets ``n`` again.
+    """
+    if c <= -1.0:
+        return 0.0, 0.0
+    if c >= 1.0:
+        theta, n_mean = math.pi, c
+    else:
+        theta = math.acos(-c)
+        n_mean = (c * theta + math.sin(theta)) / math.pi
+    if vbar >= 1.0:
+        return 0.0, n_mean
+    if vbar == 0.0:  # f stays at the smallest normal force of the cycle
+        return 2.0 * math.pi * (n_mean - max(0.0, c - 1.0)), n_mean
+    s = math.sqrt(1.0 - vbar * vbar)
+    if c >= s:
+        tau_s = math.pi + math.asin(vbar)
+    elif c > -s:
+        tau_s = 2.0 * math.pi - theta
+    else:
+        return 0.0, n_mean
+    from scipy.optimize import brentq
+
+    def gap(t: float) -> float:  # n - stick line: > 0 while the element sticks
+        return math.cos(tau_s + t) - math.cos(tau_s) - vbar * t
+
+    t_max = 2.0 * math.pi - math.asin(vbar) - tau_s  # n' falls through vbar: gap largest
+    t_min = t_max + math.pi + 2.0 * math.asin(vbar)  # n' rises through it: gap smallest
+    t2 = brentq(gap, t_max, t_min, xtol=1e-15, rtol=1e-15)
+    deficit = (math.sin(tau_s + t2) - math.sin(tau_s) - t2 * math.cos(tau_s)
+               - 0.5 * vbar * t2 * t2)
+    return deficit, n_mean
+
+
+def _stiff_flat(vbar: float, a: float) -> float:
+    if a == 0.0:
+        return 1.0
+    deficit, n_mean = _stiff_element(1.0 / a, vbar)
+    return 1.0 - deficit / (2.0 * math.pi * n_mean)
+
+
+def mu_ratio_stiff_flat(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
+    r"""The stiff limit of a flat contact, jumping included: :func:`mu_ratio_stiff_exact`
+    for ``a <= 1``, extended to ``a > 1``.
+
+    In units of ``dF_N``, ``n = max(0, c + cos tau)`` with ``c = 1/a`` and ``f' = vbar`` in
+    stick. A jumping contact (``c < 1``) lands at ``tau_on = 2 pi - theta``,
+    ``cos theta = -c``, with ``f = 0``: if ``tau_on`` comes after ``tau1 = pi + asin vbar``
+    (i.e. ``c < sqrt(1 - vbar^2)``) stick starts there, ``tau_s = tau_on``, else at
+    ``tau_s = tau1`` as without jumping. With ``tau2`` the next meeting of the stick line
+    ``f = n(tau_s) + vbar (tau - tau_s)`` with ``n``, ``d = tau2 - tau_s``:
+
+    .. math:: \frac{\mu}{\mu_0} = 1 - \frac{\sin\tau_2 - \sin\tau_s - d\cos\tau_s
+              - \bar v d^2/2}{2\pi \langle n\rangle},\quad
+              \langle n\rangle = (c\,\theta + \sin\theta)/\pi,
+
+    0 at ``vbar = 0`` for ``a >= 1`` (eq. 2), 1 for ``vbar >= 1``.
+    """
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude)
+    return as_float_or_array(np.vectorize(_stiff_flat, otypes=[float])(v, a))
+
+
+def _stiff_profile(vbar: float, a: float, n: float) -> float:
+    if math.isinf(n):
+        return _stiff_flat(vbar, a)
+    if a == 0.0 or vbar >= 1.0:
+        return 1.0
+    from scipy.integrate import quad
+
+    # elements x/a0 = xi in (0, (1 + a)^(1/n)]: c(xi) = (1 - xi^n)/a in units of dd;
+    # sum of their <n>: int (1 + a cos tau - xi^n)_+ dxi / a = n M(a) / ((n + 1) a)
+    total_n = n * _profile_mean_force(a, n) / ((n + 1.0) * a)
+    if vbar == 0.0:
+        return (max(0.0, 1.0 - a) ** (1.0 + 1.0 / n)) / _profile_mean_force(a, n)
+    s = math.sqrt(1.0 - vbar * vbar)
+    xi_s = max(0.0, 1.0 - a * s) ** (1.0 / n)  # inside: stick starts at tau1 (c >= s)
+    xi_m = (1.0 + a * s) ** (1.0 / n)  # outside: the element never sticks (c <= -s)
+    core = _stiff_element(max(s, 1.0), vbar)[0] * xi_s  # same deficit for every c >= s
+
+    def deficit(xi: float) -> float:
+        return _stiff_element((1.0 - xi**n) / a, vbar)[0]
+
+    ring = quad(deficit, xi_s, xi_m, epsabs=1e-13, epsrel=1e-11, limit=200)[0]
+    return 1.0 - (core + ring) / (2.0 * math.pi * total_n)
+
+
+def mu_ratio_stiff_profile(vbar: ArrayLike, amplitude: ArrayLike,
+                           profile_exponent: ArrayLike) -> FloatOrArray:
+    r"""The stiff-system law of Part I for the curved profile ``z = c r^n`` (MDR).
+
+    In a stiff system the body moves at the pulling velocity and every MDR spring at
+    ``x`` is an independent flat element (:func:`mu_ratio_stiff_flat`) with its own
+    amplitude ``dd/(d0 - g(x))`` and the same dimensionless velocity
+    ``vbar = v0 G*_mdr/(mu0 E* omega dd)`` (scaled: ``(beta - alpha) V n/((n + 1) a)``;
+    the flat punch's ``k V/a``). With ``xi = x/a0`` and ``c(xi) = (1 - xi^n)/a`` the
+    element's mean force in units of ``E* dd dx`` is ``<n>(c) - D(c, vbar)/(2 pi)``, so
+
+    .. math:: \frac{\mu}{\mu_0} = 1 - \frac{(n + 1) a}{2\pi n M(a)}
+              \int_0^{(1 + a)^{1/n}} D\big(c(\xi), \bar v\big)\,d\xi,
+
+    ``M(a)`` of :func:`profile_mean_normal_force`. ``D`` is the same for every element
+    with ``c >= sqrt(1 - vbar^2)`` (the core), 0 for ``c <= -sqrt(1 - vbar^2)`` (the outer
+    ring that slides whenever it touches); between them the ring of jumping elements is
+    integrated by quadrature. It is :func:`profile_static_mu_ratio` at ``vbar = 0``, 1 for
+    ``vbar >= 1`` (continuous sliding: the same ``vbar = 1`` for every profile), and
+    :func:`mu_ratio_stiff_flat` for ``n = inf``.
+    """
+    v = _valid("vbar", vbar, _ANY_VBAR)
+    a = _valid("amplitude", amplitude)
+    n = _exponent(profile_exponent)
+    return as_float_or_array(np.vectorize(_stiff_profile, otypes=[float])(v, a, n))

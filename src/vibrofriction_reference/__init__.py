@@ -57,6 +57,10 @@ oscillating along and across the sliding direction): :func:`inplane_run` and
 :func:`inplane_mean` (:mod:`.inplane`, ``solve_ivp`` phase by phase with events, written
 from the model statement of ``docs/inplane_reference.md``; a finite contact only).
 
+The MDR contact of issue 21 (a row of springs on the 1-D profile of ``z = c r^n``, each
+with its own Coulomb law): :func:`mdr_mean` and :func:`mdr_reference` (:mod:`.mdr`,
+``docs/contact_geometry.md``), the latter with an error bar from two resolutions.
+
 Neither peer detects a periodic orbit: each averages over a fixed window after a
 fixed transient, from a stated initial state. Compare them (and the main
 solver) at the same transient/average windows when checking discretisation
@@ -76,6 +80,7 @@ from .fixed_step import (
     return_mapping_periods,
 )
 from .inplane import InplaneMean, InplaneRun, inplane_mean, inplane_run
+from .mdr import MDRMean, MDRReference, mdr_mean, mdr_reference
 from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
 
 __all__ = [
@@ -83,11 +88,15 @@ __all__ = [
     "INITIAL_SLIDING",
     "InplaneMean",
     "InplaneRun",
+    "MDRMean",
+    "MDRReference",
     "PeerRun",
     "PeriodMeans",
     "ReferenceHistory",
     "inplane_mean",
     "inplane_run",
+    "mdr_mean",
+    "mdr_reference",
     "return_mapping_history",
     "return_mapping_mu",
     "return_mapping_periods",
