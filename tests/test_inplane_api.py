@@ -150,7 +150,7 @@ def test_cli_mu_inplane_signed_velocity() -> None:
     assert "a_x=0.5 phase_x=0 on the substrate (critical velocity" in text.stdout
     bad = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--du-x", "1e-6",
                "--v-inertial", "1")
-    assert bad.returncode == 2 and "--du-x (m) needs a physical set-up" in bad.stderr
+    assert bad.returncode == 2 and "--du-x, --du-y (m) need a physical set-up" in bad.stderr
 
 
 def test_cli_mu_physical_inplane() -> None:
