@@ -136,7 +136,7 @@ def test_mu_is_one_above_the_critical_velocity_and_below_one_under_it(on) -> Non
     alpha, beta, a, zeta, eta, a_x = SLIDING_SYSTEMS[0]
     for phase in PHASES:
         vc = float(theory.inplane_critical_velocity(alpha, beta, a, a_x, phase, zeta, eta, on))
-        system = vf.Dimensionless(alpha, beta, a, zeta, eta, a_x, phase, on)
+        system = vf.Dimensionless(alpha, beta, a, zeta, eta, a_x, phase, inplane_on=on)
         above = vf.friction_coefficient(system, v_inertial=1.01 * vc)
         assert above.status == Status.SLIDING and above.mu_ratio == 1.0 and above.error == 0.0
         below = vf.friction_coefficient(system, v_inertial=0.95 * vc)
@@ -209,7 +209,7 @@ def test_energy_balance_with_inplane_oscillation(p, zeta, eta, on):
     """Work of the pulled end and of the substrate = change of stored energy + pin,
     contact and friction dissipation at every sample, in the laboratory frame."""
     al, be, a, V = p
-    s = vf.Dimensionless(al, be, a, zeta, eta, 0.6, 1.1, on)
+    s = vf.Dimensionless(al, be, a, zeta, eta, 0.6, 1.1, inplane_on=on)
     h = vf.simulate(s, v_inertial=V, periods=3.0, samples_per_period=200)
     lhs = h.work_input - h.dissipated_pin - h.dissipated_contact - h.dissipated_friction
     rhs = h.stored_energy() - h.stored_energy()[0]

@@ -33,7 +33,7 @@ HOLDS = [
 
 
 def _system(p: tuple) -> Dimensionless:
-    return Dimensionless(*p)
+    return Dimensionless(*p[:-1], inplane_on=p[-1])
 
 
 def _preload(p: tuple, force: float) -> tuple[float, float, float]:
