@@ -90,13 +90,9 @@ def main(which: list[str]) -> None:
                              "&v_min=-1.5&v_max=1.5"), "inplane")
             if "path" in which:
                 page = opened(browser, url + "?a_y=0.5&phase_y=0.3&eta_c=0.1&axis=V"
-                              "&v_max=1.2&points=40")
-                top = page.locator("canvas").nth(1).bounding_box()["y"]
-                page.screenshot(path=IMG / "explorer_path.png", full_page=True,
-                                clip={"x": 350, "y": top - 40, "width": WIDTH - 350,
-                                      "height": 760})
-                page.close()
-                print(IMG / "explorer_path.png")
+                              "&v_min=0.05&v_max=1.2&points=40")
+                time.sleep(1.0)
+                shoot(page, "path")
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:

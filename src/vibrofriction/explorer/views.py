@@ -147,7 +147,7 @@ class HistoryView:
         self.lines = _empty(t=1, f=1, n=1)
         self.lateral = _empty(t=1, f_y=1)
         self.path = _empty(x=1, y=1)
-        self.path_points = _empty(x=1, y=1, t=1, color=1, phase=1)
+        self.path_points = _empty(x=1, y=1, t=1, color=1, phase=1, size=1)
         self.spans = _empty(left=1, right=1, bottom=1, top=1, color=1, phase=1)
         self.events = _empty(t=1, y=1, kind=1)
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
@@ -173,11 +173,12 @@ class HistoryView:
                       title="contact point on the substrate", toolbar_location="above",
                       x_axis_label="t/T (drive periods)", y_axis_label="x_c")
         path.line("x", "y", source=self.path, color="#bbbbbb", line_width=1)
-        dots = path.scatter("x", "y", source=self.path_points, color="color", size=3,
+        dots = path.scatter("x", "y", source=self.path_points, color="color", size="size",
                             legend_field="phase")
         path.add_tools(HoverTool(renderers=[dots], tooltips=[
             ("t/T", "@t{0.000}"), ("phase", "@phase"), ("(x, y)", "(@x{0.0000}, @y{0.0000})")]))
-        _legend_outside(path, "top_left")
+        path.add_layout(path.legend[0], "right")
+        path.legend.label_text_font_size = "8pt"
         path.visible = False
         self.path_figure = path
 
@@ -188,7 +189,6 @@ class HistoryView:
         self.lateral.data = {"t": t if f_y is not None else [],
                              "f_y": f_y if f_y is not None else []}
         self._show_path(h)
-        _legend_follows_data([self.figure])
         lo = min(0.0, float(np.min(f)), float(np.min(n)))
         hi = max(float(np.max(f)), float(np.max(n)))
         if f_y is not None:
@@ -209,6 +209,8 @@ class HistoryView:
         self.figure.x_range.end = float(t[-1])
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
+        _legend_follows_data([self.figure])  # no f_y entry in 1-D
+        self.figure.legend.nrows = 2 if f_y is not None else "auto"  # f_y: one more entry
 
     def _show_path(self, h: dict) -> None:
         """The contact point on the substrate, or nothing (and hidden) without an
@@ -217,7 +219,8 @@ class HistoryView:
         fig = self.path_figure
         if xc is None:
             self.path.data = {"x": [], "y": []}
-            self.path_points.data = {"x": [], "y": [], "t": [], "color": [], "phase": []}
+            self.path_points.data = {"x": [], "y": [], "t": [], "color": [], "phase": [],
+                                     "size": []}
             fig.visible = False
             return
         t = h["t"]
@@ -225,14 +228,14 @@ class HistoryView:
         phase = [str(p) for p in h["phase"]]
         self.path.data = {"x": x, "y": y}
         self.path_points.data = {"x": x, "y": y, "t": t, "phase": phase,
-                                 "color": [_PATH_COLORS.get(p, "#000000") for p in phase]}
+                                 "color": [_PATH_COLORS.get(p, "#000000") for p in phase],
+                                 # stick stands still: larger dots, so that it shows
+                                 "size": [8 if p == "stick" else 3 for p in phase]}
         if yc is not None:
-            fig.title.text = ("contact point on the substrate: its path (x_c, y_c) in the "
-                              "plane (it stands still in stick)")
+            fig.title.text = "contact point's path on the substrate (still in stick)"
             fig.xaxis.axis_label, fig.yaxis.axis_label = "x_c", "y_c"
         else:
-            fig.title.text = ("contact point on the substrate: x_c against time (flat in "
-                              "stick)")
+            fig.title.text = "contact point on the substrate: x_c (flat in stick)"
             fig.xaxis.axis_label, fig.yaxis.axis_label = "t/T (drive periods)", "x_c"
         fig.visible = True
 
