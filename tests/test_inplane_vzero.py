@@ -33,7 +33,7 @@ HOLDS = [
 
 
 def _system(p: tuple) -> Dimensionless:
-    return Dimensionless(*p)
+    return Dimensionless(*p[:7], inplane_on=p[7])  # a_y, phase_y come before inplane_on
 
 
 def _preload(p: tuple, force: float) -> tuple[float, float, float]:
