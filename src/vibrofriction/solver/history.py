@@ -199,7 +199,7 @@ def simulate(
     v0: float | None = None,
     periods: float = 5.0,
     samples_per_period: int = 400,
-    initial: str | SectionState = "sliding",
+    initial: str | SectionState | NDArray[np.float64] = "sliding",
     settings: SolverSettings | None = None,
 ) -> History:
     """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
