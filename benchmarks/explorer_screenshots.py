@@ -4,10 +4,12 @@ Starts ``vibrofriction explore`` on a free port (as bench_explorer.py does) and 
 ``explorer_default.png`` (the default view), ``explorer_inplane.png`` (a combined
 normal + longitudinal drive over signed velocities), ``explorer_history.png`` (a point's time
 history after a click on the curve), ``explorer_map.png`` (the case map, soft contact),
-``explorer_error.png`` (the inline message for a typed ``beta`` below ``alpha``) and
-``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted).
+``explorer_error.png`` (the inline message for a typed ``beta`` below ``alpha``),
+``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted) and
+``explorer_path.png`` (a transverse drive: the history with ``f_y`` and the contact point's
+path in the plane, cropped to the history).
 
-Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit]
+Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path]
 """
 
 from __future__ import annotations
@@ -86,6 +88,11 @@ def main(which: list[str]) -> None:
             if "inplane" in which:
                 shoot(opened(browser, url + "?a_x=1&phase_x=3.1&zeta=0.05&eta_c=0.1&axis=V"
                              "&v_min=-1.5&v_max=1.5"), "inplane")
+            if "path" in which:
+                page = opened(browser, url + "?a_y=0.5&phase_y=0.3&eta_c=0.1&axis=V"
+                              "&v_min=0.05&v_max=1.2&points=40")
+                time.sleep(1.0)
+                shoot(page, "path")
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:
@@ -111,4 +118,5 @@ def main(which: list[str]) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit"])
+    main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit",
+                             "path"])

@@ -11,6 +11,7 @@ import vibrofriction as vf
 from vibrofriction.explorer import compute, exports
 from vibrofriction.explorer.messages import GENERAL, field_of, read_inputs
 from vibrofriction.explorer.state import State
+from vibrofriction.explorer.views import HistoryView
 
 
 def test_import_vibrofriction_does_not_import_panel():
@@ -321,3 +322,29 @@ def test_inplane_mount_and_signed_velocity_axis():
     assert back.inplane_on == "substrate" and back.alpha == 0.3
     h = compute.history(state.with_(inplane_on="holder"), -0.3)
     assert h["mu_ratio"] < 0 and h["trusted"] and len(h["t"]) > 10
+
+
+def test_history_shows_the_contact_point_with_an_inplane_oscillation():
+    """Normal-only: no contact point (the view unchanged); 1-D in-plane: x_c(t); 2-D: the
+    path (x_c, y_c) and f_y.  The contact point stands still on the substrate in stick
+    and moves in slip."""
+    assert compute.history(State(), 0.3)["xc"] is None
+    one = compute.history(State(a_x=0.4, phase_x=0.9, eta_c=0.1, axis="V"), 0.3)
+    two = compute.history(State(a_y=0.5, phase_y=0.3, eta_c=0.1, axis="V"), 0.3)
+    assert one["yc"] is None and one["f_y"] is None and len(one["xc"]) == len(one["t"])
+    assert two["yc"] is not None and len(two["yc"]) == len(two["t"])
+    assert np.max(np.abs(two["f_y"])) > 0.1
+    for h in (one, two):
+        for lo, hi, phase in h["spans"]:
+            inside = (h["t"] >= lo) & (h["t"] <= hi)
+            moved = np.ptp(h["xc"][inside]) + (np.ptp(h["yc"][inside])
+                                                if h["yc"] is not None else 0.0)
+            if phase == "stick":
+                assert moved < 1e-7, (lo, hi)
+            elif hi - lo > 0.05:
+                assert moved > 1e-3, (lo, hi, phase)
+    view = HistoryView()
+    view.show(two, "V = 0.3")
+    assert view.path_figure.visible and view.path_figure.yaxis.axis_label == "y_c"
+    view.show(compute.history(State(), 0.3), "vbar = 0.3")
+    assert not view.path_figure.visible and len(view.path.data["x"]) == 0

@@ -549,6 +549,20 @@ def start_state(P, init_kind, y0, xd0, e0, s):
 
 
 @jit
+def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, on_substrate):
+    """The parameter vector ``P`` of a point."""
+    P = np.empty(N_P)
+    P[P_ALPHA] = alpha
+    P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
+    P[P_K] = beta - alpha
+    P[P_C] = eta * (beta - alpha)
+    P[P_A], P[P_V] = a, V
+    P[P_AX], P[P_PX], P[P_AY], P[P_PY] = a_x, phase_x, a_y, phase_y
+    P[P_HOLDER] = 0.0 if on_substrate else 1.0
+    return P
+
+
+@jit
 def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
                        on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
                        max_events, out_f, out_i):
@@ -559,14 +573,19 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     difference from a second solve at ``100 rtol`` to the section residual's effect.
     ``max_periods`` bounds the averaging fallback; ``max_events`` the switches per
     period (chatter: status failed)."""
-    P = np.empty(N_P)
-    P[P_ALPHA] = alpha
-    P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
-    P[P_K] = beta - alpha
-    P[P_C] = eta * (beta - alpha)
-    P[P_A], P[P_V] = a, V
-    P[P_AX], P[P_PX], P[P_AY], P[P_PY] = a_x, phase_x, a_y, phase_y
-    P[P_HOLDER] = 0.0 if on_substrate else 1.0
+    plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
+                         on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+                         max_events, out_f, out_i, np.empty(N_S))
+
+
+@jit
+def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
+                         on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+                         max_events, out_f, out_i, s_out):
+    """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
+    e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
+    end; the output rows keep only the x components)."""
+    P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, on_substrate)
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
     out_i[:] = 0
@@ -675,6 +694,8 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
         out_i[I_PHASE] = STICK if mode == STICK else (SLIP_POS if fx >= 0.0 else SLIP_NEG)
     else:
         out_f[O_ERR] = math.inf
+    for i in range(N_S):
+        s_out[i] = s[i]
     out_f[O_MULT] = mult
     out_f[O_WORK] = periods
     out_i[I_STATUS] = status
@@ -761,3 +782,114 @@ def plane_steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, pha
                            phase_x[i], a_y[i], phase_y[i], on_substrate[i], init_kind,
                            init[i, 0], init[i, 1], init[i, 2], rtol, max_periods,
                            max_events, out_f[i], out_i[i])
+
+
+# columns of a 2-D history row (plane_history)
+H_TAU, H_Y, H_V, H_E, H_INT, H_F, H_N, H_PHASE, H_SLIP, H_EVENT = 0, 1, 3, 5, 7, 9, 11, 12, 13, 15
+N_H = 16
+"""A row: tau, (y_x, y_y), (v_x, v_y), (e_x, e_y), the integrals of (f_x, f_y) since
+``tau = 0``, (f_x, f_y), n, phase (stick 0, slip 1, flight 3), the contact point's
+velocity relative to the substrate (x, y), and the event code (``codes.EVENT_NAMES``,
+-1 for a sample of the grid)."""
+
+
+@jit
+def _record(P, t, z, mode, event, out, row):
+    """The row ``row`` of ``out`` (:data:`N_H` columns) for the state ``z`` in ``mode``."""
+    if row >= out.shape[0]:
+        return row + 1
+    r = out[row]
+    r[H_TAU] = t
+    for i in range(N_Z):
+        r[H_Y + i] = z[i]
+    fx, fy, ex, ey, _ = contact(mode, P, t, z)
+    _, _, _, _, vsx, vsy = drive(P, t)
+    n, _ = normal_force(P[P_A], t)
+    r[H_F], r[H_F + 1], r[H_N] = fx, fy, n
+    r[H_PHASE] = mode
+    r[H_SLIP] = z[2] - vsx - ex  # the contact point's velocity minus the substrate's
+    r[H_SLIP + 1] = z[3] - vsy - ey
+    r[H_EVENT] = event
+    return row + 1
+
+
+@jit
+def plane_history(P, s, periods, grid, rtol, max_events, out):
+    """Integrate ``periods`` drive periods from the section state ``s`` (6) at ``tau =
+    0``, recording a row (:data:`N_H` columns) at every time of the sorted ``grid`` and
+    two at every event (the state before the switch, in the old phase, and after it, in
+    the new one): stick/slip switches, lift-off and touch-down.  The phase is carried
+    across the sections (as :func:`average` does).  Returns the number of rows (more
+    than ``out`` holds: call again with a larger one), or -1 where the integration
+    failed (chatter: more than ``max_events`` switches in a period, or a step that
+    could not be taken)."""
+    a = P[P_A]
+    jenkins = P[P_C] == 0.0
+    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
+    if P[P_C] > 0.0:
+        w = max(w, P[P_K] / P[P_C])
+    hmax = TWO_PI / (8.0 * w)
+    W = np.zeros((14, N_Z))
+    cnt = np.zeros(4, np.int64)
+    acc = np.zeros(4)
+    z = np.zeros(N_Z)
+    for i in range(N_S):
+        z[i] = s[i]
+    mode = entry(P, 0.0, z)
+    ends = np.empty(3)
+    contact_ = np.empty(3, np.bool_)
+    th = math.acos(-1.0 / a) if a > 1.0 else 0.0
+    d = DELTA if jenkins else 0.0
+    ng = grid.shape[0]
+    gi = 0
+    row = 0
+    t = 0.0
+    h = hmax
+    while gi < ng and grid[gi] <= t:
+        row = _record(P, t, z, mode, -1, out, row)
+        gi += 1
+    for j in range(periods):
+        t0 = TWO_PI * j
+        if a > 1.0:
+            ends[0], ends[1], ends[2] = t0 + th - d, t0 + TWO_PI - th + d, t0 + TWO_PI
+            contact_[0], contact_[1], contact_[2] = True, False, True
+            m = 3
+        else:
+            ends[0] = t0 + TWO_PI
+            contact_[0] = True
+            m = 1
+        ev = 0
+        for p in range(m):
+            t1 = ends[p]
+            if not contact_[p]:
+                if mode != FLIGHT:
+                    row = _record(P, t, z, mode, 3, out, row)  # lift-off
+                    if jenkins:
+                        z[4] = 0.0
+                        z[5] = 0.0
+                    mode = FLIGHT
+                    row = _record(P, t, z, mode, 3, out, row)
+            elif mode == FLIGHT:
+                row = _record(P, t, z, mode, 4, out, row)  # touch-down
+                mode = touchdown(P, t, z)
+                row = _record(P, t, z, mode, 4, out, row)
+            while t < t1:
+                target = t1
+                if gi < ng and grid[gi] < t1:
+                    target = grid[gi]
+                t, event, h = segment(mode, P, t, target, z, h, rtol, rtol, hmax, W, acc,
+                                      cnt)
+                if cnt[C_FAIL] > 0:
+                    return -1
+                if event:
+                    code = 0 if mode == STICK else 1
+                    row = _record(P, t, z, mode, code, out, row)
+                    mode = switch(mode, P, t, z)
+                    row = _record(P, t, z, mode, code, out, row)
+                    ev += 1
+                    if ev > max_events:
+                        return -1
+                while gi < ng and grid[gi] <= t:
+                    row = _record(P, t, z, mode, -1, out, row)
+                    gi += 1
+    return row

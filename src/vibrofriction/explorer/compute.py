@@ -147,7 +147,10 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
 
 def history(state: State, x: float, periods: float = 3.0) -> dict:
     """The time history at the curve's velocity ``x`` (Fig. 2): forces, phases, events;
-    the steady state where the solver trusts it, else the motion from steady sliding."""
+    the steady state where the solver trusts it, else the motion from steady sliding.
+    With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
+    position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc``
+    and the transverse force ``f_y`` (None otherwise)."""
     system = state.system()
     kw = {state.velocity_keyword(): float(x)}
     try:
@@ -161,8 +164,11 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     starts = np.concatenate([[0], change])
     ends = np.concatenate([change, [t.size - 1]])
     r = vf.friction_coefficient(system, **kw)
+    inplane = h.system.a_x > 0.0 or h.system.a_y > 0.0
+    xc, yc = h.contact_point() if inplane else (None, None)
     return {
-        "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot,
+        "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": h.f_y,
+        "phase": h.phase, "xc": xc, "yc": yc if h.is_plane else None,
         "spans": [(float(t[i]), float(t[j]), str(h.phase[i])) for i, j in
                   zip(starts, ends, strict=True) if t[j] > t[i]],
         "events": [(e.tau / (2.0 * math.pi), e.kind) for e in h.events],

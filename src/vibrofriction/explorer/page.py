@@ -161,7 +161,8 @@ class Explorer:
             pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.readout,
             self.case_text, width=350)
         main = pn.Column(self.curve_pane,
-                         pn.Row(pn.Column(self.history_view.figure, self.history_text,
+                         pn.Row(pn.Column(self.history_view.figure,
+                                          self.history_view.path_figure, self.history_text,
                                           sizing_mode="stretch_width"),
                                 self.map_view.figure, sizing_mode="stretch_width"),
                          pn.Tabs(("Measurements & fit", self._measurements_panel()),

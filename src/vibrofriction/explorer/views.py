@@ -132,11 +132,22 @@ class CurveView:
         _legend_follows_data(self.figures.values())
 
 
+#: Phase colours of the contact point's path (darker than the shading of the history).
+_PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
+                "flight": "#737373"}
+
+
 class HistoryView:
-    """A point's time history: forces, the phases shaded, the events marked."""
+    """A point's time history: forces, the phases shaded, the events marked; with an
+    in-plane oscillation a second figure (``path_figure``, hidden otherwise) shows the
+    contact point on the substrate: ``x_c`` against time (1-D) or its path ``(x_c, y_c)``
+    in the plane (2-D), coloured by phase."""
 
     def __init__(self) -> None:
         self.lines = _empty(t=1, f=1, n=1)
+        self.lateral = _empty(t=1, f_y=1)
+        self.path = _empty(x=1, y=1)
+        self.path_points = _empty(x=1, y=1, t=1, color=1, phase=1, size=1)
         self.spans = _empty(left=1, right=1, bottom=1, top=1, color=1, phase=1)
         self.events = _empty(t=1, y=1, kind=1)
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
@@ -149,6 +160,8 @@ class HistoryView:
                  legend_label="n = F_N/F_N0 (friction limit)")
         fig.line("t", "f", source=self.lines, color="#1f77b4", line_width=2,
                  legend_label="f = F_x/(mu0 F_N0)")
+        fig.line("t", "f_y", source=self.lateral, color="#2ca02c", line_width=2,
+                 legend_label="f_y = F_y/(mu0 F_N0)")
         ev = fig.scatter("t", "y", source=self.events, marker="diamond", size=8,
                          color="#d62728", legend_label="events")
         fig.add_tools(HoverTool(renderers=[ev], tooltips=[("event", "@kind"),
@@ -156,12 +169,30 @@ class HistoryView:
         _legend_outside(fig, "top_center")
         fig.legend.orientation = "horizontal"
         self.figure = fig
+        path = figure(height=300, sizing_mode="stretch_width", tools=_TOOLS,
+                      title="contact point on the substrate", toolbar_location="above",
+                      x_axis_label="t/T (drive periods)", y_axis_label="x_c")
+        path.line("x", "y", source=self.path, color="#bbbbbb", line_width=1)
+        dots = path.scatter("x", "y", source=self.path_points, color="color", size="size",
+                            legend_field="phase")
+        path.add_tools(HoverTool(renderers=[dots], tooltips=[
+            ("t/T", "@t{0.000}"), ("phase", "@phase"), ("(x, y)", "(@x{0.0000}, @y{0.0000})")]))
+        path.add_layout(path.legend[0], "right")
+        path.legend.label_text_font_size = "8pt"
+        path.visible = False
+        self.path_figure = path
 
     def show(self, h: dict, where: str) -> None:
         t, f, n = h["t"], h["f"], h["n"]
         self.lines.data = {"t": t, "f": f, "n": n}
+        f_y = h.get("f_y")
+        self.lateral.data = {"t": t if f_y is not None else [],
+                             "f_y": f_y if f_y is not None else []}
+        self._show_path(h)
         lo = min(0.0, float(np.min(f)), float(np.min(n)))
         hi = max(float(np.max(f)), float(np.max(n)))
+        if f_y is not None:
+            lo, hi = min(lo, float(np.min(f_y))), max(hi, float(np.max(f_y)))
         pad = 0.35 * (hi - lo or 1.0)
         self.spans.data = {
             "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
@@ -178,6 +209,35 @@ class HistoryView:
         self.figure.x_range.end = float(t[-1])
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
+        _legend_follows_data([self.figure])  # no f_y entry in 1-D
+        self.figure.legend.nrows = 2 if f_y is not None else "auto"  # f_y: one more entry
+
+    def _show_path(self, h: dict) -> None:
+        """The contact point on the substrate, or nothing (and hidden) without an
+        in-plane oscillation."""
+        xc, yc = h.get("xc"), h.get("yc")
+        fig = self.path_figure
+        if xc is None:
+            self.path.data = {"x": [], "y": []}
+            self.path_points.data = {"x": [], "y": [], "t": [], "color": [], "phase": [],
+                                     "size": []}
+            fig.visible = False
+            return
+        t = h["t"]
+        x, y = (xc, yc) if yc is not None else (t, xc)
+        phase = [str(p) for p in h["phase"]]
+        self.path.data = {"x": x, "y": y}
+        self.path_points.data = {"x": x, "y": y, "t": t, "phase": phase,
+                                 "color": [_PATH_COLORS.get(p, "#000000") for p in phase],
+                                 # stick stands still: larger dots, so that it shows
+                                 "size": [8 if p == "stick" else 3 for p in phase]}
+        if yc is not None:
+            fig.title.text = "contact point's path on the substrate (still in stick)"
+            fig.xaxis.axis_label, fig.yaxis.axis_label = "x_c", "y_c"
+        else:
+            fig.title.text = "contact point on the substrate: x_c (flat in stick)"
+            fig.xaxis.axis_label, fig.yaxis.axis_label = "t/T (drive periods)", "x_c"
+        fig.visible = True
 
 
 class MapView:

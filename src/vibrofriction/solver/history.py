@@ -9,13 +9,22 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._kernels import codes
+from .._kernels import plane as _plane
 from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample, to_kernel_frame
 from .._kernels.phases import frame_offset
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
+from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
 from .energy import dissipation, inplane_motion, kernel_point
-from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
+from .engine import (
+    _MIRROR_PHASE,
+    PLANE_EVENTS_PER_PERIOD,
+    PLANE_RTOL,
+    _check_plane,
+    friction_coefficient,
+    initial_rows,
+)
 from .results import SectionState, section_state
-from .settings import SolverSettings
+from .settings import DEFAULT_SETTINGS, SolverSettings
 
 __all__ = ["Event", "History", "simulate"]
 
@@ -49,6 +58,20 @@ class History:
     (docs/inplane.md) ``x``, ``x_dot`` are in the laboratory frame and ``work_input``
     includes the work of the oscillating substrate on the contact (or is that of the
     oscillating holder).
+
+    A history with a transverse oscillation (``a_y > 0``, the 2-D solver, docs/inplane.md
+    section 6) also has the transverse components (None in a 1-D history): ``u_y`` and
+    ``u_y_dot`` the body's transverse position and velocity, ``f_y`` the transverse
+    contact force, ``e_y`` the transverse elongation, ``slip_velocity`` (shape ``(N,
+    2)``) the contact point's velocity relative to the substrate (0 in stick: in slip
+    its direction is the slip's, and ``(f, f_y)`` is parallel to it), ``impulse``
+    (shape ``(N, 2)``) the integrals of ``(f, f_y)`` since ``tau = 0`` (to the
+    integrator's tolerance), and ``plane_state`` the 6 components ``(y_x, y_y, v_x,
+    v_y, e_x, e_y)`` of the state at ``tau = 2 pi floor(periods)`` (a start for another
+    2-D history; ``final_state`` keeps its x components).  There ``phase`` is
+    ``"slip+"`` or ``"slip-"`` by the sign of ``f`` (as the 2-D solver's
+    ``slip_fraction``), and the energies are the trapezoidal rule over the samples
+    (second order in the sample spacing, not the 1-D histories' 1e-10).
     """
 
     tau: NDArray[np.float64]
@@ -66,10 +89,23 @@ class History:
     dissipated_contact: NDArray[np.float64]
     dissipated_friction: NDArray[np.float64]
     final_state: SectionState | None = field(default=None)
+    u_y: NDArray[np.float64] | None = None
+    u_y_dot: NDArray[np.float64] | None = None
+    f_y: NDArray[np.float64] | None = None
+    e_y: NDArray[np.float64] | None = None
+    slip_velocity: NDArray[np.float64] | None = None
+    impulse: NDArray[np.float64] | None = None
+    plane_state: NDArray[np.float64] | None = None
+
+    @property
+    def is_plane(self) -> bool:
+        """Whether this is a 2-D history (transverse components present)."""
+        return self.u_y is not None
 
     def stored_energy(self) -> NDArray[np.float64]:
         """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
-        oscillating holder the pin's spring is stretched by ``V tau + X - x``)."""
+        oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
+        transverse terms are added)."""
         d = self.system
         y = self.x - self.v_inertial * self.tau
         if d.a_x > 0.0 and d.inplane_on == "holder":
@@ -77,11 +113,40 @@ class History:
         out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
         if not d.is_rigid:
             out = out + 0.5 * (d.beta - d.alpha) * self.e**2
+        if self.is_plane:
+            yy = self.u_y - (_transverse_motion(d, self.tau)[0]
+                             if d.inplane_on == "holder" else 0.0)
+            out = out + 0.5 * self.u_y_dot**2 + 0.5 * d.alpha * yy**2
+            out = out + 0.5 * (d.beta - d.alpha) * self.e_y**2
         return out
+
+    def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The contact point's position relative to the substrate, ``(x_c, y_c)``: the
+        body's minus the contact spring's elongation minus the substrate's in-plane
+        displacement (none where the holder oscillates); ``y_c`` is 0 in a 1-D history.
+        ``x_c`` advances by ``V`` per unit ``tau`` on average (the body slides over the
+        substrate): ``x_c - V tau`` is periodic in a periodic steady state."""
+        d = self.system
+        xc = self.x - self.e
+        if d.inplane_on == "substrate" and d.a_x > 0.0:
+            xc = xc - inplane_motion(d, self.tau)[0]
+        if not self.is_plane:
+            return xc, np.zeros_like(xc)
+        yc = self.u_y - self.e_y
+        if d.inplane_on == "substrate":
+            yc = yc - _transverse_motion(d, self.tau)[0]
+        return xc, yc
 
     def time(self, physical: Physical) -> NDArray[np.float64]:
         """Sample times in seconds for a physical system (``t = tau/omega``)."""
         return self.tau / physical.omega
+
+
+def _transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
+                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(Y, Y')``: the transverse oscillation ``a_y cos(tau + phase_y)`` and its velocity."""
+    arg = np.asarray(tau, dtype=float) + dim.phase_y
+    return dim.a_y * np.cos(arg), -dim.a_y * np.sin(arg)
 
 
 def _checked_run(periods: float, samples_per_period: int) -> None:
@@ -134,7 +199,7 @@ def simulate(
     v0: float | None = None,
     periods: float = 5.0,
     samples_per_period: int = 400,
-    initial: str | SectionState = "sliding",
+    initial: str | SectionState | NDArray[np.float64] = "sliding",
     settings: SolverSettings | None = None,
 ) -> History:
     """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
@@ -147,16 +212,20 @@ def simulate(
     ``V < 0`` is integrated as it stands, from the mirror image of the named start of
     ``-V`` (``"sliding"``: ``x' = V``, the spring stretched by ``-1``); at ``V = 0`` with
     an in-plane oscillation ``"sliding"`` is the rest (as in :func:`solve_points`).
+
+    With a transverse oscillation (``a_y > 0``) the history is integrated by the 2-D
+    solver's Runge-Kutta method (docs/inplane.md section 6) and has the transverse fields
+    of :class:`History`; ``initial`` may also be a 2-D history's ``plane_state`` (6
+    components), and a :class:`SectionState` starts with the transverse components 0.
     """
     dim = dimensionless(system)
-    if dim.a_y > 0.0:
-        raise ValueError(f"simulate does not take a transverse oscillation yet (a_y = "
-                         f"{dim.a_y!r}): friction_coefficient computes its steady state")
     V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
     V = float(V)
     _checked_run(periods, samples_per_period)
+    if dim.a_y > 0.0:
+        return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))
     m = seg.shape[0]
     tau_end = TWO_PI * periods
@@ -192,3 +261,150 @@ def simulate(
         v_inertial=V, e=out[:, codes.SMP_E], **dissipation(seg, m, dim, V, taus),
         final_state=section_state(y_last, xd_last, last[codes.SEG_F],
                                   int(last[codes.SEG_PHASE]), last[codes.SEG_E]))
+
+
+def _plane_parameters(dim: Dimensionless, V: float) -> NDArray[np.float64]:
+    return _plane.parameters(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
+                             dim.a_x, dim.phase_x, dim.a_y, dim.phase_y,
+                             dim.inplane_on == "substrate")
+
+
+def _plane_start(dim: Dimensionless, V: float, initial: object,
+                 settings: SolverSettings | None) -> NDArray[np.float64]:
+    """The 2-D start ``(y_x, y_y, v_x, v_y, e_x, e_y)`` at ``tau = 0``."""
+    s = np.zeros(_plane.N_S)
+    if isinstance(initial, str) and initial == "steady":
+        if V == 0.0:
+            _check_plane(np.array([dim.beta]), np.array([dim.amplitude]),
+                         np.array([dim.eta_c]), np.array([V]))
+        settings = settings or DEFAULT_SETTINGS
+        mirror = V < 0.0  # as solve_points: the point (-V, phase_x + pi), mirrored back
+        px = dim.phase_x + math.pi if mirror else dim.phase_x
+        of = np.empty(len(FLOAT_COLUMNS))
+        oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
+        _plane.plane_steady_section(
+            dim.alpha, dim.beta, dim.amplitude, abs(V), dim.zeta, dim.eta_c, dim.a_x, px,
+            dim.a_y, dim.phase_y, dim.inplane_on == "substrate", 0, 0.0, 0.0, 0.0,
+            PLANE_RTOL, settings.max_periods,
+            min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi, s)
+        status, error = int(oi[column_index("status")]), float(of[column_index("error")])
+        if not settings.trusted(status, error):
+            raise ValueError(f"initial='steady': no trusted steady state at this point "
+                             f"(status {Status.from_code(status).value}, error {error:.3g})")
+        if mirror:
+            s[[0, 2, 4]] = -s[[0, 2, 4]]
+        return s
+    if isinstance(initial, str):
+        kind = {"sliding": 0, "rest": 1}.get(initial)
+        if kind is None:
+            raise ValueError(f"initial must be 'sliding', 'rest', 'steady', a SectionState "
+                             f"or a plane_state, got {initial!r}")
+        _plane.start_state(_plane_parameters(dim, V), kind, 0.0, 0.0, 0.0, s)
+        return s
+    if isinstance(initial, SectionState):
+        s[0], s[2], s[4] = initial.y, initial.x_dot, initial.elongation(dim)
+        return s
+    arr = np.asarray(initial, dtype=float)
+    if arr.shape != (_plane.N_S,) or not np.all(np.isfinite(arr)):
+        raise ValueError(f"a 2-D initial state is 6 finite numbers (y_x, y_y, v_x, v_y, "
+                         f"e_x, e_y), got {initial!r}")
+    return arr.copy()
+
+
+def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
+                   initial: object, settings: SolverSettings | None) -> History:
+    """:func:`simulate` with a transverse oscillation: the 2-D kernel's history."""
+    _check_plane(np.array([dim.beta]), np.array([dim.amplitude]), np.array([dim.eta_c]),
+                 np.array([1.0]))  # V = 0 is integrated (from rest), not refused here
+    settings = settings or DEFAULT_SETTINGS
+    start = _plane_start(dim, V, initial, settings)
+    P = _plane_parameters(dim, V)
+    whole = int(math.ceil(periods))
+    tau_end = TWO_PI * periods
+    whole_done = int(math.floor(periods + 1e-12))
+    sections = TWO_PI * np.arange(1, whole_done + 1)
+    grid = np.unique(np.concatenate([
+        np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1), sections]))
+    grid = grid[grid <= tau_end]
+    cap = grid.size + 64 * whole
+    while True:
+        out = np.empty((cap, _plane.N_H))
+        m = _plane.plane_history(P, start, whole, grid, PLANE_RTOL,
+                                 min(settings.max_events, PLANE_EVENTS_PER_PERIOD), out)
+        if m < 0:
+            raise RuntimeError("the 2-D history failed: a step could not be taken or the "
+                               "contact chattered (more stick/slip switches per period than "
+                               f"{PLANE_EVENTS_PER_PERIOD})")
+        if m <= cap:
+            break
+        cap = m
+    out = out[:m]
+    out = out[out[:, _plane.H_TAU] <= tau_end]
+    tau = out[:, _plane.H_TAU]
+    y, v, e = (out[:, j:j + 2] for j in (_plane.H_Y, _plane.H_V, _plane.H_E))
+    f, n = out[:, _plane.H_F:_plane.H_F + 2], out[:, _plane.H_N]
+    mode = out[:, _plane.H_PHASE].astype(int)
+    ph = np.where(mode == _plane.SLIP, np.where(f[:, 0] >= 0.0, codes.SLIP_POS,
+                                                codes.SLIP_NEG), mode)
+    names = np.asarray(codes.PHASE_NAMES, dtype=str)
+    ev = out[:, _plane.H_EVENT].astype(int)
+    pairs = []  # every event is a pair of rows: before and after the switch
+    j = 0
+    while j < len(tau) - 1:
+        if ev[j] >= 0:
+            pairs.append(Event(float(tau[j]), codes.EVENT_NAMES[ev[j]], str(names[ph[j]]),
+                               str(names[ph[j + 1]])))
+            j += 1
+        j += 1
+    events = tuple(pairs)
+    x, x_dot = y[:, 0] + V * tau, v[:, 0]
+    slip = out[:, _plane.H_SLIP:_plane.H_SLIP + 2]
+    energy = _plane_energy(dim, V, tau, x, y[:, 1], v, e, f, slip)
+    last = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0)) if whole_done else []
+    final = plane_state = None
+    if len(last):
+        r = last[-1]
+        plane_state = np.concatenate([y[r], v[r], e[r]])
+        final = section_state(y[r, 0], v[r, 0], f[r, 0], int(ph[r]), e[r, 0])
+    return History(
+        tau=tau, x=x, x_dot=x_dot, f=f[:, 0].copy(), n=n.copy(), phase=names[ph],
+        events=events, system=dim, v_inertial=V, e=e[:, 0].copy(), **energy,
+        final_state=final, u_y=y[:, 1].copy(), u_y_dot=v[:, 1].copy(), f_y=f[:, 1].copy(),
+        e_y=e[:, 1].copy(), slip_velocity=slip.copy(),
+        impulse=out[:, _plane.H_INT:_plane.H_INT + 2].copy(), plane_state=plane_state)
+
+
+def _cumulative(tau: NDArray[np.float64], p: NDArray[np.float64]) -> NDArray[np.float64]:
+    """The trapezoidal rule's running integral of the samples ``p`` over ``tau``."""
+    return np.concatenate([[0.0], np.cumsum(0.5 * (p[1:] + p[:-1]) * np.diff(tau))])
+
+
+def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
+                  x: NDArray[np.float64], uy: NDArray[np.float64], v: NDArray[np.float64],
+                  e: NDArray[np.float64], f: NDArray[np.float64],
+                  slip: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
+    """Work input and dissipation of a 2-D history (the reference's definitions,
+    vibrofriction_reference.inplane): the trapezoidal rule over the samples."""
+    X, Xd = inplane_motion(dim, tau)
+    Y, Yd = _transverse_motion(dim, tau)
+    zero = np.zeros_like(tau)
+    if dim.inplane_on == "holder":
+        h = np.stack([V * tau + X, Y], axis=1)
+        hd = np.stack([V + Xd, Yd], axis=1)
+        vs = np.stack([zero, zero], axis=1)
+    else:
+        h = np.stack([V * tau, zero], axis=1)
+        hd = np.stack([V + zero, zero], axis=1)
+        vs = np.stack([Xd, Yd], axis=1)
+    u = np.stack([x, uy], axis=1)
+    gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
+    c = dim.eta_c * (dim.beta - dim.alpha)
+    f_pin = dim.alpha * (h - u) + gamma * (hd - v)
+    e_dot = v - vs - slip
+    p_in = np.sum(f_pin * hd, axis=1) - np.sum(f * vs, axis=1)
+    return {
+        "work_input": _cumulative(tau, p_in),
+        "dissipated_pin": _cumulative(tau, gamma * np.sum((hd - v) ** 2, axis=1)),
+        "dissipated_contact": _cumulative(tau, c * np.sum(e_dot**2, axis=1)),
+        "dissipated_friction": _cumulative(tau, np.sum(f * slip, axis=1)),
+    }
