@@ -348,3 +348,14 @@ def test_history_shows_the_contact_point_with_an_inplane_oscillation():
     assert view.path_figure.visible and view.path_figure.yaxis.axis_label == "y_c"
     view.show(compute.history(State(), 0.3), "vbar = 0.3")
     assert not view.path_figure.visible and len(view.path.data["x"]) == 0
+
+
+def test_transverse_curve_through_zero_has_a_gap_there():
+    """The 2-D solver does not compute V = 0: the curve has a gap (untrusted, nan) there
+    and values elsewhere; no static value of eq. (2) and no band are claimed."""
+    state = State(a_y=0.5, zeta=0.05, axis="V", v_min=-0.5, v_max=0.5, points=11)
+    c = compute.curve(state)
+    assert c["x"][5] == 0.0 and np.isnan(c["y"][5]) and not c["trusted"][5]
+    assert "not computed" in c["status"][5]
+    assert np.delete(c["trusted"], 5).all() and np.all(np.abs(np.delete(c["y"], 5)) < 1)
+    assert math.isnan(c["static"]) and c["band"] is None

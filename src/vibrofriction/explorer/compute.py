@@ -69,7 +69,9 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     dim = _dimensionless(system)
     i, n = part
     x = state.velocities()[i::n]
-    res = vf.friction_coefficient(system, **{state.velocity_keyword(): x})
+    # the 2-D solver does not compute V = 0 (docs/inplane.md section 6): a gap there
+    solved = x != 0.0 if dim.a_y > 0.0 else np.ones(x.size, dtype=bool)
+    res = vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]})
     scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
     V_c = dim.critical_inertial_velocity()
     critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
@@ -78,13 +80,14 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
     case = vf.classify(dim.alpha, dim.beta)
-    results = {k: np.asarray(getattr(res, k)) for k in RESULT_COLUMNS}
-    results["status"] = np.asarray([s.value for s in res.status], dtype=object)
+    results = {k: _spread(np.asarray(getattr(res, k)), solved) for k in RESULT_COLUMNS}
+    results["status"] = _spread(np.asarray([s.value for s in res.status], dtype=object),
+                                solved, "not computed (V = 0, transverse oscillation)")
     return {
-        "x": x, "y": np.asarray(res.mu_ratio, dtype=float) * scale, **results,
+        "x": x, "y": np.asarray(results["mu_ratio"], dtype=float) * scale, **results,
         # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
         "static": (float(theory.static_mu_ratio(dim.amplitude)) * scale
-                   if dim.a_x == 0.0 and x[0] >= 0.0 else math.nan),
+                   if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0 else math.nan),
         "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless")},
@@ -97,10 +100,21 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     }
 
 
+def _spread(values: np.ndarray, solved: np.ndarray, fill: object = None) -> np.ndarray:
+    """``values`` at the ``solved`` points, a gap elsewhere (nan, False, -1 or ``fill``)."""
+    if solved.all():
+        return values
+    if fill is None:
+        fill = {"f": np.nan, "b": False}.get(values.dtype.kind, -1)
+    out = np.full(solved.size, fill, dtype=values.dtype)
+    out[solved] = values
+    return out
+
+
 def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | None:
     """With an in-plane oscillation: the blocking forces ``mu(V -> 0+)``, ``mu(V -> 0-)``
     of the closed-form stuck band (nan: slips every cycle) and the regime's name."""
-    if dim.a_x == 0.0:
+    if dim.a_x == 0.0 or dim.a_y > 0.0:  # the band is the 1-D stuck contact's
         return None
     args = (dim.alpha, dim.beta, dim.amplitude, dim.a_x, dim.phase_x, dim.zeta, dim.eta_c,
             dim.inplane_on)

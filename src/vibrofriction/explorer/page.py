@@ -291,7 +291,9 @@ class Explorer:
         self.readout.object = readout_text(curve)
         crit = curve["critical"]
         band = curve["band"]
-        static = (f"static value {curve['static']:.4g}" if band is None else
+        static = ("transverse oscillation: no closed-form static value, no critical "
+                  "velocity (the slip keeps turning)" if curve["a_y"] > 0 else
+                  f"static value {curve['static']:.4g}" if band is None else
                   f"blocking forces (stuck band) {band[0]:.4g} at V -> 0+, {band[1]:.4g} at "
                   f"V -> 0-: {band[2]}")
         self.case_text.object = (
