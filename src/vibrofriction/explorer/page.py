@@ -298,9 +298,10 @@ class Explorer:
                   f"V -> 0-: {band[2]}")
         self.case_text.object = (
             f"**case {curve['case']}**: {curve['case_text']}\n\n"
-            f"{static}; critical velocity "
-            f"({state.axis}) {crit:.4g}" + (" (a > 1: eq. 12 is not the onset of sliding)"
-                                            if curve["jumping"] else ""))
+            f"{static}" + ("" if curve["a_y"] > 0 else
+                           f"; critical velocity ({state.axis}) {crit:.4g}"
+                           + (" (a > 1: eq. 12 is not the onset of sliding)"
+                              if curve["jumping"] else "")))
         self.snippet.object = f"```python\n{exports.snippet(state)}```"
         query = urlencode(state.to_query())
         self.link.object = f"Share this view: the page's address holds it (`?{query}`)."
