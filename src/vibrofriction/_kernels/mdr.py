@@ -118,6 +118,14 @@ def _event_value(st, e, g, w, k, a, V, y, yd, y0, t, tau):
 
 
 @jit
+def _tolerance(st, g, w, k, a, V, yd, tau):
+    """Round-off scale of the event function of a spring in state ``st``."""
+    if st == STICK:
+        return 1e-12 * w * (1.0 + a + abs(g))
+    return 1e-12 * (abs(yd) + abs(V) + w * a / k)
+
+
+@jit
 def _refine(c, dc, m, cs, st, e, g, w, k, a, V, y0, theta, ta, tb, fa, fb):
     """Illinois iteration for the root of the event function on ``[ta, tb]``
     (``fa > 0 >= fb``); returns the left end of the final bracket's root estimate."""
@@ -165,6 +173,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     viol = -np.inf
     fresh = np.zeros(M, dtype=np.bool_)
     prev = np.zeros(M)
+    root = np.full(M, np.inf)
+    stuck_loop = False
     y_old = 0.0
     yd_old = 0.0
     e_old = np.zeros(M)
@@ -184,7 +194,12 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
         fr2 = 0.0
         events = 0
         fresh[:] = False
+        segments = 0
         while theta < TWO_PI:
+            segments += 1
+            if segments > 200 * M + 1000:  # no progress: report, do not hang
+                stuck_loop = True
+                break
             K = 0.0
             E0 = 0.0
             Sw = 0.0
@@ -221,7 +236,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             immediate = -1
             for i in range(M):
                 prev[i] = _event_value(st[i], e[i], g[i], w, k, a, V, y, yd, y, 0.0, theta)
-                if prev[i] <= 0.0 and not fresh[i] and st[i] != OFF:
+                if st[i] != OFF and not fresh[i] and prev[i] < -_tolerance(st[i], g[i], w, k, a,
+                                                                             V, yd, theta):
                     immediate = i
             t_ev = T
             scanned = immediate >= 0
@@ -238,6 +254,7 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                     tau = theta + tb
                     best = T
                     for i in range(M):
+                        root[i] = np.inf
                         if st[i] == OFF:
                             continue
                         f = _event_value(st[i], e[i], g[i], w, k, a, V, yb, ydb, y, tb, tau)
@@ -246,9 +263,14 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                             v = abs(k * (e[i] + yb - y + V * tb)) - n
                             if v > viol and f > 0.0:
                                 viol = v
-                        if f <= 0.0 and prev[i] > 0.0:
+                        if f <= 0.0 and prev[i] <= 0.0 and ta == 0.0 and not fresh[i]:
+                            root[i] = 0.0  # at its event within round-off, and leaving
+                            best = 0.0
+                            scanned = True
+                        elif f <= 0.0 and prev[i] > 0.0:
                             r = _refine(c, dc, m, cs, st[i], e[i], g[i], w, k, a, V, y,
                                         theta, ta, tb, prev[i], f)
+                            root[i] = r
                             if r < best:
                                 best = r
                             scanned = True
@@ -270,15 +292,12 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                     e[i] = e[i] + y1 - y + V * t_ev
             fresh[:] = False
             if scanned:
-                # every spring whose event function is (round-off) zero at tau switches
+                # the spring(s) whose refined root is t_ev (equal springs: all) switch
                 for i in range(M):
                     if st[i] == OFF:
                         continue
-                    f = _event_value(st[i], e[i], g[i], w, k, a, V, y1, yd1, y1, 0.0, tau)
                     n = w * (1.0 + a * math.cos(tau) - g[i])
-                    tol = 1e-12 * (abs(n) + w * (1.0 + a)) if st[i] == STICK else \
-                        1e-12 * (abs(yd1) + abs(V) + w * a / k)
-                    if f <= tol and (i == immediate or immediate < 0):
+                    if i == immediate or (immediate < 0 and root[i] <= t_ev):
                         if st[i] == STICK:
                             st[i] = SLIP_POS if e[i] > 0.0 else SLIP_NEG
                             e[i] = 0.0
@@ -313,6 +332,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             y = y1
             yd = yd1
         periods = period + 1
+        if stuck_loop:
+            break
         pf[period] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
         frac[0] = fr0 / TWO_PI
         frac[1] = fr1 / TWO_PI
@@ -329,4 +350,6 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
         if same and d <= state_tol * scale_s and periods >= min_periods:
             converged = True
             break
+    if stuck_loop:
+        events = -1
     return periods, converged, pf[:periods], pn[:periods], frac, viol, events, y, yd
