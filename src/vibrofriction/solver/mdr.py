@@ -14,7 +14,7 @@ import math
 
 import numpy as np
 
-from .._kernels.mdr import STICK, run_periods, row_geometry
+from .._kernels.mdr import STICK, row_geometry, run_periods
 
 __all__ = ["mdr_friction", "mdr_row"]
 
