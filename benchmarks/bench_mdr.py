@@ -22,8 +22,8 @@ POINTS = [  # (alpha, beta, a, V, zeta, n)
 
 
 def main() -> None:
-    mdr_friction(*POINTS[0][:5], zeta=0.0)  # compile
-    mdr_reference(*POINTS[0][:5], transient_periods=2, average_periods=1)
+    mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0)  # compile
+    mdr_reference(0.5, 2.0, 0.5, 0.3, 2.0, transient_periods=2, average_periods=1)
     rows, ts, tr = [], [], []
     for al, be, a, V, z, n in POINTS:
         t0 = time.perf_counter()
