@@ -1,0 +1,57 @@
+"""Median time per point of the MDR solver (vibrofriction.solver.mdr.mdr_friction, tol 1e-5)
+and of the fixed-step reference (vibrofriction_reference.mdr.mdr_reference, default
+resolutions) side by side in the same run; writes benchmarks/results/mdr.md.
+
+    PYTHONPATH=src python benchmarks/bench_mdr.py
+"""
+
+import datetime
+import platform
+import statistics
+import subprocess
+import time
+from pathlib import Path
+
+from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction_reference.mdr import mdr_reference
+
+POINTS = [  # (alpha, beta, a, V, zeta, n)
+    (0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 1.5, 0.3, 0.0, 2.0),
+    (1.0, 3.0, 0.7, 0.5, 0.1, 1.0), (0.1, 0.5, 0.5, 0.05, 0.0, 3.0),
+    (2.0, 6.0, 0.8, 0.5, 0.0, 1.0), (0.05, 0.1, 1.3, 2.0, 0.5, 1.0)]
+
+
+def main() -> None:
+    mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0)  # compile
+    mdr_reference(0.5, 2.0, 0.5, 0.3, 2.0, transient_periods=2, average_periods=1)
+    rows, ts, tr = [], [], []
+    for al, be, a, V, z, n in POINTS:
+        t0 = time.perf_counter()
+        r = mdr_friction(al, be, a, V, n, zeta=z, tol=1e-5)
+        t1 = time.perf_counter()
+        ref = mdr_reference(al, be, a, V, n, transient_periods=300, average_periods=20, zeta=z)
+        t2 = time.perf_counter()
+        ts.append(t1 - t0)
+        tr.append(t2 - t1)
+        rows.append(f"| {al}, {be}, {a}, {V}, {z}, {n} | {r['mu_ratio']:.7f} +- {r['error']:.1e} "
+                    f"({r['status']}, rows {r['rows']}) | {1e3 * (t1 - t0):.0f} | "
+                    f"{ref.mu_ratio:.7f} +- {ref.mu_error:.1e} | {1e3 * (t2 - t1):.0f} |")
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True).stdout.strip()
+    text = "\n".join([
+        "# MDR solver against the fixed-step reference",
+        "",
+        f"`PYTHONPATH=src python benchmarks/bench_mdr.py`, {datetime.date.today()}, commit "
+        f"{commit}, {platform.machine()} (shared 2-core machine; timings noisy).",
+        "",
+        "| alpha, beta, a, V, zeta, n | solver mu +- error | ms | reference mu +- error | ms |",
+        "| --- | --- | --- | --- | --- |", *rows, "",
+        f"Median: solver {1e3 * statistics.median(ts):.0f} ms, reference "
+        f"{1e3 * statistics.median(tr):.0f} ms per point.", ""])
+    out = Path(__file__).parent / "results" / "mdr.md"
+    out.write_text(text)
+    print(text)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,355 @@
+r"""Event-driven kernel of the MDR spring row (issue 21, docs/contact_geometry.md).
+
+The scaled row: springs at the midpoints ``xi_i`` of ``M`` cells on ``(0, xi_max]``,
+``g_i = xi_i^n`` (0 for the flat punch), normal force ``n_i = w max(0, 1 + a cos tau - g_i)``
+(``w = dxi (n + 1)/n``, flat ``dxi``), tangential stiffness ``k = (beta - alpha) dxi``; the
+body, drift removed (``y = x - V tau``): ``y'' + gamma y' + alpha y = -sum f_i``.
+
+With the indentation imposed every ``n_i(tau)`` is known, so between events the body ODE is
+linear with constant coefficients: a stuck spring (contact point fixed, elongation
+``e_i = e_i0 + (y - y0) + V t``) adds ``k`` to the stiffness, a slipping one (massless
+contact point, sign ``s``) exerts ``s n_i(tau)``, one out of contact nothing::
+
+    y'' + gamma y' + (alpha + K) y = -(E0 - K y0) - K V t - S_w (1 + a cos(theta + t)) + S_wg
+
+(``K`` = k times the stuck springs, ``E0 = k sum e_i0`` over them, ``S_w = w sum s``,
+``S_wg = w sum s g_i`` over the slipping ones). Its closed form is written over the
+package's basis (:mod:`.basis`: free motion, periodic response or, near the resonance
+``alpha + K = 1``, the responses from rest). Events:
+
+* stick -> slip where the margin ``n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``);
+* slip -> stick where the slip velocity ``s (y' + V) - n_i'/k`` reaches 0;
+* lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
+  down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
+
+The margins and slip velocities are scanned on sub-steps of the segment (at most
+``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
+method to round-off, and the earliest root over all springs ends the segment. A dip below
+zero shorter than a sub-step is not seen (a grazing event); that is the method's only
+approximation besides round-off.
+"""
+
+import math
+
+import numpy as np
+
+from .basis import basis_values, derivative, dot, initial_pair, integral, make_mode
+from .jit import jit
+from .phases import _periodic_response
+
+TWO_PI = 2.0 * math.pi
+OFF, STICK, SLIP_POS, SLIP_NEG = 0, 1, 2, 3
+
+
+@jit
+def row_geometry(a, n_exp, M):
+    """``(g, w, dxi, tau_off, tau_on, area)``: the springs' gaps, the normal weight, the
+    cell width, the lift-off and touch-down phases (``-1`` if the spring never leaves, or
+    never touches) and each spring's share of the disc of the largest contact radius."""
+    flat = math.isinf(n_exp)
+    xi_max = 1.0 if flat else (1.0 + a) ** (1.0 / n_exp)
+    dxi = xi_max / M
+    w = dxi if flat else dxi * (n_exp + 1.0) / n_exp
+    g = np.zeros(M)
+    tau_off = np.full(M, -1.0)
+    tau_on = np.full(M, -1.0)
+    area = np.zeros(M)
+    for i in range(M):
+        xi = (i + 0.5) * dxi
+        if not flat:
+            g[i] = xi ** n_exp
+        area[i] = 2.0 * xi * dxi / (xi_max * xi_max)
+        if a > 0.0 and g[i] - 1.0 > -a:  # leaves the contact in the cycle
+            th = math.acos(min(1.0, (g[i] - 1.0) / a))
+            tau_off[i] = th
+            tau_on[i] = TWO_PI - th
+    return g, w, dxi, tau_off, tau_on, area
+
+
+@jit
+def normal_integral_row(a, g, w, tau_off):
+    """``int_0^{2 pi} sum_i n_i dtau``."""
+    s = 0.0
+    for i in range(g.size):
+        if tau_off[i] < 0.0:
+            s += w * TWO_PI * (1.0 - g[i])
+        else:
+            th = tau_off[i]
+            s += w * (2.0 * th * (1.0 - g[i]) + 2.0 * a * math.sin(th))
+    return s
+
+
+@jit
+def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
+    """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode."""
+    w0sq = alpha + K
+    m = make_mode(w0sq, 0.5 * gamma, 0.0)
+    c0 = -(E0 - K * y0) - Sw + Swg
+    c1 = -K * V
+    cc = -Sw * a
+    p1 = c1 / w0sq
+    p0 = (c0 - gamma * p1) / w0sq
+    wr = cc * math.cos(theta)
+    wi = cc * math.sin(theta)
+    near = False
+    zr = 0.0
+    zi = 0.0
+    if cc != 0.0:
+        zr, zi, near = _periodic_response(m, wr, wi)
+    if not near:
+        D, E = initial_pair(m, y0 - p0 - zr, yd0 - p1 + zi)
+        return (p0, p1, zr, -zi, D, E, 0.0, 0.0, 0.0), m
+    D, E = initial_pair(m, y0 - p0, yd0 - p1)
+    return (p0, p1, 0.0, 0.0, D, E, wr, -wi, 0.0), m
+
+
+@jit
+def _event_value(st, e, g, w, k, a, V, y, yd, y0, t, tau):
+    """Positive while the spring stays in its state: the margin ``n - |k e|`` in stick,
+    the slip velocity in slip (0 out of contact: no scanned event)."""
+    if st == STICK:
+        n = w * (1.0 + a * math.cos(tau) - g)
+        return n - abs(k * (e + y - y0 + V * t))
+    if st == SLIP_POS:
+        return (yd + V) + (w * a / k) * math.sin(tau)
+    if st == SLIP_NEG:
+        return -(yd + V) + (w * a / k) * math.sin(tau)
+    return 1.0
+
+
+@jit
+def _tolerance(st, g, w, k, a, V, yd, tau):
+    """Round-off scale of the event function of a spring in state ``st``."""
+    if st == STICK:
+        return 1e-12 * w * (1.0 + a + abs(g))
+    return 1e-12 * (abs(yd) + abs(V) + w * a / k)
+
+
+@jit
+def _refine(c, dc, m, cs, st, e, g, w, k, a, V, y0, theta, ta, tb, fa, fb):
+    """Illinois iteration for the root of the event function on ``[ta, tb]``
+    (``fa > 0 >= fb``); returns the left end of the final bracket's root estimate."""
+    side = 0
+    for _ in range(200):
+        if tb - ta <= 2e-16 * max(1.0, tb):
+            break
+        t = (ta * fb - tb * fa) / (fb - fa)
+        if not (ta < t < tb):
+            t = 0.5 * (ta + tb)
+        b = basis_values(m, t, cs, False)
+        f = _event_value(st, e, g, w, k, a, V, dot(c, b), dot(dc, b), y0, t, theta + t)
+        if f > 0.0:
+            ta, fa = t, f
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        else:
+            tb, fb = t, f
+            if side == 1:
+                fa *= 0.5
+            side = 1
+    return tb
+
+
+@jit
+def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
+                state_tol, y, yd, st, e):
+    """Integrate the row period by period from the section state ``(y, y', st, e)``
+    (modified in place) until the section state repeats within ``state_tol`` (relative to
+    its size) after at least ``min_periods``, or ``max_periods``.
+
+    Returns ``(periods, converged, pf, pn, frac, viol, events)``: the per-period integrals
+    of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``) and of
+    ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of contact)
+    of the last period, the largest ``|f_i| - n_i`` seen at the scan points and the number
+    of events of the last period.
+    """
+    g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
+    k = (beta - alpha) * dxi
+    nint = normal_integral_row(a, g, w, tau_off)
+    pf = np.zeros(max_periods)
+    pn = np.full(max_periods, nint)
+    frac = np.zeros(3)
+    viol = -np.inf
+    fresh = np.zeros(M, dtype=np.bool_)
+    prev = np.zeros(M)
+    root = np.full(M, np.inf)
+    stuck_loop = False
+    y_old = 0.0
+    yd_old = 0.0
+    e_old = np.zeros(M)
+    st_old = np.zeros(M, dtype=np.int64)
+    periods = 0
+    converged = False
+    events = 0
+    for period in range(max_periods):
+        y_old = y
+        yd_old = yd
+        e_old[:] = e
+        st_old[:] = st
+        theta = 0.0
+        iy = 0.0
+        fr0 = 0.0
+        fr1 = 0.0
+        fr2 = 0.0
+        events = 0
+        fresh[:] = False
+        segments = 0
+        while theta < TWO_PI:
+            segments += 1
+            if segments > 200 * M + 1000:  # no progress: report, do not hang
+                stuck_loop = True
+                break
+            K = 0.0
+            E0 = 0.0
+            Sw = 0.0
+            Swg = 0.0
+            a_st = 0.0
+            a_sl = 0.0
+            for i in range(M):
+                s = st[i]
+                if s == STICK:
+                    K += k
+                    E0 += k * e[i]
+                    a_st += area[i]
+                elif s == SLIP_POS:
+                    Sw += w
+                    Swg += w * g[i]
+                    a_sl += area[i]
+                elif s == SLIP_NEG:
+                    Sw -= w
+                    Swg -= w * g[i]
+                    a_sl += area[i]
+            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta)
+            dc = derivative(c, m)
+            cs = c[6] != 0.0 or c[7] != 0.0
+            # the known contact events and the section bound the segment
+            T = TWO_PI - theta
+            for i in range(M):
+                if tau_off[i] < 0.0:
+                    continue
+                tt = tau_on[i] if st[i] == OFF else tau_off[i]
+                if tt > theta and tt - theta < T:
+                    T = tt - theta
+            # values at the start; a spring at or past its event (not just switched)
+            # switches now
+            immediate = -1
+            for i in range(M):
+                prev[i] = _event_value(st[i], e[i], g[i], w, k, a, V, y, yd, y, 0.0, theta)
+                if st[i] != OFF and not fresh[i] and prev[i] < -_tolerance(st[i], g[i], w, k, a,
+                                                                             V, yd, theta):
+                    immediate = i
+            t_ev = T
+            scanned = immediate >= 0
+            if scanned:
+                t_ev = 0.0
+            else:
+                h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
+                ta = 0.0
+                while ta < T and not scanned:
+                    tb = min(T, ta + h)
+                    b = basis_values(m, tb, cs, False)
+                    yb = dot(c, b)
+                    ydb = dot(dc, b)
+                    tau = theta + tb
+                    best = T
+                    for i in range(M):
+                        root[i] = np.inf
+                        if st[i] == OFF:
+                            continue
+                        f = _event_value(st[i], e[i], g[i], w, k, a, V, yb, ydb, y, tb, tau)
+                        if st[i] == STICK:
+                            n = w * (1.0 + a * math.cos(tau) - g[i])
+                            v = abs(k * (e[i] + yb - y + V * tb)) - n
+                            if v > viol and f > 0.0:
+                                viol = v
+                        if f <= 0.0 and prev[i] <= 0.0 and ta == 0.0 and not fresh[i]:
+                            root[i] = 0.0  # at its event within round-off, and leaving
+                            best = 0.0
+                            scanned = True
+                        elif f <= 0.0 and prev[i] > 0.0:
+                            r = _refine(c, dc, m, cs, st[i], e[i], g[i], w, k, a, V, y,
+                                        theta, ta, tb, prev[i], f)
+                            root[i] = r
+                            if r < best:
+                                best = r
+                            scanned = True
+                        prev[i] = f
+                    if scanned:
+                        t_ev = best
+                    ta = tb
+            # advance to t_ev
+            b = basis_values(m, t_ev, cs, False)
+            y1 = dot(c, b)
+            yd1 = dot(dc, b)
+            iy += integral(c, m, t_ev)
+            fr0 += a_st * t_ev
+            fr1 += a_sl * t_ev
+            fr2 += (1.0 - a_st - a_sl) * t_ev
+            tau = theta + t_ev
+            for i in range(M):
+                if st[i] == STICK:
+                    e[i] = e[i] + y1 - y + V * t_ev
+            fresh[:] = False
+            if scanned:
+                # the spring(s) whose refined root is t_ev (equal springs: all) switch
+                for i in range(M):
+                    if st[i] == OFF:
+                        continue
+                    n = w * (1.0 + a * math.cos(tau) - g[i])
+                    if i == immediate or (immediate < 0 and root[i] <= t_ev):
+                        if st[i] == STICK:
+                            st[i] = SLIP_POS if e[i] > 0.0 else SLIP_NEG
+                            e[i] = 0.0
+                        else:
+                            sgn = 1.0 if st[i] == SLIP_POS else -1.0
+                            st[i] = STICK
+                            e[i] = sgn * max(n, 0.0) / k
+                        fresh[i] = True
+                        events += 1
+            else:
+                if t_ev < TWO_PI - theta:
+                    for i in range(M):
+                        if tau_off[i] < 0.0:
+                            continue
+                        if st[i] == OFF:
+                            if abs(tau_on[i] - tau) <= 1e-13 * TWO_PI:
+                                rate = -w * a * math.sin(tau)
+                                xd = yd1 + V
+                                if k * abs(xd) <= rate:
+                                    st[i] = STICK
+                                else:
+                                    st[i] = SLIP_POS if xd > 0.0 else SLIP_NEG
+                                e[i] = 0.0
+                                fresh[i] = True
+                                events += 1
+                        elif abs(tau_off[i] - tau) <= 1e-13 * TWO_PI:
+                            st[i] = OFF
+                            e[i] = 0.0
+                            fresh[i] = True
+                            events += 1
+            theta = tau if t_ev < TWO_PI - theta else TWO_PI
+            y = y1
+            yd = yd1
+        periods = period + 1
+        if stuck_loop:
+            break
+        pf[period] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
+        frac[0] = fr0 / TWO_PI
+        frac[1] = fr1 / TWO_PI
+        frac[2] = fr2 / TWO_PI
+        # section-state change
+        scale_s = abs(y) + abs(yd) + 1e-300
+        d = abs(y - y_old) + abs(yd - yd_old)
+        same = True
+        for i in range(M):
+            if st[i] != st_old[i]:
+                same = False
+            d += abs(e[i] - e_old[i])
+            scale_s += abs(e[i])
+        if same and d <= state_tol * scale_s and periods >= min_periods:
+            converged = True
+            break
+    if stuck_loop:
+        events = -1
+    return periods, converged, pf[:periods], pn[:periods], frac, viol, events, y, yd
