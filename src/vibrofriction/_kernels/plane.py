@@ -139,6 +139,16 @@ def contact(mode, P, t, z):
 
 
 @jit
+def max_step(P):
+    """The longest Runge-Kutta step: an eighth of the fastest natural period (the body
+    on its spring, on both springs, or the contact's relaxation ``k/c``)."""
+    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
+    if P[P_C] > 0.0:
+        w = max(w, P[P_K] / P[P_C])
+    return TWO_PI / (8.0 * w)
+
+
+@jit
 def rhs(mode, P, t, z, dz):
     """The right-hand side of the phase ``mode`` into ``dz``."""
     al, g = P[P_ALPHA], P[P_GAMMA]
@@ -590,10 +600,7 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     out_f[O_WORK] = 0.0
     out_i[:] = 0
     out_i[I_PHASE] = -1
-    w = max(1.0, math.sqrt(alpha), math.sqrt(beta))
-    if P[P_C] > 0.0:
-        w = max(w, P[P_K] / P[P_C])
-    hmax = TWO_PI / (8.0 * w)
+    hmax = max_step(P)
     W = np.zeros((14, N_Z))
     cnt = np.zeros(4, np.int64)
     s = np.empty(N_S)
@@ -708,10 +715,7 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
 def cone_excess(P, periods, rtol):
     """The largest ``|f| - n`` at the step ends and switches of ``periods`` drive periods
     from the sliding start of the parameter vector ``P`` (a check of the phase rules)."""
-    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
-    if P[P_C] > 0.0:
-        w = max(w, P[P_K] / P[P_C])
-    hmax = TWO_PI / (8.0 * w)
+    hmax = max_step(P)
     W = np.zeros((14, N_Z))
     cnt = np.zeros(4, np.int64)
     acc = np.zeros(5)
@@ -825,10 +829,7 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
     could not be taken)."""
     a = P[P_A]
     jenkins = P[P_C] == 0.0
-    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
-    if P[P_C] > 0.0:
-        w = max(w, P[P_K] / P[P_C])
-    hmax = TWO_PI / (8.0 * w)
+    hmax = max_step(P)
     W = np.zeros((14, N_Z))
     cnt = np.zeros(4, np.int64)
     acc = np.zeros(4)
