@@ -1,0 +1,51 @@
+"""Random points of the 2-D (transverse) solver: statuses, trust and time per point.
+
+150 points drawn with a fixed seed over alpha 1e-2..10, beta - alpha 0.03..100, a 0..2.5,
+signed |V| 1e-3..3, zeta in {0, 0.01, 0.1, 0.5}, eta_c in {0, 0, 0.1, 1}, a_x in
+{0, 0, 0.5, 2} and a_y 0.01..5 (random phases), each solved alone by ``solve_points``.
+Prints the count of each status, the trusted count, the median, 90th percentile and
+largest time, and the slowest point.  Run: ``python benchmarks/fuzz_plane.py``.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import Counter
+
+import numpy as np
+
+from vibrofriction.solver import solve_points
+
+
+def main() -> None:
+    rng = np.random.default_rng(3)
+    n = 150
+    al = 10 ** rng.uniform(-2, 1, n)
+    be = al + 10 ** rng.uniform(-1.5, 2, n)
+    a = rng.uniform(0, 2.5, n)
+    V = rng.choice([-1, 1], n) * 10 ** rng.uniform(-3, 0.5, n)
+    ze = rng.choice([0, 0.01, 0.1, 0.5], n)
+    et = rng.choice([0, 0, 0.1, 1.0], n)
+    ax = rng.choice([0, 0, 0.5, 2.0], n)
+    px = rng.uniform(0, 6.3, n)
+    ay = 10 ** rng.uniform(-2, 0.7, n)
+    py = rng.uniform(0, 6.3, n)
+    solve_points(0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0)  # compile or load
+    times, status, trusted = [], [], 0
+    for i in range(n):
+        t = time.perf_counter()
+        o = solve_points(al[i], be[i], a[i], V[i], ze[i], et[i], ax[i], px[i], ay[i], py[i])
+        times.append(time.perf_counter() - t)
+        status.append(int(o["status"]))
+        trusted += bool(o["trusted"])
+    t = np.array(times)
+    i = int(np.argmax(t))
+    print(f"statuses {dict(Counter(status))}, trusted {trusted} of {n}")
+    print(f"time per point: median {np.median(t) * 1e3:.1f} ms, 90th percentile "
+          f"{np.percentile(t, 90) * 1e3:.1f} ms, largest {t[i]:.2f} s at alpha {al[i]:.4g}, "
+          f"beta {be[i]:.4g}, a {a[i]:.4g}, V {V[i]:.4g}, zeta {ze[i]:g}, eta_c {et[i]:g}, "
+          f"a_x {ax[i]:g}, a_y {ay[i]:.4g} (status {status[i]})")
+
+
+if __name__ == "__main__":
+    main()
