@@ -56,11 +56,11 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
     raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
 
 
-#: The final-state columns that change sign under the mirror ``x -> -x``.
 #: A ``V = 0`` motion that sticks this fraction of its averaging window is held
 #: (:func:`_held`): all of it, no slip and no flight.
 HELD_STICK = 1.0
 
+#: The final-state columns that change sign under the mirror ``x -> -x``.
 _SIGNED = ("mu_ratio", "y", "x_dot", "f", "e", "drift_rate")
 _MIRROR_PHASE = {codes.SLIP_POS: codes.SLIP_NEG, codes.SLIP_NEG: codes.SLIP_POS}
 
@@ -108,20 +108,20 @@ def solve_points(
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The eight parameters broadcast together and are validated against their ranges in
+    The ten parameters broadcast together and are validated against their ranges in
     :data:`vibrofriction.schema.PARAMETERS` (``alpha > 0``, ``beta > alpha``, ``a >= 0``,
-    ``zeta >= 0``, ``eta_c >= 0``, ``a_x >= 0``; ``V`` and ``phase_x`` any finite real;
-    finite but ``beta``); ``inplane_on`` is ``"substrate"`` or ``"holder"`` for all of
-    them (docs/inplane.md).  ``V < 0`` is solved by the mirror ``x -> -x``: the point
+    ``zeta >= 0``, ``eta_c >= 0``, ``a_x, a_y >= 0``; ``V`` and the phases any finite
+    real; finite but ``beta``); ``inplane_on`` is ``"substrate"`` or ``"holder"`` for all
+    of them (docs/inplane.md).  ``V < 0`` is solved by the mirror ``x -> -x``: the point
     ``(-V, phase_x + pi)`` (its ``n`` unchanged, ``h -> -h``) with ``mu_ratio`` and the
     signed state negated (an explicit initial state is mirrored on the way in).  ``V = 0``
     is the static limit without in-plane oscillation; with it (``a_x > 0``) it is
-    integrated (``"sliding"`` is the rest there), and where the contact sticks through
-    the whole averaging window the status is :attr:`Status.HELD` (not trusted: the
-    value is the preload the start implies, docs/inplane.md).  Returns arrays of that shape named by
-    :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS`` (``status`` as
-    :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final section state,
-    in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
+    integrated (``"sliding"`` is the rest there), and where the contact can stick
+    through whole cycles (:func:`_held`) the status is :attr:`Status.HELD` (not trusted:
+    the value is the preload the start implies, docs/inplane.md).  Returns arrays of that
+    shape named by :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS``
+    (``status`` as :attr:`Status.code`; ``y``, ``x_dot``, ``f``, ``e``, ``phase`` the final
+    section state, in the laboratory frame) and ``trusted``.  Results are bitwise reproducible: each
     point depends only on its own parameters.
 
     A transverse oscillation (``a_y > 0``) is solved by the 2-D solver
