@@ -548,6 +548,18 @@ class Physical:
             raise ValueError(f"{what} does not take a transverse oscillation yet (du_y = "
                              f"{self.du_y!r} m): give a set-up with du_y = 0")
 
+    def point_arguments(self, v0: ArrayLike, du_z: ArrayLike, omega: ArrayLike,
+                        du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0
+                        ) -> tuple[NDArray[np.float64], ...]:
+        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of this pin at each point
+        ``(v0, du_z, omega, du_x, phase_x)`` (SI), elementwise: the arguments of
+        :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
+        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x`` are not used)."""
+        alpha, beta, a, zeta, eta = self.groups(du_z, omega)
+        a_x = self.inplane_amplitude(du_x, omega)
+        phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
+        return alpha, beta, a, self.v0_to_inertial(v0, omega), zeta, eta, a_x, phase
+
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
         ``du_x`` (m) at ``omega`` (rad/s), elementwise: the in-plane amplitude in units of

@@ -155,17 +155,19 @@ def _range(name: str, value, *, allow_zero: bool = False) -> tuple[float, float]
     return lo, hi
 
 
-def _solve(pin: Physical, v0: float, omega, du_z,
-           settings: SolverSettings | None) -> dict[str, np.ndarray]:
+def _solve(pin: Physical, v0: float, omega, du_z, settings: SolverSettings | None,
+           du_x=0.0, phase_x=0.0, inplane_on: str = "substrate") -> dict[str, np.ndarray]:
     """``cof`` (nan where not trusted), ``mu_ratio``, ``error`` and ``trusted`` of ``pin``
-    driven at ``omega`` (rad/s) with ``du_z`` (m), at the sliding velocity ``v0`` (m/s)."""
-    omega, du_z = np.broadcast_arrays(np.asarray(omega, float), np.asarray(du_z, float))
-    alpha, beta, a, zeta, eta = pin.groups(du_z, omega)
-    out = solve_points(alpha, beta, a, pin.v0_to_inertial(v0, omega), zeta, eta,
-                       settings=settings)
+    driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x`` (m),
+    ``phase_x`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
+    (:meth:`Physical.point_arguments`, the fit's conversion too)."""
+    omega, du_z, du_x, phase_x = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x)))
+    out = solve_points(*pin.point_arguments(v0, du_z, omega, du_x, phase_x),
+                       inplane_on=inplane_on, settings=settings)
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
-            "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": trusted}
+            "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": out["trusted"]}
 
 
 def _axes(pin: Physical, w_range, d_range, n_omega: int, n_du_z: int):
@@ -368,9 +370,7 @@ def _sensitivity(chosen: Physical, v0: float, settings: SolverSettings | None) -
             cases.append((f"{name} {sign * 100 * PARAMETER_CHANGE:+.0f} %", p, p.omega))
     rows = []
     for label, pin, w in cases:
-        sol = (_solve(pin, v0, w, pin.du_z, settings) if pin.du_x == 0.0 else
-               _solve_inplane(pin, v0, w, pin.du_z, pin.du_x, pin.phase_x, pin.inplane_on,
-                              settings))
+        sol = _solve(pin, v0, w, pin.du_z, settings, pin.du_x, pin.phase_x, pin.inplane_on)
         rows.append((label, float(sol["cof"]), bool(sol["trusted"])))
     return pd.DataFrame(rows, columns=["change", "cof", "trusted"])
 
@@ -418,21 +418,6 @@ class _Space:
         return _Space(**{**self.__dict__, **ranges})
 
 
-def _solve_inplane(pin: Physical, v0: float, omega, du_z, du_x, phase_x, inplane_on: str,
-                   settings: SolverSettings | None) -> dict[str, np.ndarray]:
-    """``cof`` (nan where not trusted), ``mu_ratio``, ``error``, ``trusted`` of ``pin``
-    driven at ``omega`` with ``du_z``, ``du_x``, ``phase_x`` (SI), at ``v0`` (m/s)."""
-    omega, du_z, du_x, phase_x = np.broadcast_arrays(
-        *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x)))
-    alpha, beta, a, zeta, eta = pin.groups(du_z, omega)
-    out = solve_points(alpha, beta, a, pin.v0_to_inertial(v0, omega), zeta, eta,
-                       pin.inplane_amplitude(du_x, omega), phase_x, inplane_on=inplane_on,
-                       settings=settings)
-    trusted = out["trusted"]
-    return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
-            "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": trusted}
-
-
 def _amplitudes(lo: float, hi: float, n: int) -> np.ndarray:
     if lo == hi:
         return np.array([lo])
@@ -468,7 +453,8 @@ def _solve_map(pin, v0, axes, on, settings):
     need = (grids[2] > 0.0) | (np.arange(axes[3].size) == 0)[None, None, None, :]
     sol = {k: np.full(grids[0].shape, np.nan) for k in ("cof", "mu_ratio", "error")}
     sol["trusted"] = np.zeros(grids[0].shape, bool)
-    part = _solve_inplane(pin, v0, *(g[need] for g in grids), on, settings)
+    w, dz, dx, ph = (g[need] for g in grids)
+    part = _solve(pin, v0, w, dz, settings, dx, ph, on)
     for k, v in part.items():
         sol[k][need] = v
         sol[k][:, :, axes[2] == 0.0, :] = sol[k][:, :, axes[2] == 0.0, :1]
@@ -505,7 +491,7 @@ def _refine_inplane(pin, v0, on, goal, settings, space: _Space, starts, steps):
             w, dz, dx, ph = full(x)
             if not space.inside(w, dz, dx):
                 return math.inf
-            c = float(_solve_inplane(pin, v0, w, dz, dx, ph, on, settings)["cof"])
+            c = float(_solve(pin, v0, w, dz, settings, dx, ph, on)["cof"])
             if math.isnan(c):
                 rejected["run"] += 1
                 return math.inf
@@ -573,7 +559,7 @@ def _direction_row(name, pin, v0, on, goal, space, sizes, starts, settings):
     except ValueError:
         return {"direction": name, "omega": math.nan, "du_z": math.nan, "du_x": math.nan,
                 "phase_x": math.nan, "cof": math.nan, "allowed": False}
-    cof = float(_solve_inplane(pin, v0, *point, on, settings)["cof"])
+    cof = float(_solve(pin, v0, *point[:2], settings, *point[2:], on)["cof"])
     return {"direction": name, "omega": point[0], "du_z": point[1], "du_x": point[2],
             "phase_x": point[3], "cof": cof, "allowed": space.inside(*point[:3])}
 
@@ -630,7 +616,7 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
             point = (row["omega"], row["du_z"], row["du_x"], row["phase_x"])
             obj = float(_objective(goal, np.array(row["cof"])))
     rows[0].update(omega=point[0], du_z=point[1], du_x=point[2], phase_x=point[3])
-    at_opt = _solve_inplane(pin, v0, *point, on, settings)
+    at_opt = _solve(pin, v0, *point[:2], settings, *point[2:], on)
     cof = float(at_opt["cof"])
     rows[0]["cof"] = cof
     directions = pd.DataFrame(rows)
@@ -669,7 +655,7 @@ def _phase_map(pin, v0, on, space: _Space, point, settings, n_phase: int = 73,
                       else 1)
     phs = np.linspace(0.0, 2 * math.pi, n_phase)
     DX, PH = np.meshgrid(dxs, phs, indexing="ij")
-    sol = _solve_inplane(pin, v0, w, dz, DX, PH, on, settings)
+    sol = _solve(pin, v0, w, dz, settings, DX, PH, on)
     dims = ("du_x", "phase_x")
     return xr.Dataset(
         {"cof": (dims, sol["cof"]), "trusted": (dims, sol["trusted"]),

@@ -34,18 +34,8 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
     ``omega``, ``du_x``, ``phase_x`` are not used), ``nan`` where the solver's value is
     not trusted (:meth:`SolverSettings.trusted`): the count of untrusted points is
     ``np.isnan(...).sum()``."""
-    groups = _groups(system, v0, du_z, omega, du_x, phase_x)
+    groups = system.point_arguments(v0, du_z, omega, du_x, phase_x)
     return _cof(system.mu0, _solve_points((*groups, system.inplane_on, settings)))
-
-
-def _groups(system: Physical, v0, du_z, omega, du_x, phase_x
-            ) -> tuple[NDArray[np.float64], ...]:
-    """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of ``system`` at each measured
-    point (the arguments of :func:`~vibrofriction.solver.solve_points`)."""
-    alpha, beta, a, zeta, eta = system.groups(du_z, omega)
-    a_x = system.inplane_amplitude(du_x, omega)
-    phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
-    return alpha, beta, a, system.v0_to_inertial(v0, omega), zeta, eta, a_x, phase
 
 
 def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
@@ -145,7 +135,7 @@ class _Problem:
         if not _in_domain(values):
             return None
         system, d = Physical(**values), self.data
-        return (system.mu0, *_groups(system, *(d[c].to_numpy() for c in (
+        return (system.mu0, *system.point_arguments(*(d[c].to_numpy() for c in (
             "v0", "du_z", "omega", "du_x", "phase_x"))))
 
     def _residuals(self, mu0: float, solved: tuple[NDArray, NDArray]
@@ -206,7 +196,7 @@ class _Problem:
 
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """``mu_ratio`` and ``trusted`` at the points of ``task`` (the eight group arrays of
-    :func:`_groups`, ``inplane_on`` and the settings): a pool task of
+    :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
     :meth:`_Problem.costs`."""
     *groups, inplane_on, settings = task
     out = solve_points(*groups, inplane_on=inplane_on, settings=settings)
