@@ -53,7 +53,8 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "amplitude": (0.0, 3.0, False), "zeta": (0.0, 0.2, False),
            "eta_c": (0.0, 1.0, False), "a_x": (0.0, 5.0, False),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
-           "phase_y": (0.0, 6.283185307179586, False)}
+           "phase_y": (0.0, 6.283185307179586, False),
+           "profile_exponent": (0.5, 20.0, True)}
 DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless"))
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
@@ -95,6 +96,7 @@ class State:
     phase_x: float = PARAMETER["phase_x"].default
     a_y: float = PARAMETER["a_y"].default
     phase_y: float = PARAMETER["phase_y"].default
+    profile_exponent: float = PARAMETER["profile_exponent"].default
     inplane_on: str = CHOICES["inplane_on"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
