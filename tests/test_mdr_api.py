@@ -284,3 +284,21 @@ def test_cli_mu_profile_exponent():
     bad = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5",
                "--profile-exponent", "0", "--v-inertial", "0.3")
     assert bad.returncode == 2 and "profile_exponent" in bad.stderr
+
+
+def test_docs_contact_geometry_code_runs():
+    """The python block of docs/contact_geometry.md runs as written; what it states."""
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "contact_geometry.md").read_text()
+    blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
+    assert blocks
+    ns: dict = {}
+    for block in blocks:
+        exec(compile(block, "docs/contact_geometry.md", "exec"), ns)
+    r, r_lin, pin, lin = ns["r"], ns["r_lin"], ns["pin"], ns["lin"]
+    assert r.trusted and r_lin.trusted and r.v_inertial == pytest.approx(r_lin.v_inertial)
+    assert lin.to_dimensionless().amplitude == pytest.approx(
+        1.5 * pin.to_dimensionless().amplitude, rel=1e-12)
+    assert r.mean_normal_ratio > 1.0 and r_lin.mean_normal_ratio == 1.0
+    assert ns["sphere"][0].status is vf.Status.STATIC and ns["sphere"][1].trusted
