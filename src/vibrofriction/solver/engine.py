@@ -297,17 +297,16 @@ def _check_curved(curved: NDArray[np.bool_], al: NDArray[np.float64],
     """ValueError, naming the parameter and its first value, for the curved-profile points
     the MDR solver does not cover yet (docs/contact_geometry.md)."""
     for name, values, bad, what in (
-            ("beta", be, np.isinf(be), "a rigid contact (beta = inf): the MDR springs need "
-             "a finite tangential stiffness"),
+            ("beta", be, np.isinf(be), "a rigid contact (beta = inf)"),
             ("eta_c", et, et > 0.0, "contact damping (eta_c > 0)"),
             ("a_x", ax, ax > 0.0, "a longitudinal in-plane oscillation (a_x > 0)"),
             ("a_y", ay, ay > 0.0, "a transverse in-plane oscillation (a_y > 0)")):
         hit = curved & bad
         if np.any(hit):
             i = int(np.flatnonzero(hit)[0])
-            raise ValueError(f"a curved profile (profile_exponent = {pe[i]!r}) is computed by "
-                             f"the MDR solver, which does not take {what} yet: got {name} = "
-                             f"{values[i]!r}")
+            raise ValueError(f"a curved profile (profile_exponent = {float(pe[i])!r}) is "
+                             f"computed by the MDR solver, which does not take {what} yet: "
+                             f"got {name} = {float(values[i])!r}")
     if not (isinstance(initial, str) and initial == "sliding") \
             and np.any(curved & (V != 0.0)):
         raise ValueError(f"initial = {initial!r}: a curved profile (profile_exponent "
