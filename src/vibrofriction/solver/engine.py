@@ -390,16 +390,17 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
                  dim.phase_x, dim.inplane_on == "substrate", *start,
                  *settings.kernel_arguments(), of, oi)
+    f = of.tolist()  # the contact's columns (as _contact_columns), on Python floats
     a = dim.amplitude
     if a > 1.0:  # theory.mean_normal_force, scalar
         theta = math.acos(-1.0 / a)
-        of[_O_NORMAL] = (theta + a * math.sin(theta)) / math.pi
+        f[_O_NORMAL] = (theta + a * math.sin(theta)) / math.pi
     else:
-        of[_O_NORMAL] = 1.0
-    of[_O_STICK_AREA] = of[_O_STICK]
-    of[_O_SLIP_AREA] = of[_O_SLIP] + of[_O_REVERSE]
-    of[_O_OPEN_AREA] = of[_O_FLIGHT]
-    return result_from_rows(of.tolist(), oi.tolist(), dim, V, settings)
+        f[_O_NORMAL] = 1.0
+    f[_O_STICK_AREA] = f[_O_STICK]
+    f[_O_SLIP_AREA] = f[_O_SLIP] + f[_O_REVERSE]
+    f[_O_OPEN_AREA] = f[_O_FLIGHT]
+    return result_from_rows(f, oi.tolist(), dim, V, settings)
 
 
 def friction_coefficient(
