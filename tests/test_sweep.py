@@ -179,7 +179,7 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
     assert ds.attrs["solver_max_periods"] == SolverSettings().max_periods
     assert '"tol_mean": 1e-07' in ds.attrs["solver_settings"]
     assert ds.attrs["velocity"] == "vbar"
-    assert ds.attrs["fixed"] == "a_x a_y amplitude eta_c phase_x phase_y zeta"
+    assert ds.attrs["fixed"] == "a_x a_y amplitude eta_c phase_x phase_y profile_exponent zeta"
 
 
 def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:

@@ -23,7 +23,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
-from vibrofriction.contact import FlatPunch, Material, Sphere
+from vibrofriction.contact import Cone, FlatPunch, Material, PowerLaw, Sphere
 from vibrofriction.schema import NONNEGATIVE, parameter_names
 from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
@@ -31,6 +31,10 @@ __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimension
            "inertial_to_vbar", "inertial_velocity", "pin_damping", "vbar_to_inertial"]
 
 FloatOrArray = float | NDArray[np.float64]
+
+#: How :meth:`Physical.from_bench` models a contact geometry: one linear spring at the
+#: load (the default), or the full contact by the method of dimensionality reduction.
+CONTACT_MODELS = ("linearised", "mdr")
 
 
 # --------------------------------------------------------------------------- validation
@@ -235,6 +239,12 @@ class Dimensionless:
         is computed by the 2-D solver (docs/inplane.md, "The 2-D solver").
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    profile_exponent : float
+        Exponent ``n`` of the pin's axisymmetric tip ``z = c r^n`` (``1`` a cone, ``2`` a
+        sphere), ``> 0``; ``math.inf`` (default) is the flat punch, the seed's single
+        spring.  A finite ``n`` is the scaled MDR contact of docs/contact_geometry.md
+        (``beta`` with the fully stuck contact's ``k_xc0 = 2 G* a0``, ``a = dd/d0``,
+        velocities with ``F_N0 = F(d0)``), computed by the MDR solver.
     inplane_on : str
         ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
         slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
@@ -250,6 +260,7 @@ class Dimensionless:
     phase_x: float = 0.0
     a_y: float = 0.0
     phase_y: float = 0.0
+    profile_exponent: float = math.inf
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
@@ -276,6 +287,17 @@ class Dimensionless:
         """``True`` if the contact opens once per period, ``a > 1``."""
         return self.amplitude > 1.0
 
+    @property
+    def curved(self) -> bool:
+        """``True`` for a curved tip (finite ``profile_exponent``: the MDR contact)."""
+        return self.profile_exponent != math.inf
+
+    def _check_flat(self, what: str) -> None:
+        if self.curved:
+            raise ValueError(f"{what} is not derived for a curved profile yet "
+                             f"(profile_exponent = {self.profile_exponent!r}; "
+                             "docs/contact_geometry.md): use the inertial velocity v_inertial")
+
     def critical_inertial_velocity(self) -> float:
         """``V_c``, the inertial velocity of continuous forward sliding (eq. 12 with
         damping; with a longitudinal in-plane oscillation, the combined drive's).
@@ -290,6 +312,7 @@ class Dimensionless:
         velocity and is below ``mu0`` at every velocity (the kinematic law,
         docs/inplane.md section 1).
         """
+        self._check_flat("the critical velocity (eq. 12)")
         if self.a_y > 0.0:
             return math.inf
         return float(theory.critical_inertial_velocity(
@@ -307,6 +330,7 @@ class Dimensionless:
                                         self.eta_c))
 
     def _check_vbar_inplane(self) -> None:
+        self._check_flat("vbar (v0/v0* of eq. 16)")
         if self.a_x > 0.0 or self.a_y > 0.0:
             raise ValueError(f"vbar (v0/v0* of eq. 16) is not defined with an in-plane "
                              f"oscillation (a_x = {self.a_x!r}, a_y = {self.a_y!r}); use the "
@@ -362,6 +386,14 @@ class Physical:
         both directions).
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    profile_exponent : float
+        Exponent ``n`` of the tip ``z = c r^n``; ``math.inf`` (default): the linear contact
+        of the fields above (a flat punch, or a curved tip linearised at its load).  A
+        finite ``n`` is the MDR contact (docs/contact_geometry.md): ``u_z0`` is the mean
+        indentation ``d0``, ``k_zc = 2 E* a0`` and ``k_xc = 2 G* a0`` the tangent normal
+        and the fully stuck tangential stiffness at ``d0`` (contact radius ``a0``), and the
+        mean-indentation load is ``F_N0 = F(d0) = k_zc u_z0 n/(n + 1)``
+        (:meth:`from_bench` with ``contact_model="mdr"`` builds it).
     inplane_on : str
         Where both components are imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
         of ``k_x`` and ``c_x``).
@@ -381,6 +413,7 @@ class Physical:
     phase_x: float = 0.0
     du_y: float = 0.0
     phase_y: float = 0.0
+    profile_exponent: float = math.inf
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
@@ -392,7 +425,9 @@ class Physical:
                    drive_frequency_hz: float, mu0: float, mass: float | None = None,
                    k_x: float | None = None, quality_factor: float | None = None,
                    damping_ratio: float | None = None, k_zc: float | None = None,
-                   k_xc: float | None = None, contact: FlatPunch | Sphere | None = None,
+                   k_xc: float | None = None,
+                   contact: FlatPunch | Sphere | Cone | PowerLaw | None = None,
+                   contact_model: str = "linearised", normal_control: str = "indentation",
                    eta_c: float = 0.0, du_z: float | None = None,
                    dF_N: float | None = None, du_x: float = 0.0, phase_x: float = 0.0,
                    du_y: float = 0.0, phase_y: float = 0.0,
@@ -403,9 +438,19 @@ class Physical:
           open) and its modal ``mass`` (kg) or its stiffness ``k_x`` (N/m), the other
           following from ``k_x = m (2 pi f_n)^2``; optionally its ``quality_factor`` or
           ``damping_ratio`` (the same decay record);
-        * the contact: ``k_zc`` and ``k_xc`` (N/m), or a ``contact`` model
-          (:class:`~vibrofriction.contact.FlatPunch`, :class:`~vibrofriction.contact.Sphere`:
-          Hertz and Mindlin at ``normal_load``); optionally its loss factor ``eta_c``;
+        * the contact: ``k_zc`` and ``k_xc`` (N/m), or a ``contact`` geometry
+          (:class:`~vibrofriction.contact.FlatPunch`, :class:`~vibrofriction.contact.Sphere`,
+          :class:`~vibrofriction.contact.Cone`, :class:`~vibrofriction.contact.PowerLaw`)
+          and how it is modelled, ``contact_model``: ``"linearised"`` (the default, as
+          before: one linear spring with the tangent stiffnesses at ``normal_load``,
+          Hertz and Mindlin for a sphere) or ``"mdr"`` (the full contact by the method of
+          dimensionality reduction, docs/contact_geometry.md: the mean indentation ``d0``
+          with ``F(d0) = normal_load``, its contact radius ``a0``, ``k_xc = 2 G* a0``,
+          ``k_zc = 2 E* a0`` and ``profile_exponent = n``; a flat punch gives the
+          linearised model exactly); optionally its loss factor ``eta_c``;
+        * ``normal_control``: ``"indentation"`` (the only one built: the indentation
+          ``d0 + du_z cos(omega t)`` is imposed, ``normal_load`` is the load at ``d0``);
+          ``"dead_weight"`` (the mean load imposed) is refused, not built yet;
         * the load ``normal_load = F_N0`` (N), the drive frequency (Hz) and the
           oscillation as an indentation amplitude ``du_z`` (m) or a normal-force
           amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
@@ -427,24 +472,52 @@ class Physical:
         else:
             k_x = _valid("k_x", k_x)
             mass = k_x / w_n2
+        if contact_model not in CONTACT_MODELS:
+            raise ValueError(f"contact_model must be one of {', '.join(map(repr, CONTACT_MODELS))}"
+                             f", got {contact_model!r}")
+        if normal_control != "indentation":
+            if normal_control == "dead_weight":
+                raise ValueError("normal_control='dead_weight' (the mean load imposed) is not "
+                                 "built yet: only 'indentation' (imposed indentation, "
+                                 "normal_load at the mean indentation) is")
+            raise ValueError(f"normal_control must be 'indentation' ('dead_weight' is not "
+                             f"built yet), got {normal_control!r}")
+        exponent = math.inf
         if contact is not None:
             if k_zc is not None or k_xc is not None:
                 raise ValueError("give either contact (a contact model) or k_zc and k_xc")
-            if not isinstance(contact, FlatPunch | Sphere):
-                raise TypeError(f"contact must be a FlatPunch or a Sphere, got "
+            if not isinstance(contact, FlatPunch | Sphere | Cone | PowerLaw):
+                raise TypeError(f"contact must be a FlatPunch, Sphere, Cone or PowerLaw, got "
                                 f"{type(contact).__name__}")
-            k_zc, k_xc = contact.stiffness(load)
+            if contact_model == "mdr":
+                u_z0 = float(contact.indentation(load))
+                k_zc = float(contact.normal_stiffness(u_z0))
+                k_xc = float(contact.tangential_stiffness(u_z0))
+                exponent = float(contact.exponent)
+            else:
+                k_zc, k_xc = contact.stiffness(load)
         elif k_zc is None or k_xc is None:
             raise ValueError("give the contact stiffnesses k_zc and k_xc (N/m) or a contact "
-                             "model (contact=FlatPunch(...) or Sphere(...))")
+                             "model (contact=FlatPunch(...), Sphere(...), Cone(...) or "
+                             "PowerLaw(...))")
+        elif contact_model == "mdr":
+            raise ValueError("contact_model='mdr' needs a contact geometry (contact=Sphere(...),"
+                             " Cone(...), PowerLaw(...) or FlatPunch(...)), not k_zc and k_xc")
         k_zc, k_xc = (float(x) for x in validated({"k_zc": k_zc, "k_xc": k_xc}).values())
+        if exponent == math.inf:
+            u_z0 = load / k_zc
         if (du_z is None) == (dF_N is None):
             raise ValueError("give exactly one of du_z (m) and dF_N (N) for the oscillation")
+        if dF_N is not None and exponent != math.inf:
+            raise ValueError("dF_N: the normal force of a curved MDR contact is not harmonic "
+                             "(no single force amplitude): give the indentation amplitude "
+                             "du_z (m)")
         du_z = _valid("du_z", du_z) if du_z is not None else \
             float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
-        system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
+        system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=u_z0, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
-                     du_y=du_y, phase_y=phase_y, inplane_on=inplane_on)
+                     du_y=du_y, phase_y=phase_y, profile_exponent=exponent,
+                     inplane_on=inplane_on)
         if quality_factor is not None and damping_ratio is not None:
             raise ValueError("give at most one of quality_factor and damping_ratio")
         if quality_factor is not None or damping_ratio is not None:
@@ -456,8 +529,10 @@ class Physical:
     @classmethod
     def from_bench_file(cls, path: str | os.PathLike) -> Physical:
         """:meth:`from_bench` from a JSON file of its keyword arguments (docs/bench.md);
-        a contact model is ``{"type": "sphere" | "flat_punch", "radius": ..., "pin":
-        {"E": ..., "nu": ...}, "counterface": {...}}``."""
+        a contact geometry is ``{"type": "sphere" | "flat_punch", "radius": ..., "pin":
+        {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
+        ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``
+        instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact."""
         import json
 
         try:
@@ -470,15 +545,18 @@ class Physical:
             raise ValueError(f"{os.fspath(path)!r} must hold a JSON object")
         contact = spec.pop("contact", None)
         if contact is not None:
-            kinds = {"sphere": Sphere, "flat_punch": FlatPunch}
+            kinds = {"sphere": (Sphere, ("radius",)), "flat_punch": (FlatPunch, ("radius",)),
+                     "cone": (Cone, ("slope",)), "power_law": (PowerLaw, ("c", "n"))}
             try:
-                kind = kinds[contact["type"]]
-                spec["contact"] = kind(float(contact["radius"]), Material(**contact["pin"]),
+                kind, sizes = kinds[contact["type"]]
+                spec["contact"] = kind(*(float(contact[k]) for k in sizes),
+                                       Material(**contact["pin"]),
                                        Material(**contact["counterface"]))
             except (KeyError, TypeError) as exc:
                 raise ValueError(f"contact must be {{'type': 'sphere' | 'flat_punch', "
-                                 f"'radius', 'pin': {{'E', 'nu'}}, 'counterface': {{...}}}}, "
-                                 f"got {contact!r} ({exc})") from None
+                                 f"'radius', 'pin': {{'E', 'nu'}}, 'counterface': {{...}}}} "
+                                 f"(or 'type': 'cone' with 'slope', 'power_law' with 'c' "
+                                 f"and 'n'), got {contact!r} ({exc})") from None
         try:
             return cls.from_bench(**spec)
         except TypeError as exc:
@@ -489,14 +567,31 @@ class Physical:
         return dataclasses.replace(self, **changes)
 
     @property
+    def curved(self) -> bool:
+        """``True`` for a curved tip (finite ``profile_exponent``: the MDR contact)."""
+        return self.profile_exponent != math.inf
+
+    @property
     def F_N0(self) -> float:
-        """Mean normal force ``k_zc u_z0`` without jumping, N (eq. 3)."""
+        """Normal force at the mean indentation, N: ``k_zc u_z0`` (eq. 3; the mean force
+        without jumping); for a curved MDR contact ``F(d0) = k_zc u_z0 n/(n + 1)``."""
+        if self.curved:
+            n = self.profile_exponent
+            return self.k_zc * self.u_z0 * n / (n + 1.0)
         return self.k_zc * self.u_z0
 
     @property
     def dF_N(self) -> float:
-        """Amplitude of the normal force ``k_zc du_z``, N (eq. 3)."""
+        """Amplitude of the normal force ``k_zc du_z``, N (eq. 3); ValueError for a curved
+        MDR contact, whose normal force is not harmonic."""
+        self._check_flat("dF_N (the amplitude of a harmonic normal force)")
         return self.k_zc * self.du_z
+
+    def _check_flat(self, what: str) -> None:
+        if self.curved:
+            raise ValueError(f"{what} is not available for a curved MDR contact yet "
+                             f"(profile_exponent = {self.profile_exponent!r}, "
+                             "docs/contact_geometry.md)")
 
     def natural_frequency(self) -> float:
         """``omega_0 = sqrt(k_x / m)`` of the body on the system spring, rad/s."""
@@ -539,7 +634,8 @@ class Physical:
                              a_x=float(self.inplane_amplitude(self.du_x, self.omega)),
                              phase_x=self.phase_x,
                              a_y=float(self.inplane_amplitude(self.du_y, self.omega)),
-                             phase_y=self.phase_y, inplane_on=self.inplane_on)
+                             phase_y=self.phase_y, profile_exponent=self.profile_exponent,
+                             inplane_on=self.inplane_on)
 
     def require_no_transverse(self, what: str) -> None:
         """ValueError if this set-up has a transverse in-plane oscillation, which ``what``
@@ -554,7 +650,9 @@ class Physical:
         """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of this pin at each point
         ``(v0, du_z, omega, du_x, phase_x)`` (SI), elementwise: the arguments of
         :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
-        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x`` are not used)."""
+        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x`` are not used).
+        ValueError for a curved MDR contact: the fit and the design do not take it yet."""
+        self._check_flat("the fit and the design (point_arguments)")
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
         phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
@@ -589,6 +687,7 @@ class Physical:
         (``du_x > 0``) the combined drive's (``theory.inplane_critical_velocity`` in m/s,
         docs/inplane.md).
         """
+        self._check_flat("the critical velocity v0* (eq. 12)")
         if self.du_x > 0.0 or self.du_y > 0.0:
             return float(self.to_dimensionless().critical_inertial_velocity()
                          * self.velocity_unit())

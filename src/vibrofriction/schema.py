@@ -104,6 +104,20 @@ FIELDS: tuple[Field, ...] = (
     Field("lateral_ratio", "float", "1", "mean transverse force over the mean normal one, "
           "<F_y>/(mu0 <F_N>) (0 without a transverse oscillation, a_y = 0)",
           "docs/inplane.md", "<F_y> / (mu0 <F_N>)", ("float", 16), dtype="f8"),
+    Field("mean_normal_ratio", "float", "1", "mean normal force over the cycle over the "
+          "normal force at the mean indentation, <F_N>/F_N0 (the closed form of the imposed "
+          "indentation: 1 for a flat punch without jumping)", "docs/contact_geometry.md",
+          "<F_N> / F_N0", ("float", 17), dtype="f8"),
+    Field("stick_area_fraction", "float", "1", "time-averaged fraction of the contact disc "
+          "(of the largest contact radius of the cycle; the flat punch's face) in stick "
+          "(the flat punch: stick_fraction)", "docs/contact_geometry.md",
+          column=("float", 18), dtype="f8"),
+    Field("slip_area_fraction", "float", "1", "time-averaged fraction of the contact disc "
+          "in slip, either way (the flat punch: slip_fraction + reverse_slip_fraction)",
+          "docs/contact_geometry.md", column=("float", 19), dtype="f8"),
+    Field("open_area_fraction", "float", "1", "time-averaged fraction of the contact disc "
+          "out of contact (the flat punch: flight_fraction)", "docs/contact_geometry.md",
+          column=("float", 20), dtype="f8"),
     Field("final_state", "object", "", "the last state on the Poincare section tau = 2 pi k "
           "(SectionState: y, x_dot, f, phase, e; None for the static limit)"),
     Field("system", "object", "", "the dimensionless system (Dimensionless: the parameters "
@@ -354,6 +368,10 @@ PARAMETERS: tuple[Parameter, ...] = (
     _p("phase_y", _D, "rad", "phase of the transverse in-plane oscillation relative to "
        "the normal one, a_y cos(tau + phase_y)", "phase_y", "docs/inplane.md", FINITE, 0.0,
        also=(_P,)),
+    _p("profile_exponent", _D, "1", "exponent n of the pin's axisymmetric tip z = c r^n "
+       "(1 cone, 2 sphere; inf = the flat punch, the single spring of the seed): the "
+       "contact by the method of dimensionality reduction", "n", "docs/contact_geometry.md",
+       Range(0.0, strict=True, allow_inf=True), float("inf"), also=(_P,)),
     _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
        "(16)", NONNEGATIVE, definition="v0 / v0*"),
     _p("v_inertial", _V, VELOCITY_UNIT, FIELD["v_inertial"].long_name, "V", "Fig. 6",

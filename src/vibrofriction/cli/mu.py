@@ -40,6 +40,10 @@ def mu_command(
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",
+    profile_exponent: Annotated[str, typer.Option(
+        "--profile-exponent", help="exponent n of the pin's tip z = c r^n: 'inf' the flat "
+        "punch (default), 2 a sphere, 1 a cone (the MDR solver, docs/contact_geometry.md: "
+        "slow, with --v-inertial or --v0)")] = "inf",
     vbar: Annotated[str | None, typer.Option(help="v0/v0* (eq. 16); comma-separated list "
                                              "allowed")] = None,
     v_inertial: Annotated[str | None, typer.Option(
@@ -80,13 +84,15 @@ def mu_command(
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
 
     Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c --a-x
-    --phase-x --a-y --phase-y --inplane-on]) with --vbar or --v-inertial, or a physical
-    set-up in SI units (--mass --k-x --k-xc --k-zc --u-z0 --du-z --omega --mu0 [--c-x or
-    --quality-factor, --c-xc, --du-x --phase-x --du-y --phase-y --inplane-on]) with --v0.
+    --phase-x --a-y --phase-y --inplane-on --profile-exponent]) with --vbar or
+    --v-inertial, or a physical set-up in SI units (--mass --k-x --k-xc --k-zc --u-z0 --du-z
+    --omega --mu0 [--c-x or --quality-factor, --c-xc, --du-x --phase-x --du-y --phase-y
+    --inplane-on --profile-exponent]) with --v0.
     """
     inplane = {"phase_x": parse_float(phase_x, "phase_x"),
                "phase_y": parse_float(phase_y, "phase_y"), "inplane_on": inplane_on}
     si_inplane = {"du_x": parse_float(du_x, "du_x"), "du_y": parse_float(du_y, "du_y")}
+    exponent = parse_float(profile_exponent, "profile_exponent")
     scaled_inplane = {"a_x": parse_float(a_x, "a_x"), "a_y": parse_float(a_y, "a_y")}
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
@@ -98,10 +104,13 @@ def mu_command(
             physical = Physical.from_bench_file(bench)
             if any(v > 0.0 for v in si_inplane.values()):
                 physical = physical.with_(**si_inplane, **inplane)
+            if exponent != physical.profile_exponent:
+                raise ValueError("--profile-exponent: a bench file's contact geometry and "
+                                 "contact_model give the profile (docs/bench.md)")
         else:
             physical = _physical(phys, c_x, c_xc, quality_factor,
                                  (alpha, beta, amplitude, vbar, v_inertial),
-                                 **si_inplane, **inplane)
+                                 **si_inplane, **inplane, profile_exponent=exponent)
         if any(v != 0.0 for v in scaled_inplane.values()):
             raise ValueError("--a-x, --a-y are the dimensionless amplitudes: a physical "
                              "set-up takes --du-x, --du-y (m)")
@@ -117,7 +126,8 @@ def mu_command(
             raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
         system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
                                parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
-                               parse_float(eta_c, "eta_c"), **scaled_inplane, **inplane)
+                               parse_float(eta_c, "eta_c"), **scaled_inplane,
+                               profile_exponent=exponent, **inplane)
         if any(v != 0.0 for v in si_inplane.values()):
             raise ValueError("--du-x, --du-y (m) need a physical set-up: the dimensionless "
                              "system takes --a-x, --a-y")
@@ -181,8 +191,9 @@ def _print(system: Dimensionless, results, as_json: bool) -> None:
         if inplane:
             inplane += (f" on the {system.inplane_on} (critical velocity "
                         f"{system.critical_inertial_velocity():.5g})")
+        profile = f" profile_exponent={system.profile_exponent:g}" if system.curved else ""
         typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g}"
-                   f"{damping}{inplane} case {system.case.value}")
+                   f"{damping}{inplane}{profile} case {system.case.value}")
         lateral = system.a_y > 0  # the 2-D solver: the mean force across the sliding too
         typer.echo(f"{'vbar':>10} {'v_inertial':>12} {'mu/mu0':>14} "
                    + (f"{'lateral':>14} " if lateral else "") + f"{'error':>9}  status")

@@ -45,6 +45,10 @@ def sweep_command(
         f"0); {_AXIS}")] = None,
     phase_y: Annotated[str | None, typer.Option(
         "--phase-y", help=f"its phase, rad (default 0; physical sweeps too); {_AXIS}")] = None,
+    profile_exponent: Annotated[str | None, typer.Option(
+        "--profile-exponent", help=f"exponent n of the tip z = c r^n (default inf: the flat "
+        f"punch; 2 a sphere, 1 a cone: the MDR solver, slow; physical sweeps too; "
+        f"docs/contact_geometry.md); {_AXIS}")] = None,
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",
@@ -105,7 +109,8 @@ def sweep_command(
     optional = {"c_x": c_x, "c_xc": c_xc, "du_x": du_x, "du_y": du_y}
     grid = _grid(dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
                       a_x=a_x, a_y=a_y, vbar=vbar, v_inertial=v_inertial), phys, optional,
-                 v0, {"phase_x": phase_x, "phase_y": phase_y})
+                 v0, {"phase_x": phase_x, "phase_y": phase_y,
+                      "profile_exponent": profile_exponent})
     options = dict(store=out, chunk_size=chunk_size, inplane_on=inplane_on,
                    settings=SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted),
                    initial=initial,
@@ -152,7 +157,8 @@ def _physical_grid(phys: dict[str, str | None], optional: dict[str, str | None],
 def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
                         zeta: str | None, eta_c: str | None, a_x: str | None,
                         a_y: str | None, vbar: str | None, v_inertial: str | None,
-                        phase_x: str | None, phase_y: str | None) -> dict:
+                        phase_x: str | None, phase_y: str | None,
+                        profile_exponent: str | None) -> dict:
     from ..sweep import parse_axis
 
     given = {"alpha": alpha, "beta": beta, "amplitude": amplitude}
@@ -163,7 +169,7 @@ def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | No
         raise ValueError("give exactly one of --vbar and --v-inertial")
     grid = {n: parse_axis(v, n) for n, v in given.items() if v is not None}
     for n, v in (("zeta", zeta), ("eta_c", eta_c), ("a_x", a_x), ("phase_x", phase_x),
-                 ("a_y", a_y), ("phase_y", phase_y)):
+                 ("a_y", a_y), ("phase_y", phase_y), ("profile_exponent", profile_exponent)):
         if v is not None:
             grid[n] = parse_axis(v, n)
     if vbar is not None:

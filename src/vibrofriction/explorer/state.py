@@ -54,7 +54,12 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "eta_c": (0.0, 1.0, False), "a_x": (0.0, 5.0, False),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
            "phase_y": (0.0, 6.283185307179586, False)}
-DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless"))
+#: not offered yet (the state keeps the schema's default): a curved profile's MDR solver
+#: takes seconds a point, and its vbar and closed forms are not derived
+#: (docs/contact_geometry.md)
+_NOT_OFFERED = ("profile_exponent",)
+DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless")
+                      if n not in _NOT_OFFERED)
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
     _model_field("mass", 1e-4, 10.0, label="pin modal mass (kg)"),
@@ -95,6 +100,7 @@ class State:
     phase_x: float = PARAMETER["phase_x"].default
     a_y: float = PARAMETER["a_y"].default
     phase_y: float = PARAMETER["phase_y"].default
+    profile_exponent: float = PARAMETER["profile_exponent"].default
     inplane_on: str = CHOICES["inplane_on"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01

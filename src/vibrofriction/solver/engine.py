@@ -101,6 +101,7 @@ def solve_points(
     phase_x: ArrayLike = 0.0,
     a_y: ArrayLike = 0.0,
     phase_y: ArrayLike = 0.0,
+    profile_exponent: ArrayLike = math.inf,
     *,
     inplane_on: str = "substrate",
     initial: Initial | NDArray[np.object_] = "sliding",
@@ -108,7 +109,7 @@ def solve_points(
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The ten parameters broadcast together and are validated against their ranges in
+    The eleven parameters broadcast together and are validated against their ranges in
     :data:`vibrofriction.schema.PARAMETERS` (``alpha > 0``, ``beta > alpha``, ``a >= 0``,
     ``zeta >= 0``, ``eta_c >= 0``, ``a_x, a_y >= 0``; ``V`` and the phases any finite
     real; finite but ``beta``); ``inplane_on`` is ``"substrate"`` or ``"holder"`` for all
@@ -128,18 +129,30 @@ def solve_points(
     (:mod:`vibrofriction._kernels.plane`, docs/inplane.md "The 2-D solver"; a finite
     ``beta``, ``V != 0``, and not ``a = 1`` with ``eta_c = 0``: ValueError otherwise);
     ``lateral_ratio = <F_y>/(mu0 <F_N>)`` is its mean transverse force (0 for the others).
+
+    A curved tip (finite ``profile_exponent``) is solved point by point by the MDR solver
+    (:func:`vibrofriction.solver.mdr.mdr_friction` with ``tol = settings.tol_trusted``;
+    :func:`_mdr_rows`): slow (a tenth of a second to seconds a point), from the
+    ``"sliding"`` start only, and not yet with ``eta_c > 0``, ``a_x > 0``, ``a_y > 0`` or
+    ``beta = inf`` (ValueError naming them).  ``mean_normal_ratio`` (the closed form of the
+    imposed indentation) and the area fractions ``stick_area_fraction``,
+    ``slip_area_fraction``, ``open_area_fraction`` are given at every point.
     """
     settings = settings or DEFAULT_SETTINGS
     on_substrate = checked_choice("inplane_on", inplane_on) == "substrate"
-    al, be, am, V, ze, et, ax, px, ay, py = np.broadcast_arrays(*(
+    al, be, am, V, ze, et, ax, px, ay, py, pe = np.broadcast_arrays(*(
         np.asarray(x, dtype=float)
         for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, a_y,
-                  phase_y)))
+                  phase_y, profile_exponent)))
     shape = V.shape
-    al, be, am, V, ze, et, ax, px, ay, py = (np.ascontiguousarray(x.ravel())
-                                             for x in (al, be, am, V, ze, et, ax, px, ay, py))
+    al, be, am, V, ze, et, ax, px, ay, py, pe = (
+        np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et, ax, px, ay, py, pe))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
-               "eta_c": et, "a_x": ax, "phase_x": px, "a_y": ay, "phase_y": py})
+               "eta_c": et, "a_x": ax, "phase_x": px, "a_y": ay, "phase_y": py,
+               "profile_exponent": pe})
+    curved = pe != math.inf
+    if np.any(curved):
+        _check_curved(curved, al, be, am, V, ze, et, ax, ay, pe, initial)
     plane = ay > 0.0
     if np.any(plane):
         _check_plane(be[plane], am[plane], et[plane], V[plane])
@@ -159,7 +172,7 @@ def solve_points(
     # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
     # has no direction there and is the rest, as in the reference (docs/inplane.md)
     at_zero = (V == 0.0) & (ax > 0.0)
-    for rows, k in ((plane, kind), ((V > 0.0) & ~plane, kind),
+    for rows, k in ((plane, kind), ((V > 0.0) & ~plane & ~curved, kind),
                     (at_zero, 1 if kind == 0 else kind)):
         idx = np.flatnonzero(rows)
         if not idx.size:
@@ -181,10 +194,13 @@ def solve_points(
                           np.ascontiguousarray(init[idx]), *settings.kernel_arguments(), of, oi)
         out_f[idx] = of
         out_i[idx] = oi
+    _contact_columns(out_f, am, ~curved)
+    if np.any(curved):
+        _mdr_rows(out_f, out_i, curved, al, be, am, V, ze, pe, settings)
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
     _held(out_f, out_i, at_zero, al, be, am, ze, et, ax, px, inplane_on)
-    static = (V == 0.0) & ~at_zero
+    static = (V == 0.0) & ~at_zero & ~curved
     _static_limit(am[static], out_f, out_i, static)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
@@ -247,11 +263,117 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
     for k in ("slip_fraction", "reverse_slip_fraction", "flight_fraction"):
         out_f[rows, column_index(k)] = np.where(contact, 0.0, np.nan)
     out_f[rows, column_index("lateral_ratio")] = 0.0
+    _contact_columns(out_f, amplitude, rows)
     out_i[rows, column_index("status")] = Status.STATIC.code
     out_i[rows, column_index("phase")] = codes.NO_PHASE
 
 
 _N_FLOAT, _N_INT = len(FLOAT_COLUMNS), len(INT_COLUMNS)
+_O_STICK, _O_SLIP, _O_REVERSE, _O_FLIGHT = (column_index(k) for k in (
+    "stick_fraction", "slip_fraction", "reverse_slip_fraction", "flight_fraction"))
+_O_NORMAL, _O_STICK_AREA, _O_SLIP_AREA, _O_OPEN_AREA = (column_index(k) for k in (
+    "mean_normal_ratio", "stick_area_fraction", "slip_area_fraction", "open_area_fraction"))
+
+
+def _contact_columns(out_f: NDArray[np.float64], amplitude: NDArray[np.float64],
+                     rows: NDArray[np.bool_]) -> None:
+    """The contact's columns of the flat-punch rows ``rows`` (``amplitude`` of those rows or
+    of all): ``mean_normal_ratio`` by its closed form (:func:`theory.mean_normal_force`)
+    and the area fractions, which for the one spring of a flat punch are its time
+    fractions (slip either way)."""
+    if not np.any(rows):
+        return
+    am = amplitude[rows] if amplitude.shape == rows.shape else amplitude
+    out_f[rows, _O_NORMAL] = theory.mean_normal_force(am)
+    out_f[rows, _O_STICK_AREA] = out_f[rows, _O_STICK]
+    out_f[rows, _O_SLIP_AREA] = out_f[rows, _O_SLIP] + out_f[rows, _O_REVERSE]
+    out_f[rows, _O_OPEN_AREA] = out_f[rows, _O_FLIGHT]
+
+
+def _check_curved(curved: NDArray[np.bool_], al: NDArray[np.float64],
+                  be: NDArray[np.float64], am: NDArray[np.float64], V: NDArray[np.float64],
+                  ze: NDArray[np.float64], et: NDArray[np.float64], ax: NDArray[np.float64],
+                  ay: NDArray[np.float64], pe: NDArray[np.float64], initial: object) -> None:
+    """ValueError, naming the parameter and its first value, for the curved-profile points
+    the MDR solver does not cover yet (docs/contact_geometry.md)."""
+    for name, values, bad, what in (
+            ("beta", be, np.isinf(be), "a rigid contact (beta = inf)"),
+            ("eta_c", et, et > 0.0, "contact damping (eta_c > 0)"),
+            ("a_x", ax, ax > 0.0, "a longitudinal in-plane oscillation (a_x > 0)"),
+            ("a_y", ay, ay > 0.0, "a transverse in-plane oscillation (a_y > 0)")):
+        hit = curved & bad
+        if np.any(hit):
+            i = int(np.flatnonzero(hit)[0])
+            raise ValueError(f"a curved profile (profile_exponent = {float(pe[i])!r}) is "
+                             f"computed by the MDR solver, which does not take {what} yet: "
+                             f"got {name} = {float(values[i])!r}")
+    if not (isinstance(initial, str) and initial == "sliding") \
+            and np.any(curved & (V != 0.0)):
+        raise ValueError(f"initial = {initial!r}: a curved profile (profile_exponent "
+                         "finite) starts from steady sliding only (initial='sliding'); the "
+                         "MDR solver takes no section state yet")
+
+
+#: The package's status of each status of :func:`~vibrofriction.solver.mdr.mdr_friction`.
+_MDR_STATUS = {"periodic": Status.PERIODIC, "averaged": Status.AVERAGED,
+               "not converged": Status.NOT_CONVERGED}
+
+
+def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np.bool_],
+              al: NDArray[np.float64], be: NDArray[np.float64], am: NDArray[np.float64],
+              V: NDArray[np.float64], ze: NDArray[np.float64], pe: NDArray[np.float64],
+              settings: SolverSettings) -> None:
+    """Fill the rows of the curved-profile points (``V >= 0``: a backward point is mirrored
+    by the caller) by the MDR solver, or at ``V = 0`` by the static limit
+    :func:`theory.profile_static_mu_ratio`.
+
+    Status: MDR ``"periodic"`` (the section state of the finer row repeats after one
+    period) is :attr:`Status.PERIODIC` (period 1), ``"averaged"`` :attr:`Status.AVERAGED`,
+    ``"not converged"`` :attr:`Status.NOT_CONVERGED` (``mu_ratio`` nan, ``error`` inf, as
+    the kernels' own) or, where a row made no progress (infinite error),
+    :attr:`Status.FAILED`.  ``error`` is the solver's: the difference of the rows of ``N``
+    and ``2N`` springs (the contact's discretisation) plus the orbits' errors.
+    ``periods`` and ``events`` are the finer row's (its periods, the events of its last
+    period); ``work``, the time fractions of the single contact point, the Floquet and
+    window columns and the final section state are nan (no such quantities for a row).
+    """
+    from .mdr import mdr_friction
+
+    c = column_index
+    nan_cols = ("work", "stick_fraction", "slip_fraction", "reverse_slip_fraction",
+                "flight_fraction", "multiplier", "settling_periods", "window_min",
+                "window_max", "drift_rate", "y", "x_dot", "f", "e")
+    for i in np.flatnonzero(rows):
+        out_f[i] = np.nan
+        out_i[i] = 0
+        out_f[i, c("lateral_ratio")] = 0.0
+        out_i[i, c("phase")] = codes.NO_PHASE
+        out_f[i, _O_NORMAL] = theory.profile_mean_normal_force(am[i], pe[i])
+        if V[i] == 0.0:
+            out_f[i, c("mu_ratio")] = theory.profile_static_mu_ratio(am[i], pe[i])
+            out_f[i, c("error")] = 0.0
+            out_f[i, c("work")] = 0.0
+            out_i[i, c("status")] = Status.STATIC.code
+            continue
+        r = mdr_friction(al[i], be[i], am[i], V[i], pe[i], zeta=ze[i],
+                         tol=settings.tol_trusted)
+        status = _MDR_STATUS[r["status"]]
+        mu, err = r["mu_ratio"], r["error"]
+        if status is Status.NOT_CONVERGED:
+            if not math.isfinite(err):
+                status = Status.FAILED
+            mu, err = math.nan, math.inf
+        for k in nan_cols:
+            out_f[i, c(k)] = math.nan
+        out_f[i, c("mu_ratio")] = mu
+        out_f[i, c("error")] = err
+        out_f[i, _O_STICK_AREA] = r["stick_fraction"]
+        out_f[i, _O_SLIP_AREA] = r["slip_fraction"]
+        out_f[i, _O_OPEN_AREA] = r["out_of_contact_fraction"]
+        out_i[i, c("status")] = status.code
+        out_i[i, c("period")] = 1 if status is Status.PERIODIC else 0
+        out_i[i, c("periods")] = r["periods"]
+        out_i[i, c("events")] = r["events_per_period"]
 #: Kernel start of the named initial states: ``(kind, y, x', e, phase)``.
 _NAMED_START = {"sliding": (0, 0.0, 0.0, 0.0, 0), "rest": (1, 0.0, 0.0, 0.0, 0)}
 
@@ -268,7 +390,17 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
                  dim.phase_x, dim.inplane_on == "substrate", *start,
                  *settings.kernel_arguments(), of, oi)
-    return result_from_rows(of.tolist(), oi.tolist(), dim, V, settings)
+    f = of.tolist()  # the contact's columns (as _contact_columns), on Python floats
+    a = dim.amplitude
+    if a > 1.0:  # theory.mean_normal_force, scalar
+        theta = math.acos(-1.0 / a)
+        f[_O_NORMAL] = (theta + a * math.sin(theta)) / math.pi
+    else:
+        f[_O_NORMAL] = 1.0
+    f[_O_STICK_AREA] = f[_O_STICK]
+    f[_O_SLIP_AREA] = f[_O_SLIP] + f[_O_REVERSE]
+    f[_O_OPEN_AREA] = f[_O_FLIGHT]
+    return result_from_rows(f, oi.tolist(), dim, V, settings)
 
 
 def friction_coefficient(
@@ -300,11 +432,12 @@ def friction_coefficient(
     """
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
-    if V.__class__ is float and V > 0.0 and dim.a_y == 0.0:  # one moving point, 1-D
+    if V.__class__ is float and V > 0.0 and dim.a_y == 0.0 \
+            and dim.profile_exponent == math.inf:  # one moving point, 1-D, flat punch
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)
     cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
-                        dim.a_x, dim.phase_x, dim.a_y, dim.phase_y,
+                        dim.a_x, dim.phase_x, dim.a_y, dim.phase_y, dim.profile_exponent,
                         inplane_on=dim.inplane_on, initial=initial, settings=settings)
     if V.ndim == 0:
         return result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, float(V))

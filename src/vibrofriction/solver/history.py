@@ -219,6 +219,10 @@ def simulate(
     components), and a :class:`SectionState` starts with the transverse components 0.
     """
     dim = dimensionless(system)
+    if dim.curved:
+        raise ValueError(f"simulate does not take a curved profile yet (profile_exponent = "
+                         f"{dim.profile_exponent!r}): the MDR time history is not built; "
+                         "friction_coefficient computes its steady state")
     V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")

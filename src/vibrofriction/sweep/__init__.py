@@ -53,6 +53,7 @@ def sweep(
     phase_x: ArrayLike | None = None,
     a_y: ArrayLike | None = None,
     phase_y: ArrayLike | None = None,
+    profile_exponent: ArrayLike | None = None,
     inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
@@ -92,6 +93,15 @@ def sweep(
     a_y, phase_y : the transverse in-plane oscillation ``a_y cos(tau + phase_y)`` (the 2-D
         solver, docs/inplane.md section 6); default the system's, or 0.  Physical systems
         sweep ``du_y`` (m) and ``phase_y`` (rad).
+    profile_exponent : the exponent ``n`` of the tip ``z = c r^n`` (docs/contact_geometry.md;
+        the same in SI and scaled form); default the system's, or ``inf`` (the flat
+        punch).  Points with a finite ``n`` are solved by the MDR solver, point by point
+        (a tenth of a second to seconds each), from steady sliding (no continuation), on
+        the ``v_inertial`` or ``v0`` axis (``vbar`` is not defined for them yet), and not
+        with ``eta_c``, ``a_x``, ``a_y`` > 0 or ``beta = inf`` (a ValueError when solved);
+        their ``critical_velocity`` is nan (not derived yet).  In a physical sweep the
+        other SI fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with ``n``
+        (:class:`~vibrofriction.params.Physical`): not the same tip seen flat.
     inplane_on : where the in-plane oscillation is imposed, ``"substrate"`` or
         ``"holder"`` (one for the whole grid); default the system's, or ``"substrate"``.
     vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
@@ -141,7 +151,7 @@ def sweep(
     version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,
                      eta_c=eta_c, a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y,
-                     inplane_on=inplane_on, vbar=vbar,
+                     profile_exponent=profile_exponent, inplane_on=inplane_on, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=version, fingerprint=fingerprint)

@@ -275,6 +275,7 @@ def make_plan(
     phase_x: ArrayLike | None = None,
     a_y: ArrayLike | None = None,
     phase_y: ArrayLike | None = None,
+    profile_exponent: ArrayLike | None = None,
     inplane_on: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
@@ -298,17 +299,26 @@ def make_plan(
             physical["phase_x"] = phase_x
         if phase_y is not None:
             physical["phase_y"] = phase_y
+        if profile_exponent is not None:
+            physical["profile_exponent"] = profile_exponent
         params, velocity = _physical_axes(system.with_(inplane_on=on), physical, v0, dict(
             alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, a_x=a_x,
             a_y=a_y, vbar=vbar, v_inertial=v_inertial))
     else:
         kind = "dimensionless"
         values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
-                      a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y)
+                      a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y,
+                      profile_exponent=profile_exponent)
         params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
                                                dict(physical or {}), v0)
     if continuation:
         _check_continuation(velocity)
+        curved = [a for a in params if a.name == "profile_exponent"
+                  and np.any(np.isfinite(a.values))]
+        if curved:
+            raise ValueError("continuation is not available for a curved profile "
+                             "(profile_exponent finite in the grid): the MDR solver starts "
+                             "from steady sliding only")
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
                 initial=initial, continuation=bool(continuation), chunks=(),
                 version=version, fingerprint=fingerprint, inplane_on=on)
@@ -394,6 +404,10 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     _check_above(axes)
     if velocity.name == "vbar":
         by_name = {a.name: a for a in axes}
+        if np.any(np.isfinite(by_name["profile_exponent"].values)):
+            raise ValueError("vbar (v0/v0* of eq. 16) is not defined for a curved profile "
+                             "yet (profile_exponent finite in the grid): sweep v_inertial "
+                             "instead")
         if np.any(by_name["a_x"].values > 0.0) or np.any(by_name["a_y"].values > 0.0):
             raise ValueError("vbar (v0/v0* of eq. 16) is not defined with an in-plane "
                              "oscillation (a_x or a_y > 0 in the grid): sweep v_inertial (signed) "
