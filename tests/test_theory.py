@@ -243,6 +243,7 @@ def test_mean_normal_force_by_quadrature(a: float) -> None:
     breaks = [math.acos(-1 / a), -math.acos(-1 / a)] if a > 1 else []
     expected = period_mean(lambda t: n_of(t, a), breaks)
     assert theory.mean_normal_force(a) == pytest.approx(expected, rel=1e-11)
+    assert theory.mean_normal_force_of(a) == pytest.approx(expected, rel=1e-11)
 
 
 def test_mean_normal_force_shape() -> None:

@@ -386,6 +386,15 @@ def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
     return as_float_or_array(np.where(a > 1.0, (theta + a * np.sin(theta)) / np.pi, 1.0))
 
 
+def mean_normal_force_of(a: float) -> float:
+    """:func:`mean_normal_force` of one valid amplitude, in plain floats (the one-point
+    fast path of the solver, where numpy's overhead would be most of the call)."""
+    if a <= 1.0:
+        return 1.0
+    theta = math.acos(-1.0 / a)
+    return (theta + a * math.sin(theta)) / math.pi
+
+
 def liftoff_phases(amplitude: ArrayLike) -> Liftoff:
     r"""Phases of loss of contact and touchdown, where ``1 + a cos tau = 0``.
 

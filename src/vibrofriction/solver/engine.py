@@ -391,12 +391,7 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
                  dim.phase_x, dim.inplane_on == "substrate", *start,
                  *settings.kernel_arguments(), of, oi)
     f = of.tolist()  # the contact's columns (as _contact_columns), on Python floats
-    a = dim.amplitude
-    if a > 1.0:  # theory.mean_normal_force, scalar
-        theta = math.acos(-1.0 / a)
-        f[_O_NORMAL] = (theta + a * math.sin(theta)) / math.pi
-    else:
-        f[_O_NORMAL] = 1.0
+    f[_O_NORMAL] = theory.mean_normal_force_of(dim.amplitude)
     f[_O_STICK_AREA] = f[_O_STICK]
     f[_O_SLIP_AREA] = f[_O_SLIP] + f[_O_REVERSE]
     f[_O_OPEN_AREA] = f[_O_FLIGHT]
