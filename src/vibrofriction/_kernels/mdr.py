@@ -152,31 +152,83 @@ def _refine(c, dc, m, cs, st, e, g, w, k, a, V, y0, theta, ta, tb, fa, fb):
 
 
 @jit
+def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, tau):
+    """The event function of a group: ``kind`` 0 the stuck springs' margin towards positive
+    slip, ``w (1 + a cos tau) - k u - cp`` (``u = y - y0 + V t``, ``cp`` the largest
+    ``w g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
+    ``w g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
+    backwards (the same for every spring of the group: ``n_i' = -w a sin tau``)."""
+    if kind == 0:
+        return w * (1.0 + a * math.cos(tau)) - k * (y - y0 + V * t) - cp
+    if kind == 1:
+        return w * (1.0 + a * math.cos(tau)) + k * (y - y0 + V * t) - cm
+    if kind == 2:
+        return (yd + V) + (w * a / k) * math.sin(tau)
+    return -(yd + V) + (w * a / k) * math.sin(tau)
+
+
+@jit
+def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa, fb):
+    """Illinois iteration for the root of a group's event function on ``[ta, tb]``
+    (``fa > 0 >= fb``); returns the right end of the final bracket."""
+    side = 0
+    for _ in range(200):
+        if tb - ta <= 2e-16 * max(1.0, tb):
+            break
+        t = (ta * fb - tb * fa) / (fb - fa)
+        if not (ta < t < tb):
+            t = 0.5 * (ta + tb)
+        b = basis_values(m, t, cs, False)
+        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), dot(dc, b), y0, t, theta + t)
+        if f > 0.0:
+            ta, fa = t, f
+            if side == -1:
+                fb *= 0.5
+            side = -1
+        else:
+            tb, fb = t, f
+            if side == 1:
+                fa *= 0.5
+            side = 1
+    return tb
+
+
+@jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
                 state_tol, y, yd, st, e):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
     (modified in place) until the section state repeats within ``state_tol`` (relative to
     its size) after at least ``min_periods``, or ``max_periods``.
 
-    Returns ``(periods, converged, pf, pn, frac, viol, events)``: the per-period integrals
-    of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``) and of
-    ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of contact)
-    of the last period, the largest ``|f_i| - n_i`` seen at the scan points and the number
-    of events of the last period.
+    The scanned events come in four groups, each decided by one function of time
+    (:func:`_group_value`): every stuck spring's margin is a common function of time minus
+    its own constant ``w g_i +- k e_i``, so the stuck spring with the largest constant
+    slips first (and with it every stuck spring of the same constant: a cluster that
+    stuck together), and every spring slipping the same way has the same slip velocity,
+    so the group sticks at once. Switching groups as a whole, not spring by spring at
+    round-off distances, is what keeps the event count per period bounded.
+
+    Returns ``(periods, converged, pf, pn, frac, viol, events, y, yd)``: the per-period
+    integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``) and
+    of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
+    contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
+    number of events of the last period (``-1``: no progress) and the final body state.
     """
     g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
     k = (beta - alpha) * dxi
     nint = normal_integral_row(a, g, w, tau_off)
+    tol_c = 1e-11 * w * (2.0 + a)
     pf = np.zeros(max_periods)
     pn = np.full(max_periods, nint)
     frac = np.zeros(3)
     viol = -np.inf
     fresh = np.zeros(M, dtype=np.bool_)
-    prev = np.zeros(M)
-    root = np.full(M, np.inf)
+    gval = np.zeros(4)
+    gprev = np.zeros(4)
+    groot = np.zeros(4)
+    gon = np.zeros(4, dtype=np.bool_)
+    gfresh = np.zeros(4, dtype=np.bool_)
     stuck_loop = False
-    y_old = 0.0
-    yd_old = 0.0
     e_old = np.zeros(M)
     st_old = np.zeros(M, dtype=np.int64)
     periods = 0
@@ -206,20 +258,43 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             Swg = 0.0
             a_st = 0.0
             a_sl = 0.0
+            cp = -np.inf
+            cm = -np.inf
+            gon[:] = False
             for i in range(M):
                 s = st[i]
                 if s == STICK:
                     K += k
                     E0 += k * e[i]
                     a_st += area[i]
+                    gon[0] = True
+                    gon[1] = True
+                    cp = max(cp, w * g[i] + k * e[i])
+                    cm = max(cm, w * g[i] - k * e[i])
                 elif s == SLIP_POS:
                     Sw += w
                     Swg += w * g[i]
                     a_sl += area[i]
+                    gon[2] = True
                 elif s == SLIP_NEG:
                     Sw -= w
                     Swg -= w * g[i]
                     a_sl += area[i]
+                    gon[3] = True
+            # a group that has just switched (its event function at 0 by construction)
+            gfresh[:] = False
+            for i in range(M):
+                if fresh[i]:
+                    s = st[i]
+                    if s == STICK:
+                        if w * g[i] + k * e[i] >= cp - tol_c:
+                            gfresh[0] = True
+                        if w * g[i] - k * e[i] >= cm - tol_c:
+                            gfresh[1] = True
+                    elif s == SLIP_POS:
+                        gfresh[2] = True
+                    elif s == SLIP_NEG:
+                        gfresh[3] = True
             c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta)
             dc = derivative(c, m)
             cs = c[6] != 0.0 or c[7] != 0.0
@@ -231,16 +306,22 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                 tt = tau_on[i] if st[i] == OFF else tau_off[i]
                 if tt > theta and tt - theta < T:
                     T = tt - theta
-            # values at the start; a spring at or past its event (not just switched)
+            # values at the start; a group at or past its event (not just switched)
             # switches now
-            immediate = -1
-            for i in range(M):
-                prev[i] = _event_value(st[i], e[i], g[i], w, k, a, V, y, yd, y, 0.0, theta)
-                if st[i] != OFF and not fresh[i] and prev[i] < -_tolerance(st[i], g[i], w, k, a,
-                                                                             V, yd, theta):
-                    immediate = i
+            tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
+            tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
+            immediate = False
+            for j in range(4):
+                groot[j] = np.inf
+                if not gon[j]:
+                    continue
+                gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, theta)
+                tl = tol_s if j < 2 else tol_v
+                if not gfresh[j] and gprev[j] < -tl:
+                    groot[j] = 0.0
+                    immediate = True
             t_ev = T
-            scanned = immediate >= 0
+            scanned = immediate
             if scanned:
                 t_ev = 0.0
             else:
@@ -253,28 +334,24 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                     ydb = dot(dc, b)
                     tau = theta + tb
                     best = T
-                    for i in range(M):
-                        root[i] = np.inf
-                        if st[i] == OFF:
+                    for j in range(4):
+                        if not gon[j]:
                             continue
-                        f = _event_value(st[i], e[i], g[i], w, k, a, V, yb, ydb, y, tb, tau)
-                        if st[i] == STICK:
-                            n = w * (1.0 + a * math.cos(tau) - g[i])
-                            v = abs(k * (e[i] + yb - y + V * tb)) - n
-                            if v > viol and f > 0.0:
-                                viol = v
-                        if f <= 0.0 and prev[i] <= 0.0 and ta == 0.0 and not fresh[i]:
-                            root[i] = 0.0  # at its event within round-off, and leaving
+                        f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, tau)
+                        if j < 2 and f > 0.0 and -f > viol:
+                            viol = -f
+                        if f <= 0.0 and gprev[j] <= 0.0 and ta == 0.0 and not gfresh[j]:
+                            groot[j] = 0.0  # at its event within round-off, and leaving
                             best = 0.0
                             scanned = True
-                        elif f <= 0.0 and prev[i] > 0.0:
-                            r = _refine(c, dc, m, cs, st[i], e[i], g[i], w, k, a, V, y,
-                                        theta, ta, tb, prev[i], f)
-                            root[i] = r
+                        elif f <= 0.0 and gprev[j] > 0.0:
+                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, theta,
+                                              ta, tb, gprev[j], f)
+                            groot[j] = r
                             if r < best:
                                 best = r
                             scanned = True
-                        prev[i] = f
+                        gprev[j] = f
                     if scanned:
                         t_ev = best
                     ta = tb
@@ -287,27 +364,38 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             fr1 += a_sl * t_ev
             fr2 += (1.0 - a_st - a_sl) * t_ev
             tau = theta + t_ev
-            for i in range(M):
-                if st[i] == STICK:
-                    e[i] = e[i] + y1 - y + V * t_ev
+            u = y1 - y + V * t_ev
             fresh[:] = False
             if scanned:
-                # the spring(s) whose refined root is t_ev (equal springs: all) switch
+                # the group(s) whose refined root is t_ev switch as a whole
                 for i in range(M):
-                    if st[i] == OFF:
+                    s = st[i]
+                    if s == OFF:
                         continue
                     n = w * (1.0 + a * math.cos(tau) - g[i])
-                    if i == immediate or (immediate < 0 and root[i] <= t_ev):
-                        if st[i] == STICK:
-                            st[i] = SLIP_POS if e[i] > 0.0 else SLIP_NEG
+                    if s == STICK:
+                        sw = 0
+                        if groot[0] <= t_ev and w * g[i] + k * e[i] >= cp - tol_c:
+                            sw = SLIP_POS
+                        elif groot[1] <= t_ev and w * g[i] - k * e[i] >= cm - tol_c:
+                            sw = SLIP_NEG
+                        e[i] = e[i] + u
+                        if sw != 0:
+                            st[i] = sw
                             e[i] = 0.0
-                        else:
-                            sgn = 1.0 if st[i] == SLIP_POS else -1.0
-                            st[i] = STICK
-                            e[i] = sgn * max(n, 0.0) / k
+                            fresh[i] = True
+                            events += 1
+                    elif (s == SLIP_POS and groot[2] <= t_ev) or \
+                            (s == SLIP_NEG and groot[3] <= t_ev):
+                        sgn = 1.0 if s == SLIP_POS else -1.0
+                        st[i] = STICK
+                        e[i] = sgn * max(n, 0.0) / k
                         fresh[i] = True
                         events += 1
             else:
+                for i in range(M):
+                    if st[i] == STICK:
+                        e[i] = e[i] + u
                 if t_ev < TWO_PI - theta:
                     for i in range(M):
                         if tau_off[i] < 0.0:
