@@ -18,13 +18,20 @@ package's basis (:mod:`.basis`: free motion, periodic response or, near the reso
 ``alpha + K = 1``, the responses from rest). Events:
 
 * stick -> slip where the margin ``n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``);
-* slip -> stick where the slip velocity ``s (y' + V) - n_i'/k`` reaches 0;
+  the margins of all stuck springs are one function of time minus each spring's constant
+  ``w g_i +- k e_i``, so only the largest constant on each side is scanned, and the
+  springs sharing it (a cluster that stuck together) slip together;
+* slip -> stick where the slip velocity ``s (y' + V) - n_i'/k`` reaches 0: the same for
+  every spring slipping in direction ``s`` (``n_i' = -w a sin tau``), so the group sticks
+  at once;
 * lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
   down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
 
-The margins and slip velocities are scanned on sub-steps of the segment (at most
+These four group functions are scanned on sub-steps of the segment (at most
 ``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
-method to round-off, and the earliest root over all springs ends the segment. A dip below
+method to round-off, and the earliest root ends the segment (a scan costs O(1), not
+O(springs); switching groups as a whole, not spring by spring at round-off distances,
+removed the stalls of the first version). A dip below
 zero shorter than a sub-step is not seen (a grazing event); that is the method's only
 approximation besides round-off.
 """
@@ -104,54 +111,6 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
 
 
 @jit
-def _event_value(st, e, g, w, k, a, V, y, yd, y0, t, tau):
-    """Positive while the spring stays in its state: the margin ``n - |k e|`` in stick,
-    the slip velocity in slip (0 out of contact: no scanned event)."""
-    if st == STICK:
-        n = w * (1.0 + a * math.cos(tau) - g)
-        return n - abs(k * (e + y - y0 + V * t))
-    if st == SLIP_POS:
-        return (yd + V) + (w * a / k) * math.sin(tau)
-    if st == SLIP_NEG:
-        return -(yd + V) + (w * a / k) * math.sin(tau)
-    return 1.0
-
-
-@jit
-def _tolerance(st, g, w, k, a, V, yd, tau):
-    """Round-off scale of the event function of a spring in state ``st``."""
-    if st == STICK:
-        return 1e-12 * w * (1.0 + a + abs(g))
-    return 1e-12 * (abs(yd) + abs(V) + w * a / k)
-
-
-@jit
-def _refine(c, dc, m, cs, st, e, g, w, k, a, V, y0, theta, ta, tb, fa, fb):
-    """Illinois iteration for the root of the event function on ``[ta, tb]``
-    (``fa > 0 >= fb``); returns the left end of the final bracket's root estimate."""
-    side = 0
-    for _ in range(200):
-        if tb - ta <= 2e-16 * max(1.0, tb):
-            break
-        t = (ta * fb - tb * fa) / (fb - fa)
-        if not (ta < t < tb):
-            t = 0.5 * (ta + tb)
-        b = basis_values(m, t, cs, False)
-        f = _event_value(st, e, g, w, k, a, V, dot(c, b), dot(dc, b), y0, t, theta + t)
-        if f > 0.0:
-            ta, fa = t, f
-            if side == -1:
-                fb *= 0.5
-            side = -1
-        else:
-            tb, fb = t, f
-            if side == 1:
-                fa *= 0.5
-            side = 1
-    return tb
-
-
-@jit
 def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, tau):
     """The event function of a group: ``kind`` 0 the stuck springs' margin towards positive
     slip, ``w (1 + a cos tau) - k u - cp`` (``u = y - y0 + V t``, ``cp`` the largest
@@ -223,7 +182,6 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     frac = np.zeros(3)
     viol = -np.inf
     fresh = np.zeros(M, dtype=np.bool_)
-    gval = np.zeros(4)
     gprev = np.zeros(4)
     groot = np.zeros(4)
     gon = np.zeros(4, dtype=np.bool_)

@@ -22,6 +22,10 @@ ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see 
 SUBSTEPS = 64
 MAX_PERIODS = 4000
 AVERAGE_WINDOW = 100
+ANDERSON = 6  # period maps mixed
+ACCELERATED_PERIODS = 200  # then plain iteration
+MAX_SPRINGS = 640
+SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
@@ -42,14 +46,50 @@ def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
         raise ValueError(f"profile_exponent must be in (0, inf], got {n_exp}")
 
 
+def _start(alpha: float, a: float, n_exp: float, M: int,
+           warm: tuple | None) -> tuple[float, float, np.ndarray, np.ndarray]:
+    """Section state to start a row of ``M`` springs from: steady sliding (``y = -sum
+    n_i(0)/alpha``, every loaded spring slipping forwards), or ``warm = (y, y', st, e)``, a
+    converged row of ``M/2`` springs: each spring inherits its parent cell's state (the
+    elongation ``e = f/k`` does not depend on the cell width), a stuck one clipped to its
+    own friction limit at the section."""
+    if warm is None:
+        g, w, _, _, _, _ = row_geometry(a, n_exp, M)
+        st = np.full(M, 2, dtype=np.int64)
+        st[w * (1.0 - g) <= 0.0] = 0
+        return -float(np.sum(w * np.maximum(0.0, 1.0 - g))) / alpha, 0.0, st, np.zeros(M)
+    y, yd, st0, e0 = warm
+    parent = np.arange(M) * st0.size // M
+    st = st0[parent].copy()
+    e = e0[parent].copy()
+    return float(y), float(yd), st, e
+
+
+def _anderson_step(xs: list, gs: list) -> np.ndarray:
+    """Anderson mixing (type II, no damping) from the iterates ``xs`` and their images
+    ``gs``: the combination of the images whose residuals' combination is smallest."""
+    F = np.array([gx - x for x, gx in zip(xs, gs, strict=True)])
+    G = np.array(gs)
+    dF = np.diff(F, axis=0)
+    dG = np.diff(G, axis=0)
+    gamma, *_ = np.linalg.lstsq(dF.T, F[-1], rcond=None)
+    return G[-1] - gamma @ dG
+
+
 def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_exponent: float,
             n_springs: int, zeta: float = 0.0, state_tol: float = 1e-11,
-            substeps: int = SUBSTEPS, max_periods: int = MAX_PERIODS) -> dict:
+            substeps: int = SUBSTEPS, max_periods: int = MAX_PERIODS,
+            warm: tuple | None = None, accelerate: bool = True) -> dict:
     """Steady state of one row of ``n_springs`` springs (no extrapolation in ``N``).
 
-    Starts sliding (``y = -sum n_i(0)/alpha``, every spring slipping forwards) and iterates
-    the period map until the section state repeats within ``state_tol``: status
-    ``"periodic"`` (error: round-off, 1e-12); otherwise the mean over the last
+    Starts sliding (``y = -sum n_i(0)/alpha``, every spring slipping forwards), or from a
+    coarser row's final section state ``warm`` (:func:`_start`), and iterates the period
+    map until the section state repeats within ``state_tol``: status ``"periodic"``
+    (error: round-off, 1e-12). With ``accelerate``, once the springs' stick/slip states at
+    the section repeat, the continuous part of the state (``y``, ``y'``, the stuck
+    springs' elongations) is updated by Anderson mixing of the last ``ANDERSON`` period
+    maps (the transient of a lightly damped body is long under plain iteration); a
+    change of the discrete states restarts the history. Otherwise the mean over the last
     ``AVERAGE_WINDOW`` periods, its error the difference of the window's two halves:
     ``"averaged"`` (or ``"not converged"`` if the kernel made no progress).
     """
@@ -57,32 +97,72 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     if M < 1:
         raise ValueError(f"n_springs must be >= 1, got {n_springs}")
     a, n_exp = float(amplitude), float(profile_exponent)
-    g, w, _, _, _, _ = row_geometry(a, n_exp, M)
-    st = np.full(M, 2, dtype=np.int64)
-    st[w * (1.0 - g) <= 0.0] = 0
-    e = np.zeros(M)
-    y = -float(np.sum(w * np.maximum(0.0, 1.0 - g))) / alpha
+    y, yd, st, e = _start(alpha, a, n_exp, M, warm)
     gamma = 2.0 * zeta * math.sqrt(alpha)
-    periods, conv, pf, pn, frac, viol, events, _, _ = run_periods(
-        alpha, beta, a, V, gamma, n_exp, M, substeps, 5, max_periods, state_tol, y, 0.0, st, e)
+    pfs: list[float] = []
+    pns: list[float] = []
+    periods, conv, events, frac, viol = 0, False, 0, np.zeros(3), -math.inf
+    xs: list[np.ndarray] = []
+    gs: list[np.ndarray] = []
+    st_hist = st.copy()
+    while accelerate and periods < max_periods:
+        x = np.concatenate(([y, yd], e))
+        st_in = st.copy()
+        p, c1, pf, pn, frac, v1, events, y, yd = run_periods(
+            alpha, beta, a, V, gamma, n_exp, M, substeps, 1, 1, state_tol, y, yd, st, e)
+        periods += 1
+        viol = max(viol, v1)
+        if events < 0:
+            break
+        pfs.append(float(pf[-1]))
+        pns.append(float(pn[-1]))
+        gx = np.concatenate(([y, yd], e))
+        same = bool(np.array_equal(st, st_in))
+        scale = np.sum(np.abs(gx)) + 1e-300
+        if same and np.sum(np.abs(gx - x)) <= state_tol * scale and periods >= 2:
+            conv = True
+            break
+        if not (same and np.array_equal(st, st_hist)):
+            xs, gs = [], []
+            st_hist = st.copy()
+        xs.append(x)
+        gs.append(gx)
+        if len(xs) > ANDERSON:
+            xs.pop(0)
+            gs.pop(0)
+        if len(xs) >= 2 and same:
+            xn = _anderson_step(xs, gs)
+            y, yd = float(xn[0]), float(xn[1])
+            e[:] = np.where(st == STICK, xn[2:], 0.0)
+        if periods >= ACCELERATED_PERIODS:
+            break
+    if not conv and events >= 0:
+        p, conv, pf, pn, frac, v1, events, y, yd = run_periods(
+            alpha, beta, a, V, gamma, n_exp, M, substeps, min(5, max_periods - periods),
+            max_periods - periods, state_tol, y, yd, st, e)
+        periods += int(p)
+        viol = max(viol, v1)
+        pfs.extend(pf.tolist())
+        pns.extend(pn.tolist())
+    pf_a, pn_a = np.array(pfs), np.array(pns)
     if events < 0:
-        status, mu, err = "not converged", float(pf[-1] / pn[-1]) if periods > 1 else math.nan, \
-            math.inf
+        status, mu, err = "not converged", float(pf_a[-1] / pn_a[-1]) if periods > 1 \
+            else math.nan, math.inf
     elif conv:
-        status, mu, err = "periodic", float(pf[-1] / pn[-1]), 1e-12
+        status, mu, err = "periodic", float(pf_a[-1] / pn_a[-1]), 1e-12
     else:
         win = min(AVERAGE_WINDOW, periods // 2)
         h = win // 2
-        mu = float(np.sum(pf[-win:]) / np.sum(pn[-win:]))
-        m1 = np.sum(pf[-win:-h]) / np.sum(pn[-win:-h])
-        m2 = np.sum(pf[-h:]) / np.sum(pn[-h:])
+        mu = float(np.sum(pf_a[-win:]) / np.sum(pn_a[-win:]))
+        m1 = np.sum(pf_a[-win:-h]) / np.sum(pn_a[-win:-h])
+        m2 = np.sum(pf_a[-h:]) / np.sum(pn_a[-h:])
         status, err = "averaged", float(abs(m1 - m2)) + 1e-12
     return dict(mu_ratio=mu, error=err, status=status, periods=int(periods),
-                mean_normal_ratio=float(pn[-1] / (2.0 * math.pi)),
+                mean_normal_ratio=float(pn_a[-1] / (2.0 * math.pi)),
                 stick_fraction=float(frac[0]), slip_fraction=float(frac[1]),
                 out_of_contact_fraction=float(frac[2]), max_excess=float(viol),
                 events_per_period=int(events), n_springs=M, final_status=st.copy(),
-                final_stuck=int(np.sum(st == STICK)))
+                final_stuck=int(np.sum(st == STICK)), final_state=(y, yd, st.copy(), e.copy()))
 
 
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
@@ -91,9 +171,13 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
     Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 640
-    until the error is ``<= tol``); the result is the Richardson extrapolation with order
-    2, ``mu_2N + (mu_2N - mu_N)/3``, and its ``error`` is ``|mu_2N - mu_N|`` (three times
-    the Richardson estimate: the convergence is irregular) plus both orbits' errors. The
+    until the error is ``<= tol``; each row starts from the previous row's final section
+    state); the result is the Richardson extrapolation with order 2,
+    ``mu_2N + (mu_2N - mu_N)/3``, and its ``error`` is ``|mu_2N - mu_N|`` (three times the
+    Richardson estimate: the convergence is irregular) plus both orbits' errors. A row
+    that finds no periodic orbit within ``SKIP_PERIODS`` after a periodic one is passed
+    over (``skipped_rows``) and the pair becomes ``(N, 4N)`` (extrapolated with ratio 4,
+    error still the full difference). The
     flat punch (``profile_exponent = inf``) is one spring, exactly. Also returned:
     ``mean_normal_ratio = <F_N>/F_N0`` (exact for the row of ``2N``), the time-averaged
     fractions of the disc of the largest contact radius in stick, slip and out of contact
@@ -110,18 +194,34 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         return r
     N = 20 if n_springs is None else int(n_springs)
     coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta)
+    skipped = []
     while True:
-        fine = mdr_row(alpha, beta, amplitude, V, n_exp, 2 * N, zeta)
+        # a row that finds no periodic orbit (another attractor of the finite row, e.g. a
+        # period-5 orbit of 80 springs while 40 and 160 have period 1) is passed over once
+        # a periodic row exists: the pair is then (N, 4N), extrapolated with its ratio
+        M = 2 * (skipped[-1]["n_springs"] if skipped else N)
+        periodic_coarse = coarse["status"] == "periodic"
+        fine = mdr_row(alpha, beta, amplitude, V, n_exp, M, zeta,
+                       warm=coarse["final_state"],
+                       max_periods=SKIP_PERIODS if periodic_coarse and n_springs is None
+                       and 2 * M <= MAX_SPRINGS else MAX_PERIODS)
+        if periodic_coarse and fine["status"] != "periodic" and n_springs is None \
+                and 2 * M <= MAX_SPRINGS:
+            skipped.append(fine)
+            continue
+        ratio = M / N
         d = fine["mu_ratio"] - coarse["mu_ratio"]
         err = abs(d) + coarse["error"] + fine["error"]
-        if n_springs is not None or err <= tol or 2 * N >= 640:
+        if n_springs is not None or err <= tol or M >= MAX_SPRINGS:
             break
-        N *= 2
+        N = M
         coarse = fine
+        skipped = []
     out = dict(fine)
-    out.update(mu_ratio=fine["mu_ratio"] + d / (2.0 ** ORDER - 1.0), error=err,
+    out.update(mu_ratio=fine["mu_ratio"] + d / (ratio ** ORDER - 1.0), error=err,
                status=max(coarse["status"], fine["status"], key=rank.get),
-               order=ORDER, rows=(N, 2 * N), unextrapolated=fine["mu_ratio"])
+               order=ORDER, rows=(N, M), unextrapolated=fine["mu_ratio"],
+               skipped_rows=tuple(r["n_springs"] for r in skipped))
     if out["status"] == "averaged" and err > tol:
         out["status"] = "not converged"
     return out
