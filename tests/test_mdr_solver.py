@@ -68,6 +68,17 @@ def test_agrees_with_the_reference_within_the_error_bars(alpha, beta, a, V, zeta
         pytest.approx(1.0, abs=1e-12)
 
 
+def test_lightly_damped_stiff_contact_finds_its_periodic_orbit():
+    """The bench's 3 mm steel sphere at 20 N with mass=0.01 (docs/contact_geometry.md,
+    "Using it"): the first solver stalled (FAILED); its rows of 80 springs have a
+    period-5 attractor, passed over."""
+    alpha, beta, a, V = 0.64, 35.81106201466738, 0.5058099397428091, 0.314
+    r = mdr_friction(alpha, beta, a, V, 2.0)
+    ref = mdr_reference(alpha, beta, a, V, 2.0, transient_periods=300, average_periods=20)
+    assert r["status"] == "periodic" and r["error"] <= 1e-5
+    assert abs(r["mu_ratio"] - ref.mu_ratio) <= r["error"] + ref.mu_error
+
+
 @pytest.mark.parametrize("n, a", [(2.0, 0.5), (1.0, 1.5)])
 def test_stiff_system_approaches_the_profile_law(n, a):
     vbar = 0.3

@@ -132,7 +132,7 @@ def solve_points(
 
     A curved tip (finite ``profile_exponent``) is solved point by point by the MDR solver
     (:func:`vibrofriction.solver.mdr.mdr_friction` with ``tol = settings.tol_trusted``;
-    :func:`_mdr_rows`): slow (a tenth of a second to seconds a point), from the
+    :func:`_mdr_rows`): milliseconds to a tenth of a second a point, from the
     ``"sliding"`` start only, and not yet with ``eta_c > 0``, ``a_x > 0``, ``a_y > 0`` or
     ``beta = inf`` (ValueError naming them).  ``mean_normal_ratio`` (the closed form of the
     imposed indentation) and the area fractions ``stick_area_fraction``,
