@@ -19,7 +19,7 @@ from .._kernels.mdr import STICK, row_geometry, run_periods
 __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
-SUBSTEPS = 64
+SUBSTEPS = 1024  # scan sub-steps a period: 64 and 256 miss grazing events (docs)
 MAX_PERIODS = 4000
 AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
