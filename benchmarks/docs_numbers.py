@@ -264,8 +264,36 @@ def case_iv_plateau() -> Rows:
     return rows
 
 
+def contact_geometry_using_it() -> Rows:
+    """docs/contact_geometry.md, "Using it": the python block of that page, run as written
+    (the full sphere ``r`` and the linearised one ``r_lin``), and the bench's stiff contact
+    (``mass=0.01``) by ``mdr_friction``."""
+    from vibrofriction.solver.mdr import mdr_friction
+
+    text = (Path(__file__).resolve().parents[1] / "docs" / "contact_geometry.md").read_text()
+    ns: dict = {}
+    for block in (b.split("```", 1)[0] for b in text.split("```python\n")[1:]):
+        exec(compile(block, "docs/contact_geometry.md", "exec"), ns)
+    r, r_lin = ns["r"], ns["r_lin"]
+    t0 = time.perf_counter()
+    stiff = mdr_friction(0.64, 35.81106201466738, 0.5058099397428091, 0.314, 2.0)
+    t_stiff = time.perf_counter() - t0
+    return [("sphere (mdr): mu_ratio, error, status", f"{r.mu_ratio:.5f}, {r.error:.2g}, "
+             f"{r.status.value}"),
+            ("sphere (mdr): mean_normal_ratio", f"{r.mean_normal_ratio:.4f}"),
+            ("sphere (mdr): stick, slip, open area", f"{r.stick_area_fraction:.3f}, "
+             f"{r.slip_area_fraction:.3f}, {r.open_area_fraction:.3f}"),
+            ("V (both)", f"{r.v_inertial:.3f}"),
+            ("linearised: mu_ratio, error", f"{r_lin.mu_ratio:.5f}, {r_lin.error:.2g}"),
+            ("stiff contact (mass 0.01): mu_ratio, error, rows, skipped",
+             f"{stiff['mu_ratio']:.7f}, {stiff['error']:.2g}, {stiff['rows']}, "
+             f"{stiff['skipped_rows']}"),
+            ("stiff contact: time (s)", f"{t_stiff:.2f}")]
+
+
 CLAIMS: dict[str, Callable[[], Rows]] = {
-    f.__name__: f for f in (settling, unsettled, long_budget, near_beta_one_default,
+    f.__name__: f for f in (contact_geometry_using_it,
+                            settling, unsettled, long_budget, near_beta_one_default,
                             stiff_contacts, near_alpha_one,
                             case_iii_damped, case_iv_rise, stiff_exact_law, loss_factor_floor,
                             fig13_zeta_series, damped_drift_settles, soft_limit,
