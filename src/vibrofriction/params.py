@@ -24,7 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
 from vibrofriction.contact import FlatPunch, Material, Sphere
-from vibrofriction.schema import NONNEGATIVE, parameter_names
+from vibrofriction.schema import NONNEGATIVE, PARAMETER, parameter_names
 from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
@@ -46,8 +46,11 @@ def _valid_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
 
 def _validate_fields(obj: Any, model: str) -> None:
     """Check the fields of a frozen model dataclass against the schema's ranges
-    (:func:`~vibrofriction.validation.validated`) and store them as floats."""
-    values = validated({name: getattr(obj, name) for name in parameter_names(model)})
+    (:func:`~vibrofriction.validation.validated`) and store them as floats; an optional
+    field (``Parameter.twin``) left None stays None (its twin's value, whatever that is)."""
+    given = {name: getattr(obj, name) for name in parameter_names(model)}
+    values = validated({n: v for n, v in given.items() if v is not None
+                        or not PARAMETER[n].twin})
     for name, value in values.items():
         object.__setattr__(obj, name, float(value))
 
@@ -235,6 +238,11 @@ class Dimensionless:
         is computed by the 2-D solver (docs/inplane.md, "The 2-D solver").
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    alpha_y, zeta_y : float or None
+        The pin across the sliding (the 2-D solver, ``a_y > 0``): ``k_y / (m omega^2)``
+        (finite and > 0) and ``c_y / (2 sqrt(k_y m))`` (finite and >= 0); None (default)
+        is ``alpha``, ``zeta``: an axisymmetric pin (:attr:`pin_y`).  Without a transverse
+        oscillation they have no effect (the body never moves across).
     inplane_on : str
         ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
         slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
@@ -250,11 +258,20 @@ class Dimensionless:
     phase_x: float = 0.0
     a_y: float = 0.0
     phase_y: float = 0.0
+    alpha_y: float | None = None
+    zeta_y: float | None = None
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "dimensionless")
         checked_choice("inplane_on", self.inplane_on)
+
+    @property
+    def pin_y(self) -> tuple[float, float]:
+        """``(alpha_y, zeta_y)`` with None resolved to ``alpha``, ``zeta``: the pin across
+        the sliding."""
+        return (self.alpha if self.alpha_y is None else self.alpha_y,
+                self.zeta if self.zeta_y is None else self.zeta_y)
 
     @property
     def damped(self) -> bool:
@@ -358,10 +375,13 @@ class Physical:
         Its phase relative to the normal oscillation, radians, finite.
     du_y : float
         Amplitude of the transverse in-plane oscillation ``du_y cos(omega t + phase_y)``
-        (across the sliding), m, ``>= 0``; the pin is axisymmetric (``k_x``, ``c_x`` in
-        both directions).
+        (across the sliding), m, ``>= 0``.
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    k_y, c_y : float or None
+        The pin's stiffness (N/m, finite and > 0) and dashpot (N s/m, >= 0) across the
+        sliding; None (default) is ``k_x``, ``c_x``: an axisymmetric pin (:attr:`pin_y`).
+        They act only with a transverse oscillation (``du_y > 0``).
     inplane_on : str
         Where both components are imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
         of ``k_x`` and ``c_x``).
@@ -381,11 +401,20 @@ class Physical:
     phase_x: float = 0.0
     du_y: float = 0.0
     phase_y: float = 0.0
+    k_y: float | None = None
+    c_y: float | None = None
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "physical")
         checked_choice("inplane_on", self.inplane_on)
+
+    @property
+    def pin_y(self) -> tuple[float, float]:
+        """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the
+        sliding."""
+        return (self.k_x if self.k_y is None else self.k_y,
+                self.c_x if self.c_y is None else self.c_y)
 
     @classmethod
     def from_bench(cls, *, natural_frequency_hz: float, normal_load: float,
@@ -396,7 +425,8 @@ class Physical:
                    eta_c: float = 0.0, du_z: float | None = None,
                    dF_N: float | None = None, du_x: float = 0.0, phase_x: float = 0.0,
                    du_y: float = 0.0, phase_y: float = 0.0,
-                   inplane_on: str = "substrate") -> Physical:
+                   inplane_on: str = "substrate", k_y: float | None = None,
+                   damping_ratio_y: float | None = None) -> Physical:
         """The model of a tribometer from what the experimenter knows (docs/bench.md).
 
         * the pin: its natural frequency (Hz, from an impact test with the contact
@@ -411,7 +441,10 @@ class Physical:
           amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
         * an in-plane oscillation along the sliding (``du_x`` in m, ``phase_x`` in rad)
           and across it (``du_y``, ``phase_y``), and where it is imposed, ``inplane_on``
-          (docs/inplane.md).
+          (docs/inplane.md);
+        * a pin that is not axisymmetric: its stiffness across the sliding ``k_y`` (N/m;
+          default ``k_x``) and damping ratio ``damping_ratio_y`` (``c_y / (2 sqrt(k_y
+          m))``; default: ``c_y = c_x``).
         """
         f_n = float(checked("natural_frequency_hz", natural_frequency_hz, minimum=0.0,
                             strict=True))
@@ -444,7 +477,11 @@ class Physical:
             float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=load / k_zc, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
-                     du_y=du_y, phase_y=phase_y, inplane_on=inplane_on)
+                     du_y=du_y, phase_y=phase_y, inplane_on=inplane_on, k_y=k_y)
+        if damping_ratio_y is not None:
+            k_y_, _ = system.pin_y
+            zeta_y = float(checked("damping_ratio_y", damping_ratio_y, minimum=0.0))
+            system = system.with_(c_y=2.0 * zeta_y * math.sqrt(k_y_ * mass))
         if quality_factor is not None and damping_ratio is not None:
             raise ValueError("give at most one of quality_factor and damping_ratio")
         if quality_factor is not None or damping_ratio is not None:
@@ -531,15 +568,33 @@ class Physical:
         return self.with_(**changes)
 
     def to_dimensionless(self) -> Dimensionless:
-        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c`` and the
-        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``inplane_on``."""
+        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the
+        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``,
+        ``phase_y``, ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y``
+        (:meth:`transverse_groups`; None for an axisymmetric pin)."""
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
+        alpha_y, zeta_y = self.transverse_groups(self.omega)
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
                              zeta=float(zeta), eta_c=float(eta_c),
                              a_x=float(self.inplane_amplitude(self.du_x, self.omega)),
                              phase_x=self.phase_x,
                              a_y=float(self.inplane_amplitude(self.du_y, self.omega)),
-                             phase_y=self.phase_y, inplane_on=self.inplane_on)
+                             phase_y=self.phase_y,
+                             alpha_y=None if alpha_y is None else float(alpha_y),
+                             zeta_y=None if zeta_y is None else float(zeta_y),
+                             inplane_on=self.inplane_on)
+
+    def transverse_groups(self, omega: ArrayLike) -> tuple[NDArray[np.float64] | None, ...]:
+        """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``
+        (rad/s), elementwise; each None where this pin leaves it to its twin: ``alpha_y``
+        where ``k_y`` is None, ``zeta_y`` where ``k_y`` and ``c_y`` both are (with ``k_y``
+        given, ``c_y = c_x`` has another damping ratio than ``zeta``)."""
+        omega = np.asarray(omega, dtype=float)
+        k_y, c_y = self.pin_y
+        alpha_y = None if self.k_y is None else k_y / (self.mass * omega**2)
+        zeta_y = None if self.k_y is None and self.c_y is None else np.full(
+            np.shape(omega), c_y / (2.0 * math.sqrt(k_y * self.mass)))
+        return alpha_y, zeta_y
 
     def require_no_transverse(self, what: str) -> None:
         """ValueError if this set-up has a transverse in-plane oscillation, which ``what``

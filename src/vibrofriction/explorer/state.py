@@ -54,7 +54,8 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "eta_c": (0.0, 1.0, False), "a_x": (0.0, 5.0, False),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
            "phase_y": (0.0, 6.283185307179586, False)}
-DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless"))
+DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n])  # the pin across: axisymmetric
+                      for n in parameter_names("dimensionless", optional=False))
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
     _model_field("mass", 1e-4, 10.0, label="pin modal mass (kg)"),
@@ -123,8 +124,8 @@ class State:
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
-            return vf.Dimensionless(**{n: getattr(self, n)
-                                       for n in parameter_names("dimensionless")},
+            return vf.Dimensionless(**{n: getattr(self, n) for n in
+                                       parameter_names("dimensionless", optional=False)},
                                     inplane_on=self.inplane_on)
         return vf.Physical.from_bench(**self.bench_arguments())
 
