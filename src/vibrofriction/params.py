@@ -604,16 +604,23 @@ class Physical:
                              f"{self.du_y!r} m): give a set-up with du_y = 0")
 
     def point_arguments(self, v0: ArrayLike, du_z: ArrayLike, omega: ArrayLike,
-                        du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0
-                        ) -> tuple[NDArray[np.float64], ...]:
-        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of this pin at each point
-        ``(v0, du_z, omega, du_x, phase_x)`` (SI), elementwise: the arguments of
+                        du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
+                        du_y: ArrayLike = 0.0, phase_y: ArrayLike = 0.0
+                        ) -> tuple[NDArray[np.float64] | None, ...]:
+        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
+        zeta_y)`` of this pin at each point ``(v0, du_z, omega, du_x, phase_x, du_y,
+        phase_y)`` (SI), elementwise: the arguments of
         :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
-        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x`` are not used)."""
+        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y``
+        are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
+        axisymmetric pin, :meth:`transverse_groups`)."""
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
+        a_y = self.inplane_amplitude(du_y, omega)
         phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
-        return alpha, beta, a, self.v0_to_inertial(v0, omega), zeta, eta, a_x, phase
+        phase_y = np.broadcast_to(np.asarray(phase_y, dtype=float), np.shape(a_y))
+        return (alpha, beta, a, self.v0_to_inertial(v0, omega), zeta, eta, a_x, phase, a_y,
+                phase_y, *self.transverse_groups(omega))
 
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
