@@ -596,13 +596,6 @@ class Physical:
             np.shape(omega), c_y / (2.0 * math.sqrt(k_y * self.mass)))
         return alpha_y, zeta_y
 
-    def require_no_transverse(self, what: str) -> None:
-        """ValueError if this set-up has a transverse in-plane oscillation, which ``what``
-        (a feature of the package) does not take yet: refused, never ignored."""
-        if self.du_y > 0.0:
-            raise ValueError(f"{what} does not take a transverse oscillation yet (du_y = "
-                             f"{self.du_y!r} m): give a set-up with du_y = 0")
-
     def point_arguments(self, v0: ArrayLike, du_z: ArrayLike, omega: ArrayLike,
                         du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
                         du_y: ArrayLike = 0.0, phase_y: ArrayLike = 0.0
