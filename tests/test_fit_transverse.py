@@ -16,6 +16,7 @@ import pytest
 from scipy.stats import chi2
 
 import vibrofriction as vf
+from vibrofriction.bench import predict_cof
 
 HERE = Path(__file__).resolve().parent / "data"
 META = json.loads((HERE / "transverse_bench.json").read_text())
@@ -46,7 +47,7 @@ def test_the_model_at_the_truth_scatters_as_sigma() -> None:
     cols = [data[c].to_numpy() for c in ("v0", "du_z", "omega")]
 
     def chisq(pin: vf.Physical) -> float:
-        cof = vf.bench.predict_cof(pin, *cols, du_y=data["du_y"].to_numpy(),
+        cof = predict_cof(pin, *cols, du_y=data["du_y"].to_numpy(),
                                    phase_y=data["phase_y"].to_numpy())
         assert np.all(np.isfinite(cof))
         r = (cof - data["cof"].to_numpy()) / data["sigma"].to_numpy()
@@ -74,3 +75,8 @@ def test_fit_to_transverse_reference_data_holds_the_truth() -> None:
     pred = res.predict(np.array([0.02]), np.array([6e-7]), np.array([TRUTH.omega]),
                        du_y=3e-6, phase_y=0.0)
     assert np.isfinite(pred).all()
+    from vibrofriction.figures import plot_fit
+
+    fig = plot_fit(res)  # the curves per (du_y, phase_y) group, by the 2-D solver
+    labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert sum("du_y = 3 um" in t for t in labels) == 2, labels

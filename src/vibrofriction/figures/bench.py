@@ -34,8 +34,8 @@ def plot_fit(result: FitResult) -> Figure:
         lo, hi = g["v0"].min(), g["v0"].max()
         v = (np.linspace(lo - 0.1 * (hi - lo), hi + 0.1 * (hi - lo), 240) if signed
              else np.geomspace(max(lo, 1e-9) / 1.5, hi * 1.5, 120))
-        if dy > 0:  # the 2-D solver does not compute v0 = 0
-            v = v[v != 0.0]
+        if dy > 0:  # the 2-D solver: not at v0 = 0, and slow (minutes) very near it
+            v = v[np.abs(v) >= 0.5 * np.abs(g["v0"]).min()]
         inplane = f", du_x = {dx * 1e6:.3g} um at {ph:.3g} rad" if dx > 0 else ""
         inplane += f", du_y = {dy * 1e6:.3g} um at {py:.3g} rad" if dy > 0 else ""
         ax.plot(v, result.predict(v, np.full(v.size, du), np.full(v.size, om), du_x=dx,
