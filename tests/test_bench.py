@@ -99,14 +99,16 @@ def test_read_measurements_converts_units(tmp_path):
     np.testing.assert_allclose(d["sigma"], [0.005, 0.004])
     same = vf.read_measurements(pd.DataFrame({"v0": [1e-3], "cof": [0.2], "du_z": [1e-6],
                                               "omega": [5000.0]}))
-    assert list(same.columns) == ["v0", "cof", "du_z", "omega", "sigma", "du_x", "phase_x"]
+    assert list(same.columns) == ["v0", "cof", "du_z", "omega", "sigma", "du_x", "phase_x",
+                                  "du_y", "phase_y"]
     assert math.isnan(same["sigma"][0]) and same["du_x"][0] == same["phase_x"][0] == 0.0
+    assert same["du_y"][0] == same["phase_y"][0] == 0.0
     inplane = vf.read_measurements(pd.DataFrame({
         "v0 [mm/s]": [-2.0], "cof": [-0.1], "du_z": [1e-6], "omega": [5000.0],
         "du_x [um]": [3.0], "phase_x [deg]": [90.0]}))
     assert inplane.iloc[0].to_dict() == pytest.approx({
         "v0": -2e-3, "cof": -0.1, "du_z": 1e-6, "omega": 5000.0, "sigma": math.nan,
-        "du_x": 3e-6, "phase_x": math.pi / 2}, nan_ok=True)
+        "du_x": 3e-6, "phase_x": math.pi / 2, "du_y": 0.0, "phase_y": 0.0}, nan_ok=True)
 
 
 @pytest.mark.parametrize("text, message", [
@@ -146,7 +148,8 @@ def test_read_measurements_matches_names_regardless_of_case(tmp_path):
     d = vf.read_measurements(path)
     assert d.iloc[0].to_dict() == pytest.approx({"v0": 1e-3, "cof": 0.21, "du_z": 1.3e-6,
                                                  "omega": 2 * math.pi * 800, "sigma": 0.005,
-                                                 "du_x": 0.0, "phase_x": 0.0})
+                                                 "du_x": 0.0, "phase_x": 0.0, "du_y": 0.0,
+                                                 "phase_y": 0.0})
     frame = pd.DataFrame({"v0": [1e-3], "cof": [0.2], "du_z": [1e-6], "omega": [5e3],
                           "Sigma": [0.01]})
     assert vf.read_measurements(frame)["sigma"][0] == 0.01

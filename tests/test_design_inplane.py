@@ -186,8 +186,8 @@ def test_untrusted_values_are_never_the_optimum_and_are_counted(monkeypatch):
     """Solver results near the best phase made untrusted and stale (lower): never chosen."""
     real = solve_points
 
-    def stale(alpha, beta, a, V, zeta, eta_c, a_x=0.0, phase_x=0.0, **kwargs):
-        out = real(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, **kwargs)
+    def stale(alpha, beta, a, V, zeta, eta_c, a_x=0.0, phase_x=0.0, *transverse, **kwargs):
+        out = real(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, *transverse, **kwargs)
         ph = np.broadcast_to(np.asarray(phase_x, float), np.shape(out["mu_ratio"]))
         bad = (np.abs(np.remainder(ph - 3.4, 2 * math.pi)) < 0.6) & \
             (np.broadcast_to(np.asarray(a_x, float), ph.shape) > 0)
@@ -209,3 +209,94 @@ def test_the_design_map_figure(drive):
     fig = plot_design(drive)
     assert len(fig.axes) >= 2
     assert drive.phase_map is not None and drive.phase_map.cof.dims == ("du_x", "phase_x")
+
+
+def _by_hand_y(v0, omega, du_z, du_y, phase_y, pin=PIN):
+    """The 2-D solver's mu/mu0 with the SI -> dimensionless conversion written here (the
+    pin's own k_y, c_y across the sliding)."""
+    omega = np.asarray(omega, float)
+    s = M * omega**2
+    k_y = pin.k_x if pin.k_y is None else pin.k_y
+    c_y = pin.c_x if pin.c_y is None else pin.c_y
+    out = solve_points(pin.k_x / s, (pin.k_x + pin.k_xc) / s, np.asarray(du_z) / U,
+                       v0 * M * omega / (MU0 * KZ * U), pin.c_x / (2 * math.sqrt(pin.k_x * M)),
+                       omega * pin.c_xc / pin.k_xc, 0.0, 0.0,
+                       np.asarray(du_y) * s / (MU0 * KZ * U), phase_y, k_y / s,
+                       c_y / (2 * math.sqrt(k_y * M)))
+    return out["mu_ratio"], out["trusted"]
+
+
+@pytest.mark.parametrize("k_y", [None, 0.3 * M * W**2])
+def test_the_transverse_design_against_a_brute_force_grid(k_y):
+    """Transverse only (``du_z = 0``, no ``du_x``), one frequency: the design's COF is the
+    smallest of a brute-force grid of 2-D solves over ``du_y`` made here, and, friction
+    falling as the transverse velocity amplitude grows (the kinematic law, a monotone
+    function of ``omega du_y/v0``), it sits at the top of the range; the transverse row
+    of ``directions`` is what the by-hand conversion gives; an anisotropic pin
+    (``k_y``) is used, not the axisymmetric one."""
+    pin = PIN.with_(k_y=k_y)
+    v0 = 0.3 * VU
+    res = vf.design(pin, v0=v0, omega=(W, W), du_z=(0.0, 0.0), du_y=(0.0, 1.5 * DUX1),
+                    n_du_y=4)
+    grid = np.linspace(0.0, 1.5 * DUX1, 13)
+    mu, ok = _by_hand_y(v0, W, 0.0, grid, 0.0, pin)
+    assert ok.all()
+    assert np.all(np.diff(mu) < 0.0)  # monotone: the best is the largest amplitude
+    assert res.system.du_y == pytest.approx(1.5 * DUX1, rel=1e-9)
+    assert res.cof == pytest.approx(MU0 * float(mu[-1]), abs=1e-9)
+    assert res.cof <= MU0 * mu.min() + 1e-9
+    table = res.directions.set_index("direction")
+    assert list(table.index) == ["combined", "transverse only"]
+    row = table.loc["transverse only"]
+    m, t = _by_hand_y(v0, row["omega"], row["du_z"], row["du_y"], row["phase_y"], pin)
+    assert bool(t) and MU0 * float(m) == pytest.approx(row["cof"], abs=1e-12)
+    assert table.loc["combined", "cof"] == pytest.approx(MU0 * float(mu[-1]), abs=1e-9)
+    assert "across the sliding" in res.report()
+
+
+def test_the_design_chooses_the_transverse_direction_where_it_is_best():
+    """Normal, longitudinal and transverse allowed within one velocity limit (the rule
+    "each"): every row of ``directions`` is the by-hand conversion's value, each within its
+    limits, and the chosen oscillation is the best row (here a longitudinal one, which
+    can bring the friction force to zero).  Without ``du_x`` the transverse component
+    wins: normal + transverse below normal only at this point (``V = 0.1``)."""
+    vmax = 0.5 * W * DUX1
+    kw = dict(v0=0.1 * VU, omega=(0.8 * W, 1.25 * W), du_z=(0.0, 0.75 * U),
+              du_y=(0.0, 1.2 * DUX1), max_velocity_amplitude=vmax, velocity_rule="each",
+              n_omega=4, n_du_z=3, n_du_x=3, n_phase=6, n_du_y=3, n_phase_y=3)
+    both = vf.design(PIN, du_x=(0.0, 1.2 * DUX1), **kw)
+    across = vf.design(PIN, **kw)
+    for res, names in ((both, ["combined", "normal only", "longitudinal only",
+                               "normal + transverse", "transverse only"]),
+                       (across, ["combined", "normal only", "normal + transverse",
+                                 "transverse only"])):
+        table = res.directions.set_index("direction")
+        print(table[["cof", "du_z", "du_x", "du_y"]])
+        assert list(table.index) == names
+        for name, row in table.iterrows():
+            if row["du_y"] > 0.0:
+                assert row["du_x"] == 0.0
+                mu, ok = _by_hand_y(res.v0, row["omega"], row["du_z"], row["du_y"],
+                                    row["phase_y"])
+            else:
+                mu, ok = _by_hand(res.v0, row["omega"], row["du_z"], row["du_x"],
+                                  row["phase_x"])
+            assert bool(ok) and MU0 * float(mu) == pytest.approx(row["cof"], abs=1e-12), name
+            assert row["omega"] * max(row["du_z"], row["du_x"], row["du_y"]) <= vmax * (
+                1 + 1e-9)
+        assert abs(res.cof) == pytest.approx(abs(table["cof"]).min(), abs=1e-12)
+    assert both.system.du_x > 0.0 and both.system.du_y == 0.0
+    table = across.directions.set_index("direction")
+    assert across.system.du_y > 0.0 and across.system.du_z > 0.0  # transverse is best here
+    assert table.loc["normal + transverse", "cof"] < table.loc["normal only", "cof"] - 0.01
+
+
+def test_transverse_design_refusals():
+    with pytest.raises(ValueError, match="transverse oscillation .* give du_y"):
+        vf.design(PIN.with_(du_y=1e-7), v0=0.01, omega=(W, W), du_z=(0.0, U))
+    with pytest.raises(ValueError, match="goal='drive' does not take a transverse"):
+        vf.design(PIN, v0=0.01, omega=(W, W), du_z=(0.0, U), du_x=(0, 1e-6),
+                  du_y=(0.0, 1e-6), goal="drive")
+    with pytest.raises(ValueError, match="finite k_xc"):
+        vf.design(PIN.with_(k_xc=math.inf, c_xc=0.0), v0=0.01, omega=(W, W),
+                  du_z=(0.0, U), du_y=(0.0, 1e-6))

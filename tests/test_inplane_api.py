@@ -214,17 +214,19 @@ def test_inplane_measurements_are_read_and_predicted() -> None:
     from vibrofriction.bench import predict_cof
 
     data, meta, truth = _inplane_bench()
-    assert list(data.columns) == ["v0", "cof", "du_z", "omega", "sigma", "du_x", "phase_x"]
+    assert list(data.columns) == ["v0", "cof", "du_z", "omega", "sigma", "du_x", "phase_x",
+                                  "du_y", "phase_y"]
     assert (data.v0 < 0).sum() == 10 and (data.cof < 0).any() and set(data.du_x) == {4e-6}
     model = predict_cof(truth, data.v0, data.du_z, data.omega, du_x=data.du_x,
                         phase_x=data.phase_x)
     chi2 = float(np.sum(((model - data.cof) / data.sigma) ** 2))
     assert 1e-3 < chi2_dist.sf(chi2, len(data)) < 1 - 1e-3, chi2
     assert meta["reference_error_bar_cof"] < 0.01 * meta["sigma"]
-    # without the du_x column the same signs are refused: they need an in-plane oscillation
+    # without the du_x (and du_y) column the same signs are refused: they need an in-plane
+    # oscillation
     with pytest.raises(ValueError, match=r"column 'v0', row 0: -0.08 is not a finite number "
                                          r">= 0"):
-        vf.read_measurements(data.drop(columns=["du_x"]))
+        vf.read_measurements(data.drop(columns=["du_x", "du_y"]))
 
 
 def test_fit_to_inplane_reference_data_holds_the_truth() -> None:
@@ -275,16 +277,15 @@ def test_regimes_of_the_combined_drive_agree_with_the_solver() -> None:
     assert int(theory.inplane_regime(0.5, 2.0, 0.5, 0.5, math.pi / 2)) == 0
 
 
-def test_transverse_oscillation_is_refused_where_not_built() -> None:
-    """The fit and the design do not take a transverse oscillation yet: each refuses it
-    by name instead of computing without it; simulate computes it (the 2-D history)."""
+def test_transverse_oscillation_is_refused_where_not_asked_for() -> None:
+    """A pin with a transverse oscillation whose design does not give du_y is refused
+    rather than designed without it (the fit takes du_y from the rows:
+    tests/test_fit_transverse.py); simulate computes it (the 2-D history)."""
     from vibrofriction.bench import design
 
     pin = Physical(**PIN, du_y=1e-6)
-    with pytest.raises(ValueError, match=r"the design does not take a transverse"):
+    with pytest.raises(ValueError, match=r"the pin has a transverse oscillation"):
         design(pin, v0=0.01, omega=(1e3, 1e4), du_z=(0.0, 1e-6))
-    with pytest.raises(ValueError, match=r"the fit does not take a transverse"):
-        vf.fit("no-such-file.csv", pin)
     h = vf.simulate(pin.to_dimensionless(), v_inertial=0.3, periods=1)
     assert h.is_plane and np.any(h.f_y != 0.0)
 

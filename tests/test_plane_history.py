@@ -34,6 +34,9 @@ POINTS = [
                                              phase_x=1.0, inplane_on="holder"), 0.6),
     ("KV combined V < 0", Dimensionless(0.5, 2.0, 0.5, zeta=0.05, eta_c=0.2, a_x=0.5,
                                         phase_x=math.pi / 2, a_y=0.3, phase_y=-0.7), -0.2),
+    ("KV anisotropic pin holder", Dimensionless(0.5, 2.0, 0.5, zeta=0.05, eta_c=0.1, a_y=0.5,
+                                                phase_y=1.0, alpha_y=1.5, zeta_y=0.2,
+                                                inplane_on="holder"), 0.3),
 ]
 IDS = [p[0] for p in POINTS]
 
@@ -127,7 +130,8 @@ def test_agrees_with_the_reference(label: str, d: Dimensionless, V: float) -> No
     h = vf.simulate(d, v_inertial=V, periods=n_per, samples_per_period=400)
     ref = inplane_run(d.alpha, d.beta, d.amplitude, V, 0, n_per, zeta=d.zeta,
                       eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x, a_y=d.a_y,
-                      phase_y=d.phase_y, inplane_on=d.inplane_on)
+                      phase_y=d.phase_y, alpha_y=d.alpha_y, zeta_y=d.zeta_y,
+                      inplane_on=d.inplane_on)
     rows = _section_rows(h)
     per_fx = np.diff(h.impulse[rows, 0]) / TWO_PI
     per_fy = np.diff(h.impulse[rows, 1]) / TWO_PI

@@ -5,8 +5,12 @@ contain.
   (solve_ivp DOP853, no shared code) at the points of ``tests/data/plane_reference.json``
   (transverse only, normal + transverse, all three components, substrate and holder,
   Jenkins and Kelvin-Voigt contacts, jumping, damped and lightly damped, several phases,
-  ``V < 0``), cached by ``tests/data/make_plane_reference.py``: ``mu_ratio`` and
-  ``lateral_ratio`` within their combined error bars;
+  ``V < 0``, a pin that is not axisymmetric: ``alpha_y != alpha``, ``zeta_y != zeta``),
+  cached by ``tests/data/make_plane_reference.py``: ``mu_ratio`` and ``lateral_ratio``
+  within their combined error bars;
+* the pin across the sliding: ``alpha_y = alpha``, ``zeta_y = zeta`` given explicitly (or
+  ``k_y = k_x``, ``c_y = c_x``) is bit for bit the default; without a transverse
+  oscillation they have no effect (the 1-D solver, and the 2-D kernel to its error);
 * ``a_y -> 0`` is the exact 1-D solver (and the 2-D kernel at ``a_y = 0`` is too);
 * the kinematic transverse law of a rigid body, ``theory.kinematic_mu_transverse``,
   approached as the system stiffens;
@@ -35,11 +39,11 @@ POINTS = DATA["points"]
 #: Agreement is required within SAFETY times the combined error bar.
 SAFETY = 3.0
 ARGS = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x",
-        "a_y", "phase_y")
+        "a_y", "phase_y", "alpha_y", "zeta_y")
 
 
 def _solve(p: dict) -> dict:
-    cols = solve_points(*(p[k] for k in ARGS), inplane_on=p["inplane_on"])
+    cols = solve_points(*(p.get(k) for k in ARGS), inplane_on=p["inplane_on"])
     return {k: v[()].item() for k, v in cols.items()}
 
 
@@ -69,6 +73,66 @@ def test_reference_cache_covers_every_regime() -> None:
     assert {p["inplane_on"] for p in POINTS} == {"substrate", "holder"}
     assert any(p["a_x"] > 0.0 for p in POINTS) and any(p["v_inertial"] < 0 for p in POINTS)
     assert len({round(p["phase_y"], 6) for p in POINTS}) >= 6
+    aniso = [p for p in POINTS if p.get("alpha_y") is not None]
+    assert len(aniso) >= 4  # the pin across the sliding its own: k_y != k_x, c_y != c_x
+    for p in aniso:
+        assert p["alpha_y"] != p["alpha"]
+        assert 2 * p["zeta_y"] * math.sqrt(p["alpha_y"]) != 2 * p["zeta"] * math.sqrt(p["alpha"])
+    assert {p["inplane_on"] for p in aniso} == {"substrate", "holder"}
+
+
+# --------------------------------------------------------------------------- the pin across
+AXISYMMETRIC = [  # alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, inplane_on
+    (0.5, 2.0, 0.5, 0.3, 0.05, 0.1, 0.0, 0.0, 0.5, 1.0, "substrate"),
+    (0.5, 2.0, 0.5, 0.4, 0.05, 0.0, 0.5, math.pi / 2, 0.5, 3.0, "holder"),
+]
+
+
+@pytest.mark.parametrize("q", AXISYMMETRIC, ids=["substrate", "holder"])
+def test_an_explicit_axisymmetric_pin_is_the_default(q) -> None:
+    """``alpha_y = alpha``, ``zeta_y = zeta`` (and ``k_y = k_x``, ``c_y = c_x``) change
+    nothing, to the last bit; ``alpha_y`` differing by 10 % does change ``mu`` (by far more
+    than the errors)."""
+    *args, on = q
+    default = solve_points(*args, inplane_on=on)
+    explicit = solve_points(*args, args[0], args[4], inplane_on=on)
+    for k in ("mu_ratio", "lateral_ratio", "error", "stick_fraction", "y", "work"):
+        assert float(explicit[k]) == float(default[k]), k
+    other = solve_points(*args, 1.1 * args[0], args[4], inplane_on=on)
+    assert bool(other["trusted"])
+    assert abs(float(other["mu_ratio"]) - float(default["mu_ratio"])) > 100 * (
+        float(other["error"]) + float(default["error"]))
+    pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
+                      omega=2 * math.pi * 1000, mu0=0.3, c_x=2.0, du_y=2e-6, phase_y=0.5)
+    same = pin.with_(k_y=pin.k_x, c_y=pin.c_x)
+    assert same.to_dimensionless().pin_y == pin.to_dimensionless().pin_y
+    assert pin.to_dimensionless().alpha_y is None and same.to_dimensionless().alpha_y is not None
+    r0, r1 = (vf.friction_coefficient(p, v0=0.05) for p in (pin, same))
+    assert r0.mu_ratio == r1.mu_ratio and r0.lateral_ratio == r1.lateral_ratio
+
+
+@pytest.mark.parametrize("q", [
+    (0.5, 2.0, 0.5, 0.3, 0.05, 0.1, 0.0, 0.0, "substrate"),
+    (0.5, 4.0, 1.5, 0.3, 0.1, 0.2, 0.3, 2.0, "holder"),
+], ids=["substrate", "jumping holder"])
+def test_the_pin_across_has_no_effect_without_a_transverse_oscillation(q) -> None:
+    """``a_y = 0``: the engine's 1-D result is bit for bit the same for any ``alpha_y``,
+    ``zeta_y``, and the 2-D kernel itself with a very different pin across agrees with it
+    within the errors, the body never moving across (``lateral_ratio = 0``)."""
+    al, be, a, V, ze, et, ax, px, on = q
+    exact = solve_points(al, be, a, V, ze, et, ax, px, inplane_on=on)
+    aniso = solve_points(al, be, a, V, ze, et, ax, px, 0.0, 0.0, 3.0 * al, 0.5, inplane_on=on)
+    for k in FLOAT_COLUMNS:
+        np.testing.assert_array_equal(aniso[k], exact[k])
+    of = np.empty(len(FLOAT_COLUMNS))
+    oi = np.empty(len(INT_COLUMNS), np.int64)
+    plane.plane_steady_state(al, be, a, V, ze, et, ax, px, 0.0, 0.0, 3.0 * al, 0.5,
+                             on == "substrate", 0, 0.0, 0.0, 0.0, 1e-10, 20000, 10000, of, oi)
+    assert oi[column_index("status")] == Status.PERIODIC.code
+    assert of[column_index("lateral_ratio")] == 0.0
+    e1, e2 = float(exact["error"]), of[column_index("error")]
+    assert abs(of[column_index("mu_ratio")] - float(exact["mu_ratio"])) <= SAFETY * (e1 + e2) \
+        + 1e-12
 
 
 # --------------------------------------------------------------------------- a_y -> 0
@@ -90,8 +154,8 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver(q) -> None:
     # the 2-D kernel itself at a_y = 0 (the engine routes a_y = 0 to the 1-D solver)
     of = np.empty(len(FLOAT_COLUMNS))
     oi = np.empty(len(INT_COLUMNS), np.int64)
-    plane.plane_steady_state(al, be, a, V, ze, et, ax, px, 0.0, 0.0, on == "substrate", 0,
-                             0.0, 0.0, 0.0, 1e-10, 20000, 10000, of, oi)
+    plane.plane_steady_state(al, be, a, V, ze, et, ax, px, 0.0, 0.0, al, ze, on == "substrate",
+                             0, 0.0, 0.0, 0.0, 1e-10, 20000, 10000, of, oi)
     mu2, e2 = of[column_index("mu_ratio")], of[column_index("error")]
     assert oi[column_index("status")] == Status.PERIODIC.code
     assert abs(mu2 - mu1) <= SAFETY * (e1 + e2) + 1e-12, (mu2, mu1, e1, e2)
@@ -152,8 +216,8 @@ def test_x_mirror_of_a_backward_velocity() -> None:
     fwd = solve_points(al, be, a, -V, ze, et, ax, px, ay, py)
     of = np.empty(len(FLOAT_COLUMNS))
     oi = np.empty(len(INT_COLUMNS), np.int64)
-    plane.plane_steady_state(al, be, a, -V, ze, et, ax, px, ay, py, True, 0, 0.0, 0.0, 0.0,
-                             1e-10, 20000, 10000, of, oi)
+    plane.plane_steady_state(al, be, a, -V, ze, et, ax, px, ay, py, al, ze, True, 0, 0.0,
+                             0.0, 0.0, 1e-10, 20000, 10000, of, oi)
     tol = SAFETY * (float(fwd["error"]) + of[column_index("error")])
     assert abs(of[column_index("mu_ratio")] - float(fwd["mu_ratio"])) <= tol
     assert abs(of[column_index("lateral_ratio")] - float(fwd["lateral_ratio"])) <= tol
@@ -174,7 +238,9 @@ def test_contact_force_stays_in_the_cone_along_the_orbit() -> None:
         P = np.array([al, 2 * 0.05 * math.sqrt(al), be - al, et * (be - al), a,
                       float(rng.uniform(0.05, 1.0)), float(rng.uniform(0, 1)),
                       float(rng.uniform(0, 6)), float(rng.uniform(0.1, 1.5)),
-                      float(rng.uniform(0, 6)), float(rng.integers(0, 2))])
+                      float(rng.uniform(0, 6)), float(rng.integers(0, 2)), 0.0, 0.0])
+        P[plane.P_ALPHA_Y] = float(rng.uniform(0.2, 3.0))  # a pin that is not axisymmetric
+        P[plane.P_GAMMA_Y] = 2 * float(rng.uniform(0.0, 0.3)) * math.sqrt(P[plane.P_ALPHA_Y])
         worst = max(worst, plane.cone_excess(P, 4, 1e-10))
     print(f"largest |f| - n: {worst:.2e}")
     assert worst <= 1e-12
@@ -210,3 +276,18 @@ def test_refusals() -> None:
         vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 1.0, a_y=0.5), v_inertial=0.3)
     with pytest.raises(ValueError, match="a_y"):
         vf.Dimensionless(0.5, 2.0, 0.5, a_y=-1.0)
+
+
+def test_cli_takes_the_pin_across() -> None:
+    import subprocess
+    import sys
+
+    out = subprocess.run([sys.executable, "-m", "vibrofriction.cli", "mu", "--alpha", "0.5",
+                          "--beta", "2", "--amplitude", "0.5", "--a-y", "0.5", "--alpha-y",
+                          "1.5", "--zeta-y", "0.2", "--v-inertial", "0.3", "--json"],
+                         capture_output=True, text=True, timeout=300)
+    assert out.returncode == 0, out.stderr
+    row = json.loads(out.stdout)
+    d = vf.Dimensionless(0.5, 2.0, 0.5, a_y=0.5, alpha_y=1.5, zeta_y=0.2)
+    assert row["mu_ratio"] == vf.friction_coefficient(d, v_inertial=0.3).mu_ratio
+    assert row["system"]["alpha_y"] == 1.5 and row["system"]["zeta_y"] == 0.2

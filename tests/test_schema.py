@@ -403,6 +403,39 @@ def test_validator_refuses_every_out_of_range_value(margin: float, index: int) -
                                                                  bad])})
 
 
+def test_optional_parameters_default_to_their_twin() -> None:
+    """``k_y``, ``c_y``, ``alpha_y``, ``zeta_y`` (``Parameter.twin``): None is the twin's
+    value in the validator; the dataclasses keep the None, so that a copy with another
+    ``k_x`` stays axisymmetric; a given value is checked like any other."""
+    from vibrofriction.validation import validated
+
+    twins = {p.name: p.twin for p in PARAMETERS if p.twin}
+    assert twins == {"alpha_y": "alpha", "zeta_y": "zeta", "k_y": "k_x", "c_y": "c_x"}
+    out = validated({"alpha": np.array([0.5, 2.0]), "alpha_y": None})
+    np.testing.assert_array_equal(out["alpha_y"], [0.5, 2.0])
+    with pytest.raises(ValueError, match="k_y = None means the value of k_x"):
+        validated({"k_y": None})
+    pin = vf.Physical(**BASES["physical"])
+    assert (pin.k_y, pin.c_y) == (None, None) and pin.pin_y == (pin.k_x, pin.c_x)
+    stiffer = pin.with_(k_x=2 * pin.k_x)
+    assert stiffer.pin_y[0] == 2 * pin.k_x  # still axisymmetric
+    d = stiffer.to_dimensionless()
+    assert (d.alpha_y, d.zeta_y) == (None, None) and d.pin_y == (d.alpha, d.zeta)
+    # k_y given: alpha_y = k_y/(m omega^2), zeta_y = c_y/(2 sqrt(k_y m)) with c_y = c_x
+    aniso = vf.Physical(**BASES["physical"], c_x=3.0, k_y=1e5)
+    d = aniso.to_dimensionless()
+    m, w = BASES["physical"]["mass"], BASES["physical"]["omega"]
+    assert d.alpha_y == pytest.approx(1e5 / (m * w**2), rel=1e-15)
+    assert d.zeta_y == pytest.approx(3.0 / (2 * math.sqrt(1e5 * m)), rel=1e-15)
+    assert d.zeta_y != d.zeta
+    with pytest.raises(ValueError, match=re.escape("c_y must be finite and >= 0, got -1.0")):
+        vf.Physical(**BASES["physical"], c_y=-1.0)
+    bench = vf.Physical.from_bench(natural_frequency_hz=1000.0, normal_load=1.0,
+                                   drive_frequency_hz=2000.0, mu0=0.3, mass=0.01, k_zc=1e7,
+                                   k_xc=1e7, du_z=1e-7, k_y=2e5, damping_ratio_y=0.05)
+    assert bench.k_y == 2e5 and bench.c_y == pytest.approx(2 * 0.05 * math.sqrt(2e5 * 0.01))
+
+
 def test_validator_names_unknown_parameters_and_keeps_the_callers_order() -> None:
     from vibrofriction.validation import validated
 
@@ -420,15 +453,23 @@ def test_sweep_parameters_and_coordinates_are_the_schema() -> None:
     from vibrofriction.sweep import _grid, make_plan
     from vibrofriction.sweep._dataset import template
 
-    assert _grid.DIMENSIONLESS == parameter_names("dimensionless")
-    assert _grid.PHYSICAL == parameter_names("physical")
+    # the optional parameters (the pin across the sliding) are not swept, and a system
+    # that gives one is refused, not swept as if axisymmetric
+    assert _grid.DIMENSIONLESS == parameter_names("dimensionless", optional=False)
+    assert _grid.PHYSICAL == parameter_names("physical", optional=False)
+    assert set(parameter_names("physical")) - set(_grid.PHYSICAL) == {"k_y", "c_y"}
+    with pytest.raises(ValueError, match="not axisymmetric yet"):
+        make_plan(system=vf.Physical(**BASES["physical"], k_y=1e5), v0=[0.01])
+    with pytest.raises(ValueError, match=r"not axisymmetric yet \(zeta_y given\)"):
+        make_plan(system=vf.Dimensionless(0.5, 2.0, 0.5, zeta_y=0.1), v_inertial=[0.1])
     pin = vf.Physical(**BASES["physical"])
     for plan in (make_plan(alpha=[0.1, 0.2], beta=2.0, amplitude=0.5, vbar=[0.5]),
                  make_plan(alpha=0.1, beta=2.0, amplitude=[0.5], v_inertial=0.5),
                  make_plan(system=pin, v0=[0.001, 0.01], physical={"mass": [0.01, 0.02]})):
         ds = template(plan, None)
-        names = (parameter_names(plan.kind) + (plan.velocity.name,)
-                 + (parameter_names("dimensionless") if plan.kind == "physical" else ()))
+        names = (parameter_names(plan.kind, optional=False) + (plan.velocity.name,)
+                 + (parameter_names("dimensionless", optional=False)
+                    if plan.kind == "physical" else ()))
         assert set(names) <= set(ds.coords), (names, list(ds.coords))
         for name in names:
             p = PARAMETER[name]

@@ -24,7 +24,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibrofriction import theory
 from vibrofriction.contact import Cone, FlatPunch, Material, PowerLaw, Sphere
-from vibrofriction.schema import NONNEGATIVE, parameter_names
+from vibrofriction.schema import NONNEGATIVE, PARAMETER, parameter_names
 from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
@@ -50,8 +50,11 @@ def _valid_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
 
 def _validate_fields(obj: Any, model: str) -> None:
     """Check the fields of a frozen model dataclass against the schema's ranges
-    (:func:`~vibrofriction.validation.validated`) and store them as floats."""
-    values = validated({name: getattr(obj, name) for name in parameter_names(model)})
+    (:func:`~vibrofriction.validation.validated`) and store them as floats; an optional
+    field (``Parameter.twin``) left None stays None (its twin's value, whatever that is)."""
+    given = {name: getattr(obj, name) for name in parameter_names(model)}
+    values = validated({n: v for n, v in given.items() if v is not None
+                        or not PARAMETER[n].twin})
     for name, value in values.items():
         object.__setattr__(obj, name, float(value))
 
@@ -239,6 +242,11 @@ class Dimensionless:
         is computed by the 2-D solver (docs/inplane.md, "The 2-D solver").
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    alpha_y, zeta_y : float or None
+        The pin across the sliding (the 2-D solver, ``a_y > 0``): ``k_y / (m omega^2)``
+        (finite and > 0) and ``c_y / (2 sqrt(k_y m))`` (finite and >= 0); None (default)
+        is ``alpha``, ``zeta``: an axisymmetric pin (:attr:`pin_y`).  Without a transverse
+        oscillation they have no effect (the body never moves across).
     profile_exponent : float
         Exponent ``n`` of the pin's axisymmetric tip ``z = c r^n`` (``1`` a cone, ``2`` a
         sphere), ``> 0``; ``math.inf`` (default) is the flat punch, the seed's single
@@ -260,12 +268,21 @@ class Dimensionless:
     phase_x: float = 0.0
     a_y: float = 0.0
     phase_y: float = 0.0
+    alpha_y: float | None = None
+    zeta_y: float | None = None
     profile_exponent: float = math.inf
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "dimensionless")
         checked_choice("inplane_on", self.inplane_on)
+
+    @property
+    def pin_y(self) -> tuple[float, float]:
+        """``(alpha_y, zeta_y)`` with None resolved to ``alpha``, ``zeta``: the pin across
+        the sliding."""
+        return (self.alpha if self.alpha_y is None else self.alpha_y,
+                self.zeta if self.zeta_y is None else self.zeta_y)
 
     @property
     def damped(self) -> bool:
@@ -382,10 +399,13 @@ class Physical:
         Its phase relative to the normal oscillation, radians, finite.
     du_y : float
         Amplitude of the transverse in-plane oscillation ``du_y cos(omega t + phase_y)``
-        (across the sliding), m, ``>= 0``; the pin is axisymmetric (``k_x``, ``c_x`` in
-        both directions).
+        (across the sliding), m, ``>= 0``.
     phase_y : float
         Its phase relative to the normal oscillation, radians, finite.
+    k_y, c_y : float or None
+        The pin's stiffness (N/m, finite and > 0) and dashpot (N s/m, >= 0) across the
+        sliding; None (default) is ``k_x``, ``c_x``: an axisymmetric pin (:attr:`pin_y`).
+        They act only with a transverse oscillation (``du_y > 0``).
     profile_exponent : float
         Exponent ``n`` of the tip ``z = c r^n``; ``math.inf`` (default): the linear contact
         of the fields above (a flat punch, or a curved tip linearised at its load).  A
@@ -413,12 +433,21 @@ class Physical:
     phase_x: float = 0.0
     du_y: float = 0.0
     phase_y: float = 0.0
+    k_y: float | None = None
+    c_y: float | None = None
     profile_exponent: float = math.inf
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
         _validate_fields(self, "physical")
         checked_choice("inplane_on", self.inplane_on)
+
+    @property
+    def pin_y(self) -> tuple[float, float]:
+        """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the
+        sliding."""
+        return (self.k_x if self.k_y is None else self.k_y,
+                self.c_x if self.c_y is None else self.c_y)
 
     @classmethod
     def from_bench(cls, *, natural_frequency_hz: float, normal_load: float,
@@ -431,7 +460,8 @@ class Physical:
                    eta_c: float = 0.0, du_z: float | None = None,
                    dF_N: float | None = None, du_x: float = 0.0, phase_x: float = 0.0,
                    du_y: float = 0.0, phase_y: float = 0.0,
-                   inplane_on: str = "substrate") -> Physical:
+                   inplane_on: str = "substrate", k_y: float | None = None,
+                   damping_ratio_y: float | None = None) -> Physical:
         """The model of a tribometer from what the experimenter knows (docs/bench.md).
 
         * the pin: its natural frequency (Hz, from an impact test with the contact
@@ -456,7 +486,10 @@ class Physical:
           amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
         * an in-plane oscillation along the sliding (``du_x`` in m, ``phase_x`` in rad)
           and across it (``du_y``, ``phase_y``), and where it is imposed, ``inplane_on``
-          (docs/inplane.md).
+          (docs/inplane.md);
+        * a pin that is not axisymmetric: its stiffness across the sliding ``k_y`` (N/m;
+          default ``k_x``) and damping ratio ``damping_ratio_y`` (``c_y / (2 sqrt(k_y
+          m))``; default: ``c_y = c_x``).
         """
         f_n = float(checked("natural_frequency_hz", natural_frequency_hz, minimum=0.0,
                             strict=True))
@@ -517,7 +550,11 @@ class Physical:
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=u_z0, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
                      du_y=du_y, phase_y=phase_y, profile_exponent=exponent,
-                     inplane_on=inplane_on)
+                     inplane_on=inplane_on, k_y=k_y)
+        if damping_ratio_y is not None:
+            k_y_, _ = system.pin_y
+            zeta_y = float(checked("damping_ratio_y", damping_ratio_y, minimum=0.0))
+            system = system.with_(c_y=2.0 * zeta_y * math.sqrt(k_y_ * mass))
         if quality_factor is not None and damping_ratio is not None:
             raise ValueError("give at most one of quality_factor and damping_ratio")
         if quality_factor is not None or damping_ratio is not None:
@@ -626,37 +663,55 @@ class Physical:
         return self.with_(**changes)
 
     def to_dimensionless(self) -> Dimensionless:
-        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c`` and the
-        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``inplane_on``."""
+        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the
+        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``,
+        ``phase_y``, ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y``
+        (:meth:`transverse_groups`; None for an axisymmetric pin)."""
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
+        alpha_y, zeta_y = self.transverse_groups(self.omega)
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
                              zeta=float(zeta), eta_c=float(eta_c),
                              a_x=float(self.inplane_amplitude(self.du_x, self.omega)),
                              phase_x=self.phase_x,
                              a_y=float(self.inplane_amplitude(self.du_y, self.omega)),
-                             phase_y=self.phase_y, profile_exponent=self.profile_exponent,
+                             phase_y=self.phase_y,
+                             alpha_y=None if alpha_y is None else float(alpha_y),
+                             zeta_y=None if zeta_y is None else float(zeta_y),
+                             profile_exponent=self.profile_exponent,
                              inplane_on=self.inplane_on)
 
-    def require_no_transverse(self, what: str) -> None:
-        """ValueError if this set-up has a transverse in-plane oscillation, which ``what``
-        (a feature of the package) does not take yet: refused, never ignored."""
-        if self.du_y > 0.0:
-            raise ValueError(f"{what} does not take a transverse oscillation yet (du_y = "
-                             f"{self.du_y!r} m): give a set-up with du_y = 0")
+    def transverse_groups(self, omega: ArrayLike) -> tuple[NDArray[np.float64] | None, ...]:
+        """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``
+        (rad/s), elementwise; each None where this pin leaves it to its twin: ``alpha_y``
+        where ``k_y`` is None, ``zeta_y`` where ``k_y`` and ``c_y`` both are (with ``k_y``
+        given, ``c_y = c_x`` has another damping ratio than ``zeta``)."""
+        omega = np.asarray(omega, dtype=float)
+        k_y, c_y = self.pin_y
+        alpha_y = None if self.k_y is None else k_y / (self.mass * omega**2)
+        zeta_y = None if self.k_y is None and self.c_y is None else np.full(
+            np.shape(omega), c_y / (2.0 * math.sqrt(k_y * self.mass)))
+        return alpha_y, zeta_y
 
     def point_arguments(self, v0: ArrayLike, du_z: ArrayLike, omega: ArrayLike,
-                        du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0
-                        ) -> tuple[NDArray[np.float64], ...]:
-        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of this pin at each point
-        ``(v0, du_z, omega, du_x, phase_x)`` (SI), elementwise: the arguments of
+                        du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
+                        du_y: ArrayLike = 0.0, phase_y: ArrayLike = 0.0
+                        ) -> tuple[NDArray[np.float64] | None, ...]:
+        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
+        zeta_y)`` of this pin at each point ``(v0, du_z, omega, du_x, phase_x, du_y,
+        phase_y)`` (SI), elementwise: the arguments of
         :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
-        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x`` are not used).
-        ValueError for a curved MDR contact: the fit and the design do not take it yet."""
+        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y``
+        are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
+        axisymmetric pin, :meth:`transverse_groups`).  ValueError for a curved MDR contact:
+        the fit and the design do not take it yet."""
         self._check_flat("the fit and the design (point_arguments)")
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
+        a_y = self.inplane_amplitude(du_y, omega)
         phase = np.broadcast_to(np.asarray(phase_x, dtype=float), np.shape(a_x))
-        return alpha, beta, a, self.v0_to_inertial(v0, omega), zeta, eta, a_x, phase
+        phase_y = np.broadcast_to(np.asarray(phase_y, dtype=float), np.shape(a_y))
+        return (alpha, beta, a, self.v0_to_inertial(v0, omega), zeta, eta, a_x, phase, a_y,
+                phase_y, *self.transverse_groups(omega))
 
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude

@@ -281,7 +281,12 @@ class Parameter:
     phase is the same number in SI and scaled form); ``unit`` UDUNITS-style (``"1"``:
     dimensionless); ``definition`` the parameter in terms of others (``"k_x / (m
     omega^2)"``; empty for a primary one); ``range`` its allowed values; ``default`` its
-    value when it is not given (None: required).
+    value when it is not given (None: required, unless ``twin``).  ``twin`` names the
+    parameter whose value an *optional* one takes when it is None (its default): the
+    pin's transverse ``k_y`` is ``k_x`` unless given (an axisymmetric pin).  The twin
+    comes before it in :data:`PARAMETERS`; :func:`vibrofriction.validation.validated`
+    resolves a None to the twin's value, and the model dataclasses keep the None (so a
+    copy with another ``k_x`` stays axisymmetric).
     """
 
     name: str
@@ -294,6 +299,7 @@ class Parameter:
     default: float | None = None
     definition: str = ""
     also: tuple[str, ...] = ()
+    twin: str = ""
 
     @property
     def models(self) -> tuple[str, ...]:
@@ -309,9 +315,9 @@ class Parameter:
 
 def _p(name: str, model: str, unit: str, long_name: str, symbol: str, equation: str = "",
        range: Range = POSITIVE, default: float | None = None, definition: str = "",
-       also: tuple[str, ...] = ()) -> Parameter:
+       also: tuple[str, ...] = (), twin: str = "") -> Parameter:
     return Parameter(name, model, unit, long_name, symbol, equation, range, default,
-                     definition, also)
+                     definition, also, twin)
 
 
 _D, _P, _V = MODELS
@@ -368,6 +374,16 @@ PARAMETERS: tuple[Parameter, ...] = (
     _p("phase_y", _D, "rad", "phase of the transverse in-plane oscillation relative to "
        "the normal one, a_y cos(tau + phase_y)", "phase_y", "docs/inplane.md", FINITE, 0.0,
        also=(_P,)),
+    _p("alpha_y", _D, "1", "transverse stiffness of the pin over inertia, k_y / (m "
+       "omega^2) (the 2-D solver); None: alpha (an axisymmetric pin)", "alpha_y",
+       "docs/inplane.md", definition="k_y / (m omega^2)", twin="alpha"),
+    _p("zeta_y", _D, "1", "transverse damping ratio of the pin, c_y / (2 sqrt(k_y m)) (the "
+       "2-D solver); None: zeta", "zeta_y", "docs/inplane.md", NONNEGATIVE,
+       definition="c_y / (2 sqrt(k_y m))", twin="zeta"),
+    _p("k_y", _P, "N m-1", "transverse stiffness of the pin (across the sliding); None: "
+       "k_x (an axisymmetric pin)", "k_y", "docs/inplane.md", twin="k_x"),
+    _p("c_y", _P, "N s m-1", "transverse pin dashpot parallel to k_y; None: c_x", "c_y",
+       "docs/inplane.md", NONNEGATIVE, twin="c_x"),
     _p("profile_exponent", _D, "1", "exponent n of the pin's axisymmetric tip z = c r^n "
        "(1 cone, 2 sphere; inf = the flat punch, the single spring of the seed): the "
        "contact by the method of dimensionality reduction", "n", "docs/contact_geometry.md",
@@ -382,11 +398,15 @@ PARAMETERS: tuple[Parameter, ...] = (
 
 PARAMETER: dict[str, Parameter] = {p.name: p for p in PARAMETERS}
 if len(PARAMETER) != len(PARAMETERS) or any(
-        any(m not in MODELS for m in p.models) or (p.range.above and p.range.above not in
-                                  [q.name for q in PARAMETERS[:i]])
+        any(m not in MODELS for m in p.models)
+        or any(other and other not in [q.name for q in PARAMETERS[:i]]
+               for other in (p.range.above, p.twin))
+        or (p.twin and (p.default is not None or PARAMETER[p.twin].models != p.models))
         for i, p in enumerate(PARAMETERS)):  # the validator checks in this order
-    raise AssertionError("PARAMETERS: names must be unique, models known, and a parameter "
-                         "that must exceed another must come after it")
+    raise AssertionError("PARAMETERS: names must be unique, models known, a parameter that "
+                         "must exceed another or defaults to its twin must come after it, "
+                         "and an optional one has no default of its own and its twin's "
+                         "models")
 
 
 @dataclass(frozen=True)
@@ -428,6 +448,7 @@ def parameters(model: str) -> tuple[Parameter, ...]:
     return tuple(p for p in PARAMETERS if model in p.models)
 
 
-def parameter_names(model: str) -> tuple[str, ...]:
-    """The names of :func:`parameters` of ``model``."""
-    return tuple(p.name for p in parameters(model))
+def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
+    """The names of :func:`parameters` of ``model``; ``optional=False`` leaves out the
+    optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``)."""
+    return tuple(p.name for p in parameters(model) if optional or not p.twin)

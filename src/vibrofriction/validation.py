@@ -91,7 +91,9 @@ def validated(values: Mapping[str, ArrayLike], *,
     schema; a parameter that must exceed another (``beta > alpha``) is compared with
     it elementwise where both are given, and against its own ``minimum`` otherwise.
     ``ranges`` replaces the schema's range of some parameters, for a closed form whose
-    domain is not the model's (``amplitude <= 1``: no jumping).  ValueError naming the
+    domain is not the model's (``amplitude <= 1``: no jumping).  An optional parameter
+    (``Parameter.twin``: ``k_y``, ``alpha_y``, ...) given as None takes its twin's value,
+    which must be given too.  ValueError naming the
     parameter, its range and the first bad value; or naming an unknown parameter.
     """
     unknown = [n for n in values if n not in PARAMETER]
@@ -101,6 +103,12 @@ def validated(values: Mapping[str, ArrayLike], *,
     out: dict[str, NDArray[np.float64]] = {}
     for p in PARAMETERS:
         if p.name not in values:
+            continue
+        if p.twin and values[p.name] is None:  # optional: its twin's value
+            if p.twin not in out:
+                raise ValueError(f"{p.name} = None means the value of {p.twin}: give "
+                                 f"{p.twin} too, or a value of {p.name}")
+            out[p.name] = out[p.twin]
             continue
         r = ranges.get(p.name, p.range)
         if r.above and r.above in out:

@@ -3,10 +3,12 @@
 Each point of :data:`POINTS` (a transverse oscillation ``a_y > 0``: transverse only
 ``a = 0``, combined normal + transverse, normal + longitudinal + transverse, substrate
 and holder, damped, Jenkins and Kelvin-Voigt contacts, jumping ``a > 1``, several phases,
-``V < 0``) is integrated by the independent reference ``vibrofriction_reference.
-inplane_mean`` (solve_ivp DOP853, shares no code with the solver) from the sliding start,
-with its error bars on ``mu_ratio`` and ``lateral_ratio`` (window spread plus the
-difference from a run at 1000 times looser tolerances).  The solver is not run here.
+``V < 0``; a pin that is not axisymmetric, ``alpha_y != alpha`` and ``zeta_y != zeta``, at
+the points of :data:`ANISOTROPIC`) is integrated by the independent reference
+``vibrofriction_reference.inplane_mean`` (solve_ivp DOP853, shares no code with the
+solver) from the sliding start, with its error bars on ``mu_ratio`` and
+``lateral_ratio`` (window spread plus the difference from a run at 1000 times looser
+tolerances).  The solver is not run here.
 
 Run (several minutes on one core):  python tests/data/make_plane_reference.py
 Writes tests/data/plane_reference.json.
@@ -56,14 +58,31 @@ POINTS = [
     ("over-damped pin", 0.4, 2.0, 0.6, 0.3, 1.5, 0.0, 0.3, 1.2, 0.6, 2.0, "substrate"),
     ("backward all three", 0.5, 2.0, 0.5, -0.3, 0.05, 0.1, 0.5, 1.0, 0.5, 1.0, "substrate"),
 ]
+# the pin across the sliding its own (issue 20: k_y, c_y): the same columns, then alpha_y,
+# zeta_y (the points above have None: alpha, zeta)
+ANISOTROPIC = [
+    ("anisotropic transverse only", 0.5, 2.0, 0.0, 0.3, 0.05, 0.0, 0.0, 0.0, 0.8, 0.0,
+     "substrate", 1.5, 0.2),
+    ("anisotropic soft across, Jenkins", 0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0,
+     "substrate", 0.2, 0.02),
+    ("anisotropic all three holder", 0.5, 2.0, 0.5, 0.4, 0.05, 0.1, 0.5, PI / 2, 0.5, 3.0,
+     "holder", 2.0, 0.1),
+    ("anisotropic jumping viscous", 0.5, 4.0, 1.5, 0.3, 0.1, 0.2, 0.0, 0.0, 0.5, 0.5,
+     "substrate", 3.0, 0.3),
+    ("anisotropic resonant across", 0.5, 2.0, 0.5, 0.3, 0.05, 0.1, 0.0, 0.0, 0.3, 2.0,
+     "substrate", 1.0, 0.05),
+    ("anisotropic backward holder", 0.5, 2.0, 0.5, -0.3, 0.05, 0.1, 0.3, 1.0, 0.4, 1.0,
+     "holder", 0.8, 0.01),
+]
+POINTS += ANISOTROPIC
 KEYS = ("label", "alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x",
-        "phase_x", "a_y", "phase_y", "inplane_on")
+        "phase_x", "a_y", "phase_y", "inplane_on", "alpha_y", "zeta_y")
 
 
 def main() -> None:
     rows = []
     for p in POINTS:
-        d = dict(zip(KEYS, p, strict=True))
+        d = dict(zip(KEYS, (*p, None, None)[:len(KEYS)], strict=True))
         t0 = time.perf_counter()
         r = inplane_mean(d["alpha"], d["beta"], d["amplitude"], d["v_inertial"], TRANSIENT,
                          AVERAGE, **{k: d[k] for k in KEYS[5:]})

@@ -6,9 +6,12 @@ removed ``y = u - (V tau, 0)``, velocity ``v``, contact spring elongation ``e = 
 ``Y = a_y cos(tau + phase_y)`` on the substrate (substrate velocity ``v_s = (X', Y')``)
 or on the holder (the spring and dashpot pull on ``(V tau + X, Y)``, ``v_s = 0``)::
 
-    v' = alpha (D - y) + gamma (h' - v) - f,    f = k e + c e',   |f| <= n,
+    v_x' = alpha   (D_x - y_x) + gamma   (h_x' - v_x) - f_x,
+    v_y' = alpha_y (D_y - y_y) + gamma_y (h_y' - v_y) - f_y,   f = k e + c e',  |f| <= n,
 
-axisymmetric pin (``alpha_y = alpha``, ``gamma_y = gamma``).  Stick: ``e' = v - v_s``,
+the pin's stiffness and damping across the sliding its own (``alpha_y``, ``gamma_y = 2
+zeta_y sqrt(alpha_y)``; an axisymmetric pin has ``alpha_y = alpha``, ``zeta_y = zeta``),
+the contact isotropic.  Stick: ``e' = v - v_s``,
 ``f = k e + c (v - v_s)``.  Slip, Kelvin-Voigt (``c > 0``): ``f = n F/|F|`` with ``F =
 k e + c (v - v_s)``, ``e' = (f - k e)/c``.  Slip, Jenkins (``c = 0``): ``|e| = n/k``,
 ``d = e/|e|``, ``f = n d``, ``e' = w - lam d`` with ``w = v - v_s`` and the slip speed
@@ -74,7 +77,8 @@ N_Z = 8  # y_x, y_y, v_x, v_y, e_x, e_y, int f_x, int f_y
 N_S = 6  # the section state: y_x, y_y, v_x, v_y, e_x, e_y
 # parameter vector
 P_ALPHA, P_GAMMA, P_K, P_C, P_A, P_V, P_AX, P_PX, P_AY, P_PY, P_HOLDER = range(11)
-N_P = 11
+P_ALPHA_Y, P_GAMMA_Y = 11, 12  # the pin across the sliding
+N_P = 13
 # counters: events, steps, rejected steps, failures
 C_EVENTS, C_STEPS, C_REJECT, C_FAIL = range(4)
 
@@ -142,7 +146,8 @@ def contact(mode, P, t, z):
 def max_step(P):
     """The longest Runge-Kutta step: an eighth of the fastest natural period (the body
     on its spring, on both springs, or the contact's relaxation ``k/c``)."""
-    w = max(1.0, math.sqrt(P[P_ALPHA]), math.sqrt(P[P_ALPHA] + P[P_K]))
+    al = max(P[P_ALPHA], P[P_ALPHA_Y])
+    w = max(1.0, math.sqrt(al), math.sqrt(al + P[P_K]))
     if P[P_C] > 0.0:
         w = max(w, P[P_K] / P[P_C])
     return TWO_PI / (8.0 * w)
@@ -151,13 +156,13 @@ def max_step(P):
 @jit
 def rhs(mode, P, t, z, dz):
     """The right-hand side of the phase ``mode`` into ``dz``."""
-    al, g = P[P_ALPHA], P[P_GAMMA]
+    al, g, aly, gy = P[P_ALPHA], P[P_GAMMA], P[P_ALPHA_Y], P[P_GAMMA_Y]
     Dx, Dy, hdx, hdy, _, _ = drive(P, t)
     fx, fy, ex, ey, _ = contact(mode, P, t, z)
     dz[0] = z[2] - P[P_V]
     dz[1] = z[3]
     dz[2] = al * (Dx - z[0]) + g * (hdx - z[2]) - fx
-    dz[3] = al * (Dy - z[1]) + g * (hdy - z[3]) - fy
+    dz[3] = aly * (Dy - z[1]) + gy * (hdy - z[3]) - fy
     dz[4] = ex
     dz[5] = ey
     dz[6] = fx
@@ -559,11 +564,15 @@ def start_state(P, init_kind, y0, xd0, e0, s):
 
 
 @jit
-def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, on_substrate):
-    """The parameter vector ``P`` of a point."""
+def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
+               on_substrate):
+    """The parameter vector ``P`` of a point (``alpha_y``, ``zeta_y``: the pin across the
+    sliding, resolved: ``alpha``, ``zeta`` for an axisymmetric one)."""
     P = np.empty(N_P)
     P[P_ALPHA] = alpha
     P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
+    P[P_ALPHA_Y] = alpha_y
+    P[P_GAMMA_Y] = 2.0 * zeta_y * math.sqrt(alpha_y)
     P[P_K] = beta - alpha
     P[P_C] = eta * (beta - alpha)
     P[P_A], P[P_V] = a, V
@@ -573,8 +582,8 @@ def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, on_subs
 
 
 @jit
-def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
-                       on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
+                       zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
                        max_events, out_f, out_i):
     """Steady state of the 2-D model at one point into the output rows (columns of
     ``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``); ``out_f[O_LAT]`` the lateral ratio.
@@ -583,19 +592,20 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     difference from a second solve at ``100 rtol`` to the section residual's effect.
     ``max_periods`` bounds the averaging fallback; ``max_events`` the switches per
     period (chatter: status failed)."""
-    plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
-                         on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+    plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
+                         zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
                          max_events, out_f, out_i, np.empty(N_S))
 
 
 @jit
-def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
-                         on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
+                         zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
                          max_events, out_f, out_i, s_out):
     """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
     e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
     end; the output rows keep only the x components)."""
-    P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, on_substrate)
+    P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
+                   on_substrate)
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
     out_i[:] = 0
@@ -778,12 +788,13 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
 
 @jit
 def plane_steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
-                            on_substrate, init_kind, init, rtol, max_periods, max_events,
-                            out_f, out_i):
+                            alpha_y, zeta_y, on_substrate, init_kind, init, rtol, max_periods,
+                            max_events, out_f, out_i):
     """:func:`plane_steady_state` over arrays of points (``init`` rows ``(y, x', e)``)."""
     for i in range(V.shape[0]):
         plane_steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i],
-                           phase_x[i], a_y[i], phase_y[i], on_substrate[i], init_kind,
+                           phase_x[i], a_y[i], phase_y[i], alpha_y[i], zeta_y[i],
+                           on_substrate[i], init_kind,
                            init[i, 0], init[i, 1], init[i, 2], rtol, max_periods,
                            max_events, out_f[i], out_i[i])
 

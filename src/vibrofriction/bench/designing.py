@@ -115,10 +115,13 @@ class DesignResult:
         else:
             what = ("largest drive force" if self.goal == "drive" else
                     "smallest friction force |COF|")
+            across = (f", du_y = {s.du_y:.4g} m, phase_y = {s.phase_y:.4f} rad (across the "
+                      f"sliding)" if s.du_y > 0.0 else "")
             lines = [f"{what} at v0 = {self.v0:g} m/s ({s.inplane_on}): f = "
                      f"{s.omega / (2 * math.pi):.6g} Hz, du_z = {s.du_z:.4g} m, du_x = "
-                     f"{s.du_x:.4g} m, phase_x = {s.phase_x:.4f} rad (combined velocity "
-                     f"amplitude {s.omega * math.hypot(s.du_z, s.du_x):.4g} m/s): COF "
+                     f"{s.du_x:.4g} m, phase_x = {s.phase_x:.4f} rad{across} (combined "
+                     f"velocity amplitude "
+                     f"{s.omega * math.hypot(s.du_z, s.du_x, s.du_y):.4g} m/s): COF "
                      f"{self.cof:.5g} (mu/mu0 = {self.mu_ratio:.5g}, solver error "
                      f"{self.error:.1e})"]
             if self.goal == "drive":
@@ -132,10 +135,12 @@ class DesignResult:
         if self.directions is not None:
             lines.append("which direction (best within the same limits):")
             for _, row in self.directions.iterrows():
+                inplane = (f"du_y = {row['du_y']:.3g} m, phase_y = {row['phase_y']:.3f}"
+                           if row.get("du_y", 0.0) > 0.0 else
+                           f"du_x = {row['du_x']:.3g} m, phase_x = {row['phase_x']:.3f}")
                 value = ("not allowed by the ranges" if not np.isfinite(row["cof"]) else
                          f"COF {row['cof']:.5g} at f = {row['omega'] / (2 * math.pi):.5g} Hz, "
-                         f"du_z = {row['du_z']:.3g} m, du_x = {row['du_x']:.3g} m, phase_x = "
-                         f"{row['phase_x']:.3f}")
+                         f"du_z = {row['du_z']:.3g} m, {inplane}")
                 lines.append(f"  {row['direction']:>18s}: {value}")
         lines.append("sensitivity (COF):")
         for _, row in self.sensitivity.iterrows():
@@ -156,14 +161,16 @@ def _range(name: str, value, *, allow_zero: bool = False) -> tuple[float, float]
 
 
 def _solve(pin: Physical, v0: float, omega, du_z, settings: SolverSettings | None,
-           du_x=0.0, phase_x=0.0, inplane_on: str = "substrate") -> dict[str, np.ndarray]:
+           du_x=0.0, phase_x=0.0, inplane_on: str = "substrate", du_y=0.0,
+           phase_y=0.0) -> dict[str, np.ndarray]:
     """``cof`` (nan where not trusted), ``mu_ratio``, ``error`` and ``trusted`` of ``pin``
-    driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x`` (m),
-    ``phase_x`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
-    (:meth:`Physical.point_arguments`, the fit's conversion too)."""
-    omega, du_z, du_x, phase_x = np.broadcast_arrays(
-        *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x)))
-    out = solve_points(*pin.point_arguments(v0, du_z, omega, du_x, phase_x),
+    driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x``, ``du_y`` (m),
+    ``phase_x``, ``phase_y`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
+    (:meth:`Physical.point_arguments`, the fit's conversion too; ``du_y > 0``: the 2-D
+    solver, with the pin's ``k_y``, ``c_y``)."""
+    omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
+        *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
+    out = solve_points(*pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y),
                        inplane_on=inplane_on, settings=settings)
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
@@ -238,7 +245,9 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
            inplane_on: str | None = None, goal: str = "friction",
            velocity_rule: str = "combined", n_omega: int | None = None,
            n_du_z: int | None = None, n_du_x: int = 9, n_phase: int = 16, starts: int = 8,
-           settings: SolverSettings | None = None) -> DesignResult:
+           settings: SolverSettings | None = None, du_y: tuple[float, float] | None = None,
+           phase_y: float | None = None, n_du_y: int = 4,
+           n_phase_y: int = 4) -> DesignResult:
     """The oscillation (``omega`` in rad/s, ``du_z`` in m, within the given ranges and
     ``omega du_z <= max_velocity_amplitude``) that minimises the COF of ``pin`` (eq. 25)
     at the sliding velocity ``v0`` (m/s); ``pin``'s own oscillation (``omega``, ``du_z``,
@@ -261,22 +270,46 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     force and the idle velocity; it needs ``du_x`` (a normal oscillation alone cannot
     drive).  The map is 4-D (default ``41 x 9 x n_du_x x n_phase``); ``directions``
     gives the best normal-only and longitudinal-only choices within the same limits.
+
+    **Transverse** (``goal="friction"``): ``du_y=(lo, hi)`` (m) allows the oscillation
+    across the sliding ``du_y cos(omega t + phase_y)`` (``phase_y=None``: free) instead of
+    the longitudinal one (one in-plane direction at a time; the velocity limit applies to
+    ``omega sqrt(du_z^2 + du_y^2)``, resp. each).  It is designed by the 2-D solver with the
+    pin's ``k_y``, ``c_y``, on a smaller map (at most :data:`PLANE_MAP` frequencies and
+    normal amplitudes, ``n_du_y x n_phase_y``, :data:`PLANE_STARTS` refinements): the rows
+    ``"normal + transverse"`` and ``"transverse only"`` of ``directions``; the chosen
+    oscillation is the best row (``system.du_y > 0`` where a transverse one wins).  The
+    4-D ``map`` stays the one over ``du_x``, ``phase_x`` (only ``du_x = 0`` without
+    ``du_x``).
     """
-    pin.require_no_transverse("the design")
+    if du_y is None and pin.du_y > 0.0:
+        raise ValueError(f"the pin has a transverse oscillation (du_y = {pin.du_y!r} m), "
+                         f"which the design would not use: give du_y=(low, high) to design "
+                         f"it, or a pin with du_y = 0")
+    if du_y is None and phase_y is not None:
+        raise ValueError("phase_y needs a transverse oscillation: give du_y=(low, high)")
+    if du_y is not None and goal != "friction":
+        raise ValueError("goal='drive' does not take a transverse oscillation (du_y) yet: "
+                         "design the drive with du_x")
     if du_x is None and pin.du_x > 0.0:
         raise ValueError(f"the pin has an in-plane oscillation (du_x = {pin.du_x!r} m), which "
                          f"the design would not use: give du_x=(low, high) to design it, or "
                          f"a pin with du_x = 0")
-    if du_x is None and goal == "friction" and (phase_x, inplane_on) != (None, None):
+    if du_x is None and goal == "friction" and (phase_x, inplane_on) != (None, None) \
+            and du_y is None:
         raise ValueError("phase_x and inplane_on need an in-plane oscillation: give "
                          "du_x=(low, high)")
-    if du_x is not None or goal != "friction":
+    if du_x is None and phase_x is not None:
+        raise ValueError("phase_x needs a longitudinal oscillation: give du_x=(low, high)")
+    if du_x is not None or du_y is not None or goal != "friction":
         return _design_inplane(pin, v0=v0, omega=omega, du_z=du_z, du_x=du_x,
                                phase_x=phase_x, inplane_on=inplane_on, goal=goal,
                                velocity_rule=velocity_rule, vmax=max_velocity_amplitude,
                                n_omega=41 if n_omega is None else n_omega,
                                n_du_z=9 if n_du_z is None else n_du_z, n_du_x=n_du_x,
-                               n_phase=n_phase, starts=starts, settings=settings)
+                               n_phase=n_phase, starts=starts, settings=settings,
+                               du_y=du_y, phase_y=phase_y, n_du_y=n_du_y,
+                               n_phase_y=n_phase_y)
     n_omega = 161 if n_omega is None else n_omega
     n_du_z = 41 if n_du_z is None else n_du_z
     v0 = float(checked("v0", v0, minimum=0.0, strict=True))
@@ -361,6 +394,9 @@ def _sensitivity(chosen: Physical, v0: float, settings: SolverSettings | None) -
     if chosen.du_x > 0.0:
         cases += [(f"phase_x {c:+.2f} rad", chosen.with_(phase_x=chosen.phase_x + c),
                    chosen.omega) for c in PHASE_CHANGES]
+    if chosen.du_y > 0.0 and chosen.du_z > 0.0:  # without a normal one it means nothing
+        cases += [(f"phase_y {c:+.2f} rad", chosen.with_(phase_y=chosen.phase_y + c),
+                   chosen.omega) for c in PHASE_CHANGES]
     for name in PIN_PARAMETERS:
         base = getattr(chosen, name)
         if base == 0.0 or not math.isfinite(base):
@@ -370,7 +406,8 @@ def _sensitivity(chosen: Physical, v0: float, settings: SolverSettings | None) -
             cases.append((f"{name} {sign * 100 * PARAMETER_CHANGE:+.0f} %", p, p.omega))
     rows = []
     for label, pin, w in cases:
-        sol = _solve(pin, v0, w, pin.du_z, settings, pin.du_x, pin.phase_x, pin.inplane_on)
+        sol = _solve(pin, v0, w, pin.du_z, settings, pin.du_x, pin.phase_x, pin.inplane_on,
+                     pin.du_y, pin.phase_y)
         rows.append((label, float(sol["cof"]), bool(sol["trusted"])))
     return pd.DataFrame(rows, columns=["change", "cof", "trusted"])
 
@@ -392,11 +429,18 @@ GOALS = {
 #: The blocking force is ``mu`` at ``V = +-BLOCKING_V`` (inertial units).
 BLOCKING_V = 1e-5
 _AXES = ("omega", "du_z", "du_x", "phase_x")
+#: A transverse design's map (the 2-D solver, ~7 ms a point): at most this many
+#: frequencies and normal amplitudes (then ``n_du_y x n_phase_y``).
+PLANE_MAP = (9, 4)
+#: ... and at most this many refinements from its lowest points.
+PLANE_STARTS = 2
 
 
 @dataclass
 class _Space:
-    """The allowed oscillations: ranges (SI), the phase (``None``: free), the limit."""
+    """The allowed oscillations: ranges (SI), the phase (``None``: free), the limit;
+    ``component`` the in-plane direction that ``du_x`` and ``phase`` stand for: ``"x"``
+    (longitudinal) or ``"y"`` (transverse: ``du_y``, ``phase_y``)."""
 
     omega: tuple[float, float]
     du_z: tuple[float, float]
@@ -404,6 +448,14 @@ class _Space:
     phase: float | None
     vmax: float
     rule: str
+    component: str = "x"
+
+    def solve(self, pin, v0, w, dz, d, ph, on, settings) -> dict[str, np.ndarray]:
+        """:func:`_solve` with the in-plane amplitude ``d`` and phase ``ph`` along
+        ``component``."""
+        if self.component == "y":
+            return _solve(pin, v0, w, dz, settings, 0.0, 0.0, on, d, ph)
+        return _solve(pin, v0, w, dz, settings, d, ph, on)
 
     def feasible(self, w, dz, dx) -> np.ndarray:
         w, dz, dx = (np.asarray(x, float) for x in (w, dz, dx))
@@ -446,7 +498,7 @@ def _objective(goal: str, cof: np.ndarray) -> np.ndarray:
     return np.abs(cof) if goal == "friction" else cof
 
 
-def _solve_map(pin, v0, axes, on, settings):
+def _solve_map(pin, v0, axes, on, settings, space: _Space):
     """The solver on the 4-D grid; points without in-plane amplitude are solved at the
     first phase only and copied (the phase means nothing there)."""
     grids = np.meshgrid(*axes, indexing="ij")
@@ -454,7 +506,7 @@ def _solve_map(pin, v0, axes, on, settings):
     sol = {k: np.full(grids[0].shape, np.nan) for k in ("cof", "mu_ratio", "error")}
     sol["trusted"] = np.zeros(grids[0].shape, bool)
     w, dz, dx, ph = (g[need] for g in grids)
-    part = _solve(pin, v0, w, dz, settings, dx, ph, on)
+    part = space.solve(pin, v0, w, dz, dx, ph, on, settings)
     for k, v in part.items():
         sol[k][need] = v
         sol[k][:, :, axes[2] == 0.0, :] = sol[k][:, :, axes[2] == 0.0, :1]
@@ -491,7 +543,7 @@ def _refine_inplane(pin, v0, on, goal, settings, space: _Space, starts, steps):
             w, dz, dx, ph = full(x)
             if not space.inside(w, dz, dx):
                 return math.inf
-            c = float(_solve(pin, v0, w, dz, settings, dx, ph, on)["cof"])
+            c = float(space.solve(pin, v0, w, dz, dx, ph, on, settings)["cof"])
             if math.isnan(c):
                 rejected["run"] += 1
                 return math.inf
@@ -520,7 +572,7 @@ def _optimise(pin, v0, on, goal, space: _Space, sizes, starts, settings):
     """Map and refinement over ``space``: ``(point, objective, grids, axes, sol,
     feasible, n_rejected, rejected_run)``; ValueError without a trusted feasible point."""
     axes = _map_axes(pin, space, *sizes)
-    grids, sol = _solve_map(pin, v0, axes, on, settings)
+    grids, sol = _solve_map(pin, v0, axes, on, settings, space)
     feasible = space.feasible(*grids[:3])
     value = np.where(feasible & sol["trusted"], _objective(goal, sol["cof"]), np.inf)
     order = [k for k in np.argsort(value, axis=None)[:starts] if np.isfinite(value.flat[k])]
@@ -554,19 +606,27 @@ def _untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
 
 
 def _direction_row(name, pin, v0, on, goal, space, sizes, starts, settings):
+    """The best choice within ``space``: a row of ``directions`` (``du_x``, ``phase_x``,
+    ``du_y``, ``phase_y``: the one along ``space.component`` set, the other 0)."""
     try:
         point, _, *_ = _optimise(pin, v0, on, goal, space, sizes, starts, settings)
     except ValueError:
         return {"direction": name, "omega": math.nan, "du_z": math.nan, "du_x": math.nan,
-                "phase_x": math.nan, "cof": math.nan, "allowed": False}
-    cof = float(_solve(pin, v0, *point[:2], settings, *point[2:], on)["cof"])
-    return {"direction": name, "omega": point[0], "du_z": point[1], "du_x": point[2],
-            "phase_x": point[3], "cof": cof, "allowed": space.inside(*point[:3])}
+                "phase_x": math.nan, "du_y": math.nan, "phase_y": math.nan,
+                "cof": math.nan, "allowed": False}
+    cof = float(space.solve(pin, v0, *point, on, settings)["cof"])
+    d, ph = point[2], point[3] if point[2] > 0.0 else 0.0
+    inplane = ({"du_x": 0.0, "phase_x": 0.0, "du_y": d, "phase_y": ph}
+               if space.component == "y" else
+               {"du_x": d, "phase_x": point[3], "du_y": 0.0, "phase_y": 0.0})
+    return {"direction": name, "omega": point[0], "du_z": point[1], **inplane, "cof": cof,
+            "allowed": space.inside(*point[:3])}
 
 
 def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on, goal,
                     velocity_rule, vmax, n_omega, n_du_z, n_du_x, n_phase, starts,
-                    settings) -> DesignResult:
+                    settings, du_y=None, phase_y=None, n_du_y=4,
+                    n_phase_y=4) -> DesignResult:
     if goal not in GOALS:
         raise ValueError(f"goal must be one of {sorted(GOALS)}, got {goal!r}")
     if velocity_rule not in VELOCITY_RULES:
@@ -576,6 +636,12 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
     w_range = _range("omega", omega)
     z_range = _range("du_z", du_z, allow_zero=True)
     x_range = (0.0, 0.0) if du_x is None else _range("du_x", du_x, allow_zero=True)
+    y_range = (0.0, 0.0) if du_y is None else _range("du_y", du_y, allow_zero=True)
+    if y_range[1] > 0.0 and math.isinf(pin.k_xc):
+        raise ValueError("a transverse design (du_y) needs a finite k_xc: the 2-D solver "
+                         "does not cover a rigid contact")
+    if phase_y is not None:
+        phase_y = float(checked("phase_y", phase_y))
     if goal == "drive" and x_range[1] == 0.0:
         raise ValueError("goal='drive' needs an in-plane oscillation: give du_x=(low, high) "
                          "with high > 0 (a normal oscillation alone cannot drive: its mean "
@@ -588,7 +654,8 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
         "max_velocity_amplitude", vmax, minimum=0.0, strict=True))
     for name, n, least in (("n_omega", n_omega, 2), ("n_du_z", n_du_z, 2),
                            ("n_du_x", n_du_x, 2), ("n_phase", n_phase, 1),
-                           ("starts", starts, 1)):
+                           ("starts", starts, 1), ("n_du_y", n_du_y, 2),
+                           ("n_phase_y", n_phase_y, 1)):
         if int(n) != n or n < least:
             raise ValueError(f"{name} must be an integer >= {least}, got {n!r}")
     space = _Space(w_range, z_range, x_range, phase_x, vmax, velocity_rule)
@@ -601,7 +668,8 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
         pin, v0, on, goal, space, sizes, starts, settings)
     # which direction: the best normal-only and longitudinal-only choices in the limits
     rows = [{"direction": "combined", "omega": point[0], "du_z": point[1], "du_x": point[2],
-             "phase_x": point[3], "cof": math.nan, "allowed": True}]
+             "phase_x": point[3], "du_y": 0.0, "phase_y": 0.0, "cof": math.nan,
+             "allowed": True}]
     if z_range[1] > 0.0:
         rows.append(_direction_row("normal only", pin, v0, on, goal,
                                    space.restricted(du_x=(0.0, 0.0)), sizes, starts,
@@ -610,13 +678,26 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
         rows.append(_direction_row("longitudinal only", pin, v0, on, goal,
                                    space.restricted(du_z=(0.0, 0.0), phase=0.0), sizes,
                                    starts, settings))
+    if y_range[1] > 0.0:  # across the sliding: the 2-D solver, a smaller map
+        plane = _Space(w_range, z_range, y_range, phase_y, vmax, velocity_rule, "y")
+        plane_sizes = (min(n_omega, PLANE_MAP[0]), min(n_du_z, PLANE_MAP[1]), n_du_y,
+                       n_phase_y)
+        plane_starts = min(starts, PLANE_STARTS)
+        if z_range[1] > 0.0:
+            rows.append(_direction_row("normal + transverse", pin, v0, on, goal, plane,
+                                       plane_sizes, plane_starts, settings))
+        rows.append(_direction_row("transverse only", pin, v0, on, goal,
+                                   plane.restricted(du_z=(0.0, 0.0), phase=0.0),
+                                   plane_sizes, plane_starts, settings))
+    choice = (*point, 0.0, 0.0)  # (omega, du_z, du_x, phase_x, du_y, phase_y)
     for row in rows[1:]:  # a sub-design inside the allowed set that did better wins
         if row["allowed"] and np.isfinite(row["cof"]) and \
                 float(_objective(goal, np.array(row["cof"]))) < obj:
-            point = (row["omega"], row["du_z"], row["du_x"], row["phase_x"])
+            choice = tuple(row[k] for k in (*_AXES, "du_y", "phase_y"))
             obj = float(_objective(goal, np.array(row["cof"])))
-    rows[0].update(omega=point[0], du_z=point[1], du_x=point[2], phase_x=point[3])
-    at_opt = _solve(pin, v0, *point[:2], settings, *point[2:], on)
+    point = choice[:4]
+    rows[0].update(zip((*_AXES, "du_y", "phase_y"), choice, strict=True))
+    at_opt = _solve(pin, v0, *choice[:2], settings, *choice[2:4], on, *choice[4:])
     cof = float(at_opt["cof"])
     rows[0]["cof"] = cof
     directions = pd.DataFrame(rows)
@@ -624,12 +705,14 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
     near = _untrusted_near_nd(untrusted, axes, point)
     status, message = _status(untrusted, feasible, near, n_rejected, rejected_run)
     chosen = pin.with_(omega=point[0], du_z=point[1], du_x=point[2],
-                       phase_x=point[3] if point[2] > 0.0 else 0.0, inplane_on=on)
+                       phase_x=point[3] if point[2] > 0.0 else 0.0, du_y=choice[4],
+                       phase_y=choice[5] if choice[4] > 0.0 else 0.0, inplane_on=on)
     attrs = {"v0": v0, "goal": goal, "inplane_on": on, "velocity_rule": velocity_rule,
              "max_velocity_amplitude": vmax, "status": status,
              "n_untrusted": int(untrusted.sum()), "n_untrusted_near": near,
              "n_rejected": n_rejected, "optimum_cof": cof,
-             **{f"optimum_{k}": v for k, v in zip(_AXES, point, strict=True)}}
+             **{f"optimum_{k}": v for k, v in zip((*_AXES, "du_y", "phase_y"), choice,
+                                                  strict=True)}}
     dmap = _dataset_nd(axes, sol, feasible, attrs)
     result = DesignResult(
         system=chosen, v0=v0, cof=cof, mu_ratio=cof / pin.mu0, error=float(at_opt["error"]),

@@ -28,14 +28,27 @@ COARSE_ROWS = 20
 
 def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
                 settings: SolverSettings | None = None, *, du_x: NDArray | float = 0.0,
-                phase_x: NDArray | float = 0.0) -> NDArray[np.float64]:
-    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x)``
-    (eq. 25; the in-plane oscillation on ``system.inplane_on``; ``system``'s own ``du_z``,
-    ``omega``, ``du_x``, ``phase_x`` are not used), ``nan`` where the solver's value is
-    not trusted (:meth:`SolverSettings.trusted`): the count of untrusted points is
-    ``np.isnan(...).sum()``."""
-    groups = system.point_arguments(v0, du_z, omega, du_x, phase_x)
+                phase_x: NDArray | float = 0.0, du_y: NDArray | float = 0.0,
+                phase_y: NDArray | float = 0.0) -> NDArray[np.float64]:
+    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
+    phase_y)`` (eq. 25; the in-plane oscillation on ``system.inplane_on``, ``du_y > 0``
+    by the 2-D solver with the pin's ``k_y``, ``c_y``; ``system``'s own ``du_z``,
+    ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y`` are not used), ``nan`` where
+    the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count of
+    untrusted points is ``np.isnan(...).sum()``."""
+    groups = _groups(system, v0, du_z, omega, du_x, phase_x, du_y, phase_y)
     return _cof(system.mu0, _solve_points((*groups, system.inplane_on, settings)))
+
+
+def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
+    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape: an
+    axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows
+    of several systems are concatenated, :meth:`_Problem.costs`)."""
+    groups = list(system.point_arguments(*point))
+    for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
+        if groups[i] is None:
+            groups[i] = groups[twin]
+    return tuple(np.broadcast_arrays(*(np.asarray(g, dtype=float) for g in groups)))
 
 
 def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
@@ -58,7 +71,8 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
     rows = []
     for du in np.atleast_1d(np.asarray(du_z, dtype=float)):
         cof = predict_cof(system, v0, np.full(n, du), np.full(n, system.omega), settings,
-                          du_x=system.du_x, phase_x=system.phase_x)
+                          du_x=system.du_x, phase_x=system.phase_x, du_y=system.du_y,
+                          phase_y=system.phase_y)
         if np.any(np.isnan(cof)):
             bad = v0[np.isnan(cof)]
             shown = ", ".join(f"{v:.4g}" for v in bad[:5]) + (", ..." if bad.size > 5 else "")
@@ -67,7 +81,8 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
                              "synthetic measurement is made from an untrusted value")
         rows.append(pd.DataFrame({"v0": v0, "cof": cof + rng.normal(0.0, sigma, n),
                                   "du_z": du, "omega": system.omega, "sigma": sigma,
-                                  "du_x": system.du_x, "phase_x": system.phase_x}))
+                                  "du_x": system.du_x, "phase_x": system.phase_x,
+                                  "du_y": system.du_y, "phase_y": system.phase_y}))
     return pd.concat(rows, ignore_index=True)
 
 
@@ -129,14 +144,15 @@ class _Problem:
             points[1:] + (self.guess.inplane_on, self.settings)))
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
-        """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of every row at ``ln``
-        (eq. 20), or None where the parameters leave the model's domain."""
+        """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
+        zeta_y)`` of every row at ``ln`` (eq. 20), or None where the parameters leave the
+        model's domain."""
         values = self.values(ln)
         if not _in_domain(values):
             return None
         system, d = Physical(**values), self.data
-        return (system.mu0, *system.point_arguments(*(d[c].to_numpy() for c in (
-            "v0", "du_z", "omega", "du_x", "phase_x"))))
+        return (system.mu0, *_groups(system, *(d[c].to_numpy() for c in (
+            "v0", "du_z", "omega", "du_x", "phase_x", "du_y", "phase_y"))))
 
     def _residuals(self, mu0: float, solved: tuple[NDArray, NDArray]
                    ) -> tuple[NDArray[np.float64], int, int]:
@@ -195,7 +211,7 @@ class _Problem:
 
 
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """``mu_ratio`` and ``trusted`` at the points of ``task`` (the eight group arrays of
+    """``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
     :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
     :meth:`_Problem.costs`."""
     *groups, inplane_on, settings = task

@@ -67,10 +67,12 @@ class FitResult:
     penalised: dict[str, int] = field(default_factory=dict)
 
     def predict(self, v0: NDArray, du_z: NDArray, omega: NDArray, *,
-                du_x: NDArray | float = 0.0, phase_x: NDArray | float = 0.0
+                du_x: NDArray | float = 0.0, phase_x: NDArray | float = 0.0,
+                du_y: NDArray | float = 0.0, phase_y: NDArray | float = 0.0
                 ) -> NDArray[np.float64]:
         """The fitted model's COF at other points (``nan`` where not trusted)."""
-        return predict_cof(self.system, v0, du_z, omega, du_x=du_x, phase_x=phase_x)
+        return predict_cof(self.system, v0, du_z, omega, du_x=du_x, phase_x=phase_x,
+                           du_y=du_y, phase_y=phase_y)
 
     def report(self) -> str:
         """The fit in words and numbers: the verdict first."""

@@ -13,14 +13,17 @@ sigma     standard deviation of ``cof`` (optional)               1
 du_x      amplitude of the longitudinal in-plane oscillation     m, mm, um, nm
           (optional, docs/inplane.md)
 phase_x   its phase relative to the normal one (optional)        rad, deg
+du_y      amplitude of the transverse in-plane oscillation       m, mm, um, nm
+          (optional; the 2-D solver, docs/inplane.md)
+phase_y   its phase relative to the normal one (optional)        rad, deg
 ========  =====================================================  ==================
 
 A unit is written in brackets after the name (``v0 [mm/s]``, ``du_z [um]``, ``omega
 [Hz]``); without one the column is in the first unit of its row (SI).  Values are
-converted to SI (``omega`` to rad/s, ``phase_x`` to rad).  Every value must be finite;
-``du_z`` and ``du_x`` ``>= 0``, ``omega`` and ``sigma`` ``> 0``; ``v0 >= 0`` and ``cof >= 0``
-unless the table has a ``du_x`` column (an in-plane oscillation makes both signed: sliding
-backward, a drive).  Names match regardless of case
+converted to SI (``omega`` to rad/s, ``phase_x``, ``phase_y`` to rad).  Every value must be
+finite; ``du_z``, ``du_x`` and ``du_y`` ``>= 0``, ``omega`` and ``sigma`` ``> 0``; ``v0 >= 0``
+and ``cof >= 0`` unless the table has a ``du_x`` or ``du_y`` column (an in-plane
+oscillation makes both signed: sliding backward, a drive).  Names match regardless of case
 (``Sigma``, ``V0 [mm/s]``); other columns are ignored, unless a name is close to a known
 one (``sigm``, ``du-z``: a misspelling, an error naming both).  A missing column, an
 unknown unit or a bad value is a ``ValueError`` naming the column and, for a value, the
@@ -50,14 +53,17 @@ COLUMNS: dict[str, dict[str, float]] = {
     "sigma": {"1": 1.0, "": 1.0, "-": 1.0},
     "du_x": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9},
     "phase_x": {"rad": 1.0, "deg": math.pi / 180.0},
+    "du_y": {"m": 1.0, "mm": 1e-3, "um": 1e-6, "µm": 1e-6, "nm": 1e-9},
+    "phase_y": {"rad": 1.0, "deg": math.pi / 180.0},
 }
 #: The optional columns and their value where a table has none.
-_OPTIONAL = {"sigma": math.nan, "du_x": 0.0, "phase_x": 0.0}
+_OPTIONAL = {"sigma": math.nan, "du_x": 0.0, "phase_x": 0.0, "du_y": 0.0, "phase_y": 0.0}
 _REQUIRED = ("v0", "cof", "du_z", "omega")
 _MINIMUM = {"v0": (0.0, False), "cof": (0.0, False), "du_z": (0.0, False),
             "omega": (0.0, True), "sigma": (0.0, True), "du_x": (0.0, False),
-            "phase_x": (-math.inf, True)}
-#: Columns that are signed where the table has an in-plane oscillation (a ``du_x`` column).
+            "phase_x": (-math.inf, True), "du_y": (0.0, False), "phase_y": (-math.inf, True)}
+#: Columns that are signed where the table has an in-plane oscillation (a ``du_x`` or
+#: ``du_y`` column).
 _SIGNED_INPLANE = ("v0", "cof")
 #: How close (difflib's ratio) an unknown column's name may come to a known one.
 _MISSPELLING_CUTOFF = 0.75
@@ -122,8 +128,8 @@ def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
     """A measured table (CSV path or DataFrame) as a DataFrame in SI units, checked.
 
     Returns the columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s),
-    ``sigma`` (nan where not given), ``du_x`` (m) and ``phase_x`` (rad; 0 where not
-    given), in the order of the input rows.
+    ``sigma`` (nan where not given), ``du_x``, ``du_y`` (m) and ``phase_x``, ``phase_y``
+    (rad; 0 where not given), in the order of the input rows.
     """
     if isinstance(source, pd.DataFrame):
         frame, lines, where = source, None, "the DataFrame"
@@ -141,7 +147,7 @@ def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
                              f"{[u for u in units if u]}")
         values = pd.to_numeric(frame[raw], errors="coerce").to_numpy(dtype=float)
         low, strict = _MINIMUM[name]
-        if name in _SIGNED_INPLANE and "du_x" in columns:
+        if name in _SIGNED_INPLANE and ("du_x" in columns or "du_y" in columns):
             low, strict = -math.inf, True
         bad = ~np.isfinite(values) | ((values <= low) if strict else (values < low))
         if np.any(bad):

@@ -64,9 +64,10 @@ def parse_list(text: str, name: str) -> list[float]:
     return [parse_float(t, name) for t in items]
 
 
-def json_number(x: float) -> float | str | None:
-    """JSON has no inf/nan: encode them as strings (inf) or null (nan)."""
-    if math.isnan(x):
+def json_number(x: float | None) -> float | str | None:
+    """JSON has no inf/nan: encode them as strings (inf) or null (nan, and None: an
+    optional parameter left to its twin, ``alpha_y``)."""
+    if x is None or math.isnan(x):
         return None
     if math.isinf(x):
         return "inf" if x > 0 else "-inf"

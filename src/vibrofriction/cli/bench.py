@@ -93,6 +93,11 @@ def design_command(
         "--du-x", help="in-plane (longitudinal) amplitude range low:high, m")] = None,
     phase_x: Annotated[str | None, typer.Option(
         "--phase-x", help="fixed in-plane phase, rad (default: optimised)")] = None,
+    du_y: Annotated[str | None, typer.Option(
+        "--du-y", help="transverse amplitude range low:high, m (the 2-D solver; friction "
+        "goal only)")] = None,
+    phase_y: Annotated[str | None, typer.Option(
+        "--phase-y", help="fixed transverse phase, rad (default: optimised)")] = None,
     inplane_on: Annotated[str | None, typer.Option(
         "--inplane-on", help="substrate or holder (default: the bench file's)")] = None,
     goal: Annotated[str, typer.Option(help="friction (smallest |COF|) or drive")] =
@@ -116,7 +121,9 @@ def design_command(
                  parse_float(max_velocity_amplitude, "max_velocity_amplitude"),
                  du_x=None if du_x is None else _range(du_x, "du_x"),
                  phase_x=None if phase_x is None else parse_float(phase_x, "phase_x"),
-                 inplane_on=inplane_on, goal=goal, velocity_rule=velocity_rule)
+                 inplane_on=inplane_on, goal=goal, velocity_rule=velocity_rule,
+                 du_y=None if du_y is None else _range(du_y, "du_y"),
+                 phase_y=None if phase_y is None else parse_float(phase_y, "phase_y"))
     folder = Path(out)
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")

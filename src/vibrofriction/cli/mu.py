@@ -37,6 +37,11 @@ def mu_command(
         ">= 0 (the 2-D solver)")] = "0",
     phase_y: Annotated[str, typer.Option(
         "--phase-y", help="its phase relative to the normal oscillation, rad")] = "0",
+    alpha_y: Annotated[str | None, typer.Option(
+        "--alpha-y", help="the pin across the sliding: k_y/(m omega^2) > 0 (default alpha; "
+        "the 2-D solver)")] = None,
+    zeta_y: Annotated[str | None, typer.Option(
+        "--zeta-y", help="its damping ratio c_y/(2 sqrt(k_y m)) >= 0 (default zeta)")] = None,
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",
@@ -67,6 +72,11 @@ def mu_command(
     du_y: Annotated[str, typer.Option(
         "--du-y", help="in-plane oscillation amplitude across the sliding, m (with "
         "--phase-y)")] = "0",
+    k_y: Annotated[str | None, typer.Option(
+        "--k-y", help="the pin's stiffness across the sliding, N/m (default k_x; with "
+        "--du-y)")] = None,
+    c_y: Annotated[str | None, typer.Option(
+        "--c-y", help="the pin's dashpot across the sliding, N s/m (default c_x)")] = None,
     quality_factor: Annotated[str | None, typer.Option(
         "--quality-factor", help="the pin's Q from an impact test (instead of --c-x)")] = None,
     v0: Annotated[str | None, typer.Option(help="physical set-up: velocity v0, m/s "
@@ -84,16 +94,19 @@ def mu_command(
     """Macroscopic coefficient of friction mu/mu0 in the steady state (eq. 25).
 
     Give the dimensionless system (--alpha --beta --amplitude [--zeta --eta-c --a-x
-    --phase-x --a-y --phase-y --inplane-on --profile-exponent]) with --vbar or
-    --v-inertial, or a physical set-up in SI units (--mass --k-x --k-xc --k-zc --u-z0 --du-z
-    --omega --mu0 [--c-x or --quality-factor, --c-xc, --du-x --phase-x --du-y --phase-y
-    --inplane-on --profile-exponent]) with --v0.
+    --phase-x --a-y --phase-y --alpha-y --zeta-y --inplane-on --profile-exponent]) with
+    --vbar or --v-inertial, or a physical set-up in SI units (--mass --k-x --k-xc --k-zc
+    --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor, --c-xc, --du-x --phase-x --du-y
+    --phase-y --k-y --c-y --inplane-on --profile-exponent]) with --v0.
     """
     inplane = {"phase_x": parse_float(phase_x, "phase_x"),
                "phase_y": parse_float(phase_y, "phase_y"), "inplane_on": inplane_on}
     si_inplane = {"du_x": parse_float(du_x, "du_x"), "du_y": parse_float(du_y, "du_y")}
     exponent = parse_float(profile_exponent, "profile_exponent")
     scaled_inplane = {"a_x": parse_float(a_x, "a_x"), "a_y": parse_float(a_y, "a_y")}
+    si_pin_y = {k: parse_float(v, k) for k, v in (("k_y", k_y), ("c_y", c_y)) if v is not None}
+    scaled_pin_y = {k: parse_float(v, k) for k, v in (("alpha_y", alpha_y), ("zeta_y", zeta_y))
+                    if v is not None}
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
     settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
@@ -104,16 +117,20 @@ def mu_command(
             physical = Physical.from_bench_file(bench)
             if any(v > 0.0 for v in si_inplane.values()):
                 physical = physical.with_(**si_inplane, **inplane)
+            if si_pin_y:
+                physical = physical.with_(**si_pin_y)
             if exponent != physical.profile_exponent:
                 raise ValueError("--profile-exponent: a bench file's contact geometry and "
                                  "contact_model give the profile (docs/bench.md)")
         else:
             physical = _physical(phys, c_x, c_xc, quality_factor,
                                  (alpha, beta, amplitude, vbar, v_inertial),
-                                 **si_inplane, **inplane, profile_exponent=exponent)
-        if any(v != 0.0 for v in scaled_inplane.values()):
-            raise ValueError("--a-x, --a-y are the dimensionless amplitudes: a physical "
-                             "set-up takes --du-x, --du-y (m)")
+                                 **si_inplane, **inplane, **si_pin_y,
+                                 profile_exponent=exponent)
+        if any(v != 0.0 for v in scaled_inplane.values()) or scaled_pin_y:
+            raise ValueError("--a-x, --a-y are the dimensionless amplitudes (and --alpha-y, "
+                             "--zeta-y dimensionless): a physical set-up takes --du-x, --du-y "
+                             "(m), --k-y, --c-y")
         if v0 is None:
             raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
         system = physical.to_dimensionless()
@@ -126,11 +143,12 @@ def mu_command(
             raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
         system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
                                parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
-                               parse_float(eta_c, "eta_c"), **scaled_inplane,
-                               profile_exponent=exponent, **inplane)
-        if any(v != 0.0 for v in si_inplane.values()):
-            raise ValueError("--du-x, --du-y (m) need a physical set-up: the dimensionless "
-                             "system takes --a-x, --a-y")
+                               parse_float(eta_c, "eta_c"), **scaled_inplane, **inplane,
+                               **scaled_pin_y, profile_exponent=exponent)
+        if any(v != 0.0 for v in si_inplane.values()) or si_pin_y:
+            raise ValueError("--du-x, --du-y (m) need a physical set-up, as do --k-y, --c-y: "
+                             "the dimensionless system takes --a-x, --a-y, --alpha-y, "
+                             "--zeta-y")
         results = _dimensionless(system, vbar, v_inertial, initial, settings)
     _print(system, results, as_json)
     exit_if_untrusted([r.trusted for r in results], settings.tol_trusted)
@@ -188,6 +206,8 @@ def _print(system: Dimensionless, results, as_json: bool) -> None:
         inplane = "".join(f" a_{c}={getattr(system, 'a_' + c):g} phase_{c}="
                           f"{getattr(system, 'phase_' + c):g}" for c in "xy"
                           if getattr(system, "a_" + c) > 0)
+        if system.a_y > 0 and (system.alpha_y, system.zeta_y) != (None, None):
+            inplane += " alpha_y={:g} zeta_y={:g}".format(*system.pin_y)
         if inplane:
             inplane += (f" on the {system.inplane_on} (critical velocity "
                         f"{system.critical_inertial_velocity():.5g})")

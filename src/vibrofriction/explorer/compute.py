@@ -90,7 +90,7 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
                    if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0 else math.nan),
         "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
-        **{n: getattr(dim, n) for n in parameter_names("dimensionless")},
+        **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
                                                   scale),
         "x_label": AXES[state.axis][1],

@@ -56,9 +56,10 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "phase_y": (0.0, 6.283185307179586, False)}
 #: not offered yet (the state keeps the schema's default): a curved profile's MDR solver
 #: takes seconds a point, and its vbar and closed forms are not derived
-#: (docs/contact_geometry.md)
+#: (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is axisymmetric here
 _NOT_OFFERED = ("profile_exponent",)
-DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n]) for n in parameter_names("dimensionless")
+DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n])
+                      for n in parameter_names("dimensionless", optional=False)
                       if n not in _NOT_OFFERED)
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
@@ -129,8 +130,8 @@ class State:
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
-            return vf.Dimensionless(**{n: getattr(self, n)
-                                       for n in parameter_names("dimensionless")},
+            return vf.Dimensionless(**{n: getattr(self, n) for n in
+                                       parameter_names("dimensionless", optional=False)},
                                     inplane_on=self.inplane_on)
         return vf.Physical.from_bench(**self.bench_arguments())
 

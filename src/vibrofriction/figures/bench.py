@@ -25,23 +25,29 @@ def plot_fit(result: FitResult) -> Figure:
     chi-square."""
     fig = style.figure(6.0, 5.0)
     ax, axr = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
-    data = result.data.assign(**{c: result.data.get(c, 0.0) for c in ("du_x", "phase_x")})
+    inplane_columns = ("du_x", "phase_x", "du_y", "phase_y")
+    data = result.data.assign(**{c: result.data.get(c, 0.0) for c in inplane_columns})
     signed = bool((data["v0"] <= 0.0).any())  # an in-plane oscillation: both directions
-    for k, ((du, om, dx, ph), g) in enumerate(data.groupby(
-            ["du_z", "omega", "du_x", "phase_x"], sort=True)):
+    for k, ((du, om, dx, ph, dy, py), g) in enumerate(data.groupby(
+            ["du_z", "omega", *inplane_columns], sort=True)):
         color = f"C{k % 10}"
         lo, hi = g["v0"].min(), g["v0"].max()
         v = (np.linspace(lo - 0.1 * (hi - lo), hi + 0.1 * (hi - lo), 240) if signed
              else np.geomspace(max(lo, 1e-9) / 1.5, hi * 1.5, 120))
+        if dy > 0:  # the 2-D solver: not at v0 = 0, and slow (minutes) very near it
+            v = v[np.abs(v) >= 0.5 * np.abs(g["v0"]).min()]
         inplane = f", du_x = {dx * 1e6:.3g} um at {ph:.3g} rad" if dx > 0 else ""
+        inplane += f", du_y = {dy * 1e6:.3g} um at {py:.3g} rad" if dy > 0 else ""
         ax.plot(v, result.predict(v, np.full(v.size, du), np.full(v.size, om), du_x=dx,
-                                  phase_x=ph), color=color, lw=1.2,
+                                  phase_x=ph, du_y=dy, phase_y=py), color=color, lw=1.2,
                 label=f"du_z = {du * 1e6:.3g} um, f = {om / (2 * math.pi):.4g} Hz{inplane}")
         yerr = g["sigma"] if np.all(np.isfinite(g["sigma"])) else None
         ax.errorbar(g["v0"], g["cof"], yerr=yerr, fmt="o", ms=3, color=color, capsize=2)
         res = g["cof"] - result.predict(g["v0"].to_numpy(), g["du_z"].to_numpy(),
                                         g["omega"].to_numpy(), du_x=g["du_x"].to_numpy(),
-                                        phase_x=g["phase_x"].to_numpy())
+                                        phase_x=g["phase_x"].to_numpy(),
+                                        du_y=g["du_y"].to_numpy(),
+                                        phase_y=g["phase_y"].to_numpy())
         axr.errorbar(g["v0"], res, yerr=yerr, fmt="o", ms=3, color=color, capsize=2)
     axr.axhline(0.0, color="0.5", lw=0.6)
     ax.set_xscale("linear" if signed else "log")

@@ -101,6 +101,8 @@ def solve_points(
     phase_x: ArrayLike = 0.0,
     a_y: ArrayLike = 0.0,
     phase_y: ArrayLike = 0.0,
+    alpha_y: ArrayLike | None = None,
+    zeta_y: ArrayLike | None = None,
     profile_exponent: ArrayLike = math.inf,
     *,
     inplane_on: str = "substrate",
@@ -109,7 +111,7 @@ def solve_points(
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points, one compiled loop: the batch engine.
 
-    The eleven parameters broadcast together and are validated against their ranges in
+    The thirteen parameters broadcast together and are validated against their ranges in
     :data:`vibrofriction.schema.PARAMETERS` (``alpha > 0``, ``beta > alpha``, ``a >= 0``,
     ``zeta >= 0``, ``eta_c >= 0``, ``a_x, a_y >= 0``; ``V`` and the phases any finite
     real; finite but ``beta``); ``inplane_on`` is ``"substrate"`` or ``"holder"`` for all
@@ -130,6 +132,10 @@ def solve_points(
     ``beta``, ``V != 0``, and not ``a = 1`` with ``eta_c = 0``: ValueError otherwise);
     ``lateral_ratio = <F_y>/(mu0 <F_N>)`` is its mean transverse force (0 for the others).
 
+    ``alpha_y``, ``zeta_y`` are the pin across the sliding (None: ``alpha``, ``zeta``, an
+    axisymmetric pin); only the 2-D points use them: without a transverse oscillation the
+    body never moves across, and the 1-D solver's results do not depend on them.
+
     A curved tip (finite ``profile_exponent``) is solved point by point by the MDR solver
     (:func:`vibrofriction.solver.mdr.mdr_friction` with ``tol = settings.tol_trusted``;
     :func:`_mdr_rows`): milliseconds to a tenth of a second a point, from the
@@ -140,16 +146,18 @@ def solve_points(
     """
     settings = settings or DEFAULT_SETTINGS
     on_substrate = checked_choice("inplane_on", inplane_on) == "substrate"
-    al, be, am, V, ze, et, ax, px, ay, py, pe = np.broadcast_arrays(*(
+    al, be, am, V, ze, et, ax, px, ay, py, aly, zey, pe = np.broadcast_arrays(*(
         np.asarray(x, dtype=float)
         for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, a_y,
-                  phase_y, profile_exponent)))
+                  phase_y, alpha if alpha_y is None else alpha_y,
+                  zeta if zeta_y is None else zeta_y, profile_exponent)))
     shape = V.shape
-    al, be, am, V, ze, et, ax, px, ay, py, pe = (
-        np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et, ax, px, ay, py, pe))
+    al, be, am, V, ze, et, ax, px, ay, py, aly, zey, pe = (
+        np.ascontiguousarray(x.ravel()) for x in (al, be, am, V, ze, et, ax, px, ay, py, aly,
+                                                  zey, pe))
     validated({"alpha": al, "beta": be, "amplitude": am, "v_inertial": V, "zeta": ze,
                "eta_c": et, "a_x": ax, "phase_x": px, "a_y": ay, "phase_y": py,
-               "profile_exponent": pe})
+               "alpha_y": aly, "zeta_y": zey, "profile_exponent": pe})
     curved = pe != math.inf
     if np.any(curved):
         _check_curved(curved, al, be, am, V, ze, et, ax, ay, pe, initial)
@@ -181,8 +189,8 @@ def solve_points(
         oi = np.zeros((idx.size, len(INT_COLUMNS)), dtype=np.int64)
         if rows is plane:
             plane_steady_state_many(al[idx], be[idx], am[idx], V[idx], ze[idx], et[idx],
-                                    ax[idx], px[idx], ay[idx], py[idx],
-                                    np.full(idx.size, on_substrate), k,
+                                    ax[idx], px[idx], ay[idx], py[idx], aly[idx],
+                                    zey[idx], np.full(idx.size, on_substrate), k,
                                     np.ascontiguousarray(init[idx]), PLANE_RTOL,
                                     settings.max_periods,
                                     min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi)
@@ -432,7 +440,8 @@ def friction_coefficient(
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)
     cols = solve_points(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
-                        dim.a_x, dim.phase_x, dim.a_y, dim.phase_y, dim.profile_exponent,
+                        dim.a_x, dim.phase_x, dim.a_y, dim.phase_y, *dim.pin_y,
+                        dim.profile_exponent,
                         inplane_on=dim.inplane_on, initial=initial, settings=settings)
     if V.ndim == 0:
         return result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, float(V))

@@ -105,7 +105,7 @@ class History:
     def stored_energy(self) -> NDArray[np.float64]:
         """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
         oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
-        transverse terms are added)."""
+        transverse terms are added, the pin's spring across ``alpha_y``)."""
         d = self.system
         y = self.x - self.v_inertial * self.tau
         if d.a_x > 0.0 and d.inplane_on == "holder":
@@ -116,7 +116,7 @@ class History:
         if self.is_plane:
             yy = self.u_y - (_transverse_motion(d, self.tau)[0]
                              if d.inplane_on == "holder" else 0.0)
-            out = out + 0.5 * self.u_y_dot**2 + 0.5 * d.alpha * yy**2
+            out = out + 0.5 * self.u_y_dot**2 + 0.5 * d.pin_y[0] * yy**2
             out = out + 0.5 * (d.beta - d.alpha) * self.e_y**2
         return out
 
@@ -269,7 +269,7 @@ def simulate(
 
 def _plane_parameters(dim: Dimensionless, V: float) -> NDArray[np.float64]:
     return _plane.parameters(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
-                             dim.a_x, dim.phase_x, dim.a_y, dim.phase_y,
+                             dim.a_x, dim.phase_x, dim.a_y, dim.phase_y, *dim.pin_y,
                              dim.inplane_on == "substrate")
 
 
@@ -288,7 +288,7 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
         oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
         _plane.plane_steady_section(
             dim.alpha, dim.beta, dim.amplitude, abs(V), dim.zeta, dim.eta_c, dim.a_x, px,
-            dim.a_y, dim.phase_y, dim.inplane_on == "substrate", 0, 0.0, 0.0, 0.0,
+            dim.a_y, dim.phase_y, *dim.pin_y, dim.inplane_on == "substrate", 0, 0.0, 0.0, 0.0,
             PLANE_RTOL, settings.max_periods,
             min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi, s)
         status, error = int(oi[column_index("status")]), float(of[column_index("error")])
@@ -401,14 +401,16 @@ def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
         hd = np.stack([V + zero, zero], axis=1)
         vs = np.stack([Xd, Yd], axis=1)
     u = np.stack([x, uy], axis=1)
-    gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
+    alpha_y, zeta_y = dim.pin_y
+    stiffness = np.array([dim.alpha, alpha_y])  # the pin along and across the sliding
+    gamma = 2.0 * np.array([dim.zeta, zeta_y]) * np.sqrt(stiffness)
     c = dim.eta_c * (dim.beta - dim.alpha)
-    f_pin = dim.alpha * (h - u) + gamma * (hd - v)
+    f_pin = stiffness * (h - u) + gamma * (hd - v)
     e_dot = v - vs - slip
     p_in = np.sum(f_pin * hd, axis=1) - np.sum(f * vs, axis=1)
     return {
         "work_input": _cumulative(tau, p_in),
-        "dissipated_pin": _cumulative(tau, gamma * np.sum((hd - v) ** 2, axis=1)),
+        "dissipated_pin": _cumulative(tau, np.sum(gamma * (hd - v) ** 2, axis=1)),
         "dissipated_contact": _cumulative(tau, c * np.sum(e_dot**2, axis=1)),
         "dissipated_friction": _cumulative(tau, np.sum(f * slip, axis=1)),
     }

@@ -25,7 +25,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..params import Dimensionless, Physical
-from ..schema import CHOICES, PARAMETER, choice_names, parameter_names
+from ..schema import CHOICES, PARAMETER, PARAMETERS, choice_names, parameter_names
 from ..solver import SolverSettings
 from ..validation import checked_choice, validated
 from ._variables import signature as variables_signature
@@ -39,8 +39,9 @@ __all__ = [
     "parse_axis",
 ]
 
-DIMENSIONLESS = parameter_names("dimensionless")
-PHYSICAL = parameter_names("physical")
+# the optional parameters (the pin across the sliding, k_y, alpha_y, ...) are not swept
+DIMENSIONLESS = parameter_names("dimensionless", optional=False)
+PHYSICAL = parameter_names("physical", optional=False)
 DIRECTIONS = ("up", "down")
 DEFAULT_CHUNK_SIZE = 1000
 #: The block size when none is given: about 1/AUTO_BLOCKS of the grid, between
@@ -290,6 +291,7 @@ def make_plan(
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work."""
     settings = _checked_options(settings, initial, chunk_size)
+    _check_axisymmetric(system)
     on = getattr(system, "inplane_on", CHOICES["inplane_on"].default) if inplane_on is None \
         else checked_choice("inplane_on", inplane_on)
     if isinstance(system, Physical):
@@ -326,6 +328,18 @@ def make_plan(
     if chunk_size is None:
         chunk_size = auto_chunk_size(int(np.prod(plan.shape)))
     return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
+
+
+def _check_axisymmetric(system: Any) -> None:
+    """ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
+    ``alpha_y``, ``zeta_y`` given): the sweep does not carry them yet (refused, never
+    ignored)."""
+    names = [p.name for p in PARAMETERS if p.twin and getattr(system, p.name, None)
+             is not None]
+    if names:
+        raise ValueError(f"the sweep does not take a pin that is not axisymmetric yet "
+                         f"({', '.join(names)} given): sweep with friction_coefficient over "
+                         "an array of velocities, or leave them None")
 
 
 def auto_chunk_size(points: int) -> int:

@@ -146,7 +146,7 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "III)",
             "symbol": "v0*", "units": "m s-1", "equation": "(12)"}),
         *(Variable(n, "f8", np.nan, dict(COORD_ATTRS[n]))
-          for n in parameter_names("dimensionless")  # derived from the SI ones
+          for n in parameter_names("dimensionless", optional=False)  # from the SI ones
           if n not in parameter_names("physical")),  # phase_x: an SI parameter itself
     )
 
