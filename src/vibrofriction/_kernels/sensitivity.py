@@ -16,12 +16,13 @@ the ``p`` periods, eq. 25) then moves by
 
 ``G`` the exact gradient of ``F`` in the state (:mod:`.tangent`).  The state part
 (``J``, ``G``) is exact; the explicit parameter part ``P_theta``, ``F_theta`` is taken by
-central differences of the exact period map at fixed ``z*`` (step ``rel`` times the
-parameter's scale, :func:`_step`); ``N`` does not depend on the state and its derivative
-is closed form (``dN/da = 2 p sqrt(1 - 1/a^2)`` with lift-off, 0 without).  A
-difference is refused (``nan``, flag :data:`SF_KINK`) where the ``+h`` and ``-h`` maps
-do not end in the same phase with the same number of events as the map at ``theta``
-(the parameter moves an event through a grazing), or a transition is degenerate.
+fourth-order central differences (``+-h``, ``+-2h``) of the exact period map at fixed
+``z*`` (``h`` = ``rel`` times the parameter's scale, :func:`_step`); ``N`` does not
+depend on the state and its derivative is closed form (``dN/da = 2 p sqrt(1 - 1/a^2)``
+with lift-off, 0 without).  A difference is refused (``nan``, flag :data:`SF_KINK`)
+where one of its four maps does not end in the same phase with the same number of
+events as the map at ``theta`` (the parameter moves an event through a grazing), or a
+transition is degenerate.
 """
 
 import math
@@ -38,6 +39,7 @@ from .tangent import period_map_tangent
 N_THETA = 8  # alpha, beta, a, V, zeta, eta_c, a_x, phase_x
 T_ALPHA, T_BETA, T_A, T_V, T_ZETA, T_ETA, T_AX, T_PX = 0, 1, 2, 3, 4, 5, 6, 7
 REL_STEP = 1e-6  # the central differences' step, relative to the parameter's scale
+STENCIL = (-2.0, -1.0, 1.0, 2.0)
 
 # flags (bits) of a point: the orbit's map is not differentiable (tangential event,
 # degenerate transition, image in another phase), the orbit is neutral (I - J singular),
@@ -78,6 +80,12 @@ def _map_at(theta, on_substrate, zf, ph, nd, p, max_events, acc):
     start = np.array([y0, xd0, e0])
     return (ok and count[C_DEGENERATE] == 0, start, z[:3].copy(), int(z[3]),
             count[C_EVENTS])
+
+
+@jit
+def _difference(f, h):
+    """The fourth-order central difference of ``f`` at the offsets :data:`STENCIL` times ``h``."""
+    return (8.0 * (f[2] - f[1]) - (f[3] - f[0])) / (12.0 * h)
 
 
 @jit
@@ -124,8 +132,10 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
     mu = 1.0 if pure else F / N
     zf = np.array([y, xd, e])
     lhs = np.eye(nd) - J[:nd, :nd]
-    accp = np.zeros(N_ACC)
-    accm = np.zeros(N_ACC)
+    accq = np.zeros(N_ACC)
+    img = np.zeros((4, 3))
+    start = np.zeros((4, 3))
+    fq = np.zeros(4)
     flags = SF_OK
     rigid = math.isinf(beta)
     for j in range(N_THETA):
@@ -134,35 +144,43 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
             dz[j, :] = 0.0
             continue
         h = _step(theta, j, rel)
-        if j == T_ETA and not (eta - h >= ETA_ELASTIC) and not rigid:
+        if j == T_ETA and not (eta - 2.0 * h >= ETA_ELASTIC) and not rigid:
             flags |= SF_KINK  # the +-h maps straddle the elastic model (or eta_c = 0)
             continue
         if j == T_ETA and rigid:
             dmu[j] = 0.0  # a rigid contact has no contact dashpot
             dz[j, :] = 0.0
             continue
-        tp = theta.copy()
-        tm = theta.copy()
-        tp[j] += h
-        tm[j] -= h
-        okp, sp, zp, php, evp = _map_at(tp, on_substrate, zf, ph, nd, p, max_events, accp)
-        okm, sm, zm, phm, evm = _map_at(tm, on_substrate, zf, ph, nd, p, max_events, accm)
-        if not (okp and okm) or php != ph or phm != ph or evp != ev or evm != ev:
+        # the fourth-order stencil (+-h, +-2h): the map at fixed z* can bend on a scale of
+        # 1e-4 of a parameter (a near-tangential event), where +-h alone is off by 1e-4
+        kink = False
+        for q in range(4):
+            tq = theta.copy()
+            tq[j] += STENCIL[q] * h
+            okq, sq, zq, phq, evq = _map_at(tq, on_substrate, zf, ph, nd, p, max_events,
+                                            accq)
+            if not okq or phq != ph or evq != ev:
+                kink = True
+                break
+            img[q, :] = zq
+            start[q, :] = sq
+            fq[q] = accq[A_F]
+        if kink:
             flags |= SF_KINK
             continue
         rhs = np.zeros(nd)
         for i in range(nd):
-            rhs[i] = (zp[i] - zm[i]) / (2.0 * h)
+            rhs[i] = _difference(img[:, i], h)
         x, ok = _solve_small(lhs, rhs, nd)
         if not ok:
             flags |= SF_NEUTRAL
             continue
         for i in range(3):  # the coordinates a constraint sets follow the parameters
-            dz[j, i] = x[i] if i < nd else (sp[i] - sm[i]) / (2.0 * h)
+            dz[j, i] = x[i] if i < nd else _difference(start[:, i], h)
         if pure:
             dmu[j] = 0.0  # f = n throughout, in every nearby orbit with its events
             continue
-        dF = (accp[A_F] - accm[A_F]) / (2.0 * h)
+        dF = _difference(fq, h)
         for i in range(nd):
             dF += G[i] * x[i]
         dN = _normal_rate(a, p) if j == T_A else 0.0

@@ -1,0 +1,169 @@
+"""Parameter sensitivities of the steady state (``solver/sensitivity.py``, issue 19).
+
+The derivatives ``d mu_ratio / d theta`` and ``d z* / d theta`` (the implicit function
+theorem on the period map: exact monodromy and gradient of ``int f``, the explicit
+parameter part by central differences of the period map at fixed ``z*``) against
+differences of the FULL solver (:func:`solve_points` at ``theta +- h``), an independent
+check: every difference re-solves the orbit from the start, with its own Newton
+iterations.  Seeded random points of every regime of ``reference_points`` with random
+damping (undamped, damped, over-damped), elastic or relaxing contact, in-plane
+oscillation on the substrate or the holder, and ``V < 0``.
+
+The solver's differences are Richardson-extrapolated central differences (one-sided at
+``zeta = 0``, ``a_x = 0``) with step ``H`` times the parameter's scale: ``mu`` bends on a
+scale of 1e-3 in some directions (``a_x`` at ``alpha ~ 38``), where a plain difference
+with that step is off by 3e-5.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from reference_points import REGIMES, random_points
+from vibrofriction import Dimensionless
+from vibrofriction.solver import SolverSettings, solve_points
+from vibrofriction.solver.sensitivity import SENSITIVE, friction_gradient, solve_gradients
+
+SEED, PER_REGIME = 7, 8
+H = 1e-5  # the solver's difference step, relative to the parameter's scale
+TOL_MU = 1e-5  # agreement of d mu / d theta, relative (see _scale)
+TOL_STATE = 1e-5  # agreement of d z* / d theta, relative to 1 + |dz|
+MIN_PERIODIC = 30  # points whose every derivative is checked
+
+
+def _cases():
+    rng = np.random.default_rng(SEED)
+    out = []
+    for regime in REGIMES:
+        for alpha, beta, a, V in random_points(SEED, PER_REGIME, regime):
+            pt = {"alpha": alpha, "beta": beta, "amplitude": a,
+                  "v_inertial": float(rng.choice([1.0, -1.0])) * V,
+                  "zeta": float(rng.choice([0.0, 0.02, 0.3, 1.5])),
+                  "eta_c": float(rng.choice([0.0, 0.05])),
+                  "a_x": float(rng.choice([0.0, 0.3])),
+                  "phase_x": float(rng.uniform(-3.0, 3.0))}
+            out.append((regime, pt, str(rng.choice(["substrate", "holder"]))))
+    return out
+
+
+def _scale(name, pt):
+    """The parameter's scale: the step of the differences is ``H`` times it."""
+    if name == "beta":
+        return pt["beta"] - pt["alpha"]
+    if name in ("amplitude", "zeta", "a_x", "phase_x"):
+        return max(abs(pt[name]), 1.0)
+    return abs(pt[name])
+
+
+def _solver_difference(name, pt, on):
+    """Richardson-extrapolated difference of the full solver in ``name`` (``mu`` and the
+    final state ``y, x_dot, e``), or None where a step changes the status or period."""
+    x, h = pt[name], H * _scale(name, pt)
+    one_sided = x - h < 0.0
+    offsets = [0.0, 0.5, 1.0, 2.0] if one_sided else [-1.0, -0.5, 0.5, 1.0]
+    cols = {k: np.array([x + o * h if k == name else v for o in offsets])
+            for k, v in pt.items()}
+    out = solve_points(**cols, inplane_on=on)
+    ref = solve_points(**pt, inplane_on=on)
+    if not (np.all(out["status"] == ref["status"]) and np.all(out["period"] == ref["period"])):
+        return None
+    f = np.column_stack([out[k] for k in ("mu_ratio", "y", "x_dot", "e")])
+    if one_sided:  # second-order one-sided at h and h/2, extrapolated
+        d1 = (-1.5 * f[0] + 2.0 * f[2] - 0.5 * f[3]) / h
+        d2 = (-1.5 * f[0] + 2.0 * f[1] - 0.5 * f[2]) / (0.5 * h)
+    else:
+        d1 = (f[3] - f[0]) / (2.0 * h)
+        d2 = (f[2] - f[1]) / h
+    return (4.0 * d2 - d1) / 3.0
+
+
+@pytest.fixture(scope="module")
+def compared():
+    rows = []
+    for regime, pt, on in _cases():
+        cols, sens = solve_gradients(**pt, inplane_on=on)
+        row = {"regime": regime, "pt": pt, "status": int(cols["status"][()]),
+               "mu": {k: float(v) for k, v in sens.mu.items()},
+               "state": {k: np.asarray(v) for k, v in sens.state.items()}, "fd": {}}
+        if row["status"] == 0:
+            for k in SENSITIVE:
+                rigid = math.isinf(pt["beta"])
+                if not math.isfinite(row["mu"][k]) or (rigid and k in ("beta", "eta_c")):
+                    continue
+                row["fd"][k] = _solver_difference(k, pt, on)
+        rows.append(row)
+    return rows
+
+
+def test_gradient_matches_full_solver_differences(compared):
+    checked, worst = 0, 0.0
+    for r in compared:
+        if not r["fd"]:
+            continue
+        if sum(v is not None for v in r["fd"].values()) >= 6:
+            checked += 1
+        for k, fd in r["fd"].items():
+            if fd is None:
+                continue
+            floor = 1e-2 / _scale(k, r["pt"])  # 1e-2 in mu per unit relative change
+            err = abs(r["mu"][k] - fd[0]) / max(abs(fd[0]), floor)
+            worst = max(worst, err)
+            assert err <= TOL_MU, (r["regime"], r["pt"], k, r["mu"][k], fd[0])
+    assert checked >= MIN_PERIODIC, checked
+    print(f"\n{checked} periodic points, worst relative disagreement {worst:.1e}")
+
+
+def test_state_derivative_matches_full_solver_differences(compared):
+    worst, n = 0.0, 0
+    for r in compared:
+        for k, fd in r["fd"].items():
+            if fd is None:
+                continue
+            dz = r["state"][k]
+            err = np.max(np.abs(dz - fd[1:]) / (1.0 + np.abs(fd[1:])))
+            worst = max(worst, err)
+            n += 1
+            assert err <= TOL_STATE, (r["regime"], r["pt"], k, dz, fd[1:])
+    assert n >= 8 * MIN_PERIODIC // 2
+    print(f"\n{n} state derivatives, worst disagreement {worst:.1e}")
+
+
+def test_every_mode_is_covered(compared):
+    """The checked points include every regime and mode the brief lists."""
+    seen = [r for r in compared if r["fd"]]
+    regimes = {r["regime"] for r in seen}
+    assert regimes == set(REGIMES), set(REGIMES) - regimes
+    checks = {
+        "undamped": lambda p: p["zeta"] == 0.0,
+        "damped": lambda p: 0.0 < p["zeta"] < 1.0,
+        "over-damped": lambda p: p["zeta"] > 1.0,
+        "relaxing contact": lambda p: p["eta_c"] > 0.0 and math.isfinite(p["beta"]),
+        "jumping": lambda p: p["amplitude"] > 1.0,
+        "rigid": lambda p: math.isinf(p["beta"]),
+        "alpha > 1": lambda p: p["alpha"] > 1.0,
+        "in-plane": lambda p: p["a_x"] > 0.0,
+        "V < 0": lambda p: p["v_inertial"] < 0.0,
+    }
+    for name, test in checks.items():
+        assert any(test(r["pt"]) for r in seen), name
+
+
+def test_sliding_is_flat_and_other_statuses_have_none(compared):
+    sliding = [r for r in compared if r["status"] == 4]
+    assert sliding
+    for r in sliding:
+        assert all(v == 0.0 for v in r["mu"].values())
+    # a run that fails (event budget) has no sensitivity
+    cols, sens = solve_gradients(1.5, 5.0, 0.8, 0.1, settings=SolverSettings(max_events=2))
+    assert cols["status"][()] == 3
+    assert all(math.isnan(float(v)) for v in sens.mu.values())
+
+
+def test_friction_gradient_one_point():
+    res, grad = friction_gradient(Dimensionless(0.3, 3.0, 0.5, zeta=0.05), v_inertial=0.2)
+    cols, sens = solve_gradients(0.3, 3.0, 0.5, 0.2, 0.05)
+    assert res.mu_ratio == cols["mu_ratio"][()]
+    np.testing.assert_equal([grad[k] for k in SENSITIVE], [float(sens.mu[k]) for k in SENSITIVE])
+    assert set(grad) == set(SENSITIVE) and math.isnan(grad["eta_c"])  # eta_c = 0: none
+    assert abs(grad["amplitude"]) > 0.1
