@@ -146,9 +146,26 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
     nvary = len(problem.free) - (hold is not None)
     # a start that crawls along a kinked valley for thousands of evaluations does not win:
     # the budget is LOCAL_BUDGET evaluations per varied parameter
+    budget = LOCAL_BUDGET * (nvary + 1)
+    if problem.jacobian_kind == "differences":
+        return lmfit.minimize(residual, params, method="leastsq",
+                              scale_covar=not problem.weighted, epsfcn=1e-8,
+                              max_nfev=budget, **loose)
+    # the exact Jacobian (:meth:`_Problem.jacobian`); it counts as nvary evaluations of
+    # the budget, as the differences it replaces did
+    vary = np.array([i != hold for i in range(len(problem.free))])
+    spent = {"jacobians": 0}
+
+    def jacobian(p):
+        spent["jacobians"] += 1
+        return problem.jacobian(np.array([p[n].value for n in problem.free]), vary)
+
+    def over_budget(p, it, resid, *args, **kws):
+        return it + nvary * spent["jacobians"] > budget
+
     return lmfit.minimize(residual, params, method="leastsq",
-                          scale_covar=not problem.weighted, epsfcn=1e-8,
-                          max_nfev=LOCAL_BUDGET * (nvary + 1), **loose)
+                          scale_covar=not problem.weighted, Dfun=jacobian, col_deriv=0,
+                          iter_cb=over_budget, max_nfev=budget, **loose)
 
 
 @dataclass
