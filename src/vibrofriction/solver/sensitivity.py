@@ -78,7 +78,8 @@ def solve_gradients(
     to each parameter's scale; ``order``: 4 (``+-h``, ``+-2h``, the default) or 2 (half
     the cost; off by up to ~1e-4 relative where the map at fixed ``z*`` bends);
     ``parameters``: those differentiated (the others are ``nan``).  ``V < 0`` is
-    differentiated through the mirror of :func:`solve_points` (``mu(V, phase_x) = -mu(-V, phase_x + pi)``).
+    differentiated through the mirror of :func:`solve_points` (``mu(V, phase_x) =
+    -mu(-V, phase_x + pi)``).
     """
     settings = settings or DEFAULT_SETTINGS
     if order not in (2, 4):
