@@ -113,7 +113,8 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
     differentiated (the others stay ``nan``); ``order``: 4 (``+-h``, ``+-2h``) or 2
     (``+-h``, half the cost, an error up to ~1e-4 relative where the map bends).  A
     rigid contact does not depend on ``beta`` (0); ``eta_c`` below
-    :data:`.phases.ETA_ELASTIC` is solved as elastic and has no derivative here (``nan``, :data:`SF_KINK`)."""
+    :data:`.phases.ETA_ELASTIC` is solved as elastic and has no derivative here
+    (``nan``, :data:`SF_KINK`)."""
     dmu[:] = math.nan
     dz[:, :] = math.nan
     theta = np.array([alpha, beta, a, V, zeta, eta, a_x, phase_x])
