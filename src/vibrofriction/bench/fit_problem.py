@@ -15,7 +15,7 @@ from numpy.typing import NDArray
 
 from ..params import Physical
 from ..solver import SolverSettings, solve_points
-from ..solver.sensitivity import SENSITIVE, solve_gradients
+from ..solver.sensitivity import SENSITIVE, sensitivities
 
 __all__ = ["FITTABLE", "predict_cof", "synthetic_measurements"]
 
@@ -185,8 +185,10 @@ class _Problem:
                           / (2.0 * MAP_STEP) for a, b in zip(pu, pd_, strict=True)])
         moving = tuple(k for i, k in enumerate(SENSITIVE)
                        if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
-        solved, sens = solve_gradients(*points[1:], inplane_on=self.guess.inplane_on,
-                                       settings=self.settings, order=2, parameters=moving)
+        on = self.guess.inplane_on
+        solved = solve_points(*points[1:], inplane_on=on, settings=self.settings)
+        sens = sensitivities(solved, *points[1:], inplane_on=on, settings=self.settings,
+                             order=2, parameters=moving)
         trusted, mu = solved["trusted"], solved["mu_ratio"]
         scale = self._scale()
         missing = np.zeros(len(self.data), dtype=bool)

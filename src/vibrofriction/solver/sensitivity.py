@@ -26,7 +26,8 @@ from .engine import Initial, _mirror_rows, solve_points
 from .results import FrictionResult, result_from_columns
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
-__all__ = ["SENSITIVE", "Sensitivities", "friction_gradient", "solve_gradients"]
+__all__ = ["SENSITIVE", "Sensitivities", "friction_gradient", "sensitivities",
+           "solve_gradients"]
 
 #: The parameters differentiated, in the order of :func:`solve_points`' arguments.
 SENSITIVE = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x")
@@ -82,14 +83,39 @@ def solve_gradients(
     -mu(-V, phase_x + pi)``).
     """
     settings = settings or DEFAULT_SETTINGS
+    cols = solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
+                        inplane_on=inplane_on, initial=initial, settings=settings)
+    return cols, sensitivities(cols, alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x,
+                               phase_x, inplane_on=inplane_on, settings=settings,
+                               rel_step=rel_step, order=order, parameters=parameters)
+
+
+def sensitivities(
+    cols: dict[str, NDArray],
+    alpha: ArrayLike,
+    beta: ArrayLike,
+    amplitude: ArrayLike,
+    v_inertial: ArrayLike,
+    zeta: ArrayLike = 0.0,
+    eta_c: ArrayLike = 0.0,
+    a_x: ArrayLike = 0.0,
+    phase_x: ArrayLike = 0.0,
+    *,
+    inplane_on: str = "substrate",
+    settings: SolverSettings | None = None,
+    rel_step: float = REL_STEP,
+    order: int = 4,
+    parameters: tuple[str, ...] = SENSITIVE,
+) -> Sensitivities:
+    """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points
+    (the same arguments; :func:`solve_gradients`)."""
+    settings = settings or DEFAULT_SETTINGS
     if order not in (2, 4):
         raise ValueError(f"order must be 2 or 4, got {order!r}")
     unknown = set(parameters) - set(SENSITIVE)
     if unknown:
         raise ValueError(f"parameters must be among {SENSITIVE}, got {sorted(unknown)}")
     want = np.array([k in parameters for k in SENSITIVE])
-    cols = solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
-                        inplane_on=inplane_on, initial=initial, settings=settings)
     shape = cols["mu_ratio"].shape
     al, be, am, V, ze, et, ax, px = (np.ascontiguousarray(np.broadcast_to(
         np.asarray(x, dtype=float), shape).ravel())
@@ -128,7 +154,7 @@ def solve_gradients(
     dz *= chain[:, :, None]
     mu = {k: dmu[:, j].reshape(shape) for j, k in enumerate(SENSITIVE)}
     st = {k: dz[:, j].reshape(shape + (3,)) for j, k in enumerate(SENSITIVE)}
-    return cols, Sensitivities(mu, st, flags.reshape(shape))
+    return Sensitivities(mu, st, flags.reshape(shape))
 
 
 def friction_gradient(
