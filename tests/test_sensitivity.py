@@ -167,3 +167,74 @@ def test_friction_gradient_one_point():
     np.testing.assert_equal([grad[k] for k in SENSITIVE], [float(sens.mu[k]) for k in SENSITIVE])
     assert set(grad) == set(SENSITIVE) and math.isnan(grad["eta_c"])  # eta_c = 0: none
     assert abs(grad["amplitude"]) > 0.1
+
+
+# --- the fit's exact Jacobian -------------------------------------------------------------
+
+def _fit_problem():
+    from vibrofriction.bench import synthetic_measurements
+    from vibrofriction.bench.fit_problem import _Problem
+    from vibrofriction.params import Physical
+
+    true = Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7,
+                               drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.3)
+    data = synthetic_measurements(true, (0.3e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 8), 0.003,
+                                  np.random.default_rng(5))
+    guess = true.with_(mu0=0.33, mass=0.012, k_xc=1.8e7)
+    free = ("mu0", "mass", "k_x", "k_xc", "u_z0")
+    problem = _Problem(guess, free, False, True, True, data)
+    return problem, np.array([math.log(getattr(guess, n)) for n in free])
+
+
+def _residual_differences(problem, ln, h=1e-5):
+    out = np.zeros((len(problem.data), ln.size))
+    for j in range(ln.size):
+        up, down = ln.copy(), ln.copy()
+        up[j] += h
+        down[j] -= h
+        out[:, j] = (problem.residual(up) - problem.residual(down)) / (2.0 * h)
+    return out
+
+
+def test_fit_jacobian_matches_differences_of_the_residuals():
+    problem, ln = _fit_problem()
+    jac = problem.jacobian(ln)
+    fd = _residual_differences(problem, ln)
+    assert np.max(np.abs(fd)) > 1.0  # the residuals move
+    err = np.abs(jac - fd) / np.max(np.abs(fd), axis=0)
+    assert np.max(err) < 1e-4, err.max(axis=0)
+    held = problem.jacobian(ln, np.array([True, False, True, True, True]))
+    np.testing.assert_array_equal(held, jac[:, [0, 2, 3, 4]])
+
+
+def test_fit_jacobian_falls_back_to_the_solver_where_there_is_no_sensitivity(monkeypatch):
+    """Rows without a sensitivity (here: every other, made nan) are differenced through
+    the solver, those rows only, and agree as well."""
+    import vibrofriction.bench.fit_problem as fp
+
+    real = fp.sensitivities
+    calls = {"solved": 0}
+
+    def half_missing(cols, *args, **kwargs):
+        sens = real(cols, *args, **kwargs)
+        for v in sens.mu.values():
+            v[::2] = np.nan
+        return sens
+
+    solve = fp._solve_points
+
+    def counted(task):
+        calls["solved"] += len(task[0])
+        return solve(task)
+
+    problem, ln = _fit_problem()
+    monkeypatch.setattr(fp, "sensitivities", half_missing)
+    monkeypatch.setattr(fp, "_solve_points", counted)
+    jac = problem.jacobian(ln)
+    rows = len(problem.data)
+    assert calls["solved"] == 2 * ln.size * ((rows + 1) // 2)  # the nan rows, both sides
+    monkeypatch.setattr(fp, "_solve_points", solve)
+    fd = _residual_differences(problem, ln)
+    err = np.abs(jac - fd) / np.max(np.abs(fd), axis=0)
+    assert np.max(err) < 1e-4, err.max(axis=0)
