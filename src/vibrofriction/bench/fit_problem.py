@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -92,6 +92,9 @@ class _Problem:
     #: the local fits' Jacobian: ``"exact"`` (:meth:`jacobian`) or ``"differences"``
     #: (lmfit's forward differences of the residuals)
     jacobian_kind: str = "exact"
+    #: the last solve of :meth:`evaluate` (``ln`` as bytes, the columns): lmfit asks for the
+    #: Jacobian where it has just evaluated the residuals
+    _last: tuple | None = field(default=None, init=False, repr=False, compare=False)
 
     def values(self, ln: NDArray[np.float64]) -> dict[str, float]:
         """The fields of the system at ``ln`` of the free parameters, constraints applied."""
@@ -133,8 +136,18 @@ class _Problem:
         points = self.points(ln)
         if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
             return self.penalty(), len(self.data), 0
-        return self._residuals(points[0], _solve_points(
-            points[1:] + (self.guess.inplane_on, self.settings)))
+        solved = self._solve(ln, points)
+        return self._residuals(points[0], (solved["mu_ratio"], solved["trusted"]))
+
+    def _solve(self, ln: NDArray[np.float64], points: tuple) -> dict[str, NDArray]:
+        """:func:`solve_points` at ``points`` (of ``ln``), kept for :meth:`jacobian`."""
+        key = np.asarray(ln, dtype=float).tobytes()
+        if self._last is not None and self._last[0] == key:
+            return self._last[1]
+        solved = solve_points(*points[1:], inplane_on=self.guess.inplane_on,
+                              settings=self.settings)
+        self._last = (key, solved)
+        return solved
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
         """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x)`` of every row at ``ln``
@@ -185,10 +198,9 @@ class _Problem:
                           / (2.0 * MAP_STEP) for a, b in zip(pu, pd_, strict=True)])
         moving = tuple(k for i, k in enumerate(SENSITIVE)
                        if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
-        on = self.guess.inplane_on
-        solved = solve_points(*points[1:], inplane_on=on, settings=self.settings)
-        sens = sensitivities(solved, *points[1:], inplane_on=on, settings=self.settings,
-                             order=2, parameters=moving)
+        solved = self._solve(ln, points)
+        sens = sensitivities(solved, *points[1:], inplane_on=self.guess.inplane_on,
+                             settings=self.settings, order=2, parameters=moving)
         trusted, mu = solved["trusted"], solved["mu_ratio"]
         scale = self._scale()
         missing = np.zeros(len(self.data), dtype=bool)
