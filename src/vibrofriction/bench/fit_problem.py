@@ -172,7 +172,7 @@ class _Problem:
                  ) -> NDArray[np.float64]:
         """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by
         columns.  ``cof = mu0 mu_ratio`` is chained through the sensitivities of the
-        steady state (:func:`~vibrofriction.solver.sensitivity.solve_gradients`) and
+        steady state (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and
         the derivatives of the cheap map ``ln -> (mu0, alpha, ..., phase_x)``
         (:meth:`points`, central differences of that map alone).  Rows without a
         sensitivity (not periodic nor sliding, a neutral orbit, a difference across a
