@@ -24,7 +24,8 @@ on every other row of the table: half the cost per generation) comes first, then
 Levenberg-Marquardt with lmfit on every row from its best point and from the next best
 distinct members of its population (the lowest chi-square wins), with the exact Jacobian
 of the residuals (the steady state's sensitivities, docs/solver.md "Parameter
-sensitivities"; the solver's differences at the rows that have none).  A weighted fit still
+sensitivities"; the solver's differences at the rows that have none), then lmfit's
+differences from where it stops (the model's kinks).  A weighted fit still
 poor after the first starts (chi-square probability below :data:`~.fit_result.POOR_P`)
 runs a second global stage with another seed.  Parameters are fitted as logarithms (all
 are positive and span decades).  A row the model cannot evaluate (no trusted value of
