@@ -10,7 +10,12 @@ k_xc = 1.5e7 N/m, 20 N; noise 0.003 in the COF) from the same poor guess:
 Each is run once on each of four data sets (noise seeds): the time depends on the data
 (a first global stage that ends in a wrong valley is followed by a second).
 
+Each fit is run with the local stages' exact Jacobian (the steady state's sensitivities,
+``jacobian="exact"``) and with lmfit's differences (``"differences"``), side by side in
+the same run (``--jacobian`` picks one or both).
+
 Run:  python benchmarks/bench_fit.py [--data-seeds 11,12,13,14] [--workers 2]
+      [--jacobian exact,differences]
 Writes benchmarks/results/fit.md.
 """
 
@@ -57,7 +62,10 @@ def main() -> None:
     ap.add_argument("--data-seeds", default="11,12,13,14",
                     help="noise seeds of the data sets, one fit of each per call")
     ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--jacobian", default="exact,differences",
+                    help="the local stages' Jacobians compared, interleaved per data set")
     args = ap.parse_args()
+    jacobians = args.jacobian.split(",")
     seeds = [int(x) for x in args.data_seeds.split(",")]
     tables = {k: data(np.random.default_rng(k)) for k in seeds}
     vf.fit(tables[seeds[0]].head(6), TRUE, free=["mu0"], global_stage=False,
@@ -72,25 +80,31 @@ def main() -> None:
     detail = []
     truth = ", ".join(f"{n} {getattr(TRUE, n):.4g}" for n in FREE)
     for name, (guess, kwargs) in CALLS.items():
-        times, verdicts, stages = [], [], []
+        times = {j: [] for j in jacobians}
+        verdicts = {j: [] for j in jacobians}
+        stages = {j: [] for j in jacobians}
         for k in seeds:
-            t = time.perf_counter()
-            res = vf.fit(tables[k], guess, **{"free": FREE, **kwargs},
-                         workers=args.workers, progress=False)
-            times.append(time.perf_counter() - t)
-            verdicts.append(f"{res.quality} ({res.p_value:.2g})")
-            stages.append(sum(r["stage"] == "global" for r in res.extra["stages"]))
-            print(f"{name}, data {k}: {times[-1]:.1f} s, {verdicts[-1]}", flush=True)
-            detail.append(f"* {name}, data {k}: " + "; ".join(
-                f"{r['stage']} {r['seconds']:.1f} s ({r['evaluations']})"
-                for r in res.extra["stages"]))
-            detail.append("  " + "; ".join(
-                f"{n} {res.params[n].value:.4g} [{lo:.4g}, {hi:.4g}]"
-                for n, (lo, hi) in res.intervals.items()))
-        lines.append(f"| {name} | {statistics.median(times):.1f} s | {max(times):.1f} s | "
-                     f"{', '.join(f'{t:.1f}' for t in times)} | "
-                     f"{', '.join(verdicts)} | "
-                     f"{', '.join(map(str, stages))} |")
+            for jac in jacobians:
+                t = time.perf_counter()
+                res = vf.fit(tables[k], guess, **{"free": FREE, **kwargs},
+                             workers=args.workers, progress=False, jacobian=jac)
+                times[jac].append(time.perf_counter() - t)
+                verdicts[jac].append(f"{res.quality} ({res.p_value:.2g})")
+                stages[jac].append(sum(r["stage"] == "global" for r in res.extra["stages"]))
+                print(f"{name}, {jac}, data {k}: {times[jac][-1]:.1f} s, {verdicts[jac][-1]}",
+                      flush=True)
+                detail.append(f"* {name}, {jac} Jacobian, data {k}: " + "; ".join(
+                    f"{r['stage']} {r['seconds']:.1f} s ({r['evaluations']})"
+                    for r in res.extra["stages"]))
+                detail.append("  " + "; ".join(
+                    f"{n} {res.params[n].value:.4g} [{lo:.4g}, {hi:.4g}]"
+                    for n, (lo, hi) in res.intervals.items()))
+        for jac in jacobians:
+            t = times[jac]
+            lines.append(f"| {name}, {jac} Jacobian | {statistics.median(t):.1f} s | "
+                         f"{max(t):.1f} s | {', '.join(f'{x:.1f}' for x in t)} | "
+                         f"{', '.join(verdicts[jac])} | "
+                         f"{', '.join(map(str, stages[jac]))} |")
     lines += ["", "Stages (seconds, model evaluations) and the 95.4 % intervals "
               f"(truth: {truth}):", "", *detail, ""]
     out = HERE / "results" / "fit.md"

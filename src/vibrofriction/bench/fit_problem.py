@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pandas as pd
@@ -15,9 +15,14 @@ from numpy.typing import NDArray
 
 from ..params import Physical
 from ..solver import SolverSettings, solve_points
+from ..solver.sensitivity import SENSITIVE, sensitivities
 
 __all__ = ["FITTABLE", "predict_cof", "synthetic_measurements"]
 
+#: The step in ``ln`` of the central differences of the map ``ln -> points`` (cheap, no
+#: solver) in :meth:`_Problem.jacobian`, and of the solver's own where it has no sensitivity.
+MAP_STEP = 1e-6
+SOLVER_STEP = 1e-5
 #: The fields of :class:`Physical` that can be fitted.
 FITTABLE = ("mu0", "mass", "k_x", "k_xc", "k_zc", "u_z0", "c_x", "c_xc")
 #: The global stage compares the model with every other row of a table this long or
@@ -99,6 +104,12 @@ class _Problem:
     settings: SolverSettings | None = None
     #: the largest ``mu0`` of the search (the bound of an honest misfit, :meth:`penalty`)
     mu0_max: float | None = None
+    #: the local fits' Jacobian: ``"exact"`` (:meth:`jacobian`) or ``"differences"``
+    #: (lmfit's forward differences of the residuals)
+    jacobian_kind: str = "exact"
+    #: the last solve of :meth:`evaluate` (``ln`` as bytes, the columns): lmfit asks for the
+    #: Jacobian where it has just evaluated the residuals
+    _last: tuple | None = field(default=None, init=False, repr=False, compare=False)
 
     def values(self, ln: NDArray[np.float64]) -> dict[str, float]:
         """The fields of the system at ``ln`` of the free parameters, constraints applied."""
@@ -140,8 +151,18 @@ class _Problem:
         points = self.points(ln)
         if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
             return self.penalty(), len(self.data), 0
-        return self._residuals(points[0], _solve_points(
-            points[1:] + (self.guess.inplane_on, self.settings)))
+        solved = self._solve(ln, points)
+        return self._residuals(points[0], (solved["mu_ratio"], solved["trusted"]))
+
+    def _solve(self, ln: NDArray[np.float64], points: tuple) -> dict[str, NDArray]:
+        """:func:`solve_points` at ``points`` (of ``ln``), kept for :meth:`jacobian`."""
+        key = np.asarray(ln, dtype=float).tobytes()
+        if self._last is not None and self._last[0] == key:
+            return self._last[1]
+        solved = solve_points(*points[1:], inplane_on=self.guess.inplane_on,
+                              settings=self.settings)
+        self._last = (key, solved)
+        return solved
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
         """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
@@ -162,6 +183,80 @@ class _Problem:
 
     def residual(self, ln: NDArray[np.float64]) -> NDArray[np.float64]:
         return self.evaluate(ln)[0]
+
+    def jacobian(self, ln: NDArray[np.float64], vary: NDArray[np.bool_] | None = None
+                 ) -> NDArray[np.float64]:
+        """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by
+        columns.  ``cof = mu0 mu_ratio`` is chained through the sensitivities of the
+        steady state (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and
+        the derivatives of the cheap map ``ln -> (mu0, alpha, ..., phase_x)``
+        (:meth:`points`, central differences of that map alone).  Rows without a
+        sensitivity (not periodic nor sliding, a neutral orbit, a difference across a
+        grazing) are differenced through the solver, those rows only; penalised rows
+        (untrusted, outside the domain) are constant: 0."""
+        vary = np.ones(len(self.free), dtype=bool) if vary is None else np.asarray(vary)
+        cols_j = np.flatnonzero(vary)
+        out = np.zeros((len(self.data), cols_j.size))
+        points = self.points(ln)
+        if points is None:
+            return out
+        mu0 = points[0]
+        rates = []  # d (mu0, alpha, ..., phase_x) / d ln_j of every row
+        for j in cols_j:
+            up, down = ln.copy(), ln.copy()
+            up[j] += MAP_STEP
+            down[j] -= MAP_STEP
+            pu, pd_ = self.points(up), self.points(down)
+            if pu is None or pd_ is None:  # at the domain's edge: the solver's differences
+                rates.append(None)
+                continue
+            rates.append([(np.asarray(a, dtype=float) - np.asarray(b, dtype=float))
+                          / (2.0 * MAP_STEP) for a, b in zip(pu, pd_, strict=True)])
+        moving = tuple(k for i, k in enumerate(SENSITIVE)
+                       if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
+        solved = self._solve(ln, points)
+        sens = sensitivities(solved, *points[1:], inplane_on=self.guess.inplane_on,
+                             settings=self.settings, order=2, parameters=moving)
+        trusted, mu = solved["trusted"], solved["mu_ratio"]
+        scale = self._scale()
+        missing = np.zeros(len(self.data), dtype=bool)
+        for c, rate in enumerate(rates):
+            if rate is None:
+                missing[:] = True
+                continue
+            dmu = np.zeros(len(self.data))
+            for name, dtheta in zip(SENSITIVE, rate[1:], strict=True):
+                moves = dtheta != 0.0
+                dmu = dmu + np.where(moves, sens.mu[name] * np.where(moves, dtheta, 0.0), 0.0)
+            out[:, c] = (rate[0] * mu + mu0 * dmu) / scale
+            missing |= ~np.isfinite(out[:, c])
+        missing &= trusted
+        out[~trusted] = 0.0
+        if np.any(missing):
+            rows = np.flatnonzero(missing)
+            for c, j in enumerate(cols_j):
+                out[rows, c] = self._row_differences(ln, j, rows)
+        return out
+
+    def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]
+                         ) -> NDArray[np.float64]:
+        """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
+        (:data:`SOLVER_STEP`); 0 where a side is penalised."""
+        sides = []
+        for sign in (1.0, -1.0):
+            x = ln.copy()
+            x[j] += sign * SOLVER_STEP
+            p = self.points(x)
+            if p is None:
+                return np.zeros(rows.size)
+            mu, trusted = _solve_points(tuple(g[rows] for g in p[1:])
+                                        + (self.guess.inplane_on, self.settings))
+            cof = p[0] * np.where(trusted, mu, np.nan)
+            sides.append(cof)
+        scale = self._scale()
+        d = (sides[0] - sides[1]) / (2.0 * SOLVER_STEP) / (
+            scale[rows] if isinstance(scale, np.ndarray) else scale)
+        return np.where(np.isfinite(d), d, 0.0)
 
     def cost(self, ln: NDArray[np.float64]) -> float:
         r = self.residual(ln)

@@ -22,7 +22,10 @@ fit from a poor start can stop in the wrong valley: a global stage (differential
 evolution over ``ln`` of the free parameters, within a factor ``span`` of the guess,
 on every other row of the table: half the cost per generation) comes first, then
 Levenberg-Marquardt with lmfit on every row from its best point and from the next best
-distinct members of its population (the lowest chi-square wins).  A weighted fit still
+distinct members of its population (the lowest chi-square wins), with the exact Jacobian
+of the residuals (the steady state's sensitivities, docs/solver.md "Parameter
+sensitivities"; the solver's differences at the rows that have none), then lmfit's
+differences from where it stops (the model's kinks).  A weighted fit still
 poor after the first starts (chi-square probability below :data:`~.fit_result.POOR_P`)
 runs a second global stage with another seed.  Parameters are fitted as logarithms (all
 are positive and span decades).  A row the model cannot evaluate (no trusted value of
@@ -93,7 +96,7 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
         normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
         global_stage: bool = True, maxiter: int = 60, popsize: int = 12, seed: int = 0,
         workers: int = 1, progress: bool = True,
-        settings: SolverSettings | None = None) -> FitResult:
+        settings: SolverSettings | None = None, jacobian: str = "exact") -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
 
     ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
@@ -107,6 +110,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     pool (:mod:`vibrofriction.parallel`, forkserver workers that die with their parent):
     a script that fits with ``workers != 1`` runs the fit under
     ``if __name__ == "__main__":``.
+    ``jacobian``: the local least squares' Jacobian, ``"exact"`` (the sensitivities of
+    the steady state, :meth:`_Problem.jacobian`; differences of the solver only at the
+    rows that have none) or ``"differences"`` (lmfit's differences of the residuals).
     ``res.extra["stages"]`` says where the time went; ``res.quality`` whether the fit
     describes the data.
     """
@@ -114,8 +120,10 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     data = read_measurements(data)
     free, tied = _free_and_tied(tuple(free), natural_frequency, normal_load, quality_factor,
                                 len(data))
+    if jacobian not in ("exact", "differences"):
+        raise ValueError(f"jacobian must be 'exact' or 'differences', got {jacobian!r}")
     problem = _Problem(guess, free, natural_frequency, normal_load, quality_factor, data,
-                       settings)
+                       settings, jacobian_kind=jacobian)
     bounds = _bounds(problem, span)
     if "mu0" in free:
         problem.mu0_max = math.exp(bounds[free.index("mu0")][1])

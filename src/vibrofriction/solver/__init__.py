@@ -10,7 +10,9 @@ only one that exists in cases III and IV) or, for a :class:`Physical` system, as
 
 Modules: :mod:`.settings` (accuracy bounds, what is trusted), :mod:`.results` (what is
 returned; its fields are :mod:`vibrofriction.schema`'s), :mod:`.engine` (the batch
-engine), :mod:`.history` (time histories) and :mod:`.energy` (their energy balance).
+engine), :mod:`.history` (time histories), :mod:`.energy` (their energy balance) and
+:mod:`.sensitivity` (``d mu_ratio / d theta`` of the steady state: :func:`friction_gradient`,
+:func:`solve_gradients`).
 """
 
 from .._kernels.codes import NO_PHASE, PHASE_NAMES
@@ -25,11 +27,13 @@ from .results import (
     describe,
     section_state,
 )
+from .sensitivity import SENSITIVE, Sensitivities, friction_gradient, solve_gradients
 from .settings import SolverSettings, converged
 
 __all__ = [
     "FLOAT_COLUMNS",
     "INT_COLUMNS",
+    "SENSITIVE",
     "NO_PHASE",
     "PHASE_NAMES",
     "SLOW_SETTLING",
@@ -39,12 +43,15 @@ __all__ = [
     "FrictionResults",
     "History",
     "SectionState",
+    "Sensitivities",
     "SolverSettings",
     "Status",
     "converged",
     "describe",
     "friction_coefficient",
+    "friction_gradient",
     "section_state",
     "simulate",
+    "solve_gradients",
     "solve_points",
 ]
