@@ -279,3 +279,12 @@ def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
         end[kind] = math.exp(best[1] - _profile_side(task)[0])
     assert end["differences"] == pytest.approx(0.00924, rel=2e-3)
     assert end["exact"] == pytest.approx(end["differences"], rel=2e-3)
+
+
+def test_friction_gradient_refuses_what_it_does_not_cover():
+    """The 2-D solver and the MDR contact have no sensitivities: refused, naming them."""
+    with pytest.raises(ValueError, match="a_y must be 0"):
+        friction_gradient(Dimensionless(0.5, 2.0, 0.5, a_y=0.3), v_inertial=0.3)
+    with pytest.raises(ValueError, match="profile_exponent must be inf"):
+        friction_gradient(Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0),
+                          v_inertial=0.3)

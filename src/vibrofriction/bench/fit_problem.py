@@ -192,7 +192,8 @@ class _Problem:
         the derivatives of the cheap map ``ln -> (mu0, alpha, ..., phase_x)``
         (:meth:`points`, central differences of that map alone).  Rows without a
         sensitivity (not periodic nor sliding, a neutral orbit, a difference across a
-        grazing) are differenced through the solver, those rows only; penalised rows
+        grazing, a transverse row: the 2-D solver has none) are differenced through the
+        solver, those rows only; penalised rows
         (untrusted, outside the domain) are constant: 0."""
         vary = np.ones(len(self.free), dtype=bool) if vary is None else np.asarray(vary)
         cols_j = np.flatnonzero(vary)
@@ -215,7 +216,8 @@ class _Problem:
         moving = tuple(k for i, k in enumerate(SENSITIVE)
                        if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
         solved = self._solve(ln, points)
-        sens = sensitivities(solved, *points[1:], inplane_on=self.guess.inplane_on,
+        n_sens = len(SENSITIVE)  # points: mu0, SENSITIVE, a_y, phase_y, alpha_y, zeta_y
+        sens = sensitivities(solved, *points[1:1 + n_sens], inplane_on=self.guess.inplane_on,
                              settings=self.settings, order=2, parameters=moving)
         trusted, mu = solved["trusted"], solved["mu_ratio"]
         scale = self._scale()
@@ -225,11 +227,13 @@ class _Problem:
                 missing[:] = True
                 continue
             dmu = np.zeros(len(self.data))
-            for name, dtheta in zip(SENSITIVE, rate[1:], strict=True):
+            for name, dtheta in zip(SENSITIVE, rate[1:1 + n_sens], strict=True):
                 moves = dtheta != 0.0
                 dmu = dmu + np.where(moves, sens.mu[name] * np.where(moves, dtheta, 0.0), 0.0)
             out[:, c] = (rate[0] * mu + mu0 * dmu) / scale
             missing |= ~np.isfinite(out[:, c])
+        # a transverse row is a 2-D point: the sensitivities are the 1-D solver's only
+        missing |= np.asarray(points[1 + n_sens], dtype=float) > 0.0
         missing &= trusted
         out[~trusted] = 0.0
         if np.any(missing):

@@ -172,7 +172,11 @@ def friction_gradient(
     The velocity is given as for ``friction_coefficient``; no transverse oscillation."""
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:
-        raise ValueError("friction_gradient covers the 1-D solver only (a_y = 0)")
+        raise ValueError(f"friction_gradient covers the 1-D solver only: a_y must be 0, "
+                         f"got {dim.a_y!r}")
+    if dim.profile_exponent != math.inf:
+        raise ValueError(f"friction_gradient covers the flat punch only: profile_exponent "
+                         f"must be inf, got {dim.profile_exponent!r}")
     V = float(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0))
     cols, sens = solve_gradients(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                                  dim.a_x, dim.phase_x, inplane_on=dim.inplane_on,
