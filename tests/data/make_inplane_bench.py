@@ -46,31 +46,43 @@ def groups(p: dict, v0: float, phase_x: float) -> dict[str, float]:
             "a_x": p["du_x"] * stiffness / force, "phase_x": phase_x}
 
 
-def main() -> None:
+def make(stem: str, truth: dict, groups, phases, velocities: np.ndarray, sigma: float,
+         seed: int, columns: tuple[str, str], what: str) -> None:
+    """Write ``tests/data/<stem>.csv`` (rows ``v0, cof, du_z, omega, sigma`` and the in-plane
+    ``columns``: amplitude and phase) and ``<stem>.json`` (the truth, the reference's largest
+    error bar): ``mu0 * mu_ratio`` of ``inplane_mean`` at ``groups(truth, v0, phase)`` for
+    every phase and velocity, plus seeded Gaussian noise of standard deviation ``sigma``."""
     t0 = time.perf_counter()
-    rng = np.random.default_rng(SEED)
+    rng = np.random.default_rng(seed)
     rows, err = [], 0.0
-    for phase in PHASES:
-        for v in VELOCITIES:
-            g = groups(TRUTH, float(v), phase)
+    for phase in phases:
+        for v in velocities:
+            g = groups(truth, float(v), phase)
             r = inplane_mean(g.pop("alpha"), g.pop("beta"), g.pop("amplitude"), g.pop("V"),
-                             transient_periods=150, inplane_on=TRUTH["inplane_on"], **g)
+                             transient_periods=150, inplane_on=truth["inplane_on"], **g)
             err = max(err, r.mu_error)
-            rows.append((float(v), TRUTH["mu0"] * r.mu_ratio, phase))
-    noise = rng.normal(0.0, SIGMA, len(rows))
-    lines = ["# held-out in-plane bench data made by vibrofriction_reference.inplane; truth "
-             "and error bar in inplane_bench.json; made by tests/data/make_inplane_bench.py",
-             "v0,cof,du_z,omega,sigma,du_x,phase_x"]
-    lines += [",".join(f"{float(x):.17g}" for x in (v, cof + n, TRUTH["du_z"], OMEGA, SIGMA,
-                                                   TRUTH["du_x"], ph))
+            rows.append((float(v), truth["mu0"] * r.mu_ratio, phase))
+            print(f"v0 {v:+.3f} {columns[1]} {phase:.3f}: cof {rows[-1][1]:+.10f} "
+                  f"(+- {truth['mu0'] * r.mu_error:.1e})", flush=True)
+    noise = rng.normal(0.0, sigma, len(rows))
+    lines = [f"# held-out {what} bench data made by vibrofriction_reference.inplane; truth "
+             f"and error bar in {stem}.json; made by tests/data/make_{stem}.py",
+             "v0,cof,du_z,omega,sigma," + ",".join(columns)]
+    lines += [",".join(f"{float(x):.17g}" for x in (v, cof + n, truth["du_z"], OMEGA, sigma,
+                                                   truth[columns[0]], ph))
               for (v, cof, ph), n in zip(rows, noise, strict=True)]
-    (HERE / "inplane_bench.csv").write_text("\n".join(lines) + "\n")
-    meta = {"truth": TRUTH, "sigma": SIGMA, "seed": SEED, "phases": list(PHASES),
-            "velocities": VELOCITIES.tolist(), "reference": "inplane_mean (solve_ivp DOP853)",
-            "reference_error_bar_cof": TRUTH["mu0"] * err,
+    (HERE / f"{stem}.csv").write_text("\n".join(lines) + "\n")
+    meta = {"truth": truth, "sigma": sigma, "seed": seed, "phases": list(phases),
+            "velocities": velocities.tolist(), "reference": "inplane_mean (solve_ivp DOP853)",
+            "reference_error_bar_cof": truth["mu0"] * err,
             "seconds": round(time.perf_counter() - t0, 1)}
-    (HERE / "inplane_bench.json").write_text(json.dumps(meta, indent=1) + "\n")
+    (HERE / f"{stem}.json").write_text(json.dumps(meta, indent=1) + "\n")
     print(json.dumps(meta, indent=1))
+
+
+def main() -> None:
+    make("inplane_bench", TRUTH, groups, PHASES, VELOCITIES, SIGMA, SEED, ("du_x", "phase_x"),
+         "in-plane")
 
 
 if __name__ == "__main__":

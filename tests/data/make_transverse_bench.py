@@ -15,18 +15,12 @@ Writes tests/data/transverse_bench.csv and tests/data/transverse_bench.json.
 
 from __future__ import annotations
 
-import json
 import math
-import time
-from pathlib import Path
 
 import numpy as np
-from make_reference_bench import OMEGA
+from make_inplane_bench import make
 from make_reference_bench import TRUTH as PIN
 
-from vibrofriction_reference.inplane import inplane_mean
-
-HERE = Path(__file__).resolve().parent
 #: The truth: the pin of make_reference_bench.py (800 Hz, 20 g, Q = 50, soft contact,
 #: 20 N, 1 kHz), softer across the sliding (k_y = 0.6 k_x, c_y = c_x), with a 3 um
 #: transverse oscillation of the substrate (a_y about 0.4).
@@ -54,33 +48,8 @@ def groups(p: dict, v0: float, phase_y: float) -> dict[str, float]:
 
 
 def main() -> None:
-    t0 = time.perf_counter()
-    rng = np.random.default_rng(SEED)
-    rows, err = [], 0.0
-    for phase in PHASES:
-        for v in VELOCITIES:
-            g = groups(TRUTH, float(v), phase)
-            r = inplane_mean(g.pop("alpha"), g.pop("beta"), g.pop("amplitude"), g.pop("V"),
-                             transient_periods=150, inplane_on=TRUTH["inplane_on"], **g)
-            err = max(err, r.mu_error)
-            rows.append((float(v), TRUTH["mu0"] * r.mu_ratio, phase))
-            print(f"v0 {v:+.3f} phase_y {phase:.3f}: cof {rows[-1][1]:+.10f} "
-                  f"(+- {TRUTH['mu0'] * r.mu_error:.1e})", flush=True)
-    noise = rng.normal(0.0, SIGMA, len(rows))
-    lines = ["# held-out transverse bench data made by vibrofriction_reference.inplane; "
-             "truth and error bar in transverse_bench.json; made by "
-             "tests/data/make_transverse_bench.py",
-             "v0,cof,du_z,omega,sigma,du_y,phase_y"]
-    lines += [",".join(f"{float(x):.17g}" for x in (v, cof + n, TRUTH["du_z"], OMEGA, SIGMA,
-                                                   TRUTH["du_y"], ph))
-              for (v, cof, ph), n in zip(rows, noise, strict=True)]
-    (HERE / "transverse_bench.csv").write_text("\n".join(lines) + "\n")
-    meta = {"truth": TRUTH, "sigma": SIGMA, "seed": SEED, "phases": list(PHASES),
-            "velocities": VELOCITIES.tolist(), "reference": "inplane_mean (solve_ivp DOP853)",
-            "reference_error_bar_cof": TRUTH["mu0"] * err,
-            "seconds": round(time.perf_counter() - t0, 1)}
-    (HERE / "transverse_bench.json").write_text(json.dumps(meta, indent=1) + "\n")
-    print(json.dumps(meta, indent=1))
+    make("transverse_bench", TRUTH, groups, PHASES, VELOCITIES, SIGMA, SEED,
+         ("du_y", "phase_y"), "transverse")
 
 
 if __name__ == "__main__":
