@@ -3,7 +3,9 @@ solver"): the flat-punch identity with the single-spring solver, equal-row agree
 fixed-step reference as its step -> 0, agreement within the combined error bars, the stiff
 law, the static value, |f_i| <= n_i."""
 
+import json
 import math
+from pathlib import Path
 
 import pytest
 
@@ -99,3 +101,41 @@ def test_static_limit_is_approached_as_V_falls():
     excess = [mdr_friction(0.5, 2.0, 0.5, V, 2.0, n_springs=40)["mu_ratio"] - static
               for V in (1e-2, 1e-3)]
     assert 0 < excess[1] < 0.15 * excess[0] and excess[1] < 4e-3
+
+
+# 24 more points, drawn by a seeded generator over the regimes (stiff, soft, near a
+# resonance, general; jumping or not; damped or not; n from 0.7 to 5), with the reference
+# cached by tests/data/make_mdr_reference.py (its own code, no solver run there)
+RANDOM = json.loads((Path(__file__).parent / "data" / "mdr_reference.json").read_text())
+
+
+def test_random_reference_points_cover_the_regimes():
+    pts = RANDOM["points"]
+    assert len(POINTS) + 1 + len(pts) >= 30   # + the lightly damped stiff contact above
+    labels = " ".join(p["label"] for p in pts)
+    for word in ("stiff", "soft", "resonant", "general", "jumping", "damped"):
+        assert word in labels, word
+    assert {p["profile_exponent"] for p in pts} >= {0.7, 1.0, 1.5, 2.0, 3.0, 5.0}
+    assert any(p["zeta"] == 0 for p in pts) and any(p["amplitude"] < 1 for p in pts)
+
+
+@pytest.mark.parametrize("p", RANDOM["points"], ids=lambda p: p["label"])
+def test_agrees_with_the_cached_reference_within_the_error_bars(p):
+    r = mdr_friction(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
+                     p["profile_exponent"], zeta=p["zeta"])
+    assert r["status"] != "not converged"
+    assert r["max_excess"] <= 1e-12
+    # the row's mean normal force against the closed form (the reference's too): the
+    # solver's is that of its finer row, 5.8e-4 relative off at the jumping n = 0.7 point
+    # with rows (20, 40) (the cusp g = |x|^0.7), so relative 1e-3 here
+    exact = float(theory.profile_mean_normal_force(p["amplitude"], p["profile_exponent"]))
+    assert r["mean_normal_ratio"] == pytest.approx(exact, rel=1e-3)
+    assert p["mean_normal_ref"] == pytest.approx(exact, rel=1e-3)
+    if "drifting" in p:
+        # undamped continuous sliding (tests/data/make_mdr_reference.py, DRIFTING): the
+        # solver's orbit slides throughout; the reference creeps towards it from below
+        # (1 - 1.8e-7 after 3000 periods) and its bar counts the resolution only
+        assert r["status"] == "periodic" and r["mu_ratio"] == pytest.approx(1.0, abs=1e-9)
+        assert 0 < r["mu_ratio"] - p["mu_ref"] < 3e-7
+        return
+    assert abs(r["mu_ratio"] - p["mu_ref"]) <= r["error"] + p["err_ref"]

@@ -174,6 +174,8 @@ def _render(index: int, quick: bool, name: str, out: Path,
                 + (f"a_x={s.a_x!r}, phase_x={s.phase_x!r} ({s.inplane_on}), " if s.a_x
                    else "")
                 + (f"a_y={s.a_y!r}, phase_y={s.phase_y!r}, " if s.a_y else "")
+                + (f"profile_exponent={s.profile_exponent!r}, "
+                   if s.profile_exponent != math.inf else "")
                 + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")

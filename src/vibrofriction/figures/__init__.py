@@ -13,6 +13,8 @@ the solver series a figure needs and how to draw, table and check them.
 * :mod:`.inplane`: beyond the paper, the longitudinal in-plane oscillation (Figs. 14-16:
   the directions of oscillation, the combined drive over phase and velocity, the drive's
   blocking force and idle velocity);
+* :mod:`.shape`: beyond the paper, the shape of the contact by MDR (Figs. 17-18: flat,
+  sphere and cone at equal normal-force amplitude; the linearised against the full sphere);
 * :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
   imported on first use, with xarray and the sweep);
 * :mod:`.bench`: the bench's figures, a fit against its data (:func:`plot_fit`) and a
@@ -29,7 +31,7 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any
 
-from . import damped, dimensional, history, inplane, maps, resonant, style, velocity
+from . import damped, dimensional, history, inplane, maps, resonant, shape, style, velocity
 from .edges import cell_edges, is_geometric
 from .recipe import Check, Recipe, Rendered, Table, solve_recipes
 from .series import Curve, Series, solve
@@ -77,6 +79,8 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         inplane.inplane_directions(quick),
         inplane.inplane_map(quick),
         inplane.inplane_drive(quick),
+        shape.shape_dependence(quick),
+        shape.sphere_linearised(quick),
     ]
 
 

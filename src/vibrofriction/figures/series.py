@@ -2,7 +2,8 @@
 
 A :class:`Series` is one curve of a figure: a fixed system ``(alpha, beta, a)``
 (eq. 20; with ``zeta``, ``eta_c`` for a damped one, docs/damping.md; with ``a_x``,
-``phase_x``, ``inplane_on`` for a longitudinal in-plane oscillation, docs/inplane.md) and
+``phase_x``, ``inplane_on`` for a longitudinal in-plane oscillation, docs/inplane.md; with
+``profile_exponent`` for a curved tip, docs/contact_geometry.md) and
 an array of inertial velocities ``V = v0 m omega/(mu0 F_N0)`` (signed: ``V < 0`` slides
 backward).
 :func:`solve` flattens any number of series into one batch for
@@ -15,6 +16,7 @@ does not depend on how the batch is split.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
@@ -33,7 +35,7 @@ __all__ = ["CURVE_COLUMNS", "POINT_ARGS", "Curve", "Runner", "Series", "point_co
 #: The solver's point arguments, in the order of :func:`~vibrofriction.solver.solve_points`
 #: (the :class:`Series` fields of the same names).
 POINT_ARGS = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x",
-              "a_y", "phase_y")
+              "a_y", "phase_y", "profile_exponent")
 #: ``runner(*columns, inplane_on, settings=...) -> dict of arrays``: ``columns`` the
 #: :data:`POINT_ARGS` arrays of the points, ``inplane_on`` an array of ``"substrate"`` /
 #: ``"holder"``, one per point (:func:`point_columns`): :func:`solve_points_on` or one with
@@ -66,6 +68,7 @@ class Series:
     inplane_on: str = "substrate"
     a_y: float = 0.0
     phase_y: float = 0.0
+    profile_exponent: float = math.inf
 
     def __post_init__(self) -> None:
         v = checked(f"series {self.key!r}: v_inertial", self.v_inertial)
@@ -99,7 +102,7 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
 def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: object) -> Series:
     """A series of a :class:`Physical` system on a grid of ``v0`` (m/s): its dimensionless
     groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or infinite);
-    ``v0`` is kept in ``meta``."""
+    ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``."""
     v0 = np.asarray(v0, dtype=float)
     dim = physical.to_dimensionless()
     V = np.asarray(physical.v0_to_inertial(v0))
@@ -108,7 +111,7 @@ def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: obje
     except ValueError:
         vbar = np.full(v0.size, np.nan)
     return Series(key, dim.alpha, dim.beta, dim.amplitude, V, vbar, {"v0": v0, **meta},
-                  zeta=dim.zeta, eta_c=dim.eta_c)
+                  zeta=dim.zeta, eta_c=dim.eta_c, profile_exponent=dim.profile_exponent)
 
 
 #: The columns of a :class:`Curve`: those of :func:`solve_points` (the schema's kernel
@@ -211,16 +214,18 @@ def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
     """:func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
     whose value differs from point to point (one call per value); the default
     :data:`Runner`."""
-    *point, inplane_on = columns
+    *point, exponent, inplane_on = columns
     on = np.asarray(inplane_on, dtype=object)
     values = sorted(set(on.tolist()))
     if len(values) <= 1:
-        return solve_points(*point, inplane_on=values[0] if values else "substrate",
+        return solve_points(*point, profile_exponent=exponent,
+                            inplane_on=values[0] if values else "substrate",
                             settings=settings)
     out: dict[str, NDArray] = {}
     for value in values:
         idx = np.flatnonzero(on == value)
-        part = solve_points(*(np.asarray(x)[idx] for x in point), inplane_on=value,
+        part = solve_points(*(np.asarray(x)[idx] for x in point),
+                            profile_exponent=np.asarray(exponent)[idx], inplane_on=value,
                             settings=settings)
         for k, col in part.items():
             if k not in out:
