@@ -26,7 +26,7 @@ NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start h
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 UNSTABLE = 1.0 + 1e-6  # and above this, repelling
 QUADRATIC = 0.01  # Newton steps shrinking at least this fast are in the quadratic regime
-EARLY_ERROR = 1e-9  # a mean predicted one step early is taken only this accurate
+EARLY_ERROR = 1e-12  # a mean predicted one step early is taken only this accurate
 
 
 @jit
