@@ -550,6 +550,53 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     return res <= tol or res <= floor
 
 
+ITER_RESERVE = 2000
+"""Plain iteration (``V = 0``): the periods kept back from ``max_periods`` for the check
+at ``100 rtol`` (which is also bounded by it)."""
+ITER_SPAN = 8
+"""Plain iteration: the multiplier is estimated over this many periods."""
+
+
+@jit
+def iterate(P, s, rtol, hmax, W, cnt, max_events, tol, floor, max_it, info):
+    """Plain iteration of the period map from ``s`` (in place) until the step ``d =
+    |Phi(s) - s|`` falls below ``tol``, or stops falling below ``floor`` (the
+    integration's noise), at most ``max_it`` periods.  ``info = (iterations, last step
+    d, periods integrated, multiplier)``, the multiplier estimated as ``(d_k /
+    d_{k-ITER_SPAN})^(1/ITER_SPAN)`` from the steps above ``floor`` (0 where the
+    iteration converged at once); returns True where it converged."""
+    acc = np.zeros(4)
+    s2 = np.empty(N_S)
+    ring = np.full(ITER_SPAN + 1, math.inf)
+    k = P[P_K]
+    rho = 0.0
+    d_prev = math.inf
+    it = 0
+    info[0] = info[1] = info[3] = 0.0
+    while it < max_it:
+        ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
+        it += 1
+        if not ok:
+            info[2] += it
+            return False
+        d = _dist(s2, s, k)
+        for i in range(N_S):
+            s[i] = s2[i]
+        old = ring[it % (ITER_SPAN + 1)]
+        ring[it % (ITER_SPAN + 1)] = d
+        if d > floor and math.isfinite(old) and old > 0.0:
+            rho = min(0.999, (d / old) ** (1.0 / ITER_SPAN))
+        info[0], info[1], info[3] = it, d, rho
+        # converged: below tol, or below the noise floor and either no longer falling or
+        # the stated error's term 10 d/(1 - rho) (plane_steady_section) below 1e3 tol
+        if d <= tol or (d <= floor and (d >= d_prev or 10.0 * d <= 1e3 * tol * (1.0 - rho))):
+            info[2] += it
+            return True
+        d_prev = d
+    info[2] += it
+    return False
+
+
 @jit
 def start_state(P, init_kind, y0, xd0, e0, s):
     """The section state at ``tau = 0``: 0 steady sliding (``x' = V``, spring stretched
@@ -616,7 +663,7 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     s = np.empty(N_S)
     s2 = np.empty(N_S)
     J = np.zeros((N_S, N_S))
-    info = np.zeros(3)
+    info = np.zeros(4)
     acc = np.zeros(4)
     start_state(P, init_kind, y0, xd0, e0, s)
     s_start = s.copy()
@@ -637,19 +684,33 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     mult = math.nan
     means = np.zeros(7)
     s0 = s.copy()
+    # V = 0: no Newton.  Where the contact can stick through whole cycles the stuck
+    # orbits form a continuum (any preload in the stuck region), along which the period
+    # map is singular; plain iteration follows the motion from the given start and keeps
+    # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
+    use_newton = P[P_V] != 0.0
+    budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
-        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                      100.0 * rtol * scale, 12, J, info)
+        if use_newton:
+            conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                          100.0 * rtol * scale, 12, J, info)
+        else:
+            conv = iterate(P, s, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                           100.0 * rtol * scale, budget, info)
         periods += int(info[2])
+        periods_to_orbit = periods
         res = info[1]
-        if conv:
+        if conv and use_newton:
             ev = np.linalg.eigvals(J.astype(np.complex128))
             mult = 0.0
             for x in ev:
                 mult = max(mult, abs(x))
             if mult < 1.0 + 1e-6:
                 status = ST_PERIODIC
+        elif conv:
+            mult = info[3]
+            status = ST_PERIODIC
         if status == ST_PERIODIC:
             orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
             periods += 1
@@ -657,8 +718,13 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
             sl = s.copy()
             info[:] = 0.0
             loose = np.zeros(7)
-            if newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info):
+            if use_newton:
+                conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                              1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info)
+            else:
+                conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
+                               1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
+            if conv:
                 orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
                            loose)
                 err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
@@ -670,17 +736,22 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
             out_f[O_ERR] = err
             out_i[I_PERIOD] = 1
             # settling: the linearised contraction from the start to within the error
+            # (plain iteration: the periods it took)
             d0 = _dist(s_start, s, k)
-            if d0 <= err or mult <= 0.0:
+            if not use_newton:
+                out_f[O_SETTLE] = periods_to_orbit
+            elif d0 <= err or mult <= 0.0:
                 out_f[O_SETTLE] = 0.0
             elif mult < 1.0 - 1e-6:
                 out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
         elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
-            # the long-time average from the transient's end (not Newton's last iterate),
-            # its error the window's spread plus the difference from a run at 100 rtol
-            for i in range(N_S):
-                s[i] = s0[i]
-            sl = s0.copy()
+            # the long-time average from the transient's end (not Newton's last iterate;
+            # at V = 0 the plain iteration's last state, the motion's own), its error the
+            # window's spread plus the difference from a run at 100 rtol
+            if use_newton:
+                for i in range(N_S):
+                    s[i] = s0[i]
+            sl = s.copy()
             spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
             loose = np.zeros(7)
             average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
