@@ -933,9 +933,11 @@ def plane_static_region(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
         if am[i] > 1.0:
             continue
         q = []
-        for amp, ph, a_, z_ in ((ax[i], px[i], al[i], ze[i]), (ay[i], py[i], aly[i], zey[i])):
+        # the contact (k = beta - alpha, c = eta_c k) is shared: across, beta_y = k + alpha_y
+        for amp, ph, a_, b_, z_ in ((ax[i], px[i], al[i], be[i], ze[i]),
+                                    (ay[i], py[i], aly[i], be[i] - al[i] + aly[i], zey[i])):
             p, _, impedance, gp, rigid = _inplane_factors(
-                np.asarray(a_), np.asarray(be[i]), np.asarray(z_), np.asarray(et[i]), on)
+                np.asarray(a_), np.asarray(b_), np.asarray(z_), np.asarray(et[i]), on)
             with np.errstate(divide="ignore", invalid="ignore"):
                 t = complex(-gp if rigid else -impedance * gp / (p + impedance))
             q.append(np.zeros_like(tau) if amp == 0.0 else np.real(amp * t * np.exp(1j * ph) * e))
