@@ -89,7 +89,7 @@ work, never reached by a motion of the benchmarks, which take 50 to 10^4 steps).
 TRIAL_STEPS = 20
 """Newton's trial states may take this many times the steps of the period from the
 current iterate (a state far off the orbit can be very costly: a bound on the work)."""
-NEWTON_STEP_CAP = 0.25
+NEWTON_STEP_CAP = 4.0
 """Newton's step is scaled down to at most this times ``1 + |s|`` (a near-singular
 ``J - I`` gives absurd steps)."""
 
