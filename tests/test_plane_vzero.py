@@ -87,7 +87,7 @@ def test_held_at_zero_velocity_says_so(p: dict) -> None:
     """A stuck region: from rest and from a preload the contact sticks throughout, the
     status is HELD (not trusted, the message names the preload), each value agrees with
     the reference's from the same start, lies in the region, and the two differ (by
-    0.35 to 0.42 in ``mu``, measured)."""
+    0.23 to 0.42 in ``mu``, measured)."""
     d = _system(p)
     region = _region(p)
     values = []
@@ -184,7 +184,7 @@ def test_creeping_point_is_periodic_and_bounded(p: dict) -> None:
     """The slow points of issue 20 (the fit's ``v0 = -1.4e-4 m/s`` of the transverse
     bench: 152 s and averaged before; ``fuzz_plane``'s undamped one: 38 s): periodic,
     trusted, agreeing with the reference's long run (3000 periods of transient), in well
-    under 5 s (0.2 to 0.9 s measured on a loaded 2-core machine)."""
+    under 5 s (0.1 to 0.2 s measured on a loaded 2-core machine)."""
     d = _system(p)
     t = time.perf_counter()
     o = solve_points(d.alpha, d.beta, d.amplitude, p["v_inertial"], d.zeta, d.eta_c, d.a_x,
