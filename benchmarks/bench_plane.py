@@ -99,17 +99,16 @@ def order() -> list[str]:
     Kelvin-Voigt contact): the Newton orbit at each tolerance, against ``rtol = 1e-14``,
     the step not capped (so that the tolerance alone sets it)."""
     al, be, a, V, ze, et, ay, py = 0.5, 2.0, 0.5, 0.3, 0.05, 0.1, 0.5, 1.0
-    P = np.array([al, 2 * ze * math.sqrt(al), be - al, et * (be - al), a, V, 0.0, 0.0, ay,
-                  py, 0.0])
+    P = plane.parameters(al, be, a, V, ze, et, 0.0, 0.0, ay, py, al, ze, True)
     hmax = 1.0  # the solver caps the step at 2 pi/(8 w); here the tolerance decides
 
     def orbit(rtol):
         W = np.zeros((14, plane.N_Z))
-        cnt = np.zeros(4, np.int64)
+        cnt = np.zeros(plane.N_C, np.int64)
         s = np.empty(plane.N_S)
         plane.start_state(P, 0, 0.0, 0.0, 0.0, s)
         J = np.zeros((plane.N_S, plane.N_S))
-        info = np.zeros(3)
+        info = np.zeros(4)
         assert plane.newton(P, s, rtol, rtol, hmax, W, cnt, 10000, 1e-13,
                             max(1e-12, 100 * rtol), 30, J, info)
         out = np.zeros(7)

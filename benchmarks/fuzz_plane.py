@@ -4,13 +4,19 @@
 signed |V| 1e-3..3, zeta in {0, 0.01, 0.1, 0.5}, eta_c in {0, 0, 0.1, 1}, a_x in
 {0, 0, 0.5, 2} and a_y 0.01..5 (random phases), each solved alone by ``solve_points``.
 Prints the count of each status, the trusted count, the median, 90th percentile and
-largest time, and the slowest point.  Run: ``python benchmarks/fuzz_plane.py``.
+largest time, and the slowest point.  Run: ``python benchmarks/fuzz_plane.py [--write]``
+(``--write``: also into benchmarks/results/plane_fuzz.md, with date, commit and machine).
 """
 
 from __future__ import annotations
 
+import platform
+import subprocess
+import sys
 import time
 from collections import Counter
+from datetime import UTC, datetime
+from pathlib import Path
 
 import numpy as np
 
@@ -40,11 +46,22 @@ def main() -> None:
         trusted += bool(o["trusted"])
     t = np.array(times)
     i = int(np.argmax(t))
-    print(f"statuses {dict(Counter(status))}, trusted {trusted} of {n}")
-    print(f"time per point: median {np.median(t) * 1e3:.1f} ms, 90th percentile "
-          f"{np.percentile(t, 90) * 1e3:.1f} ms, largest {t[i]:.2f} s at alpha {al[i]:.4g}, "
-          f"beta {be[i]:.4g}, a {a[i]:.4g}, V {V[i]:.4g}, zeta {ze[i]:g}, eta_c {et[i]:g}, "
-          f"a_x {ax[i]:g}, a_y {ay[i]:.4g} (status {status[i]})")
+    lines = [f"statuses {dict(Counter(status))}, trusted {trusted} of {n}",
+             f"time per point: median {np.median(t) * 1e3:.1f} ms, 90th percentile "
+             f"{np.percentile(t, 90) * 1e3:.1f} ms, largest {t[i]:.2f} s at alpha "
+             f"{al[i]:.4g}, beta {be[i]:.4g}, a {a[i]:.4g}, V {V[i]:.4g}, zeta {ze[i]:g}, "
+             f"eta_c {et[i]:g}, a_x {ax[i]:g}, a_y {ay[i]:.4g} (status {status[i]})",
+             f"points over 0.1 s: {int(np.sum(t > 0.1))}; total {t.sum():.2f} s"]
+    print("\n".join(lines))
+    if "--write" in sys.argv:
+        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                                text=True).stdout.strip()
+        head = [f"# 150 random 2-D points (`python benchmarks/fuzz_plane.py --write`, "
+                f"{datetime.now(UTC):%Y-%m-%d}, commit {commit}, {platform.platform()}; a "
+                "2-core machine shared with other sessions)", "",
+                "Status codes: 0 periodic, 1 averaged, 2 not converged, 3 failed.", ""]
+        (Path(__file__).parent / "results" / "plane_fuzz.md").write_text(
+            "\n".join(head + [f"* {x}" for x in lines]) + "\n")
 
 
 if __name__ == "__main__":

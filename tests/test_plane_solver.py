@@ -266,9 +266,8 @@ def test_physical_transverse_amplitude() -> None:
 
 
 def test_refusals() -> None:
-    d = vf.Dimensionless(0.5, 2.0, 0.5, a_y=0.5)
-    with pytest.raises(ValueError, match="v = 0"):
-        vf.friction_coefficient(d, v_inertial=0.0)
+    """What the 2-D solver does not cover is refused (``V = 0`` is computed:
+    tests/test_plane_vzero.py)."""
     with pytest.raises(ValueError, match="finite beta"):
         vf.friction_coefficient(vf.Dimensionless(0.5, math.inf, 0.5, a_y=0.5),
                                 v_inertial=0.3)

@@ -55,6 +55,8 @@ __all__ = [
     "inplane_critical_velocity",
     "inplane_regime",
     "inplane_static_mu_ratio",
+    "PlaneStatic",
+    "plane_static_region",
     "kinematic_mu_longitudinal",
     "kinematic_mu_transverse",
     "liftoff_phases",
@@ -829,6 +831,120 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
     upper = np.where(ok, 1.0 - plus, np.nan)
     lower = np.where(ok, minus - 1.0, np.nan)
     return InplaneStatic(as_float_or_array(upper), as_float_or_array(lower))
+
+
+class PlaneStatic(NamedTuple):
+    """The region of mean forces ``(F_x, F_y)/(mu0 F_N0)`` a contact stuck through whole
+    cycles can hold under normal + in-plane oscillation in both directions
+    (:func:`plane_static_region`), given by its extent; ``nan`` where it is empty."""
+
+    #: The largest and the smallest ``F_x`` of the region (held ``mu_ratio`` values).
+    x_upper: FloatOrArray
+    x_lower: FloatOrArray
+    #: The largest and the smallest ``F_y`` (held ``lateral_ratio`` values).
+    y_upper: FloatOrArray
+    y_lower: FloatOrArray
+
+
+#: Samples of the drive period on which :func:`plane_static_region` imposes the cone.
+PLANE_STATIC_SAMPLES = 4096
+
+
+def _axis_range(qa: NDArray[np.float64], qb: NDArray[np.float64],
+                n: NDArray[np.float64]) -> tuple[float, float]:
+    """The extent along ``a`` of ``{F: |F - (qa_j, qb_j)| <= n_j for all j}`` (a convex
+    set): at fixed ``F_a`` the feasible ``F_b`` is an intersection of intervals, of
+    concave width ``h(F_a) = min hi_j - max lo_j``; its maximum by golden section, the
+    ends where ``h = 0`` by bisection.  ``(nan, nan)`` where the set is empty."""
+    lo_dom, hi_dom = float(np.max(qa - n)), float(np.min(qa + n))
+    if lo_dom > hi_dom:
+        return math.nan, math.nan
+
+    def width(x: float) -> float:
+        r = np.sqrt(np.maximum(n * n - (x - qa) ** 2, 0.0))
+        return float(np.min(qb + r) - np.max(qb - r))
+
+    g = (math.sqrt(5.0) - 1.0) / 2.0
+    a, b = lo_dom, hi_dom
+    c, d = b - g * (b - a), a + g * (b - a)
+    wc, wd = width(c), width(d)
+    for _ in range(100):
+        if b - a <= 1e-15 * (1.0 + abs(a) + abs(b)):
+            break
+        if wc >= wd:
+            b, d, wd = d, c, wc
+            c = b - g * (b - a)
+            wc = width(c)
+        else:
+            a, c, wc = c, d, wd
+            d = a + g * (b - a)
+            wd = width(d)
+    top = 0.5 * (a + b)
+    if width(top) < 0.0:
+        return math.nan, math.nan
+
+    def edge(inside: float, outside: float) -> float:
+        for _ in range(100):
+            mid = 0.5 * (inside + outside)
+            if mid in (inside, outside):
+                break
+            if width(mid) >= 0.0:
+                inside = mid
+            else:
+                outside = mid
+        return inside
+
+    return edge(top, lo_dom) if width(lo_dom) < 0.0 else lo_dom, \
+        edge(top, hi_dom) if width(hi_dom) < 0.0 else hi_dom
+
+
+def plane_static_region(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                        a_x: ArrayLike, phase_x: ArrayLike, a_y: ArrayLike,
+                        phase_y: ArrayLike, zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0,
+                        inplane_on: str = "substrate", alpha_y: ArrayLike | None = None,
+                        zeta_y: ArrayLike | None = None) -> PlaneStatic:
+    r"""Static friction under normal + in-plane oscillation in both directions: the
+    region of mean forces a contact stuck through the whole cycle can hold.
+
+    In stick the contact point moves with the substrate and the two directions decouple
+    (the pin's springs act along their axes, the contact spring is isotropic): each
+    component of the contact force is that of :func:`inplane_static_mu_ratio`, ``F_x -
+    Re(Q_x e^{i tau})`` and ``F_y - Re(Q_y e^{i tau})`` with ``Q_x = a_x T e^{i
+    phase_x}`` and ``Q_y = a_y T_y e^{i phase_y}`` (``T_y`` of the pin across,
+    ``alpha_y``, ``zeta_y``; None: ``alpha``, ``zeta``).  The stick holds through the
+    cycle iff ``|F - q(tau)| <= n(tau) = 1 + a cos tau`` for every ``tau``: ``F`` in the
+    intersection of the disks of radius ``n`` about the ellipse ``q``, a convex set.  Its
+    extent is computed on :data:`PLANE_STATIC_SAMPLES` equally spaced phases (an outer
+    approximation, to about ``1e-6``).  With ``a_y = 0`` the ``x`` extent is the band of
+    :func:`inplane_static_mu_ratio`.  ``nan`` where the region is empty (or ``a > 1``):
+    the contact slips in every cycle.
+    """
+    on, al, be, am, ze, et, ax, px = _inplane_inputs(alpha, beta, amplitude, a_x, phase_x,
+                                                     zeta, eta_c, inplane_on)
+    aly = al if alpha_y is None else np.asarray(alpha_y, dtype=float)
+    zey = ze if zeta_y is None else np.asarray(zeta_y, dtype=float)
+    al, be, am, ze, et, ax, px, ay, py, aly, zey = np.broadcast_arrays(
+        al, be, am, ze, et, ax, px, np.asarray(a_y, dtype=float),
+        np.asarray(phase_y, dtype=float), aly, zey)
+    tau = np.linspace(0.0, 2.0 * np.pi, PLANE_STATIC_SAMPLES, endpoint=False)
+    e = np.exp(1j * tau)
+    out = np.full((4,) + al.shape, np.nan)
+    for i in np.ndindex(al.shape):
+        if am[i] > 1.0:
+            continue
+        q = []
+        # the contact (k = beta - alpha, c = eta_c k) is shared: across, beta_y = k + alpha_y
+        for amp, ph, a_, b_, z_ in ((ax[i], px[i], al[i], be[i], ze[i]),
+                                    (ay[i], py[i], aly[i], be[i] - al[i] + aly[i], zey[i])):
+            p, _, impedance, gp, rigid = _inplane_factors(
+                np.asarray(a_), np.asarray(b_), np.asarray(z_), np.asarray(et[i]), on)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = complex(-gp if rigid else -impedance * gp / (p + impedance))
+            q.append(np.zeros_like(tau) if amp == 0.0 else np.real(amp * t * np.exp(1j * ph) * e))
+        n = 1.0 + am[i] * np.cos(tau)
+        out[(1, *i)], out[(0, *i)] = _axis_range(q[0], q[1], n)
+        out[(3, *i)], out[(2, *i)] = _axis_range(q[1], q[0], n)
+    return PlaneStatic(*(as_float_or_array(x) for x in out))
 
 
 #: The regimes of :func:`inplane_regime`, in the order of their codes 0, 1, 2 (-1: the

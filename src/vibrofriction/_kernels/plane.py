@@ -79,8 +79,19 @@ N_S = 6  # the section state: y_x, y_y, v_x, v_y, e_x, e_y
 P_ALPHA, P_GAMMA, P_K, P_C, P_A, P_V, P_AX, P_PX, P_AY, P_PY, P_HOLDER = range(11)
 P_ALPHA_Y, P_GAMMA_Y = 11, 12  # the pin across the sliding
 N_P = 13
-# counters: events, steps, rejected steps, failures
-C_EVENTS, C_STEPS, C_REJECT, C_FAIL = range(4)
+# counters: events, steps, rejected steps, failures; then the step budget of a period
+# (0: MAX_STEPS_PER_PERIOD; Newton's trial states get a smaller one)
+C_EVENTS, C_STEPS, C_REJECT, C_FAIL, C_LIMIT = range(5)
+N_C = 5
+MAX_STEPS_PER_PERIOD = 1_000_000
+"""Runge-Kutta steps beyond which a drive period fails (about a second: a bound on the
+work, never reached by a motion of the benchmarks, which take 50 to 10^4 steps)."""
+TRIAL_STEPS = 20
+"""Newton's trial states may take this many times the steps of the period from the
+current iterate (a state far off the orbit can be very costly: a bound on the work)."""
+NEWTON_STEP_CAP = 4.0
+"""Newton's step is scaled down to at most this times ``1 + |s|`` (a near-singular
+``J - I`` gives absurd steps)."""
 
 # Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, table 5.2)
 _C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -402,6 +413,7 @@ def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
     t = t0
     h = hmax
     ev = 0
+    limit = cnt[C_STEPS] + (cnt[C_LIMIT] if cnt[C_LIMIT] > 0 else MAX_STEPS_PER_PERIOD)
     for j in range(m):
         t1 = ends[j]
         if not contact_[j]:
@@ -414,6 +426,9 @@ def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
         while t < t1:
             t, event, h = segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt)
             if cnt[C_FAIL] > 0:
+                return mode, False
+            if cnt[C_STEPS] > limit:
+                cnt[C_FAIL] += 1
                 return mode, False
             if event:
                 mode = switch(mode, P, t, z)
@@ -487,18 +502,23 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
-    integration's noise) below ``floor``."""
+    integration's noise) below ``floor``.  The step is capped (:data:`NEWTON_STEP_CAP`)
+    and each trial period has a step budget (:data:`TRIAL_STEPS` times the iterate's);
+    a trial that fails (budget, chatter) is a failed trial, not a failed point."""
     acc = np.zeros(4)
     ph = np.empty(N_S)
     pp = np.empty(N_S)
     sp = np.empty(N_S)
     k = P[P_K]
     periods = 0
+    fail0 = cnt[C_FAIL]
+    steps0 = cnt[C_STEPS]
     ok, _, _ = period_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events)
     periods += 1
     if not ok:
         info[2] += periods
         return False
+    cnt[C_LIMIT] = TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
     res = _dist(ph, s, k)
     it = 0
     while it < max_iter:
@@ -516,6 +536,8 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
             periods += 1
             if not ok:
                 info[2] += periods
+                cnt[C_FAIL] = fail0
+                cnt[C_LIMIT] = 0
                 return False
             for i in range(N_S):
                 J[i, j] = (pp[i] - ph[i]) / hj
@@ -525,15 +547,22 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
             ds = np.linalg.solve(A, -r)
         except Exception:  # noqa: BLE001 - a singular matrix
             info[2] += periods
+            cnt[C_LIMIT] = 0
             return False
-        lam = 1.0
+        size = 0.0
+        for i in range(N_S):
+            size = max(size, abs(ds[i]) * (k if i >= 4 else 1.0))
+        cap = NEWTON_STEP_CAP * (1.0 + _dist(s, np.zeros(N_S), k))
+        lam = 1.0 if size <= cap else cap / size
         improved = False
         for _ in range(6):
             for i in range(N_S):
                 sp[i] = s[i] + lam * ds[i]
             ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
             periods += 1
-            if ok:
+            if not ok:
+                cnt[C_FAIL] = fail0
+            else:
                 rn = _dist(pp, sp, k)
                 if rn < res:
                     for i in range(N_S):
@@ -547,7 +576,70 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
             break
     info[0], info[1] = it, res
     info[2] += periods
+    cnt[C_LIMIT] = 0
     return res <= tol or res <= floor
+
+
+ITER_RESERVE = 2000
+"""Plain iteration (``V = 0``): the periods kept back from ``max_periods`` for the check
+at ``100 rtol`` (which is also bounded by it)."""
+ITER_SPAN = 16
+"""Plain iteration: the multiplier is estimated over spans of this many periods."""
+FALLBACK_ITER = 4000
+"""``V != 0``: where Newton fails, plain iteration for at most this many periods before
+the averaging."""
+
+
+@jit
+def iterate(P, s, rtol, hmax, W, cnt, max_events, tol, floor, max_it, info):
+    """Plain iteration of the period map from ``s`` (in place) until the step ``d =
+    |Phi(s) - s|`` falls below ``tol``, or stops falling below ``floor`` (the
+    integration's noise), at most ``max_it`` periods.  ``info = (iterations, last step
+    d, periods integrated, multiplier)``, the multiplier estimated from the envelope of
+    the steps (their largest over the last :data:`ITER_SPAN` periods against the
+    :data:`ITER_SPAN` before, which copes with the oscillating steps of complex
+    multipliers; 0 where the iteration converged at once); returns True where it
+    converged, False at once where at that contraction the floor lies beyond twice the
+    periods left."""
+    acc = np.zeros(4)
+    s2 = np.empty(N_S)
+    ring = np.full(2 * ITER_SPAN, math.inf)
+    k = P[P_K]
+    rho = 0.0
+    d_prev = math.inf
+    it = 0
+    info[0] = info[1] = info[3] = 0.0
+    while it < max_it:
+        ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
+        it += 1
+        if not ok:
+            info[2] += it
+            return False
+        d = _dist(s2, s, k)
+        for i in range(N_S):
+            s[i] = s2[i]
+        ring[it % (2 * ITER_SPAN)] = d
+        if it >= 2 * ITER_SPAN and d > floor:
+            recent, before = 0.0, 0.0
+            for j in range(ITER_SPAN):
+                recent = max(recent, ring[(it - j) % (2 * ITER_SPAN)])
+                before = max(before, ring[(it - ITER_SPAN - j) % (2 * ITER_SPAN)])
+            if before > 0.0:
+                rho = min(0.999, (recent / before) ** (1.0 / ITER_SPAN))
+        info[0], info[1], info[3] = it, d, rho
+        # converged: below tol, or below the noise floor and either no longer falling or
+        # the stated error's term 10 d/(1 - rho) (plane_steady_section) below 1e3 tol
+        if d <= tol or (d <= floor and (d >= d_prev or 10.0 * d <= 1e3 * tol * (1.0 - rho))):
+            info[2] += it
+            return True
+        # hopeless: at the estimated contraction the floor lies beyond twice the budget
+        if it >= 8 * ITER_SPAN and d > floor and rho > 0.0 \
+                and math.log(floor / d) / math.log(rho) > 2.0 * (max_it - it):
+            info[2] += it
+            return False
+        d_prev = d
+    info[2] += it
+    return False
 
 
 @jit
@@ -612,11 +704,11 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     out_i[I_PHASE] = -1
     hmax = max_step(P)
     W = np.zeros((14, N_Z))
-    cnt = np.zeros(4, np.int64)
+    cnt = np.zeros(N_C, np.int64)
     s = np.empty(N_S)
     s2 = np.empty(N_S)
     J = np.zeros((N_S, N_S))
-    info = np.zeros(3)
+    info = np.zeros(4)
     acc = np.zeros(4)
     start_state(P, init_kind, y0, xd0, e0, s)
     s_start = s.copy()
@@ -637,19 +729,43 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     mult = math.nan
     means = np.zeros(7)
     s0 = s.copy()
+    # V = 0: no Newton.  Where the contact can stick through whole cycles the stuck
+    # orbits form a continuum (any preload in the stuck region), along which the period
+    # map is singular; plain iteration follows the motion from the given start and keeps
+    # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
+    use_newton = P[P_V] != 0.0
+    budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
-        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                      100.0 * rtol * scale, 12, J, info)
-        periods += int(info[2])
-        res = info[1]
-        if conv:
-            ev = np.linalg.eigvals(J.astype(np.complex128))
-            mult = 0.0
-            for x in ev:
-                mult = max(mult, abs(x))
-            if mult < 1.0 + 1e-6:
+        if use_newton:
+            conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                          100.0 * rtol * scale, 12, J, info)
+            periods += int(info[2])
+            if conv:
+                ev = np.linalg.eigvals(J.astype(np.complex128))
+                mult = 0.0
+                for x in ev:
+                    mult = max(mult, abs(x))
+                if mult < 1.0 + 1e-6:
+                    status = ST_PERIODIC
+            if status != ST_PERIODIC and cnt[C_FAIL] == 0:
+                # Newton failed (a near-singular J - I: slow creep near V = 0, a stick
+                # through most of the cycle) or found an unstable orbit: plain iteration
+                # of the motion from the transient's end, bounded, before the averaging
+                use_newton = False
+                for i in range(N_S):
+                    s[i] = s0[i]
+                budget = min(budget - periods, FALLBACK_ITER)
+        if not use_newton and cnt[C_FAIL] == 0:
+            info[:] = 0.0
+            conv = iterate(P, s, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                           100.0 * rtol * scale, budget, info)
+            periods += int(info[2])
+            if conv:
+                mult = info[3]
                 status = ST_PERIODIC
+        periods_to_orbit = periods
+        res = info[1]
         if status == ST_PERIODIC:
             orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
             periods += 1
@@ -657,8 +773,13 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
             sl = s.copy()
             info[:] = 0.0
             loose = np.zeros(7)
-            if newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info):
+            if use_newton:
+                conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                              1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info)
+            else:
+                conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
+                               1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
+            if conv:
                 orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
                            loose)
                 err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
@@ -670,17 +791,22 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
             out_f[O_ERR] = err
             out_i[I_PERIOD] = 1
             # settling: the linearised contraction from the start to within the error
+            # (plain iteration: the periods it took)
             d0 = _dist(s_start, s, k)
-            if d0 <= err or mult <= 0.0:
+            if not use_newton:
+                out_f[O_SETTLE] = periods_to_orbit
+            elif d0 <= err or mult <= 0.0:
                 out_f[O_SETTLE] = 0.0
             elif mult < 1.0 - 1e-6:
                 out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
         elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
-            # the long-time average from the transient's end (not Newton's last iterate),
-            # its error the window's spread plus the difference from a run at 100 rtol
-            for i in range(N_S):
-                s[i] = s0[i]
-            sl = s0.copy()
+            # the long-time average from the transient's end (not Newton's last iterate;
+            # at V = 0 the plain iteration's last state, the motion's own), its error the
+            # window's spread plus the difference from a run at 100 rtol
+            if use_newton:
+                for i in range(N_S):
+                    s[i] = s0[i]
+            sl = s.copy()
             spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
             loose = np.zeros(7)
             average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
@@ -727,7 +853,7 @@ def cone_excess(P, periods, rtol):
     from the sliding start of the parameter vector ``P`` (a check of the phase rules)."""
     hmax = max_step(P)
     W = np.zeros((14, N_Z))
-    cnt = np.zeros(4, np.int64)
+    cnt = np.zeros(N_C, np.int64)
     acc = np.zeros(5)
     acc[4] = -math.inf
     s = np.empty(N_S)
@@ -842,7 +968,7 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
     jenkins = P[P_C] == 0.0
     hmax = max_step(P)
     W = np.zeros((14, N_Z))
-    cnt = np.zeros(4, np.int64)
+    cnt = np.zeros(N_C, np.int64)
     acc = np.zeros(4)
     z = np.zeros(N_Z)
     for i in range(N_S):

@@ -129,8 +129,11 @@ def solve_points(
 
     A transverse oscillation (``a_y > 0``) is solved by the 2-D solver
     (:mod:`vibrofriction._kernels.plane`, docs/inplane.md "The 2-D solver"; a finite
-    ``beta``, ``V != 0``, and not ``a = 1`` with ``eta_c = 0``: ValueError otherwise);
+    ``beta``, and not ``a = 1`` with ``eta_c = 0``: ValueError otherwise);
     ``lateral_ratio = <F_y>/(mu0 <F_N>)`` is its mean transverse force (0 for the others).
+    At ``V = 0`` it iterates the period map without Newton (``"sliding"`` is the rest),
+    and where a stuck contact can hold a region of mean forces (:func:`plane_held`) the
+    status is :attr:`Status.HELD`.
 
     ``alpha_y``, ``zeta_y`` are the pin across the sliding (None: ``alpha``, ``zeta``, an
     axisymmetric pin); only the 2-D points use them: without a transverse oscillation the
@@ -179,7 +182,7 @@ def solve_points(
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
     # has no direction there and is the rest, as in the reference (docs/inplane.md)
-    at_zero = (V == 0.0) & (ax > 0.0)
+    at_zero = (V == 0.0) & (ax > 0.0) & ~plane
     for rows, k in ((plane, kind), ((V > 0.0) & ~plane & ~curved, kind),
                     (at_zero, 1 if kind == 0 else kind)):
         idx = np.flatnonzero(rows)
@@ -208,7 +211,9 @@ def solve_points(
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
     _held(out_f, out_i, at_zero, al, be, am, ze, et, ax, px, inplane_on)
-    static = (V == 0.0) & ~at_zero & ~curved
+    _plane_held(out_f, out_i, plane & (V == 0.0), al, be, am, ze, et, ax, px, ay, py, aly,
+                zey, inplane_on)
+    static = (V == 0.0) & ~at_zero & ~curved & ~plane
     _static_limit(am[static], out_f, out_i, static)
     out = {k: out_f[:, j].reshape(shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(shape) for j, k in enumerate(INT_COLUMNS)})
@@ -237,6 +242,39 @@ def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np
     out_i[idx[mark], column_index("status")] = Status.HELD.code
 
 
+def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
+               *point: NDArray[np.float64] | str) -> NDArray[np.bool_]:
+    """Which ``V = 0`` 2-D points (kernel ``status``, ``stick_fraction``) are held: the
+    region of mean forces a stuck contact can hold is not empty
+    (:func:`theory.plane_static_region`: a motion from outside it approaches its edge
+    with slips that die out, as in 1-D), or the motion stuck through its whole averaging
+    window or orbit.  ``point`` is ``(alpha, beta, a, zeta, eta_c, a_x, phase_x, a_y,
+    phase_y, alpha_y, zeta_y, inplane_on)``."""
+    al, be, am, ze, et, ax, px, ay, py, aly, zey, on = point
+    region = theory.plane_static_region(al, be, am, ax, px, ay, py, ze, et, on, aly, zey)
+    return (np.isfinite(np.atleast_1d(region.x_upper)) | (stick_fraction >= HELD_STICK)) \
+        & np.isin(status, (Status.PERIODIC.code, Status.AVERAGED.code,
+                           Status.NOT_CONVERGED.code))
+
+
+def _plane_held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np.bool_],
+                al: NDArray[np.float64], be: NDArray[np.float64], am: NDArray[np.float64],
+                ze: NDArray[np.float64], et: NDArray[np.float64], ax: NDArray[np.float64],
+                px: NDArray[np.float64], ay: NDArray[np.float64], py: NDArray[np.float64],
+                aly: NDArray[np.float64], zey: NDArray[np.float64], on: str) -> None:
+    """Mark :attr:`Status.HELD` the ``V = 0`` 2-D rows ``rows`` that :func:`plane_held`
+    finds held; ``mu_ratio``, ``lateral_ratio`` and ``error`` stay those of the motion
+    from the given start."""
+    idx = np.flatnonzero(rows)
+    if not idx.size:
+        return
+    st = out_i[idx, column_index("status")]
+    mark = plane_held(st, out_f[idx, column_index("stick_fraction")], al[idx], be[idx],
+                      am[idx], ze[idx], et[idx], ax[idx], px[idx], ay[idx], py[idx],
+                      aly[idx], zey[idx], on)
+    out_i[idx[mark], column_index("status")] = Status.HELD.code
+
+
 #: The Runge-Kutta tolerance of the 2-D solver (docs/inplane.md, "The 2-D solver").
 PLANE_RTOL = 1e-10
 #: Stick/slip switches per drive period beyond which a 2-D point fails (chatter).
@@ -245,17 +283,14 @@ PLANE_EVENTS_PER_PERIOD = 10_000
 
 def _check_plane(beta: NDArray[np.float64], amplitude: NDArray[np.float64],
                  eta_c: NDArray[np.float64], V: NDArray[np.float64]) -> None:
-    """ValueError for the 2-D points the 2-D solver does not cover."""
+    """ValueError for the 2-D points the 2-D solver does not cover (``V`` is not
+    checked: every velocity, ``V = 0`` included, is computed)."""
     if np.any(np.isinf(beta)):
         raise ValueError("a transverse oscillation (a_y > 0) needs a finite beta: the 2-D "
                          "solver does not cover a rigid contact (use a large finite beta)")
     if np.any((amplitude == 1.0) & (eta_c == 0.0)):
         raise ValueError("a transverse oscillation (a_y > 0) with amplitude = 1 (grazing) "
                          "and eta_c = 0 is not covered by the 2-D solver")
-    if np.any(V == 0.0):
-        raise ValueError("a transverse oscillation (a_y > 0) at v = 0 is not computed yet "
-                         "(the held states of docs/inplane.md section 5 are 1-D): give a "
-                         "nonzero velocity")
 
 
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],

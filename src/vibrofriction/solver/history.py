@@ -22,6 +22,7 @@ from .engine import (
     _check_plane,
     friction_coefficient,
     initial_rows,
+    plane_held,
 )
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
@@ -278,9 +279,6 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
     """The 2-D start ``(y_x, y_y, v_x, v_y, e_x, e_y)`` at ``tau = 0``."""
     s = np.zeros(_plane.N_S)
     if isinstance(initial, str) and initial == "steady":
-        if V == 0.0:
-            _check_plane(np.array([dim.beta]), np.array([dim.amplitude]),
-                         np.array([dim.eta_c]), np.array([V]))
         settings = settings or DEFAULT_SETTINGS
         mirror = V < 0.0  # as solve_points: the point (-V, phase_x + pi), mirrored back
         px = dim.phase_x + math.pi if mirror else dim.phase_x
@@ -292,6 +290,12 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
             PLANE_RTOL, settings.max_periods,
             min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi, s)
         status, error = int(oi[column_index("status")]), float(of[column_index("error")])
+        if V == 0.0 and plane_held(
+                np.array([status]), np.array([of[column_index("stick_fraction")]]),
+                *(np.array([x]) for x in (dim.alpha, dim.beta, dim.amplitude, dim.zeta,
+                                          dim.eta_c, dim.a_x, dim.phase_x, dim.a_y,
+                                          dim.phase_y, *dim.pin_y)), dim.inplane_on)[0]:
+            status = Status.HELD.code  # as solve_points: a held body has no steady state
         if not settings.trusted(status, error):
             raise ValueError(f"initial='steady': no trusted steady state at this point "
                              f"(status {Status.from_code(status).value}, error {error:.3g})")
