@@ -466,10 +466,13 @@ def inplane_run(
     excess = -math.inf
     time_in = [0.0, 0.0, 0.0]
     period_marks = [(z[6:11].copy(), model.energy(phase, 0.0, z))]
-    events_in_period = 0
+    events_in_period, period_index = 0, 0
     for t0, t1, contact in _cuts(a, periods, delta):
-        if t0 % TWO_PI == 0.0:
-            events_in_period = 0
+        # the drive period the cut begins in (t0 % TWO_PI == 0 fails from period 11 on:
+        # k 2 pi is not a float multiple of TWO_PI there)
+        k = math.floor(t0 / TWO_PI + 1e-9)
+        if k != period_index:
+            events_in_period, period_index = 0, k
         if not contact:
             phase, z = model.lift_off(phase, z)
         elif phase == _FLIGHT:

@@ -90,9 +90,10 @@ def main() -> None:
     for p in CREEPING:
         d = dict(zip((*KEYS, "v_inertial"), p, strict=True))
         t0 = time.perf_counter()
-        # max_events_per_period: the reference's per-period counter is reset where
-        # ``t0 % TWO_PI == 0.0``, which float round-off makes false from period 11 on, so
-        # its default (200) caps the whole run's events; these motions switch twice a period
+        # max_events_per_period: the data were made when the reference's per-period
+        # counter was reset only where ``t0 % TWO_PI == 0.0`` (false from period 11 on, so
+        # its default of 200 capped the whole run's events; fixed since, by the period's
+        # index); kept so that the script makes the same data
         r = inplane_mean(d["alpha"], d["beta"], d["amplitude"], d["v_inertial"],
                          CREEPING_TRANSIENT, AVERAGE, max_events_per_period=10**6,
                          **{k: d[k] for k in KEYS[4:]})
