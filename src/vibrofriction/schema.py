@@ -193,7 +193,8 @@ class Status(enum.Enum):
               "not reliable")
     HELD = ("held", 5, False,
             "v0 = 0 and the contact can stick through whole cycles: any mean force in the "
-            "stuck band is a steady state, so the value is that of the preload the body "
+            "stuck band (with a transverse oscillation, the stuck region of mean forces in "
+            "the plane) is a steady state, so the value is that of the preload the body "
             "started with, not a property of the system (docs/inplane.md, 'v0 = 0')")
     STATIC = ("static limit", -1, True,
               "zero sliding velocity: the static limit of eq. (2), the limit of the steady "
