@@ -383,11 +383,8 @@ def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArra
     from .mdr import mdr_friction
 
     c = column_index
-    nan_cols = ("work", "stick_fraction", "slip_fraction", "reverse_slip_fraction",
-                "flight_fraction", "multiplier", "settling_periods", "window_min",
-                "window_max", "drift_rate", "y", "x_dot", "f", "e")
     for i in np.flatnonzero(rows):
-        out_f[i] = np.nan
+        out_f[i] = np.nan  # work, the time fractions, Floquet, windows, final state
         out_i[i] = 0
         out_f[i, c("lateral_ratio")] = 0.0
         out_i[i, c("phase")] = codes.NO_PHASE
@@ -406,8 +403,6 @@ def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArra
             if not math.isfinite(err):
                 status = Status.FAILED
             mu, err = math.nan, math.inf
-        for k in nan_cols:
-            out_f[i, c(k)] = math.nan
         out_f[i, c("mu_ratio")] = mu
         out_f[i, c("error")] = err
         out_f[i, _O_STICK_AREA] = r["stick_fraction"]
