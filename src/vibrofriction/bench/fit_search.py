@@ -148,10 +148,13 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
     # the budget is LOCAL_BUDGET evaluations per varied parameter
     budget = LOCAL_BUDGET * (nvary + 1)
 
-    def differences(p, max_nfev):
+    def leastsq(p, max_nfev, **jacobian_options):
         return lmfit.minimize(residual, p, method="leastsq",
-                              scale_covar=not problem.weighted, epsfcn=1e-8,
-                              max_nfev=max_nfev, **loose)
+                              scale_covar=not problem.weighted, max_nfev=max_nfev,
+                              **loose, **jacobian_options)
+
+    def differences(p, max_nfev):
+        return leastsq(p, max_nfev, epsfcn=1e-8)
 
     if problem.jacobian_kind == "differences":
         return differences(params, budget)
@@ -167,9 +170,7 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
     def over_budget(p, it, resid, *args, **kws):
         return it + nvary * spent["jacobians"] > budget
 
-    fast = lmfit.minimize(residual, params, method="leastsq",
-                          scale_covar=not problem.weighted, Dfun=jacobian, col_deriv=0,
-                          iter_cb=over_budget, max_nfev=budget, **loose)
+    fast = leastsq(params, budget, Dfun=jacobian, col_deriv=0, iter_cb=over_budget)
     # then lmfit's differences from there: the model bends on scales below their step
     # (stick-slip patterns that change), where the exact local slope can stop at a
     # kink's small dip that differences of that step see through (a profile of a
