@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from vibrofriction.figures import all_recipes, shape, style
+from vibrofriction.figures import all_recipes, contact, shape, style
 from vibrofriction.figures.recipe import solve_recipes
 
 NAMES = ("fig17_shape", "fig18_sphere_linearised")
@@ -29,10 +29,41 @@ def rendered(request, tmp_path_factory):
 
 def test_shape_recipes_are_registered_last_with_smaller_quick_grids() -> None:
     quick, full = all_recipes(True), all_recipes(False)
-    assert tuple(r.name for r in quick[-2:]) == NAMES
-    assert tuple(r.name for r in full[-2:]) == NAMES
-    for q, f in zip(quick[-2:], full[-2:], strict=True):
+    assert tuple(r.name for r in quick[-3:]) == (*NAMES, "fig19_sphere_contact")
+    assert tuple(r.name for r in full[-3:]) == (*NAMES, "fig19_sphere_contact")
+    for q, f in zip(quick[-3:-1], full[-3:-1], strict=True):
         assert q.points <= f.points / 3
+    assert quick[-1].points == full[-1].points == 0  # Fig. 19 simulates its histories
+
+
+def test_fig19_sphere_contact_renders_with_its_checks(tmp_path) -> None:
+    """Fig. 19 (figures/contact.py): one period of the sphere's MDR history at a = 0.5 and
+    1.5; its checks against the solver, the mean normal force and the energy balance, the
+    table's columns, and the jumping sphere's centre out of contact 1 - arccos(-1/a)/pi
+    of the period."""
+    recipe = contact.fig19()
+    assert recipe.name == "fig19_sphere_contact" and recipe.series == ()
+    out = recipe.render({})
+    assert style.save(out.figure, tmp_path, recipe.name)[0].stat().st_size > 50_000
+    (table,) = out.tables
+    assert {"amplitude", "tau", "f", "n", "stick_radius", "contact_radius",
+            "stick_area_fraction", "slip_area_fraction", "open_area_fraction"} \
+        <= set(table.columns)
+    cols = table.columns
+    assert np.all(cols["stick_radius"] < cols["contact_radius"] + 1e-12)
+    assert len(out.checks) == 6
+    for c in out.checks:
+        if c.formula.startswith("int F_x"):
+            assert c.deviation <= float(c.at.split()[-1]), c  # within the solver's bar
+        elif c.formula.startswith("mean normal"):
+            assert c.deviation < 1e-6, c
+        else:
+            assert c.deviation < 1e-12, c
+    hs = contact.sphere_histories()
+    jumping = hs[1.5]
+    centre_open = np.mean(jumping.spring_state[:-1, 0] == 0)
+    assert centre_open == pytest.approx(1 - math.acos(-1 / 1.5) / math.pi, abs=2 / 720)
+    assert "27 %" in recipe.caption and f"{100 * centre_open:.1f} %" in out.notes
 
 
 def test_each_recipe_renders_a_figure_and_one_table(rendered) -> None:

@@ -15,6 +15,8 @@ the solver series a figure needs and how to draw, table and check them.
   blocking force and idle velocity);
 * :mod:`.shape`: beyond the paper, the shape of the contact by MDR (Figs. 17-18: flat,
   sphere and cone at equal normal-force amplitude; the linearised against the full sphere);
+* :mod:`.contact`: beyond the paper, stick, slip and lift-off across a sphere over one
+  period (Fig. 19: the MDR time history's space-time picture);
 * :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
   imported on first use, with xarray and the sweep);
 * :mod:`.bench`: the bench's figures, a fit against its data (:func:`plot_fit`) and a
@@ -31,7 +33,18 @@ from __future__ import annotations
 import os
 from typing import TYPE_CHECKING, Any
 
-from . import damped, dimensional, history, inplane, maps, resonant, shape, style, velocity
+from . import (
+    contact,
+    damped,
+    dimensional,
+    history,
+    inplane,
+    maps,
+    resonant,
+    shape,
+    style,
+    velocity,
+)
 from .edges import cell_edges, is_geometric
 from .recipe import Check, Recipe, Rendered, Table, solve_recipes
 from .series import Curve, Series, solve
@@ -81,6 +94,7 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         inplane.inplane_drive(quick),
         shape.shape_dependence(quick),
         shape.sphere_linearised(quick),
+        contact.fig19(),
     ]
 
 

@@ -22,8 +22,8 @@ single spring), sphere (``n = 2``) and cone (``n = 1``).
   and ``"mdr"``): the COF against ``v0`` in m/s at three indentation amplitudes, and the
   relative difference.
 
-The stick/slip/lift-off picture of a sphere over one period (issue 21, item 5) needs a
-time history of the MDR solver, which does not exist yet: not drawn.
+The stick/slip/lift-off picture of a sphere over one period (issue 21, item 5) is Fig. 19,
+:mod:`.contact`.
 """
 
 from __future__ import annotations
