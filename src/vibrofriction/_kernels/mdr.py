@@ -33,7 +33,12 @@ method to round-off, and the earliest root ends the segment (a scan costs O(1), 
 O(springs); switching groups as a whole, not spring by spring at round-off distances,
 removed the stalls of the first version). A dip below
 zero shorter than a sub-step is not seen (a grazing event); that is the method's only
-approximation besides round-off.
+approximation besides round-off. A group that has just switched starts at its root, so in
+its first sub-step it is also probed nearer the start (a spring touching down stuck may
+slip again within the sub-step).
+
+``run_periods(..., rec=(tau, body, f, state))`` also records the row at the times ``tau``
+(:func:`_record_segment`; the MDR time history, :mod:`vibrofriction.solver.mdr_history`).
 """
 
 import math
