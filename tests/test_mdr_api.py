@@ -229,8 +229,10 @@ def test_curved_refusals_elsewhere():
         vf.friction_coefficient(system, vbar=0.3)
     with pytest.raises(ValueError, match="initial"):
         vf.friction_coefficient(system, v_inertial=0.3, initial="rest")
-    with pytest.raises(ValueError, match="simulate"):
-        vf.simulate(system, v_inertial=0.3)
+    assert vf.simulate(system, v_inertial=0.3, periods=1, samples_per_period=8,
+                       springs=20).is_curved  # the MDR history (tests/test_mdr_history.py)
+    with pytest.raises(ValueError, match="initial"):
+        vf.simulate(system, v_inertial=0.3, initial="rest")
     pin = vf.Physical.from_bench(**BENCH, contact=Sphere(3e-3, STEEL, STEEL),
                                  contact_model="mdr", du_z=1e-7)
     with pytest.raises(ValueError, match="fit and the design"):
