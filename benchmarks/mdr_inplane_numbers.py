@@ -1,0 +1,122 @@
+"""The MDR row with a longitudinal in-plane oscillation (issue 21, "everything else as
+today"): the numbers of docs/contact_geometry.md, "In-plane oscillation along the sliding".
+
+1. The flat punch (one spring) of the MDR solver with ``a_x`` against the single-spring
+   solver ``solve_points`` (the 1-D exact kernels) at the points of
+   tests/test_mdr_inplane.py.
+2. The spring-row reference's flat punch with ``a_x`` against the 1-D in-plane reference
+   (``vibrofriction_reference.inplane``, DOP853 with events), two independent integrators.
+3. The MDR solver (``solve_points(..., profile_exponent=n, a_x=...)``) against the
+   reference at the cached points of tests/data/mdr_inplane_reference.json (the reference
+   re-run here, side by side: its time and the solver's, median of 3).
+
+    PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py > benchmarks/results/mdr_inplane.md
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import platform
+import statistics
+import subprocess
+import time
+from pathlib import Path
+
+from vibrofriction.solver import solve_points
+from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction_reference.inplane import inplane_mean
+from vibrofriction_reference.mdr import mdr_reference
+
+ROOT = Path(__file__).resolve().parents[1]
+FLAT = [  # (alpha, beta, a, V, zeta, a_x, phase_x, inplane_on), as tests/test_mdr_inplane.py
+    (0.5, 2.0, 0.5, 0.3, 0.0, 0.5, 1.0, "substrate"),
+    (0.7, 2.0, 0.5, 0.3, 0.0, 0.5, 1.0, "holder"),
+    (1.3, 4.0, 1.4, 0.8, 0.05, 1.2, 2.5, "substrate"),
+    (0.2, 0.9, 0.5, 0.05, 0.0, 0.3, 0.0, "holder"),
+    (2.5, 3.0, 2.0, 0.4, 0.02, 0.8, 4.0, "substrate"),
+    (1.0, 3.0, 0.9, 1.0, 0.1, 2.0, -1.0, "holder"),
+    (0.5, 2.0, 0.3, 0.2, 0.1, 0.5, math.pi / 2, "substrate")]
+REFERENCE_FLAT = (FLAT[0], (1.3, 4.0, 1.4, 0.8, 0.05, 1.2, 2.5, "holder"))  # as the test
+
+
+def _median_time(f, repeat: int = 3) -> tuple[float, object]:
+    times, out = [], None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = f()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times), out
+
+
+def main() -> None:
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True, cwd=ROOT).stdout.strip()
+    print("# MDR row with a longitudinal in-plane oscillation\n")
+    print(f"`PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py`, "
+          f"{time.strftime('%Y-%m-%d')}, commit {commit}, {platform.platform()} "
+          "(the 2-core shared machine).\n")
+    mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, a_x=0.5)  # compile / load the caches
+    print("## 1. Flat punch: MDR solver (one spring) against the 1-D solver\n")
+    print("| alpha | beta | a | V | zeta | a_x | phase_x | on | MDR | 1-D | diff |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    worst = 0.0
+    for al, be, a, V, z, ax, px, on in FLAT:
+        r = mdr_friction(al, be, a, V, math.inf, zeta=z, a_x=ax, phase_x=px, inplane_on=on)
+        s = float(solve_points(al, be, a, V, zeta=z, a_x=ax, phase_x=px,
+                               inplane_on=on)["mu_ratio"])
+        d = r["mu_ratio"] - s
+        worst = max(worst, abs(d))
+        print(f"| {al:g} | {be:g} | {a:g} | {V:g} | {z:g} | {ax:g} | {px:.4g} | {on} | "
+              f"{r['mu_ratio']:.12f} | {s:.12f} | {d:.1e} |")
+    print(f"\nlargest |diff| {worst:.1e}\n")
+    print("## 2. Reference flat punch: spring row against the 1-D in-plane reference\n")
+    print("| point | row (200 springs, 400 steps) +- bar | 1-D DOP853 +- bar | diff |")
+    print("| --- | --- | --- | --- |")
+    for al, be, a, V, z, ax, px, on in REFERENCE_FLAT:
+        ip = dict(a_x=ax, phase_x=px, inplane_on=on)
+        row = mdr_reference(al, be, a, V, math.inf, transient_periods=200,
+                            average_periods=20, zeta=z, **ip)
+        one = inplane_mean(al, be, a, V, 100, 20, zeta=z, tolerance_check=False, **ip)
+        print(f"| ({al:g}, {be:g}, {a:g}, {V:g}, zeta {z:g}, a_x {ax:g}, {px:g}, {on}) | "
+              f"{row.mu_ratio:.8f} +- {row.mu_error:.1e} | {one.mu_ratio:.8f} +- "
+              f"{one.mu_error:.1e} | {row.mu_ratio - one.mu_ratio:.1e} |")
+    print("\n## 3. MDR solver against the spring-row reference\n")
+    print("Reference: `mdr_reference` at the rows of tests/data/mdr_inplane_reference.json "
+          "(300 + 20 periods), re-run here; solver: `solve_points` at `tol_trusted` "
+          "(1e-5). `ratio` = |diff|/(solver error + reference bar), <= 1 within the bars.\n")
+    print("| point | n | on | solver +- error | reference +- bar | diff | ratio | "
+          "solver s | reference s |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    pts = json.loads((ROOT / "tests" / "data" / "mdr_inplane_reference.json").read_text())
+    ratios, t_sol, t_ref = [], [], []
+    for p in pts["points"]:
+        args = (p["alpha"], p["beta"], p["amplitude"], p["v_inertial"], p["zeta"])
+        ts, s = _median_time(lambda args=args, p=p: solve_points(
+            *args, a_x=p["a_x"], phase_x=p["phase_x"],
+            profile_exponent=p["profile_exponent"], inplane_on=p["inplane_on"]))
+        t0 = time.perf_counter()
+        ref = mdr_reference(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
+                            p["profile_exponent"],
+                            resolutions=tuple(tuple(x) for x in p["resolutions"]),
+                            transient_periods=pts["meta"]["transient_periods"],
+                            average_periods=pts["meta"]["average_periods"], zeta=p["zeta"],
+                            a_x=p["a_x"], phase_x=p["phase_x"], inplane_on=p["inplane_on"])
+        tr = time.perf_counter() - t0
+        mu, err = float(s["mu_ratio"]), float(s["error"])
+        d = mu - ref.mu_ratio
+        ratio = abs(d) / (err + ref.mu_error)
+        ratios.append(ratio)
+        t_sol.append(ts)
+        t_ref.append(tr)
+        print(f"| {p['label']} | {p['profile_exponent']:g} | {p['inplane_on']} | "
+              f"{mu:+.8f} +- {err:.1e} | {ref.mu_ratio:+.8f} +- {ref.mu_error:.1e} | "
+              f"{d:.1e} | {ratio:.2f} | {ts:.3f} | {tr:.2f} |")
+    within = sum(r <= 1.0 for r in ratios)
+    print(f"\nwithin the combined bars: {within} of {len(ratios)} (largest ratio "
+          f"{max(ratios):.2f}); time per point median: solver {statistics.median(t_sol):.3f} s,"
+          f" reference {statistics.median(t_ref):.2f} s (its two rows)")
+
+
+if __name__ == "__main__":
+    main()
