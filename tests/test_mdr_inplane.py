@@ -6,6 +6,8 @@ refusals that remain."""
 
 import json
 import math
+import subprocess
+import sys
 from dataclasses import replace
 from pathlib import Path
 
@@ -140,3 +142,18 @@ def test_what_is_still_refused_is_named(kw, name):
         solve_points(**args)
     with pytest.raises(ValueError, match="a_x"):
         mdr_friction(0.5, 2.0, 0.5, 0.0, 2.0, a_x=0.5)
+
+
+def test_cli_mu_curved_with_a_x():
+    """`vibrofriction mu --profile-exponent 2 --a-x ...` gives the solver's values (it
+    printed a critical velocity, not derived for a curved profile, and failed)."""
+    args = [sys.executable, "-m", "vibrofriction.cli", "mu", "--alpha", "0.5", "--beta", "2",
+            "--amplitude", "0.5", "--profile-exponent", "2", "--a-x", "0.5", "--phase-x",
+            "1", "--inplane-on", "holder", "--v-inertial", "0.3"]
+    js, out = (subprocess.run(args + extra, capture_output=True, text=True, timeout=300)
+               for extra in (["--json"], []))
+    assert js.returncode == 0 and out.returncode == 0, js.stderr + out.stderr
+    row = json.loads(js.stdout)
+    assert row["mu_ratio"] == mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, a_x=0.5, phase_x=1.0,
+                                           inplane_on="holder")["mu_ratio"]
+    assert "on the holder" in out.stdout and "critical velocity" not in out.stdout
