@@ -302,3 +302,5 @@ def test_docs_contact_geometry_code_runs():
         1.5 * pin.to_dimensionless().amplitude, rel=1e-12)
     assert r.mean_normal_ratio > 1.0 and r_lin.mean_normal_ratio == 1.0
     assert ns["sphere"][0].status is vf.Status.STATIC and ns["sphere"][1].trusted
+    # "In-plane oscillation along the sliding": the values it states
+    assert ns["rx"].mu_ratio == pytest.approx([-0.27147218, 0.58492697], abs=1e-8)
