@@ -157,3 +157,29 @@ def test_cli_mu_curved_with_a_x():
     assert row["mu_ratio"] == mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, a_x=0.5, phase_x=1.0,
                                            inplane_on="holder")["mu_ratio"]
     assert "on the holder" in out.stdout and "critical velocity" not in out.stdout
+
+
+def test_bench_and_sweep_carry_the_oscillation_to_a_curved_tip():
+    """`Physical.from_bench(..., contact_model="mdr", du_x=...)` and the sweep's a_x axis
+    give the solver's values at the converted point."""
+    import vibrofriction as vf
+    from vibrofriction.contact import Material, Sphere
+
+    steel = Material(E=210e9, nu=0.3)
+    pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
+                                 drive_frequency_hz=1000, mu0=0.3, du_z=0.9e-6,
+                                 contact=Sphere(3e-3, steel, steel), contact_model="mdr",
+                                 du_x=2e-6, phase_x=1.0, inplane_on="holder")
+    d = pin.to_dimensionless()
+    assert d.a_x == pytest.approx(2e-6 * pin.mass * pin.omega**2 / (pin.mu0 * pin.F_N0),
+                                  rel=1e-12)
+    assert (d.phase_x, d.inplane_on, d.profile_exponent) == (1.0, "holder", 2.0)
+    r = friction_coefficient(pin, v0=0.0015)
+    s = solve_points(d.alpha, d.beta, d.amplitude, r.v_inertial, a_x=d.a_x, phase_x=1.0,
+                     profile_exponent=2.0, inplane_on="holder")
+    assert r.mu_ratio == float(s["mu_ratio"]) and r.trusted
+    atlas = vf.sweep(Dimensionless(0.5, 2.0, 0.5, profile_exponent=1.0), a_x=[0.0, 0.5],
+                     phase_x=[1.0], v_inertial=[-0.3, 0.3], progress=False)
+    pts = solve_points(0.5, 2.0, 0.5, np.array([[-0.3, 0.3], [-0.3, 0.3]]),
+                       a_x=np.array([[0.0], [0.5]]), phase_x=1.0, profile_exponent=1.0)
+    np.testing.assert_array_equal(atlas["mu_ratio"].values[:, 0, :], pts["mu_ratio"])
