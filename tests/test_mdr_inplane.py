@@ -59,7 +59,9 @@ def test_reference_flat_punch_is_the_1d_inplane_reference(alpha, beta, a, V, zet
 
 def test_reference_without_oscillation_is_unchanged():
     """a_x = 0 (the default) gives the cached values of tests/data/mdr_reference.json,
-    made before the in-plane oscillation was added to the reference."""
+    made before the in-plane oscillation was added to the reference (to 1e-10, not bit
+    for bit: another machine's libm may round differently; on the machine that made the
+    cache they are equal)."""
     cached = json.loads((Path(__file__).parent / "data" / "mdr_reference.json")
                         .read_text())["points"]
     for p in cached[1:3]:
@@ -68,8 +70,8 @@ def test_reference_without_oscillation_is_unchanged():
                           resolutions=tuple(tuple(x) for x in p["resolutions"]),
                           transient_periods=p["transient_periods"], average_periods=20,
                           zeta=p["zeta"], a_x=0.0, phase_x=2.0)
-        assert r.mu_ratio == pytest.approx(p["mu_ref"], abs=1e-12)
-        assert r.mu_error == pytest.approx(p["err_ref"], abs=1e-12)
+        assert r.mu_ratio == pytest.approx(p["mu_ref"], abs=1e-10)
+        assert r.mu_error == pytest.approx(p["err_ref"], abs=1e-10)
 
 
 # 12 points with the reference cached by tests/data/make_mdr_inplane_reference.py (its own
