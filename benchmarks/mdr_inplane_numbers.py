@@ -9,17 +9,25 @@ today"): the numbers of docs/contact_geometry.md, "In-plane oscillation along th
 3. The MDR solver (``solve_points(..., profile_exponent=n, a_x=...)``) against the
    reference at the cached points of tests/data/mdr_inplane_reference.json (the reference
    re-run here, side by side: its time and the solver's, median of 3).
+4. With ``--baseline REV``: without the oscillation (``a_x = 0``) the MDR solver's results
+   bit for bit against that revision's ``src`` (exported by ``git archive``, run in a
+   fresh process): ``mdr_friction`` and a row of 20 springs at five points.
 
-    PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py > benchmarks/results/mdr_inplane.md
+    PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py --baseline 9cb60b9 \
+        > benchmarks/results/mdr_inplane.md
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import math
+import os
 import platform
 import statistics
 import subprocess
+import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -40,6 +48,34 @@ FLAT = [  # (alpha, beta, a, V, zeta, a_x, phase_x, inplane_on), as tests/test_m
 REFERENCE_FLAT = (FLAT[0], (1.3, 4.0, 1.4, 0.8, 0.05, 1.2, 2.5, "holder"))  # as the test
 
 
+#: (alpha, beta, a, V, zeta, n) of the a_x = 0 comparison: sphere, jumping sphere, damped
+#: cone, n = 3, jumping flat punch
+BITWISE = [(0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 1.5, 0.3, 0.0, 2.0),
+           (1.0, 3.0, 0.7, 0.5, 0.1, 1.0), (0.1, 0.5, 0.5, 0.05, 0.0, 3.0),
+           (1.3, 4.0, 1.4, 0.8, 0.0, math.inf)]
+
+
+def _bits() -> list:
+    """The a_x = 0 results of :data:`BITWISE` as hex strings (runs on any revision: no
+    in-plane keyword is passed)."""
+    from vibrofriction.solver.mdr import mdr_row
+    out = []
+    for al, be, a, V, z, n in BITWISE:
+        r = mdr_friction(al, be, a, V, n, zeta=z)
+        w = mdr_row(al, be, a, V, n, 20, z)
+        out.append([float(r["mu_ratio"]).hex(), float(r["error"]).hex(), r["periods"],
+                    float(w["mu_ratio"]).hex(), w["periods"],
+                    float(w["final_state"][0]).hex(), float(w["final_state"][1]).hex()])
+    return out
+
+
+def _bits_in(src: Path) -> list:
+    env = dict(os.environ, PYTHONPATH=str(src))
+    out = subprocess.run([sys.executable, __file__, "--bits-only"], env=env, check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
 def _median_time(f, repeat: int = 3) -> tuple[float, object]:
     times, out = [], None
     for _ in range(repeat):
@@ -50,6 +86,14 @@ def _median_time(f, repeat: int = 3) -> tuple[float, object]:
 
 
 def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--baseline", metavar="REV",
+                        help="compare the a_x = 0 results with this revision's, bit for bit")
+    parser.add_argument("--bits-only", action="store_true", help=argparse.SUPPRESS)
+    opts = parser.parse_args()
+    if opts.bits_only:
+        print(json.dumps(_bits()))
+        return
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True, cwd=ROOT).stdout.strip()
     print("# MDR row with a longitudinal in-plane oscillation\n")
@@ -116,6 +160,24 @@ def main() -> None:
     print(f"\nwithin the combined bars: {within} of {len(ratios)} (largest ratio "
           f"{max(ratios):.2f}); time per point median: solver {statistics.median(t_sol):.3f} s,"
           f" reference {statistics.median(t_ref):.2f} s (its two rows)")
+    if opts.baseline:
+        base = subprocess.run(["git", "rev-parse", "--short", opts.baseline],
+                              capture_output=True, text=True, cwd=ROOT,
+                              check=True).stdout.strip()
+        with tempfile.TemporaryDirectory() as tmp:
+            archive = subprocess.run(["git", "archive", base, "src"], cwd=ROOT, check=True,
+                                     capture_output=True).stdout
+            subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
+            old = _bits_in(Path(tmp) / "src")
+        new = _bits_in(ROOT / "src")
+        print(f"\n## 4. Without the oscillation: this tree against {base}, bit for bit\n")
+        print("`mdr_friction` (mu_ratio, error, periods) and `mdr_row` of 20 springs "
+              "(mu_ratio, periods, final y, y') at a_x = 0, each tree in a fresh process.\n")
+        print("| alpha, beta, a, V, zeta, n | mdr_friction mu_ratio | equal |")
+        print("| --- | --- | --- |")
+        for p, o, n in zip(BITWISE, old, new, strict=True):
+            print(f"| {', '.join(f'{x:g}' for x in p)} | {float.fromhex(n[0]):.15f} | "
+                  f"{'all 7 bit for bit' if o == n else 'DIFFERENT: ' + str((o, n))} |")
 
 
 if __name__ == "__main__":
