@@ -97,7 +97,8 @@ def main() -> None:
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True, cwd=ROOT).stdout.strip()
     print("# MDR row with a longitudinal in-plane oscillation\n")
-    print(f"`PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py`, "
+    flag = f" --baseline {opts.baseline}" if opts.baseline else ""
+    print(f"`PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py{flag}`, "
           f"{time.strftime('%Y-%m-%d')}, commit {commit}, {platform.platform()} "
           "(the 2-core shared machine).\n")
     mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, a_x=0.5)  # compile / load the caches
