@@ -9,7 +9,9 @@ today"): the numbers of docs/contact_geometry.md, "In-plane oscillation along th
 3. The MDR solver (``solve_points(..., profile_exponent=n, a_x=...)``) against the
    reference at the cached points of tests/data/mdr_inplane_reference.json (the reference
    re-run here, side by side: its time and the solver's, median of 3).
-4. With ``--baseline REV``: without the oscillation (``a_x = 0``) the MDR solver's results
+4. The solver's error bar against its own converged rows (320 and 640 springs,
+   extrapolated) at 24 random points (seed 5) and at one resonant point where it is short.
+5. With ``--baseline REV``: without the oscillation (``a_x = 0``) the MDR solver's results
    bit for bit against that revision's ``src`` (exported by ``git archive``, run in a
    fresh process): ``mdr_friction`` and a row of 20 springs at five points.
 
@@ -31,8 +33,10 @@ import tempfile
 import time
 from pathlib import Path
 
+import numpy as np
+
 from vibrofriction.solver import solve_points
-from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction.solver.mdr import mdr_friction, mdr_row
 from vibrofriction_reference.inplane import inplane_mean
 from vibrofriction_reference.mdr import mdr_reference
 
@@ -58,7 +62,6 @@ BITWISE = [(0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 1.5, 0.3, 0.0, 2.0),
 def _bits() -> list:
     """The a_x = 0 results of :data:`BITWISE` as hex strings (runs on any revision: no
     in-plane keyword is passed)."""
-    from vibrofriction.solver.mdr import mdr_row
     out = []
     for al, be, a, V, z, n in BITWISE:
         r = mdr_friction(al, be, a, V, n, zeta=z)
@@ -67,6 +70,57 @@ def _bits() -> list:
                     float(w["mu_ratio"]).hex(), w["periods"],
                     float(w["final_state"][0]).hex(), float(w["final_state"][1]).hex()])
     return out
+
+
+#: where the first pair of rows (20, 40) agrees by chance: the bar of one difference is short
+SHORT = (1.0, 3.0, 0.6, 0.4, 0.02, 2.0, 0.5, 0.5, "holder")
+
+
+def _converged(al, be, a, V, z, n, kw) -> tuple[float, float]:
+    """Rows of 320 and 640 springs, extrapolated (order 2), and their difference."""
+    w1 = mdr_row(al, be, a, V, n, 320, z, **kw)
+    w2 = mdr_row(al, be, a, V, n, 640, z, warm=w1["final_state"], **kw)
+    d = w2["mu_ratio"] - w1["mu_ratio"]
+    return w2["mu_ratio"] + d / 3.0, abs(d)
+
+
+def _calibration() -> None:
+    rng = np.random.default_rng(5)
+    print("\n## 4. The solver's error against its converged rows\n")
+    print("24 random points (seed 5): n = 1, 2, 3 in turn, substrate and holder in turn, "
+          "alpha in (0.2, 2), beta - alpha in (0.5, 4), a in (0.2, 1.8), V in (0.1, 1), "
+          "zeta 0, 0.02 or 0.1, a_x in (0.2, 2), phase_x in (0, 2 pi). `short` where "
+          "|mdr_friction - converged| > its error + the converged rows' difference.\n")
+    short, ratios, first = 0, [], 0
+    for i in range(24):
+        n = (1.0, 2.0, 3.0)[i % 3]
+        al = float(rng.uniform(0.2, 2.0))
+        be = al + float(rng.uniform(0.5, 4.0))
+        a = float(rng.uniform(0.2, 1.8))
+        V = float(rng.uniform(0.1, 1.0))
+        z = float(rng.choice([0.0, 0.02, 0.1]))
+        kw = dict(a_x=float(rng.uniform(0.2, 2.0)),
+                  phase_x=float(rng.uniform(0.0, 2.0 * math.pi)),
+                  inplane_on=("substrate", "holder")[i % 2])
+        r = mdr_friction(al, be, a, V, n, zeta=z, **kw)
+        truth, dd = _converged(al, be, a, V, n, z, kw)
+        d = abs(r["mu_ratio"] - truth)
+        short += d > r["error"] + dd
+        ratios.append(d / r["error"])
+        first += r["rows"] == (20, 40)
+    print(f"short: {short} of 24; |diff|/error median {statistics.median(ratios):.2g}, "
+          f"largest {max(ratios):.2g}; {first} of 24 stopped at the first pair (20, 40)\n")
+    al, be, a, V, z, n, ax, px, on = SHORT
+    kw = dict(a_x=ax, phase_x=px, inplane_on=on)
+    r = mdr_friction(al, be, a, V, n, zeta=z, **kw)
+    truth, dd = _converged(al, be, a, V, n, z, kw)
+    rows = {M: mdr_row(al, be, a, V, n, M, z, **kw)["mu_ratio"] for M in (20, 40, 80, 160)}
+    print(f"A short bar: ({al:g}, {be:g}, {a:g}, {V:g}, zeta {z:g}, n = {n:g}, a_x {ax:g}, "
+          f"phase_x {px:g}, {on}): mdr_friction {r['mu_ratio']:.8f} +- {r['error']:.1e} "
+          f"(rows {r['rows']}), converged {truth:.8f} (rows 320, 640 differ by {dd:.1e}): "
+          f"{abs(r['mu_ratio'] - truth):.1e} off. The rows from cold starts: "
+          + ", ".join(f"{M}: {v:.8f}" for M, v in rows.items())
+          + " (20 and 40 agree by chance, 80 moves).")
 
 
 def _bits_in(src: Path) -> list:
@@ -161,6 +215,7 @@ def main() -> None:
     print(f"\nwithin the combined bars: {within} of {len(ratios)} (largest ratio "
           f"{max(ratios):.2f}); time per point median: solver {statistics.median(t_sol):.3f} s,"
           f" reference {statistics.median(t_ref):.2f} s (its two rows)")
+    _calibration()
     if opts.baseline:
         base = subprocess.run(["git", "rev-parse", "--short", opts.baseline],
                               capture_output=True, text=True, cwd=ROOT,
@@ -171,7 +226,7 @@ def main() -> None:
             subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
             old = _bits_in(Path(tmp) / "src")
         new = _bits_in(ROOT / "src")
-        print(f"\n## 4. Without the oscillation: this tree against {base}, bit for bit\n")
+        print(f"\n## 5. Without the oscillation: this tree against {base}, bit for bit\n")
         print("`mdr_friction` (mu_ratio, error, periods) and `mdr_row` of 20 springs "
               "(mu_ratio, periods, final y, y') at a_x = 0, each tree in a fresh process.\n")
         print("| alpha, beta, a, V, zeta, n | mdr_friction mu_ratio | equal |")
