@@ -76,7 +76,7 @@ def _bits() -> list:
 SHORT = (1.0, 3.0, 0.6, 0.4, 0.02, 2.0, 0.5, 0.5, "holder")
 
 
-def _converged(al, be, a, V, z, n, kw) -> tuple[float, float]:
+def _converged(al, be, a, V, n, z, kw) -> tuple[float, float]:
     """Rows of 320 and 640 springs, extrapolated (order 2), and their difference."""
     w1 = mdr_row(al, be, a, V, n, 320, z, **kw)
     w2 = mdr_row(al, be, a, V, n, 640, z, warm=w1["final_state"], **kw)
