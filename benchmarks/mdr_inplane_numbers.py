@@ -31,6 +31,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
@@ -38,7 +39,7 @@ import numpy as np
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction, mdr_row
 from vibrofriction_reference.inplane import inplane_mean
-from vibrofriction_reference.mdr import mdr_reference
+from vibrofriction_reference.mdr import mdr_mean, mdr_reference
 
 ROOT = Path(__file__).resolve().parents[1]
 FLAT = [  # (alpha, beta, a, V, zeta, a_x, phase_x, inplane_on), as tests/test_mdr_inplane.py
@@ -211,6 +212,15 @@ def main() -> None:
         print(f"| {p['label']} | {p['profile_exponent']:g} | {p['inplane_on']} | "
               f"{mu:+.8f} +- {err:.1e} | {ref.mu_ratio:+.8f} +- {ref.mu_error:.1e} | "
               f"{d:.1e} | {ratio:.2f} | {ts:.3f} | {tr:.2f} |")
+    stiff = next(p for p in pts["points"] if p["label"] == "sphere substrate stiff damped")
+    moves = [mdr_mean(stiff["alpha"], stiff["beta"], stiff["amplitude"], stiff["v_inertial"],
+                      stiff["profile_exponent"], M, steps, 300, 20, zeta=stiff["zeta"],
+                      a_x=stiff["a_x"], phase_x=stiff["phase_x"],
+                      inplane_on=stiff["inplane_on"]).mu_ratio
+             for M, steps in ((100, 200), (200, 400), (400, 800), (800, 1600))]
+    print("\nThe stiff point's reference rows (100, 200) ... (800, 1600): "
+          + ", ".join(f"{m:.8f}" for m in moves) + " (steps "
+          + ", ".join(f"{abs(b - a):.1e}" for a, b in pairwise(moves)) + ")\n")
     within = sum(r <= 1.0 for r in ratios)
     print(f"\nwithin the combined bars: {within} of {len(ratios)} (largest ratio "
           f"{max(ratios):.2f}); time per point median: solver {statistics.median(t_sol):.3f} s,"
