@@ -21,10 +21,14 @@ OPEN, STICK, SLIP_POS, SLIP_NEG = (SPRING_STATES.index(s) for s in
 # (alpha, beta, a, V, n, zeta): sphere, jumping sphere, cone, soft n = 3
 POINTS = [(0.5, 2.0, 0.5, 0.3, 2.0, 0.0), (0.5, 2.0, 1.5, 0.3, 2.0, 0.1),
           (1.0, 3.0, 0.7, 0.5, 1.0, 0.1), (0.05, 0.1, 0.5, 2.0, 3.0, 0.5)]
+#: with a longitudinal in-plane oscillation: ((alpha, beta, a, V, n, zeta), a_x, phase_x, on)
+INPLANE = [((0.5, 2.0, 0.5, 0.3, 2.0, 0.1), 0.5, 1.0, "substrate"),
+           ((0.5, 2.0, 0.5, -0.3, 2.0, 0.1), 0.5, 1.0, "holder"),
+           ((1.0, 3.0, 1.3, 0.5, 1.0, 0.0), 0.8, 2.5, "substrate")]
 
 
-def _dim(alpha, beta, a, n, zeta):
-    return vf.Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=n)
+def _dim(alpha, beta, a, n, zeta, **inplane):
+    return vf.Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=n, **inplane)
 
 
 def _balance(h):
@@ -59,6 +63,32 @@ def test_steady_history_has_the_solvers_friction_and_normal_force(alpha, beta, a
     assert h.impulse[-1, 0] == pytest.approx(np.trapezoid(h.f, h.tau), rel=1e-4)
 
 
+@pytest.mark.parametrize("p, a_x, phase_x, on", INPLANE)
+def test_with_an_inplane_oscillation(p, a_x, phase_x, on):
+    """Substrate and holder, forwards and backwards: the orbit's period = solve_points
+    within its error, the energy balances (the laboratory's work input, the substrate's
+    work on the contact included) and every spring within its friction limit."""
+    alpha, beta, a, V, n, zeta = p
+    d = _dim(alpha, beta, a, n, zeta, a_x=a_x, phase_x=phase_x, inplane_on=on)
+    r = mdr_friction(alpha, beta, a, abs(V), n, zeta=zeta, a_x=a_x,
+                     phase_x=phase_x + (math.pi if V < 0 else 0.0), inplane_on=on)
+    s = vf.simulate(d, v_inertial=V, periods=1, samples_per_period=200, initial="steady",
+                    springs=r["rows"][1])
+    point = solve_points(alpha, beta, a, V, zeta, a_x=a_x, phase_x=phase_x, inplane_on=on,
+                         profile_exponent=n)
+    mu = s.impulse[-1, 0] / s.normal_impulse[-1]
+    assert abs(mu - float(point["mu_ratio"])) <= float(point["error"])
+    assert s.dissipated_pin[-1] + s.dissipated_friction[-1] == pytest.approx(
+        s.work_input[-1], rel=1e-9)
+    h = vf.simulate(d, v_inertial=V, periods=4, samples_per_period=100, springs=60)
+    assert np.max(np.abs(_balance(h))) <= 1e-11 * h.work_input[-1]
+    nn = h.spring_normal()
+    assert np.all(np.abs(h.spring_f) <= nn + 1e-12 * np.max(nn))
+    X = a_x * np.cos(h.tau + phase_x)  # the laboratory frame: x - X periodic on the orbit
+    lab = s.x - (X[:s.tau.size] if on == "substrate" else 0.0) - V * s.tau
+    assert lab[-1] == pytest.approx(lab[0], abs=1e-9)
+
+
 @pytest.mark.parametrize("alpha, beta, a, V, n, zeta", POINTS)
 def test_energy_balance(alpha, beta, a, V, n, zeta):
     """``work_input - dissipated = stored - stored(0)`` at every sample from the sliding
@@ -76,14 +106,19 @@ def test_energy_balance(alpha, beta, a, V, n, zeta):
     assert (s.dissipated_pin[-1] > 0.0) == (zeta > 0.0)
 
 
-@settings(max_examples=10, deadline=None)
+@settings(max_examples=12, deadline=None)
 @given(alpha=st.floats(0.05, 3.0), k=st.floats(0.1, 5.0), a=st.floats(0.0, 2.5),
        V=st.floats(0.0, 2.0), n=st.sampled_from([0.7, 1.0, 2.0, 4.0]),
-       zeta=st.sampled_from([0.0, 0.1]))
-def test_every_spring_stays_within_its_friction_cone(alpha, k, a, V, n, zeta):
+       zeta=st.sampled_from([0.0, 0.1]), a_x=st.sampled_from([0.0, 0.0, 0.6]),
+       phase_x=st.floats(0.0, 6.0), on=st.sampled_from(["substrate", "holder"]))
+def test_every_spring_stays_within_its_friction_cone(alpha, k, a, V, n, zeta, a_x, phase_x,
+                                                     on):
     """``|f_i| <= n_i`` for every spring at every sample; open springs carry nothing, the
-    stuck ones are in contact, inside the contact radius; the energy balances."""
-    h = vf.simulate(_dim(alpha, alpha + k, a, n, zeta), v_inertial=V, periods=2,
+    stuck ones are in contact, inside the contact radius; the energy balances (with or
+    without a longitudinal in-plane oscillation, ``V > 0`` with it)."""
+    inplane = dict(a_x=a_x, phase_x=phase_x, inplane_on=on) if a_x > 0 else {}
+    h = vf.simulate(_dim(alpha, alpha + k, a, n, zeta, **inplane),
+                    v_inertial=max(V, 0.05) if a_x > 0 else V, periods=2,
                     samples_per_period=100, springs=40)
     nn = h.spring_normal()
     scale = 1e-12 * float(np.max(nn))
@@ -122,14 +157,21 @@ def test_the_independent_reference_converges_to_the_history(alpha, beta, a, V, n
     assert dist[1] < 1e-5 and dist[1] < dist[0] / 8
 
 
-@pytest.mark.parametrize("alpha, beta, a, V, zeta", [
-    (0.5, 2.0, 0.5, 0.3, 0.0), (0.5, 2.0, 1.5, 0.3, 0.1), (1.0, 3.0, 0.7, 0.5, 0.1),
-    (0.5, 2.0, 0.5, -0.3, 0.0)])
+@pytest.mark.parametrize("alpha, beta, a, V, zeta, inplane", [
+    (0.5, 2.0, 0.5, 0.3, 0.0, {}), (0.5, 2.0, 1.5, 0.3, 0.1, {}),
+    (1.0, 3.0, 0.7, 0.5, 0.1, {}), (0.5, 2.0, 0.5, -0.3, 0.0, {}),
+    (0.5, 2.0, 0.5, 0.3, 0.0, dict(a_x=0.5, phase_x=1.0)),
+    (1.3, 4.0, 1.4, 0.8, 0.05, dict(a_x=1.2, phase_x=0.3, inplane_on="holder")),
+    (0.5, 2.0, 1.2, -0.3, 0.1, dict(a_x=0.5, phase_x=4.0)),
+    (0.5, 2.0, 0.5, -0.3, 0.1, dict(a_x=0.5, phase_x=1.0, inplane_on="holder"))])
 @pytest.mark.parametrize("springs", [1, 4])
-def test_flat_punch_row_is_the_single_spring_history(alpha, beta, a, V, zeta, springs):
+def test_flat_punch_row_is_the_single_spring_history(alpha, beta, a, V, zeta, inplane,
+                                                     springs):
     """A flat punch as a row (each spring the same share) = the 1-D simulate at the same
-    samples, from the same start and from the steady state, to round-off."""
-    d = vf.Dimensionless(alpha, beta, a, zeta=zeta)
+    samples, from the same start and from the steady state, to round-off; with a
+    longitudinal in-plane oscillation too (a start whose slip agrees with the velocity
+    relative to the substrate: an inconsistent one is resolved differently)."""
+    d = vf.Dimensionless(alpha, beta, a, zeta=zeta, **inplane)
     s = math.copysign(1.0, V)
     start = SectionState(-s / alpha, V, s * (1 + a), "slip+" if V > 0 else "slip-")
     for flat_start, row_start in ((start, "sliding"), ("steady", "steady")):
@@ -196,13 +238,14 @@ def test_stick_radius_and_area_fractions_against_the_steady_state():
     np.testing.assert_allclose(h.contact_radius, np.sqrt(1 + 0.5 * np.cos(h.tau)))
 
 
-@pytest.mark.parametrize("kwargs, message", [
-    (dict(a_x=0.1), "a_x"), (dict(eta_c=0.1), "eta_c"), (dict(beta=math.inf), "beta")])
-def test_refusals_name_the_parameter(kwargs, message):
+@pytest.mark.parametrize("kwargs, V, message", [
+    (dict(a_y=0.1), 0.3, "a_y"), (dict(a_x=0.1), 0.0, "a_x"), (dict(eta_c=0.1), 0.3, "eta_c"),
+    (dict(beta=math.inf), 0.3, "beta")])
+def test_refusals_name_the_parameter(kwargs, V, message):
     d = vf.Dimensionless(**(dict(alpha=0.5, beta=2.0, amplitude=0.5, profile_exponent=2.0)
                             | kwargs))
     with pytest.raises(ValueError, match=message):
-        vf.simulate(d, v_inertial=0.3, periods=1)
+        vf.simulate(d, v_inertial=V, periods=1)
 
 
 @pytest.mark.parametrize("kwargs, message", [

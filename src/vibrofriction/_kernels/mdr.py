@@ -27,6 +27,18 @@ package's basis (:mod:`.basis`: free motion, periodic response or, near the reso
 * lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
   down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
 
+A longitudinal in-plane oscillation ``X = a_x cos(tau + phase_x)`` (issue 20,
+docs/inplane.md) enters as in the single-spring kernels (:func:`.phases.inplane_forcing`):
+the body is described in the substrate's frame (``y`` relative to the substrate, where a
+stuck spring's contact point is at rest), and the body ODE gains the force
+``h = hc cos tau + hs sin tau`` (substrate: ``(1 - alpha) X - gamma X'``, the frame's
+inertial force and the pin's spring and dashpot pulling on ``x = y + X``; holder: ``alpha X
++ gamma X'``). In that frame a stuck spring's elongation is still ``e_i0 + (y - y0) + V t``
+(the substrate carries its contact point), the slip velocity ``y' + V`` is relative to the
+substrate, and the four group functions below are unchanged; ``h`` is at the drive
+frequency, so it joins ``S_w a cos tau`` in the periodic response of the closed form, and
+its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
+
 These four group functions are scanned on sub-steps of the segment (at most
 ``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
 method to round-off, and the earliest root ends the segment (a scan costs O(1), not
@@ -37,7 +49,7 @@ approximation besides round-off. A group that has just switched starts at its ro
 its first sub-step it is also probed nearer the start (a spring touching down stuck may
 slip again within the sub-step).
 
-``run_periods(..., rec=(tau, body, f, state))`` also records the row at the times ``tau``
+``run_periods(..., rec=(tau, body, f, state, ip))`` also records the row at the times ``tau``
 (:func:`_record_segment`; the MDR time history, :mod:`vibrofriction.solver.mdr_history`).
 """
 
@@ -92,8 +104,9 @@ def normal_integral_row(a, g, w, tau_off):
 
 
 @jit
-def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
-    """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode."""
+def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
+    """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode; ``hc``,
+    ``hs`` the in-plane force ``h = hc cos tau + hs sin tau`` on the body (0: none)."""
     w0sq = alpha + K
     m = make_mode(w0sq, 0.5 * gamma, 0.0)
     c0 = -(E0 - K * y0) - Sw + Swg
@@ -101,12 +114,19 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
     cc = -Sw * a
     p1 = c1 / w0sq
     p0 = (c0 - gamma * p1) / w0sq
+    # the harmonic forces at the drive frequency, Re(W e^{it}), W = wr + i wi
     wr = cc * math.cos(theta)
     wi = cc * math.sin(theta)
+    forced = hc != 0.0 or hs != 0.0
+    if forced:  # h(theta + t) = (hc cos + hs sin) cos t - (hc sin - hs cos) sin t
+        ct = math.cos(theta)
+        sn = math.sin(theta)
+        wr += hc * ct + hs * sn
+        wi += hc * sn - hs * ct
     near = False
     zr = 0.0
     zi = 0.0
-    if cc != 0.0:
+    if cc != 0.0 or forced:
         zr, zi, near = _periodic_response(m, wr, wi)
     if not near:
         D, E = initial_pair(m, y0 - p0 - zr, yd0 - p1 + zi)
@@ -169,7 +189,7 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 def _record_state(rec, ri, acc, y, yd, tau, u, st, e, g, w, k, a):
     """Write sample ``ri`` of ``rec``: the body at ``(y, y')``, phase ``tau``, the stuck
     springs' elongations ``e_i + u``, the integrals ``acc``."""
-    _, body, fs, sts = rec
+    body, fs, sts = rec[1], rec[2], rec[3]
     F = 0.0
     N = 0.0
     ca = 1.0 + a * math.cos(tau)
@@ -198,47 +218,75 @@ def _record_state(rec, ri, acc, y, yd, tau, u, st, e, g, w, k, a):
 
 @jit
 def _accumulate(acc, c, dc, m, cs, theta, ta, tb, h, alpha, gamma, V, a, w, k, Wc, Wgc, Sw,
-                Swg, Wa, Wga):
+                Swg, Wa, Wga, hc, hs, ip):
     """Add the integrals over ``[ta, tb]`` of a segment to ``acc``: ``sum f_i =
-    -(y'' + gamma y' + alpha y)`` and ``sum n_i`` (the springs in contact: ``Wc = w`` times
-    their number, ``Wgc`` their ``w g_i``) and the work input ``V (-alpha y - gamma y')``
-    exactly; the pin's ``gamma y'^2`` and friction's ``sum f_i (x' - e_i')`` (slipping
-    springs: ``(y' + V) sum s n_i + (w a sin tau/k) sum n_i``, ``Sw, Swg`` signed, ``Wa,
-    Wga`` not) by 8-point Gauss-Legendre on pieces of at most ``h``."""
+    -(y'' + gamma y' + alpha y) + h`` and ``sum n_i`` (the springs in contact: ``Wc = w``
+    times their number, ``Wgc`` their ``w g_i``) exactly; the work input, the pin's
+    dissipation and friction's ``sum f_i (x' - e_i')`` (slipping springs: ``(y' + V) sum s
+    n_i + (w a sin tau/k) sum n_i``, ``Sw, Swg`` signed, ``Wa, Wga`` not) by 8-point
+    Gauss-Legendre on pieces of at most ``h``. Without an in-plane oscillation the work
+    input ``V (-alpha y - gamma y')`` is exact and the pin dissipates ``gamma y'^2``; with
+    one, ``ip = (c, d, holder)`` (``X = c cos tau - d sin tau``), the laboratory's
+    definitions of :mod:`vibrofriction.solver.energy` (substrate: ``V (-alpha (y + X) -
+    gamma (y' + X')) - X' sum f_i`` and ``gamma (y' + X')^2``; holder: ``(V + X') (alpha
+    (X - y) + gamma (X' - y'))`` and ``gamma (X' - y')^2``)."""
     if tb <= ta:
         return
     ba = basis_values(m, ta, cs, False)
     bb = basis_values(m, tb, cs, False)
     dy = dot(c, bb) - dot(c, ba)
     iy = integral(c, m, tb) - integral(c, m, ta)
-    acc[0] += -((dot(dc, bb) - dot(dc, ba)) + gamma * dy + alpha * iy)
+    ih = hc * (math.sin(theta + tb) - math.sin(theta + ta)) \
+        - hs * (math.cos(theta + tb) - math.cos(theta + ta))
+    acc[0] += -((dot(dc, bb) - dot(dc, ba)) + gamma * dy + alpha * iy) + ih
     acc[1] += (Wc - Wgc) * (tb - ta) + Wc * a * (math.sin(theta + tb) - math.sin(theta + ta))
-    acc[2] += V * (-alpha * iy - gamma * dy)
+    oscillating = ip[0] != 0.0 or ip[1] != 0.0
+    holder = ip[2] != 0.0
+    ddc = derivative(dc, m)
+    if not oscillating:
+        acc[2] += V * (-alpha * iy - gamma * dy)
     pieces = int(math.ceil((tb - ta) / h))
     half = 0.5 * (tb - ta) / pieces
+    dw = 0.0
     dp = 0.0
     df = 0.0
     for j in range(pieces):
         mid = ta + (2 * j + 1) * half
         for q in range(_GL_X.size):
             t = mid + half * _GL_X[q]
-            ydt = dot(dc, basis_values(m, t, cs, False))
+            b = basis_values(m, t, cs, False)
+            ydt = dot(dc, b)
             tau = theta + t
             ca = 1.0 + a * math.cos(tau)
-            dp += _GL_W[q] * gamma * ydt * ydt
             df += _GL_W[q] * ((ydt + V) * (Sw * ca - Swg)
                               + (w * a * math.sin(tau) / k) * (Wa * ca - Wga))
+            if not oscillating:
+                dp += _GL_W[q] * gamma * ydt * ydt
+                continue
+            X = ip[0] * math.cos(tau) - ip[1] * math.sin(tau)
+            Xd = -ip[0] * math.sin(tau) - ip[1] * math.cos(tau)
+            yt = dot(c, b)
+            if holder:
+                dw += _GL_W[q] * (V + Xd) * (alpha * (X - yt) + gamma * (Xd - ydt))
+                dp += _GL_W[q] * gamma * (Xd - ydt) ** 2
+            else:
+                F = -(dot(ddc, b) + gamma * ydt + alpha * yt) \
+                    + hc * math.cos(tau) + hs * math.sin(tau)
+                dw += _GL_W[q] * (V * (-alpha * (yt + X) - gamma * (ydt + Xd)) - F * Xd)
+                dp += _GL_W[q] * gamma * (ydt + Xd) ** 2
+    acc[2] += half * dw
     acc[3] += half * dp
     acc[4] += half * df
 
 
 @jit
 def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V, a, g, w,
-                    k, st, e, y0):
+                    k, st, e, y0, hc, hs):
     """Record the samples of ``rec`` at times in ``[t0, t0 + T)`` of the segment that starts
     at time ``t0`` (phase ``theta``, body ``y0``, closed form ``c``) and add the segment's
     integrals to ``acc``; returns the next sample's index."""
     rtau = rec[0]
+    ip = rec[4]
     Wc = 0.0
     Wgc = 0.0
     Sw = 0.0
@@ -261,7 +309,7 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
     while ri < rtau.size and rtau[ri] < t0 + T:
         ts = min(max(rtau[ri] - t0, 0.0), T)
         _accumulate(acc, c, dc, m, cs, theta, tq, ts, h, alpha, gamma, V, a, w, k, Wc, Wgc,
-                    Sw, Swg, Wa, Wga)
+                    Sw, Swg, Wa, Wga, hc, hs, ip)
         tq = ts
         b = basis_values(m, ts, cs, False)
         yv = dot(c, b)
@@ -269,16 +317,17 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
                       w, k, a)
         ri += 1
     _accumulate(acc, c, dc, m, cs, theta, tq, T, h, alpha, gamma, V, a, w, k, Wc, Wgc, Sw,
-                Swg, Wa, Wga)
+                Swg, Wa, Wga, hc, hs, ip)
     return ri
 
 
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
-                state_tol, y, yd, st, e, rec=None):
+                state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
     (modified in place) until the section state repeats within ``state_tol`` (relative to
-    its size) after at least ``min_periods``, or ``max_periods``.
+    its size) after at least ``min_periods``, or ``max_periods``. ``hc``, ``hs``: the
+    in-plane force on the body (module docstring; ``y`` then relative to the substrate).
 
     The scanned events come in four groups, each decided by one function of time
     (:func:`_group_value`): every stuck spring's margin is a common function of time minus
@@ -289,15 +338,18 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     round-off distances, is what keeps the event count per period bounded.
 
     Returns ``(periods, converged, pf, pn, frac, viol, events, y, yd)``: the per-period
-    integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``) and
+    integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``, the
+    in-plane force integrating to 0 over a period) and
     of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
     contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
     number of events of the last period (``-1``: no progress) and the final body state.
 
-    ``rec = (tau, body, f, state)``, optional: record the samples at the sorted times
+    ``rec = (tau, body, f, state, ip)``, optional: record the samples at the sorted times
     ``tau`` (from the start, ``T`` of them): ``body`` (``T x N_REC``, columns ``R_*``),
     every spring's tangential force ``f`` and state ``state`` (``T x M``), from the closed
-    forms (:func:`_record_segment`); pass ``min_periods = max_periods``.
+    forms (:func:`_record_segment`; ``ip = (c, d, holder)`` the in-plane oscillation
+    ``X = c cos tau - d sin tau`` of the substrate or, ``holder != 0``, of the holder, for
+    the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.
     """
     g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
     k = (beta - alpha) * dxi
@@ -381,7 +433,7 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                         gfresh[2] = True
                     elif s == SLIP_NEG:
                         gfresh[3] = True
-            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta)
+            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
             dc = derivative(c, m)
             cs = c[6] != 0.0 or c[7] != 0.0
             # the known contact events and the section bound the segment
@@ -461,7 +513,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                     ta = tb
             if rec is not None:
                 ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
-                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e, y)
+                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e, y,
+                                     hc, hs)
             # advance to t_ev
             b = basis_values(m, t_ev, cs, False)
             y1 = dot(c, b)

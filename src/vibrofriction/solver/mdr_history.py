@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._kernels import mdr as _mdr
+from .._kernels.phases import frame_offset, inplane_forcing
 from ..params import Dimensionless
 from .mdr import SUBSTEPS, _check, _start, mdr_row
 
@@ -67,8 +68,12 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     too) or ``"steady"`` (the final section state of
     :func:`~vibrofriction.solver.mdr.mdr_row` with the same springs: a periodic orbit, or
     the row's attractor after its averaging window; ValueError where it did not converge).
-    ``V < 0`` is the mirror image of ``-V``. Any ``profile_exponent``, ``math.inf``
-    included (the flat punch as a row: each spring carries the same share).
+    ``V < 0`` is the mirror image of ``-V`` (with ``phase_x + pi``). A longitudinal
+    in-plane oscillation (``a_x``, ``phase_x``, ``inplane_on``; ``V != 0``) as the MDR
+    solver's: ``x``, ``x_dot`` in the laboratory frame, the energies with the
+    laboratory's definitions (:mod:`vibrofriction.solver.energy`). Any
+    ``profile_exponent``, ``math.inf`` included (the flat punch as a row: each spring
+    carries the same share).
     """
     from .history import History
 
@@ -77,19 +82,27 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
         raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
     alpha, beta, a, n_exp, zeta = (dim.alpha, dim.beta, dim.amplitude, dim.profile_exponent,
                                    dim.zeta)
-    _check(alpha, beta, a, abs(V), n_exp, zeta)
     sign = -1.0 if V < 0.0 else 1.0
     Va = abs(V)
+    # V < 0: the point (-V, phase_x + pi) mirrored, as solve_points
+    a_x, phase_x = dim.a_x, dim.phase_x + (math.pi if V < 0.0 else 0.0)
+    on_substrate = dim.inplane_on == "substrate"
+    _check(alpha, beta, a, Va, n_exp, zeta, a_x, phase_x, dim.inplane_on)
     gamma = 2.0 * zeta * math.sqrt(alpha)
+    hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
+    ip = np.array([a_x * math.cos(phase_x), a_x * math.sin(phase_x),
+                   0.0 if on_substrate else 1.0])
     if isinstance(initial, str) and initial == "sliding":
-        y, yd, st, e = _start(alpha, a, n_exp, M, None)
+        y, yd, st, e = _start(alpha, a, n_exp, M, None,
+                              frame_offset(a_x, phase_x, on_substrate))
         # the solver's start leaves the springs beyond the mean contact radius out of
         # contact until their touch-down late in the first period (its steady state is
         # the same); in contact at tau = 0 (g_i < 1 + a), they slip forwards too
         g = _mdr.row_geometry(a, n_exp, M)[0]
         st[(st == _mdr.OFF) & (1.0 + a - g > 0.0)] = _mdr.SLIP_POS
     elif isinstance(initial, str) and initial == "steady":
-        r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta)
+        r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
+                    inplane_on=dim.inplane_on)
         if r["status"] == "not converged":
             raise ValueError(f"initial='steady': the row of {M} springs did not converge "
                              f"at this point (after {r['periods']} periods)")
@@ -107,7 +120,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     whole = int(math.ceil(periods - 1e-12))
     *_, events, _, _ = _mdr.run_periods(
         alpha, beta, a, Va, gamma, n_exp, M, SUBSTEPS, whole, whole, 0.0, float(y),
-        float(yd), st, e, (tau, body, fs, sts))
+        float(yd), st, e, hc, hs, (tau, body, fs, sts, ip))
     if events < 0:
         raise RuntimeError(f"the MDR row of {M} springs made no progress (more than "
                            f"{200 * M + 1000} segments in a period)")
@@ -123,7 +136,11 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     if sign < 0.0:  # the mirror image: x -> -x, the slip directions swapped
         sts = np.where(sts == _mdr.SLIP_POS, _mdr.SLIP_NEG,
                        np.where(sts == _mdr.SLIP_NEG, _mdr.SLIP_POS, sts)).astype(np.int8)
-    y_s, yd_s = sign * body[:, _mdr.R_Y], sign * (body[:, _mdr.R_YD] + Va)
+    y_s, yd_s = body[:, _mdr.R_Y], body[:, _mdr.R_YD] + Va
+    if on_substrate and a_x > 0.0:  # from the substrate's frame to the laboratory's
+        y_s = y_s + ip[0] * np.cos(tau) - ip[1] * np.sin(tau)
+        yd_s = yd_s - ip[0] * np.sin(tau) - ip[1] * np.cos(tau)
+    y_s, yd_s = sign * y_s, sign * yd_s
     f = sign * body[:, _mdr.R_F]
     impulse = np.zeros((T, 2))
     impulse[:, 0] = sign * body[:, _mdr.R_IF]
