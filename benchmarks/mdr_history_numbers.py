@@ -10,7 +10,8 @@ tests/test_mdr_history.py:
   periodic orbit (the drive's work against the dissipation);
 * one period of the periodic orbit against ``solve_points`` (``mu_ratio`` and its error,
   the extrapolated MDR solver) and ``theory.profile_mean_normal_force``;
-* ``max(|f_i| - n_i)`` over every spring and sample;
+* ``max(|f_i| - n_i)`` over every spring and sample, also at 2 x 300 random points (with
+  and without a longitudinal in-plane oscillation);
 * every spring's force against the independent spring-row reference
   (``vibrofriction_reference.mdr.mdr_mean``, 40 springs, 300 periods) at 200, 800, 3200
   steps a period;
@@ -40,8 +41,14 @@ POINTS = [(0.5, 2.0, 0.5, 0.3, 2.0, 0.0), (0.5, 2.0, 1.5, 0.3, 2.0, 0.1),
           (1.0, 3.0, 0.7, 0.5, 1.0, 0.1), (0.05, 0.1, 0.5, 2.0, 3.0, 0.5)]
 
 
-def dim(alpha, beta, a, n, zeta):
-    return vf.Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=n)
+#: with a longitudinal in-plane oscillation: (point, a_x, phase_x, inplane_on)
+INPLANE = [((0.5, 2.0, 0.5, 0.3, 2.0, 0.1), 0.5, 1.0, "substrate"),
+           ((0.5, 2.0, 0.5, -0.3, 2.0, 0.1), 0.5, 1.0, "holder"),
+           ((1.0, 3.0, 1.3, 0.5, 1.0, 0.0), 0.8, 2.5, "substrate")]
+
+
+def dim(alpha, beta, a, n, zeta, **inplane):
+    return vf.Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=n, **inplane)
 
 
 def balance(h) -> np.ndarray:
@@ -59,13 +66,17 @@ def energy() -> None:
     print("| point (alpha, beta, a, V, n, zeta) | residual, 20 periods | relative | W a period "
           "| D_pin | D_friction | (W - D)/W |")
     print("| --- | --- | --- | --- | --- | --- | --- |")
-    for p in POINTS:
+    cases = [(p, {}) for p in POINTS] + [
+        (p, dict(a_x=ax, phase_x=px, inplane_on=on)) for p, ax, px, on in INPLANE]
+    for p, ip in cases:
         alpha, beta, a, V, n, zeta = p
-        h = vf.simulate(dim(alpha, beta, a, n, zeta), v_inertial=V, periods=20,
+        h = vf.simulate(dim(alpha, beta, a, n, zeta, **ip), v_inertial=V, periods=20,
                         samples_per_period=200)
         r = float(np.max(np.abs(balance(h))))
-        s = vf.simulate(dim(alpha, beta, a, n, zeta), v_inertial=V, periods=1,
+        s = vf.simulate(dim(alpha, beta, a, n, zeta, **ip), v_inertial=V, periods=1,
                         samples_per_period=200, initial="steady")
+        if ip:
+            p = (*p, f"a_x {ip['a_x']}, phase_x {ip['phase_x']}, {ip['inplane_on']}")
         W, Dp, Df = s.work_input[-1], s.dissipated_pin[-1], s.dissipated_friction[-1]
         print(f"| {p} | {r:.1e} | {r / h.work_input[-1]:.1e} | {W:.6f} | {Dp:.6f} | "
               f"{Df:.6f} | {(W - Dp - Df) / W:.1e} |")
@@ -120,6 +131,40 @@ def reference() -> None:
         print(f"| {p} | " + " | ".join(f"{d:.1e}" for d in out) + " |")
 
 
+def random_points() -> None:
+    print("\n## Random points\n")
+    print("300 points each (40 springs, 2 periods from the sliding start, 100 samples a "
+          "period): `alpha` in (0.05, 3), `beta - alpha` in (0.1, 5), `a` in (0, 2.5), "
+          "`V` in (0, 2), `n` in {0.7, 1, 2, 4}, `zeta` in {0, 0.1}; with the in-plane "
+          "oscillation also `a_x` in (0, 1.5), `phase_x` in (0, 6.3), both mounts, `|V|` in "
+          "(0.05, 2) of either sign. The largest `|f_i| - n_i` over springs and samples "
+          "relative to the largest `n_i`, and the largest energy-balance residual relative "
+          "to `max(1, work_input)`.\n")
+    print("| set | seed | max (abs(f_i) - n_i) | max balance residual |")
+    print("| --- | --- | --- | --- |")
+    for label, seed, inplane in (("no in-plane oscillation", 1, False),
+                                 ("longitudinal in-plane oscillation", 2, True)):
+        rng = np.random.default_rng(seed)
+        worst_f = worst_b = 0.0
+        for _ in range(300):
+            alpha, k, a = rng.uniform(0.05, 3), rng.uniform(0.1, 5), rng.uniform(0, 2.5)
+            n, zeta = rng.choice([0.7, 1.0, 2.0, 4.0]), rng.choice([0.0, 0.1])
+            ip = {}
+            if inplane:
+                V = rng.uniform(0.05, 2) * (1 if rng.random() < 0.5 else -1)
+                ip = dict(a_x=rng.uniform(0, 1.5), phase_x=rng.uniform(0, 6.3),
+                          inplane_on=str(rng.choice(["substrate", "holder"])))
+            else:
+                V = rng.uniform(0, 2)
+            h = vf.simulate(dim(alpha, alpha + k, a, float(n), float(zeta), **ip),
+                            v_inertial=V, periods=2, samples_per_period=100, springs=40)
+            nn = h.spring_normal()
+            worst_f = max(worst_f, float(np.max(np.abs(h.spring_f) - nn) / np.max(nn)))
+            worst_b = max(worst_b, float(np.max(np.abs(balance(h))))
+                          / max(1.0, abs(h.work_input[-1])))
+        print(f"| {label} | {seed} | {worst_f:.1e} | {worst_b:.1e} |")
+
+
 def timing() -> None:
     print("\n## Time\n")
     print("`simulate(..., periods=1, samples_per_period=400, initial=\"steady\")` (the row's "
@@ -155,6 +200,7 @@ def main() -> None:
     energy()
     steady()
     reference()
+    random_points()
     timing()
     print(f"\n{time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
