@@ -235,15 +235,13 @@ def test_curved_refusals_elsewhere():
                                  contact_model="mdr", du_z=1e-7)
     with pytest.raises(ValueError, match="fit and the design"):
         pin.point_arguments(0.01, 1e-7, pin.omega)
-    with pytest.raises(ValueError, match="critical velocity"):
-        pin.critical_velocity()
     with pytest.raises(ValueError, match="dF_N"):
         pin.dF_N  # noqa: B018
 
 
 @pytest.mark.parametrize("kwargs, needle", [
     (dict(contact_model="hertz"), "contact_model"),
-    (dict(normal_control="dead_weight"), "not built yet"),
+    (dict(normal_control="dead_weight", du_z=1e-5), "too large for the dead weight"),
     (dict(normal_control="load"), "normal_control"),
     (dict(contact=None, k_zc=1e7, k_xc=1e7), "contact_model='mdr' needs a contact"),
     (dict(du_z=None, dF_N=5.0), "dF_N"),
