@@ -1169,7 +1169,7 @@ def _dead_weight_ratio(A: float, n: float) -> float:
     # at d0 -> 0+ the mean force tends to A^p <max(0, cos tau)^p> (units of the load)
     floor = A**p * math.exp(math.lgamma(0.5 * p + 0.5) - math.lgamma(0.5 * p + 1.0)) \
         / (2.0 * math.sqrt(math.pi))
-    if floor >= 1.0:
+    if floor >= 1.0 - 1e-12:  # (at the limit itself d0 = 0)
         limit = floor ** (-1.0 / p) * A
         raise ValueError(f"the oscillation is too large for the dead weight: the mean force "
                          f"at zero mean indentation is already {floor:.6g} times the load "
@@ -1183,11 +1183,13 @@ def _dead_weight_ratio(A: float, n: float) -> float:
     def excess(r: float) -> float:  # mean force at d0 = r d_s over the load, minus 1
         return r**p * _profile_mean_force(A / r, n) - 1.0
 
-    hi = 1.0
     lo = 0.5
-    while excess(lo) > 0.0:
+    for _ in range(1000):
+        if excess(lo) <= 0.0:
+            return brentq(excess, lo, 1.0, xtol=1e-16, rtol=1e-15, maxiter=200)
         lo *= 0.5
-    return brentq(excess, lo, hi, xtol=1e-16, rtol=1e-15, maxiter=200)
+    raise ValueError(f"the oscillation is too large for the dead weight: du_z/d_static = "
+                     f"{A!r} is at its limit, where the mean indentation tends to 0")
 
 
 def dead_weight_indentation(static_amplitude: ArrayLike,
