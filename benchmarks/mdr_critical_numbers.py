@@ -173,7 +173,7 @@ def dead_weight() -> None:
           "(`Physical.mean_normal_force`) and from the MDR row (`mdr_friction`'s "
           "`mean_normal_ratio` times `F_N0`, rows as in its result); `mu/mu0` by "
           "`friction_coefficient`.\n")
-    print("| du_z (um) | control | d0 (um) | a | F_N0 (N) | <F_N> (N) | row <F_N> - load (N) | "
+    print("| du_z (um) | control | d0 (um) | a | F_N0 (N) | <F_N> (N) | row <F_N> - <F_N> (N) | "
           "V_c (m/s) | mu/mu0 |")
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for du in (0.45e-6, 0.9e-6, 1.6e-6):
