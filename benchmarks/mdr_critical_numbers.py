@@ -98,6 +98,26 @@ def table_vc() -> None:
             print(f"| {name} ({al:g}, {be:.4g}) | {a:g} | " + " | ".join(cells) + " |")
 
 
+def grid_convergence() -> None:
+    print("\nThe FFT grid (`theory._SLIDING_GRID = 2^15` points by default): `V_c` at "
+          "`2^13, 2^15, 2^17` points, relative to the last; time of one "
+          "`profile_critical_velocity` call (median of 11, default grid).\n")
+    print("| (alpha, beta, a, n, zeta) | V_c (2^17) | 2^13 | 2^15 | ms a call |")
+    print("| --- | --- | --- | --- | --- |")
+    for al, be, a, n, ze in ((0.5, 2.0, 0.5, 2.0, 0.0), (0.5, 2.0, 1.5, 2.0, 0.0),
+                             (0.5, 2.0, 1.5, 4.0, 0.0), (2.5, 6.0, 2.5, 0.7, 0.05),
+                             (0.5, 2.0, 1.5, math.inf, 0.0)):
+        v = [theory._profile_critical(al, be, a, n, ze, N=1 << k) for k in (13, 15, 17)]
+        times = []
+        for _ in range(11):
+            t0 = time.perf_counter()
+            theory.profile_critical_velocity(al, be, a, n, ze)
+            times.append(time.perf_counter() - t0)
+        print(f"| ({al:g}, {be:g}, {a:g}, {n:g}, {ze:g}) | {v[2]:.15g} | "
+              f"{v[0] / v[2] - 1:+.1e} | {v[1] / v[2] - 1:+.1e} | "
+              f"{1e3 * float(np.median(times)):.1f} |")
+
+
 def solver_check() -> None:
     print("\n## 2. Against the MDR solver\n")
     print("`mdr_friction` (default `tol` 1e-5) at `0.999 V_c` and `1.001 V_c`: `mu/mu0 "
@@ -199,6 +219,7 @@ def main() -> None:
           f"{platform.python_version()}")
     t0 = time.perf_counter()
     table_vc()
+    grid_convergence()
     solver_check()
     flat_jumping()
     dead_weight()
