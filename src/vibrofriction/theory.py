@@ -1184,7 +1184,7 @@ def _dead_weight_ratio(A: float, n: float) -> float:
         return r**p * _profile_mean_force(A / r, n) - 1.0
 
     lo = 0.5
-    for _ in range(1000):
+    for _ in range(60):  # down to d0 ~ 1e-18 d_s
         if excess(lo) <= 0.0:
             return brentq(excess, lo, 1.0, xtol=1e-16, rtol=1e-15, maxiter=200)
         lo *= 0.5
@@ -1329,8 +1329,9 @@ def profile_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arra
     ``y'' + gamma y' + alpha y = -m``, ``gamma = 2 zeta sqrt(alpha)``, whose periodic
     solution ``y_p`` is a Fourier series, ``m = sum c_k cos(k tau)``,
     ``y_p' = -sum c_k Re(i k e^{i k tau}/(alpha - k^2 + i gamma k))``. Every spring has the
-    same slip velocity ``V + y_p' + (p a/(beta - alpha)) sin tau`` (all
-    ``n_i' = -(p a) sin tau`` in units of their stiffness), and so does a spring touching
+    same slip velocity ``V + y_p' + (p a/(beta - alpha)) sin tau`` (in slip
+    ``x_ci = x - n_i/k_i`` with ``n_i' = -p a sin(tau) dxi``, ``k_i = (beta - alpha) dxi``
+    for every spring in contact), and so does a spring touching
     down unloaded (it slips from touch-down iff that velocity is positive, else it
     sticks). Continuous sliding holds iff it is ``>= 0`` wherever some spring is in
     contact, ``1 + a cos tau > 0``:
