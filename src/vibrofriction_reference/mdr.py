@@ -25,6 +25,14 @@ so the scaled model depends on the profile through ``n`` only. The flat punch
 (``n = inf``) is ``xi in (0, 1]``, ``n_i = dxi (1 + a cos tau)``: every spring carries the
 same share, and the row is the single spring of docs/model.md exactly.
 
+**In-plane oscillation along the sliding** (issue 20, docs/inplane.md), written in the
+laboratory frame: ``X(tau) = a_x cos(tau + phase_x)`` moves either the pulled end of the
+pin's spring and dashpot (``inplane_on="holder"``: the pin pulls with ``alpha (V tau + X
+- x) + gamma (V + X' - x')``) or the substrate (``"substrate"``): every spring's contact
+point is carried by the substrate while it sticks, so its elongation ``x - x_c,i`` changes
+by the body's displacement minus the substrate's over a step, and it slides where the
+body moves relative to the substrate.
+
 **Scheme**: velocity Verlet for the body (the pin dashpot trapezoidal: implicit in the
 second half-kick), a return mapping per spring per step (elastic predictor from the
 body's displacement over the step, projection onto ``|f_i| <= n_i``); a spring touching
@@ -48,10 +56,12 @@ __all__ = ["MDRMean", "MDRReference", "mdr_mean", "mdr_reference"]
 
 
 @njit(cache=True)
-def _row(alpha, beta, a, V, gamma, n_exp, M, N, n_total, avg_start, initial, record_from):
+def _row(alpha, beta, a, V, gamma, n_exp, M, N, n_total, avg_start, initial, record_from,
+         a_x, phase_x, holder):
     """One run. Returns the trapezoid sums of sum_i f_i and sum_i n_i over the averaging
     window, their per-period sums and, from step ``record_from`` on, every spring's f_i
-    and n_i (arrays (steps, M))."""
+    and n_i (arrays (steps, M)). ``a_x``, ``phase_x``: the in-plane oscillation ``X``, of
+    the holder if ``holder`` else of the substrate (module docstring)."""
     k = beta - alpha
     flat = math.isinf(n_exp)
     xi_max = 1.0 if flat else (1.0 + a) ** (1.0 / n_exp)
@@ -89,14 +99,30 @@ def _row(alpha, beta, a, V, gamma, n_exp, M, N, n_total, avg_start, initial, rec
         sf += 0.5 * F
         sn += 0.5 * Ntot
     c_old = 1.0
+    # X and X' at the step's start (the holder's, or the substrate's position)
+    Xh0, Xhd0, Xs0 = 0.0, 0.0, 0.0
+    if a_x > 0.0:
+        if holder:
+            Xh0, Xhd0 = a_x * math.cos(phase_x), -a_x * math.sin(phase_x)
+        else:
+            Xs0 = a_x * math.cos(phase_x)
     for m in range(n_total):
         c_old = 1.0 + a * math.cos((m % N) * dt)
         c_new = 1.0 + a * math.cos(((m + 1) % N) * dt)
+        Xh1, Xhd1, Xs1 = 0.0, 0.0, 0.0
+        if a_x > 0.0:
+            ph = ((m + 1) % N) * dt + phase_x
+            if holder:
+                Xh1, Xhd1 = a_x * math.cos(ph), -a_x * math.sin(ph)
+            else:
+                Xs1 = a_x * math.cos(ph)
         F_prev = F
         N_prev = Ntot
-        vh = v + 0.5 * dt * (-alpha * y - gamma * v - F)
+        # the pin: alpha (V tau + X_h - x) + gamma (V + X_h' - x'), y = x - V tau, v = y'
+        vh = v + 0.5 * dt * (alpha * (Xh0 - y) + gamma * (Xhd0 - v) - F)
         y += dt * vh
-        dx = dt * (vh + V)
+        # the body's displacement over the step relative to the substrate
+        dx = dt * (vh + V) - (Xs1 - Xs0)
         F = 0.0
         Ntot = 0.0
         rec = record_from >= 0 and m + 1 >= record_from
@@ -123,7 +149,8 @@ def _row(alpha, beta, a, V, gamma, n_exp, M, N, n_total, avg_start, initial, rec
             if rec:
                 rec_f[m + 1 - record_from, i] = ftr
                 rec_n[m + 1 - record_from, i] = lim
-        v = (vh + 0.5 * dt * (-alpha * y - F)) / (1.0 + 0.5 * dt * gamma)
+        v = (vh + 0.5 * dt * (alpha * (Xh1 - y) + gamma * Xhd1 - F)) / (1.0 + 0.5 * dt * gamma)
+        Xh0, Xhd0, Xs0 = Xh1, Xhd1, Xs1
         step = m + 1
         if step > avg_start:
             w = 0.5 if step == n_total else 1.0
@@ -155,6 +182,17 @@ def _check(alpha, beta, amplitude, V, profile_exponent, zeta):
             raise ValueError(f"{name} must be in [0, inf), got {value}")
         out.append(value)
     return out
+
+
+def _check_inplane(a_x, phase_x, inplane_on):
+    a_x, phase_x = float(a_x), float(phase_x)
+    if not (math.isfinite(a_x) and a_x >= 0.0):
+        raise ValueError(f"a_x must be in [0, inf) (finite and >= 0), got {a_x}")
+    if not math.isfinite(phase_x):
+        raise ValueError(f"phase_x must be a finite number, got {phase_x}")
+    if inplane_on not in ("substrate", "holder"):
+        raise ValueError(f"inplane_on must be 'substrate' or 'holder', got {inplane_on!r}")
+    return a_x, phase_x, inplane_on == "holder"
 
 
 def _steps(alpha, beta, steps_per_period):
@@ -190,18 +228,23 @@ def mdr_mean(alpha: float, beta: float, amplitude: float, V: float,
              profile_exponent: float = math.inf, springs: int = 200,
              steps_per_period: float = 400, transient_periods: int = 200,
              average_periods: int = 50, initial: int | str = INITIAL_SLIDING,
-             zeta: float = 0.0, record_last_period: bool = False) -> MDRMean:
+             zeta: float = 0.0, record_last_period: bool = False, *, a_x: float = 0.0,
+             phase_x: float = 0.0, inplane_on: str = "substrate") -> MDRMean:
     """One fixed-resolution run of the MDR spring row (module docstring), scaled.
 
     ``profile_exponent`` ``n`` of ``z = c r^n`` (``math.inf``: flat punch), ``springs``
     on ``(0, (1 + a)^{1/n}]``, ``steps_per_period`` per period of the fastest of the drive,
     ``sqrt(alpha)`` and ``sqrt(beta)`` (rounded up to whole steps per drive period),
     ``zeta`` the pin's damping ratio. Initial ``"sliding"`` (``x = -1/alpha``,
-    ``x' = V``, every loaded spring at its friction limit at ``d0``) or ``"rest"``.
-    ValueError naming a parameter outside its range (``beta`` finite and ``> alpha``).
+    ``x' = V``, every loaded spring at its friction limit at ``d0``; laboratory frame) or
+    ``"rest"``. ``a_x``, ``phase_x``, ``inplane_on``: the longitudinal in-plane
+    oscillation ``a_x cos(tau + phase_x)`` of the substrate or the holder (module
+    docstring), switched on at ``tau = 0``. ValueError naming a parameter outside its
+    range (``beta`` finite and ``> alpha``).
     """
     alpha, beta, amplitude, V, n_exp, zeta = _check(alpha, beta, amplitude, V,
                                                     profile_exponent, zeta)
+    a_x, phase_x, holder = _check_inplane(a_x, phase_x, inplane_on)
     M = check_count("springs", springs, 1)
     transient_periods, average_periods = check_windows(transient_periods, average_periods)
     N = _steps(alpha, beta, steps_per_period)
@@ -210,7 +253,8 @@ def mdr_mean(alpha: float, beta: float, amplitude: float, V: float,
     record_from = n_total - N if record_last_period else -1
     gamma = 2.0 * zeta * math.sqrt(alpha)
     sf, sn, pf, pn, rf, rn = _row(alpha, beta, amplitude, V, gamma, n_exp, M, N, n_total,
-                                  avg_start, initial_code(initial), record_from)
+                                  avg_start, initial_code(initial), record_from, a_x,
+                                  phase_x, holder)
     steps = n_total - avg_start
     return MDRMean(sf / sn, sn / steps, pf / N, pn / N, M, N,
                    rf if record_last_period else None, rn if record_last_period else None)
@@ -233,12 +277,16 @@ def mdr_reference(alpha: float, beta: float, amplitude: float, V: float,
                   resolutions: tuple[tuple[int, float], tuple[int, float]] = ((100, 200),
                                                                                (200, 400)),
                   transient_periods: int = 200, average_periods: int = 50,
-                  initial: int | str = INITIAL_SLIDING, zeta: float = 0.0) -> MDRReference:
+                  initial: int | str = INITIAL_SLIDING, zeta: float = 0.0, *,
+                  a_x: float = 0.0, phase_x: float = 0.0,
+                  inplane_on: str = "substrate") -> MDRReference:
     """The row at two resolutions ``(springs, steps_per_period)``; the second is reported,
     and the error bar is ``|fine - coarse|`` (for a second-order scheme refined by 2, three
-    times the fine run's own error, measured in docs/contact_geometry.md)."""
+    times the fine run's own error, measured in docs/contact_geometry.md). ``a_x``,
+    ``phase_x``, ``inplane_on`` as in :func:`mdr_mean`."""
     runs = tuple(mdr_mean(alpha, beta, amplitude, V, profile_exponent, springs, steps,
-                          transient_periods, average_periods, initial, zeta)
+                          transient_periods, average_periods, initial, zeta, a_x=a_x,
+                          phase_x=phase_x, inplane_on=inplane_on)
                  for springs, steps in resolutions)
     if len(runs) != 2:
         raise ValueError(f"resolutions must be two (springs, steps_per_period) pairs, "

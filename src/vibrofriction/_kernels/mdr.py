@@ -27,6 +27,18 @@ package's basis (:mod:`.basis`: free motion, periodic response or, near the reso
 * lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
   down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
 
+A longitudinal in-plane oscillation ``X = a_x cos(tau + phase_x)`` (issue 20,
+docs/inplane.md) enters as in the single-spring kernels (:func:`.phases.inplane_forcing`):
+the body is described in the substrate's frame (``y`` relative to the substrate, where a
+stuck spring's contact point is at rest), and the body ODE gains the force
+``h = hc cos tau + hs sin tau`` (substrate: ``(1 - alpha) X - gamma X'``, the frame's
+inertial force and the pin's spring and dashpot pulling on ``x = y + X``; holder: ``alpha X
++ gamma X'``). In that frame a stuck spring's elongation is still ``e_i0 + (y - y0) + V t``
+(the substrate carries its contact point), the slip velocity ``y' + V`` is relative to the
+substrate, and the four group functions below are unchanged; ``h`` is at the drive
+frequency, so it joins ``S_w a cos tau`` in the periodic response of the closed form, and
+its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
+
 These four group functions are scanned on sub-steps of the segment (at most
 ``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
 method to round-off, and the earliest root ends the segment (a scan costs O(1), not
@@ -87,8 +99,9 @@ def normal_integral_row(a, g, w, tau_off):
 
 
 @jit
-def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
-    """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode."""
+def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
+    """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode; ``hc``,
+    ``hs`` the in-plane force ``h = hc cos tau + hs sin tau`` on the body (0: none)."""
     w0sq = alpha + K
     m = make_mode(w0sq, 0.5 * gamma, 0.0)
     c0 = -(E0 - K * y0) - Sw + Swg
@@ -96,12 +109,19 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta):
     cc = -Sw * a
     p1 = c1 / w0sq
     p0 = (c0 - gamma * p1) / w0sq
+    # the harmonic forces at the drive frequency, Re(W e^{it}), W = wr + i wi
     wr = cc * math.cos(theta)
     wi = cc * math.sin(theta)
+    forced = hc != 0.0 or hs != 0.0
+    if forced:  # h(theta + t) = (hc cos + hs sin) cos t - (hc sin - hs cos) sin t
+        ct = math.cos(theta)
+        sn = math.sin(theta)
+        wr += hc * ct + hs * sn
+        wi += hc * sn - hs * ct
     near = False
     zr = 0.0
     zi = 0.0
-    if cc != 0.0:
+    if cc != 0.0 or forced:
         zr, zi, near = _periodic_response(m, wr, wi)
     if not near:
         D, E = initial_pair(m, y0 - p0 - zr, yd0 - p1 + zi)
@@ -154,10 +174,11 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa,
 
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
-                state_tol, y, yd, st, e):
+                state_tol, y, yd, st, e, hc=0.0, hs=0.0):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
     (modified in place) until the section state repeats within ``state_tol`` (relative to
-    its size) after at least ``min_periods``, or ``max_periods``.
+    its size) after at least ``min_periods``, or ``max_periods``. ``hc``, ``hs``: the
+    in-plane force on the body (module docstring; ``y`` then relative to the substrate).
 
     The scanned events come in four groups, each decided by one function of time
     (:func:`_group_value`): every stuck spring's margin is a common function of time minus
@@ -168,7 +189,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     round-off distances, is what keeps the event count per period bounded.
 
     Returns ``(periods, converged, pf, pn, frac, viol, events, y, yd)``: the per-period
-    integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``) and
+    integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``, the
+    in-plane force integrating to 0 over a period) and
     of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
     contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
     number of events of the last period (``-1``: no progress) and the final body state.
@@ -253,7 +275,7 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                         gfresh[2] = True
                     elif s == SLIP_NEG:
                         gfresh[3] = True
-            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta)
+            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
             dc = derivative(c, m)
             cs = c[6] != 0.0 or c[7] != 0.0
             # the known contact events and the section bound the segment

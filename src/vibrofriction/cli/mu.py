@@ -48,7 +48,8 @@ def mu_command(
     profile_exponent: Annotated[str, typer.Option(
         "--profile-exponent", help="exponent n of the pin's tip z = c r^n: 'inf' the flat "
         "punch (default), 2 a sphere, 1 a cone (the MDR solver, docs/contact_geometry.md: "
-        "slow, with --v-inertial or --v0)")] = "inf",
+        "slow, with --v-inertial or --v0; takes --a-x, --phase-x, --inplane-on at a "
+        "velocity != 0, not --eta-c or --a-y)")] = "inf",
     vbar: Annotated[str | None, typer.Option(help="v0/v0* (eq. 16); comma-separated list "
                                              "allowed")] = None,
     v_inertial: Annotated[str | None, typer.Option(
@@ -208,9 +209,9 @@ def _print(system: Dimensionless, results, as_json: bool) -> None:
                           if getattr(system, "a_" + c) > 0)
         if system.a_y > 0 and (system.alpha_y, system.zeta_y) != (None, None):
             inplane += " alpha_y={:g} zeta_y={:g}".format(*system.pin_y)
-        if inplane:
-            inplane += (f" on the {system.inplane_on} (critical velocity "
-                        f"{system.critical_inertial_velocity():.5g})")
+        if inplane:  # the critical velocity of a curved profile is not derived
+            inplane += f" on the {system.inplane_on}" + ("" if system.curved else (
+                f" (critical velocity {system.critical_inertial_velocity():.5g})"))
         profile = f" profile_exponent={system.profile_exponent:g}" if system.curved else ""
         typer.echo(f"alpha={system.alpha:g} beta={system.beta:g} amplitude={system.amplitude:g}"
                    f"{damping}{inplane}{profile} case {system.case.value}")

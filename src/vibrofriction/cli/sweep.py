@@ -47,8 +47,9 @@ def sweep_command(
         "--phase-y", help=f"its phase, rad (default 0; physical sweeps too); {_AXIS}")] = None,
     profile_exponent: Annotated[str | None, typer.Option(
         "--profile-exponent", help=f"exponent n of the tip z = c r^n (default inf: the flat "
-        f"punch; 2 a sphere, 1 a cone: the MDR solver, slow; physical sweeps too; "
-        f"docs/contact_geometry.md); {_AXIS}")] = None,
+        f"punch; 2 a sphere, 1 a cone: the MDR solver, slow; with --a-x at velocities "
+        f"!= 0, not with --eta-c or --a-y; physical sweeps too; docs/contact_geometry.md); "
+        f"{_AXIS}")] = None,
     inplane_on: Annotated[str, typer.Option(
         "--inplane-on", help="where the in-plane oscillation is imposed: substrate or "
         "holder")] = "substrate",

@@ -142,9 +142,11 @@ def solve_points(
     A curved tip (finite ``profile_exponent``) is solved point by point by the MDR solver
     (:func:`vibrofriction.solver.mdr.mdr_friction` with ``tol = settings.tol_trusted``;
     :func:`_mdr_rows`): milliseconds to a tenth of a second a point, from the
-    ``"sliding"`` start only, and not yet with ``eta_c > 0``, ``a_x > 0``, ``a_y > 0`` or
-    ``beta = inf`` (ValueError naming them).  ``mean_normal_ratio`` (the closed form of the
-    imposed indentation) and the area fractions ``stick_area_fraction``,
+    ``"sliding"`` start only, with a longitudinal in-plane oscillation (``a_x``,
+    ``phase_x``, ``inplane_on``) at ``V != 0``, and not yet with ``eta_c > 0``,
+    ``a_y > 0``, ``beta = inf`` or ``a_x > 0`` at ``V = 0`` (ValueError naming them).
+    ``mean_normal_ratio`` (the closed form of the imposed indentation) and the area
+    fractions ``stick_area_fraction``,
     ``slip_area_fraction``, ``open_area_fraction`` are given at every point.
     """
     settings = settings or DEFAULT_SETTINGS
@@ -182,7 +184,7 @@ def solve_points(
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     # V = 0 with an in-plane oscillation is integrated like any moving point; "sliding"
     # has no direction there and is the rest, as in the reference (docs/inplane.md)
-    at_zero = (V == 0.0) & (ax > 0.0) & ~plane
+    at_zero = (V == 0.0) & (ax > 0.0) & ~plane & ~curved
     for rows, k in ((plane, kind), ((V > 0.0) & ~plane & ~curved, kind),
                     (at_zero, 1 if kind == 0 else kind)):
         idx = np.flatnonzero(rows)
@@ -207,7 +209,7 @@ def solve_points(
         out_i[idx] = oi
     _contact_columns(out_f, am, ~curved)
     if np.any(curved):
-        _mdr_rows(out_f, out_i, curved, al, be, am, V, ze, pe, settings)
+        _mdr_rows(out_f, out_i, curved, al, be, am, V, ze, pe, settings, ax, px, inplane_on)
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
     _held(out_f, out_i, at_zero, al, be, am, ze, et, ax, px, inplane_on)
@@ -342,7 +344,6 @@ def _check_curved(curved: NDArray[np.bool_], al: NDArray[np.float64],
     for name, values, bad, what in (
             ("beta", be, np.isinf(be), "a rigid contact (beta = inf)"),
             ("eta_c", et, et > 0.0, "contact damping (eta_c > 0)"),
-            ("a_x", ax, ax > 0.0, "a longitudinal in-plane oscillation (a_x > 0)"),
             ("a_y", ay, ay > 0.0, "a transverse in-plane oscillation (a_y > 0)")):
         hit = curved & bad
         if np.any(hit):
@@ -350,6 +351,14 @@ def _check_curved(curved: NDArray[np.bool_], al: NDArray[np.float64],
             raise ValueError(f"a curved profile (profile_exponent = {float(pe[i])!r}) is "
                              f"computed by the MDR solver, which does not take {what} yet: "
                              f"got {name} = {float(values[i])!r}")
+    hit = curved & (ax > 0.0) & (V == 0.0)
+    if np.any(hit):
+        i = int(np.flatnonzero(hit)[0])
+        raise ValueError(f"a curved profile (profile_exponent = {float(pe[i])!r}) with a "
+                         f"longitudinal in-plane oscillation (a_x = {float(ax[i])!r}) at "
+                         "v_inertial = 0 is not covered by the MDR solver: springs that "
+                         "stick through whole cycles keep the elongation of the start, so "
+                         "the steady state depends on it; give a velocity != 0")
     if not (isinstance(initial, str) and initial == "sliding") \
             and np.any(curved & (V != 0.0)):
         raise ValueError(f"initial = {initial!r}: a curved profile (profile_exponent "
@@ -365,9 +374,12 @@ _MDR_STATUS = {"periodic": Status.PERIODIC, "averaged": Status.AVERAGED,
 def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np.bool_],
               al: NDArray[np.float64], be: NDArray[np.float64], am: NDArray[np.float64],
               V: NDArray[np.float64], ze: NDArray[np.float64], pe: NDArray[np.float64],
-              settings: SolverSettings) -> None:
+              settings: SolverSettings, ax: NDArray[np.float64] | None = None,
+              px: NDArray[np.float64] | None = None, inplane_on: str = "substrate") -> None:
     """Fill the rows of the curved-profile points (``V >= 0``: a backward point is mirrored
-    by the caller) by the MDR solver, or at ``V = 0`` by the static limit
+    by the caller, ``phase_x`` with it) by the MDR solver, with the longitudinal in-plane
+    oscillation ``ax``, ``px`` (None: none) of ``inplane_on``, or at ``V = 0`` (without
+    one: refused by :func:`_check_curved`) by the static limit
     :func:`theory.profile_static_mu_ratio`.
 
     Status: MDR ``"periodic"`` (the section state of the finer row repeats after one
@@ -396,7 +408,8 @@ def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArra
             out_i[i, c("status")] = Status.STATIC.code
             continue
         r = mdr_friction(al[i], be[i], am[i], V[i], pe[i], zeta=ze[i],
-                         tol=settings.tol_trusted)
+                         tol=settings.tol_trusted, a_x=0.0 if ax is None else ax[i],
+                         phase_x=0.0 if px is None else px[i], inplane_on=inplane_on)
         status = _MDR_STATUS[r["status"]]
         mu, err = r["mu_ratio"], r["error"]
         if status is Status.NOT_CONVERGED:

@@ -15,6 +15,7 @@ import math
 import numpy as np
 
 from .._kernels.mdr import STICK, row_geometry, run_periods
+from .._kernels.phases import frame_offset, inplane_forcing
 
 __all__ = ["mdr_friction", "mdr_row"]
 
@@ -29,17 +30,25 @@ SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up aft
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
-           zeta: float) -> None:
+           zeta: float, a_x: float = 0.0, phase_x: float = 0.0,
+           inplane_on: str = "substrate") -> None:
     for name, value in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude), ("V", V),
-                        ("zeta", zeta)):
+                        ("zeta", zeta), ("a_x", a_x), ("phase_x", phase_x)):
         if not math.isfinite(value):
             raise ValueError(f"{name} must be a finite number, got {value}")
     if not alpha > 0.0:
         raise ValueError(f"alpha must be > 0, got {alpha}")
     if not beta > alpha:
         raise ValueError(f"beta must be > alpha (finite), got {beta}")
-    if amplitude < 0.0 or zeta < 0.0:
-        raise ValueError("amplitude and zeta must be >= 0")
+    if amplitude < 0.0 or zeta < 0.0 or a_x < 0.0:
+        raise ValueError("amplitude, zeta and a_x must be >= 0")
+    if inplane_on not in ("substrate", "holder"):
+        raise ValueError(f"inplane_on must be 'substrate' or 'holder', got {inplane_on!r}")
+    if V == 0.0 and a_x > 0.0:
+        raise ValueError("V = 0 with an in-plane oscillation (a_x > 0) is not covered: "
+                         "springs that stick through whole cycles keep the elongation of "
+                         "the start, so the steady state depends on it (held); the row's "
+                         "period map is iterated only where every spring slips (V > 0)")
     if V < 0.0:
         raise ValueError(f"V must be >= 0 (the mirror V -> -V is not wired yet), got {V}")
     if not (n_exp > 0.0):
@@ -47,17 +56,22 @@ def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
 
 
 def _start(alpha: float, a: float, n_exp: float, M: int,
-           warm: tuple | None) -> tuple[float, float, np.ndarray, np.ndarray]:
+           warm: tuple | None, offset: tuple[float, float] = (0.0, 0.0),
+           ) -> tuple[float, float, np.ndarray, np.ndarray]:
     """Section state to start a row of ``M`` springs from: steady sliding (``y = -sum
-    n_i(0)/alpha``, every loaded spring slipping forwards), or ``warm = (y, y', st, e)``, a
-    converged row of ``M/2`` springs: each spring inherits its parent cell's state (the
-    elongation ``e = f/k`` does not depend on the cell width), a stuck one clipped to its
-    own friction limit at the section."""
+    n_i(0)/alpha``, every loaded spring slipping forwards; in the laboratory frame, so
+    relative to an oscillating substrate ``y - X(0)``, ``y' - X'(0)``: ``offset``), or
+    ``warm = (y, y', st, e)``, a converged row of ``M/2`` springs (the same frame): each
+    spring inherits its parent cell's state (the elongation ``e = f/k`` does not depend on
+    the cell width), a stuck one clipped to its own friction limit at the section."""
     if warm is None:
         g, w, _, _, _, _ = row_geometry(a, n_exp, M)
         st = np.full(M, 2, dtype=np.int64)
         st[w * (1.0 - g) <= 0.0] = 0
-        return -float(np.sum(w * np.maximum(0.0, 1.0 - g))) / alpha, 0.0, st, np.zeros(M)
+        y = -float(np.sum(w * np.maximum(0.0, 1.0 - g))) / alpha
+        if offset[0] != 0.0 or offset[1] != 0.0:
+            return y - offset[0], -offset[1], st, np.zeros(M)
+        return y, 0.0, st, np.zeros(M)
     y, yd, st0, e0 = warm
     parent = np.arange(M) * st0.size // M
     st = st0[parent].copy()
@@ -79,8 +93,14 @@ def _anderson_step(xs: list, gs: list) -> np.ndarray:
 def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_exponent: float,
             n_springs: int, zeta: float = 0.0, state_tol: float = 1e-11,
             substeps: int = SUBSTEPS, max_periods: int = MAX_PERIODS,
-            warm: tuple | None = None, accelerate: bool = True) -> dict:
+            warm: tuple | None = None, accelerate: bool = True, a_x: float = 0.0,
+            phase_x: float = 0.0, inplane_on: str = "substrate") -> dict:
     """Steady state of one row of ``n_springs`` springs (no extrapolation in ``N``).
+
+    ``a_x``, ``phase_x``, ``inplane_on``: the longitudinal in-plane oscillation
+    ``X = a_x cos(tau + phase_x)`` of the substrate or of the holder (docs/inplane.md;
+    :mod:`vibrofriction._kernels.mdr`); on the substrate the section state
+    (``final_state``, ``warm``) is relative to it.
 
     Starts sliding (``y = -sum n_i(0)/alpha``, every spring slipping forwards), or from a
     coarser row's final section state ``warm`` (:func:`_start`), and iterates the period
@@ -97,8 +117,11 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     if M < 1:
         raise ValueError(f"n_springs must be >= 1, got {n_springs}")
     a, n_exp = float(amplitude), float(profile_exponent)
-    y, yd, st, e = _start(alpha, a, n_exp, M, warm)
     gamma = 2.0 * zeta * math.sqrt(alpha)
+    on_substrate = inplane_on == "substrate"
+    hc, hs = inplane_forcing(alpha, gamma, float(a_x), float(phase_x), on_substrate)
+    y, yd, st, e = _start(alpha, a, n_exp, M, warm,
+                          frame_offset(float(a_x), float(phase_x), on_substrate))
     pfs: list[float] = []
     pns: list[float] = []
     periods, conv, events, frac, viol = 0, False, 0, np.zeros(3), -math.inf
@@ -109,7 +132,8 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
         x = np.concatenate(([y, yd], e))
         st_in = st.copy()
         p, c1, pf, pn, frac, v1, events, y, yd = run_periods(
-            alpha, beta, a, V, gamma, n_exp, M, substeps, 1, 1, state_tol, y, yd, st, e)
+            alpha, beta, a, V, gamma, n_exp, M, substeps, 1, 1, state_tol, y, yd, st, e,
+            hc, hs)
         periods += 1
         viol = max(viol, v1)
         if events < 0:
@@ -139,7 +163,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     if not conv and events >= 0:
         p, conv, pf, pn, frac, v1, events, y, yd = run_periods(
             alpha, beta, a, V, gamma, n_exp, M, substeps, min(5, max_periods - periods),
-            max_periods - periods, state_tol, y, yd, st, e)
+            max_periods - periods, state_tol, y, yd, st, e, hc, hs)
         periods += int(p)
         viol = max(viol, v1)
         pfs.extend(pf.tolist())
@@ -167,7 +191,8 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
 
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  profile_exponent: float, zeta: float = 0.0, n_springs: int | None = None,
-                 tol: float = 1e-5) -> dict:
+                 tol: float = 1e-5, a_x: float = 0.0, phase_x: float = 0.0,
+                 inplane_on: str = "substrate") -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
     Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 640
@@ -184,17 +209,22 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     fractions of the disc of the largest contact radius in stick, slip and out of contact
     (of the finer row), ``status`` (``"periodic"``, ``"averaged"``, ``"not converged"``:
     the worse of the two rows) and ``order``.
+
+    ``a_x``, ``phase_x``, ``inplane_on``: a longitudinal in-plane oscillation of the
+    substrate or the holder (:func:`mdr_row`; ``V > 0`` only: ``V = 0`` with ``a_x > 0``
+    is refused, as its steady state depends on the start).
     """
-    alpha, beta, amplitude, V, n_exp, zeta = (float(x) for x in (
-        alpha, beta, amplitude, V, profile_exponent, zeta))
-    _check(alpha, beta, amplitude, V, n_exp, zeta)
+    alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x = (float(x) for x in (
+        alpha, beta, amplitude, V, profile_exponent, zeta, a_x, phase_x))
+    _check(alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x, inplane_on)
+    ip = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
     if math.isinf(n_exp):
-        r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta)
+        r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, **ip)
         r.update(order=math.inf, rows=(1,))
         return r
     N = 20 if n_springs is None else int(n_springs)
-    coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta)
+    coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta, **ip)
     skipped = []
     d_prev = math.nan  # the previous pair's difference
     while True:
@@ -206,7 +236,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         fine = mdr_row(alpha, beta, amplitude, V, n_exp, M, zeta,
                        warm=coarse["final_state"],
                        max_periods=SKIP_PERIODS if periodic_coarse and n_springs is None
-                       and 2 * M <= MAX_SPRINGS else MAX_PERIODS)
+                       and 2 * M <= MAX_SPRINGS else MAX_PERIODS, **ip)
         if periodic_coarse and fine["status"] != "periodic" and n_springs is None \
                 and 2 * M <= MAX_SPRINGS:
             skipped.append(fine)
