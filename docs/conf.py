@@ -77,6 +77,7 @@ sphinx_gallery_conf = {
     # hand them a directory under _build and collect what they wrote
     "reset_argv": "gallery_hooks.reset_argv",
     "image_scrapers": ("gallery_hooks.png_scraper",),
+    "within_subsection_order": "gallery_hooks.ReadmeOrder",
     "download_all_examples": False,
     "remove_config_comments": True,
     "min_reported_time": 0,

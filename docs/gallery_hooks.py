@@ -46,3 +46,20 @@ def png_scraper(block: Any, block_vars: dict[str, Any], gallery_conf: dict[str, 
         seen.add(png.name)
         paths.append(target)
     return figure_rst(paths, gallery_conf["src_dir"]) if paths else ""
+
+
+# the README's order: from a first curve to the bench
+ORDER = ["pin_si_units", "resonant_case_iv", "paper_experiment", "design_oscillation",
+         "fit_pin_on_disk", "atlas_on_dask"]
+
+
+class ReadmeOrder:
+    """sphinx-gallery's ``within_subsection_order``: the examples in :data:`ORDER`, then
+    any other by name."""
+
+    def __init__(self, src_dir: str) -> None:
+        self.src_dir = src_dir
+
+    def __call__(self, filename: str) -> tuple[int, str]:
+        stem = Path(filename).stem
+        return (ORDER.index(stem) if stem in ORDER else len(ORDER), stem)
