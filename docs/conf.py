@@ -103,4 +103,7 @@ html_theme_options = {
     "footer_end": ["sphinx-version"],
 }
 html_show_sourcelink = False
+# pages without sub-pages: no empty "Section Navigation" column
+html_sidebars = {page: [] for page in ("index", "getting_started", "parameters", "changelog",
+                                        "citing", "site")}
 html_last_updated_fmt = None

@@ -271,6 +271,26 @@ def test_no_internal_link_is_broken_and_nothing_loads_from_the_network(site):
     assert external == [], f"resources loaded from the network: {external[:10]}"
 
 
+@pytest.mark.browser
+@pytest.mark.slow
+def test_api_reference_covers_every_public_name(site):
+    """Each public module's page names every entry of its ``__all__``, and each name has
+    one page (where it is defined, or the top level)."""
+    import importlib
+
+    sys.path.insert(0, str(DOCS))
+    try:
+        api_pages = importlib.import_module("api_pages")
+    finally:
+        sys.path.remove(str(DOCS))
+    for module, _ in api_pages.MODULES:
+        text = (site / "api" / f"{module}.html").read_text()
+        for name in importlib.import_module(module).__all__:
+            home = api_pages.home(name, module)
+            assert (site / "api" / "generated" / f"{home}.{name}.html").exists(), (module, name)
+            assert f"{home}.{name}.html" in text, (module, name)
+
+
 def test_getting_started_runs_and_prints_what_it_shows():
     """The ``>>>`` block of docs/getting_started.md, a number to the digits it shows."""
     text = (DOCS / "getting_started.md").read_text()
