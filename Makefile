@@ -3,7 +3,7 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
 
-.PHONY: demo test fast lint bench clean clean-cache browser
+.PHONY: demo test fast lint bench clean clean-cache browser docs
 
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -17,7 +17,15 @@ demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 browser:  ## the distribution's headless Chromium for the explorer's browser tests
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
 
-test: $(BIN)/vibrofriction browser  ## the whole test suite, slow and browser tests included
+$(VENV)/.docs: $(BIN)/vibrofriction pyproject.toml
+	$(BIN)/pip install --quiet -e '.[docs]'
+	touch $@
+
+docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as errors (examples run)
+	$(BIN)/python -m sphinx -b html -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
+	@echo "site: docs/_build/html/index.html"
+
+test: $(BIN)/vibrofriction browser docs  ## the whole test suite, site, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	VIBROFRICTION_BROWSER_TESTS=required $(BIN)/python -m pytest -q
@@ -35,7 +43,7 @@ bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/r
 	$(BIN)/python benchmarks/bench_solver.py
 
 clean:
-	rm -rf $(VENV) $(OUT)
+	rm -rf $(VENV) $(OUT) docs/_build docs/api docs/gallery docs/_generated
 
 clean-cache:  ## numba checks only a kernel's own file: clear the cache after editing _kernels/
 	find src -name '*.nbi' -delete; find src -name '*.nbc' -delete

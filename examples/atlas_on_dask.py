@@ -1,4 +1,7 @@
-"""An atlas over (beta, vbar) on a Dask cluster, stored in zarr, plotted with the package.
+"""An atlas on a Dask cluster
+==========================
+
+An atlas over (beta, vbar) on a Dask cluster, stored in zarr, plotted with the package.
 
 A local cluster of two worker processes stands in for a real one: give
 ``Client("tcp://scheduler:8786")`` instead to use machines (docs/sweeps.md).

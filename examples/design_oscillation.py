@@ -1,4 +1,7 @@
-"""Design the oscillation for a pin: which frequency and amplitude lower friction most at
+"""Design the oscillation for a pin
+================================
+
+Design the oscillation for a pin: which frequency and amplitude lower friction most at
 the operating speed, within the shaker's range and velocity limit, and how sensitive
 the optimum is.
 

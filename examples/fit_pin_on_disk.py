@@ -1,4 +1,7 @@
-"""Fit a (synthetic) pin-on-disk data set at three oscillation amplitudes.
+"""Fit a pin-on-disk data set
+==========================
+
+Fit a (synthetic) pin-on-disk data set at three oscillation amplitudes.
 
 The data are made from a known pin (800 Hz, Q = 50, a steel sphere of 3 mm on steel at
 20 N, driven at 1 kHz) plus measurement noise of 0.003 in the COF; the experimenter knows

@@ -1,4 +1,7 @@
-"""The paper's experiment (Section 7, Figs. 8-9) as a prediction, with stated assumptions.
+"""The paper's experiment as a prediction
+======================================
+
+The paper's experiment (Section 7, Figs. 8-9) as a prediction, with stated assumptions.
 
 Stated by the paper: a pin of about 800 Hz natural frequency driven at that resonance
 (case IV), oscillation amplitudes 1.3, 5.4, 8.2 and 60 um. Assumed here (not stated):

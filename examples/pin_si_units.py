@@ -1,4 +1,7 @@
-"""A pin on a tribometer, in SI units: the coefficient of friction against sliding speed.
+"""A pin in SI units
+=================
+
+A pin on a tribometer, in SI units: the coefficient of friction against sliding speed.
 
 The pin (modal mass 10 g on a 2.5e5 N/m holder: natural frequency 796 Hz) presses on
 the disk through a contact of stiffness 4e5 N/m tangentially and 5e5 N/m normally,

@@ -1,4 +1,7 @@
-"""Case IV: the pin driven at its own resonance (alpha = 1, rigid contact).
+"""Case IV: a pin driven at its resonance
+======================================
+
+Case IV: the pin driven at its own resonance (alpha = 1, rigid contact).
 
 The critical velocity of eq. (12) is infinite there, so friction stays below mu0 at
 every sliding speed and tends to a plateau. The exact plateau follows from the

@@ -13,6 +13,7 @@ import pytest
 from scipy.integrate import quad
 
 import vibrofriction as vf
+from vibrofriction import theory
 from vibrofriction._kernels.steady import steady_state_many
 from vibrofriction.contact import Cone, FlatPunch, Material, PowerLaw, Sphere
 from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, column_index
@@ -237,15 +238,13 @@ def test_curved_refusals_elsewhere():
                                  contact_model="mdr", du_z=1e-7)
     with pytest.raises(ValueError, match="fit and the design"):
         pin.point_arguments(0.01, 1e-7, pin.omega)
-    with pytest.raises(ValueError, match="critical velocity"):
-        pin.critical_velocity()
     with pytest.raises(ValueError, match="dF_N"):
         pin.dF_N  # noqa: B018
 
 
 @pytest.mark.parametrize("kwargs, needle", [
     (dict(contact_model="hertz"), "contact_model"),
-    (dict(normal_control="dead_weight"), "not built yet"),
+    (dict(normal_control="dead_weight", du_z=1e-5), "too large for the dead weight"),
     (dict(normal_control="load"), "normal_control"),
     (dict(contact=None, k_zc=1e7, k_xc=1e7), "contact_model='mdr' needs a contact"),
     (dict(du_z=None, dF_N=5.0), "dF_N"),
@@ -264,10 +263,28 @@ def test_sweep_axis_profile_exponent():
     assert mu.sel(profile_exponent=math.inf) == solve_points(0.5, 2.0, 0.5, 0.3)["mu_ratio"]
     assert mu.sel(profile_exponent=2.0) == mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0)["mu_ratio"]
     assert "mean_normal_ratio" in ds and "stick_area_fraction" in ds
-    assert math.isnan(float(ds["critical_velocity"].sel(profile_exponent=2.0)))
-    with pytest.raises(ValueError, match="profile_exponent"):
-        vf.sweep(alpha=0.5, beta=2.0, amplitude=0.5, profile_exponent=[2.0],
-                 vbar=[0.3], workers=1, progress=False)
+    # the curved row's critical velocity is the derived one (theory), the flat row's eq. 12
+    assert float(ds["critical_velocity"].sel(profile_exponent=2.0)) == \
+        theory.profile_critical_velocity(0.5, 2.0, 0.5, 2.0)
+    assert float(ds["critical_velocity"].sel(profile_exponent=math.inf)) == \
+        pytest.approx(theory.critical_inertial_velocity(0.5, 2.0, 0.5), rel=1e-12)
+
+
+def test_sweep_curved_store_resumes_without_recomputing(tmp_path, monkeypatch):
+    """A finished store with curved rows verifies as done on resume: nothing is solved again
+    (a nan critical velocity, where none is derived, must not mark its block unwritten)."""
+    import vibrofriction.sweep._compute as compute
+
+    kw = dict(alpha=0.5, beta=2.0, amplitude=0.5, profile_exponent=[2.0, 3.0],
+              v_inertial=[0.3], workers=1, progress=False, store=tmp_path / "curved.zarr")
+    first = vf.sweep(**kw)
+
+    def no_solving(*args, **kwargs):
+        raise AssertionError("a finished block was solved again")
+
+    monkeypatch.setattr(compute, "solve_points", no_solving)
+    again = vf.sweep(**kw)
+    assert np.array_equal(again["mu_ratio"].values, first["mu_ratio"].values)
 
 
 def _cli(*args):

@@ -17,7 +17,7 @@ import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -35,6 +35,10 @@ FloatOrArray = float | NDArray[np.float64]
 #: How :meth:`Physical.from_bench` models a contact geometry: one linear spring at the
 #: load (the default), or the full contact by the method of dimensionality reduction.
 CONTACT_MODELS = ("linearised", "mdr")
+
+#: How :meth:`Physical.from_bench` sets the mean indentation: the load at the mean
+#: indentation (the indentation imposed), or the mean load over the cycle (a dead weight).
+NORMAL_CONTROLS = ("indentation", "dead_weight")
 
 
 # --------------------------------------------------------------------------- validation
@@ -311,8 +315,9 @@ class Dimensionless:
 
     def _check_flat(self, what: str) -> None:
         if self.curved:
-            raise ValueError(f"{what} is not derived for a curved profile yet "
-                             f"(profile_exponent = {self.profile_exponent!r}; "
+            raise ValueError(f"{what} is not wired for a curved profile yet "
+                             f"(profile_exponent = {self.profile_exponent!r}; its critical "
+                             "velocity is critical_inertial_velocity(), "
                              "docs/contact_geometry.md): use the inertial velocity v_inertial")
 
     def critical_inertial_velocity(self) -> float:
@@ -327,9 +332,18 @@ class Dimensionless:
         ``|V|`` above the same expression at ``phase_x + pi``.  With a transverse
         oscillation (``a_y > 0``) ``inf``: the friction force turns with the slip
         velocity and is below ``mu0`` at every velocity (the kinematic law,
-        docs/inplane.md section 1).
+        docs/inplane.md section 1).  A curved profile (finite ``profile_exponent``, MDR):
+        ``theory.profile_critical_velocity`` (the total normal force is not harmonic;
+        docs/contact_geometry.md), refused with ``eta_c``, ``a_x`` or ``a_y`` > 0.
         """
-        self._check_flat("the critical velocity (eq. 12)")
+        if self.curved:
+            for name, value in (("eta_c", self.eta_c), ("a_x", self.a_x), ("a_y", self.a_y)):
+                if value > 0.0:
+                    raise ValueError(f"the critical velocity of a curved profile is derived "
+                                     f"without {name} (got {name} = {value!r}; "
+                                     "docs/contact_geometry.md)")
+            return float(theory.profile_critical_velocity(
+                self.alpha, self.beta, self.amplitude, self.profile_exponent, self.zeta))
         if self.a_y > 0.0:
             return math.inf
         return float(theory.critical_inertial_velocity(
@@ -438,6 +452,12 @@ class Physical:
     profile_exponent: float = math.inf
     inplane_on: str = "substrate"
 
+    #: How :meth:`from_bench` set ``u_z0`` from its load (not a field: the model is the
+    #: imposed indentation about ``u_z0`` either way, and a copy made by :meth:`with_` is
+    #: ``"indentation"`` again): ``"indentation"`` (``F(u_z0)`` is the load) or
+    #: ``"dead_weight"`` (:attr:`mean_normal_force` is the load).
+    normal_control: ClassVar[str] = "indentation"
+
     def __post_init__(self) -> None:
         _validate_fields(self, "physical")
         checked_choice("inplane_on", self.inplane_on)
@@ -478,9 +498,19 @@ class Physical:
           with ``F(d0) = normal_load``, its contact radius ``a0``, ``k_xc = 2 G* a0``,
           ``k_zc = 2 E* a0`` and ``profile_exponent = n``; a flat punch gives the
           linearised model exactly); optionally its loss factor ``eta_c``;
-        * ``normal_control``: ``"indentation"`` (the only one built: the indentation
-          ``d0 + du_z cos(omega t)`` is imposed, ``normal_load`` is the load at ``d0``);
-          ``"dead_weight"`` (the mean load imposed) is refused, not built yet;
+        * ``normal_control``, how ``normal_load`` sets the mean indentation ``d0`` of the
+          imposed indentation ``d0 + du_z cos(omega t)``: ``"indentation"`` (the default,
+          as before: ``normal_load`` is the force at ``d0``, ``F(d0)``) or
+          ``"dead_weight"`` (``normal_load`` is the mean force over the cycle,
+          ``<F(d0 + du_z cos)> = normal_load``: ``d0`` by
+          :func:`~vibrofriction.theory.dead_weight_indentation`, Brent's method; lower
+          than the static ``d0`` for a curved MDR contact, and for any contact that
+          jumps; the same where a flat or linearised one does not). Both contact models,
+          the flat punch included; the MDR contact's stiffnesses are taken at the new
+          ``d0``, the linearised one's at ``normal_load``. The system records it as
+          :attr:`normal_control` and its mean force as :attr:`mean_normal_force`;
+          ValueError where the oscillation is so large that no ``d0 > 0`` carries the
+          load on average;
         * the load ``normal_load = F_N0`` (N), the drive frequency (Hz) and the
           oscillation as an indentation amplitude ``du_z`` (m) or a normal-force
           amplitude ``dF_N`` (N, ``= k_zc du_z``); ``mu0`` (a guess when it is fitted);
@@ -508,13 +538,9 @@ class Physical:
         if contact_model not in CONTACT_MODELS:
             raise ValueError(f"contact_model must be one of {', '.join(map(repr, CONTACT_MODELS))}"
                              f", got {contact_model!r}")
-        if normal_control != "indentation":
-            if normal_control == "dead_weight":
-                raise ValueError("normal_control='dead_weight' (the mean load imposed) is not "
-                                 "built yet: only 'indentation' (imposed indentation, "
-                                 "normal_load at the mean indentation) is")
-            raise ValueError(f"normal_control must be 'indentation' ('dead_weight' is not "
-                             f"built yet), got {normal_control!r}")
+        if normal_control not in NORMAL_CONTROLS:
+            raise ValueError(f"normal_control must be one of "
+                             f"{', '.join(map(repr, NORMAL_CONTROLS))}, got {normal_control!r}")
         exponent = math.inf
         if contact is not None:
             if k_zc is not None or k_xc is not None:
@@ -547,6 +573,15 @@ class Physical:
                              "du_z (m)")
         du_z = _valid("du_z", du_z) if du_z is not None else \
             float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
+        if normal_control == "dead_weight":  # the mean force over the cycle is the load
+            try:
+                u_z0 *= float(theory.dead_weight_indentation(du_z / u_z0, exponent))
+            except ValueError as exc:
+                raise ValueError(f"normal_control='dead_weight', du_z = {du_z!r} m: "
+                                 f"{exc}") from None
+            if exponent != math.inf:  # the MDR contact's stiffnesses at the new d0
+                k_zc = float(contact.normal_stiffness(u_z0))
+                k_xc = float(contact.tangential_stiffness(u_z0))
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=u_z0, du_z=du_z,
                      omega=2.0 * math.pi * f_d, mu0=mu0, du_x=du_x, phase_x=phase_x,
                      du_y=du_y, phase_y=phase_y, profile_exponent=exponent,
@@ -561,6 +596,7 @@ class Physical:
             system = system.with_damping(zeta=damping_ratio, quality_factor=quality_factor)
         if eta_c:
             system = system.with_damping(eta_c=eta_c)
+        object.__setattr__(system, "normal_control", normal_control)
         return system
 
     @classmethod
@@ -616,6 +652,15 @@ class Physical:
             n = self.profile_exponent
             return self.k_zc * self.u_z0 * n / (n + 1.0)
         return self.k_zc * self.u_z0
+
+    @property
+    def mean_normal_force(self) -> float:
+        """Mean normal force over the cycle, N: ``F_N0 <F(u_z0 + du_z cos)>/F(u_z0)``,
+        ``F_N0`` times :func:`~vibrofriction.theory.profile_mean_normal_force` of
+        ``a = du_z/u_z0`` (a linear contact: :func:`~vibrofriction.theory.mean_normal_force`,
+        ``F_N0`` unless it jumps); the load of a dead weight (:meth:`from_bench`)."""
+        a = self.du_z / self.u_z0
+        return self.F_N0 * float(theory.profile_mean_normal_force(a, self.profile_exponent))
 
     @property
     def dF_N(self) -> float:
@@ -740,10 +785,10 @@ class Physical:
         (case III) or ``du_z = 0``; ``k_xc = inf`` gives ``mu0 omega du_z k_zc /
         |k_x - m omega^2 + i omega c_x|``.  With a longitudinal in-plane oscillation
         (``du_x > 0``) the combined drive's (``theory.inplane_critical_velocity`` in m/s,
-        docs/inplane.md).
+        docs/inplane.md).  A curved MDR contact: ``theory.profile_critical_velocity`` in
+        m/s (docs/contact_geometry.md; not with contact damping or an in-plane oscillation).
         """
-        self._check_flat("the critical velocity v0* (eq. 12)")
-        if self.du_x > 0.0 or self.du_y > 0.0:
+        if self.curved or self.du_x > 0.0 or self.du_y > 0.0:
             return float(self.to_dimensionless().critical_inertial_velocity()
                          * self.velocity_unit())
         return float(theory.critical_velocity(self.mu0, self.omega, self.du_z, self.k_zc,

@@ -140,6 +140,7 @@ FIELDS: tuple[Field, ...] = (
           dtype="i8"),
 )
 
+#: Every field by name.
 FIELD: dict[str, Field] = {f.name: f for f in FIELDS}
 RESULT_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "result")
 STATE_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "state")
@@ -397,6 +398,7 @@ PARAMETERS: tuple[Parameter, ...] = (
        "way)", "v0", "Fig. 1b", FINITE),
 )
 
+#: Every model parameter by name.
 PARAMETER: dict[str, Parameter] = {p.name: p for p in PARAMETERS}
 if len(PARAMETER) != len(PARAMETERS) or any(
         any(m not in MODELS for m in p.models)

@@ -60,7 +60,9 @@ __all__ = [
     "kinematic_mu_longitudinal",
     "kinematic_mu_transverse",
     "liftoff_phases",
+    "dead_weight_indentation",
     "mean_normal_force",
+    "profile_critical_velocity",
     "profile_mean_normal_force",
     "profile_static_mu_ratio",
     "mu_ratio_soft",
@@ -1157,3 +1159,195 @@ def mu_ratio_stiff_profile(vbar: ArrayLike, amplitude: ArrayLike,
     a = _valid("amplitude", amplitude)
     n = _exponent(profile_exponent)
     return as_float_or_array(np.vectorize(_stiff_profile, otypes=[float])(v, a, n))
+
+
+def _dead_weight_ratio(A: float, n: float) -> float:
+    """``d0/d_s`` with ``(d0/d_s)^p M(A d_s/d0, n) = 1`` (:func:`dead_weight_indentation`)."""
+    if A == 0.0:
+        return 1.0
+    p = 1.0 if math.isinf(n) else 1.0 + 1.0 / n
+    # at d0 -> 0+ the mean force tends to A^p <max(0, cos tau)^p> (units of the load)
+    floor = A**p * math.exp(math.lgamma(0.5 * p + 0.5) - math.lgamma(0.5 * p + 1.0)) \
+        / (2.0 * math.sqrt(math.pi))
+    if floor >= 1.0 - 1e-12:  # (at the limit itself d0 = 0)
+        limit = floor ** (-1.0 / p) * A
+        raise ValueError(f"the oscillation is too large for the dead weight: the mean force "
+                         f"at zero mean indentation is already {floor:.6g} times the load "
+                         f"(du_z/d_static = {A!r} must be below {limit:.6g}): the mean "
+                         "indentation would be <= 0, which the scaled model (a = du_z/d0) "
+                         "does not cover")
+    if math.isinf(n) and A <= 1.0:  # M = 1 at d0 = d_s: the flat punch does not jump
+        return 1.0
+    from scipy.optimize import brentq
+
+    def excess(r: float) -> float:  # mean force at d0 = r d_s over the load, minus 1
+        return r**p * _profile_mean_force(A / r, n) - 1.0
+
+    lo = 0.5
+    for _ in range(60):  # down to d0 ~ 1e-18 d_s
+        if excess(lo) <= 0.0:
+            return brentq(excess, lo, 1.0, xtol=1e-16, rtol=1e-15, maxiter=200)
+        lo *= 0.5
+    raise ValueError(f"the oscillation is too large for the dead weight: du_z/d_static = "
+                     f"{A!r} is at its limit, where the mean indentation tends to 0")
+
+
+def dead_weight_indentation(static_amplitude: ArrayLike,
+                            profile_exponent: ArrayLike) -> FloatOrArray:
+    r"""The mean indentation ``d0`` under a dead weight, in units of the static one.
+
+    A dead weight imposes the *mean* normal force over the cycle: with the indentation
+    ``d0 + dd cos tau`` and the force ``F(d) = F_s (d/d_s)^p`` of the tip ``z = c r^n``
+    (``p = 1 + 1/n``; ``F(d_s) = F_s``, the load; a linear spring or a flat punch
+    ``p = 1``), ``<F> = F_s (d0/d_s)^p M(dd/d0, n)`` with ``M`` of
+    :func:`profile_mean_normal_force`, so ``r = d0/d_s`` solves
+
+    .. math:: r^p\, M\!\left(\frac{A}{r}, n\right) = 1, \qquad A = \frac{\Delta d}{d_s}
+              \quad (\texttt{static\_amplitude}),
+
+    by Brent's method (``<F>`` grows with ``d0``; ``M >= 1``, so ``r <= 1``). A flat punch
+    that does not jump has ``M = 1`` and ``r = 1`` (the static and the dead-weight
+    indentation agree); a curved tip, or a jumping flat punch, sits higher (``r < 1``).
+    ValueError where no ``d0 > 0`` exists: ``A^p <max(0, cos tau)^p> >= 1`` (``A >= pi``
+    for the flat punch, ``A >= 2.347`` for a sphere): even at ``d0 = 0`` the mean force
+    exceeds the load.
+    """
+    A = checked("static_amplitude", static_amplitude, minimum=0.0)
+    n = _exponent(profile_exponent)
+    return as_float_or_array(np.vectorize(_dead_weight_ratio, otypes=[float])(A, n))
+
+
+#: Points of the period on which the continuous-sliding response is sampled (FFT).
+_SLIDING_GRID = 1 << 15
+
+
+def _force_harmonics(a: float, n: float, N: int = _SLIDING_GRID) -> NDArray[np.float64]:
+    """``c_k``, ``k = 0 .. N/2 - 1``, of ``m(tau) = max(0, 1 + a cos tau)^p = c_0 + sum c_k
+    cos(k tau)`` (``p = 1 + 1/n``): closed form for the flat punch, else by FFT of ``N``
+    samples (the aliasing error of the kink at a jumping contact's lift-off is
+    ``O(N^-(p+1))``)."""
+    K = N // 2
+    c = np.zeros(K)
+    if math.isinf(n):
+        if a <= 1.0:
+            c[0], c[1] = 1.0, a
+            return c
+        th = math.acos(-1.0 / a)
+        k = np.arange(K, dtype=float)
+
+        def S(j: NDArray[np.float64]) -> NDArray[np.float64]:  # int_0^th cos(j t) dt
+            jj = np.where(j == 0.0, 1.0, j)
+            return np.where(j == 0.0, th, np.sin(j * th) / jj)
+
+        c[:] = 2.0 / math.pi * (S(k) + 0.5 * a * (S(np.abs(k - 1.0)) + S(k + 1.0)))
+        c[0] = (th + a * math.sin(th)) / math.pi
+        return c
+    tau = 2.0 * math.pi * np.arange(N) / N
+    m = np.maximum(0.0, 1.0 + a * np.cos(tau)) ** (1.0 + 1.0 / n)
+    C = np.fft.rfft(m)[:K].real / N
+    c[0] = C[0]
+    c[1:] = 2.0 * C[1:]
+    return c
+
+
+def _sliding_rate(c: NDArray[np.float64], alpha: float, beta: float, a: float, p: float,
+                  zeta: float):
+    """``(tau, h on the grid, h)`` of continuous sliding driven by the total normal force
+    ``m = c_0 + sum c_k cos(k tau)`` (``c`` of :func:`_force_harmonics`; grid of
+    ``2 c.size`` points): ``h = -(y_p' + (p a/(beta - alpha)) sin tau)``, so that every
+    spring's slip velocity is ``V - h``; ``None`` where the response is unbounded (undamped
+    ``alpha = k^2`` with a ``k``-th harmonic in the force)."""
+    K = c.size
+    N = 2 * K
+    k = np.arange(K, dtype=float)
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+    D = alpha - k * k + 1j * gamma * k
+    Q = np.zeros(K, dtype=complex)
+    live = k >= 1.0
+    if gamma == 0.0:
+        root = round(math.sqrt(alpha))
+        if 1 <= root < K and root * root == alpha:
+            if abs(c[root]) > 1e-12 * abs(c[0]):
+                return None
+            live &= k != root  # a harmonic the force does not have
+    Q[live] = c[live] * 1j * k[live] / D[live]  # y_p' = -sum Re(Q_k e^{i k tau})
+    drag = 0.0 if math.isinf(beta) else p * a / (beta - alpha)
+    tau = 2.0 * math.pi * np.arange(N) / N
+    X = np.zeros(K + 1, dtype=complex)
+    X[:K] = 0.5 * N * Q
+    h_grid = np.fft.irfft(X, N) - drag * np.sin(tau)
+
+    def h(t: float) -> float:
+        return float(np.real(np.sum(Q * np.exp(1j * k * t)))) - drag * math.sin(t)
+
+    return tau, h_grid, h
+
+
+def _critical_of(c: NDArray[np.float64], alpha: float, beta: float, a: float, p: float,
+                 zeta: float) -> float:
+    """``V_c`` of continuous sliding under the total normal force of harmonics ``c``: the
+    largest ``h`` (:func:`_sliding_rate`) where ``1 + a cos tau > 0`` (the grid's, refined
+    by Brent between its neighbours; the contact's ends for a jumping indenter), 0 if
+    negative."""
+    if a == 0.0:
+        return 0.0
+    out = _sliding_rate(c, alpha, beta, a, p, zeta)
+    if out is None:
+        return math.inf
+    tau, h_grid, h = out
+    th = math.acos(-1.0 / a) if a > 1.0 else math.pi  # contact while |tau| < th
+    t = np.where(tau > math.pi, tau - 2.0 * math.pi, tau)
+    inside = np.abs(t) < th
+    j = int(np.argmax(np.where(inside, h_grid, -np.inf)))
+    from scipy.optimize import minimize_scalar
+
+    step = 2.0 * math.pi / tau.size
+    lo, hi = max(t[j] - step, -th), min(t[j] + step, th)
+    best = minimize_scalar(lambda s: -h(s), bounds=(lo, hi), method="bounded",
+                           options={"xatol": 1e-12})
+    values = [h_grid[j], -best.fun]
+    if a > 1.0:
+        values += [h(th), h(-th)]
+    return max(0.0, max(values))
+
+
+def _profile_critical(alpha: float, beta: float, a: float, n: float, zeta: float,
+                      N: int = _SLIDING_GRID) -> float:
+    p = 1.0 if math.isinf(n) else 1.0 + 1.0 / n
+    return _critical_of(_force_harmonics(a, n, N), alpha, beta, a, p, zeta)
+
+
+def profile_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
+                              profile_exponent: ArrayLike, zeta: ArrayLike = 0.0
+                              ) -> FloatOrArray:
+    r"""Critical inertial velocity of continuous sliding for the tip ``z = c r^n`` (MDR).
+
+    Under continuous forward sliding every spring in contact slips forward, ``f_i = n_i``,
+    so the body ``y = x - V tau`` is driven by the total normal force
+    ``m(tau) = max(0, 1 + a cos tau)^p`` (``p = 1 + 1/n``; units of ``mu0 F_N0``; not
+    harmonic for a curved tip, nor for a jumping flat punch):
+    ``y'' + gamma y' + alpha y = -m``, ``gamma = 2 zeta sqrt(alpha)``, whose periodic
+    solution ``y_p`` is a Fourier series, ``m = sum c_k cos(k tau)``,
+    ``y_p' = -sum c_k Re(i k e^{i k tau}/(alpha - k^2 + i gamma k))``. Every spring has the
+    same slip velocity ``V + y_p' + (p a/(beta - alpha)) sin tau`` (in slip
+    ``x_ci = x - n_i/k_i`` with ``n_i' = -p a sin(tau) dxi``, ``k_i = (beta - alpha) dxi``
+    for every spring in contact), and so does a spring touching
+    down unloaded (it slips from touch-down iff that velocity is positive, else it
+    sticks). Continuous sliding holds iff it is ``>= 0`` wherever some spring is in
+    contact, ``1 + a cos tau > 0``:
+
+    .. math:: V_c = \max_{1 + a\cos\tau > 0}\Big[-y_p'(\tau)
+              - \frac{p\,a}{\beta - \alpha}\sin\tau\Big]
+
+    (0 if negative). The rings that lift off in every cycle change only ``m``; the
+    condition is the innermost spring's. A flat punch without jumping (``n = inf``,
+    ``a <= 1``) gives eq. (12) with pin damping (:func:`critical_inertial_velocity`); a
+    jumping flat punch the true onset, which eq. (12) is not. ``inf`` undamped at
+    ``alpha = k^2`` for every harmonic ``k`` the force has (for a curved tip all of them).
+    ``beta = inf`` drops the last term. Above ``V_c`` ``mu/mu0 = <m>/<m> = 1``.
+    """
+    alpha, beta, a, zeta = validated(
+        {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta}).values()
+    n = _exponent(profile_exponent)
+    return as_float_or_array(np.vectorize(_profile_critical, otypes=[float])(
+        alpha, beta, a, n, zeta))

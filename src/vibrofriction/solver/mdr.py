@@ -200,7 +200,8 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     state); the result is the Richardson extrapolation with order 2,
     ``mu_2N + (mu_2N - mu_N)/3``, and its ``error`` is ``|mu_2N - mu_N|`` (three times the
     Richardson estimate: the convergence is irregular) plus the previous pair's difference
-    ``|mu_N - mu_N/2|`` where there is one, plus both orbits' errors. A row
+    ``|mu_N - mu_N/2|`` (at least three rows, 20, 40 and 80 springs, so there is one),
+    plus both orbits' errors. A row
     that finds no periodic orbit within ``SKIP_PERIODS`` after a periodic one is passed
     over (``skipped_rows``) and the pair becomes ``(N, 4N)`` (extrapolated with ratio 4,
     error still the full difference). The
@@ -249,7 +250,11 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         # n = 2) differ by 3.7e-6 where the extrapolation is 6e-6 off)
         err = abs(d) + (0.0 if math.isnan(d_prev) else abs(d_prev)) \
             + coarse["error"] + fine["error"]
-        if n_springs is not None or err <= tol or M >= MAX_SPRINGS:
+        # and a result needs that second difference: the first pair (20, 40) alone can
+        # agree by chance (measured: 0.73019032 +- 1.3e-6 at (1, 3, 0.6, 0.4, zeta 0.02,
+        # n = 2, holder a_x 0.5, phase_x 0.5) where the converged rows give 0.73019536)
+        if n_springs is not None or (err <= tol and not math.isnan(d_prev)) \
+                or M >= MAX_SPRINGS:
             break
         d_prev = d
         N = M

@@ -114,7 +114,8 @@ _ARRAY = {"float": NDArray[np.float64], "int": NDArray[np.int64], "bool": NDArra
 def _field_doc(f: Field) -> str:
     where = f"; eq. {f.equation}" if f.equation.startswith("(") else ""
     unit = f" [{f.unit}]" if f.unit not in ("", "1") else ""
-    return f"* ``{f.name}``{unit}: {f.long_name}{where}"
+    text = f.long_name.replace("|", "\\|")  # |x| is a substitution in reST
+    return f"* ``{f.name}``{unit}: {text}{where}"
 
 
 _FIELDS_DOC = "\n".join(_field_doc(f) for f in RESULT_FIELDS)

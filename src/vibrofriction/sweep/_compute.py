@@ -13,6 +13,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import math
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -85,19 +86,28 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     shape = p["alpha"].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
     plain = {n: x for n, x in point.items() if n not in ("a_y", "phase_y", "profile_exponent")}
-    critical = np.asarray(theory.critical_inertial_velocity(**plain, inplane_on=plan.inplane_on),
-                          dtype=float).reshape(shape)
+    critical = np.array(theory.critical_inertial_velocity(**plain, inplane_on=plan.inplane_on),
+                        dtype=float).reshape(shape)
     # a transverse oscillation: no continuous sliding at full friction (docs/inplane.md)
     critical = np.where(np.asarray(point["a_y"]).reshape(shape) > 0.0, np.inf, critical)
-    # a curved profile: its critical velocity is not derived yet (docs/contact_geometry.md)
-    critical = np.where(np.isfinite(np.asarray(point["profile_exponent"]).reshape(shape)),
-                        np.nan, critical)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
         system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},
                                inplane_on=plan.inplane_on)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
+        if system.curved:
+            critical[i] = _curved_critical(system.critical_inertial_velocity)
     return point, {"critical_velocity": critical}, V
+
+
+def _curved_critical(critical: Callable[[], float]) -> float:
+    """A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
+    where it is not derived (``eta_c``, ``a_x`` or ``a_y`` > 0: the system refuses by
+    name, docs/contact_geometry.md)."""
+    try:
+        return critical()
+    except ValueError:
+        return math.nan
 
 
 def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
@@ -113,8 +123,8 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
         for n, x in point.items():
             x[i] = getattr(dim, n)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
-        # a curved profile: its critical velocity is not derived yet
-        vstar[i] = math.nan if system.curved else system.critical_velocity()
+        vstar[i] = _curved_critical(system.critical_velocity) if system.curved \
+            else system.critical_velocity()
     return point, {"critical_velocity": vstar, **point}, V
 
 

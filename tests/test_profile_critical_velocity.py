@@ -1,0 +1,154 @@
+"""The critical velocity of continuous sliding for a curved profile (docs/contact_geometry.md,
+"Continuous sliding"): against a time-domain periodic orbit written here, the flat punch's
+eq. (12), the stiff limit, and the solvers just above and just below it."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import vibrofriction as vf
+from vibrofriction import theory
+from vibrofriction.contact import Material, Sphere
+from vibrofriction.solver import solve_points
+from vibrofriction.solver.mdr import mdr_friction
+
+
+def _brute_critical(alpha, beta, a, n, zeta, points=20_001):
+    """Continuous sliding integrated in time: the periodic orbit of y'' + gamma y' +
+    alpha y = -m(tau), m = max(0, 1 + a cos tau)^p, by shooting (the map is affine), then the
+    largest of -(y' + p a sin(tau)/(beta - alpha)) over the phases in contact (the
+    supremum: lift-off and touch-down included)."""
+    p = 1.0 if math.isinf(n) else 1.0 + 1.0 / n
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+
+    def rhs(t, s):
+        m = max(0.0, 1.0 + a * math.cos(t)) ** p
+        return [s[1], -gamma * s[1] - alpha * s[0] - m]
+
+    th = math.acos(-1.0 / a) if a > 1.0 else math.pi
+    cuts = sorted({0.0, th, 2 * math.pi - th, 2 * math.pi})
+
+    def flow(s0, forced=True, dense=False):
+        pieces, s = [], np.asarray(s0, float)
+        for t0, t1 in zip(cuts[:-1], cuts[1:], strict=True):
+            sol = solve_ivp(rhs if forced else (lambda t, s: [s[1], -gamma * s[1] - alpha * s[0]]),
+                            (t0, t1), s, method="DOP853", rtol=1e-12, atol=1e-13,
+                            dense_output=dense)
+            pieces.append(sol)
+            s = sol.y[:, -1]
+        return s, pieces
+
+    xp, _ = flow([0.0, 0.0])
+    phi = np.column_stack([flow(e, forced=False)[0] for e in np.eye(2)])
+    s0 = np.linalg.solve(np.eye(2) - phi, xp)
+    _, pieces = flow(s0, dense=True)
+    drag = p * a / (beta - alpha)
+    best = -math.inf
+    for sol in pieces:
+        t = np.linspace(sol.t[0], sol.t[-1], points)
+        inside = 1.0 + a * np.cos(t) > -1e-12  # the supremum over the contact: its ends
+        h = -(sol.sol(t)[1] + drag * np.sin(t))
+        if inside.any():
+            best = max(best, float(h[inside].max()))
+    return max(best, 0.0)
+
+
+@pytest.mark.parametrize("alpha, beta, a, n, zeta", [
+    (0.5, 2.0, 0.5, 2.0, 0.0),    # sphere, the outer ring lifts off every cycle
+    (0.5, 2.0, 1.5, 2.0, 0.0),    # jumping sphere
+    (1.0, 3.0, 0.7, 1.0, 0.1),    # cone at the pin's resonance, damped
+    (0.01, 40.0, 0.5, 3.0, 0.0),  # soft
+    (2.5, 6.0, 2.5, 0.7, 0.05),   # jumping, n < 1
+    (0.5, 2.0, 1.5, math.inf, 0.0),  # jumping flat punch: not eq. (12)
+])
+def test_profile_critical_velocity_is_the_time_domain_orbits(alpha, beta, a, n, zeta):
+    vc = theory.profile_critical_velocity(alpha, beta, a, n, zeta)
+    assert vc == pytest.approx(_brute_critical(alpha, beta, a, n, zeta), rel=1e-7)
+
+
+@pytest.mark.parametrize("alpha, beta, a, zeta", [
+    (0.5, 2.0, 0.5, 0.0), (0.01, 0.02, 1.0, 0.0), (0.01, 40.0, 0.3, 0.0),
+    (1.2, 3.0, 0.8, 0.0), (1.0, 3.0, 0.7, 0.1), (4.0, 9.0, 0.6, 0.0), (0.3, 5.0, 0.0, 0.0)])
+def test_flat_punch_limit_is_eq_12(alpha, beta, a, zeta):
+    eq12 = theory.critical_inertial_velocity(alpha, beta, a, zeta)
+    assert theory.profile_critical_velocity(alpha, beta, a, math.inf, zeta) == pytest.approx(
+        eq12, rel=1e-12, abs=1e-15)
+    if alpha == 4.0:  # any finite n has a second harmonic: V_c = inf, not uniform in n
+        assert theory.profile_critical_velocity(alpha, beta, a, 1e4, zeta) == math.inf
+        return
+    # z = c r^n tends to the flat punch as n grows, like 1/n
+    d3, d4 = (abs(theory.profile_critical_velocity(alpha, beta, a, n, zeta) - eq12)
+              for n in (1e3, 1e4))
+    assert d4 <= 1e-3 * max(eq12, 1e-300) and (a == 0.0 or 5.0 < d3 / d4 < 20.0)
+
+
+def test_stiff_limit_is_vbar_one_and_resonances():
+    # stiff: V_c (beta - alpha)/(p a) -> 1, the stiff law's onset of sliding for every n
+    for n in (1.0, 2.0, 5.0):
+        p = 1.0 + 1.0 / n
+        for a in (0.5, 1.5):
+            vc = theory.profile_critical_velocity(1e-5, 2e-5, a, n)
+            assert vc * 1e-5 / (p * a) == pytest.approx(1.0, abs=1e-4)
+    # undamped alpha = k^2: a curved tip's force has every harmonic, the flat punch's
+    # (no jumping) only the first
+    assert theory.profile_critical_velocity(4.0, 9.0, 0.5, 2.0) == math.inf
+    assert theory.profile_critical_velocity(1.0, 9.0, 0.5, 2.0) == math.inf
+    assert math.isfinite(theory.profile_critical_velocity(4.0, 9.0, 0.5, math.inf))
+    assert theory.profile_critical_velocity(4.0, 9.0, 1.5, math.inf) == math.inf
+    assert math.isfinite(theory.profile_critical_velocity(4.0, 9.0, 0.5, 2.0, 0.01))
+    assert theory.profile_critical_velocity(0.5, 2.0, 0.0, 2.0) == 0.0
+    with pytest.raises(ValueError, match="profile_exponent"):
+        theory.profile_critical_velocity(0.5, 2.0, 0.5, -1.0)
+
+
+@pytest.mark.parametrize("alpha, beta, a, n, zeta", [
+    (0.5, 2.0, 0.5, 2.0, 0.0), (0.5, 2.0, 1.5, 2.0, 0.0), (1.0, 3.0, 0.7, 1.0, 0.1),
+    (0.01, 40.0, 0.5, 2.0, 0.0), (0.05, 0.1, 0.5, 3.0, 0.5)])
+def test_mdr_solver_slides_continuously_just_above_v_c_only(alpha, beta, a, n, zeta):
+    vc = theory.profile_critical_velocity(alpha, beta, a, n, zeta)
+    above = mdr_friction(alpha, beta, a, 1.001 * vc, n, zeta)
+    below = mdr_friction(alpha, beta, a, 0.999 * vc, n, zeta)
+    assert above["status"] == below["status"] == "periodic"
+    # continuous sliding: f_i = n_i, so <F_x> = mu0 <F_N>
+    assert above["stick_fraction"] == 0.0
+    assert above["mu_ratio"] == pytest.approx(1.0, abs=1e-12)
+    # just below, springs stick; the deficit 1 - mu (~ (V_c - V)^2) can be inside the bar
+    assert below["stick_fraction"] > 1e-3 and below["mu_ratio"] < 1.0 + below["error"]
+    further = mdr_friction(alpha, beta, a, 0.99 * vc, n, zeta)  # 1 - mu grows ~ (V_c - V)^2
+    assert further["mu_ratio"] < 1.0 - 10.0 * further["error"]
+
+
+@pytest.mark.parametrize("alpha, beta, a, zeta", [(0.5, 2.0, 1.5, 0.0), (0.01, 5.3, 1.5, 0.0),
+                                                  (1.2, 3.0, 2.0, 0.05)])
+def test_jumping_flat_punch_onset_is_the_1d_solvers(alpha, beta, a, zeta):
+    vc = theory.profile_critical_velocity(alpha, beta, a, math.inf, zeta)
+    assert abs(vc / theory.critical_inertial_velocity(alpha, beta, a, zeta) - 1.0) > 0.05
+    r = solve_points(alpha, beta, a, np.array([0.999, 1.001]) * vc, zeta)
+    assert r["stick_fraction"][0] > 1e-3 and r["mu_ratio"][0] < 1.0 - 1e-7
+    assert r["stick_fraction"][1] == 0.0 and r["mu_ratio"][1] == pytest.approx(1.0, abs=1e-9)
+
+
+def test_systems_expose_it():
+    dim = vf.Dimensionless(0.5, 2.0, 0.5, zeta=0.02, profile_exponent=2.0)
+    assert dim.critical_inertial_velocity() == theory.profile_critical_velocity(
+        0.5, 2.0, 0.5, 2.0, 0.02)
+    for name in ("eta_c", "a_x", "a_y"):
+        with pytest.raises(ValueError, match=name):
+            vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0,
+                             **{name: 0.1}).critical_inertial_velocity()
+    steel = Material(E=210e9, nu=0.3)
+    pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
+                                 drive_frequency_hz=1000, mu0=0.3, du_z=0.9e-6,
+                                 contact=Sphere(3e-3, steel, steel), contact_model="mdr")
+    v0c = pin.critical_velocity()
+    # in m/s: V_c mu0 F(d0)/(m omega)
+    F0 = float(Sphere(3e-3, steel, steel).normal_force(pin.u_z0))
+    d = pin.to_dimensionless()
+    assert v0c == pytest.approx(theory.profile_critical_velocity(
+        d.alpha, d.beta, d.amplitude, 2.0) * 0.3 * F0 / (0.2 * pin.omega), rel=1e-12)
+    r = vf.friction_coefficient(pin, v0=[0.99 * v0c, 1.01 * v0c])
+    assert r.mu_ratio[1] == pytest.approx(1.0, abs=1e-12) and r.mu_ratio[0] < 1.0
+    with pytest.raises(ValueError, match="vbar"):
+        pin.v0_to_vbar(0.01)
