@@ -290,7 +290,8 @@ def simulate(
         _check_curved(np.array([True]), *(np.array([x]) for x in (
             dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x, dim.a_y,
             dim.profile_exponent)), "sliding")
-        if not (isinstance(springs, int) and springs >= 1):
+        if isinstance(springs, bool) or not (isinstance(springs, (int, np.integer))
+                                             and springs >= 1):
             raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
         return mdr_history(dim, V, periods, samples_per_period, initial, springs)
     if dim.a_y > 0.0:
