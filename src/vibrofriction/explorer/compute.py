@@ -17,11 +17,19 @@ from vibrofriction.schema import RESULT_FIELDS, parameter_names
 
 from .state import AXES, State
 
-__all__ = ["case_map", "curve", "history", "measurement_curves", "parse_measurements",
-           "run_fit"]
+__all__ = ["CONTACT_STATES", "case_map", "curve", "history", "measurement_curves",
+           "parse_measurements", "profile_text", "run_fit"]
 
 CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
                "general": "#f0f0f0"}
+
+
+def profile_text(exponent: float) -> str:
+    """The tip's name as the page shows it: ``flat punch``, ``sphere (n = 2)``, ..."""
+    if exponent == math.inf:
+        return "flat punch"
+    name = {2.0: "sphere", 1.0: "cone"}.get(exponent, "power law")
+    return f"{name} (n = {exponent:g})"
 
 
 def _to_axis(state: State, system, V: np.ndarray) -> np.ndarray:
@@ -73,21 +81,28 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     solved = x != 0.0 if dim.a_y > 0.0 else np.ones(x.size, dtype=bool)
     res = vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]})
     scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
-    V_c = dim.critical_inertial_velocity()
+    curved = dim.curved
+    # a curved tip: its critical velocity is not derived (docs/contact_geometry.md)
+    V_c = math.nan if curved else dim.critical_inertial_velocity()
     critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
     if state.axis == "v0":
         critical = system.critical_velocity()
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
+    static = math.nan  # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
+    if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0:
+        static = float(theory.profile_static_mu_ratio(dim.amplitude, dim.profile_exponent)
+                       if curved else theory.static_mu_ratio(dim.amplitude)) * scale
     case = vf.classify(dim.alpha, dim.beta)
     results = {k: _spread(np.asarray(getattr(res, k)), solved) for k in RESULT_COLUMNS}
     results["status"] = _spread(np.asarray([s.value for s in res.status], dtype=object),
                                 solved, "not computed (V = 0, transverse oscillation)")
     return {
         "x": x, "y": np.asarray(results["mu_ratio"], dtype=float) * scale, **results,
-        # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
-        "static": (float(theory.static_mu_ratio(dim.amplitude)) * scale
-                   if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0 else math.nan),
+        "static": static,
+        "mean_normal": float(theory.profile_mean_normal_force(dim.amplitude,
+                                                              dim.profile_exponent)),
+        "profile": profile_text(dim.profile_exponent),
         "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
@@ -132,6 +147,8 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     V = _inertial(state, system, x)
     a = dim.amplitude
     out = []
+    if dim.curved:
+        return _curved_closed_forms(dim, x, V, case, scale)
     V_c = dim.critical_inertial_velocity()
     vbar = V / V_c if 0.0 < V_c < math.inf else None
 
@@ -159,12 +176,33 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     return out
 
 
+def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
+                         case: vf.Case, scale: float) -> list[dict]:
+    """The closed forms of a curved tip (docs/contact_geometry.md): its stiff law in case
+    II, undamped (``theory.mu_ratio_stiff_profile``, the quadrature of the flat law over the
+    MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``)."""
+    a, n = dim.amplitude, dim.profile_exponent
+    if case is not vf.Case.STIFF or dim.damped or a == 0.0:
+        return []
+    keep = V >= 0.0
+    vbar = (dim.beta - dim.alpha) * V[keep] * n / ((n + 1.0) * a)
+    y = np.asarray(theory.mu_ratio_stiff_profile(vbar, a, n), dtype=float) * scale
+    return [{"label": "stiff law of the curved tip (alpha, beta -> 0)", "x": x[keep],
+             "y": y}]
+
+
+#: The state of an MDR spring in the space-time view, by code (0, 1, 2).
+CONTACT_STATES = ("stick", "slip", "out of contact")
+
+
 def history(state: State, x: float, periods: float = 3.0) -> dict:
     """The time history at the curve's velocity ``x`` (Fig. 2): forces, phases, events;
     the steady state where the solver trusts it, else the motion from steady sliding.
     With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
     position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc``
-    and the transverse force ``f_y`` (None otherwise)."""
+    and the transverse force ``f_y`` (None otherwise).  A curved tip: :func:`mdr_history`."""
+    if state.curved:
+        return mdr_history(state, x)
     system = state.system()
     kw = {state.velocity_keyword(): float(x)}
     try:
@@ -189,6 +227,21 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
         "steady": steady, "x": float(x), "mu_ratio": float(r.mu_ratio),
         "status": r.status.value, "trusted": bool(r.trusted), "message": r.message,
     }
+
+
+def mdr_history(state: State, x: float) -> dict:
+    """A curved tip's contact over one period of the steady state at the inertial velocity
+    ``x``: the springs' positions ``xi = x/a0`` along the profile, ``tau/(2 pi)`` and each
+    spring's state per sample (:data:`CONTACT_STATES` codes) for the space-time view;
+    ``spacetime`` is None, with the reason in ``message``, where the library gives no MDR
+    time history."""
+    system = state.system()
+    try:
+        vf.simulate(system, v_inertial=float(x), periods=1.0)
+    except ValueError as exc:
+        return {"curved": True, "x": float(x), "spacetime": None,
+                "message": f"needs the MDR history ({exc})"}
+    raise NotImplementedError("the MDR history's fields are not read yet")  # pragma: no cover
 
 
 @functools.lru_cache(maxsize=4)
