@@ -152,9 +152,125 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa,
     return tb
 
 
+# the columns of a recorded sample (:func:`run_periods`' ``rec``): the body's ``y``, ``y'``,
+# ``sum f_i``, ``sum n_i``, and the integrals since the start of ``sum f_i``, ``sum n_i``, the
+# work input by the pulled end, the energy dissipated by the pin's dashpot and by friction
+R_Y, R_YD, R_F, R_N, R_IF, R_IN, R_WIN, R_DPIN, R_DFRIC = range(9)
+N_REC = 9
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
+
+
+@jit
+def _record_state(rec, ri, acc, y, yd, tau, u, st, e, g, w, k, a):
+    """Write sample ``ri`` of ``rec``: the body at ``(y, y')``, phase ``tau``, the stuck
+    springs' elongations ``e_i + u``, the integrals ``acc``."""
+    _, body, fs, sts = rec
+    F = 0.0
+    N = 0.0
+    ca = 1.0 + a * math.cos(tau)
+    for i in range(g.size):
+        s = st[i]
+        sts[ri, i] = s
+        f = 0.0
+        if s != OFF:
+            n = max(w * (ca - g[i]), 0.0)
+            N += n
+            if s == STICK:
+                f = k * (e[i] + u)
+            elif s == SLIP_POS:
+                f = n
+            else:
+                f = -n
+        fs[ri, i] = f
+        F += f
+    body[ri, R_Y] = y
+    body[ri, R_YD] = yd
+    body[ri, R_F] = F
+    body[ri, R_N] = N
+    for j in range(acc.size):
+        body[ri, R_IF + j] = acc[j]
+
+
+@jit
+def _accumulate(acc, c, dc, m, cs, theta, ta, tb, h, alpha, gamma, V, a, w, k, Wc, Wgc, Sw,
+                Swg, Wa, Wga):
+    """Add the integrals over ``[ta, tb]`` of a segment to ``acc``: ``sum f_i =
+    -(y'' + gamma y' + alpha y)`` and ``sum n_i`` (the springs in contact: ``Wc = w`` times
+    their number, ``Wgc`` their ``w g_i``) and the work input ``V (-alpha y - gamma y')``
+    exactly; the pin's ``gamma y'^2`` and friction's ``sum f_i (x' - e_i')`` (slipping
+    springs: ``(y' + V) sum s n_i + (w a sin tau/k) sum n_i``, ``Sw, Swg`` signed, ``Wa,
+    Wga`` not) by 8-point Gauss-Legendre on pieces of at most ``h``."""
+    if tb <= ta:
+        return
+    ba = basis_values(m, ta, cs, False)
+    bb = basis_values(m, tb, cs, False)
+    dy = dot(c, bb) - dot(c, ba)
+    iy = integral(c, m, tb) - integral(c, m, ta)
+    acc[0] += -((dot(dc, bb) - dot(dc, ba)) + gamma * dy + alpha * iy)
+    acc[1] += (Wc - Wgc) * (tb - ta) + Wc * a * (math.sin(theta + tb) - math.sin(theta + ta))
+    acc[2] += V * (-alpha * iy - gamma * dy)
+    pieces = int(math.ceil((tb - ta) / h))
+    half = 0.5 * (tb - ta) / pieces
+    dp = 0.0
+    df = 0.0
+    for j in range(pieces):
+        mid = ta + (2 * j + 1) * half
+        for q in range(_GL_X.size):
+            t = mid + half * _GL_X[q]
+            ydt = dot(dc, basis_values(m, t, cs, False))
+            tau = theta + t
+            ca = 1.0 + a * math.cos(tau)
+            dp += _GL_W[q] * gamma * ydt * ydt
+            df += _GL_W[q] * ((ydt + V) * (Sw * ca - Swg)
+                              + (w * a * math.sin(tau) / k) * (Wa * ca - Wga))
+    acc[3] += half * dp
+    acc[4] += half * df
+
+
+@jit
+def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V, a, g, w,
+                    k, st, e, y0):
+    """Record the samples of ``rec`` at times in ``[t0, t0 + T)`` of the segment that starts
+    at time ``t0`` (phase ``theta``, body ``y0``, closed form ``c``) and add the segment's
+    integrals to ``acc``; returns the next sample's index."""
+    rtau = rec[0]
+    Wc = 0.0
+    Wgc = 0.0
+    Sw = 0.0
+    Swg = 0.0
+    Wa = 0.0
+    Wga = 0.0
+    for i in range(g.size):
+        s = st[i]
+        if s != OFF:
+            Wc += w
+            Wgc += w * g[i]
+        if s == SLIP_POS or s == SLIP_NEG:
+            sg = 1.0 if s == SLIP_POS else -1.0
+            Sw += sg * w
+            Swg += sg * w * g[i]
+            Wa += w
+            Wga += w * g[i]
+    h = min(0.25, 0.5 / math.sqrt(alpha + K))
+    tq = 0.0
+    while ri < rtau.size and rtau[ri] < t0 + T:
+        ts = min(max(rtau[ri] - t0, 0.0), T)
+        _accumulate(acc, c, dc, m, cs, theta, tq, ts, h, alpha, gamma, V, a, w, k, Wc, Wgc,
+                    Sw, Swg, Wa, Wga)
+        tq = ts
+        b = basis_values(m, ts, cs, False)
+        yv = dot(c, b)
+        _record_state(rec, ri, acc, yv, dot(dc, b), theta + ts, yv - y0 + V * ts, st, e, g,
+                      w, k, a)
+        ri += 1
+    _accumulate(acc, c, dc, m, cs, theta, tq, T, h, alpha, gamma, V, a, w, k, Wc, Wgc, Sw,
+                Swg, Wa, Wga)
+    return ri
+
+
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
-                state_tol, y, yd, st, e):
+                state_tol, y, yd, st, e, rec=None):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
     (modified in place) until the section state repeats within ``state_tol`` (relative to
     its size) after at least ``min_periods``, or ``max_periods``.
@@ -172,6 +288,11 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
     contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
     number of events of the last period (``-1``: no progress) and the final body state.
+
+    ``rec = (tau, body, f, state)``, optional: record the samples at the sorted times
+    ``tau`` (from the start, ``T`` of them): ``body`` (``T x N_REC``, columns ``R_*``),
+    every spring's tangential force ``f`` and state ``state`` (``T x M``), from the closed
+    forms (:func:`_record_segment`); pass ``min_periods = max_periods``.
     """
     g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
     k = (beta - alpha) * dxi
@@ -192,6 +313,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     periods = 0
     converged = False
     events = 0
+    ri = 0  # the next sample to record
+    acc = np.zeros(N_REC - R_IF)  # the recorded integrals since the start
     for period in range(max_periods):
         y_old = y
         yd_old = yd
@@ -313,6 +436,9 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                     if scanned:
                         t_ev = best
                     ta = tb
+            if rec is not None:
+                ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
+                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e, y)
             # advance to t_ev
             b = basis_values(m, t_ev, cs, False)
             y1 = dot(c, b)
@@ -398,4 +524,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             break
     if stuck_loop:
         events = -1
+    elif rec is not None:  # the samples at the end (the last section)
+        while ri < rec[0].size:
+            _record_state(rec, ri, acc, y, yd, rec[0][ri], 0.0, st, e, g, w, k, a)
+            ri += 1
     return periods, converged, pf[:periods], pn[:periods], frac, viol, events, y, yd

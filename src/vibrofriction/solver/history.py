@@ -19,11 +19,13 @@ from .engine import (
     _MIRROR_PHASE,
     PLANE_EVENTS_PER_PERIOD,
     PLANE_RTOL,
+    _check_curved,
     _check_plane,
     friction_coefficient,
     initial_rows,
     plane_held,
 )
+from .mdr_history import SPRINGS, mdr_history
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
@@ -73,6 +75,26 @@ class History:
     ``"slip+"`` or ``"slip-"`` by the sign of ``f`` (as the 2-D solver's
     ``slip_fraction``), and the energies are the trapezoidal rule over the samples
     (second order in the sample spacing, not the 1-D histories' 1e-10).
+
+    A history of a curved tip (finite ``profile_exponent``: the MDR row of ``M`` springs,
+    docs/contact_geometry.md "The history") has ``f = sum f_i`` and ``n = sum n_i`` (units
+    ``mu0 F_N0``: ``n`` is ``F_N/F_N0``), ``e = f/(beta - alpha)`` (the springs' elongation
+    weighted by stiffness; the flat punch's ``e``), ``phase`` ``"stick"``, ``"slip+"``,
+    ``"slip-"`` where every spring in contact is in that state, ``"flight"`` where none
+    is in contact, else ``"partial"``, no ``events`` (the springs' states hold them), no
+    ``final_state``, ``dissipated_contact`` 0, ``impulse`` ``(int f, 0)`` (exact), and
+    the contact fields (None otherwise): ``xi`` (shape ``(M,)``) the springs' positions
+    along the profile (cell midpoints, unit ``a0``, the contact radius at the mean
+    indentation), ``spring_state`` (``(N, M)``, int8) each spring's state at each sample,
+    0 out of contact, 1 stick, 2 slip forwards, 3 slip backwards (names in
+    :data:`~vibrofriction.solver.mdr_history.SPRING_STATES`), ``spring_f`` (``(N, M)``)
+    each spring's tangential force (``|f_i| <= n_i``, :meth:`spring_normal`),
+    ``stick_radius`` (``(N,)``) the position of the outermost stuck spring (0 if none),
+    ``contact_radius`` (``(N,)``) the imposed indentation's ``max(0, 1 + a cos
+    tau)^(1/n)``, ``stick_area_fraction``, ``slip_area_fraction``,
+    ``open_area_fraction`` (``(N,)``) the shares of the disc of the largest contact radius
+    (area-weighted as the steady state's), and ``normal_impulse`` (``(N,)``) the exact
+    integral of ``n`` since ``tau = 0``.
     """
 
     tau: NDArray[np.float64]
@@ -97,6 +119,33 @@ class History:
     slip_velocity: NDArray[np.float64] | None = None
     impulse: NDArray[np.float64] | None = None
     plane_state: NDArray[np.float64] | None = None
+    xi: NDArray[np.float64] | None = None
+    spring_state: NDArray[np.int8] | None = None
+    spring_f: NDArray[np.float64] | None = None
+    stick_radius: NDArray[np.float64] | None = None
+    contact_radius: NDArray[np.float64] | None = None
+    stick_area_fraction: NDArray[np.float64] | None = None
+    slip_area_fraction: NDArray[np.float64] | None = None
+    open_area_fraction: NDArray[np.float64] | None = None
+    normal_impulse: NDArray[np.float64] | None = None
+
+    @property
+    def is_curved(self) -> bool:
+        """Whether this is a curved tip's history (the MDR row's contact fields present)."""
+        return self.spring_state is not None
+
+    def spring_normal(self) -> NDArray[np.float64]:
+        """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)`` (``w =
+        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``."""
+        if self.xi is None:
+            raise ValueError("spring_normal: not a curved tip's history (no spring row)")
+        n_exp = self.system.profile_exponent
+        dxi = 2.0 * float(self.xi[0])
+        flat = math.isinf(n_exp)
+        w = dxi if flat else dxi * (n_exp + 1.0) / n_exp
+        g = np.zeros_like(self.xi) if flat else self.xi ** n_exp
+        depth = 1.0 + self.system.amplitude * np.cos(self.tau)
+        return w * np.maximum(0.0, depth[:, None] - g[None, :])
 
     @property
     def is_plane(self) -> bool:
@@ -106,12 +155,16 @@ class History:
     def stored_energy(self) -> NDArray[np.float64]:
         """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
         oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
-        transverse terms are added, the pin's spring across ``alpha_y``)."""
+        transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's
+        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``)."""
         d = self.system
         y = self.x - self.v_inertial * self.tau
         if d.a_x > 0.0 and d.inplane_on == "holder":
             y = y - inplane_motion(d, self.tau)[0]
         out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
+        if self.spring_f is not None:  # the row: sum f_i^2/(2 k dxi)
+            k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])
+            return out + 0.5 * np.sum(self.spring_f**2, axis=1) / k
         if not d.is_rigid:
             out = out + 0.5 * (d.beta - d.alpha) * self.e**2
         if self.is_plane:
@@ -202,6 +255,7 @@ def simulate(
     samples_per_period: int = 400,
     initial: str | SectionState | NDArray[np.float64] = "sliding",
     settings: SolverSettings | None = None,
+    springs: int = SPRINGS,
 ) -> History:
     """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
 
@@ -218,17 +272,27 @@ def simulate(
     solver's Runge-Kutta method (docs/inplane.md section 6) and has the transverse fields
     of :class:`History`; ``initial`` may also be a 2-D history's ``plane_state`` (6
     components), and a :class:`SectionState` starts with the transverse components 0.
+
+    A curved tip (finite ``profile_exponent``) is the MDR row of ``springs`` springs
+    (:func:`~vibrofriction.solver.mdr_history.mdr_history`; ``springs`` is ignored
+    otherwise), sampled on the uniform grid only (no event times: the contact fields of
+    :class:`History`); ``initial`` is ``"sliding"`` (the MDR solver's start) or
+    ``"steady"`` (the row's periodic orbit); the refusals of the MDR solver apply
+    (docs/contact_geometry.md).
     """
     dim = dimensionless(system)
-    if dim.curved:
-        raise ValueError(f"simulate does not take a curved profile yet (profile_exponent = "
-                         f"{dim.profile_exponent!r}): the MDR time history is not built; "
-                         "friction_coefficient computes its steady state")
     V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
     if V.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
     V = float(V)
     _checked_run(periods, samples_per_period)
+    if dim.curved:
+        _check_curved(np.array([True]), *(np.array([x]) for x in (
+            dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x, dim.a_y,
+            dim.profile_exponent)), "sliding")
+        if not (isinstance(springs, int) and springs >= 1):
+            raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
+        return mdr_history(dim, V, periods, samples_per_period, initial, springs)
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))

@@ -1,0 +1,131 @@
+"""The time history of a curved tip: the MDR spring row sampled (docs/contact_geometry.md).
+
+The event-driven kernel :func:`vibrofriction._kernels.mdr.run_periods` records the row at
+the sample times from its closed forms (not interpolated): the body, every spring's
+tangential force and state, and the integrals of the forces and of the powers since the
+start. :func:`mdr_history` turns that into a :class:`~vibrofriction.History` with the
+contact fields; :func:`vibrofriction.simulate` routes a curved profile here.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._kernels import mdr as _mdr
+from ..params import Dimensionless
+from .mdr import SUBSTEPS, _check, _start, mdr_row
+
+if TYPE_CHECKING:
+    from .history import History
+
+__all__ = ["SPRINGS", "SPRING_STATES", "mdr_history", "spring_row"]
+
+#: The default number of springs of a curved history (``simulate(..., springs=...)``).
+SPRINGS = 160
+#: The names of the springs' states, by code (:attr:`History.spring_state`).
+SPRING_STATES = ("open", "stick", "slip+", "slip-")
+
+
+def spring_row(amplitude: float, profile_exponent: float, springs: int
+               ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64]]:
+    """``(xi, g, w, area)`` of a row: the springs' positions (cell midpoints on ``(0,
+    (1 + a)^(1/n)]``, unit ``a0``), their gaps ``xi^n``, the normal weight ``w = dxi (n +
+    1)/n`` (the flat punch's ``dxi``) and each spring's share of the disc of the largest
+    contact radius."""
+    g, w, dxi, _, _, area = _mdr.row_geometry(float(amplitude), float(profile_exponent),
+                                              int(springs))
+    return (np.arange(int(springs)) + 0.5) * dxi, g, float(w), area
+
+
+def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
+    """One name a sample: ``"flight"`` (no spring in contact), ``"stick"``, ``"slip+"``
+    or ``"slip-"`` where every spring in contact is in that state, else ``"partial"``."""
+    touching = state != _mdr.OFF
+    out = np.full(state.shape[0], "partial", dtype="<U7")
+    out[~touching.any(axis=1)] = "flight"
+    for code, name in ((_mdr.STICK, "stick"), (_mdr.SLIP_POS, "slip+"),
+                       (_mdr.SLIP_NEG, "slip-")):
+        out[touching.any(axis=1) & np.all((state == code) | ~touching, axis=1)] = name
+    return out
+
+
+def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
+                initial: object = "sliding", springs: int = SPRINGS) -> History:
+    """The history of a row of ``springs`` springs over ``periods`` drive periods, sampled
+    on the uniform grid of ``samples_per_period`` a period (``tau = 0`` to ``2 pi
+    periods``, both included), from the closed forms.
+
+    ``initial``: ``"sliding"`` (the MDR solver's start: every loaded spring slipping
+    forwards, ``y = -sum n_i(0)/alpha``, ``x' = V``) or ``"steady"`` (the final section
+    state of :func:`~vibrofriction.solver.mdr.mdr_row` with the same springs: a periodic
+    orbit, or the row's attractor after its averaging window; ValueError where it did not
+    converge). ``V < 0`` is the mirror image of ``-V``. Any ``profile_exponent``,
+    ``math.inf`` included (the flat punch as a row: each spring carries the same share).
+    """
+    from .history import History
+
+    M = int(springs)
+    if M < 1:
+        raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
+    alpha, beta, a, n_exp, zeta = (dim.alpha, dim.beta, dim.amplitude, dim.profile_exponent,
+                                   dim.zeta)
+    _check(alpha, beta, a, abs(V), n_exp, zeta)
+    sign = -1.0 if V < 0.0 else 1.0
+    Va = abs(V)
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+    if isinstance(initial, str) and initial == "sliding":
+        y, yd, st, e = _start(alpha, a, n_exp, M, None)
+    elif isinstance(initial, str) and initial == "steady":
+        r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta)
+        if r["status"] == "not converged":
+            raise ValueError(f"initial='steady': the row of {M} springs did not converge "
+                             f"at this point (after {r['periods']} periods)")
+        y, yd, st, e = r["final_state"]
+        st, e = st.copy(), e.copy()
+    else:
+        raise ValueError(f"a curved profile starts from initial='sliding' or 'steady' "
+                         f"(the MDR row takes no section state), got {initial!r}")
+    tau_end = 2.0 * math.pi * periods
+    tau = np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1)
+    T = tau.size
+    body = np.empty((T, _mdr.N_REC))
+    fs = np.empty((T, M))
+    sts = np.empty((T, M), dtype=np.int8)
+    whole = int(math.ceil(periods - 1e-12))
+    *_, events, _, _ = _mdr.run_periods(
+        alpha, beta, a, Va, gamma, n_exp, M, SUBSTEPS, whole, whole, 0.0, float(y),
+        float(yd), st, e, (tau, body, fs, sts))
+    if events < 0:
+        raise RuntimeError(f"the MDR row of {M} springs made no progress (more than "
+                           f"{200 * M + 1000} segments in a period)")
+    xi, g, w, area = spring_row(a, n_exp, M)
+    stick = sts == _mdr.STICK
+    slip = (sts == _mdr.SLIP_POS) | (sts == _mdr.SLIP_NEG)
+    stick_area = stick.astype(float) @ area
+    slip_area = slip.astype(float) @ area
+    stick_radius = np.where(stick.any(axis=1), np.max(np.where(stick, xi, 0.0), axis=1), 0.0)
+    depth = np.maximum(0.0, 1.0 + a * np.cos(tau))
+    contact_radius = np.where(depth > 0.0, 1.0, 0.0) if math.isinf(n_exp) \
+        else depth ** (1.0 / n_exp)
+    if sign < 0.0:  # the mirror image: x -> -x, the slip directions swapped
+        sts = np.where(sts == _mdr.SLIP_POS, _mdr.SLIP_NEG,
+                       np.where(sts == _mdr.SLIP_NEG, _mdr.SLIP_POS, sts)).astype(np.int8)
+    y_s, yd_s = sign * body[:, _mdr.R_Y], sign * (body[:, _mdr.R_YD] + Va)
+    f = sign * body[:, _mdr.R_F]
+    impulse = np.zeros((T, 2))
+    impulse[:, 0] = sign * body[:, _mdr.R_IF]
+    return History(
+        tau=tau, x=y_s + V * tau, x_dot=yd_s, f=f, n=body[:, _mdr.R_N].copy(),
+        phase=_summary_phase(sts), events=(), system=dim, v_inertial=float(V),
+        e=f / (beta - alpha), work_input=body[:, _mdr.R_WIN].copy(),
+        dissipated_pin=body[:, _mdr.R_DPIN].copy(), dissipated_contact=np.zeros(T),
+        dissipated_friction=body[:, _mdr.R_DFRIC].copy(), final_state=None,
+        impulse=impulse, xi=xi, spring_state=sts, spring_f=sign * fs,
+        stick_radius=stick_radius, contact_radius=contact_radius,
+        stick_area_fraction=stick_area, slip_area_fraction=slip_area,
+        open_area_fraction=1.0 - stick_area - slip_area,
+        normal_impulse=body[:, _mdr.R_IN].copy())
