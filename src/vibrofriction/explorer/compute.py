@@ -191,8 +191,9 @@ def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
              "y": y}]
 
 
-#: The state of an MDR spring in the space-time view, by code (0, 1, 2).
-CONTACT_STATES = ("stick", "slip", "out of contact")
+#: The state of an MDR spring by its code in ``History.spring_state`` (0 to 3), as the
+#: space-time view names them.
+CONTACT_STATES = ("out of contact", "stick", "slip forwards", "slip backwards")
 
 
 def history(state: State, x: float, periods: float = 3.0) -> dict:
@@ -229,19 +230,52 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     }
 
 
-def mdr_history(state: State, x: float) -> dict:
-    """A curved tip's contact over one period of the steady state at the inertial velocity
-    ``x``: the springs' positions ``xi = x/a0`` along the profile, ``tau/(2 pi)`` and each
-    spring's state per sample (:data:`CONTACT_STATES` codes) for the space-time view;
-    ``spacetime`` is None, with the reason in ``message``, where the library gives no MDR
-    time history."""
+def mdr_history(state: State, x: float, periods: float = 1.0,
+                samples_per_period: int = 200) -> dict:
+    """A curved tip's history at the inertial velocity ``x`` (``vf.simulate`` of the MDR
+    row, ``initial="steady"``: one period of its periodic orbit; where the row has none,
+    the last of three periods from steady sliding, said so): the forces and phases of
+    :func:`history` and, for the space-time view (``spacetime``), ``t`` (drive periods),
+    the springs' positions ``xi = x/a0`` along the profile, each spring's state per sample
+    (``state``, shape ``(T, M)``, codes of :data:`CONTACT_STATES`), the stick and contact
+    radii and the area fractions against time.  ``spacetime`` is None, with the reason in
+    ``message``, where the library gives no history."""
     system = state.system()
+    message = ""
     try:
-        vf.simulate(system, v_inertial=float(x), periods=1.0)
-    except ValueError as exc:
-        return {"curved": True, "x": float(x), "spacetime": None,
+        try:
+            h = vf.simulate(system, v_inertial=float(x), periods=periods, initial="steady",
+                            samples_per_period=samples_per_period)
+            steady = True
+        except ValueError as exc:
+            if "did not converge" not in str(exc):
+                raise
+            h = vf.simulate(system, v_inertial=float(x), periods=3.0 * periods,
+                            samples_per_period=samples_per_period)
+            steady = False
+            message = "no periodic orbit of the row: the third period from steady sliding"
+    except ValueError as exc:  # a library without the MDR history
+        return {"curved": True, "x": float(x), "spacetime": None, "t": None,
                 "message": f"needs the MDR history ({exc})"}
-    raise NotImplementedError("the MDR history's fields are not read yet")  # pragma: no cover
+    last = h.tau >= h.tau[-1] - 2.0 * math.pi * periods - 1e-9  # the period shown
+    t = h.tau[last] / (2.0 * math.pi)
+    phase = h.phase[last]
+    change = np.flatnonzero(phase[1:] != phase[:-1]) + 1
+    starts = np.concatenate([[0], change])
+    ends = np.concatenate([change, [t.size - 1]])
+    return {
+        "curved": True, "x": float(x), "steady": steady, "message": message,
+        "t": t, "f": h.f[last], "n": h.n[last], "x_dot": h.x_dot[last], "f_y": None,
+        "phase": phase, "xc": None, "yc": None, "events": [],
+        "spans": [(float(t[i]), float(t[j]), str(phase[i])) for i, j in
+                  zip(starts, ends, strict=True) if t[j] > t[i]],
+        "spacetime": {"t": t, "xi": h.xi, "state": h.spring_state[last],
+                      "stick_radius": h.stick_radius[last],
+                      "contact_radius": h.contact_radius[last],
+                      "stick": h.stick_area_fraction[last],
+                      "slip": h.slip_area_fraction[last],
+                      "open": h.open_area_fraction[last], "springs": int(h.xi.size)},
+    }
 
 
 @functools.lru_cache(maxsize=4)

@@ -135,6 +135,7 @@ class Explorer:
         self._history_busy = False
         self._picked_x: float | None = None
         self._point_text = ""  # the picked point's results, from the curve
+        self._point_y = math.nan
         self._adjusting = False  # the page itself is setting inputs (no new reading)
         self._mdr_notes: dict[str, str] = {}  # inputs reset or switched for a curved tip
         self._build()
@@ -462,6 +463,7 @@ class Explorer:
             return
         self.curve_view.pick(float(x[i]), float(c["y"][i]))
         self._point_text = point_text(c, i)
+        self._point_y = float(c["y"][i])
         self._history_want = float(x[i])
         if not self._history_busy:
             pn.state.execute(self._refresh_history)
@@ -503,8 +505,8 @@ class Explorer:
         forces = h.get("t") is not None
         self.history_view.figure.visible = forces
         self.history_view.path_figure.visible = False
-        if forces:
-            self.history_view.show(h, where)
+        if forces:  # the curve's mu/mu0 at the point (the solver's, not the row's estimate)
+            self.history_view.show({**h, "mu_ratio": self._point_y}, where)
         self.spacetime_view.show(h, where)
         self.history_text.object = (
             f"point at {where} ({self.curve['profile'] if self.curve else 'curved tip'}, "

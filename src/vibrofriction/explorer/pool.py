@@ -46,11 +46,13 @@ async def run_shared(func: Callable[..., Any], merge: Callable[[list], Any],
 
 
 def _ping() -> int:
-    from .compute import curve
+    from .compute import curve, history
     from .state import State
 
     curve(State(points=8))  # loads the compiled kernels
-    curve(State(points=2, profile_exponent=2.0, axis="V", v_max=0.3))  # and the MDR solver's
+    sphere = State(points=2, profile_exponent=2.0, axis="V", v_max=0.3)
+    curve(sphere)  # and the MDR solver's
+    history(sphere, 0.3)  # and its history's
     return os.getpid()
 
 

@@ -144,6 +144,10 @@ _PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
                 "flight": "#737373"}
 
 
+#: The history's phases: a curved tip's row adds "partial" (stick and slip at once).
+_HISTORY_COLORS = {**PHASE_COLORS, "partial": "#dadaeb"}
+
+
 class HistoryView:
     """A point's time history: forces, the phases shaded, the events marked; with an
     in-plane oscillation a second figure (``path_figure``, hidden otherwise) shows the
@@ -205,7 +209,7 @@ class HistoryView:
             "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
             "bottom": [lo - 0.05 * pad] * len(h["spans"]),
             "top": [hi + pad] * len(h["spans"]),
-            "color": [PHASE_COLORS.get(s[2], "#ffffff") for s in h["spans"]],
+            "color": [_HISTORY_COLORS.get(s[2], "#ffffff") for s in h["spans"]],
             "phase": [s[2] for s in h["spans"]]}
         ev_t = np.array([e[0] for e in h["events"]], dtype=float)
         self.events.data = {"t": ev_t, "y": np.interp(ev_t, t, f) if ev_t.size else ev_t,
@@ -299,8 +303,8 @@ def _rgba(color: str) -> tuple[int, int, int, int]:
     return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16), 255
 
 
-#: Colours of the MDR springs' states (stick, slip, out of contact).
-CONTACT_COLORS = ("#4292c6", "#fd8d3c", "#eeeeee")
+#: Colours of the MDR springs' states by code (:data:`.compute.CONTACT_STATES`).
+CONTACT_COLORS = ("#eeeeee", "#4292c6", "#fd8d3c", "#a50f15")
 
 
 class SpaceTimeView:
@@ -312,7 +316,8 @@ class SpaceTimeView:
     def __init__(self) -> None:
         self.image = _empty(image=1, x=1, y=1, dw=1, dh=1)
         self.radii = _empty(t=1, stick=1, contact=1)
-        mapper = LinearColorMapper(palette=list(CONTACT_COLORS), low=-0.5, high=2.5)
+        mapper = LinearColorMapper(palette=list(CONTACT_COLORS), low=-0.5,
+                                   high=len(CONTACT_COLORS) - 0.5)
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
                      title="contact in space and time (curved tip)", toolbar_location="above",
                      x_axis_label="t/T (drive periods)",
@@ -351,7 +356,7 @@ class SpaceTimeView:
             return
         t, xi, codes = (np.asarray(st[k], dtype=float) for k in ("t", "xi", "state"))
         t0, t1 = float(t[0]), float(t[-1])
-        top = float(xi[-1])
+        top = float(xi[-1] + xi[0])  # the cells' outer edge: the largest contact radius
         # rows of the image are xi (upwards), columns are time
         self.image.data = {"image": [np.ascontiguousarray(codes.T)], "x": [t0], "y": [0.0],
                            "dw": [t1 - t0], "dh": [top]}
@@ -360,4 +365,5 @@ class SpaceTimeView:
         self.note.text = ""
         fig.x_range.start, fig.x_range.end = t0, t1
         fig.y_range.start, fig.y_range.end = 0.0, top
-        fig.title.text = f"contact in space and time at {where}"
+        fig.title.text = (f"contact in space and time at {where} ({st['springs']} MDR "
+                          "springs, one period)")
