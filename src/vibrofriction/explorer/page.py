@@ -44,7 +44,7 @@ __all__ = ["Explorer", "app", "point_text", "readout_text", "status_text"]
 _ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
 _NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
 #: the profile selector's labels
-_PROFILE_LABELS = {"flat punch": "flat", "sphere (n = 2)": "sphere", "cone (n = 1)": "cone",
+_PROFILE_LABELS = {"flat punch": "flat", "sphere": "sphere", "cone": "cone",
                    "power law": "power"}
 #: the power law's exponent when it is chosen from a named tip
 _POWER_DEFAULT = 3.0
@@ -184,11 +184,11 @@ class Explorer:
         self.map_view.figure.on_event(Tap, self._tapped_map)
         self.curve_pane = pn.pane.Bokeh(self.curve_view.figures["linear"],
                                         sizing_mode="stretch_width", min_height=400)
-        self.dim_box = pn.Column(pn.pane.Markdown("**the tip** (profile z = c r^n)"),
+        self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
+                                 self.inplane_on,
+                                 pn.pane.Markdown("**the tip** (profile z = c r^n)"),
                                  self.profile, self.inputs[PROFILE.name].layout,
-                                 self.profile_note,
-                                 *(self.inputs[f.name].layout for f in DIMENSIONLESS),
-                                 self.inplane_on, margin=0)
+                                 self.profile_note, margin=0)
         self.bench_box = pn.Column(*(self.inputs[f.name].layout for f in BENCH), margin=0)
         self.bench_file = pn.widgets.FileInput(accept=".json", width=300)
         self.bench_file.param.watch(self._bench_file, "value")
@@ -310,7 +310,7 @@ class Explorer:
                     value = 1.0  # unreadable: reset it too
                 if value != 0.0:
                     why = curved_refusal(probe, name, value) or "refused"
-                    self._mdr_notes[name] = f"reset from {box.value} to 0: {why}"
+                    self._mdr_notes[name] = f"{name} reset from {box.value} to 0: {why}"
                     box.value = "0"
             if self.axis.value == "vbar":
                 self._mdr_notes["axis"] = f"axis set from vbar to V: {_vbar_refusal(probe)}"

@@ -322,7 +322,8 @@ class SpaceTimeView:
                      title="contact in space and time (curved tip)", toolbar_location="above",
                      x_axis_label="t/T (drive periods)",
                      y_axis_label="xi = x/a0 (position along the profile)",
-                     x_range=Range1d(0.0, 1.0), y_range=Range1d(0.0, 1.0))
+                     x_range=Range1d(0.0, 1.0), y_range=Range1d(0.0, 1.0),
+                     css_classes=["vf-spacetime"])
         fig.image("image", "x", "y", "dw", "dh", source=self.image, color_mapper=mapper)
         for name, color in zip(CONTACT_STATES, CONTACT_COLORS, strict=True):
             fig.scatter([-10.0], [-10.0], marker="square", size=10, color=color,
