@@ -421,13 +421,31 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                         f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, tau)
                         if j < 2 and f > 0.0 and -f > viol:
                             viol = -f
-                        if f <= 0.0 and gprev[j] <= 0.0 and ta == 0.0 and not gfresh[j]:
+                        fa = gprev[j]
+                        tq = ta
+                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
+                            # a group that has just switched (its function at 0) can rise
+                            # and fall back within the first sub-step (a spring touching
+                            # down stuck, slipping again 0.002 later): a positive value
+                            # nearer the start brackets that root
+                            tl = tol_s if j < 2 else tol_v
+                            tp = tb
+                            for _ in range(12):
+                                tp *= 0.5
+                                bp = basis_values(m, tp, cs, False)
+                                fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
+                                                  dot(dc, bp), y, tp, theta + tp)
+                                if fp > tl:
+                                    fa = fp
+                                    tq = tp
+                                    break
+                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
                             groot[j] = 0.0  # at its event within round-off, and leaving
                             best = 0.0
                             scanned = True
-                        elif f <= 0.0 and gprev[j] > 0.0:
+                        elif f <= 0.0 and fa > 0.0:
                             r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, theta,
-                                              ta, tb, gprev[j], f)
+                                              tq, tb, fa, f)
                             groot[j] = r
                             if r < best:
                                 best = r

@@ -60,11 +60,15 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     periods``, both included), from the closed forms.
 
     ``initial``: ``"sliding"`` (the MDR solver's start: every loaded spring slipping
-    forwards, ``y = -sum n_i(0)/alpha``, ``x' = V``) or ``"steady"`` (the final section
-    state of :func:`~vibrofriction.solver.mdr.mdr_row` with the same springs: a periodic
-    orbit, or the row's attractor after its averaging window; ValueError where it did not
-    converge). ``V < 0`` is the mirror image of ``-V``. Any ``profile_exponent``,
-    ``math.inf`` included (the flat punch as a row: each spring carries the same share).
+    forwards at its limit ``n_i(0)``, the pin stretched by the load at ``d0``: ``y =
+    -sum w max(0, 1 - g_i)/alpha``, ``x' = V``; the flat punch's
+    ``SectionState(-1/alpha, V, 1 + a, "slip+")``; unlike the solver's, the springs in
+    contact at ``tau = 0`` beyond the mean contact radius, ``1 <= g_i < 1 + a``, slip
+    too) or ``"steady"`` (the final section state of
+    :func:`~vibrofriction.solver.mdr.mdr_row` with the same springs: a periodic orbit, or
+    the row's attractor after its averaging window; ValueError where it did not converge).
+    ``V < 0`` is the mirror image of ``-V``. Any ``profile_exponent``, ``math.inf``
+    included (the flat punch as a row: each spring carries the same share).
     """
     from .history import History
 
@@ -79,6 +83,11 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     gamma = 2.0 * zeta * math.sqrt(alpha)
     if isinstance(initial, str) and initial == "sliding":
         y, yd, st, e = _start(alpha, a, n_exp, M, None)
+        # the solver's start leaves the springs beyond the mean contact radius out of
+        # contact until their touch-down late in the first period (its steady state is
+        # the same); in contact at tau = 0 (g_i < 1 + a), they slip forwards too
+        g = _mdr.row_geometry(a, n_exp, M)[0]
+        st[(st == _mdr.OFF) & (1.0 + a - g > 0.0)] = _mdr.SLIP_POS
     elif isinstance(initial, str) and initial == "steady":
         r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta)
         if r["status"] == "not converged":
