@@ -7,9 +7,12 @@ history after a click on the curve), ``explorer_map.png`` (the case map, soft co
 ``explorer_error.png`` (the inline message for a typed ``beta`` below ``alpha``),
 ``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted) and
 ``explorer_path.png`` (a transverse drive: the history with ``f_y`` and the contact point's
-path in the plane, cropped to the history).
+path in the plane, cropped to the history) and ``explorer_mdr.png`` (a sphere: eta_c
+reset with the MDR solver's refusal beside it, its curve, a point's history and its
+contact in space and time).
 
-Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path]
+Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
+      mdr]
 """
 
 from __future__ import annotations
@@ -93,6 +96,15 @@ def main(which: list[str]) -> None:
                               "&v_min=0.05&v_max=1.2&points=40")
                 time.sleep(1.0)
                 shoot(page, "path")
+            if "mdr" in which:
+                page = opened(browser, url + "?eta_c=0.1&v_max=1.2")
+                shown = page.get_by_text(READOUT).inner_text()
+                page.get_by_role("button", name="sphere", exact=True).click()
+                while page.get_by_text(READOUT).inner_text() == shown:
+                    time.sleep(0.1)
+                page.get_by_text(re.compile("point at V = ")).wait_for()
+                time.sleep(1.5)
+                shoot(page, "mdr")
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:
@@ -119,4 +131,4 @@ def main(which: list[str]) -> None:
 
 if __name__ == "__main__":
     main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit",
-                             "path"])
+                             "path", "mdr"])

@@ -30,6 +30,8 @@ def test_import_vibrofriction_does_not_import_panel():
     State(mode="bench", du_z_um=0.123456789, k_xc=math.inf, axis="v0", v_min=1e-4,
           v_max=0.1, log_x=True, points=57),
     State(a_x=0.5, phase_x=1.25, inplane_on="holder", axis="V", v_min=-1.0, v_max=1.0),
+    State(profile_exponent=2.0, axis="V"),
+    State(profile_exponent=3.7, axis="V", v_max=0.8),
 ])
 def test_state_round_trips_through_the_url(state):
     query = state.to_query()
@@ -88,6 +90,7 @@ def _run_snippet(state: State) -> np.ndarray:
     State(alpha=1.0, beta=math.inf, amplitude=0.5, axis="V", v_max=8.0, points=30),
     State(a_x=0.5, phase_x=1.25, inplane_on="holder", axis="V", v_min=-1.0, v_max=1.0,
           points=21),
+    State(profile_exponent=1.0, axis="V", v_max=1.2, points=12),
 ])
 def test_snippet_reproduces_the_curve(state):
     c = compute.curve(state)
@@ -359,3 +362,125 @@ def test_transverse_curve_through_zero_has_a_gap_there():
     assert "not computed" in c["status"][5]
     assert np.delete(c["trusted"], 5).all() and np.all(np.abs(np.delete(c["y"], 5)) < 1)
     assert math.isnan(c["static"]) and c["band"] is None
+
+
+def _mean_force_by_quadrature(a: float, n: float) -> float:
+    """``<F_N>/F_N0 = <max(0, 1 + a cos tau)^(1 + 1/n)>`` over a period, by quadrature (the
+    MDR force law of docs/contact_geometry.md, not ``theory``)."""
+    from scipy.integrate import quad
+
+    p = 1.0 + 1.0 / n
+    return quad(lambda t: max(0.0, 1.0 + a * math.cos(t)) ** p, 0.0, 2 * math.pi,
+                epsabs=1e-13)[0] / (2 * math.pi)
+
+
+def test_profile_selector_names_and_the_curved_refusals():
+    from vibrofriction.explorer.state import PROFILES, profile_of
+
+    assert [profile_of(PROFILES[k]) for k in PROFILES] == list(PROFILES)
+    assert profile_of(3.5) == profile_of(0.5) == "power"
+    assert State(profile_exponent=2.0).curved and not State().curved
+    assert not State(mode="bench", profile_exponent=2.0).curved  # the bench: linearised
+    assert State(profile_exponent=2.0).curve_points == 40 and State().curve_points == 200
+    sphere = State(profile_exponent=2.0, axis="V")
+    for texts, field, words in (
+            ({"beta": "inf"}, "beta", "does not take a rigid contact (beta = inf) yet"),
+            ({"eta_c": "0.1"}, "eta_c", "does not take contact damping (eta_c > 0)"),
+            ({"a_x": "0.2"}, "a_x", "longitudinal in-plane oscillation (a_x > 0)"),
+            ({"a_y": "0.2"}, "a_y", "transverse in-plane oscillation (a_y > 0)"),
+            ({"profile_exponent": "-1"}, "profile_exponent", "profile_exponent must be")):
+        state, problems = read_inputs(texts, sphere)
+        assert state is None and list(problems) == [field], problems
+        assert words in problems[field]
+    _, problems = read_inputs({}, sphere.with_(axis="vbar"))
+    assert "not derived for a curved profile" in problems["axis"]
+    state, problems = read_inputs({"profile_exponent": "1.5"}, sphere)
+    assert problems == {} and state.profile_exponent == 1.5
+
+
+def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
+    """A sphere's curve: the library's MDR answer point for point (40 points at most), the
+    static value and the mean normal force of its force law by quadrature, the stiff law
+    of the curved tip drawn in case II only, no critical velocity."""
+    state = State(profile_exponent=2.0, axis="V", v_max=1.2)
+    c = compute.curve(state)
+    assert len(c["x"]) == 40 and c["profile"] == "sphere (n = 2)"
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0),
+                                v_inertial=np.linspace(0.0, 1.2, 40))
+    np.testing.assert_array_equal(c["y"], r.mu_ratio)
+    mean = _mean_force_by_quadrature(0.5, 2.0)
+    assert c["mean_normal"] == pytest.approx(mean, rel=1e-9)
+    np.testing.assert_allclose(c["mean_normal_ratio"], mean, rtol=1e-9)
+    assert c["static"] == pytest.approx(0.5 ** 1.5 / mean, rel=1e-9)  # (1 - a)^p/<F_N>
+    assert math.isnan(c["critical"]) and c["closed_forms"] == []
+    moving = c["x"] > 0
+    for name in ("stick_area_fraction", "slip_area_fraction", "open_area_fraction"):
+        assert np.all((c[name][moving] >= 0) & (c[name][moving] <= 1))
+    total = (c["stick_area_fraction"] + c["slip_area_fraction"]
+             + c["open_area_fraction"])[moving]
+    np.testing.assert_allclose(total, 1.0, atol=1e-9)  # the disc is in one of the three
+    stiff = compute.curve(State(alpha=0.01, beta=0.02, profile_exponent=2.0, axis="V",
+                                v_max=80.0, points=6))
+    assert [f["label"] for f in stiff["closed_forms"]] == [
+        "stiff law of the curved tip (alpha, beta -> 0)"]
+    # the stiff system is near its limit: the solver within 1 % of the law
+    np.testing.assert_allclose(stiff["y"], stiff["closed_forms"][0]["y"], rtol=1e-2)
+
+
+def test_sphere_history_shows_the_contact_in_space_and_time():
+    """The space-time view's data: one period, the springs along the profile up to the
+    largest contact radius, out of contact exactly where the imposed indentation leaves
+    them (xi^n > 1 + a cos tau: the MDR geometry), in contact elsewhere."""
+    from vibrofriction.explorer.views import SpaceTimeView
+
+    state = State(profile_exponent=2.0, axis="V")
+    h = compute.history(state, 0.3)
+    st = h["spacetime"]
+    assert h["curved"] and h["steady"] and st is not None
+    t, xi, codes = st["t"], st["xi"], np.asarray(st["state"])
+    assert t[0] == pytest.approx(0.0) and t[-1] == pytest.approx(1.0)
+    assert codes.shape == (t.size, xi.size) and xi[-1] + xi[0] == pytest.approx(1.5 ** 0.5)
+    depth = 1.0 + 0.5 * np.cos(2 * math.pi * t)
+    gap = xi[None, :] ** 2 - depth[:, None]
+    clear = np.abs(gap) > 1e-9
+    np.testing.assert_array_equal((codes == 0)[clear], (gap > 0)[clear])
+    assert {1, 2} <= set(np.unique(codes))  # stick and slip both occur at this point
+    np.testing.assert_allclose(st["contact_radius"], np.sqrt(depth), rtol=1e-12)
+    view = SpaceTimeView()
+    view.show(h, "V = 0.3")
+    assert view.figure.visible and view.note.text == ""
+    assert view.image.data["image"][0].shape == (xi.size, t.size)
+    view.show({"spacetime": None, "message": "needs the MDR history (test)"}, "V = 0.3")
+    assert view.note.text == "needs the MDR history" and len(view.image.data["image"]) == 0
+
+
+def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page as app_module
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    ex = app_module.Explorer(State(eta_c=0.1, a_x=0.3))
+    ex.profile.value = "sphere"
+    assert ex.state.profile_exponent == 2.0 and ex.state.axis == "V"
+    assert ex.state.eta_c == 0.0 and ex.state.a_x == 0.0
+    for name, shown in (("eta_c", True), ("a_x", True), ("a_y", False)):
+        inp = ex.inputs[name]
+        assert inp.text.disabled and inp.slider.disabled
+        assert inp.message.visible == shown
+    assert "eta_c reset from 0.1 to 0: a curved profile" in ex.inputs["eta_c"].message.object
+    assert "axis set from vbar to V" in ex.axis_message.object
+    assert ex.profile_note.visible and ex.inplane_on.disabled
+    assert ex.inputs["profile_exponent"].text.disabled  # only the power law is typed
+    ex.inputs["beta"].text.value = "inf"
+    assert "rigid contact (beta = inf)" in ex.inputs["beta"].message.object
+    assert ex.state.beta == 2.0
+    ex.inputs["beta"].text.value = "2"
+    ex.profile.value = "power"
+    assert ex.state.profile_exponent == 3.0
+    assert not ex.inputs["profile_exponent"].text.disabled
+    ex.inputs["profile_exponent"].text.value = "1.5"
+    assert ex.state.profile_exponent == 1.5
+    ex.profile.value = "flat"
+    assert ex.state.profile_exponent == math.inf
+    assert not ex.inputs["eta_c"].text.disabled and not ex.inputs["eta_c"].message.visible
+    assert not ex.profile_note.visible and not ex.axis_message.visible

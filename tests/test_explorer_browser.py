@@ -238,3 +238,45 @@ def test_fit_button_fits_the_overlaid_measurements(page, server, tmp_path):
         lo, hi = map(float, re.search(rf"{name}\s+=.*interval \[([^,]+), ([^\]]+)\]",
                                       text).groups())
         assert lo <= true <= hi, (name, lo, hi)
+
+
+def _colour_share(png: bytes, rgb: tuple[int, int, int]) -> float:
+    """The share of the pixels of a screenshot within 6 of the colour ``rgb``."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    pixels = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"), dtype=int)
+    return float(np.mean(np.all(np.abs(pixels - np.array(rgb)) <= 6, axis=-1)))
+
+
+def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
+    """Choose the sphere: its eta_c is reset with the library's refusal beside it, the
+    curve is the MDR solver's (40 points), the space-time view of the picked point is
+    drawn (stick and slip pixels in it), a typed beta = inf is refused beside beta."""
+    from vibrofriction.explorer.views import CONTACT_COLORS
+
+    before = _open(page, server + "?eta_c=0.1")
+    page.get_by_role("button", name="sphere", exact=True).click()
+    page.get_by_text(re.compile(r"eta_c.*reset from 0\.1 to 0: a curved profile")).wait_for()
+    page.get_by_text(re.compile(r"axis set from vbar to V")).wait_for()
+    after = _changed(page, READOUT.pattern, before)
+    assert re.search(r"over the \d+ trusted of 40 points", after), after
+    page.get_by_text(re.compile(r"sphere \(n = 2\) \(MDR\): static value 0\.33")).wait_for()
+    point = page.get_by_text(re.compile(r"point at V = .*\(sphere \(n = 2\), MDR\)"))
+    point.wait_for()
+    assert re.search(r"<F_N>/F_N0 = 1\.04\d+, contact over the period: stick 0\.\d+",
+                     point.inner_text()), point.inner_text()
+    page.wait_for_timeout(1000)  # the canvas draws after the text
+    png = page.locator(".vf-spacetime").first.screenshot()
+    stick, slip = (_colour_share(png, tuple(int(c[i:i + 2], 16) for i in (1, 3, 5)))
+                   for c in CONTACT_COLORS[1:3])
+    assert stick > 0.05 and slip > 0.02, (stick, slip)
+    beta = _text_box(page, 1)
+    beta.fill("inf")
+    beta.press("Enter")
+    page.get_by_text(re.compile(r"does not take a rigid contact \(beta = inf\) yet: got "
+                                r"beta = inf")).wait_for()
+    assert page.get_by_text(READOUT).inner_text() == after  # the last good view stays
+    assert page.locator(".vf-text-eta_c input").is_disabled()

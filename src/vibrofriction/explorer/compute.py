@@ -17,11 +17,19 @@ from vibrofriction.schema import RESULT_FIELDS, parameter_names
 
 from .state import AXES, State
 
-__all__ = ["case_map", "curve", "history", "measurement_curves", "parse_measurements",
-           "run_fit"]
+__all__ = ["CONTACT_STATES", "case_map", "curve", "history", "measurement_curves",
+           "parse_measurements", "profile_text", "run_fit"]
 
 CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
                "general": "#f0f0f0"}
+
+
+def profile_text(exponent: float) -> str:
+    """The tip's name as the page shows it: ``flat punch``, ``sphere (n = 2)``, ..."""
+    if exponent == math.inf:
+        return "flat punch"
+    name = {2.0: "sphere", 1.0: "cone"}.get(exponent, "power law")
+    return f"{name} (n = {exponent:g})"
 
 
 def _to_axis(state: State, system, V: np.ndarray) -> np.ndarray:
@@ -73,21 +81,28 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     solved = x != 0.0 if dim.a_y > 0.0 else np.ones(x.size, dtype=bool)
     res = vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]})
     scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
-    V_c = dim.critical_inertial_velocity()
+    curved = dim.curved
+    # a curved tip: its critical velocity is not derived (docs/contact_geometry.md)
+    V_c = math.nan if curved else dim.critical_inertial_velocity()
     critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
     if state.axis == "v0":
         critical = system.critical_velocity()
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
+    static = math.nan  # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
+    if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0:
+        static = float(theory.profile_static_mu_ratio(dim.amplitude, dim.profile_exponent)
+                       if curved else theory.static_mu_ratio(dim.amplitude)) * scale
     case = vf.classify(dim.alpha, dim.beta)
     results = {k: _spread(np.asarray(getattr(res, k)), solved) for k in RESULT_COLUMNS}
     results["status"] = _spread(np.asarray([s.value for s in res.status], dtype=object),
                                 solved, "not computed (V = 0, transverse oscillation)")
     return {
         "x": x, "y": np.asarray(results["mu_ratio"], dtype=float) * scale, **results,
-        # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
-        "static": (float(theory.static_mu_ratio(dim.amplitude)) * scale
-                   if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0 else math.nan),
+        "static": static,
+        "mean_normal": float(theory.profile_mean_normal_force(dim.amplitude,
+                                                              dim.profile_exponent)),
+        "profile": profile_text(dim.profile_exponent),
         "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
         "case": case.value, "case_text": case.description,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
@@ -132,6 +147,8 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     V = _inertial(state, system, x)
     a = dim.amplitude
     out = []
+    if dim.curved:
+        return _curved_closed_forms(dim, x, V, case, scale)
     V_c = dim.critical_inertial_velocity()
     vbar = V / V_c if 0.0 < V_c < math.inf else None
 
@@ -159,12 +176,34 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     return out
 
 
+def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
+                         case: vf.Case, scale: float) -> list[dict]:
+    """The closed forms of a curved tip (docs/contact_geometry.md): its stiff law in case
+    II, undamped (``theory.mu_ratio_stiff_profile``, the quadrature of the flat law over the
+    MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``)."""
+    a, n = dim.amplitude, dim.profile_exponent
+    if case is not vf.Case.STIFF or dim.damped or a == 0.0:
+        return []
+    keep = V >= 0.0
+    vbar = (dim.beta - dim.alpha) * V[keep] * n / ((n + 1.0) * a)
+    y = np.asarray(theory.mu_ratio_stiff_profile(vbar, a, n), dtype=float) * scale
+    return [{"label": "stiff law of the curved tip (alpha, beta -> 0)", "x": x[keep],
+             "y": y}]
+
+
+#: The state of an MDR spring by its code in ``History.spring_state`` (0 to 3), as the
+#: space-time view names them.
+CONTACT_STATES = ("out of contact", "stick", "slip forwards", "slip backwards")
+
+
 def history(state: State, x: float, periods: float = 3.0) -> dict:
     """The time history at the curve's velocity ``x`` (Fig. 2): forces, phases, events;
     the steady state where the solver trusts it, else the motion from steady sliding.
     With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
     position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc``
-    and the transverse force ``f_y`` (None otherwise)."""
+    and the transverse force ``f_y`` (None otherwise).  A curved tip: :func:`mdr_history`."""
+    if state.curved:
+        return mdr_history(state, x)
     system = state.system()
     kw = {state.velocity_keyword(): float(x)}
     try:
@@ -188,6 +227,54 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
         "events": [(e.tau / (2.0 * math.pi), e.kind) for e in h.events],
         "steady": steady, "x": float(x), "mu_ratio": float(r.mu_ratio),
         "status": r.status.value, "trusted": bool(r.trusted), "message": r.message,
+    }
+
+
+def mdr_history(state: State, x: float, periods: float = 1.0,
+                samples_per_period: int = 200) -> dict:
+    """A curved tip's history at the inertial velocity ``x`` (``vf.simulate`` of the MDR
+    row, ``initial="steady"``: one period of its periodic orbit; where the row has none,
+    the last of three periods from steady sliding, said so): the forces and phases of
+    :func:`history` and, for the space-time view (``spacetime``), ``t`` (drive periods),
+    the springs' positions ``xi = x/a0`` along the profile, each spring's state per sample
+    (``state``, shape ``(T, M)``, codes of :data:`CONTACT_STATES`), the stick and contact
+    radii and the area fractions against time.  ``spacetime`` is None, with the reason in
+    ``message``, where the library gives no history."""
+    system = state.system()
+    message = ""
+    try:
+        try:
+            h = vf.simulate(system, v_inertial=float(x), periods=periods, initial="steady",
+                            samples_per_period=samples_per_period)
+            steady = True
+        except ValueError as exc:
+            if "did not converge" not in str(exc):
+                raise
+            h = vf.simulate(system, v_inertial=float(x), periods=3.0 * periods,
+                            samples_per_period=samples_per_period)
+            steady = False
+            message = "no periodic orbit of the row: the third period from steady sliding"
+    except ValueError as exc:  # a library without the MDR history
+        return {"curved": True, "x": float(x), "spacetime": None, "t": None,
+                "message": f"needs the MDR history ({exc})"}
+    last = h.tau >= h.tau[-1] - 2.0 * math.pi * periods - 1e-9  # the period shown
+    t = h.tau[last] / (2.0 * math.pi)
+    phase = h.phase[last]
+    change = np.flatnonzero(phase[1:] != phase[:-1]) + 1
+    starts = np.concatenate([[0], change])
+    ends = np.concatenate([change, [t.size - 1]])
+    return {
+        "curved": True, "x": float(x), "steady": steady, "message": message,
+        "t": t, "f": h.f[last], "n": h.n[last], "x_dot": h.x_dot[last], "f_y": None,
+        "phase": phase, "xc": None, "yc": None, "events": [],
+        "spans": [(float(t[i]), float(t[j]), str(phase[i])) for i, j in
+                  zip(starts, ends, strict=True) if t[j] > t[i]],
+        "spacetime": {"t": t, "xi": h.xi, "state": h.spring_state[last],
+                      "stick_radius": h.stick_radius[last],
+                      "contact_radius": h.contact_radius[last],
+                      "stick": h.stick_area_fraction[last],
+                      "slip": h.slip_area_fraction[last],
+                      "open": h.open_area_fraction[last], "springs": int(h.xi.size)},
     }
 
 

@@ -31,7 +31,9 @@ def _system_text(state: State) -> str:
         return (f"alpha = {state.alpha!r}, beta = {state.beta!r}, a = {state.amplitude!r}, "
                 f"zeta = {state.zeta!r}, eta_c = {state.eta_c!r}"
                 + (f", a_x = {state.a_x!r}, phase_x = {state.phase_x!r} on the "
-                   f"{state.inplane_on}" if state.a_x else ""))
+                   f"{state.inplane_on}" if state.a_x else "")
+                + (f", profile_exponent = {state.profile_exponent!r}" if state.curved
+                   else ""))
     return ", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
 
 
@@ -41,7 +43,9 @@ def snippet(state: State) -> str:
         make = (f"system = vf.Dimensionless(alpha={state.alpha!r}, beta={_num(state.beta)}, "
                 f"amplitude={state.amplitude!r}, zeta={state.zeta!r}, eta_c={state.eta_c!r}"
                 + (f", a_x={state.a_x!r}, phase_x={state.phase_x!r}, "
-                   f"inplane_on={state.inplane_on!r})" if state.a_x else ")"))
+                   f"inplane_on={state.inplane_on!r}" if state.a_x else "")
+                + (f", profile_exponent={state.profile_exponent!r}" if state.curved else "")
+                + ")")
     else:
         args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
         make = f"system = vf.Physical.from_bench(\n    {args})"
@@ -55,7 +59,8 @@ def snippet(state: State) -> str:
         "import vibrofriction as vf",
         "",
         make,
-        f"{state.axis} = np.{space}({state.v_min!r}, {state.v_max!r}, {state.points})",
+        f"{state.axis} = np.{space}({state.v_min!r}, {state.v_max!r}, "
+        f"{state.curve_points})",
         f"r = vf.friction_coefficient(system, {state.velocity_keyword()}={state.axis})",
         f"y = r.mu_ratio{scale}  # {'COF' if scale else 'mu/mu0'}; r.trusted flags each point",
     ]) + "\n"
@@ -75,7 +80,9 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     fig = Figure(figsize=(6.4, 4.2), layout="constrained")
     ax = fig.subplots()
     x, y, ok = curve["x"], curve["y"], curve["trusted"]
-    ax.plot(x, np.where(ok, y, np.nan), "-", color="C0", lw=1.5, label="exact solver")
+    solver = "exact solver" if curve.get("profile", "flat punch") == "flat punch" else \
+        f"MDR solver, {curve['profile']}"
+    ax.plot(x, np.where(ok, y, np.nan), "-", color="C0", lw=1.5, label=solver)
     if np.any(~ok):
         ax.plot(x[~ok], y[~ok], "o", mfc="none", color="0.5", ms=4,
                 label="not trusted (solver)")

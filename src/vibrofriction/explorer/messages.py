@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Mapping
 
 from .state import FIELDS, State, parse_number
 
-__all__ = ["GENERAL", "field_of", "read_inputs"]
+__all__ = ["GENERAL", "curved_refusal", "field_of", "read_inputs"]
 
 #: the key of a message that names no single input (shown above the inputs)
 GENERAL = "general"
@@ -15,6 +16,8 @@ GENERAL = "general"
 _ALIASES = {"du_z": "du_z_um", "dF_N": "du_z_um", "k_x": "mass",
             "vbar": "v_max", "v_inertial": "v_max", "v0": "v_max"}
 _FIRST_WORD = re.compile(r"^\s*([A-Za-z_][A-Za-z_0-9]*)")
+# the MDR solver's refusal names the input last: "... yet: got eta_c = 0.1"
+_CURVED_REFUSAL = re.compile(r"^a curved profile .* got ([A-Za-z_][A-Za-z_0-9]*) = ")
 
 
 def field_of(message: str, mode: str = "dimensionless") -> str:
@@ -23,8 +26,12 @@ def field_of(message: str, mode: str = "dimensionless") -> str:
     word = m.group(1) if m else ""
     if word == "eta_c" and mode == "bench":
         return "bench_eta_c"
-    if "v0* is" in message or "v0 (m/s) needs" in message:
+    if "v0* is" in message or "v0 (m/s) needs" in message or \
+            (word == "vbar" and "curved profile" in message):
         return "axis"
+    refused = _CURVED_REFUSAL.match(message)
+    if refused:
+        word = refused.group(1)
     word = _ALIASES.get(word, word)
     return word if word in FIELDS else GENERAL
 
@@ -47,6 +54,8 @@ def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, di
         system = state.system()
         state.velocities()
         _check_axis(state, system)
+        if state.curved:
+            _check_curved(state)
     except (ValueError, TypeError) as exc:
         return None, {field_of(str(exc), state.mode): str(exc)}
     return state, {}
@@ -63,3 +72,27 @@ def _check_axis(state: State, system) -> None:
     elif state.axis == "v0" and not isinstance(system, vf.Physical):
         raise ValueError("v0 (m/s) needs a Physical system: choose the bench inputs, "
                          "or the axis vbar or V")
+
+
+def _check_curved(state: State) -> None:
+    """The library's refusal of what the MDR solver does not take yet (``beta = inf``,
+    ``eta_c``, ``a_x``, ``a_y``): ``solve_points`` at ``V = 0``, the static limit, which
+    validates the point as any other and computes nothing."""
+    from vibrofriction.solver import solve_points
+
+    solve_points(state.alpha, state.beta, state.amplitude, 0.0, state.zeta, state.eta_c,
+                 state.a_x, state.phase_x, state.a_y, state.phase_y,
+                 profile_exponent=state.profile_exponent, inplane_on=state.inplane_on)
+
+
+def curved_refusal(state: State, name: str, value: float) -> str:
+    """The library's message refusing ``name = value`` with the state's curved tip (the
+    other refused inputs at 0 and a finite ``beta``, so the message is about ``name``);
+    ``""`` where it is accepted."""
+    others = {n: 0.0 for n in ("eta_c", "a_x", "a_y")}
+    beta = state.beta if math.isfinite(state.beta) else state.alpha + 1.0
+    try:
+        _check_curved(state.with_(**{**others, "beta": beta, name: value}))
+    except ValueError as exc:
+        return str(exc)
+    return ""

@@ -21,13 +21,35 @@ from vibrofriction.bench import FITTABLE
 from vibrofriction.schema import CHOICES
 
 from . import compute, exports, pool
-from .messages import GENERAL, field_of, read_inputs
-from .state import AXES, BENCH, DIMENSIONLESS, VELOCITY, Field, State, format_value
-from .views import CurveView, HistoryView, MapView
+from .messages import GENERAL, curved_refusal, field_of, read_inputs
+from .state import (
+    AXES,
+    BENCH,
+    DIMENSIONLESS,
+    MDR_POINTS,
+    MDR_REFUSED,
+    PROFILE,
+    PROFILES,
+    VELOCITY,
+    Field,
+    State,
+    format_value,
+    parse_number,
+    profile_of,
+)
+from .views import CurveView, HistoryView, MapView, SpaceTimeView
 
-__all__ = ["Explorer", "app", "readout_text"]
+__all__ = ["Explorer", "app", "point_text", "readout_text", "status_text"]
 
 _ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
+_NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
+#: the profile selector's labels
+_PROFILE_LABELS = {"flat punch": "flat", "sphere": "sphere", "cone": "cone",
+                   "power law": "power"}
+#: the power law's exponent when it is chosen from a named tip
+_POWER_DEFAULT = 3.0
+#: the inputs disabled with a curved tip: the refused ones and what only they act on
+_MDR_DISABLED = (*MDR_REFUSED, "phase_x", "phase_y")
 
 
 class Input:
@@ -85,6 +107,11 @@ class Input:
         self.message.object = text
         self.message.visible = bool(text)
 
+    def enable(self, on: bool) -> None:
+        """Enable or disable the slider and the box."""
+        self.slider.disabled = not on
+        self.text.disabled = not on
+
 
 class Explorer:
     """One page (one browser tab or one notebook cell)."""
@@ -107,6 +134,10 @@ class Explorer:
         self._history_want: float | None = None
         self._history_busy = False
         self._picked_x: float | None = None
+        self._point_text = ""  # the picked point's results, from the curve
+        self._point_y = math.nan
+        self._adjusting = False  # the page itself is setting inputs (no new reading)
+        self._mdr_notes: dict[str, str] = {}  # inputs reset or switched for a curved tip
         self._build()
         self._changed()
         for name, text in query_problems.items():  # kept: the defaults stand in for them
@@ -116,7 +147,13 @@ class Explorer:
     def _build(self) -> None:
         s = self.state
         self.inputs = {f.name: Input(f, getattr(s, f.name), self._changed)
-                       for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
+                       for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
+        self.profile = pn.widgets.RadioButtonGroup(
+            options=_PROFILE_LABELS, value=profile_of(s.profile_exponent), width=330,
+            name="profile", css_classes=["vf-profile"])
+        self.profile.param.watch(self._profile_chosen, "value")
+        self.profile_note = pn.pane.HTML("", styles=_NOTE_STYLE, visible=False, width=310,
+                                         css_classes=["vf-profile-note"])
         self.mode = pn.widgets.RadioButtonGroup(
             options={"dimensionless (alpha, beta, a)": "dimensionless", "bench (SI)": "bench"},
             value=s.mode, button_type="primary", width=320)
@@ -132,6 +169,7 @@ class Explorer:
         for w in (self.mode, self.axis, self.log_x, self.inplane_on):
             w.param.watch(lambda e: self._changed(), "value")
         self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
+        self.status = pn.pane.Markdown("", width=330, css_classes=["vf-status"])
         self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
         self.history_text = pn.pane.Markdown("click a point of the curve for its history",
                                              css_classes=["vf-history"])
@@ -139,6 +177,7 @@ class Explorer:
 
         self.curve_view = CurveView()
         self.history_view = HistoryView()
+        self.spacetime_view = SpaceTimeView()
         self.map_view = MapView(compute.case_map())
         for fig in self.curve_view.figures.values():
             fig.on_event(Tap, self._tapped_curve)
@@ -146,23 +185,33 @@ class Explorer:
         self.curve_pane = pn.pane.Bokeh(self.curve_view.figures["linear"],
                                         sizing_mode="stretch_width", min_height=400)
         self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
-                                 self.inplane_on, margin=0)
+                                 self.inplane_on,
+                                 pn.pane.Markdown("**the tip** (profile z = c r^n)"),
+                                 self.profile, self.inputs[PROFILE.name].layout,
+                                 self.profile_note, margin=0)
         self.bench_box = pn.Column(*(self.inputs[f.name].layout for f in BENCH), margin=0)
         self.bench_file = pn.widgets.FileInput(accept=".json", width=300)
         self.bench_file.param.watch(self._bench_file, "value")
         self.bench_box.append(pn.Column(pn.pane.Markdown("bench file (JSON, docs/bench.md):"),
                                         self.bench_file, margin=0))
+        self.bench_box.append(pn.pane.Markdown(
+            "The bench inputs are the linearised contact (its stiffnesses at the load): a "
+            "curved tip is chosen on the dimensionless inputs (in SI: "
+            "`Physical.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
+            "docs/contact_geometry.md).", width=330, styles=_NOTE_STYLE))
         sidebar = pn.Column(
             pn.pane.Markdown("## vibrofriction explorer\nFriction under normal oscillations "
                              "(Mao, Popov, Starcevic, Popov 2017), by the exact solver."),
             self.mode, self.general, self.dim_box, self.bench_box,
             pn.pane.Markdown("**velocity**"), self.axis, self.axis_message,
             *(self.inputs[f.name].layout for f in VELOCITY), self.log_x,
-            pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.readout,
+            pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.status,
+            self.readout,
             self.case_text, width=350)
         main = pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
-                                          self.history_view.path_figure, self.history_text,
+                                          self.history_view.path_figure,
+                                          self.spacetime_view.figure, self.history_text,
                                           sizing_mode="stretch_width"),
                                 self.map_view.figure, sizing_mode="stretch_width"),
                          pn.Tabs(("Measurements & fit", self._measurements_panel()),
@@ -213,23 +262,87 @@ class Explorer:
 
     # ------------------------------------------------------------------ inputs
     def _names(self) -> list[str]:
-        fields = BENCH if self.mode.value == "bench" else DIMENSIONLESS
+        fields = BENCH if self.mode.value == "bench" else (*DIMENSIONLESS, PROFILE)
         return [f.name for f in (*fields, *VELOCITY)]
+
+    def _profile_chosen(self, event) -> None:
+        """The selector sets the exponent (the power law's box is the only one typed)."""
+        box = self.inputs[PROFILE.name].text
+        if event.new == "power":
+            try:
+                current = parse_number(PROFILE.name, box.value)
+            except ValueError:
+                current = math.inf
+            value = current if profile_of(current) == "power" else _POWER_DEFAULT
+        else:
+            value = PROFILES[event.new]
+        if box.value != format_value(value):
+            box.value = format_value(value)  # its watcher reads the inputs
+        else:
+            self._changed()
+
+    def _guard_curved(self) -> None:
+        """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_x``,
+        ``a_y``) to 0 and the axis ``vbar`` to ``V``, saying so next to each with the
+        library's message, and disable them (and the phases, the mount); a flat punch
+        enables them again."""
+        try:
+            n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value)
+        except ValueError:
+            return  # read_inputs says so
+        curved = self.mode.value == "dimensionless" and n != math.inf
+        self.inputs[PROFILE.name].enable(self.profile.value == "power")
+        for name in _MDR_DISABLED:
+            self.inputs[name].enable(not curved)
+        self.inplane_on.disabled = curved
+        if not curved:
+            self._mdr_notes = {}
+            self.profile_note.visible = False
+            return
+        probe = self.state.with_(profile_exponent=n, mode="dimensionless")
+        self._adjusting = True
+        try:
+            for name in MDR_REFUSED:
+                box = self.inputs[name].text
+                try:
+                    value = parse_number(name, box.value)
+                except ValueError:
+                    value = 1.0  # unreadable: reset it too
+                if value != 0.0:
+                    why = curved_refusal(probe, name, value) or "refused"
+                    self._mdr_notes[name] = f"{name} reset from {box.value} to 0: {why}"
+                    box.value = "0"
+            if self.axis.value == "vbar":
+                self._mdr_notes["axis"] = f"axis set from vbar to V: {_vbar_refusal(probe)}"
+                self.axis.value = "V"
+        finally:
+            self._adjusting = False
+        self.profile_note.object = (
+            f"a {compute.profile_text(n)} by the MDR solver (docs/contact_geometry.md): "
+            f"at most {MDR_POINTS} points a curve (~30 ms a point). Not taken by it yet, so "
+            "disabled: contact damping eta_c, the in-plane oscillation (a_x, a_y), "
+            "beta = inf, the axis vbar.")
+        self.profile_note.visible = True
 
     def _changed(self) -> None:
         """Read every input; on success ask for the curve, else place the message."""
+        if self._adjusting:
+            return
         self._show_mode()
+        self._guard_curved()
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
                                 log_x=bool(self.log_x.value),
                                 inplane_on=self.inplane_on.value)
         texts = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
+        notes = self._mdr_notes
         for name, inp in self.inputs.items():
-            inp.show_message(problems.get(name, ""))
+            inp.show_message(problems.get(name, notes.get(name, "")))
         self.general.object = problems.get(GENERAL, "")
         self.general.visible = GENERAL in problems
-        self.axis_message.object = problems.get("axis", "")
-        self.axis_message.visible = "axis" in problems
+        axis_text = problems.get("axis", notes.get("axis", ""))
+        self.axis_message.object = axis_text
+        self.axis_message.visible = bool(axis_text)
         if state is None:
             return
         for n in self._names():
@@ -262,6 +375,7 @@ class Explorer:
         try:
             while self._want is not None:
                 state, self._want = self._want, None
+                self._on_doc(partial(setattr, self.status, "object", status_text(state)))
                 try:
                     curve = await pool.run_shared(compute.curve, compute.merge, state)
                 except Exception as exc:  # the last good view stays; say why, no traceback
@@ -271,6 +385,7 @@ class Explorer:
         finally:
             self._busy = False
             self._on_doc(partial(setattr, self.busy, "value", False))
+            self._on_doc(partial(setattr, self.status, "object", ""))
 
     def _failed(self, state: State, exc: Exception) -> None:
         text = str(exc) if isinstance(exc, ValueError) else \
@@ -296,12 +411,20 @@ class Explorer:
                   f"static value {curve['static']:.4g}" if band is None else
                   f"blocking forces (stuck band) {band[0]:.4g} at V -> 0+, {band[1]:.4g} at "
                   f"V -> 0-: {band[2]}")
-        self.case_text.object = (
-            f"**case {curve['case']}**: {curve['case_text']}\n\n"
-            f"{static}" + ("" if curve["a_y"] > 0 else
-                           f"; critical velocity ({state.axis}) {crit:.4g}"
-                           + (" (a > 1: eq. 12 is not the onset of sliding)"
-                              if curve["jumping"] else "")))
+        if curve["profile"] != "flat punch":
+            self.case_text.object = (
+                f"**case {curve['case']}**: {curve['case_text']}\n\n"
+                f"**{curve['profile']}** (MDR): static value {curve['static']:.4g} "
+                f"(the smallest normal force over the mean); mean normal force "
+                f"<F_N>/F_N0 = {curve['mean_normal']:.5g}; critical velocity not derived "
+                "for a curved tip")
+        else:
+            self.case_text.object = (
+                f"**case {curve['case']}**: {curve['case_text']}\n\n"
+                f"{static}" + ("" if curve["a_y"] > 0 else
+                               f"; critical velocity ({state.axis}) {crit:.4g}"
+                               + (" (a > 1: eq. 12 is not the onset of sliding)"
+                                  if curve["jumping"] else "")))
         self.snippet.object = f"```python\n{exports.snippet(state)}```"
         query = urlencode(state.to_query())
         self.link.object = f"Share this view: the page's address holds it (`?{query}`)."
@@ -339,6 +462,8 @@ class Explorer:
         if not np.isfinite(c["y"][i]):
             return
         self.curve_view.pick(float(x[i]), float(c["y"][i]))
+        self._point_text = point_text(c, i)
+        self._point_y = float(c["y"][i])
         self._history_want = float(x[i])
         if not self._history_busy:
             pn.state.execute(self._refresh_history)
@@ -360,13 +485,33 @@ class Explorer:
 
     def _show_history(self, state: State, h: dict) -> None:
         where = f"{state.axis} = {h['x']:.4g}"
+        if h.get("curved"):
+            self._show_mdr_history(where, h)
+            return
+        self.history_view.figure.visible = True
+        self.spacetime_view.hide()
         self.history_view.show(h, where)
         kinds = sorted({e[1] for e in h["events"]})
         self.history_text.object = (
             f"history at {where}: mu/mu0 = {h['mu_ratio']:.6g} ({h['status']}"
             f"{'' if h['trusted'] else ', not trusted'}); "
             f"{'steady state' if h['steady'] else 'from steady sliding (no trusted steady state)'}"
-            f", {len(h['events'])} events ({', '.join(kinds) or 'none'})")
+            f", {len(h['events'])} events ({', '.join(kinds) or 'none'}); "
+            f"{self._point_text}")
+
+    def _show_mdr_history(self, where: str, h: dict) -> None:
+        """A curved tip: the space-time view of its contact (or why there is none), the
+        forces where the MDR history gives them, and the point's results."""
+        forces = h.get("t") is not None
+        self.history_view.figure.visible = forces
+        self.history_view.path_figure.visible = False
+        if forces:  # the curve's mu/mu0 at the point (the solver's, not the row's estimate)
+            self.history_view.show({**h, "mu_ratio": self._point_y}, where)
+        self.spacetime_view.show(h, where)
+        self.history_text.object = (
+            f"point at {where} ({self.curve['profile'] if self.curve else 'curved tip'}, "
+            f"MDR): {self._point_text}"
+            + (f"; space-time view: {h['message']}" if h.get("message") else ""))
 
     # ------------------------------------------------------------------ map
     def _tapped_map(self, event) -> None:
@@ -484,6 +629,44 @@ class Explorer:
         if fmt == "csv":
             return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
         return io.BytesIO(exports.figure_bytes(self.curve, fmt))
+
+
+def _vbar_refusal(state: State) -> str:
+    """The library's message refusing the axis ``vbar`` for the state's curved tip."""
+    import vibrofriction as vf
+
+    try:
+        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=state.profile_exponent
+                         ).vbar_to_inertial(1.0)
+    except ValueError as exc:
+        return str(exc)
+    return "vbar is not available for this tip"
+
+
+def status_text(state: State) -> str:
+    """What is being computed, shown while the curve is under way."""
+    if state.curved:
+        return (f"computing {state.curve_points} points by the MDR solver "
+                f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
+                "a few tenths near the onset of sliding)...")
+    return f"computing {state.curve_points} points..."
+
+
+def point_text(curve: dict, i: int) -> str:
+    """The results of the curve's point ``i``: ``mu/mu0`` (or the COF), its status, the
+    mean normal force ``<F_N>/F_N0`` and the fractions of the contact disc in stick, slip
+    and out of contact over the period (the flat punch: its time fractions)."""
+    def value(name: str, fmt: str) -> str:
+        v = float(np.asarray(curve[name], dtype=float)[i])
+        return format(v, fmt) if math.isfinite(v) else "none"  # e.g. the static limit
+
+    trusted = bool(np.asarray(curve["trusted"])[i])
+    return (f"{curve['y_label']} = {value('y', '.6g')} ({curve['status'][i]}"
+            f"{'' if trusted else ', not trusted'}), <F_N>/F_N0 = "
+            f"{value('mean_normal_ratio', '.5g')}, contact over the period: stick "
+            f"{value('stick_area_fraction', '.3f')}, slip "
+            f"{value('slip_area_fraction', '.3f')}, out of contact "
+            f"{value('open_area_fraction', '.3f')}")
 
 
 def readout_text(curve: dict) -> str:

@@ -53,12 +53,26 @@ def _ping() -> int:
     return os.getpid()
 
 
+def _ping_curved() -> int:
+    from .compute import curve, history
+    from .state import State
+
+    sphere = State(points=2, profile_exponent=2.0, axis="V", v_max=0.3)
+    curve(sphere)  # the MDR solver's kernels
+    history(sphere, 0.3)  # and its history's
+    return os.getpid()
+
+
 def warm_up() -> None:
-    """Start the workers and load the kernels in each (the first page then draws at once)."""
+    """Start the workers and load the kernels in each (the first page then draws at once);
+    the MDR solver's kernels (a curved tip) load after, while the page is served (they
+    compile on a first start without numba's cache: the page must not wait for them)."""
     for kind, size in _SIZES.items():
         futures = [_pool(kind).submit(_ping) for _ in range(size)]
         for f in futures:
             f.result()
+    for _ in range(_SIZES["curve"]):
+        _pool("curve").submit(_ping_curved)
 
 
 def shutdown() -> None:

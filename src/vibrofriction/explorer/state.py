@@ -18,7 +18,8 @@ import vibrofriction as vf
 from vibrofriction.schema import CHOICES, PARAMETER, parameter_names
 from vibrofriction.validation import checked, checked_choice
 
-__all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "Field", "State", "parse_number"]
+__all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "MDR_POINTS", "MDR_REFUSED", "PROFILE",
+           "PROFILES", "Field", "State", "parse_number", "profile_of"]
 
 MODES = ("dimensionless", "bench")
 #: velocity axes: the keyword of ``friction_coefficient`` and the axis label
@@ -54,13 +55,32 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "eta_c": (0.0, 1.0, False), "a_x": (0.0, 5.0, False),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
            "phase_y": (0.0, 6.283185307179586, False)}
-#: not offered yet (the state keeps the schema's default): a curved profile's MDR solver
-#: takes seconds a point, and its vbar and closed forms are not derived
-#: (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is axisymmetric here
+#: the tip's profile is offered by a selector of its own (:data:`PROFILES`, :data:`PROFILE`)
+#: over the MDR solver (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is
+#: axisymmetric here
 _NOT_OFFERED = ("profile_exponent",)
 DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n])
                       for n in parameter_names("dimensionless", optional=False)
                       if n not in _NOT_OFFERED)
+#: the profile selector's named tips and their exponent ``n`` of ``z = c r^n``; any other
+#: exponent is the power law (its own input, :data:`PROFILE`)
+PROFILES = {"flat": math.inf, "sphere": 2.0, "cone": 1.0}
+#: the exponent of the power law (slider range: a UI choice; the library takes any n > 0)
+PROFILE = _model_field("profile_exponent", 0.25, 20.0,
+                       label="exponent n of the tip z = c r^n (power law)")
+#: the inputs the MDR solver does not take yet (a curved tip): reset to 0 and disabled,
+#: with the library's refusal shown next to them (docs/explorer.md)
+MDR_REFUSED = ("eta_c", "a_x", "a_y")
+#: the most points of a curve of a curved tip (the MDR solver: ~30 ms a point, up to a few
+#: tenths of a second near the onset of sliding)
+MDR_POINTS = 40
+
+
+def profile_of(exponent: float) -> str:
+    """The selector's name of a tip exponent: ``flat``, ``sphere``, ``cone`` or ``power``."""
+    return next((k for k, n in PROFILES.items() if n == exponent), "power")
+
+
 BENCH = (
     Field("natural_frequency_hz", "pin natural frequency (Hz)", 10.0, 1e5),
     _model_field("mass", 1e-4, 10.0, label="pin modal mass (kg)"),
@@ -77,7 +97,7 @@ VELOCITY = (
     Field("v_min", "velocity from (V, v0: signed)", -1e3, 1e3, log=False, allow_inf=False),
     Field("v_max", "velocity to", 1e-6, 1e3),
 )
-FIELDS = {f.name: f for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
+FIELDS = {f.name: f for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
 
 
 def parse_number(name: str, text: str | float) -> float:
@@ -127,6 +147,17 @@ class State:
         checked_choice("inplane_on", self.inplane_on)
 
     # ------------------------------------------------------------------ system
+    @property
+    def curved(self) -> bool:
+        """A curved tip (finite ``profile_exponent``) on the dimensionless inputs: the MDR
+        solver computes the curve (the bench inputs are the linearised contact)."""
+        return self.mode == "dimensionless" and self.profile_exponent != math.inf
+
+    @property
+    def curve_points(self) -> int:
+        """The points of the curve: ``points``, at most :data:`MDR_POINTS` for a curved tip."""
+        return min(self.points, MDR_POINTS) if self.curved else self.points
+
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
@@ -144,14 +175,14 @@ class State:
                     mu0=self.mu0, eta_c=self.bench_eta_c)
 
     def velocities(self) -> np.ndarray:
-        """The ``points`` velocities of the curve, on the chosen axis (``V`` and ``v0``
-        signed: negative slides the other way; ``vbar`` from 0)."""
+        """The :attr:`curve_points` velocities of the curve, on the chosen axis (``V`` and
+        ``v0`` signed: negative slides the other way; ``vbar`` from 0)."""
         lo = float(checked("v_min", self.v_min, minimum=0.0 if self.axis == "vbar" else None))
         hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
         if self.log_x:
             lo = float(checked("v_min", lo, minimum=0.0, strict=True))
-            return np.geomspace(lo, hi, self.points)
-        return np.linspace(lo, hi, self.points)
+            return np.geomspace(lo, hi, self.curve_points)
+        return np.linspace(lo, hi, self.curve_points)
 
     def velocity_keyword(self) -> str:
         """``vbar``, ``v_inertial`` or ``v0``: the keyword of ``friction_coefficient``."""

@@ -5,13 +5,13 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from bokeh.models import ColumnDataSource, HoverTool, Range1d
+from bokeh.models import ColumnDataSource, HoverTool, Label, LinearColorMapper, Range1d
 from bokeh.plotting import figure
 
 from ..figures.style import PHASE_COLORS
-from .compute import CASE_COLORS
+from .compute import CASE_COLORS, CONTACT_STATES
 
-__all__ = ["CurveView", "HistoryView", "MapView"]
+__all__ = ["CurveView", "HistoryView", "MapView", "SpaceTimeView"]
 
 _TOOLS = "pan,wheel_zoom,box_zoom,reset,save"
 _FORM_COLORS = ("#d95f02", "#7570b3", "#e7298a")
@@ -42,7 +42,7 @@ class CurveView:
     static value, the critical velocity, the closed forms, measurements and the fit."""
 
     def __init__(self, x_log: bool = False) -> None:
-        self.trusted = _empty(x=1, y=1)
+        self.trusted = _empty(x=1, y=1, n=1, stick=1, slip=1, open=1)
         self.untrusted = _empty(x=1, y=1, status=1)
         self.static = _empty(x=1, y=1)
         self.critical = _empty(x0=1, x1=1, y0=1, y1=1)
@@ -66,7 +66,7 @@ class CurveView:
         fig.multi_line("xs", "ys", source=self.forms, color="color", line_dash="dashed",
                        line_width=2, legend_field="form")
         fig.scatter("x", "y", source=self.static, marker="square", size=10, color="black",
-                    legend_label="static value mu(v0 -> 0), eq. (2)")
+                    legend_label="static value mu(v0 -> 0), eq. (2) (curved tip: its analogue)")
         fig.segment("x0", "y0", "x1", "y1", source=self.critical, color="#d62728",
                     line_dash="dotted", line_width=2,
                     legend_label="critical velocity, eq. (12)")
@@ -76,15 +76,20 @@ class CurveView:
                        line_dash="dotdash", legend_label="fit")
         fig.scatter("x", "y", source=self.picked, size=14, fill_color=None,
                     line_color="#ff7f0e", line_width=3, legend_label="point of the history")
-        fig.add_tools(HoverTool(renderers=[pts], tooltips=[("v", "@x{0.0000g}"),
-                                                           ("mu", "@y{0.000000}")]))
+        fig.add_tools(HoverTool(renderers=[pts], tooltips=[
+            ("v", "@x{0.0000g}"), ("mu", "@y{0.000000}"), ("<F_N>/F_N0", "@n{0.0000}"),
+            ("stick, slip, open", "@stick{0.000}, @slip{0.000}, @open{0.000}")]))
         _legend_outside(fig)
         return fig
 
     def show(self, curve: dict, log_x: bool) -> None:
         """Draw a computed curve (``compute.curve``)."""
         x, y, ok = curve["x"], curve["y"], curve["trusted"]
-        self.trusted.data = {"x": x, "y": np.where(ok, y, np.nan)}
+        self.trusted.data = {"x": x, "y": np.where(ok, y, np.nan),
+                             "n": curve["mean_normal_ratio"],
+                             "stick": curve["stick_area_fraction"],
+                             "slip": curve["slip_area_fraction"],
+                             "open": curve["open_area_fraction"]}
         bad = ~ok & np.isfinite(y)
         self.untrusted.data = {"x": x[bad], "y": y[bad], "status": curve["status"][bad]}
         shown = math.isfinite(curve["static"])
@@ -104,7 +109,9 @@ class CurveView:
         for fig in self.figures.values():
             fig.yaxis.axis_label = curve["y_label"]
             fig.xaxis.axis_label = curve["x_label"]
-            fig.title.text = (f"{curve['y_label']} against velocity (exact solver): case "
+            solver = "exact solver" if curve["profile"] == "flat punch" else \
+                f"{curve['profile']}, MDR solver"
+            fig.title.text = (f"{curve['y_label']} against velocity ({solver}): case "
                               f"{curve['case']}")
             fig.y_range.start = ymin - 0.04 * (ymax - ymin)  # the static value may be 0
             fig.y_range.end = ymax + 0.08 * (ymax - ymin)
@@ -135,6 +142,10 @@ class CurveView:
 #: Phase colours of the contact point's path (darker than the shading of the history).
 _PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
                 "flight": "#737373"}
+
+
+#: The history's phases: a curved tip's row adds "partial" (stick and slip at once).
+_HISTORY_COLORS = {**PHASE_COLORS, "partial": "#dadaeb"}
 
 
 class HistoryView:
@@ -198,7 +209,7 @@ class HistoryView:
             "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
             "bottom": [lo - 0.05 * pad] * len(h["spans"]),
             "top": [hi + pad] * len(h["spans"]),
-            "color": [PHASE_COLORS.get(s[2], "#ffffff") for s in h["spans"]],
+            "color": [_HISTORY_COLORS.get(s[2], "#ffffff") for s in h["spans"]],
             "phase": [s[2] for s in h["spans"]]}
         ev_t = np.array([e[0] for e in h["events"]], dtype=float)
         self.events.data = {"t": ev_t, "y": np.interp(ev_t, t, f) if ev_t.size else ev_t,
@@ -290,3 +301,70 @@ class MapView:
 def _rgba(color: str) -> tuple[int, int, int, int]:
     c = color.lstrip("#")
     return int(c[0:2], 16), int(c[2:4], 16), int(c[4:6], 16), 255
+
+
+#: Colours of the MDR springs' states by code (:data:`.compute.CONTACT_STATES`).
+CONTACT_COLORS = ("#eeeeee", "#4292c6", "#fd8d3c", "#a50f15")
+
+
+class SpaceTimeView:
+    """A curved tip's contact over one period: the position ``xi = x/a0`` along the profile
+    against ``t/T``, each spring coloured by its state (stick, slip, out of contact), with
+    the stick and contact radii where the history gives them; hidden for the flat punch.
+    Without an MDR time history it says so (``show`` with ``spacetime`` None)."""
+
+    def __init__(self) -> None:
+        self.image = _empty(image=1, x=1, y=1, dw=1, dh=1)
+        self.radii = _empty(t=1, stick=1, contact=1)
+        mapper = LinearColorMapper(palette=list(CONTACT_COLORS), low=-0.5,
+                                   high=len(CONTACT_COLORS) - 0.5)
+        fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
+                     title="contact in space and time (curved tip)", toolbar_location="above",
+                     x_axis_label="t/T (drive periods)",
+                     y_axis_label="xi = x/a0 (position along the profile)",
+                     x_range=Range1d(0.0, 1.0), y_range=Range1d(0.0, 1.0),
+                     css_classes=["vf-spacetime"])
+        fig.image("image", "x", "y", "dw", "dh", source=self.image, color_mapper=mapper)
+        for name, color in zip(CONTACT_STATES, CONTACT_COLORS, strict=True):
+            fig.scatter([-10.0], [-10.0], marker="square", size=10, color=color,
+                        line_color="#555555", legend_label=name)
+        fig.line("t", "stick", source=self.radii, color="#08519c", line_width=2,
+                 legend_label="stick radius")
+        fig.line("t", "contact", source=self.radii, color="black", line_width=1.5,
+                 line_dash="dashed", legend_label="contact radius")
+        self.note = Label(x=0.5, y=0.5, x_units="data", y_units="data", text="",
+                          text_align="center", text_baseline="middle",
+                          text_font_size="11pt", text_color="#b00020")
+        fig.add_layout(self.note)
+        fig.add_layout(fig.legend[0], "right")
+        fig.legend.label_text_font_size = "8pt"
+        fig.visible = False
+        self.figure = fig
+
+    def hide(self) -> None:
+        self.figure.visible = False
+
+    def show(self, h: dict, where: str) -> None:
+        """Draw ``compute.mdr_history``'s contact (or its placeholder message)."""
+        fig = self.figure
+        fig.visible = True
+        st = h.get("spacetime")
+        if st is None:
+            self.image.data = {"image": [], "x": [], "y": [], "dw": [], "dh": []}
+            self.radii.data = {"t": [], "stick": [], "contact": []}
+            self.note.text = "needs the MDR history"
+            fig.title.text = f"contact in space and time at {where}: {h['message']}"
+            return
+        t, xi, codes = (np.asarray(st[k], dtype=float) for k in ("t", "xi", "state"))
+        t0, t1 = float(t[0]), float(t[-1])
+        top = float(xi[-1] + xi[0])  # the cells' outer edge: the largest contact radius
+        # rows of the image are xi (upwards), columns are time
+        self.image.data = {"image": [np.ascontiguousarray(codes.T)], "x": [t0], "y": [0.0],
+                           "dw": [t1 - t0], "dh": [top]}
+        self.radii.data = {"t": t, "stick": st.get("stick_radius", np.full(t.size, np.nan)),
+                           "contact": st.get("contact_radius", np.full(t.size, np.nan))}
+        self.note.text = ""
+        fig.x_range.start, fig.x_range.end = t0, t1
+        fig.y_range.start, fig.y_range.end = 0.0, top
+        fig.title.text = (f"contact in space and time at {where} ({st['springs']} MDR "
+                          "springs, one period)")
