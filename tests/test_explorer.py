@@ -91,6 +91,8 @@ def _run_snippet(state: State) -> np.ndarray:
     State(a_x=0.5, phase_x=1.25, inplane_on="holder", axis="V", v_min=-1.0, v_max=1.0,
           points=21),
     State(profile_exponent=1.0, axis="V", v_max=1.2, points=12),
+    State(profile_exponent=2.0, a_x=0.5, phase_x=1.0, inplane_on="holder", axis="V",
+          v_min=-0.4, v_max=0.4, points=5),  # V = 0 left out
 ])
 def test_snippet_reproduces_the_curve(state):
     c = compute.curve(state)
@@ -386,22 +388,28 @@ def test_profile_selector_names_and_the_curved_refusals():
     for texts, field, words in (
             ({"beta": "inf"}, "beta", "does not take a rigid contact (beta = inf) yet"),
             ({"eta_c": "0.1"}, "eta_c", "does not take contact damping (eta_c > 0)"),
-            ({"a_x": "0.2"}, "a_x", "longitudinal in-plane oscillation (a_x > 0)"),
             ({"a_y": "0.2"}, "a_y", "transverse in-plane oscillation (a_y > 0)"),
             ({"profile_exponent": "-1"}, "profile_exponent", "profile_exponent must be")):
         state, problems = read_inputs(texts, sphere)
         assert state is None and list(problems) == [field], problems
         assert words in problems[field]
     _, problems = read_inputs({}, sphere.with_(axis="vbar"))
-    assert "not derived for a curved profile" in problems["axis"]
+    assert "not wired for a curved profile" in problems["axis"]
     state, problems = read_inputs({"profile_exponent": "1.5"}, sphere)
     assert problems == {} and state.profile_exponent == 1.5
+    # the longitudinal oscillation is taken (at V != 0: the curve leaves V = 0 out)
+    state, problems = read_inputs({"a_x": "0.2", "phase_x": "1"}, sphere)
+    assert problems == {} and state.a_x == 0.2 and state.rest_refused
+    assert state.grid()[0] == 0.0 and np.all(state.velocities() > 0.0)
+    assert state.velocities().size == state.curve_points - 1
+    assert not sphere.rest_refused and not State(a_x=0.2).rest_refused  # flat: V = 0 kept
 
 
 def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     """A sphere's curve: the library's MDR answer point for point (40 points at most), the
     static value and the mean normal force of its force law by quadrature, the stiff law
-    of the curved tip drawn in case II only, no critical velocity."""
+    of the curved tip drawn in case II only, the critical velocity of continuous sliding
+    (not eq. 12, which the case text does not name)."""
     state = State(profile_exponent=2.0, axis="V", v_max=1.2)
     c = compute.curve(state)
     assert len(c["x"]) == 40 and c["profile"] == "sphere (n = 2)"
@@ -412,7 +420,13 @@ def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     assert c["mean_normal"] == pytest.approx(mean, rel=1e-9)
     np.testing.assert_allclose(c["mean_normal_ratio"], mean, rtol=1e-9)
     assert c["static"] == pytest.approx(0.5 ** 1.5 / mean, rel=1e-9)  # (1 - a)^p/<F_N>
-    assert math.isnan(c["critical"]) and c["closed_forms"] == []
+    assert c["closed_forms"] == [] and c["band"] is None
+    assert c["critical"] == vf.theory.profile_critical_velocity(0.5, 2.0, 0.5, 2.0)
+    assert c["critical"] == pytest.approx(0.98999, abs=1e-5)  # docs/contact_geometry.md
+    assert c["critical_label"] == "critical velocity of continuous sliding (curved tip)"
+    assert "eq. (12)" not in c["case_text"] and "v0*" not in c["case_text"]
+    assert c["case_text"].startswith("General case: none of the limits I-IV applies")
+    assert c["critical_note"] == c["rest_note"] == ""
     moving = c["x"] > 0
     for name in ("stick_area_fraction", "slip_area_fraction", "open_area_fraction"):
         assert np.all((c[name][moving] >= 0) & (c[name][moving] <= 1))
@@ -425,6 +439,42 @@ def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
         "stiff law of the curved tip (alpha, beta -> 0)"]
     # the stiff system is near its limit: the solver within 1 % of the law
     np.testing.assert_allclose(stiff["y"], stiff["closed_forms"][0]["y"], rtol=1e-2)
+
+
+def test_sphere_with_a_longitudinal_oscillation_leaves_out_v_zero():
+    """A sphere with a_x: the curve is the library's (``friction_coefficient`` and
+    ``solve_points``, both mounts) at the signed velocities but V = 0, which is left out
+    with the library's refusal as the note; no static value, band, closed form or critical
+    velocity (those of a curved tip are without a_x), the library's reason instead."""
+    from vibrofriction.explorer.page import curved_side_text
+    from vibrofriction.solver import solve_points
+
+    state = State(profile_exponent=2.0, axis="V", a_x=0.5, phase_x=1.0, v_min=-0.3,
+                  v_max=0.3, points=3)
+    c = compute.curve(state)
+    np.testing.assert_array_equal(c["x"], [-0.3, 0.3])
+    system = vf.Dimensionless(0.5, 2.0, 0.5, a_x=0.5, phase_x=1.0, profile_exponent=2.0)
+    np.testing.assert_array_equal(c["y"], vf.friction_coefficient(
+        system, v_inertial=[-0.3, 0.3]).mu_ratio)
+    # docs/contact_geometry.md, "In-plane oscillation along the sliding"
+    np.testing.assert_allclose(c["y"], [-0.27147218, 0.58492697], atol=2e-8)
+    assert c["trusted"].all() and math.isnan(c["static"]) and math.isnan(c["critical"])
+    assert c["band"] is None and c["closed_forms"] == []
+    assert "derived without a_x" in c["critical_note"]
+    assert c["rest_note"].startswith("V = 0 left out of the curve: a curved profile")
+    assert "(a_x = 0.5) at v_inertial = 0" in c["rest_note"]
+    text = curved_side_text(c, state)
+    assert "no static value" in text and "no critical velocity" in text
+    assert "V = 0 left out" in text and "eq. (12)" not in text
+    # the mount: alpha != 1/2 (at 1/2 the two are the same drive)
+    holder = state.with_(alpha=0.3, inplane_on="holder", v_min=0.1, v_max=0.5, points=2)
+    h = compute.curve(holder)
+    p = solve_points(0.3, 2.0, 0.5, np.array([0.1, 0.5]), a_x=0.5, phase_x=1.0,
+                     profile_exponent=2.0, inplane_on="holder")
+    np.testing.assert_array_equal(h["y"], p["mu_ratio"])
+    assert h["rest_note"] == ""  # V = 0 is not on this curve
+    substrate = compute.curve(holder.with_(inplane_on="substrate"))
+    assert np.max(np.abs(h["y"] - substrate["y"])) > 1e-3
 
 
 def test_sphere_history_shows_the_contact_in_space_and_time():
@@ -459,17 +509,25 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     from vibrofriction.explorer import page as app_module
 
     monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
-    ex = app_module.Explorer(State(eta_c=0.1, a_x=0.3))
+    ex = app_module.Explorer(State(eta_c=0.1, a_x=0.3, a_y=0.2, inplane_on="holder"))
     ex.profile.value = "sphere"
     assert ex.state.profile_exponent == 2.0 and ex.state.axis == "V"
-    assert ex.state.eta_c == 0.0 and ex.state.a_x == 0.0
-    for name, shown in (("eta_c", True), ("a_x", True), ("a_y", False)):
+    assert ex.state.eta_c == 0.0 and ex.state.a_y == 0.0
+    for name, shown in (("eta_c", True), ("a_y", True), ("phase_y", False)):
         inp = ex.inputs[name]
         assert inp.text.disabled and inp.slider.disabled
         assert inp.message.visible == shown
+    # the longitudinal oscillation is the MDR solver's now: kept and enabled
+    assert ex.state.a_x == 0.3 and ex.state.inplane_on == "holder"
+    for name in ("a_x", "phase_x"):
+        inp = ex.inputs[name]
+        assert not inp.text.disabled and not inp.slider.disabled
+        assert not inp.message.visible
+    assert not ex.inplane_on.disabled
     assert "eta_c reset from 0.1 to 0: a curved profile" in ex.inputs["eta_c"].message.object
+    assert "a_y reset from 0.2 to 0: a curved profile" in ex.inputs["a_y"].message.object
     assert "axis set from vbar to V" in ex.axis_message.object
-    assert ex.profile_note.visible and ex.inplane_on.disabled
+    assert ex.profile_note.visible
     assert ex.inputs["profile_exponent"].text.disabled  # only the power law is typed
     ex.inputs["beta"].text.value = "inf"
     assert "rigid contact (beta = inf)" in ex.inputs["beta"].message.object

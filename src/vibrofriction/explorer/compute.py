@@ -68,10 +68,13 @@ def merge(parts: list[dict]) -> dict:
 
 
 def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
-    """``mu/mu0`` (or the COF on a bench) over the state's velocities by the exact solver,
-    with the static value (eq. 2), the critical velocity (eq. 12), the case and the
-    closed forms that apply.  ``part = (i, n)``: only the ``i``-th of ``n`` interleaved
-    shares of the points (:func:`merge` joins them; the closed forms come with share 0)."""
+    """``mu/mu0`` (or the COF on a bench) over the state's velocities by the exact solver
+    (a curved tip: the MDR solver), with the static value (eq. 2), the critical velocity
+    (eq. 12; a curved tip: ``theory.profile_critical_velocity``, or the library's reason
+    for none in ``critical_note``), the case and the closed forms that apply; ``rest_note``
+    says why ``V = 0`` is left out (:attr:`State.rest_refused`), else ``""``.
+    ``part = (i, n)``: only the ``i``-th of ``n`` interleaved shares of the points
+    (:func:`merge` joins them; the closed forms come with share 0)."""
     t0 = time.perf_counter()
     system = state.system()
     dim = _dimensionless(system)
@@ -82,8 +85,11 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     res = vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]})
     scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
     curved = dim.curved
-    # a curved tip: its critical velocity is not derived (docs/contact_geometry.md)
-    V_c = math.nan if curved else dim.critical_inertial_velocity()
+    critical_note = ""
+    try:  # a curved tip: theory.profile_critical_velocity, derived without a_x
+        V_c = dim.critical_inertial_velocity()
+    except ValueError as exc:
+        V_c, critical_note = math.nan, str(exc)
     critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
     if state.axis == "v0":
         critical = system.critical_velocity()
@@ -94,6 +100,12 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         static = float(theory.profile_static_mu_ratio(dim.amplitude, dim.profile_exponent)
                        if curved else theory.static_mu_ratio(dim.amplitude)) * scale
     case = vf.classify(dim.alpha, dim.beta)
+    rest_note = ""
+    if state.rest_refused and np.any(state.grid() == 0.0):
+        try:  # the library's refusal of the point left out
+            vf.friction_coefficient(system, v_inertial=0.0)
+        except ValueError as exc:
+            rest_note = f"V = 0 left out of the curve: {exc}"
     results = {k: _spread(np.asarray(getattr(res, k)), solved) for k in RESULT_COLUMNS}
     results["status"] = _spread(np.asarray([s.value for s in res.status], dtype=object),
                                 solved, "not computed (V = 0, transverse oscillation)")
@@ -104,7 +116,11 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
                                                               dim.profile_exponent)),
         "profile": profile_text(dim.profile_exponent),
         "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
-        "case": case.value, "case_text": case.description,
+        "case": case.value,
+        "case_text": _curved_case_text(case) if curved else case.description,
+        "critical_label": ("critical velocity of continuous sliding (curved tip)" if curved
+                           else "critical velocity, eq. (12)"),
+        "critical_note": critical_note, "rest_note": rest_note,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
                                                   scale),
@@ -113,6 +129,15 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "mu0": scale if scale != 1.0 else None,
         "seconds": time.perf_counter() - t0,
     }
+
+
+def _curved_case_text(case: vf.Case) -> str:
+    """The case of ``(alpha, beta)`` for a curved tip: ``classify``'s description without
+    its flat-punch ``v0*`` (eqs. 12 to 14; a curved tip's is
+    ``theory.profile_critical_velocity``) and what follows it."""
+    head = case.description.split("v0*")[0].rstrip(" :;,")
+    return (f"{head}; the critical velocity of a curved tip is that of continuous sliding "
+            "(theory.profile_critical_velocity, docs/contact_geometry.md)")
 
 
 def _spread(values: np.ndarray, solved: np.ndarray, fill: object = None) -> np.ndarray:
@@ -129,7 +154,7 @@ def _spread(values: np.ndarray, solved: np.ndarray, fill: object = None) -> np.n
 def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | None:
     """With an in-plane oscillation: the blocking forces ``mu(V -> 0+)``, ``mu(V -> 0-)``
     of the closed-form stuck band (nan: slips every cycle) and the regime's name."""
-    if dim.a_x == 0.0 or dim.a_y > 0.0:  # the band is the 1-D stuck contact's
+    if dim.a_x == 0.0 or dim.a_y > 0.0 or dim.curved:  # the flat punch's 1-D stuck band
         return None
     args = (dim.alpha, dim.beta, dim.amplitude, dim.a_x, dim.phase_x, dim.zeta, dim.eta_c,
             dim.inplane_on)
@@ -180,9 +205,9 @@ def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
                          case: vf.Case, scale: float) -> list[dict]:
     """The closed forms of a curved tip (docs/contact_geometry.md): its stiff law in case
     II, undamped (``theory.mu_ratio_stiff_profile``, the quadrature of the flat law over the
-    MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``)."""
+    MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``); none with ``a_x > 0``."""
     a, n = dim.amplitude, dim.profile_exponent
-    if case is not vf.Case.STIFF or dim.damped or a == 0.0:
+    if case is not vf.Case.STIFF or dim.damped or a == 0.0 or dim.a_x > 0.0:
         return []
     keep = V >= 0.0
     vbar = (dim.beta - dim.alpha) * V[keep] * n / ((n + 1.0) * a)

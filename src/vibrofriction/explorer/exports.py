@@ -19,6 +19,7 @@ def curve_csv(state: State, curve: dict) -> str:
     lines = [f"# vibrofriction explorer: {_system_text(state)}",
              f"# case {curve['case']}; static value {curve['static']:.10g}; "
              f"critical velocity ({axis}) {curve['critical']:.10g}",
+             *([f"# {curve['rest_note']}"] if curve.get("rest_note") else []),
              f"{axis},{'cof' if curve['mu0'] else 'mu_ratio'},status,error,trusted"]
     for x, y, s, e, t in zip(curve["x"], curve["y"], curve["status"], curve["error"],
                              curve["trusted"], strict=True):
@@ -61,6 +62,8 @@ def snippet(state: State) -> str:
         make,
         f"{state.axis} = np.{space}({state.v_min!r}, {state.v_max!r}, "
         f"{state.curve_points})",
+        *([f"{state.axis} = {state.axis}[{state.axis} != 0]  # the MDR solver refuses "
+           "V = 0 with a_x > 0"] if state.rest_refused else []),
         f"r = vf.friction_coefficient(system, {state.velocity_keyword()}={state.axis})",
         f"y = r.mu_ratio{scale}  # {'COF' if scale else 'mu/mu0'}; r.trusted flags each point",
     ]) + "\n"
@@ -92,7 +95,7 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
         ax.plot([x[0]], [curve["static"]], "s", color="k", ms=5, label="static value, eq. (2)")
     if math.isfinite(curve["critical"]):
         ax.axvline(curve["critical"], color="C3", lw=0.8, ls=":",
-                   label="critical velocity, eq. (12)")
+                   label=curve.get("critical_label", "critical velocity, eq. (12)"))
     ax.set_xlabel(curve["x_label"])
     ax.set_ylabel(curve["y_label"])
     ax.set_title(f"alpha = {curve['alpha']:.4g}, beta = {curve['beta']:.4g}, "

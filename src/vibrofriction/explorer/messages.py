@@ -6,7 +6,7 @@ import math
 import re
 from collections.abc import Mapping
 
-from .state import FIELDS, State, parse_number
+from .state import FIELDS, MDR_REFUSED, State, parse_number
 
 __all__ = ["GENERAL", "curved_refusal", "field_of", "read_inputs"]
 
@@ -76,12 +76,14 @@ def _check_axis(state: State, system) -> None:
 
 def _check_curved(state: State) -> None:
     """The library's refusal of what the MDR solver does not take yet (``beta = inf``,
-    ``eta_c``, ``a_x``, ``a_y``): ``solve_points`` at ``V = 0``, the static limit, which
-    validates the point as any other and computes nothing."""
+    ``eta_c``, ``a_y``): ``solve_points`` at ``V = 0``, the static limit, which validates
+    the point as any other and computes nothing.  ``a_x`` is taken at ``V != 0`` (and
+    refused at ``V = 0``, which the curve leaves out: :attr:`State.rest_refused`), so the
+    check is without it (``Dimensionless`` has validated it)."""
     from vibrofriction.solver import solve_points
 
     solve_points(state.alpha, state.beta, state.amplitude, 0.0, state.zeta, state.eta_c,
-                 state.a_x, state.phase_x, state.a_y, state.phase_y,
+                 0.0, state.phase_x, state.a_y, state.phase_y,
                  profile_exponent=state.profile_exponent, inplane_on=state.inplane_on)
 
 
@@ -89,7 +91,7 @@ def curved_refusal(state: State, name: str, value: float) -> str:
     """The library's message refusing ``name = value`` with the state's curved tip (the
     other refused inputs at 0 and a finite ``beta``, so the message is about ``name``);
     ``""`` where it is accepted."""
-    others = {n: 0.0 for n in ("eta_c", "a_x", "a_y")}
+    others = {n: 0.0 for n in MDR_REFUSED}
     beta = state.beta if math.isfinite(state.beta) else state.alpha + 1.0
     try:
         _check_curved(state.with_(**{**others, "beta": beta, name: value}))

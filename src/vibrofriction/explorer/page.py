@@ -39,7 +39,7 @@ from .state import (
 )
 from .views import CurveView, HistoryView, MapView, SpaceTimeView
 
-__all__ = ["Explorer", "app", "point_text", "readout_text", "status_text"]
+__all__ = ["Explorer", "app", "curved_side_text", "point_text", "readout_text", "status_text"]
 
 _ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
 _NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
@@ -48,8 +48,9 @@ _PROFILE_LABELS = {"flat punch": "flat", "sphere": "sphere", "cone": "cone",
                    "power law": "power"}
 #: the power law's exponent when it is chosen from a named tip
 _POWER_DEFAULT = 3.0
-#: the inputs disabled with a curved tip: the refused ones and what only they act on
-_MDR_DISABLED = (*MDR_REFUSED, "phase_x", "phase_y")
+#: the inputs disabled with a curved tip: the refused ones and what only they act on (the
+#: longitudinal oscillation a_x, phase_x and its mount stay: the MDR solver takes them)
+_MDR_DISABLED = (*MDR_REFUSED, "phase_y")
 
 
 class Input:
@@ -282,10 +283,10 @@ class Explorer:
             self._changed()
 
     def _guard_curved(self) -> None:
-        """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_x``,
-        ``a_y``) to 0 and the axis ``vbar`` to ``V``, saying so next to each with the
-        library's message, and disable them (and the phases, the mount); a flat punch
-        enables them again."""
+        """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
+        and the axis ``vbar`` to ``V``, saying so next to each with the library's message,
+        and disable them (and ``phase_y``); a flat punch enables them again.  The
+        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled."""
         try:
             n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value)
         except ValueError:
@@ -294,7 +295,6 @@ class Explorer:
         self.inputs[PROFILE.name].enable(self.profile.value == "power")
         for name in _MDR_DISABLED:
             self.inputs[name].enable(not curved)
-        self.inplane_on.disabled = curved
         if not curved:
             self._mdr_notes = {}
             self.profile_note.visible = False
@@ -319,9 +319,10 @@ class Explorer:
             self._adjusting = False
         self.profile_note.object = (
             f"a {compute.profile_text(n)} by the MDR solver (docs/contact_geometry.md): "
-            f"at most {MDR_POINTS} points a curve (~30 ms a point). Not taken by it yet, so "
-            "disabled: contact damping eta_c, the in-plane oscillation (a_x, a_y), "
-            "beta = inf, the axis vbar.")
+            f"at most {MDR_POINTS} points a curve (~30 ms a point). It takes the "
+            "longitudinal in-plane oscillation (a_x, phase_x, the mount) at V != 0 (with "
+            "a_x > 0 the curve leaves V = 0 out). Not taken by it yet, so disabled: contact "
+            "damping eta_c, the transverse oscillation a_y, beta = inf, the axis vbar.")
         self.profile_note.visible = True
 
     def _changed(self) -> None:
@@ -412,12 +413,7 @@ class Explorer:
                   f"blocking forces (stuck band) {band[0]:.4g} at V -> 0+, {band[1]:.4g} at "
                   f"V -> 0-: {band[2]}")
         if curve["profile"] != "flat punch":
-            self.case_text.object = (
-                f"**case {curve['case']}**: {curve['case_text']}\n\n"
-                f"**{curve['profile']}** (MDR): static value {curve['static']:.4g} "
-                f"(the smallest normal force over the mean); mean normal force "
-                f"<F_N>/F_N0 = {curve['mean_normal']:.5g}; critical velocity not derived "
-                "for a curved tip")
+            self.case_text.object = curved_side_text(curve, state)
         else:
             self.case_text.object = (
                 f"**case {curve['case']}**: {curve['case_text']}\n\n"
@@ -641,6 +637,28 @@ def _vbar_refusal(state: State) -> str:
     except ValueError as exc:
         return str(exc)
     return "vbar is not available for this tip"
+
+
+def curved_side_text(curve: dict, state: State) -> str:
+    """The case and the curved tip's values beside the curve: the static value (none with
+    ``a_x > 0``: it is the limit without the in-plane oscillation), the mean normal force,
+    the critical velocity of continuous sliding (or the library's reason for none), and
+    why ``V = 0`` is left out where it is."""
+    static = (f"static value {curve['static']:.4g} (the smallest normal force over the "
+              "mean)" if math.isfinite(curve["static"]) else
+              "no static value (a curved tip's is that without the in-plane oscillation)"
+              if curve["a_x"] > 0 else "no static value (the curve starts at V < 0)")
+    crit = curve["critical"]
+    critical = (f"critical velocity ({state.axis}) {crit:.4g} (continuous sliding above "
+                "it: mu = mu0)" if math.isfinite(crit) else
+                f"no critical velocity: {curve['critical_note']}" if curve["critical_note"]
+                else "no finite critical velocity")
+    text = (f"**case {curve['case']}**: {curve['case_text']}\n\n"
+            f"**{curve['profile']}** (MDR): {static}; mean normal force "
+            f"<F_N>/F_N0 = {curve['mean_normal']:.5g}; {critical}")
+    if curve["rest_note"]:
+        text += f"\n\n**{curve['rest_note']}**"
+    return text
 
 
 def status_text(state: State) -> str:

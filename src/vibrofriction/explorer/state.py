@@ -69,8 +69,10 @@ PROFILES = {"flat": math.inf, "sphere": 2.0, "cone": 1.0}
 PROFILE = _model_field("profile_exponent", 0.25, 20.0,
                        label="exponent n of the tip z = c r^n (power law)")
 #: the inputs the MDR solver does not take yet (a curved tip): reset to 0 and disabled,
-#: with the library's refusal shown next to them (docs/explorer.md)
-MDR_REFUSED = ("eta_c", "a_x", "a_y")
+#: with the library's refusal shown next to them (docs/explorer.md); it takes the
+#: longitudinal in-plane oscillation ``a_x`` at ``V != 0`` (not at ``V = 0``:
+#: :meth:`State.velocities` leaves that point out)
+MDR_REFUSED = ("eta_c", "a_y")
 #: the most points of a curve of a curved tip (the MDR solver: ~30 ms a point, up to a few
 #: tenths of a second near the onset of sliding)
 MDR_POINTS = 40
@@ -174,15 +176,27 @@ class State:
                     drive_frequency_hz=self.drive_frequency_hz, du_z=self.du_z_um * 1e-6,
                     mu0=self.mu0, eta_c=self.bench_eta_c)
 
-    def velocities(self) -> np.ndarray:
-        """The :attr:`curve_points` velocities of the curve, on the chosen axis (``V`` and
-        ``v0`` signed: negative slides the other way; ``vbar`` from 0)."""
+    @property
+    def rest_refused(self) -> bool:
+        """Whether ``V = 0`` is no point of the curve: a curved tip with a longitudinal
+        in-plane oscillation (``a_x > 0``), which the MDR solver refuses at rest."""
+        return self.curved and self.a_x > 0.0
+
+    def grid(self) -> np.ndarray:
+        """The :attr:`curve_points` velocities from ``v_min`` to ``v_max`` on the chosen
+        axis (``V`` and ``v0`` signed: negative slides the other way; ``vbar`` from 0)."""
         lo = float(checked("v_min", self.v_min, minimum=0.0 if self.axis == "vbar" else None))
         hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
         if self.log_x:
             lo = float(checked("v_min", lo, minimum=0.0, strict=True))
             return np.geomspace(lo, hi, self.curve_points)
         return np.linspace(lo, hi, self.curve_points)
+
+    def velocities(self) -> np.ndarray:
+        """The velocities of the curve: the :meth:`grid`, without ``V = 0`` where it is
+        refused (:attr:`rest_refused`; the page says so)."""
+        x = self.grid()
+        return x[x != 0.0] if self.rest_refused else x
 
     def velocity_keyword(self) -> str:
         """``vbar``, ``v_inertial`` or ``v0``: the keyword of ``friction_coefficient``."""

@@ -45,7 +45,8 @@ class CurveView:
         self.trusted = _empty(x=1, y=1, n=1, stick=1, slip=1, open=1)
         self.untrusted = _empty(x=1, y=1, status=1)
         self.static = _empty(x=1, y=1)
-        self.critical = _empty(x0=1, x1=1, y0=1, y1=1)
+        self.critical = _empty(x0=1, x1=1, y0=1, y1=1)  # the flat punch's (eq. 12)
+        self.critical_curved = _empty(x0=1, x1=1, y0=1, y1=1)  # continuous sliding
         self.forms = _empty(xs=1, ys=1, form=1, color=1)
         self.measured = _empty(x=1, y=1, group=1, color=1)
         self.fitted = _empty(xs=1, ys=1, color=1)
@@ -70,6 +71,9 @@ class CurveView:
         fig.segment("x0", "y0", "x1", "y1", source=self.critical, color="#d62728",
                     line_dash="dotted", line_width=2,
                     legend_label="critical velocity, eq. (12)")
+        fig.segment("x0", "y0", "x1", "y1", source=self.critical_curved, color="#d62728",
+                    line_dash="dotted", line_width=2,
+                    legend_label="critical velocity of continuous sliding (curved tip)")
         fig.scatter("x", "y", source=self.measured, size=8, marker="triangle",
                     color="color", legend_field="group")
         fig.multi_line("xs", "ys", source=self.fitted, color="color", line_width=2,
@@ -99,9 +103,11 @@ class CurveView:
                    float(np.nanmax(y)) if np.any(np.isfinite(y)) else 1.0)
         crit = curve["critical"]
         in_range = math.isfinite(crit) and x[0] <= crit <= x[-1]
-        self.critical.data = {"x0": [crit] if in_range else [], "x1": [crit] if in_range else [],
-                              "y0": [0.0] if in_range else [],
-                              "y1": [1.05 * ymax] if in_range else []}
+        line = {"x0": [crit], "x1": [crit], "y0": [0.0], "y1": [1.05 * ymax]}
+        none = {k: [] for k in line}
+        curved = curve["profile"] != "flat punch"
+        self.critical.data = line if in_range and not curved else none
+        self.critical_curved.data = line if in_range and curved else none
         forms = curve["closed_forms"]
         self.forms.data = {"xs": [f["x"] for f in forms], "ys": [f["y"] for f in forms],
                            "form": [f["label"] for f in forms],
