@@ -8,8 +8,8 @@ history after a click on the curve), ``explorer_map.png`` (the case map, soft co
 ``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted) and
 ``explorer_path.png`` (a transverse drive: the history with ``f_y`` and the contact point's
 path in the plane, cropped to the history) and ``explorer_mdr.png`` (a sphere: eta_c
-reset with the MDR solver's refusal beside it, its curve, a point's history and its
-contact in space and time).
+reset with the MDR solver's refusal beside it, its curve and its critical velocity of
+continuous sliding, a point's history and its contact in space and time).
 
 Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
       mdr]

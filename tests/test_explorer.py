@@ -11,7 +11,7 @@ import vibrofriction as vf
 from vibrofriction.explorer import compute, exports
 from vibrofriction.explorer.messages import GENERAL, field_of, read_inputs
 from vibrofriction.explorer.state import State
-from vibrofriction.explorer.views import HistoryView
+from vibrofriction.explorer.views import CurveView, HistoryView
 
 
 def test_import_vibrofriction_does_not_import_panel():
@@ -427,6 +427,9 @@ def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     assert "eq. (12)" not in c["case_text"] and "v0*" not in c["case_text"]
     assert c["case_text"].startswith("General case: none of the limits I-IV applies")
     assert c["critical_note"] == c["rest_note"] == ""
+    view = CurveView()
+    view.show(c, False)  # drawn as the curved tip's line, not eq. (12)'s
+    assert view.critical_curved.data["x0"] == [c["critical"]] and not view.critical.data["x0"]
     moving = c["x"] > 0
     for name in ("stick_area_fraction", "slip_area_fraction", "open_area_fraction"):
         assert np.all((c[name][moving] >= 0) & (c[name][moving] <= 1))
@@ -466,6 +469,14 @@ def test_sphere_with_a_longitudinal_oscillation_leaves_out_v_zero():
     text = curved_side_text(c, state)
     assert "no static value" in text and "no critical velocity" in text
     assert "V = 0 left out" in text and "eq. (12)" not in text
+    view = CurveView()
+    view.show(c, False)  # the line breaks where V = 0 is left out; no critical line
+    np.testing.assert_array_equal(view.trusted.data["x"], [-0.3, 0.0, 0.3])
+    assert np.isnan(view.trusted.data["y"]).tolist() == [False, True, False]
+    assert len(view.critical.data["x0"]) == len(view.critical_curved.data["x0"]) == 0
+    assert len(view.static.data["x"]) == 0
+    assert "V = 0 left out" in exports.curve_csv(state, c).splitlines()[2]
+    assert exports.figure_bytes(c, "svg").startswith(b"<?xml")
     # the mount: alpha != 1/2 (at 1/2 the two are the same drive)
     holder = state.with_(alpha=0.3, inplane_on="holder", v_min=0.1, v_max=0.5, points=2)
     h = compute.curve(holder)

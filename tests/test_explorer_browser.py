@@ -252,9 +252,10 @@ def _colour_share(png: bytes, rgb: tuple[int, int, int]) -> float:
 
 
 def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
-    """Choose the sphere: its eta_c is reset with the library's refusal beside it, the
-    curve is the MDR solver's (40 points), the space-time view of the picked point is
-    drawn (stick and slip pixels in it), a typed beta = inf is refused beside beta."""
+    """Choose the sphere: its eta_c is reset with the library's refusal beside it (a_x
+    stays enabled), the curve is the MDR solver's (40 points), its critical velocity is
+    named, the space-time view of the picked point is drawn (stick and slip pixels in
+    it), a typed beta = inf is refused beside beta."""
     from vibrofriction.explorer.views import CONTACT_COLORS
 
     before = _open(page, server + "?eta_c=0.1")
@@ -264,6 +265,9 @@ def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
     after = _changed(page, READOUT.pattern, before)
     assert re.search(r"over the \d+ trusted of 40 points", after), after
     page.get_by_text(re.compile(r"sphere \(n = 2\) \(MDR\): static value 0\.33")).wait_for()
+    # its critical velocity of continuous sliding (docs/contact_geometry.md: 0.98999)
+    page.get_by_text(re.compile(r"critical velocity \(V\) 0\.99 \(continuous")).wait_for()
+    assert not page.locator(".vf-text-a_x input").is_disabled()  # the MDR solver takes a_x
     point = page.get_by_text(re.compile(r"point at V = .*\(sphere \(n = 2\), MDR\)"))
     point.wait_for()
     assert re.search(r"<F_N>/F_N0 = 1\.04\d+, contact over the period: stick 0\.\d+",

@@ -85,7 +85,11 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     x, y, ok = curve["x"], curve["y"], curve["trusted"]
     solver = "exact solver" if curve.get("profile", "flat punch") == "flat punch" else \
         f"MDR solver, {curve['profile']}"
-    ax.plot(x, np.where(ok, y, np.nan), "-", color="C0", lw=1.5, label=solver)
+    line_x, line_y = x, np.where(ok, y, np.nan)
+    k = int(np.searchsorted(x, 0.0))
+    if curve.get("rest_note") and 0 < k < len(x):  # V = 0 left out: the line breaks
+        line_x, line_y = np.insert(x, k, 0.0), np.insert(line_y, k, np.nan)
+    ax.plot(line_x, line_y, "-", color="C0", lw=1.5, label=solver)
     if np.any(~ok):
         ax.plot(x[~ok], y[~ok], "o", mfc="none", color="0.5", ms=4,
                 label="not trusted (solver)")

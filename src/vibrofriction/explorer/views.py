@@ -89,11 +89,16 @@ class CurveView:
     def show(self, curve: dict, log_x: bool) -> None:
         """Draw a computed curve (``compute.curve``)."""
         x, y, ok = curve["x"], curve["y"], curve["trusted"]
-        self.trusted.data = {"x": x, "y": np.where(ok, y, np.nan),
-                             "n": curve["mean_normal_ratio"],
-                             "stick": curve["stick_area_fraction"],
-                             "slip": curve["slip_area_fraction"],
-                             "open": curve["open_area_fraction"]}
+        trusted = {"x": x, "y": np.where(ok, y, np.nan), "n": curve["mean_normal_ratio"],
+                   "stick": curve["stick_area_fraction"],
+                   "slip": curve["slip_area_fraction"],
+                   "open": curve["open_area_fraction"]}
+        k = int(np.searchsorted(x, 0.0))
+        if curve.get("rest_note") and 0 < k < len(x):  # V = 0 left out: the line breaks
+            trusted = {name: np.insert(np.asarray(v, dtype=float), k,
+                                       0.0 if name == "x" else np.nan)
+                       for name, v in trusted.items()}
+        self.trusted.data = trusted
         bad = ~ok & np.isfinite(y)
         self.untrusted.data = {"x": x[bad], "y": y[bad], "status": curve["status"][bad]}
         shown = math.isfinite(curve["static"])
