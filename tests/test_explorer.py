@@ -110,6 +110,10 @@ def test_curve_marks_static_critical_case_and_trust():
     assert [f["label"] for f in soft["closed_forms"]] == ["eq. (27) corrected, soft law"]
     general = compute.curve(State(points=20))
     assert general["closed_forms"] == []  # no closed form outside its regime
+    # the stiff laws are the normal oscillation's: none with an in-plane one
+    shaken = compute.curve(State(alpha=0.01, beta=0.02, amplitude=0.8, a_x=0.3, axis="V",
+                                 v_max=1.0, points=20))
+    assert shaken["closed_forms"] == []
     iv = compute.curve(State(alpha=1.0, beta=math.inf, axis="V", v_max=10.0, points=20))
     assert iv["case"] == "IV" and math.isnan(iv["critical"])
     assert iv["closed_forms"][0]["label"].startswith("eq. (32)")

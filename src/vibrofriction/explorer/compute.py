@@ -174,6 +174,8 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     out = []
     if dim.curved:
         return _curved_closed_forms(dim, x, V, case, scale)
+    if dim.a_x > 0.0 or dim.a_y > 0.0:  # the laws below are the normal oscillation's only
+        return out
     V_c = dim.critical_inertial_velocity()
     vbar = V / V_c if 0.0 < V_c < math.inf else None
 
