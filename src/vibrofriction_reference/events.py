@@ -578,7 +578,7 @@ def solve_ivp_run(
     return PeerRun(mean_f / mean_n, mean_f, mean_n, run.n_events, run.n_calls, run.nfev, final)
 
 
-def _fastest_frequency(ode: _PhaseODE) -> float:
+def _fastest_frequency(ode: _PhaseODE | _ViscousPhaseODE) -> float:
     """The fastest of the drive (1), slip (``sqrt(alpha)``) and stick (``sqrt(beta)``)."""
     w = max(1.0, math.sqrt(ode.alpha))
     return w if ode.rigid else max(w, math.sqrt(ode.beta))

@@ -85,7 +85,7 @@ def _frozen(cls: type, values: dict[str, Any]) -> Any:
     """An instance of the frozen dataclass ``cls`` with the fields ``values`` (all of them,
     in field order), without its ``__init__``: for values already checked, as the
     solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner."""
-    obj = object.__new__(cls)
+    obj: Any = object.__new__(cls)
     obj.__dict__.update(values)
     return obj
 
@@ -323,16 +323,22 @@ def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
         system=system, v_inertial=v_inertial, **{k: cols[k] for k in _PLAIN})
 
 
+def _column(f: Field) -> tuple[str, int]:
+    """A kernel-column field's ``(kind, index)``."""
+    assert f.column is not None, f.name
+    return f.column
+
+
 #: The fields built in Python, after the kernels' rows in :func:`result_from_rows`.
 _BUILT = ("status", "trusted", "final_state", "system", "v_inertial")
 #: Where each result field is in ``floats + ints + [the _BUILT values]``, in field order.
 _PICK = operator.itemgetter(*(
     _BUILT.index(f.name) + len(FLOAT_COLUMNS) + len(INT_COLUMNS) if f.name in _BUILT
-    else (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1]
+    else (len(FLOAT_COLUMNS) if _column(f)[0] == "int" else 0) + _column(f)[1]
     for f in RESULT_FIELDS))
 _RESULT_NAMES = tuple(f.name for f in RESULT_FIELDS)
 _STATE_PICK = operator.itemgetter(*(
-    (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1] for f in STATE_FIELDS))
+    (len(FLOAT_COLUMNS) if _column(f)[0] == "int" else 0) + _column(f)[1] for f in STATE_FIELDS))
 _I_STATUS, _I_ERROR = column_index("status"), column_index("error")
 
 
@@ -343,7 +349,7 @@ def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless
     result as :func:`result_from_columns` of their named columns with ``trusted`` from
     ``settings``, built without a dictionary of columns or the dataclass's checks."""
     status = Status.from_code(ints[_I_STATUS])
-    row = floats + ints
+    row: list[Any] = [*floats, *ints]
     row += (status, settings.trusted_one(status, floats[_I_ERROR]),
             section_state(*_STATE_PICK(row)), system, v_inertial)
     return _frozen(FrictionResult, dict(zip(_RESULT_NAMES, _PICK(row), strict=True)))
