@@ -21,6 +21,7 @@ import stat
 import subprocess
 import sys
 import sysconfig
+import tarfile
 import zipfile
 from collections.abc import Iterator
 from pathlib import Path
@@ -38,12 +39,18 @@ def _run(args, **kwargs):
 
 
 @pytest.fixture(scope="module")
-def wheel(tmp_path_factory) -> Path:
+def dist(tmp_path_factory) -> Path:
+    """``python -m build``: the sdist, and the wheel built from the sdist."""
     out = tmp_path_factory.mktemp("dist")
-    built = _run([sys.executable, "-m", "build", "--wheel", "--outdir", str(out), str(ROOT)],
+    built = _run([sys.executable, "-m", "build", "--outdir", str(out), str(ROOT)],
                  timeout=600)
     assert built.returncode == 0, built.stdout[-2000:] + built.stderr[-2000:]
-    (path,) = out.glob("vibrofriction-*.whl")
+    return out
+
+
+@pytest.fixture(scope="module")
+def wheel(dist) -> Path:
+    (path,) = dist.glob("vibrofriction-*.whl")
     return path
 
 
@@ -63,13 +70,14 @@ class Install:
                         "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
                        timeout=60).stdout.strip()
         self.site = Path(purelib)
-        # this environment's packages, after the venv's own: a plain path line, so that
-        # no .pth file of this environment (e.g. an editable install of this project) runs
+        inst = _run([sys.executable, "-m", "pip", "--python", str(self.python), "install",
+                     "--no-deps", "--no-index", "--quiet", str(wheel)], timeout=600,
+                    env=self.env())
+        assert inst.returncode == 0, inst.stderr
+        # then this environment's packages, after the venv's own (a plain path line: no
+        # .pth file of this environment, e.g. an editable install of this project, runs)
         (self.site / "zz_test_environment.pth").write_text(
             sysconfig.get_paths()["purelib"] + "\n")
-        inst = _run([sys.executable, "-m", "pip", "--python", str(self.python), "install",
-                     "--no-deps", "--no-index", "--quiet", str(wheel)], timeout=600)
-        assert inst.returncode == 0, inst.stderr
         for name in PACKAGES:
             _read_only(self.site / name)
         self.prefix: list[str] = []
@@ -117,6 +125,20 @@ def test_the_wheel_carries_the_typing_marker_and_the_license_and_no_caches(wheel
     assert any(n.endswith(".dist-info/licenses/LICENSE") for n in names)
     assert not [n for n in names if n.endswith((".nbi", ".nbc", ".pyc"))]
     assert not [n for n in names if n.startswith(("tests/", "docs/", "examples/"))]
+
+
+def test_the_sdist_carries_what_the_tests_and_the_docs_need(dist):
+    (path,) = dist.glob("vibrofriction-*.tar.gz")
+    with tarfile.open(path) as tar:
+        names = {n.split("/", 1)[1] for n in tar.getnames() if "/" in n}
+    tracked = _run(["git", "ls-files", "tests", "docs", "examples", "benchmarks", "src"],
+                   cwd=ROOT, timeout=60)
+    if tracked.returncode != 0:
+        pytest.skip("not a git checkout: no list of the tracked files to compare with")
+    wanted = set(tracked.stdout.split()) | {"LICENSE", "CITATION.cff", "README.md",
+                                            "pyproject.toml", "Makefile"}
+    assert not sorted(wanted - names)
+    assert not [n for n in names if n.endswith((".nbi", ".nbc", ".pyc"))]
 
 
 def test_the_console_script_runs_from_the_read_only_install(install):

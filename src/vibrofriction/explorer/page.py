@@ -11,6 +11,7 @@ import asyncio
 import io
 import math
 from functools import partial
+from typing import Any
 from urllib.parse import urlencode
 
 import numpy as np
@@ -96,9 +97,9 @@ class Explorer:
                 pn.state.curdoc.session_context else {}
             state, query_problems = State.from_query(args)
         self.state = state
-        self.curve: dict | None = None
+        self.curve: dict[str, Any] | None = None
         self.curve_state: State | None = None  # the inputs of the curve shown
-        self.data = None
+        self.data: Any = None  # the measurements loaded (a pandas DataFrame)
         self._doc = pn.state.curdoc if (pn.state.curdoc is not None and
                                         pn.state.curdoc.session_context) else None
         self._location = pn.state.location if self._doc is not None else None
@@ -222,7 +223,7 @@ class Explorer:
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
                                 log_x=bool(self.log_x.value),
                                 inplane_on=self.inplane_on.value)
-        texts = {n: self.inputs[n].text.value for n in self._names()}
+        texts: dict[str, Any] = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
         for name, inp in self.inputs.items():
             inp.show_message(problems.get(name, ""))
@@ -316,6 +317,7 @@ class Explorer:
         await asyncio.sleep(rest)
         if self.state is not state or self._want is not None or self._busy:
             return
+        assert self.curve is not None  # scheduled when a curve was shown
         x = np.asarray(self.curve["x"], float)
         i = len(x) // 4 if self._picked_x is None or not x[0] <= self._picked_x <= x[-1] \
             else int(np.argmin(np.abs(x - self._picked_x)))
@@ -335,6 +337,7 @@ class Explorer:
     def _pick(self, i: int) -> None:
         """Show the history of the curve's point ``i``."""
         c = self.curve
+        assert c is not None  # a point of the curve shown
         x = np.asarray(c["x"], float)
         if not np.isfinite(c["y"][i]):
             return
@@ -482,6 +485,7 @@ class Explorer:
         if self.curve is None:
             raise RuntimeError("no curve has been computed yet: nothing to export")
         if fmt == "csv":
+            assert self.curve_state is not None  # set with the curve
             return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
         return io.BytesIO(exports.figure_bytes(self.curve, fmt))
 
