@@ -76,8 +76,9 @@ def _minimum_event(dfun):
     def event(t, z):
         return dfun(t, z)
 
-    event.terminal = False
-    event.direction = 1.0
+    # solve_ivp reads these attributes of an event function
+    event.terminal = False  # type: ignore[attr-defined]
+    event.direction = 1.0  # type: ignore[attr-defined]
     return event
 
 

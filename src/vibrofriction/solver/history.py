@@ -186,7 +186,8 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
     return y, xd, e, e_dot, phase
 
 
-def _segments(dim: Dimensionless, V: float, start: tuple, whole: int) -> NDArray[np.float64]:
+def _segments(dim: Dimensionless, V: float, start: tuple[float, float, float, float, int],
+              whole: int) -> NDArray[np.float64]:
     """The segment rows (:data:`codes.SEG_TAU` ...) of ``whole`` drive periods."""
     cap = 4096 * whole
     while True:

@@ -80,7 +80,7 @@ class ZarrSink:
         self._row_names = [v.name for v in row_variables(plan.kind)]
 
         async def _open():
-            group = await za.open_group(str(path), mode="r+", zarr_format=3)
+            group: Any = await za.open_group(str(path), mode="r+", zarr_format=3)
             # every chunk file is written, even all-fill ones: a missing file is damage
             arrays = {name: (await group.getitem(name)).with_config({"write_empty_chunks": True})
                       for name in self._point_names + self._row_names}
