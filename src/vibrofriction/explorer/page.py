@@ -39,7 +39,7 @@ class Input:
         self.field = field
         lo, hi = (math.log10(field.low), math.log10(field.high)) if field.log else \
             (field.low, field.high)
-        self.slider = pn.widgets.FloatSlider(name=field.label, start=lo, end=hi,
+        self.slider = pn.widgets.FloatSlider(label=field.label, start=lo, end=hi,
                                              step=(hi - lo) / 200, value=self._position(value),
                                              show_value=False, width=190,
                                              css_classes=[f"vf-slider-{field.name}"])
@@ -120,14 +120,14 @@ class Explorer:
                        for f in (*DIMENSIONLESS, *BENCH, *VELOCITY)}
         self.mode = pn.widgets.RadioButtonGroup(
             options={"dimensionless (alpha, beta, a)": "dimensionless", "bench (SI)": "bench"},
-            value=s.mode, button_type="primary", width=320)
+            value=s.mode, color="primary", width=320)
         self.axis = pn.widgets.RadioButtonGroup(options={k: k for k in AXES}, value=s.axis,
-                                                width=200, name="velocity axis")
+                                                width=200, label="velocity axis")
         self.axis_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
-        self.log_x = pn.widgets.Checkbox(name="logarithmic velocity axis", value=s.log_x)
+        self.log_x = pn.widgets.Checkbox(label="logarithmic velocity axis", value=s.log_x)
         self.inplane_on = pn.widgets.RadioButtonGroup(
             options={f"in-plane on the {v}": v for v in CHOICES["inplane_on"].values},
-            value=s.inplane_on, width=320, name="inplane_on",
+            value=s.inplane_on, width=320, label="inplane_on",
             css_classes=["vf-inplane-on"])
         self.general = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
         for w in (self.mode, self.axis, self.log_x, self.inplane_on):
@@ -173,16 +173,16 @@ class Explorer:
         self._show_mode()
 
     def _measurements_panel(self):
-        self.csv_input = pn.widgets.FileInput(accept=".csv", name="measurements",
+        self.csv_input = pn.widgets.FileInput(accept=".csv", label="measurements",
                                               css_classes=["vf-csv"])
         self.csv_input.param.watch(self._csv_dropped, "value")
         self.csv_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False)
         self.csv_info = pn.pane.Markdown("no measurements loaded", css_classes=["vf-csv-info"])
-        self.free = pn.widgets.MultiChoice(name="free parameters of the fit",
+        self.free = pn.widgets.MultiChoice(label="free parameters of the fit",
                                            value=["mu0", "mass", "k_xc"],
                                            options=list(FITTABLE),
                                            width=400)
-        self.fit_button = pn.widgets.Button(name="fit", button_type="primary", disabled=True,
+        self.fit_button = pn.widgets.Button(label="fit", color="primary", disabled=True,
                                             width=100)
         self.fit_button.on_click(self._fit_clicked)
         self.fit_busy = pn.indicators.Progress(active=False, visible=False, width=200)
@@ -200,7 +200,7 @@ class Explorer:
         self.downloads = [pn.widgets.FileDownload(callback=partial(self._export, fmt),
                                                   filename=f"vibrofriction_curve.{fmt}",
                                                   label=f"download {fmt.upper()}",
-                                                  button_type="default", width=160,
+                                                  color="default", width=160,
                                                   disabled=True)
                           for fmt in ("png", "svg", "csv")]
         self.link = pn.pane.Markdown("")
