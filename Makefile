@@ -3,12 +3,12 @@ VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
 
-.PHONY: demo test fast lint bench clean clean-cache browser docs
+.PHONY: demo test fast lint typecheck dist bench clean clean-cache browser docs
 
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[dev]'
+	$(BIN)/pip install --quiet -e . --group dev  # PEP 735 group: pip >= 25.1
 	touch $@
 
 demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
@@ -28,16 +28,24 @@ docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as err
 test: $(BIN)/vibrofriction browser docs  ## the whole test suite, site, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
+	$(BIN)/mypy
 	VIBROFRICTION_BROWSER_TESTS=required $(BIN)/python -m pytest -q
 
 fast:  ## the development loop, installs nothing: lint, contracts, tests not slow or browser
 	@test -x $(BIN)/vibrofriction || (echo "make fast installs nothing: run 'make test' once first" >&2; exit 2)
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
+	$(BIN)/mypy
 	$(BIN)/python -m pytest -q -x -m "not slow and not browser"
 
 lint: $(BIN)/vibrofriction
 	$(BIN)/ruff check src tests benchmarks examples
+
+typecheck: $(BIN)/vibrofriction  ## mypy on src/ (configured in pyproject.toml)
+	$(BIN)/mypy
+
+dist: $(BIN)/vibrofriction  ## the wheel and the sdist into dist/ (docs/packaging.md)
+	$(BIN)/python -m build
 
 bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/results/
 	$(BIN)/python benchmarks/bench_solver.py

@@ -201,3 +201,16 @@ def test_the_version_is_the_one_written_in_pyproject():
 
     pyproject = Path(__file__).resolve().parent.parent / "pyproject.toml"
     assert vf.__version__ == tomllib.loads(pyproject.read_text())["project"]["version"]
+
+
+def test_the_cli_and_citation_cff_give_that_version():
+    import re
+    import tomllib
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parent.parent
+    written = tomllib.loads((root / "pyproject.toml").read_text())["project"]["version"]
+    out = _cli("--version")
+    assert out.returncode == 0 and out.stdout.strip() == f"vibrofriction {written}", out
+    cff = re.search(r"^version: *(\S+)$", (root / "CITATION.cff").read_text(), re.MULTILINE)
+    assert cff is not None and cff.group(1) == written

@@ -60,6 +60,8 @@ def server():
         if proc.poll() is not None or time.monotonic() > deadline:
             out = proc.stdout.read().decode() if proc.poll() is not None else ""
             proc.kill()
+            proc.wait()
+            proc.stdout.close()
             pytest.fail(f"the explorer did not answer at {url}: {out}")
         time.sleep(0.3)
     yield url
@@ -69,6 +71,7 @@ def server():
     except subprocess.TimeoutExpired:
         os.killpg(proc.pid, signal.SIGKILL)
         proc.wait()
+    proc.stdout.close()  # a ResourceWarning (an error under filterwarnings) otherwise
 
 
 @pytest.fixture(scope="module")

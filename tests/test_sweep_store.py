@@ -215,6 +215,8 @@ def test_sigkill_mid_sweep_then_resume_is_identical(tmp_path: Path, monkeypatch)
         os.killpg(proc.pid, signal.SIGKILL)  # the sweep and its worker processes
     finally:
         proc.wait(timeout=30)
+        proc.stdout.close()  # a ResourceWarning (an error under filterwarnings) otherwise
+        proc.stderr.close()
     assert proc.returncode == -signal.SIGKILL
     done_at_kill = open_atlas(path).attrs["blocks_done"]
     assert 6 <= done_at_kill < n_blocks, "the sweep was not interrupted mid-run"

@@ -103,7 +103,7 @@ def _release_forkserver() -> None:
 
     server = getattr(forkserver, "_forkserver", None)
     fd = getattr(server, "_forkserver_alive_fd", None)
-    if isinstance(fd, int):
+    if server is not None and isinstance(fd, int):
         try:
             os.close(fd)
         except OSError:  # pragma: no cover
@@ -120,7 +120,8 @@ def _gone(pid: int) -> bool:
         except (OSError, IndexError):
             return True
         return state in (b"Z", b"X")
-    if os.name != "posix":  # pragma: no cover - os.kill would terminate it on Windows
+    # mypy checks for this (Linux) platform, where the branch above always returns
+    if os.name != "posix":  # type: ignore[unreachable]  # pragma: no cover - os.kill would terminate it on Windows
         return False
     try:
         os.kill(pid, 0)

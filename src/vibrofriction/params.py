@@ -76,6 +76,7 @@ def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
     k_x = _valid("k_x", k_x)
     mass = _valid("mass", mass)
     if zeta is None:
+        assert quality_factor is not None  # exactly one of them is given
         q = float(checked("quality_factor", quality_factor, minimum=0.0, strict=True,
                           allow_inf=True))
         zeta = 0.0 if math.isinf(q) else 1.0 / (2.0 * q)
@@ -571,8 +572,11 @@ class Physical:
             raise ValueError("dF_N: the normal force of a curved MDR contact is not harmonic "
                              "(no single force amplitude): give the indentation amplitude "
                              "du_z (m)")
-        du_z = _valid("du_z", du_z) if du_z is not None else \
-            float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
+        if du_z is not None:
+            du_z = _valid("du_z", du_z)
+        else:
+            assert dF_N is not None  # exactly one of du_z and dF_N is given
+            du_z = float(checked("dF_N", dF_N, minimum=0.0)) / k_zc
         if normal_control == "dead_weight":  # the mean force over the cycle is the load
             try:
                 u_z0 *= float(theory.dead_weight_indentation(du_z / u_z0, exponent))
@@ -635,7 +639,7 @@ class Physical:
         except TypeError as exc:
             raise ValueError(f"bench file {os.fspath(path)!r}: {exc}") from None
 
-    def with_(self, **changes: float) -> Physical:
+    def with_(self, **changes: Any) -> Physical:
         """A copy with some fields replaced (validated again)."""
         return dataclasses.replace(self, **changes)
 
@@ -740,7 +744,7 @@ class Physical:
     def point_arguments(self, v0: ArrayLike, du_z: ArrayLike, omega: ArrayLike,
                         du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
                         du_y: ArrayLike = 0.0, phase_y: ArrayLike = 0.0
-                        ) -> tuple[NDArray[np.float64] | None, ...]:
+                        ) -> tuple[FloatOrArray | None, ...]:
         """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
         zeta_y)`` of this pin at each point ``(v0, du_z, omega, du_x, phase_x, du_y,
         phase_y)`` (SI), elementwise: the arguments of
@@ -849,8 +853,9 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     not finite) or undefined (``vbar`` in cases III and IV: :meth:`Dimensionless.
     critical_inertial_velocity` is 0 or inf there).
     """
-    if v_inertial.__class__ is float and vbar is None and v0 is None:  # the common fast path
-        if not math.isfinite(v_inertial):
+    # the common fast path; mypy sees no float in ArrayLike (only complex), hence the ignore
+    if type(v_inertial) is float and vbar is None and v0 is None:  # type: ignore[unreachable]
+        if not math.isfinite(v_inertial):  # type: ignore[unreachable]
             _valid("v_inertial", v_inertial)  # raises the schema's sentence
         return v_inertial
     if vbar.__class__ in _FLOATS and v_inertial is None and v0 is None \
@@ -870,4 +875,5 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     if vbar is not None:
         return dimensionless(system).vbar_to_inertial(vbar)
     dimensionless(system)
+    assert v_inertial is not None  # the one velocity given
     return as_float_or_array(_valid_array("v_inertial", v_inertial))

@@ -171,6 +171,10 @@ class Status(enum.Enum):
     """How a steady-state result was obtained: ``.value`` its name, ``.code`` the kernels'
     code, ``.ok`` whether it is converged, ``.message`` what it means for humans."""
 
+    code: int
+    ok: bool
+    message: str
+
     PERIODIC = ("periodic", 0, True,
                 "a periodic orbit was found on the Poincare section and averaged over "
                 "exactly one of its periods")

@@ -31,7 +31,7 @@ Defects of the paper corrected or made explicit here:
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -706,7 +706,8 @@ def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
     return p, slip_compliance, impedance, gp, rigid
 
 
-def _inplane_inputs(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on):
+def _inplane_inputs(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on
+                    ) -> tuple[Any, ...]:
     """The validated inputs of the in-plane closed forms (the schema's ranges; ``alpha``
     as in the soft limit): ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``."""
     on = _inplane_on(inplane_on)
@@ -740,7 +741,8 @@ def inplane_critical_velocity(alpha: ArrayLike, beta: ArrayLike, amplitude: Arra
     """
     on, alpha, beta, a, zeta, eta, a_x, phase = _inplane_inputs(
         alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on)
-    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)
+    # the names keep their ArrayLike annotations; _inplane_inputs made them float arrays
+    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)  # type: ignore[arg-type]
     # a B - a_x G e^{i phi} = N / P + a / (k (1 + i eta_c)), N = a - a_x (G P) e^{i phi}
     num = a - a_x * gp * np.exp(1j * phase)
     num, p, rest = np.broadcast_arrays(num, p, a * slip_compliance)
@@ -777,7 +779,8 @@ def inplane_cancellation(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike
     alpha, beta, a, zeta, eta = validated(
         {"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta, "eta_c": eta_c},
         ranges={"alpha": _SOFT_LIMIT}).values()
-    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)
+    # the names keep their ArrayLike annotations; _inplane_inputs made them float arrays
+    p, slip_compliance, _, gp, _ = _inplane_factors(alpha, beta, zeta, eta, on)  # type: ignore[arg-type]
     # B/G = (1 + P/(k(1 + i eta_c))) / (G P): finite also at P = 0
     bp = 1.0 + p * slip_compliance
     ratio = np.full(np.broadcast(bp, gp).shape, np.inf, dtype=complex)
@@ -822,7 +825,8 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
     """
     on, alpha, beta, a, zeta, eta, a_x, phase = _inplane_inputs(
         alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on)
-    p, _, impedance, gp, rigid = _inplane_factors(alpha, beta, zeta, eta, on)
+    # the names keep their ArrayLike annotations; _inplane_inputs made them float arrays
+    p, _, impedance, gp, rigid = _inplane_factors(alpha, beta, zeta, eta, on)  # type: ignore[arg-type]
     # T = -(k + i c) G P / (P + k + i c); rigid: -G P
     with np.errstate(divide="ignore", invalid="ignore"):
         t = np.where(rigid, -gp, -impedance * gp / (p + impedance))

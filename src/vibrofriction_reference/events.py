@@ -76,8 +76,9 @@ def _minimum_event(dfun):
     def event(t, z):
         return dfun(t, z)
 
-    event.terminal = False
-    event.direction = 1.0
+    # solve_ivp reads these attributes of an event function
+    event.terminal = False  # type: ignore[attr-defined]
+    event.direction = 1.0  # type: ignore[attr-defined]
     return event
 
 
@@ -578,7 +579,7 @@ def solve_ivp_run(
     return PeerRun(mean_f / mean_n, mean_f, mean_n, run.n_events, run.n_calls, run.nfev, final)
 
 
-def _fastest_frequency(ode: _PhaseODE) -> float:
+def _fastest_frequency(ode: _PhaseODE | _ViscousPhaseODE) -> float:
     """The fastest of the drive (1), slip (``sqrt(alpha)``) and stick (``sqrt(beta)``)."""
     w = max(1.0, math.sqrt(ode.alpha))
     return w if ode.rigid else max(w, math.sqrt(ode.beta))

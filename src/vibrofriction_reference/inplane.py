@@ -267,8 +267,9 @@ class _Model:
         else:
             def g(t, z):
                 return self.contact_force(_SLIP, t, z)[4]
-        g.terminal = True
-        g.direction = -1.0
+        # solve_ivp reads these attributes of an event function
+        g.terminal = True  # type: ignore[attr-defined]
+        g.direction = -1.0  # type: ignore[attr-defined]
         return [g]
 
     # -- phase rules ---------------------------------------------------------------

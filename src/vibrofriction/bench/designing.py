@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -170,8 +171,8 @@ def _solve(pin: Physical, v0: float, omega, du_z, settings: SolverSettings | Non
     solver, with the pin's ``k_y``, ``c_y``)."""
     omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
-    out = solve_points(*pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y),
-                       inplane_on=inplane_on, settings=settings)
+    args: tuple[Any, ...] = pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y)
+    out = solve_points(*args, inplane_on=inplane_on, settings=settings)
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
             "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": out["trusted"]}
@@ -326,12 +327,12 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     feasible = W * D <= vmax * (1 + 1e-12)
     candidates = np.where(feasible & sol["trusted"], sol["cof"], np.inf)
     order = np.argsort(candidates, axis=None)[:starts]
-    order = [k for k in order if np.isfinite(candidates.flat[k])]
-    if not order:
+    picked = [k for k in order if np.isfinite(candidates.flat[k])]
+    if not picked:
         raise ValueError(f"no trusted point of the map respects the limits "
                          f"({int((feasible & ~sol['trusted']).sum())} untrusted within them)")
     (w_opt, d_opt, c_opt), n_rejected, rejected_run = _refine(
-        pin, v0, settings, [(W.flat[k], D.flat[k], candidates.flat[k]) for k in order],
+        pin, v0, settings, [(W.flat[k], D.flat[k], candidates.flat[k]) for k in picked],
         (w_range, d_range, vmax), (_log_step(ws), _log_step(ds)))
     at_opt = _solve(pin, v0, w_opt, d_opt, settings)
     untrusted = feasible & ~sol["trusted"]
@@ -697,7 +698,8 @@ def _design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on
             obj = float(_objective(goal, np.array(row["cof"])))
     point = choice[:4]
     rows[0].update(zip((*_AXES, "du_y", "phase_y"), choice, strict=True))
-    at_opt = _solve(pin, v0, *choice[:2], settings, *choice[2:4], on, *choice[4:])
+    # choice is (omega, du_z, du_x, phase_x, du_y, phase_y): mypy cannot count a star
+    at_opt = _solve(pin, v0, *choice[:2], settings, *choice[2:4], on, *choice[4:])  # type: ignore[call-arg]
     cof = float(at_opt["cof"])
     rows[0]["cof"] = cof
     directions = pd.DataFrame(rows)
@@ -775,8 +777,8 @@ def _drive_characteristic(result: DesignResult, settings: SolverSettings | None)
     s = result.system
     d = s.to_dimensionless()
     args = (d.alpha, d.beta, d.amplitude)
-    tail = dict(zeta=d.zeta, eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x,
-                inplane_on=d.inplane_on, settings=settings)
+    tail: dict[str, Any] = dict(zeta=d.zeta, eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x,
+                                inplane_on=d.inplane_on, settings=settings)
     block = solve_points(*args, np.array([BLOCKING_V, -BLOCKING_V]), **tail)
     result.blocking = (float(block["mu_ratio"][0]), float(block["mu_ratio"][1]))
     result.blocking_trusted = bool(block["trusted"].all())

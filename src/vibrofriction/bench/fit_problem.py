@@ -8,6 +8,7 @@ from __future__ import annotations
 import dataclasses
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -111,7 +112,7 @@ class _Problem:
     #: Jacobian where it has just evaluated the residuals
     _last: tuple | None = field(default=None, init=False, repr=False, compare=False)
 
-    def values(self, ln: NDArray[np.float64]) -> dict[str, float]:
+    def values(self, ln: NDArray[np.float64]) -> dict[str, Any]:
         """The fields of the system at ``ln`` of the free parameters, constraints applied."""
         values = dataclasses.asdict(self.guess)
         values.update({n: math.exp(x) for n, x in zip(self.free, ln, strict=True)})
@@ -202,7 +203,8 @@ class _Problem:
         if points is None:
             return out
         mu0 = points[0]
-        rates = []  # d (mu0, alpha, ..., phase_x) / d ln_j of every row
+        # d (mu0, alpha, ..., phase_x) / d ln_j of every row
+        rates: list[list[NDArray[np.float64]] | None] = []
         for j in cols_j:
             up, down = ln.copy(), ln.copy()
             up[j] += MAP_STEP
@@ -239,7 +241,7 @@ class _Problem:
         if np.any(missing):
             rows = np.flatnonzero(missing)
             for c, j in enumerate(cols_j):
-                out[rows, c] = self._row_differences(ln, j, rows)
+                out[rows, c] = self._row_differences(ln, int(j), rows)
         return out
 
     def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]

@@ -5,7 +5,7 @@ second global stage when the first is not clearly good; where the time went (:cl
 from __future__ import annotations
 
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import partial
@@ -54,7 +54,10 @@ def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _S
     whose first starts do, is followed by a second one (another seed) before its
     remaining starts are tried: a wrong valley is left rather than explored.  The best
     fit and the local minima reached (chi-square, point)."""
-    out, minima, deferred = None, [], []
+    # out: the best lmfit result so far, set by polish below
+    out: Any = None
+    minima: list[Any] = []
+    deferred: list[Any] = []
 
     def polish(batch):
         nonlocal out, minima
@@ -98,6 +101,8 @@ def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize:
     from scipy.optimize import differential_evolution
     from tqdm.auto import tqdm
 
+    cost: Callable[..., Any]
+    how: dict[str, Any]
     if workers == 1:
         cost, how = problem.cost, {"updating": "immediate"}
     else:  # a generation's members solved together, in CHUNKS tasks per worker

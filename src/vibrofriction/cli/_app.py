@@ -74,6 +74,17 @@ def json_number(x: float | None) -> float | str | None:
     return x
 
 
+def _print_version(value: bool) -> None:
+    if value:
+        from .. import __version__
+
+        print(f"vibrofriction {__version__}")
+        raise typer.Exit()
+
+
 @app.callback()
-def _root() -> None:
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                 help="Print the version and exit."),
+) -> None:
     """Friction under normal oscillations: exact steady states, the paper's figures, atlases."""

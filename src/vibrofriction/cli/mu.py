@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import json
-from typing import Annotated
+from typing import Annotated, Any, cast
 
 import numpy as np
 import typer
 
 from ..params import Dimensionless, Physical
 from ..schema import choice_names, parameter_names
-from ..solver import FrictionResult, SolverSettings, friction_coefficient
+from ..solver import FrictionResult, FrictionResults, SolverSettings, friction_coefficient
 from ._app import app, exit_if_untrusted, friendly, json_number, parse_float, parse_list
 
 
@@ -100,14 +100,17 @@ def mu_command(
     --u-z0 --du-z --omega --mu0 [--c-x or --quality-factor, --c-xc, --du-x --phase-x --du-y
     --phase-y --k-y --c-y --inplane-on --profile-exponent]) with --v0.
     """
-    inplane = {"phase_x": parse_float(phase_x, "phase_x"),
+    inplane: dict[str, Any] = {"phase_x": parse_float(phase_x, "phase_x"),
                "phase_y": parse_float(phase_y, "phase_y"), "inplane_on": inplane_on}
-    si_inplane = {"du_x": parse_float(du_x, "du_x"), "du_y": parse_float(du_y, "du_y")}
+    si_inplane: dict[str, Any] = {"du_x": parse_float(du_x, "du_x"),
+                                  "du_y": parse_float(du_y, "du_y")}
     exponent = parse_float(profile_exponent, "profile_exponent")
-    scaled_inplane = {"a_x": parse_float(a_x, "a_x"), "a_y": parse_float(a_y, "a_y")}
+    scaled_inplane: dict[str, Any] = {"a_x": parse_float(a_x, "a_x"),
+                                      "a_y": parse_float(a_y, "a_y")}
     si_pin_y = {k: parse_float(v, k) for k, v in (("k_y", k_y), ("c_y", c_y)) if v is not None}
-    scaled_pin_y = {k: parse_float(v, k) for k, v in (("alpha_y", alpha_y), ("zeta_y", zeta_y))
-                    if v is not None}
+    scaled_pin_y: dict[str, Any] = {
+        k: parse_float(v, k) for k, v in (("alpha_y", alpha_y), ("zeta_y", zeta_y))
+        if v is not None}
     phys = {"mass": mass, "k_x": k_x, "k_xc": k_xc, "k_zc": k_zc, "u_z0": u_z0,
             "du_z": du_z, "omega": omega, "mu0": mu0}
     settings = SolverSettings(max_periods=max_periods, tol_trusted=tol_trusted)
@@ -135,13 +138,15 @@ def mu_command(
         if v0 is None:
             raise ValueError("a physical set-up needs the velocity --v0 (m/s)")
         system = physical.to_dimensionless()
-        results = friction_coefficient(physical, v0=np.array(parse_list(v0, "v0")),
-                                       initial=initial, settings=settings)
+        results = cast(FrictionResults,  # v0 is a 1-d array
+                       friction_coefficient(physical, v0=np.array(parse_list(v0, "v0")),
+                                            initial=initial, settings=settings))
     else:
         missing = [f"--{n}" for n, v in (("alpha", alpha), ("beta", beta),
                                          ("amplitude", amplitude)) if v is None]
         if missing:
             raise ValueError("missing " + ", ".join(missing) + " (or give a physical set-up)")
+        assert alpha is not None and beta is not None and amplitude is not None  # none missing
         system = Dimensionless(parse_float(alpha, "alpha"), parse_float(beta, "beta"),
                                parse_float(amplitude, "amplitude"), parse_float(zeta, "zeta"),
                                parse_float(eta_c, "eta_c"), **scaled_inplane, **inplane,
@@ -162,7 +167,7 @@ def _physical(phys: dict, c_x: str, c_xc: str, quality_factor: str | None,
     missing = ["--" + k.replace("_", "-") for k, v in phys.items() if v is None]
     if missing:
         raise ValueError("a physical set-up needs " + ", ".join(missing))
-    values = {k: parse_float(v, k) for k, v in phys.items()}
+    values: dict[str, Any] = {k: parse_float(v, k) for k, v in phys.items()}
     system = Physical(**values, c_x=parse_float(c_x, "c_x"), c_xc=parse_float(c_xc, "c_xc"),
                       **inplane)
     if quality_factor is not None:
@@ -174,10 +179,12 @@ def _physical(phys: dict, c_x: str, c_xc: str, quality_factor: str | None,
 
 
 def _dimensionless(system: Dimensionless, vbar: str | None, v_inertial: str | None,
-                   initial: str, settings: SolverSettings):
+                   initial: str, settings: SolverSettings) -> FrictionResults:
     speeds = {name: None if text is None else np.array(parse_list(text, name))
               for name, text in (("vbar", vbar), ("v_inertial", v_inertial))}
-    return friction_coefficient(system, **speeds, initial=initial, settings=settings)
+    # the velocities are 1-d arrays: the results are FrictionResults
+    return cast(FrictionResults, friction_coefficient(system, **speeds, initial=initial,
+                                                      settings=settings))
 
 
 def _json_value(v):

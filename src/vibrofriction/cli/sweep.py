@@ -7,7 +7,7 @@ the other commands start fast.
 from __future__ import annotations
 
 import time
-from typing import Annotated
+from typing import Annotated, Any
 
 import numpy as np
 import typer
@@ -151,8 +151,9 @@ def _physical_grid(phys: dict[str, str | None], optional: dict[str, str | None],
                          + ", ".join(_flag(m) for m in missing))
     values = {k: parse_axis(v, k) for k, v in phys.items() if v is not None}
     values.update({k: parse_axis(v, k) for k, v in optional.items() if v is not None})
-    base = Physical(**{k: float(np.atleast_1d(v)[0]) for k, v in values.items()})
-    return dict(system=base, v0=parse_axis(v0, "v0"), **values)
+    first: dict[str, Any] = {k: float(np.atleast_1d(v)[0]) for k, v in values.items()}
+    assert v0 is not None  # not missing
+    return dict(system=Physical(**first), v0=parse_axis(v0, "v0"), **values)
 
 
 def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | None,
@@ -175,7 +176,7 @@ def _dimensionless_grid(alpha: str | None, beta: str | None, amplitude: str | No
             grid[n] = parse_axis(v, n)
     if vbar is not None:
         grid["vbar"] = parse_axis(vbar, "vbar")
-    else:
+    elif v_inertial is not None:  # exactly one of them is given
         grid["v_inertial"] = parse_axis(v_inertial, "v_inertial")
     return grid
 

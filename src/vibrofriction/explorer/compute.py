@@ -6,6 +6,7 @@ from __future__ import annotations
 import functools
 import math
 import time
+from typing import Any, cast
 
 import numpy as np
 
@@ -82,7 +83,8 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
     x = state.velocities()[i::n]
     # the 2-D solver does not compute V = 0 (docs/inplane.md section 6): a gap there
     solved = x != 0.0 if dim.a_y > 0.0 else np.ones(x.size, dtype=bool)
-    res = vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]})
+    res = cast(vf.FrictionResults,  # the velocities are an array
+               vf.friction_coefficient(system, **{state.velocity_keyword(): x[solved]}))
     scale = system.mu0 if isinstance(system, vf.Physical) else 1.0
     curved = dim.curved
     critical_note = ""
@@ -90,8 +92,9 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         V_c = dim.critical_inertial_velocity()
     except ValueError as exc:
         V_c, critical_note = math.nan, str(exc)
-    critical = {"vbar": 1.0, "V": V_c}.get(state.axis)
+    critical = {"vbar": 1.0, "V": V_c}.get(state.axis, math.nan)  # v0: below
     if state.axis == "v0":
+        assert isinstance(system, vf.Physical)  # the v0 axis is the bench's
         critical = system.critical_velocity()
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
@@ -232,7 +235,7 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     if state.curved:
         return mdr_history(state, x)
     system = state.system()
-    kw = {state.velocity_keyword(): float(x)}
+    kw: dict[str, Any] = {state.velocity_keyword(): float(x)}
     try:
         h = vf.simulate(system, **kw, periods=periods, initial="steady")
         steady = True
@@ -243,7 +246,7 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     change = np.flatnonzero(h.phase[1:] != h.phase[:-1]) + 1
     starts = np.concatenate([[0], change])
     ends = np.concatenate([change, [t.size - 1]])
-    r = vf.friction_coefficient(system, **kw)
+    r = cast(vf.FrictionResult, vf.friction_coefficient(system, **kw))  # one velocity
     inplane = h.system.a_x > 0.0 or h.system.a_y > 0.0
     xc, yc = h.contact_point() if inplane else (None, None)
     return {
@@ -306,7 +309,8 @@ def mdr_history(state: State, x: float, periods: float = 1.0,
 
 
 @functools.lru_cache(maxsize=4)
-def case_map(n: int = 90, alpha=(1e-3, 1e2), beta=(1e-3, 1e4)) -> dict:
+def case_map(n: int = 90, alpha: tuple[float, float] = (1e-3, 1e2),
+             beta: tuple[float, float] = (1e-3, 1e4)) -> dict:
     """The cases I-IV of ``vf.classify`` over a log grid of ``(alpha, beta)``; ``""``
     where ``beta <= alpha`` (no system)."""
     al = np.geomspace(*alpha, n)
@@ -350,7 +354,7 @@ def measurement_curves(state: State, data) -> list[dict]:
     out = []
     for (du_z, omega), g in data.groupby(["du_z", "omega"], sort=True):
         point = system.with_(du_z=float(du_z), omega=float(omega))
-        V = point.v0_to_inertial(g["v0"].to_numpy())
+        V = np.asarray(point.v0_to_inertial(g["v0"].to_numpy()))
         x = _to_axis(state, point, V) if state.axis != "vbar" else \
             np.asarray(point.v0_to_vbar(g["v0"].to_numpy()))
         out.append({"label": f"du_z = {du_z * 1e6:.3g} um, f = {omega / (2 * math.pi):.4g} Hz",

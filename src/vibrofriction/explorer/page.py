@@ -11,6 +11,7 @@ import asyncio
 import io
 import math
 from functools import partial
+from typing import Any
 from urllib.parse import urlencode
 
 import numpy as np
@@ -61,7 +62,7 @@ class Input:
         self.field = field
         lo, hi = (math.log10(field.low), math.log10(field.high)) if field.log else \
             (field.low, field.high)
-        self.slider = pn.widgets.FloatSlider(name=field.label, start=lo, end=hi,
+        self.slider = pn.widgets.FloatSlider(label=field.label, start=lo, end=hi,
                                              step=(hi - lo) / 200, value=self._position(value),
                                              show_value=False, width=190,
                                              css_classes=[f"vf-slider-{field.name}"])
@@ -124,9 +125,9 @@ class Explorer:
                 pn.state.curdoc.session_context else {}
             state, query_problems = State.from_query(args)
         self.state = state
-        self.curve: dict | None = None
+        self.curve: dict[str, Any] | None = None
         self.curve_state: State | None = None  # the inputs of the curve shown
-        self.data = None
+        self.data: Any = None  # the measurements loaded (a pandas DataFrame)
         self._doc = pn.state.curdoc if (pn.state.curdoc is not None and
                                         pn.state.curdoc.session_context) else None
         self._location = pn.state.location if self._doc is not None else None
@@ -157,14 +158,14 @@ class Explorer:
                                          css_classes=["vf-profile-note"])
         self.mode = pn.widgets.RadioButtonGroup(
             options={"dimensionless (alpha, beta, a)": "dimensionless", "bench (SI)": "bench"},
-            value=s.mode, button_type="primary", width=320)
+            value=s.mode, color="primary", width=320)
         self.axis = pn.widgets.RadioButtonGroup(options={k: k for k in AXES}, value=s.axis,
-                                                width=200, name="velocity axis")
+                                                width=200, label="velocity axis")
         self.axis_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
-        self.log_x = pn.widgets.Checkbox(name="logarithmic velocity axis", value=s.log_x)
+        self.log_x = pn.widgets.Checkbox(label="logarithmic velocity axis", value=s.log_x)
         self.inplane_on = pn.widgets.RadioButtonGroup(
             options={f"in-plane on the {v}": v for v in CHOICES["inplane_on"].values},
-            value=s.inplane_on, width=320, name="inplane_on",
+            value=s.inplane_on, width=320, label="inplane_on",
             css_classes=["vf-inplane-on"])
         self.general = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
         for w in (self.mode, self.axis, self.log_x, self.inplane_on):
@@ -222,16 +223,16 @@ class Explorer:
         self._show_mode()
 
     def _measurements_panel(self):
-        self.csv_input = pn.widgets.FileInput(accept=".csv", name="measurements",
+        self.csv_input = pn.widgets.FileInput(accept=".csv", label="measurements",
                                               css_classes=["vf-csv"])
         self.csv_input.param.watch(self._csv_dropped, "value")
         self.csv_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False)
         self.csv_info = pn.pane.Markdown("no measurements loaded", css_classes=["vf-csv-info"])
-        self.free = pn.widgets.MultiChoice(name="free parameters of the fit",
+        self.free = pn.widgets.MultiChoice(label="free parameters of the fit",
                                            value=["mu0", "mass", "k_xc"],
                                            options=list(FITTABLE),
                                            width=400)
-        self.fit_button = pn.widgets.Button(name="fit", button_type="primary", disabled=True,
+        self.fit_button = pn.widgets.Button(label="fit", color="primary", disabled=True,
                                             width=100)
         self.fit_button.on_click(self._fit_clicked)
         self.fit_busy = pn.indicators.Progress(active=False, visible=False, width=200)
@@ -249,7 +250,7 @@ class Explorer:
         self.downloads = [pn.widgets.FileDownload(callback=partial(self._export, fmt),
                                                   filename=f"vibrofriction_curve.{fmt}",
                                                   label=f"download {fmt.upper()}",
-                                                  button_type="default", width=160,
+                                                  color="default", width=160,
                                                   disabled=True)
                           for fmt in ("png", "svg", "csv")]
         self.link = pn.pane.Markdown("")
@@ -334,7 +335,7 @@ class Explorer:
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
                                 log_x=bool(self.log_x.value),
                                 inplane_on=self.inplane_on.value)
-        texts = {n: self.inputs[n].text.value for n in self._names()}
+        texts: dict[str, Any] = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
         notes = self._mdr_notes
         for name, inp in self.inputs.items():
@@ -435,6 +436,7 @@ class Explorer:
         await asyncio.sleep(rest)
         if self.state is not state or self._want is not None or self._busy:
             return
+        assert self.curve is not None  # scheduled when a curve was shown
         x = np.asarray(self.curve["x"], float)
         i = len(x) // 4 if self._picked_x is None or not x[0] <= self._picked_x <= x[-1] \
             else int(np.argmin(np.abs(x - self._picked_x)))
@@ -454,6 +456,7 @@ class Explorer:
     def _pick(self, i: int) -> None:
         """Show the history of the curve's point ``i``."""
         c = self.curve
+        assert c is not None  # a point of the curve shown
         x = np.asarray(c["x"], float)
         if not np.isfinite(c["y"][i]):
             return
@@ -623,6 +626,7 @@ class Explorer:
         if self.curve is None:
             raise RuntimeError("no curve has been computed yet: nothing to export")
         if fmt == "csv":
+            assert self.curve_state is not None  # set with the curve
             return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
         return io.BytesIO(exports.figure_bytes(self.curve, fmt))
 

@@ -11,6 +11,7 @@ import dataclasses
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -26,6 +27,13 @@ MODES = ("dimensionless", "bench")
 AXES = {"vbar": ("vbar", "vbar = v0/v0*"),
         "V": ("v_inertial", "V = v0 m omega/(mu0 F_N0)"),
         "v0": ("v0", "v0 (m/s)")}
+
+
+def _default(name: str) -> float:
+    """The schema's default of a parameter that has one."""
+    default = PARAMETER[name].default
+    assert default is not None, name
+    return default
 
 
 @dataclass(frozen=True)
@@ -117,13 +125,13 @@ class State:
     alpha: float = 0.5
     beta: float = 2.0
     amplitude: float = 0.5
-    zeta: float = PARAMETER["zeta"].default
-    eta_c: float = PARAMETER["eta_c"].default
-    a_x: float = PARAMETER["a_x"].default
-    phase_x: float = PARAMETER["phase_x"].default
-    a_y: float = PARAMETER["a_y"].default
-    phase_y: float = PARAMETER["phase_y"].default
-    profile_exponent: float = PARAMETER["profile_exponent"].default
+    zeta: float = _default("zeta")
+    eta_c: float = _default("eta_c")
+    a_x: float = _default("a_x")
+    phase_x: float = _default("phase_x")
+    a_y: float = _default("a_y")
+    phase_y: float = _default("phase_y")
+    profile_exponent: float = _default("profile_exponent")
     inplane_on: str = CHOICES["inplane_on"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
@@ -168,7 +176,7 @@ class State:
                                     inplane_on=self.inplane_on)
         return vf.Physical.from_bench(**self.bench_arguments())
 
-    def bench_arguments(self) -> dict[str, float]:
+    def bench_arguments(self) -> dict[str, Any]:
         """The keyword arguments of :meth:`Physical.from_bench` (the bench file's keys)."""
         return dict(natural_frequency_hz=self.natural_frequency_hz, mass=self.mass,
                     quality_factor=self.quality_factor, normal_load=self.normal_load,
@@ -217,7 +225,7 @@ class State:
     def from_query(cls, query: Mapping[str, str | bytes | list]) -> tuple[State, dict[str, str]]:
         """A state from URL query parameters, and a message per parameter it could not read
         (those keep their defaults; unknown names are ignored)."""
-        values: dict[str, object] = {}
+        values: dict[str, Any] = {}
         problems: dict[str, str] = {}
         names = {f.name: f for f in dataclasses.fields(cls)}
         for key, raw in query.items():
@@ -238,7 +246,7 @@ class State:
             values.pop(bad, None)
             return cls(**values), problems
 
-    def with_(self, **changes: object) -> State:
+    def with_(self, **changes: Any) -> State:
         """A copy with some inputs replaced."""
         return dataclasses.replace(self, **changes)
 

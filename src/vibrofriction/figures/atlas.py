@@ -97,7 +97,8 @@ def _variable(ds: xr.Dataset, var: str, keep: tuple[str | None, ...]
               ) -> tuple[xr.DataArray, xr.DataArray, xr.DataArray]:
     """``var``, ``trusted`` and "not computed yet" over the swept dims (size > 1 or kept)."""
     if var not in ds.data_vars:
-        raise ValueError(f"unknown variable {var!r}; choose from {', '.join(ds.data_vars)}")
+        names = ", ".join(map(str, ds.data_vars))
+        raise ValueError(f"unknown variable {var!r}; choose from {names}")
     if "trusted" not in ds.data_vars:
         raise ValueError("the atlas has no 'trusted' variable: it was written by an older "
                          "version; recompute it")
@@ -115,7 +116,7 @@ def _variable(ds: xr.Dataset, var: str, keep: tuple[str | None, ...]
 def _x_axis(ds: xr.Dataset, da: xr.DataArray, x: str | None, var: str) -> str:
     velocity = ds.attrs.get("velocity")
     if x is None:
-        x = velocity if velocity in da.dims else (da.dims[-1] if da.dims else None)
+        x = velocity if velocity in da.dims else (str(da.dims[-1]) if da.dims else None)
     if x is None or x not in da.dims:
         raise ValueError(f"x must be a swept dimension of {var} "
                          f"(swept: {', '.join(map(str, da.dims)) or 'none'}), got {x!r}")
@@ -158,7 +159,7 @@ def _draw_curves(fig, ax, ds: xr.Dataset, da: xr.DataArray, trusted: xr.DataArra
         raise ValueError(f"curves along {x} need at most one other swept dimension; "
                          f"fix some of {', '.join(map(str, others))} with sel "
                          "(--sel dim=value)")
-    group = others[0] if others else None
+    group = str(others[0]) if others else None
     if group is not None:
         n = ds.sizes[group]
         pick = np.unique(np.linspace(0, n - 1, min(n, max_curves)).round().astype(int))
@@ -223,10 +224,11 @@ def _draw_map(fig, ax, ds: xr.Dataset, da: xr.DataArray, trusted: xr.DataArray,
             raise ValueError(f"cannot draw a map over {d}: it needs two or more finite "
                              "values; plot curves instead")
         edges[d] = cell_edges(v, name=d)
-    scale = {d: "log" if is_geometric(ds[d].values) else "linear" for d in (x, y)}
+    scale: dict[str, Any] = {d: "log" if is_geometric(ds[d].values) else "linear"
+                             for d in (x, y)}
     da.where(trusted).plot.pcolormesh(x=x, y=y, ax=ax, cmap="viridis", xscale=scale[x],
                                       yscale=scale[y],
-                                      cbar_kwargs={"label": _label(ds, da.name)})
+                                      cbar_kwargs={"label": _label(ds, str(da.name))})
     bad = (~trusted & ~pending).transpose(y, x).values
     if not bad.any():
         return ""

@@ -39,7 +39,8 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
     checks = []
     if amplitude <= 1.0:
         # case III: mu = mu0 at every V > 0
-        dev, at = [], []
+        dev: list[float] = []
+        at: list[str] = []
         for c in curves.values():
             if c.series.beta == 1.0:
                 m = c.v_inertial > 0
@@ -51,7 +52,9 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
                             "holds exactly (continuous sliding is proven)" if d == 0.0
                             else "holds to the stated accuracy"))
         # eq. (12): mu = 1 for vbar >= 1 and mu < 1 below
-        above, above_at, below_max = [], [], -np.inf
+        above: list[float] = []
+        above_at: list[str] = []
+        below_max = -np.inf
         for c in curves.values():
             if c.series.meta.get("axis") != "vbar":
                 continue
@@ -650,10 +653,11 @@ def damped_beta_series_checks(curves: Mapping[str, Curve], near: float = 0.15
     for label, sel in (("all beta", diffs),
                        (f"|beta - 1| > {near:g}", [x for x in diffs if abs(x[1] - 1) > near])):
         if sel:
-            d, b, v = max(sel)
+            largest, b, v = max(sel)
             checks.append(Check(
                 f"effect of small damping (zeta = {zeta:g}): max |mu_damped - mu_undamped|",
-                f"fig13: {label}, points trusted in both", d, f"beta = {b:g}, vbar = {v:.3g}",
+                f"fig13: {label}, points trusted in both", largest,
+                f"beta = {b:g}, vbar = {v:.3g}",
                 ""))
     alpha = next(iter(curves.values())).series.alpha
     note = (f"Untrusted points: undamped {total[False]} ({unsettled[False]} not converged), "

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -173,7 +174,7 @@ def _fig14_series(quick: bool) -> tuple[Series, ...]:
     return tuple(out)
 
 
-def _fig14_colors() -> dict[str, object]:
+def _fig14_colors() -> dict[str, Any]:
     cs = style.sequence_colors(3, "plasma", 0.1, 0.75)
     return {"normal": "black", "longitudinal": "#2ca02c", "transverse": "#17becf",
             **{f"combined,phase_x={p:.6g}": c for (_, p), c in zip(_FIG14_PHASES, cs,
@@ -272,7 +273,7 @@ def _directions_checks(curves: Mapping[str, Curve]) -> tuple[list[Check], str]:
                         "V = 1e-4, about 5 V"))
     lon = curves["longitudinal"]
     V = lon.series.v_inertial
-    law = theory.kinematic_mu_longitudinal(V, A_X)
+    law = np.asarray(theory.kinematic_mu_longitudinal(V, A_X))
     d, at = max_deviation(lon.mu_ratio, law, [f"V = {v:.4g}" for v in V])
     checks.append(Check("kinematic law (2/pi) arcsin(V/a_x), longitudinal only",
                         where + ", a = 0", d, at,
@@ -305,10 +306,11 @@ def inplane_directions(quick: bool = False) -> Recipe:
         def extra(c: Curve) -> dict[str, NDArray]:
             n = c.series.size
             return {**_inplane_columns(c),
-                    "kinematic": (theory.kinematic_mu_longitudinal(c.v_inertial, c.series.a_x)
-                                  if c.series.a_x > 0 else
-                                  theory.kinematic_mu_transverse(c.v_inertial, c.series.a_y)
-                                  if c.series.a_y > 0 else np.full(n, np.nan)),
+                    "kinematic": np.asarray(
+                        theory.kinematic_mu_longitudinal(c.v_inertial, c.series.a_x)
+                        if c.series.a_x > 0 else
+                        theory.kinematic_mu_transverse(c.v_inertial, c.series.a_y)
+                        if c.series.a_y > 0 else np.full(n, np.nan)),
                     "v_c_forward": np.full(n, c.series.meta["v_c_forward"]),
                     "v_c_backward": np.full(n, c.series.meta["v_c_backward"])}
 
@@ -413,6 +415,7 @@ def _draw_map(curves: Mapping[str, Curve]):
         ax.set_title(rf"({'ab'[k]}) $a_x = {a_x:g}$", fontsize=7.5)
         ax.axhline(0, color="0.3", lw=0.4)
     axes[0].set_ylabel(r"$V = v_0 m\omega/(\mu_0 F_{N,0})$")
+    assert mesh is not None  # one panel per amplitude was drawn
     cb = fig.colorbar(mesh, ax=axes, shrink=0.9, pad=0.02)
     cb.set_label(style.MU)
     al, be, _ = SYSTEM

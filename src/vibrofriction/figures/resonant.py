@@ -79,7 +79,7 @@ def _draw_fig6(curves: Mapping[str, Curve]):
         if approx > 0:
             ax.plot([FIG6_V_MAX * 0.72, FIG6_V_MAX], [approx, approx], color=style.THEORY,
                     lw=0.8, ls="--")
-        ax.plot([0], [theory.static_mu_ratio(a)], "o", ms=3, color=color, clip_on=False,
+        ax.plot([0], [float(theory.static_mu_ratio(a))], "o", ms=3, color=color, clip_on=False,
                 zorder=5)
         ax.text(FIG6_V_MAX * 0.985, exact + 0.01, f"{a:g}", ha="right", va="bottom",
                 fontsize=6, color=color)
@@ -186,10 +186,11 @@ def _draw_fig89(curves: Mapping[str, Curve]):
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, fontsize=6)
     ax.set_title("(a) PREDICTION for the experiment of Figs. 8-9 (data not available)",
                  fontsize=7)
-    du = np.linspace(0.0, 70.0, 701)
+    du_grid = np.linspace(0.0, 70.0, 701)
     for uz, ls in zip(_U_Z0_ALTERNATIVES_UM, (":", "-", "--"), strict=True):
-        a = du / uz
-        bx.plot(du, mu0 * np.asarray(theory.resonant_plateau_exact(a)), color="black", lw=0.9,
+        amps = du_grid / uz
+        bx.plot(du_grid, mu0 * np.asarray(theory.resonant_plateau_exact(amps)), color="black",
+                lw=0.9,
                 ls=ls, label=rf"$u_{{z,0}} = {uz:g}$ $\mu$m")
     for d, col in zip(EXPERIMENT_AMPLITUDES_UM, colors, strict=True):
         a = d * 1e-6 / EXPERIMENT["u_z0"]

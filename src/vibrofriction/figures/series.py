@@ -19,6 +19,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -60,7 +61,7 @@ class Series:
     amplitude: float
     v_inertial: NDArray[np.float64]
     vbar: NDArray[np.float64]
-    meta: Mapping[str, object] = field(default_factory=dict)
+    meta: Mapping[str, Any] = field(default_factory=dict)
     zeta: float = 0.0
     eta_c: float = 0.0
     a_x: float = 0.0
@@ -141,7 +142,8 @@ class Curve:
         def filled(k: str) -> NDArray:
             if k in columns:
                 return np.broadcast_to(np.asarray(columns[k]), (series.size,)).copy()
-            kind = "bool" if k == "trusted" else FIELD[k].column[0]
+            # every field but trusted has its kernel column
+            kind = "bool" if k == "trusted" else FIELD[k].column[0]  # type: ignore[index]
             return np.full(series.size, {"float": np.nan, "int": -1, "bool": False}[kind])
 
         unknown = set(columns) - set(CURVE_COLUMNS)
@@ -218,13 +220,14 @@ def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
     on = np.asarray(inplane_on, dtype=object)
     values = sorted(set(on.tolist()))
     if len(values) <= 1:
-        return solve_points(*point, profile_exponent=exponent,
+        # point is the POINT_ARGS before profile_exponent: mypy cannot count a star
+        return solve_points(*point, profile_exponent=exponent,  # type: ignore[misc]
                             inplane_on=values[0] if values else "substrate",
                             settings=settings)
     out: dict[str, NDArray] = {}
     for value in values:
         idx = np.flatnonzero(on == value)
-        part = solve_points(*(np.asarray(x)[idx] for x in point),
+        part = solve_points(*(np.asarray(x)[idx] for x in point),  # type: ignore[misc]
                             profile_exponent=np.asarray(exponent)[idx], inplane_on=value,
                             settings=settings)
         for k, col in part.items():

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -69,7 +70,7 @@ _RESONANT_XMAX = 3.0
 
 #: Fig. 18's bench: the 3 mm steel sphere of docs/contact_geometry.md ("Using it").
 _STEEL = Material(E=210e9, nu=0.3)
-BENCH: dict[str, object] = dict(natural_frequency_hz=800.0, mass=0.2, normal_load=20.0,
+BENCH: dict[str, Any] = dict(natural_frequency_hz=800.0, mass=0.2, normal_load=20.0,
                                 drive_frequency_hz=1000.0, mu0=0.3,
                                 contact=Sphere(3e-3, _STEEL, _STEEL))
 #: Its indentation amplitudes ``du_z`` (m): MDR ``a`` = 0.25, 0.51, 0.90 (linearised

@@ -68,7 +68,7 @@ RESONANT = "#e08a00"
 PHASE_COLORS = {"stick": "#9ecae1", "slip+": "#fdd0a2", "slip-": "#fcbba1",
                 "flight": "#d9d9d9"}
 
-RC: dict[str, object] = {
+RC: dict[Any, Any] = {  # matplotlib types the keys as literals
     "font.size": 8,
     "axes.labelsize": 8,
     "axes.titlesize": 8,

@@ -25,7 +25,8 @@ ENERGY_NAMES = ("work_input", "dissipated_pin", "dissipated_contact", "dissipate
 _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 
 
-def kernel_point(dim: Dimensionless, V: float) -> tuple[float | bool, ...]:
+def kernel_point(dim: Dimensionless, V: float
+                 ) -> tuple[float, float, float, float, float, float, float, float, bool]:
     """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x,
     on_substrate)``."""
     return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from typing import cast, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -236,7 +237,7 @@ def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArray[np
         return
     al, be, am, ze, et, ax, px, on = point
     band = theory.inplane_static_mu_ratio(al[idx], be[idx], am[idx], ax[idx], px[idx],
-                                          ze[idx], et[idx], on)
+                                          ze[idx], et[idx], cast(str, on))
     st = out_i[idx, column_index("status")]
     stuck = out_f[idx, column_index("stick_fraction")] >= HELD_STICK
     mark = (np.isfinite(np.atleast_1d(band.upper)) | stuck) & np.isin(
@@ -253,7 +254,8 @@ def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
     window or orbit.  ``point`` is ``(alpha, beta, a, zeta, eta_c, a_x, phase_x, a_y,
     phase_y, alpha_y, zeta_y, inplane_on)``."""
     al, be, am, ze, et, ax, px, ay, py, aly, zey, on = point
-    region = theory.plane_static_region(al, be, am, ax, px, ay, py, ze, et, on, aly, zey)
+    region = theory.plane_static_region(al, be, am, ax, px, ay, py, ze, et, cast(str, on),
+                                        aly, zey)
     return (np.isfinite(np.atleast_1d(region.x_upper)) | (stick_fraction >= HELD_STICK)) \
         & np.isin(status, (Status.PERIODIC.code, Status.AVERAGED.code,
                            Status.NOT_CONVERGED.code))
@@ -449,6 +451,23 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     return result_from_rows(f, oi.tolist(), dim, V, settings)
 
 
+@overload
+def friction_coefficient(system: System, vbar: float, *, v_inertial: None = None,
+                         v0: None = None, initial: Initial = "sliding",
+                         settings: SolverSettings | None = None) -> FrictionResult: ...
+@overload
+def friction_coefficient(system: System, vbar: None = None, *, v_inertial: float,
+                         v0: None = None, initial: Initial = "sliding",
+                         settings: SolverSettings | None = None) -> FrictionResult: ...
+@overload
+def friction_coefficient(system: System, vbar: None = None, *, v_inertial: None = None,
+                         v0: float, initial: Initial = "sliding",
+                         settings: SolverSettings | None = None) -> FrictionResult: ...
+@overload
+def friction_coefficient(system: System, vbar: ArrayLike | None = None, *,
+                         v_inertial: ArrayLike | None = None, v0: ArrayLike | None = None,
+                         initial: Initial = "sliding", settings: SolverSettings | None = None
+                         ) -> FrictionResult | FrictionResults: ...
 def friction_coefficient(
     system: System,
     vbar: ArrayLike | None = None,

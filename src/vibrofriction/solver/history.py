@@ -168,6 +168,8 @@ class History:
         if not d.is_rigid:
             out = out + 0.5 * (d.beta - d.alpha) * self.e**2
         if self.is_plane:
+            # a 2-D history has every transverse field
+            assert self.u_y is not None and self.u_y_dot is not None and self.e_y is not None
             yy = self.u_y - (_transverse_motion(d, self.tau)[0]
                              if d.inplane_on == "holder" else 0.0)
             out = out + 0.5 * self.u_y_dot**2 + 0.5 * d.pin_y[0] * yy**2
@@ -186,6 +188,7 @@ class History:
             xc = xc - inplane_motion(d, self.tau)[0]
         if not self.is_plane:
             return xc, np.zeros_like(xc)
+        assert self.u_y is not None and self.e_y is not None  # a 2-D history has them
         yc = self.u_y - self.e_y
         if d.inplane_on == "substrate":
             yc = yc - _transverse_motion(d, self.tau)[0]
@@ -206,7 +209,9 @@ def _transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
 def _checked_run(periods: float, samples_per_period: int) -> None:
     if not (math.isfinite(periods) and periods > 0):
         raise ValueError(f"periods must be finite and > 0, got {periods!r}")
-    if not (isinstance(samples_per_period, int) and samples_per_period >= 2):
+    # the annotation says int, the caller may pass anything: the check stays
+    if not (isinstance(samples_per_period, int)  # type: ignore[redundant-expr]
+            and samples_per_period >= 2):
         raise ValueError(f"samples_per_period must be an integer >= 2, got {samples_per_period!r}")
 
 
@@ -234,7 +239,8 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
     return y, xd, e, e_dot, phase
 
 
-def _segments(dim: Dimensionless, V: float, start: tuple, whole: int) -> NDArray[np.float64]:
+def _segments(dim: Dimensionless, V: float, start: tuple[float, float, float, float, int],
+              whole: int) -> NDArray[np.float64]:
     """The segment rows (:data:`codes.SEG_TAU` ...) of ``whole`` drive periods."""
     cap = 4096 * whole
     while True:
@@ -281,10 +287,10 @@ def simulate(
     (docs/contact_geometry.md).
     """
     dim = dimensionless(system)
-    V = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
-    if V.ndim != 0:
+    v = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
+    if v.ndim != 0:
         raise ValueError("simulate takes one velocity, got an array")
-    V = float(V)
+    V = float(v)
     _checked_run(periods, samples_per_period)
     if dim.curved:
         _check_curved(np.array([True]), *(np.array([x]) for x in (
@@ -296,7 +302,9 @@ def simulate(
         return mdr_history(dim, V, periods, samples_per_period, initial, springs)
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
-    seg = _segments(dim, V, _start(dim, V, initial, settings), int(math.ceil(periods)))
+    # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
+    start = _start(dim, V, initial, settings)  # type: ignore[arg-type]
+    seg = _segments(dim, V, start, int(math.ceil(periods)))
     m = seg.shape[0]
     tau_end = TWO_PI * periods
     grid = np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1)
@@ -433,7 +441,8 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
     x, x_dot = y[:, 0] + V * tau, v[:, 0]
     slip = out[:, _plane.H_SLIP:_plane.H_SLIP + 2]
     energy = _plane_energy(dim, V, tau, x, y[:, 1], v, e, f, slip)
-    last = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0)) if whole_done else []
+    last = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0)) if whole_done \
+        else np.zeros(0, dtype=np.intp)
     final = plane_state = None
     if len(last):
         r = last[-1]

@@ -11,6 +11,7 @@ later step; :func:`mdr_friction` is the entry point for now.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -226,7 +227,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         return r
     N = 20 if n_springs is None else int(n_springs)
     coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta, **ip)
-    skipped = []
+    skipped: list[dict[str, Any]] = []
     d_prev = math.nan  # the previous pair's difference
     while True:
         # a row that finds no periodic orbit (another attractor of the finite row, e.g. a
@@ -262,7 +263,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         skipped = []
     out = dict(fine)
     out.update(mu_ratio=fine["mu_ratio"] + d / (ratio ** ORDER - 1.0), error=err,
-               status=max(coarse["status"], fine["status"], key=rank.get),
+               status=max(coarse["status"], fine["status"], key=lambda s: rank[s]),
                order=ORDER, rows=(N, M), unextrapolated=fine["mu_ratio"],
                skipped_rows=tuple(r["n_springs"] for r in skipped))
     if out["status"] == "averaged" and err > tol:

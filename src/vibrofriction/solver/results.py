@@ -85,7 +85,7 @@ def _frozen(cls: type, values: dict[str, Any]) -> Any:
     """An instance of the frozen dataclass ``cls`` with the fields ``values`` (all of them,
     in field order), without its ``__init__``: for values already checked, as the
     solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner."""
-    obj = object.__new__(cls)
+    obj: Any = object.__new__(cls)
     obj.__dict__.update(values)
     return obj
 
@@ -106,9 +106,18 @@ def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> Sec
 
 
 # --------------------------------------------------------------------------- the results
-_SCALAR = {"float": float, "int": int, "bool": bool}
-_OBJECT = {"status": Status, "final_state": SectionState | None, "system": Dimensionless}
-_ARRAY = {"float": NDArray[np.float64], "int": NDArray[np.int64], "bool": NDArray[np.bool_]}
+# the fields are written out below, so that type checkers and editors see them; they are
+# checked against the schema's (names, order and kinds) where the classes are defined
+_SCALAR = {"float": "float", "int": "int", "bool": "bool"}
+_OBJECT = {"status": "Status", "final_state": "SectionState | None", "system": "Dimensionless"}
+_ARRAY = {"float": "NDArray[np.float64]", "int": "NDArray[np.int64]",
+          "bool": "NDArray[np.bool_]"}
+
+
+def _check_fields(cls: type, expected: dict[str, str]) -> None:
+    """The annotations of ``cls`` are ``expected``: the schema's fields, in order."""
+    if list(cls.__annotations__.items()) != list(expected.items()):
+        raise TypeError(f"{cls.__name__}'s fields differ from schema.RESULT_FIELDS")
 
 
 def _field_doc(f: Field) -> str:
@@ -123,7 +132,31 @@ _FIELDS_DOC = "\n".join(_field_doc(f) for f in RESULT_FIELDS)
 
 @dataclass(frozen=True)
 class FrictionResult:
-    __annotations__ = {f.name: _OBJECT.get(f.name) or _SCALAR[f.kind] for f in RESULT_FIELDS}
+    mu_ratio: float
+    status: Status
+    error: float
+    trusted: bool
+    period: int
+    periods: int
+    events: int
+    work: float
+    stick_fraction: float
+    slip_fraction: float
+    reverse_slip_fraction: float
+    flight_fraction: float
+    multiplier: float
+    settling_periods: float
+    window_min: float
+    window_max: float
+    drift_rate: float
+    lateral_ratio: float
+    mean_normal_ratio: float
+    stick_area_fraction: float
+    slip_area_fraction: float
+    open_area_fraction: float
+    final_state: SectionState | None
+    system: Dimensionless
+    v_inertial: float
     __doc__ = f"""The steady state at one point (paper eq. 25) and how it was obtained.
 
     Its fields are :data:`vibrofriction.schema.RESULT_FIELDS`; docs/solver.md explains
@@ -163,11 +196,37 @@ class FrictionResult:
         return out
 
 
+_check_fields(FrictionResult, {f.name: _OBJECT.get(f.name) or _SCALAR[f.kind]
+                               for f in RESULT_FIELDS})
+
+
 @dataclass(frozen=True)
 class FrictionResults:
-    __annotations__ = {f.name: (Dimensionless if f.name == "system" else
-                                _ARRAY.get(f.kind, NDArray[np.object_]))
-                       for f in RESULT_FIELDS}
+    mu_ratio: NDArray[np.float64]
+    status: NDArray[np.object_]
+    error: NDArray[np.float64]
+    trusted: NDArray[np.bool_]
+    period: NDArray[np.int64]
+    periods: NDArray[np.int64]
+    events: NDArray[np.int64]
+    work: NDArray[np.float64]
+    stick_fraction: NDArray[np.float64]
+    slip_fraction: NDArray[np.float64]
+    reverse_slip_fraction: NDArray[np.float64]
+    flight_fraction: NDArray[np.float64]
+    multiplier: NDArray[np.float64]
+    settling_periods: NDArray[np.float64]
+    window_min: NDArray[np.float64]
+    window_max: NDArray[np.float64]
+    drift_rate: NDArray[np.float64]
+    lateral_ratio: NDArray[np.float64]
+    mean_normal_ratio: NDArray[np.float64]
+    stick_area_fraction: NDArray[np.float64]
+    slip_area_fraction: NDArray[np.float64]
+    open_area_fraction: NDArray[np.float64]
+    final_state: NDArray[np.object_]
+    system: Dimensionless
+    v_inertial: NDArray[np.float64]
     __doc__ = """Results over an array of velocities: the fields of :class:`FrictionResult`
     as arrays of one shape (``system`` is shared)."""
 
@@ -195,6 +254,11 @@ class FrictionResults:
     @property
     def success(self) -> NDArray[np.bool_]:
         return converged(self.status)
+
+
+_check_fields(FrictionResults, {f.name: "Dimensionless" if f.name == "system" else
+                                _ARRAY.get(f.kind, "NDArray[np.object_]")
+                                for f in RESULT_FIELDS})
 
 
 #: Drive periods beyond which the approach to a periodic orbit counts as slow.
@@ -260,16 +324,22 @@ def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
         system=system, v_inertial=v_inertial, **{k: cols[k] for k in _PLAIN})
 
 
+def _column(f: Field) -> tuple[str, int]:
+    """A kernel-column field's ``(kind, index)``."""
+    assert f.column is not None, f.name
+    return f.column
+
+
 #: The fields built in Python, after the kernels' rows in :func:`result_from_rows`.
 _BUILT = ("status", "trusted", "final_state", "system", "v_inertial")
 #: Where each result field is in ``floats + ints + [the _BUILT values]``, in field order.
 _PICK = operator.itemgetter(*(
     _BUILT.index(f.name) + len(FLOAT_COLUMNS) + len(INT_COLUMNS) if f.name in _BUILT
-    else (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1]
+    else (len(FLOAT_COLUMNS) if _column(f)[0] == "int" else 0) + _column(f)[1]
     for f in RESULT_FIELDS))
 _RESULT_NAMES = tuple(f.name for f in RESULT_FIELDS)
 _STATE_PICK = operator.itemgetter(*(
-    (len(FLOAT_COLUMNS) if f.column[0] == "int" else 0) + f.column[1] for f in STATE_FIELDS))
+    (len(FLOAT_COLUMNS) if _column(f)[0] == "int" else 0) + _column(f)[1] for f in STATE_FIELDS))
 _I_STATUS, _I_ERROR = column_index("status"), column_index("error")
 
 
@@ -280,7 +350,7 @@ def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless
     result as :func:`result_from_columns` of their named columns with ``trusted`` from
     ``settings``, built without a dictionary of columns or the dataclass's checks."""
     status = Status.from_code(ints[_I_STATUS])
-    row = floats + ints
+    row: list[Any] = [*floats, *ints]
     row += (status, settings.trusted_one(status, floats[_I_ERROR]),
             section_state(*_STATE_PICK(row)), system, v_inertial)
     return _frozen(FrictionResult, dict(zip(_RESULT_NAMES, _PICK(row), strict=True)))

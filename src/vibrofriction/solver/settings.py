@@ -19,7 +19,8 @@ def converged(status: ArrayLike) -> NDArray[np.bool_]:
     :class:`Status` members.  The package's one test of convergence."""
     st = np.asarray(status)
     if st.ndim == 0 and st.dtype != object:  # one point: no array machinery
-        return np.bool_(int(st) in CONVERGED_CODES)
+        # a numpy bool, which broadcasts and indexes as a 0-d array would
+        return np.bool_(int(st) in CONVERGED_CODES)  # type: ignore[return-value]
     if st.dtype == object:
         flat = [s.ok if isinstance(s, Status) else int(s) in CONVERGED_CODES for s in st.flat]
         return np.array(flat, dtype=bool).reshape(st.shape)
@@ -66,7 +67,8 @@ class SolverSettings:
         members.  This is the package's one notion of a trusted result.
         """
         if np.ndim(error) == 0:  # one point (nan is never <= tol)
-            return converged(status) & np.bool_(float(error) <= self.tol_trusted)
+            return converged(status) & np.bool_(float(np.asarray(error, dtype=float))
+                                                <= self.tol_trusted)
         err = np.nan_to_num(np.asarray(error, dtype=float), nan=np.inf)
         return converged(status) & (err <= self.tol_trusted)
 

@@ -164,7 +164,7 @@ def sweep(
         plan = sink.plan
     try:
         todo = [int(b) for b in np.flatnonzero(~sink.done)]
-        done_points = sum(plan.block_size(b) for b in np.flatnonzero(sink.done))
+        done_points = sum(plan.block_size(int(b)) for b in np.flatnonzero(sink.done))
         run_blocks(plan, todo, sink.write, client=client, workers=workers,
                    progress=progress, initial_points=done_points)
     finally:

@@ -61,7 +61,7 @@ def _rows(plan: Plan, block: int) -> dict[str, np.ndarray]:
     shape = tuple(s.stop - s.start for s in sl)
     for a in plan.params:
         if a.swept:
-            idx = [None] * len(shape)
+            idx: list[slice | None] = [None] * len(shape)
             idx[k] = slice(None)
             arrays[a.name] = np.broadcast_to(a.values[sl[k]][tuple(idx)], shape)
             k += 1
@@ -144,8 +144,8 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
                 out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
             for k, v in cols.items():
                 out[k][(*i, d, j)] = v
-            state = section_state(*(float(cols[k]) for k in ("y", "x_dot", "f")),
-                                  int(cols["phase"]), float(cols["e"]))
+            y, x_dot, f = (float(cols[k]) for k in ("y", "x_dot", "f"))
+            state = section_state(y, x_dot, f, int(cols["phase"]), float(cols["e"]))
     assert out is not None
     return out
 

@@ -411,8 +411,10 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     if len(given) != 1:
         raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
                          f"(got {given or 'none'})")
-    axes = tuple(_axis(n, v) for n, v in values.items())
-    velocity = _axis(given[0], vbar if vbar is not None else v_inertial)
+    axes = tuple(_axis(n, v) for n, v in values.items() if v is not None)  # none missing
+    speed = vbar if vbar is not None else v_inertial
+    assert speed is not None  # exactly one is given
+    velocity = _axis(given[0], speed)
     for a in (*axes, velocity):  # each axis alone: the ranges, not the relations
         validated({a.name: a.values})
     _check_above(axes)
@@ -483,7 +485,8 @@ def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis,
     ends = [(float(np.min(a.values)), float(np.max(a.values))) for a in params]
     vmin, vmax = float(np.min(velocity.values)), float(np.max(velocity.values))
     for corner in itertools.product(*ends):
-        p = Physical(**dict(zip(PHYSICAL, corner, strict=True)), **choices)
+        values: dict[str, Any] = dict(zip(PHYSICAL, corner, strict=True)) | choices
+        p = Physical(**values)
         try:
             p.to_dimensionless()
             V = max(abs(float(p.v0_to_inertial(v))) for v in (vmin, vmax))

@@ -80,7 +80,7 @@ class ZarrSink:
         self._row_names = [v.name for v in row_variables(plan.kind)]
 
         async def _open():
-            group = await za.open_group(str(path), mode="r+", zarr_format=3)
+            group: Any = await za.open_group(str(path), mode="r+", zarr_format=3)
             # every chunk file is written, even all-fill ones: a missing file is damage
             arrays = {name: (await group.getitem(name)).with_config({"write_empty_chunks": True})
                       for name in self._point_names + self._row_names}
@@ -109,9 +109,9 @@ class ZarrSink:
 
         Returns the block numbers found bad.
         """
-        bad = []
-        for block in np.flatnonzero(self.done):
-            block = int(block)
+        bad: list[int] = []
+        for b in np.flatnonzero(self.done):
+            block = int(b)
             sl, rsl = self.plan.block_slices(block), self.plan.row_slices(block)
 
             async def _read(sl=sl, rsl=rsl):
@@ -205,7 +205,7 @@ def _create(path: Path, plan: Plan) -> None:
     tmp = path.with_name(f"{path.name}.partial-{uuid.uuid4().hex[:8]}")
     try:
         ds = template(plan, None)
-        encoding = {}
+        encoding: dict[str, dict[str, Any]] = {}
         for v in point_variables(plan.velocity.name):
             encoding[v.name] = {"chunks": plan.chunks, "fill_value": v.fill}
         nrow = len(plan.row_dims)
