@@ -584,6 +584,7 @@ class Physical:
                 raise ValueError(f"normal_control='dead_weight', du_z = {du_z!r} m: "
                                  f"{exc}") from None
             if exponent != math.inf:  # the MDR contact's stiffnesses at the new d0
+                assert contact is not None  # a finite exponent comes from a contact
                 k_zc = float(contact.normal_stiffness(u_z0))
                 k_xc = float(contact.tangential_stiffness(u_z0))
         system = cls(mass=mass, k_x=k_x, k_xc=k_xc, k_zc=k_zc, u_z0=u_z0, du_z=du_z,

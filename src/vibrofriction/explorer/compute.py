@@ -174,7 +174,7 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     dim = _dimensionless(system)
     V = _inertial(state, system, x)
     a = dim.amplitude
-    out = []
+    out: list[dict] = []
     if dim.curved:
         return _curved_closed_forms(dim, x, V, case, scale)
     if dim.a_x > 0.0 or dim.a_y > 0.0:  # the laws below are the normal oscillation's only
@@ -293,6 +293,10 @@ def mdr_history(state: State, x: float, periods: float = 1.0,
     change = np.flatnonzero(phase[1:] != phase[:-1]) + 1
     starts = np.concatenate([[0], change])
     ends = np.concatenate([change, [t.size - 1]])
+    assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
+            and h.contact_radius is not None and h.stick_area_fraction is not None
+            and h.slip_area_fraction is not None and h.open_area_fraction is not None
+            and h.normal_impulse is not None)  # a curved tip's history has them all
     return {
         "curved": True, "x": float(x), "steady": steady, "message": message,
         "t": t, "f": h.f[last], "n": h.n[last], "x_dot": h.x_dot[last], "f_y": None,

@@ -272,7 +272,7 @@ class Explorer:
         box = self.inputs[PROFILE.name].text
         if event.new == "power":
             try:
-                current = parse_number(PROFILE.name, box.value)
+                current = parse_number(PROFILE.name, box.value or "")
             except ValueError:
                 current = math.inf
             value = current if profile_of(current) == "power" else _POWER_DEFAULT
@@ -289,7 +289,7 @@ class Explorer:
         and disable them (and ``phase_y``); a flat punch enables them again.  The
         longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled."""
         try:
-            n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value)
+            n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value or "")
         except ValueError:
             return  # read_inputs says so
         curved = self.mode.value == "dimensionless" and n != math.inf
@@ -306,7 +306,7 @@ class Explorer:
             for name in MDR_REFUSED:
                 box = self.inputs[name].text
                 try:
-                    value = parse_number(name, box.value)
+                    value = parse_number(name, box.value or "")
                 except ValueError:
                     value = 1.0  # unreadable: reset it too
                 if value != 0.0:

@@ -109,7 +109,7 @@ class CurveView:
         crit = curve["critical"]
         in_range = math.isfinite(crit) and x[0] <= crit <= x[-1]
         line = {"x0": [crit], "x1": [crit], "y0": [0.0], "y1": [1.05 * ymax]}
-        none = {k: [] for k in line}
+        none: dict[str, list[float]] = {k: [] for k in line}
         curved = curve["profile"] != "flat punch"
         self.critical.data = line if in_range and not curved else none
         self.critical_curved.data = line if in_range and curved else none
@@ -335,7 +335,8 @@ class SpaceTimeView:
                      y_axis_label="xi = x/a0 (position along the profile)",
                      x_range=Range1d(0.0, 1.0), y_range=Range1d(0.0, 1.0),
                      css_classes=["vf-spacetime"])
-        fig.image("image", "x", "y", "dw", "dh", source=self.image, color_mapper=mapper)
+        fig.image("image", "x", "y", "dw", "dh", source=self.image,
+                  color_mapper=mapper)  # type: ignore[call-arg]  # bokeh: a glyph property
         for name, color in zip(CONTACT_STATES, CONTACT_COLORS, strict=True):
             fig.scatter([-10.0], [-10.0], marker="square", size=10, color=color,
                         line_color="#555555", legend_label=name)

@@ -56,6 +56,10 @@ def _draw(hs: Mapping[float, History]):
     axes = fig.subplots(2, len(hs), sharex=True, height_ratios=(1.0, 2.2))
     cmap = ListedColormap(_COLORS)
     for k, (a, h) in enumerate(hs.items()):
+        assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
+                and h.contact_radius is not None and h.stick_area_fraction is not None
+                and h.slip_area_fraction is not None and h.open_area_fraction is not None
+                and h.normal_impulse is not None)  # a curved tip's history has them all
         top, bot = axes[0, k], axes[1, k]
         t = h.tau / (2.0 * math.pi)
         top.axhline(0.0, color="0.6", lw=0.4)
@@ -107,6 +111,10 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
     checks = []
     notes = []
     for a, h in hs.items():
+        assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
+                and h.contact_radius is not None and h.stick_area_fraction is not None
+                and h.slip_area_fraction is not None and h.open_area_fraction is not None
+                and h.normal_impulse is not None and h.impulse is not None)  # a curved tip's
         T = h.tau.size
         cols["amplitude"].append(np.full(T, a))
         for k in list(cols)[1:]:

@@ -9,6 +9,7 @@ to an oscillating substrate is shifted back (:func:`inplane_motion`).
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -99,7 +100,7 @@ def _quadrature_nodes(taus: NDArray[np.float64], w_max: float):
 
 
 def dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
-                taus: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
+                taus: NDArray[np.float64]) -> dict[str, Any]:
     """Cumulative work and dissipated energies (:data:`ENERGY_NAMES`) at ``taus``:
     Gauss-Legendre quadrature of the closed forms between successive samples (no event
     lies inside one), relative accuracy ~1e-10."""

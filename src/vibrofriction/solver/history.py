@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -162,7 +163,7 @@ class History:
         if d.a_x > 0.0 and d.inplane_on == "holder":
             y = y - inplane_motion(d, self.tau)[0]
         out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
-        if self.spring_f is not None:  # the row: sum f_i^2/(2 k dxi)
+        if self.spring_f is not None and self.xi is not None:  # the row: sum f_i^2/(2 k dxi)
             k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])
             return out + 0.5 * np.sum(self.spring_f**2, axis=1) / k
         if not d.is_rigid:
@@ -293,11 +294,13 @@ def simulate(
     V = float(v)
     _checked_run(periods, samples_per_period)
     if dim.curved:
-        _check_curved(np.array([True]), *(np.array([x]) for x in (
+        al, be, am, vv, ze, et, ax, ay, pe = (np.array([x]) for x in (
             dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x, dim.a_y,
-            dim.profile_exponent)), "sliding")
-        if isinstance(springs, bool) or not (isinstance(springs, (int, np.integer))
-                                             and springs >= 1):
+            dim.profile_exponent))
+        _check_curved(np.array([True]), al, be, am, vv, ze, et, ax, ay, pe, "sliding")
+        # the annotation is not enforced at run time: a bool, a float or 0 is refused here
+        if isinstance(springs, bool) or not isinstance(  # type: ignore[redundant-expr]
+                springs, (int, np.integer)) or springs < 1:
             raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
         return mdr_history(dim, V, periods, samples_per_period, initial, springs)
     if dim.a_y > 0.0:
@@ -464,7 +467,7 @@ def _cumulative(tau: NDArray[np.float64], p: NDArray[np.float64]) -> NDArray[np.
 def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
                   x: NDArray[np.float64], uy: NDArray[np.float64], v: NDArray[np.float64],
                   e: NDArray[np.float64], f: NDArray[np.float64],
-                  slip: NDArray[np.float64]) -> dict[str, NDArray[np.float64]]:
+                  slip: NDArray[np.float64]) -> dict[str, Any]:
     """Work input and dissipation of a 2-D history (the reference's definitions,
     vibrofriction_reference.inplane): the trapezoidal rule over the samples."""
     X, Xd = inplane_motion(dim, tau)

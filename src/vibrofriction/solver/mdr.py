@@ -219,7 +219,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x = (float(x) for x in (
         alpha, beta, amplitude, V, profile_exponent, zeta, a_x, phase_x))
     _check(alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x, inplane_on)
-    ip = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on)
+    ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
     if math.isinf(n_exp):
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, **ip)
