@@ -120,11 +120,18 @@ def _fit(model: str):
 @pytest.mark.slow
 def test_fit_to_mdr_reference_data_recovers_the_sphere() -> None:
     """From starts 1.3x off: mu0, the radius and the mass within their 95 % intervals,
-    the verdict good, and k_zc (tied to the radius) within its mapped interval."""
+    and k_zc (tied to the radius) within its mapped interval.  The verdict: this table's
+    noise alone has the chi-square 26.85 (seed 22: 18 draws, p = 0.082 on 18 degrees of
+    freedom), and the MDR model at the truth 26.86; a fit's 15 degrees of freedom make a
+    minimum near it doubtful (p ~ 0.05), so the verdict is good, or doubtful at a
+    chi-square no higher than the truth's (the fit found the valley of the truth)."""
     res = _fit("mdr")
     print(res.report())
     print(f"{res.seconds:.1f} s, {res.nfev} evaluations, stages {res.extra['stages']}")
-    assert res.quality == "good", res.report()
+    noise = np.random.default_rng(META["seed"]).normal(0.0, 1.0, 18)
+    assert _chisq(_pin()) == pytest.approx(float(noise @ noise), abs=0.1)
+    assert res.quality == "good" or (
+        res.quality == "doubtful" and res.chisqr <= _chisq(_pin())), res.report()
     for name, truth in (("mu0", T["mu0"]), ("radius", T["radius"]), ("mass", T["mass"])):
         lo, hi = res.intervals[name]
         assert lo <= truth <= hi, (name, truth, lo, hi)
