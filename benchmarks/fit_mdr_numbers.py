@@ -11,14 +11,19 @@ reference ``vibrofriction_reference.mdr``), and the calls of tests/test_fit_mdr.
    ``tol_trusted`` 1e-4, a global stage of 20 generations of 8 x 3 members, 2 local
    starts): verdict, intervals (do they hold the truth?), time by stage;
 3. the same fit with the linearised sphere (``contact_model="linearised"``);
-4. the design of the MDR pin (the test's call), its optimum re-evaluated by the reference.
+4. the design of the MDR pin (the test's call), its optimum re-evaluated by the reference;
+5. the MDR solver's tolerance: the 18 rows at the truth and at the 1.3x-off guess with
+   ``tol_trusted`` 1e-5 (the default) and 1e-4 (the fit's ``CURVED_TOL``): CPU seconds
+   (median of 3) and chi-square.
 
 Run: ``python benchmarks/fit_mdr_numbers.py > benchmarks/results/fit_mdr.md`` (minutes
-on 2 cores; the machine's load is printed, timings move with it).
+on 2 cores; the machine's load is printed, timings move with it); ``--only 5`` runs
+section 5 alone (``> benchmarks/results/fit_mdr_tol.md``).
 """
 
 from __future__ import annotations
 
+import argparse
 import datetime
 import math
 import os
@@ -32,15 +37,48 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
 
+def tolerance() -> None:
+    """Section 5: the 18 rows at the truth and the guess, tol_trusted 1e-5 and 1e-4."""
+    import numpy as np
+
+    import test_fit_mdr as t
+    from vibrofriction.bench import predict_cof
+    from vibrofriction.solver import SolverSettings
+
+    data = t._data()
+    cols = [data[c].to_numpy() for c in ("v0", "du_z", "omega")]
+    print("## 5. The MDR solver's tolerance on the 18 rows\n")
+    print("| system | tol_trusted | CPU s (median of 3) | chi-square |\n|---|---|---|---|")
+    guess = t._pin(radius=t.T["radius"] * t.OFF, mass=t.T["mass"] / t.OFF,
+                   mu0=t.T["mu0"] * t.OFF)
+    predict_cof(guess, *cols)  # compile
+    for label, pin in (("truth", t._pin()), ("guess 1.3x off", guess)):
+        for tol in (1e-5, 1e-4):
+            times = []
+            for _ in range(3):
+                c0 = time.process_time()
+                cof = predict_cof(pin, *cols, SolverSettings(tol_trusted=tol))
+                times.append(time.process_time() - c0)
+            r = (cof - data["cof"].to_numpy()) / data["sigma"].to_numpy()
+            print(f"| {label} | {tol:g} | {float(np.median(times)):.3f} | {float(r @ r):.3f} |")
+
+
 def main() -> None:
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--only", choices=["5"], default=None)
+    args = parser.parse_args()
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True, cwd=ROOT).stdout.strip()
+    print(f"# MDR fit and design numbers\n\n`python benchmarks/fit_mdr_numbers.py"
+          f"{' --only ' + args.only if args.only else ''}`, "
+          f"{datetime.date.today()}, commit {commit}, {platform.platform()}, "
+          f"{os.cpu_count()} cores, load average at start {os.getloadavg()[0]:.1f}\n")
+    if args.only == "5":
+        tolerance()
+        return
     import test_fit_mdr as t  # the test's set-up: data, truth, guess, the reference call
     from vibrofriction_reference.mdr import mdr_reference
 
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True, cwd=ROOT).stdout.strip()
-    print(f"# MDR fit and design numbers\n\n`python benchmarks/fit_mdr_numbers.py`, "
-          f"{datetime.date.today()}, commit {commit}, {platform.platform()}, "
-          f"{os.cpu_count()} cores, load average at start {os.getloadavg()[0]:.1f}\n")
     print("## 1. At the truth (no fit)\n")
     mdr, lin = t._chisq(t._pin()), t._chisq(t._pin(model="linearised"))
     print(f"chi-square of 18 points: MDR {mdr:.2f}, linearised {lin:.1f}\n")
@@ -77,7 +115,8 @@ def main() -> None:
     print(f"* {seconds:.1f} s; optimum f = {s.omega / (2 * math.pi):.5g} Hz, du_z = "
           f"{s.du_z:.4g} m: COF {res.cof:.6f} (solver error {mu0 * res.error:.1e}); the "
           f"reference {mu0 * ref.mu_ratio:.6f} (+- {mu0 * ref.mu_error:.1e}); difference "
-          f"{res.cof - mu0 * ref.mu_ratio:+.1e}")
+          f"{res.cof - mu0 * ref.mu_ratio:+.1e}\n")
+    tolerance()
 
 
 if __name__ == "__main__":
