@@ -236,8 +236,10 @@ def test_curved_refusals_elsewhere():
         vf.simulate(system, v_inertial=0.3, initial="rest")
     pin = vf.Physical.from_bench(**BENCH, contact=Sphere(3e-3, STEEL, STEEL),
                                  contact_model="mdr", du_z=1e-7)
-    with pytest.raises(ValueError, match="fit and the design"):
-        pin.point_arguments(0.01, 1e-7, pin.omega)
+    # the fit and the design take it now: a = du_z/d0, V in units of mu0 F(d0)/(m omega)
+    point = pin.point_arguments(0.01, 1e-7, pin.omega)
+    assert point[2] == pytest.approx(1e-7 / pin.u_z0)
+    assert point[3] == pytest.approx(0.01 * pin.mass * pin.omega / (pin.mu0 * pin.F_N0))
     with pytest.raises(ValueError, match="dF_N"):
         pin.dF_N  # noqa: B018
 

@@ -752,9 +752,9 @@ class Physical:
         :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
         (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y``
         are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
-        axisymmetric pin, :meth:`transverse_groups`).  ValueError for a curved MDR contact:
-        the fit and the design do not take it yet."""
-        self._check_flat("the fit and the design (point_arguments)")
+        axisymmetric pin, :meth:`transverse_groups`).  A curved MDR contact's are those of
+        its scaled model (``a = du_z/d0``, velocities in units of ``mu0 F(d0)/(m omega)``):
+        pass them with ``profile_exponent`` to ``solve_points``."""
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
         a_y = self.inplane_amplitude(du_y, omega)

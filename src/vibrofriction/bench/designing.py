@@ -32,6 +32,10 @@ from ..validation import checked, checked_choice
 
 __all__ = ["DESIGN_STATUSES", "GOALS", "VELOCITY_RULES", "DesignResult", "design"]
 
+#: A curved (MDR) pin's map (the MDR solver, ~30 ms a point): this many frequencies and
+#: normal amplitudes by default, and this many refinements from its lowest points.
+CURVED_MAP = (25, 9)
+CURVED_STARTS = 3
 #: Relative changes of the drive frequency in the sensitivity table.
 FREQUENCY_CHANGES = (-0.05, -0.01, 0.01, 0.05)
 #: Changes of the in-plane phase (rad) in the sensitivity table of an in-plane design.
@@ -172,7 +176,9 @@ def _solve(pin: Physical, v0: float, omega, du_z, settings: SolverSettings | Non
     omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
     args: tuple[Any, ...] = pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y)
-    out = solve_points(*args, inplane_on=inplane_on, settings=settings)
+    out = solve_points(*args, profile_exponent=pin.profile_exponent,  # type: ignore[misc]
+                       inplane_on=inplane_on,  # args: the 12 groups before profile_exponent
+                       settings=settings)
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
             "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": out["trusted"]}
@@ -245,7 +251,8 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
            du_x: tuple[float, float] | None = None, phase_x: float | None = None,
            inplane_on: str | None = None, goal: str = "friction",
            velocity_rule: str = "combined", n_omega: int | None = None,
-           n_du_z: int | None = None, n_du_x: int = 9, n_phase: int = 16, starts: int = 8,
+           n_du_z: int | None = None, n_du_x: int = 9, n_phase: int = 16,
+           starts: int | None = None,
            settings: SolverSettings | None = None, du_y: tuple[float, float] | None = None,
            phase_y: float | None = None, n_du_y: int = 4,
            n_phase_y: int = 4) -> DesignResult:
@@ -282,7 +289,27 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     oscillation is the best row (``system.du_y > 0`` where a transverse one wins).  The
     4-D ``map`` stays the one over ``du_x``, ``phase_x`` (only ``du_x = 0`` without
     ``du_x``).
+
+    **Curved contact** (a pin of ``Physical.from_bench(contact=..., contact_model="mdr")``,
+    docs/bench.md): the same normal-oscillation design by the MDR solver, on a smaller map
+    by default (:data:`CURVED_MAP`, :data:`CURVED_STARTS` refinements; ``starts`` default 8
+    otherwise); ``du_z`` is the amplitude of the imposed indentation.  Refused by name what
+    the MDR solver does not take: ``du_x``, ``du_y``, ``goal="drive"`` and a contact
+    dashpot (``c_xc > 0``).
     """
+    if pin.curved:
+        for name, given in (("du_x", du_x is not None), ("du_y", du_y is not None),
+                            ("goal='drive'", goal != "friction"),
+                            ("a contact dashpot c_xc > 0", pin.c_xc > 0.0)):
+            if given:
+                raise ValueError(f"a curved MDR pin (profile_exponent = "
+                                 f"{pin.profile_exponent!r}) is designed by the MDR solver, "
+                                 f"which does not take {name} yet: design the normal "
+                                 f"oscillation alone")
+        n_omega = CURVED_MAP[0] if n_omega is None else n_omega
+        n_du_z = CURVED_MAP[1] if n_du_z is None else n_du_z
+        starts = CURVED_STARTS if starts is None else starts
+    starts = 8 if starts is None else starts
     if du_y is None and pin.du_y > 0.0:
         raise ValueError(f"the pin has a transverse oscillation (du_y = {pin.du_y!r} m), "
                          f"which the design would not use: give du_y=(low, high) to design "

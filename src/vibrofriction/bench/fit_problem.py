@@ -14,18 +14,31 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
+from ..contact import Cone, FlatPunch, Material, PowerLaw, Sphere
 from ..params import Physical
 from ..solver import SolverSettings, solve_points
 from ..solver.sensitivity import SENSITIVE, sensitivities
 
-__all__ = ["FITTABLE", "predict_cof", "synthetic_measurements"]
+__all__ = ["CONTACT_FITTABLE", "FITTABLE", "predict_cof", "synthetic_measurements"]
 
 #: The step in ``ln`` of the central differences of the map ``ln -> points`` (cheap, no
 #: solver) in :meth:`_Problem.jacobian`, and of the solver's own where it has no sensitivity.
 MAP_STEP = 1e-6
 SOLVER_STEP = 1e-5
+#: The step in ``ln`` of the solver's central differences at a curved (MDR) row: its
+#: value moves in steps up to its error bar (``tol_trusted``, 1e-5 of ``mu_ratio``) where
+#: the rows of springs it extrapolates from change, so the step is large enough that
+#: ``d mu`` over it (~2e-3 for a slope of 0.2) is a hundred times such a step.
+MDR_STEP = 1e-2
 #: The fields of :class:`Physical` that can be fitted.
 FITTABLE = ("mu0", "mass", "k_x", "k_xc", "k_zc", "u_z0", "c_x", "c_xc")
+#: The parameters of a contact geometry (``fit(..., contact=...)``) that can be fitted:
+#: the radius of a :class:`~vibrofriction.contact.Sphere` or
+#: :class:`~vibrofriction.contact.FlatPunch`, and the effective modulus ``E*`` of the pair
+#: (both bodies' moduli scaled together, Poisson's ratios kept: ``G*`` follows).
+CONTACT_FITTABLE = ("radius", "E_star")
+#: The fields of :class:`Physical` that a contact geometry sets at the load.
+CONTACT_FIELDS = ("k_zc", "k_xc", "u_z0")
 #: The global stage compares the model with every other row of a table this long or
 #: longer: an evaluation costs half, so it runs twice the generations for the same
 #: time, and more generations find the narrow valleys more often.
@@ -38,7 +51,8 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
                 phase_y: NDArray | float = 0.0) -> NDArray[np.float64]:
     """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
     phase_y)`` (eq. 25; the in-plane oscillation on ``system.inplane_on``, ``du_y > 0``
-    by the 2-D solver with the pin's ``k_y``, ``c_y``; ``system``'s own ``du_z``,
+    by the 2-D solver with the pin's ``k_y``, ``c_y``; a curved ``system`` by the MDR
+    solver, docs/contact_geometry.md; ``system``'s own ``du_z``,
     ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y`` are not used), ``nan`` where
     the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count of
     untrusted points is ``np.isnan(...).sum()``."""
@@ -54,6 +68,7 @@ def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
     for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
         if groups[i] is None:
             groups[i] = groups[twin]
+    groups.append(system.profile_exponent)  # the 13th argument of solve_points
     return tuple(np.broadcast_arrays(*(np.asarray(g, dtype=float) for g in groups)))
 
 
@@ -92,6 +107,108 @@ def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
     return pd.concat(rows, ignore_index=True)
 
 
+Contact = FlatPunch | Sphere | Cone | PowerLaw
+
+
+def contact_value(contact: Contact, name: str) -> float:
+    """The value of the contact parameter ``name`` (:data:`CONTACT_FITTABLE`) of
+    ``contact``: its ``radius`` (m) or its pair's ``E*`` (Pa)."""
+    if name == "E_star":
+        return float(contact.e_star)
+    if name == "radius" and isinstance(contact, Sphere | FlatPunch):
+        return float(contact.radius)
+    raise ValueError(f"{name} is not a parameter of a {type(contact).__name__} that the fit "
+                     f"takes: {_contact_names(contact)}")
+
+
+def _contact_names(contact: Contact) -> str:
+    names = ["radius", "E_star"] if isinstance(contact, Sphere | FlatPunch) else ["E_star"]
+    return f"a {type(contact).__name__}'s fittable parameters are {names}"
+
+
+def contact_fields(contact: Contact, load: float, curved: bool,
+                   radius: float | None = None, E_star: float | None = None
+                   ) -> dict[str, float]:
+    """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
+    ``radius`` and its pair's ``E*`` replaced where given (both moduli scaled together,
+    Poisson's ratios kept): as :meth:`Physical.from_bench` builds them, the MDR contact
+    (``curved``: the mean indentation ``d0`` with ``F(d0) = load``, ``k_zc = 2 E* a0``,
+    ``k_xc = 2 G*_mdr a0``) or the linearised one (the tangent stiffnesses at the load,
+    ``u_z0 = load/k_zc``)."""
+    changes: dict[str, Any] = {}
+    if radius is not None:
+        changes["radius"] = radius
+    if E_star is not None:
+        scale = E_star / contact.e_star
+        changes.update(pin=Material(contact.pin.E * scale, contact.pin.nu),
+                       counterface=Material(contact.counterface.E * scale,
+                                            contact.counterface.nu))
+    c = dataclasses.replace(contact, **changes) if changes else contact
+    if curved:
+        d0 = float(c.indentation(load))
+        return {"k_zc": float(c.normal_stiffness(d0)), "k_xc": float(c.tangential_stiffness(d0)),
+                "u_z0": d0}
+    k_zc, k_xc = c.stiffness(load)
+    return {"k_zc": float(k_zc), "k_xc": float(k_xc), "u_z0": load / float(k_zc)}
+
+
+def contact_exponents(contact: Contact, name: str, load: float, curved: bool
+                      ) -> dict[str, float]:
+    """``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS` (constants for the
+    power-law tips: a sphere's ``k_zc`` goes as ``R^(1/3) E*^(2/3)``, its ``u_z0`` as the
+    inverse), from two evaluations of :func:`contact_fields`."""
+    x = contact_value(contact, name)
+    a = contact_fields(contact, load, curved, **{name: x})
+    b = contact_fields(contact, load, curved, **{name: 2.0 * x})
+    return {k: math.log(b[k] / a[k]) / math.log(2.0) for k in CONTACT_FIELDS}
+
+
+def _check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
+    """ValueError, naming the parameters, for a fit of a contact geometry it cannot make:
+    a contact parameter without ``contact``, the contact's fields next to its parameters,
+    ``radius`` and ``E_star`` together (not identifiable: docs/bench.md), a curved guess's
+    contact fields without its geometry, or a guess not built from ``contact``."""
+    geo = [n for n in free if n in CONTACT_FITTABLE]
+    fields = [n for n in free if n in CONTACT_FIELDS]
+    if contact is None:
+        if geo:
+            raise ValueError(f"free names {geo}, parameters of a contact geometry: pass "
+                             "contact=Sphere(...) (the geometry the guess was built from)")
+        if guess.curved and fields:
+            raise ValueError(f"free names {fields}, but the guess is a curved MDR contact "
+                             f"(profile_exponent = {guess.profile_exponent!r}) whose k_zc, "
+                             "k_xc and u_z0 follow from its geometry at the load: pass "
+                             "contact=Sphere(...) and fit radius or E_star")
+        return
+    if not isinstance(contact, Sphere | FlatPunch | Cone | PowerLaw):
+        raise TypeError(f"contact must be a FlatPunch, Sphere, Cone or PowerLaw, got "
+                        f"{type(contact).__name__}")
+    for n in geo:
+        contact_value(contact, n)  # refuses radius of a cone or a power law
+    if fields:
+        raise ValueError(f"free names {fields}, but with contact= the contact's k_zc, k_xc and "
+                         f"u_z0 follow from its geometry at the load: fit "
+                         f"{' or '.join(CONTACT_FITTABLE)} instead")
+    if len(geo) > 1:
+        raise ValueError("free names both radius and E_star, which the data cannot tell "
+                         "apart: the contact enters the model only through k_zc = 2 E* a0 at "
+                         "the load (k_xc/k_zc and k_zc u_z0 are fixed by Poisson's ratios and "
+                         "the load), and a sphere's k_zc goes as (E*^2 R)^(1/3): fit one of "
+                         "them with the other known (docs/bench.md)")
+    if guess.curved and float(contact.exponent) != guess.profile_exponent:
+        raise ValueError(f"the guess's profile_exponent {guess.profile_exponent!r} is not the "
+                         f"contact's exponent {float(contact.exponent)!r}")
+    built = contact_fields(contact, guess.F_N0, guess.curved)
+    off = {k: v for k, v in built.items()
+           if not math.isclose(v, getattr(guess, k), rel_tol=1e-6)}
+    if off:
+        shown = ", ".join(f"{k} {getattr(guess, k):.6g} (contact: {v:.6g})"
+                          for k, v in off.items())
+        raise ValueError(f"the guess was not built from this contact at its load "
+                         f"{guess.F_N0:.6g} N: {shown}; build it with Physical.from_bench("
+                         f"contact=..., contact_model={'mdr' if guess.curved else 'linearised'!r})")
+
+
 @dataclass
 class _Problem:
     """The free parameters in ``ln`` and how they map onto a :class:`Physical`."""
@@ -108,6 +225,8 @@ class _Problem:
     #: the local fits' Jacobian: ``"exact"`` (:meth:`jacobian`) or ``"differences"``
     #: (lmfit's forward differences of the residuals)
     jacobian_kind: str = "exact"
+    #: the contact geometry the guess was built from (its parameters may be free)
+    contact: Any = None
     #: the last solve of :meth:`evaluate` (``ln`` as bytes, the columns): lmfit asks for the
     #: Jacobian where it has just evaluated the residuals
     _last: tuple | None = field(default=None, init=False, repr=False, compare=False)
@@ -115,8 +234,18 @@ class _Problem:
     def values(self, ln: NDArray[np.float64]) -> dict[str, Any]:
         """The fields of the system at ``ln`` of the free parameters, constraints applied."""
         values = dataclasses.asdict(self.guess)
-        values.update({n: math.exp(x) for n, x in zip(self.free, ln, strict=True)})
+        geo = {}
+        for n, x in zip(self.free, ln, strict=True):
+            if n in CONTACT_FITTABLE:
+                geo[n] = math.exp(x)
+            else:
+                values[n] = math.exp(x)
         g = self.guess
+        if geo:
+            try:
+                values.update(contact_fields(self.contact, g.F_N0, g.curved, **geo))
+            except (ValueError, OverflowError, ZeroDivisionError):
+                values["k_zc"] = math.nan  # outside the domain
         if self.natural_frequency:
             wn2 = g.k_x / g.mass
             if "mass" in self.free:
@@ -134,6 +263,25 @@ class _Problem:
 
     def system(self, ln: NDArray[np.float64]) -> Physical:
         return Physical(**self.values(ln))
+
+    def start(self, name: str) -> float:
+        """The guess's value of the free parameter ``name`` (a field of the guess or a
+        parameter of the contact)."""
+        if name in CONTACT_FITTABLE:
+            return contact_value(self.contact, name)
+        return float(getattr(self.guess, name))
+
+    def named(self, ln: NDArray[np.float64]) -> dict[str, float]:
+        """The fields of the system at ``ln`` and the free contact parameters' values."""
+        values = self.values(ln)
+        values.update({n: math.exp(x) for n, x in zip(self.free, ln, strict=True)
+                       if n in CONTACT_FITTABLE})
+        return values
+
+    @property
+    def curved(self) -> bool:
+        """A curved MDR contact: solved by the MDR solver, differenced (no sensitivities)."""
+        return self.guess.curved
 
     def penalty(self) -> NDArray[np.float64]:
         """The residual of a row the model cannot evaluate: twice the largest honest one,
@@ -202,6 +350,12 @@ class _Problem:
         points = self.points(ln)
         if points is None:
             return out
+        if self.curved:  # the MDR solver has no sensitivities: its differences, every row
+            rows = np.flatnonzero(self._solve(ln, points)["trusted"])
+            if rows.size:
+                for c, j in enumerate(cols_j):
+                    out[rows, c] = self._row_differences(ln, int(j), rows)
+            return out
         mu0 = points[0]
         # d (mu0, alpha, ..., phase_x) / d ln_j of every row
         rates: list[list[NDArray[np.float64]] | None] = []
@@ -247,11 +401,13 @@ class _Problem:
     def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]
                          ) -> NDArray[np.float64]:
         """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
-        (:data:`SOLVER_STEP`); 0 where a side is penalised."""
+        (:data:`SOLVER_STEP`; :data:`MDR_STEP` for a curved contact); 0 where a side is
+        penalised."""
         sides = []
+        step = MDR_STEP if self.curved else SOLVER_STEP
         for sign in (1.0, -1.0):
             x = ln.copy()
-            x[j] += sign * SOLVER_STEP
+            x[j] += sign * step
             p = self.points(x)
             if p is None:
                 return np.zeros(rows.size)
@@ -260,7 +416,7 @@ class _Problem:
             cof = p[0] * np.where(trusted, mu, np.nan)
             sides.append(cof)
         scale = self._scale()
-        d = (sides[0] - sides[1]) / (2.0 * SOLVER_STEP) / (
+        d = (sides[0] - sides[1]) / (2.0 * step) / (
             scale[rows] if isinstance(scale, np.ndarray) else scale)
         return np.where(np.isfinite(d), d, 0.0)
 
@@ -336,10 +492,10 @@ def _in_domain(values: dict[str, float]) -> bool:
 def _bounds(problem: _Problem, span: float) -> list[tuple[float, float]]:
     out = []
     for n in problem.free:
-        x = math.log(getattr(problem.guess, n)) if getattr(problem.guess, n) > 0 else None
+        x = math.log(problem.start(n)) if problem.start(n) > 0 else None
         if x is None:
             raise ValueError(f"{n} of the guess must be > 0 to be fitted, got "
-                             f"{getattr(problem.guess, n)!r}")
+                             f"{problem.start(n)!r}")
         out.append((x - math.log(span), x + math.log(span)))
     return out
 
@@ -356,9 +512,10 @@ def _free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: 
     """``free`` validated (a field a constraint holds is refused, naming the keyword that
     releases it), and the fields that follow a free one by a constraint (``name:
     (source, +-1)``, ``ln name = +-ln source + const``)."""
-    unknown = [n for n in free if n not in FITTABLE]
+    unknown = [n for n in free if n not in FITTABLE + CONTACT_FITTABLE]
     if unknown or not free:
-        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)}, "
+        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)} or "
+                         f"parameters of the contact among {list(CONTACT_FITTABLE)}, "
                          f"got {list(free)}")
     if len(set(free)) != len(free):
         raise ValueError(f"free names a parameter twice: {list(free)}")

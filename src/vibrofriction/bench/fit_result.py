@@ -206,7 +206,9 @@ def _constraint_lines(res: FitResult) -> list[str]:
     text = {
         "natural_frequency": f"natural_frequency: k_x = mass (2 pi x "
                              f"{g.natural_frequency() / (2 * math.pi):.6g} Hz)^2",
-        "normal_load": f"normal_load: k_zc u_z0 = F_N0 = {g.F_N0:.6g} N",
+        "normal_load": (f"normal_load: F(u_z0) = k_zc u_z0 n/(n + 1) = F_N0 = {g.F_N0:.6g} N "
+                        f"(a curved contact, n = {g.profile_exponent:g})" if g.curved else
+                        f"normal_load: k_zc u_z0 = F_N0 = {g.F_N0:.6g} N"),
         "quality_factor": f"quality_factor: c_x = 2 zeta sqrt(k_x mass), zeta = "
                           f"{g.zeta:.4g} (Q = {g.quality_factor:.4g})",
     }
@@ -216,8 +218,12 @@ def _constraint_lines(res: FitResult) -> list[str]:
         if not on:
             continue
         pair = follows.get(name)
+        geometry = [n for n in ("radius", "E_star") if n in free]
         if pair is None:
             how = "c_x follows mass and k_x"
+        elif name == "normal_load" and geometry:
+            how = (f"k_zc, k_xc and u_z0 follow {geometry[0]}: the contact geometry at the "
+                   f"load")
         else:
             moving = [n for n in pair if n in free]
             how = (f"{pair[1] if moving[0] == pair[0] else pair[0]} follows {moving[0]}"

@@ -10,7 +10,6 @@ import lmfit
 import numpy as np
 from numpy.typing import NDArray
 
-from ..params import Physical
 from .fit_problem import _Problem
 from .fit_search import _least_squares, _ln, _local_fit, _Stages
 
@@ -160,20 +159,21 @@ def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
     return float(d), state["lower"], state["nfev"]
 
 
-def _physical_params(out, free: tuple[str, ...], system: Physical,
+def _physical_params(out, free: tuple[str, ...], values: dict[str, float],
                      tied: dict[str, tuple[str, float]],
                      dists: dict[str, tuple[float, float]]):
-    """The fitted parameters in physical units with their 95.4 % profile intervals and
-    ``stderr`` half the interval's longer side; the correlations of the least-squares
-    covariance.  A parameter tied to a free one by a constraint, ``ln x = +-ln y +
+    """The fitted parameters in physical units (``values``: the system's fields and the
+    free contact parameters) with their 95.4 % profile intervals and ``stderr`` half the
+    interval's longer side; the correlations of the least-squares covariance.  A
+    parameter tied to a free one by a constraint or a contact geometry, ``ln x = p ln y +
     const``, gets the mapped interval of its source."""
     params, intervals = lmfit.Parameters(), {}
     for n in [*free, *tied]:
         source, sign = tied.get(n, (n, 1.0))
-        below, above = dists[source]
+        below, above = (abs(sign) * d for d in dists[source])
         if sign < 0:
             below, above = above, below
-        value = getattr(system, n)
+        value = values[n]
         lo = value * math.exp(-below) if math.isfinite(below) else -math.inf
         hi = value * math.exp(above) if math.isfinite(above) else math.inf
         params.add(n, value=value, vary=False)
@@ -233,7 +233,12 @@ def _identifiability(out, problem: _Problem, ln: NDArray, bounds) -> list[str]:
 
 
 def _jacobian(problem: _Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
-    """Central differences of the residuals in ``ln`` (columns: free parameters)."""
+    """Central differences of the residuals in ``ln`` (columns: free parameters); a
+    curved contact's are :meth:`_Problem.jacobian`'s (the MDR solver's value moves in
+    steps of its error bar: a step of 1e-4 would difference those)."""
+    if problem.curved:
+        jac = problem.jacobian(ln)
+        return jac if np.all(np.isfinite(jac)) else None
     cols = []
     for j in range(len(ln)):
         e = np.zeros_like(ln)

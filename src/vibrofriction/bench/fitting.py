@@ -76,10 +76,15 @@ from ..parallel import available_cores, mapper
 from ..params import Physical
 from ..solver import SolverSettings
 from .fit_problem import (
+    CONTACT_FIELDS,
+    CONTACT_FITTABLE,
     FITTABLE,
+    Contact,
     _bounds,
+    _check_contact,
     _free_and_tied,
     _Problem,
+    contact_exponents,
     predict_cof,
     synthetic_measurements,
 )
@@ -88,22 +93,35 @@ from .fit_search import _ln, _local_fit, _search, _Stages
 from .fit_uncertainty import _identifiability, _physical_params, _profile_warnings, _uncertainties
 from .measurements import read_measurements
 
-__all__ = ["FITTABLE", "FitResult", "fit", "predict_cof", "synthetic_measurements"]
+#: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``:
+#: three times faster than the default 1e-5, and its error (``mu0 1e-4`` in the COF) is
+#: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
+CURVED_TOL = 1e-4
+#: The global stage's ``maxiter`` and ``popsize`` without them: a flat punch's, and a
+#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).
+GLOBAL_STAGE = (60, 12)
+CURVED_GLOBAL_STAGE = (20, 8)
+
+__all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "fit", "predict_cof",
+           "synthetic_measurements"]
 
 
 def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tuple[str, ...] = (
         "mu0", "mass", "k_xc", "u_z0"), *, natural_frequency: bool = True,
         normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
-        global_stage: bool = True, maxiter: int = 60, popsize: int = 12, seed: int = 0,
+        global_stage: bool = True, maxiter: int | None = None, popsize: int | None = None,
+        seed: int = 0,
         workers: int = 1, progress: bool = True,
-        settings: SolverSettings | None = None, jacobian: str = "exact") -> FitResult:
+        settings: SolverSettings | None = None, jacobian: str = "exact",
+        contact: Contact | None = None) -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
 
     ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
     path).  ``natural_frequency``, ``normal_load``, ``quality_factor``: the constraints
     (module docstring); a parameter in ``free`` that one of them would hold is refused,
     naming the keyword that releases it.  ``span``: each free parameter is searched
-    within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``,
+    within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``
+    (default :data:`GLOBAL_STAGE`, :data:`CURVED_GLOBAL_STAGE` for a curved contact),
     ``seed``: the global stage (:func:`scipy.optimize.differential_evolution`, on every
     other row of a table of 20 rows or more).  ``workers``: processes for the global
     stage, the local starts and the profiles (``-1``: every core), from the package's one
@@ -113,6 +131,13 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     ``jacobian``: the local least squares' Jacobian, ``"exact"`` (the sensitivities of
     the steady state, :meth:`_Problem.jacobian`; differences of the solver only at the
     rows that have none) or ``"differences"`` (lmfit's differences of the residuals).
+    ``contact``: the geometry the guess was built from (``Physical.from_bench(contact=...,
+    contact_model=...)``, checked): its ``radius`` and its pair's ``E_star``
+    (:data:`CONTACT_FITTABLE`) may then be free, one of them (module docstring, "A curved
+    contact"); ``k_zc``, ``k_xc``, ``u_z0`` follow them at the guess's load.  A curved
+    (MDR) guess is solved by the MDR solver (``tol_trusted`` :data:`CURVED_TOL` unless
+    ``settings`` say otherwise) and differenced (``jacobian="exact"`` takes the solver's
+    differences at every row).
     ``res.extra["stages"]`` says where the time went; ``res.quality`` whether the fit
     describes the data.
     """
@@ -120,14 +145,26 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     data = read_measurements(data)
     free, tied = _free_and_tied(tuple(free), natural_frequency, normal_load, quality_factor,
                                 len(data))
+    _check_contact(guess, contact, free)
+    if guess.curved and settings is None:
+        settings = SolverSettings(tol_trusted=CURVED_TOL)
+    stage = CURVED_GLOBAL_STAGE if guess.curved else GLOBAL_STAGE
+    maxiter = stage[0] if maxiter is None else maxiter
+    popsize = stage[1] if popsize is None else popsize
+    for n in free:
+        if n in CONTACT_FITTABLE:  # k_zc, k_xc, u_z0 follow it: ln y = p ln x + const
+            assert contact is not None  # a contact parameter without contact= is refused
+            for k, p in contact_exponents(contact, n, guess.F_N0, guess.curved).items():
+                if k in CONTACT_FIELDS and abs(p) > 1e-9:
+                    tied[k] = (n, p)
     if jacobian not in ("exact", "differences"):
         raise ValueError(f"jacobian must be 'exact' or 'differences', got {jacobian!r}")
     problem = _Problem(guess, free, natural_frequency, normal_load, quality_factor, data,
-                       settings, jacobian_kind=jacobian)
+                       settings, jacobian_kind=jacobian, contact=contact)
     bounds = _bounds(problem, span)
     if "mu0" in free:
         problem.mu0_max = math.exp(bounds[free.index("mu0")][1])
-    x0 = np.array([math.log(getattr(guess, n)) for n in free])
+    x0 = np.array([math.log(problem.start(n)) for n in free])
     workers = workers if workers >= 1 else available_cores()
     stages = _Stages()
     with mapper(workers) as map_:
@@ -155,12 +192,13 @@ def _result(problem: _Problem, out, bounds, tied, dists, lower) -> FitResult:
     quality, p_value = _judge(problem, float(out.chisqr), lower, outside + untrusted)
     extra: dict[str, Any] = {}
     system = problem.system(ln)
-    result_params, intervals = _physical_params(out, free, system, tied, dists)
+    named = problem.named(ln)
+    result_params, intervals = _physical_params(out, free, named, tied, dists)
     extra["at_lowest_minimum"] = lower is None
     if quality == "poor":
         extra["profile_intervals"] = intervals
         search = {n: (ln[j] - bounds[j][0], bounds[j][1] - ln[j]) for j, n in enumerate(free)}
-        result_params, intervals = _physical_params(out, free, system, tied, search)
+        result_params, intervals = _physical_params(out, free, named, tied, search)
     warnings = _identifiability(out, problem, ln, bounds)
     warnings += _profile_warnings(free, dists, tied, lower)
     return FitResult(params=result_params, system=system, data=problem.data, free=free,
