@@ -18,7 +18,7 @@ browser:  ## the distribution's headless Chromium for the explorer's browser tes
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
 
 $(VENV)/.docs: $(BIN)/vibrofriction pyproject.toml
-	$(BIN)/pip install --quiet -e '.[docs]'
+	$(BIN)/pip install --quiet --group docs  # PEP 735 group, as dev
 	touch $@
 
 docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as errors (examples run)
