@@ -321,6 +321,127 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
     return ri
 
 
+# the running sums of the row's bookkeeping (:func:`_switch`): the stuck springs' elongations
+# relative to the common displacement ``U`` (``e_i = eh_i + U``), the gaps of the springs
+# slipping forwards and backwards, the stuck and the slipping springs' areas
+S_EH, S_GP, S_GN, S_AST, S_ASL = range(5)
+
+
+@jit
+def _tree_set(tree, P, i, v):
+    """Set leaf ``i`` of the max-tree ``tree`` (leaves at ``P + i``) to ``v``."""
+    j = P + i
+    tree[j] = v
+    j >>= 1
+    while j >= 1:
+        lv = tree[2 * j]
+        rv = tree[2 * j + 1]
+        tree[j] = lv if lv > rv else rv
+        j >>= 1
+
+
+@jit
+def _tree_collect(tree, P, thr, stack, out, n, skip):
+    """Append to ``out`` (from ``n``) the leaves of ``tree`` at or above ``thr``, except
+    where ``skip``; returns the new count. Visits only the branches whose maximum is at or
+    above ``thr``: O(found log M)."""
+    if tree[1] < thr:
+        return n
+    top = 0
+    stack[0] = 1
+    while top >= 0:
+        j = stack[top]
+        top -= 1
+        if j >= P:
+            if not skip[j - P]:
+                out[n] = j - P
+                n += 1
+            continue
+        if tree[2 * j] >= thr:
+            top += 1
+            stack[top] = 2 * j
+        if tree[2 * j + 1] >= thr:
+            top += 1
+            stack[top] = 2 * j + 1
+    return n
+
+
+@jit
+def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+    """Move spring ``i`` to the state ``new`` (a stuck one with ``eh_i = eh_new``), keeping
+    the members of each state, the running sums and the stuck springs' max-trees of
+    ``w g_i +- k eh_i`` up to date: O(log M)."""
+    old = st[i]
+    if old == STICK:
+        sums[S_EH] -= eh[i]
+        sums[S_AST] -= area[i]
+        _tree_set(tp, P, i, -np.inf)
+        _tree_set(tm, P, i, -np.inf)
+    elif old == SLIP_POS:
+        sums[S_GP] -= g[i]
+        sums[S_ASL] -= area[i]
+    elif old == SLIP_NEG:
+        sums[S_GN] -= g[i]
+        sums[S_ASL] -= area[i]
+    p = pos[i]
+    last = memb[old, cnt[old] - 1]
+    memb[old, p] = last
+    pos[last] = p
+    cnt[old] -= 1
+    memb[new, cnt[new]] = i
+    pos[i] = cnt[new]
+    cnt[new] += 1
+    st[i] = new
+    eh[i] = 0.0
+    if new == STICK:
+        eh[i] = eh_new
+        sums[S_EH] += eh_new
+        sums[S_AST] += area[i]
+        _tree_set(tp, P, i, w * g[i] + k * eh_new)
+        _tree_set(tm, P, i, w * g[i] - k * eh_new)
+    elif new == SLIP_POS:
+        sums[S_GP] += g[i]
+        sums[S_ASL] += area[i]
+    elif new == SLIP_NEG:
+        sums[S_GN] += g[i]
+        sums[S_ASL] += area[i]
+
+
+@jit
+def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+    """The bookkeeping of :func:`_switch` from scratch (``U = 0``, ``eh = e``): at every
+    section, so that the running sums carry no round-off from period to period."""
+    cnt[:] = 0
+    sums[:] = 0.0
+    tp[:] = -np.inf
+    tm[:] = -np.inf
+    for i in range(g.size):
+        s = st[i]
+        memb[s, cnt[s]] = i
+        pos[i] = cnt[s]
+        cnt[s] += 1
+        eh[i] = 0.0
+        if s == STICK:
+            eh[i] = e[i]
+            sums[S_EH] += e[i]
+            sums[S_AST] += area[i]
+            tp[P + i] = w * g[i] + k * e[i]
+            tm[P + i] = w * g[i] - k * e[i]
+        elif s == SLIP_POS:
+            sums[S_GP] += g[i]
+            sums[S_ASL] += area[i]
+        elif s == SLIP_NEG:
+            sums[S_GN] += g[i]
+            sums[S_ASL] += area[i]
+    for j in range(P - 1, 0, -1):
+        lv = tp[2 * j]
+        rv = tp[2 * j + 1]
+        tp[j] = lv if lv > rv else rv
+        lv = tm[2 * j]
+        rv = tm[2 * j + 1]
+        tm[j] = lv if lv > rv else rv
+
+
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
                 state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None):
@@ -355,11 +476,11 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     k = (beta - alpha) * dxi
     nint = normal_integral_row(a, g, w, tau_off)
     tol_c = 1e-11 * w * (2.0 + a)
+    tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
     pf = np.zeros(max_periods)
     pn = np.full(max_periods, nint)
     frac = np.zeros(3)
     viol = -np.inf
-    fresh = np.zeros(M, dtype=np.bool_)
     gprev = np.zeros(4)
     groot = np.zeros(4)
     gon = np.zeros(4, dtype=np.bool_)
@@ -372,81 +493,117 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     events = 0
     ri = 0  # the next sample to record
     acc = np.zeros(N_REC - R_IF)  # the recorded integrals since the start
+    # the bookkeeping, O(log M) an event instead of O(M) a segment: the members of each
+    # state, the running sums (S_*), max-trees of the stuck springs' constants w g_i +- k
+    # eh_i (e_i = eh_i + U, U the common displacement since the section), the contact
+    # events sorted by phase, the springs switched at the last event (``fl``)
+    P = 1
+    while P < M:
+        P *= 2
+    depth = 1
+    while (1 << depth) < P:
+        depth += 1
+    stack = np.zeros(2 * depth + 4, dtype=np.int64)
+    tp = np.full(2 * P, -np.inf)
+    tm = np.full(2 * P, -np.inf)
+    memb = np.zeros((4, M), dtype=np.int64)
+    cnt = np.zeros(4, dtype=np.int64)
+    pos = np.zeros(M, dtype=np.int64)
+    sums = np.zeros(5)
+    eh = np.zeros(M)
+    fl = np.zeros(M, dtype=np.int64)
+    buf = np.zeros(M, dtype=np.int64)
+    taken = np.zeros(M, dtype=np.bool_)
+    e_cur = np.zeros(M)
+    nl = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            nl += 1
+    ev_ph = np.zeros(2 * nl)
+    ev_i = np.zeros(2 * nl, dtype=np.int64)
+    ev_on = np.zeros(2 * nl, dtype=np.bool_)
+    j = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            ev_ph[j] = tau_off[i]
+            ev_i[j] = i
+            ev_ph[j + 1] = tau_on[i]
+            ev_i[j + 1] = i
+            ev_on[j + 1] = True
+            j += 2
+    order = np.argsort(ev_ph, kind="mergesort")
+    ev_ph = ev_ph[order]
+    ev_i = ev_i[order]
+    ev_on = ev_on[order]
+    nev = 2 * nl
+    tol_ev = 1e-13 * TWO_PI
     for period in range(max_periods):
         y_old = y
         yd_old = yd
         e_old[:] = e
         st_old[:] = st
+        _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+        U = 0.0
+        nf = 0
+        ptr = 0
         theta = 0.0
         iy = 0.0
         fr0 = 0.0
         fr1 = 0.0
         fr2 = 0.0
         events = 0
-        fresh[:] = False
         segments = 0
         while theta < TWO_PI:
             segments += 1
             if segments > 200 * M + 1000:  # no progress: report, do not hang
                 stuck_loop = True
                 break
-            K = 0.0
-            E0 = 0.0
-            Sw = 0.0
-            Swg = 0.0
-            a_st = 0.0
-            a_sl = 0.0
-            cp = -np.inf
-            cm = -np.inf
-            gon[:] = False
-            for i in range(M):
-                s = st[i]
-                if s == STICK:
-                    K += k
-                    E0 += k * e[i]
-                    a_st += area[i]
-                    gon[0] = True
-                    gon[1] = True
-                    cp = max(cp, w * g[i] + k * e[i])
-                    cm = max(cm, w * g[i] - k * e[i])
-                elif s == SLIP_POS:
-                    Sw += w
-                    Swg += w * g[i]
-                    a_sl += area[i]
-                    gon[2] = True
-                elif s == SLIP_NEG:
-                    Sw -= w
-                    Swg -= w * g[i]
-                    a_sl += area[i]
-                    gon[3] = True
+            nst = cnt[STICK]
+            K = k * nst
+            E0 = k * (sums[S_EH] + nst * U)
+            Sw = w * (cnt[SLIP_POS] - cnt[SLIP_NEG])
+            Swg = w * (sums[S_GP] - sums[S_GN])
+            a_st = sums[S_AST]
+            a_sl = sums[S_ASL]
+            gon[0] = nst > 0
+            gon[1] = nst > 0
+            gon[2] = cnt[SLIP_POS] > 0
+            gon[3] = cnt[SLIP_NEG] > 0
+            cph = tp[1]  # the largest constants, relative to U
+            cmh = tm[1]
+            cp = cph + k * U if nst > 0 else -np.inf
+            cm = cmh - k * U if nst > 0 else -np.inf
             # a group that has just switched (its event function at 0 by construction)
             gfresh[:] = False
-            for i in range(M):
-                if fresh[i]:
-                    s = st[i]
-                    if s == STICK:
-                        if w * g[i] + k * e[i] >= cp - tol_c:
-                            gfresh[0] = True
-                        if w * g[i] - k * e[i] >= cm - tol_c:
-                            gfresh[1] = True
-                    elif s == SLIP_POS:
-                        gfresh[2] = True
-                    elif s == SLIP_NEG:
-                        gfresh[3] = True
+            for q in range(nf):
+                i = fl[q]
+                s = st[i]
+                if s == STICK:
+                    if w * g[i] + k * eh[i] >= cph - tol_c:
+                        gfresh[0] = True
+                    if w * g[i] - k * eh[i] >= cmh - tol_c:
+                        gfresh[1] = True
+                elif s == SLIP_POS:
+                    gfresh[2] = True
+                elif s == SLIP_NEG:
+                    gfresh[3] = True
             c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
             dc = derivative(c, m)
             cs = c[6] != 0.0 or c[7] != 0.0
-            # the known contact events and the section bound the segment
+            # the known contact events and the section bound the segment: the next
+            # contact event after theta that applies (a touch-down of a spring out of
+            # contact, a lift-off of one in contact; one that does not apply now never
+            # will in this period)
+            while ptr < nev:
+                i = ev_i[ptr]
+                if ev_ph[ptr] > theta and (st[i] == OFF) == ev_on[ptr]:
+                    break
+                ptr += 1
             T = TWO_PI - theta
-            for i in range(M):
-                if tau_off[i] < 0.0:
-                    continue
-                tt = tau_on[i] if st[i] == OFF else tau_off[i]
-                if tt > theta and tt - theta < T:
-                    T = tt - theta
+            if ptr < nev and ev_ph[ptr] - theta < T:
+                T = ev_ph[ptr] - theta
             # values at the start; a group at or past its event (not just switched)
             # switches now
-            tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
             tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
             immediate = False
             for j in range(4):
@@ -486,15 +643,15 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                             # down stuck, slipping again 0.002 later): a positive value
                             # nearer the start brackets that root
                             tl = tol_s if j < 2 else tol_v
-                            tp = tb
+                            tp_ = tb
                             for _ in range(12):
-                                tp *= 0.5
-                                bp = basis_values(m, tp, cs, False)
+                                tp_ *= 0.5
+                                bp = basis_values(m, tp_, cs, False)
                                 fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
-                                                  dot(dc, bp), y, tp, theta + tp)
+                                                  dot(dc, bp), y, tp_, theta + tp_)
                                 if fp > tl:
                                     fa = fp
-                                    tq = tp
+                                    tq = tp_
                                     break
                         if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
                             groot[j] = 0.0  # at its event within round-off, and leaving
@@ -512,9 +669,11 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
                         t_ev = best
                     ta = tb
             if rec is not None:
+                for i in range(M):
+                    e_cur[i] = eh[i] + U if st[i] == STICK else 0.0
                 ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
-                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e, y,
-                                     hc, hs)
+                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e_cur,
+                                     y, hc, hs)
             # advance to t_ev
             b = basis_values(m, t_ev, cs, False)
             y1 = dot(c, b)
@@ -524,62 +683,75 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             fr1 += a_sl * t_ev
             fr2 += (1.0 - a_st - a_sl) * t_ev
             tau = theta + t_ev
-            u = y1 - y + V * t_ev
-            fresh[:] = False
+            U += y1 - y + V * t_ev  # the stuck springs' elongations follow
+            nf = 0
             if scanned:
-                # the group(s) whose refined root is t_ev switch as a whole
-                for i in range(M):
-                    s = st[i]
-                    if s == OFF:
-                        continue
-                    n = w * (1.0 + a * math.cos(tau) - g[i])
-                    if s == STICK:
-                        sw = 0
-                        if groot[0] <= t_ev and w * g[i] + k * e[i] >= cp - tol_c:
-                            sw = SLIP_POS
-                        elif groot[1] <= t_ev and w * g[i] - k * e[i] >= cm - tol_c:
-                            sw = SLIP_NEG
-                        e[i] = e[i] + u
-                        if sw != 0:
-                            st[i] = sw
-                            e[i] = 0.0
-                            fresh[i] = True
-                            events += 1
-                    elif (s == SLIP_POS and groot[2] <= t_ev) or \
-                            (s == SLIP_NEG and groot[3] <= t_ev):
-                        sgn = 1.0 if s == SLIP_POS else -1.0
-                        st[i] = STICK
-                        e[i] = sgn * max(n, 0.0) / k
-                        fresh[i] = True
+                # the group(s) whose refined root is t_ev switch as a whole: collect them
+                # all first (the stuck cluster at the largest constant, towards positive
+                # slip before negative; every spring slipping one way), then switch
+                nb = 0
+                if groot[0] <= t_ev:
+                    nb = _tree_collect(tp, P, cph - tol_c, stack, buf, nb, taken)
+                n0 = nb
+                for q in range(n0):
+                    taken[buf[q]] = True
+                if groot[1] <= t_ev:
+                    nb = _tree_collect(tm, P, cmh - tol_c, stack, buf, nb, taken)
+                for q in range(n0):
+                    taken[buf[q]] = False
+                n1 = nb
+                if groot[2] <= t_ev:
+                    for q in range(cnt[SLIP_POS]):
+                        buf[nb] = memb[SLIP_POS, q]
+                        nb += 1
+                n2 = nb
+                if groot[3] <= t_ev:
+                    for q in range(cnt[SLIP_NEG]):
+                        buf[nb] = memb[SLIP_NEG, q]
+                        nb += 1
+                for q in range(nb):
+                    i = buf[q]
+                    if q < n0:
+                        _switch(i, SLIP_POS, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                                g, w, k, area)
+                    elif q < n1:
+                        _switch(i, SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                                g, w, k, area)
+                    else:
+                        n = w * (1.0 + a * math.cos(tau) - g[i])
+                        sgn = 1.0 if q < n2 else -1.0
+                        _switch(i, STICK, sgn * max(n, 0.0) / k - U, st, eh, memb, cnt,
+                                pos, sums, tp, tm, P, g, w, k, area)
+                    fl[nf] = i
+                    nf += 1
+                    events += 1
+            elif t_ev < TWO_PI - theta:
+                q = ptr
+                while q < nev and ev_ph[q] <= tau + tol_ev:
+                    i = ev_i[q]
+                    if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == OFF) == ev_on[q]:
+                        if ev_on[q]:
+                            rate = -w * a * math.sin(tau)
+                            xd = yd1 + V
+                            if k * abs(xd) <= rate:
+                                _switch(i, STICK, -U, st, eh, memb, cnt, pos, sums, tp, tm,
+                                        P, g, w, k, area)
+                            else:
+                                _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
+                                        memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+                        else:
+                            _switch(i, OFF, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                                    g, w, k, area)
+                        fl[nf] = i
+                        nf += 1
                         events += 1
-            else:
-                for i in range(M):
-                    if st[i] == STICK:
-                        e[i] = e[i] + u
-                if t_ev < TWO_PI - theta:
-                    for i in range(M):
-                        if tau_off[i] < 0.0:
-                            continue
-                        if st[i] == OFF:
-                            if abs(tau_on[i] - tau) <= 1e-13 * TWO_PI:
-                                rate = -w * a * math.sin(tau)
-                                xd = yd1 + V
-                                if k * abs(xd) <= rate:
-                                    st[i] = STICK
-                                else:
-                                    st[i] = SLIP_POS if xd > 0.0 else SLIP_NEG
-                                e[i] = 0.0
-                                fresh[i] = True
-                                events += 1
-                        elif abs(tau_off[i] - tau) <= 1e-13 * TWO_PI:
-                            st[i] = OFF
-                            e[i] = 0.0
-                            fresh[i] = True
-                            events += 1
+                    q += 1
             theta = tau if t_ev < TWO_PI - theta else TWO_PI
             y = y1
             yd = yd1
         periods = period + 1
+        for i in range(M):  # the section's elongations
+            e[i] = eh[i] + U if st[i] == STICK else 0.0
         if stuck_loop:
             break
         pf[period] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
