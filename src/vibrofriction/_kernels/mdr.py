@@ -57,7 +57,7 @@ import math
 
 import numpy as np
 
-from .basis import basis_values, derivative, dot, initial_pair, integral, make_mode
+from .basis import EXP, basis_values, derivative, dot, initial_pair, integral, make_mode
 from .jit import jit
 from .phases import _periodic_response
 
@@ -136,25 +136,55 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
 
 
 @jit
-def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, tau):
+def _integral_b(c, m, t, b):
+    """:func:`.basis.integral` of ``c`` over ``[0, t]`` from the basis values ``b`` at
+    ``t`` (:func:`.basis.basis_values`, ``C, S`` included where ``c`` has them): the same
+    formulas, without evaluating the basis again."""
+    ct = b[2]
+    st = b[3]
+    v = c[0] * t + 0.5 * c[1] * t * t + c[2] * st + c[3] * (1.0 - ct)
+    cs = c[6] != 0.0 or c[7] != 0.0
+    if c[4] != 0.0 or c[5] != 0.0 or cs:
+        if m[0] == EXP:
+            i1 = math.expm1(m[4] * t) / m[4]
+            i2 = math.expm1(m[5] * t) / m[5]
+            v += c[4] * i1 + c[5] * i2
+            ii = (i1 - i2) / (m[4] - m[5])
+        else:
+            h1 = b[4]
+            h2 = b[5]
+            sig = m[1]
+            ii = (1.0 - h1 - sig * h2) / m[7]
+            v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
+        if cs:
+            v += c[6] * b[7] + c[7] * (ii - b[6])
+    if c[8] != 0.0:
+        v -= c[8] * math.expm1(-m[6] * t) / m[6]
+    return v
+
+
+@jit
+def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, ctau, stau):
     """The event function of a group: ``kind`` 0 the stuck springs' margin towards positive
     slip, ``w (1 + a cos tau) - k u - cp`` (``u = y - y0 + V t``, ``cp`` the largest
     ``w g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
     ``w g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
-    backwards (the same for every spring of the group: ``n_i' = -w a sin tau``)."""
+    backwards (the same for every spring of the group: ``n_i' = -w a sin tau``);
+    ``ctau``, ``stau``: ``cos tau``, ``sin tau``."""
     if kind == 0:
-        return w * (1.0 + a * math.cos(tau)) - k * (y - y0 + V * t) - cp
+        return w * (1.0 + a * ctau) - k * (y - y0 + V * t) - cp
     if kind == 1:
-        return w * (1.0 + a * math.cos(tau)) + k * (y - y0 + V * t) - cm
+        return w * (1.0 + a * ctau) + k * (y - y0 + V * t) - cm
     if kind == 2:
-        return (yd + V) + (w * a / k) * math.sin(tau)
-    return -(yd + V) + (w * a / k) * math.sin(tau)
+        return (yd + V) + (w * a / k) * stau
+    return -(yd + V) + (w * a / k) * stau
 
 
 @jit
-def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa, fb):
+def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, fa, fb):
     """Illinois iteration for the root of a group's event function on ``[ta, tb]``
-    (``fa > 0 >= fb``); returns the right end of the final bracket."""
+    (``fa > 0 >= fb``; ``cth``, ``sth`` the cosine and sine of the segment's start phase);
+    returns the right end of the final bracket."""
     side = 0
     for _ in range(200):
         if tb - ta <= 2e-16 * max(1.0, tb):
@@ -163,7 +193,8 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa,
         if not (ta < t < tb):
             t = 0.5 * (ta + tb)
         b = basis_values(m, t, cs, False)
-        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), dot(dc, b), y0, t, theta + t)
+        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), dot(dc, b), y0, t,
+                         cth * b[2] - sth * b[3], sth * b[2] + cth * b[3])
         if f > 0.0:
             ta, fa = t, f
             if side == -1:
@@ -443,6 +474,290 @@ def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
 
 
 @jit
+def _row_setup(a, n_exp, M):
+    """The row's fixed data: :func:`row_geometry`, ``int sum n_i`` over a period and the
+    contact events sorted by phase (``ev_ph``, the spring ``ev_i``, touch-down ``ev_on``)."""
+    g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
+    nint = normal_integral_row(a, g, w, tau_off)
+    nl = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            nl += 1
+    ev_ph = np.zeros(2 * nl)
+    ev_i = np.zeros(2 * nl, dtype=np.int64)
+    ev_on = np.zeros(2 * nl, dtype=np.bool_)
+    j = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            ev_ph[j] = tau_off[i]
+            ev_i[j] = i
+            ev_ph[j + 1] = tau_on[i]
+            ev_i[j + 1] = i
+            ev_on[j + 1] = True
+            j += 2
+    order = np.argsort(ev_ph, kind="mergesort")
+    return g, w, dxi, tau_off, tau_on, area, nint, ev_ph[order], ev_i[order], ev_on[order]
+
+
+@jit
+def _scratch(M):
+    """Work arrays of :func:`_period`: the max-trees (``P`` leaves, a stack for their
+    search), each state's members, the running sums, ``eh``, the springs switched at the
+    last event, buffers; the four groups' values, roots and flags."""
+    P = 1
+    while P < M:
+        P *= 2
+    depth = 1
+    while (1 << depth) < P:
+        depth += 1
+    return (P, np.zeros(2 * depth + 4, dtype=np.int64), np.full(2 * P, -np.inf),
+            np.full(2 * P, -np.inf), np.zeros((4, M), dtype=np.int64),
+            np.zeros(4, dtype=np.int64), np.zeros(M, dtype=np.int64), np.zeros(5),
+            np.zeros(M), np.zeros(M, dtype=np.int64), np.zeros(M, dtype=np.int64),
+            np.zeros(M, dtype=np.bool_), np.zeros(M), np.zeros(4), np.zeros(4),
+            np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+
+
+@jit
+def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
+            frac, viol, rec, ri, acc):
+    """One period of the row from the section state ``(y, y', st, e)`` (``st``, ``e``
+    modified in place; :func:`run_periods`). Returns ``(y, y', int y, events, no progress,
+    ri, viol)``; ``frac`` gets the period's area fractions."""
+    g, w, dxi, tau_off, tau_on, area, nint, ev_ph, ev_i, ev_on = geo
+    (P, stack, tp, tm, memb, cnt, pos, sums, eh, fl, buf, taken, e_cur, gprev, groot, gon,
+     gfresh) = scr
+    k = (beta - alpha) * dxi
+    tol_c = 1e-11 * w * (2.0 + a)
+    tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
+    nev = ev_ph.size
+    tol_ev = 1e-13 * TWO_PI
+    stuck_loop = False
+    _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+    U = 0.0
+    nf = 0
+    ptr = 0
+    theta = 0.0
+    iy = 0.0
+    fr0 = 0.0
+    fr1 = 0.0
+    fr2 = 0.0
+    events = 0
+    segments = 0
+    while theta < TWO_PI:
+        segments += 1
+        if segments > 200 * M + 1000:  # no progress: report, do not hang
+            stuck_loop = True
+            break
+        nst = cnt[STICK]
+        K = k * nst
+        E0 = k * (sums[S_EH] + nst * U)
+        Sw = w * (cnt[SLIP_POS] - cnt[SLIP_NEG])
+        Swg = w * (sums[S_GP] - sums[S_GN])
+        a_st = sums[S_AST]
+        a_sl = sums[S_ASL]
+        gon[0] = nst > 0
+        gon[1] = nst > 0
+        gon[2] = cnt[SLIP_POS] > 0
+        gon[3] = cnt[SLIP_NEG] > 0
+        cph = tp[1]  # the largest constants, relative to U
+        cmh = tm[1]
+        cp = cph + k * U if nst > 0 else -np.inf
+        cm = cmh - k * U if nst > 0 else -np.inf
+        # a group that has just switched (its event function at 0 by construction)
+        gfresh[:] = False
+        for q in range(nf):
+            i = fl[q]
+            s = st[i]
+            if s == STICK:
+                if w * g[i] + k * eh[i] >= cph - tol_c:
+                    gfresh[0] = True
+                if w * g[i] - k * eh[i] >= cmh - tol_c:
+                    gfresh[1] = True
+            elif s == SLIP_POS:
+                gfresh[2] = True
+            elif s == SLIP_NEG:
+                gfresh[3] = True
+        c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
+        dc = derivative(c, m)
+        cth = math.cos(theta)
+        sth = math.sin(theta)
+        cs = c[6] != 0.0 or c[7] != 0.0
+        # the known contact events and the section bound the segment: the next
+        # contact event after theta that applies (a touch-down of a spring out of
+        # contact, a lift-off of one in contact; one that does not apply now never
+        # will in this period)
+        while ptr < nev:
+            i = ev_i[ptr]
+            if ev_ph[ptr] > theta and (st[i] == OFF) == ev_on[ptr]:
+                break
+            ptr += 1
+        T = TWO_PI - theta
+        if ptr < nev and ev_ph[ptr] - theta < T:
+            T = ev_ph[ptr] - theta
+        # values at the start; a group at or past its event (not just switched)
+        # switches now
+        tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
+        immediate = False
+        for j in range(4):
+            groot[j] = np.inf
+            if not gon[j]:
+                continue
+            gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, cth, sth)
+            tl = tol_s if j < 2 else tol_v
+            if not gfresh[j] and gprev[j] < -tl:
+                groot[j] = 0.0
+                immediate = True
+        t_ev = T
+        t_b = -1.0  # the last scan point (its basis values b)
+        b = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        scanned = immediate
+        if scanned:
+            t_ev = 0.0
+        else:
+            h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
+            ta = 0.0
+            while ta < T and not scanned:
+                tb = min(T, ta + h)
+                b = basis_values(m, tb, cs, False)
+                yb = dot(c, b)
+                ydb = dot(dc, b)
+                ctau = cth * b[2] - sth * b[3]
+                stau = sth * b[2] + cth * b[3]
+                best = T
+                for j in range(4):
+                    if not gon[j]:
+                        continue
+                    f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, ctau, stau)
+                    if j < 2 and f > 0.0 and -f > viol:
+                        viol = -f
+                    fa = gprev[j]
+                    tq = ta
+                    if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
+                        # a group that has just switched (its function at 0) can rise
+                        # and fall back within the first sub-step (a spring touching
+                        # down stuck, slipping again 0.002 later): a positive value
+                        # nearer the start brackets that root
+                        tl = tol_s if j < 2 else tol_v
+                        tp_ = tb
+                        for _ in range(12):
+                            tp_ *= 0.5
+                            bp = basis_values(m, tp_, cs, False)
+                            fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
+                                              dot(dc, bp), y, tp_,
+                                              cth * bp[2] - sth * bp[3],
+                                              sth * bp[2] + cth * bp[3])
+                            if fp > tl:
+                                fa = fp
+                                tq = tp_
+                                break
+                    if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
+                        groot[j] = 0.0  # at its event within round-off, and leaving
+                        best = 0.0
+                        scanned = True
+                    elif f <= 0.0 and fa > 0.0:
+                        r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                                          sth, tq, tb, fa, f)
+                        groot[j] = r
+                        if r < best:
+                            best = r
+                        scanned = True
+                    gprev[j] = f
+                if scanned:
+                    t_ev = best
+                t_b = tb
+                ta = tb
+        if rec is not None:
+            for i in range(M):
+                e_cur[i] = eh[i] + U if st[i] == STICK else 0.0
+            ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
+                                 t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e_cur,
+                                 y, hc, hs)
+        # advance to t_ev
+        if t_ev != t_b:
+            b = basis_values(m, t_ev, cs, False)
+        y1 = dot(c, b)
+        yd1 = dot(dc, b)
+        iy += _integral_b(c, m, t_ev, b)
+        fr0 += a_st * t_ev
+        fr1 += a_sl * t_ev
+        fr2 += (1.0 - a_st - a_sl) * t_ev
+        tau = theta + t_ev
+        U += y1 - y + V * t_ev  # the stuck springs' elongations follow
+        nf = 0
+        if scanned:
+            # the group(s) whose refined root is t_ev switch as a whole: collect them
+            # all first (the stuck cluster at the largest constant, towards positive
+            # slip before negative; every spring slipping one way), then switch
+            nb = 0
+            if groot[0] <= t_ev:
+                nb = _tree_collect(tp, P, cph - tol_c, stack, buf, nb, taken)
+            n0 = nb
+            for q in range(n0):
+                taken[buf[q]] = True
+            if groot[1] <= t_ev:
+                nb = _tree_collect(tm, P, cmh - tol_c, stack, buf, nb, taken)
+            for q in range(n0):
+                taken[buf[q]] = False
+            n1 = nb
+            if groot[2] <= t_ev:
+                for q in range(cnt[SLIP_POS]):
+                    buf[nb] = memb[SLIP_POS, q]
+                    nb += 1
+            n2 = nb
+            if groot[3] <= t_ev:
+                for q in range(cnt[SLIP_NEG]):
+                    buf[nb] = memb[SLIP_NEG, q]
+                    nb += 1
+            for q in range(nb):
+                i = buf[q]
+                if q < n0:
+                    _switch(i, SLIP_POS, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                            g, w, k, area)
+                elif q < n1:
+                    _switch(i, SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                            g, w, k, area)
+                else:
+                    n = w * (1.0 + a * (cth * b[2] - sth * b[3]) - g[i])
+                    sgn = 1.0 if q < n2 else -1.0
+                    _switch(i, STICK, sgn * max(n, 0.0) / k - U, st, eh, memb, cnt,
+                            pos, sums, tp, tm, P, g, w, k, area)
+                fl[nf] = i
+                nf += 1
+                events += 1
+        elif t_ev < TWO_PI - theta:
+            q = ptr
+            while q < nev and ev_ph[q] <= tau + tol_ev:
+                i = ev_i[q]
+                if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == OFF) == ev_on[q]:
+                    if ev_on[q]:
+                        rate = -w * a * (sth * b[2] + cth * b[3])
+                        xd = yd1 + V
+                        if k * abs(xd) <= rate:
+                            _switch(i, STICK, -U, st, eh, memb, cnt, pos, sums, tp, tm,
+                                    P, g, w, k, area)
+                        else:
+                            _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
+                                    memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+                    else:
+                        _switch(i, OFF, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                                g, w, k, area)
+                    fl[nf] = i
+                    nf += 1
+                    events += 1
+                q += 1
+        theta = tau if t_ev < TWO_PI - theta else TWO_PI
+        y = y1
+        yd = yd1
+    for i in range(M):  # the section's elongations
+        e[i] = eh[i] + U if st[i] == STICK else 0.0
+    frac[0] = fr0 / TWO_PI
+    frac[1] = fr1 / TWO_PI
+    frac[2] = fr2 / TWO_PI
+    return y, yd, iy, events, stuck_loop, ri, viol
+
+
+@jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
                 state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
@@ -472,19 +787,14 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     ``X = c cos tau - d sin tau`` of the substrate or, ``holder != 0``, of the holder, for
     the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.
     """
-    g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
+    geo = _row_setup(a, n_exp, M)
+    scr = _scratch(M)
+    g, w, dxi = geo[0], geo[1], geo[2]
     k = (beta - alpha) * dxi
-    nint = normal_integral_row(a, g, w, tau_off)
-    tol_c = 1e-11 * w * (2.0 + a)
-    tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
     pf = np.zeros(max_periods)
-    pn = np.full(max_periods, nint)
+    pn = np.full(max_periods, geo[6])
     frac = np.zeros(3)
     viol = -np.inf
-    gprev = np.zeros(4)
-    groot = np.zeros(4)
-    gon = np.zeros(4, dtype=np.bool_)
-    gfresh = np.zeros(4, dtype=np.bool_)
     stuck_loop = False
     e_old = np.zeros(M)
     st_old = np.zeros(M, dtype=np.int64)
@@ -493,271 +803,18 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     events = 0
     ri = 0  # the next sample to record
     acc = np.zeros(N_REC - R_IF)  # the recorded integrals since the start
-    # the bookkeeping, O(log M) an event instead of O(M) a segment: the members of each
-    # state, the running sums (S_*), max-trees of the stuck springs' constants w g_i +- k
-    # eh_i (e_i = eh_i + U, U the common displacement since the section), the contact
-    # events sorted by phase, the springs switched at the last event (``fl``)
-    P = 1
-    while P < M:
-        P *= 2
-    depth = 1
-    while (1 << depth) < P:
-        depth += 1
-    stack = np.zeros(2 * depth + 4, dtype=np.int64)
-    tp = np.full(2 * P, -np.inf)
-    tm = np.full(2 * P, -np.inf)
-    memb = np.zeros((4, M), dtype=np.int64)
-    cnt = np.zeros(4, dtype=np.int64)
-    pos = np.zeros(M, dtype=np.int64)
-    sums = np.zeros(5)
-    eh = np.zeros(M)
-    fl = np.zeros(M, dtype=np.int64)
-    buf = np.zeros(M, dtype=np.int64)
-    taken = np.zeros(M, dtype=np.bool_)
-    e_cur = np.zeros(M)
-    nl = 0
-    for i in range(M):
-        if tau_off[i] >= 0.0:
-            nl += 1
-    ev_ph = np.zeros(2 * nl)
-    ev_i = np.zeros(2 * nl, dtype=np.int64)
-    ev_on = np.zeros(2 * nl, dtype=np.bool_)
-    j = 0
-    for i in range(M):
-        if tau_off[i] >= 0.0:
-            ev_ph[j] = tau_off[i]
-            ev_i[j] = i
-            ev_ph[j + 1] = tau_on[i]
-            ev_i[j + 1] = i
-            ev_on[j + 1] = True
-            j += 2
-    order = np.argsort(ev_ph, kind="mergesort")
-    ev_ph = ev_ph[order]
-    ev_i = ev_i[order]
-    ev_on = ev_on[order]
-    nev = 2 * nl
-    tol_ev = 1e-13 * TWO_PI
     for period in range(max_periods):
         y_old = y
         yd_old = yd
         e_old[:] = e
         st_old[:] = st
-        _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
-        U = 0.0
-        nf = 0
-        ptr = 0
-        theta = 0.0
-        iy = 0.0
-        fr0 = 0.0
-        fr1 = 0.0
-        fr2 = 0.0
-        events = 0
-        segments = 0
-        while theta < TWO_PI:
-            segments += 1
-            if segments > 200 * M + 1000:  # no progress: report, do not hang
-                stuck_loop = True
-                break
-            nst = cnt[STICK]
-            K = k * nst
-            E0 = k * (sums[S_EH] + nst * U)
-            Sw = w * (cnt[SLIP_POS] - cnt[SLIP_NEG])
-            Swg = w * (sums[S_GP] - sums[S_GN])
-            a_st = sums[S_AST]
-            a_sl = sums[S_ASL]
-            gon[0] = nst > 0
-            gon[1] = nst > 0
-            gon[2] = cnt[SLIP_POS] > 0
-            gon[3] = cnt[SLIP_NEG] > 0
-            cph = tp[1]  # the largest constants, relative to U
-            cmh = tm[1]
-            cp = cph + k * U if nst > 0 else -np.inf
-            cm = cmh - k * U if nst > 0 else -np.inf
-            # a group that has just switched (its event function at 0 by construction)
-            gfresh[:] = False
-            for q in range(nf):
-                i = fl[q]
-                s = st[i]
-                if s == STICK:
-                    if w * g[i] + k * eh[i] >= cph - tol_c:
-                        gfresh[0] = True
-                    if w * g[i] - k * eh[i] >= cmh - tol_c:
-                        gfresh[1] = True
-                elif s == SLIP_POS:
-                    gfresh[2] = True
-                elif s == SLIP_NEG:
-                    gfresh[3] = True
-            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
-            dc = derivative(c, m)
-            cs = c[6] != 0.0 or c[7] != 0.0
-            # the known contact events and the section bound the segment: the next
-            # contact event after theta that applies (a touch-down of a spring out of
-            # contact, a lift-off of one in contact; one that does not apply now never
-            # will in this period)
-            while ptr < nev:
-                i = ev_i[ptr]
-                if ev_ph[ptr] > theta and (st[i] == OFF) == ev_on[ptr]:
-                    break
-                ptr += 1
-            T = TWO_PI - theta
-            if ptr < nev and ev_ph[ptr] - theta < T:
-                T = ev_ph[ptr] - theta
-            # values at the start; a group at or past its event (not just switched)
-            # switches now
-            tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
-            immediate = False
-            for j in range(4):
-                groot[j] = np.inf
-                if not gon[j]:
-                    continue
-                gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, theta)
-                tl = tol_s if j < 2 else tol_v
-                if not gfresh[j] and gprev[j] < -tl:
-                    groot[j] = 0.0
-                    immediate = True
-            t_ev = T
-            scanned = immediate
-            if scanned:
-                t_ev = 0.0
-            else:
-                h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
-                ta = 0.0
-                while ta < T and not scanned:
-                    tb = min(T, ta + h)
-                    b = basis_values(m, tb, cs, False)
-                    yb = dot(c, b)
-                    ydb = dot(dc, b)
-                    tau = theta + tb
-                    best = T
-                    for j in range(4):
-                        if not gon[j]:
-                            continue
-                        f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, tau)
-                        if j < 2 and f > 0.0 and -f > viol:
-                            viol = -f
-                        fa = gprev[j]
-                        tq = ta
-                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
-                            # a group that has just switched (its function at 0) can rise
-                            # and fall back within the first sub-step (a spring touching
-                            # down stuck, slipping again 0.002 later): a positive value
-                            # nearer the start brackets that root
-                            tl = tol_s if j < 2 else tol_v
-                            tp_ = tb
-                            for _ in range(12):
-                                tp_ *= 0.5
-                                bp = basis_values(m, tp_, cs, False)
-                                fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
-                                                  dot(dc, bp), y, tp_, theta + tp_)
-                                if fp > tl:
-                                    fa = fp
-                                    tq = tp_
-                                    break
-                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
-                            groot[j] = 0.0  # at its event within round-off, and leaving
-                            best = 0.0
-                            scanned = True
-                        elif f <= 0.0 and fa > 0.0:
-                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, theta,
-                                              tq, tb, fa, f)
-                            groot[j] = r
-                            if r < best:
-                                best = r
-                            scanned = True
-                        gprev[j] = f
-                    if scanned:
-                        t_ev = best
-                    ta = tb
-            if rec is not None:
-                for i in range(M):
-                    e_cur[i] = eh[i] + U if st[i] == STICK else 0.0
-                ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
-                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e_cur,
-                                     y, hc, hs)
-            # advance to t_ev
-            b = basis_values(m, t_ev, cs, False)
-            y1 = dot(c, b)
-            yd1 = dot(dc, b)
-            iy += integral(c, m, t_ev)
-            fr0 += a_st * t_ev
-            fr1 += a_sl * t_ev
-            fr2 += (1.0 - a_st - a_sl) * t_ev
-            tau = theta + t_ev
-            U += y1 - y + V * t_ev  # the stuck springs' elongations follow
-            nf = 0
-            if scanned:
-                # the group(s) whose refined root is t_ev switch as a whole: collect them
-                # all first (the stuck cluster at the largest constant, towards positive
-                # slip before negative; every spring slipping one way), then switch
-                nb = 0
-                if groot[0] <= t_ev:
-                    nb = _tree_collect(tp, P, cph - tol_c, stack, buf, nb, taken)
-                n0 = nb
-                for q in range(n0):
-                    taken[buf[q]] = True
-                if groot[1] <= t_ev:
-                    nb = _tree_collect(tm, P, cmh - tol_c, stack, buf, nb, taken)
-                for q in range(n0):
-                    taken[buf[q]] = False
-                n1 = nb
-                if groot[2] <= t_ev:
-                    for q in range(cnt[SLIP_POS]):
-                        buf[nb] = memb[SLIP_POS, q]
-                        nb += 1
-                n2 = nb
-                if groot[3] <= t_ev:
-                    for q in range(cnt[SLIP_NEG]):
-                        buf[nb] = memb[SLIP_NEG, q]
-                        nb += 1
-                for q in range(nb):
-                    i = buf[q]
-                    if q < n0:
-                        _switch(i, SLIP_POS, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                                g, w, k, area)
-                    elif q < n1:
-                        _switch(i, SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                                g, w, k, area)
-                    else:
-                        n = w * (1.0 + a * math.cos(tau) - g[i])
-                        sgn = 1.0 if q < n2 else -1.0
-                        _switch(i, STICK, sgn * max(n, 0.0) / k - U, st, eh, memb, cnt,
-                                pos, sums, tp, tm, P, g, w, k, area)
-                    fl[nf] = i
-                    nf += 1
-                    events += 1
-            elif t_ev < TWO_PI - theta:
-                q = ptr
-                while q < nev and ev_ph[q] <= tau + tol_ev:
-                    i = ev_i[q]
-                    if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == OFF) == ev_on[q]:
-                        if ev_on[q]:
-                            rate = -w * a * math.sin(tau)
-                            xd = yd1 + V
-                            if k * abs(xd) <= rate:
-                                _switch(i, STICK, -U, st, eh, memb, cnt, pos, sums, tp, tm,
-                                        P, g, w, k, area)
-                            else:
-                                _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
-                                        memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
-                        else:
-                            _switch(i, OFF, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                                    g, w, k, area)
-                        fl[nf] = i
-                        nf += 1
-                        events += 1
-                    q += 1
-            theta = tau if t_ev < TWO_PI - theta else TWO_PI
-            y = y1
-            yd = yd1
+        y, yd, iy, events, stuck_loop, ri, viol = _period(
+            alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
+            frac, viol, rec, ri, acc)
         periods = period + 1
-        for i in range(M):  # the section's elongations
-            e[i] = eh[i] + U if st[i] == STICK else 0.0
         if stuck_loop:
             break
         pf[period] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
-        frac[0] = fr0 / TWO_PI
-        frac[1] = fr1 / TWO_PI
-        frac[2] = fr2 / TWO_PI
         # section-state change
         scale_s = abs(y) + abs(yd) + 1e-300
         d = abs(y - y_old) + abs(yd - yd_old)
@@ -777,3 +834,124 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             _record_state(rec, ri, acc, y, yd, rec[0][ri], 0.0, st, e, g, w, k, a)
             ri += 1
     return periods, converged, pf[:periods], pn[:periods], frac, viol, events, y, yd
+
+
+@jit
+def _anderson_step(xs, gs, nh, out):
+    """Anderson mixing (type II, no damping) from the ``nh`` iterates ``xs`` and their
+    images ``gs`` (rows, oldest first): the combination of the images whose residuals'
+    combination is smallest (least squares as ``numpy.linalg.lstsq``, ``rcond`` its
+    default); written to ``out``."""
+    n = xs.shape[1]
+    dF = np.empty((n, nh - 1))
+    for q in range(nh - 1):
+        for i in range(n):
+            dF[i, q] = (gs[q + 1, i] - xs[q + 1, i]) - (gs[q, i] - xs[q, i])
+    fl = np.empty(n)
+    for i in range(n):
+        fl[i] = gs[nh - 1, i] - xs[nh - 1, i]
+    coef = np.linalg.lstsq(dF, fl, rcond=np.finfo(np.float64).eps * max(n, nh - 1))[0]
+    for i in range(n):
+        v = gs[nh - 1, i]
+        for q in range(nh - 1):
+            v -= coef[q] * (gs[q + 1, i] - gs[q, i])
+        out[i] = v
+
+
+@jit
+def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_periods,
+               accelerate, anderson, accelerated_periods, y, yd, st, e, hc=0.0, hs=0.0):
+    """The row's steady state from the section state ``(y, y', st, e)`` (modified in
+    place): the period map iterated until the section state repeats within ``state_tol``
+    (relative), with ``accelerate`` first (for at most ``accelerated_periods``) with the
+    continuous part of the state (``y``, ``y'``, the stuck springs' elongations) updated by
+    Anderson mixing of the last ``anderson`` period maps once the springs' states at the
+    section repeat (a change of them restarts the history), then plain iteration (at
+    least 5 periods of it before convergence counts). The loop of
+    :func:`vibrofriction.solver.mdr.mdr_row`, compiled.
+
+    Returns ``(periods, converged, pf, nint, frac, viol, events, y, yd)``: the per-period
+    ``int sum f_i``, ``int sum n_i`` over a period, the last period's area fractions, the
+    largest ``|f_i| - n_i`` at the scan points, the last period's events (``-1``: no
+    progress) and the final body state."""
+    geo = _row_setup(a, n_exp, M)
+    scr = _scratch(M)
+    pf = np.zeros(max_periods)
+    frac = np.zeros(3)
+    viol = -np.inf
+    acc = np.zeros(N_REC - R_IF)
+    n = M + 2
+    xs = np.zeros((anderson, n))
+    gs = np.zeros((anderson, n))
+    x = np.zeros(n)
+    gx = np.zeros(n)
+    xn = np.zeros(n)
+    st_in = st.copy()
+    st_hist = st.copy()
+    e_old = np.zeros(M)
+    nh = 0
+    periods = 0
+    conv = False
+    events = 0
+    plain = 0  # periods of plain iteration
+    while periods < max_periods:
+        acc_phase = accelerate and periods < accelerated_periods
+        x[0] = y
+        x[1] = yd
+        x[2:] = e
+        st_in[:] = st
+        e_old[:] = e
+        y_old = y
+        yd_old = yd
+        y, yd, iy, events, stuck_loop, _, viol = _period(
+            alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, periods, y, yd, st, e,
+            frac, viol, None, 0, acc)
+        periods += 1
+        if stuck_loop:
+            events = -1
+            break
+        pf[periods - 1] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
+        gx[0] = y
+        gx[1] = yd
+        gx[2:] = e
+        same = True
+        for i in range(M):
+            if st[i] != st_in[i]:
+                same = False
+        scale = 1e-300
+        d = 0.0
+        for i in range(n):
+            scale += abs(gx[i])
+            d += abs(gx[i] - x[i])
+        if not acc_phase:
+            plain += 1
+            if same and d <= state_tol * scale and plain >= min(5, max_periods - periods
+                                                                 + plain):
+                conv = True
+                break
+            continue
+        if same and d <= state_tol * scale and periods >= 2:
+            conv = True
+            break
+        hist_same = True
+        for i in range(M):
+            if st[i] != st_hist[i]:
+                hist_same = False
+        if not (same and hist_same):
+            nh = 0
+            st_hist[:] = st
+        if nh == anderson:
+            for q in range(anderson - 1):
+                xs[q] = xs[q + 1]
+                gs[q] = gs[q + 1]
+            nh -= 1
+        xs[nh] = x
+        gs[nh] = gx
+        nh += 1
+        if nh >= 2 and same:
+            _anderson_step(xs, gs, nh, xn)
+            y = xn[0]
+            yd = xn[1]
+            for i in range(M):
+                e[i] = xn[2 + i] if st[i] == STICK else 0.0
+    return periods, conv, pf[:periods], geo[6], frac, viol, events, y, yd
