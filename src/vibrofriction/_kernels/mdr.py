@@ -57,7 +57,7 @@ import math
 
 import numpy as np
 
-from .basis import EXP, basis_values, derivative, dot, initial_pair, integral, make_mode
+from .basis import EXP, basis_values, derivative, dot, initial_pair, integral, make_mode, sup_bound
 from .jit import jit
 from .phases import _periodic_response
 
@@ -181,20 +181,39 @@ def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, ctau, stau):
 
 
 @jit
+def _group_slope(kind, w, k, a, V, yd, ydd, ctau, stau):
+    """The derivative of :func:`_group_value` (``ydd`` = ``y''``)."""
+    if kind == 0:
+        return -w * a * stau - k * (yd + V)
+    if kind == 1:
+        return -w * a * stau + k * (yd + V)
+    if kind == 2:
+        return ydd + (w * a / k) * ctau
+    return -ydd + (w * a / k) * ctau
+
+
+@jit
 def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, fa, fb):
-    """Illinois iteration for the root of a group's event function on ``[ta, tb]``
-    (``fa > 0 >= fb``; ``cth``, ``sth`` the cosine and sine of the segment's start phase);
-    returns the right end of the final bracket."""
+    """The root of a group's event function on ``[ta, tb]`` (``fa > 0 >= fb``; ``cth``,
+    ``sth`` the cosine and sine of the segment's start phase) to round-off: Newton steps
+    (the slope in closed form) kept inside the bracket (else regula falsi, Illinois), a
+    converged step pushed just across the root to close the bracket; returns the right
+    end of the final bracket (where the function is <= 0)."""
+    ddc = derivative(dc, m)
     side = 0
+    t = (ta * fb - tb * fa) / (fb - fa)
     for _ in range(200):
         if tb - ta <= 2e-16 * max(1.0, tb):
             break
-        t = (ta * fb - tb * fa) / (fb - fa)
         if not (ta < t < tb):
-            t = 0.5 * (ta + tb)
+            t = (ta * fb - tb * fa) / (fb - fa)
+            if not (ta < t < tb):
+                t = 0.5 * (ta + tb)
         b = basis_values(m, t, cs, False)
-        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), dot(dc, b), y0, t,
-                         cth * b[2] - sth * b[3], sth * b[2] + cth * b[3])
+        ct = cth * b[2] - sth * b[3]
+        st = sth * b[2] + cth * b[3]
+        yd = dot(dc, b)
+        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), yd, y0, t, ct, st)
         if f > 0.0:
             ta, fa = t, f
             if side == -1:
@@ -205,6 +224,14 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
             if side == 1:
                 fa *= 0.5
             side = 1
+            if f == 0.0:
+                break
+        d = _group_slope(kind, w, k, a, V, yd, dot(ddc, b), ct, st)
+        dt = -f / d if d != 0.0 else np.inf
+        res = 1e-16 * max(1.0, t)
+        if abs(dt) <= res:  # converged: step just across the root to close the bracket
+            dt = 2.0 * res if f > 0.0 else -2.0 * res
+        t = t + dt
     return tb
 
 
@@ -616,9 +643,30 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             t_ev = 0.0
         else:
             h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
+            lb_m = -1.0  # the bounds of the groups' derivatives, once needed
+            lb_v = 0.0
             ta = 0.0
             while ta < T and not scanned:
-                tb = min(T, ta + h)
+                step = h
+                if ta > 0.0 and lb_m < 0.0 and T - ta > 4.0 * h:
+                    # a longer step where no group can reach 0 within it: each group's
+                    # value over a bound of its derivative on the segment (margins:
+                    # |f'| <= w a + k (|y'| + |V|); slip velocities: |y''| + w a/k);
+                    # never shorter than the fixed sub-step h, so the scan is at least as
+                    # fine as the fixed one everywhere (bounds only where the segment has
+                    # more than a few sub-steps left)
+                    lb_m = w * a + k * (sup_bound(dc, m, T) + abs(V))
+                    lb_v = sup_bound(derivative(dc, m), m, T) + w * a / k
+                if ta > 0.0 and lb_m >= 0.0:
+                    hs_ = np.inf
+                    for j in range(4):
+                        if gon[j]:
+                            hj = gprev[j] / (lb_m if j < 2 else lb_v)
+                            if hj < hs_:
+                                hs_ = hj
+                    if hs_ > step:
+                        step = hs_
+                tb = min(T, ta + step)
                 b = basis_values(m, tb, cs, False)
                 yb = dot(c, b)
                 ydb = dot(dc, b)
