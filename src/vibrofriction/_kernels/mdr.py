@@ -39,15 +39,22 @@ substrate, and the four group functions below are unchanged; ``h`` is at the dri
 frequency, so it joins ``S_w a cos tau`` in the periodic response of the closed form, and
 its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
 
-These four group functions are scanned on sub-steps of the segment (at most
-``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
-method to round-off, and the earliest root ends the segment (a scan costs O(1), not
+These four group functions are scanned on sub-steps of the segment (``2 pi/substeps`` or
+``0.5/sqrt(alpha + K)``, longer where each group's value over a bound of its derivative on
+the segment shows it cannot reach 0 within the step), a sign change is refined to
+round-off (Newton steps in the bracket, Illinois as fallback), and the earliest root ends
+the segment (a scan costs O(1), not
 O(springs); switching groups as a whole, not spring by spring at round-off distances,
 removed the stalls of the first version). A dip below
 zero shorter than a sub-step is not seen (a grazing event); that is the method's only
 approximation besides round-off. A group that has just switched starts at its root, so in
 its first sub-step it is also probed nearer the start (a spring touching down stuck may
 slip again within the sub-step).
+
+The bookkeeping between events is O(log M) an event (:func:`_switch`: each state's
+members, running sums, max-trees of the stuck springs' constants relative to their common
+displacement since the section, the contact events sorted by phase), rebuilt at each
+section; :func:`steady_row` is the row's steady-state loop (Anderson mixing) compiled.
 
 ``run_periods(..., rec=(tau, body, f, state, ip))`` also records the row at the times ``tau``
 (:func:`_record_segment`; the MDR time history, :mod:`vibrofriction.solver.mdr_history`).

@@ -20,7 +20,7 @@ from .._kernels.phases import frame_offset, inplane_forcing
 __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
-SUBSTEPS = 1024  # scan sub-steps a period: 64 and 256 miss grazing events (docs)
+SUBSTEPS = 1024  # the scan's floor of sub-steps a period (docs: grazing events)
 MAX_PERIODS = 4000
 AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
