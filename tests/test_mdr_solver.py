@@ -139,3 +139,42 @@ def test_agrees_with_the_cached_reference_within_the_error_bars(p):
         assert 0 < r["mu_ratio"] - p["mu_ref"] < 3e-7
         return
     assert abs(r["mu_ratio"] - p["mu_ref"]) <= r["error"] + p["err_ref"]
+
+
+@pytest.mark.parametrize("alpha, gamma, K, a, hc, hs", [
+    (0.5, 0.0, 1.0, 0.5, 0.0, 0.0),     # undamped, away from the resonance
+    (0.5, 0.0, 0.5, 1.5, 0.0, 0.0),     # undamped at the resonance alpha + K = 1
+    (1.0, 0.2, 2.0, 0.7, 0.0, 0.0),     # under-damped, stiff (stuck springs)
+    (0.05, 1.5, 0.0, 1.3, 0.0, 0.0),    # over-damped
+    (0.8, 0.05, 0.25, 0.9, 0.3, -0.2)])  # near the resonance, in-plane force
+def test_scan_derivative_bounds_hold_on_the_segment(alpha, gamma, K, a, hc, hs):
+    """The scan's longer steps (vibrofriction._kernels.mdr) rest on sup_bound of y' and
+    y'' over the segment: sampled densely, neither exceeds its bound."""
+    from vibrofriction._kernels.basis import basis_values, derivative, dot, sup_bound
+    from vibrofriction._kernels.mdr import _segment
+
+    T = 2.0 * math.pi
+    for y0, yd0, theta in ((0.3, -0.4, 0.0), (-1.2, 0.8, 2.0), (0.0, 0.0, 4.5)):
+        c, m = _segment(alpha, gamma, K, 0.2 * K, y0, yd0, 0.4, 0.1, 0.3, a, theta, hc, hs)
+        dc = derivative(c, m)
+        ddc = derivative(dc, m)
+        cs = c[6] != 0.0 or c[7] != 0.0
+        v1 = v2 = 0.0
+        for t in [T * i / 4000 for i in range(4001)]:
+            b = basis_values(m, t, cs, False)
+            v1 = max(v1, abs(dot(dc, b)))
+            v2 = max(v2, abs(dot(ddc, b)))
+        assert v1 <= sup_bound(dc, m, T) and v2 <= sup_bound(ddc, m, T)
+        assert v1 > 0.0 and v2 > 0.0
+
+
+def test_grazing_row_is_found_with_fewer_scan_substeps():
+    """The row of 80 springs at (0.5, 2, 1.5, 0.3, n = 2), whose grazing touch-down the
+    first scans missed with 64 and 256 sub-steps (0.0721430 instead of 0.0721376,
+    docs/contact_geometry.md): the scan's floor of 64 finds the same orbit as 1024, and
+    both are the reference's own row of 80 springs within its step error."""
+    rows = [mdr_row(0.5, 2.0, 1.5, 0.3, 2.0, 80, substeps=s)["mu_ratio"] for s in (64, 1024)]
+    ref = mdr_mean(0.5, 2.0, 1.5, 0.3, 2.0, 80, 1600, transient_periods=300,
+                   average_periods=20).mu_ratio
+    assert abs(rows[0] - rows[1]) <= 1e-10
+    assert abs(rows[1] - ref) <= 5e-8  # the missed event: 5.4e-6

@@ -39,15 +39,22 @@ substrate, and the four group functions below are unchanged; ``h`` is at the dri
 frequency, so it joins ``S_w a cos tau`` in the periodic response of the closed form, and
 its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
 
-These four group functions are scanned on sub-steps of the segment (at most
-``2 pi/substeps`` and ``0.5/sqrt(alpha + K)``), a sign change is refined by the Illinois
-method to round-off, and the earliest root ends the segment (a scan costs O(1), not
+These four group functions are scanned on sub-steps of the segment (``2 pi/substeps`` or
+``0.5/sqrt(alpha + K)``, longer where each group's value over a bound of its derivative on
+the segment shows it cannot reach 0 within the step), a sign change is refined to
+round-off (Newton steps in the bracket, Illinois as fallback), and the earliest root ends
+the segment (a scan costs O(1), not
 O(springs); switching groups as a whole, not spring by spring at round-off distances,
 removed the stalls of the first version). A dip below
 zero shorter than a sub-step is not seen (a grazing event); that is the method's only
 approximation besides round-off. A group that has just switched starts at its root, so in
 its first sub-step it is also probed nearer the start (a spring touching down stuck may
 slip again within the sub-step).
+
+The bookkeeping between events is O(log M) an event (:func:`_switch`: each state's
+members, running sums, max-trees of the stuck springs' constants relative to their common
+displacement since the section, the contact events sorted by phase), rebuilt at each
+section; :func:`steady_row` is the row's steady-state loop (Anderson mixing) compiled.
 
 ``run_periods(..., rec=(tau, body, f, state, ip))`` also records the row at the times ``tau``
 (:func:`_record_segment`; the MDR time history, :mod:`vibrofriction.solver.mdr_history`).
@@ -57,7 +64,7 @@ import math
 
 import numpy as np
 
-from .basis import basis_values, derivative, dot, initial_pair, integral, make_mode
+from .basis import EXP, basis_values, derivative, dot, initial_pair, integral, make_mode, sup_bound
 from .jit import jit
 from .phases import _periodic_response
 
@@ -136,34 +143,84 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
 
 
 @jit
-def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, tau):
+def _integral_b(c, m, t, b):
+    """:func:`.basis.integral` of ``c`` over ``[0, t]`` from the basis values ``b`` at
+    ``t`` (:func:`.basis.basis_values`, ``C, S`` included where ``c`` has them): the same
+    formulas, without evaluating the basis again."""
+    ct = b[2]
+    st = b[3]
+    v = c[0] * t + 0.5 * c[1] * t * t + c[2] * st + c[3] * (1.0 - ct)
+    cs = c[6] != 0.0 or c[7] != 0.0
+    if c[4] != 0.0 or c[5] != 0.0 or cs:
+        if m[0] == EXP:
+            i1 = math.expm1(m[4] * t) / m[4]
+            i2 = math.expm1(m[5] * t) / m[5]
+            v += c[4] * i1 + c[5] * i2
+            ii = (i1 - i2) / (m[4] - m[5])
+        else:
+            h1 = b[4]
+            h2 = b[5]
+            sig = m[1]
+            ii = (1.0 - h1 - sig * h2) / m[7]
+            v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
+        if cs:
+            v += c[6] * b[7] + c[7] * (ii - b[6])
+    if c[8] != 0.0:
+        v -= c[8] * math.expm1(-m[6] * t) / m[6]
+    return v
+
+
+@jit
+def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, ctau, stau):
     """The event function of a group: ``kind`` 0 the stuck springs' margin towards positive
     slip, ``w (1 + a cos tau) - k u - cp`` (``u = y - y0 + V t``, ``cp`` the largest
     ``w g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
     ``w g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
-    backwards (the same for every spring of the group: ``n_i' = -w a sin tau``)."""
+    backwards (the same for every spring of the group: ``n_i' = -w a sin tau``);
+    ``ctau``, ``stau``: ``cos tau``, ``sin tau``."""
     if kind == 0:
-        return w * (1.0 + a * math.cos(tau)) - k * (y - y0 + V * t) - cp
+        return w * (1.0 + a * ctau) - k * (y - y0 + V * t) - cp
     if kind == 1:
-        return w * (1.0 + a * math.cos(tau)) + k * (y - y0 + V * t) - cm
+        return w * (1.0 + a * ctau) + k * (y - y0 + V * t) - cm
     if kind == 2:
-        return (yd + V) + (w * a / k) * math.sin(tau)
-    return -(yd + V) + (w * a / k) * math.sin(tau)
+        return (yd + V) + (w * a / k) * stau
+    return -(yd + V) + (w * a / k) * stau
 
 
 @jit
-def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa, fb):
-    """Illinois iteration for the root of a group's event function on ``[ta, tb]``
-    (``fa > 0 >= fb``); returns the right end of the final bracket."""
+def _group_slope(kind, w, k, a, V, yd, ydd, ctau, stau):
+    """The derivative of :func:`_group_value` (``ydd`` = ``y''``)."""
+    if kind == 0:
+        return -w * a * stau - k * (yd + V)
+    if kind == 1:
+        return -w * a * stau + k * (yd + V)
+    if kind == 2:
+        return ydd + (w * a / k) * ctau
+    return -ydd + (w * a / k) * ctau
+
+
+@jit
+def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, fa, fb):
+    """The root of a group's event function on ``[ta, tb]`` (``fa > 0 >= fb``; ``cth``,
+    ``sth`` the cosine and sine of the segment's start phase) to round-off: Newton steps
+    (the slope in closed form) kept inside the bracket (else regula falsi, Illinois), a
+    converged step pushed just across the root to close the bracket; returns the right
+    end of the final bracket (where the function is <= 0)."""
+    ddc = derivative(dc, m)
     side = 0
+    t = (ta * fb - tb * fa) / (fb - fa)
     for _ in range(200):
         if tb - ta <= 2e-16 * max(1.0, tb):
             break
-        t = (ta * fb - tb * fa) / (fb - fa)
         if not (ta < t < tb):
-            t = 0.5 * (ta + tb)
+            t = (ta * fb - tb * fa) / (fb - fa)
+            if not (ta < t < tb):
+                t = 0.5 * (ta + tb)
         b = basis_values(m, t, cs, False)
-        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), dot(dc, b), y0, t, theta + t)
+        ct = cth * b[2] - sth * b[3]
+        st = sth * b[2] + cth * b[3]
+        yd = dot(dc, b)
+        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), yd, y0, t, ct, st)
         if f > 0.0:
             ta, fa = t, f
             if side == -1:
@@ -174,6 +231,14 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, theta, ta, tb, fa,
             if side == 1:
                 fa *= 0.5
             side = 1
+            if f == 0.0:
+                break
+        d = _group_slope(kind, w, k, a, V, yd, dot(ddc, b), ct, st)
+        dt = -f / d if d != 0.0 else np.inf
+        res = 1e-16 * max(1.0, t)
+        if abs(dt) <= res:  # converged: step just across the root to close the bracket
+            dt = 2.0 * res if f > 0.0 else -2.0 * res
+        t = t + dt
     return tb
 
 
@@ -321,6 +386,432 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
     return ri
 
 
+# the running sums of the row's bookkeeping (:func:`_switch`): the stuck springs' elongations
+# relative to the common displacement ``U`` (``e_i = eh_i + U``), the gaps of the springs
+# slipping forwards and backwards, the stuck and the slipping springs' areas
+S_EH, S_GP, S_GN, S_AST, S_ASL = range(5)
+
+
+@jit
+def _tree_set(tree, P, i, v):
+    """Set leaf ``i`` of the max-tree ``tree`` (leaves at ``P + i``) to ``v``."""
+    j = P + i
+    tree[j] = v
+    j >>= 1
+    while j >= 1:
+        lv = tree[2 * j]
+        rv = tree[2 * j + 1]
+        tree[j] = lv if lv > rv else rv
+        j >>= 1
+
+
+@jit
+def _tree_collect(tree, P, thr, stack, out, n, skip):
+    """Append to ``out`` (from ``n``) the leaves of ``tree`` at or above ``thr``, except
+    where ``skip``; returns the new count. Visits only the branches whose maximum is at or
+    above ``thr``: O(found log M)."""
+    if tree[1] < thr:
+        return n
+    top = 0
+    stack[0] = 1
+    while top >= 0:
+        j = stack[top]
+        top -= 1
+        if j >= P:
+            if not skip[j - P]:
+                out[n] = j - P
+                n += 1
+            continue
+        if tree[2 * j] >= thr:
+            top += 1
+            stack[top] = 2 * j
+        if tree[2 * j + 1] >= thr:
+            top += 1
+            stack[top] = 2 * j + 1
+    return n
+
+
+@jit
+def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+    """Move spring ``i`` to the state ``new`` (a stuck one with ``eh_i = eh_new``), keeping
+    the members of each state, the running sums and the stuck springs' max-trees of
+    ``w g_i +- k eh_i`` up to date: O(log M)."""
+    old = st[i]
+    if old == STICK:
+        sums[S_EH] -= eh[i]
+        sums[S_AST] -= area[i]
+        _tree_set(tp, P, i, -np.inf)
+        _tree_set(tm, P, i, -np.inf)
+    elif old == SLIP_POS:
+        sums[S_GP] -= g[i]
+        sums[S_ASL] -= area[i]
+    elif old == SLIP_NEG:
+        sums[S_GN] -= g[i]
+        sums[S_ASL] -= area[i]
+    p = pos[i]
+    last = memb[old, cnt[old] - 1]
+    memb[old, p] = last
+    pos[last] = p
+    cnt[old] -= 1
+    memb[new, cnt[new]] = i
+    pos[i] = cnt[new]
+    cnt[new] += 1
+    st[i] = new
+    eh[i] = 0.0
+    if new == STICK:
+        eh[i] = eh_new
+        sums[S_EH] += eh_new
+        sums[S_AST] += area[i]
+        _tree_set(tp, P, i, w * g[i] + k * eh_new)
+        _tree_set(tm, P, i, w * g[i] - k * eh_new)
+    elif new == SLIP_POS:
+        sums[S_GP] += g[i]
+        sums[S_ASL] += area[i]
+    elif new == SLIP_NEG:
+        sums[S_GN] += g[i]
+        sums[S_ASL] += area[i]
+
+
+@jit
+def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+    """The bookkeeping of :func:`_switch` from scratch (``U = 0``, ``eh = e``): at every
+    section, so that the running sums carry no round-off from period to period."""
+    cnt[:] = 0
+    sums[:] = 0.0
+    tp[:] = -np.inf
+    tm[:] = -np.inf
+    for i in range(g.size):
+        s = st[i]
+        memb[s, cnt[s]] = i
+        pos[i] = cnt[s]
+        cnt[s] += 1
+        eh[i] = 0.0
+        if s == STICK:
+            eh[i] = e[i]
+            sums[S_EH] += e[i]
+            sums[S_AST] += area[i]
+            tp[P + i] = w * g[i] + k * e[i]
+            tm[P + i] = w * g[i] - k * e[i]
+        elif s == SLIP_POS:
+            sums[S_GP] += g[i]
+            sums[S_ASL] += area[i]
+        elif s == SLIP_NEG:
+            sums[S_GN] += g[i]
+            sums[S_ASL] += area[i]
+    for j in range(P - 1, 0, -1):
+        lv = tp[2 * j]
+        rv = tp[2 * j + 1]
+        tp[j] = lv if lv > rv else rv
+        lv = tm[2 * j]
+        rv = tm[2 * j + 1]
+        tm[j] = lv if lv > rv else rv
+
+
+@jit
+def _row_setup(a, n_exp, M):
+    """The row's fixed data: :func:`row_geometry`, ``int sum n_i`` over a period and the
+    contact events sorted by phase (``ev_ph``, the spring ``ev_i``, touch-down ``ev_on``)."""
+    g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
+    nint = normal_integral_row(a, g, w, tau_off)
+    nl = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            nl += 1
+    ev_ph = np.zeros(2 * nl)
+    ev_i = np.zeros(2 * nl, dtype=np.int64)
+    ev_on = np.zeros(2 * nl, dtype=np.bool_)
+    j = 0
+    for i in range(M):
+        if tau_off[i] >= 0.0:
+            ev_ph[j] = tau_off[i]
+            ev_i[j] = i
+            ev_ph[j + 1] = tau_on[i]
+            ev_i[j + 1] = i
+            ev_on[j + 1] = True
+            j += 2
+    order = np.argsort(ev_ph, kind="mergesort")
+    return g, w, dxi, tau_off, tau_on, area, nint, ev_ph[order], ev_i[order], ev_on[order]
+
+
+@jit
+def _scratch(M):
+    """Work arrays of :func:`_period`: the max-trees (``P`` leaves, a stack for their
+    search), each state's members, the running sums, ``eh``, the springs switched at the
+    last event, buffers; the four groups' values, roots and flags."""
+    P = 1
+    while P < M:
+        P *= 2
+    depth = 1
+    while (1 << depth) < P:
+        depth += 1
+    return (P, np.zeros(2 * depth + 4, dtype=np.int64), np.full(2 * P, -np.inf),
+            np.full(2 * P, -np.inf), np.zeros((4, M), dtype=np.int64),
+            np.zeros(4, dtype=np.int64), np.zeros(M, dtype=np.int64), np.zeros(5),
+            np.zeros(M), np.zeros(M, dtype=np.int64), np.zeros(M, dtype=np.int64),
+            np.zeros(M, dtype=np.bool_), np.zeros(M), np.zeros(4), np.zeros(4),
+            np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+
+
+@jit
+def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
+            frac, viol, rec, ri, acc):
+    """One period of the row from the section state ``(y, y', st, e)`` (``st``, ``e``
+    modified in place; :func:`run_periods`). Returns ``(y, y', int y, events, no progress,
+    ri, viol)``; ``frac`` gets the period's area fractions."""
+    g, w, dxi, tau_off, tau_on, area, nint, ev_ph, ev_i, ev_on = geo
+    (P, stack, tp, tm, memb, cnt, pos, sums, eh, fl, buf, taken, e_cur, gprev, groot, gon,
+     gfresh) = scr
+    k = (beta - alpha) * dxi
+    tol_c = 1e-11 * w * (2.0 + a)
+    tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
+    nev = ev_ph.size
+    tol_ev = 1e-13 * TWO_PI
+    stuck_loop = False
+    _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+    U = 0.0
+    nf = 0
+    ptr = 0
+    theta = 0.0
+    iy = 0.0
+    fr0 = 0.0
+    fr1 = 0.0
+    fr2 = 0.0
+    events = 0
+    segments = 0
+    while theta < TWO_PI:
+        segments += 1
+        if segments > 200 * M + 1000:  # no progress: report, do not hang
+            stuck_loop = True
+            break
+        nst = cnt[STICK]
+        K = k * nst
+        E0 = k * (sums[S_EH] + nst * U)
+        Sw = w * (cnt[SLIP_POS] - cnt[SLIP_NEG])
+        Swg = w * (sums[S_GP] - sums[S_GN])
+        a_st = sums[S_AST]
+        a_sl = sums[S_ASL]
+        gon[0] = nst > 0
+        gon[1] = nst > 0
+        gon[2] = cnt[SLIP_POS] > 0
+        gon[3] = cnt[SLIP_NEG] > 0
+        cph = tp[1]  # the largest constants, relative to U
+        cmh = tm[1]
+        cp = cph + k * U if nst > 0 else -np.inf
+        cm = cmh - k * U if nst > 0 else -np.inf
+        # a group that has just switched (its event function at 0 by construction)
+        gfresh[:] = False
+        for q in range(nf):
+            i = fl[q]
+            s = st[i]
+            if s == STICK:
+                if w * g[i] + k * eh[i] >= cph - tol_c:
+                    gfresh[0] = True
+                if w * g[i] - k * eh[i] >= cmh - tol_c:
+                    gfresh[1] = True
+            elif s == SLIP_POS:
+                gfresh[2] = True
+            elif s == SLIP_NEG:
+                gfresh[3] = True
+        c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
+        dc = derivative(c, m)
+        cth = math.cos(theta)
+        sth = math.sin(theta)
+        cs = c[6] != 0.0 or c[7] != 0.0
+        # the known contact events and the section bound the segment: the next
+        # contact event after theta that applies (a touch-down of a spring out of
+        # contact, a lift-off of one in contact; one that does not apply now never
+        # will in this period)
+        while ptr < nev:
+            i = ev_i[ptr]
+            if ev_ph[ptr] > theta and (st[i] == OFF) == ev_on[ptr]:
+                break
+            ptr += 1
+        T = TWO_PI - theta
+        if ptr < nev and ev_ph[ptr] - theta < T:
+            T = ev_ph[ptr] - theta
+        # values at the start; a group at or past its event (not just switched)
+        # switches now
+        tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
+        immediate = False
+        for j in range(4):
+            groot[j] = np.inf
+            if not gon[j]:
+                continue
+            gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, cth, sth)
+            tl = tol_s if j < 2 else tol_v
+            if not gfresh[j] and gprev[j] < -tl:
+                groot[j] = 0.0
+                immediate = True
+        t_ev = T
+        t_b = -1.0  # the last scan point (its basis values b)
+        b = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
+        scanned = immediate
+        if scanned:
+            t_ev = 0.0
+        else:
+            h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
+            lb_m = -1.0  # the bounds of the groups' derivatives, once needed
+            lb_v = 0.0
+            ta = 0.0
+            while ta < T and not scanned:
+                step = h
+                if ta > 0.0 and lb_m < 0.0 and T - ta > 4.0 * h:
+                    # a longer step where no group can reach 0 within it: each group's
+                    # value over a bound of its derivative on the segment (margins:
+                    # |f'| <= w a + k (|y'| + |V|); slip velocities: |y''| + w a/k);
+                    # never shorter than the fixed sub-step h, so the scan is at least as
+                    # fine as the fixed one everywhere (bounds only where the segment has
+                    # more than a few sub-steps left)
+                    lb_m = w * a + k * (sup_bound(dc, m, T) + abs(V))
+                    lb_v = sup_bound(derivative(dc, m), m, T) + w * a / k
+                if ta > 0.0 and lb_m >= 0.0:
+                    hs_ = np.inf
+                    for j in range(4):
+                        if gon[j]:
+                            hj = gprev[j] / (lb_m if j < 2 else lb_v)
+                            if hj < hs_:
+                                hs_ = hj
+                    if hs_ > step:
+                        step = hs_
+                tb = min(T, ta + step)
+                b = basis_values(m, tb, cs, False)
+                yb = dot(c, b)
+                ydb = dot(dc, b)
+                ctau = cth * b[2] - sth * b[3]
+                stau = sth * b[2] + cth * b[3]
+                best = T
+                for j in range(4):
+                    if not gon[j]:
+                        continue
+                    f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, ctau, stau)
+                    if j < 2 and f > 0.0 and -f > viol:
+                        viol = -f
+                    fa = gprev[j]
+                    tq = ta
+                    if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
+                        # a group that has just switched (its function at 0) can rise
+                        # and fall back within the first sub-step (a spring touching
+                        # down stuck, slipping again 0.002 later): a positive value
+                        # nearer the start brackets that root
+                        tl = tol_s if j < 2 else tol_v
+                        tp_ = tb
+                        for _ in range(12):
+                            tp_ *= 0.5
+                            bp = basis_values(m, tp_, cs, False)
+                            fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
+                                              dot(dc, bp), y, tp_,
+                                              cth * bp[2] - sth * bp[3],
+                                              sth * bp[2] + cth * bp[3])
+                            if fp > tl:
+                                fa = fp
+                                tq = tp_
+                                break
+                    if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
+                        groot[j] = 0.0  # at its event within round-off, and leaving
+                        best = 0.0
+                        scanned = True
+                    elif f <= 0.0 and fa > 0.0:
+                        r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                                          sth, tq, tb, fa, f)
+                        groot[j] = r
+                        if r < best:
+                            best = r
+                        scanned = True
+                    gprev[j] = f
+                if scanned:
+                    t_ev = best
+                t_b = tb
+                ta = tb
+        if rec is not None:
+            for i in range(M):
+                e_cur[i] = eh[i] + U if st[i] == STICK else 0.0
+            ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
+                                 t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e_cur,
+                                 y, hc, hs)
+        # advance to t_ev
+        if t_ev != t_b:
+            b = basis_values(m, t_ev, cs, False)
+        y1 = dot(c, b)
+        yd1 = dot(dc, b)
+        iy += _integral_b(c, m, t_ev, b)
+        fr0 += a_st * t_ev
+        fr1 += a_sl * t_ev
+        fr2 += (1.0 - a_st - a_sl) * t_ev
+        tau = theta + t_ev
+        U += y1 - y + V * t_ev  # the stuck springs' elongations follow
+        nf = 0
+        if scanned:
+            # the group(s) whose refined root is t_ev switch as a whole: collect them
+            # all first (the stuck cluster at the largest constant, towards positive
+            # slip before negative; every spring slipping one way), then switch
+            nb = 0
+            if groot[0] <= t_ev:
+                nb = _tree_collect(tp, P, cph - tol_c, stack, buf, nb, taken)
+            n0 = nb
+            for q in range(n0):
+                taken[buf[q]] = True
+            if groot[1] <= t_ev:
+                nb = _tree_collect(tm, P, cmh - tol_c, stack, buf, nb, taken)
+            for q in range(n0):
+                taken[buf[q]] = False
+            n1 = nb
+            if groot[2] <= t_ev:
+                for q in range(cnt[SLIP_POS]):
+                    buf[nb] = memb[SLIP_POS, q]
+                    nb += 1
+            n2 = nb
+            if groot[3] <= t_ev:
+                for q in range(cnt[SLIP_NEG]):
+                    buf[nb] = memb[SLIP_NEG, q]
+                    nb += 1
+            for q in range(nb):
+                i = buf[q]
+                if q < n0:
+                    _switch(i, SLIP_POS, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                            g, w, k, area)
+                elif q < n1:
+                    _switch(i, SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                            g, w, k, area)
+                else:
+                    n = w * (1.0 + a * (cth * b[2] - sth * b[3]) - g[i])
+                    sgn = 1.0 if q < n2 else -1.0
+                    _switch(i, STICK, sgn * max(n, 0.0) / k - U, st, eh, memb, cnt,
+                            pos, sums, tp, tm, P, g, w, k, area)
+                fl[nf] = i
+                nf += 1
+                events += 1
+        elif t_ev < TWO_PI - theta:
+            q = ptr
+            while q < nev and ev_ph[q] <= tau + tol_ev:
+                i = ev_i[q]
+                if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == OFF) == ev_on[q]:
+                    if ev_on[q]:
+                        rate = -w * a * (sth * b[2] + cth * b[3])
+                        xd = yd1 + V
+                        if k * abs(xd) <= rate:
+                            _switch(i, STICK, -U, st, eh, memb, cnt, pos, sums, tp, tm,
+                                    P, g, w, k, area)
+                        else:
+                            _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
+                                    memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+                    else:
+                        _switch(i, OFF, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                                g, w, k, area)
+                    fl[nf] = i
+                    nf += 1
+                    events += 1
+                q += 1
+        theta = tau if t_ev < TWO_PI - theta else TWO_PI
+        y = y1
+        yd = yd1
+    for i in range(M):  # the section's elongations
+        e[i] = eh[i] + U if st[i] == STICK else 0.0
+    frac[0] = fr0 / TWO_PI
+    frac[1] = fr1 / TWO_PI
+    frac[2] = fr2 / TWO_PI
+    return y, yd, iy, events, stuck_loop, ri, viol
+
+
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
                 state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None):
@@ -351,19 +842,14 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     ``X = c cos tau - d sin tau`` of the substrate or, ``holder != 0``, of the holder, for
     the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.
     """
-    g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
+    geo = _row_setup(a, n_exp, M)
+    scr = _scratch(M)
+    g, w, dxi = geo[0], geo[1], geo[2]
     k = (beta - alpha) * dxi
-    nint = normal_integral_row(a, g, w, tau_off)
-    tol_c = 1e-11 * w * (2.0 + a)
     pf = np.zeros(max_periods)
-    pn = np.full(max_periods, nint)
+    pn = np.full(max_periods, geo[6])
     frac = np.zeros(3)
     viol = -np.inf
-    fresh = np.zeros(M, dtype=np.bool_)
-    gprev = np.zeros(4)
-    groot = np.zeros(4)
-    gon = np.zeros(4, dtype=np.bool_)
-    gfresh = np.zeros(4, dtype=np.bool_)
     stuck_loop = False
     e_old = np.zeros(M)
     st_old = np.zeros(M, dtype=np.int64)
@@ -377,215 +863,13 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
         yd_old = yd
         e_old[:] = e
         st_old[:] = st
-        theta = 0.0
-        iy = 0.0
-        fr0 = 0.0
-        fr1 = 0.0
-        fr2 = 0.0
-        events = 0
-        fresh[:] = False
-        segments = 0
-        while theta < TWO_PI:
-            segments += 1
-            if segments > 200 * M + 1000:  # no progress: report, do not hang
-                stuck_loop = True
-                break
-            K = 0.0
-            E0 = 0.0
-            Sw = 0.0
-            Swg = 0.0
-            a_st = 0.0
-            a_sl = 0.0
-            cp = -np.inf
-            cm = -np.inf
-            gon[:] = False
-            for i in range(M):
-                s = st[i]
-                if s == STICK:
-                    K += k
-                    E0 += k * e[i]
-                    a_st += area[i]
-                    gon[0] = True
-                    gon[1] = True
-                    cp = max(cp, w * g[i] + k * e[i])
-                    cm = max(cm, w * g[i] - k * e[i])
-                elif s == SLIP_POS:
-                    Sw += w
-                    Swg += w * g[i]
-                    a_sl += area[i]
-                    gon[2] = True
-                elif s == SLIP_NEG:
-                    Sw -= w
-                    Swg -= w * g[i]
-                    a_sl += area[i]
-                    gon[3] = True
-            # a group that has just switched (its event function at 0 by construction)
-            gfresh[:] = False
-            for i in range(M):
-                if fresh[i]:
-                    s = st[i]
-                    if s == STICK:
-                        if w * g[i] + k * e[i] >= cp - tol_c:
-                            gfresh[0] = True
-                        if w * g[i] - k * e[i] >= cm - tol_c:
-                            gfresh[1] = True
-                    elif s == SLIP_POS:
-                        gfresh[2] = True
-                    elif s == SLIP_NEG:
-                        gfresh[3] = True
-            c, m = _segment(alpha, gamma, K, E0, y, yd, Sw, Swg, V, a, theta, hc, hs)
-            dc = derivative(c, m)
-            cs = c[6] != 0.0 or c[7] != 0.0
-            # the known contact events and the section bound the segment
-            T = TWO_PI - theta
-            for i in range(M):
-                if tau_off[i] < 0.0:
-                    continue
-                tt = tau_on[i] if st[i] == OFF else tau_off[i]
-                if tt > theta and tt - theta < T:
-                    T = tt - theta
-            # values at the start; a group at or past its event (not just switched)
-            # switches now
-            tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
-            tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
-            immediate = False
-            for j in range(4):
-                groot[j] = np.inf
-                if not gon[j]:
-                    continue
-                gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, theta)
-                tl = tol_s if j < 2 else tol_v
-                if not gfresh[j] and gprev[j] < -tl:
-                    groot[j] = 0.0
-                    immediate = True
-            t_ev = T
-            scanned = immediate
-            if scanned:
-                t_ev = 0.0
-            else:
-                h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
-                ta = 0.0
-                while ta < T and not scanned:
-                    tb = min(T, ta + h)
-                    b = basis_values(m, tb, cs, False)
-                    yb = dot(c, b)
-                    ydb = dot(dc, b)
-                    tau = theta + tb
-                    best = T
-                    for j in range(4):
-                        if not gon[j]:
-                            continue
-                        f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, tau)
-                        if j < 2 and f > 0.0 and -f > viol:
-                            viol = -f
-                        fa = gprev[j]
-                        tq = ta
-                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
-                            # a group that has just switched (its function at 0) can rise
-                            # and fall back within the first sub-step (a spring touching
-                            # down stuck, slipping again 0.002 later): a positive value
-                            # nearer the start brackets that root
-                            tl = tol_s if j < 2 else tol_v
-                            tp = tb
-                            for _ in range(12):
-                                tp *= 0.5
-                                bp = basis_values(m, tp, cs, False)
-                                fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
-                                                  dot(dc, bp), y, tp, theta + tp)
-                                if fp > tl:
-                                    fa = fp
-                                    tq = tp
-                                    break
-                        if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
-                            groot[j] = 0.0  # at its event within round-off, and leaving
-                            best = 0.0
-                            scanned = True
-                        elif f <= 0.0 and fa > 0.0:
-                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, theta,
-                                              tq, tb, fa, f)
-                            groot[j] = r
-                            if r < best:
-                                best = r
-                            scanned = True
-                        gprev[j] = f
-                    if scanned:
-                        t_ev = best
-                    ta = tb
-            if rec is not None:
-                ri = _record_segment(rec, ri, acc, c, dc, m, cs, TWO_PI * period + theta,
-                                     t_ev, theta, alpha, gamma, K, V, a, g, w, k, st, e, y,
-                                     hc, hs)
-            # advance to t_ev
-            b = basis_values(m, t_ev, cs, False)
-            y1 = dot(c, b)
-            yd1 = dot(dc, b)
-            iy += integral(c, m, t_ev)
-            fr0 += a_st * t_ev
-            fr1 += a_sl * t_ev
-            fr2 += (1.0 - a_st - a_sl) * t_ev
-            tau = theta + t_ev
-            u = y1 - y + V * t_ev
-            fresh[:] = False
-            if scanned:
-                # the group(s) whose refined root is t_ev switch as a whole
-                for i in range(M):
-                    s = st[i]
-                    if s == OFF:
-                        continue
-                    n = w * (1.0 + a * math.cos(tau) - g[i])
-                    if s == STICK:
-                        sw = 0
-                        if groot[0] <= t_ev and w * g[i] + k * e[i] >= cp - tol_c:
-                            sw = SLIP_POS
-                        elif groot[1] <= t_ev and w * g[i] - k * e[i] >= cm - tol_c:
-                            sw = SLIP_NEG
-                        e[i] = e[i] + u
-                        if sw != 0:
-                            st[i] = sw
-                            e[i] = 0.0
-                            fresh[i] = True
-                            events += 1
-                    elif (s == SLIP_POS and groot[2] <= t_ev) or \
-                            (s == SLIP_NEG and groot[3] <= t_ev):
-                        sgn = 1.0 if s == SLIP_POS else -1.0
-                        st[i] = STICK
-                        e[i] = sgn * max(n, 0.0) / k
-                        fresh[i] = True
-                        events += 1
-            else:
-                for i in range(M):
-                    if st[i] == STICK:
-                        e[i] = e[i] + u
-                if t_ev < TWO_PI - theta:
-                    for i in range(M):
-                        if tau_off[i] < 0.0:
-                            continue
-                        if st[i] == OFF:
-                            if abs(tau_on[i] - tau) <= 1e-13 * TWO_PI:
-                                rate = -w * a * math.sin(tau)
-                                xd = yd1 + V
-                                if k * abs(xd) <= rate:
-                                    st[i] = STICK
-                                else:
-                                    st[i] = SLIP_POS if xd > 0.0 else SLIP_NEG
-                                e[i] = 0.0
-                                fresh[i] = True
-                                events += 1
-                        elif abs(tau_off[i] - tau) <= 1e-13 * TWO_PI:
-                            st[i] = OFF
-                            e[i] = 0.0
-                            fresh[i] = True
-                            events += 1
-            theta = tau if t_ev < TWO_PI - theta else TWO_PI
-            y = y1
-            yd = yd1
+        y, yd, iy, events, stuck_loop, ri, viol = _period(
+            alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
+            frac, viol, rec, ri, acc)
         periods = period + 1
         if stuck_loop:
             break
         pf[period] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
-        frac[0] = fr0 / TWO_PI
-        frac[1] = fr1 / TWO_PI
-        frac[2] = fr2 / TWO_PI
         # section-state change
         scale_s = abs(y) + abs(yd) + 1e-300
         d = abs(y - y_old) + abs(yd - yd_old)
@@ -605,3 +889,124 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
             _record_state(rec, ri, acc, y, yd, rec[0][ri], 0.0, st, e, g, w, k, a)
             ri += 1
     return periods, converged, pf[:periods], pn[:periods], frac, viol, events, y, yd
+
+
+@jit
+def _anderson_step(xs, gs, nh, out):
+    """Anderson mixing (type II, no damping) from the ``nh`` iterates ``xs`` and their
+    images ``gs`` (rows, oldest first): the combination of the images whose residuals'
+    combination is smallest (least squares as ``numpy.linalg.lstsq``, ``rcond`` its
+    default); written to ``out``."""
+    n = xs.shape[1]
+    dF = np.empty((n, nh - 1))
+    for q in range(nh - 1):
+        for i in range(n):
+            dF[i, q] = (gs[q + 1, i] - xs[q + 1, i]) - (gs[q, i] - xs[q, i])
+    fl = np.empty(n)
+    for i in range(n):
+        fl[i] = gs[nh - 1, i] - xs[nh - 1, i]
+    coef = np.linalg.lstsq(dF, fl, rcond=np.finfo(np.float64).eps * max(n, nh - 1))[0]
+    for i in range(n):
+        v = gs[nh - 1, i]
+        for q in range(nh - 1):
+            v -= coef[q] * (gs[q + 1, i] - gs[q, i])
+        out[i] = v
+
+
+@jit
+def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_periods,
+               accelerate, anderson, accelerated_periods, y, yd, st, e, hc=0.0, hs=0.0):
+    """The row's steady state from the section state ``(y, y', st, e)`` (modified in
+    place): the period map iterated until the section state repeats within ``state_tol``
+    (relative), with ``accelerate`` first (for at most ``accelerated_periods``) with the
+    continuous part of the state (``y``, ``y'``, the stuck springs' elongations) updated by
+    Anderson mixing of the last ``anderson`` period maps once the springs' states at the
+    section repeat (a change of them restarts the history), then plain iteration (at
+    least 5 periods of it before convergence counts). The loop of
+    :func:`vibrofriction.solver.mdr.mdr_row`, compiled.
+
+    Returns ``(periods, converged, pf, nint, frac, viol, events, y, yd)``: the per-period
+    ``int sum f_i``, ``int sum n_i`` over a period, the last period's area fractions, the
+    largest ``|f_i| - n_i`` at the scan points, the last period's events (``-1``: no
+    progress) and the final body state."""
+    geo = _row_setup(a, n_exp, M)
+    scr = _scratch(M)
+    pf = np.zeros(max_periods)
+    frac = np.zeros(3)
+    viol = -np.inf
+    acc = np.zeros(N_REC - R_IF)
+    n = M + 2
+    xs = np.zeros((anderson, n))
+    gs = np.zeros((anderson, n))
+    x = np.zeros(n)
+    gx = np.zeros(n)
+    xn = np.zeros(n)
+    st_in = st.copy()
+    st_hist = st.copy()
+    e_old = np.zeros(M)
+    nh = 0
+    periods = 0
+    conv = False
+    events = 0
+    plain = 0  # periods of plain iteration
+    while periods < max_periods:
+        acc_phase = accelerate and periods < accelerated_periods
+        x[0] = y
+        x[1] = yd
+        x[2:] = e
+        st_in[:] = st
+        e_old[:] = e
+        y_old = y
+        yd_old = yd
+        y, yd, iy, events, stuck_loop, _, viol = _period(
+            alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, periods, y, yd, st, e,
+            frac, viol, None, 0, acc)
+        periods += 1
+        if stuck_loop:
+            events = -1
+            break
+        pf[periods - 1] = -(alpha * iy + gamma * (y - y_old) + (yd - yd_old))
+        gx[0] = y
+        gx[1] = yd
+        gx[2:] = e
+        same = True
+        for i in range(M):
+            if st[i] != st_in[i]:
+                same = False
+        scale = 1e-300
+        d = 0.0
+        for i in range(n):
+            scale += abs(gx[i])
+            d += abs(gx[i] - x[i])
+        if not acc_phase:
+            plain += 1
+            if same and d <= state_tol * scale and plain >= min(5, max_periods - periods
+                                                                 + plain):
+                conv = True
+                break
+            continue
+        if same and d <= state_tol * scale and periods >= 2:
+            conv = True
+            break
+        hist_same = True
+        for i in range(M):
+            if st[i] != st_hist[i]:
+                hist_same = False
+        if not (same and hist_same):
+            nh = 0
+            st_hist[:] = st
+        if nh == anderson:
+            for q in range(anderson - 1):
+                xs[q] = xs[q + 1]
+                gs[q] = gs[q + 1]
+            nh -= 1
+        xs[nh] = x
+        gs[nh] = gx
+        nh += 1
+        if nh >= 2 and same:
+            _anderson_step(xs, gs, nh, xn)
+            y = xn[0]
+            yd = xn[1]
+            for i in range(M):
+                e[i] = xn[2 + i] if st[i] == STICK else 0.0
+    return periods, conv, pf[:periods], geo[6], frac, viol, events, y, yd

@@ -15,13 +15,13 @@ from typing import Any
 
 import numpy as np
 
-from .._kernels.mdr import STICK, row_geometry, run_periods
+from .._kernels.mdr import STICK, row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 
 __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
-SUBSTEPS = 1024  # scan sub-steps a period: 64 and 256 miss grazing events (docs)
+SUBSTEPS = 1024  # the scan's floor of sub-steps a period (docs: grazing events)
 MAX_PERIODS = 4000
 AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
@@ -80,16 +80,6 @@ def _start(alpha: float, a: float, n_exp: float, M: int,
     return float(y), float(yd), st, e
 
 
-def _anderson_step(xs: list, gs: list) -> np.ndarray:
-    """Anderson mixing (type II, no damping) from the iterates ``xs`` and their images
-    ``gs``: the combination of the images whose residuals' combination is smallest."""
-    F = np.array([gx - x for x, gx in zip(xs, gs, strict=True)])
-    G = np.array(gs)
-    dF = np.diff(F, axis=0)
-    dG = np.diff(G, axis=0)
-    gamma, *_ = np.linalg.lstsq(dF.T, F[-1], rcond=None)
-    return G[-1] - gamma @ dG
-
 
 def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_exponent: float,
             n_springs: int, zeta: float = 0.0, state_tol: float = 1e-11,
@@ -123,53 +113,12 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     hc, hs = inplane_forcing(alpha, gamma, float(a_x), float(phase_x), on_substrate)
     y, yd, st, e = _start(alpha, a, n_exp, M, warm,
                           frame_offset(float(a_x), float(phase_x), on_substrate))
-    pfs: list[float] = []
-    pns: list[float] = []
-    periods, conv, events, frac, viol = 0, False, 0, np.zeros(3), -math.inf
-    xs: list[np.ndarray] = []
-    gs: list[np.ndarray] = []
-    st_hist = st.copy()
-    while accelerate and periods < max_periods:
-        x = np.concatenate(([y, yd], e))
-        st_in = st.copy()
-        p, c1, pf, pn, frac, v1, events, y, yd = run_periods(
-            alpha, beta, a, V, gamma, n_exp, M, substeps, 1, 1, state_tol, y, yd, st, e,
-            hc, hs)
-        periods += 1
-        viol = max(viol, v1)
-        if events < 0:
-            break
-        pfs.append(float(pf[-1]))
-        pns.append(float(pn[-1]))
-        gx = np.concatenate(([y, yd], e))
-        same = bool(np.array_equal(st, st_in))
-        scale = np.sum(np.abs(gx)) + 1e-300
-        if same and np.sum(np.abs(gx - x)) <= state_tol * scale and periods >= 2:
-            conv = True
-            break
-        if not (same and np.array_equal(st, st_hist)):
-            xs, gs = [], []
-            st_hist = st.copy()
-        xs.append(x)
-        gs.append(gx)
-        if len(xs) > ANDERSON:
-            xs.pop(0)
-            gs.pop(0)
-        if len(xs) >= 2 and same:
-            xn = _anderson_step(xs, gs)
-            y, yd = float(xn[0]), float(xn[1])
-            e[:] = np.where(st == STICK, xn[2:], 0.0)
-        if periods >= ACCELERATED_PERIODS:
-            break
-    if not conv and events >= 0:
-        p, conv, pf, pn, frac, v1, events, y, yd = run_periods(
-            alpha, beta, a, V, gamma, n_exp, M, substeps, min(5, max_periods - periods),
-            max_periods - periods, state_tol, y, yd, st, e, hc, hs)
-        periods += int(p)
-        viol = max(viol, v1)
-        pfs.extend(pf.tolist())
-        pns.extend(pn.tolist())
-    pf_a, pn_a = np.array(pfs), np.array(pns)
+    periods, conv, pf_a, nint, frac, viol, events, y, yd = steady_row(
+        alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_periods, accelerate,
+        ANDERSON, ACCELERATED_PERIODS, y, yd, st, e, hc, hs)
+    if events < 0:  # the last period did not finish
+        pf_a = pf_a[:-1]
+    pn_a = np.full(pf_a.size, nint)
     if events < 0:
         status, mu, err = "not converged", float(pf_a[-1] / pn_a[-1]) if periods > 1 \
             else math.nan, math.inf
@@ -183,7 +132,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
         m2 = np.sum(pf_a[-h:]) / np.sum(pn_a[-h:])
         status, err = "averaged", float(abs(m1 - m2)) + 1e-12
     return dict(mu_ratio=mu, error=err, status=status, periods=int(periods),
-                mean_normal_ratio=float(pn_a[-1] / (2.0 * math.pi)),
+                mean_normal_ratio=float(nint / (2.0 * math.pi)),
                 stick_fraction=float(frac[0]), slip_fraction=float(frac[1]),
                 out_of_contact_fraction=float(frac[2]), max_excess=float(viol),
                 events_per_period=int(events), n_springs=M, final_status=st.copy(),
