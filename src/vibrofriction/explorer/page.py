@@ -152,7 +152,7 @@ class Explorer:
                        for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
         self.profile = pn.widgets.RadioButtonGroup(
             options=_PROFILE_LABELS, value=profile_of(s.profile_exponent), width=330,
-            name="profile", css_classes=["vf-profile"])
+            label="profile", css_classes=["vf-profile"])
         self.profile.param.watch(self._profile_chosen, "value")
         self.profile_note = pn.pane.HTML("", styles=_NOTE_STYLE, visible=False, width=310,
                                          css_classes=["vf-profile-note"])
