@@ -1,5 +1,6 @@
-"""The README runs: its Python examples as doctests (each output checked, a number to
-the digits it shows) and its command lines against the command line's own options."""
+"""The README and docs/tour.md run: their Python examples as doctests (each output
+checked, a number to the digits it shows), and the README's command lines against the
+command line's own options."""
 
 from __future__ import annotations
 
@@ -10,14 +11,16 @@ from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+TOUR = ROOT / "docs" / "tour.md"
 FENCE = re.compile(r"^```(\w*)\n(.*?)^```", re.M | re.S)
 # a number not inside a name (u_z0, k_x) or a longer number
 NUMBER = re.compile(r"(?<![\w.])[-+]?(?:\d+\.\d*|\.\d+|\d+)(?:[eE][-+]?\d+)?(?![\w.])")
 
 
-def blocks(language: str) -> list[str]:
-    return [body for lang, body in FENCE.findall(README.read_text()) if lang == language]
+def blocks(language: str, page: Path = README) -> list[str]:
+    return [body for lang, body in FENCE.findall(page.read_text()) if lang == language]
 
 
 def _tolerance(shown: str) -> float:
@@ -44,29 +47,33 @@ class NumberChecker(doctest.OutputChecker):
         return super().check_output(want, NUMBER.sub(lambda m: next(it), got), optionflags)
 
 
-def test_every_python_block_is_a_doctest():
-    python = blocks("python")
-    assert python, "the README shows no Python"
+@pytest.mark.parametrize("page", [README, TOUR], ids=["README", "tour"])
+def test_every_python_block_is_a_doctest(page):
+    python = blocks("python", page)
+    assert python, f"{page.name} shows no Python"
     for body in python:
         first = next(line for line in body.splitlines() if line.strip())
         assert first.startswith(">>> "), f"not a doctest, so not checked: {first!r}"
 
 
-def test_readme_python_runs_and_prints_what_it_shows():
-    """All Python blocks in order in one namespace (``vf.design`` takes about 13 s)."""
+@pytest.mark.parametrize("page, least", [(README, 5), (TOUR, 20)], ids=["README", "tour"])
+def test_python_runs_and_prints_what_it_shows(page, least):
+    """All Python blocks of a page in order in one namespace (the tour's ``vf.design``
+    takes about 13 s)."""
     parser = doctest.DocTestParser()
     runner = doctest.DocTestRunner(
         checker=NumberChecker(), verbose=False,
         optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     namespace: dict = {}
     examples = 0
-    for k, body in enumerate(blocks("python")):
-        test = parser.get_doctest(body, namespace, f"README.md python block {k}", str(README), 0)
+    for k, body in enumerate(blocks("python", page)):
+        test = parser.get_doctest(body, namespace, f"{page.name} python block {k}", str(page),
+                                  0)
         examples += len(test.examples)
         runner.run(test, clear_globs=False)
     result = runner.summarize(verbose=False)
-    assert examples > 20
-    assert result.failed == 0, f"{result.failed} of {result.attempted} README examples failed"
+    assert examples > least
+    assert result.failed == 0, f"{result.failed} of {result.attempted} examples failed"
 
 
 # ------------------------------------------------------------------ command line
