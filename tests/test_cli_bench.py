@@ -104,3 +104,39 @@ def test_fit_from_the_command_line_refuses_a_parameter_a_constraint_holds(bench_
     assert "mass and k_x" in bad.stderr
     assert "--no-natural-frequency" in bad.stderr  # the flag that releases it, not the keyword
     assert "natural_frequency=False" not in bad.stderr
+
+
+@pytest.mark.parametrize("contact, free", [
+    ({"type": "sphere", "radius": 3e-3}, ["mu0", "mass", "radius"]),
+    ({"type": "cone", "slope": 20.0}, ["mu0", "mass", "E_star"])])
+def test_fit_command_passes_a_curved_contact_to_the_fit(tmp_path, monkeypatch, contact, free):
+    """A bench file with a curved MDR contact: the fit gets that contact (its geometry is
+    what is fitted, docs/bench.md) and, without --free, a free list it can fit."""
+    from typer.testing import CliRunner
+
+    import vibrofriction.bench as bench
+    from vibrofriction.cli import app
+    from vibrofriction.contact import Cone, Sphere
+
+    steel = {"E": 210e9, "nu": 0.3}
+    spec = dict(natural_frequency_hz=800, mass=0.02, normal_load=20, drive_frequency_hz=1000,
+                du_z=6e-7, mu0=0.3, contact_model="mdr",
+                contact={**contact, "pin": steel, "counterface": steel})
+    path = tmp_path / "bench.json"
+    path.write_text(json.dumps(spec))
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def fake_fit(data, guess, **kwargs):
+        seen.update(kwargs, guess=guess)
+        raise Stop
+
+    monkeypatch.setattr(bench, "fit", fake_fit)
+    run = CliRunner().invoke(app, ["fit", "data.csv", "--bench", str(path)])
+    assert isinstance(run.exception, Stop), run.output
+    assert seen["free"] == free and seen["guess"].curved
+    kind = Sphere if contact["type"] == "sphere" else Cone
+    assert isinstance(seen["contact"], kind)
+    assert seen["guess"] == vf.Physical.from_bench(**{**spec, "contact": seen["contact"]})

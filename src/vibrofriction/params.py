@@ -28,7 +28,8 @@ from vibrofriction.schema import NONNEGATIVE, PARAMETER, parameter_names
 from vibrofriction.validation import as_float_or_array, checked, checked_choice, validated
 
 __all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
-           "inertial_to_vbar", "inertial_velocity", "pin_damping", "vbar_to_inertial"]
+           "inertial_to_vbar", "inertial_velocity", "pin_damping", "read_bench_file",
+           "vbar_to_inertial"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -606,35 +607,9 @@ class Physical:
 
     @classmethod
     def from_bench_file(cls, path: str | os.PathLike) -> Physical:
-        """:meth:`from_bench` from a JSON file of its keyword arguments (docs/bench.md);
-        a contact geometry is ``{"type": "sphere" | "flat_punch", "radius": ..., "pin":
-        {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
-        ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``
-        instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact."""
-        import json
-
-        try:
-            spec = json.loads(Path(path).read_text())
-        except FileNotFoundError:
-            raise ValueError(f"no bench file {os.fspath(path)!r}") from None
-        except json.JSONDecodeError as exc:
-            raise ValueError(f"{os.fspath(path)!r} is not valid JSON: {exc}") from None
-        if not isinstance(spec, dict):
-            raise ValueError(f"{os.fspath(path)!r} must hold a JSON object")
-        contact = spec.pop("contact", None)
-        if contact is not None:
-            kinds = {"sphere": (Sphere, ("radius",)), "flat_punch": (FlatPunch, ("radius",)),
-                     "cone": (Cone, ("slope",)), "power_law": (PowerLaw, ("c", "n"))}
-            try:
-                kind, sizes = kinds[contact["type"]]
-                spec["contact"] = kind(*(float(contact[k]) for k in sizes),
-                                       Material(**contact["pin"]),
-                                       Material(**contact["counterface"]))
-            except (KeyError, TypeError) as exc:
-                raise ValueError(f"contact must be {{'type': 'sphere' | 'flat_punch', "
-                                 f"'radius', 'pin': {{'E', 'nu'}}, 'counterface': {{...}}}} "
-                                 f"(or 'type': 'cone' with 'slope', 'power_law' with 'c' "
-                                 f"and 'n'), got {contact!r} ({exc})") from None
+        """:meth:`from_bench` from a JSON file of its keyword arguments (docs/bench.md;
+        :func:`read_bench_file` reads it)."""
+        spec = read_bench_file(path)
         try:
             return cls.from_bench(**spec)
         except TypeError as exc:
@@ -878,3 +853,36 @@ def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
     dimensionless(system)
     assert v_inertial is not None  # the one velocity given
     return as_float_or_array(_valid_array("v_inertial", v_inertial))
+
+
+def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
+    """The keyword arguments of :meth:`Physical.from_bench` in a JSON file (docs/bench.md),
+    the contact geometry built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
+    ..., "pin": {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
+    ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``
+    instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact."""
+    import json
+
+    try:
+        spec = json.loads(Path(path).read_text())
+    except FileNotFoundError:
+        raise ValueError(f"no bench file {os.fspath(path)!r}") from None
+    except json.JSONDecodeError as exc:
+        raise ValueError(f"{os.fspath(path)!r} is not valid JSON: {exc}") from None
+    if not isinstance(spec, dict):
+        raise ValueError(f"{os.fspath(path)!r} must hold a JSON object")
+    contact = spec.pop("contact", None)
+    if contact is not None:
+        kinds = {"sphere": (Sphere, ("radius",)), "flat_punch": (FlatPunch, ("radius",)),
+                 "cone": (Cone, ("slope",)), "power_law": (PowerLaw, ("c", "n"))}
+        try:
+            kind, sizes = kinds[contact["type"]]
+            spec["contact"] = kind(*(float(contact[k]) for k in sizes),
+                                   Material(**contact["pin"]),
+                                   Material(**contact["counterface"]))
+        except (KeyError, TypeError) as exc:
+            raise ValueError(f"contact must be {{'type': 'sphere' | 'flat_punch', "
+                             f"'radius', 'pin': {{'E', 'nu'}}, 'counterface': {{...}}}} "
+                             f"(or 'type': 'cone' with 'slope', 'power_law' with 'c' "
+                             f"and 'n'), got {contact!r} ({exc})") from None
+    return spec

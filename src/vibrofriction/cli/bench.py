@@ -10,8 +10,9 @@ from typing import Annotated
 
 import typer
 
+from ..contact import FlatPunch, Sphere
 from ..figures import plot_design, plot_fit
-from ..params import Physical
+from ..params import Physical, read_bench_file
 from ._app import app, friendly, parse_float
 
 
@@ -40,8 +41,10 @@ def _range(text: str, name: str, scale: float = 1.0) -> tuple[float, float]:
 def fit_command(
     data: Annotated[str, typer.Argument(help="measurement table (CSV, docs/bench.md)")],
     bench: Annotated[str, typer.Option(help="bench file (JSON): the guess")],
-    free: Annotated[str, typer.Option(help="fields to fit, comma-separated")] =
-    "mu0,mass,k_xc,u_z0",
+    free: Annotated[str | None, typer.Option(
+        help="fields to fit, comma-separated (default mu0,mass,k_xc,u_z0; with a curved "
+             "MDR contact in the bench file mu0,mass,radius, or E_star for a cone or a "
+             "power law)")] = None,
     fix: Annotated[str | None, typer.Option(
         help="fields of the guess to set first: name=value,...")] = None,
     natural_frequency: Annotated[bool, typer.Option(
@@ -58,12 +61,20 @@ def fit_command(
     from ..bench import fit
 
     guess = Physical.from_bench_file(bench)
+    # a curved (MDR) contact is fitted through its geometry (docs/bench.md, "Fit and design
+    # with a curved contact"): the bench file's contact goes to the fit
+    contact = read_bench_file(bench).get("contact") if guess.curved else None
+    if free is None:
+        free = ("mu0,mass,k_xc,u_z0" if contact is None
+                else "mu0,mass," + ("radius" if isinstance(contact, Sphere | FlatPunch)
+                                    else "E_star"))
     if fix:
         guess = guess.with_(**_fixes(fix))
     try:
         res = fit(data, guess, free=[f.strip() for f in free.split(",") if f.strip()],
                   natural_frequency=natural_frequency, normal_load=normal_load,
-                  quality_factor=quality_factor, workers=workers, progress=progress)
+                  quality_factor=quality_factor, workers=workers, progress=progress,
+                  **({} if contact is None else {"contact": contact}))
     except ValueError as err:  # name the command line's flag, not the Python keyword
         raise ValueError(re.sub(r"\b(natural_frequency|normal_load|quality_factor)=False",
                                 lambda m: "--no-" + m.group(1).replace("_", "-"),
