@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from ..contact import Cone, FlatPunch, Material, PowerLaw, Sphere
 from ..params import Physical
@@ -70,6 +70,16 @@ def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
             groups[i] = groups[twin]
     groups.append(system.profile_exponent)  # the 13th argument of solve_points
     return tuple(np.broadcast_arrays(*(np.asarray(g, dtype=float) for g in groups)))
+
+
+def _rate(up: ArrayLike, down: ArrayLike) -> NDArray[np.float64]:
+    """The central difference ``(up - down)/(2 MAP_STEP)`` of one group of the map from
+    parameters to points; 0 where the group does not move (also where it is ``inf``: a
+    flat punch's ``profile_exponent``, a rigid contact's ``beta``)."""
+    a, b = np.asarray(up, dtype=float), np.asarray(down, dtype=float)
+    moved = a != b
+    return np.subtract(a, b, out=np.zeros(np.broadcast(a, b).shape), where=moved) \
+        / (2.0 * MAP_STEP)
 
 
 def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
@@ -367,8 +377,7 @@ class _Problem:
             if pu is None or pd_ is None:  # at the domain's edge: the solver's differences
                 rates.append(None)
                 continue
-            rates.append([(np.asarray(a, dtype=float) - np.asarray(b, dtype=float))
-                          / (2.0 * MAP_STEP) for a, b in zip(pu, pd_, strict=True)])
+            rates.append([_rate(a, b) for a, b in zip(pu, pd_, strict=True)])
         moving = tuple(k for i, k in enumerate(SENSITIVE)
                        if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
         solved = self._solve(ln, points)
