@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
+from reference_points import REGIMES, random_points
 from vibrofriction._kernels.integrate import initial_state
 from vibrofriction._kernels.phases import make_model
 from vibrofriction._kernels.steady import (
@@ -316,3 +317,20 @@ def test_work_counts_every_period_integrated():
     periodic = r["status"] == vf.Status.PERIODIC.code
     assert np.any(periodic)
     assert np.all(r["work"][periodic] >= r["periods"][periodic] + r["period"][periodic])
+
+
+# ----------------------------------------------------------------- Newton's early answer
+@pytest.mark.parametrize("regime", REGIMES)
+def test_newton_error_bounds_the_distance_to_the_orbit_solved_to_round_off(regime):
+    """Newton's orbit is accepted at a residual of ``tol_state / 10``, or one period map
+    earlier with the mean corrected to first order (``newton.newton_orbit``): its stated
+    error bounds the distance to the same orbit solved a thousand times tighter."""
+    tight = vf.SolverSettings(tol_state=1e-13)
+    for alpha, beta, a, V in random_points(1907, 4, regime):
+        s = vf.Dimensionless(alpha, beta, a)
+        r = vf.friction_coefficient(s, v_inertial=V)
+        if r.status is not vf.Status.PERIODIC:
+            continue
+        t = vf.friction_coefficient(s, v_inertial=V, settings=tight)
+        assert t.status is vf.Status.PERIODIC
+        assert abs(r.mu_ratio - t.mu_ratio) <= r.error + t.error, (alpha, beta, a, V)

@@ -20,7 +20,12 @@ NEWTON_ITERATIONS = 12  # Newton steps per attempt
 # p > 1 is tried where its section distance is this far below p = 1's (and below
 # PERIOD_EVIDENCE itself where p = 1's is large or inf: a change of phase)
 PERIOD_EVIDENCE = 0.1
-STEP_LIMIT = 0.1  # a Newton step moves the body by at most this fraction of the state's size
+# a Newton step moves the body by at most STEP_LIMIT times the state's size, or AMPLIFY
+# times the residual where that is longer: a step that the linearisation scales up
+# little from the residual is taken whole (a well-conditioned contraction), a long one
+# of a nearly neutral map is cut
+STEP_LIMIT = 0.1
+AMPLIFY = 3.0
 MAX_CHARTS = 2  # changes of chart per attempt: more is an iterate wandering between phases
 NEWTON_DIVERGED = 100.0  # a Newton iterate this far (relative) from its start has diverged
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
@@ -86,6 +91,19 @@ def _solve_small(m, r, nd):
 
 
 @jit
+def _step(z, dz, nd, limit, alpha):
+    """``z += cut dz``, the Newton step ``dz`` cut so that it moves the body ``(y, x')`` by
+    at most ``limit``, as the divergence guard watches it; ``e`` is not limited (at
+    ``beta = 1e6`` a step of 300 ``n/k`` in ``e`` is normal and comes back).  Returns
+    ``cut``."""
+    body = alpha * abs(dz[0]) + (abs(dz[1]) if nd > 1 else 0.0)
+    cut = min(1.0, limit / body) if body > 0.0 else 1.0
+    for j in range(nd):
+        z[j] += cut * dz[j]
+    return cut
+
+
+@jit
 def spectral_radius(J, nd):
     """Largest modulus of the eigenvalues of ``J[:nd, :nd]`` (the Floquet multipliers)."""
     for i in range(nd):
@@ -108,9 +126,11 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     (:func:`.steady._run`).  An iterate whose image is in another phase on the section
     (the orbit sticks at ``tau = 2 pi k`` where the guess slid, or vice versa) continues
     in that phase's coordinates, twice at most (:data:`MAX_CHARTS`).  A step moves the
-    body by at most :data:`STEP_LIMIT` of the state's size (a long one leaves the piece
-    of the map it was linearised on); the iterate that strays :data:`NEWTON_DIVERGED`
-    times that size from the start has diverged.
+    body by at most :data:`STEP_LIMIT` of the state's size (a long one of a nearly
+    neutral map leaves the piece of the map it was linearised on), or by up to
+    :data:`AMPLIFY` times the residual, where that is longer (the step of a
+    well-conditioned contraction, taken whole); the iterate that strays
+    :data:`NEWTON_DIVERGED` times the state's size from the start has diverged.
 
     Returns ``(ok, y, x', e, phase, events, work, lam, shift, mu_first, mu)``: on success
     the orbit's section state, ``acc`` the accumulators of ``p`` periods from the accepted
@@ -126,10 +146,12 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     more, ``rho = |dz| / |dz_prev|``) an iterate is accepted one map earlier, where the
     next residual, about ``rho^2 |dz|``, would be within ``tol`` and the bound below is
     within ``EARLY_ERROR``: the state is ``z + dz``, ``mu`` the window mean plus
-    ``G . dz / int n``, and ``shift = |R| rho^2 + |G . dz / int n| rho``, ``R`` the error of
-    the previous iterate's first-order prediction of this window mean (the second-order
-    remainder, which scales as ``|dz|^2``).  The phase-time fractions of ``acc`` are then
-    those of the iterate, within about ``|dz|`` of the orbit's.
+    ``G . dz / int n``, and ``shift = |R| rho^2 + rho sum_j |G_j dz_j| / int n``, ``R`` the
+    error of the previous iterate's first-order prediction of this window mean (the
+    second-order remainder, which scales as ``|dz|^2``); the sum of moduli, not the
+    modulus of the sum, as the terms of the next step need not cancel as this one's do.
+    The phase-time fractions of ``acc`` are then those of the iterate, within about
+    ``|dz|`` of the orbit's.
     """
     ph_in = ph
     alpha = M[M_ALPHA]
@@ -189,8 +211,9 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
         rho = dzn / dzn_prev
         converged = res <= tol * scale0
         # one step early: in the quadratic regime the orbit is z + dz to ~rho^2 |dz|, and
-        # its mean mu + corr to ~|R| rho^2, R the remainder of the previous prediction
-        bound = abs(mu - predicted) * rho * rho + abs(corr) * rho
+        # its mean mu + corr to ~|R| rho^2 (R the remainder of the previous prediction)
+        # plus the next step's first-order term, bounded by rho sum |G_j dz_j|
+        bound = abs(mu - predicted) * rho * rho + shift * rho
         early = (not converged and rho <= QUADRATIC and dzn * rho * rho <= tol * scale0
                  and bound <= EARLY_ERROR)
         if converged or early:
@@ -207,14 +230,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             return True, y0, xd0, e0, ph, events, work, lam, bound, mu_first, mu + corr
         predicted = mu + corr
         dzn_prev = dzn
-        # the step of the body (y, x') is limited, as the divergence guard watches it: a
-        # long one leaves the piece of the map it was linearised on; e is not (at
-        # beta = 1e6 a step of 300 n/k in e is normal and comes back)
-        body = alpha * abs(dz[0]) + (abs(dz[1]) if nd > 1 else 0.0)
-        cut = min(1.0, STEP_LIMIT * scale0 / body) if body > 0.0 else 1.0
-        for j in range(nd):
-            z[j] += cut * dz[j]
-        if cut < 1.0:
+        if _step(z, dz, nd, max(STEP_LIMIT * scale0, AMPLIFY * res), alpha) < 1.0:
             dzn_prev, predicted = math.inf, math.nan
     return False, y, xd, e, ph_in, events, work, math.nan, math.nan, mu_first, math.nan
 
