@@ -67,17 +67,21 @@ def table(rows: list[dict], commit: str) -> str:
         lines.append(f"| {w['point']} | {w['zeta']:g} | {w['eta_c']:g} | {w['status']} | "
                      f"{p} | {w['periods']} | {w['work']:g} | {per} |")
     undamped = [w for w in rows if w["zeta"] == 0.0 and w["eta_c"] == 0.0]
+    works = [w["work"] for w in rows]
     lines += ["", "| commit | points | median work / p | median work (drive periods) | "
-              "undamped: median work / p |", "|---|---|---|---|---|",
+              "undamped: median work / p | points at most 5 | total work |",
+              "|---|---|---|---|---|---|---|",
               f"| {commit} | {len(rows)} | {_median([w['per_orbit'] for w in rows]):.1f} | "
-              f"{_median([w['work'] for w in rows]):.1f} | "
-              f"{_median([w['per_orbit'] for w in undamped]):.1f} |"]
+              f"{_median(works):.1f} | "
+              f"{_median([w['per_orbit'] for w in undamped]):.1f} | "
+              f"{sum(w <= 5 for w in works)} | {sum(works):g} |"]
     return "\n".join(lines)
 
 
 def main() -> None:
+    # the commit of the package measured (PYTHONPATH may point at another checkout)
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True, cwd=HERE).stdout.strip()
+                            text=True, cwd=Path(vf.__file__).parent).stdout.strip()
     text = table(measure(), commit)
     if not RESULTS.exists():
         RESULTS.write_text(
