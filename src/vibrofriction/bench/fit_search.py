@@ -5,9 +5,10 @@ second global stage when the first is not clearly good; where the time went (:cl
 from __future__ import annotations
 
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from typing import Any
 
 import lmfit
@@ -27,12 +28,6 @@ LOCAL_BUDGET = 60
 #: Tasks per process of a generation of the global stage (:meth:`_Problem.costs`): the
 #: cost of a point varies tenfold, so a few interleaved tasks each even the load out.
 CHUNKS = 4
-#: Points of a screening evaluated together (a generation: one call of
-#: :meth:`_Problem.costs`, one tick of the progress bar).
-GENERATION = 128
-#: Two samples of a screening start separate local fits if they are this far apart (a
-#: fraction of the search range) in some parameter.
-SEPARATION = 0.05
 
 
 @dataclass
@@ -54,27 +49,13 @@ class _Stages:
         return sum(r["evaluations"] for r in self.rows)
 
 
-@dataclass
-class _Found:
-    """What a global stage found: its points in ``ln`` (best first), their coarse
-    chi-squares, the model evaluations it spent, and whether the best point is itself
-    a minimum (differential evolution's converged population) or only a sample."""
-
-    points: NDArray[np.float64]
-    costs: NDArray[np.float64]
-    evaluations: int
-    minimum: bool
-
-
-def _search(problem: _Problem, bounds, x0: NDArray, map_, stages: _Stages, how: str,
-            size: tuple[int, ...], seed: int, progress: bool, first: int):
-    """The global stage (:func:`_global_stage`, ``how``: ``"screening"`` or
-    ``"evolution"``), then least squares from its best distinct points, ``first`` of
-    them before the others.  A first global stage that is not clearly good
-    (:func:`_poor`: a converged population's best, or the first starts), is followed by a
-    second one (another seed) before its remaining starts are tried: a wrong valley is
-    left rather than explored.  The best fit and the local minima reached (chi-square,
-    point)."""
+def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _Stages,
+            maxiter: int, popsize: int, seed: int, progress: bool, first: int):
+    """The global stage, then least squares from its best distinct points, ``first`` of
+    them before the others.  A first global stage that is not clearly good (:func:`_poor`), or
+    whose first starts do, is followed by a second one (another seed) before its
+    remaining starts are tried: a wrong valley is left rather than explored.  The best
+    fit and the local minima reached (chi-square, point)."""
     # out: the best lmfit result so far, set by polish below
     out: Any = None
     minima: list[Any] = []
@@ -89,15 +70,14 @@ def _search(problem: _Problem, bounds, x0: NDArray, map_, stages: _Stages, how: 
             out = found
 
     coarse = problem.coarse()
-    count = CURVED_STARTS if problem.curved else STARTS
     for attempt in range(2):
         last = attempt == 1
         with stages.timed("global") as row:
-            found = _global_stage(coarse, bounds, x0, how, size, seed + attempt, map_,
-                                  progress, first)
-            row["evaluations"] = found.evaluations
-        starts = _distinct_starts(found, bounds, count)
-        if not last and found.minimum and _poor(coarse, float(found.costs[0])):
+            de = _global_stage(coarse, bounds, x0, maxiter, popsize, seed + attempt,
+                               de_workers, progress, first)
+            row["evaluations"] = int(de.nfev) * (1 if de_workers == 1 else len(de.population))
+        starts = _distinct_starts(de, x0, CURVED_STARTS if problem.curved else STARTS)
+        if not last and _poor(coarse, float(de.fun)):
             deferred = starts
             continue
         polish(starts[:first])
@@ -113,59 +93,28 @@ def _search(problem: _Problem, bounds, x0: NDArray, map_, stages: _Stages, how: 
     return out, minima
 
 
-def _global_stage(problem: _Problem, bounds, x0: NDArray, how: str, size: tuple[int, ...],
-                  seed: int, map_, progress: bool, cores: int = 1) -> _Found:
-    """The global stage over ``ln`` of the free parameters, on ``problem`` (the coarse
-    one), its generations evaluated together (:meth:`_Problem.costs`: on ``map_``
-    (``workers`` > 1) in :data:`CHUNKS` tasks per core, or here; one task per member
-    would cost a pickled problem and a round trip each).  ``how``:
-
-    * ``"screening"``: ``size = (samples,)`` points of a scrambled Sobol sequence in
-      ``bounds`` (the guess ``x0`` the first), in generations of :data:`GENERATION`;
-    * ``"evolution"``: ``size = (maxiter, popsize)``,
-      :func:`scipy.optimize.differential_evolution` from a Sobol sample that includes
-      the guess."""
+def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
+                  seed: int, workers, progress: bool, cores: int = 1):
+    """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
+    that includes the guess; ``workers``: 1 (in this process) or the pool's map over
+    ``cores`` processes, to which each generation goes at once (:meth:`_Problem.costs`:
+    one task per member would cost a pickled problem and a round trip each, and left
+    the second core idle half the time)."""
+    from scipy.optimize import differential_evolution
     from tqdm.auto import tqdm
 
-    chunks = CHUNKS * cores if map_ is not _serial else 1
-
-    def costs(population: NDArray) -> NDArray[np.float64]:  # (free, members)
-        return problem.costs(population, map_=map_, chunks=chunks)
-
-    lo, hi = np.array(bounds, dtype=float).T
-    if how == "screening":
-        from scipy.stats import qmc
-
-        (samples,) = size
-        points = qmc.scale(qmc.Sobol(len(x0), scramble=True, seed=seed).random(samples),
-                           lo, hi)
-        points[0] = np.clip(x0, lo, hi)
-        values = np.empty(samples)
-        with tqdm(total=samples, desc="fit: global stage", unit="pt",
-                  disable=not progress) as bar:
-            for i in range(0, samples, GENERATION):
-                values[i:i + GENERATION] = costs(points[i:i + GENERATION].T)
-                bar.update(min(GENERATION, samples - i))
-        order = np.argsort(values, kind="stable")
-        return _Found(points[order], values[order], samples, minimum=False)
-    from scipy.optimize import differential_evolution
-
-    maxiter, popsize = size
+    cost: Callable[..., Any]
+    how: dict[str, Any]
+    if workers == 1:
+        cost, how = problem.cost, {"updating": "immediate"}
+    else:  # a generation's members solved together, in CHUNKS tasks per worker
+        cost = partial(problem.costs, map_=workers, chunks=CHUNKS * cores)
+        how = {"updating": "deferred", "vectorized": True}
     with tqdm(total=maxiter, desc="fit: global stage", unit="gen",
               disable=not progress) as bar:
-        de = differential_evolution(
-            costs, bounds, maxiter=maxiter, popsize=popsize, seed=seed, polish=False,
-            init="sobol", x0=x0, tol=0.0, updating="deferred", vectorized=True,
-            callback=lambda *a, **k: _tick(bar))
-    order = np.argsort(de.population_energies, kind="stable")
-    return _Found(np.asarray(de.population, dtype=float)[order],
-                  np.asarray(de.population_energies, dtype=float)[order],
-                  int(de.nfev) * len(de.population), minimum=True)
-
-
-def _serial(func, items):
-    """A map in this process (``workers=1``)."""
-    return [func(item) for item in items]
+        return differential_evolution(
+            cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed, polish=False,
+            init="sobol", x0=x0, tol=0.0, callback=lambda *a, **k: _tick(bar), **how)
 
 
 def _poor(problem: _Problem, chisqr: float) -> bool:
@@ -174,19 +123,15 @@ def _poor(problem: _Problem, chisqr: float) -> bool:
     return problem.weighted and _p_value(problem, chisqr) < DOUBTFUL_P
 
 
-def _distinct_starts(found: _Found, bounds, count: int) -> list[NDArray]:
-    """The global stage's best point, then its next best ones apart from each in some
-    parameter: by :data:`SEPARATION` of the search range for a screening's samples
-    (neighbours in one valley lead to one minimum), by ``1e-3`` in ``ln`` for a converged
-    population's members."""
-    width = np.ptp(np.array(bounds, dtype=float), axis=1)
-    apart = 1e-3 / width if found.minimum else SEPARATION
-    starts: list[NDArray] = []
-    for x in found.points:
+def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
+    """The global stage's best point, then its next best distinct population members."""
+    starts = [np.asarray(de.x, dtype=float)]
+    for i in np.argsort(de.population_energies):
+        x = np.asarray(de.population[i], dtype=float)
         if len(starts) == count:
             break
-        if all(np.max(np.abs(x - y) / width) > apart for y in starts):
-            starts.append(np.array(x, dtype=float))
+        if all(np.max(np.abs(x - y)) > 1e-3 for y in starts):
+            starts.append(x)
     return starts
 
 

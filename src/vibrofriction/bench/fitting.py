@@ -89,7 +89,7 @@ from .fit_problem import (
     synthetic_measurements,
 )
 from .fit_result import FitResult, _judge
-from .fit_search import _ln, _local_fit, _search, _serial, _Stages
+from .fit_search import _ln, _local_fit, _search, _Stages
 from .fit_uncertainty import _identifiability, _physical_params, _profile_warnings, _uncertainties
 from .measurements import read_measurements
 
@@ -97,13 +97,13 @@ from .measurements import read_measurements
 #: three times faster than the default 1e-5, and its error (``mu0 1e-4`` in the COF) is
 #: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
 CURVED_TOL = 1e-4
-#: The global stage's points without ``samples`` (``global_stage="screening"``, the
-#: default): a flat punch's, and a curved contact's (the MDR solver is ~30 times slower a
-#: point: a shorter stage).
-SCREENING = 1024
-CURVED_SCREENING = 128
-#: ``maxiter`` and ``popsize`` of ``global_stage="evolution"`` without them, the same two.
-GLOBAL_STAGE = (60, 12)
+#: The global stage's ``maxiter`` and ``popsize`` without them: a flat punch's, and a
+#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).  A
+#: flat punch's population is 6 per free parameter (32 members for 4 or 5, Sobol's power
+#: of 2): half the evaluations of 12, the same minima on the data sets of
+#: benchmarks/bench_fit.py (benchmarks/results/fit.md); the generations, not the
+#: members, find the narrow valleys (20 generations of 64 missed them).
+GLOBAL_STAGE = (60, 6)
 CURVED_GLOBAL_STAGE = (20, 8)
 
 __all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "fit", "predict_cof",
@@ -113,8 +113,8 @@ __all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "fit", "pr
 def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tuple[str, ...] = (
         "mu0", "mass", "k_xc", "u_z0"), *, natural_frequency: bool = True,
         normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
-        global_stage: bool | str = True, samples: int | None = None,
-        maxiter: int | None = None, popsize: int | None = None, seed: int = 0,
+        global_stage: bool = True, maxiter: int | None = None, popsize: int | None = None,
+        seed: int = 0,
         workers: int = 1, progress: bool = True,
         settings: SolverSettings | None = None, jacobian: str = "exact",
         contact: Contact | None = None) -> FitResult:
@@ -124,17 +124,13 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     path).  ``natural_frequency``, ``normal_load``, ``quality_factor``: the constraints
     (module docstring); a parameter in ``free`` that one of them would hold is refused,
     naming the keyword that releases it.  ``span``: each free parameter is searched
-    within a factor ``span`` of the guess (``mu0`` as well).  ``global_stage``: the
-    global stage (on every other row of a table of 20 rows or more) before the local
-    starts: ``True`` or ``"screening"``, ``samples`` points of a scrambled Sobol sequence
-    (default :data:`SCREENING`, :data:`CURVED_SCREENING` for a curved contact);
-    ``"evolution"``, :func:`scipy.optimize.differential_evolution` with ``maxiter``,
-    ``popsize`` (default :data:`GLOBAL_STAGE`, :data:`CURVED_GLOBAL_STAGE`); ``False``:
-    none, the local fit from the guess.  ``seed``: the global stage's.  ``workers``:
-    processes for the global stage, the local starts and the profiles (``-1``: every
-    core), from the package's one pool (:mod:`vibrofriction.parallel`, forkserver
-    workers that die with their parent): a script that fits with ``workers != 1`` runs
-    the fit under
+    within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``
+    (default :data:`GLOBAL_STAGE`, :data:`CURVED_GLOBAL_STAGE` for a curved contact),
+    ``seed``: the global stage (:func:`scipy.optimize.differential_evolution`, on every
+    other row of a table of 20 rows or more).  ``workers``: processes for the global
+    stage, the local starts and the profiles (``-1``: every core), from the package's one
+    pool (:mod:`vibrofriction.parallel`, forkserver workers that die with their parent):
+    a script that fits with ``workers != 1`` runs the fit under
     ``if __name__ == "__main__":``.
     ``jacobian``: the local least squares' Jacobian, ``"exact"`` (the sensitivities of
     the steady state, :meth:`_Problem.jacobian`; differences of the solver only at the
@@ -156,7 +152,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     _check_contact(guess, contact, free)
     if guess.curved and settings is None:
         settings = SolverSettings(tol_trusted=CURVED_TOL)
-    how, size = _global_size(global_stage, guess.curved, samples, maxiter, popsize)
+    stage = CURVED_GLOBAL_STAGE if guess.curved else GLOBAL_STAGE
+    maxiter = stage[0] if maxiter is None else maxiter
+    popsize = stage[1] if popsize is None else popsize
     for n in free:
         if n in CONTACT_FITTABLE:  # k_zc, k_xc, u_z0 follow it: ln y = p ln x + const
             assert contact is not None  # a contact parameter without contact= is refused
@@ -174,9 +172,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     workers = workers if workers >= 1 else available_cores()
     stages = _Stages()
     with mapper(workers) as map_:
-        if how:
-            out, minima = _search(problem, bounds, x0, map_ if workers != 1 else _serial,
-                                  stages, how, size, seed, progress, workers)
+        if global_stage:
+            out, minima = _search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
+                                  stages, maxiter, popsize, seed, progress, workers)
         else:
             with stages.timed("local") as row:
                 out, minima, row["evaluations"] = _local_fit(problem, [x0], bounds, map_)
@@ -186,26 +184,6 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     res.nfev, res.seconds = stages.nfev, time.perf_counter() - t0
     res.extra.update(local_minima=[float(m[0]) for m in minima], stages=stages.rows)
     return res
-
-
-def _global_size(global_stage: bool | str, curved: bool, samples: int | None,
-                 maxiter: int | None, popsize: int | None) -> tuple[str, tuple[int, ...]]:
-    """The global stage's kind (``""``: none) and size, the options checked against it."""
-    how = "screening" if global_stage is True else global_stage or ""
-    if how not in ("screening", "evolution", ""):
-        raise ValueError(f"global_stage must be True, False, 'screening' or 'evolution', "
-                         f"got {global_stage!r}")
-    if how != "evolution" and (maxiter is not None or popsize is not None):
-        raise ValueError("maxiter and popsize size differential evolution: pass "
-                         "global_stage='evolution' with them, or samples= for the screening")
-    if how != "screening" and samples is not None:
-        raise ValueError("samples sizes the screening (global_stage=True or 'screening')")
-    if how == "screening":
-        return how, ((CURVED_SCREENING if curved else SCREENING) if samples is None
-                     else samples,)
-    stage = CURVED_GLOBAL_STAGE if curved else GLOBAL_STAGE
-    return how, (stage[0] if maxiter is None else maxiter,
-                 stage[1] if popsize is None else popsize)
 
 
 def _result(problem: _Problem, out, bounds, tied, dists, lower) -> FitResult:
