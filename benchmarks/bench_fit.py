@@ -11,13 +11,13 @@ Each is run once on each of four data sets (noise seeds): the time depends on th
 (a first global stage that ends in a wrong valley is followed by a second).
 
 Each fit is run with each population of the global stage of ``--popsize``
-(differential evolution's ``popsize``: 6 the default, 12 the default before) and each
+(differential evolution's ``popsize``; 12, the default) and each
 local Jacobian of ``--jacobian`` (``exact``: the steady state's sensitivities;
 ``differences``: lmfit's), interleaved per data set so that the machine's load hits
 them alike.
 
 Run:  python benchmarks/bench_fit.py [--data-seeds 11,12,13,14] [--workers 2]
-      [--popsize 12,6] [--jacobian exact,differences]
+      [--popsize 12,6] [--jacobian exact,differences] [--calls 4,5]
 Writes benchmarks/results/fit.md: this run on top, the runs before it below.
 """
 
@@ -69,11 +69,13 @@ def main() -> None:
     ap.add_argument("--data-seeds", default="11,12,13,14",
                     help="noise seeds of the data sets, one fit of each per call")
     ap.add_argument("--workers", type=int, default=2)
-    ap.add_argument("--popsize", default="12,6",
+    ap.add_argument("--popsize", default="12",
                     help="the global stage's populations compared, interleaved per data set")
     ap.add_argument("--jacobian", default="exact",
                     help="the local stages' Jacobians compared, interleaved per data set")
+    ap.add_argument("--calls", default="4,5", help="the calls timed, by their varied count")
     args = ap.parse_args()
+    calls = {k: v for k, v in CALLS.items() if k[0] in args.calls.split(",")}
     variants = [(int(g), j) for g in args.popsize.split(",") for j in args.jacobian.split(",")]
     seeds = [int(x) for x in args.data_seeds.split(",")]
     tables = {k: data(np.random.default_rng(k)) for k in seeds}
@@ -91,7 +93,7 @@ def main() -> None:
              "global stages |", "|---|---|---|---|---|---|"]
     detail = []
     truth = ", ".join(f"{n} {getattr(TRUE, n):.4g}" for n in FREE)
-    for name, (guess, kwargs) in CALLS.items():
+    for name, (guess, kwargs) in calls.items():
         times = {v: [] for v in variants}
         verdicts = {v: [] for v in variants}
         stages = {v: [] for v in variants}

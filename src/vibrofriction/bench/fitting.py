@@ -98,12 +98,8 @@ from .measurements import read_measurements
 #: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
 CURVED_TOL = 1e-4
 #: The global stage's ``maxiter`` and ``popsize`` without them: a flat punch's, and a
-#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).  A
-#: flat punch's population is 6 per free parameter (32 members for 4 or 5, Sobol's power
-#: of 2): half the evaluations of 12, the same minima on the data sets of
-#: benchmarks/bench_fit.py (benchmarks/results/fit.md); the generations, not the
-#: members, find the narrow valleys (20 generations of 64 missed them).
-GLOBAL_STAGE = (60, 6)
+#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).
+GLOBAL_STAGE = (60, 12)
 CURVED_GLOBAL_STAGE = (20, 8)
 
 __all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "fit", "predict_cof",
