@@ -10,13 +10,15 @@ k_xc = 1.5e7 N/m, 20 N; noise 0.003 in the COF) from the same poor guess:
 Each is run once on each of four data sets (noise seeds): the time depends on the data
 (a first global stage that ends in a wrong valley is followed by a second).
 
-Each fit is run with the local stages' exact Jacobian (the steady state's sensitivities,
-``jacobian="exact"``) and with lmfit's differences (``"differences"``), side by side in
-the same run (``--jacobian`` picks one or both).
+Each fit is run with each population of the global stage of ``--popsize``
+(differential evolution's ``popsize``; 12, the default) and each
+local Jacobian of ``--jacobian`` (``exact``: the steady state's sensitivities;
+``differences``: lmfit's), interleaved per data set so that the machine's load hits
+them alike.
 
 Run:  python benchmarks/bench_fit.py [--data-seeds 11,12,13,14] [--workers 2]
-      [--jacobian exact,differences]
-Writes benchmarks/results/fit.md.
+      [--popsize 12,6] [--jacobian exact,differences] [--calls 4,5]
+Writes benchmarks/results/fit.md: this run on top, the runs before it below.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ import datetime
 import os
 import platform
 import statistics
+import subprocess
 import time
 from pathlib import Path
 
@@ -57,21 +60,32 @@ def data(rng: np.random.Generator) -> pd.DataFrame:
                                   0.003, rng)
 
 
+def _label(variant: tuple[int, str]) -> str:
+    return f"popsize {variant[0]}, {variant[1]} Jacobian"
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--data-seeds", default="11,12,13,14",
                     help="noise seeds of the data sets, one fit of each per call")
     ap.add_argument("--workers", type=int, default=2)
-    ap.add_argument("--jacobian", default="exact,differences",
+    ap.add_argument("--popsize", default="12",
+                    help="the global stage's populations compared, interleaved per data set")
+    ap.add_argument("--jacobian", default="exact",
                     help="the local stages' Jacobians compared, interleaved per data set")
+    ap.add_argument("--calls", default="4,5", help="the calls timed, by their varied count")
     args = ap.parse_args()
-    jacobians = args.jacobian.split(",")
+    calls = {k: v for k, v in CALLS.items() if k[0] in args.calls.split(",")}
+    variants = [(int(g), j) for g in args.popsize.split(",") for j in args.jacobian.split(",")]
     seeds = [int(x) for x in args.data_seeds.split(",")]
     tables = {k: data(np.random.default_rng(k)) for k in seeds}
     vf.fit(tables[seeds[0]].head(6), TRUE, free=["mu0"], global_stage=False,
            progress=False)  # warm-up
+    load = os.getloadavg()[0]
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=HERE,
+                            capture_output=True, text=True).stdout.strip()
     lines = [f"# Fit time ({datetime.date.today()}, {platform.processor() or platform.machine()},"
-             f" {os.cpu_count()} cores, workers={args.workers})", "",
+             f" {os.cpu_count()} cores, workers={args.workers}, commit {commit})", "",
              "`python benchmarks/bench_fit.py`: 60 points (3 amplitudes x 20 velocities, noise "
              "0.003), the pin of tests/test_fit.py, from a poor guess; one fit per data set "
              f"(noise seeds {', '.join(map(str, seeds))}).", "",
@@ -79,37 +93,41 @@ def main() -> None:
              "global stages |", "|---|---|---|---|---|---|"]
     detail = []
     truth = ", ".join(f"{n} {getattr(TRUE, n):.4g}" for n in FREE)
-    for name, (guess, kwargs) in CALLS.items():
-        times = {j: [] for j in jacobians}
-        verdicts = {j: [] for j in jacobians}
-        stages = {j: [] for j in jacobians}
+    for name, (guess, kwargs) in calls.items():
+        times = {v: [] for v in variants}
+        verdicts = {v: [] for v in variants}
+        stages = {v: [] for v in variants}
         for k in seeds:
-            for jac in jacobians:
+            for v in variants:
                 t = time.perf_counter()
                 res = vf.fit(tables[k], guess, **{"free": FREE, **kwargs},
-                             workers=args.workers, progress=False, jacobian=jac)
-                times[jac].append(time.perf_counter() - t)
-                verdicts[jac].append(f"{res.quality} ({res.p_value:.2g})")
-                stages[jac].append(sum(r["stage"] == "global" for r in res.extra["stages"]))
-                print(f"{name}, {jac}, data {k}: {times[jac][-1]:.1f} s, {verdicts[jac][-1]}",
-                      flush=True)
-                detail.append(f"* {name}, {jac} Jacobian, data {k}: " + "; ".join(
+                             workers=args.workers, progress=False, popsize=v[0],
+                             jacobian=v[1])
+                times[v].append(time.perf_counter() - t)
+                verdicts[v].append(f"{res.quality} ({res.p_value:.2g})")
+                stages[v].append(sum(r["stage"] == "global" for r in res.extra["stages"]))
+                print(f"{name}, {_label(v)}, data {k}: {times[v][-1]:.1f} s, "
+                      f"{verdicts[v][-1]}", flush=True)
+                detail.append(f"* {name}, {_label(v)}, data {k}: " + "; ".join(
                     f"{r['stage']} {r['seconds']:.1f} s ({r['evaluations']})"
                     for r in res.extra["stages"]))
                 detail.append("  " + "; ".join(
                     f"{n} {res.params[n].value:.4g} [{lo:.4g}, {hi:.4g}]"
                     for n, (lo, hi) in res.intervals.items()))
-        for jac in jacobians:
-            t = times[jac]
-            lines.append(f"| {name}, {jac} Jacobian | {statistics.median(t):.1f} s | "
+        for v in variants:
+            t = times[v]
+            lines.append(f"| {name}, {_label(v)} | {statistics.median(t):.1f} s | "
                          f"{max(t):.1f} s | {', '.join(f'{x:.1f}' for x in t)} | "
-                         f"{', '.join(verdicts[jac])} | "
-                         f"{', '.join(map(str, stages[jac]))} |")
+                         f"{', '.join(verdicts[v])} | "
+                         f"{', '.join(map(str, stages[v]))} |")
+    lines[2] += (
+        f" Load average {load:.1f} at the start, {os.getloadavg()[0]:.1f} at the end.")
     lines += ["", "Stages (seconds, model evaluations) and the 95.4 % intervals "
               f"(truth: {truth}):", "", *detail, ""]
     out = HERE / "results" / "fit.md"
-    out.write_text("\n".join(lines))
-    print(out.read_text())
+    before = out.read_text().replace("# ", "## Before: ", 1) if out.exists() else ""
+    out.write_text("\n".join(lines) + ("\n" + before if before else ""))
+    print("\n".join(lines))
 
 
 if __name__ == "__main__":
