@@ -20,7 +20,7 @@ touching (double) zero is decided by the derivatives at the segment start
 """
 
 
-import numpy as np
+import math
 
 from .basis import (
     EXP,
@@ -35,7 +35,7 @@ from .basis import (
     sup_bound,
     value_at_zero,
 )
-from .jit import jit, jit_inline
+from .jit import jit, jit_inline, stack_matrix
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
 REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
@@ -105,8 +105,14 @@ def _refine(c, c1, m, a, b, ga, gb):
             continue
         step = -gt / d
         t = t + step
-        if abs(step) <= 2e-16 * max(1.0, abs(t)) and a < t <= b:
-            return t  # Newton has converged to round-off
+        if abs(step) <= 2e-16 * max(1.0, abs(t)):
+            if a < t <= b:
+                return t  # Newton has converged to round-off
+            if t <= a:
+                # converged onto the positive side (the step is lost in rounding): the
+                # crossing is within round-off of a, so try the next float up rather
+                # than halve the bracket from its far end (tens of evaluations)
+                t = math.nextafter(a, math.inf)
     return b
 
 
@@ -167,17 +173,22 @@ def first_root(c, m, t0, T):
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
         return a
-    stack = np.empty((96, 4))  # right ends: t, g, slow part of g, g' (one allocation)
+    stack = stack_matrix(96, 4)  # right ends: t, g, slow part of g, g' (on the stack)
     stack[0, 0] = T
     stack[0, 1], stack[0, 2], stack[0, 3] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
     top = 0
+    # the bounds at a, recomputed only when a moves (bisection keeps it)
+    a_m2 = a_split = math.nan
+    m2 = m2s = mr = 0.0
     while top >= 0:
         b = stack[top, 0]
         gb = stack[top, 1]
         sb = stack[top, 2]
         db = stack[top, 3]
         h = b - a
-        m2 = bound_at(pm2, a)
+        if a != a_m2:
+            m2 = bound_at(pm2, a)
+            a_m2 = a
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
             if da < 0.0 and -da > m2 * h or h < H_MIN or top >= 95:
@@ -187,11 +198,16 @@ def first_root(c, m, t0, T):
             hh = 0.5 * h
             # lower bounds: the linear interpolant, the two tangent parabolas meeting at
             # the midpoint, and the slow part minus the fast envelope
-            if (min(ga, gb) > m2 * q
-                    or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
-                        and gb - db * hh - 0.5 * m2 * hh * hh > 0.0)
-                    or (split and min(sa, sb) - bound_at(pm2s, a) * q - bound_at(pr, a) > 0.0)
-                    or h < H_MIN or top >= 95):
+            excluded = (min(ga, gb) > m2 * q
+                        or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
+                            and gb - db * hh - 0.5 * m2 * hh * hh > 0.0))
+            if not excluded and split:
+                if a != a_split:
+                    m2s = bound_at(pm2s, a)
+                    mr = bound_at(pr, a)
+                    a_split = a
+                excluded = min(sa, sb) - m2s * q - mr > 0.0
+            if excluded or h < H_MIN or top >= 95:
                 a, ga, sa, da = b, gb, sb, db
                 top -= 1
                 continue
