@@ -155,6 +155,15 @@ def _bounds(c, c2, m, T, f1, f2, fe):
     return pm2, bound_parts(c2, m, T, f1, f2, fe, 1), bound_parts(c, m, T, f1, f2, fe, 2)
 
 
+@jit_inline
+def _split_bounds(pm2s, pr, a, a_split, m2s, mr):
+    """``(M_2s, R, a)``: the bounds of the split test at ``a``, recomputed only when ``a``
+    is not ``a_split``, where ``(m2s, mr)`` were."""
+    if a == a_split:
+        return m2s, mr, a_split
+    return bound_at(pm2s, a), bound_at(pr, a), a
+
+
 @jit
 def first_root(c, m, t0, T):
     """Earliest ``t`` in ``(t0, T]`` where ``g`` crosses from positive to ``<= 0``.
@@ -173,46 +182,60 @@ def first_root(c, m, t0, T):
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
         return a
-    stack = stack_matrix(96, 4)  # right ends: t, g, slow part of g, g' (on the stack)
+    # right ends: t, g, slow part of g, g'; g = nan until evaluated (on the stack)
+    stack = stack_matrix(96, 4)
     stack[0, 0] = T
-    stack[0, 1], stack[0, 2], stack[0, 3] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
+    stack[0, 1] = math.nan
     top = 0
     # the bounds at a, recomputed only when a moves (bisection keeps it)
     a_m2 = a_split = math.nan
     m2 = m2s = mr = 0.0
     while top >= 0:
         b = stack[top, 0]
-        gb = stack[top, 1]
-        sb = stack[top, 2]
-        db = stack[top, 3]
         h = b - a
         if a != a_m2:
             m2 = bound_at(pm2, a)
             a_m2 = a
+        q = 0.125 * h * h
+        hh = 0.5 * h
+        last = h < H_MIN or top >= 95  # decided without bisection
+        if stack[top, 1] != stack[top, 1]:
+            # g(b) is needed only where [a, b] may be decided: each test below needs its
+            # a-side half to hold (a lower bound through g(a) alone, or g monotone), so
+            # where none does the interval is bisected whatever g(b) is, and g(b) waits
+            # (most right ends of the descent towards a crossing are never needed)
+            open_ = last or (da < 0.0 and -da > m2 * h) or ga > m2 * q \
+                or ga + da * hh - 0.5 * m2 * hh * hh > 0.0
+            if not open_ and split:
+                m2s, mr, a_split = _split_bounds(pm2s, pr, a, a_split, m2s, mr)
+                open_ = sa - m2s * q - mr > 0.0
+            if not open_:
+                top += 1
+                stack[top, 0] = 0.5 * (a + b)
+                stack[top, 1] = math.nan
+                continue
+            stack[top, 1], stack[top, 2], stack[top, 3] = _point(c, c1, m, b, cs, ce, f1, f2, fe)
+        gb = stack[top, 1]
+        sb = stack[top, 2]
+        db = stack[top, 3]
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
-            if da < 0.0 and -da > m2 * h or h < H_MIN or top >= 95:
+            if da < 0.0 and -da > m2 * h or last:
                 return _refine(c, c1, m, a, b, ga, gb)
         else:
-            q = 0.125 * h * h
-            hh = 0.5 * h
             # lower bounds: the linear interpolant, the two tangent parabolas meeting at
             # the midpoint, and the slow part minus the fast envelope
             excluded = (min(ga, gb) > m2 * q
                         or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
                             and gb - db * hh - 0.5 * m2 * hh * hh > 0.0))
             if not excluded and split:
-                if a != a_split:
-                    m2s = bound_at(pm2s, a)
-                    mr = bound_at(pr, a)
-                    a_split = a
+                m2s, mr, a_split = _split_bounds(pm2s, pr, a, a_split, m2s, mr)
                 excluded = min(sa, sb) - m2s * q - mr > 0.0
-            if excluded or h < H_MIN or top >= 95:
+            if excluded or last:
                 a, ga, sa, da = b, gb, sb, db
                 top -= 1
                 continue
-        mid = 0.5 * (a + b)
         top += 1
-        stack[top, 0] = mid
-        stack[top, 1], stack[top, 2], stack[top, 3] = _point(c, c1, m, mid, cs, ce, f1, f2, fe)
+        stack[top, 0] = 0.5 * (a + b)
+        stack[top, 1] = math.nan
     return -1.0
