@@ -4,15 +4,16 @@ Points: the 49 held-out points of ``bench_heldout.points()`` and the stiff point
 ``results/stiff.md`` (alpha 0.01, beta 1e6, zeta 0.001, a 0.5, vbar 0.1; hundreds of
 micro-slip events per period).  Per point, from the section state after ``WARM`` periods
 from steady sliding, ``period_map`` (plain) and ``period_map_tangent`` integrate ``P``
-periods in one kernel call; the time per period is the median over ``REPEATS`` calls
+periods in one kernel call; a point's time per period is the median over ``REPEATS`` calls
 divided by ``P``.  Each tree (``--tree DIR``, its ``src`` first on ``PYTHONPATH``) is timed
-in its own subprocess; the trees alternate, ``ROUNDS`` rounds, and each point's time is
-the median over the rounds.  The workers also return the end state and event count so
-that the trees can be compared for equality.
+in its own worker process; the trees alternate point by point (their order reversed every
+other round), ``ROUNDS`` rounds, and each point's time is the median over the rounds.  The
+workers also return the end state, Jacobian and event count, to compare the trees.
 
-Run:  ``.venv/bin/python benchmarks/bench_period.py --tree /path/old --tree . [--note TEXT]``
-(the first tree is "before", the last "after"; default: this tree alone).  Writes
-``results/period.md`` (``--no-write``: print only).  Run nothing heavy alongside.
+Run:  ``.venv/bin/python benchmarks/bench_period.py --tree OLD --tree NEW [--note TEXT]``
+(the first tree is "before", the last "after"; default: this tree alone).  Appends a
+section to ``results/period.md`` (``--no-write``: print only).  Run nothing heavy
+alongside; the load average is recorded.
 """
 
 from __future__ import annotations
@@ -31,8 +32,8 @@ HERE = Path(__file__).resolve().parent
 REPORT = HERE / "results" / "period.md"
 WARM = 30  # periods from steady sliding before the timed state
 P = 10  # periods per timed kernel call
-REPEATS = 15
-ROUNDS = 3
+REPEATS = 9
+ROUNDS = 15
 STIFF = ("stiff corner", 0.01, 1e6, 0.5, 0.1, 0.001, 0.0)  # vbar, not V
 MAX_EVENTS = 10**7
 
@@ -50,8 +51,9 @@ def points() -> list[tuple[str, float, float, float, float, float, float]]:
     return out
 
 
-def worker(pts: list) -> list[dict]:
-    """Time one tree (the one on ``sys.path``) at ``pts``."""
+def worker() -> None:
+    """Serve timings of the tree on ``sys.path``: reads the points (one JSON line), prepares
+    each (compiles, warms up), then answers each point index it reads with one JSON line."""
     import numpy as np
 
     from vibrofriction._kernels.integrate import initial_point
@@ -59,14 +61,19 @@ def worker(pts: list) -> list[dict]:
     from vibrofriction._kernels.phases import make_model
     from vibrofriction._kernels.tangent import period_map_tangent
 
-    rows = []
-    for _, alpha, beta, a, V, zeta, eta in pts:
+    starts = []
+    for _, alpha, beta, a, V, zeta, eta in json.loads(sys.stdin.readline()):
         M = make_model(alpha, beta, a, V, zeta, eta, 0.0, 0.0, False)
         y, xd, e, ph, _ = initial_point(0, alpha, beta, a, V, zeta, eta, 0.0, 0.0, False)
-        y, xd, e, ph, ev0, deg0, _ = period_map(y, xd, e, ph, WARM, M, MAX_EVENTS)
-        J = np.zeros((3, 3))
-        G = np.zeros(3)
-        acc = np.zeros(6)
+        y, xd, e, ph, _, _, _ = period_map(y, xd, e, ph, WARM, M, MAX_EVENTS)
+        starts.append((M, y, xd, e, ph))
+    J = np.zeros((3, 3))
+    G = np.zeros(3)
+    acc = np.zeros(6)
+    period_map_tangent(*starts[0][1:], 1, starts[0][0], MAX_EVENTS, J, G, acc)  # compile
+    print("ready", flush=True)
+    for line in sys.stdin:
+        M, y, xd, e, ph = starts[int(line)]
         plain = []
         tangent = []
         for _ in range(REPEATS):
@@ -76,32 +83,55 @@ def worker(pts: list) -> list[dict]:
             t0 = time.perf_counter()
             rt = period_map_tangent(y, xd, e, ph, P, M, MAX_EVENTS, J, G, acc)
             tangent.append((time.perf_counter() - t0) / P)
-        rows.append({"plain": statistics.median(plain), "tangent": statistics.median(tangent),
-                     "events": int(r[4]) / P, "state": [float(v) for v in r[:3]],
-                     "phase": int(r[3]), "degenerate": int(r[5]),
-                     "tangent_state": [float(v) for v in rt[:3]],
-                     "J": [float(v) for v in J.ravel()], "G": [float(v) for v in G],
-                     "int_f": float(acc[0])})
-    return rows
+        print(json.dumps({"plain": statistics.median(plain),
+                          "tangent": statistics.median(tangent),
+                          "events": int(r[4]) / P, "state": [float(v) for v in r[:3]],
+                          "phase": int(r[3]), "degenerate": int(r[5]),
+                          "tangent_state": [float(v) for v in rt[:3]],
+                          "J": [float(v) for v in J.ravel()], "G": [float(v) for v in G],
+                          "int_f": float(acc[0])}), flush=True)
 
 
-def run_tree(tree: Path, pts: list) -> list[dict]:
-    env = dict(os.environ, PYTHONPATH=str(tree / "src"))
-    out = subprocess.run([sys.executable, __file__, "--worker"], input=json.dumps(pts),
-                         capture_output=True, text=True, env=env, check=True)
-    return json.loads(out.stdout)
+class Worker:
+    """A worker process timing one tree (its ``src`` first on ``PYTHONPATH``)."""
+
+    def __init__(self, tree: Path, pts: list) -> None:
+        env = dict(os.environ, PYTHONPATH=str(tree / "src"))
+        self.proc = subprocess.Popen([sys.executable, __file__, "--worker"], env=env,
+                                     stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+        self._send(json.dumps(pts))
+
+    def _send(self, line: str) -> None:
+        assert self.proc.stdin is not None
+        self.proc.stdin.write(line + "\n")
+        self.proc.stdin.flush()
+
+    def _read(self) -> str:
+        assert self.proc.stdout is not None
+        return self.proc.stdout.readline()
+
+    def ready(self) -> None:
+        if self._read().strip() != "ready":
+            raise RuntimeError("worker failed")
+
+    def time(self, j: int) -> dict:
+        self._send(str(j))
+        return json.loads(self._read())
+
+    def close(self) -> None:
+        assert self.proc.stdin is not None
+        self.proc.stdin.close()
+        self.proc.wait()
 
 
 def _commit(tree: Path) -> str:
     out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                          text=True, cwd=tree)
+    if out.returncode != 0:
+        return "not a git checkout"
     dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "src"],
                            capture_output=True, text=True, cwd=tree).stdout.strip()
-    return (out.stdout.strip() or "unknown") + ("+dirty" if dirty else "")
-
-
-def _rel(x: float, y: float) -> float:
-    return abs(x - y) / max(abs(x), abs(y), 1e-300)
+    return out.stdout.strip() + ("+dirty" if dirty else "")
 
 
 def main() -> None:
@@ -109,12 +139,20 @@ def main() -> None:
     trees = trees or [HERE.parent]
     note = sys.argv[sys.argv.index("--note") + 1] if "--note" in sys.argv else ""
     pts = points()
+    workers = [Worker(tree, pts) for tree in trees]
+    for w in workers:
+        w.ready()
     load0 = os.getloadavg()[0]
-    runs: list[list[list[dict]]] = [[] for _ in trees]
+    # runs[i][round][point]
+    runs: list[list[list[dict]]] = [[[{} for _ in pts] for _ in range(ROUNDS)] for _ in trees]
     for rnd in range(ROUNDS):
-        for i, tree in enumerate(trees):  # alternate the trees, round by round
-            runs[i].append(run_tree(tree, pts))
-            print(f"round {rnd + 1}/{ROUNDS}: {tree} done", flush=True)
+        order = list(range(len(trees)))[::(-1 if rnd % 2 else 1)]
+        for j in range(len(pts)):
+            for i in order:
+                runs[i][rnd][j] = workers[i].time(j)
+        print(f"round {rnd + 1}/{ROUNDS} done", flush=True)
+    for w in workers:
+        w.close()
     load1 = os.getloadavg()[0]
 
     def med(i: int, j: int, kind: str) -> float:
@@ -129,11 +167,12 @@ def main() -> None:
              f"Command: `{' '.join([Path(sys.executable).name, *sys.argv])}`  ",
              f"Trees: {', '.join(cols)}  ",
              f"Machine: {platform.machine()}, {os.cpu_count()} cores, Python "
-             f"{platform.python_version()}; load average {load0:.2f} before, {load1:.2f} "
-             "after.\n",
+             f"{platform.python_version()}; load average {load0:.2f} before the timings, "
+             f"{load1:.2f} after.\n",
              f"Per point: median over {REPEATS} kernel calls of {P} periods each, from the "
              f"section state after {WARM} periods; then the median over {ROUNDS} rounds "
-             "(trees alternating, each in its own process).  us per drive period.\n",
+             "(trees alternating point by point, each in its own process).  us per drive "
+             "period.\n",
              "| | " + " | ".join(f"{c}: plain | tangent" for c in cols) + " |",
              "|---|" + "---|---|" * len(trees)]
     for label, idx in (("held-out, median over 49 points", held), ("stiff corner", [stiff])):
@@ -144,14 +183,15 @@ def main() -> None:
         lines.append(f"| {label} | " + " | ".join(cells) + " |")
     if len(trees) > 1:
         first, last = 0, len(trees) - 1
+        lines.append("")
         for label, idx in (("held-out", held), ("stiff corner", [stiff])):
             for kind in ("plain", "tangent"):
                 ratios = [med(first, j, kind) / med(last, j, kind) for j in idx]
-                lines.append(f"\n{label}, {kind}: before/after median ratio "
-                             f"{statistics.median(ratios):.2f}x (per-point min "
-                             f"{min(ratios):.2f}, max {max(ratios):.2f})")
+                lines.append(f"- {label}, {kind}: before/after, median of the per-point ratios "
+                             f"**{statistics.median(ratios):.2f}x** (min {min(ratios):.2f}, "
+                             f"max {max(ratios):.2f})")
         a, b = runs[first][0], runs[last][0]
-        dstate = max(_rel(x, y) for j in range(len(pts))
+        dstate = max(abs(x - y) / (1.0 + abs(x)) for j in range(len(pts))
                      for x, y in zip(a[j]["state"] + a[j]["tangent_state"] + [a[j]["int_f"]],
                                      b[j]["state"] + b[j]["tangent_state"] + [b[j]["int_f"]],
                                      strict=True))
@@ -159,9 +199,9 @@ def main() -> None:
                  for x, y in zip(a[j]["J"] + a[j]["G"], b[j]["J"] + b[j]["G"], strict=True))
         dev = sum(a[j]["events"] != b[j]["events"] or a[j]["phase"] != b[j]["phase"]
                   for j in range(len(pts)))
-        lines.append(f"\nEquality after {P} periods (first round): max relative difference "
-                     f"of the state and int f {dstate:.1e}; of J, G (|d|/(1+|J|)) {dJ:.1e}; "
-                     f"points whose event count or phase differ: {dev}.")
+        lines.append(f"\nEquality ({WARM} + {P} periods, each tree from steady sliding): max "
+                     f"|d|/(1 + |x|) of the state and int f {dstate:.1e}, of J and G "
+                     f"{dJ:.1e}; points whose event count or phase differ: {dev}.")
     lines.append("\n| point (alpha, beta, a, V) | events/period | "
                  + " | ".join(f"{c} plain | tangent" for c in cols) + " |")
     lines.append("|---|---|" + "---|---|" * len(trees))
@@ -184,6 +224,6 @@ def main() -> None:
 
 if __name__ == "__main__":
     if "--worker" in sys.argv:
-        json.dump(worker(json.loads(sys.stdin.read())), sys.stdout)
+        worker()
     else:
         main()
