@@ -86,6 +86,7 @@ def _refine(c, c1, m, a, b, ga, gb):
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
+    probe = 0.0
     for _ in range(60):
         if not (a < t < b):
             t = 0.5 * (a + b)
@@ -109,10 +110,12 @@ def _refine(c, c1, m, a, b, ga, gb):
             if a < t <= b:
                 return t  # Newton has converged to round-off
             if t <= a:
-                # converged onto the positive side (the step is lost in rounding): the
-                # crossing is within round-off of a, so try the next float up rather
-                # than halve the bracket from its far end (tens of evaluations)
-                t = math.nextafter(a, math.inf)
+                # converged onto the positive side, the step lost in rounding: the
+                # crossing is within round-off of a, so probe just above it (1 ulp, then
+                # 4, 16, ... while g stays positive in its noise) rather than halve the
+                # bracket from its far end (tens of evaluations)
+                probe = max(4.0 * probe, math.nextafter(a, math.inf) - a)
+                t = a + probe
     return b
 
 
