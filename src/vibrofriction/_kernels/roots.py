@@ -81,8 +81,9 @@ def start_margin(c, m, T):
 
 
 @jit
-def _refine(c, c1, m, a, b, ga, gb):
-    """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone."""
+def _refine(c, c1, m, a, b, ga, gb, m2):
+    """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone, ``m2`` a
+    bound of ``|g''|`` on it."""
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
@@ -106,9 +107,12 @@ def _refine(c, c1, m, a, b, ga, gb):
             continue
         step = -gt / d
         t = t + step
-        if abs(step) <= 2e-16 * max(1.0, abs(t)):
+        tol = 2e-16 * max(1.0, abs(t))
+        if abs(step) <= tol or (m2 * step * step <= 0.05 * tol * abs(d) and a < t <= b):
+            # converged to round-off: the step was, or the next one would be (Newton's
+            # error after a step s is at most m2 s^2 / (2 |g'|))
             if a < t <= b:
-                return t  # Newton has converged to round-off
+                return t
             if t <= a:
                 # converged onto the positive side, the step lost in rounding: the
                 # crossing is within round-off of a, so probe just above it (1 ulp, then
@@ -224,7 +228,7 @@ def first_root(c, m, t0, T):
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
             if da < 0.0 and -da > m2 * h or last:
-                return _refine(c, c1, m, a, b, ga, gb)
+                return _refine(c, c1, m, a, b, ga, gb, m2)
         else:
             # lower bounds: the linear interpolant, the two tangent parabolas meeting at
             # the midpoint, and the slow part minus the fast envelope
