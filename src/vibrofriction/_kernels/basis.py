@@ -125,7 +125,11 @@ def resonant(m, t, ct, st, h1, h2):
 @jit
 def basis_values(m, t, with_cs, with_exp):
     """The nine basis functions at ``t`` (``C = S = 0`` unless ``with_cs``, the
-    relaxation 0 unless ``with_exp``)."""
+    relaxation 0 unless ``with_exp``).  At ``t = 0`` (a search from the segment start)
+    they are exact without a transcendental: ``C(0) = S(0) = 0``, ``h2(0) = 1`` in ``EXP``."""
+    if t == 0.0:
+        return (1.0, 0.0, 1.0, 0.0, 1.0, 1.0 if m[0] == EXP else 0.0, 0.0, 0.0,
+                1.0 if with_exp else 0.0)
     ct = math.cos(t)
     st = math.sin(t)
     h1, h2 = homogeneous(m, t)
@@ -246,11 +250,11 @@ def bound_at(p, ta):
     """Evaluate the bound of :func:`bound_parts` at the interval start ``ta``."""
     b = p[0]
     if p[1] != 0.0:
-        b += p[1] if p[2] == 0.0 else p[1] * math.exp(-p[2] * ta)
+        b += p[1] if p[2] == 0.0 or ta == 0.0 else p[1] * math.exp(-p[2] * ta)
     if p[3] != 0.0:
-        b += p[3] if p[4] == 0.0 else p[3] * math.exp(-p[4] * ta)
+        b += p[3] if p[4] == 0.0 or ta == 0.0 else p[3] * math.exp(-p[4] * ta)
     if p[5] != 0.0:
-        b += p[5] if p[6] == 0.0 else p[5] * math.exp(-p[6] * ta)
+        b += p[5] if p[6] == 0.0 or ta == 0.0 else p[5] * math.exp(-p[6] * ta)
     return b * (1.0 + 1e-12)
 
 
