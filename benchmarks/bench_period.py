@@ -36,6 +36,8 @@ REPEATS = 9
 ROUNDS = 15
 STIFF = ("stiff corner", 0.01, 1e6, 0.5, 0.1, 0.001, 0.0)  # vbar, not V
 MAX_EVENTS = 10**7
+# wall-clock and CPU time (process_time: less disturbed by other processes on a loaded machine)
+KINDS = ("plain", "tangent", "plain_cpu", "tangent_cpu")
 
 
 def points() -> list[tuple[str, float, float, float, float, float, float]]:
@@ -74,17 +76,16 @@ def worker() -> None:
     print("ready", flush=True)
     for line in sys.stdin:
         M, y, xd, e, ph = starts[int(line)]
-        plain = []
-        tangent = []
+        times: dict[str, list[float]] = {k: [] for k in KINDS}
         for _ in range(REPEATS):
-            t0 = time.perf_counter()
+            t0, c0 = time.perf_counter(), time.process_time()
             r = period_map(y, xd, e, ph, P, M, MAX_EVENTS)
-            plain.append((time.perf_counter() - t0) / P)
-            t0 = time.perf_counter()
+            t1, c1 = time.perf_counter(), time.process_time()
             rt = period_map_tangent(y, xd, e, ph, P, M, MAX_EVENTS, J, G, acc)
-            tangent.append((time.perf_counter() - t0) / P)
-        print(json.dumps({"plain": statistics.median(plain),
-                          "tangent": statistics.median(tangent),
+            t2, c2 = time.perf_counter(), time.process_time()
+            for k, v in zip(KINDS, (t1 - t0, t2 - t1, c1 - c0, c2 - c1), strict=True):
+                times[k].append(v / P)
+        print(json.dumps({**{k: statistics.median(v) for k, v in times.items()},
                           "events": int(r[4]) / P, "state": [float(v) for v in r[:3]],
                           "phase": int(r[3]), "degenerate": int(r[5]),
                           "tangent_state": [float(v) for v in rt[:3]],
@@ -172,20 +173,21 @@ def main() -> None:
              f"Per point: median over {REPEATS} kernel calls of {P} periods each, from the "
              f"section state after {WARM} periods; then the median over {ROUNDS} rounds "
              "(trees alternating point by point, each in its own process).  us per drive "
-             "period.\n",
+             "period, wall-clock and CPU time (`time.process_time`).\n",
              "| | " + " | ".join(f"{c}: plain | tangent" for c in cols) + " |",
              "|---|" + "---|---|" * len(trees)]
     for label, idx in (("held-out, median over 49 points", held), ("stiff corner", [stiff])):
-        cells = []
-        for i in range(len(trees)):
-            cells += [f"{1e6 * statistics.median(med(i, j, 'plain') for j in idx):.2f}",
-                      f"{1e6 * statistics.median(med(i, j, 'tangent') for j in idx):.2f}"]
-        lines.append(f"| {label} | " + " | ".join(cells) + " |")
+        for clock, sfx in (("wall", ""), ("CPU", "_cpu")):
+            cells = []
+            for i in range(len(trees)):
+                cells += [f"{1e6 * statistics.median(med(i, j, 'plain' + sfx) for j in idx):.2f}",
+                          f"{1e6 * statistics.median(med(i, j, 'tangent' + sfx) for j in idx):.2f}"]
+            lines.append(f"| {label}, {clock} | " + " | ".join(cells) + " |")
     if len(trees) > 1:
         first, last = 0, len(trees) - 1
         lines.append("")
         for label, idx in (("held-out", held), ("stiff corner", [stiff])):
-            for kind in ("plain", "tangent"):
+            for kind in KINDS:
                 ratios = [med(first, j, kind) / med(last, j, kind) for j in idx]
                 lines.append(f"- {label}, {kind}: before/after, median of the per-point ratios "
                              f"**{statistics.median(ratios):.2f}x** (min {min(ratios):.2f}, "
@@ -202,7 +204,8 @@ def main() -> None:
         lines.append(f"\nEquality ({WARM} + {P} periods, each tree from steady sliding): max "
                      f"|d|/(1 + |x|) of the state and int f {dstate:.1e}, of J and G "
                      f"{dJ:.1e}; points whose event count or phase differ: {dev}.")
-    lines.append("\n| point (alpha, beta, a, V) | events/period | "
+    lines.append("\nPer point, wall-clock:\n")
+    lines.append("| point (alpha, beta, a, V) | events/period | "
                  + " | ".join(f"{c} plain | tangent" for c in cols) + " |")
     lines.append("|---|---|" + "---|---|" * len(trees))
     for j, name in enumerate(names):
