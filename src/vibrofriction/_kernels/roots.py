@@ -152,23 +152,19 @@ def _fast_terms(c, m):
 
 
 @jit_inline
-def _bounds(c, c2, m, T, f1, f2, fe):
-    """The bounds of the exclusion tests on ``[t_a, T]``: ``|g''|``, ``|g''|`` of the slow
-    part and the envelope of the fast part of ``g`` (the first for both where no term
-    is fast)."""
-    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
-    if not (f1 or f2 or fe):
-        return pm2, pm2, pm2
-    return pm2, bound_parts(c2, m, T, f1, f2, fe, 1), bound_parts(c, m, T, f1, f2, fe, 2)
-
-
-@jit_inline
-def _split_bounds(pm2s, pr, a, a_split, m2s, mr):
-    """``(M_2s, R, a)``: the bounds of the split test at ``a``, recomputed only when ``a``
-    is not ``a_split``, where ``(m2s, mr)`` were."""
-    if a == a_split:
-        return m2s, mr, a_split
-    return bound_at(pm2s, a), bound_at(pr, a), a
+def _split_bounds(c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr):
+    """The bounds of the split test (``|g''|`` of the slow part, the envelope of the fast
+    part): their parts ``pm2s``, ``pr`` on ``[t_a, T]``, made when first needed (``ready``
+    False; many searches end by the other tests), and their values ``(m2s, mr)`` at ``a``,
+    recomputed only when ``a`` is not ``a_split``.  Returns ``(pm2s, pr, True, a, m2s,
+    mr)``."""
+    if not ready:
+        pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
+        pr = bound_parts(c, m, T, f1, f2, fe, 2)
+    if a != a_split:
+        m2s = bound_at(pm2s, a)
+        mr = bound_at(pr, a)
+    return pm2s, pr, True, a, m2s, mr
 
 
 @jit
@@ -184,7 +180,9 @@ def first_root(c, m, t0, T):
     ce = c[8] != 0.0
     f1, f2, fe = _fast_terms(c, m)
     split = f1 or f2 or fe
-    pm2, pm2s, pr = _bounds(c, c2, m, T, f1, f2, fe)
+    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)  # |g''| on [t_a, T]
+    pm2s = pr = pm2  # the split test's, made when first needed
+    ready = False
     a = t0
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
@@ -214,7 +212,8 @@ def first_root(c, m, t0, T):
             open_ = last or (da < 0.0 and -da > m2 * h) or ga > m2 * q \
                 or ga + da * hh - 0.5 * m2 * hh * hh > 0.0
             if not open_ and split:
-                m2s, mr, a_split = _split_bounds(pm2s, pr, a, a_split, m2s, mr)
+                pm2s, pr, ready, a_split, m2s, mr = _split_bounds(
+                    c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr)
                 open_ = sa - m2s * q - mr > 0.0
             if not open_:
                 top += 1
@@ -236,7 +235,8 @@ def first_root(c, m, t0, T):
                         or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
                             and gb - db * hh - 0.5 * m2 * hh * hh > 0.0))
             if not excluded and split:
-                m2s, mr, a_split = _split_bounds(pm2s, pr, a, a_split, m2s, mr)
+                pm2s, pr, ready, a_split, m2s, mr = _split_bounds(
+                    c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr)
                 excluded = min(sa, sb) - m2s * q - mr > 0.0
             if excluded or last:
                 a, ga, sa, da = b, gb, sb, db
