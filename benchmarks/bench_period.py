@@ -6,8 +6,9 @@ micro-slip events per period).  Per point, from the section state after ``WARM``
 from steady sliding, ``period_map`` (plain) and ``period_map_tangent`` integrate ``P``
 periods in one kernel call; a point's time per period is the median over ``REPEATS`` calls
 divided by ``P``.  Each tree (``--tree DIR``, its ``src`` first on ``PYTHONPATH``) is timed
-in its own worker process; the trees alternate point by point (their order reversed every
-other round), ``ROUNDS`` rounds, and each point's time is the median over the rounds.  The
+in its own worker process, new every round; the trees alternate point by point (their order
+reversed every other round), ``ROUNDS`` rounds, and each point's time is the median over the
+rounds.  The
 workers also return the end state, Jacobian and event count, to compare the trees.
 
 Run:  ``.venv/bin/python benchmarks/bench_period.py --tree OLD --tree NEW [--note TEXT]``
@@ -140,20 +141,21 @@ def main() -> None:
     trees = trees or [HERE.parent]
     note = sys.argv[sys.argv.index("--note") + 1] if "--note" in sys.argv else ""
     pts = points()
-    workers = [Worker(tree, pts) for tree in trees]
-    for w in workers:
-        w.ready()
     load0 = os.getloadavg()[0]
-    # runs[i][round][point]
+    # runs[i][round][point]; new worker processes every round: the speed of compiled code
+    # varies from process to process (where it is loaded), by up to 2x on this machine
     runs: list[list[list[dict]]] = [[[{} for _ in pts] for _ in range(ROUNDS)] for _ in trees]
     for rnd in range(ROUNDS):
+        workers = [Worker(tree, pts) for tree in trees]
+        for w in workers:
+            w.ready()
         order = list(range(len(trees)))[::(-1 if rnd % 2 else 1)]
         for j in range(len(pts)):
             for i in order:
                 runs[i][rnd][j] = workers[i].time(j)
+        for w in workers:
+            w.close()
         print(f"round {rnd + 1}/{ROUNDS} done", flush=True)
-    for w in workers:
-        w.close()
     load1 = os.getloadavg()[0]
 
     def med(i: int, j: int, kind: str) -> float:
@@ -172,8 +174,8 @@ def main() -> None:
              f"{load1:.2f} after.\n",
              f"Per point: median over {REPEATS} kernel calls of {P} periods each, from the "
              f"section state after {WARM} periods; then the median over {ROUNDS} rounds "
-             "(trees alternating point by point, each in its own process).  us per drive "
-             "period, wall-clock and CPU time (`time.process_time`).\n",
+             "(trees alternating point by point, each in its own process, new every "
+             "round).  us per drive period, wall-clock and CPU time (`time.process_time`).\n",
              "| | " + " | ".join(f"{c}: plain | tangent" for c in cols) + " |",
              "|---|" + "---|---|" * len(trees)]
     for label, idx in (("held-out, median over 49 points", held), ("stiff corner", [stiff])):
