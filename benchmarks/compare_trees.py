@@ -3,8 +3,8 @@
 ``tests/reference_points.random_points(SEED, PER_REGIME, regime)`` over its 8 regimes
 (seed 1919; the tests use 2017, bench_heldout 4919): 25 points each, 200 in all.  Each tree
 (``--tree DIR``, its ``src`` first on ``PYTHONPATH``) solves them in its own process; the
-results compared are ``mu``, the stated ``error``, ``status``, ``trusted``, ``work`` and
-``events``.
+results compared are ``mu`` (``mu_ratio``), the stated ``error``, ``status``, ``trusted``,
+``work`` and ``events``.
 
 Run:  ``.venv/bin/python benchmarks/compare_trees.py --tree OLD --tree NEW [--write]``;
 ``--write`` appends the summary to ``results/period.md``.
@@ -36,7 +36,7 @@ def solve() -> list[dict]:
     for regime in REGIMES:
         for alpha, beta, a, V in random_points(SEED, PER_REGIME, regime):
             r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), v_inertial=V)
-            rows.append({"regime": regime, "point": [alpha, beta, a, V], "mu": float(r.mu),
+            rows.append({"regime": regime, "point": [alpha, beta, a, V], "mu": float(r.mu_ratio),
                          "error": float(r.error), "status": r.status.value,
                          "trusted": bool(r.trusted), "work": float(r.work),
                          "events": int(r.events)})
