@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-from vibrofriction._kernels import basis, phases
+from vibrofriction._kernels import basis, phases, roots
 from vibrofriction._kernels.roots import first_root, start_margin
 
 TS = np.linspace(0.0, 2 * math.pi, 13)
@@ -264,6 +264,32 @@ def test_first_root_misses_nothing_against_dense_sampling(w0sq, sig, r, rng):
         else:
             assert 0 <= root <= ts[neg[0]] + 1e-12
             assert basis.evaluate(c, m, root) == pytest.approx(0.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("w", [1.0, 10.0, 1000.0])
+def test_refine_reaches_round_off_in_few_evaluations(w, monkeypatch):
+    """Regression (issue 19): once Newton converged onto the positive end ``a`` of the
+    bracket (its step lost in rounding), the bracket was halved from its far end down to
+    round-off: tens of evaluations.  g = cos(w t) - c0 on [0, pi/w], root acos(c0)/w."""
+    evaluations = [0]
+    compiled = roots.basis_values
+
+    def counting(*args):
+        evaluations[0] += 1
+        return compiled(*args)
+
+    monkeypatch.setattr(roots, "basis_values", counting)  # seen by the Python _refine
+    m = _mode(w * w, 0.0)
+    most = 0
+    for c0 in np.linspace(-0.999, 0.999, 201):
+        c = (-float(c0), 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
+        a, b = 0.0, math.pi / w
+        evaluations[0] = 0
+        t = roots._refine.py_func(c, basis.derivative(c, m), m, a, b, basis.evaluate(c, m, a),
+                                  basis.evaluate(c, m, b), w * w)
+        assert t == pytest.approx(math.acos(c0) / w, rel=1e-13)
+        most = max(most, evaluations[0])
+    assert most <= 12
 
 
 def test_start_margin_decides_a_double_root_by_curvature():

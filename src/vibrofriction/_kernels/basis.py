@@ -34,7 +34,7 @@ w0sq)`` with ``w2 = w0sq - sigma^2`` and ``q = sqrt(|w2|)``.
 
 import math
 
-from .jit import jit
+from .jit import jit, jit_inline
 
 OSC = 0.0  # e^{-sig t} cos(q t), e^{-sig t} sin(q t)/q
 NEAR = 1.0  # e^{-sig t} cosh(q t), e^{-sig t} sinh(q t)/q (q may be 0)
@@ -125,7 +125,11 @@ def resonant(m, t, ct, st, h1, h2):
 @jit
 def basis_values(m, t, with_cs, with_exp):
     """The nine basis functions at ``t`` (``C = S = 0`` unless ``with_cs``, the
-    relaxation 0 unless ``with_exp``)."""
+    relaxation 0 unless ``with_exp``).  At ``t = 0`` (a search from the segment start)
+    they are exact without a transcendental: ``C(0) = S(0) = 0``, ``h2(0) = 1`` in ``EXP``."""
+    if t == 0.0:
+        return (1.0, 0.0, 1.0, 0.0, 1.0, 1.0 if m[0] == EXP else 0.0, 0.0, 0.0,
+                1.0 if with_exp else 0.0)
     ct = math.cos(t)
     st = math.sin(t)
     h1, h2 = homogeneous(m, t)
@@ -246,11 +250,11 @@ def bound_at(p, ta):
     """Evaluate the bound of :func:`bound_parts` at the interval start ``ta``."""
     b = p[0]
     if p[1] != 0.0:
-        b += p[1] if p[2] == 0.0 else p[1] * math.exp(-p[2] * ta)
+        b += p[1] if p[2] == 0.0 or ta == 0.0 else p[1] * math.exp(-p[2] * ta)
     if p[3] != 0.0:
-        b += p[3] if p[4] == 0.0 else p[3] * math.exp(-p[4] * ta)
+        b += p[3] if p[4] == 0.0 or ta == 0.0 else p[3] * math.exp(-p[4] * ta)
     if p[5] != 0.0:
-        b += p[5] if p[6] == 0.0 else p[5] * math.exp(-p[6] * ta)
+        b += p[5] if p[6] == 0.0 or ta == 0.0 else p[5] * math.exp(-p[6] * ta)
     return b * (1.0 + 1e-12)
 
 
@@ -258,6 +262,34 @@ def bound_at(p, ta):
 def sup_bound(c, m, T):
     """Upper bound of ``|g|`` on ``[0, T]``."""
     return bound_at(bound_parts(c, m, T, False, False, False, 0), 0.0)
+
+
+@jit_inline
+def homogeneous_integrals(m, t, h1, h2):
+    """``(A, B, d)``: the integrals of ``h1``, ``h2`` over ``[0, t]`` are ``A/d``, ``B/d``
+    (``h1``, ``h2`` their values at ``t``, used outside ``EXP``)."""
+    if m[0] == EXP:
+        return math.expm1(m[4] * t) / m[4], math.expm1(m[5] * t) / m[5], 1.0
+    sig = m[1]
+    return sig * (1.0 - h1) + m[2] * h2, 1.0 - h1 - sig * h2, m[7]
+
+
+@jit_inline
+def _integral(c, m, t, ct, st, h1, h2, cc, ss):
+    """:func:`integral` from the basis values at ``t`` (``h1``, ``h2`` needed outside ``EXP``
+    where ``g`` has free-motion or resonant terms, ``cc``, ``ss`` where it has resonant ones)."""
+    v = c[0] * t + 0.5 * c[1] * t * t + c[2] * st + c[3] * (1.0 - ct)
+    cs = c[6] != 0.0 or c[7] != 0.0
+    if c[4] != 0.0 or c[5] != 0.0 or cs:
+        A, B, d = homogeneous_integrals(m, t, h1, h2)
+        v += (c[4] * A + c[5] * B) / d
+        # the impulse response is (h1 - h2)/(lam1 - lam2) in EXP, else h2
+        ii = (A - B) / (m[4] - m[5]) if m[0] == EXP else B / d
+        if cs:
+            v += c[6] * ss + c[7] * (ii - cc)
+    if c[8] != 0.0:
+        v -= c[8] * math.expm1(-m[6] * t) / m[6]
+    return v
 
 
 @jit
@@ -268,26 +300,22 @@ def integral(c, m, t):
     (``g_i`` the impulse response, ``S(0) = S'(0) = 0``), so ``int C = S`` and
     ``int S = int g_i - C``.
     """
-    v = c[0] * t + 0.5 * c[1] * t * t + c[2] * math.sin(t) + c[3] * (1.0 - math.cos(t))
-    cs = c[6] != 0.0 or c[7] != 0.0
-    if c[4] != 0.0 or c[5] != 0.0 or cs:
-        if m[0] == EXP:
-            i1 = math.expm1(m[4] * t) / m[4]
-            i2 = math.expm1(m[5] * t) / m[5]
-            v += c[4] * i1 + c[5] * i2
-            ii = (i1 - i2) / (m[4] - m[5])  # the impulse response is (h1 - h2)/d
-        else:
-            h1, h2 = homogeneous(m, t)
-            sig = m[1]
-            ii = (1.0 - h1 - sig * h2) / m[7]  # the impulse response is h2
-            v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
-        if cs:
-            h1, h2 = homogeneous(m, t)
-            cc, ss = resonant(m, t, math.cos(t), math.sin(t), h1, h2)
-            v += c[6] * ss + c[7] * (ii - cc)
-    if c[8] != 0.0:
-        v -= c[8] * math.expm1(-m[6] * t) / m[6]
-    return v
+    ct = math.cos(t)
+    st = math.sin(t)
+    cs = has_cs(c)
+    h1 = h2 = cc = ss = 0.0
+    if cs or (m[0] != EXP and (c[4] != 0.0 or c[5] != 0.0)):
+        h1, h2 = homogeneous(m, t)
+    if cs:
+        cc, ss = resonant(m, t, ct, st, h1, h2)
+    return _integral(c, m, t, ct, st, h1, h2, cc, ss)
+
+
+@jit
+def integral_basis(c, m, t, bv):
+    """:func:`integral` with the basis values ``bv`` at ``t`` known (:func:`basis_values`,
+    with ``C, S`` where ``c`` has resonant terms): no transcendental evaluated again."""
+    return _integral(c, m, t, bv[2], bv[3], bv[4], bv[5], bv[6], bv[7])
 
 
 @jit

@@ -25,6 +25,7 @@ from .basis import (
     evaluate,
     has_cs,
     integral,
+    integral_basis,
     magnitude,
     value_at_zero,
 )
@@ -205,26 +206,34 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
 def state_at(M, phase, theta, y, xd, e, ed, t):
     """``(y, x', e, e', f)`` a time ``t`` into a phase that started at ``theta`` in
     ``(y, x', e)`` (``ed``: the exact ``e'`` at the start where known, else nan)."""
+    y1, xd1, e1, ed1, f1, _ = _state_basis(M, phase, theta, y, xd, e, ed, t)
+    return y1, xd1, e1, ed1, f1
+
+
+@jit
+def _state_basis(M, phase, theta, y, xd, e, ed, t):
+    """:func:`state_at` and the basis values at ``t`` it used (:func:`.basis.basis_values` of
+    the phase's mode; zeros for a rigid stick), for the integrals over the piece."""
     V = M[M_V]
     if phase == STICK:
         if math.isinf(M[M_K]):
             y1 = y - V * t
             f1 = -M[M_ALPHA] * y1 + M[M_GAMMA] * V
             return y1, 0.0, 0.0, 0.0, (f1 + inplane_force(M, theta + t)[0] if forced(M)
-                                       else f1)
+                                       else f1), ZERO9
         m = M[M_STICK]
         ec = stick_elongation(M, theta, y, xd, e)
         bv = basis_values(m, t, has_cs(ec), False)
         e1 = dot(ec, bv)
         xd1 = dot(derivative(ec, m), bv)
-        return y + (e1 - e) - V * t, xd1, e1, xd1, M[M_K] * e1 + M[M_C] * xd1
+        return y + (e1 - e) - V * t, xd1, e1, xd1, M[M_K] * e1 + M[M_C] * xd1, bv
     m = M[M_SLIP]
     s = 0.0 if phase == FLIGHT else slip_sign(phase)
     yc = body(M, theta, y, xd - V, s)
     ec = elongation(M, theta, e, ed, s)
     bv = basis_values(m, t, has_cs(yc), ec[8] != 0.0)  # one evaluation for all four
     return (dot(yc, bv), V + dot(derivative(yc, m), bv), dot(ec, bv),
-            dot(derivative(ec, m), bv), s * normal_force(theta + t, M[M_A]))
+            dot(derivative(ec, m), bv), s * normal_force(theta + t, M[M_A]), bv)
 
 
 @jit_inline
@@ -260,8 +269,9 @@ def _slip_event(vr, m, T):
 
 
 @jit_inline
-def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1):
-    """``(int_f, int_n)``: the integrals of ``f`` and ``n`` over a piece of length ``t``."""
+def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1, bv):
+    """``(int_f, int_n)``: the integrals of ``f`` and ``n`` over a piece of length ``t``
+    (``bv``: the basis values at ``t`` of :func:`_state_basis`)."""
     a = M[M_A]
     if zeno or phase == FLIGHT:
         return 0.0, (0.0 if phase == FLIGHT else normal_integral(theta, t, a))
@@ -270,14 +280,14 @@ def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1):
         return slip_sign(phase) * int_n, int_n
     if math.isinf(M[M_K]):
         return integral(fc, mst, t), int_n
-    return M[M_K] * integral(ec, mst, t) + M[M_C] * (e1 - e), int_n
+    return M[M_K] * integral_basis(ec, mst, t, bv) + M[M_C] * (e1 - e), int_n
 
 
 @jit
-def _transition(M, phase, theta1, y1, xd1, e1, f1, es, ec, t, Tn, avoid):
-    """The phase after the event that ended ``phase``: the state is projected onto the
-    event surface, then :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok,
-    event)``."""
+def _transition(M, phase, theta1, y1, xd1, e1, ed1, f1, es, Tn, avoid):
+    """The phase after the event that ended ``phase`` with the state ``(y1, xd1, e1, ed1,
+    f1)`` (:func:`state_at`): the state is projected onto the event surface, then
+    :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok, event)``."""
     rigid = math.isinf(M[M_K])
     if phase == STICK:
         # stick -> slip in direction es: project onto |f| = n
@@ -288,9 +298,8 @@ def _transition(M, phase, theta1, y1, xd1, e1, f1, es, ec, t, Tn, avoid):
         ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, es, M, Tn, avoid)
         return ph1, xd1, e1, ed1, f1, ok, EV_STICK_TO_SLIP
     s = slip_sign(phase)
-    m = M[M_SLIP]
-    # slip -> stick: project onto zero contact-point velocity, x' = e'
-    xd1 = 0.0 if rigid else evaluate(derivative(ec, m), m, t)
+    # slip -> stick: project onto zero contact-point velocity, x' = e' (state_at's e')
+    xd1 = 0.0 if rigid else ed1
     ph1, e1, ed1, f1, ok = enter(theta1, y1, xd1, e1, xd1, f1, -s, M, Tn, avoid)
     return ph1, xd1, e1, ed1, f1, ok, (EV_SLIP_TO_STICK if ph1 == STICK else EV_REVERSAL)
 
@@ -349,13 +358,14 @@ def segment(theta, y, xd, e, ed, phase, M):
     hit = te >= 0.0
     t = te if hit else T
     # state and integrals at the end of the piece (the Zeno approach moves freely)
-    y1, xd1, e1, ed1, f1 = state_at(M, FLIGHT if zeno else phase, theta, y, xd, e, ed, t)
-    int_f, int_n = _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1)
+    y1, xd1, e1, ed1, f1, bv = _state_basis(M, FLIGHT if zeno else phase, theta, y, xd, e,
+                                            ed, t)
+    int_f, int_n = _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1, bv)
     theta1 = tb if t == T else theta + t
     ph1, ok, event = phase, True, bkind
     if hit:
         ph1, xd1, e1, ed1, f1, ok, event = _transition(
-            M, phase, theta1, y1, xd1, e1, f1, es, ec, t, tb - theta1 if tb > theta1 else TWO_PI,
+            M, phase, theta1, y1, xd1, e1, ed1, f1, es, tb - theta1 if tb > theta1 else TWO_PI,
             phase if immediate else NO_PHASE)
     if t == T and not hit:
         ph1, e1, ed1, f1, ok = _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1)

@@ -20,7 +20,7 @@ touching (double) zero is decided by the derivatives at the segment start
 """
 
 
-import numpy as np
+import math
 
 from .basis import (
     EXP,
@@ -35,7 +35,7 @@ from .basis import (
     sup_bound,
     value_at_zero,
 )
-from .jit import jit, jit_inline
+from .jit import jit, jit_inline, stack_matrix
 
 H_MIN = 1e-12  # intervals shorter than this without a sign change hold no crossing
 REL_TOL = 1e-12  # round-off level of a value relative to its coefficients' sizes
@@ -81,11 +81,13 @@ def start_margin(c, m, T):
 
 
 @jit
-def _refine(c, c1, m, a, b, ga, gb):
-    """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone."""
+def _refine(c, c1, m, a, b, ga, gb, m2):
+    """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone, ``m2`` a
+    bound of ``|g''|`` on it."""
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
+    probe = 0.0
     for _ in range(60):
         if not (a < t < b):
             t = 0.5 * (a + b)
@@ -105,8 +107,19 @@ def _refine(c, c1, m, a, b, ga, gb):
             continue
         step = -gt / d
         t = t + step
-        if abs(step) <= 2e-16 * max(1.0, abs(t)) and a < t <= b:
-            return t  # Newton has converged to round-off
+        tol = 2e-16 * max(1.0, abs(t))
+        if abs(step) <= tol or (m2 * step * step <= 0.05 * tol * abs(d) and a < t <= b):
+            # converged to round-off: the step was, or the next one would be (Newton's
+            # error after a step s is at most m2 s^2 / (2 |g'|))
+            if a < t <= b:
+                return t
+            if t <= a:
+                # converged onto the positive side, the step lost in rounding: the
+                # crossing is within round-off of a, so probe just above it (1 ulp, then
+                # 4, 16, ... while g stays positive in its noise) rather than halve the
+                # bracket from its far end (tens of evaluations)
+                probe = max(4.0 * probe, math.nextafter(a, math.inf) - a)
+                t = a + probe
     return b
 
 
@@ -139,14 +152,19 @@ def _fast_terms(c, m):
 
 
 @jit_inline
-def _bounds(c, c2, m, T, f1, f2, fe):
-    """The bounds of the exclusion tests on ``[t_a, T]``: ``|g''|``, ``|g''|`` of the slow
-    part and the envelope of the fast part of ``g`` (the first for both where no term
-    is fast)."""
-    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)
-    if not (f1 or f2 or fe):
-        return pm2, pm2, pm2
-    return pm2, bound_parts(c2, m, T, f1, f2, fe, 1), bound_parts(c, m, T, f1, f2, fe, 2)
+def _split_bounds(c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr):
+    """The bounds of the split test (``|g''|`` of the slow part, the envelope of the fast
+    part): their parts ``pm2s``, ``pr`` on ``[t_a, T]``, made when first needed (``ready``
+    False; many searches end by the other tests), and their values ``(m2s, mr)`` at ``a``,
+    recomputed only when ``a`` is not ``a_split``.  Returns ``(pm2s, pr, True, a, m2s,
+    mr)``."""
+    if not ready:
+        pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
+        pr = bound_parts(c, m, T, f1, f2, fe, 2)
+    if a != a_split:
+        m2s = bound_at(pm2s, a)
+        mr = bound_at(pr, a)
+    return pm2s, pr, True, a, m2s, mr
 
 
 @jit
@@ -162,41 +180,69 @@ def first_root(c, m, t0, T):
     ce = c[8] != 0.0
     f1, f2, fe = _fast_terms(c, m)
     split = f1 or f2 or fe
-    pm2, pm2s, pr = _bounds(c, c2, m, T, f1, f2, fe)
+    pm2 = bound_parts(c2, m, T, f1, f2, fe, 0)  # |g''| on [t_a, T]
+    pm2s = pr = pm2  # the split test's, made when first needed
+    ready = False
     a = t0
     ga, sa, da = _point(c, c1, m, a, cs, ce, f1, f2, fe)
     if ga <= 0.0:
         return a
-    stack = np.empty((96, 4))  # right ends: t, g, slow part of g, g' (one allocation)
+    # right ends: t, g, slow part of g, g'; g = nan until evaluated (on the stack)
+    stack = stack_matrix(96, 4)
     stack[0, 0] = T
-    stack[0, 1], stack[0, 2], stack[0, 3] = _point(c, c1, m, T, cs, ce, f1, f2, fe)
+    stack[0, 1] = math.nan
     top = 0
+    # the bounds at a, recomputed only when a moves (bisection keeps it)
+    a_m2 = a_split = math.nan
+    m2 = m2s = mr = 0.0
     while top >= 0:
         b = stack[top, 0]
+        h = b - a
+        if a != a_m2:
+            m2 = bound_at(pm2, a)
+            a_m2 = a
+        q = 0.125 * h * h
+        hh = 0.5 * h
+        last = h < H_MIN or top >= 95  # decided without bisection
+        if stack[top, 1] != stack[top, 1]:
+            # g(b) is needed only where [a, b] may be decided: each test below needs its
+            # a-side half to hold (a lower bound through g(a) alone, or g monotone), so
+            # where none does the interval is bisected whatever g(b) is, and g(b) waits
+            # (most right ends of the descent towards a crossing are never needed)
+            open_ = last or (da < 0.0 and -da > m2 * h) or ga > m2 * q \
+                or ga + da * hh - 0.5 * m2 * hh * hh > 0.0
+            if not open_ and split:
+                pm2s, pr, ready, a_split, m2s, mr = _split_bounds(
+                    c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr)
+                open_ = sa - m2s * q - mr > 0.0
+            if not open_:
+                top += 1
+                stack[top, 0] = 0.5 * (a + b)
+                stack[top, 1] = math.nan
+                continue
+            stack[top, 1], stack[top, 2], stack[top, 3] = _point(c, c1, m, b, cs, ce, f1, f2, fe)
         gb = stack[top, 1]
         sb = stack[top, 2]
         db = stack[top, 3]
-        h = b - a
-        m2 = bound_at(pm2, a)
         if gb <= 0.0:
             # a crossing lies in (a, b]; accept when g is monotone there
-            if da < 0.0 and -da > m2 * h or h < H_MIN or top >= 95:
-                return _refine(c, c1, m, a, b, ga, gb)
+            if da < 0.0 and -da > m2 * h or last:
+                return _refine(c, c1, m, a, b, ga, gb, m2)
         else:
-            q = 0.125 * h * h
-            hh = 0.5 * h
             # lower bounds: the linear interpolant, the two tangent parabolas meeting at
             # the midpoint, and the slow part minus the fast envelope
-            if (min(ga, gb) > m2 * q
-                    or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
-                        and gb - db * hh - 0.5 * m2 * hh * hh > 0.0)
-                    or (split and min(sa, sb) - bound_at(pm2s, a) * q - bound_at(pr, a) > 0.0)
-                    or h < H_MIN or top >= 95):
+            excluded = (min(ga, gb) > m2 * q
+                        or (ga + da * hh - 0.5 * m2 * hh * hh > 0.0
+                            and gb - db * hh - 0.5 * m2 * hh * hh > 0.0))
+            if not excluded and split:
+                pm2s, pr, ready, a_split, m2s, mr = _split_bounds(
+                    c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr)
+                excluded = min(sa, sb) - m2s * q - mr > 0.0
+            if excluded or last:
                 a, ga, sa, da = b, gb, sb, db
                 top -= 1
                 continue
-        mid = 0.5 * (a + b)
         top += 1
-        stack[top, 0] = mid
-        stack[top, 1], stack[top, 2], stack[top, 3] = _point(c, c1, m, mid, cs, ce, f1, f2, fe)
+        stack[top, 0] = 0.5 * (a + b)
+        stack[top, 1] = math.nan
     return -1.0

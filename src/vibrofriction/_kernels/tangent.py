@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from .basis import EXP, homogeneous, integral
+from .basis import EXP, homogeneous, homogeneous_integrals
 from .codes import EV_LIFTOFF, EV_REVERSAL, EV_SLIP_TO_STICK, EV_STICK_TO_SLIP, FLIGHT, STICK
 from .integrate import TWO_PI, contact_force, free_approach, next_boundary, segment, slip_sign
 from .jit import jit
@@ -59,15 +59,12 @@ from .phases import (
     inplane_force,
 )
 
-UNIT_H1 = (0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0)
-UNIT_H2 = (0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0)
-
 
 @jit
-def free_flow(m, t):
+def free_flow(m, h1, h2):
     """``(p11, p12, p21, p22)``: ``(u(t), u'(t))`` from ``(u(0), u'(0))`` for the free
-    motion of mode ``m`` (:func:`.basis.make_mode`)."""
-    h1, h2 = homogeneous(m, t)
+    motion of mode ``m`` (:func:`.basis.make_mode`), from ``(h1, h2)`` at ``t``
+    (:func:`.basis.homogeneous`)."""
     if m[0] == EXP:
         l1, l2 = m[4], m[5]
         d = l1 - l2
@@ -78,10 +75,12 @@ def free_flow(m, t):
 
 
 @jit
-def free_flow_integral(m, t):
-    """``(q11, q12)``: the integrals over ``[0, t]`` of ``p11``, ``p12`` of :func:`free_flow`."""
-    i1 = integral(UNIT_H1, m, t)
-    i2 = integral(UNIT_H2, m, t)
+def free_flow_integral(m, t, h1, h2):
+    """``(q11, q12)``: the integrals over ``[0, t]`` of ``p11``, ``p12`` of :func:`free_flow`
+    (``h1``, ``h2`` at ``t`` as there)."""
+    A, B, d = homogeneous_integrals(m, t, h1, h2)
+    i1 = A / d
+    i2 = B / d
     if m[0] == EXP:
         l1, l2 = m[4], m[5]
         d = l1 - l2
@@ -104,8 +103,9 @@ def segment_flow(M, phase, free, t, J, G):
                 J[2, j] = 0.0
             return
         m = M[M_STICK]
-        p11, p12, p21, p22 = free_flow(m, t)
-        q11, q12 = free_flow_integral(m, t)
+        h1, h2 = homogeneous(m, t)
+        p11, p12, p21, p22 = free_flow(m, h1, h2)
+        q11, q12 = free_flow_integral(m, t, h1, h2)
         w = M[M_ALPHA] / M[M_BETA]
         k, c = M[M_K], M[M_C]
         for j in range(n):
@@ -118,7 +118,9 @@ def segment_flow(M, phase, free, t, J, G):
             J[2, j] = de1
             G[j] += k * (dp * t + q11 * u + q12 * dxd) + c * (de1 - de)
         return
-    p11, p12, p21, p22 = free_flow(M[M_SLIP], t)
+    m = M[M_SLIP]
+    h1, h2 = homogeneous(m, t)
+    p11, p12, p21, p22 = free_flow(m, h1, h2)
     decay = math.exp(-M[M_R] * t) if M[M_C] > 0.0 else 0.0
     for j in range(n):
         dy, dxd = J[0, j], J[1, j]
