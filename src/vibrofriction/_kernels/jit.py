@@ -64,6 +64,6 @@ def _stack_matrix(rows, cols):  # type: ignore[no-untyped-def]
     size = shape[0] * shape[1]
 
     def impl(rows, cols):  # type: ignore[no-untyped-def]
-        return numba.carray(_stack_f64(size), shape)
+        return numba.carray(_stack_f64(size), shape)  # type: ignore[call-arg]
 
     return impl
