@@ -82,7 +82,7 @@ def main() -> None:
     vf.fit(tables[seeds[0]].head(6), TRUE, free=["mu0"], global_stage=False,
            progress=False)  # warm-up
     load = os.getloadavg()[0]
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=HERE,
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=Path(vf.__file__).parent,
                             capture_output=True, text=True).stdout.strip()
     lines = [f"# Fit time ({datetime.date.today()}, {platform.processor() or platform.machine()},"
              f" {os.cpu_count()} cores, workers={args.workers}, commit {commit})", "",
