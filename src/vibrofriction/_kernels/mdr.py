@@ -64,7 +64,16 @@ import math
 
 import numpy as np
 
-from .basis import EXP, basis_values, derivative, dot, initial_pair, integral, make_mode, sup_bound
+from .basis import (
+    basis_values,
+    derivative,
+    dot,
+    initial_pair,
+    integral,
+    integral_basis,
+    make_mode,
+    sup_bound,
+)
 from .jit import jit
 from .phases import _periodic_response
 
@@ -140,34 +149,6 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
         return (p0, p1, zr, -zi, D, E, 0.0, 0.0, 0.0), m
     D, E = initial_pair(m, y0 - p0, yd0 - p1)
     return (p0, p1, 0.0, 0.0, D, E, wr, -wi, 0.0), m
-
-
-@jit
-def _integral_b(c, m, t, b):
-    """:func:`.basis.integral` of ``c`` over ``[0, t]`` from the basis values ``b`` at
-    ``t`` (:func:`.basis.basis_values`, ``C, S`` included where ``c`` has them): the same
-    formulas, without evaluating the basis again."""
-    ct = b[2]
-    st = b[3]
-    v = c[0] * t + 0.5 * c[1] * t * t + c[2] * st + c[3] * (1.0 - ct)
-    cs = c[6] != 0.0 or c[7] != 0.0
-    if c[4] != 0.0 or c[5] != 0.0 or cs:
-        if m[0] == EXP:
-            i1 = math.expm1(m[4] * t) / m[4]
-            i2 = math.expm1(m[5] * t) / m[5]
-            v += c[4] * i1 + c[5] * i2
-            ii = (i1 - i2) / (m[4] - m[5])
-        else:
-            h1 = b[4]
-            h2 = b[5]
-            sig = m[1]
-            ii = (1.0 - h1 - sig * h2) / m[7]
-            v += (c[4] * (sig * (1.0 - h1) + m[2] * h2) + c[5] * (1.0 - h1 - sig * h2)) / m[7]
-        if cs:
-            v += c[6] * b[7] + c[7] * (ii - b[6])
-    if c[8] != 0.0:
-        v -= c[8] * math.expm1(-m[6] * t) / m[6]
-    return v
 
 
 @jit
@@ -733,7 +714,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             b = basis_values(m, t_ev, cs, False)
         y1 = dot(c, b)
         yd1 = dot(dc, b)
-        iy += _integral_b(c, m, t_ev, b)
+        iy += integral_basis(c, m, t_ev, b)
         fr0 += a_st * t_ev
         fr1 += a_sl * t_ev
         fr2 += (1.0 - a_st - a_sl) * t_ev
