@@ -22,6 +22,7 @@ import enum
 from dataclasses import dataclass
 
 __all__ = ["CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS", "INT_COLUMNS",
+           "METHOD_NAMES", "POINT_COLUMNS", "point_index",
            "LENGTH_UNIT", "MODELS", "PARAMETER", "PARAMETERS", "RESULT_FIELDS", "STATE_FIELDS",
            "STATUS_BY_CODE", "VELOCITY_UNIT", "CHOICES", "Choice", "Field", "Parameter",
            "Range", "Status", "choice_names", "column_index", "parameter_names", "parameters"]
@@ -80,6 +81,9 @@ FIELDS: tuple[Field, ...] = (
           dtype="i4"),
     Field("events", "int", "1", "phase transitions integrated (stick, slip, lift-off, "
           "touchdown)", column=("int", 3), dtype="i8"),
+    Field("method", "str", "1", "the solver that computed the result (METHOD_NAMES: "
+          "'event' the 1-D event-driven solver, 'plane' the 2-D solver, 'mdr' the curved "
+          "tip's solver; the kernels' rows hold its index)", column=("int", 6), dtype="i1"),
     Field("work", "float", "drive periods", "drive periods integrated in all, Newton's period "
           "maps, verification and averaging included", column=("float", 15), dtype="f8"),
     _fraction("stick", 2),
@@ -459,3 +463,24 @@ def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
     """The names of :func:`parameters` of ``model``; ``optional=False`` leaves out the
     optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``)."""
     return tuple(p.name for p in parameters(model) if optional or not p.twin)
+
+
+#: The solvers, by the name a result records (``FrictionResult.method``); the kernels' rows
+#: hold the index (:mod:`vibrofriction.solver.methods` declares what each one covers).
+METHOD_NAMES: tuple[str, ...] = ("event", "plane", "mdr")
+
+#: The columns of a table of points (:class:`vibrofriction.solver.points.PointTable`), in
+#: order: the dimensionless model's parameters (the order of :data:`PARAMETERS`), the
+#: inertial velocity, then each choice of the model as the index of its value in
+#: :attr:`Choice.values`.  The kernels read a packed row of points by these indices
+#: (:mod:`vibrofriction._kernels.codes`), as they write the output columns.
+POINT_COLUMNS: tuple[str, ...] = (*parameter_names(_D), "v_inertial", *choice_names(_D))
+
+
+def point_index(name: str) -> int:
+    """The index of ``name`` in a row of a table of points (:data:`POINT_COLUMNS`)."""
+    try:
+        return POINT_COLUMNS.index(name)
+    except ValueError:
+        raise KeyError(f"{name!r} is not a column of a table of points: "
+                       f"{list(POINT_COLUMNS)}") from None

@@ -4,7 +4,7 @@ The output column indices and the status codes are derived from
 :mod:`vibrofriction.schema` (standard library only), the one place they are defined.
 """
 
-from vibrofriction.schema import Status, column_index
+from vibrofriction.schema import Status, column_index, point_index
 
 # phases of the contact
 STICK = 0
@@ -67,3 +67,21 @@ N_SEG_COLUMNS = 11
 # columns of a sampled history (integrate.sample)
 SMP_Y, SMP_XD, SMP_F, SMP_N, SMP_PHASE, SMP_E = range(6)
 N_SMP_COLUMNS = 6
+
+# columns of a table of points (vibrofriction.schema.POINT_COLUMNS): the batch kernels read
+# a packed row of a point's parameters by these
+T_ALPHA = point_index("alpha")
+T_BETA = point_index("beta")
+T_AMPLITUDE = point_index("amplitude")
+T_ZETA = point_index("zeta")
+T_ETA_C = point_index("eta_c")
+T_A_X = point_index("a_x")
+T_PHASE_X = point_index("phase_x")
+T_A_Y = point_index("a_y")
+T_PHASE_Y = point_index("phase_y")
+T_ALPHA_Y = point_index("alpha_y")
+T_ZETA_Y = point_index("zeta_y")
+T_PROFILE_EXPONENT = point_index("profile_exponent")
+T_V = point_index("v_inertial")
+T_INPLANE_ON = point_index("inplane_on")  # the index of "substrate" is 0
+I_METHOD = column_index("method")

@@ -64,6 +64,19 @@ from .codes import (
     ST_NOT_CONVERGED,
     ST_PERIODIC,
     STICK,
+    T_A_X,
+    T_A_Y,
+    T_ALPHA,
+    T_ALPHA_Y,
+    T_AMPLITUDE,
+    T_BETA,
+    T_ETA_C,
+    T_INPLANE_ON,
+    T_PHASE_X,
+    T_PHASE_Y,
+    T_V,
+    T_ZETA,
+    T_ZETA_Y,
 )
 from .jit import jit
 
@@ -913,14 +926,15 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
 
 
 @jit
-def plane_steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
-                            alpha_y, zeta_y, on_substrate, init_kind, init, rtol, max_periods,
-                            max_events, out_f, out_i):
-    """:func:`plane_steady_state` over arrays of points (``init`` rows ``(y, x', e)``)."""
-    for i in range(V.shape[0]):
-        plane_steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i],
-                           phase_x[i], a_y[i], phase_y[i], alpha_y[i], zeta_y[i],
-                           on_substrate[i], init_kind,
+def plane_steady_state_many(points, init_kind, init, rtol, max_periods, max_events, out_f,
+                            out_i):
+    """:func:`plane_steady_state` over a table of points (``points`` rows by the schema's
+    indices, ``codes.T_*``; ``init`` rows ``(y, x', e)``)."""
+    for i in range(points.shape[0]):
+        p = points[i]
+        plane_steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA],
+                           p[T_ETA_C], p[T_A_X], p[T_PHASE_X], p[T_A_Y], p[T_PHASE_Y],
+                           p[T_ALPHA_Y], p[T_ZETA_Y], p[T_INPLANE_ON] == 0.0, init_kind,
                            init[i, 0], init[i, 1], init[i, 2], rtol, max_periods,
                            max_events, out_f[i], out_i[i])
 

@@ -72,6 +72,15 @@ from .codes import (
     ST_NOT_CONVERGED,
     ST_PERIODIC,
     ST_SLIDING,
+    T_A_X,
+    T_ALPHA,
+    T_AMPLITUDE,
+    T_BETA,
+    T_ETA_C,
+    T_INPLANE_ON,
+    T_PHASE_X,
+    T_V,
+    T_ZETA,
 )
 from .integrate import TWO_PI, contact_force, initial_state, to_kernel_frame, to_lab_frame
 from .jit import jit
@@ -388,16 +397,17 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_
 
 
 @jit
-def steady_state_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_kind, init,
-                      max_periods, min_periods, tol_state, tol_mean, max_events, out_f,
-                      out_i):
-    """:func:`steady_state` over arrays of points (one compiled loop, no Python calls).
+def steady_state_many(points, init_kind, init, max_periods, min_periods, tol_state, tol_mean,
+                      max_events, out_f, out_i):
+    """:func:`steady_state` over a table of points (one compiled loop, no Python calls).
 
-    ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row ``i`` of
-    ``out_f`` and ``out_i`` receives point ``i``.
+    ``points`` has shape ``(n, len(POINT_COLUMNS))`` (columns by the schema's indices,
+    ``codes.T_*``); ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row
+    ``i`` of ``out_f`` and ``out_i`` receives point ``i``.
     """
-    for i in range(V.shape[0]):
-        steady_state(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i], phase_x[i],
-                     on_substrate[i], init_kind, init[i, 0], init[i, 1], init[i, 2],
-                     int(init[i, 3]), max_periods, min_periods, tol_state, tol_mean,
-                     max_events, out_f[i], out_i[i])
+    for i in range(points.shape[0]):
+        p = points[i]
+        steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
+                     p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, init_kind, init[i, 0],
+                     init[i, 1], init[i, 2], int(init[i, 3]), max_periods, min_periods,
+                     tol_state, tol_mean, max_events, out_f[i], out_i[i])

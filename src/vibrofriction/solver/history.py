@@ -16,17 +16,11 @@ from .._kernels.phases import frame_offset
 from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
 from .energy import dissipation, inplane_motion, kernel_point
-from .engine import (
-    _MIRROR_PHASE,
-    PLANE_EVENTS_PER_PERIOD,
-    PLANE_RTOL,
-    _check_curved,
-    _check_plane,
-    friction_coefficient,
-    initial_rows,
-    plane_held,
-)
+from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
 from .mdr_history import SPRINGS, mdr_history
+from .methods.mdr import MDR
+from .methods.plane import PLANE, plane_arguments, plane_held
+from .points import table_of
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
@@ -294,10 +288,7 @@ def simulate(
     V = float(v)
     _checked_run(periods, samples_per_period)
     if dim.curved:
-        al, be, am, vv, ze, et, ax, ay, pe = (np.array([x]) for x in (
-            dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x, dim.a_y,
-            dim.profile_exponent))
-        _check_curved(np.array([True]), al, be, am, vv, ze, et, ax, ay, pe, "sliding")
+        MDR.capabilities.check(table_of(dim, V), 0, DEFAULT_SETTINGS)
         # the annotation is not enforced at run time: a bool, a float or 0 is refused here
         if isinstance(springs, bool) or not isinstance(  # type: ignore[redundant-expr]
                 springs, (int, np.integer)) or springs < 1:
@@ -363,14 +354,11 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
         _plane.plane_steady_section(
             dim.alpha, dim.beta, dim.amplitude, abs(V), dim.zeta, dim.eta_c, dim.a_x, px,
             dim.a_y, dim.phase_y, *dim.pin_y, dim.inplane_on == "substrate", 0, 0.0, 0.0, 0.0,
-            PLANE_RTOL, settings.max_periods,
-            min(settings.max_events, PLANE_EVENTS_PER_PERIOD), of, oi, s)
+            *plane_arguments(settings), of, oi, s)
         status, error = int(oi[column_index("status")]), float(of[column_index("error")])
         if V == 0.0 and plane_held(
                 np.array([status]), np.array([of[column_index("stick_fraction")]]),
-                *(np.array([x]) for x in (dim.alpha, dim.beta, dim.amplitude, dim.zeta,
-                                          dim.eta_c, dim.a_x, dim.phase_x, dim.a_y,
-                                          dim.phase_y, *dim.pin_y)), dim.inplane_on)[0]:
+                table_of(dim, V), dim.inplane_on)[0]:
             status = Status.HELD.code  # as solve_points: a held body has no steady state
         if not settings.trusted(status, error):
             raise ValueError(f"initial='steady': no trusted steady state at this point "
@@ -398,9 +386,8 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
 def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
                    initial: object, settings: SolverSettings | None) -> History:
     """:func:`simulate` with a transverse oscillation: the 2-D kernel's history."""
-    _check_plane(np.array([dim.beta]), np.array([dim.amplitude]), np.array([dim.eta_c]),
-                 np.array([1.0]))  # V = 0 is integrated (from rest), not refused here
     settings = settings or DEFAULT_SETTINGS
+    PLANE.capabilities.check(table_of(dim, V), 1, settings)  # V = 0 is integrated
     start = _plane_start(dim, V, initial, settings)
     P = _plane_parameters(dim, V)
     whole = int(math.ceil(periods))
@@ -411,14 +398,14 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
         np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1), sections]))
     grid = grid[grid <= tau_end]
     cap = grid.size + 64 * whole
+    rtol, _, max_switches = plane_arguments(settings)
     while True:
         out = np.empty((cap, _plane.N_H))
-        m = _plane.plane_history(P, start, whole, grid, PLANE_RTOL,
-                                 min(settings.max_events, PLANE_EVENTS_PER_PERIOD), out)
+        m = _plane.plane_history(P, start, whole, grid, rtol, max_switches, out)
         if m < 0:
             raise RuntimeError("the 2-D history failed: a step could not be taken or the "
                                "contact chattered (more stick/slip switches per period than "
-                               f"{PLANE_EVENTS_PER_PERIOD})")
+                               f"max_events_per_period = {max_switches})")
         if m <= cap:
             break
         cap = m

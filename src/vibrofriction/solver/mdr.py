@@ -124,6 +124,8 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
             else math.nan, math.inf
     elif conv:
         status, mu, err = "periodic", float(pf_a[-1] / pn_a[-1]), 1e-12
+    elif periods < 4:  # too few periods for two halves of a window (max_periods < 4)
+        status, mu, err = "not converged", float(pf_a[-1] / pn_a[-1]), math.inf
     else:
         win = min(AVERAGE_WINDOW, periods // 2)
         h = win // 2
@@ -142,7 +144,8 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  profile_exponent: float, zeta: float = 0.0, n_springs: int | None = None,
                  tol: float = 1e-5, a_x: float = 0.0, phase_x: float = 0.0,
-                 inplane_on: str = "substrate") -> dict:
+                 inplane_on: str = "substrate", state_tol: float = 1e-11,
+                 max_periods: int = MAX_PERIODS) -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
     Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 640
@@ -163,19 +166,22 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
 
     ``a_x``, ``phase_x``, ``inplane_on``: a longitudinal in-plane oscillation of the
     substrate or the holder (:func:`mdr_row`; ``V > 0`` only: ``V = 0`` with ``a_x > 0``
-    is refused, as its steady state depends on the start).
+    is refused, as its steady state depends on the start).  ``state_tol`` and
+    ``max_periods`` are each row's (:func:`mdr_row`; a row that may be passed over stops
+    after at most ``SKIP_PERIODS``).
     """
     alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x = (float(x) for x in (
         alpha, beta, amplitude, V, profile_exponent, zeta, a_x, phase_x))
     _check(alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x, inplane_on)
-    ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on)
+    ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on,
+                              state_tol=state_tol)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
     if math.isinf(n_exp):
-        r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, **ip)
+        r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)
         r.update(order=math.inf, rows=(1,))
         return r
     N = 20 if n_springs is None else int(n_springs)
-    coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta, **ip)
+    coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta, max_periods=max_periods, **ip)
     skipped: list[dict[str, Any]] = []
     d_prev = math.nan  # the previous pair's difference
     while True:
@@ -186,8 +192,8 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         periodic_coarse = coarse["status"] == "periodic"
         fine = mdr_row(alpha, beta, amplitude, V, n_exp, M, zeta,
                        warm=coarse["final_state"],
-                       max_periods=SKIP_PERIODS if periodic_coarse and n_springs is None
-                       and 2 * M <= MAX_SPRINGS else MAX_PERIODS, **ip)
+                       max_periods=min(SKIP_PERIODS, max_periods) if periodic_coarse
+                       and n_springs is None and 2 * M <= MAX_SPRINGS else max_periods, **ip)
         if periodic_coarse and fine["status"] != "periodic" and n_springs is None \
                 and 2 * M <= MAX_SPRINGS:
             skipped.append(fine)

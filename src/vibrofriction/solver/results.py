@@ -23,6 +23,7 @@ from ..params import Dimensionless
 from ..schema import (
     FLOAT_COLUMNS,
     INT_COLUMNS,
+    METHOD_NAMES,
     RESULT_FIELDS,
     STATE_FIELDS,
     Field,
@@ -108,10 +109,10 @@ def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> Sec
 # --------------------------------------------------------------------------- the results
 # the fields are written out below, so that type checkers and editors see them; they are
 # checked against the schema's (names, order and kinds) where the classes are defined
-_SCALAR = {"float": "float", "int": "int", "bool": "bool"}
+_SCALAR = {"float": "float", "int": "int", "bool": "bool", "str": "str"}
 _OBJECT = {"status": "Status", "final_state": "SectionState | None", "system": "Dimensionless"}
 _ARRAY = {"float": "NDArray[np.float64]", "int": "NDArray[np.int64]",
-          "bool": "NDArray[np.bool_]"}
+          "bool": "NDArray[np.bool_]", "str": "NDArray[np.str_]"}
 
 
 def _check_fields(cls: type, expected: dict[str, str]) -> None:
@@ -139,6 +140,7 @@ class FrictionResult:
     period: int
     periods: int
     events: int
+    method: str
     work: float
     stick_fraction: float
     slip_fraction: float
@@ -209,6 +211,7 @@ class FrictionResults:
     period: NDArray[np.int64]
     periods: NDArray[np.int64]
     events: NDArray[np.int64]
+    method: NDArray[np.str_]
     work: NDArray[np.float64]
     stick_fraction: NDArray[np.float64]
     slip_fraction: NDArray[np.float64]
@@ -311,7 +314,7 @@ def _not_converged_note(drift_rate: float) -> str:
 # --------------------------------------------------------------------------- from columns
 #: Result fields copied from the columns as they are (the rest are built below).
 _PLAIN = tuple(f.name for f in RESULT_FIELDS
-               if f.name not in ("status", "final_state", "system", "v_inertial"))
+               if f.name not in ("status", "method", "final_state", "system", "v_inertial"))
 
 
 def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
@@ -319,7 +322,7 @@ def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
     """One point's :class:`FrictionResult` from its named columns (Python scalars, the
     kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and ``trusted``)."""
     return FrictionResult(
-        status=Status.from_code(cols["status"]),
+        status=Status.from_code(cols["status"]), method=METHOD_NAMES[cols["method"]],
         final_state=section_state(*(cols[f.name] for f in STATE_FIELDS)),
         system=system, v_inertial=v_inertial, **{k: cols[k] for k in _PLAIN})
 
@@ -331,7 +334,7 @@ def _column(f: Field) -> tuple[str, int]:
 
 
 #: The fields built in Python, after the kernels' rows in :func:`result_from_rows`.
-_BUILT = ("status", "trusted", "final_state", "system", "v_inertial")
+_BUILT = ("status", "trusted", "final_state", "system", "v_inertial", "method")
 #: Where each result field is in ``floats + ints + [the _BUILT values]``, in field order.
 _PICK = operator.itemgetter(*(
     _BUILT.index(f.name) + len(FLOAT_COLUMNS) + len(INT_COLUMNS) if f.name in _BUILT
@@ -340,7 +343,7 @@ _PICK = operator.itemgetter(*(
 _RESULT_NAMES = tuple(f.name for f in RESULT_FIELDS)
 _STATE_PICK = operator.itemgetter(*(
     (len(FLOAT_COLUMNS) if _column(f)[0] == "int" else 0) + _column(f)[1] for f in STATE_FIELDS))
-_I_STATUS, _I_ERROR = column_index("status"), column_index("error")
+_I_STATUS, _I_ERROR, _I_METHOD = (column_index(k) for k in ("status", "error", "method"))
 
 
 def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless,
@@ -352,7 +355,7 @@ def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless
     status = Status.from_code(ints[_I_STATUS])
     row: list[Any] = [*floats, *ints]
     row += (status, settings.trusted_one(status, floats[_I_ERROR]),
-            section_state(*_STATE_PICK(row)), system, v_inertial)
+            section_state(*_STATE_PICK(row)), system, v_inertial, METHOD_NAMES[ints[_I_METHOD]])
     return _frozen(FrictionResult, dict(zip(_RESULT_NAMES, _PICK(row), strict=True)))
 
 
@@ -366,5 +369,6 @@ def results_from_columns(cols: Mapping[str, NDArray], system: Dimensionless,
     status.ravel()[:] = [Status.from_code(c) for c in np.ravel(cols["status"]).tolist()]
     states.ravel()[:] = list(map(section_state, *(np.ravel(cols[f.name]).tolist()
                                                   for f in STATE_FIELDS)))
-    return FrictionResults(status=status, final_state=states, system=system,
+    method = np.asarray(METHOD_NAMES)[np.asarray(cols["method"])].reshape(shape)
+    return FrictionResults(status=status, method=method, final_state=states, system=system,
                            v_inertial=v_inertial.astype(float), **{k: cols[k] for k in _PLAIN})

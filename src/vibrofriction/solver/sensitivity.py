@@ -23,6 +23,7 @@ from .._kernels.sensitivity import REL_STEP, orbit_sensitivity_many
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import Status
 from .engine import Initial, _mirror_rows, solve_points
+from .methods.event import event_arguments
 from .results import FrictionResult, result_from_columns
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
@@ -137,7 +138,7 @@ def sensitivities(
     period = np.where(periodic, cols["period"].ravel(), 0).astype(np.int64)
     if np.any(periodic):
         orbit_sensitivity_many(al, be, am, Vk, ze, et, ax, pxk, np.full(n, on_substrate),
-                               np.ascontiguousarray(state), period, int(settings.max_events),
+                               np.ascontiguousarray(state), period, event_arguments(settings)[4],
                                float(rel_step), order, want, dmu, dz, flags)
         if on_substrate:  # the laboratory frame: y + X, x' + X' with X = a_x cos(tau + px)
             dz[:, _AX, 0] += np.cos(pxk)

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import functools
 import math
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -27,38 +27,80 @@ def converged(status: ArrayLike) -> NDArray[np.bool_]:
     return np.isin(st, CONVERGED_CODES)
 
 
+#: The integer settings (the rest are tolerances in (0, 1)).
+_COUNTS = ("max_periods", "min_periods", "max_events", "max_events_per_period")
+
+
 @dataclass(frozen=True)
 class SolverSettings:
-    """Accuracy and effort bounds of the steady-state search.
+    """Accuracy and effort bounds of the steady-state search, and what counts as trusted.
+
+    One class for every method: each method declares the fields it honours and its own
+    default for each (:data:`vibrofriction.solver.methods.METHODS`; the table "what each
+    solver covers" in docs/solver.md).  A field left at None takes each method's default;
+    a field given a value is honoured by every method that declares it, and a point whose
+    method does not honour a field that was set is refused (``ValueError`` naming the
+    setting), never silently run with another value.
 
     Parameters
     ----------
-    max_periods : give up (status ``NOT_CONVERGED``) after this many drive periods.
-    min_periods : first checkpoint of the running average (doubling afterwards).
-    tol_state : relative distance of section states that counts as periodic.
-    tol_mean : agreement of successive averaging windows that counts as converged.
-    max_events : event budget per point (status ``FAILED`` beyond).
-    tol_trusted : a result is *trusted* when its status is a converged one and its
-        ``error`` (an estimate of ``|mu_ratio - exact|``) is at most this; the one
-        definition used by the figures, the report, the sweep and the command line.
+    max_periods : int or None
+        Drive periods after which the search gives up (status ``NOT_CONVERGED``); the MDR
+        solver: per row of springs.
+    min_periods : int or None
+        First checkpoint of the running average (doubling afterwards).
+    tol_state : float or None
+        Relative distance of section states that counts as periodic.
+    tol_mean : float or None
+        Agreement of successive averaging windows that counts as converged.
+    max_events : int or None
+        Event budget per point (status ``FAILED`` beyond).
+    max_events_per_period : int or None
+        Stick/slip switches per drive period beyond which a point fails (chatter).
+    rtol : float or None
+        Relative (and absolute) tolerance of the Runge-Kutta integration.
+    tol_trusted : float
+        A result is *trusted* when its status is a converged one and its ``error`` (an
+        estimate of ``|mu_ratio - exact|``) is at most this; the one definition used by
+        the figures, the report, the sweep and the command line.  Every method honours
+        it; the MDR solver also refines its row of springs until its error is below it.
     """
 
-    max_periods: int = 20000
-    min_periods: int = 64
-    tol_state: float = 1e-10
-    tol_mean: float = 1e-7
-    max_events: int = 20_000_000
+    max_periods: int | None = None
+    min_periods: int | None = None
+    tol_state: float | None = None
+    tol_mean: float | None = None
+    max_events: int | None = None
+    max_events_per_period: int | None = None
+    rtol: float | None = None
     tol_trusted: float = 1e-5
 
     def __post_init__(self) -> None:
-        for name in ("max_periods", "min_periods", "max_events"):
-            v = getattr(self, name)
-            if not (isinstance(v, int | np.integer) and v >= 1):
-                raise ValueError(f"{name} must be an integer >= 1, got {v!r}")
-        for name in ("tol_state", "tol_mean", "tol_trusted"):
-            v = getattr(self, name)
-            if not (math.isfinite(v) and 0.0 < v < 1.0):
-                raise ValueError(f"{name} must be in (0, 1), got {v!r}")
+        for f in fields(self):
+            v = getattr(self, f.name)
+            if v is None and f.name != "tol_trusted":
+                continue
+            if f.name in _COUNTS:
+                if not (isinstance(v, int | np.integer) and not isinstance(v, bool)
+                        and v >= 1):
+                    raise ValueError(f"settings.{f.name} must be an integer >= 1 or None "
+                                     f"(each method's default), got {v}")
+            elif not (isinstance(v, float | int | np.floating) and not isinstance(v, bool)
+                      and math.isfinite(v) and 0.0 < v < 1.0):
+                raise ValueError(f"settings.{f.name} must be a number in (0, 1)"
+                                 f"{'' if f.name == 'tol_trusted' else ' or None'}, got {v}")
+
+    def chosen(self) -> tuple[str, ...]:
+        """The fields given a value (not None), ``tol_trusted`` aside (every method
+        honours it)."""
+        return tuple(f.name for f in fields(self)
+                     if f.name != "tol_trusted" and getattr(self, f.name) is not None)
+
+    def resolved(self, defaults: Mapping[str, float | int]) -> dict[str, float | int]:
+        """The value of each field of ``defaults`` (a method's honoured settings and their
+        defaults): the one given here, else the default."""
+        return {k: d if getattr(self, k) is None else getattr(self, k)
+                for k, d in defaults.items()}
 
     def trusted(self, status: ArrayLike, error: ArrayLike) -> NDArray[np.bool_]:
         """Which results to trust: a converged status and ``error <= tol_trusted``.
@@ -75,16 +117,6 @@ class SolverSettings:
     def trusted_one(self, status: Status, error: float) -> bool:
         """:meth:`trusted` of one point, a :class:`Status` and its ``error``, as a bool."""
         return status.ok and error <= self.tol_trusted
-
-    def kernel_arguments(self) -> tuple[int, int, float, float, int]:
-        """``(max_periods, min_periods, tol_state, tol_mean, max_events)`` for the kernels."""
-        return self._kernel_arguments
-
-    @functools.cached_property
-    def _kernel_arguments(self) -> tuple[int, int, float, float, int]:
-        """:meth:`kernel_arguments`, converted once (the fields are frozen)."""
-        return (int(self.max_periods), int(self.min_periods), float(self.tol_state),
-                float(self.tol_mean), int(self.max_events))
 
 
 DEFAULT_SETTINGS = SolverSettings()

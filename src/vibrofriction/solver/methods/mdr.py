@@ -1,0 +1,117 @@
+"""The MDR solver: a curved tip as a row of springs (docs/contact_geometry.md).
+
+The method of dimensionality reduction maps an axisymmetric tip ``z = c r^n`` onto a row of
+independent springs, each with its own stick, slip and loss of contact; rows of ``N`` and
+``2N`` springs are solved exactly and extrapolated in ``N``
+(:func:`vibrofriction.solver.mdr.mdr_friction`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ... import theory
+from ..._kernels import codes
+from ...schema import METHOD_NAMES, Status, column_index
+from ..mdr import mdr_friction
+from ..points import PointTable
+from ..settings import SolverSettings
+from .base import Capabilities, Limit, new_outputs
+
+__all__ = ["MDR"]
+
+_CODE = METHOD_NAMES.index("mdr")
+#: The package's status of each status of :func:`~vibrofriction.solver.mdr.mdr_friction`.
+_MDR_STATUS = {"periodic": Status.PERIODIC, "averaged": Status.AVERAGED,
+               "not converged": Status.NOT_CONVERGED}
+
+
+class MdrMethod:
+    """The MDR solver of curved tips (:data:`MDR`)."""
+
+    capabilities = Capabilities(
+        name="mdr",
+        title="the MDR solver",
+        takes="a curved tip, profile_exponent finite",
+        parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x",
+                    "profile_exponent", "v_inertial", "inplane_on"),
+        limits=(
+            Limit("beta", "a rigid contact (beta = inf)", lambda p: np.isinf(p["beta"])),
+            Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0),
+            Limit("a_y", "a transverse in-plane oscillation (a_y > 0)",
+                  lambda p: p["a_y"] > 0.0),
+            Limit("a_x", "a longitudinal in-plane oscillation at v_inertial = 0 (springs "
+                  "that stick through whole cycles keep the elongation of the start, so "
+                  "the steady state depends on it; give a velocity != 0)",
+                  lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
+        ),
+        initial=("sliding",),
+        settings={"max_periods": 4000, "tol_state": 1e-11},
+        outputs=("mu_ratio", "error", "status", "period", "periods", "events",
+                 "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
+                 "slip_area_fraction", "open_area_fraction", "phase"),
+        sensitivities=False,
+        histories=True,
+        velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
+                   "tip (theory.profile_static_mu_ratio)",
+        notes=("tol_trusted is also the error the row of springs is refined to",),
+    )
+
+    def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
+              settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        """Output rows of ``points`` (``V >= 0``), point by point; see :class:`~.base.Method`.
+
+        Status: MDR ``"periodic"`` (the section state of the finer row repeats after one
+        period) is :attr:`Status.PERIODIC` (period 1), ``"averaged"``
+        :attr:`Status.AVERAGED`, ``"not converged"`` :attr:`Status.NOT_CONVERGED`
+        (``mu_ratio`` nan, ``error`` inf) or, where a row made no progress (infinite
+        error), :attr:`Status.FAILED`.  ``error`` is the solver's: the difference of the
+        rows of ``N`` and ``2N`` springs (the contact's discretisation) plus the orbits'
+        errors.  ``periods`` and ``events`` are the finer row's (its periods, the events of
+        its last period); ``work``, the time fractions of the single contact point, the
+        Floquet and window columns and the final section state are nan.
+        """
+        r = settings.resolved(self.capabilities.settings)
+        out_f, out_i = new_outputs(len(points))
+        c = column_index
+        out_f[:, c("lateral_ratio")] = 0.0
+        out_i[:, codes.I_PHASE] = codes.NO_PHASE
+        out_i[:, codes.I_METHOD] = _CODE
+        for i in range(len(points)):
+            am, pe, V = (float(points[k][i]) for k in ("amplitude", "profile_exponent",
+                                                        "v_inertial"))
+            out_f[i, c("mean_normal_ratio")] = theory.profile_mean_normal_force(am, pe)
+            if V == 0.0:
+                out_f[i, c("mu_ratio")] = theory.profile_static_mu_ratio(am, pe)
+                out_f[i, c("error")] = 0.0
+                out_f[i, c("work")] = 0.0
+                out_i[i, c("status")] = Status.STATIC.code
+                continue
+            m = mdr_friction(points["alpha"][i], points["beta"][i], am, V, pe,
+                             zeta=points["zeta"][i], tol=settings.tol_trusted,
+                             a_x=points["a_x"][i], phase_x=points["phase_x"][i],
+                             inplane_on=points.choice("inplane_on", i),
+                             state_tol=float(r["tol_state"]),
+                             max_periods=int(r["max_periods"]))
+            status = _MDR_STATUS[m["status"]]
+            mu, err = m["mu_ratio"], m["error"]
+            if status is Status.NOT_CONVERGED:
+                if not math.isfinite(err):
+                    status = Status.FAILED
+                mu, err = math.nan, math.inf
+            out_f[i, c("mu_ratio")] = mu
+            out_f[i, c("error")] = err
+            out_f[i, c("stick_area_fraction")] = m["stick_fraction"]
+            out_f[i, c("slip_area_fraction")] = m["slip_fraction"]
+            out_f[i, c("open_area_fraction")] = m["out_of_contact_fraction"]
+            out_i[i, c("status")] = status.code
+            out_i[i, c("period")] = 1 if status is Status.PERIODIC else 0
+            out_i[i, c("periods")] = m["periods"]
+            out_i[i, c("events")] = m["events_per_period"]
+        return out_f, out_i
+
+
+MDR = MdrMethod()

@@ -1,0 +1,97 @@
+"""The 2-D solver: a flat punch with a transverse in-plane oscillation (docs/inplane.md).
+
+The contact point moves in the plane; slip has a direction, so the phases are not linear
+ODEs and the motion is integrated by an embedded Runge-Kutta scheme with located events
+(:mod:`vibrofriction._kernels.plane`), the steady state found by Newton on the period map.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ... import theory
+from ..._kernels import codes
+from ..._kernels.plane import plane_steady_state_many
+from ...schema import METHOD_NAMES, Status, column_index
+from ..points import PointTable
+from ..settings import SolverSettings
+from .base import INITIAL_KINDS, Capabilities, Limit, new_outputs
+from .event import HELD_STICK, contact_columns
+
+__all__ = ["PLANE", "plane_arguments", "plane_held"]
+
+_CODE = METHOD_NAMES.index("plane")
+
+
+class PlaneMethod:
+    """The 2-D solver (:data:`PLANE`)."""
+
+    capabilities = Capabilities(
+        name="plane",
+        title="the 2-D solver",
+        takes="a flat punch, profile_exponent = inf, with a transverse oscillation, a_y > 0",
+        parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x", "a_y",
+                    "phase_y", "alpha_y", "zeta_y", "v_inertial", "inplane_on"),
+        limits=(
+            Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
+                  lambda p: np.isinf(p["beta"])),
+            Limit("amplitude", "grazing (amplitude = 1) with eta_c = 0",
+                  lambda p: (p["amplitude"] == 1.0) & (p["eta_c"] == 0.0)),
+        ),
+        initial=INITIAL_KINDS,
+        settings={"max_periods": 20000, "max_events_per_period": 10_000, "rtol": 1e-10},
+        outputs=("mu_ratio", "error", "work", "stick_fraction", "slip_fraction",
+                 "reverse_slip_fraction", "flight_fraction", "multiplier",
+                 "settling_periods", "window_min", "window_max", "drift_rate",
+                 "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
+                 "slip_area_fraction", "open_area_fraction", "y", "x_dot", "f", "e",
+                 "status", "period", "periods", "events", "phase", "degenerate"),
+        sensitivities=False,
+        histories=True,
+        velocities="every V: V < 0 by the mirror x -> -x; V = 0 by plain iteration of the "
+                   "period map (HELD where a stuck contact can hold a region of mean forces)",
+    )
+
+    def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
+              settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        """Output rows of ``points`` (``V >= 0``); see :class:`~.base.Method`."""
+        out_f, out_i = new_outputs(len(points))
+        plane_steady_state_many(points.values, init_kind, np.ascontiguousarray(init),
+                                *plane_arguments(settings), out_f, out_i)
+        contact_columns(out_f, points["amplitude"], np.ones(len(points), dtype=bool))
+        idx = np.flatnonzero(points["v_inertial"] == 0.0)
+        for on, rows in points.groups("inplane_on", idx):
+            p = points.take(rows)
+            mark = plane_held(out_i[rows, codes.I_STATUS],
+                              out_f[rows, column_index("stick_fraction")], p, on)
+            out_i[rows[mark], codes.I_STATUS] = Status.HELD.code
+        out_i[:, codes.I_METHOD] = _CODE
+        return out_f, out_i
+
+
+def plane_arguments(settings: SolverSettings) -> tuple[float, int, int]:
+    """``(rtol, max_periods, max_events_per_period)`` of the 2-D kernels: ``settings``
+    resolved with the method's defaults."""
+    PLANE.capabilities.check_settings(settings)
+    r = settings.resolved(PLANE.capabilities.settings)
+    return float(r["rtol"]), int(r["max_periods"]), int(r["max_events_per_period"])
+
+
+def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
+               points: PointTable, inplane_on: str) -> NDArray[np.bool_]:
+    """Which ``V = 0`` 2-D points (kernel ``status``, ``stick_fraction``) are held: the
+    region of mean forces a stuck contact can hold is not empty
+    (:func:`theory.plane_static_region`: a motion from outside it approaches its edge
+    with slips that die out, as in 1-D), or the motion stuck through its whole averaging
+    window or orbit.  ``points`` all have ``inplane_on``."""
+    p = points
+    region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"],
+                                        p["phase_x"], p["a_y"], p["phase_y"], p["zeta"],
+                                        p["eta_c"], inplane_on, p["alpha_y"], p["zeta_y"])
+    return (np.isfinite(np.atleast_1d(region.x_upper)) | (stick_fraction >= HELD_STICK)) \
+        & np.isin(status, (Status.PERIODIC.code, Status.AVERAGED.code,
+                           Status.NOT_CONVERGED.code))
+
+
+PLANE = PlaneMethod()
