@@ -52,6 +52,7 @@ def _timer(args, kw):
     """``solve_points`` on one point, or with ``KERNEL`` the compiled kernel alone."""
     from vibrofriction._kernels.steady import steady_state
     from vibrofriction.solver import solve_points
+    from vibrofriction.solver.methods.event import event_arguments
     from vibrofriction.solver.settings import DEFAULT_SETTINGS
 
     if KERNEL:
@@ -59,7 +60,7 @@ def _timer(args, kw):
         oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
         inplane = (*(args[6:] or (0.0, 0.0)), kw.get("inplane_on", "substrate") == "substrate")
         full = (*args[:6], *(inplane if INPLANE else ()), 0, 0.0, 0.0, 0.0, 0,
-                *DEFAULT_SETTINGS.kernel_arguments(), of, oi)
+                *event_arguments(DEFAULT_SETTINGS), of, oi)
 
         def call() -> None:
             steady_state(*full)
@@ -99,6 +100,7 @@ def against(src: str) -> None:
     alternately in one process (10 calls each, 40 times per regime); the median ratio."""
     old, old_settings = _old_package(src)
     from vibrofriction._kernels.steady import steady_state  # after the other one
+    from vibrofriction.solver.methods.event import event_arguments
     from vibrofriction.solver.settings import DEFAULT_SETTINGS
 
     of = np.empty(len(FLOAT_COLUMNS))
@@ -106,7 +108,7 @@ def against(src: str) -> None:
     ratios = {}
     for label, *p in REGIMES:
         a_old = (*p, 0, 0.0, 0.0, 0.0, 0, *old_settings.kernel_arguments(), of, oi)
-        a_new = (*p, 0.0, 0.0, True, 0, 0.0, 0.0, 0.0, 0, *DEFAULT_SETTINGS.kernel_arguments(),
+        a_new = (*p, 0.0, 0.0, True, 0, 0.0, 0.0, 0.0, 0, *event_arguments(DEFAULT_SETTINGS),
                  of, oi)
         old(*a_old)
         steady_state(*a_new)

@@ -86,19 +86,21 @@ def measure() -> dict[str, dict[str, float]]:
     import vibrofriction as vf
     from vibrofriction._kernels.steady import steady_state
     from vibrofriction.solver import engine
+    from vibrofriction.solver.methods import event
+    from vibrofriction.solver.methods.event import event_arguments
     from vibrofriction.solver.settings import DEFAULT_SETTINGS
 
     system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
-    real_one, real_many = engine.steady_state, engine.steady_state_many
+    real_one, real_many = engine.steady_state, event.steady_state_many
 
     def stubbed(call):
         def loop(n: int) -> None:
-            engine.steady_state, engine.steady_state_many = stub_one, stub_many
+            engine.steady_state, event.steady_state_many = stub_one, stub_many
             try:
                 for _ in range(n):
                     call()
             finally:
-                engine.steady_state, engine.steady_state_many = real_one, real_many
+                engine.steady_state, event.steady_state_many = real_one, real_many
         return loop
 
     out = {}
@@ -108,7 +110,7 @@ def measure() -> dict[str, dict[str, float]]:
         oi = np.empty(len(vf.solver.INT_COLUMNS), dtype=np.int64)
         args = (system.alpha, system.beta, system.amplitude, V, system.zeta, system.eta_c,
                 system.a_x, system.phase_x, True, 0, 0.0, 0.0, 0.0, 0,
-                *DEFAULT_SETTINGS.kernel_arguments(), of, oi)
+                *event_arguments(DEFAULT_SETTINGS), of, oi)
         stub_one, stub_many = _stub(real_one), _stub(real_many)
         t = _interleaved_medians({
             "whole": _loop(lambda v=vbar: vf.friction_coefficient(system, vbar=v)),

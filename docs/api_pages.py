@@ -140,3 +140,14 @@ def write_parameter_table(out: Path) -> None:
     path, text = out / "parameter_table.md", parameter_table()
     if not path.exists() or path.read_text() != text:
         path.write_text(text)
+
+
+def write_capability_table(out: Path) -> None:
+    """``_generated/methods.md``: what each solver covers, from the methods' declarations
+    (docs/solver.md includes it)."""
+    from vibrofriction.solver.methods import capability_table
+
+    out.mkdir(parents=True, exist_ok=True)
+    path, text = out / "methods.md", capability_table()
+    if not path.exists() or path.read_text() != text:
+        path.write_text(text)

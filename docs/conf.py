@@ -42,6 +42,7 @@ exclude_patterns = ["_build", "_generated", "img/README.md", "gallery/*.ipynb", 
                     "gallery/*.zip", "gallery/*.md5", "gallery/*.json"]
 api_pages.write(DOCS / "api")  # api/<module>.rst from each __all__ (gitignored)
 api_pages.write_parameter_table(DOCS / "_generated")  # parameters.md includes it
+api_pages.write_capability_table(DOCS / "_generated")  # solver.md includes it
 
 # MyST: the existing Markdown pages are the user guide; $...$ and $$...$$ are maths,
 # numbered with the paper's numbers by \tag{n}

@@ -16,8 +16,8 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction._kernels.steady import steady_state_many
 from vibrofriction.contact import Cone, FlatPunch, Material, PowerLaw, Sphere
-from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, column_index
-from vibrofriction.solver import SolverSettings, solve_points
+from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, POINT_COLUMNS, column_index
+from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction
 
 STEEL = Material(210e9, 0.3)
@@ -47,9 +47,12 @@ def test_the_flat_punch_is_the_kernels_output_unchanged():
     explicit = solve_points(al, be, am, V, ze, profile_exponent=math.inf)
     of = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     oi = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
-    steady_state_many(al, be, am, V, ze, np.zeros(n), np.zeros(n), np.zeros(n),
-                      np.full(n, True), 0, np.zeros((n, 4)),
-                      *SolverSettings().kernel_arguments(), of, oi)
+    points = np.zeros((n, len(POINT_COLUMNS)))  # the kernel's packed rows, by hand
+    for name, x in (("alpha", al), ("beta", be), ("amplitude", am), ("v_inertial", V),
+                    ("zeta", ze), ("profile_exponent", math.inf)):
+        points[:, POINT_COLUMNS.index(name)] = x
+    steady_state_many(points, 0, np.zeros((n, 4)), 20000, 64, 1e-10, 1e-7, 20_000_000,
+                      of, oi)
     for k in KERNEL_FLOATS:
         np.testing.assert_array_equal(default[k], of[:, column_index(k)], err_msg=k)
     for k in INT_COLUMNS:

@@ -17,6 +17,7 @@ import numpy as np
 
 import vibrofriction as vf
 from vibrofriction.schema import CHOICES, PARAMETER, parameter_names
+from vibrofriction.solver.methods import METHODS
 from vibrofriction.validation import checked, checked_choice
 
 __all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "MDR_POINTS", "MDR_REFUSED", "PROFILE",
@@ -76,11 +77,13 @@ PROFILES = {"flat": math.inf, "sphere": 2.0, "cone": 1.0}
 #: the exponent of the power law (slider range: a UI choice; the library takes any n > 0)
 PROFILE = _model_field("profile_exponent", 0.25, 20.0,
                        label="exponent n of the tip z = c r^n (power law)")
-#: the inputs the MDR solver does not take yet (a curved tip): reset to 0 and disabled,
+#: the inputs the MDR solver refuses whatever their value (its declared limits, whole):
+#: reset to 0 and disabled,
 #: with the library's refusal shown next to them (docs/explorer.md); it takes the
 #: longitudinal in-plane oscillation ``a_x`` at ``V != 0`` (not at ``V = 0``:
 #: :meth:`State.velocities` leaves that point out)
-MDR_REFUSED = ("eta_c", "a_y")
+MDR_REFUSED = tuple(lim.parameter for lim in METHODS["mdr"].capabilities.limits
+                    if lim.whole)
 #: the most points of a curve of a curved tip (the MDR solver: ~30 ms a point, up to a few
 #: tenths of a second near the onset of sliding)
 MDR_POINTS = 40

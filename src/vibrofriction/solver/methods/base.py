@@ -33,12 +33,14 @@ INITIAL_KINDS = ("sliding", "rest", "section state")
 class Limit:
     """Points a method does not cover: ``what`` in words, named by ``parameter``.
 
-    ``refuses(points)`` is True at the points refused (a :class:`PointTable`).
+    ``refuses(points)`` is True at the points refused (a :class:`PointTable`); ``whole``:
+    every value of ``parameter`` but its default is refused (a control to disable).
     """
 
     parameter: str
     what: str
     refuses: Callable[[PointTable], NDArray[np.bool_]]
+    whole: bool = False
 
 
 @dataclass(frozen=True)

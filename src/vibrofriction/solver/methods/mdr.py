@@ -40,9 +40,10 @@ class MdrMethod:
                     "profile_exponent", "v_inertial", "inplane_on"),
         limits=(
             Limit("beta", "a rigid contact (beta = inf)", lambda p: np.isinf(p["beta"])),
-            Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0),
+            Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
+                  whole=True),
             Limit("a_y", "a transverse in-plane oscillation (a_y > 0)",
-                  lambda p: p["a_y"] > 0.0),
+                  lambda p: p["a_y"] > 0.0, whole=True),
             Limit("a_x", "a longitudinal in-plane oscillation at v_inertial = 0 (springs "
                   "that stick through whole cycles keep the elongation of the start, so "
                   "the steady state depends on it; give a velocity != 0)",
