@@ -390,7 +390,7 @@ def test_profile_selector_names_and_the_curved_refusals():
     assert State(profile_exponent=2.0).curve_points == 40 and State().curve_points == 200
     sphere = State(profile_exponent=2.0, axis="V")
     for texts, field, words in (
-            ({"beta": "inf"}, "beta", "does not take a rigid contact (beta = inf) yet"),
+            ({"beta": "inf"}, "beta", "does not take a rigid contact (beta = inf)"),
             ({"eta_c": "0.1"}, "eta_c", "does not take contact damping (eta_c > 0)"),
             ({"a_y": "0.2"}, "a_y", "transverse in-plane oscillation (a_y > 0)"),
             ({"profile_exponent": "-1"}, "profile_exponent", "profile_exponent must be")):
@@ -468,7 +468,8 @@ def test_sphere_with_a_longitudinal_oscillation_leaves_out_v_zero():
     assert c["trusted"].all() and math.isnan(c["static"]) and math.isnan(c["critical"])
     assert c["band"] is None and c["closed_forms"] == []
     assert "derived without a_x" in c["critical_note"]
-    assert c["rest_note"].startswith("V = 0 left out of the curve: a curved profile")
+    assert c["rest_note"].startswith("V = 0 left out of the curve: the MDR solver")
+    assert c["rest_note"].endswith("got a_x = 0.5")
     assert "(a_x = 0.5) at v_inertial = 0" in c["rest_note"]
     text = curved_side_text(c, state)
     assert "no static value" in text and "no critical velocity" in text
@@ -539,8 +540,8 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
         assert not inp.text.disabled and not inp.slider.disabled
         assert not inp.message.visible
     assert not ex.inplane_on.disabled
-    assert "eta_c reset from 0.1 to 0: a curved profile" in ex.inputs["eta_c"].message.object
-    assert "a_y reset from 0.2 to 0: a curved profile" in ex.inputs["a_y"].message.object
+    assert "eta_c reset from 0.1 to 0: the MDR solver" in ex.inputs["eta_c"].message.object
+    assert "a_y reset from 0.2 to 0: the MDR solver" in ex.inputs["a_y"].message.object
     assert "axis set from vbar to V" in ex.axis_message.object
     assert ex.profile_note.visible
     assert ex.inputs["profile_exponent"].text.disabled  # only the power law is typed

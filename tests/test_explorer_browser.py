@@ -263,7 +263,7 @@ def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
 
     before = _open(page, server + "?eta_c=0.1")
     page.get_by_role("button", name="sphere", exact=True).click()
-    page.get_by_text(re.compile(r"eta_c.*reset from 0\.1 to 0: a curved profile")).wait_for()
+    page.get_by_text(re.compile(r"eta_c.*reset from 0\.1 to 0: the MDR solver")).wait_for()
     page.get_by_text(re.compile(r"axis set from vbar to V")).wait_for()
     after = _changed(page, READOUT.pattern, before)
     assert re.search(r"over the \d+ trusted of 40 points", after), after

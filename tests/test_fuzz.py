@@ -62,7 +62,7 @@ def _check_fuzz(n: int, seed: int) -> None:
         assert failed.size == 0, {k: v[failed[:3]] for k, v in p.items()}
         assert set(np.unique(r["status"])) <= set(STATUS_BY_CODE)
         assert np.all(r["events"] <= EVENT_BUDGET)
-        assert np.all(r["periods"] <= SETTINGS.max_periods)
+        assert np.all(r["periods"] <= 20000)  # the event solver's default max_periods
         # a value only where the status gives one; none (nan, inf) where it does not
         answered = np.isin(r["status"], [0, 1, 4])
         assert np.all(np.isfinite(r["mu_ratio"][answered]))

@@ -53,10 +53,10 @@ def test_schema_is_standard_library_only() -> None:
 def test_every_field_has_a_unit_a_long_name_and_a_known_kind() -> None:
     assert len({f.name for f in schema.FIELDS}) == len(schema.FIELDS)
     for f in schema.FIELDS:
-        assert f.kind in ("float", "int", "bool", "object"), f
+        assert f.kind in ("float", "int", "bool", "str", "object"), f
         assert f.long_name and len(f.long_name) > 10, f
         assert f.role in ("result", "state", "kernel"), f
-        assert f.kind == "object" or f.unit, f  # every number has a unit ("1": none)
+        assert f.kind in ("object", "str") or f.unit, f  # every number has a unit ("1": none)
     assert FIELD["mu_ratio"].equation == "(25)"
 
 

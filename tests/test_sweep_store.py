@@ -89,7 +89,7 @@ def test_interrupted_sweep_resumes_only_unfinished_blocks(
                               r"values 0.01..0.1"),
     (dict(vbar=np.linspace(0, 1.2, 14)), r"velocity.vbar"),
     (dict(settings=SolverSettings(max_periods=100)),
-     r"settings.max_periods: store has 20000, this call 100"),
+     r"settings.max_periods: store has each method's default, this call 100"),
     (dict(initial="rest"), r"initial: store has 'sliding', this call 'rest'"),
 ])
 def test_store_of_another_sweep_is_a_clear_error(tmp_path: Path, changes, message) -> None:

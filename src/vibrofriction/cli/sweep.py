@@ -85,7 +85,8 @@ def sweep_command(
     continuation: Annotated[bool, typer.Option(
         help="walk each velocity curve up then down from the previous final state")] = False,
     initial: Annotated[str, typer.Option(help="initial state: sliding or rest")] = "sliding",
-    max_periods: Annotated[int, typer.Option(help="give up after this many periods")] = 20000,
+    max_periods: Annotated[int | None, typer.Option(
+        help="give up after this many periods (default: each solver's own)")] = None,
     tol_trusted: Annotated[float, typer.Option(
         help="largest error estimate of a trusted point")] = SolverSettings.tol_trusted,
     overwrite: Annotated[bool, typer.Option(help="replace the store, do not resume")] = False,

@@ -6,6 +6,8 @@ import math
 import re
 from collections.abc import Mapping
 
+from vibrofriction.solver.methods import Refusal
+
 from .state import FIELDS, MDR_REFUSED, State, parse_number
 
 __all__ = ["GENERAL", "curved_refusal", "field_of", "read_inputs"]
@@ -16,8 +18,6 @@ GENERAL = "general"
 _ALIASES = {"du_z": "du_z_um", "dF_N": "du_z_um", "k_x": "mass",
             "vbar": "v_max", "v_inertial": "v_max", "v0": "v_max"}
 _FIRST_WORD = re.compile(r"^\s*([A-Za-z_][A-Za-z_0-9]*)")
-# the MDR solver's refusal names the input last: "... yet: got eta_c = 0.1"
-_CURVED_REFUSAL = re.compile(r"^a curved profile .* got ([A-Za-z_][A-Za-z_0-9]*) = ")
 
 
 def field_of(message: str, mode: str = "dimensionless") -> str:
@@ -29,9 +29,6 @@ def field_of(message: str, mode: str = "dimensionless") -> str:
     if "v0* is" in message or "v0 (m/s) needs" in message or \
             (word == "vbar" and "curved profile" in message):
         return "axis"
-    refused = _CURVED_REFUSAL.match(message)
-    if refused:
-        word = refused.group(1)
     word = _ALIASES.get(word, word)
     return word if word in FIELDS else GENERAL
 
@@ -56,6 +53,8 @@ def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, di
         _check_axis(state, system)
         if state.curved:
             _check_curved(state)
+    except Refusal as exc:  # a solver's declared limit names the input
+        return None, {exc.parameter if exc.parameter in FIELDS else GENERAL: str(exc)}
     except (ValueError, TypeError) as exc:
         return None, {field_of(str(exc), state.mode): str(exc)}
     return state, {}

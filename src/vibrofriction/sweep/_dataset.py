@@ -8,6 +8,7 @@ import json
 import numpy as np
 import xarray as xr
 
+from ..solver.methods import METHODS
 from ._grid import DIMENSIONLESS, DIRECTIONS, Plan
 from ._variables import COORD_ATTRS, point_variables, row_variables
 
@@ -35,8 +36,12 @@ def _attrs(plan: Plan) -> dict:
         "inplane_on": plan.inplane_on,
         "continuation": int(plan.continuation),
         "solver_settings": json.dumps(s, sort_keys=True),
+        # what each solver ran with: the settings resolved with its own defaults
+        "solver_methods": json.dumps({name: plan.settings.resolved(m.capabilities.settings)
+                                      for name, m in METHODS.items()}, sort_keys=True),
     }
-    attrs.update({f"solver_{k}": v for k, v in s.items()})
+    # a setting left at None is each solver's own default (solver_methods)
+    attrs.update({f"solver_{k}": "default" if v is None else v for k, v in s.items()})
     return attrs
 
 

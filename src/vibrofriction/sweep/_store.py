@@ -182,7 +182,7 @@ def _describe(key: str, stored: dict[str, Any], wanted: dict[str, Any]) -> str:
 
     def show(v):
         if v is None:
-            return "absent"
+            return "each method's default" if key.startswith("settings.") else "absent"
         if hexed and isinstance(v, list):
             vals = [float.fromhex(x) for x in v]
             return f"{len(vals)} values {vals[0]:g}..{vals[-1]:g}" if vals else "[]"

@@ -13,12 +13,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ...schema import METHOD_NAMES
-from .base import INITIAL_KINDS, Capabilities, Limit, Method
+from .base import INITIAL_KINDS, Capabilities, Limit, Method, Refusal
 from .event import EVENT
 from .mdr import MDR
 from .plane import PLANE
 
-__all__ = ["INITIAL_KINDS", "METHODS", "Capabilities", "Limit", "Method", "capability_table",
+__all__ = ["INITIAL_KINDS", "METHODS", "Capabilities", "Limit", "Method", "Refusal",
+           "capability_table",
            "choose", "method_of"]
 
 #: Every method by name (:data:`vibrofriction.schema.METHOD_NAMES`, in that order).
@@ -50,7 +51,8 @@ def capability_table() -> str:
         ("velocities", [c.velocities for c in caps]),
         ("initial states", [", ".join(c.initial) for c in caps]),
         ("settings honoured (default)",
-         [", ".join(f"`{k}` ({v:g})" for k, v in c.settings.items()) + ", `tol_trusted`"
+         [", ".join(f"`{k}` ({v:,})" if isinstance(v, int) else f"`{k}` ({v:g})"
+                    for k, v in c.settings.items()) + ", `tol_trusted`"
           for c in caps]),
         ("outputs (the rest nan)", [_outputs(c) for c in caps]),
         ("sensitivities", ["yes" if c.sensitivities else "no" for c in caps]),

@@ -23,10 +23,19 @@ from ...schema import FLOAT_COLUMNS, INT_COLUMNS
 from ..points import PointTable
 from ..settings import SolverSettings
 
-__all__ = ["INITIAL_KINDS", "Capabilities", "Limit", "Method", "new_outputs"]
+__all__ = ["INITIAL_KINDS", "Capabilities", "Limit", "Method", "Refusal", "new_outputs"]
 
 #: The kinds of initial state, by the kernels' code: steady sliding, rest, a section state.
 INITIAL_KINDS = ("sliding", "rest", "section state")
+
+
+class Refusal(ValueError):
+    """A point, initial state or setting a method does not cover; ``parameter`` names the
+    input refused (a parameter, ``"initial"`` or ``"settings.<field>"``)."""
+
+    def __init__(self, message: str, parameter: str) -> None:
+        super().__init__(message)
+        self.parameter = parameter
 
 
 @dataclass(frozen=True)
@@ -95,12 +104,13 @@ class Capabilities:
             bad = limit.refuses(points)
             if np.any(bad):
                 i = int(np.flatnonzero(bad)[0])
-                raise ValueError(f"{self.title} ({self.takes}) does not take {limit.what}: "
-                                 f"got {limit.parameter} = {_number(points[limit.parameter][i])}")
+                raise Refusal(f"{self.title} ({self.takes}) does not take {limit.what}: "
+                              f"got {limit.parameter} = {_number(points[limit.parameter][i])}",
+                              limit.parameter)
         kind = INITIAL_KINDS[init_kind]
         if kind not in self.initial and np.any(points["v_inertial"] != 0.0):
-            raise ValueError(f"initial = {kind}: {self.title} ({self.takes}) starts from "
-                             f"{' or '.join(self.initial)} only")
+            raise Refusal(f"initial = {kind}: {self.title} ({self.takes}) starts from "
+                          f"{' or '.join(self.initial)} only", "initial")
         self.check_settings(settings)
 
     def check_settings(self, settings: SolverSettings) -> None:
@@ -108,10 +118,10 @@ class Capabilities:
         that this method does not honour."""
         unknown = [k for k in settings.chosen() if k not in self.settings]
         if unknown:
-            raise ValueError(f"settings.{unknown[0]} = {getattr(settings, unknown[0])} is not "
-                             f"honoured by {self.title} ({self.takes}), which takes "
-                             f"{', '.join(self.settings)} and tol_trusted: leave it None "
-                             "(each method's default)")
+            raise Refusal(f"settings.{unknown[0]} = {getattr(settings, unknown[0])} is not "
+                          f"honoured by {self.title} ({self.takes}), which takes "
+                          f"{', '.join(self.settings)} and tol_trusted: leave it None "
+                          "(each method's default)", f"settings.{unknown[0]}")
 
 
 def _number(x: float) -> str:
