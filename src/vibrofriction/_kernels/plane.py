@@ -695,7 +695,8 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
 
     ``rtol`` the Runge-Kutta tolerance (``atol = rtol``); the error estimate adds the
     difference from a second solve at ``100 rtol`` to the section residual's effect.
-    ``max_periods`` bounds the averaging fallback; ``max_events`` the switches per
+    ``max_periods`` bounds the whole search (an orbit found later is not converged);
+    ``max_events`` the switches per
     period (chatter: status failed)."""
     plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
                          zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
@@ -728,7 +729,7 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     k = P[P_K]
     periods = 0
     # a transient by plain iteration: until the map moves the state by < 1e-4
-    for _ in range(20):
+    for _ in range(min(20, max_periods)):
         ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
         periods += 1
         if not ok:
@@ -778,6 +779,8 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
                 mult = info[3]
                 status = ST_PERIODIC
         periods_to_orbit = periods
+        if status == ST_PERIODIC and periods > max_periods:
+            status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
         res = info[1]
         if status == ST_PERIODIC:
             orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)

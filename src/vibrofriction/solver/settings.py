@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, fields
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -76,6 +77,9 @@ class SolverSettings:
     tol_trusted: float = 1e-5
 
     def __post_init__(self) -> None:
+        # what the methods derive from the settings, once (not a field: not compared,
+        # hashed or stored; the fields are frozen, so it never goes stale)
+        object.__setattr__(self, "_derived", {})
         for f in fields(self):
             v = getattr(self, f.name)
             if v is None and f.name != "tol_trusted":
@@ -101,6 +105,14 @@ class SolverSettings:
         defaults): the one given here, else the default."""
         return {k: d if getattr(self, k) is None else getattr(self, k)
                 for k, d in defaults.items()}
+
+    def derived(self, key: str, make: Callable[[SolverSettings], Any]) -> Any:
+        """``make(self)``, computed once per settings object and key (a method's kernel
+        arguments: the one-point path pays a dictionary look-up)."""
+        d = self.__dict__["_derived"]
+        if key not in d:
+            d[key] = make(self)
+        return d[key]
 
     def trusted(self, status: ArrayLike, error: ArrayLike) -> NDArray[np.bool_]:
         """Which results to trust: a converged status and ``error <= tol_trusted``.

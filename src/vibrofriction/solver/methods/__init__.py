@@ -9,6 +9,8 @@ one entry in :data:`METHODS` and one branch of :func:`choose`.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -36,8 +38,10 @@ def choose(profile_exponent: ArrayLike, a_y: ArrayLike) -> NDArray[np.int64]:
 
 
 def method_of(profile_exponent: float, a_y: float) -> Method:
-    """The method of one point (:func:`choose`)."""
-    return METHODS[METHOD_NAMES[int(choose(profile_exponent, a_y))]]
+    """The method of one point: :func:`choose` on Python floats (the one-point path)."""
+    if profile_exponent != math.inf:
+        return MDR
+    return PLANE if a_y > 0.0 else EVENT
 
 
 def capability_table() -> str:

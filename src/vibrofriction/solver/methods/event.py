@@ -9,8 +9,6 @@ and where the contact can stick through whole cycles the status is ``HELD``.
 
 from __future__ import annotations
 
-import functools
-
 import numpy as np
 from numpy.typing import NDArray
 
@@ -87,10 +85,14 @@ class EventMethod:
         return out_f, out_i
 
 
-@functools.lru_cache(maxsize=64)
 def event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:
     """``(max_periods, min_periods, tol_state, tol_mean, max_events)`` of the event kernels:
-    ``settings`` resolved with the method's defaults."""
+    ``settings`` resolved with the method's defaults (a setting it does not honour is
+    refused)."""
+    return settings.derived("event", _event_arguments)
+
+
+def _event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:
     EVENT.capabilities.check_settings(settings)
     r = settings.resolved(EVENT.capabilities.settings)
     return (int(r["max_periods"]), int(r["min_periods"]), float(r["tol_state"]),
