@@ -22,7 +22,8 @@ __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
 SUBSTEPS = 1024  # the scan's floor of sub-steps a period (docs: grazing events)
-MAX_PERIODS = 4000
+MAX_PERIODS = 4000  # a row's default budget (SolverSettings.max_periods)
+STATE_TOL = 1e-11  # a row's default tol_state (SolverSettings.tol_state)
 AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
 ACCELERATED_PERIODS = 200  # then plain iteration
@@ -82,7 +83,7 @@ def _start(alpha: float, a: float, n_exp: float, M: int,
 
 
 def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_exponent: float,
-            n_springs: int, zeta: float = 0.0, state_tol: float = 1e-11,
+            n_springs: int, zeta: float = 0.0, state_tol: float = STATE_TOL,
             substeps: int = SUBSTEPS, max_periods: int = MAX_PERIODS,
             warm: tuple | None = None, accelerate: bool = True, a_x: float = 0.0,
             phase_x: float = 0.0, inplane_on: str = "substrate") -> dict:
@@ -144,7 +145,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  profile_exponent: float, zeta: float = 0.0, n_springs: int | None = None,
                  tol: float = 1e-5, a_x: float = 0.0, phase_x: float = 0.0,
-                 inplane_on: str = "substrate", state_tol: float = 1e-11,
+                 inplane_on: str = "substrate", state_tol: float = STATE_TOL,
                  max_periods: int = MAX_PERIODS) -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 

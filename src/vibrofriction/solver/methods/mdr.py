@@ -16,7 +16,7 @@ from numpy.typing import NDArray
 from ... import theory
 from ..._kernels import codes
 from ...schema import METHOD_NAMES, Status, column_index
-from ..mdr import mdr_friction
+from ..mdr import MAX_PERIODS, STATE_TOL, mdr_friction
 from ..points import PointTable
 from ..settings import SolverSettings
 from .base import Capabilities, Limit, new_outputs
@@ -50,7 +50,7 @@ class MdrMethod:
                   lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
         ),
         initial=("sliding",),
-        settings={"max_periods": 4000, "tol_state": 1e-11},
+        settings={"max_periods": MAX_PERIODS, "tol_state": STATE_TOL},
         outputs=("mu_ratio", "error", "status", "period", "periods", "events",
                  "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
                  "slip_area_fraction", "open_area_fraction", "phase"),
