@@ -420,9 +420,9 @@ def _mdr_rows(out_f: NDArray[np.float64], out_i: NDArray[np.int64], rows: NDArra
             mu, err = math.nan, math.inf
         out_f[i, c("mu_ratio")] = mu
         out_f[i, c("error")] = err
-        out_f[i, _O_STICK_AREA] = r["stick_fraction"]
-        out_f[i, _O_SLIP_AREA] = r["slip_fraction"]
-        out_f[i, _O_OPEN_AREA] = r["out_of_contact_fraction"]
+        out_f[i, _O_STICK_AREA] = r["stick_area_fraction"]
+        out_f[i, _O_SLIP_AREA] = r["slip_area_fraction"]
+        out_f[i, _O_OPEN_AREA] = r["open_area_fraction"]
         out_i[i, c("status")] = status.code
         out_i[i, c("period")] = 1 if status is Status.PERIODIC else 0
         out_i[i, c("periods")] = r["periods"]
