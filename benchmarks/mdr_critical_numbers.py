@@ -134,11 +134,11 @@ def solver_check() -> None:
         for f in (0.999, 1.001):
             r = mdr_friction(al, be, a, f * vc, n, ze)
             cells.append(f"{r['mu_ratio']:.8f} +- {r['error']:.1e}, "
-                         f"{r['stick_fraction']:.3g}")
+                         f"{r['stick_area_fraction']:.3g}")
         for M in ROWS:
             def slides(V, M=M, p=(al, be, a, n, ze)):  # no periodic orbit: no sliding
                 r = mdr_row(*p[:3], V, p[3], M, p[4], max_periods=600)
-                return r["status"] == "periodic" and r["stick_fraction"] == 0.0
+                return r["status"] == "periodic" and r["stick_area_fraction"] == 0.0
             onset = bisect(slides, 0.98 * vc, 1.02 * vc, ROW_RTOL)
             own = row_critical(al, be, a, n, ze, M)
             cells.append(f"{onset / vc - 1:+.2e}; {own / vc - 1:+.2e}")

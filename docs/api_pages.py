@@ -24,7 +24,8 @@ MODULES = [
     ("vibrofriction.figures", "Every figure of the reproduction, and the plotting helpers"),
     ("vibrofriction.report", "The reproduction report"),
     ("vibrofriction.explorer", "The browser explorer (Panel)"),
-    ("vibrofriction.schema", "The one vocabulary: parameters, result fields, statuses"),
+    ("vibrofriction.schema", "The one vocabulary: parameters, result fields, statuses, contact "
+     "states"),
     ("vibrofriction.validation", "The one validator of model parameters"),
     ("vibrofriction.parallel", "The one pool of worker processes"),
 ]

@@ -12,6 +12,7 @@ from vibrofriction.explorer import compute, exports
 from vibrofriction.explorer.messages import GENERAL, field_of, read_inputs
 from vibrofriction.explorer.state import State
 from vibrofriction.explorer.views import CurveView, HistoryView
+from vibrofriction.schema import ContactState
 
 
 def test_import_vibrofriction_does_not_import_panel():
@@ -509,8 +510,9 @@ def test_sphere_history_shows_the_contact_in_space_and_time():
     depth = 1.0 + 0.5 * np.cos(2 * math.pi * t)
     gap = xi[None, :] ** 2 - depth[:, None]
     clear = np.abs(gap) > 1e-9
-    np.testing.assert_array_equal((codes == 0)[clear], (gap > 0)[clear])
-    assert {1, 2} <= set(np.unique(codes))  # stick and slip both occur at this point
+    np.testing.assert_array_equal((codes == ContactState.FLIGHT)[clear], (gap > 0)[clear])
+    # stick and slip both occur at this point
+    assert {ContactState.STICK, ContactState.SLIP_POS} <= set(np.unique(codes))
     np.testing.assert_allclose(st["contact_radius"], np.sqrt(depth), rtol=1e-12)
     view = SpaceTimeView()
     view.show(h, "V = 0.3")

@@ -260,6 +260,7 @@ def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
     named, the space-time view of the picked point is drawn (stick and slip pixels in
     it), a typed beta = inf is refused beside beta."""
     from vibrofriction.explorer.views import CONTACT_COLORS
+    from vibrofriction.schema import ContactState
 
     before = _open(page, server + "?eta_c=0.1")
     page.get_by_role("button", name="sphere", exact=True).click()
@@ -278,7 +279,8 @@ def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
     page.wait_for_timeout(1000)  # the canvas draws after the text
     png = page.locator(".vf-spacetime").first.screenshot()
     stick, slip = (_colour_share(png, tuple(int(c[i:i + 2], 16) for i in (1, 3, 5)))
-                   for c in CONTACT_COLORS[1:3])
+                   for c in (CONTACT_COLORS[ContactState.STICK],
+                             CONTACT_COLORS[ContactState.SLIP_POS]))
     assert stick > 0.05 and slip > 0.02, (stick, slip)
     beta = _text_box(page, 1)
     beta.fill("inf")

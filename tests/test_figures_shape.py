@@ -11,6 +11,7 @@ import pytest
 
 from vibrofriction.figures import all_recipes, contact, shape, style
 from vibrofriction.figures.recipe import solve_recipes
+from vibrofriction.schema import ContactState
 
 NAMES = ("fig17_shape", "fig18_sphere_linearised")
 RECIPES = {"fig17_shape": shape.shape_dependence, "fig18_sphere_linearised":
@@ -61,7 +62,7 @@ def test_fig19_sphere_contact_renders_with_its_checks(tmp_path) -> None:
             assert c.deviation < 1e-12, c
     hs = contact.sphere_histories()
     jumping = hs[1.5]
-    centre_open = np.mean(jumping.spring_state[:-1, 0] == 0)
+    centre_open = np.mean(jumping.spring_state[:-1, 0] == ContactState.FLIGHT)
     assert centre_open == pytest.approx(1 - math.acos(-1 / 1.5) / math.pi, abs=2 / 720)
     assert "27 %" in recipe.caption and f"{100 * centre_open:.1f} %" in out.notes
 

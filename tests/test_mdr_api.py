@@ -92,9 +92,9 @@ def test_a_curved_tip_is_the_mdr_solvers_value(alpha, beta, a, V, zeta, n):
     assert r.mu_ratio == ref["mu_ratio"] and r.error == ref["error"]
     assert ref["status"] == "periodic" and r.status is vf.Status.PERIODIC and r.period == 1
     assert r.trusted and r.error <= 1e-5
-    assert r.stick_area_fraction == ref["stick_fraction"]
-    assert r.slip_area_fraction == ref["slip_fraction"]
-    assert r.open_area_fraction == ref["out_of_contact_fraction"]
+    assert r.stick_area_fraction == ref["stick_area_fraction"]
+    assert r.slip_area_fraction == ref["slip_area_fraction"]
+    assert r.open_area_fraction == ref["open_area_fraction"]
     assert r.stick_area_fraction + r.slip_area_fraction + r.open_area_fraction \
         == pytest.approx(1.0, abs=1e-12)
     assert r.open_area_fraction > 0.0  # the outer ring of the disc lifts off

@@ -108,7 +108,7 @@ def test_agrees_with_the_cached_reference_within_the_error_bars(p):
                          phase_x=p["phase_x"], inplane_on=p["inplane_on"])
         assert r["mu_ratio"] == mu   # solve_points routes the point to mdr_friction
         assert r["max_excess"] <= 1e-12   # |f_i| <= n_i at every scan point
-        assert r["stick_fraction"] + r["slip_fraction"] + r["out_of_contact_fraction"] == \
+        assert r["stick_area_fraction"] + r["slip_area_fraction"] + r["open_area_fraction"] == \
             pytest.approx(1.0, abs=1e-12)
 
 

@@ -69,7 +69,7 @@ def test_agrees_with_the_reference_within_the_error_bars(alpha, beta, a, V, zeta
                                                    abs=2e-3)
     # the friction cone per spring at every scan point of the last row
     assert r["max_excess"] <= 1e-12
-    assert r["stick_fraction"] + r["slip_fraction"] + r["out_of_contact_fraction"] == \
+    assert r["stick_area_fraction"] + r["slip_area_fraction"] + r["open_area_fraction"] == \
         pytest.approx(1.0, abs=1e-12)
 
 

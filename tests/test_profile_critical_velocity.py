@@ -112,10 +112,10 @@ def test_mdr_solver_slides_continuously_just_above_v_c_only(alpha, beta, a, n, z
     below = mdr_friction(alpha, beta, a, 0.999 * vc, n, zeta)
     assert above["status"] == below["status"] == "periodic"
     # continuous sliding: f_i = n_i, so <F_x> = mu0 <F_N>
-    assert above["stick_fraction"] == 0.0
+    assert above["stick_area_fraction"] == 0.0
     assert above["mu_ratio"] == pytest.approx(1.0, abs=1e-12)
     # just below, springs stick; the deficit 1 - mu (~ (V_c - V)^2) can be inside the bar
-    assert below["stick_fraction"] > 1e-3 and below["mu_ratio"] < 1.0 + below["error"]
+    assert below["stick_area_fraction"] > 1e-3 and below["mu_ratio"] < 1.0 + below["error"]
     further = mdr_friction(alpha, beta, a, 0.99 * vc, n, zeta)  # 1 - mu grows ~ (V_c - V)^2
     assert further["mu_ratio"] < 1.0 - 10.0 * further["error"]
 

@@ -8,10 +8,12 @@ from importlib.metadata import PackageNotFoundError, version
 
 from .params import Case, Dimensionless, Physical, classify, pin_damping
 from .solver import (
+    CurvedHistory,
     Event,
     FrictionResult,
     FrictionResults,
     History,
+    PlaneHistory,
     SectionState,
     SolverSettings,
     Status,
@@ -43,12 +45,14 @@ def __getattr__(name: str):
 
 __all__ = [
     "Case",
+    "CurvedHistory",
     "Dimensionless",
     "Event",
     "FrictionResult",
     "FrictionResults",
     "History",
     "Physical",
+    "PlaneHistory",
     "SectionState",
     "SolverSettings",
     "Status",

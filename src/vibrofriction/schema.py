@@ -6,14 +6,16 @@ Each :class:`Field` carries its name, kind, unit, long name and the paper's equa
 the sweep's variables, the figures' curves, ``vibrofriction mu --json`` and the
 explorer's curves are derived from :data:`FIELDS`.  :class:`Status` is the one status
 vocabulary: each member carries its kernel code, its name, whether it is converged
-and its message.  :data:`PARAMETERS` is the model's description: each
+and its message.  :class:`ContactState` is the one vocabulary of contact states (stick,
+slip+, slip-, flight) of every solver: the kernels' codes and the names of histories,
+results, figures and the explorer.  :data:`PARAMETERS` is the model's description: each
 :class:`Parameter` carries its name, model, unit, long name, symbol, equation, allowed
 :class:`Range` and default; :func:`vibrofriction.validation.validated` checks values
 against it, and :class:`~vibrofriction.Dimensionless`, :class:`~vibrofriction.Physical`,
 the sweep's coordinates, ``vibrofriction mu --json`` and the explorer follow it.
 
-Standard library only: the numba kernels import it (their column indices and status
-codes come from here, :mod:`vibrofriction._kernels.codes`).
+Standard library only: the numba kernels import it (their column indices, status codes
+and contact-state codes come from here, :mod:`vibrofriction._kernels.codes`).
 """
 
 from __future__ import annotations
@@ -21,11 +23,12 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-__all__ = ["CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS", "INT_COLUMNS",
-           "METHOD_NAMES", "POINT_COLUMNS", "point_index",
-           "LENGTH_UNIT", "MODELS", "PARAMETER", "PARAMETERS", "RESULT_FIELDS", "STATE_FIELDS",
-           "STATUS_BY_CODE", "VELOCITY_UNIT", "CHOICES", "Choice", "Field", "Parameter",
-           "Range", "Status", "choice_names", "column_index", "parameter_names", "parameters"]
+__all__ = ["CONTACT_STATE_NAMES", "CONVERGED_CODES", "FIELD", "FIELDS", "FLOAT_COLUMNS",
+           "INT_COLUMNS", "LENGTH_UNIT", "METHOD_NAMES", "MODELS", "NO_STATE", "PARAMETER",
+           "PARAMETERS", "PARTIAL", "POINT_COLUMNS", "RESULT_FIELDS", "STATE_FIELDS",
+           "STATUS_BY_CODE", "VELOCITY_UNIT", "CHOICES", "Choice", "ContactState", "Field",
+           "Parameter", "Range", "Status", "choice_names", "column_index", "parameter_names",
+           "parameters", "point_index"]
 
 #: Units of the scaled variables (docs/model.md).
 VELOCITY_UNIT = "mu0 F_N0 / (m omega)"
@@ -56,11 +59,65 @@ class Field:
     dtype: str = ""
 
 
-def _fraction(what: str, index: int) -> Field:
-    name = {"stick": "stick_fraction", "forward slip": "slip_fraction",
-            "backward slip": "reverse_slip_fraction", "flight": "flight_fraction"}[what]
-    return Field(name, "float", "1", f"fraction of time in {what} (averaging window)",
-                 column=("float", index), dtype="f8")
+# --------------------------------------------------------------------------- contact states
+class ContactState(enum.IntEnum):
+    """The state of a contact: the single contact point (the flat punch, in 1-D and 2-D)
+    or one spring of a curved tip's row (the method of dimensionality reduction).
+
+    The value is the kernels' code (stored in atlases and CSVs as the result's ``phase``,
+    and in ``CurvedHistory.spring_state``); :attr:`label` the name of the state
+    (``History.phase``, ``SectionState.phase``, :class:`~vibrofriction.Event`) and
+    :attr:`long_name` the words of figure legends.  ``FLIGHT`` is out of contact: the
+    point jumps, or a spring of the row is off the substrate.
+    """
+
+    STICK = 0  # the contact point moves with the substrate
+    SLIP_POS = 1  # it slides forwards, in +x (the drive's direction): f = +mu0 F_N
+    SLIP_NEG = 2  # it slides backwards, in -x: f = -mu0 F_N
+    FLIGHT = 3  # out of contact: no force
+
+    @property
+    def label(self) -> str:
+        """The state's name: ``"stick"``, ``"slip+"``, ``"slip-"``, ``"flight"``."""
+        return CONTACT_STATE_NAMES[self.value]
+
+    @property
+    def long_name(self) -> str:
+        """Words for a legend: ``"stick"``, ``"forward slip"``, ``"reverse slip"``,
+        ``"flight"``."""
+        return _STATE_LONG_NAMES[self.value]
+
+    @classmethod
+    def from_label(cls, name: str) -> ContactState:
+        """The member named ``name`` (:attr:`label`); ValueError for an unknown name."""
+        try:
+            return cls(CONTACT_STATE_NAMES.index(name))
+        except ValueError:
+            raise ValueError(f"unknown contact state {name!r}; known: "
+                             f"{list(CONTACT_STATE_NAMES)}") from None
+
+
+#: The names of the contact states, by code (:attr:`ContactState.label`).
+CONTACT_STATE_NAMES: tuple[str, ...] = ("stick", "slip+", "slip-", "flight")
+_STATE_LONG_NAMES = ("stick", "forward slip", "reverse slip", "flight")
+#: The code of no state: a static point has no section state, and a kernel's entry into
+#: a phase with no phase to avoid.
+NO_STATE = -1
+#: The name of a curved tip's contact whose springs in contact are not all in one state
+#: (stick and slip at once: partial slip), in ``CurvedHistory.phase``; never a code.
+PARTIAL = "partial"
+if [m.label for m in ContactState] != list(CONTACT_STATE_NAMES) or len(_STATE_LONG_NAMES) != \
+        len(CONTACT_STATE_NAMES) or [m.value for m in ContactState] != \
+        list(range(len(ContactState))):
+    raise AssertionError("ContactState: codes 0..n-1, one name and one long name each")
+
+
+def _fraction(state: ContactState, index: int) -> Field:
+    name = {ContactState.STICK: "stick_fraction", ContactState.SLIP_POS: "slip_fraction",
+            ContactState.SLIP_NEG: "reverse_slip_fraction",
+            ContactState.FLIGHT: "flight_fraction"}[state]
+    return Field(name, "float", "1", f"fraction of time in {state.long_name} (averaging "
+                 "window)", column=("float", index), dtype="f8")
 
 
 #: Every quantity, in the order of :class:`~vibrofriction.FrictionResult` (results
@@ -86,10 +143,10 @@ FIELDS: tuple[Field, ...] = (
           "tip's solver; the kernels' rows hold its index)", column=("int", 6), dtype="i1"),
     Field("work", "float", "drive periods", "drive periods integrated in all, Newton's period "
           "maps, verification and averaging included", column=("float", 15), dtype="f8"),
-    _fraction("stick", 2),
-    _fraction("forward slip", 3),
-    _fraction("backward slip", 4),
-    _fraction("flight", 5),
+    _fraction(ContactState.STICK, 2),
+    _fraction(ContactState.SLIP_POS, 3),
+    _fraction(ContactState.SLIP_NEG, 4),
+    _fraction(ContactState.FLIGHT, 5),
     Field("multiplier", "float", "1", "modulus of the leading Floquet multiplier of the "
           "periodic orbit (contraction per orbit period; nan if not periodic)",
           symbol="|lambda|", column=("float", 9), dtype="f8"),
@@ -135,8 +192,8 @@ FIELDS: tuple[Field, ...] = (
           column=("float", 7), role="state", dtype="f8"),
     Field("f", "float", FORCE_UNIT, "tangential contact force", symbol="f",
           column=("float", 8), role="state", dtype="f8"),
-    Field("phase", "int", "1", "phase of the contact (stick, slip+, slip-, flight; -1: no "
-          "state)", column=("int", 4), role="state", dtype="i1"),
+    Field("phase", "int", "1", "state of the contact (ContactState: stick 0, slip+ 1, "
+          "slip- 2, flight 3; -1: no state)", column=("int", 4), role="state", dtype="i1"),
     Field("e", "float", LENGTH_UNIT, "elongation of the contact spring, x - x_c (0 for a "
           "rigid contact)", symbol="e", column=("float", 14), role="state", dtype="f8"),
     Field("degenerate", "int", "1", "transitions decided only within round-off (chatter "

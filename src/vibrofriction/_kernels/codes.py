@@ -1,20 +1,28 @@
 """Named integer constants shared by the kernels and the Python layer.
 
-The output column indices and the status codes are derived from
+The output column indices, the status codes and the contact-state codes are derived from
 :mod:`vibrofriction.schema` (standard library only), the one place they are defined.
 """
 
-from vibrofriction.schema import Status, column_index, point_index
+from vibrofriction.schema import (
+    CONTACT_STATE_NAMES,
+    NO_STATE,
+    ContactState,
+    Status,
+    column_index,
+    point_index,
+)
 
-# phases of the contact
-STICK = 0
-SLIP_POS = 1  # contact point slides in +x (s = +1)
-SLIP_NEG = 2  # contact point slides in -x (s = -1)
-FLIGHT = 3  # no contact (jumping, amplitude > 1)
+# states of the contact (vibrofriction.schema.ContactState): of the single contact point
+# (1-D and 2-D kernels) and of each spring of the MDR row (kernels/mdr.py)
+STICK = int(ContactState.STICK)
+SLIP_POS = int(ContactState.SLIP_POS)  # contact point slides in +x (s = +1)
+SLIP_NEG = int(ContactState.SLIP_NEG)  # contact point slides in -x (s = -1)
+FLIGHT = int(ContactState.FLIGHT)  # out of contact (jumping; a spring of the row lifted off)
 
-NO_PHASE = -1  # none: no phase to avoid on entry, or no section state (static points)
+NO_PHASE = NO_STATE  # none: no phase to avoid on entry, or no section state (static points)
 
-PHASE_NAMES = ("stick", "slip+", "slip-", "flight")
+PHASE_NAMES = CONTACT_STATE_NAMES
 
 # event kinds (transitions and cuts)
 EV_STICK_TO_SLIP = 0

@@ -51,6 +51,10 @@ approximation besides round-off. A group that has just switched starts at its ro
 its first sub-step it is also probed nearer the start (a spring touching down stuck may
 slip again within the sub-step).
 
+Each spring's state is one of the package's contact states (:mod:`.codes`, from
+``vibrofriction.schema.ContactState``): ``STICK``, ``SLIP_POS``, ``SLIP_NEG`` or ``FLIGHT``
+(out of contact).
+
 The bookkeeping between events is O(log M) an event (:func:`_switch`: each state's
 members, running sums, max-trees of the stuck springs' constants relative to their common
 displacement since the section, the contact events sorted by phase), rebuilt at each
@@ -74,11 +78,11 @@ from .basis import (
     make_mode,
     sup_bound,
 )
+from .codes import FLIGHT, SLIP_NEG, SLIP_POS, STICK
 from .jit import jit
 from .phases import _periodic_response
 
 TWO_PI = 2.0 * math.pi
-OFF, STICK, SLIP_POS, SLIP_NEG = 0, 1, 2, 3
 
 
 @jit
@@ -243,7 +247,7 @@ def _record_state(rec, ri, acc, y, yd, tau, u, st, e, g, w, k, a):
         s = st[i]
         sts[ri, i] = s
         f = 0.0
-        if s != OFF:
+        if s != FLIGHT:
             n = max(w * (ca - g[i]), 0.0)
             N += n
             if s == STICK:
@@ -341,7 +345,7 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
     Wga = 0.0
     for i in range(g.size):
         s = st[i]
-        if s != OFF:
+        if s != FLIGHT:
             Wc += w
             Wgc += w * g[i]
         if s == SLIP_POS or s == SLIP_NEG:
@@ -604,7 +608,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
         # will in this period)
         while ptr < nev:
             i = ev_i[ptr]
-            if ev_ph[ptr] > theta and (st[i] == OFF) == ev_on[ptr]:
+            if ev_ph[ptr] > theta and (st[i] == FLIGHT) == ev_on[ptr]:
                 break
             ptr += 1
         T = TWO_PI - theta
@@ -765,7 +769,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             q = ptr
             while q < nev and ev_ph[q] <= tau + tol_ev:
                 i = ev_i[q]
-                if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == OFF) == ev_on[q]:
+                if abs(ev_ph[q] - tau) <= tol_ev and (st[i] == FLIGHT) == ev_on[q]:
                     if ev_on[q]:
                         rate = -w * a * (sth * b[2] + cth * b[3])
                         xd = yd1 + V
@@ -776,7 +780,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                             _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
                                     memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
                     else:
-                        _switch(i, OFF, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
+                        _switch(i, FLIGHT, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
                                 g, w, k, area)
                     fl[nf] = i
                     nf += 1

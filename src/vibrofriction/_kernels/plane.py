@@ -36,6 +36,8 @@ import math
 import numpy as np
 
 from .codes import (
+    EV_SLIP_TO_STICK,
+    EV_STICK_TO_SLIP,
     FLIGHT,
     I_DEGENERATE,
     I_EVENTS,
@@ -81,7 +83,9 @@ from .codes import (
 from .jit import jit
 
 TWO_PI = 2.0 * math.pi
-SLIP = 1  # one slip phase in 2-D (its direction is part of the state)
+# one slip mode in 2-D (its direction is part of the state): it carries the code of forward
+# slip, and the history and the results split it into slip+ and slip- by the sign of f_x
+SLIP = SLIP_POS
 DELTA = 1e-7
 """Jenkins contact with ``a > 1``: each contact arc is shortened by this at both ends."""
 MARGIN = 1e-12
@@ -1037,7 +1041,7 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
                 if cnt[C_FAIL] > 0:
                     return -1
                 if event:
-                    code = 0 if mode == STICK else 1
+                    code = EV_STICK_TO_SLIP if mode == STICK else EV_SLIP_TO_STICK
                     row = _record(P, t, z, mode, code, out, row)
                     mode = switch(mode, P, t, z)
                     row = _record(P, t, z, mode, code, out, row)

@@ -14,7 +14,7 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.params import dimensionless as _dimensionless
 from vibrofriction.params import inertial_velocity
-from vibrofriction.schema import RESULT_FIELDS, parameter_names
+from vibrofriction.schema import RESULT_FIELDS, ContactState, parameter_names
 
 from .state import AXES, State
 
@@ -221,9 +221,9 @@ def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
              "y": y}]
 
 
-#: The state of an MDR spring by its code in ``History.spring_state`` (0 to 3), as the
-#: space-time view names them.
-CONTACT_STATES = ("out of contact", "stick", "slip forwards", "slip backwards")
+#: The state of an MDR spring by its code in ``CurvedHistory.spring_state``
+#: (:class:`~vibrofriction.schema.ContactState`), as the space-time view names them.
+CONTACT_STATES = tuple(s.long_name for s in ContactState)
 
 
 def history(state: State, x: float, periods: float = 3.0) -> dict:
@@ -249,9 +249,10 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     r = cast(vf.FrictionResult, vf.friction_coefficient(system, **kw))  # one velocity
     inplane = h.system.a_x > 0.0 or h.system.a_y > 0.0
     xc, yc = h.contact_point() if inplane else (None, None)
+    f_y = h.f_y if isinstance(h, vf.PlaneHistory) else None  # 2-D only, as yc
     return {
-        "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": h.f_y,
-        "phase": h.phase, "xc": xc, "yc": yc if h.is_plane else None,
+        "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": f_y,
+        "phase": h.phase, "xc": xc, "yc": None if f_y is None else yc,
         "spans": [(float(t[i]), float(t[j]), str(h.phase[i])) for i, j in
                   zip(starts, ends, strict=True) if t[j] > t[i]],
         "events": [(e.tau / (2.0 * math.pi), e.kind) for e in h.events],
@@ -293,10 +294,7 @@ def mdr_history(state: State, x: float, periods: float = 1.0,
     change = np.flatnonzero(phase[1:] != phase[:-1]) + 1
     starts = np.concatenate([[0], change])
     ends = np.concatenate([change, [t.size - 1]])
-    assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
-            and h.contact_radius is not None and h.stick_area_fraction is not None
-            and h.slip_area_fraction is not None and h.open_area_fraction is not None
-            and h.normal_impulse is not None)  # a curved tip's history has them all
+    assert isinstance(h, vf.CurvedHistory)  # a curved tip's history
     return {
         "curved": True, "x": float(x), "steady": steady, "message": message,
         "t": t, "f": h.f[last], "n": h.n[last], "x_dot": h.x_dot[last], "f_y": None,

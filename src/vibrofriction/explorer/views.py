@@ -9,6 +9,7 @@ from bokeh.models import ColumnDataSource, HoverTool, Label, LinearColorMapper, 
 from bokeh.plotting import figure
 
 from ..figures.style import PHASE_COLORS
+from ..schema import PARTIAL, ContactState
 from .compute import CASE_COLORS, CONTACT_STATES
 
 __all__ = ["CurveView", "HistoryView", "MapView", "SpaceTimeView"]
@@ -156,7 +157,7 @@ _PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
 
 
 #: The history's phases: a curved tip's row adds "partial" (stick and slip at once).
-_HISTORY_COLORS = {**PHASE_COLORS, "partial": "#dadaeb"}
+_HISTORY_COLORS = {**PHASE_COLORS, PARTIAL: "#dadaeb"}
 
 
 class HistoryView:
@@ -315,12 +316,14 @@ def _rgba(color: str) -> tuple[int, int, int, int]:
 
 
 #: Colours of the MDR springs' states by code (:data:`.compute.CONTACT_STATES`).
-CONTACT_COLORS = ("#eeeeee", "#4292c6", "#fd8d3c", "#a50f15")
+CONTACT_COLORS = tuple({ContactState.STICK: "#4292c6", ContactState.SLIP_POS: "#fd8d3c",
+                        ContactState.SLIP_NEG: "#a50f15", ContactState.FLIGHT: "#eeeeee"}[s]
+                       for s in ContactState)
 
 
 class SpaceTimeView:
     """A curved tip's contact over one period: the position ``xi = x/a0`` along the profile
-    against ``t/T``, each spring coloured by its state (stick, slip, out of contact), with
+    against ``t/T``, each spring coloured by its state (stick, slip, flight), with
     the stick and contact radii where the history gives them; hidden for the flat punch.
     Without an MDR time history it says so (``show`` with ``spacetime`` None)."""
 

@@ -5,7 +5,7 @@ Fig. 19: the time history of a sphere's contact (:func:`vibrofriction.simulate` 
 periodic orbit), one drive period: above, the friction force ``sum f_i`` and ``mu0`` times
 the normal force ``sum n_i``; below, the space-time picture of the contact, the radius
 ``r/a0`` (both sides of the axis) against time, coloured by each ring's state (stick,
-slip forwards, slip backwards, out of contact), with the contact radius of the imposed
+forward slip, reverse slip, flight: out of contact), with the contact radius of the imposed
 indentation and the stick radius. Left a sphere that does not jump (``a = 0.5``), right
 one that does (``a = 1.5``).
 """
@@ -22,9 +22,9 @@ from matplotlib.patches import Patch
 
 from .. import theory
 from ..params import Dimensionless
-from ..solver import simulate
+from ..schema import ContactState
+from ..solver import CurvedHistory, simulate
 from ..solver.engine import solve_points
-from ..solver.history import History
 from . import style
 from .recipe import Check, Recipe, Rendered, Table
 from .series import Curve
@@ -37,29 +37,31 @@ FIG19_POINT = (0.5, 2.0, 0.3, 0.0)
 FIG19_AMPLITUDES = (0.5, 1.5)
 FIG19_SPRINGS = 200
 _SAMPLES = 720
-#: State code -> colour (the codes of ``History.spring_state``: open, stick, slip+, slip-).
-_COLORS = ("#d9d9d9", "#3182bd", "#fdae6b", "#e6550d")
-_NAMES = ("out of contact", "stick", "slip forwards", "slip backwards")
+#: Colour of each contact state, by code (``CurvedHistory.spring_state``).
+_STATE_COLORS = {ContactState.STICK: "#3182bd", ContactState.SLIP_POS: "#fdae6b",
+                 ContactState.SLIP_NEG: "#e6550d", ContactState.FLIGHT: "#d9d9d9"}
+_COLORS = tuple(_STATE_COLORS[s] for s in ContactState)
+_NAMES = tuple(s.long_name for s in ContactState)
 
 
-def sphere_histories() -> dict[float, History]:
+def sphere_histories() -> dict[float, CurvedHistory]:
     """One period of the periodic orbit of each amplitude of Fig. 19 (sphere, ``n = 2``)."""
     alpha, beta, V, zeta = FIG19_POINT
-    return {a: simulate(Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=2.0),
-                        v_inertial=V, periods=1, samples_per_period=_SAMPLES,
-                        initial="steady", springs=FIG19_SPRINGS)
-            for a in FIG19_AMPLITUDES}
+    out = {}
+    for a in FIG19_AMPLITUDES:
+        h = simulate(Dimensionless(alpha, beta, a, zeta=zeta, profile_exponent=2.0),
+                     v_inertial=V, periods=1, samples_per_period=_SAMPLES,
+                     initial="steady", springs=FIG19_SPRINGS)
+        assert isinstance(h, CurvedHistory)  # a curved tip's history
+        out[a] = h
+    return out
 
 
-def _draw(hs: Mapping[float, History]):
+def _draw(hs: Mapping[float, CurvedHistory]):
     fig = style.figure(style.PAGE, 4.6)
     axes = fig.subplots(2, len(hs), sharex=True, height_ratios=(1.0, 2.2))
     cmap = ListedColormap(_COLORS)
     for k, (a, h) in enumerate(hs.items()):
-        assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
-                and h.contact_radius is not None and h.stick_area_fraction is not None
-                and h.slip_area_fraction is not None and h.open_area_fraction is not None
-                and h.normal_impulse is not None)  # a curved tip's history has them all
         top, bot = axes[0, k], axes[1, k]
         t = h.tau / (2.0 * math.pi)
         top.axhline(0.0, color="0.6", lw=0.4)
@@ -73,7 +75,7 @@ def _draw(hs: Mapping[float, History]):
         state = h.spring_state[:-1].T
         image = np.vstack([state[::-1], state])
         r_max = float(h.xi[-1] + h.xi[0])
-        bot.imshow(image, cmap=cmap, vmin=-0.5, vmax=3.5, aspect="auto",
+        bot.imshow(image, cmap=cmap, vmin=-0.5, vmax=len(_COLORS) - 0.5, aspect="auto",
                    interpolation="nearest", origin="lower",
                    extent=(0.0, 1.0, -r_max, r_max))
         contact_r = np.where(h.contact_radius > 0, h.contact_radius, np.nan)
@@ -111,10 +113,6 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
     checks = []
     notes = []
     for a, h in hs.items():
-        assert (h.xi is not None and h.spring_state is not None and h.stick_radius is not None
-                and h.contact_radius is not None and h.stick_area_fraction is not None
-                and h.slip_area_fraction is not None and h.open_area_fraction is not None
-                and h.normal_impulse is not None and h.impulse is not None)  # a curved tip's
         T = h.tau.size
         cols["amplitude"].append(np.full(T, a))
         for k in list(cols)[1:]:
@@ -140,7 +138,7 @@ def _render(_: Mapping[str, Curve]) -> Rendered:
         frac = [float(np.mean(x[:-1])) for x in (h.stick_area_fraction,
                                                   h.slip_area_fraction,
                                                   h.open_area_fraction)]
-        centre_open = float(np.mean(h.spring_state[:-1, 0] == 0))
+        centre_open = float(np.mean(h.spring_state[:-1, 0] == ContactState.FLIGHT))
         notes.append(f"a = {a:g}: mu/mu0 = {mu:.4f}, <F_N>/F_N0 = "
                      f"{h.normal_impulse[-1] / (2 * math.pi):.4f}; stick, slip, open "
                      f"{frac[0]:.3f}, {frac[1]:.3f}, {frac[2]:.3f} of the disc "
@@ -173,7 +171,7 @@ def fig19() -> Recipe:
             "time, coloured by its state; black: the contact radius of the imposed "
             "indentation, white dashed: the stick radius (the outermost stuck ring). "
             "In (a) the contact sticks as a whole when its slip stops (every slipping "
-            "ring has the same slip velocity); a ring of backward slip then enters from "
+            "ring has the same slip velocity); a ring of reverse slip then enters from "
             "the edge (Cattaneo-Mindlin) and grows inwards, and the outer rings leave the "
             "contact while the centre holds. In (b) the whole contact opens for part of "
             "the period (the centre for 27 % of it), and the rings touching down stick."),

@@ -13,6 +13,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from ..params import Dimensionless
+from ..schema import ContactState
 from ..solver import simulate
 from . import style
 from .checks import history_mu_ratio, history_note, history_transitions
@@ -40,7 +41,7 @@ def _shade_phases(ax, tau_p, phase) -> None:
             name = str(phase[start])
             color = style.PHASE_COLORS.get(name, "none")
             if color != "none" and name != "slip+":
-                label = None if name in labelled else name.replace("slip-", "reverse slip")
+                label = None if name in labelled else ContactState.from_label(name).long_name
                 labelled.add(name)
                 ax.axvspan(tau_p[start], tau_p[i - 1], color=color, alpha=0.6, lw=0,
                            label=label, zorder=0)

@@ -10,7 +10,9 @@ only one that exists in cases III and IV) or, for a :class:`Physical` system, as
 
 Modules: :mod:`.settings` (accuracy bounds, what is trusted), :mod:`.results` (what is
 returned; its fields are :mod:`vibrofriction.schema`'s), :mod:`.engine` (the batch
-engine), :mod:`.history` (time histories), :mod:`.energy` (their energy balance) and
+engine), :mod:`.history` (time histories: :func:`simulate`; their types :class:`History`,
+:class:`PlaneHistory`, :class:`CurvedHistory` in :mod:`.history_types`), :mod:`.energy`
+(their energy balance) and
 :mod:`.sensitivity` (``d mu_ratio / d theta`` of the steady state: :func:`friction_gradient`,
 :func:`solve_gradients`).
 """
@@ -18,7 +20,7 @@ engine), :mod:`.history` (time histories), :mod:`.energy` (their energy balance)
 from .._kernels.codes import NO_PHASE, PHASE_NAMES
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE, Status
 from .engine import friction_coefficient, solve_points
-from .history import Event, History, simulate
+from .history import CurvedHistory, Event, History, PlaneHistory, simulate
 from .results import (
     SLOW_SETTLING,
     FrictionResult,
@@ -38,10 +40,12 @@ __all__ = [
     "PHASE_NAMES",
     "SLOW_SETTLING",
     "STATUS_BY_CODE",
+    "CurvedHistory",
     "Event",
     "FrictionResult",
     "FrictionResults",
     "History",
+    "PlaneHistory",
     "SectionState",
     "Sensitivities",
     "SolverSettings",

@@ -18,7 +18,7 @@ from .._kernels import codes
 from .._kernels.integrate import sample
 from ..params import Dimensionless
 
-__all__ = ["ENERGY_NAMES", "dissipation", "inplane_motion", "kernel_point"]
+__all__ = ["ENERGY_NAMES", "dissipation", "inplane_motion", "kernel_point", "transverse_motion"]
 
 #: The cumulative energies of a :class:`~vibrofriction.History`, in order.
 ENERGY_NAMES = ("work_input", "dissipated_pin", "dissipated_contact", "dissipated_friction")
@@ -38,8 +38,20 @@ def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """``(X, X')``: the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)`` and its
     velocity at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
-    arg = np.asarray(tau, dtype=float) + dim.phase_x
-    return dim.a_x * np.cos(arg), -dim.a_x * np.sin(arg)
+    return _harmonic(dim.a_x, dim.phase_x, tau)
+
+
+def transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
+                      ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(Y, Y')``: the transverse oscillation ``a_y cos(tau + phase_y)`` and its velocity
+    at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    return _harmonic(dim.a_y, dim.phase_y, tau)
+
+
+def _harmonic(amplitude: float, phase: float, tau: NDArray[np.float64]
+              ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    arg = np.asarray(tau, dtype=float) + phase
+    return amplitude * np.cos(arg), -amplitude * np.sin(arg)
 
 
 def _elongation_rate(dim: Dimensionless, cols: NDArray[np.float64],

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -13,10 +13,11 @@ from .._kernels import codes
 from .._kernels import plane as _plane
 from .._kernels.integrate import TWO_PI, initial_point, run_periods, sample, to_kernel_frame
 from .._kernels.phases import frame_offset
-from ..params import Dimensionless, Physical, System, dimensionless, inertial_velocity
+from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
-from .energy import dissipation, inplane_motion, kernel_point
+from .energy import dissipation, inplane_motion, kernel_point, transverse_motion
 from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
+from .history_types import CurvedHistory, Event, History, PlaneHistory
 from .mdr_history import SPRINGS, mdr_history
 from .methods.mdr import MDR
 from .methods.plane import PLANE, plane_arguments, plane_held
@@ -24,181 +25,7 @@ from .points import table_of
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
-__all__ = ["Event", "History", "simulate"]
-
-
-@dataclass(frozen=True)
-class Event:
-    """A transition at drive time ``tau``: ``kind`` and the phases before and after."""
-
-    tau: float
-    kind: str
-    before: str
-    after: str
-
-
-@dataclass(frozen=True)
-class History:
-    """A time history sampled from the closed forms (Fig. 2).
-
-    All quantities are scaled (docs/model.md): ``tau = omega t``; ``x`` body position and
-    ``x_dot`` its velocity (units ``mu0 F_N0/(m omega^2)`` and ``mu0 F_N0/(m omega)``);
-    ``f`` the tangential contact force and ``n`` the ``mu0``-scaled normal force, both
-    in units of ``mu0 F_N0``; ``phase`` the phase name at each sample; ``events``
-    every transition with its exact time.  Sample times include every event time
-    (on both sides), so phase boundaries are sharp.  ``e`` is the elongation of the
-    contact spring; ``work_input`` the work done by the pulled end since the start and
-    ``dissipated_pin``, ``dissipated_contact``, ``dissipated_friction`` the energy
-    dissipated by the pin dashpot, the contact dashpot and friction (unit
-    ``(mu0 F_N0)^2/(m omega^2)``; Gauss-Legendre quadrature of the closed forms, relative
-    accuracy ~1e-10), so that ``work_input - sum(dissipated) = stored_energy() -
-    stored_energy()[0]`` (docs/damping.md).  With a longitudinal in-plane oscillation
-    (docs/inplane.md) ``x``, ``x_dot`` are in the laboratory frame and ``work_input``
-    includes the work of the oscillating substrate on the contact (or is that of the
-    oscillating holder).
-
-    A history with a transverse oscillation (``a_y > 0``, the 2-D solver, docs/inplane.md
-    section 6) also has the transverse components (None in a 1-D history): ``u_y`` and
-    ``u_y_dot`` the body's transverse position and velocity, ``f_y`` the transverse
-    contact force, ``e_y`` the transverse elongation, ``slip_velocity`` (shape ``(N,
-    2)``) the contact point's velocity relative to the substrate (0 in stick: in slip
-    its direction is the slip's, and ``(f, f_y)`` is parallel to it), ``impulse``
-    (shape ``(N, 2)``) the integrals of ``(f, f_y)`` since ``tau = 0`` (to the
-    integrator's tolerance), and ``plane_state`` the 6 components ``(y_x, y_y, v_x,
-    v_y, e_x, e_y)`` of the state at ``tau = 2 pi floor(periods)`` (a start for another
-    2-D history; ``final_state`` keeps its x components).  There ``phase`` is
-    ``"slip+"`` or ``"slip-"`` by the sign of ``f`` (as the 2-D solver's
-    ``slip_fraction``), and the energies are the trapezoidal rule over the samples
-    (second order in the sample spacing, not the 1-D histories' 1e-10).
-
-    A history of a curved tip (finite ``profile_exponent``: the MDR row of ``M`` springs,
-    docs/contact_geometry.md "The history") has ``f = sum f_i`` and ``n = sum n_i`` (units
-    ``mu0 F_N0``: ``n`` is ``F_N/F_N0``), ``e = f/(beta - alpha)`` (the springs' elongation
-    weighted by stiffness; the flat punch's ``e``), ``phase`` ``"stick"``, ``"slip+"``,
-    ``"slip-"`` where every spring in contact is in that state, ``"flight"`` where none
-    is in contact, else ``"partial"``, no ``events`` (the springs' states hold them), no
-    ``final_state``, ``dissipated_contact`` 0, ``impulse`` ``(int f, 0)`` (exact), and
-    the contact fields (None otherwise): ``xi`` (shape ``(M,)``) the springs' positions
-    along the profile (cell midpoints, unit ``a0``, the contact radius at the mean
-    indentation), ``spring_state`` (``(N, M)``, int8) each spring's state at each sample,
-    0 out of contact, 1 stick, 2 slip forwards, 3 slip backwards (names in
-    :data:`~vibrofriction.solver.mdr_history.SPRING_STATES`), ``spring_f`` (``(N, M)``)
-    each spring's tangential force (``|f_i| <= n_i``, :meth:`spring_normal`),
-    ``stick_radius`` (``(N,)``) the position of the outermost stuck spring (0 if none),
-    ``contact_radius`` (``(N,)``) the imposed indentation's ``max(0, 1 + a cos
-    tau)^(1/n)``, ``stick_area_fraction``, ``slip_area_fraction``,
-    ``open_area_fraction`` (``(N,)``) the shares of the disc of the largest contact radius
-    (area-weighted as the steady state's), and ``normal_impulse`` (``(N,)``) the exact
-    integral of ``n`` since ``tau = 0``.
-    """
-
-    tau: NDArray[np.float64]
-    x: NDArray[np.float64]
-    x_dot: NDArray[np.float64]
-    f: NDArray[np.float64]
-    n: NDArray[np.float64]
-    phase: NDArray[np.str_]
-    events: tuple[Event, ...]
-    system: Dimensionless
-    v_inertial: float
-    e: NDArray[np.float64]
-    work_input: NDArray[np.float64]
-    dissipated_pin: NDArray[np.float64]
-    dissipated_contact: NDArray[np.float64]
-    dissipated_friction: NDArray[np.float64]
-    final_state: SectionState | None = field(default=None)
-    u_y: NDArray[np.float64] | None = None
-    u_y_dot: NDArray[np.float64] | None = None
-    f_y: NDArray[np.float64] | None = None
-    e_y: NDArray[np.float64] | None = None
-    slip_velocity: NDArray[np.float64] | None = None
-    impulse: NDArray[np.float64] | None = None
-    plane_state: NDArray[np.float64] | None = None
-    xi: NDArray[np.float64] | None = None
-    spring_state: NDArray[np.int8] | None = None
-    spring_f: NDArray[np.float64] | None = None
-    stick_radius: NDArray[np.float64] | None = None
-    contact_radius: NDArray[np.float64] | None = None
-    stick_area_fraction: NDArray[np.float64] | None = None
-    slip_area_fraction: NDArray[np.float64] | None = None
-    open_area_fraction: NDArray[np.float64] | None = None
-    normal_impulse: NDArray[np.float64] | None = None
-
-    @property
-    def is_curved(self) -> bool:
-        """Whether this is a curved tip's history (the MDR row's contact fields present)."""
-        return self.spring_state is not None
-
-    def spring_normal(self) -> NDArray[np.float64]:
-        """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)`` (``w =
-        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``."""
-        if self.xi is None:
-            raise ValueError("spring_normal: not a curved tip's history (no spring row)")
-        n_exp = self.system.profile_exponent
-        dxi = 2.0 * float(self.xi[0])
-        flat = math.isinf(n_exp)
-        w = dxi if flat else dxi * (n_exp + 1.0) / n_exp
-        g = np.zeros_like(self.xi) if flat else self.xi ** n_exp
-        depth = 1.0 + self.system.amplitude * np.cos(self.tau)
-        return w * np.maximum(0.0, depth[:, None] - g[None, :])
-
-    @property
-    def is_plane(self) -> bool:
-        """Whether this is a 2-D history (transverse components present)."""
-        return self.u_y is not None
-
-    def stored_energy(self) -> NDArray[np.float64]:
-        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
-        oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
-        transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's
-        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``)."""
-        d = self.system
-        y = self.x - self.v_inertial * self.tau
-        if d.a_x > 0.0 and d.inplane_on == "holder":
-            y = y - inplane_motion(d, self.tau)[0]
-        out = 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
-        if self.spring_f is not None and self.xi is not None:  # the row: sum f_i^2/(2 k dxi)
-            k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])
-            return out + 0.5 * np.sum(self.spring_f**2, axis=1) / k
-        if not d.is_rigid:
-            out = out + 0.5 * (d.beta - d.alpha) * self.e**2
-        if self.is_plane:
-            # a 2-D history has every transverse field
-            assert self.u_y is not None and self.u_y_dot is not None and self.e_y is not None
-            yy = self.u_y - (_transverse_motion(d, self.tau)[0]
-                             if d.inplane_on == "holder" else 0.0)
-            out = out + 0.5 * self.u_y_dot**2 + 0.5 * d.pin_y[0] * yy**2
-            out = out + 0.5 * (d.beta - d.alpha) * self.e_y**2
-        return out
-
-    def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """The contact point's position relative to the substrate, ``(x_c, y_c)``: the
-        body's minus the contact spring's elongation minus the substrate's in-plane
-        displacement (none where the holder oscillates); ``y_c`` is 0 in a 1-D history.
-        ``x_c`` advances by ``V`` per unit ``tau`` on average (the body slides over the
-        substrate): ``x_c - V tau`` is periodic in a periodic steady state."""
-        d = self.system
-        xc = self.x - self.e
-        if d.inplane_on == "substrate" and d.a_x > 0.0:
-            xc = xc - inplane_motion(d, self.tau)[0]
-        if not self.is_plane:
-            return xc, np.zeros_like(xc)
-        assert self.u_y is not None and self.e_y is not None  # a 2-D history has them
-        yc = self.u_y - self.e_y
-        if d.inplane_on == "substrate":
-            yc = yc - _transverse_motion(d, self.tau)[0]
-        return xc, yc
-
-    def time(self, physical: Physical) -> NDArray[np.float64]:
-        """Sample times in seconds for a physical system (``t = tau/omega``)."""
-        return self.tau / physical.omega
-
-
-def _transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
-                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """``(Y, Y')``: the transverse oscillation ``a_y cos(tau + phase_y)`` and its velocity."""
-    arg = np.asarray(tau, dtype=float) + dim.phase_y
-    return dim.a_y * np.cos(arg), -dim.a_y * np.sin(arg)
+__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory", "simulate"]
 
 
 def _checked_run(periods: float, samples_per_period: int) -> None:
@@ -270,16 +97,18 @@ def simulate(
     an in-plane oscillation ``"sliding"`` is the rest (as in :func:`solve_points`).
 
     With a transverse oscillation (``a_y > 0``) the history is integrated by the 2-D
-    solver's Runge-Kutta method (docs/inplane.md section 6) and has the transverse fields
-    of :class:`History`; ``initial`` may also be a 2-D history's ``plane_state`` (6
+    solver's Runge-Kutta method (docs/inplane.md section 6): a :class:`PlaneHistory`, with
+    the transverse fields; ``initial`` may also be a 2-D history's ``plane_state`` (6
     components), and a :class:`SectionState` starts with the transverse components 0.
 
     A curved tip (finite ``profile_exponent``) is the MDR row of ``springs`` springs
     (:func:`~vibrofriction.solver.mdr_history.mdr_history`; ``springs`` is ignored
-    otherwise), sampled on the uniform grid only (no event times: the contact fields of
-    :class:`History`); ``initial`` is ``"sliding"`` (the MDR solver's start) or
-    ``"steady"`` (the row's periodic orbit); the refusals of the MDR solver apply
-    (docs/contact_geometry.md).
+    otherwise), sampled on the uniform grid only (no event times): a
+    :class:`CurvedHistory`, with the contact fields; ``initial`` is ``"sliding"`` (the MDR
+    solver's start) or ``"steady"`` (the row's periodic orbit); the refusals of the MDR
+    solver apply (docs/contact_geometry.md).
+
+    The 1-D solver's history is a :class:`History`.
     """
     dim = dimensionless(system)
     v = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
@@ -384,7 +213,7 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
 
 
 def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
-                   initial: object, settings: SolverSettings | None) -> History:
+                   initial: object, settings: SolverSettings | None) -> PlaneHistory:
     """:func:`simulate` with a transverse oscillation: the 2-D kernel's history."""
     settings = settings or DEFAULT_SETTINGS
     PLANE.capabilities.check(table_of(dim, V), 1, settings)  # V = 0 is integrated
@@ -431,14 +260,11 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
     x, x_dot = y[:, 0] + V * tau, v[:, 0]
     slip = out[:, _plane.H_SLIP:_plane.H_SLIP + 2]
     energy = _plane_energy(dim, V, tau, x, y[:, 1], v, e, f, slip)
-    last = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0)) if whole_done \
-        else np.zeros(0, dtype=np.intp)
-    final = plane_state = None
-    if len(last):
-        r = last[-1]
-        plane_state = np.concatenate([y[r], v[r], e[r]])
-        final = section_state(y[r, 0], v[r, 0], f[r, 0], int(ph[r]), e[r, 0])
-    return History(
+    # the last section within the history (tau = 0, the start, for less than a period)
+    r = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0))[-1]
+    plane_state = np.concatenate([y[r], v[r], e[r]])
+    final = section_state(y[r, 0], v[r, 0], f[r, 0], int(ph[r]), e[r, 0])
+    return PlaneHistory(
         tau=tau, x=x, x_dot=x_dot, f=f[:, 0].copy(), n=n.copy(), phase=names[ph],
         events=events, system=dim, v_inertial=V, e=e[:, 0].copy(), **energy,
         final_state=final, u_y=y[:, 1].copy(), u_y_dot=v[:, 1].copy(), f_y=f[:, 1].copy(),
@@ -458,7 +284,7 @@ def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
     """Work input and dissipation of a 2-D history (the reference's definitions,
     vibrofriction_reference.inplane): the trapezoidal rule over the samples."""
     X, Xd = inplane_motion(dim, tau)
-    Y, Yd = _transverse_motion(dim, tau)
+    Y, Yd = transverse_motion(dim, tau)
     zero = np.zeros_like(tau)
     if dim.inplane_on == "holder":
         h = np.stack([V * tau + X, Y], axis=1)

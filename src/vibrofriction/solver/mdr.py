@@ -15,7 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from .._kernels.mdr import STICK, row_geometry, steady_row
+from .._kernels.codes import FLIGHT, SLIP_POS, STICK
+from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 
 __all__ = ["mdr_friction", "mdr_row"]
@@ -68,8 +69,8 @@ def _start(alpha: float, a: float, n_exp: float, M: int,
     the cell width), a stuck one clipped to its own friction limit at the section."""
     if warm is None:
         g, w, _, _, _, _ = row_geometry(a, n_exp, M)
-        st = np.full(M, 2, dtype=np.int64)
-        st[w * (1.0 - g) <= 0.0] = 0
+        st = np.full(M, SLIP_POS, dtype=np.int64)
+        st[w * (1.0 - g) <= 0.0] = FLIGHT
         y = -float(np.sum(w * np.maximum(0.0, 1.0 - g))) / alpha
         if offset[0] != 0.0 or offset[1] != 0.0:
             return y - offset[0], -offset[1], st, np.zeros(M)
@@ -136,8 +137,8 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
         status, err = "averaged", float(abs(m1 - m2)) + 1e-12
     return dict(mu_ratio=mu, error=err, status=status, periods=int(periods),
                 mean_normal_ratio=float(nint / (2.0 * math.pi)),
-                stick_fraction=float(frac[0]), slip_fraction=float(frac[1]),
-                out_of_contact_fraction=float(frac[2]), max_excess=float(viol),
+                stick_area_fraction=float(frac[0]), slip_area_fraction=float(frac[1]),
+                open_area_fraction=float(frac[2]), max_excess=float(viol),
                 events_per_period=int(events), n_springs=M, final_status=st.copy(),
                 final_stuck=int(np.sum(st == STICK)), final_state=(y, yd, st.copy(), e.copy()))
 

@@ -3,32 +3,30 @@
 The event-driven kernel :func:`vibrofriction._kernels.mdr.run_periods` records the row at
 the sample times from its closed forms (not interpolated): the body, every spring's
 tangential force and state, and the integrals of the forces and of the powers since the
-start. :func:`mdr_history` turns that into a :class:`~vibrofriction.History` with the
-contact fields; :func:`vibrofriction.simulate` routes a curved profile here.
+start. :func:`mdr_history` turns that into a :class:`~vibrofriction.CurvedHistory`;
+:func:`vibrofriction.simulate` routes a curved profile here.  The springs' states are the
+package's contact states (:class:`~vibrofriction.schema.ContactState`).
 """
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._kernels import mdr as _mdr
+from .._kernels.codes import FLIGHT, PHASE_NAMES, SLIP_NEG, SLIP_POS, STICK
 from .._kernels.phases import frame_offset, inplane_forcing
 from ..params import Dimensionless
+from ..schema import PARTIAL
+from .history_types import CurvedHistory
 from .mdr import SUBSTEPS, _check, _start, mdr_row
 
-if TYPE_CHECKING:
-    from .history import History
-
-__all__ = ["SPRINGS", "SPRING_STATES", "mdr_history", "spring_row"]
+__all__ = ["SPRINGS", "mdr_history", "spring_row"]
 
 #: The default number of springs of a curved history (``simulate(..., springs=...)``).
 SPRINGS = 160
-#: The names of the springs' states, by code (:attr:`History.spring_state`).
-SPRING_STATES = ("open", "stick", "slip+", "slip-")
 
 
 def spring_row(amplitude: float, profile_exponent: float, springs: int
@@ -45,17 +43,18 @@ def spring_row(amplitude: float, profile_exponent: float, springs: int
 def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
     """One name a sample: ``"flight"`` (no spring in contact), ``"stick"``, ``"slip+"``
     or ``"slip-"`` where every spring in contact is in that state, else ``"partial"``."""
-    touching = state != _mdr.OFF
-    out = np.full(state.shape[0], "partial", dtype="<U7")
-    out[~touching.any(axis=1)] = "flight"
-    for code, name in ((_mdr.STICK, "stick"), (_mdr.SLIP_POS, "slip+"),
-                       (_mdr.SLIP_NEG, "slip-")):
-        out[touching.any(axis=1) & np.all((state == code) | ~touching, axis=1)] = name
+    touching = state != FLIGHT
+    width = max(len(name) for name in (*PHASE_NAMES, PARTIAL))
+    out = np.full(state.shape[0], PARTIAL, dtype=f"<U{width}")
+    out[~touching.any(axis=1)] = PHASE_NAMES[FLIGHT]
+    for code in (STICK, SLIP_POS, SLIP_NEG):
+        out[touching.any(axis=1) & np.all((state == code) | ~touching, axis=1)] = \
+            PHASE_NAMES[code]
     return out
 
 
 def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
-                initial: object = "sliding", springs: int = SPRINGS) -> History:
+                initial: object = "sliding", springs: int = SPRINGS) -> CurvedHistory:
     """The history of a row of ``springs`` springs over ``periods`` drive periods, sampled
     on the uniform grid of ``samples_per_period`` a period (``tau = 0`` to ``2 pi
     periods``, both included), from the closed forms.
@@ -75,8 +74,6 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     ``profile_exponent``, ``math.inf`` included (the flat punch as a row: each spring
     carries the same share).
     """
-    from .history import History
-
     M = int(springs)
     if M < 1:
         raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
@@ -99,7 +96,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
         # contact until their touch-down late in the first period (its steady state is
         # the same); in contact at tau = 0 (g_i < 1 + a), they slip forwards too
         g = _mdr.row_geometry(a, n_exp, M)[0]
-        st[(st == _mdr.OFF) & (1.0 + a - g > 0.0)] = _mdr.SLIP_POS
+        st[(st == FLIGHT) & (1.0 + a - g > 0.0)] = SLIP_POS
     elif isinstance(initial, str) and initial == "steady":
         r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
                     inplane_on=dim.inplane_on)
@@ -125,8 +122,8 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
         raise RuntimeError(f"the MDR row of {M} springs made no progress (more than "
                            f"{200 * M + 1000} segments in a period)")
     xi, g, w, area = spring_row(a, n_exp, M)
-    stick = sts == _mdr.STICK
-    slip = (sts == _mdr.SLIP_POS) | (sts == _mdr.SLIP_NEG)
+    stick = sts == STICK
+    slip = (sts == SLIP_POS) | (sts == SLIP_NEG)
     stick_area = stick.astype(float) @ area
     slip_area = slip.astype(float) @ area
     stick_radius = np.where(stick.any(axis=1), np.max(np.where(stick, xi, 0.0), axis=1), 0.0)
@@ -134,8 +131,8 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     contact_radius = np.where(depth > 0.0, 1.0, 0.0) if math.isinf(n_exp) \
         else depth ** (1.0 / n_exp)
     if sign < 0.0:  # the mirror image: x -> -x, the slip directions swapped
-        sts = np.where(sts == _mdr.SLIP_POS, _mdr.SLIP_NEG,
-                       np.where(sts == _mdr.SLIP_NEG, _mdr.SLIP_POS, sts)).astype(np.int8)
+        sts = np.where(sts == SLIP_POS, SLIP_NEG,
+                       np.where(sts == SLIP_NEG, SLIP_POS, sts)).astype(np.int8)
     y_s, yd_s = body[:, _mdr.R_Y], body[:, _mdr.R_YD] + Va
     if on_substrate and a_x > 0.0:  # from the substrate's frame to the laboratory's
         y_s = y_s + ip[0] * np.cos(tau) - ip[1] * np.sin(tau)
@@ -144,7 +141,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     f = sign * body[:, _mdr.R_F]
     impulse = np.zeros((T, 2))
     impulse[:, 0] = sign * body[:, _mdr.R_IF]
-    return History(
+    return CurvedHistory(
         tau=tau, x=y_s + V * tau, x_dot=yd_s, f=f, n=body[:, _mdr.R_N].copy(),
         phase=_summary_phase(sts), events=(), system=dim, v_inertial=float(V),
         e=f / (beta - alpha), work_input=body[:, _mdr.R_WIN].copy(),

@@ -105,9 +105,8 @@ class MdrMethod:
                 mu, err = math.nan, math.inf
             out_f[i, c("mu_ratio")] = mu
             out_f[i, c("error")] = err
-            out_f[i, c("stick_area_fraction")] = m["stick_fraction"]
-            out_f[i, c("slip_area_fraction")] = m["slip_fraction"]
-            out_f[i, c("open_area_fraction")] = m["out_of_contact_fraction"]
+            for k in ("stick_area_fraction", "slip_area_fraction", "open_area_fraction"):
+                out_f[i, c(k)] = m[k]
             out_i[i, c("status")] = status.code
             out_i[i, c("period")] = 1 if status is Status.PERIODIC else 0
             out_i[i, c("periods")] = m["periods"]

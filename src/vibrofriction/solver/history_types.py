@@ -1,0 +1,218 @@
+"""The time histories :func:`vibrofriction.simulate` returns: a common part and one per solver.
+
+:class:`History` holds what every history has (the 1-D solver's history is one);
+:class:`PlaneHistory` adds the transverse components of the 2-D solver (``a_y > 0``),
+:class:`CurvedHistory` the spring row of a curved tip (the method of dimensionality
+reduction).  Each field is filled by the solver that returns the class.  This module
+imports neither :mod:`.history` nor :mod:`.mdr_history`: both build on it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..params import Dimensionless, Physical
+from .energy import inplane_motion, transverse_motion
+from .results import SectionState
+
+__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory"]
+
+
+@dataclass(frozen=True)
+class Event:
+    """A transition at drive time ``tau``: ``kind`` and the states before and after (names
+    of :class:`~vibrofriction.schema.ContactState`)."""
+
+    tau: float
+    kind: str
+    before: str
+    after: str
+
+
+@dataclass(frozen=True)
+class History:
+    """A time history sampled from the closed forms (Fig. 2).
+
+    All quantities are scaled (docs/model.md): ``tau = omega t``; ``x`` body position and
+    ``x_dot`` its velocity (units ``mu0 F_N0/(m omega^2)`` and ``mu0 F_N0/(m omega)``);
+    ``f`` the tangential contact force and ``n`` the ``mu0``-scaled normal force, both
+    in units of ``mu0 F_N0``; ``phase`` the state of the contact at each sample (a name
+    of :class:`~vibrofriction.schema.ContactState`: ``"stick"``, ``"slip+"``,
+    ``"slip-"``, ``"flight"``); ``events`` every transition with its exact time.  Sample
+    times include every event time (on both sides), so phase boundaries are sharp.
+    ``e`` is the elongation of the contact spring; ``work_input`` the work done by the
+    pulled end since the start and ``dissipated_pin``, ``dissipated_contact``,
+    ``dissipated_friction`` the energy dissipated by the pin dashpot, the contact dashpot
+    and friction (unit ``(mu0 F_N0)^2/(m omega^2)``; Gauss-Legendre quadrature of the
+    closed forms, relative accuracy ~1e-10), so that ``work_input - sum(dissipated) =
+    stored_energy() - stored_energy()[0]`` (docs/damping.md).  With a longitudinal
+    in-plane oscillation (docs/inplane.md) ``x``, ``x_dot`` are in the laboratory frame
+    and ``work_input`` includes the work of the oscillating substrate on the contact (or
+    is that of the oscillating holder).  ``final_state`` is the state on the last
+    Poincare section within the history, ``tau = 2 pi floor(periods)`` (the start for
+    less than a period); None only for a curved tip (:class:`CurvedHistory`, whose state
+    is its springs').
+
+    The 1-D solver returns this class; the 2-D solver a :class:`PlaneHistory`, a curved
+    tip a :class:`CurvedHistory`, each with the fields of its solver.
+    """
+
+    tau: NDArray[np.float64]
+    x: NDArray[np.float64]
+    x_dot: NDArray[np.float64]
+    f: NDArray[np.float64]
+    n: NDArray[np.float64]
+    phase: NDArray[np.str_]
+    events: tuple[Event, ...]
+    system: Dimensionless
+    v_inertial: float
+    e: NDArray[np.float64]
+    work_input: NDArray[np.float64]
+    dissipated_pin: NDArray[np.float64]
+    dissipated_contact: NDArray[np.float64]
+    dissipated_friction: NDArray[np.float64]
+    final_state: SectionState | None = field(default=None)
+
+    @property
+    def is_curved(self) -> bool:
+        """Whether this is a curved tip's history (a :class:`CurvedHistory`)."""
+        return isinstance(self, CurvedHistory)
+
+    @property
+    def is_plane(self) -> bool:
+        """Whether this is a 2-D history (a :class:`PlaneHistory`)."""
+        return isinstance(self, PlaneHistory)
+
+    def _pin_energy(self) -> NDArray[np.float64]:
+        """``x'^2/2 + alpha (V tau - x)^2/2`` (with an oscillating holder the pin's spring
+        is stretched by ``V tau + X - x``)."""
+        d = self.system
+        y = self.x - self.v_inertial * self.tau
+        if d.a_x > 0.0 and d.inplane_on == "holder":
+            y = y - inplane_motion(d, self.tau)[0]
+        return 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
+
+    def stored_energy(self) -> NDArray[np.float64]:
+        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
+        oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
+        transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's
+        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``)."""
+        d = self.system
+        out = self._pin_energy()
+        if not d.is_rigid:
+            out = out + 0.5 * (d.beta - d.alpha) * self.e**2
+        return out
+
+    def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """The contact point's position relative to the substrate, ``(x_c, y_c)``: the
+        body's minus the contact spring's elongation minus the substrate's in-plane
+        displacement (none where the holder oscillates); ``y_c`` is 0 but in 2-D.
+        ``x_c`` advances by ``V`` per unit ``tau`` on average (the body slides over the
+        substrate): ``x_c - V tau`` is periodic in a periodic steady state."""
+        d = self.system
+        xc = self.x - self.e
+        if d.inplane_on == "substrate" and d.a_x > 0.0:
+            xc = xc - inplane_motion(d, self.tau)[0]
+        return xc, np.zeros_like(xc)
+
+    def time(self, physical: Physical) -> NDArray[np.float64]:
+        """Sample times in seconds for a physical system (``t = tau/omega``)."""
+        return self.tau / physical.omega
+
+
+@dataclass(frozen=True, kw_only=True)
+class PlaneHistory(History):
+    """A history with a transverse oscillation (``a_y > 0``, the 2-D solver,
+    docs/inplane.md section 6): :class:`History` and the transverse components.
+
+    ``u_y`` and ``u_y_dot`` the body's transverse position and velocity, ``f_y`` the
+    transverse contact force, ``e_y`` the transverse elongation, ``slip_velocity`` (shape
+    ``(N, 2)``) the contact point's velocity relative to the substrate (0 in stick: in
+    slip its direction is the slip's, and ``(f, f_y)`` is parallel to it), ``impulse``
+    (shape ``(N, 2)``) the integrals of ``(f, f_y)`` since ``tau = 0`` (to the
+    integrator's tolerance), and ``plane_state`` the 6 components ``(y_x, y_y, v_x, v_y,
+    e_x, e_y)`` of the state at ``tau = 2 pi floor(periods)`` (a start for another 2-D
+    history; ``final_state`` keeps its x components).  There ``phase`` is ``"slip+"`` or
+    ``"slip-"`` by the sign of ``f`` (as the 2-D solver's ``slip_fraction``), and the
+    energies are the trapezoidal rule over the samples (second order in the sample
+    spacing, not the 1-D histories' 1e-10).
+    """
+
+    u_y: NDArray[np.float64]
+    u_y_dot: NDArray[np.float64]
+    f_y: NDArray[np.float64]
+    e_y: NDArray[np.float64]
+    slip_velocity: NDArray[np.float64]
+    impulse: NDArray[np.float64]
+    plane_state: NDArray[np.float64]
+
+    def stored_energy(self) -> NDArray[np.float64]:
+        d = self.system
+        yy = self.u_y - (transverse_motion(d, self.tau)[0]
+                         if d.inplane_on == "holder" else 0.0)
+        out = super().stored_energy() + 0.5 * self.u_y_dot**2 + 0.5 * d.pin_y[0] * yy**2
+        return out + 0.5 * (d.beta - d.alpha) * self.e_y**2
+
+    def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        xc, _ = super().contact_point()
+        yc = self.u_y - self.e_y
+        if self.system.inplane_on == "substrate":
+            yc = yc - transverse_motion(self.system, self.tau)[0]
+        return xc, yc
+
+
+@dataclass(frozen=True, kw_only=True)
+class CurvedHistory(History):
+    """A curved tip's history (finite ``profile_exponent``: the MDR row of ``M`` springs,
+    docs/contact_geometry.md "The history"): :class:`History` and the contact fields.
+
+    ``f = sum f_i`` and ``n = sum n_i`` (units ``mu0 F_N0``: ``n`` is ``F_N/F_N0``), ``e
+    = f/(beta - alpha)`` (the springs' elongation weighted by stiffness; the flat punch's
+    ``e``), ``phase`` ``"stick"``, ``"slip+"``, ``"slip-"`` where every spring in contact
+    is in that state, ``"flight"`` where none is in contact, else ``"partial"``
+    (:data:`~vibrofriction.schema.PARTIAL`), no ``events`` (the springs' states hold
+    them), no ``final_state``, ``dissipated_contact`` 0, and: ``impulse`` ``(int f, 0)``
+    (exact, shape ``(N, 2)``), ``xi`` (shape ``(M,)``) the springs' positions along the
+    profile (cell midpoints, unit ``a0``, the contact radius at the mean indentation),
+    ``spring_state`` (``(N, M)``, int8) each spring's state at each sample (the codes of
+    :class:`~vibrofriction.schema.ContactState`: 0 stick, 1 slip forwards, 2 slip
+    backwards, 3 flight, out of contact), ``spring_f`` (``(N, M)``) each spring's
+    tangential force (``|f_i| <= n_i``, :meth:`spring_normal`), ``stick_radius``
+    (``(N,)``) the position of the outermost stuck spring (0 if none),
+    ``contact_radius`` (``(N,)``) the imposed indentation's ``max(0, 1 + a cos
+    tau)^(1/n)``, ``stick_area_fraction``, ``slip_area_fraction``,
+    ``open_area_fraction`` (``(N,)``) the shares of the disc of the largest contact radius
+    (area-weighted as the steady state's), and ``normal_impulse`` (``(N,)``) the exact
+    integral of ``n`` since ``tau = 0``.
+    """
+
+    impulse: NDArray[np.float64]
+    xi: NDArray[np.float64]
+    spring_state: NDArray[np.int8]
+    spring_f: NDArray[np.float64]
+    stick_radius: NDArray[np.float64]
+    contact_radius: NDArray[np.float64]
+    stick_area_fraction: NDArray[np.float64]
+    slip_area_fraction: NDArray[np.float64]
+    open_area_fraction: NDArray[np.float64]
+    normal_impulse: NDArray[np.float64]
+
+    def spring_normal(self) -> NDArray[np.float64]:
+        """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)`` (``w =
+        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``."""
+        n_exp = self.system.profile_exponent
+        dxi = 2.0 * float(self.xi[0])
+        flat = math.isinf(n_exp)
+        w = dxi if flat else dxi * (n_exp + 1.0) / n_exp
+        g = np.zeros_like(self.xi) if flat else self.xi ** n_exp
+        depth = 1.0 + self.system.amplitude * np.cos(self.tau)
+        return w * np.maximum(0.0, depth[:, None] - g[None, :])
+
+    def stored_energy(self) -> NDArray[np.float64]:
+        d = self.system
+        k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])  # the row: sum f_i^2/(2 k dxi)
+        return self._pin_energy() + 0.5 * np.sum(self.spring_f**2, axis=1) / k
