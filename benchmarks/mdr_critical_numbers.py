@@ -198,7 +198,7 @@ def dead_weight() -> None:
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for du in (0.45e-6, 0.9e-6, 1.6e-6):
         for control in ("indentation", "dead_weight"):
-            pin = vf.Physical.from_bench(**bench, du_z=du, normal_control=control)
+            pin = vf.from_bench(**bench, du_z=du, normal_control=control)
             d = pin.to_dimensionless()
             r = vf.friction_coefficient(pin, v0=0.0015)
             row = mdr_friction(d.alpha, d.beta, d.amplitude, float(r.v_inertial), 2.0)

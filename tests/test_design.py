@@ -16,7 +16,7 @@ from vibrofriction.figures import plot_design
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction_reference import return_mapping_mu
 
-PIN = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                              du_z=0.5e-6, mu0=0.3)
 OMEGA = (2 * math.pi * 200, 2 * math.pi * 5000)

@@ -16,7 +16,7 @@ from vibrofriction.figures import plot_fit
 from vibrofriction.solver import SolverSettings, solve_points
 
 DATA = Path(__file__).resolve().parent / "data"
-TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+TRUE = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                               du_z=0.5e-6, mu0=0.3)
 #: a solver given too few periods to converge anywhere: nothing it returns is trusted
@@ -350,7 +350,7 @@ def test_fit_of_four_parameters_to_reference_data_holds_the_truth_or_says_it_is_
     mass at the measured natural frequency, k_zc follows u_z0 at the applied load), the
     guess off by factors 0.6-1.6 within the search span."""
     data = vf.read_measurements(DATA / "reference_bench.csv")
-    guess = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
+    guess = vf.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
                                    normal_load=20, k_zc=2.8e7, k_xc=4.8e6,
                                    drive_frequency_hz=1000, du_z=0.6e-6, mu0=0.39)
     res = vf.fit(data, guess, free=["mu0", "mass", "k_xc", "u_z0"], progress=False,
@@ -365,7 +365,7 @@ def test_fit_of_four_parameters_to_reference_data_holds_the_truth_or_says_it_is_
 def test_noise_free_data_give_back_the_parameters():
     data = synthetic(TRUE, (0.3e-6, 0.6e-6, 0.9e-6), np.random.default_rng(0), sigma=1e-6)
     # the experimenter's guess: the measured f_n and Q, a wrong modal mass, k_xc and mu0
-    guess = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.015, quality_factor=50.0,
+    guess = vf.from_bench(natural_frequency_hz=800.0, mass=0.015, quality_factor=50.0,
                                    normal_load=20.0, k_zc=2e7, k_xc=3e7,
                                    drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.4)
     res = vf.fit(data, guess, free=["mu0", "mass", "k_xc"], progress=False)

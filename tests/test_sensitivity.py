@@ -22,6 +22,7 @@ import pytest
 
 from reference_points import REGIMES, random_points
 from vibrofriction import Dimensionless
+from vibrofriction.bench import from_bench
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction.solver.sensitivity import SENSITIVE, friction_gradient, solve_gradients
 
@@ -174,9 +175,8 @@ def test_friction_gradient_one_point():
 def _fit_problem():
     from vibrofriction.bench import synthetic_measurements
     from vibrofriction.bench.fit_problem import _Problem
-    from vibrofriction.params import Physical
 
-    true = Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+    true = from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                                normal_load=20.0, k_zc=2e7, k_xc=1.5e7,
                                drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.3)
     data = synthetic_measurements(true, (0.3e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 8), 0.003,
@@ -255,9 +255,8 @@ def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
         _profile_side,
         _s2,
     )
-    from vibrofriction.params import Physical
 
-    true = Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+    true = from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                                normal_load=20.0, k_zc=2e7, k_xc=1.5e7,
                                drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.3)
     data = synthetic_measurements(true, (0.3e-6, 0.6e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 20),

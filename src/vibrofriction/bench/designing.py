@@ -290,7 +290,7 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     4-D ``map`` stays the one over ``du_x``, ``phase_x`` (only ``du_x = 0`` without
     ``du_x``).
 
-    **Curved contact** (a pin of ``Physical.from_bench(contact=..., contact_model="mdr")``,
+    **Curved contact** (a pin of ``vf.from_bench(contact=..., contact_model="mdr")``,
     docs/bench.md): the same normal-oscillation design by the MDR solver, on a smaller map
     by default (:data:`CURVED_MAP`, :data:`CURVED_STARTS` refinements; ``starts`` default 8
     otherwise); ``du_z`` is the amplitude of the imposed indentation.  Refused by name what

@@ -141,7 +141,7 @@ def contact_fields(contact: Contact, load: float, curved: bool,
                    ) -> dict[str, float]:
     """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
     ``radius`` and its pair's ``E*`` replaced where given (both moduli scaled together,
-    Poisson's ratios kept): as :meth:`Physical.from_bench` builds them, the MDR contact
+    Poisson's ratios kept): as :func:`~vibrofriction.bench.from_bench` builds them, the MDR contact
     (``curved``: the mean indentation ``d0`` with ``F(d0) = load``, ``k_zc = 2 E* a0``,
     ``k_xc = 2 G*_mdr a0``) or the linearised one (the tangent stiffnesses at the load,
     ``u_z0 = load/k_zc``)."""
@@ -215,7 +215,7 @@ def _check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ..
         shown = ", ".join(f"{k} {getattr(guess, k):.6g} (contact: {v:.6g})"
                           for k, v in off.items())
         raise ValueError(f"the guess was not built from this contact at its load "
-                         f"{guess.F_N0:.6g} N: {shown}; build it with Physical.from_bench("
+                         f"{guess.F_N0:.6g} N: {shown}; build it with vf.from_bench("
                          f"contact=..., contact_model={'mdr' if guess.curved else 'linearised'!r})")
 
 

@@ -131,7 +131,7 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     ``jacobian``: the local least squares' Jacobian, ``"exact"`` (the sensitivities of
     the steady state, :meth:`_Problem.jacobian`; differences of the solver only at the
     rows that have none) or ``"differences"`` (lmfit's differences of the residuals).
-    ``contact``: the geometry the guess was built from (``Physical.from_bench(contact=...,
+    ``contact``: the geometry the guess was built from (``vf.from_bench(contact=...,
     contact_model=...)``, checked): its ``radius`` and its pair's ``E_star``
     (:data:`CONTACT_FITTABLE`) may then be free, one of them (module docstring, "A curved
     contact"); ``k_zc``, ``k_xc``, ``u_z0`` follow them at the guess's load.  A curved

@@ -199,7 +199,7 @@ class Explorer:
         self.bench_box.append(pn.pane.Markdown(
             "The bench inputs are the linearised contact (its stiffnesses at the load): a "
             "curved tip is chosen on the dimensionless inputs (in SI: "
-            "`Physical.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
+            "`vf.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
             "docs/contact_geometry.md).", width=330, styles=_NOTE_STYLE))
         sidebar = pn.Column(
             pn.pane.Markdown("## vibrofriction explorer\nFriction under normal oscillations "
