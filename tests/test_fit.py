@@ -11,7 +11,8 @@ import pytest
 from scipy.stats import binom
 
 import vibrofriction as vf
-from vibrofriction.bench.fitting import FitResult, _Problem, predict_cof, synthetic_measurements
+from vibrofriction.bench.fitting import FitResult, predict_cof, synthetic_measurements
+from vibrofriction.bench.fitting.problem import Problem
 from vibrofriction.figures import plot_fit
 from vibrofriction.solver import SolverSettings, solve_points
 
@@ -61,7 +62,7 @@ def test_synthetic_measurements_refuse_an_untrusted_truth():
 # --- point 3: rows the model cannot evaluate -------------------------------------------
 
 def _problem(data, settings=None, free=("mu0",)):
-    return _Problem(TRUE, free, True, True, True, data, settings, mu0_max=TRUE.mu0 * 10)
+    return Problem(TRUE, free, True, True, True, data, settings, mu0_max=TRUE.mu0 * 10)
 
 
 def test_an_unevaluable_row_costs_more_than_any_honest_misfit_even_with_a_small_sigma():
@@ -89,7 +90,7 @@ def test_a_model_error_is_not_turned_into_a_chi_square(monkeypatch):
     def broken(*args, **kwargs):
         raise ValueError("a programming error")
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", broken)
+    monkeypatch.setattr("vibrofriction.bench.fitting.problem.solve_points", broken)
     with pytest.raises(ValueError, match="a programming error"):
         _problem(data).residual(np.array([math.log(0.3)]))
     with pytest.raises(ValueError, match="a programming error"):  # the global stage's call
@@ -124,7 +125,8 @@ def test_penalised_rows_are_counted_and_make_the_fit_poor(monkeypatch):
         out["trusted"] = out["trusted"] & (v_inertial != np.min(v_inertial))
         return out
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", untrusted_at_the_slowest)
+    monkeypatch.setattr("vibrofriction.bench.fitting.problem.solve_points",
+                        untrusted_at_the_slowest)
     res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False,
                  global_stage=False)
     assert res.penalised == {"untrusted": 2, "outside the model's domain": 0}

@@ -17,7 +17,7 @@ from scipy.stats import chi2
 
 import vibrofriction as vf
 from vibrofriction.bench import predict_cof
-from vibrofriction.bench.fit_problem import contact_exponents, contact_fields
+from vibrofriction.bench.fitting.problem import contact_exponents, contact_fields
 from vibrofriction.contact import Cone, Material, Sphere
 from vibrofriction_reference.mdr import mdr_reference
 

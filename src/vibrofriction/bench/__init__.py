@@ -3,10 +3,12 @@ oscillation (docs/bench.md).
 
 * :mod:`.measurements`: the table of measured points (:func:`read_measurements`);
 * :mod:`.fitting`: the model fitted with honest uncertainties (:func:`fit`,
-  :class:`FitResult`, :func:`synthetic_measurements` to try a fit before measuring),
-  its parts one job each: :mod:`.fit_problem` (parameters, constraints, residuals),
-  :mod:`.fit_search` (global stage, local starts), :mod:`.fit_uncertainty` (profiles,
-  identifiability), :mod:`.fit_result` (:class:`FitResult`, the verdict);
+  :class:`FitResult`, :func:`synthetic_measurements` to try a fit before measuring), a
+  package of parts one job each: :mod:`.fitting.problem` (parameters, constraints,
+  residuals), :mod:`.fitting.search` (global stage, local starts),
+  :mod:`.fitting.uncertainty` (profiles, identifiability), :mod:`.fitting.result`
+  (:class:`FitResult`, the verdict) and :mod:`.fitting.procedure` (:func:`fit`, which
+  runs them in that order);
 * :mod:`.designing`: the oscillation that lowers friction most within an actuator's
   limits (:func:`design`, :class:`DesignResult`);
 * :mod:`.setup`: the pin from what the experimenter knows (:func:`from_bench`,
