@@ -11,7 +11,7 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction import theory
-from vibrofriction.bench import designing
+from vibrofriction.bench.designing import evaluation
 from vibrofriction.figures import plot_design
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction_reference import return_mapping_mu
@@ -142,7 +142,7 @@ class _StaleBand:
 
 def test_untrusted_values_are_never_the_optimum_and_are_counted(monkeypatch):
     stale = _StaleBand((335.0, 372.0))  # around the true optimum, 353 Hz
-    monkeypatch.setattr(designing, "solve_points", stale)
+    monkeypatch.setattr(evaluation, "solve_points", stale)
     res = vf.design(PIN, v0=0.01, omega=OMEGA, du_z=DU_Z, max_velocity_amplitude=0.01,
                     **SMALL)
     s = res.system
