@@ -39,7 +39,7 @@ import vibrofriction as vf
 from vibrofriction.bench import synthetic_measurements
 
 HERE = Path(__file__).resolve().parent
-TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+TRUE = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                               du_z=0.5e-6, mu0=0.3)
 # a poor guess: mu0 +20 %, the modal mass +30 %, k_xc +47 %, u_z0 +25 % (the load kept);

@@ -1,6 +1,6 @@
 """The fit's global stage, two ways side by side: one pool task per population member
 (the call of scipy's ``workers=map``, as before 2026-11-26) against a whole generation
-per call (``vectorized=True``, :meth:`_Problem.costs`, the fit's way since).
+per call (``vectorized=True``, :meth:`Problem.costs`, the fit's way since).
 
 Same data (bench_fit.py's, noise seed 11), same coarse problem, same seed, deferred
 updating in both, so the two walk the same population: the script checks that the best
@@ -21,8 +21,8 @@ import numpy as np
 from scipy.optimize import differential_evolution
 
 from bench_fit import CALLS, FREE, data
-from vibrofriction.bench.fit_problem import _bounds, _Problem
-from vibrofriction.bench.fit_search import CHUNKS
+from vibrofriction.bench.fitting.problem import Problem, search_bounds
+from vibrofriction.bench.fitting.search import CHUNKS
 from vibrofriction.parallel import mapper
 
 
@@ -33,8 +33,8 @@ def main() -> None:
     args = ap.parse_args()
     guess, kwargs = CALLS["4 varied (k_x follows mass)"]
     free = tuple(n for n in FREE if n != "k_x")
-    problem = _Problem(guess, free, True, True, True, data(np.random.default_rng(11)))
-    bounds, coarse = _bounds(problem, 10.0), problem.coarse()
+    problem = Problem(guess, free, True, True, True, data(np.random.default_rng(11)))
+    bounds, coarse = search_bounds(problem, 10.0), problem.coarse()
     x0 = np.log([getattr(guess, n) for n in free])
     common = dict(maxiter=args.generations, popsize=12, seed=0, polish=False, init="sobol",
                   x0=x0, tol=0.0, updating="deferred")

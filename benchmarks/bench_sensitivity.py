@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from vibrofriction.bench.fit_problem import _Problem
+from vibrofriction.bench.fitting.problem import Problem
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.sensitivity import solve_gradients
 
@@ -41,7 +41,7 @@ FIT_MOVES = ("alpha", "beta", "amplitude", "v_inertial", "zeta")
 
 def _sets() -> dict[str, tuple[dict, str]]:
     d = bench_fit.data(np.random.default_rng(11))
-    pr = _Problem(bench_fit.GUESS, tuple(bench_fit.FREE), False, True, True, d)
+    pr = Problem(bench_fit.GUESS, tuple(bench_fit.FREE), False, True, True, d)
     ln = np.array([math.log(getattr(bench_fit.GUESS, n)) for n in bench_fit.FREE])
     names = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x")
     fit_pts = dict(zip(names, pr.points(ln)[1:], strict=True))

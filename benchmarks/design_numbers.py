@@ -41,7 +41,7 @@ from vibrofriction_reference import return_mapping_mu
 from vibrofriction_reference.inplane import inplane_mean
 
 HERE = Path(__file__).resolve().parent
-PIN = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                              du_z=0.5e-6, mu0=0.3)
 CALL = dict(omega=(2 * math.pi * 200, 2 * math.pi * 5000), du_z=(0.1e-6, 0.9e-6),

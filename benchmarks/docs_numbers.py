@@ -135,7 +135,7 @@ def case_iv_rise() -> Rows:
     for a in (0.2, 0.5, 1.0, 1.5):
         cells = []
         for zeta in (0.005, 0.02, 0.05):
-            vc = float(theory._drive_work(np.asarray(a))) / (2 * math.pi * zeta)
+            vc = float(theory.resonant._drive_work(np.asarray(a))) / (2 * math.pi * zeta)
             V = vc * np.linspace(0.3, 0.97, 30)
             out = solver.solve_points(1.0, math.inf, a, V, zeta)
             assert np.all(out["trusted"])

@@ -52,12 +52,12 @@ REFERENCE = json.loads((DATA / "reference_bench.json").read_text())
 TRUTH = vf.Physical(**REFERENCE["truth"])
 #: the guess of tests/test_fit.py's four-parameter reference test: the measured f_n and Q,
 #: the modal mass, contact stiffnesses and mu0 off by factors 0.6-1.6
-GUESS = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
+GUESS = vf.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
                                normal_load=20, k_zc=2.8e7, k_xc=4.8e6,
                                drive_frequency_hz=1000, du_z=0.6e-6, mu0=0.39)
 FIVE = ["mu0", "mass", "k_x", "k_xc", "u_z0"]
 #: the pin of tests/test_fit.py (coverage, section 5)
-PIN = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                              du_z=0.5e-6, mu0=0.3)
 

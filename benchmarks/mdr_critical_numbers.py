@@ -29,7 +29,7 @@ from vibrofriction import theory
 from vibrofriction.contact import Material, Sphere
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction, mdr_row
-from vibrofriction.theory import _SLIDING_GRID, _sliding_rate
+from vibrofriction.theory.profile import _SLIDING_GRID, _sliding_rate
 
 SYSTEMS = (("stiff", 0.01, 0.02, 0.0), ("soft", 0.01, 40.0, 0.0),
            ("(0.5, 2)", 0.5, 2.0, 0.0), ("bench (Fig. 18)", 0.64, 2.398553100733369, 0.0),
@@ -107,7 +107,7 @@ def grid_convergence() -> None:
     for al, be, a, n, ze in ((0.5, 2.0, 0.5, 2.0, 0.0), (0.5, 2.0, 1.5, 2.0, 0.0),
                              (0.5, 2.0, 1.5, 4.0, 0.0), (2.5, 6.0, 2.5, 0.7, 0.05),
                              (0.5, 2.0, 1.5, math.inf, 0.0)):
-        v = [theory._profile_critical(al, be, a, n, ze, N=1 << k) for k in (13, 15, 17)]
+        v = [theory.profile._profile_critical(al, be, a, n, ze, N=1 << k) for k in (13, 15, 17)]
         times = []
         for _ in range(11):
             t0 = time.perf_counter()
@@ -198,7 +198,7 @@ def dead_weight() -> None:
     print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
     for du in (0.45e-6, 0.9e-6, 1.6e-6):
         for control in ("indentation", "dead_weight"):
-            pin = vf.Physical.from_bench(**bench, du_z=du, normal_control=control)
+            pin = vf.from_bench(**bench, du_z=du, normal_control=control)
             d = pin.to_dimensionless()
             r = vf.friction_coefficient(pin, v0=0.0015)
             row = mdr_friction(d.alpha, d.beta, d.amplitude, float(r.v_inertial), 2.0)

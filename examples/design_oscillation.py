@@ -19,7 +19,7 @@ from vibrofriction.contact import Material, Sphere
 from vibrofriction.figures import plot_design
 
 STEEL = Material(E=210e9, nu=0.3)
-PIN = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
+PIN = vf.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
                              normal_load=20.0, contact=Sphere(3e-3, STEEL, STEEL),
                              drive_frequency_hz=1000, dF_N=10.0, mu0=0.3)
 

@@ -26,7 +26,7 @@ from vibrofriction.contact import Material, Sphere
 from vibrofriction.figures import plot_fit
 
 STEEL = Material(E=210e9, nu=0.3)
-TRUE = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
+TRUE = vf.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
                               normal_load=20.0, contact=Sphere(3e-3, STEEL, STEEL),
                               drive_frequency_hz=1000, dF_N=10.0, mu0=0.3)
 AMPLITUDES_UM = (0.2, 0.4, 0.8)
@@ -46,7 +46,7 @@ def main(out_dir: str | Path = "example_output") -> dict[str, float]:
     out.mkdir(parents=True, exist_ok=True)
     csv = out / "bench_measurements.csv"
     measured(np.random.default_rng(7)).to_csv(csv, index=False)
-    guess = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.02, quality_factor=50,
+    guess = vf.from_bench(natural_frequency_hz=800, mass=0.02, quality_factor=50,
                                    normal_load=20.0, k_zc=TRUE.k_zc, k_xc=TRUE.k_xc / 3,
                                    drive_frequency_hz=1000, dF_N=10.0, mu0=0.4)
     res = vf.fit(vf.read_measurements(csv), guess, free=["mu0", "mass", "k_xc"],

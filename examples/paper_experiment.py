@@ -29,7 +29,7 @@ U_Z0 = 10e-6
 
 
 def pin(du_z: float) -> vf.Physical:
-    return vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
+    return vf.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
                                   normal_load=1.0, k_zc=1.0 / U_Z0, k_xc=math.inf,
                                   drive_frequency_hz=800, du_z=du_z, mu0=0.3)
 

@@ -1,4 +1,4 @@
-"""The set-up in the experimenter's terms (Physical.from_bench, contact models) and the
+"""The set-up in the experimenter's terms (vf.from_bench, contact models) and the
 measurement table (read_measurements): docs/bench.md."""
 
 import math
@@ -41,7 +41,7 @@ def test_flat_punch_on_a_rigid_counterface():
 
 
 def test_from_bench_reproduces_what_the_experimenter_knows():
-    p = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+    p = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                                normal_load=20.0, contact=Sphere(3e-3, STEEL, STEEL),
                                drive_frequency_hz=800.0, dF_N=10.0, mu0=0.3, eta_c=0.1)
     assert p.natural_frequency() == pytest.approx(2 * math.pi * 800.0, rel=1e-14)
@@ -49,7 +49,7 @@ def test_from_bench_reproduces_what_the_experimenter_knows():
     assert p.quality_factor == pytest.approx(50.0) and p.eta_c == pytest.approx(0.1)
     d = p.to_dimensionless()
     assert d.alpha == pytest.approx(1.0, rel=1e-14) and d.amplitude == pytest.approx(0.5)
-    q = vf.Physical.from_bench(natural_frequency_hz=800.0, k_x=p.k_x, damping_ratio=0.01,
+    q = vf.from_bench(natural_frequency_hz=800.0, k_x=p.k_x, damping_ratio=0.01,
                                normal_load=20.0, k_zc=p.k_zc, k_xc=p.k_xc,
                                drive_frequency_hz=600.0, du_z=p.du_z, mu0=0.3)
     assert q.mass == pytest.approx(0.01, rel=1e-14) and q.zeta == pytest.approx(0.01)
@@ -75,7 +75,7 @@ def test_from_bench_errors_name_the_input(changes, message):
     kwargs.update(changes)
     kwargs = {k: v for k, v in kwargs.items() if v is not None}
     with pytest.raises(ValueError, match=message):
-        vf.Physical.from_bench(**kwargs)
+        vf.from_bench(**kwargs)
 
 
 def test_material_errors():

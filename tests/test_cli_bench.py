@@ -34,7 +34,7 @@ def test_mu_for_a_bench_file(bench_file):
     out = _cli("mu", "--bench", str(bench_file), "--v0", "0.01", "--json")
     assert out.returncode == 0, out.stderr
     row = json.loads(out.stdout)
-    pin = vf.Physical.from_bench_file(bench_file)
+    pin = vf.from_bench_file(bench_file)
     assert row["mu_ratio"] == pytest.approx(vf.friction_coefficient(pin, v0=0.01).mu_ratio,
                                             abs=1e-12)
     bad = _cli("mu", "--bench", str(bench_file) + ".missing", "--v0", "0.01")
@@ -42,7 +42,7 @@ def test_mu_for_a_bench_file(bench_file):
 
 
 def test_fit_from_the_command_line(bench_file, tmp_path):
-    pin = vf.Physical.from_bench_file(bench_file)
+    pin = vf.from_bench_file(bench_file)
     v0 = np.geomspace(1e-3, 0.1, 12)
     cof = predict_cof(pin, v0, np.full(12, pin.du_z), np.full(12, pin.omega))
     csv = tmp_path / "m.csv"
@@ -139,4 +139,4 @@ def test_fit_command_passes_a_curved_contact_to_the_fit(tmp_path, monkeypatch, c
     assert seen["free"] == free and seen["guess"].curved
     kind = Sphere if contact["type"] == "sphere" else Cone
     assert isinstance(seen["contact"], kind)
-    assert seen["guess"] == vf.Physical.from_bench(**{**spec, "contact": seen["contact"]})
+    assert seen["guess"] == vf.from_bench(**{**spec, "contact": seen["contact"]})

@@ -62,7 +62,7 @@ def test_case_iv_damped_rise_law_against_the_solver(a):
     within 0.01 (zeta = 0.02) and 0.015 (0.05) where V >= 0.3 V_c (the ansatz needs a
     large V)."""
     for zeta, frac, tol in ((0.005, 0.1, 2e-3), (0.02, 0.3, 0.01), (0.05, 0.3, 0.015)):
-        vc = float(theory._drive_work(np.asarray(a))) / (2 * math.pi * zeta)
+        vc = float(theory.resonant._drive_work(np.asarray(a))) / (2 * math.pi * zeta)
         if a <= 1:
             assert vc == pytest.approx(vf.Dimensionless(1.0, math.inf, a, zeta)
                                        .critical_inertial_velocity(), rel=1e-12)

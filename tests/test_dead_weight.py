@@ -64,8 +64,8 @@ def _linear(k_zc):
     (Sphere(3e-3, STEEL, STEEL), "linearised", 3.0e-6),  # the linear spring jumps
 ])
 def test_from_bench_dead_weight_mean_force_is_the_load(contact, model, du_z):
-    static = vf.Physical.from_bench(**BENCH, contact=contact, contact_model=model, du_z=du_z)
-    pin = vf.Physical.from_bench(**BENCH, contact=contact, contact_model=model, du_z=du_z,
+    static = vf.from_bench(**BENCH, contact=contact, contact_model=model, du_z=du_z)
+    pin = vf.from_bench(**BENCH, contact=contact, contact_model=model, du_z=du_z,
                                  normal_control="dead_weight")
     assert pin.normal_control == "dead_weight" and static.normal_control == "indentation"
     assert pin.du_z == du_z and pin.u_z0 < static.u_z0
@@ -95,10 +95,10 @@ def test_from_bench_dead_weight_mean_force_is_the_load(contact, model, du_z):
 def test_dead_weight_without_jumping_flat_is_the_indentation_mode(model):
     """A flat punch (and any linear spring) that does not jump has <F> = F(d0)."""
     kw = dict(BENCH, contact=FlatPunch(1e-3, STEEL, STEEL), contact_model=model, du_z=5e-8)
-    a = vf.Physical.from_bench(**kw)
-    b = vf.Physical.from_bench(**kw, normal_control="dead_weight")
+    a = vf.from_bench(**kw)
+    b = vf.from_bench(**kw, normal_control="dead_weight")
     assert a == b and b.normal_control == "dead_weight"
-    k = vf.Physical.from_bench(**BENCH, k_zc=2e8, k_xc=1.6e8, du_z=5e-8,
+    k = vf.from_bench(**BENCH, k_zc=2e8, k_xc=1.6e8, du_z=5e-8,
                                normal_control="dead_weight")
     assert k.u_z0 == 20.0 / 2e8 and k.mean_normal_force == pytest.approx(20.0, rel=1e-15)
 
@@ -106,8 +106,8 @@ def test_dead_weight_without_jumping_flat_is_the_indentation_mode(model):
 def test_indentation_mode_is_unchanged():
     """The default: the load is the force at the mean indentation, as before."""
     sphere = Sphere(3e-3, STEEL, STEEL)
-    pin = vf.Physical.from_bench(**BENCH, contact=sphere, contact_model="mdr", du_z=0.9e-6)
-    assert pin == vf.Physical.from_bench(**BENCH, contact=sphere, contact_model="mdr",
+    pin = vf.from_bench(**BENCH, contact=sphere, contact_model="mdr", du_z=0.9e-6)
+    assert pin == vf.from_bench(**BENCH, contact=sphere, contact_model="mdr",
                                          du_z=0.9e-6, normal_control="indentation")
     assert pin.u_z0 == float(sphere.indentation(20.0))
     assert pin.F_N0 == pytest.approx(20.0, rel=1e-12)

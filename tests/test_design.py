@@ -11,12 +11,12 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction import theory
-from vibrofriction.bench import designing
+from vibrofriction.bench.designing import evaluation
 from vibrofriction.figures import plot_design
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction_reference import return_mapping_mu
 
-PIN = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                              du_z=0.5e-6, mu0=0.3)
 OMEGA = (2 * math.pi * 200, 2 * math.pi * 5000)
@@ -142,7 +142,7 @@ class _StaleBand:
 
 def test_untrusted_values_are_never_the_optimum_and_are_counted(monkeypatch):
     stale = _StaleBand((335.0, 372.0))  # around the true optimum, 353 Hz
-    monkeypatch.setattr(designing, "solve_points", stale)
+    monkeypatch.setattr(evaluation, "solve_points", stale)
     res = vf.design(PIN, v0=0.01, omega=OMEGA, du_z=DU_Z, max_velocity_amplitude=0.01,
                     **SMALL)
     s = res.system

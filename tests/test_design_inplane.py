@@ -12,7 +12,7 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction import theory
-from vibrofriction.bench import designing
+from vibrofriction.bench.designing import evaluation
 from vibrofriction.figures import plot_design
 from vibrofriction.solver import solve_points
 from vibrofriction_reference.inplane import inplane_mean
@@ -195,7 +195,7 @@ def test_untrusted_values_are_never_the_optimum_and_are_counted(monkeypatch):
         out["trusted"] = out["trusted"] & ~bad
         return out
 
-    monkeypatch.setattr(designing, "solve_points", stale)
+    monkeypatch.setattr(evaluation, "solve_points", stale)
     res = vf.design(PIN, v0=0.2 * VU, omega=(W, W), du_z=(0.5 * U, 0.5 * U),
                     du_x=(0.5 * DUX1, 0.5 * DUX1), n_phase=12)
     assert not np.remainder(res.system.phase_x - 3.4, 2 * math.pi) < 0.6

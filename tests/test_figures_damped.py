@@ -10,7 +10,7 @@ import pytest
 import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.figures import Rendered, all_recipes, damped, style
-from vibrofriction.figures.checks import (
+from vibrofriction.figures.damped_checks import (
     damped_beta_series_checks,
     damped_case_iv_checks,
     damped_onset,

@@ -11,12 +11,13 @@ import pytest
 from scipy.stats import binom
 
 import vibrofriction as vf
-from vibrofriction.bench.fitting import FitResult, _Problem, predict_cof, synthetic_measurements
+from vibrofriction.bench.fitting import FitResult, predict_cof, synthetic_measurements
+from vibrofriction.bench.fitting.problem import Problem
 from vibrofriction.figures import plot_fit
 from vibrofriction.solver import SolverSettings, solve_points
 
 DATA = Path(__file__).resolve().parent / "data"
-TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+TRUE = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                               du_z=0.5e-6, mu0=0.3)
 #: a solver given too few periods to converge anywhere: nothing it returns is trusted
@@ -61,7 +62,7 @@ def test_synthetic_measurements_refuse_an_untrusted_truth():
 # --- point 3: rows the model cannot evaluate -------------------------------------------
 
 def _problem(data, settings=None, free=("mu0",)):
-    return _Problem(TRUE, free, True, True, True, data, settings, mu0_max=TRUE.mu0 * 10)
+    return Problem(TRUE, free, True, True, True, data, settings, mu0_max=TRUE.mu0 * 10)
 
 
 def test_an_unevaluable_row_costs_more_than_any_honest_misfit_even_with_a_small_sigma():
@@ -89,7 +90,7 @@ def test_a_model_error_is_not_turned_into_a_chi_square(monkeypatch):
     def broken(*args, **kwargs):
         raise ValueError("a programming error")
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", broken)
+    monkeypatch.setattr("vibrofriction.bench.fitting.problem.solve_points", broken)
     with pytest.raises(ValueError, match="a programming error"):
         _problem(data).residual(np.array([math.log(0.3)]))
     with pytest.raises(ValueError, match="a programming error"):  # the global stage's call
@@ -124,7 +125,8 @@ def test_penalised_rows_are_counted_and_make_the_fit_poor(monkeypatch):
         out["trusted"] = out["trusted"] & (v_inertial != np.min(v_inertial))
         return out
 
-    monkeypatch.setattr("vibrofriction.bench.fit_problem.solve_points", untrusted_at_the_slowest)
+    monkeypatch.setattr("vibrofriction.bench.fitting.problem.solve_points",
+                        untrusted_at_the_slowest)
     res = vf.fit(data, TRUE.with_(mu0=0.35), free=["mu0"], progress=False,
                  global_stage=False)
     assert res.penalised == {"untrusted": 2, "outside the model's domain": 0}
@@ -350,7 +352,7 @@ def test_fit_of_four_parameters_to_reference_data_holds_the_truth_or_says_it_is_
     mass at the measured natural frequency, k_zc follows u_z0 at the applied load), the
     guess off by factors 0.6-1.6 within the search span."""
     data = vf.read_measurements(DATA / "reference_bench.csv")
-    guess = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
+    guess = vf.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
                                    normal_load=20, k_zc=2.8e7, k_xc=4.8e6,
                                    drive_frequency_hz=1000, du_z=0.6e-6, mu0=0.39)
     res = vf.fit(data, guess, free=["mu0", "mass", "k_xc", "u_z0"], progress=False,
@@ -365,7 +367,7 @@ def test_fit_of_four_parameters_to_reference_data_holds_the_truth_or_says_it_is_
 def test_noise_free_data_give_back_the_parameters():
     data = synthetic(TRUE, (0.3e-6, 0.6e-6, 0.9e-6), np.random.default_rng(0), sigma=1e-6)
     # the experimenter's guess: the measured f_n and Q, a wrong modal mass, k_xc and mu0
-    guess = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.015, quality_factor=50.0,
+    guess = vf.from_bench(natural_frequency_hz=800.0, mass=0.015, quality_factor=50.0,
                                    normal_load=20.0, k_zc=2e7, k_xc=3e7,
                                    drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.4)
     res = vf.fit(data, guess, free=["mu0", "mass", "k_xc"], progress=False)

@@ -17,7 +17,7 @@ from scipy.stats import chi2
 
 import vibrofriction as vf
 from vibrofriction.bench import predict_cof
-from vibrofriction.bench.fit_problem import contact_exponents, contact_fields
+from vibrofriction.bench.fitting.problem import contact_exponents, contact_fields
 from vibrofriction.contact import Cone, Material, Sphere
 from vibrofriction_reference.mdr import mdr_reference
 
@@ -37,7 +37,7 @@ def _bench_module():
 
 def _pin(radius: float = T["radius"], mass: float = T["mass"], mu0: float = T["mu0"],
          model: str = "mdr", material: Material = STEEL) -> vf.Physical:
-    return vf.Physical.from_bench(
+    return vf.from_bench(
         natural_frequency_hz=T["natural_frequency_hz"], mass=mass,
         normal_load=T["normal_load"], drive_frequency_hz=T["drive_frequency_hz"], mu0=mu0,
         du_z=0.6e-6, quality_factor=T["quality_factor"],

@@ -17,6 +17,7 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction import Dimensionless, Physical, friction_coefficient, sweep
+from vibrofriction.bench import from_bench
 
 #: a pin like tests/test_fit.py's, at 1 kHz, with a 1 um longitudinal oscillation
 PIN = dict(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
@@ -75,7 +76,7 @@ def test_vbar_is_refused_with_an_inplane_oscillation() -> None:
 
 
 def test_from_bench_takes_the_inplane_oscillation() -> None:
-    p = Physical.from_bench(natural_frequency_hz=800.0, normal_load=20.0,
+    p = from_bench(natural_frequency_hz=800.0, normal_load=20.0,
                             drive_frequency_hz=1000.0, mu0=0.3, mass=0.01, k_zc=2e7,
                             k_xc=1.5e7, du_z=5e-7, du_x=1e-6, phase_x=0.5, du_y=2e-6,
                             phase_y=0.25, inplane_on="holder")

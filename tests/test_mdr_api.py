@@ -1,6 +1,6 @@
 """The MDR contact in the public API (issue 21, docs/contact_geometry.md "Using it"):
 ``profile_exponent`` in Dimensionless, Physical, solve_points, friction_coefficient, the
-sweep and the CLI; ``Physical.from_bench(..., contact_model="mdr")`` against hand-derived
+sweep and the CLI; ``vf.from_bench(..., contact_model="mdr")`` against hand-derived
 Hertz and Sneddon formulas; the flat punch unchanged; the refusals name the parameter."""
 
 import json
@@ -139,7 +139,7 @@ BENCH = dict(natural_frequency_hz=800.0, mass=0.01, normal_load=20.0,
 
 def test_from_bench_sphere_mdr_is_hertz_scaled():
     R, du_z = 3e-3, 0.2e-6
-    pin = vf.Physical.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS),
+    pin = vf.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS),
                                  contact_model="mdr", du_z=du_z)
     e_star, g_star, d0, a0 = _hertz(20.0, R, 210e9, 0.3, 70e9, 0.22)
     assert 4.0 / 3.0 * e_star * math.sqrt(R) * d0**1.5 == pytest.approx(20.0, rel=1e-12)
@@ -158,18 +158,18 @@ def test_from_bench_sphere_mdr_is_hertz_scaled():
     assert pin.velocity_unit() == pytest.approx(0.3 * 20.0 / (m * w), rel=1e-12)
     # the linearised sphere: the same tangent stiffnesses, but u_z0 = F/k_zc = 2 d0/3, so
     # the same du_z is 3/2 times the amplitude
-    lin = vf.Physical.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS), du_z=du_z)
+    lin = vf.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS), du_z=du_z)
     assert lin.profile_exponent == math.inf
     assert lin.k_xc == pytest.approx(k_xc0, rel=1e-12)
     assert lin.to_dimensionless().amplitude == pytest.approx(1.5 * du_z / d0, rel=1e-12)
-    assert lin == vf.Physical.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS),
+    assert lin == vf.from_bench(**BENCH, contact=Sphere(R, STEEL, GLASS),
                                          du_z=du_z, contact_model="linearised")
 
 
 def test_from_bench_cone_and_power_law_mdr():
     theta = math.radians(70.0)
     cone = Cone.from_half_angle(theta, STEEL, STEEL)
-    pin = vf.Physical.from_bench(**BENCH, contact=cone, contact_model="mdr", du_z=1e-7)
+    pin = vf.from_bench(**BENCH, contact=cone, contact_model="mdr", du_z=1e-7)
     e_star = 1.0 / (2 * (1 - 0.3**2) / 210e9)
     d0 = math.sqrt(20.0 * math.pi / (2.0 * e_star * math.tan(theta)))  # F = 2/pi E* tan d^2
     a0 = 2.0 * d0 * math.tan(theta) / math.pi  # d = pi/2 a cot(theta)
@@ -179,9 +179,9 @@ def test_from_bench_cone_and_power_law_mdr():
     assert pin.F_N0 == pytest.approx(20.0, rel=1e-12)
     # a power law with n = 2 and c = 1/(2R) is the sphere
     R = 3e-3
-    law = vf.Physical.from_bench(**BENCH, contact=PowerLaw(0.5 / R, 2.0, STEEL, STEEL),
+    law = vf.from_bench(**BENCH, contact=PowerLaw(0.5 / R, 2.0, STEEL, STEEL),
                                  contact_model="mdr", du_z=1e-7)
-    sph = vf.Physical.from_bench(**BENCH, contact=Sphere(R, STEEL, STEEL),
+    sph = vf.from_bench(**BENCH, contact=Sphere(R, STEEL, STEEL),
                                  contact_model="mdr", du_z=1e-7)
     for k in ("k_xc", "k_zc", "u_z0", "profile_exponent"):
         assert getattr(law, k) == pytest.approx(getattr(sph, k), rel=1e-12), k
@@ -189,8 +189,8 @@ def test_from_bench_cone_and_power_law_mdr():
 
 def test_from_bench_flat_punch_mdr_is_the_linearised_flat_punch():
     flat = FlatPunch(1e-3, STEEL, STEEL)
-    mdr = vf.Physical.from_bench(**BENCH, contact=flat, contact_model="mdr", du_z=1e-7)
-    lin = vf.Physical.from_bench(**BENCH, contact=flat, du_z=1e-7)
+    mdr = vf.from_bench(**BENCH, contact=flat, contact_model="mdr", du_z=1e-7)
+    lin = vf.from_bench(**BENCH, contact=flat, du_z=1e-7)
     assert mdr == lin
 
 
@@ -200,8 +200,8 @@ def test_from_bench_file_takes_a_cone_and_the_contact_model(tmp_path):
                         "counterface": {"E": 210e9, "nu": 0.3}}}
     path = tmp_path / "bench.json"
     path.write_text(json.dumps(spec))
-    pin = vf.Physical.from_bench_file(path)
-    assert pin == vf.Physical.from_bench(**BENCH, du_z=1e-7, contact_model="mdr",
+    pin = vf.from_bench_file(path)
+    assert pin == vf.from_bench(**BENCH, du_z=1e-7, contact_model="mdr",
                                          contact=Cone(0.5, STEEL, STEEL))
 
 
@@ -237,7 +237,7 @@ def test_curved_refusals_elsewhere():
                        springs=20).is_curved  # the MDR history (tests/test_mdr_history.py)
     with pytest.raises(ValueError, match="initial"):
         vf.simulate(system, v_inertial=0.3, initial="rest")
-    pin = vf.Physical.from_bench(**BENCH, contact=Sphere(3e-3, STEEL, STEEL),
+    pin = vf.from_bench(**BENCH, contact=Sphere(3e-3, STEEL, STEEL),
                                  contact_model="mdr", du_z=1e-7)
     # the fit and the design take it now: a = du_z/d0, V in units of mu0 F(d0)/(m omega)
     point = pin.point_arguments(0.01, 1e-7, pin.omega)
@@ -257,7 +257,7 @@ def test_curved_refusals_elsewhere():
 def test_from_bench_mdr_refusals_name_the_parameter(kwargs, needle):
     base = dict(BENCH, contact=Sphere(3e-3, STEEL, STEEL), contact_model="mdr", du_z=1e-7)
     with pytest.raises(ValueError, match=needle):
-        vf.Physical.from_bench(**{**base, **kwargs})
+        vf.from_bench(**{**base, **kwargs})
 
 
 # --------------------------------------------------------------------------- sweep, CLI

@@ -162,13 +162,13 @@ def test_cli_mu_curved_with_a_x():
 
 
 def test_bench_and_sweep_carry_the_oscillation_to_a_curved_tip():
-    """`Physical.from_bench(..., contact_model="mdr", du_x=...)` and the sweep's a_x axis
+    """`vf.from_bench(..., contact_model="mdr", du_x=...)` and the sweep's a_x axis
     give the solver's values at the converted point."""
     import vibrofriction as vf
     from vibrofriction.contact import Material, Sphere
 
     steel = Material(E=210e9, nu=0.3)
-    pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
+    pin = vf.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
                                  drive_frequency_hz=1000, mu0=0.3, du_z=0.9e-6,
                                  contact=Sphere(3e-3, steel, steel), contact_model="mdr",
                                  du_x=2e-6, phase_x=1.0, inplane_on="holder")

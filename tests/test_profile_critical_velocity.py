@@ -139,7 +139,7 @@ def test_systems_expose_it():
             vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0,
                              **{name: 0.1}).critical_inertial_velocity()
     steel = Material(E=210e9, nu=0.3)
-    pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
+    pin = vf.from_bench(natural_frequency_hz=800, mass=0.2, normal_load=20,
                                  drive_frequency_hz=1000, mu0=0.3, du_z=0.9e-6,
                                  contact=Sphere(3e-3, steel, steel), contact_model="mdr")
     v0c = pin.critical_velocity()

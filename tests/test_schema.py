@@ -430,7 +430,7 @@ def test_optional_parameters_default_to_their_twin() -> None:
     assert d.zeta_y != d.zeta
     with pytest.raises(ValueError, match=re.escape("c_y must be finite and >= 0, got -1.0")):
         vf.Physical(**BASES["physical"], c_y=-1.0)
-    bench = vf.Physical.from_bench(natural_frequency_hz=1000.0, normal_load=1.0,
+    bench = vf.from_bench(natural_frequency_hz=1000.0, normal_load=1.0,
                                    drive_frequency_hz=2000.0, mu0=0.3, mass=0.01, k_zc=1e7,
                                    k_xc=1e7, du_z=1e-7, k_y=2e5, damping_ratio_y=0.05)
     assert bench.k_y == 2e5 and bench.c_y == pytest.approx(2 * 0.05 * math.sqrt(2e5 * 0.01))

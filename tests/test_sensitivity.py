@@ -22,6 +22,7 @@ import pytest
 
 from reference_points import REGIMES, random_points
 from vibrofriction import Dimensionless
+from vibrofriction.bench import from_bench
 from vibrofriction.solver import SolverSettings, solve_points
 from vibrofriction.solver.sensitivity import SENSITIVE, friction_gradient, solve_gradients
 
@@ -173,17 +174,16 @@ def test_friction_gradient_one_point():
 
 def _fit_problem():
     from vibrofriction.bench import synthetic_measurements
-    from vibrofriction.bench.fit_problem import _Problem
-    from vibrofriction.params import Physical
+    from vibrofriction.bench.fitting.problem import Problem
 
-    true = Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+    true = from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                                normal_load=20.0, k_zc=2e7, k_xc=1.5e7,
                                drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.3)
     data = synthetic_measurements(true, (0.3e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 8), 0.003,
                                   np.random.default_rng(5))
     guess = true.with_(mu0=0.33, mass=0.012, k_xc=1.8e7)
     free = ("mu0", "mass", "k_x", "k_xc", "u_z0")
-    problem = _Problem(guess, free, False, True, True, data)
+    problem = Problem(guess, free, False, True, True, data)
     return problem, np.array([math.log(getattr(guess, n)) for n in free])
 
 
@@ -211,7 +211,7 @@ def test_fit_jacobian_matches_differences_of_the_residuals():
 def test_fit_jacobian_falls_back_to_the_solver_where_there_is_no_sensitivity(monkeypatch):
     """Rows without a sensitivity (here: every other, made nan) are differenced through
     the solver, those rows only, and agree as well."""
-    import vibrofriction.bench.fit_problem as fp
+    import vibrofriction.bench.fitting.problem as fp
 
     real = fp.sensitivities
     calls = {"solved": 0}
@@ -247,17 +247,16 @@ def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
     interval's end moved from 0.00924 to 0.00946.  The local least squares follows the
     exact Jacobian by differences: the profile ends where the differences' ends."""
     from vibrofriction.bench import synthetic_measurements
-    from vibrofriction.bench.fit_problem import _bounds, _Problem
-    from vibrofriction.bench.fit_search import _least_squares, _ln
-    from vibrofriction.bench.fit_uncertainty import (
+    from vibrofriction.bench.fitting.problem import Problem, search_bounds
+    from vibrofriction.bench.fitting.search import least_squares, ln_of
+    from vibrofriction.bench.fitting.uncertainty import (
         PROFILE_LEVEL,
         _conditional_slope,
         _profile_side,
         _s2,
     )
-    from vibrofriction.params import Physical
 
-    true = Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
+    true = from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                                normal_load=20.0, k_zc=2e7, k_xc=1.5e7,
                                drive_frequency_hz=1000.0, du_z=0.5e-6, mu0=0.3)
     data = synthetic_measurements(true, (0.3e-6, 0.6e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 20),
@@ -269,10 +268,10 @@ def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
     start = np.log([0.3003, 0.01027, 2.617e5, 1.566e7, 9.93e-7])
     end = {}
     for kind in ("exact", "differences"):
-        problem = _Problem(guess, free, False, True, True, data, jacobian_kind=kind)
-        bounds = _bounds(problem, 10.0)
-        out = _least_squares(problem, start, bounds)
-        best = _ln(out, free)
+        problem = Problem(guess, free, False, True, True, data, jacobian_kind=kind)
+        bounds = search_bounds(problem, 10.0)
+        out = least_squares(problem, start, bounds)
+        best = ln_of(out, free)
         task = (problem, best, bounds, 1, -1.0, 2.2 * out.params["mass"].stderr,
                 _conditional_slope(out.covar, 1, 5), PROFILE_LEVEL * _s2(problem, out),
                 out.chisqr)

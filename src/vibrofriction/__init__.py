@@ -27,7 +27,8 @@ except PackageNotFoundError:  # pragma: no cover - running from a source tree no
     __version__ = "0+unknown"
 
 
-_BENCH = ("read_measurements", "fit", "design", "synthetic_measurements")
+_BENCH = ("read_measurements", "fit", "design", "synthetic_measurements", "from_bench",
+          "from_bench_file", "read_bench_file")
 
 
 def __getattr__(name: str):
@@ -60,7 +61,10 @@ __all__ = [
     "design",
     "fit",
     "friction_coefficient",
+    "from_bench",
+    "from_bench_file",
     "pin_damping",
+    "read_bench_file",
     "read_measurements",
     "simulate",
     "sweep",

@@ -1,5 +1,5 @@
 """``vibrofriction fit`` and ``vibrofriction design``: from the bench to the model and back
-(docs/bench.md).  The pin is described by a bench file (JSON, ``Physical.from_bench``)."""
+(docs/bench.md).  The pin is described by a bench file (JSON, ``vf.from_bench``)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,6 @@ import typer
 
 from ..contact import FlatPunch, Sphere
 from ..figures import plot_design, plot_fit
-from ..params import Physical, read_bench_file
 from ._app import app, friendly, parse_float
 
 
@@ -58,9 +57,9 @@ def fit_command(
     progress: Annotated[bool, typer.Option(help="progress bars on stderr")] = True,
 ) -> None:
     """Fit the model to measured friction curves (report, figure, JSON)."""
-    from ..bench import fit
+    from ..bench import fit, from_bench_file, read_bench_file
 
-    guess = Physical.from_bench_file(bench)
+    guess = from_bench_file(bench)
     # a curved (MDR) contact is fitted through its geometry (docs/bench.md, "Fit and design
     # with a curved contact"): the bench file's contact goes to the fit
     contact = read_bench_file(bench).get("contact") if guess.curved else None
@@ -122,9 +121,9 @@ def design_command(
     """The oscillation that minimises friction at v0 within the actuator's limits, or
     with --goal drive maximises the drive force (needs --du-x); the report's status line
     counts the untrusted points of the map."""
-    from ..bench import design
+    from ..bench import design, from_bench_file
 
-    pin = Physical.from_bench_file(bench)
+    pin = from_bench_file(bench)
     res = design(pin, v0=parse_float(v0, "v0"),
                  omega=_range(frequency_hz, "frequency_hz", 2.0 * math.pi),
                  du_z=_range(du_z, "du_z"),

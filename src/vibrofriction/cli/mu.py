@@ -118,7 +118,9 @@ def mu_command(
         if bench is not None:
             if any(v is not None for v in phys.values()):
                 raise ValueError("give either --bench or the SI flags")
-            physical = Physical.from_bench_file(bench)
+            from ..bench import from_bench_file
+
+            physical = from_bench_file(bench)
             if any(v > 0.0 for v in si_inplane.values()):
                 physical = physical.with_(**si_inplane, **inplane)
             if si_pin_y:

@@ -49,7 +49,7 @@ def snippet(state: State) -> str:
                 + ")")
     else:
         args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
-        make = f"system = vf.Physical.from_bench(\n    {args})"
+        make = f"system = vf.from_bench(\n    {args})"
     space = "geomspace" if state.log_x else "linspace"
     scale = " * system.mu0" if state.mode == "bench" else ""
     return "\n".join([

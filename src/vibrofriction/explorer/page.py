@@ -32,18 +32,17 @@ from .state import (
     PROFILE,
     PROFILES,
     VELOCITY,
-    Field,
     State,
     format_value,
     parse_number,
     profile_of,
 )
+from .texts import curved_side_text, point_text, readout_text, status_text, vbar_refusal
 from .views import CurveView, HistoryView, MapView, SpaceTimeView
+from .widgets import ERROR_STYLE, NOTE_STYLE, Input
 
 __all__ = ["Explorer", "app", "curved_side_text", "point_text", "readout_text", "status_text"]
 
-_ERROR_STYLE = {"color": "#b00020", "font-size": "12px", "margin": "0 10px"}
-_NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
 #: the profile selector's labels
 _PROFILE_LABELS = {"flat punch": "flat", "sphere": "sphere", "cone": "cone",
                    "power law": "power"}
@@ -52,67 +51,6 @@ _POWER_DEFAULT = 3.0
 #: the inputs disabled with a curved tip: the refused ones and what only they act on (the
 #: longitudinal oscillation a_x, phase_x and its mount stay: the MDR solver takes them)
 _MDR_DISABLED = (*MDR_REFUSED, "phase_y")
-
-
-class Input:
-    """A numeric input: a slider (logarithmic where the range spans decades), a box for
-    the exact value, and the inline message."""
-
-    def __init__(self, field: Field, value: float, on_change) -> None:
-        self.field = field
-        lo, hi = (math.log10(field.low), math.log10(field.high)) if field.log else \
-            (field.low, field.high)
-        self.slider = pn.widgets.FloatSlider(label=field.label, start=lo, end=hi,
-                                             step=(hi - lo) / 200, value=self._position(value),
-                                             show_value=False, width=190,
-                                             css_classes=[f"vf-slider-{field.name}"])
-        self.text = pn.widgets.TextInput(value=format_value(value), width=110,
-                                         css_classes=[f"vf-text-{field.name}"],
-                                         margin=(22, 5, 5, 5))
-        self.message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310,
-                                    css_classes=[f"vf-message-{field.name}"])
-        self._quiet = False
-        self._on_change = on_change
-        self.slider.param.watch(self._slid, "value")
-        self.text.param.watch(self._typed, "value")
-        self.layout = pn.Column(pn.Row(self.slider, self.text, margin=0), self.message,
-                                margin=0)
-
-    def _position(self, value: float) -> float:
-        f = self.field
-        if not math.isfinite(value):
-            return math.log10(f.high) if f.log else f.high
-        v = min(max(value, f.low), f.high)
-        return math.log10(max(v, 1e-300)) if f.log else v
-
-    def _slid(self, event) -> None:
-        if self._quiet:
-            return
-        value = 10.0 ** event.new if self.field.log else event.new
-        self.text.value = format_value(float(f"{value:.4g}"))
-
-    def _typed(self, event) -> None:
-        self._on_change()
-
-    def set(self, value: float) -> None:
-        """Show ``value`` (from the URL, the map or a bench file)."""
-        self.text.value = format_value(value)
-
-    def sync_slider(self, value: float) -> None:
-        self._quiet = True
-        try:
-            self.slider.value = self._position(value)
-        finally:
-            self._quiet = False
-
-    def show_message(self, text: str) -> None:
-        self.message.object = text
-        self.message.visible = bool(text)
-
-    def enable(self, on: bool) -> None:
-        """Enable or disable the slider and the box."""
-        self.slider.disabled = not on
-        self.text.disabled = not on
 
 
 class Explorer:
@@ -147,6 +85,14 @@ class Explorer:
 
     # ------------------------------------------------------------------ layout
     def _build(self) -> None:
+        self._build_controls()
+        self._build_views()
+        self._build_input_boxes()
+        self.layout = pn.Row(self._sidebar(), self._main(), sizing_mode="stretch_width")
+        self._show_mode()
+
+    def _build_controls(self) -> None:
+        """The inputs, the switches and the text panes of the sidebar."""
         s = self.state
         self.inputs = {f.name: Input(f, getattr(s, f.name), self._changed)
                        for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
@@ -154,20 +100,20 @@ class Explorer:
             options=_PROFILE_LABELS, value=profile_of(s.profile_exponent), width=330,
             label="profile", css_classes=["vf-profile"])
         self.profile.param.watch(self._profile_chosen, "value")
-        self.profile_note = pn.pane.HTML("", styles=_NOTE_STYLE, visible=False, width=310,
+        self.profile_note = pn.pane.HTML("", styles=NOTE_STYLE, visible=False, width=310,
                                          css_classes=["vf-profile-note"])
         self.mode = pn.widgets.RadioButtonGroup(
             options={"dimensionless (alpha, beta, a)": "dimensionless", "bench (SI)": "bench"},
             value=s.mode, color="primary", width=320)
         self.axis = pn.widgets.RadioButtonGroup(options={k: k for k in AXES}, value=s.axis,
                                                 width=200, label="velocity axis")
-        self.axis_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
+        self.axis_message = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
         self.log_x = pn.widgets.Checkbox(label="logarithmic velocity axis", value=s.log_x)
         self.inplane_on = pn.widgets.RadioButtonGroup(
             options={f"in-plane on the {v}": v for v in CHOICES["inplane_on"].values},
             value=s.inplane_on, width=320, label="inplane_on",
             css_classes=["vf-inplane-on"])
-        self.general = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False, width=310)
+        self.general = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
         for w in (self.mode, self.axis, self.log_x, self.inplane_on):
             w.param.watch(lambda e: self._changed(), "value")
         self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
@@ -177,6 +123,8 @@ class Explorer:
                                              css_classes=["vf-history"])
         self.case_text = pn.pane.Markdown("", width=330)
 
+    def _build_views(self) -> None:
+        """The curve, history, space-time and map views, their taps wired."""
         self.curve_view = CurveView()
         self.history_view = HistoryView()
         self.spacetime_view = SpaceTimeView()
@@ -186,6 +134,9 @@ class Explorer:
         self.map_view.figure.on_event(Tap, self._tapped_map)
         self.curve_pane = pn.pane.Bokeh(self.curve_view.figures["linear"],
                                         sizing_mode="stretch_width", min_height=400)
+
+    def _build_input_boxes(self) -> None:
+        """The dimensionless and the bench inputs, each in its box (one shown per mode)."""
         self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
                                  self.inplane_on,
                                  pn.pane.Markdown("**the tip** (profile z = c r^n)"),
@@ -199,9 +150,12 @@ class Explorer:
         self.bench_box.append(pn.pane.Markdown(
             "The bench inputs are the linearised contact (its stiffnesses at the load): a "
             "curved tip is chosen on the dimensionless inputs (in SI: "
-            "`Physical.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
-            "docs/contact_geometry.md).", width=330, styles=_NOTE_STYLE))
-        sidebar = pn.Column(
+            "`vf.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
+            "docs/contact_geometry.md).", width=330, styles=NOTE_STYLE))
+
+    def _sidebar(self):
+        """The sidebar: the mode, the inputs, the velocity axis and the curve's status."""
+        return pn.Column(
             pn.pane.Markdown("## vibrofriction explorer\nFriction under normal oscillations "
                              "(Mao, Popov, Starcevic, Popov 2017), by the exact solver."),
             self.mode, self.general, self.dim_box, self.bench_box,
@@ -210,7 +164,11 @@ class Explorer:
             pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.status,
             self.readout,
             self.case_text, width=350)
-        main = pn.Column(self.curve_pane,
+
+    def _main(self):
+        """The main column: the curve, the history and the map, the measurements and the
+        sharing tabs."""
+        return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
                                           self.history_view.path_figure,
                                           self.spacetime_view.figure, self.history_text,
@@ -219,14 +177,12 @@ class Explorer:
                          pn.Tabs(("Measurements & fit", self._measurements_panel()),
                                  ("Export & share", self._share_panel()), dynamic=False),
                          sizing_mode="stretch_width")
-        self.layout = pn.Row(sidebar, main, sizing_mode="stretch_width")
-        self._show_mode()
 
     def _measurements_panel(self):
         self.csv_input = pn.widgets.FileInput(accept=".csv", label="measurements",
                                               css_classes=["vf-csv"])
         self.csv_input.param.watch(self._csv_dropped, "value")
-        self.csv_message = pn.pane.HTML("", styles=_ERROR_STYLE, visible=False)
+        self.csv_message = pn.pane.HTML("", styles=ERROR_STYLE, visible=False)
         self.csv_info = pn.pane.Markdown("no measurements loaded", css_classes=["vf-csv-info"])
         self.free = pn.widgets.MultiChoice(label="free parameters of the fit",
                                            value=["mu0", "mass", "k_xc"],
@@ -314,7 +270,7 @@ class Explorer:
                     self._mdr_notes[name] = f"{name} reset from {box.value} to 0: {why}"
                     box.value = "0"
             if self.axis.value == "vbar":
-                self._mdr_notes["axis"] = f"axis set from vbar to V: {_vbar_refusal(probe)}"
+                self._mdr_notes["axis"] = f"axis set from vbar to V: {vbar_refusal(probe)}"
                 self.axis.value = "V"
         finally:
             self._adjusting = False
@@ -629,78 +585,6 @@ class Explorer:
             assert self.curve_state is not None  # set with the curve
             return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
         return io.BytesIO(exports.figure_bytes(self.curve, fmt))
-
-
-def _vbar_refusal(state: State) -> str:
-    """The library's message refusing the axis ``vbar`` for the state's curved tip."""
-    import vibrofriction as vf
-
-    try:
-        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=state.profile_exponent
-                         ).vbar_to_inertial(1.0)
-    except ValueError as exc:
-        return str(exc)
-    return "vbar is not available for this tip"
-
-
-def curved_side_text(curve: dict, state: State) -> str:
-    """The case and the curved tip's values beside the curve: the static value (none with
-    ``a_x > 0``: it is the limit without the in-plane oscillation), the mean normal force,
-    the critical velocity of continuous sliding (or the library's reason for none), and
-    why ``V = 0`` is left out where it is."""
-    static = (f"static value {curve['static']:.4g} (the smallest normal force over the "
-              "mean)" if math.isfinite(curve["static"]) else
-              "no static value (a curved tip's is that without the in-plane oscillation)"
-              if curve["a_x"] > 0 else "no static value (the curve starts at V < 0)")
-    crit = curve["critical"]
-    critical = (f"critical velocity ({state.axis}) {crit:.4g} (continuous sliding above "
-                "it: mu = mu0)" if math.isfinite(crit) else
-                f"no critical velocity: {curve['critical_note']}" if curve["critical_note"]
-                else "no finite critical velocity")
-    text = (f"**case {curve['case']}**: {curve['case_text']}\n\n"
-            f"**{curve['profile']}** (MDR): {static}; mean normal force "
-            f"<F_N>/F_N0 = {curve['mean_normal']:.5g}; {critical}")
-    if curve["rest_note"]:
-        text += f"\n\n**{curve['rest_note']}**"
-    return text
-
-
-def status_text(state: State) -> str:
-    """What is being computed, shown while the curve is under way."""
-    if state.curved:
-        return (f"computing {state.curve_points} points by the MDR solver "
-                f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
-                "a few tenths near the onset of sliding)...")
-    return f"computing {state.curve_points} points..."
-
-
-def point_text(curve: dict, i: int) -> str:
-    """The results of the curve's point ``i``: ``mu/mu0`` (or the COF), its status, the
-    mean normal force ``<F_N>/F_N0`` and the fractions of the contact disc in stick, slip
-    and out of contact over the period (the flat punch: its time fractions)."""
-    def value(name: str, fmt: str) -> str:
-        v = float(np.asarray(curve[name], dtype=float)[i])
-        return format(v, fmt) if math.isfinite(v) else "none"  # e.g. the static limit
-
-    trusted = bool(np.asarray(curve["trusted"])[i])
-    return (f"{curve['y_label']} = {value('y', '.6g')} ({curve['status'][i]}"
-            f"{'' if trusted else ', not trusted'}), <F_N>/F_N0 = "
-            f"{value('mean_normal_ratio', '.5g')}, contact over the period: stick "
-            f"{value('stick_area_fraction', '.3f')}, slip "
-            f"{value('slip_area_fraction', '.3f')}, out of contact "
-            f"{value('open_area_fraction', '.3f')}")
-
-
-def readout_text(curve: dict) -> str:
-    """The curve's summary: the mean over its trusted points only (an untrusted value is
-    no answer), how many of the points are trusted, and the time it took."""
-    y, ok = np.asarray(curve["y"], dtype=float), np.asarray(curve["trusted"], dtype=bool)
-    n_ok = int(np.count_nonzero(ok))
-    took = f"computed in {curve['seconds']:.2f} s"
-    if n_ok == 0:
-        return f"no trusted point of {y.size}: no mean; {took}"
-    return (f"mean {curve['y_label']} = {np.mean(y[ok]):.6f} over the {n_ok} trusted of "
-            f"{y.size} points; {took}")
 
 
 def app(state: State | None = None) -> pn.viewable.Viewable:

@@ -1,7 +1,7 @@
 """The explorer's state: the inputs as one value, its URL form and the system it describes.
 
 Every range check is the library's own: :meth:`State.system` builds a
-:class:`~vibrofriction.Dimensionless` or :meth:`~vibrofriction.Physical.from_bench`, and a
+:class:`~vibrofriction.Dimensionless` or :func:`~vibrofriction.bench.from_bench`, and a
 bad value is the ``ValueError`` they raise (docs/explorer.md).
 """
 
@@ -177,10 +177,10 @@ class State:
             return vf.Dimensionless(**{n: getattr(self, n) for n in
                                        parameter_names("dimensionless", optional=False)},
                                     inplane_on=self.inplane_on)
-        return vf.Physical.from_bench(**self.bench_arguments())
+        return vf.from_bench(**self.bench_arguments())
 
     def bench_arguments(self) -> dict[str, Any]:
-        """The keyword arguments of :meth:`Physical.from_bench` (the bench file's keys)."""
+        """The keyword arguments of :func:`vibrofriction.bench.from_bench` (bench file's keys)."""
         return dict(natural_frequency_hz=self.natural_frequency_hz, mass=self.mass,
                     quality_factor=self.quality_factor, normal_load=self.normal_load,
                     k_zc=self.k_zc, k_xc=self.k_xc,

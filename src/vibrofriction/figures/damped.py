@@ -21,7 +21,7 @@ import numpy as np
 from .. import theory
 from ..params import Dimensionless, Physical
 from . import style
-from .checks import damped_beta_series_checks, damped_case_iv_checks, damped_law_checks
+from .damped_checks import damped_beta_series_checks, damped_case_iv_checks, damped_law_checks
 from .dimensional import PIN, SYSTEMS, physical_system
 from .recipe import Recipe, Rendered, curve_table
 from .series import Curve, Series, series_at_vbar, series_of_physical

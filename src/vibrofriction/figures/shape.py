@@ -18,7 +18,7 @@ single spring), sphere (``n = 2``) and cone (``n = 1``).
   and, in the stiff system, the stiff law (:func:`theory.mu_ratio_stiff_profile`,
   :func:`theory.mu_ratio_stiff_flat`).
 * Fig. 18: the linearised against the full sphere on one bench
-  (``Physical.from_bench(..., contact=Sphere(...))`` with ``contact_model="linearised"``
+  (``vf.from_bench(..., contact=Sphere(...))`` with ``contact_model="linearised"``
   and ``"mdr"``): the COF against ``v0`` in m/s at three indentation amplitudes, and the
   relative difference.
 
@@ -279,7 +279,9 @@ def shape_dependence(quick: bool = False) -> Recipe:
 def bench_physical(du_z: float, contact_model: str) -> Physical:
     """Fig. 18's bench at the indentation amplitude ``du_z`` (m), ``"linearised"`` or
     ``"mdr"``."""
-    return Physical.from_bench(**BENCH, du_z=du_z, contact_model=contact_model)
+    from ..bench import from_bench
+
+    return from_bench(**BENCH, du_z=du_z, contact_model=contact_model)
 
 
 def _bench_v0(du_z: float, quick: bool) -> NDArray:

@@ -1,4 +1,4 @@
-"""The fit's result (:mod:`.fitting`): :class:`FitResult` (the report, saving and loading),
+"""The fit's result (:mod:`.procedure`): :class:`FitResult` (the report, saving and loading),
 and the verdict on a fit's chi-square."""
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from ..params import Physical
-from .fit_problem import _Problem, predict_cof
+from ...params import Physical
+from .problem import Problem, predict_cof
 
 __all__ = ["DOUBTFUL_P", "POOR_P", "FitResult"]
 
@@ -37,7 +37,7 @@ class FitResult:
     ``.correl``; a field that follows a free one by a constraint, e.g. ``k_x`` with
     ``mass``, is listed with its mapped interval); ``intervals``: the 95.4 %
     profile-likelihood interval of each (``-inf``/``inf`` for a side the data do not
-    close; the search range when the fit is poor; :mod:`.fitting`), ``stderr`` half its
+    close; the search range when the fit is poor; :mod:`.procedure`), ``stderr`` half its
     longer side; ``system``: the best-fit :class:`Physical`; ``quality``: ``"good"``,
     ``"doubtful"`` (``p_value`` below :data:`DOUBTFUL_P`: a second global stage found no
     lower minimum, the intervals are conditional on this one), ``"poor"`` (chi-square
@@ -252,9 +252,9 @@ def _json_default(x):
     raise TypeError(f"not serialisable: {type(x).__name__}")
 
 
-def _judge(problem: _Problem, chisqr: float, lower, penalised: int) -> tuple[str, float]:
-    """``(quality, p_value)`` of a fit (:mod:`.fitting`; :class:`FitResult`)."""
-    p_value = _p_value(problem, chisqr) if problem.weighted else math.nan
+def judge(problem: Problem, chisqr: float, lower, penalised: int) -> tuple[str, float]:
+    """``(quality, p_value)`` of a fit (:mod:`.procedure`; :class:`FitResult`)."""
+    p_value = chi_square_p(problem, chisqr) if problem.weighted else math.nan
     if lower is not None or penalised or (problem.weighted and p_value < POOR_P):
         return "poor", p_value
     if problem.weighted and p_value < DOUBTFUL_P:
@@ -262,7 +262,7 @@ def _judge(problem: _Problem, chisqr: float, lower, penalised: int) -> tuple[str
     return ("good" if problem.weighted else "unjudged"), p_value
 
 
-def _p_value(problem: _Problem, chisqr: float) -> float:
+def chi_square_p(problem: Problem, chisqr: float) -> float:
     """The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
     of freedom, if the model at the best fit were the truth and ``sigma`` right."""
     from scipy.stats import chi2

@@ -1,4 +1,4 @@
-"""The fit's problem (:mod:`.fitting`): the free parameters in ``ln`` and the constraints
+"""The fit's problem (:mod:`.procedure`): the free parameters in ``ln`` and the constraints
 that tie others to them, the residuals (with the penalty of a row the model cannot
 evaluate), and the model's COF at measured points (:func:`predict_cof`,
 :func:`synthetic_measurements`)."""
@@ -14,15 +14,15 @@ import numpy as np
 import pandas as pd
 from numpy.typing import ArrayLike, NDArray
 
-from ..contact import Cone, FlatPunch, Material, PowerLaw, Sphere
-from ..params import Physical
-from ..solver import SolverSettings, solve_points
-from ..solver.sensitivity import SENSITIVE, sensitivities
+from ...contact import Cone, FlatPunch, Material, PowerLaw, Sphere
+from ...params import Physical
+from ...solver import SolverSettings, solve_points
+from ...solver.sensitivity import SENSITIVE, sensitivities
 
 __all__ = ["CONTACT_FITTABLE", "FITTABLE", "predict_cof", "synthetic_measurements"]
 
 #: The step in ``ln`` of the central differences of the map ``ln -> points`` (cheap, no
-#: solver) in :meth:`_Problem.jacobian`, and of the solver's own where it has no sensitivity.
+#: solver) in :meth:`Problem.jacobian`, and of the solver's own where it has no sensitivity.
 MAP_STEP = 1e-6
 SOLVER_STEP = 1e-5
 #: The step in ``ln`` of the solver's central differences at a curved (MDR) row: its
@@ -63,7 +63,7 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
 def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
     """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape: an
     axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows
-    of several systems are concatenated, :meth:`_Problem.costs`)."""
+    of several systems are concatenated, :meth:`Problem.costs`)."""
     groups = list(system.point_arguments(*point))
     for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
         if groups[i] is None:
@@ -141,7 +141,7 @@ def contact_fields(contact: Contact, load: float, curved: bool,
                    ) -> dict[str, float]:
     """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
     ``radius`` and its pair's ``E*`` replaced where given (both moduli scaled together,
-    Poisson's ratios kept): as :meth:`Physical.from_bench` builds them, the MDR contact
+    Poisson's ratios kept): as :func:`~vibrofriction.bench.from_bench` builds them, the MDR contact
     (``curved``: the mean indentation ``d0`` with ``F(d0) = load``, ``k_zc = 2 E* a0``,
     ``k_xc = 2 G*_mdr a0``) or the linearised one (the tangent stiffnesses at the load,
     ``u_z0 = load/k_zc``)."""
@@ -173,7 +173,7 @@ def contact_exponents(contact: Contact, name: str, load: float, curved: bool
     return {k: math.log(b[k] / a[k]) / math.log(2.0) for k in CONTACT_FIELDS}
 
 
-def _check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
+def check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
     """ValueError, naming the parameters, for a fit of a contact geometry it cannot make:
     a contact parameter without ``contact``, the contact's fields next to its parameters,
     ``radius`` and ``E_star`` together (not identifiable: docs/bench.md), a curved guess's
@@ -215,12 +215,12 @@ def _check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ..
         shown = ", ".join(f"{k} {getattr(guess, k):.6g} (contact: {v:.6g})"
                           for k, v in off.items())
         raise ValueError(f"the guess was not built from this contact at its load "
-                         f"{guess.F_N0:.6g} N: {shown}; build it with Physical.from_bench("
+                         f"{guess.F_N0:.6g} N: {shown}; build it with vf.from_bench("
                          f"contact=..., contact_model={'mdr' if guess.curved else 'linearised'!r})")
 
 
 @dataclass
-class _Problem:
+class Problem:
     """The free parameters in ``ln`` and how they map onto a :class:`Physical`."""
 
     guess: Physical
@@ -463,7 +463,7 @@ class _Problem:
         return out
 
 
-    def coarse(self) -> _Problem:
+    def coarse(self) -> Problem:
         """The same problem on every other row of a table of at least
         :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square)."""
         if len(self.data) < COARSE_ROWS:
@@ -479,7 +479,7 @@ class _Problem:
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
     :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
-    :meth:`_Problem.costs`."""
+    :meth:`Problem.costs`."""
     *groups, inplane_on, settings = task
     out = solve_points(*groups, inplane_on=inplane_on, settings=settings)
     return out["mu_ratio"], out["trusted"]
@@ -498,7 +498,7 @@ def _in_domain(values: dict[str, float]) -> bool:
     return values["k_x"] + values["k_xc"] > values["k_x"]
 
 
-def _bounds(problem: _Problem, span: float) -> list[tuple[float, float]]:
+def search_bounds(problem: Problem, span: float) -> list[tuple[float, float]]:
     out = []
     for n in problem.free:
         x = math.log(problem.start(n)) if problem.start(n) > 0 else None
@@ -515,7 +515,7 @@ _CONSTRAINED = {"natural_frequency": ("mass", "k_x", "k_x = mass (2 pi f_n)^2"),
                 "normal_load": ("k_zc", "u_z0", "k_zc u_z0 = F_N0")}
 
 
-def _free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
+def free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
                    quality_factor: bool, points: int
                    ) -> tuple[tuple[str, ...], dict[str, tuple[str, float]]]:
     """``free`` validated (a field a constraint holds is refused, naming the keyword that

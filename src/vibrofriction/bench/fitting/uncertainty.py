@@ -1,4 +1,4 @@
-"""The fit's uncertainties (:mod:`.fitting`): profile-likelihood intervals (a lower
+"""The fit's uncertainties (:mod:`.procedure`): profile-likelihood intervals (a lower
 chi-square met on the way is fitted from), the parameters in physical units with their
 intervals and correlations, and what the data do not identify."""
 
@@ -10,8 +10,8 @@ import lmfit
 import numpy as np
 from numpy.typing import NDArray
 
-from .fit_problem import _Problem
-from .fit_search import _least_squares, _ln, _local_fit, _Stages
+from .problem import Problem
+from .search import Stages, least_squares, ln_of, local_fit
 
 #: Correlations beyond this in modulus are reported as a warning.
 STRONG_CORRELATION = 0.98
@@ -27,9 +27,9 @@ PROFILE_LEVEL = 4.0
 RESTART_PROFILES = 0.5
 
 
-def _uncertainties(problem: _Problem, out, minima, bounds, map_, stages: _Stages,
+def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: Stages,
                    progress: bool):
-    """The profile intervals about ``out`` (:mod:`.fitting`); a lower chi-square met on
+    """The profile intervals about ``out`` (:mod:`.procedure`); a lower chi-square met on
     the way is fitted from.  The fit, the minima, the distances of the interval ends and
     the lower point if the profiles met one again."""
     free = problem.free
@@ -38,27 +38,27 @@ def _uncertainties(problem: _Problem, out, minima, bounds, map_, stages: _Stages
                                                      progress)
     if lower is None:
         return out, minima, dists, None
-    old, old_best = out, _ln(out, free)
+    old, old_best = out, ln_of(out, free)
     with stages.timed("local") as row:
-        out, more, row["evaluations"] = _local_fit(problem, [lower[1]], bounds, map_)
+        out, more, row["evaluations"] = local_fit(problem, [lower[1]], bounds, map_)
     minima = sorted(minima + more, key=lambda r: r[0])
     if old.chisqr - out.chisqr <= RESTART_PROFILES * _s2(problem, out):
         # the old level set holds the new one: its intervals, re-centred
-        return out, minima, _recentre(dists, free, old_best, _ln(out, free)), None
+        return out, minima, _recentre(dists, free, old_best, ln_of(out, free)), None
     with stages.timed("profiles") as row:
         dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
                                                      progress)
     return out, minima, dists, lower
 
 
-def _profiles(problem: _Problem, out, minima, bounds, map_, progress: bool):
+def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
     """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
-    parameter from the best fit (:mod:`.fitting`), in parallel over parameters and
+    parameter from the best fit (:mod:`.procedure`), in parallel over parameters and
     sides, widened to reach the other local ``minima`` within the level; and the point
     of lowest chi-square a profile met, if lower than the fit's."""
     from tqdm.auto import tqdm
 
-    best = _ln(out, problem.free)
+    best = ln_of(out, problem.free)
     chi = float(out.chisqr)
     level = PROFILE_LEVEL * _s2(problem, out)
     covar = out.covar
@@ -88,7 +88,7 @@ def _recentre(dists, free: tuple[str, ...], old: NDArray, new: NDArray):
             for j, n in enumerate(free)}
 
 
-def _s2(problem: _Problem, out) -> float:
+def _s2(problem: Problem, out) -> float:
     """The scale ``s^2`` of the profile level: the reduced chi-square, at least 1 when
     the residuals are weighted by the measured ``sigma``."""
     return max(float(out.redchi), 1.0) if problem.weighted else float(out.redchi)
@@ -136,8 +136,8 @@ def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
         if len(best) == 1:
             chi, state["nfev"] = problem.cost(x), state["nfev"] + 1
         else:
-            out = _least_squares(problem, x, bounds, hold=j)
-            x, chi = _ln(out, problem.free), float(out.chisqr)
+            out = least_squares(problem, x, bounds, hold=j)
+            x, chi = ln_of(out, problem.free), float(out.chisqr)
             state["nfev"] += int(out.nfev)
         state["x"], state["d"] = x, d
         if chi < chi_best - 1e-6 * max(chi_best, 1.0) and (
@@ -159,7 +159,7 @@ def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
     return float(d), state["lower"], state["nfev"]
 
 
-def _physical_params(out, free: tuple[str, ...], values: dict[str, float],
+def physical_params(out, free: tuple[str, ...], values: dict[str, float],
                      tied: dict[str, tuple[str, float]],
                      dists: dict[str, tuple[float, float]]):
     """The fitted parameters in physical units (``values``: the system's fields and the
@@ -183,7 +183,7 @@ def _physical_params(out, free: tuple[str, ...], values: dict[str, float],
     return params, intervals
 
 
-def _profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
+def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
     """One sentence per side of an interval the data do not close within the search
     range, and one if the fit's minimum is still not the lowest found."""
     out = []
@@ -200,7 +200,7 @@ def _profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
     return out
 
 
-def _identifiability(out, problem: _Problem, ln: NDArray, bounds) -> list[str]:
+def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
     """One sentence per parameter the data do not identify: at a bound, in a flat direction
     of the Jacobian, strongly correlated with another; and one if the least-squares
     covariance is singular (no correlations)."""
@@ -232,9 +232,9 @@ def _identifiability(out, problem: _Problem, ln: NDArray, bounds) -> list[str]:
     return warnings
 
 
-def _jacobian(problem: _Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
+def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
     """Central differences of the residuals in ``ln`` (columns: free parameters); a
-    curved contact's are :meth:`_Problem.jacobian`'s (the MDR solver's value moves in
+    curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in
     steps of its error bar: a step of 1e-4 would difference those)."""
     if problem.curved:
         jac = problem.jacobian(ln)

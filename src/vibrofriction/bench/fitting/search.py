@@ -1,6 +1,6 @@
-"""The fit's search (:mod:`.fitting`): the global stage (differential evolution on ``ln``
+"""The fit's search (:mod:`.procedure`): the global stage (differential evolution on ``ln``
 of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
-second global stage when the first is not clearly good; where the time went (:class:`_Stages`)."""
+second global stage when the first is not clearly good; where the time went (:class:`Stages`)."""
 
 from __future__ import annotations
 
@@ -15,8 +15,8 @@ import lmfit
 import numpy as np
 from numpy.typing import NDArray
 
-from .fit_problem import MDR_STEP, _Problem
-from .fit_result import DOUBTFUL_P, _p_value
+from .problem import MDR_STEP, Problem
+from .result import DOUBTFUL_P, chi_square_p
 
 #: Local least-squares starts: the global stage's best point and its next best.
 STARTS = 4
@@ -30,13 +30,13 @@ LOCAL_BUDGET = 60
 #: (scipy's ``tol``); the generations after it only refine the best point, which the
 #: least squares that follow do anyway.
 CONVERGED = 0.02
-#: Tasks per process of a generation of the global stage (:meth:`_Problem.costs`): the
+#: Tasks per process of a generation of the global stage (:meth:`Problem.costs`): the
 #: cost of a point varies tenfold, so a few interleaved tasks each even the load out.
 CHUNKS = 4
 
 
 @dataclass
-class _Stages:
+class Stages:
     """Where the fit spent its time: a row per stage (name, seconds, model evaluations)."""
 
     rows: list[dict[str, Any]] = field(default_factory=list)
@@ -54,7 +54,7 @@ class _Stages:
         return sum(r["evaluations"] for r in self.rows)
 
 
-def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _Stages,
+def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: Stages,
             maxiter: int, popsize: int, seed: int, progress: bool, first: int):
     """The global stage, then least squares from its best distinct points, ``first`` of
     them before the others.  A first global stage whose first starts end not clearly
@@ -71,7 +71,7 @@ def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _S
     def polish(batch):
         nonlocal out, minima
         with stages.timed("local") as row:
-            found, more, row["evaluations"] = _local_fit(problem, batch, bounds, map_)
+            found, more, row["evaluations"] = local_fit(problem, batch, bounds, map_)
         minima = sorted(minima + more, key=lambda r: r[0])
         if out is None or found.chisqr < out.chisqr:
             out = found
@@ -97,11 +97,11 @@ def _search(problem: _Problem, bounds, x0: NDArray, de_workers, map_, stages: _S
     return out, minima
 
 
-def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
+def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
                   seed: int, workers, progress: bool, cores: int = 1):
     """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
     that includes the guess; ``workers``: 1 (in this process) or the pool's map over
-    ``cores`` processes, to which each generation goes at once (:meth:`_Problem.costs`:
+    ``cores`` processes, to which each generation goes at once (:meth:`Problem.costs`:
     one task per member would cost a pickled problem and a round trip each, and left
     the second core idle half the time)."""
     from scipy.optimize import differential_evolution
@@ -121,10 +121,10 @@ def _global_stage(problem: _Problem, bounds, x0: NDArray, maxiter: int, popsize:
             init="sobol", x0=x0, tol=CONVERGED, callback=lambda *a, **k: _tick(bar), **how)
 
 
-def _poor(problem: _Problem, chisqr: float) -> bool:
+def _poor(problem: Problem, chisqr: float) -> bool:
     """A weighted fit that is not clearly good: its chi-square has a probability below
     :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for)."""
-    return problem.weighted and _p_value(problem, chisqr) < DOUBTFUL_P
+    return problem.weighted and chi_square_p(problem, chisqr) < DOUBTFUL_P
 
 
 def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
@@ -139,11 +139,11 @@ def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
     return starts
 
 
-def _ln(out, free: tuple[str, ...]) -> NDArray[np.float64]:
+def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
     return np.array([out.params[n].value for n in free])
 
 
-def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = None):
+def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None):
     """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``;
     ``hold``: the index of a parameter kept at its value in ``x0`` (a profile)."""
     params = lmfit.Parameters()
@@ -173,7 +173,7 @@ def _least_squares(problem: _Problem, x0: NDArray, bounds, hold: int | None = No
 
     if problem.jacobian_kind == "differences":
         return differences(params, budget)
-    # the exact Jacobian (:meth:`_Problem.jacobian`); it counts as nvary evaluations of
+    # the exact Jacobian (:meth:`Problem.jacobian`); it counts as nvary evaluations of
     # the budget, as the differences it replaces did
     vary = np.array([i != hold for i in range(len(problem.free))])
     spent = {"jacobians": 0}
@@ -219,14 +219,14 @@ class _Fit:
 
 def _polish(task) -> _Fit:
     problem, x0, bounds = task
-    return _Fit.of(_least_squares(problem, x0, bounds))
+    return _Fit.of(least_squares(problem, x0, bounds))
 
 
-def _local_fit(problem: _Problem, starts: list[NDArray], bounds, map_):
+def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
     """Least squares from every start (in parallel): the lowest chi-square, the
     chi-squares and points reached from each start, and the count of model evaluations."""
     found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
-    minima = sorted(((r.chisqr, _ln(r, problem.free)) for r in found), key=lambda r: r[0])
+    minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
     return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
 
 

@@ -1,0 +1,146 @@
+"""The fit, from the guess to the result: the problem checked and built, the search, the
+uncertainties and the verdict, in that order (the package's docstring describes each)."""
+
+from __future__ import annotations
+
+import math
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from ...parallel import available_cores, mapper
+from ...params import Physical
+from ...solver import SolverSettings
+from ..measurements import read_measurements
+from .problem import (
+    CONTACT_FIELDS,
+    CONTACT_FITTABLE,
+    Contact,
+    Problem,
+    check_contact,
+    contact_exponents,
+    free_and_tied,
+    search_bounds,
+)
+from .result import FitResult, judge
+from .search import Stages, ln_of, local_fit, run_search
+from .uncertainty import estimate_uncertainties, identifiability, physical_params, profile_warnings
+
+#: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``:
+#: three times faster than the default 1e-5, and its error (``mu0 1e-4`` in the COF) is
+#: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
+CURVED_TOL = 1e-4
+#: The global stage's ``maxiter`` and ``popsize`` without them: a flat punch's, and a
+#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).
+GLOBAL_STAGE = (60, 12)
+CURVED_GLOBAL_STAGE = (20, 8)
+
+__all__ = ["CURVED_TOL", "fit"]
+
+
+def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tuple[str, ...] = (
+        "mu0", "mass", "k_xc", "u_z0"), *, natural_frequency: bool = True,
+        normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
+        global_stage: bool = True, maxiter: int | None = None, popsize: int | None = None,
+        seed: int = 0,
+        workers: int = 1, progress: bool = True,
+        settings: SolverSettings | None = None, jacobian: str = "exact",
+        contact: Contact | None = None) -> FitResult:
+    """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
+
+    ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
+    path).  ``natural_frequency``, ``normal_load``, ``quality_factor``: the constraints
+    (module docstring); a parameter in ``free`` that one of them would hold is refused,
+    naming the keyword that releases it.  ``span``: each free parameter is searched
+    within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``
+    (default :data:`GLOBAL_STAGE`, :data:`CURVED_GLOBAL_STAGE` for a curved contact),
+    ``seed``: the global stage (:func:`scipy.optimize.differential_evolution`, on every
+    other row of a table of 20 rows or more).  ``workers``: processes for the global
+    stage, the local starts and the profiles (``-1``: every core), from the package's one
+    pool (:mod:`vibrofriction.parallel`, forkserver workers that die with their parent):
+    a script that fits with ``workers != 1`` runs the fit under
+    ``if __name__ == "__main__":``.
+    ``jacobian``: the local least squares' Jacobian, ``"exact"`` (the sensitivities of
+    the steady state, :meth:`Problem.jacobian`; differences of the solver only at the
+    rows that have none) or ``"differences"`` (lmfit's differences of the residuals).
+    ``contact``: the geometry the guess was built from (``vf.from_bench(contact=...,
+    contact_model=...)``, checked): its ``radius`` and its pair's ``E_star``
+    (:data:`CONTACT_FITTABLE`) may then be free, one of them (module docstring, "A curved
+    contact"); ``k_zc``, ``k_xc``, ``u_z0`` follow them at the guess's load.  A curved
+    (MDR) guess is solved by the MDR solver (``tol_trusted`` :data:`CURVED_TOL` unless
+    ``settings`` say otherwise) and differenced (``jacobian="exact"`` takes the solver's
+    differences at every row).
+    ``res.extra["stages"]`` says where the time went; ``res.quality`` whether the fit
+    describes the data.
+    """
+    t0 = time.perf_counter()
+    data = read_measurements(data)
+    free, tied = free_and_tied(tuple(free), natural_frequency, normal_load, quality_factor,
+                                len(data))
+    check_contact(guess, contact, free)
+    if guess.curved and settings is None:
+        settings = SolverSettings(tol_trusted=CURVED_TOL)
+    stage = CURVED_GLOBAL_STAGE if guess.curved else GLOBAL_STAGE
+    maxiter = stage[0] if maxiter is None else maxiter
+    popsize = stage[1] if popsize is None else popsize
+    for n in free:
+        if n in CONTACT_FITTABLE:  # k_zc, k_xc, u_z0 follow it: ln y = p ln x + const
+            assert contact is not None  # a contact parameter without contact= is refused
+            for k, p in contact_exponents(contact, n, guess.F_N0, guess.curved).items():
+                if k in CONTACT_FIELDS and abs(p) > 1e-9:
+                    tied[k] = (n, p)
+    if jacobian not in ("exact", "differences"):
+        raise ValueError(f"jacobian must be 'exact' or 'differences', got {jacobian!r}")
+    problem = Problem(guess, free, natural_frequency, normal_load, quality_factor, data,
+                       settings, jacobian_kind=jacobian, contact=contact)
+    bounds = search_bounds(problem, span)
+    if "mu0" in free:
+        problem.mu0_max = math.exp(bounds[free.index("mu0")][1])
+    x0 = np.array([math.log(problem.start(n)) for n in free])
+    workers = workers if workers >= 1 else available_cores()
+    stages = Stages()
+    with mapper(workers) as map_:
+        if global_stage:
+            out, minima = run_search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
+                                  stages, maxiter, popsize, seed, progress, workers)
+        else:
+            with stages.timed("local") as row:
+                out, minima, row["evaluations"] = local_fit(problem, [x0], bounds, map_)
+        out, minima, dists, lower = estimate_uncertainties(problem, out, minima, bounds, map_,
+                                                   stages, progress)
+    res = _result(problem, out, bounds, tied, dists, lower)
+    res.nfev, res.seconds = stages.nfev, time.perf_counter() - t0
+    res.extra.update(local_minima=[float(m[0]) for m in minima], stages=stages.rows)
+    return res
+
+
+def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
+    """The :class:`FitResult` of the best fit ``out``: its verdict (a poor one widens the
+    intervals to the search range), parameters, intervals and warnings."""
+    free = problem.free
+    ln = ln_of(out, free)
+    _, outside, untrusted = problem.evaluate(ln)
+    penalised = {"untrusted": untrusted, "outside the model's domain": outside}
+    quality, p_value = judge(problem, float(out.chisqr), lower, outside + untrusted)
+    extra: dict[str, Any] = {}
+    system = problem.system(ln)
+    named = problem.named(ln)
+    result_params, intervals = physical_params(out, free, named, tied, dists)
+    extra["at_lowest_minimum"] = lower is None
+    if quality == "poor":
+        extra["profile_intervals"] = intervals
+        search = {n: (ln[j] - bounds[j][0], bounds[j][1] - ln[j]) for j, n in enumerate(free)}
+        result_params, intervals = physical_params(out, free, named, tied, search)
+    warnings = identifiability(out, problem, ln, bounds)
+    warnings += profile_warnings(free, dists, tied, lower)
+    return FitResult(params=result_params, system=system, data=problem.data, free=free,
+                     constraints={"natural_frequency": problem.natural_frequency,
+                                  "normal_load": problem.normal_load,
+                                  "quality_factor": problem.quality_factor},
+                     warnings=warnings, chisqr=float(out.chisqr), redchi=float(out.redchi),
+                     nfev=0, seconds=0.0, weighted=problem.weighted, guess=problem.guess,
+                     intervals=intervals, extra=extra, quality=quality, p_value=p_value,
+                     penalised=penalised)

@@ -1,0 +1,67 @@
+"""The one conversion: a system's :class:`Dimensionless` groups and the inertial velocity
+from whichever velocity was given."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from vibrofriction.validation import as_float_or_array
+
+from .dimensionless import Dimensionless
+from .fields import FloatOrArray, valid_array, valid_float
+from .physical import Physical
+
+# --------------------------------------------------------------------------- the one conversion
+System = Dimensionless | Physical
+
+
+def dimensionless(system: System) -> Dimensionless:
+    """The :class:`Dimensionless` groups of ``system`` (eq. 20; itself if it is one)."""
+    if isinstance(system, Physical):
+        return system.to_dimensionless()
+    if isinstance(system, Dimensionless):
+        return system
+    raise TypeError(f"system must be a Dimensionless or Physical, got {type(system).__name__}")
+
+
+#: Scalar types of a velocity that :func:`inertial_velocity` converts without numpy.
+_FLOATS = (float, np.float64)
+
+
+def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
+                      v_inertial: ArrayLike | None = None,
+                      v0: ArrayLike | None = None) -> FloatOrArray:
+    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6) from exactly one of
+    ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
+    :class:`Physical` system only), elementwise: the package's one decision of which
+    velocity was given.  ValueError naming the parameter where it is invalid (negative,
+    not finite) or undefined (``vbar`` in cases III and IV: :meth:`Dimensionless.
+    critical_inertial_velocity` is 0 or inf there).
+    """
+    # the common fast path; mypy sees no float in ArrayLike (only complex), hence the ignore
+    if type(v_inertial) is float and vbar is None and v0 is None:  # type: ignore[unreachable]
+        if not math.isfinite(v_inertial):  # type: ignore[unreachable]
+            valid_float("v_inertial", v_inertial)  # raises the schema's sentence
+        return v_inertial
+    if vbar.__class__ in _FLOATS and v_inertial is None and v0 is None \
+            and system.__class__ is Dimensionless and math.isfinite(vbar) and vbar >= 0.0:
+        return float(system._vbar_unit * vbar)  # = vbar_to_inertial's product, bit for bit
+    given = [name for name, v in (("vbar", vbar), ("v_inertial", v_inertial), ("v0", v0))
+             if v is not None]
+    if len(given) != 1:
+        raise ValueError("give exactly one velocity: vbar (v0/v0*), v_inertial "
+                         f"(v0 m omega/(mu0 F_N0)) or v0 (m/s); got "
+                         f"{' and '.join(given) or 'none'}")
+    if v0 is not None:
+        if not isinstance(system, Physical):
+            dimensionless(system)  # a TypeError for what is no system at all
+            raise ValueError("v0 (m/s) needs a Physical system; use vbar or v_inertial")
+        return system.v0_to_inertial(v0)
+    if vbar is not None:
+        return dimensionless(system).vbar_to_inertial(vbar)
+    dimensionless(system)
+    assert v_inertial is not None  # the one velocity given
+    return as_float_or_array(valid_array("v_inertial", v_inertial))
