@@ -14,7 +14,7 @@ import re
 import sys
 import textwrap
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, NoReturn
 
 from ._options import Opt, check_value, flag, plain
@@ -45,6 +45,16 @@ class Command:
     description: str
     options: tuple[Opt, ...]
     run: Callable[[Args], None]
+
+    def flags(self) -> set[str]:
+        """Every option string of the command (``--progress`` and ``--no-progress``)."""
+        out = set()
+        for o in self.options:
+            if not o.positional:
+                out.update(o.flags or (o.flag,))
+                if o.kind == "flag" and o.negatable:
+                    out.add("--no-" + o.flag[2:])
+        return out
 
 
 class Args:
@@ -229,6 +239,7 @@ class _OnOff(argparse.Action):
 def add_options(parser: argparse.ArgumentParser, options: Sequence[Opt]) -> None:
     """The table's rows as argparse arguments (every value is text until checked)."""
     for opt in options:
+        opt = replace(opt, help=opt.help.replace("%", "%%"))  # argparse formats with %
         if opt.positional:
             parser.add_argument(opt.name, metavar=opt.metavar or opt.name.upper(),
                                 help=opt.help)

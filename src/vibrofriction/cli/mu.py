@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ..schema import choice_names, parameter_names, parameters
 from ._app import Args, Command, exit_if_untrusted, json_number
@@ -20,7 +20,7 @@ from ._options import (
 
 if TYPE_CHECKING:
     from ..params import Dimensionless, Physical
-    from ..solver import FrictionResult, SolverSettings
+    from ..solver import FrictionResult, FrictionResults
 
 #: The SI set-up's parameters every physical set-up needs (no default, no twin).
 REQUIRED_SI = tuple(p.name for p in parameters("physical")
@@ -72,7 +72,7 @@ def run(a: Args) -> None:
         speeds = {n: None if a[n] is None else np.array(a[n]) for n in ("vbar", "v_inertial")}
         results = friction_coefficient(system, **speeds, initial=a["initial"],
                                        settings=settings)
-    rows = list(results)  # the velocities are 1-d arrays: FrictionResults
+    rows = list(cast("FrictionResults", results))  # the velocities are 1-d arrays
     _print(rows, physical, v0, a["as_json"])
     exit_if_untrusted([r.trusted for r in rows], settings.tol_trusted)
 
