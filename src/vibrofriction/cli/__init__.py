@@ -52,6 +52,9 @@ def run(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser()
     try:
+        if argv and argv[0].startswith("-") and argv[0] not in ("-h", "--help", "--version"):
+            raise UsageError(f"vibrofriction: unknown option {argv[0].partition('=')[0]} "
+                             "(see vibrofriction --help)")
         ns, extras = parser.parse_known_args(glue(argv, value_flags(COMMANDS)))
         if extras:
             prog = "vibrofriction" + (f" {ns.command}" if ns.command else "")

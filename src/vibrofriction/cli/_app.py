@@ -48,7 +48,7 @@ class Command:
 
     def flags(self) -> set[str]:
         """Every option string of the command (``--progress`` and ``--no-progress``)."""
-        out = set()
+        out: set[str] = set()
         for o in self.options:
             if not o.positional:
                 out.update(o.flags or (o.flag,))
@@ -185,6 +185,10 @@ def checked(namespace: argparse.Namespace, options: Sequence[Opt]) -> Args:
             given[opt.name] = [_convert(opt, t, given) for t in text]
         else:
             given[opt.name] = _convert(opt, text, given)
+    missing = [o.metavar if o.positional else o.flag for o in options
+               if (o.required or o.positional) and o.name not in given]
+    if missing:
+        raise UsageError("missing " + ", ".join(missing))
     known = {o.name for o in options}
     for opt in options:
         if opt.name in given and opt.requires:
@@ -219,9 +223,10 @@ class Parser(argparse.ArgumentParser):
 
     def error(self, message: str) -> NoReturn:
         message = message.replace("'", "")
-        unknown = re.match(r"unrecognized arguments: (.*)", message)
-        if unknown:
-            message = f"unknown option {unknown.group(1)}"
+        command = re.match(r"argument COMMAND: invalid choice: (\S+) \(choose from (.*)\)",
+                           message)
+        if command:
+            message = f"unknown command {command.group(1)} (one of {command.group(2)})"
         raise UsageError(f"{self.prog}: {message} (see {self.prog} --help)")
 
 
@@ -242,7 +247,7 @@ def add_options(parser: argparse.ArgumentParser, options: Sequence[Opt]) -> None
         opt = replace(opt, help=opt.help.replace("%", "%%"))  # argparse formats with %
         if opt.positional:
             parser.add_argument(opt.name, metavar=opt.metavar or opt.name.upper(),
-                                help=opt.help)
+                                nargs="?", help=opt.help)  # checked() says if missing
         elif opt.kind == "flag":
             strings = [opt.flag] + (["--no-" + opt.flag[2:]] if opt.negatable else [])
             on = " (on by default)" if opt.default else ""
@@ -253,7 +258,7 @@ def add_options(parser: argparse.ArgumentParser, options: Sequence[Opt]) -> None
             parser.add_argument(opt.flag, *opt.flags[1:], dest=opt.name, default=None,
                                 metavar=opt.metavar or "TEXT",
                                 action="append" if opt.repeat else "store",
-                                required=opt.required, help=opt.full_help())
+                                help=opt.full_help())  # checked() says if missing
 
 
 def value_flags(commands: Sequence[Command]) -> set[str]:

@@ -70,7 +70,7 @@ class Opt:
 
     def full_help(self) -> str:
         """The help text with what it needs and its default."""
-        parts = [self.help]
+        parts = [self.help + (" (required)" if self.required else "")]
         if self.requires:
             parts.append("needs " + " or ".join(flag(r) for r in self.requires))
         if self.default is not None and self.kind not in ("flag",):
