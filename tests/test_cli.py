@@ -105,18 +105,21 @@ def test_a_list_with_an_empty_item_is_refused(capsys, tmp_path, monkeypatch, arg
 
 
 @pytest.mark.parametrize(("args", "expect"), [
-    (("--alpha", "-1", "--beta", "2", "--amplitude", "0.5"), "--alpha must be > 0, got -1"),
-    (("--alpha", "nan", "--beta", "2", "--amplitude", "0.5"), "--alpha must be > 0, got nan"),
-    (("--alpha", "inf", "--beta", "2", "--amplitude", "0.5"), "--alpha must be > 0, got inf"),
+    (("--alpha", "-1", "--beta", "2", "--amplitude", "0.5"),
+     "--alpha must be finite and > 0, got -1"),
+    (("--alpha", "nan", "--beta", "2", "--amplitude", "0.5"),
+     "--alpha must be finite and > 0, got nan"),
+    (("--alpha", "inf", "--beta", "2", "--amplitude", "0.5"),
+     "--alpha must be finite and > 0, got inf"),
     (("--alpha", "0.5", "--beta", "0.25", "--amplitude", "0.5"),
      "--beta must be > --alpha (= 0.5) or inf, got 0.25"),
     (("--alpha", "0.5", "--beta", "2", "--amplitude", "-0.5"),
-     "--amplitude must be >= 0, got -0.5"),
-    ((*SYSTEM, "--eta-c", "-1"), "--eta-c (eta_c) must be >= 0, got -1"),
+     "--amplitude must be finite and >= 0, got -0.5"),
+    ((*SYSTEM, "--eta-c", "-1"), "--eta-c (eta_c) must be finite and >= 0, got -1"),
     ((*SYSTEM, "--profile-exponent", "0"),
-     "--profile-exponent (profile_exponent) must be > 0 or inf, got 0"),
+     "--profile-exponent (profile_exponent) must be > 0 (inf allowed), got 0"),
     ((*SYSTEM, "--phase-x", "inf", "--a-x", "1"), "--phase-x (phase_x) must be finite, got inf"),
-    ((*SYSTEM, "--max-periods", "0"), "--max-periods (max_periods) must be >= 1, got 0"),
+    ((*SYSTEM, "--max-periods", "0"), "--max-periods (max_periods) must be finite and >= 1, got 0"),
     ((*SYSTEM, "--max-periods", "1.5"), "--max-periods must be an integer, got 1.5"),
     ((*SYSTEM, "--inplane-on", "floor", "--a-x", "1"),
      "--inplane-on must be one of substrate, holder, got floor"),
@@ -130,11 +133,11 @@ def test_si_values_are_checked_against_the_schema(capsys):
     si = list(PHYS)
     si[si.index("--k-xc") + 1] = "-2e5"
     line = _one_line_exit_2(*_run(capsys, "mu", *si, "--v0", "0.01"))
-    assert line == "error: --k-xc (k_xc) must be > 0 or inf, got -200000"
+    assert line == "error: --k-xc (k_xc) must be > 0 (inf allowed), got -200000"
     si[si.index("--k-xc") + 1] = "inf"  # a rigid contact is allowed ...
     si[si.index("--mass") + 1] = "inf"  # ... an infinite mass is not
     line = _one_line_exit_2(*_run(capsys, "mu", *si, "--v0", "0.01"))
-    assert line == "error: --mass must be > 0, got inf"
+    assert line == "error: --mass must be finite and > 0, got inf"
 
 
 @pytest.mark.parametrize("args", [
@@ -268,7 +271,7 @@ def test_help_shows_numeric_metavars_units_and_ranges(capsys):
         assert " ".join(p.long_name.split()) in text, p.name
     for unit in ("[kg]", "[N/m]", "[rad/s]", "[m]", "[N s/m]", "[rad]", "[m/s]"):
         assert unit in text, unit
-    assert "allowed > alpha or inf" in text and "allowed >= 0" in text
+    assert "> alpha or inf" in text and "finite and >= 0" in text and "math." not in text
     code, out, _ = _run(capsys, "sweep", "--help")
     assert code == 0 and "--alpha FLOAT[,FLOAT...]" in out and "start:stop:num[:log]" in out
 
@@ -285,29 +288,30 @@ def test_help_is_wrapped_at_whole_words_at_the_terminals_width():
             assert {w.rstrip(";") for w in p.long_name.split()} <= words, p.name
     wide = out.stdout.splitlines()
     amp = next(line for line in wide if line.strip().startswith("--amplitude"))
-    assert "du_z / u_z0 (> 1: jumping); allowed >= 0" in amp  # one line when it fits
+    assert "du_z / u_z0 (> 1: jumping); finite and >= 0" in amp  # one line when it fits
 
 
 # --------------------------------------------------------------------------- imports
+def _python(code: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=300)
+
+
 def test_help_imports_no_solver_and_no_figures():
-    code = ("import sys; from vibrofriction.cli import run; assert run(['--help']) == 0; "
-            "assert run(['mu', '--help']) == 0; assert run(['sweep', '--help']) == 0; "
-            "heavy = ('numba', 'numpy', 'scipy', 'matplotlib', 'vibrofriction.figures', "
-            "'vibrofriction.solver', 'typer', 'rich'); "
-            "print(sorted(m for m in heavy if m in sys.modules), file=sys.stderr)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=120)
+    out = _python("import sys; from vibrofriction.cli import run; assert run(['--help']) == 0; "
+                  "assert run(['mu', '--help']) == 0; assert run(['sweep', '--help']) == 0; "
+                  "heavy = ('numba', 'numpy', 'scipy', 'matplotlib', 'vibrofriction.figures', "
+                  "'vibrofriction.solver', 'typer', 'rich'); "
+                  "print(sorted(m for m in heavy if m in sys.modules), file=sys.stderr)")
     assert out.returncode == 0 and out.stderr.strip() == "[]", out.stderr
 
 
 def test_import_vibrofriction_is_lazy_and_complete():
-    code = ("import sys, vibrofriction as vf; assert 'numba' not in sys.modules; "
-            "names = [n for n in vf.__all__ if n != 'sweep']; "
-            "assert all(getattr(vf, n) is not None for n in names); "
-            "from vibrofriction import Dimensionless, friction_coefficient; "
-            "print(friction_coefficient(Dimensionless(0.5, 2.0, 0.5), vbar=1.2).mu_ratio)")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         timeout=300)
+    out = _python("import sys, vibrofriction as vf; assert 'numba' not in sys.modules; "
+                  "names = [n for n in vf.__all__ if n != 'sweep']; "
+                  "assert all(getattr(vf, n) is not None for n in names); "
+                  "from vibrofriction import Dimensionless, friction_coefficient; "
+                  "print(friction_coefficient(Dimensionless(0.5, 2.0, 0.5), vbar=1.2).mu_ratio)")
     assert out.returncode == 0 and float(out.stdout) == 1.0, out.stderr
 
 

@@ -108,17 +108,9 @@ def unit_words(unit: str) -> str:
 
 
 def range_words(rng: Range) -> str:
-    """The allowed values in words: ``> 0``, ``>= 0 or inf``, ``> alpha or inf``."""
-    if rng.above:
-        return f"> {rng.above} or inf"
-    lo, hi = rng.minimum, rng.maximum
-    if lo is not None and hi is not None:
-        text = f"in {'(' if rng.strict else '['}{lo:g}, {hi:g}]"
-    elif lo is not None:
-        text = f"{'>' if rng.strict else '>='} {lo:g}"
-    else:
-        return "any number" if rng.allow_inf else "finite"
-    return f"{text} or inf" if rng.allow_inf else text
+    """The allowed values in the schema's words, with ``inf`` for ``math.inf``:
+    ``finite and > 0``, ``> 0 (inf allowed)``, ``> alpha or inf``."""
+    return rng.text().replace("math.inf", "inf")
 
 
 def check_value(opt_flag: str, rng: Range, value: float,
@@ -154,7 +146,7 @@ def parameter_option(name: str, kind: str = "float", note: str = "",
     range, default (or twin) and equation; ``note`` is what the command adds."""
     p = PARAMETER[name]
     unit = unit_words(p.unit)
-    words = [p.long_name + (f" [{unit}]" if unit else ""), "allowed " + range_words(p.range)]
+    words = [p.long_name + (f" [{unit}]" if unit else ""), range_words(p.range)]
     if p.twin:
         words.append(f"default: {flag(p.twin)}")
     if note:
