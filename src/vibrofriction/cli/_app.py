@@ -243,7 +243,12 @@ class _OnOff(argparse.Action):
 
 def add_options(parser: argparse.ArgumentParser, options: Sequence[Opt]) -> None:
     """The table's rows as argparse arguments (every value is text until checked)."""
+    groups: dict[str, Any] = {"": parser}
     for opt in options:
+        if opt.group not in groups:
+            groups[opt.group] = parser.add_argument_group(opt.group)
+    for opt in options:
+        parser = groups[opt.group]
         opt = replace(opt, help=opt.help.replace("%", "%%"))  # argparse formats with %
         if opt.positional:
             parser.add_argument(opt.name, metavar=opt.metavar or opt.name.upper(),

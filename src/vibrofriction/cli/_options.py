@@ -53,6 +53,7 @@ class Opt:
     flags: tuple[str, ...] = field(default=())
     range: Range | None = None  # the allowed values of an option that is no parameter
     required: bool = False
+    group: str = ""  # the heading it is listed under in --help ("" : options)
 
     @property
     def allowed(self) -> Range | None:
@@ -136,6 +137,12 @@ def check_value(opt_flag: str, rng: Range, value: float,
         raise ValueError(f"{opt_flag}{named} must be {allowed}, got {value:g}")
 
 
+#: The headings of the schema's models in ``--help``.
+GROUPS = {"dimensionless": "the dimensionless system (and both kinds)",
+          "physical": "a physical set-up (SI units)",
+          "velocity": "the sliding velocity"}
+
+
 def _equation(eq: str) -> str:
     return f"eq. {eq}" if eq.startswith("(") else eq
 
@@ -156,14 +163,15 @@ def parameter_option(name: str, kind: str = "float", note: str = "",
     metavar = {"float": FLOAT, "list": FLOATS, "axis": FLOATS}[kind]
     return Opt(name, "; ".join(words), kind=kind, metavar=metavar,
                default=None if p.default is None else p.default, requires=requires,
-               parameter=p)
+               parameter=p, group=GROUPS[p.model])
 
 
 def choice_option(name: str, requires: tuple[str, ...] = ()) -> Opt:
     """The option of the schema's choice ``name`` (``inplane_on``)."""
     c = CHOICES[name]
     return Opt(name, c.long_name, kind="choice", choices=c.values, default=c.default,
-               metavar="{" + ",".join(c.values) + "}", requires=requires)
+               metavar="{" + ",".join(c.values) + "}", requires=requires,
+               group=GROUPS[c.model])
 
 
 def with_(opt: Opt, **changes: Any) -> Opt:

@@ -9,6 +9,7 @@ from ..schema import choice_names, parameter_names, parameters
 from ._app import Args, Command, exit_if_untrusted, json_number
 from ._options import (
     FLOAT,
+    GROUPS,
     INITIAL,
     MAX_PERIODS,
     TOL_TRUSTED,
@@ -35,9 +36,10 @@ OPTIONS: tuple[Opt, ...] = (
                                   "oscillation",
                     "v0": "a physical set-up's velocity"}),
     Opt("quality_factor", "the pin's quality factor Q from an impact test (a physical "
-        "set-up, instead of --c-x)", metavar=FLOAT, range=Range(0.0, strict=True)),
+        "set-up, instead of --c-x)", metavar=FLOAT, range=Range(0.0, strict=True),
+        group=GROUPS["physical"]),
     Opt("bench", "physical set-up from a bench file (JSON, docs/bench.md), with --v0",
-        kind="text", metavar="FILE"),
+        kind="text", metavar="FILE", group=GROUPS["physical"]),
     INITIAL, MAX_PERIODS, TOL_TRUSTED,
     Opt("as_json", "one JSON object per point: every field of the result (and, for a "
         "physical set-up, v0 in m/s, mu and the SI parameters)", kind="flag",
