@@ -310,6 +310,8 @@ def test_import_vibrofriction_is_lazy_and_complete():
     out = _python("import sys, vibrofriction as vf; assert 'numba' not in sys.modules; "
                   "names = [n for n in vf.__all__ if n != 'sweep']; "
                   "assert all(getattr(vf, n) is not None for n in names); "
+                  "assert vf.theory.__name__ == 'vibrofriction.theory' and not "
+                  "hasattr(vf, 'no_such_name'); "
                   "from vibrofriction import Dimensionless, friction_coefficient; "
                   "print(friction_coefficient(Dimensionless(0.5, 2.0, 0.5), vbar=1.2).mu_ratio)")
     assert out.returncode == 0 and float(out.stdout) == 1.0, out.stderr

@@ -24,10 +24,11 @@ if TYPE_CHECKING:
 
     __version__: str
 
-# Every name is imported on first use (PEP 562), so that ``import vibrofriction`` -- and
-# the command line's ``vibrofriction --help`` -- does not pay for numba, scipy and the
-# kernels; ``vibrofriction.sweep`` (a callable module) pulls in xarray, zarr and Dask and
-# the bench lmfit, pandas and xarray, likewise only when used.
+# Every name -- and every submodule, ``vf.solver``, ``vf.theory`` -- is imported on first
+# use (PEP 562), so that ``import vibrofriction`` -- and the command line's
+# ``vibrofriction --help`` -- does not pay for numba, scipy and the kernels;
+# ``vibrofriction.sweep`` (a callable module) pulls in xarray, zarr and Dask and the bench
+# lmfit, pandas and xarray, likewise only when used.
 _WHERE = {
     **dict.fromkeys(("Case", "Dimensionless", "Physical", "classify", "pin_damping"),
                     ".params"),
@@ -51,12 +52,17 @@ def _version() -> str:
 def __getattr__(name: str) -> Any:
     import importlib
 
-    if name == "sweep":
-        return importlib.import_module(".sweep", __name__)
     if name == "__version__":
         value: Any = _version()
     elif name in _WHERE:
         value = getattr(importlib.import_module(_WHERE[name], __name__), name)
+    elif not name.startswith("__"):  # a subpackage or module: vf.solver, vf.theory, vf.sweep
+        try:
+            return importlib.import_module("." + name, __name__)
+        except ModuleNotFoundError as err:
+            if err.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
     else:
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
     globals()[name] = value  # once: the next look-up is a plain attribute
