@@ -1,6 +1,7 @@
 """The command line: made from the schema, one-line errors, SI output, lazy imports."""
 
 import json
+import math
 import re
 import subprocess
 import sys
@@ -321,3 +322,29 @@ def test_python_dash_m_vibrofriction_runs_the_command_line():
     out = subprocess.run([sys.executable, "-m", "vibrofriction", "--version"],
                          capture_output=True, text=True, timeout=120)
     assert out.returncode == 0 and out.stdout == f"vibrofriction {vf.__version__}\n"
+
+
+@pytest.mark.parametrize(("argv", "given"), [
+    (["explore", "--no-show", "--port", "8080"], {"port": 8080, "show": False}),
+    (["reproduce", "--quick", "--only", "fig04", "--only", "fig05", "--no-progress",
+      "--workers", "2"], {"quick": True, "workers": 2, "progress": False,
+                          "only": ["fig04", "fig05"]}),
+    (["plot", "a.zarr", "--sel", "beta=2", "--sel", "alpha=1", "--out", "x.png"],
+     {"store": "a.zarr", "out": "x.png", "sel": ["beta=2", "alpha=1"]}),
+    (["fit", "d.csv", "--bench", "b.json", "--no-natural-frequency", "--workers", "-1"],
+     {"data": "d.csv", "bench": "b.json", "natural_frequency": False, "workers": -1}),
+    (["sweep", "--alpha", "0.1", "--beta", "2", "--amplitude", "0.5", "--vbar", "0.5,",
+      "--out", "o.zarr", "--continuation", "--chunk-size", "100"],
+     {"out": "o.zarr", "alpha": "0.1", "beta": "2", "amplitude": "0.5", "vbar": "0.5,",
+      "chunk_size": 100, "continuation": True}),
+    (["mu", "--alpha=0.5", "--beta", "inf", "--amplitude", "0.5", "--v-inertial", "-1e-3,2"],
+     {"alpha": 0.5, "beta": math.inf, "amplitude": 0.5, "v_inertial": [-1e-3, 2.0]}),
+])
+def test_each_command_parses_its_options(argv, given):
+    """Repeatable options, on/off flags, negative numbers as values (parsed, not run)."""
+    from vibrofriction.cli import build_parser, glue, value_flags
+    from vibrofriction.cli._app import checked
+
+    ns = build_parser().parse_args(glue(argv, value_flags(COMMANDS)))
+    assert ns.command == argv[0]
+    assert checked(ns, _command(argv[0]).options).given == given
