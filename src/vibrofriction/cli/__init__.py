@@ -17,9 +17,9 @@ from ._app import (
     USAGE_EXIT,
     Command,
     Exit,
+    Formatter,
     Parser,
     UsageError,
-    _Formatter,
     add_options,
     checked,
     glue,
@@ -37,12 +37,12 @@ DESCRIPTION = ("Friction under normal oscillations (Mao, Popov, Starcevic, Popov
 def build_parser() -> Parser:
     """The argparse parser of every command (text values, checked by :func:`run`)."""
     parser = Parser(prog="vibrofriction", description=DESCRIPTION, allow_abbrev=False,
-                    formatter_class=_Formatter)
+                    formatter_class=Formatter)
     parser.add_argument("--version", action="store_true", help="print the version and exit")
     subs = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     for command in COMMANDS:
         sub = subs.add_parser(command.name, help=command.help, description=command.description,
-                              allow_abbrev=False, formatter_class=_Formatter)
+                              allow_abbrev=False, formatter_class=Formatter)
         add_options(sub, command.options)
     return parser
 

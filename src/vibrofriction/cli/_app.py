@@ -200,7 +200,7 @@ def checked(namespace: argparse.Namespace, options: Sequence[Opt]) -> Args:
 
 
 # --------------------------------------------------------------------------- parsers
-class _Formatter(argparse.HelpFormatter):
+class Formatter(argparse.HelpFormatter):
     """Whole words wrapped at the terminal's width; paragraphs of a description kept."""
 
     def __init__(self, prog: str) -> None:
@@ -288,11 +288,6 @@ def glue(argv: Sequence[str], flags: set[str]) -> list[str]:
     return out
 
 
-def fail(message: str) -> NoReturn:
-    """One line on stderr and exit 2."""
-    raise UsageError(message)
-
-
-__all__ = ["Args", "Command", "Exit", "Parser", "UsageError", "add_options", "checked",
-           "exit_if_untrusted", "fail", "glue", "json_number", "one_line", "parse_float",
-           "parse_list", "plain", "value_flags"]
+__all__ = ["UNTRUSTED_EXIT", "USAGE_EXIT", "Args", "Command", "Exit", "Formatter", "Parser",
+           "UsageError", "add_options", "check_axis", "checked", "exit_if_untrusted", "glue",
+           "json_number", "one_line", "parse_float", "parse_list", "plain", "value_flags"]

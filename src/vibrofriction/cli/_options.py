@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 from ..schema import CHOICES, PARAMETER, PARAMETERS, Parameter, Range
@@ -50,10 +50,14 @@ class Opt:
     positional: bool = False
     repeat: bool = False  # may be given more than once (a list of the values)
     negatable: bool = True  # a flag with a --no- form
-    flags: tuple[str, ...] = field(default=())
+    flags: tuple[str, ...] = ()  # the option strings, when not the one made from name
     range: Range | None = None  # the allowed values of an option that is no parameter
     required: bool = False
     group: str = ""  # the heading it is listed under in --help ("" : options)
+
+    def __post_init__(self) -> None:
+        if self.kind not in KINDS:
+            raise ValueError(f"option {self.name}: kind must be one of {', '.join(KINDS)}")
 
     @property
     def allowed(self) -> Range | None:
@@ -177,10 +181,6 @@ def choice_option(name: str, requires: tuple[str, ...] = ()) -> Opt:
 def with_(opt: Opt, **changes: Any) -> Opt:
     """A copy of a row with some fields changed."""
     return replace(opt, **changes)
-
-
-def names(options: Iterable[Opt]) -> list[str]:
-    return [o.name for o in options]
 
 
 def by_name(options: Sequence[Opt]) -> dict[str, Opt]:
