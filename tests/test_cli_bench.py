@@ -112,10 +112,8 @@ def test_fit_from_the_command_line_refuses_a_parameter_a_constraint_holds(bench_
 def test_fit_command_passes_a_curved_contact_to_the_fit(tmp_path, monkeypatch, contact, free):
     """A bench file with a curved MDR contact: the fit gets that contact (its geometry is
     what is fitted, docs/bench.md) and, without --free, a free list it can fit."""
-    from typer.testing import CliRunner
-
     import vibrofriction.bench as bench
-    from vibrofriction.cli import app
+    from vibrofriction.cli import run
     from vibrofriction.contact import Cone, Sphere
 
     steel = {"E": 210e9, "nu": 0.3}
@@ -134,8 +132,8 @@ def test_fit_command_passes_a_curved_contact_to_the_fit(tmp_path, monkeypatch, c
         raise Stop
 
     monkeypatch.setattr(bench, "fit", fake_fit)
-    run = CliRunner().invoke(app, ["fit", "data.csv", "--bench", str(path)])
-    assert isinstance(run.exception, Stop), run.output
+    with pytest.raises(Stop):
+        run(["fit", "data.csv", "--bench", str(path)])
     assert seen["free"] == free and seen["guess"].curved
     kind = Sphere if contact["type"] == "sphere" else Cone
     assert isinstance(seen["contact"], kind)

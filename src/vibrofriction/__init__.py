@@ -4,45 +4,84 @@ Implements and extends X. Mao, V. L. Popov, J. Starcevic, M. Popov, "Reduction o
 friction by normal oscillations. II. In-plane system dynamics", Friction (2017).
 """
 
-from importlib.metadata import PackageNotFoundError, version
+from typing import TYPE_CHECKING, Any
 
-from .params import Case, Dimensionless, Physical, classify, pin_damping
-from .solver import (
-    CurvedHistory,
-    Event,
-    FrictionResult,
-    FrictionResults,
-    History,
-    PlaneHistory,
-    SectionState,
-    SolverSettings,
-    Status,
-    friction_coefficient,
-    simulate,
-)
+if TYPE_CHECKING:
+    from . import sweep
+    from .bench import (
+        design,
+        fit,
+        from_bench,
+        from_bench_file,
+        read_bench_file,
+        read_measurements,
+        synthetic_measurements,
+    )
+    from .params import Case, Dimensionless, Physical, classify, pin_damping
+    from .solver import (
+        CurvedHistory,
+        Event,
+        FrictionResult,
+        FrictionResults,
+        History,
+        PlaneHistory,
+        SectionState,
+        SolverSettings,
+        Status,
+        friction_coefficient,
+        simulate,
+    )
 
-try:  # the one place the version is written is pyproject.toml
-    __version__ = version("vibrofriction")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree not installed
-    __version__ = "0+unknown"
+    __version__: str
+
+# Every name -- and every submodule, ``vf.solver``, ``vf.theory`` -- is imported on first
+# use (PEP 562), so that ``import vibrofriction`` -- and the command line's
+# ``vibrofriction --help`` -- does not pay for numba, scipy and the kernels;
+# ``vibrofriction.sweep`` (a callable module) pulls in xarray, zarr and Dask and the bench
+# lmfit, pandas and xarray, likewise only when used.
+_WHERE = {
+    **dict.fromkeys(("Case", "Dimensionless", "Physical", "classify", "pin_damping"),
+                    ".params"),
+    **dict.fromkeys(("CurvedHistory", "Event", "FrictionResult", "FrictionResults", "History",
+                     "PlaneHistory", "SectionState", "SolverSettings", "Status",
+                     "friction_coefficient", "simulate"), ".solver"),
+    **dict.fromkeys(("read_measurements", "fit", "design", "synthetic_measurements",
+                     "from_bench", "from_bench_file", "read_bench_file"), ".bench"),
+}
 
 
-_BENCH = ("read_measurements", "fit", "design", "synthetic_measurements", "from_bench",
-          "from_bench_file", "read_bench_file")
+def _version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:  # the one place the version is written is pyproject.toml
+        return version("vibrofriction")
+    except PackageNotFoundError:  # pragma: no cover - a source tree not installed
+        return "0+unknown"
 
 
-def __getattr__(name: str):
-    # ``vibrofriction.sweep`` (a callable module) is imported on first use: it pulls in
-    # xarray, zarr and Dask, which a plain ``import vibrofriction`` should not pay for
-    if name == "sweep":
-        import importlib
+def __getattr__(name: str) -> Any:
+    import importlib
 
-        return importlib.import_module(".sweep", __name__)
-    if name in _BENCH:  # lmfit, pandas and xarray, likewise on first use
-        from . import bench
+    if name == "__version__":
+        value: Any = _version()
+    elif name in _WHERE:
+        value = getattr(importlib.import_module(_WHERE[name], __name__), name)
+    elif not name.startswith("__"):  # a subpackage or module: vf.solver, vf.theory, vf.sweep
+        try:
+            return importlib.import_module("." + name, __name__)
+        except ModuleNotFoundError as err:
+            if err.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+    else:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    globals()[name] = value  # once: the next look-up is a plain attribute
+    return value
 
-        return getattr(bench, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+def __dir__() -> list[str]:
+    return sorted({*globals(), *__all__})
+
 
 __all__ = [
     "Case",

@@ -2,19 +2,21 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
-from ._app import app
+from ._app import Args, Command
+from ._options import INT, Opt
 
 
-@app.command("explore")
-def explore_command(
-    port: Annotated[int, typer.Option(help="port of the local server (127.0.0.1)")] = 5006,
-    show: Annotated[bool, typer.Option(help="open the browser")] = True,
-) -> None:
-    """Explore friction curves, time histories and the cases in the browser."""
+def run(a: Args) -> None:
+    """Serve the explorer (panel is imported here)."""
     from ..explorer import serve
 
-    serve(port=port, show=show)
+    serve(port=a["port"], show=a["show"])
+
+
+COMMAND = Command(
+    "explore", "explore friction curves in the browser",
+    "Explore friction curves, time histories and the cases in the browser.",
+    (Opt("port", "port of the local server (127.0.0.1)", kind="int", default=5006,
+         metavar=INT),
+     Opt("show", "open the browser", kind="flag", default=True)),
+    run)
