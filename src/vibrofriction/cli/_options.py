@@ -5,8 +5,9 @@ flag, metavar, help text (long name, unit, allowed range, default, equation) and
 come from its :class:`~vibrofriction.schema.Parameter`; the model's choices
 (:data:`~vibrofriction.schema.CHOICES`) likewise.  The options that are not parameters
 of the model (``--out``, ``--workers``, ...) are rows of the same :class:`Opt` table,
-written by hand in the command modules.  Standard library and the schema only: this
-module is imported for ``vibrofriction --help``.
+written by hand in the command modules; what each solver does not take is said from
+:mod:`vibrofriction.capabilities`.  Standard library, the schema and the capabilities
+only: this module is imported for ``vibrofriction --help``.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from typing import Any
 
+from ..capabilities import CAPABILITIES, refused_by
 from ..schema import CHOICES, PARAMETER, PARAMETERS, Parameter, Range
 
 FLOAT = "FLOAT"
@@ -162,6 +164,7 @@ def parameter_option(name: str, kind: str = "float", note: str = "",
         words.append(f"default: {flag(p.twin)}")
     if note:
         words.append(note)
+    words += [f"not taken by {c.title} ({c.takes})" for c in refused_by(name)]
     if p.equation:
         words.append(_equation(p.equation))
     metavar = {"float": FLOAT, "list": FLOATS, "axis": FLOATS}[kind]
@@ -219,6 +222,9 @@ def model_options(kinds: dict[str, str], notes: dict[str, str] | None = None,
 INITIAL = Opt("initial", "initial state", kind="choice", choices=("sliding", "rest"),
               default="sliding", metavar="{sliding,rest}")
 MAX_PERIODS = Opt("max_periods", "give up after this many drive periods (default: each "
-                  "solver's own)", kind="int", default=None, metavar=INT, range=Range(1.0))
+                  "solver's own: " + ", ".join(
+                      f"{c.settings['max_periods']:,} for {c.title}"
+                      for c in CAPABILITIES.values() if "max_periods" in c.settings) + ")",
+                  kind="int", default=None, metavar=INT, range=Range(1.0))
 TOL_TRUSTED = Opt("tol_trusted", "largest error estimate of a trusted point (the others "
                   "give exit code 3)", default=1e-5, metavar=FLOAT, range=Range(0.0, strict=True))

@@ -6,7 +6,7 @@ import math
 import re
 from collections.abc import Mapping
 
-from vibrofriction.solver.methods import Refusal
+from vibrofriction.capabilities import Refusal
 
 from .state import FIELDS, MDR_REFUSED, State, parse_number
 

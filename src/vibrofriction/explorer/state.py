@@ -16,8 +16,8 @@ from typing import Any
 import numpy as np
 
 import vibrofriction as vf
+from vibrofriction.capabilities import CAPABILITIES
 from vibrofriction.schema import CHOICES, PARAMETER, parameter_names
-from vibrofriction.solver.methods import METHODS
 from vibrofriction.validation import checked, checked_choice
 
 __all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "MDR_POINTS", "MDR_REFUSED", "PROFILE",
@@ -82,8 +82,7 @@ PROFILE = _model_field("profile_exponent", 0.25, 20.0,
 #: with the library's refusal shown next to them (docs/explorer.md); it takes the
 #: longitudinal in-plane oscillation ``a_x`` at ``V != 0`` (not at ``V = 0``:
 #: :meth:`State.velocities` leaves that point out)
-MDR_REFUSED = tuple(lim.parameter for lim in METHODS["mdr"].capabilities.limits
-                    if lim.whole)
+MDR_REFUSED = tuple(lim.parameter for lim in CAPABILITIES["mdr"].limits if lim.whole)
 #: the most points of a curve of a curved tip (the MDR solver: ~30 ms a point, up to a few
 #: tenths of a second near the onset of sliding)
 MDR_POINTS = 40

@@ -18,13 +18,16 @@ import numpy as np
 from .._kernels.codes import FLIGHT, SLIP_POS, STICK
 from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
+from ..capabilities import CAPABILITIES
 
 __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
 SUBSTEPS = 1024  # the scan's floor of sub-steps a period (docs: grazing events)
-MAX_PERIODS = 4000  # a row's default budget (SolverSettings.max_periods)
-STATE_TOL = 1e-11  # a row's default tol_state (SolverSettings.tol_state)
+# a row's default budget and tolerance: the MDR solver's declared defaults of
+# SolverSettings.max_periods and tol_state
+MAX_PERIODS = int(CAPABILITIES["mdr"].settings["max_periods"])
+STATE_TOL = float(CAPABILITIES["mdr"].settings["tol_state"])
 AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
 ACCELERATED_PERIODS = 200  # then plain iteration

@@ -8,7 +8,7 @@ import json
 import numpy as np
 import xarray as xr
 
-from ..solver.methods import METHODS
+from ..capabilities import CAPABILITIES
 from ._grid import DIMENSIONLESS, DIRECTIONS, Plan
 from ._variables import COORD_ATTRS, point_variables, row_variables
 
@@ -37,8 +37,8 @@ def _attrs(plan: Plan) -> dict:
         "continuation": int(plan.continuation),
         "solver_settings": json.dumps(s, sort_keys=True),
         # what each solver ran with: the settings resolved with its own defaults
-        "solver_methods": json.dumps({name: plan.settings.resolved(m.capabilities.settings)
-                                      for name, m in METHODS.items()}, sort_keys=True),
+        "solver_methods": json.dumps({name: plan.settings.resolved(c.settings)
+                                      for name, c in CAPABILITIES.items()}, sort_keys=True),
     }
     # a setting left at None is each solver's own default (solver_methods)
     attrs.update({f"solver_{k}": "default" if v is None else v for k, v in s.items()})

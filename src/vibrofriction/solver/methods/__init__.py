@@ -1,10 +1,12 @@
 """The solvers behind :func:`~vibrofriction.solver.solve_points`, one module each.
 
 Each method (:mod:`.event`, :mod:`.plane`, :mod:`.mdr`) implements the protocol of
-:mod:`.base`: its declared :class:`~.base.Capabilities` and ``solve``.  :func:`choose` is
+:mod:`.base`: its :class:`~vibrofriction.capabilities.Capabilities` (declared in
+:mod:`vibrofriction.capabilities`) and ``solve``.  :func:`choose` is
 the one rule that picks the method of a point; :data:`METHODS` lists them by name, in the
 order of :data:`vibrofriction.schema.METHOD_NAMES`.  A new solver is one new module here,
-one entry in :data:`METHODS` and one branch of :func:`choose`.
+its declaration in :mod:`vibrofriction.capabilities`, one entry in :data:`METHODS`
+and one branch of :func:`choose`.
 """
 
 from __future__ import annotations
@@ -14,8 +16,9 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ...capabilities import INITIAL_KINDS, Capabilities, Limit, Refusal, capability_table
 from ...schema import METHOD_NAMES
-from .base import INITIAL_KINDS, Capabilities, Limit, Method, Refusal
+from .base import Method
 from .event import EVENT
 from .mdr import MDR
 from .plane import PLANE
@@ -42,33 +45,3 @@ def method_of(profile_exponent: float, a_y: float) -> Method:
     if profile_exponent != math.inf:
         return MDR
     return PLANE if a_y > 0.0 else EVENT
-
-
-def capability_table() -> str:
-    """What each solver covers, as a Markdown table (docs/solver.md includes it)."""
-    caps = [m.capabilities for m in METHODS.values()]
-    rows = [
-        ("chosen for", [c.takes for c in caps]),
-        ("parameters used", [", ".join(f"`{p}`" for p in c.parameters) for c in caps]),
-        ("refuses", ["; ".join(f"{lim.what} (`{lim.parameter}`)" for lim in c.limits)
-                     or "nothing" for c in caps]),
-        ("velocities", [c.velocities for c in caps]),
-        ("initial states", [", ".join(c.initial) for c in caps]),
-        ("settings honoured (default)",
-         [", ".join(f"`{k}` ({v:,})" if isinstance(v, int) else f"`{k}` ({v:g})"
-                    for k, v in c.settings.items()) + ", `tol_trusted`"
-          for c in caps]),
-        ("outputs (the rest nan)", [_outputs(c) for c in caps]),
-        ("sensitivities", ["yes" if c.sensitivities else "no" for c in caps]),
-        ("time histories", ["yes" if c.histories else "no" for c in caps]),
-    ]
-    head = "| | " + " | ".join(f"{c.title} (`{c.name}`)" for c in caps) + " |\n"
-    head += "|---" * (len(caps) + 1) + "|\n"
-    return head + "".join(f"| {k} | " + " | ".join(v) + " |\n" for k, v in rows)
-
-
-def _outputs(c: Capabilities) -> str:
-    """The outputs of ``c``, or those of every method less the ones it leaves out."""
-    every = {n for m in METHODS.values() for n in m.capabilities.outputs}
-    missing = sorted(every - set(c.outputs))
-    return "all" if not missing else "all but " + ", ".join(f"`{n}`" for n in missing)

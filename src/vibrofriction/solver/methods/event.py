@@ -15,10 +15,11 @@ from numpy.typing import NDArray
 from ... import theory
 from ..._kernels import codes
 from ..._kernels.steady import steady_state_many
+from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable
 from ..settings import SolverSettings
-from .base import INITIAL_KINDS, Capabilities, new_outputs
+from .base import new_outputs
 
 __all__ = ["EVENT", "HELD_STICK", "contact_columns", "event_arguments"]
 
@@ -31,34 +32,12 @@ _O_STICK, _O_SLIP, _O_REVERSE, _O_FLIGHT = (column_index(k) for k in (
     "stick_fraction", "slip_fraction", "reverse_slip_fraction", "flight_fraction"))
 _O_NORMAL, _O_STICK_AREA, _O_SLIP_AREA, _O_OPEN_AREA = (column_index(k) for k in (
     "mean_normal_ratio", "stick_area_fraction", "slip_area_fraction", "open_area_fraction"))
-_ALL_FLOAT = ("mu_ratio", "error", "work", "stick_fraction", "slip_fraction",
-              "reverse_slip_fraction", "flight_fraction", "multiplier", "settling_periods",
-              "window_min", "window_max", "drift_rate", "lateral_ratio", "mean_normal_ratio",
-              "stick_area_fraction", "slip_area_fraction", "open_area_fraction", "y", "x_dot",
-              "f", "e")
 
 
 class EventMethod:
     """The 1-D event-driven solver (:data:`EVENT`)."""
 
-    capabilities = Capabilities(
-        name="event",
-        title="the 1-D event-driven solver",
-        takes="a flat punch, profile_exponent = inf, without a transverse oscillation, a_y = 0",
-        parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x",
-                    "v_inertial", "inplane_on"),
-        limits=(),
-        initial=INITIAL_KINDS,
-        settings={"max_periods": 20000, "min_periods": 64, "tol_state": 1e-10,
-                  "tol_mean": 1e-7, "max_events": 20_000_000},
-        outputs=(*_ALL_FLOAT, "status", "period", "periods", "events", "phase",
-                 "degenerate"),
-        sensitivities=True,
-        histories=True,
-        velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit (eq. 2), "
-                   "or with a_x > 0 integrated from rest (HELD where the contact can "
-                   "stick through whole cycles)",
-    )
+    capabilities = CAPABILITIES["event"]
 
     def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
               settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:

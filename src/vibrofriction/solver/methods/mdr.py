@@ -15,11 +15,12 @@ from numpy.typing import NDArray
 
 from ... import theory
 from ..._kernels import codes
+from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
-from ..mdr import MAX_PERIODS, STATE_TOL, mdr_friction
+from ..mdr import mdr_friction
 from ..points import PointTable
 from ..settings import SolverSettings
-from .base import Capabilities, Limit, new_outputs
+from .base import new_outputs
 
 __all__ = ["MDR"]
 
@@ -32,34 +33,7 @@ _MDR_STATUS = {"periodic": Status.PERIODIC, "averaged": Status.AVERAGED,
 class MdrMethod:
     """The MDR solver of curved tips (:data:`MDR`)."""
 
-    capabilities = Capabilities(
-        name="mdr",
-        title="the MDR solver",
-        takes="a curved tip, profile_exponent finite",
-        parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x",
-                    "profile_exponent", "v_inertial", "inplane_on"),
-        limits=(
-            Limit("beta", "a rigid contact (beta = inf)", lambda p: np.isinf(p["beta"])),
-            Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
-                  whole=True),
-            Limit("a_y", "a transverse in-plane oscillation (a_y > 0)",
-                  lambda p: p["a_y"] > 0.0, whole=True),
-            Limit("a_x", "a longitudinal in-plane oscillation at v_inertial = 0 (springs "
-                  "that stick through whole cycles keep the elongation of the start, so "
-                  "the steady state depends on it; give a velocity != 0)",
-                  lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
-        ),
-        initial=("sliding",),
-        settings={"max_periods": MAX_PERIODS, "tol_state": STATE_TOL},
-        outputs=("mu_ratio", "error", "status", "period", "periods", "events",
-                 "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
-                 "slip_area_fraction", "open_area_fraction", "phase"),
-        sensitivities=False,
-        histories=True,
-        velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
-                   "tip (theory.profile_static_mu_ratio)",
-        notes=("tol_trusted is also the error the row of springs is refined to",),
-    )
+    capabilities = CAPABILITIES["mdr"]
 
     def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
               settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:

@@ -13,10 +13,11 @@ from numpy.typing import NDArray
 from ... import theory
 from ..._kernels import codes
 from ..._kernels.plane import plane_steady_state_many
+from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable
 from ..settings import SolverSettings
-from .base import INITIAL_KINDS, Capabilities, Limit, new_outputs
+from .base import new_outputs
 from .event import HELD_STICK, contact_columns
 
 __all__ = ["PLANE", "plane_arguments", "plane_held"]
@@ -27,31 +28,7 @@ _CODE = METHOD_NAMES.index("plane")
 class PlaneMethod:
     """The 2-D solver (:data:`PLANE`)."""
 
-    capabilities = Capabilities(
-        name="plane",
-        title="the 2-D solver",
-        takes="a flat punch, profile_exponent = inf, with a transverse oscillation, a_y > 0",
-        parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x", "a_y",
-                    "phase_y", "alpha_y", "zeta_y", "v_inertial", "inplane_on"),
-        limits=(
-            Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
-                  lambda p: np.isinf(p["beta"])),
-            Limit("amplitude", "grazing (amplitude = 1) with eta_c = 0",
-                  lambda p: (p["amplitude"] == 1.0) & (p["eta_c"] == 0.0)),
-        ),
-        initial=INITIAL_KINDS,
-        settings={"max_periods": 20000, "max_events_per_period": 10_000, "rtol": 1e-10},
-        outputs=("mu_ratio", "error", "work", "stick_fraction", "slip_fraction",
-                 "reverse_slip_fraction", "flight_fraction", "multiplier",
-                 "settling_periods", "window_min", "window_max", "drift_rate",
-                 "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
-                 "slip_area_fraction", "open_area_fraction", "y", "x_dot", "f", "e",
-                 "status", "period", "periods", "events", "phase", "degenerate"),
-        sensitivities=False,
-        histories=True,
-        velocities="every V: V < 0 by the mirror x -> -x; V = 0 by plain iteration of the "
-                   "period map (HELD where a stuck contact can hold a region of mean forces)",
-    )
+    capabilities = CAPABILITIES["plane"]
 
     def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
               settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
