@@ -29,9 +29,12 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",
+    "sphinx.ext.viewcode",  # [source] links: the highlighted module source on the site
+    "sphinx.ext.intersphinx",
     "sphinx.ext.mathjax",
     "sphinx-mathjax-offline",  # MathJax 3 copied into _static: no network when viewed
     "sphinx_gallery.gen_gallery",
+    "sphinx_copybutton",
 ]
 
 # --- sources ---------------------------------------------------------------------------
@@ -57,14 +60,42 @@ autosummary_generate = True
 autosummary_imported_members = True
 autodoc_default_options = {"members": True, "show-inheritance": True,
                            "member-order": "bysource"}
-autodoc_typehints = "description"
+# one clean signature per object: the types are in each docstring's numpydoc sections, so
+# the signature shows none; "none" is also what hides the @overload variants (autodoc
+# prints one signature per overload otherwise: friction_coefficient had four) and keeps
+# ArrayLike from being expanded into numpy's _NestedSequence[_SupportsArray[...]]
+autodoc_typehints = "none"
 autodoc_typehints_format = "short"
+autodoc_type_aliases = {"ArrayLike": "ArrayLike"}
 autodoc_class_signature = "mixed"
 autodoc_preserve_defaults = True
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 napoleon_use_ivar = True
 napoleon_use_rtype = False
+
+# --- links into numpy, scipy, xarray, pandas, matplotlib and Python ----------------------
+# offline: each inventory is a small file in the repository (docs/_inventories/, written by
+# docs/make_inventories.py) listing only the objects these docs name, with their real
+# addresses on each project's site; nothing is downloaded at build time
+INVENTORIES = DOCS / "_inventories"
+intersphinx_mapping = {
+    name: (url, str(INVENTORIES / f"{name}.inv"))
+    for name, url in {
+        "python": "https://docs.python.org/3/",
+        "numpy": "https://numpy.org/doc/stable/",
+        "scipy": "https://docs.scipy.org/doc/scipy/",
+        "xarray": "https://docs.xarray.dev/en/stable/",
+        "pandas": "https://pandas.pydata.org/docs/",
+        "matplotlib": "https://matplotlib.org/stable/",
+    }.items()
+}
+intersphinx_timeout = 1
+
+# the copy button copies the code of a doctest without its >>> and ... prompts or output
+copybutton_prompt_text = r">>> |\.\.\. |\$ "
+copybutton_prompt_is_regexp = True
+copybutton_only_copy_prompt_lines = True
 
 # --- gallery: examples/ run at build time --------------------------------------------
 sphinx_gallery_conf = {

@@ -49,7 +49,8 @@ __all__ = ["Cone", "FlatPunch", "Material", "PowerLaw", "Sphere", "effective_mod
 @dataclass(frozen=True)
 class Material:
     """Young's modulus ``E`` (Pa; ``math.inf`` for a rigid body) and Poisson's ratio
-    ``nu`` (``-1 < nu < 0.5``)."""
+    ``nu`` (``-1 < nu < 0.5``).
+    """
 
     E: float
     nu: float
@@ -87,7 +88,8 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
 def mdr_shear_modulus(a: Material, b: Material) -> float:
     """``G*`` of the MDR springs (Pa): ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e.
     ``4 *`` :func:`effective_shear_modulus`; the fully stuck contact of radius ``a`` has
-    the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``, Mindlin)."""
+    the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``, Mindlin).
+    """
     return 4.0 * effective_shear_modulus(a, b)
 
 
@@ -142,7 +144,8 @@ class _MDR:
 
     def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
         """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m; 0 for
-        ``d <= 0``."""
+        ``d <= 0``.
+        """
         d = checked("indentation", indentation)
         dp = np.maximum(d, 0.0)
         return as_float_or_array((dp / (self.kappa * self.coefficient)) ** (1.0 / self.exponent))
@@ -156,7 +159,8 @@ class _MDR:
 
     def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
         """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m: the inverse of
-        :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``."""
+        :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``.
+        """
         F = checked("normal_load", normal_load, minimum=0.0)
         n = self.exponent
         base = F * (n + 1.0) / (2.0 * n * self.e_star)
@@ -197,7 +201,8 @@ class _Circular(_MDR):
 @dataclass(frozen=True)
 class FlatPunch(_Circular):
     """A flat circular pin end of radius ``radius`` (m) on the counterface: the contact
-    radius is the punch's at any load."""
+    radius is the punch's at any load.
+    """
 
     def contact_radius(self, normal_load: float) -> float:
         checked("normal_load", normal_load, minimum=0.0, strict=True)
@@ -269,7 +274,8 @@ class _Loaded(_MDR):
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
         """``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
-        normal stiffness and the fully stuck tangential one)."""
+        normal stiffness and the fully stuck tangential one).
+        """
         a = self.contact_radius(normal_load)
         return 2.0 * self.e_star * a, 2.0 * self.g_star * a
 
@@ -300,7 +306,8 @@ class PowerLaw(_Loaded):
 class Cone(_Loaded):
     """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis): the power
     law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
-    ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`."""
+    ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`.
+    """
 
     slope: float
     pin: Material

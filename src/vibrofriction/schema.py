@@ -160,7 +160,8 @@ INT_COLUMNS: tuple[str, ...] = _columns("int")
 
 def column_index(name: str) -> int:
     """The index of ``name`` in its kernel output row (:data:`FLOAT_COLUMNS` or
-    :data:`INT_COLUMNS`)."""
+    :data:`INT_COLUMNS`).
+    """
     col = FIELD[name].column
     if col is None:
         raise KeyError(f"{name!r} is not a kernel column")
@@ -169,7 +170,8 @@ def column_index(name: str) -> int:
 
 class Status(enum.Enum):
     """How a steady-state result was obtained: ``.value`` its name, ``.code`` the kernels'
-    code, ``.ok`` whether it is converged, ``.message`` what it means for humans."""
+    code, ``.ok`` whether it is converged, ``.message`` what it means for humans.
+    """
 
     code: int
     ok: bool
@@ -260,7 +262,8 @@ class Range:
     def text(self, above_value: float | None = None) -> str:
         """The range in words, as the validator's errors say it: ``"finite and > 0"``,
         ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with ``above_value``, the
-        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``)."""
+        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``).
+        """
         if self.above:
             value = "" if above_value is None else f" (= {above_value!r})"
             return f"> {self.above}{value} or math.inf"
@@ -457,5 +460,6 @@ def parameters(model: str) -> tuple[Parameter, ...]:
 
 def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
     """The names of :func:`parameters` of ``model``; ``optional=False`` leaves out the
-    optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``)."""
+    optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``).
+    """
     return tuple(p.name for p in parameters(model) if optional or not p.twin)

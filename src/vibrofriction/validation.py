@@ -63,7 +63,8 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
 def _checked_above(name: str, value: ArrayLike, other: str,
                    other_value: ArrayLike) -> NDArray[np.float64]:
     """``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
-    allowed; ``nan`` never), elementwise."""
+    allowed; ``nan`` never), elementwise.
+    """
     low = np.asarray(other_value, dtype=float)
     arr = _floats(name, value)
     with np.errstate(invalid="ignore"):
@@ -121,7 +122,8 @@ def validated(values: Mapping[str, ArrayLike], *,
 
 def checked_choice(name: str, value: object) -> str:
     """``value`` if it is one of the allowed names of the choice ``name``
-    (:data:`~vibrofriction.schema.CHOICES`), else ValueError naming both."""
+    (:data:`~vibrofriction.schema.CHOICES`), else ValueError naming both.
+    """
     allowed = CHOICES[name].values
     if not (isinstance(value, str) and value in allowed):
         raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}, "

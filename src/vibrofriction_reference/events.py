@@ -345,7 +345,8 @@ class _ViscousPhaseODE:
 
     def entry_phase(self, t, z):
         """The phase of a contact state at ``t`` (start): stick if ``|F| < n``, else slip
-        along ``F``; on the edge ``|F| = n``, stick if ``|F|`` falls below ``n`` in stick."""
+        along ``F``; on the edge ``|F| = n``, stick if ``|F|`` falls below ``n`` in stick.
+        """
         z = z.copy()
         n = self.n(t)
         F = self.k * z[2] + self.c * z[1]
@@ -362,7 +363,8 @@ class _ViscousPhaseODE:
 
     def touchdown(self, t0, z):
         """``n = 0``, so ``f`` starts at 0: stick only if ``F = k e + c u`` is 0, else
-        slip in the direction of the contact point's velocity ``F / c``."""
+        slip in the direction of the contact point's velocity ``F / c``.
+        """
         F = self.k * z[2] + self.c * z[1]
         if F == 0.0:
             return _STICK, 0.0, z
@@ -588,7 +590,8 @@ def _fastest_frequency(ode: _PhaseODE | _ViscousPhaseODE) -> float:
 def _initial_state(initial, alpha: float, beta: float, V: float,
                    viscous: bool = False) -> np.ndarray:
     """``[y, x', f, I_f, I_n]`` at ``tau = 0`` (docs/model.md, initial states), or
-    ``[y, x', e, I_f, I_n]`` for a viscous contact (``e = 1/k`` when sliding)."""
+    ``[y, x', e, I_f, I_n]`` for a viscous contact (``e = 1/k`` when sliding).
+    """
     if initial_code(initial) == INITIAL_SLIDING:
         return np.array([-1.0 / alpha, V, 1.0 / (beta - alpha) if viscous else 1.0, 0.0, 0.0])
     return np.zeros(5)

@@ -247,7 +247,8 @@ def _steps(alpha, beta, zeta, eta_c, steps_per_period) -> int:
 
 def _run(alpha, beta, amplitude, V, zeta, eta_c, N, n_total, avg_start, initial, record):
     """``(sf, sn, pf, pn, tau, x, x', f, n, e)``: the undamped scheme unchanged, or the
-    damped one."""
+    damped one.
+    """
     if _undamped(beta, zeta, eta_c):
         out = _fixed_step(alpha, beta, amplitude, V, N, n_total, avg_start, initial, record)
         # the Jenkins element: e = f / k at every step (0 for a rigid contact)

@@ -186,7 +186,8 @@ class _Model:
     # -- forces ----------------------------------------------------------------
     def contact_force(self, phase, t, z):
         """``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``phase`` (``lam`` the slip
-        speed; ``e'`` is 0 in Jenkins slip, where the state holds ``d``)."""
+        speed; ``e'`` is 0 in Jenkins slip, where the state holds ``d``).
+        """
         _, _, _, _, vsx, vsy = self.drive(t)
         wx, wy = z[2] - vsx, z[3] - vsy
         k, c = self.k, self.c
@@ -539,7 +540,8 @@ def inplane_run(
 
 def _spread(values: np.ndarray, weights: np.ndarray) -> float:
     """Window spread of a ratio of means: halves' difference or 3 standard errors of ten
-    blocks, whichever is larger (0 for fewer than 2 periods)."""
+    blocks, whichever is larger (0 for fewer than 2 periods).
+    """
     m = len(values)
     if m < 2:
         return 0.0
@@ -568,7 +570,8 @@ def inplane_mean(
     :class:`InplaneMean`) from :func:`inplane_run`; ``model`` are its keywords (``zeta,
     eta_c, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y, inplane_on, initial``).
     ``tolerance_check`` adds a second run at 1000 times looser tolerances (about a third
-    of the cost) whose difference is added to the errors."""
+    of the cost) whose difference is added to the errors.
+    """
     run = inplane_run(alpha, beta, amplitude, V, transient_periods, average_periods, rtol,
                       atol, **model)
     mu_err = _spread(run.period_fx, run.period_n)

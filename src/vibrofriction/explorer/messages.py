@@ -39,7 +39,8 @@ def field_of(message: str, mode: str = "dimensionless") -> str:
 def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, dict[str, str]]:
     """The typed ``texts`` over ``base``: the state and no message, or None and a message
     per offending input (parsing, then the library's validators through
-    :meth:`State.system` and :meth:`State.velocities`)."""
+    :meth:`State.system` and :meth:`State.velocities`).
+    """
     values: dict[str, float] = {}
     problems: dict[str, str] = {}
     for name, text in texts.items():
@@ -63,7 +64,8 @@ def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, di
 
 def _check_axis(state: State, system) -> None:
     """The chosen velocity axis exists for this system (the library's conversion says why
-    not: ``vbar`` in the resonant cases, ``v0`` without a bench)."""
+    not: ``vbar`` in the resonant cases, ``v0`` without a bench).
+    """
     import vibrofriction as vf
 
     if state.axis == "vbar":
@@ -79,7 +81,8 @@ def _check_curved(state: State) -> None:
     ``eta_c``, ``a_y``): ``solve_points`` at ``V = 0``, the static limit, which validates
     the point as any other and computes nothing.  ``a_x`` is taken at ``V != 0`` (and
     refused at ``V = 0``, which the curve leaves out: :attr:`State.rest_refused`), so the
-    check is without it (``Dimensionless`` has validated it)."""
+    check is without it (``Dimensionless`` has validated it).
+    """
     from vibrofriction.solver import solve_points
 
     solve_points(state.alpha, state.beta, state.amplitude, 0.0, state.zeta, state.eta_c,
@@ -90,7 +93,8 @@ def _check_curved(state: State) -> None:
 def curved_refusal(state: State, name: str, value: float) -> str:
     """The library's message refusing ``name = value`` with the state's curved tip (the
     other refused inputs at 0 and a finite ``beta``, so the message is about ``name``);
-    ``""`` where it is accepted."""
+    ``""`` where it is accepted.
+    """
     others = {n: 0.0 for n in MDR_REFUSED}
     beta = state.beta if math.isfinite(state.beta) else state.alpha + 1.0
     try:

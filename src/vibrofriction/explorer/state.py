@@ -52,7 +52,8 @@ def _model_field(name: str, low: float, high: float, log: bool = True,
                  label: str = "") -> Field:
     """The input of a model parameter: its label (unless given) and whether ``inf`` is
     allowed from the schema (:data:`vibrofriction.schema.PARAMETERS`); the slider range
-    and scale are the explorer's choice."""
+    and scale are the explorer's choice.
+    """
     p = PARAMETER[name]
     return Field(name, label or p.label, low, high, log, allow_inf=p.range.allow_inf)
 
@@ -160,7 +161,8 @@ class State:
     @property
     def curved(self) -> bool:
         """A curved tip (finite ``profile_exponent``) on the dimensionless inputs: the MDR
-        solver computes the curve (the bench inputs are the linearised contact)."""
+        solver computes the curve (the bench inputs are the linearised contact).
+        """
         return self.mode == "dimensionless" and self.profile_exponent != math.inf
 
     @property
@@ -187,12 +189,14 @@ class State:
     @property
     def rest_refused(self) -> bool:
         """Whether ``V = 0`` is no point of the curve: a curved tip with a longitudinal
-        in-plane oscillation (``a_x > 0``), which the MDR solver refuses at rest."""
+        in-plane oscillation (``a_x > 0``), which the MDR solver refuses at rest.
+        """
         return self.curved and self.a_x > 0.0
 
     def grid(self) -> np.ndarray:
         """The :attr:`curve_points` velocities from ``v_min`` to ``v_max`` on the chosen
-        axis (``V`` and ``v0`` signed: negative slides the other way; ``vbar`` from 0)."""
+        axis (``V`` and ``v0`` signed: negative slides the other way; ``vbar`` from 0).
+        """
         lo = float(checked("v_min", self.v_min, minimum=0.0 if self.axis == "vbar" else None))
         hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
         if self.log_x:
@@ -202,7 +206,8 @@ class State:
 
     def velocities(self) -> np.ndarray:
         """The velocities of the curve: the :meth:`grid`, without ``V = 0`` where it is
-        refused (:attr:`rest_refused`; the page says so)."""
+        refused (:attr:`rest_refused`; the page says so).
+        """
         x = self.grid()
         return x[x != 0.0] if self.rest_refused else x
 
@@ -224,7 +229,8 @@ class State:
     @classmethod
     def from_query(cls, query: Mapping[str, str | bytes | list]) -> tuple[State, dict[str, str]]:
         """A state from URL query parameters, and a message per parameter it could not read
-        (those keep their defaults; unknown names are ignored)."""
+        (those keep their defaults; unknown names are ignored).
+        """
         values: dict[str, Any] = {}
         problems: dict[str, str] = {}
         names = {f.name: f for f in dataclasses.fields(cls)}

@@ -39,7 +39,8 @@ def _legend_outside(fig, location: str = "bottom_right") -> None:
 
 class CurveView:
     """``mu/mu0`` (or the COF) against velocity: trusted points, untrusted points, the
-    static value, the critical velocity, the closed forms, measurements and the fit."""
+    static value, the critical velocity, the closed forms, measurements and the fit.
+    """
 
     def __init__(self, x_log: bool = False) -> None:
         self.trusted = _empty(x=1, y=1, n=1, stick=1, slip=1, open=1)
@@ -163,7 +164,8 @@ class HistoryView:
     """A point's time history: forces, the phases shaded, the events marked; with an
     in-plane oscillation a second figure (``path_figure``, hidden otherwise) shows the
     contact point on the substrate: ``x_c`` against time (1-D) or its path ``(x_c, y_c)``
-    in the plane (2-D), coloured by phase."""
+    in the plane (2-D), coloured by phase.
+    """
 
     def __init__(self) -> None:
         self.lines = _empty(t=1, f=1, n=1)
@@ -236,7 +238,8 @@ class HistoryView:
 
     def _show_path(self, h: dict) -> None:
         """The contact point on the substrate, or nothing (and hidden) without an
-        in-plane oscillation."""
+        in-plane oscillation.
+        """
         xc, yc = h.get("xc"), h.get("yc")
         fig = self.path_figure
         if xc is None:
@@ -322,7 +325,8 @@ class SpaceTimeView:
     """A curved tip's contact over one period: the position ``xi = x/a0`` along the profile
     against ``t/T``, each spring coloured by its state (stick, slip, out of contact), with
     the stick and contact radii where the history gives them; hidden for the flat punch.
-    Without an MDR time history it says so (``show`` with ``spacetime`` None)."""
+    Without an MDR time history it says so (``show`` with ``spacetime`` None).
+    """
 
     def __init__(self) -> None:
         self.image = _empty(image=1, x=1, y=1, dw=1, dh=1)

@@ -111,7 +111,8 @@ def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
 
 def plot_fit(result: FitResult) -> Figure:
     """A fit against its data and its residuals (:func:`vibrofriction.figures.bench.plot_fit`;
-    the bench is imported on first use)."""
+    the bench is imported on first use).
+    """
     from .bench import plot_fit as _plot
 
     return _plot(result)
@@ -119,7 +120,8 @@ def plot_fit(result: FitResult) -> Figure:
 
 def plot_design(result: DesignResult) -> Figure:
     """A design's map with its optimum (:func:`vibrofriction.figures.bench.plot_design`;
-    the bench is imported on first use)."""
+    the bench is imported on first use).
+    """
     from .bench import plot_design as _plot
 
     return _plot(result)

@@ -103,7 +103,8 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
 def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: object) -> Series:
     """A series of a :class:`Physical` system on a grid of ``v0`` (m/s): its dimensionless
     groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or infinite);
-    ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``."""
+    ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``.
+    """
     v0 = np.asarray(v0, dtype=float)
     dim = physical.to_dimensionless()
     V = np.asarray(physical.v0_to_inertial(v0))
@@ -125,7 +126,8 @@ class Curve:
     """A solved :class:`Series`: every column :func:`solve_points` returns (named by
     :mod:`vibrofriction.schema`: ``mu_ratio`` (eq. 25), its ``error``, status codes,
     ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`) ...) as an
-    attribute of the same name."""
+    attribute of the same name.
+    """
 
     series: Series
     columns: Mapping[str, NDArray]
@@ -138,7 +140,8 @@ class Curve:
     @classmethod
     def of(cls, series: Series, **columns: ArrayLike) -> Curve:
         """A curve with the given columns; the others hold what no result holds (nan, -1,
-        not trusted): for curves made by hand."""
+        not trusted): for curves made by hand.
+        """
         def filled(k: str) -> NDArray:
             if k in columns:
                 return np.broadcast_to(np.asarray(columns[k]), (series.size,)).copy()
@@ -160,7 +163,8 @@ class Curve:
     @property
     def suspicious(self) -> NDArray[np.bool_]:
         """Points whose status claims convergence but whose error estimate is too large
-        to trust; drawn as open circles and listed in the report."""
+        to trust; drawn as open circles and listed in the report.
+        """
         return converged(self.status) & ~self.trusted
 
     @property
@@ -202,7 +206,8 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
 
 def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.object_]]:
     """The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
-    and their ``inplane_on``: the arguments of a :data:`Runner`."""
+    and their ``inplane_on``: the arguments of a :data:`Runner`.
+    """
     columns = [np.concatenate([s.v_inertial if n == "v_inertial" else
                                np.full(s.size, getattr(s, n)) for s in series])
                if series else np.empty(0) for n in POINT_ARGS]
@@ -215,7 +220,8 @@ def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
                     ) -> dict[str, NDArray]:
     """:func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
     whose value differs from point to point (one call per value); the default
-    :data:`Runner`."""
+    :data:`Runner`.
+    """
     *point, exponent, inplane_on = columns
     on = np.asarray(inplane_on, dtype=object)
     values = sorted(set(on.tolist()))

@@ -35,7 +35,8 @@ _VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "schema.py", "params.py", "the
 def identity() -> tuple[str, str]:
     """``(package version, fingerprint)``: the fingerprint hashes the source code that
     computes the values, so a store is never resumed, nor a Dask worker used, with a
-    solver that differs from the one that started (even under the same version)."""
+    solver that differs from the one that started (even under the same version).
+    """
     from .. import __version__
 
     root = Path(__file__).resolve().parents[1]
@@ -80,7 +81,8 @@ def _velocity_values(plan: Plan, block: int) -> np.ndarray:
 
 def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     """The dimensionless parameters per row (by name, in the schema's order), the row
-    variables and ``V`` per (row, velocity)."""
+    variables and ``V`` per (row, velocity).
+    """
     p = _rows(plan, block)
     point = {n: p[n] for n in DIMENSIONLESS}
     shape = p["alpha"].shape
@@ -103,7 +105,8 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
 def _curved_critical(critical: Callable[[], float]) -> float:
     """A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
     where it is not derived (``eta_c``, ``a_x`` or ``a_y`` > 0: the system refuses by
-    name, docs/contact_geometry.md)."""
+    name, docs/contact_geometry.md).
+    """
     try:
         return critical()
     except ValueError:

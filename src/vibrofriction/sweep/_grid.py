@@ -333,7 +333,8 @@ def make_plan(
 def _check_axisymmetric(system: Any) -> None:
     """ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
     ``alpha_y``, ``zeta_y`` given): the sweep does not carry them yet (refused, never
-    ignored)."""
+    ignored).
+    """
     names = [p.name for p in PARAMETERS if p.twin and getattr(system, p.name, None)
              is not None]
     if names:
@@ -391,7 +392,8 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
                         physical: dict[str, ArrayLike],
                         v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
     """The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
-    schema's default) and the velocity axis (``vbar`` or ``v_inertial``)."""
+    schema's default) and the velocity axis (``vbar`` or ``v_inertial``).
+    """
     if physical:
         raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
                          "system (sweep(Physical(...), v0=..., ...))")
@@ -435,7 +437,8 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
 
 def _check_above(axes: tuple[Axis, ...]) -> None:
     """A parameter that must exceed another (``beta > alpha``, the schema's
-    ``Range.above``) does so at every point of the outer product."""
+    ``Range.above``) does so at every point of the outer product.
+    """
     by_name = {a.name: a for a in axes}
     for a in axes:
         other = PARAMETER[a.name].range.above
@@ -452,7 +455,8 @@ def _check_above(axes: tuple[Axis, ...]) -> None:
 
 def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:
     """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16): without
-    damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``."""
+    damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``.
+    """
     undamped = not np.any(ze.values > 0)
     for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
                              (be, 1.0, "beta == 1 (case III: v0* is zero)"),
