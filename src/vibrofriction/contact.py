@@ -48,7 +48,9 @@ __all__ = ["Cone", "FlatPunch", "Material", "PowerLaw", "Sphere", "effective_mod
 
 @dataclass(frozen=True)
 class Material:
-    """Young's modulus ``E`` (Pa; ``math.inf`` for a rigid body) and Poisson's ratio
+    """The elastic constants of one body.
+
+    Young's modulus ``E`` (Pa; ``math.inf`` for a rigid body) and Poisson's ratio
     ``nu`` (``-1 < nu < 0.5``).
     """
 
@@ -56,6 +58,7 @@ class Material:
     nu: float
 
     def __post_init__(self) -> None:
+        """Check ``E >= 0`` and ``-1 < nu < 0.5``."""
         object.__setattr__(self, "E", float(checked("E", self.E, minimum=0.0, strict=True,
                                                     allow_inf=True)))
         nu = float(self.nu)
@@ -86,15 +89,19 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
 
 
 def mdr_shear_modulus(a: Material, b: Material) -> float:
-    """``G*`` of the MDR springs (Pa): ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e.
-    ``4 *`` :func:`effective_shear_modulus`; the fully stuck contact of radius ``a`` has
-    the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``, Mindlin).
+    """``G*`` of the MDR springs (Pa).
+
+    ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e. ``4 *`` :func:`effective_shear_modulus`; the fully
+    stuck contact of radius ``a`` has the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``,
+    Mindlin).
     """
     return 4.0 * effective_shear_modulus(a, b)
 
 
 def mdr_kappa(exponent: float) -> float:
-    """The MDR factor ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)`` of the profile
+    """The MDR factor ``kappa_n`` of the profile ``z = c r^n``.
+
+    The MDR factor ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)`` of the profile
     ``z = c r^n`` (``n > 0``; 2 for a sphere, ``pi/2`` for a cone, ``inf`` for ``n = inf``).
     """
     n = float(checked("exponent", exponent, minimum=0.0, strict=True, allow_inf=True))
@@ -143,8 +150,9 @@ class _MDR:
         return as_float_or_array(self.kappa * self.coefficient * x**self.exponent)
 
     def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m; 0 for
-        ``d <= 0``.
+        """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m.
+
+        0 for ``d <= 0``.
         """
         d = checked("indentation", indentation)
         dp = np.maximum(d, 0.0)
@@ -158,8 +166,10 @@ class _MDR:
         return as_float_or_array(2.0 * self.e_star * d * a * n / (n + 1.0))
 
     def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
-        """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m: the inverse of
-        :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``.
+        """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m.
+
+        The inverse of :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n
+        c)^{1/(n+1)}``.
         """
         F = checked("normal_load", normal_load, minimum=0.0)
         n = self.exponent
@@ -200,11 +210,13 @@ class _Circular(_MDR):
 
 @dataclass(frozen=True)
 class FlatPunch(_Circular):
-    """A flat circular pin end of radius ``radius`` (m) on the counterface: the contact
-    radius is the punch's at any load.
+    """A flat circular pin end of radius ``radius`` (m) on the counterface.
+
+    The contact radius is the punch's at any load.
     """
 
     def contact_radius(self, normal_load: float) -> float:
+        """The punch's radius ``radius`` (m), at any ``normal_load > 0`` (N)."""
         checked("normal_load", normal_load, minimum=0.0, strict=True)
         return self.radius
 
@@ -220,6 +232,7 @@ class FlatPunch(_Circular):
 
     @property
     def kappa(self) -> float:
+        """``inf``: a flat punch has no finite MDR factor."""
         return math.inf
 
     def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
@@ -273,7 +286,9 @@ class _Loaded(_MDR):
         return float(self.radius_at(self.indentation(load)))
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
+        """The contact's normal and tangential stiffness at a normal load.
+
+        ``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
         normal stiffness and the fully stuck tangential one).
         """
         a = self.contact_radius(normal_load)
@@ -290,22 +305,26 @@ class PowerLaw(_Loaded):
     counterface: Material
 
     def __post_init__(self) -> None:
+        """Check ``c > 0`` and ``n > 0``."""
         object.__setattr__(self, "c", float(checked("c", self.c, minimum=0.0, strict=True)))
         object.__setattr__(self, "n", float(checked("n", self.n, minimum=0.0, strict=True)))
 
     @property
     def exponent(self) -> float:
+        """The exponent ``n`` of ``z = c r^n``."""
         return self.n
 
     @property
     def coefficient(self) -> float:
+        """The coefficient ``c`` of ``z = c r^n`` (m^(1-n))."""
         return self.c
 
 
 @dataclass(frozen=True)
 class Cone(_Loaded):
-    """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis): the power
-    law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
+    """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis).
+
+    The power law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
     ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`.
     """
 
@@ -314,6 +333,7 @@ class Cone(_Loaded):
     counterface: Material
 
     def __post_init__(self) -> None:
+        """Check ``slope > 0``."""
         object.__setattr__(self, "slope", float(checked("slope", self.slope, minimum=0.0,
                                                         strict=True)))
 

@@ -112,7 +112,7 @@ def _release_forkserver() -> None:
 
 
 def _gone(pid: int) -> bool:
-    """Has process ``pid`` exited (a zombie counts as exited)?"""
+    """Whether process ``pid`` has exited (a zombie counts as exited)."""
     if sys.platform.startswith("linux"):
         try:
             with open(f"/proc/{pid}/stat", "rb") as fh:

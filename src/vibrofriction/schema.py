@@ -159,7 +159,9 @@ INT_COLUMNS: tuple[str, ...] = _columns("int")
 
 
 def column_index(name: str) -> int:
-    """The index of ``name`` in its kernel output row (:data:`FLOAT_COLUMNS` or
+    """The index of ``name`` in its kernel output row.
+
+    The index of ``name`` in its kernel output row (:data:`FLOAT_COLUMNS` or
     :data:`INT_COLUMNS`).
     """
     col = FIELD[name].column
@@ -169,8 +171,10 @@ def column_index(name: str) -> int:
 
 
 class Status(enum.Enum):
-    """How a steady-state result was obtained: ``.value`` its name, ``.code`` the kernels'
-    code, ``.ok`` whether it is converged, ``.message`` what it means for humans.
+    """How a steady-state result was obtained.
+
+    ``.value`` its name, ``.code`` the kernels' code, ``.ok`` whether it is converged, ``.message``
+    what it means for humans.
     """
 
     code: int
@@ -208,6 +212,7 @@ class Status(enum.Enum):
               "state as v0 -> 0+")
 
     def __new__(cls, value: str, code: int, ok: bool, message: str) -> Status:
+        """A member with its code, whether it converged and its message."""
         member = object.__new__(cls)
         member._value_ = value
         member.code = code
@@ -260,9 +265,11 @@ class Range:
     above: str = ""
 
     def text(self, above_value: float | None = None) -> str:
-        """The range in words, as the validator's errors say it: ``"finite and > 0"``,
-        ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with ``above_value``, the
-        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``).
+        """The range in words, as the validator's errors say it.
+
+        ``"finite and > 0"``, ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with
+        ``above_value``, the value of the parameter named by ``above``: ``"> alpha (= 0.5) or
+        math.inf"``).
         """
         if self.above:
             value = "" if above_value is None else f" (= {above_value!r})"
@@ -459,7 +466,9 @@ def parameters(model: str) -> tuple[Parameter, ...]:
 
 
 def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
-    """The names of :func:`parameters` of ``model``; ``optional=False`` leaves out the
-    optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``).
+    """The names of :func:`parameters` of ``model``.
+
+    ``optional=False`` leaves out the optional ones that default to their twin (``Parameter.twin``:
+    ``k_y``, ``alpha_y``).
     """
     return tuple(p.name for p in parameters(model) if optional or not p.twin)

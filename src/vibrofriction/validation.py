@@ -62,7 +62,9 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
 
 def _checked_above(name: str, value: ArrayLike, other: str,
                    other_value: ArrayLike) -> NDArray[np.float64]:
-    """``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
+    """Check that a value exceeds another, elementwise.
+
+    ``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
     allowed; ``nan`` never), elementwise.
     """
     low = np.asarray(other_value, dtype=float)
@@ -84,7 +86,9 @@ def checked_beta(alpha: ArrayLike, beta: ArrayLike) -> NDArray[np.float64]:
 
 def validated(values: Mapping[str, ArrayLike], *,
               ranges: Mapping[str, Range] | None = None) -> dict[str, NDArray[np.float64]]:
-    """The model's parameters ``values`` (scalars or arrays, by the names of
+    """The one check of the model's parameters.
+
+    The model's parameters ``values`` (scalars or arrays, by the names of
     :data:`~vibrofriction.schema.PARAMETERS`) as float arrays, each checked against its
     schema :class:`~vibrofriction.schema.Range`: the one check of a model parameter.
 
@@ -121,7 +125,9 @@ def validated(values: Mapping[str, ArrayLike], *,
 
 
 def checked_choice(name: str, value: object) -> str:
-    """``value`` if it is one of the allowed names of the choice ``name``
+    """Check that ``value`` is an allowed name of the choice ``name``.
+
+    ``value`` if it is one of the allowed names of the choice ``name``
     (:data:`~vibrofriction.schema.CHOICES`), else ValueError naming both.
     """
     allowed = CHOICES[name].values

@@ -185,7 +185,9 @@ class _Model:
 
     # -- forces ----------------------------------------------------------------
     def contact_force(self, phase, t, z):
-        """``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``phase`` (``lam`` the slip
+        """The contact forces and rates of a state in a phase.
+
+        ``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``phase`` (``lam`` the slip
         speed; ``e'`` is 0 in Jenkins slip, where the state holds ``d``).
         """
         _, _, _, _, vsx, vsy = self.drive(t)
@@ -431,7 +433,9 @@ def inplane_run(
     max_events_per_period: int = 200,
     steps_per_fastest_period: float = 4.0,
 ) -> InplaneRun:
-    """Integrate the in-plane model (module docstring) over ``transient_periods +
+    """Integrate the in-plane model phase by phase and average it.
+
+    Integrate the in-plane model (module docstring) over ``transient_periods +
     average_periods`` drive periods with DOP853 (``rtol``, ``atol``) phase by phase and
     average over the last ``average_periods``.
 
@@ -539,8 +543,10 @@ def inplane_run(
 
 
 def _spread(values: np.ndarray, weights: np.ndarray) -> float:
-    """Window spread of a ratio of means: halves' difference or 3 standard errors of ten
-    blocks, whichever is larger (0 for fewer than 2 periods).
+    """Window spread of a ratio of means.
+
+    Halves' difference or 3 standard errors of ten blocks, whichever is larger (0 for fewer than 2
+    periods).
     """
     m = len(values)
     if m < 2:
@@ -566,7 +572,9 @@ def inplane_mean(
     tolerance_check: bool = True,
     **model,
 ) -> InplaneMean:
-    """Steady-state ``<f_x>/<n>`` and ``<f_y>/<n>`` with error estimates (see
+    """The steady-state friction ratios of the in-plane model, with error estimates.
+
+    Steady-state ``<f_x>/<n>`` and ``<f_y>/<n>`` with error estimates (see
     :class:`InplaneMean`) from :func:`inplane_run`; ``model`` are its keywords (``zeta,
     eta_c, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y, inplane_on, initial``).
     ``tolerance_check`` adds a second run at 1000 times looser tolerances (about a third

@@ -110,7 +110,9 @@ def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
 
 
 def plot_fit(result: FitResult) -> Figure:
-    """A fit against its data and its residuals (:func:`vibrofriction.figures.bench.plot_fit`;
+    """A fit against its data and its residuals.
+
+    A fit against its data and its residuals (:func:`vibrofriction.figures.bench.plot_fit`;
     the bench is imported on first use).
     """
     from .bench import plot_fit as _plot
@@ -119,7 +121,9 @@ def plot_fit(result: FitResult) -> Figure:
 
 
 def plot_design(result: DesignResult) -> Figure:
-    """A design's map with its optimum (:func:`vibrofriction.figures.bench.plot_design`;
+    """A design's map with its optimum.
+
+    A design's map with its optimum (:func:`vibrofriction.figures.bench.plot_design`;
     the bench is imported on first use).
     """
     from .bench import plot_design as _plot

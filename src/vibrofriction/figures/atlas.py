@@ -1,5 +1,6 @@
-"""Quick look at an atlas (:func:`vibrofriction.sweep.sweep`): curves along one
-dimension, or a map over two.
+"""Quick look at an atlas (:func:`vibrofriction.sweep.sweep`).
+
+Curves along one dimension, or a map over two.
 
 Drawn with xarray's own plotting (``DataArray.plot.line``, ``.plot.pcolormesh``) on
 a figure of the shared style (:mod:`.style`, no pyplot), so it works headless.  This

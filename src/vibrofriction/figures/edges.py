@@ -9,7 +9,10 @@ __all__ = ["cell_edges", "is_geometric"]
 
 
 def is_geometric(values: ArrayLike) -> bool:
-    """Are ``values`` (3 or more, all > 0) evenly spaced in ``log``, e.g. ``numpy.geomspace``?"""
+    """Whether ``values`` (3 or more, all > 0) are evenly spaced in ``log``.
+
+    As :func:`numpy.geomspace` makes them.
+    """
     v = np.asarray(values, dtype=float)
     if v.ndim != 1 or v.size < 3 or not np.all(np.isfinite(v)) or np.any(v <= 0):
         return False

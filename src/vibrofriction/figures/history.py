@@ -31,7 +31,9 @@ _WINDOW = (0.5, 2.75)
 
 
 def _shade_phases(ax, tau_p, phase) -> None:
-    """Shade every maximal run of samples in stick, reverse slip or flight (forward slip,
+    """Shade the runs of stick, reverse slip and flight.
+
+    Shade every maximal run of samples in stick, reverse slip or flight (forward slip,
     the ordinary sliding, stays unshaded).
     """
     labelled = set()

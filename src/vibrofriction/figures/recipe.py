@@ -35,11 +35,13 @@ class Table:
     columns: Mapping[str, NDArray]
 
     def __post_init__(self) -> None:
+        """Check that the columns have one length."""
         lengths = {len(np.asarray(v)) for v in self.columns.values()}
         if len(lengths) > 1:
             raise ValueError(f"table {self.name!r}: columns differ in length {sorted(lengths)}")
 
     def __len__(self) -> int:
+        """The number of rows."""
         return len(next(iter(self.columns.values()))) if self.columns else 0
 
     def write_csv(self, path: Path) -> Path:
@@ -109,6 +111,7 @@ class Recipe:
 
     @property
     def points(self) -> int:
+        """The number of velocity points of all series."""
         return sum(s.size for s in self.series)
 
 

@@ -72,6 +72,7 @@ class Series:
     profile_exponent: float = math.inf
 
     def __post_init__(self) -> None:
+        """Check the velocity grid and the system."""
         v = checked(f"series {self.key!r}: v_inertial", self.v_inertial)
         if v.ndim != 1:
             raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array, "
@@ -86,6 +87,7 @@ class Series:
 
     @property
     def size(self) -> int:
+        """The number of velocity points."""
         return int(self.v_inertial.size)
 
 
@@ -101,9 +103,10 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
 
 
 def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: object) -> Series:
-    """A series of a :class:`Physical` system on a grid of ``v0`` (m/s): its dimensionless
-    groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or infinite);
-    ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``.
+    """A series of a :class:`Physical` system on a grid of ``v0`` (m/s).
+
+    Its dimensionless groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or
+    infinite); ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``.
     """
     v0 = np.asarray(v0, dtype=float)
     dim = physical.to_dimensionless()
@@ -123,24 +126,27 @@ CURVE_COLUMNS = (*FLOAT_COLUMNS, *INT_COLUMNS, "trusted")
 
 @dataclass(frozen=True)
 class Curve:
-    """A solved :class:`Series`: every column :func:`solve_points` returns (named by
-    :mod:`vibrofriction.schema`: ``mu_ratio`` (eq. 25), its ``error``, status codes,
-    ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`) ...) as an
-    attribute of the same name.
+    """A solved :class:`Series`.
+
+    Every column :func:`solve_points` returns (named by :mod:`vibrofriction.schema`: ``mu_ratio``
+    (eq. 25), its ``error``, status codes, ``trusted`` (the solver's one definition:
+    :meth:`SolverSettings.trusted`) ...) as an attribute of the same name.
     """
 
     series: Series
     columns: Mapping[str, NDArray]
 
     def __post_init__(self) -> None:
+        """Check that the curve has every column of :data:`CURVE_COLUMNS`."""
         missing = [k for k in CURVE_COLUMNS if k not in self.columns]
         if missing:
             raise ValueError(f"curve {self.series.key!r} lacks the columns {missing}")
 
     @classmethod
     def of(cls, series: Series, **columns: ArrayLike) -> Curve:
-        """A curve with the given columns; the others hold what no result holds (nan, -1,
-        not trusted): for curves made by hand.
+        """A curve with the given columns.
+
+        The others hold what no result holds (nan, -1, not trusted): for curves made by hand.
         """
         def filled(k: str) -> NDArray:
             if k in columns:
@@ -155,6 +161,7 @@ class Curve:
         return cls(series, {k: filled(k) for k in CURVE_COLUMNS})
 
     def __getattr__(self, name: str) -> NDArray:
+        """A column by name, as an attribute."""
         columns = self.__dict__.get("columns", {})
         if name in columns:
             return columns[name]
@@ -162,8 +169,9 @@ class Curve:
 
     @property
     def suspicious(self) -> NDArray[np.bool_]:
-        """Points whose status claims convergence but whose error estimate is too large
-        to trust; drawn as open circles and listed in the report.
+        """Points whose status claims convergence but whose error estimate is too large to trust.
+
+        Drawn as open circles and listed in the report.
         """
         return converged(self.status) & ~self.trusted
 
@@ -175,10 +183,12 @@ class Curve:
     # shortcuts
     @property
     def v_inertial(self) -> NDArray[np.float64]:
+        """The inertial velocities ``v0`` of the series (m/s)."""
         return self.series.v_inertial
 
     @property
     def vbar(self) -> NDArray[np.float64]:
+        """The scaled velocities ``vbar`` of the series."""
         return self.series.vbar
 
 
@@ -205,7 +215,9 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
 
 
 def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.object_]]:
-    """The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
+    """The arguments of a :data:`Runner` for every point of ``series``.
+
+    The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
     and their ``inplane_on``: the arguments of a :data:`Runner`.
     """
     columns = [np.concatenate([s.v_inertial if n == "v_inertial" else
@@ -218,7 +230,9 @@ def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.o
 
 def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
                     ) -> dict[str, NDArray]:
-    """:func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
+    """The default :data:`Runner`: the exact solver on every point.
+
+    :func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
     whose value differs from point to point (one call per value); the default
     :data:`Runner`.
     """

@@ -33,9 +33,11 @@ _VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "schema.py", "params.py", "the
 
 @functools.cache
 def identity() -> tuple[str, str]:
-    """``(package version, fingerprint)``: the fingerprint hashes the source code that
-    computes the values, so a store is never resumed, nor a Dask worker used, with a
-    solver that differs from the one that started (even under the same version).
+    """``(package version, fingerprint)``.
+
+    The fingerprint hashes the source code that computes the values, so a store is never resumed,
+    nor a Dask worker used, with a solver that differs from the one that started (even under the
+    same version).
     """
     from .. import __version__
 
@@ -80,7 +82,9 @@ def _velocity_values(plan: Plan, block: int) -> np.ndarray:
 
 
 def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
-    """The dimensionless parameters per row (by name, in the schema's order), the row
+    """The parameters and velocities of the rows of a block.
+
+    The dimensionless parameters per row (by name, in the schema's order), the row
     variables and ``V`` per (row, velocity).
     """
     p = _rows(plan, block)
@@ -103,7 +107,9 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
 
 
 def _curved_critical(critical: Callable[[], float]) -> float:
-    """A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
+    """A curved profile's critical velocity, nan where it is not derived.
+
+    A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
     where it is not derived (``eta_c``, ``a_x`` or ``a_y`` > 0: the system refuses by
     name, docs/contact_geometry.md).
     """

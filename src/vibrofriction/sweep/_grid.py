@@ -331,7 +331,9 @@ def make_plan(
 
 
 def _check_axisymmetric(system: Any) -> None:
-    """ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
+    """Refuse a system whose pin is not axisymmetric.
+
+    ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
     ``alpha_y``, ``zeta_y`` given): the sweep does not carry them yet (refused, never
     ignored).
     """
@@ -391,7 +393,9 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
                         vbar: ArrayLike | None, v_inertial: ArrayLike | None,
                         physical: dict[str, ArrayLike],
                         v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
-    """The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
+    """The parameter axes and the velocity axis of a sweep.
+
+    The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
     schema's default) and the velocity axis (``vbar`` or ``v_inertial``).
     """
     if physical:
@@ -436,7 +440,9 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
 
 
 def _check_above(axes: tuple[Axis, ...]) -> None:
-    """A parameter that must exceed another (``beta > alpha``, the schema's
+    """Check that each ordered pair of parameters is ordered at every point.
+
+    A parameter that must exceed another (``beta > alpha``, the schema's
     ``Range.above``) does so at every point of the outer product.
     """
     by_name = {a.name: a for a in axes}
@@ -454,8 +460,9 @@ def _check_above(axes: tuple[Axis, ...]) -> None:
 
 
 def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:
-    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16): without
-    damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``.
+    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16).
+
+    Without damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``.
     """
     undamped = not np.any(ze.values > 0)
     for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
