@@ -50,8 +50,24 @@ __all__ = ["Cone", "FlatPunch", "Material", "PowerLaw", "Sphere", "effective_mod
 class Material:
     """The elastic constants of one body.
 
-    Young's modulus ``E`` (Pa; ``math.inf`` for a rigid body) and Poisson's ratio
-    ``nu`` (``-1 < nu < 0.5``).
+    Parameters
+    ----------
+    E : float
+        Young's modulus, Pa (``math.inf`` for a rigid body, see :func:`rigid`).
+    nu : float
+        Poisson's ratio, ``-1 < nu < 0.5``.
+
+    Raises
+    ------
+    ValueError
+        If ``E`` is not positive or ``nu`` is outside ``(-1, 0.5)``.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> steel.G  # shear modulus E/(2 (1 + nu)), Pa
+    80769230769.23...
     """
 
     E: float
@@ -73,7 +89,34 @@ class Material:
 
 
 def effective_modulus(a: Material, b: Material) -> float:
-    """``E*`` of the pair (Pa)."""
+    """The effective (contact) modulus ``E*`` of two bodies.
+
+    ``1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2`` (Johnson, *Contact Mechanics*, ch. 7).
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies (the pin and the counterface); at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``E*``, Pa.
+
+    Raises
+    ------
+    ValueError
+        If both bodies are rigid.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, effective_modulus, rigid
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> effective_modulus(steel, steel)  # E/(2 (1 - nu^2))
+    115384615384.6...
+    >>> effective_modulus(steel, rigid())  # E/(1 - nu^2)
+    230769230769.2...
+    """
     inv = (1.0 - a.nu**2) / a.E + (1.0 - b.nu**2) / b.E
     if inv == 0.0:
         raise ValueError("both bodies are rigid: the contact has no compliance")
@@ -81,7 +124,33 @@ def effective_modulus(a: Material, b: Material) -> float:
 
 
 def effective_shear_modulus(a: Material, b: Material) -> float:
-    """``G*`` of the pair for the tangential stiffness (Pa)."""
+    """The effective shear modulus ``G*`` of two bodies (Mindlin).
+
+    ``1/G* = (2 - nu_1)/G_1 + (2 - nu_2)/G_2``: a stuck circular contact of radius ``a``
+    has the tangential stiffness ``8 G* a``.
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies; at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``G*``, Pa.
+
+    Raises
+    ------
+    ValueError
+        If both bodies are rigid.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, effective_shear_modulus
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> effective_shear_modulus(steel, steel)
+    23755656108.59...
+    """
     inv = (2.0 - a.nu) / a.G + (2.0 - b.nu) / b.G
     if inv == 0.0:
         raise ValueError("both bodies are rigid: the contact has no compliance")
@@ -89,11 +158,28 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
 
 
 def mdr_shear_modulus(a: Material, b: Material) -> float:
-    """``G*`` of the MDR springs (Pa).
+    """The shear modulus ``G*_mdr`` of the MDR springs.
 
-    ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e. ``4 *`` :func:`effective_shear_modulus`; the fully
-    stuck contact of radius ``a`` has the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``,
-    Mindlin).
+    ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e. ``4 *`` :func:`effective_shear_modulus`: the
+    fully stuck contact of radius ``a`` has the tangential stiffness ``2 G*_mdr a``
+    (``= 8 G* a``, Mindlin).
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies; at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``G*_mdr``, Pa.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, mdr_shear_modulus
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> mdr_shear_modulus(steel, steel)  # 4 G*
+    95022624434.38...
     """
     return 4.0 * effective_shear_modulus(a, b)
 
@@ -101,8 +187,25 @@ def mdr_shear_modulus(a: Material, b: Material) -> float:
 def mdr_kappa(exponent: float) -> float:
     """The MDR factor ``kappa_n`` of the profile ``z = c r^n``.
 
-    The MDR factor ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)`` of the profile
-    ``z = c r^n`` (``n > 0``; 2 for a sphere, ``pi/2`` for a cone, ``inf`` for ``n = inf``).
+    ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)``: the 1-D profile of the method
+    of dimensionality reduction is ``g(x) = kappa_n c |x|^n`` (docs/contact_geometry.md).
+
+    Parameters
+    ----------
+    exponent : float
+        The profile's exponent ``n > 0`` (``math.inf``: the flat punch).
+
+    Returns
+    -------
+    float
+        ``kappa_n``: 2 for a sphere (``n = 2``), ``pi/2`` for a cone (``n = 1``),
+        ``inf`` for ``n = inf``.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import mdr_kappa
+    >>> mdr_kappa(2.0), mdr_kappa(1.0)
+    (2.0000000000000004, 1.5707963267948963)
     """
     n = float(checked("exponent", exponent, minimum=0.0, strict=True, allow_inf=True))
     if math.isinf(n):
@@ -210,9 +313,26 @@ class _Circular(_MDR):
 
 @dataclass(frozen=True)
 class FlatPunch(_Circular):
-    """A flat circular pin end of radius ``radius`` (m) on the counterface.
+    """A flat circular pin end on the counterface.
 
-    The contact radius is the punch's at any load.
+    The contact radius is the punch's at any load: ``k_zc = 2 E* R``, ``k_xc = 8 G* R``.
+
+    Parameters
+    ----------
+    radius : float
+        The punch's radius ``R``, m.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import FlatPunch, Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> k_zc, k_xc = FlatPunch(radius=1e-3, pin=steel, counterface=steel).stiffness(10.0)
+    >>> k_zc, k_xc  # N/m
+    (230769230.76..., 190045248.86...)
+    >>> k_xc / k_zc  # 2 (1 - nu)/(2 - nu), the Mindlin ratio
+    0.8235294117647...
     """
 
     def contact_radius(self, normal_load: float) -> float:
@@ -258,7 +378,30 @@ class FlatPunch(_Circular):
 
 @dataclass(frozen=True)
 class Sphere(_Circular):
-    """A spherical pin end of radius ``radius`` (m): Hertz and Mindlin at the load."""
+    """A spherical pin end: Hertz and Mindlin at the load.
+
+    The contact radius ``a = (3 F_N R/(4 E*))^{1/3}`` follows the load; ``k_zc = 2 E* a``,
+    ``k_xc = 8 G* a``.
+
+    Parameters
+    ----------
+    radius : float
+        The sphere's radius ``R``, m.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    A steel ball of radius 5 mm on steel under 10 N: a contact of 69 um radius.
+
+    >>> from vibrofriction.contact import Material, Sphere
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> ball = Sphere(radius=5e-3, pin=steel, counterface=steel)
+    >>> ball.contact_radius(10.0)  # m
+    6.87534433537...e-05
+    >>> ball.stiffness(10.0)  # (k_zc, k_xc), N/m
+    (15866179.23..., 13066265.25...)
+    """
 
     def contact_radius(self, normal_load: float) -> float:
         """Hertz: ``a = (3 F_N R / (4 E*))^{1/3}``, m."""
@@ -297,7 +440,29 @@ class _Loaded(_MDR):
 
 @dataclass(frozen=True)
 class PowerLaw(_Loaded):
-    """An axisymmetric tip ``z = c r^n``: ``c > 0`` in m^(1-n), exponent ``0 < n < inf``."""
+    """An axisymmetric tip ``z = c r^n`` (the MDR, docs/contact_geometry.md).
+
+    Parameters
+    ----------
+    c : float
+        The coefficient, ``c > 0``, in m^(1-n).
+    n : float
+        The exponent, ``0 < n < inf`` (1: a cone, 2: a paraboloid, as :class:`Sphere`).
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    ``n = 2`` with ``c = 1/(2R)`` is the sphere of radius ``R``: here ``R = 5`` mm.
+
+    >>> from vibrofriction.contact import Material, PowerLaw
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> tip = PowerLaw(c=100.0, n=2.0, pin=steel, counterface=steel)
+    >>> tip.contact_radius(10.0)  # m
+    6.87534433537...e-05
+    >>> tip.stiffness(10.0)  # (k_zc, k_xc), N/m
+    (15866179.23..., 13066265.25...)
+    """
 
     c: float
     n: float
@@ -324,8 +489,26 @@ class PowerLaw(_Loaded):
 class Cone(_Loaded):
     """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis).
 
-    The power law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
+    The power law ``n = 1`` with ``c = slope = cot(theta)``. Build it as
     ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`.
+
+    Parameters
+    ----------
+    slope : float
+        ``cot(theta)``, dimensionless, ``> 0``.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    >>> import math
+    >>> from vibrofriction.contact import Cone, Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> cone = Cone.from_half_angle(math.radians(80.0), steel, steel)
+    >>> cone.slope
+    0.1763269807084...
+    >>> cone.contact_radius(10.0)  # m, under 10 N
+    1.7689140139...e-05
     """
 
     slope: float
@@ -362,5 +545,17 @@ class Cone(_Loaded):
 
 
 def rigid() -> Material:
-    """A rigid body (``E = inf``)."""
+    """A rigid body.
+
+    Returns
+    -------
+    Material
+        ``E = inf`` (and ``nu = 0``, which then does not matter).
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import rigid
+    >>> rigid()
+    Material(E=inf, nu=0.0)
+    """
     return Material(math.inf, 0.0)
