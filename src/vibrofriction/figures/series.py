@@ -48,11 +48,34 @@ Runner = Callable[..., dict[str, NDArray]]
 class Series:
     """One curve: a system and the inertial velocities at which to solve it.
 
-    ``key`` names the curve uniquely within a figure; ``vbar`` holds ``v0/v0*``
-    (eq. 16) at each point, ``nan`` where it does not exist (cases III, IV);
-    ``meta`` carries plotting information (labels, panel) and is written into
-    the data tables.  ``V`` is signed (the solver's mirror solves ``V < 0``); ``V = 0``
-    with a transverse oscillation (``a_y > 0``) is refused, as by the solver.
+    Parameters
+    ----------
+    key : str
+        Names the curve uniquely within a figure.
+    alpha, beta, amplitude : float
+        The system (eq. 20).
+    v_inertial : array_like
+        The inertial velocities ``V`` (1-D); signed (the solver's mirror solves
+        ``V < 0``); ``V = 0`` with a transverse oscillation (``a_y > 0``) is refused, as
+        by the solver.
+    vbar : array_like
+        ``v0/v0*`` (eq. 16) at each point, ``nan`` where it does not exist (cases III,
+        IV); broadcast to the velocities.
+    meta : mapping, optional
+        Plotting information (labels, panel), written into the data tables.
+    zeta, eta_c, a_x, phase_x, inplane_on, a_y, phase_y, profile_exponent : optional
+        The rest of the system, as :class:`~vibrofriction.Dimensionless` names them.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from vibrofriction.figures import Series, solve
+    >>> series = Series("a", alpha=0.1, beta=2.0, amplitude=0.5, v_inertial=[0.3],
+    ...                 vbar=np.nan)
+    >>> series.size
+    1
+    >>> solve([series])["a"].mu_ratio  # above the critical velocity: mu0
+    array([1.])
     """
 
     key: str
@@ -128,9 +151,25 @@ CURVE_COLUMNS = (*FLOAT_COLUMNS, *INT_COLUMNS, "trusted")
 class Curve:
     """A solved :class:`Series`.
 
-    Every column :func:`solve_points` returns (named by :mod:`vibrofriction.schema`: ``mu_ratio``
-    (eq. 25), its ``error``, status codes, ``trusted`` (the solver's one definition:
-    :meth:`SolverSettings.trusted`) ...) as an attribute of the same name.
+    Every column :func:`~vibrofriction.solver.solve_points` returns (named by
+    :mod:`vibrofriction.schema`: ``mu_ratio`` (eq. 25), its ``error``, status codes,
+    ``trusted`` (the solver's one definition:
+    :meth:`~vibrofriction.SolverSettings.trusted`) ...) is an attribute of the same name.
+
+    Parameters
+    ----------
+    series : Series
+        What was solved.
+    columns : mapping of str to numpy.ndarray
+        Every column of :data:`~vibrofriction.figures.series.CURVE_COLUMNS`.
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import solve
+    >>> from vibrofriction.figures.series import series_at_vbar
+    >>> curve = solve([series_at_vbar("b", 0.1, 2.0, 0.5, [0.5])])["b"]
+    >>> curve.mu_ratio, curve.trusted, curve.vbar
+    (array([0.58754462]), array([ True]), array([0.5]))
     """
 
     series: Series
@@ -194,7 +233,31 @@ class Curve:
 
 def solve(series: Iterable[Series], *, runner: Runner | None = None,
           settings: SolverSettings | None = None) -> dict[str, Curve]:
-    """Solve every point of every series in one batch; return curves by key."""
+    """Solve every point of every series in one batch.
+
+    Parameters
+    ----------
+    series : iterable of Series
+        The curves, with unique keys.
+    runner : callable, optional
+        Solves the points (:data:`Runner`); default the exact solver in this process.
+    settings : SolverSettings, optional
+        The solver's settings.
+
+    Returns
+    -------
+    dict of str to Curve
+        The solved curves by key.
+
+    Raises
+    ------
+    ValueError
+        If two series share a key.
+
+    Examples
+    --------
+    See :class:`Series` and :class:`Curve`.
+    """
     series = list(series)
     keys = [s.key for s in series]
     if len(set(keys)) != len(keys):
