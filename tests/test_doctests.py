@@ -35,7 +35,7 @@ def _tests() -> list[doctest.DocTest]:
     for module in _modules():
         mod = importlib.import_module(module)
         for test in finder.find(mod, module, globs={}):  # the module's own docstring
-            if test.name == module:
+            if test.name == module and test.examples:
                 seen.setdefault(test.name, test)
         for name in api_pages.public_names(module):
             if name == "__version__":
