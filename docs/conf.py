@@ -73,6 +73,9 @@ napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 napoleon_use_ivar = True
 napoleon_use_rtype = False
+# the types of Parameters and Returns become links (numpy.ndarray to numpy's page, ...)
+napoleon_preprocess_types = True
+napoleon_type_aliases = {"array_like": ":term:`numpy:array_like`"}
 
 # --- links into numpy, scipy, xarray, pandas, matplotlib and Python ----------------------
 # offline: each inventory is a small file in the repository (docs/_inventories/, written by

@@ -67,6 +67,7 @@ OBJECTS: dict[str, tuple[str, str, list[tuple[str, str, str]]]] = {
     ]),
     "numpy": ("NumPy", "2", [
         ("numpy", "py:module", "reference/index.html#module-$"),
+        ("array_like", "std:term", "glossary.html#term-array_like"),
         ("numpy.ndarray", "py:class", "reference/generated/$.html#$"),
         ("numpy.float64", "py:class", "reference/arrays.scalars.html#$"),
         ("numpy.int64", "py:class", "reference/arrays.scalars.html#$"),
