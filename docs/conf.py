@@ -75,7 +75,11 @@ napoleon_use_ivar = True
 napoleon_use_rtype = False
 # the types of Parameters and Returns become links (numpy.ndarray to numpy's page, ...)
 napoleon_preprocess_types = True
-napoleon_type_aliases = {"array_like": ":term:`numpy:array_like`"}
+napoleon_type_aliases = {"array_like": ":term:`numpy:array_like`",
+                         "callable": ":func:`python:callable`",
+                         "mapping": ":term:`python:mapping`",
+                         "sequence": ":term:`python:sequence`",
+                         "iterable": ":term:`python:iterable`"}
 
 # --- links into numpy, scipy, xarray, pandas, matplotlib and Python ----------------------
 # offline: each inventory is a small file in the repository (docs/_inventories/, written by
@@ -91,6 +95,7 @@ intersphinx_mapping = {
         "xarray": "https://docs.xarray.dev/en/stable/",
         "pandas": "https://pandas.pydata.org/docs/",
         "matplotlib": "https://matplotlib.org/stable/",
+        "panel": "https://panel.holoviz.org/",
     }.items()
 }
 intersphinx_timeout = 1
@@ -126,7 +131,8 @@ sphinx_gallery_conf = {
 # --- HTML ------------------------------------------------------------------------------
 html_theme = "pydata_sphinx_theme"
 html_title = f"vibrofriction {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["custom.css"]  # long API titles wrap
 html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,

@@ -1,7 +1,7 @@
 """Write the small intersphinx inventories of ``docs/_inventories/`` (run by hand).
 
 The site is built offline, so intersphinx cannot download ``objects.inv`` from numpy,
-scipy, xarray, pandas, matplotlib or Python. Instead this script writes, for each, an
+scipy, xarray, pandas, matplotlib, Panel or Python. Instead this script writes, for each, an
 inventory in Sphinx's version-2 format listing only the objects these docs name, each
 with its real address on the project's site (relative to the base address of
 ``intersphinx_mapping`` in ``conf.py``). When a docstring names a new outside object
@@ -21,6 +21,10 @@ OUT = Path(__file__).resolve().parent / "_inventories"
 OBJECTS: dict[str, tuple[str, str, list[tuple[str, str, str]]]] = {
     "python": ("Python", "3", [
         ("bool", "py:class", "library/functions.html#bool"),
+        ("callable", "py:function", "library/functions.html#callable"),
+        ("mapping", "std:term", "glossary.html#term-mapping"),
+        ("sequence", "std:term", "glossary.html#term-sequence"),
+        ("iterable", "std:term", "glossary.html#term-iterable"),
         ("int", "py:class", "library/functions.html#int"),
         ("float", "py:class", "library/functions.html#float"),
         ("complex", "py:class", "library/functions.html#complex"),
@@ -117,6 +121,9 @@ OBJECTS: dict[str, tuple[str, str, list[tuple[str, str, str]]]] = {
         ("matplotlib.axes.Axes", "py:class", "api/_as_gen/$.html#$"),
         ("matplotlib.lines.Line2D", "py:class", "api/_as_gen/$.html#$"),
         ("matplotlib.rcParams", "py:data", "api/matplotlib_configuration_api.html#$"),
+    ]),
+    "panel": ("Panel", "1", [
+        ("panel.layout.Row", "py:class", "reference/layouts/Row.html"),
     ]),
 }
 

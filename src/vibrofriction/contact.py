@@ -411,7 +411,7 @@ class Sphere(_Circular):
 
     @property
     def exponent(self) -> float:
-        """2 (a paraboloid: Hertz)."""
+        """The exponent ``n = 2`` of a paraboloid (Hertz)."""
         return 2.0
 
     @property

@@ -17,8 +17,8 @@ def app(state: Any = None) -> Any:
 
     Parameters
     ----------
-    state : State, optional
-        The inputs to start from (a :class:`vibrofriction.explorer.state.State`); None
+    state : vibrofriction.explorer.state.State, optional
+        The inputs to start from; None
         (default): those of the page's URL, else the defaults.
 
     Returns

@@ -164,7 +164,7 @@ def plot_fit(result: FitResult) -> Figure:
 
     Parameters
     ----------
-    result : FitResult
+    result : vibrofriction.bench.FitResult
         What :func:`vibrofriction.fit` returned.
 
     Returns
@@ -199,7 +199,7 @@ def plot_design(result: DesignResult) -> Figure:
 
     Parameters
     ----------
-    result : DesignResult
+    result : vibrofriction.bench.DesignResult
         What :func:`vibrofriction.design` returned.
 
     Returns

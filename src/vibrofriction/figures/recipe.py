@@ -213,9 +213,9 @@ def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
     recipes : sequence of Recipe
         The recipes.
     runner : callable, optional
-        Solves the points (:data:`vibrofriction.figures.series.Runner`); default the
-        exact solver in this process.
-    settings : SolverSettings, optional
+        Solves the points (a ``Runner`` of ``vibrofriction.figures.series``); default
+        the exact solver in this process.
+    settings : vibrofriction.SolverSettings, optional
         The solver's settings.
 
     Returns

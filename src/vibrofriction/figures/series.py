@@ -161,7 +161,7 @@ class Curve:
     series : Series
         What was solved.
     columns : mapping of str to numpy.ndarray
-        Every column of :data:`~vibrofriction.figures.series.CURVE_COLUMNS`.
+        Every column of ``CURVE_COLUMNS`` (those of ``solve_points``).
 
     Examples
     --------
@@ -240,8 +240,8 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     series : iterable of Series
         The curves, with unique keys.
     runner : callable, optional
-        Solves the points (:data:`Runner`); default the exact solver in this process.
-    settings : SolverSettings, optional
+        Solves the points (a ``Runner``); default the exact solver in this process.
+    settings : vibrofriction.SolverSettings, optional
         The solver's settings.
 
     Returns

@@ -150,7 +150,7 @@ def sweep(
         About how many points make a block of work (and a zarr chunk); None (default):
         about 1 % of the grid, from 1000 to 10,000 points (:func:`auto_chunk_size`). An
         existing store keeps its own block shape.
-    settings : SolverSettings, optional
+    settings : vibrofriction.SolverSettings, optional
         The solver's settings (:class:`~vibrofriction.SolverSettings`), recorded in the
         attributes.
     initial : {"sliding", "rest"}, optional

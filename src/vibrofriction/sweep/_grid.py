@@ -180,7 +180,7 @@ class Plan:
         The non-velocity parameters, in the schema's order.
     velocity : Axis
         The velocity axis.
-    settings : SolverSettings
+    settings : vibrofriction.SolverSettings
         The solver's settings.
     initial : str
         ``"sliding"`` or ``"rest"``.
