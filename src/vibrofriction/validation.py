@@ -28,14 +28,9 @@ def range_text(minimum: float | None = None, strict: bool = False,
 
     Parameters
     ----------
-    minimum : float or None, optional
-        The lower bound, if any.
-    strict : bool, optional
-        Whether ``minimum`` itself is excluded.
-    maximum : float or None, optional
-        The upper bound (inclusive), if any.
-    allow_inf : bool, optional
-        Whether ``+inf`` is allowed.
+    minimum, strict, maximum, allow_inf : optional
+        The range, as the fields of the same names of
+        :class:`~vibrofriction.schema.Range` give it.
 
     Returns
     -------
