@@ -7,6 +7,7 @@ pages are generated from each public module's ``__all__`` (:mod:`api_pages`).
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 
@@ -147,3 +148,36 @@ html_show_sourcelink = False
 html_sidebars = {page: [] for page in ("index", "getting_started", "parameters", "changelog",
                                         "citing", "site")}
 html_last_updated_fmt = None
+
+
+# --- hooks -------------------------------------------------------------------------------
+def _public_bases(app, name, obj, options, bases) -> None:
+    """Show a class's public ancestors in "Bases:", not the private helpers it extends."""
+    public: list[type] = []
+
+    def add(base: type) -> None:
+        if base.__name__.startswith("_"):
+            for ancestor in getattr(base, "__bases__", ()):
+                add(ancestor)
+        elif base not in public:
+            public.append(base)
+
+    for base in list(bases):
+        add(base)
+    bases[:] = public
+
+
+_TITLE = re.compile(r"(<h1>)(.*?)(<a class=\"headerlink\")", re.S)
+
+
+def _breakable_titles(app, pagename, templatename, context, doctree) -> None:
+    """Let an API page's title (a long dotted name) wrap after its dots."""
+    if pagename.startswith("api/") and "body" in context:
+        context["body"] = _TITLE.sub(
+            lambda m: m.group(1) + m.group(2).replace(".", ".<wbr>") + m.group(3),
+            context["body"], count=1)
+
+
+def setup(app) -> None:
+    app.connect("autodoc-process-bases", _public_bases)
+    app.connect("html-page-context", _breakable_titles)
