@@ -178,6 +178,35 @@ def _breakable_titles(app, pagename, templatename, context, doctree) -> None:
             context["body"], count=1)
 
 
+_BACKLINK = re.compile(r'(href="[^"#]*?generated/)([^"/#]+)\.html#([^"]+)"')
+
+
+def _backlink(match: re.Match) -> str:
+    """The ``[docs]`` link of a highlighted source, pointed at the object's own anchor.
+
+    viewcode writes ``#<module>.<name>`` with one module per source file, the first one
+    an object of that file was documented under; an object re-exported elsewhere (the
+    schema's ``Status`` at the top level, its ``Field`` in ``vibrofriction.schema``) then
+    gets another module's anchor. An API page is named after the object it documents,
+    so the anchor is that name followed by the member's path, if any.
+    """
+    prefix, page, anchor = match.groups()
+    top = page.rsplit(".", 1)[-1]
+    at = re.search(rf"\.{re.escape(top)}(?=\.|$)", anchor)
+    if anchor == page or anchor.startswith(page + ".") or at is None:
+        return match.group(0)
+    return f'{prefix}{page}.html#{page}{anchor[at.end():]}"'
+
+
+def _viewcode_links(app, pagename, templatename, context, doctree) -> None:
+    """Fix the highlighted sources' links (viewcode: anchors, and an index entry for
+    ``builtins`` that it writes for a type alias such as ``parallel.Task``)."""
+    if pagename.startswith("_modules/") and "body" in context:
+        body = _BACKLINK.sub(_backlink, context["body"])
+        context["body"] = re.sub(r'<li><a href="builtins\.html">builtins</a></li>\s*', "", body)
+
+
 def setup(app) -> None:
     app.connect("autodoc-process-bases", _public_bases)
     app.connect("html-page-context", _breakable_titles)
+    app.connect("html-page-context", _viewcode_links)
