@@ -248,31 +248,70 @@ class _MDR:
         return mdr_shear_modulus(self.pin, self.counterface)
 
     def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
-        """The MDR profile ``g(x) = kappa_n c |x|^n``, m (``x`` in m)."""
+        """The MDR profile ``g(x) = kappa_n c |x|^n``.
+
+        Parameters
+        ----------
+        x : array_like
+            Positions along the 1-D row, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``g(x)``, m.
+        """
         x = np.abs(checked("x", x))
         return as_float_or_array(self.kappa * self.coefficient * x**self.exponent)
 
     def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m.
+        """The contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``).
 
-        0 for ``d <= 0``.
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``a``, m; 0 for ``d <= 0``.
         """
         d = checked("indentation", indentation)
         dp = np.maximum(d, 0.0)
         return as_float_or_array((dp / (self.kappa * self.coefficient)) ** (1.0 / self.exponent))
 
     def normal_force(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """``F(d) = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``, N; 0 for ``d <= 0``."""
+        """The normal force ``F(d) = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``F``, N; 0 for ``d <= 0``.
+        """
         d = np.maximum(checked("indentation", indentation), 0.0)
         n = self.exponent
         a = np.asarray(self.radius_at(d))
         return as_float_or_array(2.0 * self.e_star * d * a * n / (n + 1.0))
 
     def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
-        """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m.
+        """The indentation ``d(F)`` at a normal load: the inverse of :meth:`normal_force`.
 
-        The inverse of :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n
-        c)^{1/(n+1)}``.
+        ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``.
+
+        Parameters
+        ----------
+        normal_load : array_like
+            ``F >= 0``, N.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``d``, m.
         """
         F = checked("normal_load", normal_load, minimum=0.0)
         n = self.exponent
@@ -281,11 +320,33 @@ class _MDR:
                                  * (self.kappa * self.coefficient) ** (1.0 / (n + 1.0)))
 
     def normal_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """``dF/dd = 2 E* a(d)``, N/m."""
+        """The normal stiffness ``dF/dd = 2 E* a(d)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            N/m.
+        """
         return as_float_or_array(2.0 * self.e_star * np.asarray(self.radius_at(indentation)))
 
     def tangential_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """Tangential stiffness of the fully stuck contact, ``2 G*_mdr a(d)``, N/m."""
+        """The tangential stiffness of the fully stuck contact, ``2 G*_mdr a(d)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            N/m.
+        """
         return as_float_or_array(2.0 * self.g_star * np.asarray(self.radius_at(indentation)))
 
 
@@ -305,7 +366,20 @@ class _Circular(_MDR):
         raise NotImplementedError
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc)`` in N/m at ``normal_load`` (the tangent stiffnesses)."""
+        """The contact's normal and tangential stiffness at a normal load.
+
+        ``k_zc = 2 E* a`` and ``k_xc = 8 G* a`` (Mindlin) at the contact radius ``a``.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F_N > 0``, N.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``(k_zc, k_xc)``, N/m: the tangent stiffnesses.
+        """
         a = self.contact_radius(normal_load)
         return (2.0 * effective_modulus(self.pin, self.counterface) * a,
                 8.0 * effective_shear_modulus(self.pin, self.counterface) * a)
@@ -424,15 +498,36 @@ class _Loaded(_MDR):
     """A profile whose contact radius follows the load (the MDR throughout)."""
 
     def contact_radius(self, normal_load: float) -> float:
-        """The contact radius at the load ``F > 0``, m."""
+        """The contact radius at a normal load.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F > 0``, N.
+
+        Returns
+        -------
+        float
+            ``a``, m.
+        """
         load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
         return float(self.radius_at(self.indentation(load)))
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
         """The contact's normal and tangential stiffness at a normal load.
 
-        ``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
-        normal stiffness and the fully stuck tangential one).
+        ``k_zc = 2 E* a`` (the tangent normal stiffness) and ``k_xc = 2 G*_mdr a`` (the
+        fully stuck tangential one) at the contact radius ``a``.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F_N > 0``, N.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``(k_zc, k_xc)``, N/m.
         """
         a = self.contact_radius(normal_load)
         return 2.0 * self.e_star * a, 2.0 * self.g_star * a
