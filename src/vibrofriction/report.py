@@ -135,10 +135,7 @@ def check_recipe(quick: bool = False) -> Recipe:
 def recipes(quick: bool = False) -> list[Recipe]:
     """All figure recipes plus the extra checks, in report order.
 
-    Parameters
-    ----------
-    quick : bool, optional
-        Reduced velocity grids and maps (for CI).
+    The argument ``quick`` is that of :func:`vibrofriction.figures.all_recipes`.
 
     Returns
     -------

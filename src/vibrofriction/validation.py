@@ -67,14 +67,11 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
         The parameter's name, for the error message.
     value : array_like
         The number(s) to check.
-    minimum : float or None, optional
-        The lower bound, if any; exclusive when ``strict``.
-    strict : bool, optional
-        Whether ``minimum`` itself is refused.
-    maximum : float or None, optional
-        The upper bound (inclusive), if any.
-    allow_inf : bool, optional
-        Whether ``+inf`` is admitted (a rigid contact, ``beta = inf``); ``nan`` never is.
+    minimum, strict, maximum, allow_inf : optional
+        The range, as the fields of the same names of
+        :class:`~vibrofriction.schema.Range` give it: ``minimum`` is exclusive when
+        ``strict``, ``maximum`` inclusive, ``allow_inf`` admits ``+inf`` (a rigid
+        contact, ``beta = inf``) but never ``nan``.
 
     Returns
     -------
