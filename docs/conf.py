@@ -7,6 +7,7 @@ pages are generated from each public module's ``__all__`` (:mod:`api_pages`).
 
 from __future__ import annotations
 
+import re
 import sys
 from pathlib import Path
 
@@ -29,9 +30,12 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",
+    "sphinx.ext.viewcode",  # [source] links: the highlighted module source on the site
+    "sphinx.ext.intersphinx",
     "sphinx.ext.mathjax",
     "sphinx-mathjax-offline",  # MathJax 3 copied into _static: no network when viewed
     "sphinx_gallery.gen_gallery",
+    "sphinx_copybutton",
 ]
 
 # --- sources ---------------------------------------------------------------------------
@@ -58,14 +62,50 @@ autosummary_generate = True
 autosummary_imported_members = True
 autodoc_default_options = {"members": True, "show-inheritance": True,
                            "member-order": "bysource"}
-autodoc_typehints = "description"
+# one clean signature per object: the types are in each docstring's numpydoc sections, so
+# the signature shows none; "none" is also what hides the @overload variants (autodoc
+# prints one signature per overload otherwise: friction_coefficient had four) and keeps
+# ArrayLike from being expanded into numpy's _NestedSequence[_SupportsArray[...]]
+autodoc_typehints = "none"
 autodoc_typehints_format = "short"
+autodoc_type_aliases = {"ArrayLike": "ArrayLike"}
 autodoc_class_signature = "mixed"
 autodoc_preserve_defaults = True
 napoleon_google_docstring = False
 napoleon_numpy_docstring = True
 napoleon_use_ivar = True
 napoleon_use_rtype = False
+# the types of Parameters and Returns become links (numpy.ndarray to numpy's page, ...)
+napoleon_preprocess_types = True
+napoleon_type_aliases = {"array_like": ":term:`numpy:array_like`",
+                         "callable": ":func:`python:callable`",
+                         "mapping": ":term:`python:mapping`",
+                         "sequence": ":term:`python:sequence`",
+                         "iterable": ":term:`python:iterable`"}
+
+# --- links into numpy, scipy, xarray, pandas, matplotlib and Python ----------------------
+# offline: each inventory is a small file in the repository (docs/_inventories/, written by
+# docs/make_inventories.py) listing only the objects these docs name, with their real
+# addresses on each project's site; nothing is downloaded at build time
+INVENTORIES = DOCS / "_inventories"
+intersphinx_mapping = {
+    name: (url, str(INVENTORIES / f"{name}.inv"))
+    for name, url in {
+        "python": "https://docs.python.org/3/",
+        "numpy": "https://numpy.org/doc/stable/",
+        "scipy": "https://docs.scipy.org/doc/scipy/",
+        "xarray": "https://docs.xarray.dev/en/stable/",
+        "pandas": "https://pandas.pydata.org/docs/",
+        "matplotlib": "https://matplotlib.org/stable/",
+        "panel": "https://panel.holoviz.org/",
+    }.items()
+}
+intersphinx_timeout = 1
+
+# the copy button copies the code of a doctest without its >>> and ... prompts or output
+copybutton_prompt_text = r">>> |\.\.\. |\$ "
+copybutton_prompt_is_regexp = True
+copybutton_only_copy_prompt_lines = True
 
 # --- gallery: examples/ run at build time --------------------------------------------
 sphinx_gallery_conf = {
@@ -93,7 +133,8 @@ sphinx_gallery_conf = {
 # --- HTML ------------------------------------------------------------------------------
 html_theme = "pydata_sphinx_theme"
 html_title = f"vibrofriction {release}"
-html_static_path: list[str] = []
+html_static_path = ["_static"]
+html_css_files = ["custom.css"]  # long API titles wrap
 html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
@@ -108,3 +149,65 @@ html_show_sourcelink = False
 html_sidebars = {page: [] for page in ("index", "getting_started", "parameters", "changelog",
                                         "citing", "site")}
 html_last_updated_fmt = None
+
+
+# --- hooks -------------------------------------------------------------------------------
+def _public_bases(app, name, obj, options, bases) -> None:
+    """Show a class's public ancestors in "Bases:", not the private helpers it extends."""
+    public: list[type] = []
+
+    def add(base: type) -> None:
+        if base.__name__.startswith("_"):
+            for ancestor in getattr(base, "__bases__", ()):
+                add(ancestor)
+        elif base not in public:
+            public.append(base)
+
+    for base in list(bases):
+        add(base)
+    bases[:] = public
+
+
+_TITLE = re.compile(r"(<h1>)(.*?)(<a class=\"headerlink\")", re.S)
+
+
+def _breakable_titles(app, pagename, templatename, context, doctree) -> None:
+    """Let an API page's title (a long dotted name) wrap after its dots."""
+    if pagename.startswith("api/") and "body" in context:
+        context["body"] = _TITLE.sub(
+            lambda m: m.group(1) + m.group(2).replace(".", ".<wbr>") + m.group(3),
+            context["body"], count=1)
+
+
+_BACKLINK = re.compile(r'(href="[^"#]*?generated/)([^"/#]+)\.html#([^"]+)"')
+
+
+def _backlink(match: re.Match) -> str:
+    """The ``[docs]`` link of a highlighted source, pointed at the object's own anchor.
+
+    viewcode writes ``#<module>.<name>`` with one module per source file, the first one
+    an object of that file was documented under; an object re-exported elsewhere (the
+    schema's ``Status`` at the top level, its ``Field`` in ``vibrofriction.schema``) then
+    gets another module's anchor. An API page is named after the object it documents,
+    so the anchor is that name followed by the member's path, if any.
+    """
+    prefix, page, anchor = match.groups()
+    top = page.rsplit(".", 1)[-1]
+    at = re.search(rf"\.{re.escape(top)}(?=\.|$)", anchor)
+    if anchor == page or anchor.startswith(page + ".") or at is None:
+        return match.group(0)
+    return f'{prefix}{page}.html#{page}{anchor[at.end():]}"'
+
+
+def _viewcode_links(app, pagename, templatename, context, doctree) -> None:
+    """Fix the highlighted sources' links (viewcode: anchors, and an index entry for
+    ``builtins`` that it writes for a type alias such as ``parallel.Task``)."""
+    if pagename.startswith("_modules/") and "body" in context:
+        body = _BACKLINK.sub(_backlink, context["body"])
+        context["body"] = re.sub(r'<li><a href="builtins\.html">builtins</a></li>\s*', "", body)
+
+
+def setup(app) -> None:
+    app.connect("autodoc-process-bases", _public_bases)
+    app.connect("html-page-context", _breakable_titles)
+    app.connect("html-page-context", _viewcode_links)

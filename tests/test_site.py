@@ -320,6 +320,33 @@ def test_api_reference_covers_every_public_name(site):
             assert f"{home}.{name}.html" in text, (module, name)
 
 
+@pytest.mark.browser
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["friction_coefficient", "simulate", "Dimensionless"])
+def test_api_page_shows_one_clean_signature_with_its_source(site, name):
+    """One signature (not one per ``@overload``), no ``ArrayLike`` spelled out as numpy's
+    private ``_NestedSequence[...]``, a ``[source]`` link and a copy button."""
+    html = (site / "api" / "generated" / f"vibrofriction.{name}.html").read_text()
+    signatures = re.findall(rf'<dt class="sig sig-object py"[^>]*id="vibrofriction\.{name}"',
+                            html)
+    assert len(signatures) == 1, (name, len(signatures))
+    assert "_NestedSequence" not in html and "_SupportsArray" not in html, name
+    assert 'class="viewcode-link"' in html, name
+    assert "copybutton" in html, name
+
+
+@pytest.mark.browser
+@pytest.mark.slow
+def test_docstring_types_link_to_the_projects_they_come_from(site):
+    """The offline inventories (docs/_inventories) make xarray's and Python's names links
+    to those projects' own pages."""
+    html = (site / "api" / "generated" / "vibrofriction.sweep.open_atlas.html").read_text()
+    assert 'href="https://docs.xarray.dev/en/stable/generated/xarray.Dataset.html' in html
+    assert 'href="https://docs.python.org/3/library/os.html#os.PathLike"' in html
+    html = (site / "api" / "generated" / "vibrofriction.validation.checked.html").read_text()
+    assert 'href="https://numpy.org/doc/stable/reference/generated/numpy.ndarray.html' in html
+
+
 def test_getting_started_runs_and_prints_what_it_shows():
     """The ``>>>`` block of docs/getting_started.md, a number to the digits it shows."""
     text = (DOCS / "getting_started.md").read_text()

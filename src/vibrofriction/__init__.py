@@ -2,6 +2,16 @@
 
 Implements and extends X. Mao, V. L. Popov, J. Starcevic, M. Popov, "Reduction of
 friction by normal oscillations. II. In-plane system dynamics", Friction (2017).
+
+Examples
+--------
+The steady-state friction of a system at half its critical velocity (eq. 25):
+
+>>> import vibrofriction as vf
+>>> system = vf.Dimensionless(alpha=0.1, beta=2.0, amplitude=0.5)
+>>> result = vf.friction_coefficient(system, vbar=0.5)
+>>> result.mu_ratio, result.status, result.trusted
+(0.587544617143..., <Status.PERIODIC: 'periodic'>, True)
 """
 
 from typing import TYPE_CHECKING, Any

@@ -26,8 +26,11 @@ INITIAL_KINDS = ("sliding", "rest", "section state")
 
 
 class Refusal(ValueError):
-    """A point, initial state or setting a method does not cover; ``parameter`` names the
-    input refused (a parameter, ``"initial"`` or ``"settings.<field>"``)."""
+    """A point, initial state or setting a method does not cover.
+
+    ``parameter`` names the input refused: a parameter, ``"initial"`` or
+    ``"settings.<field>"``.
+    """
 
     def __init__(self, message: str, parameter: str) -> None:
         super().__init__(message)
@@ -95,8 +98,13 @@ class Capabilities:
     notes: tuple[str, ...] = field(default=())
 
     def check(self, points: Any, init_kind: int, settings: Any) -> None:
-        """``ValueError`` for the first point of ``points`` (all chosen for this method)
-        that it does not cover, naming the parameter and its value, or the setting."""
+        """Refuse the first point of ``points`` (all chosen for this method) it does not cover.
+
+        Raises
+        ------
+        Refusal
+            Naming the parameter and its value, the initial state or the setting.
+        """
         for limit in self.limits:
             bad = limit.refuses(points)
             if bad.any():
@@ -111,8 +119,13 @@ class Capabilities:
         self.check_settings(settings)
 
     def check_settings(self, settings: Any) -> None:
-        """``ValueError`` naming the first field of ``settings`` that was set (not None) and
-        that this method does not honour."""
+        """Refuse a field of ``settings`` that was set (not None) and is not honoured here.
+
+        Raises
+        ------
+        Refusal
+            Naming the first such field.
+        """
         unknown = [k for k in settings.chosen() if k not in self.settings]
         if unknown:
             raise Refusal(f"settings.{unknown[0]} = {getattr(settings, unknown[0])} is not "
@@ -213,8 +226,10 @@ CAPABILITIES: dict[str, Capabilities] = {"event": EVENT, "plane": PLANE, "mdr": 
 
 
 def refused_by(parameter: str) -> list[Capabilities]:
-    """The solvers that refuse every value of ``parameter`` but its default
-    (:attr:`Limit.whole`)."""
+    """The solvers that refuse every value of ``parameter`` but its default.
+
+    A :class:`Limit` with ``whole`` set; the command line names them in the help.
+    """
     return [c for c in CAPABILITIES.values()
             if any(lim.whole and lim.parameter == parameter for lim in c.limits)]
 

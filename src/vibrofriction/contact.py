@@ -48,13 +48,33 @@ __all__ = ["Cone", "FlatPunch", "Material", "PowerLaw", "Sphere", "effective_mod
 
 @dataclass(frozen=True)
 class Material:
-    """Young's modulus ``E`` (Pa; ``math.inf`` for a rigid body) and Poisson's ratio
-    ``nu`` (``-1 < nu < 0.5``)."""
+    """The elastic constants of one body.
+
+    Parameters
+    ----------
+    E : float
+        Young's modulus, Pa (``math.inf`` for a rigid body, see :func:`rigid`).
+    nu : float
+        Poisson's ratio, ``-1 < nu < 0.5``.
+
+    Raises
+    ------
+    ValueError
+        If ``E`` is not positive or ``nu`` is outside ``(-1, 0.5)``.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> steel.G  # shear modulus E/(2 (1 + nu)), Pa
+    80769230769.23...
+    """
 
     E: float
     nu: float
 
     def __post_init__(self) -> None:
+        """Check ``E >= 0`` and ``-1 < nu < 0.5``."""
         object.__setattr__(self, "E", float(checked("E", self.E, minimum=0.0, strict=True,
                                                     allow_inf=True)))
         nu = float(self.nu)
@@ -69,7 +89,34 @@ class Material:
 
 
 def effective_modulus(a: Material, b: Material) -> float:
-    """``E*`` of the pair (Pa)."""
+    """The effective (contact) modulus ``E*`` of two bodies.
+
+    ``1/E* = (1 - nu_1^2)/E_1 + (1 - nu_2^2)/E_2`` (Johnson, *Contact Mechanics*, ch. 7).
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies (the pin and the counterface); at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``E*``, Pa.
+
+    Raises
+    ------
+    ValueError
+        If both bodies are rigid.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, effective_modulus, rigid
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> effective_modulus(steel, steel)  # E/(2 (1 - nu^2))
+    115384615384.6...
+    >>> effective_modulus(steel, rigid())  # E/(1 - nu^2)
+    230769230769.2...
+    """
     inv = (1.0 - a.nu**2) / a.E + (1.0 - b.nu**2) / b.E
     if inv == 0.0:
         raise ValueError("both bodies are rigid: the contact has no compliance")
@@ -77,7 +124,33 @@ def effective_modulus(a: Material, b: Material) -> float:
 
 
 def effective_shear_modulus(a: Material, b: Material) -> float:
-    """``G*`` of the pair for the tangential stiffness (Pa)."""
+    """The effective shear modulus ``G*`` of two bodies (Mindlin).
+
+    ``1/G* = (2 - nu_1)/G_1 + (2 - nu_2)/G_2``: a stuck circular contact of radius ``a``
+    has the tangential stiffness ``8 G* a``.
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies; at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``G*``, Pa.
+
+    Raises
+    ------
+    ValueError
+        If both bodies are rigid.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, effective_shear_modulus
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> effective_shear_modulus(steel, steel)
+    23755656108.59...
+    """
     inv = (2.0 - a.nu) / a.G + (2.0 - b.nu) / b.G
     if inv == 0.0:
         raise ValueError("both bodies are rigid: the contact has no compliance")
@@ -85,15 +158,54 @@ def effective_shear_modulus(a: Material, b: Material) -> float:
 
 
 def mdr_shear_modulus(a: Material, b: Material) -> float:
-    """``G*`` of the MDR springs (Pa): ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e.
-    ``4 *`` :func:`effective_shear_modulus`; the fully stuck contact of radius ``a`` has
-    the tangential stiffness ``2 G*_mdr a`` (``= 8 G* a``, Mindlin)."""
+    """The shear modulus ``G*_mdr`` of the MDR springs.
+
+    ``1/G*_mdr = sum (2 - nu_i)/(4 G_i)``, i.e. ``4 *`` :func:`effective_shear_modulus`: the
+    fully stuck contact of radius ``a`` has the tangential stiffness ``2 G*_mdr a``
+    (``= 8 G* a``, Mindlin).
+
+    Parameters
+    ----------
+    a, b : Material
+        The two bodies; at most one may be rigid.
+
+    Returns
+    -------
+    float
+        ``G*_mdr``, Pa.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import Material, mdr_shear_modulus
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> mdr_shear_modulus(steel, steel)  # 4 G*
+    95022624434.38...
+    """
     return 4.0 * effective_shear_modulus(a, b)
 
 
 def mdr_kappa(exponent: float) -> float:
-    """The MDR factor ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)`` of the profile
-    ``z = c r^n`` (``n > 0``; 2 for a sphere, ``pi/2`` for a cone, ``inf`` for ``n = inf``).
+    """The MDR factor ``kappa_n`` of the profile ``z = c r^n``.
+
+    ``kappa_n = sqrt(pi) Gamma(n/2 + 1)/Gamma(n/2 + 1/2)``: the 1-D profile of the method
+    of dimensionality reduction is ``g(x) = kappa_n c |x|^n`` (docs/contact_geometry.md).
+
+    Parameters
+    ----------
+    exponent : float
+        The profile's exponent ``n > 0`` (``math.inf``: the flat punch).
+
+    Returns
+    -------
+    float
+        ``kappa_n``: 2 for a sphere (``n = 2``), ``pi/2`` for a cone (``n = 1``),
+        ``inf`` for ``n = inf``.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import mdr_kappa
+    >>> mdr_kappa(2.0), mdr_kappa(1.0)
+    (2.0000000000000004, 1.5707963267948963)
     """
     n = float(checked("exponent", exponent, minimum=0.0, strict=True, allow_inf=True))
     if math.isinf(n):
@@ -136,27 +248,71 @@ class _MDR:
         return mdr_shear_modulus(self.pin, self.counterface)
 
     def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
-        """The MDR profile ``g(x) = kappa_n c |x|^n``, m (``x`` in m)."""
+        """The MDR profile ``g(x) = kappa_n c |x|^n``.
+
+        Parameters
+        ----------
+        x : array_like
+            Positions along the 1-D row, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``g(x)``, m.
+        """
         x = np.abs(checked("x", x))
         return as_float_or_array(self.kappa * self.coefficient * x**self.exponent)
 
     def radius_at(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """Contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``), m; 0 for
-        ``d <= 0``."""
+        """The contact radius ``a(d) = (d/(kappa_n c))^{1/n}`` (``g(a) = d``).
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``a``, m; 0 for ``d <= 0``.
+        """
         d = checked("indentation", indentation)
         dp = np.maximum(d, 0.0)
         return as_float_or_array((dp / (self.kappa * self.coefficient)) ** (1.0 / self.exponent))
 
     def normal_force(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """``F(d) = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``, N; 0 for ``d <= 0``."""
+        """The normal force ``F(d) = 2 E* int_0^a (d - g) dx = 2 E* d a n/(n + 1)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``F``, N; 0 for ``d <= 0``.
+        """
         d = np.maximum(checked("indentation", indentation), 0.0)
         n = self.exponent
         a = np.asarray(self.radius_at(d))
         return as_float_or_array(2.0 * self.e_star * d * a * n / (n + 1.0))
 
     def indentation(self, normal_load: ArrayLike) -> float | NDArray[np.float64]:
-        """The indentation ``d(F)`` at the normal load ``F >= 0`` (N), m: the inverse of
-        :meth:`normal_force`, ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``."""
+        """The indentation ``d(F)`` at a normal load: the inverse of :meth:`normal_force`.
+
+        ``d = (F (n + 1)/(2 n E*))^{n/(n+1)} (kappa_n c)^{1/(n+1)}``.
+
+        Parameters
+        ----------
+        normal_load : array_like
+            ``F >= 0``, N.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            ``d``, m.
+        """
         F = checked("normal_load", normal_load, minimum=0.0)
         n = self.exponent
         base = F * (n + 1.0) / (2.0 * n * self.e_star)
@@ -164,11 +320,33 @@ class _MDR:
                                  * (self.kappa * self.coefficient) ** (1.0 / (n + 1.0)))
 
     def normal_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """``dF/dd = 2 E* a(d)``, N/m."""
+        """The normal stiffness ``dF/dd = 2 E* a(d)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            N/m.
+        """
         return as_float_or_array(2.0 * self.e_star * np.asarray(self.radius_at(indentation)))
 
     def tangential_stiffness(self, indentation: ArrayLike) -> float | NDArray[np.float64]:
-        """Tangential stiffness of the fully stuck contact, ``2 G*_mdr a(d)``, N/m."""
+        """The tangential stiffness of the fully stuck contact, ``2 G*_mdr a(d)``.
+
+        Parameters
+        ----------
+        indentation : array_like
+            ``d``, m.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            N/m.
+        """
         return as_float_or_array(2.0 * self.g_star * np.asarray(self.radius_at(indentation)))
 
 
@@ -188,7 +366,20 @@ class _Circular(_MDR):
         raise NotImplementedError
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc)`` in N/m at ``normal_load`` (the tangent stiffnesses)."""
+        """The contact's normal and tangential stiffness at a normal load.
+
+        ``k_zc = 2 E* a`` and ``k_xc = 8 G* a`` (Mindlin) at the contact radius ``a``.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F_N > 0``, N.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``(k_zc, k_xc)``, N/m: the tangent stiffnesses.
+        """
         a = self.contact_radius(normal_load)
         return (2.0 * effective_modulus(self.pin, self.counterface) * a,
                 8.0 * effective_shear_modulus(self.pin, self.counterface) * a)
@@ -196,10 +387,30 @@ class _Circular(_MDR):
 
 @dataclass(frozen=True)
 class FlatPunch(_Circular):
-    """A flat circular pin end of radius ``radius`` (m) on the counterface: the contact
-    radius is the punch's at any load."""
+    """A flat circular pin end on the counterface.
+
+    The contact radius is the punch's at any load: ``k_zc = 2 E* R``, ``k_xc = 8 G* R``.
+
+    Parameters
+    ----------
+    radius : float
+        The punch's radius ``R``, m.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import FlatPunch, Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> k_zc, k_xc = FlatPunch(radius=1e-3, pin=steel, counterface=steel).stiffness(10.0)
+    >>> k_zc, k_xc  # N/m
+    (230769230.76..., 190045248.86...)
+    >>> k_xc / k_zc  # 2 (1 - nu)/(2 - nu), the Mindlin ratio
+    0.8235294117647...
+    """
 
     def contact_radius(self, normal_load: float) -> float:
+        """The punch's radius ``radius`` (m), at any ``normal_load > 0`` (N)."""
         checked("normal_load", normal_load, minimum=0.0, strict=True)
         return self.radius
 
@@ -215,6 +426,7 @@ class FlatPunch(_Circular):
 
     @property
     def kappa(self) -> float:
+        """``inf``: a flat punch has no finite MDR factor."""
         return math.inf
 
     def profile_1d(self, x: ArrayLike) -> float | NDArray[np.float64]:
@@ -240,7 +452,30 @@ class FlatPunch(_Circular):
 
 @dataclass(frozen=True)
 class Sphere(_Circular):
-    """A spherical pin end of radius ``radius`` (m): Hertz and Mindlin at the load."""
+    """A spherical pin end: Hertz and Mindlin at the load.
+
+    The contact radius ``a = (3 F_N R/(4 E*))^{1/3}`` follows the load; ``k_zc = 2 E* a``,
+    ``k_xc = 8 G* a``.
+
+    Parameters
+    ----------
+    radius : float
+        The sphere's radius ``R``, m.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    A steel ball of radius 5 mm on steel under 10 N: a contact of 69 um radius.
+
+    >>> from vibrofriction.contact import Material, Sphere
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> ball = Sphere(radius=5e-3, pin=steel, counterface=steel)
+    >>> ball.contact_radius(10.0)  # m
+    6.87534433537...e-05
+    >>> ball.stiffness(10.0)  # (k_zc, k_xc), N/m
+    (15866179.23..., 13066265.25...)
+    """
 
     def contact_radius(self, normal_load: float) -> float:
         """Hertz: ``a = (3 F_N R / (4 E*))^{1/3}``, m."""
@@ -250,7 +485,7 @@ class Sphere(_Circular):
 
     @property
     def exponent(self) -> float:
-        """2 (a paraboloid: Hertz)."""
+        """The exponent ``n = 2`` of a paraboloid (Hertz)."""
         return 2.0
 
     @property
@@ -263,20 +498,66 @@ class _Loaded(_MDR):
     """A profile whose contact radius follows the load (the MDR throughout)."""
 
     def contact_radius(self, normal_load: float) -> float:
-        """The contact radius at the load ``F > 0``, m."""
+        """The contact radius at a normal load.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F > 0``, N.
+
+        Returns
+        -------
+        float
+            ``a``, m.
+        """
         load = float(checked("normal_load", normal_load, minimum=0.0, strict=True))
         return float(self.radius_at(self.indentation(load)))
 
     def stiffness(self, normal_load: float) -> tuple[float, float]:
-        """``(k_zc, k_xc) = (2 E* a, 2 G*_mdr a)`` in N/m at ``normal_load`` (the tangent
-        normal stiffness and the fully stuck tangential one)."""
+        """The contact's normal and tangential stiffness at a normal load.
+
+        ``k_zc = 2 E* a`` (the tangent normal stiffness) and ``k_xc = 2 G*_mdr a`` (the
+        fully stuck tangential one) at the contact radius ``a``.
+
+        Parameters
+        ----------
+        normal_load : float
+            ``F_N > 0``, N.
+
+        Returns
+        -------
+        tuple of (float, float)
+            ``(k_zc, k_xc)``, N/m.
+        """
         a = self.contact_radius(normal_load)
         return 2.0 * self.e_star * a, 2.0 * self.g_star * a
 
 
 @dataclass(frozen=True)
 class PowerLaw(_Loaded):
-    """An axisymmetric tip ``z = c r^n``: ``c > 0`` in m^(1-n), exponent ``0 < n < inf``."""
+    """An axisymmetric tip ``z = c r^n`` (the MDR, docs/contact_geometry.md).
+
+    Parameters
+    ----------
+    c : float
+        The coefficient, ``c > 0``, in m^(1-n).
+    n : float
+        The exponent, ``0 < n < inf`` (1: a cone, 2: a paraboloid, as :class:`Sphere`).
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    ``n = 2`` with ``c = 1/(2R)`` is the sphere of radius ``R``: here ``R = 5`` mm.
+
+    >>> from vibrofriction.contact import Material, PowerLaw
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> tip = PowerLaw(c=100.0, n=2.0, pin=steel, counterface=steel)
+    >>> tip.contact_radius(10.0)  # m
+    6.87534433537...e-05
+    >>> tip.stiffness(10.0)  # (k_zc, k_xc), N/m
+    (15866179.23..., 13066265.25...)
+    """
 
     c: float
     n: float
@@ -284,29 +565,53 @@ class PowerLaw(_Loaded):
     counterface: Material
 
     def __post_init__(self) -> None:
+        """Check ``c > 0`` and ``n > 0``."""
         object.__setattr__(self, "c", float(checked("c", self.c, minimum=0.0, strict=True)))
         object.__setattr__(self, "n", float(checked("n", self.n, minimum=0.0, strict=True)))
 
     @property
     def exponent(self) -> float:
+        """The exponent ``n`` of ``z = c r^n``."""
         return self.n
 
     @property
     def coefficient(self) -> float:
+        """The coefficient ``c`` of ``z = c r^n`` (m^(1-n))."""
         return self.c
 
 
 @dataclass(frozen=True)
 class Cone(_Loaded):
-    """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis): the power
-    law ``n = 1`` with ``c = slope = cot(theta)`` (dimensionless, ``> 0``). Build it as
-    ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`."""
+    """A conical tip ``z = r cot(theta)`` of half-angle ``theta`` (from the axis).
+
+    The power law ``n = 1`` with ``c = slope = cot(theta)``. Build it as
+    ``Cone(slope, pin, counterface)`` or :meth:`from_half_angle`.
+
+    Parameters
+    ----------
+    slope : float
+        ``cot(theta)``, dimensionless, ``> 0``.
+    pin, counterface : Material
+        The two bodies.
+
+    Examples
+    --------
+    >>> import math
+    >>> from vibrofriction.contact import Cone, Material
+    >>> steel = Material(E=210e9, nu=0.3)
+    >>> cone = Cone.from_half_angle(math.radians(80.0), steel, steel)
+    >>> cone.slope
+    0.1763269807084...
+    >>> cone.contact_radius(10.0)  # m, under 10 N
+    1.7689140139...e-05
+    """
 
     slope: float
     pin: Material
     counterface: Material
 
     def __post_init__(self) -> None:
+        """Check ``slope > 0``."""
         object.__setattr__(self, "slope", float(checked("slope", self.slope, minimum=0.0,
                                                         strict=True)))
 
@@ -335,5 +640,17 @@ class Cone(_Loaded):
 
 
 def rigid() -> Material:
-    """A rigid body (``E = inf``)."""
+    """A rigid body.
+
+    Returns
+    -------
+    Material
+        ``E = inf`` (and ``nu = 0``, which then does not matter).
+
+    Examples
+    --------
+    >>> from vibrofriction.contact import rigid
+    >>> rigid()
+    Material(E=inf, nu=0.0)
+    """
     return Material(math.inf, 0.0)

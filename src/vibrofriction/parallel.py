@@ -63,7 +63,20 @@ _PR_SET_PDEATHSIG = 1  # <linux/prctl.h>
 
 
 def available_cores() -> int:
-    """Cores this process may run on (``sched_getaffinity``, else ``os.cpu_count``)."""
+    """The number of cores this process may run on.
+
+    Returns
+    -------
+    int
+        ``len(os.sched_getaffinity(0))`` (a container's or ``taskset``'s limit), else
+        :func:`os.cpu_count`.
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import available_cores
+    >>> available_cores() >= 1
+    True
+    """
     try:
         return len(os.sched_getaffinity(0))
     except AttributeError:  # pragma: no cover - not Linux
@@ -71,7 +84,35 @@ def available_cores() -> int:
 
 
 def check_workers(workers: Any, name: str = "workers") -> int:
-    """``workers`` as an int, or ValueError unless it is an integer >= 1."""
+    """Check a number of worker processes.
+
+    Parameters
+    ----------
+    workers : int
+        The number of processes; 1 runs in this process.
+    name : str, optional
+        The argument's name, for the error message.
+
+    Returns
+    -------
+    int
+        ``workers`` as a Python int.
+
+    Raises
+    ------
+    ValueError
+        Unless ``workers`` is an integer (not a bool) ``>= 1``.
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import check_workers
+    >>> check_workers(2)
+    2
+    >>> check_workers(0)
+    Traceback (most recent call last):
+    ...
+    ValueError: workers must be an integer >= 1 (worker processes; 1 = run in this process), got 0
+    """
     if isinstance(workers, bool) or not isinstance(workers, int | np.integer) or workers < 1:
         raise ValueError(f"{name} must be an integer >= 1 (worker processes; 1 = run in "
                          f"this process), got {workers!r}")
@@ -79,7 +120,20 @@ def check_workers(workers: Any, name: str = "workers") -> int:
 
 
 def start_method() -> str:
-    """``forkserver`` where it exists, else ``spawn`` (never ``fork``)."""
+    """The multiprocessing start method of the pool.
+
+    Returns
+    -------
+    str
+        ``"forkserver"`` where it exists, else ``"spawn"`` (never ``"fork"``: the calling
+        process may hold threads).
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import start_method
+    >>> start_method() in ("forkserver", "spawn")
+    True
+    """
     return "forkserver" if "forkserver" in multiprocessing.get_all_start_methods() else "spawn"
 
 
@@ -112,7 +166,7 @@ def _release_forkserver() -> None:
 
 
 def _gone(pid: int) -> bool:
-    """Has process ``pid`` exited (a zombie counts as exited)?"""
+    """Whether process ``pid`` has exited (a zombie counts as exited)."""
     if sys.platform.startswith("linux"):
         try:
             with open(f"/proc/{pid}/stat", "rb") as fh:
@@ -165,12 +219,32 @@ def _worker_died() -> RuntimeError:
 
 def start_pool(workers: int, warm_up: Callable[[], None] | None = None
                ) -> ProcessPoolExecutor:
-    """A long-lived ``ProcessPoolExecutor`` of ``workers`` processes that die with this one.
+    """A long-lived pool of ``workers`` processes that die with this one.
 
-    The caller owns it and stops it with ``shutdown()``.  Workers start on demand (on
-    the first tasks); ``warm_up`` (a module-level function) runs once in each, before
-    any task, e.g. to load the compiled kernels from numba's cache.  The caller should
-    run it itself first, so that kernels are compiled once and only loaded by workers.
+    The caller owns it and stops it with ``shutdown()``. Workers start on demand (on
+    the first tasks).
+
+    Parameters
+    ----------
+    workers : int
+        The number of processes, ``>= 1``.
+    warm_up : callable, optional
+        A module-level function run once in each worker, before any task, e.g. to load
+        the compiled kernels from numba's cache. The caller should run it itself first,
+        so that kernels are compiled once and only loaded by workers.
+
+    Returns
+    -------
+    concurrent.futures.ProcessPoolExecutor
+        The pool.
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import start_pool
+    >>> pool = start_pool(1)
+    >>> pool.submit(divmod, 7, 2).result()
+    (3, 1)
+    >>> pool.shutdown()
     """
     workers = check_workers(workers)
     context = multiprocessing.get_context(start_method())
@@ -181,10 +255,29 @@ def start_pool(workers: int, warm_up: Callable[[], None] | None = None
 @contextmanager
 def process_pool(workers: int, warm_up: Callable[[], None] | None = None
                  ) -> Iterator[ProcessPoolExecutor]:
-    """:func:`start_pool` for the duration of a ``with`` block.
+    """A :func:`start_pool` for the duration of a ``with`` block.
 
     Leaving the block waits for the running tasks; leaving it by an exception (Ctrl-C
     included) cancels the tasks not yet started first.
+
+    Parameters
+    ----------
+    workers : int
+        The number of processes, ``>= 1``.
+    warm_up : callable, optional
+        Run once in each worker first (:func:`start_pool`).
+
+    Yields
+    ------
+    concurrent.futures.ProcessPoolExecutor
+        The pool, shut down when the block ends.
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import process_pool
+    >>> with process_pool(1) as pool:
+    ...     pool.submit(pow, 2, 10).result()
+    1024
     """
     pool = start_pool(workers, warm_up)
     try:
@@ -197,13 +290,33 @@ def process_pool(workers: int, warm_up: Callable[[], None] | None = None
 
 @contextmanager
 def mapper(workers: int, warm_up: Callable[[], None] | None = None) -> Iterator[Map]:
-    """A :data:`Map` over ``workers`` processes (``1``: in this process, no pool).
+    """A :data:`Map` over ``workers`` processes.
 
     Each item is a task of its own (the model's cost varies 10x between items), the
     results come back in the order of the items; the function and the items must
-    pickle.  Usable as ``differential_evolution(..., workers=map_)``.  A worker that
-    dies raises RuntimeError; an exception in a task is raised here and cancels the
-    items not started.
+    pickle. Usable as ``differential_evolution(..., workers=map_)``
+    (:func:`scipy.optimize.differential_evolution`). A worker that dies raises
+    RuntimeError; an exception in a task is raised here and cancels the items not
+    started.
+
+    Parameters
+    ----------
+    workers : int
+        The number of processes; 1 maps in this process, without a pool.
+    warm_up : callable, optional
+        Run once in each worker first (:func:`start_pool`).
+
+    Yields
+    ------
+    Map
+        ``map_(function, items)``: the list ``[function(item) for item in items]``.
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import mapper
+    >>> with mapper(1) as map_:
+    ...     map_(abs, [-1, 2, -3])
+    [1, 2, 3]
     """
     if check_workers(workers) == 1:
         yield lambda func, items: [func(item) for item in items]
@@ -232,6 +345,27 @@ def run_tasks(next_task: Callable[[], Task | None], *, workers: int,
     time one finishes (its answer may depend on the results delivered so far).  Each
     task's ``done(result)`` runs in this process, in the order tasks finish.  A worker
     that dies (or cannot start) raises RuntimeError; any exception cancels the rest.
+
+    Parameters
+    ----------
+    next_task : callable
+        Called without arguments: the next :data:`Task` ``(function, args, done)``, or
+        None when there is none left.
+    workers : int
+        The number of processes, ``>= 1``.
+    warm_up : callable, optional
+        Run once in each worker first (:func:`start_pool`).
+    in_flight : int, optional
+        The most tasks submitted at a time (default ``2 * workers``).
+
+    Examples
+    --------
+    >>> from vibrofriction.parallel import run_tasks
+    >>> results = []
+    >>> tasks = iter([(pow, (2, k), results.append) for k in range(4)])
+    >>> run_tasks(lambda: next(tasks, None), workers=1)
+    >>> sorted(results)
+    [1, 2, 4, 8]
     """
     window = max(1, in_flight or 2 * workers)
     with process_pool(workers, warm_up) as pool:

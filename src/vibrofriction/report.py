@@ -59,11 +59,28 @@ _STATIC_VBAR = (1e-4, 1e-3)
 
 
 def check_recipe(quick: bool = False) -> Recipe:
-    """Checks that belong to no single figure: the static limit, eq. (2), approached as v0 -> 0.
+    """The checks that belong to no single figure: the static limit, eq. (2), as v0 -> 0.
 
     Each system of the Fig. 3 matrix (and case IV on a rigid contact) is solved at
     ``vbar = 1e-4`` and ``1e-3`` (the same values of ``V`` on the resonance lines,
     where ``vbar`` does not exist).
+
+    Parameters
+    ----------
+    quick : bool, optional
+        Unused: a handful of points either way (the signature of every recipe maker).
+
+    Returns
+    -------
+    Recipe
+        The recipe ``checks_static_limit``.
+
+    Examples
+    --------
+    >>> from vibrofriction.report import check_recipe
+    >>> recipe = check_recipe()
+    >>> recipe.name, recipe.points
+    ('checks_static_limit', 70)
     """
     del quick  # a handful of points either way
     series = []
@@ -116,7 +133,22 @@ def check_recipe(quick: bool = False) -> Recipe:
 
 
 def recipes(quick: bool = False) -> list[Recipe]:
-    """All figure recipes plus the extra checks, in report order."""
+    """All figure recipes plus the extra checks, in report order.
+
+    The argument ``quick`` is that of :func:`vibrofriction.figures.all_recipes`.
+
+    Returns
+    -------
+    list of Recipe
+        :func:`vibrofriction.figures.all_recipes` and :func:`check_recipe`.
+
+    Examples
+    --------
+    >>> from vibrofriction.report import recipes
+    >>> names = [r.name for r in recipes(quick=True)]
+    >>> names[:3], names[-1]
+    (['fig02_history', 'fig03a_matrix', 'fig03b_matrix'], 'checks_static_limit')
+    """
     return [*all_recipes(quick), check_recipe(quick)]
 
 
@@ -281,8 +313,32 @@ def _run_here(schedule: _Schedule) -> None:
 class Reproduction:
     """What :func:`reproduce` wrote and measured.
 
-    ``workers`` is the size of the process pool (1: everything ran in the calling
-    process); ``processes`` the pids of the processes that solved or rendered.
+    Parameters
+    ----------
+    out : pathlib.Path
+        The output folder.
+    report : pathlib.Path
+        Its ``report.md``.
+    files : tuple of pathlib.Path
+        Every file written (figures as PNG and PDF, their data as CSV, the report).
+    checks : tuple of Check
+        The comparisons of the numerics with the closed forms.
+    points : int
+        The number of solver points.
+    seconds : float
+        The wall time.
+    workers : int
+        The size of the process pool (1: everything ran in the calling process).
+    untrusted : int
+        The number of points whose result the solver does not trust.
+    suspicious : tuple of str
+        The recipes with suspicious points, in words.
+    processes : tuple of int, optional
+        The pids of the processes that solved or rendered.
+
+    Examples
+    --------
+    See :func:`reproduce`.
     """
 
     out: Path
@@ -323,13 +379,38 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
 
     Parameters
     ----------
-    out : output folder (created).
-    quick : reduced velocity grids and maps (for CI); the figures keep their layout.
-    workers : processes for solving and rendering (the package's one process pool,
+    out : str or pathlib.Path
+        The output folder (created).
+    quick : bool, optional
+        Reduced velocity grids and maps (for CI); the figures keep their layout.
+    workers : int, optional
+        Processes for solving and rendering (the package's one process pool,
         :mod:`vibrofriction.parallel`); default ``min(2, available cores)``; ``1`` runs
-        everything in this process.  Results do not depend on it.
-    progress : show tqdm progress bars (on stderr).
-    only : names (or name prefixes, e.g. ``fig04``) of the recipes to run; default all.
+        everything in this process. Results do not depend on it.
+    progress : bool, optional
+        Show tqdm progress bars (on stderr).
+    only : sequence of str, optional
+        Names (or name prefixes, e.g. ``fig04``) of the recipes to run; default all.
+
+    Returns
+    -------
+    Reproduction
+        What was written and measured.
+
+    Examples
+    --------
+    One figure, the sphere of Fig. 18 (30 points; the first call also loads the solver's
+    kernels, so it is not run with the API's doctests):
+
+    >>> import tempfile
+    >>> from vibrofriction.report import reproduce
+    >>> with tempfile.TemporaryDirectory() as tmp:  # doctest: +SKIP
+    ...     result = reproduce(tmp, quick=True, workers=1, progress=False, only=["fig18"])
+    ...     print(result.points, result.untrusted)
+    ...     print(sorted(path.name for path in result.files))
+    30 0
+    ['deviations.csv', 'fig18_sphere_linearised.csv', 'fig18_sphere_linearised.pdf',
+     'fig18_sphere_linearised.png', 'report.md']
     """
     from .parallel import available_cores, check_workers, run_tasks
 

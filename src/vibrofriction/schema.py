@@ -40,12 +40,38 @@ FORCE_UNIT = "mu0 F_N0"
 class Field:
     """One quantity of a steady-state result.
 
-    ``kind`` is its Python type in a :class:`~vibrofriction.FrictionResult` (``float``,
-    ``int``, ``bool`` or ``object``); ``unit`` UDUNITS-style (``"1"``: dimensionless);
-    ``column`` its place ``("float" | "int", index)`` in the kernels' output rows (None:
-    computed in Python); ``role`` ``"result"`` (a field of ``FrictionResult``),
-    ``"state"`` (a component of its ``final_state``) or ``"kernel"`` (bookkeeping of the
-    kernels only); ``dtype`` the numpy dtype an atlas stores it in.
+    Parameters
+    ----------
+    name : str
+        The field's name.
+    kind : str
+        Its Python type in a :class:`~vibrofriction.FrictionResult`: ``"float"``,
+        ``"int"``, ``"bool"`` or ``"object"``.
+    unit : str
+        UDUNITS-style (``"1"``: dimensionless).
+    long_name : str
+        What it is, in words.
+    equation : str, optional
+        The paper's equation that defines it, if any.
+    symbol : str, optional
+        Its symbol in the paper.
+    column : tuple of (str, int) or None, optional
+        Its place ``("float" | "int", index)`` in the kernels' output rows (None:
+        computed in Python).
+    role : str, optional
+        ``"result"`` (a field of ``FrictionResult``), ``"state"`` (a component of its
+        ``final_state``) or ``"kernel"`` (bookkeeping of the kernels only).
+    dtype : str, optional
+        The numpy dtype an atlas stores it in.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import FIELD
+    >>> field = FIELD["mu_ratio"]
+    >>> field.kind, field.unit, field.column
+    ('float', '1', ('float', 0))
+    >>> field.long_name
+    'macroscopic coefficient of friction over the local one in the steady state, <F_x>/(mu0 <F_N>)'
     """
 
     name: str
@@ -61,9 +87,10 @@ class Field:
 
 # --------------------------------------------------------------------------- contact states
 class ContactState(enum.IntEnum):
-    """The state of a contact: the single contact point (the flat punch, in 1-D and 2-D)
-    or one spring of a curved tip's row (the method of dimensionality reduction).
+    """The state of a contact.
 
+    Of the single contact point (the flat punch, in 1-D and 2-D) or of one spring of a
+    curved tip's row (the method of dimensionality reduction).
     The value is the kernels' code (stored in atlases and CSVs as the result's ``phase``,
     and in ``CurvedHistory.spring_state``); :attr:`label` the name of the state
     (``History.phase``, ``SectionState.phase``, :class:`~vibrofriction.Event`) and
@@ -83,8 +110,10 @@ class ContactState(enum.IntEnum):
 
     @property
     def long_name(self) -> str:
-        """Words for a legend: ``"stick"``, ``"forward slip"``, ``"reverse slip"``,
-        ``"flight"``."""
+        """Words for a legend.
+
+        ``"stick"``, ``"forward slip"``, ``"reverse slip"`` or ``"flight"``.
+        """
         return _STATE_LONG_NAMES[self.value]
 
     @classmethod
@@ -220,8 +249,31 @@ INT_COLUMNS: tuple[str, ...] = _columns("int")
 
 
 def column_index(name: str) -> int:
-    """The index of ``name`` in its kernel output row (:data:`FLOAT_COLUMNS` or
-    :data:`INT_COLUMNS`)."""
+    """The index of ``name`` in its kernel output row.
+
+    Parameters
+    ----------
+    name : str
+        A field of :data:`FIELD` that the kernels return.
+
+    Returns
+    -------
+    int
+        Its index in :data:`FLOAT_COLUMNS` or :data:`INT_COLUMNS`.
+
+    Raises
+    ------
+    KeyError
+        If ``name`` is no field, or is computed in Python (no kernel column).
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import FLOAT_COLUMNS, column_index
+    >>> column_index("mu_ratio")
+    0
+    >>> FLOAT_COLUMNS[0]
+    'mu_ratio'
+    """
     col = FIELD[name].column
     if col is None:
         raise KeyError(f"{name!r} is not a kernel column")
@@ -229,8 +281,11 @@ def column_index(name: str) -> int:
 
 
 class Status(enum.Enum):
-    """How a steady-state result was obtained: ``.value`` its name, ``.code`` the kernels'
-    code, ``.ok`` whether it is converged, ``.message`` what it means for humans."""
+    """How a steady-state result was obtained.
+
+    ``.value`` its name, ``.code`` the kernels' code, ``.ok`` whether it is converged, ``.message``
+    what it means for humans.
+    """
 
     code: int
     ok: bool
@@ -267,6 +322,7 @@ class Status(enum.Enum):
               "state as v0 -> 0+")
 
     def __new__(cls, value: str, code: int, ok: bool, message: str) -> Status:
+        """A member with its code, whether it converged and its message."""
         member = object.__new__(cls)
         member._value_ = value
         member.code = code
@@ -306,10 +362,27 @@ def _number(x: float) -> str:
 class Range:
     """The values a parameter may take.
 
-    ``minimum`` (exclusive when ``strict``), ``maximum`` (inclusive), ``allow_inf``
-    admits ``+inf`` (never ``nan``); ``above`` names a parameter the value must exceed
-    (``beta > alpha``), where ``inf`` is always allowed and ``minimum`` is what is
-    checked when that parameter is not given.
+    Parameters
+    ----------
+    minimum : float or None, optional
+        The lower bound, if any; exclusive when ``strict``.
+    strict : bool, optional
+        Whether ``minimum`` itself is refused.
+    maximum : float or None, optional
+        The upper bound (inclusive), if any.
+    allow_inf : bool, optional
+        Whether ``+inf`` is admitted (``nan`` never is).
+    above : str, optional
+        A parameter the value must exceed (``beta > alpha``), where ``inf`` is always
+        allowed; ``minimum`` is what is checked when that parameter is not given.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import Range
+    >>> Range(0.0, strict=True).text()
+    'finite and > 0'
+    >>> Range(above="alpha").text(0.5)
+    '> alpha (= 0.5) or math.inf'
     """
 
     minimum: float | None = None
@@ -319,9 +392,12 @@ class Range:
     above: str = ""
 
     def text(self, above_value: float | None = None) -> str:
-        """The range in words, as the validator's errors say it: ``"finite and > 0"``,
-        ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with ``above_value``, the
-        value of the parameter named by ``above``: ``"> alpha (= 0.5) or math.inf"``)."""
+        """The range in words, as the validator's errors say it.
+
+        ``"finite and > 0"``, ``"> 0 (math.inf allowed)"``, ``"> alpha or math.inf"`` (with
+        ``above_value``, the value of the parameter named by ``above``: ``"> alpha (= 0.5) or
+        math.inf"``).
+        """
         if self.above:
             value = "" if above_value is None else f" (= {above_value!r})"
             return f"> {self.above}{value} or math.inf"
@@ -344,16 +420,48 @@ FINITE = Range()  # any finite real (a phase, a signed velocity)
 class Parameter:
     """One parameter of the model: what it is, where it comes from, what it may be.
 
-    ``model`` is one of :data:`MODELS` and ``also`` the other models that share it (a
-    phase is the same number in SI and scaled form); ``unit`` UDUNITS-style (``"1"``:
-    dimensionless); ``definition`` the parameter in terms of others (``"k_x / (m
-    omega^2)"``; empty for a primary one); ``range`` its allowed values; ``default`` its
-    value when it is not given (None: required, unless ``twin``).  ``twin`` names the
-    parameter whose value an *optional* one takes when it is None (its default): the
-    pin's transverse ``k_y`` is ``k_x`` unless given (an axisymmetric pin).  The twin
-    comes before it in :data:`PARAMETERS`; :func:`vibrofriction.validation.validated`
-    resolves a None to the twin's value, and the model dataclasses keep the None (so a
-    copy with another ``k_x`` stays axisymmetric).
+    Parameters
+    ----------
+    name : str
+        The parameter's name, as the model dataclasses and the sweep spell it.
+    model : str
+        One of :data:`MODELS`.
+    unit : str
+        UDUNITS-style (``"1"``: dimensionless).
+    long_name : str
+        What it is, in words.
+    symbol : str
+        Its symbol in the paper.
+    equation : str
+        The paper's equation that introduces it.
+    range : Range
+        Its allowed values.
+    default : float or None, optional
+        Its value when it is not given (None: required, unless ``twin``).
+    definition : str, optional
+        The parameter in terms of others (``"k_x / (m omega^2)"``; empty for a primary
+        one).
+    also : tuple of str, optional
+        The other models that share it (a phase is the same number in SI and scaled
+        form).
+    twin : str, optional
+        The parameter whose value an *optional* one takes when it is None (its default):
+        the pin's transverse ``k_y`` is ``k_x`` unless given (an axisymmetric pin). The
+        twin comes before it in :data:`PARAMETERS`;
+        :func:`vibrofriction.validation.validated` resolves a None to the twin's value,
+        and the model dataclasses keep the None (so a copy with another ``k_x`` stays
+        axisymmetric).
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import PARAMETER
+    >>> alpha = PARAMETER["alpha"]
+    >>> alpha.long_name, alpha.equation
+    ('system stiffness over inertia, k_x / (m omega^2)', '(20)')
+    >>> alpha.label
+    'alpha = k_x / (m omega^2)'
+    >>> alpha.range.text()
+    'finite and > 0'
     """
 
     name: str
@@ -481,10 +589,29 @@ if len(PARAMETER) != len(PARAMETERS) or any(
 class Choice:
     """A model input that is one of a few names, not a number (``inplane_on``).
 
-    ``model`` is one of :data:`MODELS` and ``also`` the other models that share it;
-    ``values`` the allowed names, ``default`` one of them.
-    :func:`vibrofriction.validation.checked_choice` is its one check.  The model
+    :func:`vibrofriction.validation.checked_choice` is its one check. The model
     dataclasses carry a choice as a field after their numeric parameters.
+
+    Parameters
+    ----------
+    name : str
+        The choice's name.
+    model : str
+        One of :data:`MODELS`.
+    long_name : str
+        What it chooses, in words.
+    values : tuple of str
+        The allowed names.
+    default : str
+        One of ``values``.
+    also : tuple of str, optional
+        The other models that share it.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import CHOICES
+    >>> CHOICES["inplane_on"].values, CHOICES["inplane_on"].default
+    (('substrate', 'holder'), 'substrate')
     """
 
     name: str
@@ -505,20 +632,79 @@ CHOICES: dict[str, Choice] = {
 
 
 def choice_names(model: str) -> tuple[str, ...]:
-    """The names of the :data:`CHOICES` of ``model``."""
+    """The names of the :data:`CHOICES` of ``model``.
+
+    Parameters
+    ----------
+    model : str
+        One of :data:`MODELS`.
+
+    Returns
+    -------
+    tuple of str
+        The names, in the order of :data:`CHOICES`.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import choice_names
+    >>> choice_names("dimensionless")
+    ('inplane_on',)
+    """
     return tuple(c.name for c in CHOICES.values() if model in (c.model, *c.also))
 
 
 def parameters(model: str) -> tuple[Parameter, ...]:
-    """The parameters of ``model`` (one of :data:`MODELS`), in the schema's order."""
+    """The parameters of ``model``, in the schema's order.
+
+    Parameters
+    ----------
+    model : str
+        One of :data:`MODELS`: ``"dimensionless"``, ``"physical"`` or ``"velocity"``.
+
+    Returns
+    -------
+    tuple of Parameter
+        The parameters of :data:`PARAMETERS` that belong to ``model``.
+
+    Raises
+    ------
+    ValueError
+        If ``model`` is not one of :data:`MODELS`.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import parameters
+    >>> [p.name for p in parameters("physical")][:5]
+    ['mass', 'k_x', 'k_xc', 'k_zc', 'u_z0']
+    """
     if model not in MODELS:
         raise ValueError(f"model must be one of {list(MODELS)}, got {model!r}")
     return tuple(p for p in PARAMETERS if model in p.models)
 
 
 def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
-    """The names of :func:`parameters` of ``model``; ``optional=False`` leaves out the
-    optional ones that default to their twin (``Parameter.twin``: ``k_y``, ``alpha_y``)."""
+    """The names of :func:`parameters` of ``model``.
+
+    Parameters
+    ----------
+    model : str
+        One of :data:`MODELS`.
+    optional : bool, optional
+        False leaves out the optional ones that default to their twin
+        (:attr:`Parameter.twin`: ``k_y``, ``alpha_y``, ...).
+
+    Returns
+    -------
+    tuple of str
+        The names, in the schema's order.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import parameter_names
+    >>> parameter_names("dimensionless", optional=False)
+    ('alpha', 'beta', 'amplitude', 'zeta', 'eta_c', 'a_x', 'phase_x', 'a_y', 'phase_y',
+     'profile_exponent')
+    """
     return tuple(p.name for p in parameters(model) if optional or not p.twin)
 
 

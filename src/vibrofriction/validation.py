@@ -24,7 +24,27 @@ FloatOrArray = float | NDArray[np.float64]
 
 def range_text(minimum: float | None = None, strict: bool = False,
                maximum: float | None = None, allow_inf: bool = False) -> str:
-    """The allowed range in words, e.g. ``"finite and > 0"`` (:meth:`Range.text`)."""
+    """The allowed range in words, as the validator's errors say it.
+
+    Parameters
+    ----------
+    minimum, strict, maximum, allow_inf : optional
+        The range, as the fields of the same names of
+        :class:`~vibrofriction.schema.Range` give it.
+
+    Returns
+    -------
+    str
+        The range's sentence (:meth:`vibrofriction.schema.Range.text`).
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import range_text
+    >>> range_text(0.0, strict=True)
+    'finite and > 0'
+    >>> range_text(0.0, maximum=1.0)
+    'finite and in [0, 1]'
+    """
     return Range(minimum, strict, maximum, allow_inf).text()
 
 
@@ -39,10 +59,39 @@ def _floats(name: str, value: ArrayLike) -> NDArray[np.float64]:
 def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
             strict: bool = False, maximum: float | None = None,
             allow_inf: bool = False) -> NDArray[np.float64]:
-    """``value`` as a float array, or ValueError naming ``name``, the range and a bad value.
+    """Check a number or an array against a range.
 
-    ``minimum`` is exclusive when ``strict``; ``maximum`` is inclusive; ``allow_inf``
-    admits ``+inf`` (a rigid contact, ``beta = inf``) but never ``nan``.
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : array_like
+        The number(s) to check.
+    minimum, strict, maximum, allow_inf : optional
+        The range, as the fields of the same names of
+        :class:`~vibrofriction.schema.Range` give it: ``minimum`` is exclusive when
+        ``strict``, ``maximum`` inclusive, ``allow_inf`` admits ``+inf`` (a rigid
+        contact, ``beta = inf``) but never ``nan``.
+
+    Returns
+    -------
+    numpy.ndarray
+        ``value`` as a float array (0-d for a scalar).
+
+    Raises
+    ------
+    ValueError
+        Naming ``name``, the allowed range and the first bad value.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import checked
+    >>> checked("alpha", [1.0, 2.0], minimum=0.0, strict=True)
+    array([1., 2.])
+    >>> checked("alpha", [1.0, -2.0], minimum=0.0, strict=True)
+    Traceback (most recent call last):
+    ...
+    ValueError: alpha must be finite and > 0, got -2.0
     """
     arr = _floats(name, value)
     bad = np.isnan(arr)
@@ -62,8 +111,11 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
 
 def _checked_above(name: str, value: ArrayLike, other: str,
                    other_value: ArrayLike) -> NDArray[np.float64]:
-    """``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
-    allowed; ``nan`` never), elementwise."""
+    """Check that a value exceeds another, elementwise.
+
+    ``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
+    allowed; ``nan`` never), elementwise.
+    """
     low = np.asarray(other_value, dtype=float)
     arr = _floats(name, value)
     with np.errstate(invalid="ignore"):
@@ -77,24 +129,76 @@ def _checked_above(name: str, value: ArrayLike, other: str,
 
 
 def checked_beta(alpha: ArrayLike, beta: ArrayLike) -> NDArray[np.float64]:
-    """``beta`` as a float array, or ValueError unless ``beta > alpha`` (``inf`` allowed)."""
+    """Check ``beta > alpha`` elementwise (``beta = inf`` allowed).
+
+    Parameters
+    ----------
+    alpha, beta : array_like
+        The dimensionless stiffnesses of the pin and of the contact (eq. 7).
+
+    Returns
+    -------
+    numpy.ndarray
+        ``beta`` as a float array.
+
+    Raises
+    ------
+    ValueError
+        Unless ``beta > alpha`` wherever they are compared (``nan`` never passes).
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import checked_beta
+    >>> checked_beta(1.0, [10.0, float("inf")])
+    array([10., inf])
+    >>> checked_beta(1.0, 0.5)
+    Traceback (most recent call last):
+    ...
+    ValueError: beta must be > alpha (= 1.0) or math.inf, got 0.5
+    """
     return _checked_above("beta", beta, "alpha", alpha)
 
 
 def validated(values: Mapping[str, ArrayLike], *,
               ranges: Mapping[str, Range] | None = None) -> dict[str, NDArray[np.float64]]:
-    """The model's parameters ``values`` (scalars or arrays, by the names of
-    :data:`~vibrofriction.schema.PARAMETERS`) as float arrays, each checked against its
-    schema :class:`~vibrofriction.schema.Range`: the one check of a model parameter.
+    """The one check of the model's parameters.
 
+    Each of ``values`` is checked against its schema :class:`~vibrofriction.schema.Range`.
     Checked in the schema's order, so the first bad one named is the first in the
     schema; a parameter that must exceed another (``beta > alpha``) is compared with
     it elementwise where both are given, and against its own ``minimum`` otherwise.
     ``ranges`` replaces the schema's range of some parameters, for a closed form whose
     domain is not the model's (``amplitude <= 1``: no jumping).  An optional parameter
     (``Parameter.twin``: ``k_y``, ``alpha_y``, ...) given as None takes its twin's value,
-    which must be given too.  ValueError naming the
-    parameter, its range and the first bad value; or naming an unknown parameter.
+    which must be given too.
+
+    Parameters
+    ----------
+    values : mapping of str to array_like
+        Scalars or arrays by the names of :data:`~vibrofriction.schema.PARAMETERS`.
+    ranges : mapping of str to Range, optional
+        Ranges that replace the schema's for some parameters.
+
+    Returns
+    -------
+    dict of str to numpy.ndarray
+        The values as float arrays, in the order given.
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter, its range and the first bad value; or naming an unknown
+        parameter.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import validated
+    >>> validated({"alpha": 1.0, "beta": [10.0, 100.0]})
+    {'alpha': array(1.), 'beta': array([ 10., 100.])}
+    >>> validated({"alpha": 1.0, "beta": 0.5})
+    Traceback (most recent call last):
+    ...
+    ValueError: beta must be > alpha (= 1.0) or math.inf, got 0.5
     """
     unknown = [n for n in values if n not in PARAMETER]
     if unknown:
@@ -120,8 +224,31 @@ def validated(values: Mapping[str, ArrayLike], *,
 
 
 def checked_choice(name: str, value: object) -> str:
-    """``value`` if it is one of the allowed names of the choice ``name``
-    (:data:`~vibrofriction.schema.CHOICES`), else ValueError naming both."""
+    """Check that ``value`` is an allowed name of the choice ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A choice of :data:`~vibrofriction.schema.CHOICES` (``"inplane_on"``).
+    value : object
+        The name given.
+
+    Returns
+    -------
+    str
+        ``value``, unchanged.
+
+    Raises
+    ------
+    ValueError
+        Naming the choice and its allowed names, unless ``value`` is one of them.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import checked_choice
+    >>> checked_choice("inplane_on", "substrate")
+    'substrate'
+    """
     allowed = CHOICES[name].values
     if not (isinstance(value, str) and value in allowed):
         raise ValueError(f"{name} must be one of {', '.join(map(repr, allowed))}, "
@@ -130,6 +257,25 @@ def checked_choice(name: str, value: object) -> str:
 
 
 def as_float_or_array(x: ArrayLike) -> FloatOrArray:
-    """A Python float for a 0-d input, else a float array."""
+    """A Python float for a scalar, else a float array.
+
+    Parameters
+    ----------
+    x : array_like
+        A number or an array of numbers.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ``float(x)`` for a 0-d input, else ``x`` as a float array.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import as_float_or_array
+    >>> as_float_or_array(2)
+    2.0
+    >>> as_float_or_array([1, 2])
+    array([1., 2.])
+    """
     arr = np.asarray(x, dtype=float)
     return float(arr) if arr.ndim == 0 else arr

@@ -263,8 +263,11 @@ def _rigid(alpha, a, V, gamma, N, n_total, avg_start, initial, record):
 
 def fixed_step_damped(alpha, beta, a, V, zeta, eta_c, N, n_total, avg_start, initial,
                       record):
-    """One damped run: the window's sums of ``f`` and ``n``, per-period sums, history
-    (rows :data:`HISTORY_ROWS`: ``tau, x, x', f, e``; ``e = 0`` for a rigid contact)."""
+    """One damped run.
+
+    The window's sums of ``f`` and ``n``, per-period sums, history (rows :data:`HISTORY_ROWS`:
+    ``tau, x, x', f, e``; ``e = 0`` for a rigid contact).
+    """
     gamma = 2.0 * zeta * math.sqrt(alpha)
     if math.isinf(beta):
         return _rigid(alpha, a, V, gamma, N, n_total, avg_start, initial, record)

@@ -1,5 +1,7 @@
-"""Peer A: what a Python user would write today, ``scipy.integrate.solve_ivp`` phase by
-phase with terminal events for the stick/slip switches.
+"""Peer A: ``solve_ivp`` phase by phase, with events for the switches.
+
+What a Python user would write today, ``scipy.integrate.solve_ivp`` phase by phase with terminal
+events for the stick/slip switches.
 
 Damping (``docs/damping.md``): the pin dashpot ``gamma = 2 zeta sqrt(alpha)`` adds
 ``gamma (V - x')`` to the body's equation in every phase (a rigid stick then needs the
@@ -131,7 +133,9 @@ class _PhaseODE:
         return fun
 
     def events(self, phase, s):
-        """Event functions ``g`` that end the phase (``g`` falls through 0) and their
+        """The events that end a phase.
+
+        Event functions ``g`` that end the phase (``g`` falls through 0) and their
         derivatives ``g'`` (a minimum of ``g`` is where ``g'`` rises through 0).
         """
         a, k, al, V, gm = self.a, self.k, self.alpha, self.V, self.gamma
@@ -257,7 +261,9 @@ class _PhaseODE:
 
 
 class _ViscousPhaseODE:
-    """The phases of a finite Kelvin-Voigt contact (``c = eta_c k > 0``), state
+    """The phases of a finite Kelvin-Voigt contact.
+
+    The phases of a finite Kelvin-Voigt contact (``c = eta_c k > 0``), state
     ``[y, u, e, I_f, I_n]`` with ``e = x - x_c`` the elongation of the contact spring.
 
     ``f = k e + c (u - x_c')``. Stick (``x_c' = 0``): ``e' = u``, ``f = k e + c u``;
@@ -344,8 +350,11 @@ class _ViscousPhaseODE:
         return [g_halt], [dg_halt]
 
     def entry_phase(self, t, z):
-        """The phase of a contact state at ``t`` (start): stick if ``|F| < n``, else slip
-        along ``F``; on the edge ``|F| = n``, stick if ``|F|`` falls below ``n`` in stick."""
+        """The phase of a contact state at ``t`` (start).
+
+        Stick if ``|F| < n``, else slip along ``F``; on the edge ``|F| = n``, stick if ``|F|`` falls
+        below ``n`` in stick.
+        """
         z = z.copy()
         n = self.n(t)
         F = self.k * z[2] + self.c * z[1]
@@ -361,8 +370,11 @@ class _ViscousPhaseODE:
         return z
 
     def touchdown(self, t0, z):
-        """``n = 0``, so ``f`` starts at 0: stick only if ``F = k e + c u`` is 0, else
-        slip in the direction of the contact point's velocity ``F / c``."""
+        """``n = 0``, so ``f`` starts at 0.
+
+        Stick only if ``F = k e + c u`` is 0, else slip in the direction of the contact point's
+        velocity ``F / c``.
+        """
         F = self.k * z[2] + self.c * z[1]
         if F == 0.0:
             return _STICK, 0.0, z
@@ -587,8 +599,11 @@ def _fastest_frequency(ode: _PhaseODE | _ViscousPhaseODE) -> float:
 
 def _initial_state(initial, alpha: float, beta: float, V: float,
                    viscous: bool = False) -> np.ndarray:
-    """``[y, x', f, I_f, I_n]`` at ``tau = 0`` (docs/model.md, initial states), or
-    ``[y, x', e, I_f, I_n]`` for a viscous contact (``e = 1/k`` when sliding)."""
+    """The initial state at ``tau = 0``.
+
+    ``[y, x', f, I_f, I_n]`` at ``tau = 0`` (docs/model.md, initial states), or
+    ``[y, x', e, I_f, I_n]`` for a viscous contact (``e = 1/k`` when sliding).
+    """
     if initial_code(initial) == INITIAL_SLIDING:
         return np.array([-1.0 / alpha, V, 1.0 / (beta - alpha) if viscous else 1.0, 0.0, 0.0])
     return np.zeros(5)

@@ -1,5 +1,7 @@
-"""Peer B: fixed-step explicit dynamics in numba (velocity Verlet with a return-mapping
-Jenkins element; Moreau time-stepping for a rigid contact).
+"""Peer B: fixed-step explicit dynamics in numba.
+
+Fixed-step explicit dynamics in numba (velocity Verlet with a return-mapping Jenkins element; Moreau
+time-stepping for a rigid contact).
 
 Without dashpots (``zeta = eta_c = 0``, or ``zeta = 0`` with a rigid contact) the
 undamped schemes of this module run, unchanged; otherwise the damped scheme of
@@ -246,8 +248,10 @@ def _steps(alpha, beta, zeta, eta_c, steps_per_period) -> int:
 
 
 def _run(alpha, beta, amplitude, V, zeta, eta_c, N, n_total, avg_start, initial, record):
-    """``(sf, sn, pf, pn, tau, x, x', f, n, e)``: the undamped scheme unchanged, or the
-    damped one."""
+    """``(sf, sn, pf, pn, tau, x, x', f, n, e)``.
+
+    The undamped scheme unchanged, or the damped one.
+    """
     if _undamped(beta, zeta, eta_c):
         out = _fixed_step(alpha, beta, amplitude, V, N, n_total, avg_start, initial, record)
         # the Jenkins element: e = f / k at every step (0 for a rigid contact)

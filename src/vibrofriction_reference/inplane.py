@@ -185,8 +185,11 @@ class _Model:
 
     # -- forces ----------------------------------------------------------------
     def contact_force(self, phase, t, z):
-        """``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``phase`` (``lam`` the slip
-        speed; ``e'`` is 0 in Jenkins slip, where the state holds ``d``)."""
+        """The contact forces and rates of a state in a phase.
+
+        ``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``phase`` (``lam`` the slip
+        speed; ``e'`` is 0 in Jenkins slip, where the state holds ``d``).
+        """
         _, _, _, _, vsx, vsy = self.drive(t)
         wx, wy = z[2] - vsx, z[3] - vsy
         k, c = self.k, self.c
@@ -430,7 +433,9 @@ def inplane_run(
     max_events_per_period: int = 200,
     steps_per_fastest_period: float = 4.0,
 ) -> InplaneRun:
-    """Integrate the in-plane model (module docstring) over ``transient_periods +
+    """Integrate the in-plane model phase by phase and average it.
+
+    Integrate the in-plane model (module docstring) over ``transient_periods +
     average_periods`` drive periods with DOP853 (``rtol``, ``atol``) phase by phase and
     average over the last ``average_periods``.
 
@@ -538,8 +543,11 @@ def inplane_run(
 
 
 def _spread(values: np.ndarray, weights: np.ndarray) -> float:
-    """Window spread of a ratio of means: halves' difference or 3 standard errors of ten
-    blocks, whichever is larger (0 for fewer than 2 periods)."""
+    """Window spread of a ratio of means.
+
+    Halves' difference or 3 standard errors of ten blocks, whichever is larger (0 for fewer than 2
+    periods).
+    """
     m = len(values)
     if m < 2:
         return 0.0
@@ -564,11 +572,14 @@ def inplane_mean(
     tolerance_check: bool = True,
     **model,
 ) -> InplaneMean:
-    """Steady-state ``<f_x>/<n>`` and ``<f_y>/<n>`` with error estimates (see
+    """The steady-state friction ratios of the in-plane model, with error estimates.
+
+    Steady-state ``<f_x>/<n>`` and ``<f_y>/<n>`` with error estimates (see
     :class:`InplaneMean`) from :func:`inplane_run`; ``model`` are its keywords (``zeta,
     eta_c, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y, inplane_on, initial``).
     ``tolerance_check`` adds a second run at 1000 times looser tolerances (about a third
-    of the cost) whose difference is added to the errors."""
+    of the cost) whose difference is added to the errors.
+    """
     run = inplane_run(alpha, beta, amplitude, V, transient_periods, average_periods, rtol,
                       atol, **model)
     mu_err = _spread(run.period_fx, run.period_n)

@@ -58,10 +58,13 @@ __all__ = ["MDRMean", "MDRReference", "mdr_mean", "mdr_reference"]
 @njit(cache=True)
 def _row(alpha, beta, a, V, gamma, n_exp, M, N, n_total, avg_start, initial, record_from,
          a_x, phase_x, holder):
-    """One run. Returns the trapezoid sums of sum_i f_i and sum_i n_i over the averaging
-    window, their per-period sums and, from step ``record_from`` on, every spring's f_i
-    and n_i (arrays (steps, M)). ``a_x``, ``phase_x``: the in-plane oscillation ``X``, of
-    the holder if ``holder`` else of the substrate (module docstring)."""
+    """One run.
+
+    Returns the trapezoid sums of sum_i f_i and sum_i n_i over the averaging window, their
+    per-period sums and, from step ``record_from`` on, every spring's f_i and n_i (arrays (steps,
+    M)). ``a_x``, ``phase_x``: the in-plane oscillation ``X``, of the holder if ``holder`` else of
+    the substrate (module docstring).
+    """
     k = beta - alpha
     flat = math.isinf(n_exp)
     xi_max = 1.0 if flat else (1.0 + a) ** (1.0 / n_exp)
@@ -205,10 +208,12 @@ def _steps(alpha, beta, steps_per_period):
 
 @dataclass(frozen=True)
 class MDRMean:
-    """One run of :func:`mdr_mean`: ``mu_ratio = <F_x>/(mu0 <F_N>)``,
-    ``mean_normal_ratio = <F_N>/F_N0`` (of the discrete row), the per-period means of
-    ``sum f_i`` and ``sum n_i`` over the averaging window, the resolution, and (if asked)
-    every spring's ``f_i``, ``n_i`` over the last period (arrays (steps + 1, springs))."""
+    """One run of :func:`mdr_mean`.
+
+    ``mu_ratio = <F_x>/(mu0 <F_N>)``, ``mean_normal_ratio = <F_N>/F_N0`` (of the discrete row), the
+    per-period means of ``sum f_i`` and ``sum n_i`` over the averaging window, the resolution, and
+    (if asked) every spring's ``f_i``, ``n_i`` over the last period (arrays (steps + 1, springs)).
+    """
 
     mu_ratio: float
     mean_normal_ratio: float
@@ -262,8 +267,11 @@ def mdr_mean(alpha: float, beta: float, amplitude: float, V: float,
 
 @dataclass(frozen=True)
 class MDRReference:
-    """:func:`mdr_reference`: the finest run's ``mu_ratio`` and ``mean_normal_ratio`` with
-    error bars (the differences from the coarser run), and both runs."""
+    """The result of :func:`mdr_reference`.
+
+    The finest run's ``mu_ratio`` and ``mean_normal_ratio`` with error bars (the differences from
+    the coarser run), and both runs.
+    """
 
     mu_ratio: float
     mu_error: float
@@ -280,10 +288,12 @@ def mdr_reference(alpha: float, beta: float, amplitude: float, V: float,
                   initial: int | str = INITIAL_SLIDING, zeta: float = 0.0, *,
                   a_x: float = 0.0, phase_x: float = 0.0,
                   inplane_on: str = "substrate") -> MDRReference:
-    """The row at two resolutions ``(springs, steps_per_period)``; the second is reported,
-    and the error bar is ``|fine - coarse|`` (for a second-order scheme refined by 2, three
-    times the fine run's own error, measured in docs/contact_geometry.md). ``a_x``,
-    ``phase_x``, ``inplane_on`` as in :func:`mdr_mean`."""
+    """The row at two resolutions ``(springs, steps_per_period)``.
+
+    The second is reported, and the error bar is ``|fine - coarse|`` (for a second-order scheme
+    refined by 2, three times the fine run's own error, measured in docs/contact_geometry.md).
+    ``a_x``, ``phase_x``, ``inplane_on`` as in :func:`mdr_mean`.
+    """
     runs = tuple(mdr_mean(alpha, beta, amplitude, V, profile_exponent, springs, steps,
                           transient_periods, average_periods, initial, zeta, a_x=a_x,
                           phase_x=phase_x, inplane_on=inplane_on)

@@ -63,8 +63,11 @@ def check_parameters(alpha, beta, amplitude, V) -> tuple[float, float, float, fl
 
 
 def check_damping(zeta, eta_c) -> tuple[float, float]:
-    """The pin's damping ratio and the contact's loss factor as floats, or ValueError
-    naming the one that is negative or not finite."""
+    """The damping ratio and the loss factor, checked.
+
+    The pin's damping ratio and the contact's loss factor as floats, or ValueError
+    naming the one that is negative or not finite.
+    """
     out = []
     for name, value in (("zeta", zeta), ("eta_c", eta_c)):
         value = float(value)
@@ -75,8 +78,11 @@ def check_damping(zeta, eta_c) -> tuple[float, float]:
 
 
 def check_count(name: str, value, minimum: int) -> int:
-    """``value`` as an int, or ValueError naming ``name`` unless it is a whole number
-    ``>= minimum``."""
+    """``value`` as a whole number ``>= minimum``.
+
+    ``value`` as an int, or ValueError naming ``name`` unless it is a whole number
+    ``>= minimum``.
+    """
     try:
         count = int(value)
     except (TypeError, ValueError, OverflowError):

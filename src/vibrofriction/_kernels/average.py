@@ -76,7 +76,8 @@ def last_window(acc, ring_c, k, p, win):
 def _settling(k, mu_first, mu, err, rate):
     """Periods until the p-period means stay within ``err`` of the orbit's ``mu``: ``k``,
     the period of a Newton jump whose last window mean was ``mu_first``, plus the periods
-    the motion from there needs at the contraction ``rate`` (none when it is within)."""
+    the motion from there needs at the contraction ``rate`` (none when it is within).
+    """
     e0 = abs(mu_first - mu)
     if e0 > err and 0.0 < rate < 1.0:
         return k + math.log(err / e0) / math.log(rate)

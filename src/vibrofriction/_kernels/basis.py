@@ -126,7 +126,8 @@ def resonant(m, t, ct, st, h1, h2):
 def basis_values(m, t, with_cs, with_exp):
     """The nine basis functions at ``t`` (``C = S = 0`` unless ``with_cs``, the
     relaxation 0 unless ``with_exp``).  At ``t = 0`` (a search from the segment start)
-    they are exact without a transcendental: ``C(0) = S(0) = 0``, ``h2(0) = 1`` in ``EXP``."""
+    they are exact without a transcendental: ``C(0) = S(0) = 0``, ``h2(0) = 1`` in ``EXP``.
+    """
     if t == 0.0:
         return (1.0, 0.0, 1.0, 0.0, 1.0, 1.0 if m[0] == EXP else 0.0, 0.0, 0.0,
                 1.0 if with_exp else 0.0)
@@ -267,7 +268,8 @@ def sup_bound(c, m, T):
 @jit_inline
 def homogeneous_integrals(m, t, h1, h2):
     """``(A, B, d)``: the integrals of ``h1``, ``h2`` over ``[0, t]`` are ``A/d``, ``B/d``
-    (``h1``, ``h2`` their values at ``t``, used outside ``EXP``)."""
+    (``h1``, ``h2`` their values at ``t``, used outside ``EXP``).
+    """
     if m[0] == EXP:
         return math.expm1(m[4] * t) / m[4], math.expm1(m[5] * t) / m[5], 1.0
     sig = m[1]
@@ -277,7 +279,8 @@ def homogeneous_integrals(m, t, h1, h2):
 @jit_inline
 def _integral(c, m, t, ct, st, h1, h2, cc, ss):
     """:func:`integral` from the basis values at ``t`` (``h1``, ``h2`` needed outside ``EXP``
-    where ``g`` has free-motion or resonant terms, ``cc``, ``ss`` where it has resonant ones)."""
+    where ``g`` has free-motion or resonant terms, ``cc``, ``ss`` where it has resonant ones).
+    """
     v = c[0] * t + 0.5 * c[1] * t * t + c[2] * st + c[3] * (1.0 - ct)
     cs = c[6] != 0.0 or c[7] != 0.0
     if c[4] != 0.0 or c[5] != 0.0 or cs:
@@ -314,7 +317,8 @@ def integral(c, m, t):
 @jit
 def integral_basis(c, m, t, bv):
     """:func:`integral` with the basis values ``bv`` at ``t`` known (:func:`basis_values`,
-    with ``C, S`` where ``c`` has resonant terms): no transcendental evaluated again."""
+    with ``C, S`` where ``c`` has resonant terms): no transcendental evaluated again.
+    """
     return _integral(c, m, t, bv[2], bv[3], bv[4], bv[5], bv[6], bv[7])
 
 

@@ -115,7 +115,8 @@ def next_boundary(theta, a, th_off, th_on):
 @jit
 def stick_coefficients(M, theta, y, xd, e):
     """Force and elongation coefficients in stick from phase ``theta`` and their mode
-    (rigid when k = inf)."""
+    (rigid when k = inf).
+    """
     if math.isinf(M[M_K]):
         return rigid_stick_force(M, theta, y), M[M_SLIP], ZERO9
     ec = stick_elongation(M, theta, y, xd, e)
@@ -205,7 +206,8 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
 @jit
 def state_at(M, phase, theta, y, xd, e, ed, t):
     """``(y, x', e, e', f)`` a time ``t`` into a phase that started at ``theta`` in
-    ``(y, x', e)`` (``ed``: the exact ``e'`` at the start where known, else nan)."""
+    ``(y, x', e)`` (``ed``: the exact ``e'`` at the start where known, else nan).
+    """
     y1, xd1, e1, ed1, f1, _ = _state_basis(M, phase, theta, y, xd, e, ed, t)
     return y1, xd1, e1, ed1, f1
 
@@ -213,7 +215,8 @@ def state_at(M, phase, theta, y, xd, e, ed, t):
 @jit
 def _state_basis(M, phase, theta, y, xd, e, ed, t):
     """:func:`state_at` and the basis values at ``t`` it used (:func:`.basis.basis_values` of
-    the phase's mode; zeros for a rigid stick), for the integrals over the piece."""
+    the phase's mode; zeros for a rigid stick), for the integrals over the piece.
+    """
     V = M[M_V]
     if phase == STICK:
         if math.isinf(M[M_K]):
@@ -262,7 +265,8 @@ def _stick_event(fc, mst, theta, a, T):
 @jit_inline
 def _slip_event(vr, m, T):
     """The first zero of the contact point's slip velocity ``vr`` within ``T``:
-    ``(t or -1, immediate)``."""
+    ``(t or -1, immediate)``.
+    """
     ok, ts = start_margin(vr, m, T)
     te = first_root(vr, m, ts, T) if ok else 0.0
     return te, te >= 0.0 and te <= ts
@@ -271,7 +275,8 @@ def _slip_event(vr, m, T):
 @jit_inline
 def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1, bv):
     """``(int_f, int_n)``: the integrals of ``f`` and ``n`` over a piece of length ``t``
-    (``bv``: the basis values at ``t`` of :func:`_state_basis`)."""
+    (``bv``: the basis values at ``t`` of :func:`_state_basis`).
+    """
     a = M[M_A]
     if zeno or phase == FLIGHT:
         return 0.0, (0.0 if phase == FLIGHT else normal_integral(theta, t, a))
@@ -287,7 +292,8 @@ def _integrals(M, phase, zeno, theta, t, fc, mst, ec, e, e1, bv):
 def _transition(M, phase, theta1, y1, xd1, e1, ed1, f1, es, Tn, avoid):
     """The phase after the event that ended ``phase`` with the state ``(y1, xd1, e1, ed1,
     f1)`` (:func:`state_at`): the state is projected onto the event surface, then
-    :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok, event)``."""
+    :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok, event)``.
+    """
     rigid = math.isinf(M[M_K])
     if phase == STICK:
         # stick -> slip in direction es: project onto |f| = n
@@ -307,7 +313,8 @@ def _transition(M, phase, theta1, y1, xd1, e1, ed1, f1, es, Tn, avoid):
 @jit
 def _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1):
     """The phase after reaching lift-off, touch-down or the section without an event.
-    Returns ``(phase, e, e', f, ok)``."""
+    Returns ``(phase, e, e', f, ok)``.
+    """
     if bkind == EV_LIFTOFF:
         if M[M_C] == 0.0:
             return FLIGHT, 0.0, 0.0, 0.0, True
@@ -322,7 +329,8 @@ def _boundary(M, bkind, ph1, theta1, y1, xd1, e1, ed1, f1):
 @jit
 def free_approach(theta, phase, a, bkind):
     """Whether a segment starting at ``theta`` in ``phase`` moves freely to the boundary
-    ``bkind`` (the Zeno guard of :func:`segment`)."""
+    ``bkind`` (the Zeno guard of :func:`segment`).
+    """
     return (phase != FLIGHT and bkind != EV_SECTION
             and normal_force(theta, a) <= ZENO_N * (1.0 + a))
 
@@ -380,7 +388,8 @@ def segment(theta, y, xd, e, ed, phase, M):
 def to_kernel_frame(offset, y, xd):
     """A section state ``(y, x')`` of the laboratory frame in the kernels' frame: relative
     to an oscillating substrate, whose position and velocity at ``tau = 2 pi k`` are
-    ``offset`` (:func:`.phases.frame_offset`; the identity where it is 0)."""
+    ``offset`` (:func:`.phases.frame_offset`; the identity where it is 0).
+    """
     if offset[0] != 0.0 or offset[1] != 0.0:
         return y - offset[0], xd - offset[1]
     return y, xd
@@ -463,7 +472,8 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, a_x, p
 def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, taus, out):
     """Evaluate the closed forms at sorted times ``taus`` into ``out`` (shape ``(len(taus),
     N_SMP_COLUMNS)``, columns ``codes.SMP_*``: y, x', f, n, phase, e; ``y``, ``x'`` in the
-    kernels' frame)."""
+    kernels' frame).
+    """
     M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
     j = 0
     for i in range(taus.shape[0]):

@@ -22,13 +22,15 @@ def jit(func: F) -> F:
     """Compile ``func`` in nopython mode with the project's settings.
 
     Typed as returning ``func`` itself: the dispatcher is called as the function it
-    compiles, so that mypy checks each call against the kernel's signature."""
+    compiles, so that mypy checks each call against the kernel's signature.
+    """
     return numba.njit(cache=_CACHE, fastmath=False, error_model="numpy")(func)  # type: ignore[return-value]
 
 
 def jit_inline(func: F) -> F:
     """:func:`jit`, the body inlined into each caller at Numba IR level: for the helpers
-    of a hot path, so that splitting a kernel by job costs no call."""
+    of a hot path, so that splitting a kernel by job costs no call.
+    """
     return numba.njit(cache=_CACHE, fastmath=False, error_model="numpy",  # type: ignore[return-value]
                       inline="always")(func)
 
@@ -39,7 +41,8 @@ def stack_matrix(rows: int, cols: int) -> np.ndarray:
 
     Compiled, with literal ``rows`` and ``cols``, it lives on that function's stack (no heap
     allocation: ~40 ns saved per call of a hot kernel); it must not be returned or stored.
-    As plain Python (``NUMBA_DISABLE_JIT=1``) it is ``np.empty``."""
+    As plain Python (``NUMBA_DISABLE_JIT=1``) it is ``np.empty``.
+    """
     return np.empty((rows, cols))
 
 

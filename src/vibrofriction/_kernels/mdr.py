@@ -89,7 +89,8 @@ TWO_PI = 2.0 * math.pi
 def row_geometry(a, n_exp, M):
     """``(g, w, dxi, tau_off, tau_on, area)``: the springs' gaps, the normal weight, the
     cell width, the lift-off and touch-down phases (``-1`` if the spring never leaves, or
-    never touches) and each spring's share of the disc of the largest contact radius."""
+    never touches) and each spring's share of the disc of the largest contact radius.
+    """
     flat = math.isinf(n_exp)
     xi_max = 1.0 if flat else (1.0 + a) ** (1.0 / n_exp)
     dxi = xi_max / M
@@ -126,7 +127,8 @@ def normal_integral_row(a, g, w, tau_off):
 @jit
 def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
     """Coefficients of ``y(t)`` on the segment from phase ``theta`` and its mode; ``hc``,
-    ``hs`` the in-plane force ``h = hc cos tau + hs sin tau`` on the body (0: none)."""
+    ``hs`` the in-plane force ``h = hc cos tau + hs sin tau`` on the body (0: none).
+    """
     w0sq = alpha + K
     m = make_mode(w0sq, 0.5 * gamma, 0.0)
     c0 = -(E0 - K * y0) - Sw + Swg
@@ -162,7 +164,8 @@ def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, ctau, stau):
     ``w g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
     ``w g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
     backwards (the same for every spring of the group: ``n_i' = -w a sin tau``);
-    ``ctau``, ``stau``: ``cos tau``, ``sin tau``."""
+    ``ctau``, ``stau``: ``cos tau``, ``sin tau``.
+    """
     if kind == 0:
         return w * (1.0 + a * ctau) - k * (y - y0 + V * t) - cp
     if kind == 1:
@@ -190,7 +193,8 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
     ``sth`` the cosine and sine of the segment's start phase) to round-off: Newton steps
     (the slope in closed form) kept inside the bracket (else regula falsi, Illinois), a
     converged step pushed just across the root to close the bracket; returns the right
-    end of the final bracket (where the function is <= 0)."""
+    end of the final bracket (where the function is <= 0).
+    """
     ddc = derivative(dc, m)
     side = 0
     t = (ta * fb - tb * fa) / (fb - fa)
@@ -238,7 +242,8 @@ _GL_X, _GL_W = np.polynomial.legendre.leggauss(8)
 @jit
 def _record_state(rec, ri, acc, y, yd, tau, u, st, e, g, w, k, a):
     """Write sample ``ri`` of ``rec``: the body at ``(y, y')``, phase ``tau``, the stuck
-    springs' elongations ``e_i + u``, the integrals ``acc``."""
+    springs' elongations ``e_i + u``, the integrals ``acc``.
+    """
     body, fs, sts = rec[1], rec[2], rec[3]
     F = 0.0
     N = 0.0
@@ -279,7 +284,8 @@ def _accumulate(acc, c, dc, m, cs, theta, ta, tb, h, alpha, gamma, V, a, w, k, W
     one, ``ip = (c, d, holder)`` (``X = c cos tau - d sin tau``), the laboratory's
     definitions of :mod:`vibrofriction.solver.energy` (substrate: ``V (-alpha (y + X) -
     gamma (y' + X')) - X' sum f_i`` and ``gamma (y' + X')^2``; holder: ``(V + X') (alpha
-    (X - y) + gamma (X' - y'))`` and ``gamma (X' - y')^2``)."""
+    (X - y) + gamma (X' - y'))`` and ``gamma (X' - y')^2``).
+    """
     if tb <= ta:
         return
     ba = basis_values(m, ta, cs, False)
@@ -334,7 +340,8 @@ def _record_segment(rec, ri, acc, c, dc, m, cs, t0, T, theta, alpha, gamma, K, V
                     k, st, e, y0, hc, hs):
     """Record the samples of ``rec`` at times in ``[t0, t0 + T)`` of the segment that starts
     at time ``t0`` (phase ``theta``, body ``y0``, closed form ``c``) and add the segment's
-    integrals to ``acc``; returns the next sample's index."""
+    integrals to ``acc``; returns the next sample's index.
+    """
     rtau = rec[0]
     ip = rec[4]
     Wc = 0.0
@@ -394,7 +401,8 @@ def _tree_set(tree, P, i, v):
 def _tree_collect(tree, P, thr, stack, out, n, skip):
     """Append to ``out`` (from ``n``) the leaves of ``tree`` at or above ``thr``, except
     where ``skip``; returns the new count. Visits only the branches whose maximum is at or
-    above ``thr``: O(found log M)."""
+    above ``thr``: O(found log M).
+    """
     if tree[1] < thr:
         return n
     top = 0
@@ -420,7 +428,8 @@ def _tree_collect(tree, P, thr, stack, out, n, skip):
 def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
     """Move spring ``i`` to the state ``new`` (a stuck one with ``eh_i = eh_new``), keeping
     the members of each state, the running sums and the stuck springs' max-trees of
-    ``w g_i +- k eh_i`` up to date: O(log M)."""
+    ``w g_i +- k eh_i`` up to date: O(log M).
+    """
     old = st[i]
     if old == STICK:
         sums[S_EH] -= eh[i]
@@ -460,7 +469,8 @@ def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, ar
 @jit
 def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
     """The bookkeeping of :func:`_switch` from scratch (``U = 0``, ``eh = e``): at every
-    section, so that the running sums carry no round-off from period to period."""
+    section, so that the running sums carry no round-off from period to period.
+    """
     cnt[:] = 0
     sums[:] = 0.0
     tp[:] = -np.inf
@@ -495,7 +505,8 @@ def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
 @jit
 def _row_setup(a, n_exp, M):
     """The row's fixed data: :func:`row_geometry`, ``int sum n_i`` over a period and the
-    contact events sorted by phase (``ev_ph``, the spring ``ev_i``, touch-down ``ev_on``)."""
+    contact events sorted by phase (``ev_ph``, the spring ``ev_i``, touch-down ``ev_on``).
+    """
     g, w, dxi, tau_off, tau_on, area = row_geometry(a, n_exp, M)
     nint = normal_integral_row(a, g, w, tau_off)
     nl = 0
@@ -522,7 +533,8 @@ def _row_setup(a, n_exp, M):
 def _scratch(M):
     """Work arrays of :func:`_period`: the max-trees (``P`` leaves, a stack for their
     search), each state's members, the running sums, ``eh``, the springs switched at the
-    last event, buffers; the four groups' values, roots and flags."""
+    last event, buffers; the four groups' values, roots and flags.
+    """
     P = 1
     while P < M:
         P *= 2
@@ -542,7 +554,8 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             frac, viol, rec, ri, acc):
     """One period of the row from the section state ``(y, y', st, e)`` (``st``, ``e``
     modified in place; :func:`run_periods`). Returns ``(y, y', int y, events, no progress,
-    ri, viol)``; ``frac`` gets the period's area fractions."""
+    ri, viol)``; ``frac`` gets the period's area fractions.
+    """
     g, w, dxi, tau_off, tau_on, area, nint, ev_ph, ev_i, ev_on = geo
     (P, stack, tp, tm, memb, cnt, pos, sums, eh, fl, buf, taken, e_cur, gprev, groot, gon,
      gfresh) = scr
@@ -881,7 +894,8 @@ def _anderson_step(xs, gs, nh, out):
     """Anderson mixing (type II, no damping) from the ``nh`` iterates ``xs`` and their
     images ``gs`` (rows, oldest first): the combination of the images whose residuals'
     combination is smallest (least squares as ``numpy.linalg.lstsq``, ``rcond`` its
-    default); written to ``out``."""
+    default); written to ``out``.
+    """
     n = xs.shape[1]
     dF = np.empty((n, nh - 1))
     for q in range(nh - 1):
@@ -913,7 +927,8 @@ def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_peri
     Returns ``(periods, converged, pf, nint, frac, viol, events, y, yd)``: the per-period
     ``int sum f_i``, ``int sum n_i`` over a period, the last period's area fractions, the
     largest ``|f_i| - n_i`` at the scan points, the last period's events (``-1``: no
-    progress) and the final body state."""
+    progress) and the final body state.
+    """
     geo = _row_setup(a, n_exp, M)
     scr = _scratch(M)
     pf = np.zeros(max_periods)

@@ -53,7 +53,8 @@ def _unpack(z, ph, M):
 @jit
 def _free_dimension(ph, M):
     """Free coordinates on the section: ``y`` (rigid stick), ``y, x'`` (elastic slip),
-    ``y, x', e`` (stick, viscoelastic slip)."""
+    ``y, x', e`` (stick, viscoelastic slip).
+    """
     rigid = math.isinf(M[M_K])
     if ph == STICK:
         return 1 if rigid else 3
@@ -95,7 +96,8 @@ def _step(z, dz, nd, limit, alpha):
     """``z += cut dz``, the Newton step ``dz`` cut so that it moves the body ``(y, x')`` by
     at most ``limit``, as the divergence guard watches it; ``e`` is not limited (at
     ``beta = 1e6`` a step of 300 ``n/k`` in ``e`` is normal and comes back).  Returns
-    ``cut``."""
+    ``cut``.
+    """
     body = alpha * abs(dz[0]) + (abs(dz[1]) if nd > 1 else 0.0)
     cut = min(1.0, limit / body) if body > 0.0 else 1.0
     for j in range(nd):
@@ -242,7 +244,8 @@ def orbit_multiplier(z, p, M, max_events, acc):
     ``z1`` and the accumulators into ``acc``.  ``nan`` when the Jacobian cannot be
     formed in one chart (the image is in another phase, an event is tangential or a
     transition degenerate).  Returns ``(multiplier, ok, events, work)``, ``ok`` False when
-    the integration did not finish."""
+    the integration did not finish.
+    """
     ph = int(z[3])
     J = np.zeros((3, 3))
     G = np.zeros(3)

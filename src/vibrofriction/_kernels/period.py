@@ -29,7 +29,8 @@ C_EVENTS, C_DEGENERATE, C_ZERO = 0, 1, 2
 @jit
 def accumulate(acc, count, ph, t, ev, ok, i_f, i_n):
     """Add a segment of length ``t`` in phase ``ph`` (integrals ``i_f``, ``i_n``, ended by
-    event ``ev``, ``ok`` False if its transition was degenerate) to ``acc`` and ``count``."""
+    event ``ev``, ``ok`` False if its transition was degenerate) to ``acc`` and ``count``.
+    """
     acc[A_F] += i_f
     acc[A_N] += i_n
     if ph == STICK:
@@ -95,7 +96,8 @@ def elapsed(acc):
 @jit
 def advance_counted(z, acc, count, M, max_events):
     """:func:`advance_period` and its work: returns ``(ok, work)``, ``work`` 1 drive period,
-    or the fraction of one integrated before the integration stopped."""
+    or the fraction of one integrated before the integration stopped.
+    """
     t0 = elapsed(acc)
     if advance_period(z, acc, count, M, max_events):
         return True, 1.0

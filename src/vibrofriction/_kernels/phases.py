@@ -100,7 +100,8 @@ def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
 @jit
 def frame_offset(a_x, phase_x, on_substrate):
     """``(X, X')`` at ``tau = 2 pi k``: the offset of the kernels' frame (relative to an
-    oscillating substrate) from the laboratory's; 0 when the holder oscillates."""
+    oscillating substrate) from the laboratory's; 0 when the holder oscillates.
+    """
     if a_x == 0.0 or not on_substrate:
         return 0.0, 0.0
     return a_x * math.cos(phase_x), -a_x * math.sin(phase_x)
@@ -124,7 +125,8 @@ def inplane_force(M, tau):
 def _periodic_response(m, wr, wi):
     """``Z = W / P`` of the harmonic force ``Re(W e^{it})``, ``W = wr + i wi``, on the
     oscillator of mode ``m`` (``P = w0^2 - 1 + 2 i sigma``): ``(Zr, Zi, near)``, ``near``
-    where ``|P|`` is within ``RESONANT_BAND`` (use the responses ``C``, ``S`` instead)."""
+    where ``|P|`` is within ``RESONANT_BAND`` (use the responses ``C``, ``S`` instead).
+    """
     pr = m[7] - 1.0
     pi = 2.0 * m[1]
     p2 = pr * pr + pi * pi
@@ -237,7 +239,8 @@ def stick_force(M, ecoef):
 @jit
 def rigid_stick_force(M, theta, y0):
     """``f(t) = -alpha y + gamma V + h`` with ``y = y0 - V t`` (rigid contact, body at rest
-    relative to the substrate)."""
+    relative to the substrate).
+    """
     alpha, V = M[M_ALPHA], M[M_V]
     h0, h1 = inplane_force(M, theta) if forced(M) else (0.0, 0.0)
     return (-alpha * y0 + M[M_GAMMA] * V, alpha * V, h0, h1, 0.0, 0.0, 0.0, 0.0, 0.0)

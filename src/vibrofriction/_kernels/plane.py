@@ -137,7 +137,8 @@ def normal_force(a, t):
 @jit
 def drive(P, t):
     """``(D_x, D_y, h_x', h_y', v_sx, v_sy)``: the holder's offset from ``(V tau, 0)``, its
-    velocity, and the substrate velocity at ``t``."""
+    velocity, and the substrate velocity at ``t``.
+    """
     ax, ay = P[P_AX], P[P_AY]
     cx, sx = math.cos(t + P[P_PX]), math.sin(t + P[P_PX])
     cy, sy = math.cos(t + P[P_PY]), math.sin(t + P[P_PY])
@@ -173,7 +174,8 @@ def contact(mode, P, t, z):
 @jit
 def max_step(P):
     """The longest Runge-Kutta step: an eighth of the fastest natural period (the body
-    on its spring, on both springs, or the contact's relaxation ``k/c``)."""
+    on its spring, on both springs, or the contact's relaxation ``k/c``).
+    """
     al = max(P[P_ALPHA], P[P_ALPHA_Y])
     w = max(1.0, math.sqrt(al), math.sqrt(al + P[P_K]))
     if P[P_C] > 0.0:
@@ -213,7 +215,8 @@ def switch_function(mode, P, t, z):
 def rk_step(mode, P, t, z, k1, h, znew, k7, K):
     """One Dormand-Prince step of length ``h`` from ``(t, z)`` (``k1 = f(t, z)``):
     ``znew``, ``k7 = f(t + h, znew)``; returns the error estimate's components in
-    ``K[6]``.  ``K`` is (7, N_Z) scratch."""
+    ``K[6]``.  ``K`` is (7, N_Z) scratch.
+    """
     tmp = K[6]
     for i in range(N_Z):
         tmp[i] = z[i] + h * _A21 * k1[i]
@@ -266,7 +269,8 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
     """Integrate ``mode`` from ``t`` towards ``t1`` until its switch function falls
     through 0 (located to round-off) or ``t1``.  ``z`` is updated in place.  Returns
     ``(t_end, event, h)``.  ``acc`` accumulates the time in stick, slip, flight and in
-    slip with ``f_x < 0`` (from step ends, linearly interpolated at a sign change)."""
+    slip with ``f_x < 0`` (from step ends, linearly interpolated at a sign change).
+    """
     k1, k7, znew, zb, kb, K = W[0], W[1], W[2], W[3], W[4], W[5:12]
     g0 = switch_function(mode, P, t, z)
     if g0 < 0.0:
@@ -353,7 +357,8 @@ def _account(mode, P, t, dt, z0, z1, acc, ph):
 @jit
 def entry(P, t, z):
     """The phase of a contact state with no history (a section start, a touch-down of a
-    viscous contact); a Jenkins slip state is put on the cone."""
+    viscous contact); a Jenkins slip state is put on the cone.
+    """
     k, c = P[P_K], P[P_C]
     n, _ = normal_force(P[P_A], t)
     if c > 0.0:
@@ -412,7 +417,8 @@ def touchdown(P, t, z):
 @jit
 def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
     """Integrate one drive period from ``t0 = 2 pi j`` (``z`` in place, the integrals
-    ``z[6:8]`` accumulated); ``mode`` the phase at ``t0``.  Returns ``(mode, ok)``."""
+    ``z[6:8]`` accumulated); ``mode`` the phase at ``t0``.  Returns ``(mode, ok)``.
+    """
     a = P[P_A]
     jenkins = P[P_C] == 0.0
     ends = np.empty(3)
@@ -460,7 +466,8 @@ def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
 def period_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events):
     """The period map of the section state ``s`` (6) into ``sout``; returns
     ``(ok, int f_x, int f_y)`` over the period.  The phase at the section follows from
-    the state (:func:`entry`)."""
+    the state (:func:`entry`).
+    """
     z = W[12]
     for i in range(N_S):
         z[i] = s[i]
@@ -494,7 +501,8 @@ def _dist(a, b, k):
 @jit
 def orbit_mean(P, s, rtol, atol, hmax, W, cnt, max_events, out):
     """Means over one period from the section state ``s``: ``out = (mu, lateral,
-    stick, slip, flight, reverse slip, ok)`` and the end state in ``W[13]``."""
+    stick, slip, flight, reverse slip, ok)`` and the end state in ``W[13]``.
+    """
     acc = np.zeros(4)
     ok, ifx, ify = period_map(P, s, W[13], rtol, atol, hmax, W, acc, cnt, max_events)
     nbar = mean_normal(P[P_A])
@@ -521,7 +529,8 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     returns True where the residual fell below ``tol``, or stopped falling (the
     integration's noise) below ``floor``.  The step is capped (:data:`NEWTON_STEP_CAP`)
     and each trial period has a step budget (:data:`TRIAL_STEPS` times the iterate's);
-    a trial that fails (budget, chatter) is a failed trial, not a failed point."""
+    a trial that fails (budget, chatter) is a failed trial, not a failed point.
+    """
     acc = np.zeros(4)
     ph = np.empty(N_S)
     pp = np.empty(N_S)
@@ -617,7 +626,8 @@ def iterate(P, s, rtol, hmax, W, cnt, max_events, tol, floor, max_it, info):
     :data:`ITER_SPAN` before, which copes with the oscillating steps of complex
     multipliers; 0 where the iteration converged at once); returns True where it
     converged, False at once where at that contraction the floor lies beyond twice the
-    periods left."""
+    periods left.
+    """
     acc = np.zeros(4)
     s2 = np.empty(N_S)
     ring = np.full(2 * ITER_SPAN, math.inf)
@@ -662,7 +672,8 @@ def iterate(P, s, rtol, hmax, W, cnt, max_events, tol, floor, max_it, info):
 @jit
 def start_state(P, init_kind, y0, xd0, e0, s):
     """The section state at ``tau = 0``: 0 steady sliding (``x' = V``, spring stretched
-    by ``sign V``, ``e = sign V/k``), 1 rest, 2 explicit ``(y, x', e)`` (transverse 0)."""
+    by ``sign V``, ``e = sign V/k``), 1 rest, 2 explicit ``(y, x', e)`` (transverse 0).
+    """
     for i in range(N_S):
         s[i] = 0.0
     if init_kind == 0 and P[P_V] != 0.0:
@@ -676,7 +687,8 @@ def start_state(P, init_kind, y0, xd0, e0, s):
 def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
                on_substrate):
     """The parameter vector ``P`` of a point (``alpha_y``, ``zeta_y``: the pin across the
-    sliding, resolved: ``alpha``, ``zeta`` for an axisymmetric one)."""
+    sliding, resolved: ``alpha``, ``zeta`` for an axisymmetric one).
+    """
     P = np.empty(N_P)
     P[P_ALPHA] = alpha
     P[P_GAMMA] = 2.0 * zeta * math.sqrt(alpha)
@@ -700,8 +712,8 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
     ``rtol`` the Runge-Kutta tolerance (``atol = rtol``); the error estimate adds the
     difference from a second solve at ``100 rtol`` to the section residual's effect.
     ``max_periods`` bounds the whole search (an orbit found later is not converged);
-    ``max_events`` the switches per
-    period (chatter: status failed)."""
+    ``max_events`` the switches per period (chatter: status failed).
+    """
     plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
                          zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
                          max_events, out_f, out_i, np.empty(N_S))
@@ -713,7 +725,8 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
                          max_events, out_f, out_i, s_out):
     """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
     e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
-    end; the output rows keep only the x components)."""
+    end; the output rows keep only the x components).
+    """
     P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
                    on_substrate)
     out_f[:] = math.nan
@@ -870,7 +883,8 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
 @jit
 def cone_excess(P, periods, rtol):
     """The largest ``|f| - n`` at the step ends and switches of ``periods`` drive periods
-    from the sliding start of the parameter vector ``P`` (a check of the phase rules)."""
+    from the sliding start of the parameter vector ``P`` (a check of the phase rules).
+    """
     hmax = max_step(P)
     W = np.zeros((14, N_Z))
     cnt = np.zeros(N_C, np.int64)
@@ -898,7 +912,8 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
     """The long-time average from the section state ``s``: ``N_AVG`` periods of
     transient, then means over ``N_AVG`` periods into ``means`` (as :func:`orbit_mean`),
     ``s`` the end state.  Returns the window's spread: the larger of the difference of its
-    halves' means, in ``mu`` and in the lateral ratio."""
+    halves' means, in ``mu`` and in the lateral ratio.
+    """
     z = W[13]
     for i in range(N_S):
         z[i] = s[i]
@@ -936,7 +951,8 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
 def plane_steady_state_many(points, init_kind, init, rtol, max_periods, max_events, out_f,
                             out_i):
     """:func:`plane_steady_state` over a table of points (``points`` rows by the schema's
-    indices, ``codes.T_*``; ``init`` rows ``(y, x', e)``)."""
+    indices, ``codes.T_*``; ``init`` rows ``(y, x', e)``).
+    """
     for i in range(points.shape[0]):
         p = points[i]
         plane_steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA],
@@ -984,7 +1000,8 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
     across the sections (as :func:`average` does).  Returns the number of rows (more
     than ``out`` holds: call again with a larger one), or -1 where the integration
     failed (chatter: more than ``max_events`` switches in a period, or a step that
-    could not be taken)."""
+    could not be taken).
+    """
     a = P[P_A]
     jenkins = P[P_C] == 0.0
     hmax = max_step(P)

@@ -83,7 +83,8 @@ def start_margin(c, m, T):
 @jit
 def _refine(c, c1, m, a, b, ga, gb, m2):
     """Safeguarded Newton on a bracket with ``g(a) > 0 >= g(b)``, ``g`` monotone, ``m2`` a
-    bound of ``|g''|`` on it."""
+    bound of ``|g''|`` on it.
+    """
     cs = has_cs(c) or has_cs(c1)
     ce = c[8] != 0.0
     t = b if gb == 0.0 else a - ga * (b - a) / (gb - ga)
@@ -141,7 +142,8 @@ def _point(c, c1, m, t, cs, ce, f1, f2, fe):
 @jit_inline
 def _fast_terms(c, m):
     """Which terms of ``g`` are fast (:func:`.basis.fast_mask`) and present: ``(f1, f2,
-    fe)`` for ``h1``, ``h2`` and the viscoelastic relaxation."""
+    fe)`` for ``h1``, ``h2`` and the viscoelastic relaxation.
+    """
     f1, f2, fe = fast_mask(m)
     if m[0] == EXP:  # two exponentials, each bounded by itself
         f1 = f1 and c[4] != 0.0
@@ -157,7 +159,8 @@ def _split_bounds(c, c2, m, T, f1, f2, fe, pm2s, pr, ready, a, a_split, m2s, mr)
     part): their parts ``pm2s``, ``pr`` on ``[t_a, T]``, made when first needed (``ready``
     False; many searches end by the other tests), and their values ``(m2s, mr)`` at ``a``,
     recomputed only when ``a`` is not ``a_split``.  Returns ``(pm2s, pr, True, a, m2s,
-    mr)``."""
+    mr)``.
+    """
     if not ready:
         pm2s = bound_parts(c2, m, T, f1, f2, fe, 1)
         pr = bound_parts(c, m, T, f1, f2, fe, 2)

@@ -51,7 +51,8 @@ SF_OK, SF_NOT_SMOOTH, SF_NEUTRAL, SF_KINK, SF_FAILED = 0, 1, 2, 4, 8
 def _step(theta, j, rel):
     """The difference step of parameter ``j``: ``rel`` times its scale (``k = beta -
     alpha`` for ``beta``; at least 1 for ``a``, ``zeta``, ``a_x``, ``phase_x``, whose
-    effect is set on the scale 1 of the drive)."""
+    effect is set on the scale 1 of the drive).
+    """
     x = theta[j]
     if j == T_BETA:
         return rel * (theta[T_BETA] - theta[T_ALPHA])
@@ -65,7 +66,8 @@ def _map_at(theta, on_substrate, zf, ph, nd, p, max_events, acc):
     """The ``p``-period map at parameters ``theta`` from the free coordinates ``zf`` of
     phase ``ph``: ``(ok, start, image, phase, events)`` (``start``, ``image`` full
     ``(y, x', e)``; ``ok`` False where the integration stopped or a transition was
-    degenerate), ``acc`` its accumulators."""
+    degenerate), ``acc`` its accumulators.
+    """
     M = make_model(theta[0], theta[1], theta[2], theta[3], theta[4], theta[5], theta[6],
                    theta[7], on_substrate)
     y0, xd0, e0 = _unpack(zf, ph, M)
@@ -85,7 +87,8 @@ def _map_at(theta, on_substrate, zf, ph, nd, p, max_events, acc):
 @jit
 def _difference(f, h, order):
     """The central difference of ``f`` at the offsets :data:`STENCIL` times ``h``: of
-    order 4, or of order 2 from the middle two."""
+    order 4, or of order 2 from the middle two.
+    """
     if order == 2:
         return (f[2] - f[1]) / (2.0 * h)
     return (8.0 * (f[2] - f[1]) - (f[3] - f[0])) / (12.0 * h)
@@ -95,7 +98,8 @@ def _difference(f, h, order):
 def _normal_rate(a, p):
     """``dN/da`` of ``N = p int n`` over a period (``n = 1 + a cos tau`` in contact):
     0 without lift-off (``a <= 1``), ``2 p sqrt(1 - 1/a^2)`` with it (``n = 0`` at
-    the ends of the contact, so they do not contribute)."""
+    the ends of the contact, so they do not contribute).
+    """
     if a <= 1.0:
         return 0.0
     return 2.0 * p * math.sqrt(1.0 - 1.0 / (a * a))
@@ -114,7 +118,8 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
     (``+-h``, half the cost, an error up to ~1e-4 relative where the map bends).  A
     rigid contact does not depend on ``beta`` (0); ``eta_c`` below
     :data:`.phases.ETA_ELASTIC` is solved as elastic and has no derivative here
-    (``nan``, :data:`SF_KINK`)."""
+    (``nan``, :data:`SF_KINK`).
+    """
     dmu[:] = math.nan
     dz[:, :] = math.nan
     theta = np.array([alpha, beta, a, V, zeta, eta, a_x, phase_x])
@@ -202,7 +207,8 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
 def orbit_sensitivity_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, state,
                            period, max_events, rel, order, want, dmu, dz, flags):
     """:func:`orbit_sensitivity` over arrays of points (``state`` rows ``(y, x', e, ph)``;
-    rows with ``period[i] <= 0`` are skipped: flags ``SF_FAILED``, nan)."""
+    rows with ``period[i] <= 0`` are skipped: flags ``SF_FAILED``, nan).
+    """
     for i in range(V.shape[0]):
         if period[i] <= 0:
             dmu[i, :] = math.nan

@@ -126,7 +126,8 @@ SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stic
 @jit
 def _start(init_kind, y0, xd0, e0, ph0, M, offset):
     """The section state ``(y, x', e, phase, e')`` at ``tau = 0`` in the kernels' frame (see
-    :func:`steady_state`; an explicit state is given in the laboratory frame)."""
+    :func:`steady_state`; an explicit state is given in the laboratory frame).
+    """
     z = np.empty(5)  # y, x', e, phase, e' (exact rate where known, else nan)
     if init_kind == 2:
         y0, xd0 = to_kernel_frame(offset, y0, xd0)
@@ -145,7 +146,8 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     replaces ``z``, a neutral one leaves ``z`` to the motion (:func:`_run` measures how
     far the motion's mean stays from it).  Returns 0 where no orbit was found, -1 where
     the event budget is spent.  The drive periods integrated are added to
-    ``out_f[O_WORK]``."""
+    ``out_f[O_WORK]``.
+    """
     zn = z.copy()
     pn, ev, work, lam, shift, mu_first, mu = try_newton(zn, dprev, k, M, tol_state,
                                                         max_events - count[C_EVENTS], win)
@@ -166,7 +168,8 @@ def _neutral_result(acc, start, orbit_out, orbit_win, win, out_f):
     """The answer of a neutral orbit found by Newton (its result ``orbit_out``, window
     ``orbit_win``): the motion from the start need not approach it, so its error includes
     the distance of the motion's mean over the last ``NEUTRAL_WINDOW`` periods
-    (accumulators ``acc - start``) from the orbit's, and its settling time is unknown."""
+    (accumulators ``acc - start``) from the orbit's, and its settling time is unknown.
+    """
     work = out_f[O_WORK]
     out_f[:] = orbit_out
     out_f[O_WORK] = work
@@ -179,7 +182,8 @@ def _neutral_result(acc, start, orbit_out, orbit_win, win, out_f):
 @jit
 def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
     """Record a checkpoint of the running average and test it; returns ``(nchk, status)``,
-    ``RUNNING`` while no answer (the last checkpoint, ``final``, always answers)."""
+    ``RUNNING`` while no answer (the last checkpoint, ``final``, always answers).
+    """
     if nchk < MAX_CHECKPOINTS:
         chk_c[nchk, :] = acc
         chk_k[nchk] = k
@@ -278,7 +282,8 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
 @jit
 def _sliding_window(M, win):
     """The accumulators of one period of the sliding orbit: forward slip in contact,
-    flight out of it (the fractions of a proven continuous sliding)."""
+    flight out of it (the fractions of a proven continuous sliding).
+    """
     win[:] = 0.0
     flight = M[M_ON] - M[M_OFF] if M[M_A] > 1.0 else 0.0
     win[A_SLIP] = TWO_PI - flight
@@ -293,7 +298,8 @@ def _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f):
     ``SLIDING_SETTLE`` periods) from which the certificate proves that it never stops
     again is the settling time and ``periods``; where none is found within them the
     settling time is unknown (nan) and the transient may still stick now and then
-    (the final state is then the orbit's).  Returns ``(status, period, periods)``."""
+    (the final state is then the orbit's).  Returns ``(status, period, periods)``.
+    """
     out_f[O_MU], out_f[O_ERR] = 1.0, 0.0
     _sliding_window(M, win)
     acc = np.zeros(N_ACC)
@@ -316,7 +322,8 @@ def _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f):
 def _unmodulated(z, M, win, out_f):
     """``a = 0``: ``mu/mu0 = 1`` is proven from any start (:func:`.sliding.unmodulated_sliding`);
     the final state is steady sliding, reached at once from it (settling 0), else at
-    an unknown time (nan).  Returns ``(status, period, periods)``."""
+    an unknown time (nan).  Returns ``(status, period, periods)``.
+    """
     energy, z[0], z[1], z[2] = unmodulated_sliding(z[0], z[1], z[2], M)
     z[3], z[4] = SLIP_POS, 0.0
     out_f[O_MU], out_f[O_ERR] = 1.0, 0.0

@@ -64,7 +64,8 @@ from .phases import (
 def free_flow(m, h1, h2):
     """``(p11, p12, p21, p22)``: ``(u(t), u'(t))`` from ``(u(0), u'(0))`` for the free
     motion of mode ``m`` (:func:`.basis.make_mode`), from ``(h1, h2)`` at ``t``
-    (:func:`.basis.homogeneous`)."""
+    (:func:`.basis.homogeneous`).
+    """
     if m[0] == EXP:
         l1, l2 = m[4], m[5]
         d = l1 - l2
@@ -77,7 +78,8 @@ def free_flow(m, h1, h2):
 @jit
 def free_flow_integral(m, t, h1, h2):
     """``(q11, q12)``: the integrals over ``[0, t]`` of ``p11``, ``p12`` of :func:`free_flow`
-    (``h1``, ``h2`` at ``t`` as there)."""
+    (``h1``, ``h2`` at ``t`` as there).
+    """
     A, B, d = homogeneous_integrals(m, t, h1, h2)
     i1 = A / d
     i2 = B / d
@@ -92,7 +94,8 @@ def free_flow_integral(m, t, h1, h2):
 def segment_flow(M, phase, free, t, J, G):
     """Carry the Jacobian ``J`` (3 x n) over a segment of length ``t`` in ``phase``
     (``free``: the Zeno approach, moving as in flight), and add to ``G`` (length n) the
-    gradient of the integral of ``f`` over it."""
+    gradient of the integral of ``f`` over it.
+    """
     n = J.shape[1]
     if phase == STICK and not free:
         if math.isinf(M[M_K]):
@@ -132,7 +135,8 @@ def segment_flow(M, phase, free, t, J, G):
 @jit
 def vector_field(M, phase, tau, y, xd, e):
     """``(y', x'', e')`` of the motion in ``phase`` at drive phase ``tau`` (``x''`` with the
-    in-plane force ``h``)."""
+    in-plane force ``h``).
+    """
     V = M[M_V]
     drag = -M[M_ALPHA] * y - M[M_GAMMA] * (xd - V)
     if forced(M):
@@ -161,7 +165,8 @@ def event_gradient(M, phase, tau, y, xd, e):
     """``(grad g, dg/dtau)`` of the event that ends ``phase`` at ``(tau, y, x', e)``:
     the cone margin ``n - s f`` of stick (``s`` the sign of ``f`` there) or the
     contact point's slip velocity ``s (x' - e')`` of slip.  A rigid stick's force
-    ``-alpha y + gamma V + h`` depends on ``tau`` through the in-plane force ``h``."""
+    ``-alpha y + gamma V + h`` depends on ``tau`` through the in-plane force ``h``.
+    """
     a, k = M[M_A], M[M_K]
     rigid = math.isinf(k)
     if phase == STICK:
@@ -185,7 +190,8 @@ def event_gradient(M, phase, tau, y, xd, e):
 def saltation(M, ph0, ph1, tau, y, xd, e, J, G):
     """Apply the saltation matrix of the event ``ph0 -> ph1`` at ``(tau, y, x', e)`` to
     ``J``, and the force jump times the event's time shift to ``G``.  Returns False
-    where the event is tangential (``g' = 0``: the map is not differentiable there)."""
+    where the event is tangential (``g' = 0``: the map is not differentiable there).
+    """
     g0, g1, g2, g_t = event_gradient(M, ph0, tau, y, xd, e)
     a0, a1, a2 = vector_field(M, ph0, tau, y, xd, e)
     b0, b1, b2 = vector_field(M, ph1, tau, y, xd, e)
@@ -207,7 +213,8 @@ def advance_period_tangent(z, acc, count, M, max_events, J, G):
     """:func:`.period.advance_period` carrying the Jacobian ``J`` of the state and the
     gradient ``G`` of the integral of ``f`` with respect to the start (multiplied onto
     what they hold).  Returns ``(ok, smooth)``: ``smooth`` False where an event was
-    tangential, so that the derivatives do not exist."""
+    tangential, so that the derivatives do not exist.
+    """
     theta = 0.0
     y, xd, e, ph, ed = z[0], z[1], z[2], int(z[3]), z[4]
     a = M[M_A]

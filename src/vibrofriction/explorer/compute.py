@@ -1,5 +1,8 @@
-"""What the views show, computed by the library: plain, picklable functions of a
-:class:`~vibrofriction.explorer.state.State`, run in worker processes (:mod:`.pool`)."""
+"""What the views show, computed by the library.
+
+Plain, picklable functions of a :class:`~vibrofriction.explorer.state.State`, run in worker
+processes (:mod:`.pool`).
+"""
 
 from __future__ import annotations
 
@@ -69,13 +72,16 @@ def merge(parts: list[dict]) -> dict:
 
 
 def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
-    """``mu/mu0`` (or the COF on a bench) over the state's velocities by the exact solver
+    """The friction curve of the state, with what the page draws over it.
+
+    ``mu/mu0`` (or the COF on a bench) over the state's velocities by the exact solver
     (a curved tip: the MDR solver), with the static value (eq. 2), the critical velocity
     (eq. 12; a curved tip: ``theory.profile_critical_velocity``, or the library's reason
     for none in ``critical_note``), the case and the closed forms that apply; ``rest_note``
     says why ``V = 0`` is left out (:attr:`State.rest_refused`), else ``""``.
     ``part = (i, n)``: only the ``i``-th of ``n`` interleaved shares of the points
-    (:func:`merge` joins them; the closed forms come with share 0)."""
+    (:func:`merge` joins them; the closed forms come with share 0).
+    """
     t0 = time.perf_counter()
     system = state.system()
     dim = _dimensionless(system)
@@ -135,9 +141,11 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
 
 
 def _curved_case_text(case: vf.Case) -> str:
-    """The case of ``(alpha, beta)`` for a curved tip: ``classify``'s description without
-    its flat-punch ``v0*`` (eqs. 12 to 14; a curved tip's is
-    ``theory.profile_critical_velocity``) and what follows it."""
+    """The case of ``(alpha, beta)`` for a curved tip.
+
+    ``classify``'s description without its flat-punch ``v0*`` (eqs. 12 to 14; a curved tip's is
+    ``theory.profile_critical_velocity``) and what follows it.
+    """
     head = case.description.split("v0*")[0].rstrip(" :;,")
     return (f"{head}; the critical velocity of a curved tip is that of continuous sliding "
             "(theory.profile_critical_velocity, docs/contact_geometry.md)")
@@ -155,8 +163,11 @@ def _spread(values: np.ndarray, solved: np.ndarray, fill: object = None) -> np.n
 
 
 def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | None:
-    """With an in-plane oscillation: the blocking forces ``mu(V -> 0+)``, ``mu(V -> 0-)``
-    of the closed-form stuck band (nan: slips every cycle) and the regime's name."""
+    """The closed-form stuck band of an in-plane oscillation.
+
+    The blocking forces ``mu(V -> 0+)``, ``mu(V -> 0-)`` of the closed-form stuck band (nan: slips
+    every cycle) and the regime's name.
+    """
     if dim.a_x == 0.0 or dim.a_y > 0.0 or dim.curved:  # the flat punch's 1-D stuck band
         return None
     args = (dim.alpha, dim.beta, dim.amplitude, dim.a_x, dim.phase_x, dim.zeta, dim.eta_c,
@@ -169,8 +180,11 @@ def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | Non
 
 def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
                  scale: float) -> list[dict]:
-    """The paper's closed forms (docs/theory.md) that apply to this system, each with its
-    label and its points at the curve's velocities ``x``; none outside their regime."""
+    """The closed forms that apply to this system, at the curve's velocities.
+
+    The paper's closed forms (docs/theory.md) that apply to this system, each with its
+    label and its points at the curve's velocities ``x``; none outside their regime.
+    """
     dim = _dimensionless(system)
     V = _inertial(state, system, x)
     a = dim.amplitude
@@ -208,9 +222,12 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
 
 def _curved_closed_forms(dim: vf.Dimensionless, x: np.ndarray, V: np.ndarray,
                          case: vf.Case, scale: float) -> list[dict]:
-    """The closed forms of a curved tip (docs/contact_geometry.md): its stiff law in case
-    II, undamped (``theory.mu_ratio_stiff_profile``, the quadrature of the flat law over the
-    MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``); none with ``a_x > 0``."""
+    """The closed forms of a curved tip (docs/contact_geometry.md).
+
+    Its stiff law in case II, undamped (``theory.mu_ratio_stiff_profile``, the quadrature of the
+    flat law over the MDR springs, at ``vbar = (beta - alpha) V n/((n + 1) a)``); none with ``a_x >
+    0``.
+    """
     a, n = dim.amplitude, dim.profile_exponent
     if case is not vf.Case.STIFF or dim.damped or a == 0.0 or dim.a_x > 0.0:
         return []
@@ -227,11 +244,13 @@ CONTACT_STATES = tuple(s.long_name for s in ContactState)
 
 
 def history(state: State, x: float, periods: float = 3.0) -> dict:
-    """The time history at the curve's velocity ``x`` (Fig. 2): forces, phases, events;
-    the steady state where the solver trusts it, else the motion from steady sliding.
-    With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
-    position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc``
-    and the transverse force ``f_y`` (None otherwise).  A curved tip: :func:`mdr_history`."""
+    """The time history at the curve's velocity ``x`` (Fig. 2).
+
+    Forces, phases, events; the steady state where the solver trusts it, else the motion from steady
+    sliding. With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
+    position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc`` and the
+    transverse force ``f_y`` (None otherwise). A curved tip: :func:`mdr_history`.
+    """
     if state.curved:
         return mdr_history(state, x)
     system = state.system()
@@ -263,14 +282,17 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
 
 def mdr_history(state: State, x: float, periods: float = 1.0,
                 samples_per_period: int = 200) -> dict:
-    """A curved tip's history at the inertial velocity ``x`` (``vf.simulate`` of the MDR
+    """A curved tip's history at the inertial velocity ``x``.
+
+    A curved tip's history at the inertial velocity ``x`` (``vf.simulate`` of the MDR
     row, ``initial="steady"``: one period of its periodic orbit; where the row has none,
     the last of three periods from steady sliding, said so): the forces and phases of
     :func:`history` and, for the space-time view (``spacetime``), ``t`` (drive periods),
     the springs' positions ``xi = x/a0`` along the profile, each spring's state per sample
     (``state``, shape ``(T, M)``, codes of :data:`CONTACT_STATES`), the stick and contact
     radii and the area fractions against time.  ``spacetime`` is None, with the reason in
-    ``message``, where the library gives no history."""
+    ``message``, where the library gives no history.
+    """
     system = state.system()
     message = ""
     try:
@@ -313,8 +335,10 @@ def mdr_history(state: State, x: float, periods: float = 1.0,
 @functools.lru_cache(maxsize=4)
 def case_map(n: int = 90, alpha: tuple[float, float] = (1e-3, 1e2),
              beta: tuple[float, float] = (1e-3, 1e4)) -> dict:
-    """The cases I-IV of ``vf.classify`` over a log grid of ``(alpha, beta)``; ``""``
-    where ``beta <= alpha`` (no system)."""
+    """The cases I-IV of ``vf.classify`` over a log grid of ``(alpha, beta)``.
+
+    ``""`` where ``beta <= alpha`` (no system).
+    """
     al = np.geomspace(*alpha, n)
     be = np.geomspace(*beta, n)
     cases = np.full((n, n), "", dtype=object)
@@ -327,8 +351,11 @@ def case_map(n: int = 90, alpha: tuple[float, float] = (1e-3, 1e2),
 
 
 def parse_measurements(content: bytes, name: str = "measurements.csv"):
-    """A dropped CSV as the library's measurement table (``vf.read_measurements``; its
-    messages name the file and the line)."""
+    """A dropped CSV as the library's measurement table.
+
+    A dropped CSV as the library's measurement table (``vf.read_measurements``; its
+    messages name the file and the line).
+    """
     import tempfile
     from pathlib import Path
 
@@ -347,8 +374,11 @@ def parse_measurements(content: bytes, name: str = "measurements.csv"):
 
 
 def measurement_curves(state: State, data) -> list[dict]:
-    """The measured points per (amplitude, frequency) on the state's axis, with the model's
-    COF at the same points (the bench's system at that amplitude and frequency)."""
+    """The measured points with the model's COF at the same points.
+
+    The measured points per (amplitude, frequency) on the state's axis, with the model's
+    COF at the same points (the bench's system at that amplitude and frequency).
+    """
     system = state.system()
     if not isinstance(system, vf.Physical):
         raise ValueError("measurements are in SI units: choose the bench inputs to overlay "
@@ -367,8 +397,10 @@ def measurement_curves(state: State, data) -> list[dict]:
 
 
 def run_fit(state: State, data, free: tuple[str, ...]) -> dict:
-    """``vf.fit`` of the bench to the measurements: its report and the fitted COF per
-    measured (amplitude, frequency) on the state's axis."""
+    """``vf.fit`` of the bench to the measurements.
+
+    Its report and the fitted COF per measured (amplitude, frequency) on the state's axis.
+    """
     guess = state.system()
     if not isinstance(guess, vf.Physical):
         raise ValueError("the fit needs the bench inputs (a Physical guess)")

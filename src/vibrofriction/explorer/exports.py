@@ -1,5 +1,8 @@
-"""Share and reuse: the curve as CSV, as a figure (PNG, SVG), and as a Python snippet
-that recomputes it with the library."""
+"""Share and reuse.
+
+The curve as CSV, as a figure (PNG, SVG), and as a Python snippet that recomputes it with the
+library.
+"""
 
 from __future__ import annotations
 
@@ -74,8 +77,11 @@ def _num(x: float) -> str:
 
 
 def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
-    """The curve as a matplotlib figure (``png`` or ``svg``): trusted points solid,
-    untrusted hollow grey, the static value, the critical velocity, the closed forms."""
+    """The curve as a matplotlib figure (``png`` or ``svg``).
+
+    Trusted points solid, untrusted hollow grey, the static value, the critical velocity, the closed
+    forms.
+    """
     from matplotlib.figure import Figure
 
     if fmt not in ("png", "svg"):

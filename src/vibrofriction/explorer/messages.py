@@ -34,9 +34,11 @@ def field_of(message: str, mode: str = "dimensionless") -> str:
 
 
 def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, dict[str, str]]:
-    """The typed ``texts`` over ``base``: the state and no message, or None and a message
-    per offending input (parsing, then the library's validators through
-    :meth:`State.system` and :meth:`State.velocities`)."""
+    """The typed ``texts`` over ``base``.
+
+    The state and no message, or None and a message per offending input (parsing, then the library's
+    validators through :meth:`State.system` and :meth:`State.velocities`).
+    """
     values: dict[str, float] = {}
     problems: dict[str, str] = {}
     for name, text in texts.items():
@@ -61,8 +63,11 @@ def read_inputs(texts: Mapping[str, str], base: State) -> tuple[State | None, di
 
 
 def _check_axis(state: State, system) -> None:
-    """The chosen velocity axis exists for this system (the library's conversion says why
-    not: ``vbar`` in the resonant cases, ``v0`` without a bench)."""
+    """Check that the chosen velocity axis exists for this system.
+
+    The chosen velocity axis exists for this system (the library's conversion says why
+    not: ``vbar`` in the resonant cases, ``v0`` without a bench).
+    """
     import vibrofriction as vf
 
     if state.axis == "vbar":
@@ -74,11 +79,14 @@ def _check_axis(state: State, system) -> None:
 
 
 def _check_curved(state: State) -> None:
-    """The library's refusal of what the MDR solver does not take yet (``beta = inf``,
+    """The library's refusal of what the MDR solver does not take yet.
+
+    The library's refusal of what the MDR solver does not take yet (``beta = inf``,
     ``eta_c``, ``a_y``): ``solve_points`` at ``V = 0``, the static limit, which validates
     the point as any other and computes nothing.  ``a_x`` is taken at ``V != 0`` (and
     refused at ``V = 0``, which the curve leaves out: :attr:`State.rest_refused`), so the
-    check is without it (``Dimensionless`` has validated it)."""
+    check is without it (``Dimensionless`` has validated it).
+    """
     from vibrofriction.solver import solve_points
 
     solve_points(state.alpha, state.beta, state.amplitude, 0.0, state.zeta, state.eta_c,
@@ -87,9 +95,12 @@ def _check_curved(state: State) -> None:
 
 
 def curved_refusal(state: State, name: str, value: float) -> str:
-    """The library's message refusing ``name = value`` with the state's curved tip (the
+    """The library's message refusing ``name = value`` with a curved tip.
+
+    The library's message refusing ``name = value`` with the state's curved tip (the
     other refused inputs at 0 and a finite ``beta``, so the message is about ``name``);
-    ``""`` where it is accepted."""
+    ``""`` where it is accepted.
+    """
     others = {n: 0.0 for n in MDR_REFUSED}
     beta = state.beta if math.isfinite(state.beta) else state.alpha + 1.0
     try:

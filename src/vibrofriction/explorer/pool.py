@@ -1,9 +1,12 @@
-"""Worker processes: the numba kernels hold the GIL, so every computation of the explorer
-runs in a process of its own, off the server's event loop, and tabs do not wait for each
-other (a separate process serves the fits, which take tens of seconds).
+"""Worker processes.
+
+The numba kernels hold the GIL, so every computation of the explorer runs in a process of its own,
+off the server's event loop, and tabs do not wait for each other (a separate process serves the
+fits, which take tens of seconds).
 
 The processes are the package's one pool (:func:`vibrofriction.parallel.start_pool`): they
-die with the server, even when it is killed with SIGKILL."""
+die with the server, even when it is killed with SIGKILL.
+"""
 
 from __future__ import annotations
 
@@ -64,9 +67,11 @@ def _ping_curved() -> int:
 
 
 def warm_up() -> None:
-    """Start the workers and load the kernels in each (the first page then draws at once);
-    the MDR solver's kernels (a curved tip) load after, while the page is served (they
-    compile on a first start without numba's cache: the page must not wait for them)."""
+    """Start the workers and load the kernels in each (the first page then draws at once).
+
+    The MDR solver's kernels (a curved tip) load after, while the page is served (they compile on a
+    first start without numba's cache: the page must not wait for them).
+    """
     for kind, size in _SIZES.items():
         futures = [_pool(kind).submit(_ping) for _ in range(size)]
         for f in futures:

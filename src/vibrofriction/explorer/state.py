@@ -51,9 +51,11 @@ class Field:
 
 def _model_field(name: str, low: float, high: float, log: bool = True,
                  label: str = "") -> Field:
-    """The input of a model parameter: its label (unless given) and whether ``inf`` is
-    allowed from the schema (:data:`vibrofriction.schema.PARAMETERS`); the slider range
-    and scale are the explorer's choice."""
+    """The input of a model parameter.
+
+    Its label (unless given) and whether ``inf`` is allowed from the schema
+    (:data:`vibrofriction.schema.PARAMETERS`); the slider range and scale are the explorer's choice.
+    """
     p = PARAMETER[name]
     return Field(name, label or p.label, low, high, log, allow_inf=p.range.allow_inf)
 
@@ -152,6 +154,7 @@ class State:
     points: int = 200
 
     def __post_init__(self) -> None:
+        """Check the mode and the axis by name."""
         if self.mode not in MODES:
             raise ValueError(f"mode must be one of {list(MODES)}, got {self.mode!r}")
         if self.axis not in AXES:
@@ -161,8 +164,10 @@ class State:
     # ------------------------------------------------------------------ system
     @property
     def curved(self) -> bool:
-        """A curved tip (finite ``profile_exponent``) on the dimensionless inputs: the MDR
-        solver computes the curve (the bench inputs are the linearised contact)."""
+        """A curved tip (finite ``profile_exponent``) on the dimensionless inputs.
+
+        The MDR solver computes the curve (the bench inputs are the linearised contact).
+        """
         return self.mode == "dimensionless" and self.profile_exponent != math.inf
 
     @property
@@ -188,13 +193,19 @@ class State:
 
     @property
     def rest_refused(self) -> bool:
-        """Whether ``V = 0`` is no point of the curve: a curved tip with a longitudinal
-        in-plane oscillation (``a_x > 0``), which the MDR solver refuses at rest."""
+        """Whether ``V = 0`` is no point of the curve.
+
+        A curved tip with a longitudinal in-plane oscillation (``a_x > 0``), which the MDR solver
+        refuses at rest.
+        """
         return self.curved and self.a_x > 0.0
 
     def grid(self) -> np.ndarray:
-        """The :attr:`curve_points` velocities from ``v_min`` to ``v_max`` on the chosen
-        axis (``V`` and ``v0`` signed: negative slides the other way; ``vbar`` from 0)."""
+        """The velocities of the curve on the chosen axis.
+
+        The :attr:`curve_points` velocities from ``v_min`` to ``v_max`` on the chosen
+        axis (``V`` and ``v0`` signed: negative slides the other way; ``vbar`` from 0).
+        """
         lo = float(checked("v_min", self.v_min, minimum=0.0 if self.axis == "vbar" else None))
         hi = float(checked("v_max", self.v_max, minimum=lo, strict=True))
         if self.log_x:
@@ -203,8 +214,11 @@ class State:
         return np.linspace(lo, hi, self.curve_points)
 
     def velocities(self) -> np.ndarray:
-        """The velocities of the curve: the :meth:`grid`, without ``V = 0`` where it is
-        refused (:attr:`rest_refused`; the page says so)."""
+        """The velocities of the curve.
+
+        The :meth:`grid`, without ``V = 0`` where it is refused (:attr:`rest_refused`; the page says
+        so).
+        """
         x = self.grid()
         return x[x != 0.0] if self.rest_refused else x
 
@@ -225,8 +239,11 @@ class State:
 
     @classmethod
     def from_query(cls, query: Mapping[str, str | bytes | list]) -> tuple[State, dict[str, str]]:
-        """A state from URL query parameters, and a message per parameter it could not read
-        (those keep their defaults; unknown names are ignored)."""
+        """A state from URL query parameters, and the messages of those it could not read.
+
+        A state from URL query parameters, and a message per parameter it could not read
+        (those keep their defaults; unknown names are ignored).
+        """
         values: dict[str, Any] = {}
         problems: dict[str, str] = {}
         names = {f.name: f for f in dataclasses.fields(cls)}

@@ -39,8 +39,11 @@ def _legend_outside(fig, location: str = "bottom_right") -> None:
 
 
 class CurveView:
-    """``mu/mu0`` (or the COF) against velocity: trusted points, untrusted points, the
-    static value, the critical velocity, the closed forms, measurements and the fit."""
+    """``mu/mu0`` (or the COF) against velocity.
+
+    Trusted points, untrusted points, the static value, the critical velocity, the closed forms,
+    measurements and the fit.
+    """
 
     def __init__(self, x_log: bool = False) -> None:
         self.trusted = _empty(x=1, y=1, n=1, stick=1, slip=1, open=1)
@@ -131,6 +134,7 @@ class CurveView:
         _legend_follows_data(self.figures.values())
 
     def show_measurements(self, groups: list[dict]) -> None:
+        """Draw the measured points, one colour per group."""
         xs, ys, labels, colors = [], [], [], []
         for k, g in enumerate(groups):
             xs += list(g["x"])
@@ -141,12 +145,14 @@ class CurveView:
         _legend_follows_data(self.figures.values())
 
     def show_fit(self, curves: list[dict]) -> None:
+        """Draw the fitted curves, one per group."""
         self.fitted.data = {"xs": [c["x"] for c in curves], "ys": [c["cof"] for c in curves],
                             "color": [_DATA_COLORS[k % len(_DATA_COLORS)]
                                       for k in range(len(curves))]}
         _legend_follows_data(self.figures.values())
 
     def pick(self, x: float, y: float) -> None:
+        """Mark the picked point ``(x, y)``."""
         self.picked.data = {"x": [x], "y": [y]}
         _legend_follows_data(self.figures.values())
 
@@ -161,10 +167,12 @@ _HISTORY_COLORS = {**PHASE_COLORS, PARTIAL: "#dadaeb"}
 
 
 class HistoryView:
-    """A point's time history: forces, the phases shaded, the events marked; with an
-    in-plane oscillation a second figure (``path_figure``, hidden otherwise) shows the
-    contact point on the substrate: ``x_c`` against time (1-D) or its path ``(x_c, y_c)``
-    in the plane (2-D), coloured by phase."""
+    """A point's time history.
+
+    Forces, the phases shaded, the events marked; with an in-plane oscillation a second figure
+    (``path_figure``, hidden otherwise) shows the contact point on the substrate: ``x_c`` against
+    time (1-D) or its path ``(x_c, y_c)`` in the plane (2-D), coloured by phase.
+    """
 
     def __init__(self) -> None:
         self.lines = _empty(t=1, f=1, n=1)
@@ -206,6 +214,7 @@ class HistoryView:
         self.path_figure = path
 
     def show(self, h: dict, where: str) -> None:
+        """Draw the history ``h`` at the velocity ``where``."""
         t, f, n = h["t"], h["f"], h["n"]
         self.lines.data = {"t": t, "f": f, "n": n}
         f_y = h.get("f_y")
@@ -236,8 +245,11 @@ class HistoryView:
         self.figure.legend.nrows = 2 if f_y is not None else "auto"  # f_y: one more entry
 
     def _show_path(self, h: dict) -> None:
-        """The contact point on the substrate, or nothing (and hidden) without an
-        in-plane oscillation."""
+        """The contact point on the substrate.
+
+        The contact point on the substrate, or nothing (and hidden) without an
+        in-plane oscillation.
+        """
         xc, yc = h.get("xc"), h.get("yc")
         fig = self.path_figure
         if xc is None:
@@ -305,6 +317,7 @@ class MapView:
         self.beta_top = b1
 
     def show(self, alpha: float, beta: float) -> None:
+        """Mark the system ``(alpha, beta)`` on the case map."""
         infinite = math.isinf(beta)
         self.current.data = {"x": [alpha], "y": [self.beta_top * 0.8 if infinite else beta],
                              "marker": ["triangle" if infinite else "circle"]}
@@ -322,10 +335,13 @@ CONTACT_COLORS = tuple({ContactState.STICK: "#4292c6", ContactState.SLIP_POS: "#
 
 
 class SpaceTimeView:
-    """A curved tip's contact over one period: the position ``xi = x/a0`` along the profile
-    against ``t/T``, each spring coloured by its state (stick, slip, flight), with
-    the stick and contact radii where the history gives them; hidden for the flat punch.
-    Without an MDR time history it says so (``show`` with ``spacetime`` None)."""
+    """A curved tip's contact over one period.
+
+    The position ``xi = x/a0`` along the profile against ``t/T``, each spring coloured by its state
+    (stick, slip, flight), with the stick and contact radii where the history gives them;
+    hidden for the flat punch. Without an MDR time history it says so (``show`` with ``spacetime``
+    None).
+    """
 
     def __init__(self) -> None:
         self.image = _empty(image=1, x=1, y=1, dw=1, dh=1)
@@ -357,6 +373,7 @@ class SpaceTimeView:
         self.figure = fig
 
     def hide(self) -> None:
+        """Hide the view."""
         self.figure.visible = False
 
     def show(self, h: dict, where: str) -> None:

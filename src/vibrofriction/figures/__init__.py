@@ -75,7 +75,25 @@ __all__ = [
 
 
 def all_recipes(quick: bool = False) -> list[Recipe]:
-    """Every figure of the reproduction, in the paper's order (``quick``: reduced grids)."""
+    """Every figure of the reproduction, in the paper's order.
+
+    Parameters
+    ----------
+    quick : bool, optional
+        Reduced velocity grids and maps (for CI).
+
+    Returns
+    -------
+    list of Recipe
+        One recipe per figure (Figs. 3a and 3b are two).
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import all_recipes
+    >>> recipes = all_recipes(quick=True)
+    >>> len(recipes), recipes[0].name
+    (19, 'fig02_history')
+    """
     return [
         history.fig2(),
         *velocity.fig3(quick),
@@ -99,10 +117,38 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
 
 
 def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
-    """Plot an atlas of :func:`vibrofriction.sweep.sweep` (a Dataset or a store path).
+    r"""Plot a variable of an atlas of :func:`vibrofriction.sweep.sweep` and return the figure.
 
-    See :func:`vibrofriction.figures.atlas.plot_atlas` (xarray and the sweep are
-    imported on first use).
+    With ``y=None``, curves along ``x`` (default: the velocity), one per value of the
+    single other swept dimension (continuation: up solid, down dashed); with ``y``
+    given, a map over ``x`` and ``y``. Other swept dimensions must be fixed with
+    ``sel={dim: value}`` (nearest value). Untrusted points (``trusted`` is False) are
+    marked, not drawn as results: crosses on curves, hatched cells on maps. Log axes for
+    geometric coordinates. xarray and the sweep are imported on first use.
+
+    Parameters
+    ----------
+    source : xarray.Dataset or str or os.PathLike
+        The atlas, or the path of its store.
+    **kwargs
+        ``x``, ``y`` (dimension names), ``var`` (default ``"mu_ratio"``), ``sel``,
+        ``out`` (write the figure there: PNG, PDF, SVG by extension) and
+        ``max_curves`` (default 24).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.figures import plot_atlas
+    >>> atlas = vf.sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.25, 0.5, 1.0],
+    ...                  workers=1, progress=False)
+    >>> fig = plot_atlas(atlas)
+    >>> print(fig.axes[0].get_xlabel())
+    $\bar v = v_0/v_0^*$
     """
     from .atlas import plot_atlas as _plot
 
@@ -110,16 +156,72 @@ def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
 
 
 def plot_fit(result: FitResult) -> Figure:
-    """A fit against its data and its residuals (:func:`vibrofriction.figures.bench.plot_fit`;
-    the bench is imported on first use)."""
+    """A fit against its data and its residuals.
+
+    Data with error bars, the fitted curves per (amplitude, frequency) and the
+    residuals; the title gives the free parameters, the verdict and the reduced
+    chi-square. The bench is imported on first use.
+
+    Parameters
+    ----------
+    result : vibrofriction.bench.FitResult
+        What :func:`vibrofriction.fit` returned.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    A fit solves hundreds of points (the gallery's ``fit_pin_on_disk`` example), so
+    this one is not run with the API's doctests:
+
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.figures import plot_fit
+    >>> result = vf.fit(vf.read_measurements("data.csv"), guess,
+    ...                 free=["mu0", "mass", "k_xc"])  # doctest: +SKIP
+    >>> plot_fit(result).savefig("fit.png", dpi=150)  # doctest: +SKIP
+    """
     from .bench import plot_fit as _plot
 
     return _plot(result)
 
 
 def plot_design(result: DesignResult) -> Figure:
-    """A design's map with its optimum (:func:`vibrofriction.figures.bench.plot_design`;
-    the bench is imported on first use)."""
+    """A design's map with its optimum.
+
+    The COF over the actuator's range (white: untrusted or beyond the velocity limit),
+    the optimum and the pin's resonance. An in-plane design: the signed COF over
+    ``(phase_x, du_x)`` at the chosen frequency and ``du_z``, and over ``(omega, du_z)``
+    at the map's ``du_x`` and ``phase_x`` nearest the optimum. The bench is imported on
+    first use.
+
+    Parameters
+    ----------
+    result : vibrofriction.bench.DesignResult
+        What :func:`vibrofriction.design` returned.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    A design solves a map of points (the gallery's ``design_oscillation`` example), so
+    this one is not run with the API's doctests:
+
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.figures import plot_design
+    >>> pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01,
+    ...                              quality_factor=50, normal_load=20, k_zc=2e7,
+    ...                              k_xc=1.5e7, drive_frequency_hz=1000, du_z=0.5e-6,
+    ...                              mu0=0.3)
+    >>> best = vf.design(pin, v0=0.01, omega=(1e3, 3e4),
+    ...                  du_z=(1e-7, 9e-7))  # doctest: +SKIP
+    >>> plot_design(best).savefig("design.png", dpi=150)  # doctest: +SKIP
+    """
     from .bench import plot_design as _plot
 
     return _plot(result)

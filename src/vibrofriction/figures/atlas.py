@@ -1,5 +1,6 @@
-"""Quick look at an atlas (:func:`vibrofriction.sweep.sweep`): curves along one
-dimension, or a map over two.
+"""Quick look at an atlas (:func:`vibrofriction.sweep.sweep`).
+
+Curves along one dimension, or a map over two.
 
 Drawn with xarray's own plotting (``DataArray.plot.line``, ``.plot.pcolormesh``) on
 a figure of the shared style (:mod:`.style`, no pyplot), so it works headless.  This
@@ -166,7 +167,9 @@ def _draw_curves(fig, ax, ds: xr.Dataset, da: xr.DataArray, trusted: xr.DataArra
         da, trusted = da.isel({group: pick}), trusted.isel({group: pick})
     count = da.sizes[group] if group is not None else 1
     cmap = mpl.colormaps["viridis"]
-    colors = [cmap(k / (count - 1)) for k in range(count)] if count > 1 else ["C0"]
+    # one curve: the default colour as RGBA (a prop cycle refuses the reference "C0")
+    colors = ([cmap(k / (count - 1)) for k in range(count)] if count > 1
+              else [mpl.colors.to_rgba("C0")])
     directions = list(da["direction"].values) if "direction" in da.dims else [None]
     for d in directions:
         values = da.sel(direction=d) if d is not None else da

@@ -20,9 +20,10 @@ __all__ = ["plot_design", "plot_fit"]
 
 @style.styled
 def plot_fit(result: FitResult) -> Figure:
-    """Data with error bars, the fitted curves per (amplitude, frequency) and the
-    residuals; the title gives the free parameters, the verdict and the reduced
-    chi-square."""
+    """Data with error bars, the fitted curves per (amplitude, frequency) and the residuals.
+
+    The title gives the free parameters, the verdict and the reduced chi-square.
+    """
     fig = style.figure(6.0, 5.0)
     ax, axr = fig.subplots(2, 1, sharex=True, height_ratios=(3, 1))
     inplane_columns = ("du_x", "phase_x", "du_y", "phase_y")
@@ -63,10 +64,13 @@ def plot_fit(result: FitResult) -> Figure:
 
 @style.styled
 def plot_design(result: DesignResult) -> Figure:
-    """The COF over the actuator's range (white: untrusted or beyond the velocity
+    """A design's map: the COF over the actuator's range.
+
+    The COF over the actuator's range (white: untrusted or beyond the velocity
     limit), the optimum and the pin's resonance.  An in-plane design: the signed COF
     over ``(phase_x, du_x)`` at the chosen frequency and ``du_z``, and over
-    ``(omega, du_z)`` at the map's ``du_x`` and ``phase_x`` nearest the optimum."""
+    ``(omega, du_z)`` at the map's ``du_x`` and ``phase_x`` nearest the optimum.
+    """
     if result.inplane:
         return _plot_design_inplane(result)
     fig = style.figure(5.6, 4.2)
@@ -109,8 +113,11 @@ def _signed_mesh(ax, x, y, cof, label):
 
 
 def _adding_phase(system) -> float | None:
-    """``theory.inplane_cancellation(...).phase_x + pi`` (mod 2 pi) of the chosen
-    oscillation, where its closed form applies (``a <= 1``), else None."""
+    """The phase that cancels the in-plane oscillation's effect, or None.
+
+    ``theory.inplane_cancellation(...).phase_x + pi`` (mod 2 pi) of the chosen
+    oscillation, where its closed form applies (``a <= 1``), else None.
+    """
     from .. import theory
 
     d = system.to_dimensionless()

@@ -35,7 +35,8 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
                   v_max_case_iii: float) -> list[Check]:
     """Figs. 3 and 7: case III (mu = mu0), eq. (12) (mu = mu0 exactly above v0*, below
     under it), the case IV plateau at finite beta against the rigid-contact one (eq. 32)
-    and the monotonicity the caption of Fig. 3 states."""
+    and the monotonicity the caption of Fig. 3 states.
+    """
     checks = []
     if amplitude <= 1.0:
         # case III: mu = mu0 at every V > 0
@@ -97,7 +98,8 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
 
 def jumping_note(curves: Mapping[str, Curve], vbar_max: float) -> str:
     """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn
-    against ``vbar``; with loss of contact eq. (12) no longer marks that onset."""
+    against ``vbar``; with loss of contact eq. (12) no longer marks that onset.
+    """
     first = []
     for c in curves.values():
         if c.series.meta.get("axis") != "vbar":
@@ -176,7 +178,8 @@ def fig4_checks(curves: Mapping[str, Curve],
     """Fig. 4: eq. (26) on the stiff curves, eq. (27) corrected and as printed on the soft
     ones, monotonicity of the soft curves and the best-fitting exponent of eq. (27).
 
-    ``systems`` maps ``"stiff"`` and ``"soft"`` to their ``(alpha, beta)``."""
+    ``systems`` maps ``"stiff"`` and ``"soft"`` to their ``(alpha, beta)``.
+    """
     checks = []
     for name, printed in (("stiff", False), ("soft", False), ("soft", True)):
         al, be = systems[name]
@@ -213,7 +216,8 @@ def fig4_checks(curves: Mapping[str, Curve],
 def fig5_checks(curves: Mapping[str, Curve], betas_below: tuple[float, ...],
                 betas_above: tuple[float, ...]) -> tuple[list[Check], list[str]]:
     """Fig. 5: corrected eq. (27) as the upper envelope above beta = 1, monotonicity, and
-    (as sentences) where the plateau at mu0 begins near the resonance."""
+    (as sentences) where the plateau at mu0 begins near the resonance.
+    """
     checks = []
     # the upper envelope of the curves above beta = 1 tends to the soft limit
     for b in betas_above[2:]:
@@ -345,7 +349,8 @@ def fig6_note(curves: Mapping[str, Curve], amplitudes: Sequence[float],
 def prediction_note(mu0: float, u_z0: float, amplitudes_um: Sequence[float],
                     velocity_unit: float) -> str:
     """Figs. 8-9: the predicted plateau COF ``mu0 * resonant_plateau_exact(du_z/u_z0)``
-    (first eq. 32) for each amplitude (micrometres), in words."""
+    (first eq. 32) for each amplitude (micrometres), in words.
+    """
     plateaus = ", ".join(
         f"{du:g} um: {mu0 * float(theory.resonant_plateau_exact(du * 1e-6 / u_z0)):.3f}"
         for du in amplitudes_um)
@@ -397,7 +402,8 @@ def map_field(curves: Mapping[str, Curve], kind: str, alpha: np.ndarray, beta: n
               ) -> tuple[np.ndarray, np.ndarray]:
     """``(mu/mu0, trusted)`` on the ``(beta, alpha)`` grid of one map (``kind`` = ``"vbar"``
     or ``"V"``), from one-point curves carrying ``meta`` ``map``, ``row`` and ``alpha``;
-    nan and False where no curve lies."""
+    nan and False where no curve lies.
+    """
     mu = np.full((beta.size, alpha.size), np.nan)
     ok = np.zeros_like(mu, dtype=bool)
     index = {a: j for j, a in enumerate(alpha)}
@@ -434,7 +440,8 @@ def history_transitions(h: History, window: tuple[float, float]) -> list[Event]:
 
 def history_mu_ratio(h: History) -> float:
     """``mu/mu0`` of a sampled history: the time average of ``f`` over that of ``n`` (eq. 25,
-    trapezoidal rule over the samples)."""
+    trapezoidal rule over the samples).
+    """
     return float(np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau))
 
 

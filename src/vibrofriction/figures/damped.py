@@ -160,8 +160,11 @@ def damped_case_iv(quick: bool = False) -> Recipe:
 
 # --------------------------------------------------------------------------- Fig. 12
 def damped_system(name: str) -> Physical:
-    """The system ``name`` of Fig. 10 (:data:`.dimensional.SYSTEMS`) with a pin of quality
-    factor :data:`QUALITY_FACTOR`."""
+    """A system of Fig. 10 with a damped pin.
+
+    The system ``name`` of Fig. 10 (:data:`.dimensional.SYSTEMS`) with a pin of quality
+    factor :data:`QUALITY_FACTOR`.
+    """
     return physical_system(name).with_damping(quality_factor=QUALITY_FACTOR)
 
 

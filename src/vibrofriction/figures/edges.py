@@ -9,7 +9,25 @@ __all__ = ["cell_edges", "is_geometric"]
 
 
 def is_geometric(values: ArrayLike) -> bool:
-    """Are ``values`` (3 or more, all > 0) evenly spaced in ``log``, e.g. ``numpy.geomspace``?"""
+    """Whether ``values`` are evenly spaced in ``log``, as :func:`numpy.geomspace` makes them.
+
+    Parameters
+    ----------
+    values : array_like
+        A 1-D axis.
+
+    Returns
+    -------
+    bool
+        True for 3 or more finite values, all > 0, with equal ratios (to ``1e-6``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from vibrofriction.figures import is_geometric
+    >>> is_geometric(np.geomspace(1e-2, 1e2, 5)), is_geometric([0.0, 0.5, 1.0])
+    (True, False)
+    """
     v = np.asarray(values, dtype=float)
     if v.ndim != 1 or v.size < 3 or not np.all(np.isfinite(v)) or np.any(v <= 0):
         return False
@@ -21,10 +39,36 @@ def cell_edges(values: ArrayLike, log: bool | None = None, name: str = "axis"
                ) -> NDArray[np.float64]:
     """The ``n + 1`` edges of ``n`` cells centred on ``values`` (for ``pcolormesh``).
 
-    Inner edges are midpoints, outer ones mirror the nearest inner edge; with ``log``
-    (default: ``is_geometric(values)``) midpoints are taken in ``log``, so that cells
-    of a geometric axis look equal on a log scale.  A single value gets a cell of
-    width 1 (``log``: a factor 1.1 either way).  ValueError for non-finite values.
+    Inner edges are midpoints, outer ones mirror the nearest inner edge. A single value
+    gets a cell of width 1 (``log``: a factor 1.1 either way).
+
+    Parameters
+    ----------
+    values : array_like
+        A 1-D axis of finite values.
+    log : bool or None, optional
+        Take the midpoints in ``log``, so that cells of a geometric axis look equal on a
+        log scale; None (default): :func:`is_geometric` of ``values``.
+    name : str, optional
+        The axis' name, for the error messages.
+
+    Returns
+    -------
+    numpy.ndarray
+        The ``n + 1`` edges.
+
+    Raises
+    ------
+    ValueError
+        For an empty axis, non-finite values, or values ``<= 0`` on a log axis.
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import cell_edges
+    >>> cell_edges([0.0, 0.5, 1.0])
+    array([-0.25,  0.25,  0.75,  1.25])
+    >>> cell_edges([0.01, 0.1, 1.0])  # a geometric axis: midpoints in log
+    array([0.00316228, 0.03162278, 0.31622777, 3.16227766])
     """
     v = np.asarray(values, dtype=float)
     if v.ndim != 1 or v.size == 0 or not np.all(np.isfinite(v)):

@@ -32,8 +32,11 @@ _WINDOW = (0.5, 2.75)
 
 
 def _shade_phases(ax, tau_p, phase) -> None:
-    """Shade every maximal run of samples in stick, reverse slip or flight (forward slip,
-    the ordinary sliding, stays unshaded)."""
+    """Shade the runs of stick, reverse slip and flight.
+
+    Shade every maximal run of samples in stick, reverse slip or flight (forward slip,
+    the ordinary sliding, stays unshaded).
+    """
     labelled = set()
     start = 0
     for i in range(1, len(phase) + 1):

@@ -28,18 +28,53 @@ __all__ = ["Check", "Recipe", "Rendered", "Table", "curve_table", "solve_recipes
 
 @dataclass(frozen=True)
 class Table:
-    """Columns of equal length plus the parameter lines written as the CSV header."""
+    """Columns of equal length plus the parameter lines written as the CSV header.
+
+    Parameters
+    ----------
+    name : str
+        The table's name (the first comment line of its CSV).
+    parameters : sequence of str
+        Lines that state the parameters, written as ``#`` comments.
+    columns : mapping of str to numpy.ndarray
+        The columns by name, all of one length.
+
+    Raises
+    ------
+    ValueError
+        If the columns differ in length.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import numpy as np
+    >>> from vibrofriction.figures import Table
+    >>> table = Table("demo", ["alpha = 0.1"], {"vbar": np.array([0.5]),
+    ...                                         "mu_ratio": np.array([0.5875])})
+    >>> len(table)
+    1
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     print(table.write_csv(Path(tmp) / "demo.csv").read_text())
+    # demo
+    # alpha = 0.1
+    vbar,mu_ratio
+    0.5,0.5875
+    <BLANKLINE>
+    """
 
     name: str
     parameters: Sequence[str]
     columns: Mapping[str, NDArray]
 
     def __post_init__(self) -> None:
+        """Check that the columns have one length."""
         lengths = {len(np.asarray(v)) for v in self.columns.values()}
         if len(lengths) > 1:
             raise ValueError(f"table {self.name!r}: columns differ in length {sorted(lengths)}")
 
     def __len__(self) -> int:
+        """The number of rows."""
         return len(next(iter(self.columns.values()))) if self.columns else 0
 
     def write_csv(self, path: Path) -> Path:
@@ -70,9 +105,25 @@ def _cell(x: object) -> str:
 class Check:
     """One comparison of the numerics with a closed form.
 
-    ``deviation`` is the largest ``|numerics - closed form|`` of ``mu/mu0`` (or of
-    the quantity named in ``formula``) over the points described by ``where``;
-    ``at`` says where it occurs; ``remark`` gives the verdict in words.
+    Parameters
+    ----------
+    formula : str
+        The closed form, e.g. ``"eq. (2)"``.
+    where : str
+        The points compared, in words.
+    deviation : float
+        The largest ``|numerics - closed form|`` of ``mu/mu0`` (or of the quantity named
+        in ``formula``) over those points.
+    at : str
+        Where it occurs.
+    remark : str, optional
+        The verdict in words.
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import Check
+    >>> Check("eq. (2)", "a < 1", 1e-6, "vbar = 1e-4")
+    Check(formula='eq. (2)', where='a < 1', deviation=1e-06, at='vbar = 1e-4', remark='')
     """
 
     formula: str
@@ -84,7 +135,23 @@ class Check:
 
 @dataclass(frozen=True)
 class Rendered:
-    """What a recipe produces: a figure (or ``None``), its data, its checks and notes."""
+    """What a recipe produces: a figure (or ``None``), its data, its checks and notes.
+
+    Parameters
+    ----------
+    figure : matplotlib.figure.Figure or None
+        The figure; None for a recipe of checks only.
+    tables : tuple of Table
+        Its data, written as CSV.
+    checks : tuple of Check, optional
+        Its comparisons with the closed forms.
+    notes : str, optional
+        Markdown for the report.
+
+    Examples
+    --------
+    See :class:`Recipe`.
+    """
 
     figure: Figure | None
     tables: tuple[Table, ...]
@@ -96,8 +163,32 @@ class Rendered:
 class Recipe:
     """A figure of the reproduction: its series and how to render them.
 
-    ``name`` is the file stem (``fig04``); ``title`` and ``caption`` (Markdown)
-    go into the report; ``render`` receives the solved curves by series key.
+    Parameters
+    ----------
+    name : str
+        The file stem (``fig04``).
+    title, caption : str
+        Markdown for the report.
+    series : tuple of Series
+        The curves to solve.
+    render : callable
+        ``render(curves)``: a :class:`Rendered` from the solved curves by series key.
+    parameters : tuple of str, optional
+        Lines that state the parameters.
+
+    Examples
+    --------
+    A recipe of one point, solved and rendered as a table:
+
+    >>> from vibrofriction.figures import Recipe, Rendered, Table, solve_recipes
+    >>> from vibrofriction.figures.series import series_at_vbar
+    >>> point = series_at_vbar("b", alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.5])
+    >>> def render(curves):
+    ...     return Rendered(None, (Table("mu", [], {"mu_ratio": curves["b"].mu_ratio}),))
+    >>> recipe = Recipe("demo", "A demo", "One point.", (point,), render)
+    >>> [curves] = solve_recipes([recipe])
+    >>> recipe.render(curves).tables[0].columns
+    {'mu_ratio': array([0.58754462])}
     """
 
     name: str
@@ -109,12 +200,33 @@ class Recipe:
 
     @property
     def points(self) -> int:
+        """The number of velocity points of all series."""
         return sum(s.size for s in self.series)
 
 
 def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
                   settings=None) -> list[dict[str, Curve]]:
-    """Solve the series of all recipes in one batch; curves per recipe, by series key."""
+    """Solve the series of all recipes in one batch.
+
+    Parameters
+    ----------
+    recipes : sequence of Recipe
+        The recipes.
+    runner : callable, optional
+        Solves the points (a ``Runner`` of ``vibrofriction.figures.series``); default
+        the exact solver in this process.
+    settings : vibrofriction.SolverSettings, optional
+        The solver's settings.
+
+    Returns
+    -------
+    list of dict of str to Curve
+        Per recipe, its curves by series key.
+
+    Examples
+    --------
+    See :class:`Recipe`.
+    """
     tagged = [replace(s, key=f"{i}\x1f{s.key}") for i, r in enumerate(recipes) for s in r.series]
     solved = solve(tagged, runner=runner, settings=settings)
     out: list[dict[str, Curve]] = [{} for _ in recipes]

@@ -48,11 +48,34 @@ Runner = Callable[..., dict[str, NDArray]]
 class Series:
     """One curve: a system and the inertial velocities at which to solve it.
 
-    ``key`` names the curve uniquely within a figure; ``vbar`` holds ``v0/v0*``
-    (eq. 16) at each point, ``nan`` where it does not exist (cases III, IV);
-    ``meta`` carries plotting information (labels, panel) and is written into
-    the data tables.  ``V`` is signed (the solver's mirror solves ``V < 0``); ``V = 0``
-    with a transverse oscillation (``a_y > 0``) is refused, as by the solver.
+    Parameters
+    ----------
+    key : str
+        Names the curve uniquely within a figure.
+    alpha, beta, amplitude : float
+        The system (eq. 20).
+    v_inertial : array_like
+        The inertial velocities ``V`` (1-D); signed (the solver's mirror solves
+        ``V < 0``); ``V = 0`` with a transverse oscillation (``a_y > 0``) is refused, as
+        by the solver.
+    vbar : array_like
+        ``v0/v0*`` (eq. 16) at each point, ``nan`` where it does not exist (cases III,
+        IV); broadcast to the velocities.
+    meta : mapping, optional
+        Plotting information (labels, panel), written into the data tables.
+    zeta, eta_c, a_x, phase_x, inplane_on, a_y, phase_y, profile_exponent : optional
+        The rest of the system, as :class:`~vibrofriction.Dimensionless` names them.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from vibrofriction.figures import Series, solve
+    >>> series = Series("a", alpha=0.1, beta=2.0, amplitude=0.5, v_inertial=[0.3],
+    ...                 vbar=np.nan)
+    >>> series.size
+    1
+    >>> solve([series])["a"].mu_ratio  # above the critical velocity: mu0
+    array([1.])
     """
 
     key: str
@@ -72,6 +95,7 @@ class Series:
     profile_exponent: float = math.inf
 
     def __post_init__(self) -> None:
+        """Check the velocity grid and the system."""
         v = checked(f"series {self.key!r}: v_inertial", self.v_inertial)
         if v.ndim != 1:
             raise ValueError(f"series {self.key!r}: v_inertial must be a 1-d array, "
@@ -86,6 +110,7 @@ class Series:
 
     @property
     def size(self) -> int:
+        """The number of velocity points."""
         return int(self.v_inertial.size)
 
 
@@ -101,9 +126,11 @@ def series_at_vbar(key: str, alpha: float, beta: float, amplitude: float,
 
 
 def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: object) -> Series:
-    """A series of a :class:`Physical` system on a grid of ``v0`` (m/s): its dimensionless
-    groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or infinite);
-    ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``."""
+    """A series of a :class:`Physical` system on a grid of ``v0`` (m/s).
+
+    Its dimensionless groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or
+    infinite); ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``.
+    """
     v0 = np.asarray(v0, dtype=float)
     dim = physical.to_dimensionless()
     V = np.asarray(physical.v0_to_inertial(v0))
@@ -122,23 +149,44 @@ CURVE_COLUMNS = (*FLOAT_COLUMNS, *INT_COLUMNS, "trusted")
 
 @dataclass(frozen=True)
 class Curve:
-    """A solved :class:`Series`: every column :func:`solve_points` returns (named by
+    """A solved :class:`Series`.
+
+    Every column :func:`~vibrofriction.solver.solve_points` returns (named by
     :mod:`vibrofriction.schema`: ``mu_ratio`` (eq. 25), its ``error``, status codes,
-    ``trusted`` (the solver's one definition: :meth:`SolverSettings.trusted`) ...) as an
-    attribute of the same name."""
+    ``trusted`` (the solver's one definition:
+    :meth:`~vibrofriction.SolverSettings.trusted`) ...) is an attribute of the same name.
+
+    Parameters
+    ----------
+    series : Series
+        What was solved.
+    columns : mapping of str to numpy.ndarray
+        Every column of ``CURVE_COLUMNS`` (those of ``solve_points``).
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import solve
+    >>> from vibrofriction.figures.series import series_at_vbar
+    >>> curve = solve([series_at_vbar("b", 0.1, 2.0, 0.5, [0.5])])["b"]
+    >>> curve.mu_ratio, curve.trusted, curve.vbar
+    (array([0.58754462]), array([ True]), array([0.5]))
+    """
 
     series: Series
     columns: Mapping[str, NDArray]
 
     def __post_init__(self) -> None:
+        """Check that the curve has every column of :data:`CURVE_COLUMNS`."""
         missing = [k for k in CURVE_COLUMNS if k not in self.columns]
         if missing:
             raise ValueError(f"curve {self.series.key!r} lacks the columns {missing}")
 
     @classmethod
     def of(cls, series: Series, **columns: ArrayLike) -> Curve:
-        """A curve with the given columns; the others hold what no result holds (nan, -1,
-        not trusted): for curves made by hand."""
+        """A curve with the given columns.
+
+        The others hold what no result holds (nan, -1, not trusted): for curves made by hand.
+        """
         def filled(k: str) -> NDArray:
             if k in columns:
                 return np.broadcast_to(np.asarray(columns[k]), (series.size,)).copy()
@@ -152,6 +200,7 @@ class Curve:
         return cls(series, {k: filled(k) for k in CURVE_COLUMNS})
 
     def __getattr__(self, name: str) -> NDArray:
+        """A column by name, as an attribute."""
         columns = self.__dict__.get("columns", {})
         if name in columns:
             return columns[name]
@@ -159,8 +208,10 @@ class Curve:
 
     @property
     def suspicious(self) -> NDArray[np.bool_]:
-        """Points whose status claims convergence but whose error estimate is too large
-        to trust; drawn as open circles and listed in the report."""
+        """Points whose status claims convergence but whose error estimate is too large to trust.
+
+        Drawn as open circles and listed in the report.
+        """
         return converged(self.status) & ~self.trusted
 
     @property
@@ -171,16 +222,42 @@ class Curve:
     # shortcuts
     @property
     def v_inertial(self) -> NDArray[np.float64]:
+        """The inertial velocities ``v0`` of the series (m/s)."""
         return self.series.v_inertial
 
     @property
     def vbar(self) -> NDArray[np.float64]:
+        """The scaled velocities ``vbar`` of the series."""
         return self.series.vbar
 
 
 def solve(series: Iterable[Series], *, runner: Runner | None = None,
           settings: SolverSettings | None = None) -> dict[str, Curve]:
-    """Solve every point of every series in one batch; return curves by key."""
+    """Solve every point of every series in one batch.
+
+    Parameters
+    ----------
+    series : iterable of Series
+        The curves, with unique keys.
+    runner : callable, optional
+        Solves the points (a ``Runner``); default the exact solver in this process.
+    settings : vibrofriction.SolverSettings, optional
+        The solver's settings.
+
+    Returns
+    -------
+    dict of str to Curve
+        The solved curves by key.
+
+    Raises
+    ------
+    ValueError
+        If two series share a key.
+
+    Examples
+    --------
+    See :class:`Series` and :class:`Curve`.
+    """
     series = list(series)
     keys = [s.key for s in series]
     if len(set(keys)) != len(keys):
@@ -201,8 +278,11 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
 
 
 def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.object_]]:
-    """The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
-    and their ``inplane_on``: the arguments of a :data:`Runner`."""
+    """The arguments of a :data:`Runner` for every point of ``series``.
+
+    The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
+    and their ``inplane_on``: the arguments of a :data:`Runner`.
+    """
     columns = [np.concatenate([s.v_inertial if n == "v_inertial" else
                                np.full(s.size, getattr(s, n)) for s in series])
                if series else np.empty(0) for n in POINT_ARGS]
@@ -213,9 +293,12 @@ def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.o
 
 def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
                     ) -> dict[str, NDArray]:
-    """:func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
+    """The default :data:`Runner`: the exact solver on every point.
+
+    :func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
     whose value differs from point to point (one call per value); the default
-    :data:`Runner`."""
+    :data:`Runner`.
+    """
     *point, exponent, inplane_on = columns
     on = np.asarray(inplane_on, dtype=object)
     values = sorted(set(on.tolist()))

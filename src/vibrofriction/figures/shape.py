@@ -80,9 +80,10 @@ BENCH_DU_Z: tuple[float, ...] = (0.45e-6, 0.9e-6, 1.6e-6)
 
 # --------------------------------------------------------------------------- amplitudes
 def force_amplitude(amplitude: float, profile_exponent: float) -> float:
-    """``A_F = (F_max - F_min)/(2 <F_N>)`` of the imposed indentation ``d0 (1 + a cos tau)``:
-    ``F/F_N0 = max(0, 1 + a cos tau)^p``, ``p = 1 + 1/n`` (``a`` for a flat punch with
-    ``a <= 1``)."""
+    """``A_F = (F_max - F_min)/(2 <F_N>)`` of the imposed indentation ``d0 (1 + a cos tau)``.
+
+    ``F/F_N0 = max(0, 1 + a cos tau)^p``, ``p = 1 + 1/n`` (``a`` for a flat punch with ``a <= 1``).
+    """
     p = 1.0 + 1.0 / profile_exponent
     a = float(amplitude)
     top, low = (1.0 + a) ** p, max(0.0, 1.0 - a) ** p
@@ -90,8 +91,11 @@ def force_amplitude(amplitude: float, profile_exponent: float) -> float:
 
 
 def equal_force_amplitude(flat_amplitude: float, profile_exponent: float) -> float:
-    """The indentation amplitude ``a`` at which a tip of exponent ``n`` has the flat punch's
-    normal-force amplitude :func:`force_amplitude` (Brent's method, to 1e-14)."""
+    """The indentation amplitude of the flat punch's force amplitude for a tip ``n``.
+
+    The indentation amplitude ``a`` at which a tip of exponent ``n`` has the flat punch's
+    normal-force amplitude :func:`force_amplitude` (Brent's method, to 1e-14).
+    """
     if math.isinf(profile_exponent):
         return float(flat_amplitude)
     target = force_amplitude(flat_amplitude, math.inf)
@@ -107,8 +111,11 @@ def equal_force_amplitude(flat_amplitude: float, profile_exponent: float) -> flo
 
 def stiff_law(v_inertial: NDArray, alpha: float, beta: float, amplitude: float,
               profile_exponent: float) -> NDArray:
-    """The stiff-system law at the scaled velocities ``V``: ``vbar = (beta - alpha) V
-    n/((n + 1) a)`` (``k V/a`` for the flat punch), docs/contact_geometry.md."""
+    """The stiff-system law at the scaled velocities ``V``.
+
+    ``vbar = (beta - alpha) V n/((n + 1) a)`` (``k V/a`` for the flat punch),
+    docs/contact_geometry.md.
+    """
     V = np.asarray(v_inertial, dtype=float)
     n = profile_exponent
     if math.isinf(n):
@@ -277,8 +284,10 @@ def shape_dependence(quick: bool = False) -> Recipe:
 
 # --------------------------------------------------------------------------- Fig. 18
 def bench_physical(du_z: float, contact_model: str) -> Physical:
-    """Fig. 18's bench at the indentation amplitude ``du_z`` (m), ``"linearised"`` or
-    ``"mdr"``."""
+    """The bench of Fig. 18 at the indentation amplitude ``du_z`` (m).
+
+    ``contact_model`` is ``"linearised"`` or ``"mdr"``.
+    """
     from ..bench import from_bench
 
     return from_bench(**BENCH, du_z=du_z, contact_model=contact_model)

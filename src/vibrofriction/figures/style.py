@@ -1,4 +1,4 @@
-"""One matplotlib style for every figure: column widths, the paper's symbols.
+r"""One matplotlib style for every figure: column widths, the paper's symbols.
 
 Figures are built with the object-oriented API (``matplotlib.figure.Figure``, no
 pyplot), so importing this package leaves the backend of a notebook or script as
@@ -7,7 +7,7 @@ it was and works headless.
 Sizes follow a two-column journal page: :data:`COLUMN` (one column, 3.4 in) and
 :data:`PAGE` (both columns, 7.0 in); fonts are 8 pt so that the figures are
 readable when printed at those widths.  Labels use the paper's notation
-(``$\\bar v$``, ``$\\mu_{macro}/\\mu_0$``, ``$\\alpha$``, ``$\\beta$``).
+(``$\bar v$``, ``$\mu_{macro}/\mu_0$``, ``$\alpha$``, ``$\beta$``).
 """
 
 from __future__ import annotations

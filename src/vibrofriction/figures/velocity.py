@@ -106,8 +106,11 @@ def _case_label(alpha: float, beta: float) -> str:
 
 def _matrix_panel(ax, c: Curve, alpha: float, beta: float, amplitude: float,
                   vbar_max: float, static: float) -> None:
-    """One panel of the matrix: the curve, its untrusted points, the static value, the
-    case, the named point and, on the resonance lines, the axis ``V`` in orange."""
+    """One panel of the matrix.
+
+    The curve, its untrusted points, the static value, the case, the named point and, on the
+    resonance lines, the axis ``V`` in orange.
+    """
     resonant = c.series.meta.get("axis") == "v_inertial"
     x = c.v_inertial if resonant else c.vbar
     ax.plot(x, c.trusted_mu, color=style.NUMERIC, lw=0.9)

@@ -37,7 +37,22 @@ __all__ = ["STATUS_PENDING", "Plan", "auto_chunk_size", "available_cores", "comp
 
 
 def fingerprint() -> str:
-    """Hash of the source code that computes a sweep's values (see :func:`identity`)."""
+    """The hash of the source code that computes a sweep's values.
+
+    A store records it, so that it is never resumed with another solver (see
+    :func:`identity`).
+
+    Returns
+    -------
+    str
+        16 hexadecimal digits.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import fingerprint
+    >>> len(fingerprint())
+    16
+    """
     return identity()[1]
 
 
@@ -77,59 +92,81 @@ def sweep(
 
     Parameters
     ----------
-    system : optional base values: a :class:`~vibrofriction.params.Dimensionless`
-        (``alpha``, ``beta``, ``amplitude`` keywords override it) or a
-        :class:`~vibrofriction.params.Physical` system, swept over any of its SI
-        fields passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
-        du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...``) and the
-        velocity ``v0`` (m/s).
-    alpha, beta, amplitude : eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid
-        contact.  ``beta > alpha`` must hold at every grid point.
-    zeta, eta_c : the pin's damping ratio and the contact's loss factor (docs/damping.md);
-        default the system's, or 0.  Physical systems sweep ``c_x``, ``c_xc`` (N s/m).
-    a_x, phase_x : the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)``
-        (docs/inplane.md); default the system's, or 0.  Physical systems sweep ``du_x``
+    system : Dimensionless or Physical, optional
+        The base values. A :class:`~vibrofriction.params.Dimensionless` (``alpha``,
+        ``beta``, ``amplitude`` keywords override it) or a
+        :class:`~vibrofriction.params.Physical` system, swept over any of its SI fields
+        passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
+        du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...``) and
+        the velocity ``v0`` (m/s).
+    alpha, beta, amplitude : array_like, optional
+        Eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid contact.
+        ``beta > alpha`` must hold at every grid point.
+    zeta, eta_c : array_like, optional
+        The pin's damping ratio and the contact's loss factor (docs/damping.md); default
+        the system's, or 0. Physical systems sweep ``c_x``, ``c_xc`` (N s/m).
+    a_x, phase_x : array_like, optional
+        The longitudinal in-plane oscillation ``a_x cos(tau + phase_x)``
+        (docs/inplane.md); default the system's, or 0. Physical systems sweep ``du_x``
         (m) and ``phase_x`` (rad).
-    a_y, phase_y : the transverse in-plane oscillation ``a_y cos(tau + phase_y)`` (the 2-D
-        solver, docs/inplane.md section 6); default the system's, or 0.  Physical systems
-        sweep ``du_y`` (m) and ``phase_y`` (rad).
-    profile_exponent : the exponent ``n`` of the tip ``z = c r^n`` (docs/contact_geometry.md;
-        the same in SI and scaled form); default the system's, or ``inf`` (the flat
-        punch).  Points with a finite ``n`` are solved by the MDR solver, point by point
-        (a tenth of a second to seconds each), from steady sliding (no continuation), on
-        the ``v_inertial`` or ``v0`` axis (``vbar`` is not defined for them yet), and not
-        with ``eta_c``, ``a_x``, ``a_y`` > 0 or ``beta = inf`` (a ValueError when solved);
-        their ``critical_velocity`` is ``theory.profile_critical_velocity`` (nan with
-        ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived).  In a physical sweep the
-        other SI fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with ``n``
-        (:class:`~vibrofriction.params.Physical`): not the same tip seen flat.
-    inplane_on : where the in-plane oscillation is imposed, ``"substrate"`` or
-        ``"holder"`` (one for the whole grid); default the system's, or ``"substrate"``.
-    vbar, v_inertial : the velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not
-        exist where ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``, nor with an
-        in-plane oscillation) or the inertial velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6;
+    a_y, phase_y : array_like, optional
+        The transverse in-plane oscillation ``a_y cos(tau + phase_y)`` (the 2-D solver,
+        docs/inplane.md section 6); default the system's, or 0. Physical systems sweep
+        ``du_y`` (m) and ``phase_y`` (rad).
+    profile_exponent : array_like, optional
+        The exponent ``n`` of the tip ``z = c r^n`` (docs/contact_geometry.md; the same
+        in SI and scaled form); default the system's, or ``inf`` (the flat punch).
+        Points with a finite ``n`` are solved by the MDR solver, point by point (a
+        tenth of a second to seconds each), from steady sliding (no continuation), on
+        the ``v_inertial`` or ``v0`` axis (``vbar`` is not defined for them yet), and
+        not with ``eta_c``, ``a_x``, ``a_y`` > 0 or ``beta = inf`` (a ValueError when
+        solved); their ``critical_velocity`` is ``theory.profile_critical_velocity``
+        (nan with ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived). In a physical sweep
+        the other SI fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with
+        ``n`` (:class:`~vibrofriction.params.Physical`): not the same tip seen flat.
+    inplane_on : {"substrate", "holder"}, optional
+        Where the in-plane oscillation is imposed (one for the whole grid); default the
+        system's, or ``"substrate"``.
+    vbar, v_inertial : array_like, optional
+        The velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not exist where
+        ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``, nor with an in-plane
+        oscillation) or the inertial velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6;
         signed: negative slides the other way).
-    v0 : velocity in m/s (Physical systems; signed).
-    store : path of a zarr store.  Each finished block is written as soon as it is
+    v0 : array_like, optional
+        The velocity in m/s (Physical systems; signed).
+    store : str or os.PathLike, optional
+        The path of a zarr store. Each finished block is written as soon as it is
         done; calling again with the same arguments resumes, recomputing only
-        unfinished blocks.  A store made for another grid, other settings, another
-        initial state, package version or solver source is an error.  ``None``: results in memory.
-    client : a ``dask.distributed.Client``: run the blocks on its cluster.
-    workers : local processes (default: all cores available); 1 runs in this process.
+        unfinished blocks. A store made for another grid, other settings, another
+        initial state, package version or solver source is an error. None (default):
+        the results stay in memory.
+    client : dask.distributed.Client, optional
+        Run the blocks on its cluster.
+    workers : int, optional
+        Local processes (default: all cores available); 1 runs in this process.
         Workers die with the process that started them, even when it is killed
         (:mod:`vibrofriction.parallel`).
-    chunk_size : points per block of work (and per zarr chunk), about; None (default):
-        about 1 % of the grid, from 1000 to 10,000 points (``auto_chunk_size``).  An
+    chunk_size : int, optional
+        About how many points make a block of work (and a zarr chunk); None (default):
+        about 1 % of the grid, from 1000 to 10,000 points (:func:`auto_chunk_size`). An
         existing store keeps its own block shape.
-    settings : :class:`~vibrofriction.solver.SolverSettings`, recorded in the attributes.
-    initial : ``"sliding"`` (default, docs/model.md) or ``"rest"``: the start of every point,
-        or with continuation of the first point of each upward sweep.
-    continuation : walk each velocity curve up and then down, every point starting from
-        the final state of the previous one (hysteresis, coexisting steady states);
-        adds a ``direction`` dimension (``up``, ``down``).  The velocity axis must be
-        swept and increasing.
-    progress : show a progress bar (points done, rate, time left) on stderr.
-    overwrite : replace an existing store instead of resuming it.
+    settings : vibrofriction.SolverSettings, optional
+        The solver's settings (:class:`~vibrofriction.SolverSettings`), recorded in the
+        attributes.
+    initial : {"sliding", "rest"}, optional
+        The start of every point (docs/model.md), or with continuation of the first
+        point of each upward sweep.
+    continuation : bool, optional
+        Walk each velocity curve up and then down, every point starting from the final
+        state of the previous one (hysteresis, coexisting steady states); adds a
+        ``direction`` dimension (``up``, ``down``). The velocity axis must be swept and
+        increasing.
+    progress : bool, optional
+        Show a progress bar (points done, rate, time left) on stderr.
+    overwrite : bool, optional
+        Replace an existing store instead of resuming it.
+    **physical : array_like
+        The SI fields of a :class:`~vibrofriction.params.Physical` ``system`` to sweep.
 
     Returns
     -------
@@ -147,7 +184,25 @@ def sweep(
 
     Results are bitwise identical however the work is split (one process, local
     cores, a Dask cluster, any ``chunk_size``): each point depends on its own
-    parameters only.  Raises ``ValueError`` before any work for a bad grid.
+    parameters only.
+
+    Raises
+    ------
+    ValueError
+        Before any work, for a bad grid.
+
+    Examples
+    --------
+    Below the critical velocity (``vbar = 1``, eq. 16) the oscillation lowers the
+    friction; at it the friction is back to ``mu0``:
+
+    >>> import vibrofriction as vf
+    >>> atlas = vf.sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.25, 0.5, 1.0],
+    ...                  workers=1, progress=False)
+    >>> atlas.mu_ratio.values
+    array([0.57195311, 0.58754462, 1.        ])
+    >>> bool(atlas.trusted.all())
+    True
     """
     version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,

@@ -33,9 +33,25 @@ _VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "schema.py", "params/*.py", "t
 
 @functools.cache
 def identity() -> tuple[str, str]:
-    """``(package version, fingerprint)``: the fingerprint hashes the source code that
-    computes the values, so a store is never resumed, nor a Dask worker used, with a
-    solver that differs from the one that started (even under the same version)."""
+    """What a sweep's values depend on: the package version and the solver's source.
+
+    The fingerprint hashes the source code that computes the values, so a store is never resumed,
+    nor a Dask worker used, with a solver that differs from the one that started (even under the
+    same version).
+
+    Returns
+    -------
+    tuple of (str, str)
+        ``(package version, fingerprint)``; the fingerprint is 16 hexadecimal digits.
+
+    Examples
+    --------
+    >>> import vibrofriction
+    >>> from vibrofriction.sweep import identity
+    >>> version, fingerprint = identity()
+    >>> version == vibrofriction.__version__, len(fingerprint)
+    (True, 16)
+    """
     from .. import __version__
 
     root = Path(__file__).resolve().parents[1]
@@ -48,7 +64,15 @@ def identity() -> tuple[str, str]:
 
 
 def warm_up() -> None:
-    """Load the compiled kernels (from numba's on-disk cache, or compile and cache them)."""
+    """Load the compiled kernels (from numba's on-disk cache, or compile and cache them).
+
+    Each worker process of a sweep runs it first, so that no block pays for it.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import warm_up
+    >>> warm_up()
+    """
     solve_points(0.5, 2.0, 0.5, 0.1)
 
 
@@ -79,8 +103,11 @@ def _velocity_values(plan: Plan, block: int) -> np.ndarray:
 
 
 def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
-    """The dimensionless parameters per row (by name, in the schema's order), the row
-    variables and ``V`` per (row, velocity)."""
+    """The parameters and velocities of the rows of a block.
+
+    The dimensionless parameters per row (by name, in the schema's order), the row
+    variables and ``V`` per (row, velocity).
+    """
     p = _rows(plan, block)
     point = {n: p[n] for n in DIMENSIONLESS}
     shape = p["alpha"].shape
@@ -101,9 +128,12 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
 
 
 def _curved_critical(critical: Callable[[], float]) -> float:
-    """A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
+    """A curved profile's critical velocity, nan where it is not derived.
+
+    A curved profile's critical velocity (``theory.profile_critical_velocity``), nan
     where it is not derived (``eta_c``, ``a_x`` or ``a_y`` > 0: the system refuses by
-    name, docs/contact_geometry.md)."""
+    name, docs/contact_geometry.md).
+    """
     try:
         return critical()
     except ValueError:
@@ -151,9 +181,31 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
 
 
 def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
-    """Solve every point of block number ``block``; returns ``(block, variables)``.
+    """Solve every point of block number ``block``.
 
-    Point variables have the block's shape, row variables the shape of its rows.
+    The unit of work of :func:`sweep`, run in this process, a local worker or a Dask
+    worker.
+
+    Parameters
+    ----------
+    plan : Plan
+        The grid (:func:`make_plan`).
+    block : int
+        The block's number, ``0 <= block < plan.n_blocks``.
+
+    Returns
+    -------
+    tuple of (int, dict of str to numpy.ndarray)
+        ``(block, variables)``: point variables have the block's shape, row variables
+        the shape of its rows.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import compute_block, make_plan
+    >>> plan = make_plan(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.25, 0.5])
+    >>> block, variables = compute_block(plan, 0)
+    >>> variables["mu_ratio"]
+    array([0.57195311, 0.58754462])
     """
     vel = _velocity_values(plan, block)
     if plan.kind == "physical":

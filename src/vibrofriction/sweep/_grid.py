@@ -91,6 +91,33 @@ def parse_axis(text: str, name: str) -> float | NDArray[np.float64]:
     ``0:1.2:121`` is ``numpy.linspace(0, 1.2, 121)``; ``1e-2:1e2:41:log`` is
     ``numpy.geomspace(1e-2, 1e2, 41)``; ``0.5`` is held fixed; ``0.25,0.5,1`` (or
     ``0.5,`` for a one-value axis) is swept.  ``inf`` is accepted (``beta``).
+
+    Parameters
+    ----------
+    text : str
+        The axis as the command line ``vibrofriction sweep`` takes it.
+    name : str
+        The parameter's name, for the error messages.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        A float for a value held fixed, a 1-D array for a swept axis.
+
+    Raises
+    ------
+    ValueError
+        For text that is none of the three forms.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import parse_axis
+    >>> parse_axis("0:1.2:4", "vbar")
+    array([0. , 0.4, 0.8, 1.2])
+    >>> parse_axis("1e-2:1e2:5:log", "alpha")
+    array([1.e-02, 1.e-01, 1.e+00, 1.e+01, 1.e+02])
+    >>> parse_axis("0.5", "amplitude")
+    0.5
     """
     text = text.strip()
     if not text:
@@ -140,7 +167,42 @@ def _hex(values: NDArray[np.float64]) -> str | list[str]:
 
 @dataclass(frozen=True, eq=False)
 class Plan:
-    """A validated grid, what defines its results, and how it is cut into blocks."""
+    """A validated grid, what defines its results, and how it is cut into blocks.
+
+    Made by :func:`make_plan` (never by hand); :func:`compute_block` solves one of its
+    blocks.
+
+    Parameters
+    ----------
+    kind : str
+        ``"dimensionless"`` or ``"physical"``.
+    params : tuple of Axis
+        The non-velocity parameters, in the schema's order.
+    velocity : Axis
+        The velocity axis.
+    settings : vibrofriction.SolverSettings
+        The solver's settings.
+    initial : str
+        ``"sliding"`` or ``"rest"``.
+    continuation : bool
+        Whether each velocity curve is walked up and down.
+    chunks : tuple of int
+        The block shape over :attr:`dims`.
+    version : str
+        The package version.
+    fingerprint : str, optional
+        The hash of the solver's source (:func:`identity`).
+    inplane_on : str, optional
+        Where the in-plane oscillation is imposed.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import make_plan
+    >>> plan = make_plan(alpha=[0.01, 0.1], beta=2.0, amplitude=0.5,
+    ...                  vbar=[0.0, 0.5, 1.0])
+    >>> plan.dims, plan.shape, plan.n_blocks
+    (('alpha', 'vbar'), (2, 3), 1)
+    """
 
     kind: str  # "dimensionless" or "physical"
     params: tuple[Axis, ...]  # non-velocity parameters, canonical order
@@ -289,7 +351,41 @@ def make_plan(
     version: str = "",
     fingerprint: str = "",
 ) -> Plan:
-    """Validate a grid and cut it into blocks; every check happens here, before any work."""
+    """Validate a grid and cut it into blocks; every check happens here, before any work.
+
+    The grid's parameters and options are those of :func:`sweep` (``system``,
+    ``alpha`` ... ``profile_exponent``, ``inplane_on``, the velocity axis, ``settings``,
+    ``initial``, ``continuation``, ``chunk_size``); besides them:
+
+    Parameters
+    ----------
+    physical : dict of str to array_like, optional
+        The SI fields of a :class:`~vibrofriction.params.Physical` ``system`` to sweep
+        (the keywords of :func:`sweep`).
+    version, fingerprint : str, optional
+        Recorded in the plan: what a store made from it is resumed with (:func:`identity`).
+
+    Returns
+    -------
+    Plan
+        The grid, cut into blocks of about ``chunk_size`` points.
+
+    Raises
+    ------
+    ValueError
+        For a bad grid or option, naming it.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from vibrofriction.sweep import make_plan
+    >>> plan = make_plan(alpha=[0.01, 0.1], beta=2.0, amplitude=0.5,
+    ...                  vbar=np.linspace(0, 1.2, 13))
+    >>> plan.kind, plan.dims, plan.size
+    ('dimensionless', ('alpha', 'vbar'), 26)
+    >>> plan.fixed["beta"], plan.fixed["amplitude"]
+    (2.0, 0.5)
+    """
     settings = _checked_options(settings, initial, chunk_size)
     _check_axisymmetric(system)
     on = getattr(system, "inplane_on", CHOICES["inplane_on"].default) if inplane_on is None \
@@ -331,9 +427,12 @@ def make_plan(
 
 
 def _check_axisymmetric(system: Any) -> None:
-    """ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
+    """Refuse a system whose pin is not axisymmetric.
+
+    ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
     ``alpha_y``, ``zeta_y`` given): the sweep does not carry them yet (refused, never
-    ignored)."""
+    ignored).
+    """
     names = [p.name for p in PARAMETERS if p.twin and getattr(system, p.name, None)
              is not None]
     if names:
@@ -343,7 +442,26 @@ def _check_axisymmetric(system: Any) -> None:
 
 
 def auto_chunk_size(points: int) -> int:
-    """The block size of a grid of ``points`` points when none is given (:data:`AUTO_BLOCKS`)."""
+    """The block size of a grid of ``points`` points when none is given.
+
+    About a hundredth of the grid (:data:`AUTO_BLOCKS`), from 1000 to 10,000 points.
+
+    Parameters
+    ----------
+    points : int
+        The grid's size.
+
+    Returns
+    -------
+    int
+        The number of points per block.
+
+    Examples
+    --------
+    >>> from vibrofriction.sweep import auto_chunk_size
+    >>> auto_chunk_size(1000), auto_chunk_size(10**6), auto_chunk_size(10**8)
+    (1000, 10000, 10000)
+    """
     return min(AUTO_MAX_CHUNK, max(DEFAULT_CHUNK_SIZE, points // AUTO_BLOCKS))
 
 
@@ -390,8 +508,11 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
                         vbar: ArrayLike | None, v_inertial: ArrayLike | None,
                         physical: dict[str, ArrayLike],
                         v0: ArrayLike | None) -> tuple[tuple[Axis, ...], Axis]:
-    """The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
-    schema's default) and the velocity axis (``vbar`` or ``v_inertial``)."""
+    """The parameter axes and the velocity axis of a sweep.
+
+    The axes of :data:`DIMENSIONLESS` (``values`` by name; None: the system's, else the
+    schema's default) and the velocity axis (``vbar`` or ``v_inertial``).
+    """
     if physical:
         raise ValueError(f"physical parameter(s) {sorted(physical)} need a Physical "
                          "system (sweep(Physical(...), v0=..., ...))")
@@ -434,8 +555,11 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
 
 
 def _check_above(axes: tuple[Axis, ...]) -> None:
-    """A parameter that must exceed another (``beta > alpha``, the schema's
-    ``Range.above``) does so at every point of the outer product."""
+    """Check that each ordered pair of parameters is ordered at every point.
+
+    A parameter that must exceed another (``beta > alpha``, the schema's
+    ``Range.above``) does so at every point of the outer product.
+    """
     by_name = {a.name: a for a in axes}
     for a in axes:
         other = PARAMETER[a.name].range.above
@@ -451,8 +575,10 @@ def _check_above(axes: tuple[Axis, ...]) -> None:
 
 
 def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:
-    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16): without
-    damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``."""
+    """``vbar`` is undefined where ``v0*`` is infinite or zero (eqs. 12, 16).
+
+    Without damping on ``alpha == 1`` or ``beta == 1``, and wherever ``amplitude == 0``.
+    """
     undamped = not np.any(ze.values > 0)
     for axis, value, why in ((al, 1.0, "alpha == 1 (case IV: v0* is infinite)"),
                              (be, 1.0, "beta == 1 (case III: v0* is zero)"),

@@ -300,10 +300,39 @@ def _check_is_sweep_store(path: Path):
 
 
 def open_atlas(store: str | os.PathLike) -> xr.Dataset:
-    """Open a sweep store lazily (dask arrays) as an ``xarray.Dataset``.
+    """Open a sweep store lazily (dask arrays) as an :class:`xarray.Dataset`.
 
-    The attributes ``blocks_done`` and ``blocks_total`` say how complete it is;
-    points not computed yet read as fill values (``nan``, ``status`` = -128).
+    Parameters
+    ----------
+    store : str or os.PathLike
+        The path of a zarr store written by :func:`sweep`.
+
+    Returns
+    -------
+    xarray.Dataset
+        The atlas. The attributes ``blocks_done`` and ``blocks_total`` say how complete
+        it is; points not computed yet read as fill values (``nan``, ``status`` = -128).
+
+    Raises
+    ------
+    ValueError
+        If ``store`` is not a sweep store.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> from pathlib import Path
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.sweep import open_atlas
+    >>> with tempfile.TemporaryDirectory() as tmp:
+    ...     store = Path(tmp) / "atlas.zarr"
+    ...     _ = vf.sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.25, 0.5],
+    ...                  workers=1, progress=False, store=store)
+    ...     atlas = open_atlas(store)
+    ...     print(atlas.attrs["blocks_done"], atlas.attrs["blocks_total"])
+    ...     print(atlas.mu_ratio.values)
+    1 1
+    [0.57195311 0.58754462]
     """
     path = Path(store)
     meta = _check_is_sweep_store(path)

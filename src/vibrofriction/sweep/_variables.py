@@ -111,10 +111,12 @@ def _fill(f: Field) -> float | int | bool:
 
 
 def point_variables(velocity: str) -> tuple[Variable, ...]:
-    """Variables with one value per grid point (``velocity`` is the swept velocity's
-    name): every field of :data:`vibrofriction.schema.RESULT_FIELDS` stored under its name
-    with its unit, long name and equation, ``v_inertial`` where another velocity is
-    swept, and the final section state as ``final_*``."""
+    """Variables with one value per grid point (``velocity`` is the swept velocity's name).
+
+    Every field of :data:`vibrofriction.schema.RESULT_FIELDS` stored under its name with its unit,
+    long name and equation, ``v_inertial`` where another velocity is swept, and the final section
+    state as ``final_*``.
+    """
     special = {"status": _status_attrs, "trusted": _trusted_attrs}
     out = [Variable(f.name, f.dtype, _fill(f), special.get(f.name, lambda f=f: _attrs(f))(),
                     f.name)
