@@ -27,8 +27,8 @@ from ._variables import point_variables, row_variables
 __all__ = ["compute_block", "identity", "warm_up"]
 
 #: the source files that determine the values of a sweep (relative to the package)
-_VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "schema.py", "params/*.py", "theory/*.py",
-                  "sweep/_compute.py")
+_VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "solver/methods/*.py", "schema/*.py",
+                  "capabilities.py", "params/*.py", "theory/*.py", "sweep/_compute.py")
 
 
 @functools.cache

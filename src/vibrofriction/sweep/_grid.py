@@ -28,6 +28,7 @@ from ..params import Dimensionless, Physical
 from ..schema import CHOICES, PARAMETER, PARAMETERS, choice_names, parameter_names
 from ..solver import SolverSettings
 from ..validation import checked_choice, validated
+from ._axes import Axis, make_axis, parse_axis
 from ._variables import signature as variables_signature
 
 __all__ = [
@@ -52,110 +53,6 @@ DEFAULT_CHUNK_SIZE = 1000
 #: balance the cores and show progress.
 AUTO_BLOCKS = 100
 AUTO_MAX_CHUNK = 10_000
-
-
-# --------------------------------------------------------------------------- axes
-@dataclass(frozen=True, eq=False)
-class Axis:
-    """One parameter of the grid: ``values`` is 1-D if swept, 0-d if held fixed."""
-
-    name: str
-    values: NDArray[np.float64]
-
-    @property
-    def swept(self) -> bool:
-        return self.values.ndim == 1
-
-    def __len__(self) -> int:
-        return self.values.size
-
-
-def _axis(name: str, value: ArrayLike) -> Axis:
-    try:
-        arr = np.array(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a number or a 1-D list/array of numbers, "
-                         f"got {value!r}") from None
-    if arr.ndim > 1:
-        raise ValueError(f"{name} must be a scalar (held fixed) or a 1-D array (swept), "
-                         f"got an array of shape {arr.shape}")
-    if arr.size == 0:
-        raise ValueError(f"{name}: empty grid (no values given)")
-    arr.setflags(write=False)
-    return Axis(name, arr)
-
-
-def parse_axis(text: str, name: str) -> float | NDArray[np.float64]:
-    """A grid axis from text: ``start:stop:num[:log]``, a single value, or a comma list.
-
-    ``0:1.2:121`` is ``numpy.linspace(0, 1.2, 121)``; ``1e-2:1e2:41:log`` is
-    ``numpy.geomspace(1e-2, 1e2, 41)``; ``0.5`` is held fixed; ``0.25,0.5,1`` (or
-    ``0.5,`` for a one-value axis) is swept.  ``inf`` is accepted (``beta``).
-
-    Parameters
-    ----------
-    text : str
-        The axis as the command line ``vibrofriction sweep`` takes it.
-    name : str
-        The parameter's name, for the error messages.
-
-    Returns
-    -------
-    float or numpy.ndarray
-        A float for a value held fixed, a 1-D array for a swept axis.
-
-    Raises
-    ------
-    ValueError
-        For text that is none of the three forms.
-
-    Examples
-    --------
-    >>> from vibrofriction.sweep import parse_axis
-    >>> parse_axis("0:1.2:4", "vbar")
-    array([0. , 0.4, 0.8, 1.2])
-    >>> parse_axis("1e-2:1e2:5:log", "alpha")
-    array([1.e-02, 1.e-01, 1.e+00, 1.e+01, 1.e+02])
-    >>> parse_axis("0.5", "amplitude")
-    0.5
-    """
-    text = text.strip()
-    if not text:
-        raise ValueError(f"{name}: empty value")
-
-    def number(t: str) -> float:
-        try:
-            return float(t)
-        except ValueError:
-            raise ValueError(f"{name}: {t.strip()!r} is not a number (in {text!r})") from None
-
-    if ":" in text:
-        parts = [p.strip() for p in text.split(":")]
-        log = len(parts) == 4 and parts[3].lower() in ("log", "geom")
-        if len(parts) not in (3, 4) or (len(parts) == 4 and not log):
-            raise ValueError(f"{name}: a range is start:stop:num or start:stop:num:log, "
-                             f"got {text!r}")
-        start, stop = number(parts[0]), number(parts[1])
-        try:
-            num = int(parts[2])
-        except ValueError:
-            raise ValueError(f"{name}: the number of values in {text!r} must be an "
-                             f"integer, got {parts[2]!r}") from None
-        if num < 1:
-            raise ValueError(f"{name}: empty grid (num = {num} in {text!r})")
-        if not (math.isfinite(start) and math.isfinite(stop)):
-            raise ValueError(f"{name}: range ends must be finite, got {text!r}")
-        if log:
-            if not (start > 0 and stop > 0):
-                raise ValueError(f"{name}: a log range needs start, stop > 0, got {text!r}")
-            return np.geomspace(start, stop, num)
-        return np.linspace(start, stop, num)
-    if "," in text:
-        items = [t for t in text.split(",") if t.strip()]
-        if not items:
-            raise ValueError(f"{name}: empty grid (no values in {text!r})")
-        return np.array([number(t) for t in items])
-    return number(text)
 
 
 # --------------------------------------------------------------------------- plan
@@ -493,9 +390,9 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     if v0 is None:
         raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
     base = dataclasses.asdict(system)
-    params = tuple(_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
+    params = tuple(make_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
     choices = {n: base[n] for n in choice_names("physical")}
-    velocity = _axis("v0", v0)
+    velocity = make_axis("v0", v0)
     validated({"v0": velocity.values})
     for a in params:  # each value of each axis, with the others at their base values
         for x in np.atleast_1d(a.values):
@@ -532,10 +429,10 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     if len(given) != 1:
         raise ValueError(f"give exactly one velocity axis, vbar or v_inertial "
                          f"(got {given or 'none'})")
-    axes = tuple(_axis(n, v) for n, v in values.items() if v is not None)  # none missing
+    axes = tuple(make_axis(n, v) for n, v in values.items() if v is not None)  # none missing
     speed = vbar if vbar is not None else v_inertial
     assert speed is not None  # exactly one is given
-    velocity = _axis(given[0], speed)
+    velocity = make_axis(given[0], speed)
     for a in (*axes, velocity):  # each axis alone: the ranges, not the relations
         validated({a.name: a.values})
     _check_above(axes)
