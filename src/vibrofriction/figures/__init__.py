@@ -214,10 +214,9 @@ def plot_design(result: DesignResult) -> Figure:
 
     >>> import vibrofriction as vf
     >>> from vibrofriction.figures import plot_design
-    >>> pin = vf.Physical.from_bench(natural_frequency_hz=800, mass=0.01,
-    ...                              quality_factor=50, normal_load=20, k_zc=2e7,
-    ...                              k_xc=1.5e7, drive_frequency_hz=1000, du_z=0.5e-6,
-    ...                              mu0=0.3)
+    >>> pin = vf.from_bench(natural_frequency_hz=800, mass=0.01, quality_factor=50,
+    ...                     normal_load=20, k_zc=2e7, k_xc=1.5e7,
+    ...                     drive_frequency_hz=1000, du_z=0.5e-6, mu0=0.3)
     >>> best = vf.design(pin, v0=0.01, omega=(1e3, 3e4),
     ...                  du_z=(1e-7, 9e-7))  # doctest: +SKIP
     >>> plot_design(best).savefig("design.png", dpi=150)  # doctest: +SKIP
