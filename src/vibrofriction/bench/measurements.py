@@ -79,7 +79,8 @@ def _parse_header(name: object) -> tuple[str, str | None]:
 
 def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
     """The table of a CSV file and, per row, its line in the file (1-based, every line
-    counted: comments, blank lines and the header)."""
+    counted: comments, blank lines and the header).
+    """
     where = os.fspath(source)
     try:
         with open(source, encoding="utf-8-sig", newline="") as fh:
@@ -100,7 +101,8 @@ def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
 
 def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | None]]:
     """The known columns of ``frame`` (matched regardless of case) with their header
-    and unit; a name close to a known one but not it is an error."""
+    and unit; a name close to a known one but not it is an error.
+    """
     columns: dict[str, tuple[object, str | None]] = {}
     for raw in frame.columns:
         name, unit = _parse_header(raw)

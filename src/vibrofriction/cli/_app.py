@@ -38,7 +38,8 @@ class UsageError(Exception):
 @dataclass(frozen=True)
 class Command:
     """A sub-command: its name, one-line help, description, options and the function
-    that runs it (heavy imports happen inside it)."""
+    that runs it (heavy imports happen inside it).
+    """
 
     name: str
     help: str
@@ -59,7 +60,8 @@ class Command:
 
 class Args:
     """The checked values of a command line: ``args["alpha"]`` is the value given or the
-    option's default; ``args.given`` only what was given."""
+    option's default; ``args.given`` only what was given.
+    """
 
     def __init__(self, given: dict[str, Any], options: Sequence[Opt]) -> None:
         self.given = given
@@ -98,7 +100,8 @@ def exit_if_untrusted(trusted: Any, tol_trusted: float) -> None:
 
 def json_number(x: float | None) -> float | str | None:
     """JSON has no inf/nan: encode them as strings (inf) or null (nan, and None: an
-    optional parameter left to its twin, ``alpha_y``)."""
+    optional parameter left to its twin, ``alpha_y``).
+    """
     if x is None or math.isnan(x):
         return None
     if math.isinf(x):
@@ -273,7 +276,8 @@ def value_flags(commands: Sequence[Command]) -> set[str]:
 
 def glue(argv: Sequence[str], flags: set[str]) -> list[str]:
     """``--v0 -1e-3`` as ``--v0=-1e-3``, so that argparse does not read a negative
-    number as an option."""
+    number as an option.
+    """
     out: list[str] = []
     i = 0
     while i < len(argv):

@@ -167,7 +167,8 @@ class Explorer:
 
     def _main(self):
         """The main column: the curve, the history and the map, the measurements and the
-        sharing tabs."""
+        sharing tabs.
+        """
         return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
                                           self.history_view.path_figure,
@@ -243,7 +244,8 @@ class Explorer:
         """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
         and the axis ``vbar`` to ``V``, saying so next to each with the library's message,
         and disable them (and ``phase_y``); a flat punch enables them again.  The
-        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled."""
+        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled.
+        """
         try:
             n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value or "")
         except ValueError:
@@ -388,7 +390,8 @@ class Explorer:
 
     async def _history_at_rest(self, state: State, rest: float = 0.4) -> None:
         """The history follows the curve once the inputs rest (not at every step of a
-        slider: it would hold up the next curve)."""
+        slider: it would hold up the next curve).
+        """
         await asyncio.sleep(rest)
         if self.state is not state or self._want is not None or self._busy:
             return
@@ -456,7 +459,8 @@ class Explorer:
 
     def _show_mdr_history(self, where: str, h: dict) -> None:
         """A curved tip: the space-time view of its contact (or why there is none), the
-        forces where the MDR history gives them, and the point's results."""
+        forces where the MDR history gives them, and the point's results.
+        """
         forces = h.get("t") is not None
         self.history_view.figure.visible = forces
         self.history_view.path_figure.visible = False
@@ -578,7 +582,8 @@ class Explorer:
     # ------------------------------------------------------------------ export
     def _export(self, fmt: str) -> io.BytesIO:
         """The curve shown (with the inputs it was computed for) as a file: never an empty
-        one (the buttons are disabled until the first curve is shown)."""
+        one (the buttons are disabled until the first curve is shown).
+        """
         if self.curve is None:
             raise RuntimeError("no curve has been computed yet: nothing to export")
         if fmt == "csv":
@@ -589,5 +594,6 @@ class Explorer:
 
 def app(state: State | None = None) -> pn.viewable.Viewable:
     """The explorer as a Panel object: serve it, or show it in a notebook
-    (``pn.extension()`` first)."""
+    (``pn.extension()`` first).
+    """
     return Explorer(state).layout

@@ -1,5 +1,6 @@
 """The velocity ``vbar = v0/v0*`` (eq. 16) against the inertial velocity ``V``, and the
-limiting cases I-IV (Section 3)."""
+limiting cases I-IV (Section 3).
+"""
 
 from __future__ import annotations
 
@@ -35,7 +36,8 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
 def critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                        zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
     """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
-    ValueError where ``vbar`` is undefined."""
+    ValueError where ``vbar`` is undefined.
+    """
     al, am = validated({"alpha": alpha, "amplitude": amplitude}).values()
     c = np.asarray(theory.critical_inertial_velocity(al, beta, am, zeta, eta_c), dtype=float)
     why = _undefined_vbar(al, am, c)
@@ -62,7 +64,8 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
 
-    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``)."""
+    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``).
+    """
     V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
     return as_float_or_array(V / critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 

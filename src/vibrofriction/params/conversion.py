@@ -1,5 +1,6 @@
 """The one conversion: a system's :class:`Dimensionless` groups and the inertial velocity
-from whichever velocity was given."""
+from whichever velocity was given.
+"""
 
 from __future__ import annotations
 

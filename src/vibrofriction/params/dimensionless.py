@@ -85,7 +85,8 @@ class Dimensionless:
     @property
     def pin_y(self) -> tuple[float, float]:
         """``(alpha_y, zeta_y)`` with None resolved to ``alpha``, ``zeta``: the pin across
-        the sliding."""
+        the sliding.
+        """
         return (self.alpha if self.alpha_y is None else self.alpha_y,
                 self.zeta if self.zeta_y is None else self.zeta_y)
 
@@ -156,7 +157,8 @@ class Dimensionless:
         """``V_c`` where ``vbar`` exists (computed once per system: the fields are frozen
         and validated); ValueError where it does not (not cached), and with an in-plane
         oscillation, whose velocities are signed and have no ``vbar`` (eq. 16 scales
-        by the normal oscillation's ``v0*`` only)."""
+        by the normal oscillation's ``v0*`` only).
+        """
         self._check_vbar_inplane()
         return float(critical_for_vbar(self.alpha, self.beta, self.amplitude, self.zeta,
                                         self.eta_c))

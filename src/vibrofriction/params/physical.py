@@ -125,7 +125,8 @@ class Physical:
     @property
     def pin_y(self) -> tuple[float, float]:
         """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the
-        sliding."""
+        sliding.
+        """
         return (self.k_x if self.k_y is None else self.k_y,
                 self.c_x if self.c_y is None else self.c_y)
 
@@ -141,7 +142,8 @@ class Physical:
     @property
     def F_N0(self) -> float:
         """Normal force at the mean indentation, N: ``k_zc u_z0`` (eq. 3; the mean force
-        without jumping); for a curved MDR contact ``F(d0) = k_zc u_z0 n/(n + 1)``."""
+        without jumping); for a curved MDR contact ``F(d0) = k_zc u_z0 n/(n + 1)``.
+        """
         if self.curved:
             n = self.profile_exponent
             return self.k_zc * self.u_z0 * n / (n + 1.0)
@@ -153,14 +155,16 @@ class Physical:
         ``F_N0`` times :func:`~vibrofriction.theory.profile_mean_normal_force` of
         ``a = du_z/u_z0`` (a linear contact: :func:`~vibrofriction.theory.mean_normal_force`,
         ``F_N0`` unless it jumps); the load of a dead weight
-        (:func:`~vibrofriction.bench.from_bench`)."""
+        (:func:`~vibrofriction.bench.from_bench`).
+        """
         a = self.du_z / self.u_z0
         return self.F_N0 * float(theory.profile_mean_normal_force(a, self.profile_exponent))
 
     @property
     def dF_N(self) -> float:
         """Amplitude of the normal force ``k_zc du_z``, N (eq. 3); ValueError for a curved
-        MDR contact, whose normal force is not harmonic."""
+        MDR contact, whose normal force is not harmonic.
+        """
         self._check_flat("dF_N (the amplitude of a harmonic normal force)")
         return self.k_zc * self.du_z
 
@@ -192,7 +196,8 @@ class Physical:
     def with_damping(self, *, zeta: float | None = None, quality_factor: float | None = None,
                      eta_c: float | None = None) -> Physical:
         """A copy with the pin's damping given as a ratio or a quality factor (not both)
-        and/or the contact's loss factor at ``omega``."""
+        and/or the contact's loss factor at ``omega``.
+        """
         changes: dict[str, float] = {}
         if zeta is not None or quality_factor is not None:
             changes["c_x"] = pin_damping(self.k_x, self.mass, zeta=zeta,
@@ -206,7 +211,8 @@ class Physical:
         """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the
         in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``,
         ``phase_y``, ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y``
-        (:meth:`transverse_groups`; None for an axisymmetric pin)."""
+        (:meth:`transverse_groups`; None for an axisymmetric pin).
+        """
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
         alpha_y, zeta_y = self.transverse_groups(self.omega)
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
@@ -224,7 +230,8 @@ class Physical:
         """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``
         (rad/s), elementwise; each None where this pin leaves it to its twin: ``alpha_y``
         where ``k_y`` is None, ``zeta_y`` where ``k_y`` and ``c_y`` both are (with ``k_y``
-        given, ``c_y = c_x`` has another damping ratio than ``zeta``)."""
+        given, ``c_y = c_x`` has another damping ratio than ``zeta``).
+        """
         omega = np.asarray(omega, dtype=float)
         k_y, c_y = self.pin_y
         alpha_y = None if self.k_y is None else k_y / (self.mass * omega**2)
@@ -244,7 +251,8 @@ class Physical:
         are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
         axisymmetric pin, :meth:`transverse_groups`).  A curved MDR contact's are those of
         its scaled model (``a = du_z/d0``, velocities in units of ``mu0 F(d0)/(m omega)``):
-        pass them with ``profile_exponent`` to ``solve_points``."""
+        pass them with ``profile_exponent`` to ``solve_points``.
+        """
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
         a_y = self.inplane_amplitude(du_y, omega)
@@ -257,14 +265,16 @@ class Physical:
         """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
         ``du_x`` (m) at ``omega`` (rad/s), elementwise: the in-plane amplitude in units of
         the length ``mu0 F_N0/(m omega^2)``, and equally ``omega du_x`` in units of the
-        inertial velocity ``mu0 F_N0/(m omega)``; the one conversion from SI."""
+        inertial velocity ``mu0 F_N0/(m omega)``; the one conversion from SI.
+        """
         du_x = np.asarray(du_x, dtype=float)
         return du_x * self.mass * np.asarray(omega, dtype=float) ** 2 / (self.mu0 * self.F_N0)
 
     def groups(self, du_z: ArrayLike, omega: ArrayLike) -> tuple[NDArray[np.float64], ...]:
         """``(alpha, beta, a, zeta, eta_c)`` (eq. 20, docs/damping.md) of this pin driven at
         ``omega`` (rad/s) with amplitude ``du_z`` (m), elementwise: the one conversion
-        from SI, for one point or a measured table."""
+        from SI, for one point or a measured table.
+        """
         du_z = np.asarray(du_z, dtype=float)
         omega = np.asarray(omega, dtype=float)
         stiffness = self.mass * omega**2
@@ -292,13 +302,15 @@ class Physical:
 
     def velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
         """The unit of the inertial velocity, ``mu0 F_N0 / (m omega)`` in m/s (Fig. 6), at
-        this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s)."""
+        this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s).
+        """
         omega = self.omega if omega is None else valid_array("omega", omega)
         return as_float_or_array(self.mu0 * self.F_N0 / (self.mass * omega))
 
     def v0_to_inertial(self, v0: ArrayLike, omega: ArrayLike | None = None) -> FloatOrArray:
         """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6 (at this pin's
-        ``omega`` or, elementwise, at other drive frequencies ``omega``, rad/s)."""
+        ``omega`` or, elementwise, at other drive frequencies ``omega``, rad/s).
+        """
         return as_float_or_array(valid_array("v0", v0) / self.velocity_unit(omega))
 
     def inertial_to_v0(self, v_inertial: ArrayLike) -> FloatOrArray:
@@ -308,7 +320,8 @@ class Physical:
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
         """``vbar = v0 / v0*`` (eq. 16), ``v0 >= 0``; ValueError where ``v0*`` is 0 or
-        infinite (a backward velocity has no ``vbar``)."""
+        infinite (a backward velocity has no ``vbar``).
+        """
         v0 = validated({"v0": v0}, ranges={"v0": NONNEGATIVE})["v0"]
         return self.to_dimensionless().inertial_to_vbar(self.v0_to_inertial(v0))
 

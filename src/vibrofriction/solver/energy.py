@@ -29,7 +29,8 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 def kernel_point(dim: Dimensionless, V: float
                  ) -> tuple[float, float, float, float, float, float, float, float, bool]:
     """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x,
-    on_substrate)``."""
+    on_substrate)``.
+    """
     return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,
             dim.phase_x, dim.inplane_on == "substrate")
 
@@ -37,14 +38,16 @@ def kernel_point(dim: Dimensionless, V: float
 def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """``(X, X')``: the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)`` and its
-    velocity at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    velocity at ``tau`` (docs/inplane.md), of the substrate or of the holder.
+    """
     return _harmonic(dim.a_x, dim.phase_x, tau)
 
 
 def transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """``(Y, Y')``: the transverse oscillation ``a_y cos(tau + phase_y)`` and its velocity
-    at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    at ``tau`` (docs/inplane.md), of the substrate or of the holder.
+    """
     return _harmonic(dim.a_y, dim.phase_y, tau)
 
 
@@ -79,7 +82,8 @@ def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
     body's laboratory position and velocity are ``y + X``, ``x' + X'`` and the substrate
     works ``-f X'`` on the contact; on the holder the pulled end moves at ``V + X'`` and
     the pin's spring and dashpot act on ``V tau + X - x``.  Friction dissipates ``f`` times
-    the slip velocity relative to the substrate, ``x' - e'`` in the kernels' frame."""
+    the slip velocity relative to the substrate, ``x' - e'`` in the kernels' frame.
+    """
     y, xd, f = cols[:, codes.SMP_Y], cols[:, codes.SMP_XD], cols[:, codes.SMP_F]
     gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
     k = dim.beta - dim.alpha
@@ -100,7 +104,8 @@ def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
 
 def _quadrature_nodes(taus: NDArray[np.float64], w_max: float):
     """Gauss nodes between successive samples, each interval cut into pieces shorter than
-    a quarter of the fastest free period: ``(nodes, owner interval, piece width)``."""
+    a quarter of the fastest free period: ``(nodes, owner interval, piece width)``.
+    """
     h = np.diff(taus)
     pieces = np.maximum(1, np.ceil(h * w_max / (0.5 * math.pi))).astype(int)
     owner = np.repeat(np.arange(h.size), pieces)
@@ -115,7 +120,8 @@ def dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
                 taus: NDArray[np.float64]) -> dict[str, Any]:
     """Cumulative work and dissipated energies (:data:`ENERGY_NAMES`) at ``taus``:
     Gauss-Legendre quadrature of the closed forms between successive samples (no event
-    lies inside one), relative accuracy ~1e-10."""
+    lies inside one), relative accuracy ~1e-10.
+    """
     w_max = max(1.0, math.sqrt(dim.alpha), 0.0 if dim.is_rigid else math.sqrt(dim.beta))
     nodes, owner, width = _quadrature_nodes(taus, w_max)
     cols = np.empty((nodes.size, codes.N_SMP_COLUMNS))

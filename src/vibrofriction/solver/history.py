@@ -40,7 +40,8 @@ def _checked_run(periods: float, samples_per_period: int) -> None:
 def _start(dim: Dimensionless, V: float, initial: str | SectionState,
            settings: SolverSettings | None) -> tuple[float, float, float, float, int]:
     """The start ``(y, x', e, e', phase)`` (the order of ``run_periods``); ``"steady"``
-    is the trusted steady state's."""
+    is the trusted steady state's.
+    """
     if isinstance(initial, str) and initial == "steady":
         steady = friction_coefficient(dim, v_inertial=V, settings=settings)
         if steady.final_state is None or not steady.trusted:
@@ -282,7 +283,8 @@ def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
                   e: NDArray[np.float64], f: NDArray[np.float64],
                   slip: NDArray[np.float64]) -> dict[str, Any]:
     """Work input and dissipation of a 2-D history (the reference's definitions,
-    vibrofriction_reference.inplane): the trapezoidal rule over the samples."""
+    vibrofriction_reference.inplane): the trapezoidal rule over the samples.
+    """
     X, Xd = inplane_motion(dim, tau)
     Y, Yd = transverse_motion(dim, tau)
     zero = np.zeros_like(tau)

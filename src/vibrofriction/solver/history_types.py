@@ -25,7 +25,8 @@ __all__ = ["CurvedHistory", "Event", "History", "PlaneHistory"]
 @dataclass(frozen=True)
 class Event:
     """A transition at drive time ``tau``: ``kind`` and the states before and after (names
-    of :class:`~vibrofriction.schema.ContactState`)."""
+    of :class:`~vibrofriction.schema.ContactState`).
+    """
 
     tau: float
     kind: str
@@ -89,7 +90,8 @@ class History:
 
     def _pin_energy(self) -> NDArray[np.float64]:
         """``x'^2/2 + alpha (V tau - x)^2/2`` (with an oscillating holder the pin's spring
-        is stretched by ``V tau + X - x``)."""
+        is stretched by ``V tau + X - x``).
+        """
         d = self.system
         y = self.x - self.v_inertial * self.tau
         if d.a_x > 0.0 and d.inplane_on == "holder":
@@ -100,7 +102,8 @@ class History:
         """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
         oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
         transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's
-        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``)."""
+        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``).
+        """
         d = self.system
         out = self._pin_energy()
         if not d.is_rigid:
@@ -112,7 +115,8 @@ class History:
         body's minus the contact spring's elongation minus the substrate's in-plane
         displacement (none where the holder oscillates); ``y_c`` is 0 but in 2-D.
         ``x_c`` advances by ``V`` per unit ``tau`` on average (the body slides over the
-        substrate): ``x_c - V tau`` is periodic in a periodic steady state."""
+        substrate): ``x_c - V tau`` is periodic in a periodic steady state.
+        """
         d = self.system
         xc = self.x - self.e
         if d.inplane_on == "substrate" and d.a_x > 0.0:
@@ -203,7 +207,8 @@ class CurvedHistory(History):
 
     def spring_normal(self) -> NDArray[np.float64]:
         """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)`` (``w =
-        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``."""
+        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``.
+        """
         n_exp = self.system.profile_exponent
         dxi = 2.0 * float(self.xi[0])
         flat = math.isinf(n_exp)

@@ -69,7 +69,8 @@ def _start(alpha: float, a: float, n_exp: float, M: int,
     relative to an oscillating substrate ``y - X(0)``, ``y' - X'(0)``: ``offset``), or
     ``warm = (y, y', st, e)``, a converged row of ``M/2`` springs (the same frame): each
     spring inherits its parent cell's state (the elongation ``e = f/k`` does not depend on
-    the cell width), a stuck one clipped to its own friction limit at the section."""
+    the cell width), a stuck one clipped to its own friction limit at the section.
+    """
     if warm is None:
         g, w, _, _, _, _ = row_geometry(a, n_exp, M)
         st = np.full(M, SLIP_POS, dtype=np.int64)

@@ -34,7 +34,8 @@ def spring_row(amplitude: float, profile_exponent: float, springs: int
     """``(xi, g, w, area)`` of a row: the springs' positions (cell midpoints on ``(0,
     (1 + a)^(1/n)]``, unit ``a0``), their gaps ``xi^n``, the normal weight ``w = dxi (n +
     1)/n`` (the flat punch's ``dxi``) and each spring's share of the disc of the largest
-    contact radius."""
+    contact radius.
+    """
     g, w, dxi, _, _, area = _mdr.row_geometry(float(amplitude), float(profile_exponent),
                                               int(springs))
     return (np.arange(int(springs)) + 0.5) * dxi, g, float(w), area
@@ -42,7 +43,8 @@ def spring_row(amplitude: float, profile_exponent: float, springs: int
 
 def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
     """One name a sample: ``"flight"`` (no spring in contact), ``"stick"``, ``"slip+"``
-    or ``"slip-"`` where every spring in contact is in that state, else ``"partial"``."""
+    or ``"slip-"`` where every spring in contact is in that state, else ``"partial"``.
+    """
     touching = state != FLIGHT
     width = max(len(name) for name in (*PHASE_NAMES, PARTIAL))
     out = np.full(state.shape[0], PARTIAL, dtype=f"<U{width}")

@@ -85,7 +85,8 @@ assert tuple(f.name for f in STATE_FIELDS) == tuple(f.name for f in fields(Secti
 def _frozen(cls: type, values: dict[str, Any]) -> Any:
     """An instance of the frozen dataclass ``cls`` with the fields ``values`` (all of them,
     in field order), without its ``__init__``: for values already checked, as the
-    solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner."""
+    solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner.
+    """
     obj: Any = object.__new__(cls)
     obj.__dict__.update(values)
     return obj
@@ -186,7 +187,8 @@ class FrictionResult:
 
     def as_dict(self) -> dict[str, Any]:
         """Every field by name (:data:`~vibrofriction.schema.RESULT_FIELDS`): ``status`` as
-        its name, ``final_state`` and ``system`` as dicts (None: no section state)."""
+        its name, ``final_state`` and ``system`` as dicts (None: no section state).
+        """
         out = {}
         for f in RESULT_FIELDS:
             v = getattr(self, f.name)
@@ -320,7 +322,8 @@ _PLAIN = tuple(f.name for f in RESULT_FIELDS
 def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
                         v_inertial: float) -> FrictionResult:
     """One point's :class:`FrictionResult` from its named columns (Python scalars, the
-    kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and ``trusted``)."""
+    kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and ``trusted``).
+    """
     return FrictionResult(
         status=Status.from_code(cols["status"]), method=METHOD_NAMES[cols["method"]],
         final_state=section_state(*(cols[f.name] for f in STATE_FIELDS)),
@@ -351,7 +354,8 @@ def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless
     """One point's :class:`FrictionResult` from the kernels' output rows (as lists, in the
     order of :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS``): the same
     result as :func:`result_from_columns` of their named columns with ``trusted`` from
-    ``settings``, built without a dictionary of columns or the dataclass's checks."""
+    ``settings``, built without a dictionary of columns or the dataclass's checks.
+    """
     status = Status.from_code(ints[_I_STATUS])
     row: list[Any] = [*floats, *ints]
     row += (status, settings.trusted_one(status, floats[_I_ERROR]),

@@ -109,7 +109,8 @@ def sensitivities(
     parameters: tuple[str, ...] = SENSITIVE,
 ) -> Sensitivities:
     """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points
-    (the same arguments; :func:`solve_gradients`)."""
+    (the same arguments; :func:`solve_gradients`).
+    """
     settings = settings or DEFAULT_SETTINGS
     if order not in (2, 4):
         raise ValueError(f"order must be 2 or 4, got {order!r}")
@@ -170,7 +171,8 @@ def friction_gradient(
     """:func:`~vibrofriction.solver.friction_coefficient` at one point and
     ``d mu_ratio / d name`` for the parameters :data:`SENSITIVE` of its
     :class:`Dimensionless` system (``nan`` where this route has none: see the module doc).
-    The velocity is given as for ``friction_coefficient``; no transverse oscillation."""
+    The velocity is given as for ``friction_coefficient``; no transverse oscillation.
+    """
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:
         raise ValueError(f"friction_gradient covers the 1-D solver only: a_y must be 0, "

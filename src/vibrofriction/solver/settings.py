@@ -17,7 +17,8 @@ __all__ = ["DEFAULT_SETTINGS", "SolverSettings", "converged"]
 
 def converged(status: ArrayLike) -> NDArray[np.bool_]:
     """Which statuses are converged (:attr:`Status.ok`), elementwise: integer codes or
-    :class:`Status` members.  The package's one test of convergence."""
+    :class:`Status` members.  The package's one test of convergence.
+    """
     st = np.asarray(status)
     if st.ndim == 0 and st.dtype != object:  # one point: no array machinery
         # a numpy bool, which broadcasts and indexes as a 0-d array would
@@ -96,19 +97,22 @@ class SolverSettings:
 
     def chosen(self) -> tuple[str, ...]:
         """The fields given a value (not None), ``tol_trusted`` aside (every method
-        honours it)."""
+        honours it).
+        """
         return tuple(f.name for f in fields(self)
                      if f.name != "tol_trusted" and getattr(self, f.name) is not None)
 
     def resolved(self, defaults: Mapping[str, float | int]) -> dict[str, float | int]:
         """The value of each field of ``defaults`` (a method's honoured settings and their
-        defaults): the one given here, else the default."""
+        defaults): the one given here, else the default.
+        """
         return {k: d if getattr(self, k) is None else getattr(self, k)
                 for k, d in defaults.items()}
 
     def derived(self, key: str, make: Callable[[SolverSettings], Any]) -> Any:
         """``make(self)``, computed once per settings object and key (a method's kernel
-        arguments: the one-point path pays a dictionary look-up)."""
+        arguments: the one-point path pays a dictionary look-up).
+        """
         d = self.__dict__["_derived"]
         if key not in d:
             d[key] = make(self)

@@ -1,5 +1,6 @@
 """In-plane oscillations: kinematic friction, the critical velocity, cancellation, the
-static region and the regimes (docs/inplane.md)."""
+static region and the regimes (docs/inplane.md).
+"""
 
 from __future__ import annotations
 
@@ -76,7 +77,8 @@ def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
                      zeta: NDArray[np.float64], eta: NDArray[np.float64], on: str):
     """``P``, the contact's slip compliance ``1/(k(1 + i eta_c))``, the contact
     impedance ``k + i c`` (0 for rigid: then unused) and the in-plane forcing ``G``
-    times ``P`` (substrate: ``-P``; holder: ``alpha + i gamma``)."""
+    times ``P`` (substrate: ``-P``; holder: ``alpha + i gamma``).
+    """
     gamma = 2.0 * zeta * np.sqrt(alpha)
     p = (alpha - 1.0) + 1j * gamma
     rigid = np.isinf(beta)
@@ -91,7 +93,8 @@ def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
 def _inplane_inputs(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on
                     ) -> tuple[Any, ...]:
     """The validated inputs of the in-plane closed forms (the schema's ranges; ``alpha``
-    as in the soft limit): ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``."""
+    as in the soft limit): ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``.
+    """
     on = checked_inplane_on(inplane_on)
     values = validated({"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta,
                         "eta_c": eta_c, "a_x": a_x, "phase_x": phase_x},
@@ -224,7 +227,8 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
 class PlaneStatic(NamedTuple):
     """The region of mean forces ``(F_x, F_y)/(mu0 F_N0)`` a contact stuck through whole
     cycles can hold under normal + in-plane oscillation in both directions
-    (:func:`plane_static_region`), given by its extent; ``nan`` where it is empty."""
+    (:func:`plane_static_region`), given by its extent; ``nan`` where it is empty.
+    """
 
     #: The largest and the smallest ``F_x`` of the region (held ``mu_ratio`` values).
     x_upper: FloatOrArray
@@ -243,7 +247,8 @@ def _axis_range(qa: NDArray[np.float64], qb: NDArray[np.float64],
     """The extent along ``a`` of ``{F: |F - (qa_j, qb_j)| <= n_j for all j}`` (a convex
     set): at fixed ``F_a`` the feasible ``F_b`` is an intersection of intervals, of
     concave width ``h(F_a) = min hi_j - max lo_j``; its maximum by golden section, the
-    ends where ``h = 0`` by bisection.  ``(nan, nan)`` where the set is empty."""
+    ends where ``h = 0`` by bisection.  ``(nan, nan)`` where the set is empty.
+    """
     lo_dom, hi_dom = float(np.max(qa - n)), float(np.min(qa + n))
     if lo_dom > hi_dom:
         return math.nan, math.nan

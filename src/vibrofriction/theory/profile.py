@@ -1,6 +1,7 @@
 """The real contact geometry by the method of dimensionality reduction (MDR): the mean
 force, the static ratio, the stiff law, the dead weight and the critical velocity of a
-profile ``z = c r^n`` (docs/contact_geometry.md)."""
+profile ``z = c r^n`` (docs/contact_geometry.md).
+"""
 
 from __future__ import annotations
 
@@ -255,7 +256,8 @@ def _force_harmonics(a: float, n: float, N: int = _SLIDING_GRID) -> NDArray[np.f
     """``c_k``, ``k = 0 .. N/2 - 1``, of ``m(tau) = max(0, 1 + a cos tau)^p = c_0 + sum c_k
     cos(k tau)`` (``p = 1 + 1/n``): closed form for the flat punch, else by FFT of ``N``
     samples (the aliasing error of the kink at a jumping contact's lift-off is
-    ``O(N^-(p+1))``)."""
+    ``O(N^-(p+1))``).
+    """
     K = N // 2
     c = np.zeros(K)
     if math.isinf(n):
@@ -286,7 +288,8 @@ def _sliding_rate(c: NDArray[np.float64], alpha: float, beta: float, a: float, p
     ``m = c_0 + sum c_k cos(k tau)`` (``c`` of :func:`_force_harmonics`; grid of
     ``2 c.size`` points): ``h = -(y_p' + (p a/(beta - alpha)) sin tau)``, so that every
     spring's slip velocity is ``V - h``; ``None`` where the response is unbounded (undamped
-    ``alpha = k^2`` with a ``k``-th harmonic in the force)."""
+    ``alpha = k^2`` with a ``k``-th harmonic in the force).
+    """
     K = c.size
     N = 2 * K
     k = np.arange(K, dtype=float)
@@ -318,7 +321,8 @@ def _critical_of(c: NDArray[np.float64], alpha: float, beta: float, a: float, p:
     """``V_c`` of continuous sliding under the total normal force of harmonics ``c``: the
     largest ``h`` (:func:`_sliding_rate`) where ``1 + a cos tau > 0`` (the grid's, refined
     by Brent between its neighbours; the contact's ends for a jumping indenter), 0 if
-    negative."""
+    negative.
+    """
     if a == 0.0:
         return 0.0
     out = _sliding_rate(c, alpha, beta, a, p, zeta)

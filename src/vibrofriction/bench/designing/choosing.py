@@ -1,5 +1,6 @@
 """The entry point :func:`design`: the refusals, and the choice between the normal and the
-in-plane design."""
+in-plane design.
+"""
 
 from __future__ import annotations
 
@@ -106,7 +107,8 @@ def _refuse_for_mdr(pin: Physical, *, du_x, du_y, goal) -> None:
 
 def _refuse_unused(pin: Physical, *, du_x, du_y, phase_x, phase_y, inplane_on, goal) -> None:
     """ValueError where the pin's own in-plane oscillation, or a phase or side given,
-    would not be used by the design asked for."""
+    would not be used by the design asked for.
+    """
     if du_y is None and pin.du_y > 0.0:
         raise ValueError(f"the pin has a transverse oscillation (du_y = {pin.du_y!r} m), "
                          f"which the design would not use: give du_y=(low, high) to design "

@@ -1,5 +1,6 @@
 """The solver at design points, the map's axes, the status of an optimum and the
-sensitivity table of the chosen oscillation: what the normal and the in-plane design share."""
+sensitivity table of the chosen oscillation: what the normal and the in-plane design share.
+"""
 
 from __future__ import annotations
 
@@ -52,7 +53,8 @@ def solve_design(pin: Physical, v0: float, omega, du_z, settings: SolverSettings
     driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x``, ``du_y`` (m),
     ``phase_x``, ``phase_y`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
     (:meth:`Physical.point_arguments`, the fit's conversion too; ``du_y > 0``: the 2-D
-    solver, with the pin's ``k_y``, ``c_y``)."""
+    solver, with the pin's ``k_y``, ``c_y``).
+    """
     omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
     args: tuple[Any, ...] = pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y)
@@ -66,7 +68,8 @@ def solve_design(pin: Physical, v0: float, omega, du_z, settings: SolverSettings
 
 def map_axes_2d(pin: Physical, w_range, d_range, n_omega: int, n_du_z: int):
     """The map's frequencies (with the resonances inside) and amplitudes (0 included
-    when the range starts there), logarithmic."""
+    when the range starts there), logarithmic.
+    """
     (w_lo, w_hi), (d_lo, d_hi) = w_range, d_range
     ws = np.geomspace(w_lo, w_hi, n_omega)
     resonances = [math.sqrt(pin.k_x / pin.mass)]
@@ -126,7 +129,8 @@ def map_dataset(ws, ds, sol, feasible, attrs) -> xr.Dataset:
 def sensitivity_table(chosen: Physical, v0: float, settings: SolverSettings | None) -> pd.DataFrame:
     """The COF at the optimum, with the frequency off by ``FREQUENCY_CHANGES`` and each
     pin parameter off by ``PARAMETER_CHANGE`` (nan and ``trusted`` False where the
-    solver does not trust its value)."""
+    solver does not trust its value).
+    """
     cases = [("optimum", chosen, chosen.omega)]
     cases += [(f"frequency {100 * c:+.0f} %", chosen, chosen.omega * (1 + c))
               for c in FREQUENCY_CHANGES]

@@ -1,5 +1,6 @@
 """The in-plane and drive design: the combined optimum, the best of each direction, the
-phase map and the drive characteristic."""
+phase map and the drive characteristic.
+"""
 
 from __future__ import annotations
 
@@ -95,7 +96,8 @@ def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phas
                     inplane_on, goal, velocity_rule, vmax, counts):
     """The in-plane design's inputs checked: ``(v0, (omega, du_z, du_x, du_y) ranges,
     phase_x, phase_y, inplane_on, vmax)``; ``counts``: ``(name, value, least)`` of each
-    size of the map."""
+    size of the map.
+    """
     if goal not in GOALS:
         raise ValueError(f"goal must be one of {sorted(GOALS)}, got {goal!r}")
     if velocity_rule not in VELOCITY_RULES:
@@ -129,7 +131,8 @@ def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phas
 
 def _direction_rows(pin, v0, on, goal, space: Space, sizes, starts, settings) -> list[dict]:
     """The best normal-only and longitudinal-only choices within the limits (where their
-    range is not empty)."""
+    range is not empty).
+    """
     rows = []
     if space.du_z[1] > 0.0:
         rows.append(direction_row("normal only", pin, v0, on, goal,
@@ -146,7 +149,8 @@ def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
                      settings) -> list[dict]:
     """The best normal + transverse and transverse-only choices, by the 2-D solver on a
     smaller map (:data:`PLANE_MAP`, :data:`PLANE_STARTS`); ``sizes``: ``(n_omega, n_du_z,
-    n_du_y, n_phase_y)``."""
+    n_du_y, n_phase_y)``.
+    """
     n_omega, n_du_z, n_du_y, n_phase_y = sizes
     plane_sizes = (min(n_omega, PLANE_MAP[0]), min(n_du_z, PLANE_MAP[1]), n_du_y, n_phase_y)
     plane_starts = min(starts, PLANE_STARTS)
@@ -163,7 +167,8 @@ def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
 def _best_choice(goal: str, rows: list[dict], point, obj: float) -> tuple:
     """``(omega, du_z, du_x, phase_x, du_y, phase_y)`` of the best row: the combined
     optimum ``point`` unless a sub-design inside the allowed set did better (``rows[0]``,
-    the combined row, takes the choice)."""
+    the combined row, takes the choice).
+    """
     choice = (*point, 0.0, 0.0)  # (omega, du_z, du_x, phase_x, du_y, phase_y)
     for row in rows[1:]:  # a sub-design inside the allowed set that did better wins
         if row["allowed"] and np.isfinite(row["cof"]) and \
@@ -178,7 +183,8 @@ def _phase_map(pin, v0, on, space: Space, point, settings, n_phase: int = 73,
                n_du_x: int = 25) -> xr.Dataset | None:
     """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
     :func:`~vibrofriction.figures.plot_design` shows) when the phase is free (one
-    ``du_x`` when its range is a point)."""
+    ``du_x`` when its range is a point).
+    """
     if space.phase is not None or space.du_x[1] == 0.0:
         return None
     w, dz = point[0], point[1]
@@ -215,7 +221,8 @@ def _dataset_nd(axes, sol, feasible, attrs) -> xr.Dataset:
 def _drive_characteristic(result: DesignResult, settings: SolverSettings | None) -> None:
     """The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
     velocity (the root of ``mu(V) = 0`` above ``v0``, Brent's method on the solver,
-    bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place."""
+    bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place.
+    """
     from scipy.optimize import brentq
 
     from ... import theory

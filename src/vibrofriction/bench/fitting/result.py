@@ -1,5 +1,6 @@
 """The fit's result (:mod:`.procedure`): :class:`FitResult` (the report, saving and loading),
-and the verdict on a fit's chi-square."""
+and the verdict on a fit's chi-square.
+"""
 
 from __future__ import annotations
 
@@ -108,7 +109,8 @@ class FitResult:
     def derived(self) -> dict[str, tuple[float, float | None]]:
         """Quantities that move with the fitted fields, at the fit and at the guess:
         ``f_n`` (Hz), ``zeta``, ``Q``, ``c_x`` (N s/m), ``eta_c`` (eq. of docs/damping.md)
-        and ``F_N0`` (N, eq. 3)."""
+        and ``F_N0`` (N, eq. 3).
+        """
         def of(p: Physical) -> dict[str, float]:
             return {"f_n [Hz]": p.natural_frequency() / (2.0 * math.pi), "zeta": p.zeta,
                     "Q": p.quality_factor, "c_x [N s/m]": p.c_x, "eta_c": p.eta_c,
@@ -118,7 +120,8 @@ class FitResult:
 
     def to_json(self, path: str | Path) -> Path:
         """Save (the data, the system, the parameters with errors and correlations, the
-        verdict); an unbounded interval end is saved as ``null``."""
+        verdict); an unbounded interval end is saved as ``null``.
+        """
         path = Path(path)
         doc = {
             "system": dataclasses.asdict(self.system),
@@ -264,7 +267,8 @@ def judge(problem: Problem, chisqr: float, lower, penalised: int) -> tuple[str, 
 
 def chi_square_p(problem: Problem, chisqr: float) -> float:
     """The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
-    of freedom, if the model at the best fit were the truth and ``sigma`` right."""
+    of freedom, if the model at the best fit were the truth and ``sigma`` right.
+    """
     from scipy.stats import chi2
 
     return float(chi2.sf(chisqr, max(len(problem.data) - len(problem.free), 1)))

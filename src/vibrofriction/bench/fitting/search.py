@@ -1,6 +1,7 @@
 """The fit's search (:mod:`.procedure`): the global stage (differential evolution on ``ln``
 of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
-second global stage when the first is not clearly good; where the time went (:class:`Stages`)."""
+second global stage when the first is not clearly good; where the time went (:class:`Stages`).
+"""
 
 from __future__ import annotations
 
@@ -62,7 +63,8 @@ def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: 
     starts are tried: a wrong valley is left rather than explored.  (Its own best point
     is not judged before the least squares: unpolished, a right valley's best point
     looked poor on 2 of 4 data sets of ``benchmarks/bench_fit.py`` and cost a second
-    stage, 2026-11-26.)  The best fit and the local minima reached (chi-square, point)."""
+    stage, 2026-11-26.)  The best fit and the local minima reached (chi-square, point).
+    """
     # out: the best lmfit result so far, set by polish below
     out: Any = None
     minima: list[Any] = []
@@ -103,7 +105,8 @@ def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: 
     that includes the guess; ``workers``: 1 (in this process) or the pool's map over
     ``cores`` processes, to which each generation goes at once (:meth:`Problem.costs`:
     one task per member would cost a pickled problem and a round trip each, and left
-    the second core idle half the time)."""
+    the second core idle half the time).
+    """
     from scipy.optimize import differential_evolution
     from tqdm.auto import tqdm
 
@@ -123,7 +126,8 @@ def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: 
 
 def _poor(problem: Problem, chisqr: float) -> bool:
     """A weighted fit that is not clearly good: its chi-square has a probability below
-    :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for)."""
+    :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for).
+    """
     return problem.weighted and chi_square_p(problem, chisqr) < DOUBTFUL_P
 
 
@@ -145,7 +149,8 @@ def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
 
 def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None):
     """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``;
-    ``hold``: the index of a parameter kept at its value in ``x0`` (a profile)."""
+    ``hold``: the index of a parameter kept at its value in ``x0`` (a profile).
+    """
     params = lmfit.Parameters()
     for i, (n, x, (lo, hi)) in enumerate(zip(problem.free, x0, bounds, strict=True)):
         params.add(n, value=float(np.clip(x, lo, hi)), min=lo, max=hi, vary=i != hold)
@@ -224,7 +229,8 @@ def _polish(task) -> _Fit:
 
 def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
     """Least squares from every start (in parallel): the lowest chi-square, the
-    chi-squares and points reached from each start, and the count of model evaluations."""
+    chi-squares and points reached from each start, and the count of model evaluations.
+    """
     found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
     return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
@@ -232,6 +238,7 @@ def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
 
 def _tick(bar) -> bool:
     """Advance a progress bar; False, so that differential evolution goes on (a callback
-    returning True stops it, and tqdm's ``update`` returns True when it redraws)."""
+    returning True stops it, and tqdm's ``update`` returns True when it redraws).
+    """
     bar.update(1)
     return False

@@ -1,5 +1,6 @@
 """The in-plane figures' pin, amplitudes and damping, and the helpers the three share:
-critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks."""
+critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks.
+"""
 
 from __future__ import annotations
 
@@ -71,7 +72,8 @@ def inplane_columns(c: Curve) -> dict[str, NDArray]:
 
 def mark_untrusted(ax, x: NDArray, c: Curve, color, ms: float = 2.5) -> None:
     """Untrusted points as open circles at their (signed) value, or a bar over the range
-    of their last windows' means when they did not settle."""
+    of their last windows' means when they did not settle.
+    """
     bad = ~np.asarray(c.trusted)
     mu = c.mu_ratio
     valued = bad & np.isfinite(mu)
@@ -103,7 +105,8 @@ def sliding_check(curves: Sequence[Curve], where: str) -> Check:
 
 def below_check(curves: Sequence[Curve], where: str, below: float = 0.99) -> Check:
     """Just below ``V_c`` the contact must stick or reverse: ``|mu| < 1``; the smallest
-    margin ``1 - |mu|`` there (it closes quadratically at ``V_c``)."""
+    margin ``1 - |mu|`` there (it closes quadratically at ``V_c``).
+    """
     margin, at = math.inf, "no points"
     n = 0
     for c in curves:

@@ -1,5 +1,6 @@
 """Fig. 15: the combined drive over ``(phase_x, V)``: reduction, drive and the boundary of
-continuous sliding."""
+continuous sliding.
+"""
 
 from __future__ import annotations
 
@@ -27,7 +28,8 @@ from .common import (
 # --------------------------------------------------------------------------- Fig. 15
 def _map_grid(quick: bool, a_x: float) -> tuple[NDArray, NDArray, float]:
     """Phases (``0..2 pi``, an even number of steps: ``phase + pi`` is on the grid) and the
-    signed velocities (cell centres, symmetric, no 0) of a map panel; ``V_max``."""
+    signed velocities (cell centres, symmetric, no 0) of a map panel; ``V_max``.
+    """
     zeta, eta_c = DAMPING
     n_phase = 24 if quick else 96
     n_v = 15 if quick else 80

@@ -49,7 +49,8 @@ class PlaneMethod:
 
 def plane_arguments(settings: SolverSettings) -> tuple[float, int, int]:
     """``(rtol, max_periods, max_events_per_period)`` of the 2-D kernels: ``settings``
-    resolved with the method's defaults."""
+    resolved with the method's defaults.
+    """
     PLANE.capabilities.check_settings(settings)
     r = settings.resolved(PLANE.capabilities.settings)
     return float(r["rtol"]), int(r["max_periods"]), int(r["max_events_per_period"])
@@ -61,7 +62,8 @@ def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
     region of mean forces a stuck contact can hold is not empty
     (:func:`theory.plane_static_region`: a motion from outside it approaches its edge
     with slips that die out, as in 1-D), or the motion stuck through its whole averaging
-    window or orbit.  ``points`` all have ``inplane_on``."""
+    window or orbit.  ``points`` all have ``inplane_on``.
+    """
     p = points
     region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"],
                                         p["phase_x"], p["a_y"], p["phase_y"], p["zeta"],
