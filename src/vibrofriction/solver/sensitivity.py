@@ -73,8 +73,9 @@ def solve_gradients(
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
 ) -> tuple[dict[str, NDArray], Sensitivities]:
-    """:func:`solve_points` (no transverse oscillation) and the sensitivities of its
-    answers to the eight parameters (:data:`SENSITIVE`).
+    """:func:`solve_points` and the sensitivities of its answers to the parameters.
+
+    No transverse oscillation; the eight parameters :data:`SENSITIVE`.
 
     ``rel_step``: the central differences' step of the explicit parameter part, relative
     to each parameter's scale; ``order``: 4 (``+-h``, ``+-2h``, the default) or 2 (half
@@ -108,8 +109,9 @@ def sensitivities(
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
 ) -> Sensitivities:
-    """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points
-    (the same arguments; :func:`solve_gradients`).
+    """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points.
+
+    The same arguments as :func:`solve_gradients`.
     """
     settings = settings or DEFAULT_SETTINGS
     if order not in (2, 4):
@@ -168,10 +170,12 @@ def friction_gradient(
     initial: Initial = "sliding",
     settings: SolverSettings | None = None,
 ) -> tuple[FrictionResult, dict[str, float]]:
-    """:func:`~vibrofriction.solver.friction_coefficient` at one point and
-    ``d mu_ratio / d name`` for the parameters :data:`SENSITIVE` of its
-    :class:`Dimensionless` system (``nan`` where this route has none: see the module doc).
-    The velocity is given as for ``friction_coefficient``; no transverse oscillation.
+    """The friction coefficient at one point and its gradient in the parameters.
+
+    :func:`~vibrofriction.solver.friction_coefficient` and ``d mu_ratio / d name`` for the
+    parameters :data:`SENSITIVE` of its :class:`Dimensionless` system (``nan`` where this route has
+    none: see the module doc).  The velocity is given as for ``friction_coefficient``; no transverse
+    oscillation.
     """
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:
