@@ -1,5 +1,6 @@
-"""The velocity ``vbar = v0/v0*`` (eq. 16) against the inertial velocity ``V``, and the
-limiting cases I-IV (Section 3).
+"""The velocity ``vbar = v0/v0*`` (eq. 16) and the limiting cases I-IV (Section 3).
+
+``vbar`` against the inertial velocity ``V``, and the cases' classification.
 """
 
 from __future__ import annotations
@@ -35,7 +36,8 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
 
 def critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                        zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
-    """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
+    """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise.
+
     ValueError where ``vbar`` is undefined.
     """
     al, am = validated({"alpha": alpha, "amplitude": amplitude}).values()

@@ -1,5 +1,10 @@
-"""The one conversion: a system's :class:`Dimensionless` groups and the inertial velocity
-from whichever velocity was given.
+"""A system's dimensionless groups and its inertial velocity, from any velocity given.
+
+The one conversion: :class:`Dimensionless` groups of a system and the inertial velocity from
+whichever velocity was given.
+
+A system's :class:`Dimensionless` groups and the inertial velocity from whichever velocity was
+given.
 """
 
 from __future__ import annotations
@@ -35,12 +40,13 @@ _FLOATS = (float, np.float64)
 def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
                       v_inertial: ArrayLike | None = None,
                       v0: ArrayLike | None = None) -> FloatOrArray:
-    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6) from exactly one of
-    ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
-    :class:`Physical` system only), elementwise: the package's one decision of which
-    velocity was given.  ValueError naming the parameter where it is invalid (negative,
-    not finite) or undefined (``vbar`` in cases III and IV: :meth:`Dimensionless.
-    critical_inertial_velocity` is 0 or inf there).
+    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6), elementwise.
+
+    From exactly one of ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
+    :class:`Physical` system only): the package's one decision of which velocity was given.
+    ValueError naming the parameter where it is invalid (negative, not finite) or undefined
+    (``vbar`` in cases III and IV: :meth:`Dimensionless.critical_inertial_velocity` is 0 or inf
+    there).
     """
     # the common fast path; mypy sees no float in ArrayLike (only complex), hence the ignore
     if type(v_inertial) is float and vbar is None and v0 is None:  # type: ignore[unreachable]
