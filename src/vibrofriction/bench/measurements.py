@@ -100,8 +100,9 @@ def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
 
 
 def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | None]]:
-    """The known columns of ``frame`` (matched regardless of case) with their header
-    and unit; a name close to a known one but not it is an error.
+    """The known columns of ``frame`` (matched regardless of case) with their header and unit.
+
+    A name close to a known one but not it is an error.
     """
     columns: dict[str, tuple[object, str | None]] = {}
     for raw in frame.columns:

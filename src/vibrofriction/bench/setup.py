@@ -128,8 +128,10 @@ def _pin(f_n: float, mass: float | None, k_x: float | None) -> tuple[float, floa
 
 def _contact(load: float, contact: Geometry | None, contact_model: str,
              k_zc: float | None, k_xc: float | None) -> tuple[float, float, float, float]:
-    """The contact at the load: ``(u_z0, k_zc, k_xc, profile_exponent)``, from its
-    stiffnesses or its geometry, linearised or MDR.
+    """The contact at the load.
+
+    ``(u_z0, k_zc, k_xc, profile_exponent)``, from its stiffnesses or its geometry, linearised
+    or MDR.
     """
     exponent = math.inf
     if contact is not None:
@@ -176,8 +178,9 @@ def _amplitude(du_z: float | None, dF_N: float | None, k_zc: float, exponent: fl
 
 def _dead_weight(u_z0: float, du_z: float, exponent: float, contact: Geometry | None,
                  k_zc: float, k_xc: float) -> tuple[float, float, float]:
-    """``(u_z0, k_zc, k_xc)`` where the load is the mean force over the cycle: the mean
-    indentation lowered (:func:`~vibrofriction.theory.dead_weight_indentation`), an MDR
+    """``(u_z0, k_zc, k_xc)`` where the load is the mean force over the cycle.
+
+    The mean indentation lowered (:func:`~vibrofriction.theory.dead_weight_indentation`), an MDR
     contact's stiffnesses taken there.
     """
     try:
@@ -195,8 +198,7 @@ def _dead_weight(u_z0: float, du_z: float, exponent: float, contact: Geometry | 
 def _damped(system: Physical, mass: float, quality_factor: float | None,
             damping_ratio: float | None, eta_c: float,
             damping_ratio_y: float | None) -> Physical:
-    """``system`` with the pin's damping along and across the sliding and the contact's
-    loss factor.
+    """``system`` with the pin's damping along and across the sliding and the contact's loss factor.
     """
     if damping_ratio_y is not None:
         k_y_, _ = system.pin_y

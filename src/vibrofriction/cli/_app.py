@@ -1,5 +1,7 @@
-"""The command line's machinery: argparse parsers built from the option table, values
-checked against the schema, one-line errors and the exit codes.
+"""The command line's machinery.
+
+Argparse parsers built from the option table, values checked against the schema, one-line errors and
+the exit codes.
 
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 some computed point is not
 trusted (one line counting them on stderr).  Standard library only (and the schema,
@@ -59,8 +61,10 @@ class Command:
 
 
 class Args:
-    """The checked values of a command line: ``args["alpha"]`` is the value given or the
-    option's default; ``args.given`` only what was given.
+    """The checked values of a command line.
+
+    ``args["alpha"]`` is the value given or the option's default; ``args.given`` only what was
+    given.
     """
 
     def __init__(self, given: dict[str, Any], options: Sequence[Opt]) -> None:
@@ -99,8 +103,10 @@ def exit_if_untrusted(trusted: Any, tol_trusted: float) -> None:
 
 
 def json_number(x: float | None) -> float | str | None:
-    """JSON has no inf/nan: encode them as strings (inf) or null (nan, and None: an
-    optional parameter left to its twin, ``alpha_y``).
+    """JSON has no inf/nan.
+
+    Encode them as strings (inf) or null (nan, and None: an optional parameter left to its twin,
+    ``alpha_y``).
     """
     if x is None or math.isnan(x):
         return None

@@ -115,7 +115,8 @@ def unit_words(unit: str) -> str:
 
 
 def range_words(rng: Range) -> str:
-    """The allowed values in the schema's words, with ``inf`` for ``math.inf``:
+    """The allowed values in the schema's words, with ``inf`` for ``math.inf``.
+
     ``finite and > 0``, ``> 0 (inf allowed)``, ``> alpha or inf``.
     """
     return rng.text().replace("math.inf", "inf")
@@ -157,8 +158,10 @@ def _equation(eq: str) -> str:
 
 def parameter_option(name: str, kind: str = "float", note: str = "",
                      requires: tuple[str, ...] = ()) -> Opt:
-    """The option of the schema's parameter ``name``: help from its long name, unit,
-    range, default (or twin) and equation; ``note`` is what the command adds.
+    """The option of the schema's parameter ``name``.
+
+    Help from its long name, unit, range, default (or twin) and equation; ``note`` is what the
+    command adds.
     """
     p = PARAMETER[name]
     unit = unit_words(p.unit)

@@ -1,5 +1,6 @@
-"""``vibrofriction fit`` and ``vibrofriction design``: from the bench to the model and back
-(docs/bench.md).  The pin is described by a bench file (JSON,
+"""``vibrofriction fit`` and ``vibrofriction design``.
+
+From the bench to the model and back (docs/bench.md).  The pin is described by a bench file (JSON,
 :func:`~vibrofriction.bench.from_bench`).
 """
 

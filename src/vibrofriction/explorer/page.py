@@ -166,8 +166,9 @@ class Explorer:
             self.case_text, width=350)
 
     def _main(self):
-        """The main column: the curve, the history and the map, the measurements and the
-        sharing tabs.
+        """The main column.
+
+        The curve, the history and the map, the measurements and the sharing tabs.
         """
         return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
@@ -581,8 +582,9 @@ class Explorer:
 
     # ------------------------------------------------------------------ export
     def _export(self, fmt: str) -> io.BytesIO:
-        """The curve shown (with the inputs it was computed for) as a file: never an empty
-        one (the buttons are disabled until the first curve is shown).
+        """The curve shown (with the inputs it was computed for) as a file.
+
+        Never an empty one (the buttons are disabled until the first curve is shown).
         """
         if self.curve is None:
             raise RuntimeError("no curve has been computed yet: nothing to export")
@@ -593,7 +595,8 @@ class Explorer:
 
 
 def app(state: State | None = None) -> pn.viewable.Viewable:
-    """The explorer as a Panel object: serve it, or show it in a notebook
-    (``pn.extension()`` first).
+    """The explorer as a Panel object.
+
+    Serve it, or show it in a notebook (``pn.extension()`` first).
     """
     return Explorer(state).layout

@@ -1,5 +1,7 @@
-"""The explorer's input widget: a slider and a text box for one parameter, kept in step, with
-its message line; and the styles of the page's messages and notes.
+"""The explorer's input widget.
+
+A slider and a text box for one parameter, kept in step, with its message line; and the styles of
+the page's messages and notes.
 """
 
 from __future__ import annotations
@@ -18,8 +20,10 @@ NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
 
 
 class Input:
-    """A numeric input: a slider (logarithmic where the range spans decades), a box for
-    the exact value, and the inline message.
+    """A numeric input.
+
+    A slider (logarithmic where the range spans decades), a box for the exact value, and the
+    inline message.
     """
 
     def __init__(self, field: Field, value: float, on_change) -> None:

@@ -97,8 +97,9 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
 
 
 def jumping_note(curves: Mapping[str, Curve], vbar_max: float) -> str:
-    """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn
-    against ``vbar``; with loss of contact eq. (12) no longer marks that onset.
+    """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn against ``vbar``.
+
+    With loss of contact eq. (12) no longer marks that onset.
     """
     first = []
     for c in curves.values():
@@ -280,11 +281,13 @@ def _by_amplitude(curves: Mapping[str, Curve], role: str) -> dict[float, Curve]:
 def fig6_checks(curves: Mapping[str, Curve], amplitudes: Sequence[float],
                 plateau_v: float, v_max: float,
                 velocity_amplitudes: Sequence[float] = (0.2, 0.5, 1.0, 1.5)) -> list[Check]:
-    """Fig. 6 (case IV, ``alpha = 1``, ``beta = inf``): the plateau against ``1 - a/2`` (last
-    eq. 32) and against :func:`~vibrofriction.theory.resonant_plateau` (small ``tau*``) and
-    ``resonant_plateau_exact`` (exact root of the energy balance, first eq. 32); the
-    distance of the drawn curves from it at their right edge ``v_max``; and ``v0/dv``
-    (eq. 32) from the simulated body velocity at ``V = plateau_v``.
+    """Fig. 6 (case IV, ``alpha = 1``, ``beta = inf``).
+
+    The plateau against ``1 - a/2`` (last eq. 32) and against
+    :func:`~vibrofriction.theory.resonant_plateau` (small ``tau*``) and
+    ``resonant_plateau_exact`` (exact root of the energy balance, first eq. 32); the distance of
+    the drawn curves from it at their right edge ``v_max``; and ``v0/dv`` (eq. 32) from the
+    simulated body velocity at ``V = plateau_v``.
 
     ``curves`` holds the drawn curves (``meta["role"] == "curve"``) and one series per
     amplitude ending at ``V = plateau_v`` (``meta["role"] == "plateau"``).
@@ -439,8 +442,9 @@ def history_transitions(h: History, window: tuple[float, float]) -> list[Event]:
 
 
 def history_mu_ratio(h: History) -> float:
-    """``mu/mu0`` of a sampled history: the time average of ``f`` over that of ``n`` (eq. 25,
-    trapezoidal rule over the samples).
+    """``mu/mu0`` of a sampled history.
+
+    The time average of ``f`` over that of ``n`` (eq. 25, trapezoidal rule over the samples).
     """
     return float(np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau))
 

@@ -1,5 +1,6 @@
-"""The entry point :func:`design`: the refusals, and the choice between the normal and the
-in-plane design.
+"""The entry point :func:`design`.
+
+The refusals, and the choice between the normal and the in-plane design.
 """
 
 from __future__ import annotations

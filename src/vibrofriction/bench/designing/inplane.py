@@ -1,5 +1,6 @@
-"""The in-plane and drive design: the combined optimum, the best of each direction, the
-phase map and the drive characteristic.
+"""The in-plane and drive design.
+
+The combined optimum, the best of each direction, the phase map and the drive characteristic.
 """
 
 from __future__ import annotations
@@ -94,9 +95,10 @@ def design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on,
 
 def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phase_y,
                     inplane_on, goal, velocity_rule, vmax, counts):
-    """The in-plane design's inputs checked: ``(v0, (omega, du_z, du_x, du_y) ranges,
-    phase_x, phase_y, inplane_on, vmax)``; ``counts``: ``(name, value, least)`` of each
-    size of the map.
+    """The in-plane design's inputs checked.
+
+    ``(v0, (omega, du_z, du_x, du_y) ranges, phase_x, phase_y, inplane_on, vmax)``; ``counts``:
+    ``(name, value, least)`` of each size of the map.
     """
     if goal not in GOALS:
         raise ValueError(f"goal must be one of {sorted(GOALS)}, got {goal!r}")
@@ -165,9 +167,10 @@ def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
 
 
 def _best_choice(goal: str, rows: list[dict], point, obj: float) -> tuple:
-    """``(omega, du_z, du_x, phase_x, du_y, phase_y)`` of the best row: the combined
-    optimum ``point`` unless a sub-design inside the allowed set did better (``rows[0]``,
-    the combined row, takes the choice).
+    """``(omega, du_z, du_x, phase_x, du_y, phase_y)`` of the best row.
+
+    The combined optimum ``point`` unless a sub-design inside the allowed set did better
+    (``rows[0]``, the combined row, takes the choice).
     """
     choice = (*point, 0.0, 0.0)  # (omega, du_z, du_x, phase_x, du_y, phase_y)
     for row in rows[1:]:  # a sub-design inside the allowed set that did better wins

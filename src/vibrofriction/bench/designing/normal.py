@@ -1,5 +1,6 @@
-"""The normal oscillation alone: the map over ``(omega, du_z)`` and its best points refined
-by Nelder-Mead.
+"""The normal oscillation alone.
+
+The map over ``(omega, du_z)`` and its best points refined by Nelder-Mead.
 """
 
 from __future__ import annotations
@@ -64,8 +65,10 @@ def _refine(pin, v0, settings, starts, limits, steps):
 
 def design_normal(pin: Physical, *, v0, omega, du_z, max_velocity_amplitude, n_omega,
                    n_du_z, starts, settings) -> DesignResult:
-    """The normal oscillation alone: the map over ``(omega, du_z)``, its lowest trusted
-    points refined, the status of the optimum.
+    """The normal oscillation alone.
+
+    The map over ``(omega, du_z)``, its lowest trusted points refined, the status of the
+    optimum.
     """
     v0 = float(checked("v0", v0, minimum=0.0, strict=True))
     w_range = checked_range("omega", omega)

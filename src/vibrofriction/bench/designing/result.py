@@ -72,8 +72,10 @@ class DesignResult:
 
     @property
     def drive_ratio(self) -> float:
-        """The drive force at ``v0`` in units of ``mu0 <F_N>``: ``-mu_ratio``, positive
-        where the oscillation pushes the slider forward against a load.
+        """The drive force at ``v0`` in units of ``mu0 <F_N>``.
+
+        ``-mu_ratio``, positive where the oscillation pushes the slider forward against a
+        load.
         """
         return -self.mu_ratio
 

@@ -48,9 +48,11 @@ PLANE_STARTS = 2
 
 @dataclass
 class Space:
-    """The allowed oscillations: ranges (SI), the phase (``None``: free), the limit;
-    ``component`` the in-plane direction that ``du_x`` and ``phase`` stand for: ``"x"``
-    (longitudinal) or ``"y"`` (transverse: ``du_y``, ``phase_y``).
+    """The allowed oscillations.
+
+    Ranges (SI), the phase (``None``: free), the limit; ``component`` the in-plane direction
+    that ``du_x`` and ``phase`` stand for: ``"x"`` (longitudinal) or ``"y"`` (transverse:
+    ``du_y``, ``phase_y``).
     """
 
     omega: tuple[float, float]
@@ -111,8 +113,10 @@ def objective_of(goal: str, cof: np.ndarray) -> np.ndarray:
 
 
 def _solve_map(pin, v0, axes, on, settings, space: Space):
-    """The solver on the 4-D grid; points without in-plane amplitude are solved at the
-    first phase only and copied (the phase means nothing there).
+    """The solver on the 4-D grid.
+
+    Points without in-plane amplitude are solved at the first phase only and copied (the phase
+    means nothing there).
     """
     grids = np.meshgrid(*axes, indexing="ij")
     need = (grids[2] > 0.0) | (np.arange(axes[3].size) == 0)[None, None, None, :]
@@ -183,8 +187,10 @@ def _refine_inplane(pin, v0, on, goal, settings, space: Space, starts, steps):
 
 
 def optimise(pin, v0, on, goal, space: Space, sizes, starts, settings):
-    """Map and refinement over ``space``: ``(point, objective, grids, axes, sol,
-    feasible, n_rejected, rejected_run)``; ValueError without a trusted feasible point.
+    """Map and refinement over ``space``.
+
+    ``(point, objective, grids, axes, sol, feasible, n_rejected, rejected_run)``; ValueError
+    without a trusted feasible point.
     """
     axes = _map_axes(pin, space, *sizes)
     grids, sol = _solve_map(pin, v0, axes, on, settings, space)
@@ -222,8 +228,10 @@ def untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
 
 
 def direction_row(name, pin, v0, on, goal, space, sizes, starts, settings):
-    """The best choice within ``space``: a row of ``directions`` (``du_x``, ``phase_x``,
-    ``du_y``, ``phase_y``: the one along ``space.component`` set, the other 0).
+    """The best choice within ``space``.
+
+    A row of ``directions`` (``du_x``, ``phase_x``, ``du_y``, ``phase_y``: the one along
+    ``space.component`` set, the other 0).
     """
     try:
         point, _, *_ = optimise(pin, v0, on, goal, space, sizes, starts, settings)

@@ -1,7 +1,8 @@
-"""The fit's problem (:mod:`.procedure`): the free parameters in ``ln`` and the constraints
-that tie others to them, the residuals (with the penalty of a row the model cannot
-evaluate), and the model's COF at measured points (:func:`predict_cof`,
-:func:`synthetic_measurements`).
+"""The fit's problem (:mod:`.procedure`).
+
+The free parameters in ``ln`` and the constraints that tie others to them, the residuals (with the
+penalty of a row the model cannot evaluate), and the model's COF at measured points
+(:func:`predict_cof`, :func:`synthetic_measurements`).
 """
 
 from __future__ import annotations
@@ -63,9 +64,10 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
 
 
 def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
-    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape: an
-    axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows
-    of several systems are concatenated, :meth:`Problem.costs`).
+    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape.
+
+    An axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows of
+    several systems are concatenated, :meth:`Problem.costs`).
     """
     groups = list(system.point_arguments(*point))
     for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
@@ -95,12 +97,13 @@ def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
 def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
                            rng: np.random.Generator, *,
                            settings: SolverSettings | None = None) -> pd.DataFrame:
-    """A measurement table made by the model, for a fit whose truth is known: at each
-    amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
-    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma``
-    (drawn per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the
-    format of :func:`~vibrofriction.bench.read_measurements`.  A truth the solver
-    does not trust at some point is refused (ValueError naming the points).
+    """A measurement table made by the model, for a fit whose truth is known.
+
+    At each amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
+    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma`` (drawn
+    per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the format of
+    :func:`~vibrofriction.bench.read_measurements`.  A truth the solver does not trust at some
+    point is refused (ValueError naming the points).
     """
     v0 = np.asarray(v0, dtype=float)
     n = v0.size
@@ -126,8 +129,9 @@ Contact = FlatPunch | Sphere | Cone | PowerLaw
 
 
 def contact_value(contact: Contact, name: str) -> float:
-    """The value of the contact parameter ``name`` (:data:`CONTACT_FITTABLE`) of
-    ``contact``: its ``radius`` (m) or its pair's ``E*`` (Pa).
+    """The value of the contact parameter ``name`` (:data:`CONTACT_FITTABLE`) of ``contact``.
+
+    Its ``radius`` (m) or its pair's ``E*`` (Pa).
     """
     if name == "E_star":
         return float(contact.e_star)
@@ -182,8 +186,9 @@ def contact_exponents(contact: Contact, name: str, load: float, curved: bool
 
 
 def check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
-    """ValueError, naming the parameters, for a fit of a contact geometry it cannot make:
-    a contact parameter without ``contact``, the contact's fields next to its parameters,
+    """ValueError, naming the parameters, for a fit of a contact geometry it cannot make.
+
+    A contact parameter without ``contact``, the contact's fields next to its parameters,
     ``radius`` and ``E_star`` together (not identifiable: docs/bench.md), a curved guess's
     contact fields without its geometry, or a guess not built from ``contact``.
     """
@@ -304,9 +309,10 @@ class Problem:
         return self.guess.curved
 
     def penalty(self) -> NDArray[np.float64]:
-        """The residual of a row the model cannot evaluate: twice the largest honest one,
-        ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``, eq. 25), so that a failed
-        row always costs more than any misfit of it.
+        """The residual of a row the model cannot evaluate.
+
+        Twice the largest honest one, ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``,
+        eq. 25), so that a failed row always costs more than any misfit of it.
         """
         mu0_max = self.guess.mu0 if self.mu0_max is None else self.mu0_max
         return 2.0 * (mu0_max + np.abs(self.data["cof"].to_numpy())) / self._scale()
@@ -358,15 +364,15 @@ class Problem:
 
     def jacobian(self, ln: NDArray[np.float64], vary: NDArray[np.bool_] | None = None
                  ) -> NDArray[np.float64]:
-        """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by
-        columns.  ``cof = mu0 mu_ratio`` is chained through the sensitivities of the
-        steady state (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and
-        the derivatives of the cheap map ``ln -> (mu0, alpha, ..., phase_x)``
-        (:meth:`points`, central differences of that map alone).  Rows without a
-        sensitivity (not periodic nor sliding, a neutral orbit, a difference across a
-        grazing, a transverse row: the 2-D solver has none) are differenced through the
-        solver, those rows only; penalised rows
-        (untrusted, outside the domain) are constant: 0.
+        """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by columns.
+
+        ``cof = mu0 mu_ratio`` is chained through the sensitivities of the steady state
+        (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and the derivatives of the
+        cheap map ``ln -> (mu0, alpha, ..., phase_x)`` (:meth:`points`, central differences
+        of that map alone).  Rows without a sensitivity (not periodic nor sliding, a neutral
+        orbit, a difference across a grazing, a transverse row: the 2-D solver has none) are
+        differenced through the solver, those rows only; penalised rows (untrusted, outside
+        the domain) are constant: 0.
         """
         vary = np.ones(len(self.free), dtype=bool) if vary is None else np.asarray(vary)
         cols_j = np.flatnonzero(vary)

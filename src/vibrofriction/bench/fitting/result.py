@@ -1,5 +1,6 @@
-"""The fit's result (:mod:`.procedure`): :class:`FitResult` (the report, saving and loading),
-and the verdict on a fit's chi-square.
+"""The fit's result (:mod:`.procedure`).
+
+:class:`FitResult` (the report, saving and loading), and the verdict on a fit's chi-square.
 """
 
 from __future__ import annotations
@@ -107,7 +108,8 @@ class FitResult:
         return "\n".join(lines)
 
     def derived(self) -> dict[str, tuple[float, float | None]]:
-        """Quantities that move with the fitted fields, at the fit and at the guess:
+        """Quantities that move with the fitted fields, at the fit and at the guess.
+
         ``f_n`` (Hz), ``zeta``, ``Q``, ``c_x`` (N s/m), ``eta_c`` (eq. of docs/damping.md)
         and ``F_N0`` (N, eq. 3).
         """
@@ -119,8 +121,9 @@ class FitResult:
         return {k: (v, guess.get(k)) for k, v in of(self.system).items()}
 
     def to_json(self, path: str | Path) -> Path:
-        """Save (the data, the system, the parameters with errors and correlations, the
-        verdict); an unbounded interval end is saved as ``null``.
+        """Save (the data, the system, the parameters with errors and correlations, the verdict).
+
+        An unbounded interval end is saved as ``null``.
         """
         path = Path(path)
         doc = {

@@ -1,6 +1,8 @@
-"""The fit's search (:mod:`.procedure`): the global stage (differential evolution on ``ln``
-of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
-second global stage when the first is not clearly good; where the time went (:class:`Stages`).
+"""The fit's search (:mod:`.procedure`).
+
+The global stage (differential evolution on ``ln`` of the free parameters), then Levenberg-Marquardt
+from its best distinct points, and a second global stage when the first is not clearly good; where
+the time went (:class:`Stages`).
 """
 
 from __future__ import annotations
@@ -125,8 +127,10 @@ def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: 
 
 
 def _poor(problem: Problem, chisqr: float) -> bool:
-    """A weighted fit that is not clearly good: its chi-square has a probability below
-    :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for).
+    """A weighted fit that is not clearly good.
+
+    Its chi-square has a probability below :data:`DOUBTFUL_P` (a wrong valley is one
+    explanation, so another is looked for).
     """
     return problem.weighted and chi_square_p(problem, chisqr) < DOUBTFUL_P
 
@@ -148,7 +152,8 @@ def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
 
 
 def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None):
-    """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``;
+    """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``.
+
     ``hold``: the index of a parameter kept at its value in ``x0`` (a profile).
     """
     params = lmfit.Parameters()
@@ -228,8 +233,10 @@ def _polish(task) -> _Fit:
 
 
 def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
-    """Least squares from every start (in parallel): the lowest chi-square, the
-    chi-squares and points reached from each start, and the count of model evaluations.
+    """Least squares from every start (in parallel).
+
+    The lowest chi-square, the chi-squares and points reached from each start, and the count of
+    model evaluations.
     """
     found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
@@ -237,8 +244,10 @@ def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
 
 
 def _tick(bar) -> bool:
-    """Advance a progress bar; False, so that differential evolution goes on (a callback
-    returning True stops it, and tqdm's ``update`` returns True when it redraws).
+    """Advance a progress bar.
+
+    False, so that differential evolution goes on (a callback returning True stops it, and
+    tqdm's ``update`` returns True when it redraws).
     """
     bar.update(1)
     return False

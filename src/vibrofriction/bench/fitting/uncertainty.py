@@ -1,6 +1,7 @@
-"""The fit's uncertainties (:mod:`.procedure`): profile-likelihood intervals (a lower
-chi-square met on the way is fitted from), the parameters in physical units with their
-intervals and correlations, and what the data do not identify.
+"""The fit's uncertainties (:mod:`.procedure`).
+
+Profile-likelihood intervals (a lower chi-square met on the way is fitted from), the parameters in
+physical units with their intervals and correlations, and what the data do not identify.
 """
 
 from __future__ import annotations
@@ -30,9 +31,10 @@ RESTART_PROFILES = 0.5
 
 def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: Stages,
                    progress: bool):
-    """The profile intervals about ``out`` (:mod:`.procedure`); a lower chi-square met on
-    the way is fitted from.  The fit, the minima, the distances of the interval ends and
-    the lower point if the profiles met one again.
+    """The profile intervals about ``out`` (:mod:`.procedure`).
+
+    A lower chi-square met on the way is fitted from.  The fit, the minima, the distances of the
+    interval ends and the lower point if the profiles met one again.
     """
     free = problem.free
     with stages.timed("profiles") as row:
@@ -92,8 +94,10 @@ def _recentre(dists, free: tuple[str, ...], old: NDArray, new: NDArray):
 
 
 def _s2(problem: Problem, out) -> float:
-    """The scale ``s^2`` of the profile level: the reduced chi-square, at least 1 when
-    the residuals are weighted by the measured ``sigma``.
+    """The scale ``s^2`` of the profile level.
+
+    The reduced chi-square, at least 1 when the residuals are weighted by the measured
+    ``sigma``.
     """
     return max(float(out.redchi), 1.0) if problem.weighted else float(out.redchi)
 
@@ -108,8 +112,9 @@ def _reach(dists, free: tuple[str, ...], best: NDArray, x: NDArray):
 
 
 def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
-    """How the others move with parameter ``j`` along the valley, to first order: column
-    ``j`` of the covariance over its diagonal entry (zeros without a covariance).  Only a
+    """How the others move with parameter ``j`` along the valley, to first order.
+
+    Column ``j`` of the covariance over its diagonal entry (zeros without a covariance).  Only a
     starting point for the profile's refits.
     """
     if covar is None or np.shape(covar) != (size, size) or not covar[j, j] > 0:
@@ -209,9 +214,10 @@ def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
 
 
 def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
-    """One sentence per parameter the data do not identify: at a bound, in a flat direction
-    of the Jacobian, strongly correlated with another; and one if the least-squares
-    covariance is singular (no correlations).
+    """One sentence per parameter the data do not identify.
+
+    At a bound, in a flat direction of the Jacobian, strongly correlated with another; and one
+    if the least-squares covariance is singular (no correlations).
     """
     warnings = []
     free = problem.free
@@ -242,9 +248,10 @@ def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
 
 
 def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
-    """Central differences of the residuals in ``ln`` (columns: free parameters); a
-    curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in
-    steps of its error bar: a step of 1e-4 would difference those).
+    """Central differences of the residuals in ``ln`` (columns: free parameters).
+
+    A curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in steps of
+    its error bar: a step of 1e-4 would difference those).
     """
     if problem.curved:
         jac = problem.jacobian(ln)

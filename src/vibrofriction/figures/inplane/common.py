@@ -1,5 +1,6 @@
-"""The in-plane figures' pin, amplitudes and damping, and the helpers the three share:
-critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks.
+"""The in-plane figures' pin, amplitudes and damping, and the helpers the three share.
+
+Critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks.
 """
 
 from __future__ import annotations
@@ -104,8 +105,9 @@ def sliding_check(curves: Sequence[Curve], where: str) -> Check:
 
 
 def below_check(curves: Sequence[Curve], where: str, below: float = 0.99) -> Check:
-    """Just below ``V_c`` the contact must stick or reverse: ``|mu| < 1``; the smallest
-    margin ``1 - |mu|`` there (it closes quadratically at ``V_c``).
+    """Just below ``V_c`` the contact must stick or reverse.
+
+    ``|mu| < 1``; the smallest margin ``1 - |mu|`` there (it closes quadratically at ``V_c``).
     """
     margin, at = math.inf, "no points"
     n = 0

@@ -1,5 +1,4 @@
-"""Fig. 16: the drive's characteristic against the phase: the blocking forces and the idle
-velocity.
+"""Fig. 16: the drive's characteristic against the phase: the blocking forces and the idle velocity.
 """
 
 from __future__ import annotations
@@ -98,8 +97,10 @@ def idle_velocities(c: Curve, *, xtol: float = 1e-7) -> list[float]:
 
 
 def _drive_data(curves: Mapping[str, Curve]) -> dict[tuple[float, float], dict]:
-    """Per ``(a_x, zeta)``: phases, blocking forces at both V_BLOCK, static band, idle
-    velocities (list per phase), and the solver's mu at the idle velocities.
+    """Per ``(a_x, zeta)``.
+
+    Phases, blocking forces at both V_BLOCK, static band, idle velocities (list per phase), and
+    the solver's mu at the idle velocities.
     """
     data = {}
     for a_x, zeta, eta_c in _drive_cases():

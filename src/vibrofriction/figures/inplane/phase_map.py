@@ -1,5 +1,6 @@
-"""Fig. 15: the combined drive over ``(phase_x, V)``: reduction, drive and the boundary of
-continuous sliding.
+"""Fig. 15: the combined drive over ``(phase_x, V)``.
+
+Reduction, drive and the boundary of continuous sliding.
 """
 
 from __future__ import annotations
