@@ -78,8 +78,9 @@ def _parse_header(name: object) -> tuple[str, str | None]:
 
 
 def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
-    """The table of a CSV file and, per row, its line in the file (1-based, every line
-    counted: comments, blank lines and the header).
+    """The table of a CSV file and, per row, its line in the file.
+
+    Lines are 1-based, every line counted: comments, blank lines and the header.
     """
     where = os.fspath(source)
     try:

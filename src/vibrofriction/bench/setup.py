@@ -161,8 +161,9 @@ def _contact(load: float, contact: Geometry | None, contact_model: str,
 
 
 def _amplitude(du_z: float | None, dF_N: float | None, k_zc: float, exponent: float) -> float:
-    """The indentation amplitude ``du_z`` (m) from exactly one of it and the force
-    amplitude ``dF_N`` (N, a harmonic force: not for a curved MDR contact).
+    """The indentation amplitude ``du_z`` (m) from exactly one of it and ``dF_N``.
+
+    ``dF_N`` is the force amplitude (N, a harmonic force: not for a curved MDR contact).
     """
     if (du_z is None) == (dF_N is None):
         raise ValueError("give exactly one of du_z (m) and dF_N (N) for the oscillation")
@@ -198,7 +199,9 @@ def _dead_weight(u_z0: float, du_z: float, exponent: float, contact: Geometry | 
 def _damped(system: Physical, mass: float, quality_factor: float | None,
             damping_ratio: float | None, eta_c: float,
             damping_ratio_y: float | None) -> Physical:
-    """``system`` with the pin's damping along and across the sliding and the contact's loss factor.
+    """``system`` with the pin's damping along and across the sliding, and the contact's.
+
+    The contact's damping as its loss factor.
     """
     if damping_ratio_y is not None:
         k_y_, _ = system.pin_y
@@ -214,8 +217,9 @@ def _damped(system: Physical, mass: float, quality_factor: float | None,
 
 
 def from_bench_file(path: str | os.PathLike) -> Physical:
-    """:func:`from_bench` from a JSON file of its keyword arguments (docs/bench.md;
-    :func:`read_bench_file` reads it).
+    """:func:`from_bench` from a JSON file of its keyword arguments.
+
+    docs/bench.md; :func:`read_bench_file` reads it.
     """
     spec = read_bench_file(path)
     try:
@@ -225,7 +229,9 @@ def from_bench_file(path: str | os.PathLike) -> Physical:
 
 
 def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
-    """The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md),
+    """The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md).
+
+    The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md),
     the contact geometry built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
     ..., "pin": {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
     ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``

@@ -39,8 +39,9 @@ class UsageError(Exception):
 
 @dataclass(frozen=True)
 class Command:
-    """A sub-command: its name, one-line help, description, options and the function
-    that runs it (heavy imports happen inside it).
+    """A sub-command: its name, help, description, options and the function that runs it.
+
+    The help is one line; heavy imports happen inside the function.
     """
 
     name: str
@@ -281,8 +282,9 @@ def value_flags(commands: Sequence[Command]) -> set[str]:
 
 
 def glue(argv: Sequence[str], flags: set[str]) -> list[str]:
-    """``--v0 -1e-3`` as ``--v0=-1e-3``, so that argparse does not read a negative
-    number as an option.
+    """``--v0 -1e-3`` as ``--v0=-1e-3``.
+
+    So that argparse does not read a negative number as an option.
     """
     out: list[str] = []
     i = 0

@@ -124,7 +124,9 @@ def range_words(rng: Range) -> str:
 
 def check_value(opt_flag: str, rng: Range, value: float,
                 above: tuple[str, float] | None = None, name: str = "") -> None:
-    """ValueError in one line naming the option (and the parameter ``name``) and its
+    """ValueError in one line if ``value`` is outside ``rng``.
+
+    ValueError in one line naming the option (and the parameter ``name``) and its
     allowed values if ``value`` is outside ``rng`` (``above``: the flag and value of the
     parameter it must exceed).
     """
@@ -211,7 +213,9 @@ REQUIRES: dict[str, tuple[str, ...]] = {
 
 def model_options(kinds: dict[str, str], notes: dict[str, str] | None = None,
                   skip: Iterable[str] = ()) -> tuple[Opt, ...]:
-    """An option for every parameter of the schema (in its order; ``kinds``: the kind of
+    """An option for every parameter of the schema and every choice, except ``skip``.
+
+    An option for every parameter of the schema (in its order; ``kinds``: the kind of
     value of some of them, ``"float"`` otherwise) and every choice, except ``skip``.
     """
     notes = notes or {}

@@ -242,7 +242,9 @@ class Explorer:
             self._changed()
 
     def _guard_curved(self) -> None:
-        """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
+        """With a curved tip, reset and disable what the MDR solver refuses.
+
+        With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
         and the axis ``vbar`` to ``V``, saying so next to each with the library's message,
         and disable them (and ``phase_y``); a flat punch enables them again.  The
         longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled.
@@ -390,8 +392,9 @@ class Explorer:
         pn.state.execute(partial(self._history_at_rest, state))
 
     async def _history_at_rest(self, state: State, rest: float = 0.4) -> None:
-        """The history follows the curve once the inputs rest (not at every step of a
-        slider: it would hold up the next curve).
+        """The history follows the curve once the inputs rest.
+
+        Not at every step of a slider: it would hold up the next curve.
         """
         await asyncio.sleep(rest)
         if self.state is not state or self._want is not None or self._busy:
@@ -459,7 +462,9 @@ class Explorer:
             f"{self._point_text}")
 
     def _show_mdr_history(self, where: str, h: dict) -> None:
-        """A curved tip: the space-time view of its contact (or why there is none), the
+        """A curved tip: the space-time view of its contact, its forces and its results.
+
+        A curved tip: the space-time view of its contact (or why there is none), the
         forces where the MDR history gives them, and the point's results.
         """
         forces = h.get("t") is not None

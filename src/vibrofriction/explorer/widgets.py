@@ -67,6 +67,7 @@ class Input:
         self.text.value = format_value(value)
 
     def sync_slider(self, value: float) -> None:
+        """Move the slider to ``value`` without calling back."""
         self._quiet = True
         try:
             self.slider.value = self._position(value)
@@ -74,6 +75,7 @@ class Input:
             self._quiet = False
 
     def show_message(self, text: str) -> None:
+        """Show ``text`` below the input; hidden when empty."""
         self.message.object = text
         self.message.visible = bool(text)
 

@@ -36,6 +36,7 @@ def design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on,
                     velocity_rule, vmax, n_omega, n_du_z, n_du_x, n_phase, starts,
                     settings, du_y=None, phase_y=None, n_du_y=4,
                     n_phase_y=4) -> DesignResult:
+    """The in-plane and drive design: :func:`~vibrofriction.bench.design` with in-plane ranges."""
     v0, ranges, phase_x, phase_y, on, vmax = _inplane_inputs(
         pin, v0=v0, omega=omega, du_z=du_z, du_x=du_x, du_y=du_y, phase_x=phase_x,
         phase_y=phase_y, inplane_on=inplane_on, goal=goal, velocity_rule=velocity_rule,
@@ -132,8 +133,9 @@ def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phas
 
 
 def _direction_rows(pin, v0, on, goal, space: Space, sizes, starts, settings) -> list[dict]:
-    """The best normal-only and longitudinal-only choices within the limits (where their
-    range is not empty).
+    """The best normal-only and longitudinal-only choices within the limits.
+
+    Each where its range is not empty.
     """
     rows = []
     if space.du_z[1] > 0.0:
@@ -149,7 +151,9 @@ def _direction_rows(pin, v0, on, goal, space: Space, sizes, starts, settings) ->
 
 def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
                      settings) -> list[dict]:
-    """The best normal + transverse and transverse-only choices, by the 2-D solver on a
+    """The best normal + transverse and transverse-only choices, by the 2-D solver.
+
+    The best normal + transverse and transverse-only choices, by the 2-D solver on a
     smaller map (:data:`PLANE_MAP`, :data:`PLANE_STARTS`); ``sizes``: ``(n_omega, n_du_z,
     n_du_y, n_phase_y)``.
     """
@@ -184,7 +188,9 @@ def _best_choice(goal: str, rows: list[dict], point, obj: float) -> tuple:
 
 def _phase_map(pin, v0, on, space: Space, point, settings, n_phase: int = 73,
                n_du_x: int = 25) -> xr.Dataset | None:
-    """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
+    """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z``.
+
+    The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
     :func:`~vibrofriction.figures.plot_design` shows) when the phase is free (one
     ``du_x`` when its range is a point).
     """
@@ -222,7 +228,9 @@ def _dataset_nd(axes, sol, feasible, attrs) -> xr.Dataset:
 
 
 def _drive_characteristic(result: DesignResult, settings: SolverSettings | None) -> None:
-    """The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
+    """The chosen oscillation's blocking force and idle velocity, in place.
+
+    The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
     velocity (the root of ``mu(V) = 0`` above ``v0``, Brent's method on the solver,
     bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place.
     """

@@ -25,7 +25,9 @@ from .result import DesignResult
 
 
 def _refine(pin, v0, settings, starts, limits, steps):
-    """Nelder-Mead in ``(ln omega, ln du_z)`` from each start, inside the limits, on
+    """Nelder-Mead in ``(ln omega, ln du_z)`` from each start.
+
+    Nelder-Mead in ``(ln omega, ln du_z)`` from each start, inside the limits, on
     trusted values only.  Returns the lowest ``(omega, du_z, cof)`` found (the starts
     included), the untrusted evaluations rejected in all and by the winning run.
     """

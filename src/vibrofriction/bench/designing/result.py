@@ -80,6 +80,7 @@ class DesignResult:
         return -self.mu_ratio
 
     def report(self) -> str:
+        """The design in words: the optimum, its COF and status, and its sensitivities."""
         s = self.system
         if not self.inplane:
             lines = [f"optimum at v0 = {self.v0:g} m/s: f = {s.omega / (2 * math.pi):.6g} Hz, "

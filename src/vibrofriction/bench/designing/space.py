@@ -1,5 +1,6 @@
-"""The allowed in-plane oscillations (:class:`Space`), their map over ``(omega, du_z,
-du_x, phase_x)`` and its optimisation.
+"""The allowed in-plane oscillations (:class:`Space`), their map and its optimisation.
+
+The map is over ``(omega, du_z, du_x, phase_x)``.
 """
 
 from __future__ import annotations
@@ -64,23 +65,27 @@ class Space:
     component: str = "x"
 
     def solve(self, pin, v0, w, dz, d, ph, on, settings) -> dict[str, np.ndarray]:
-        """:func:`solve_design` with the in-plane amplitude ``d`` and phase ``ph`` along
-        ``component``.
+        """:func:`solve_design` with the in-plane amplitude ``d`` and phase ``ph``.
+
+        Along ``component``.
         """
         if self.component == "y":
             return solve_design(pin, v0, w, dz, settings, 0.0, 0.0, on, d, ph)
         return solve_design(pin, v0, w, dz, settings, d, ph, on)
 
     def feasible(self, w, dz, dx) -> np.ndarray:
+        """Whether the velocity amplitude is within ``vmax`` by the rule, elementwise."""
         w, dz, dx = (np.asarray(x, float) for x in (w, dz, dx))
         speed = w * (np.hypot(dz, dx) if self.rule == "combined" else np.maximum(dz, dx))
         return speed <= self.vmax * (1 + 1e-12)
 
     def inside(self, w, dz, dx) -> bool:
+        """Whether one point is within the ranges and feasible."""
         return (self.omega[0] <= w <= self.omega[1] and self.du_z[0] <= dz <= self.du_z[1]
                 and self.du_x[0] <= dx <= self.du_x[1] and bool(self.feasible(w, dz, dx)))
 
     def restricted(self, **ranges) -> Space:
+        """A copy with some ranges replaced."""
         return Space(**{**self.__dict__, **ranges})
 
 
@@ -131,7 +136,9 @@ def _solve_map(pin, v0, axes, on, settings, space: Space):
 
 
 def _refine_inplane(pin, v0, on, goal, settings, space: Space, starts, steps):
-    """Nelder-Mead from each start in the free coordinates (``ln omega``, ``ln du_z``,
+    """Nelder-Mead from each start in the free coordinates.
+
+    Nelder-Mead from each start in the free coordinates (``ln omega``, ``ln du_z``,
     ``ln du_x`` where the start's value is > 0 and its range not a point; ``phase_x``
     when free), inside the limits, on trusted values only.  Returns the best
     ``(point, objective)`` (starts included), the rejected evaluations in all and in
@@ -210,8 +217,9 @@ def optimise(pin, v0, on, goal, space: Space, sizes, starts, settings):
 
 
 def untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
-    """Untrusted map points among the neighbours of the map point nearest ``point``
-    (amplitudes and frequency by ratio, the phase by its periodic distance).
+    """Untrusted map points among the neighbours of the map point nearest ``point``.
+
+    Amplitudes and frequency by ratio, the phase by its periodic distance.
     """
     index = []
     for k, (ax, v) in enumerate(zip(axes, point, strict=True)):

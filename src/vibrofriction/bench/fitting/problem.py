@@ -51,7 +51,9 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
                 settings: SolverSettings | None = None, *, du_x: NDArray | float = 0.0,
                 phase_x: NDArray | float = 0.0, du_y: NDArray | float = 0.0,
                 phase_y: NDArray | float = 0.0) -> NDArray[np.float64]:
-    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
+    """``mu0 * mu_ratio`` of ``system`` at each measured point (eq. 25).
+
+    ``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
     phase_y)`` (eq. 25; the in-plane oscillation on ``system.inplane_on``, ``du_y > 0``
     by the 2-D solver with the pin's ``k_y``, ``c_y``; a curved ``system`` by the MDR
     solver, docs/contact_geometry.md; ``system``'s own ``du_z``,
@@ -78,7 +80,9 @@ def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
 
 
 def _rate(up: ArrayLike, down: ArrayLike) -> NDArray[np.float64]:
-    """The central difference ``(up - down)/(2 MAP_STEP)`` of one group of the map from
+    """The central difference of one group of the map from parameters to points.
+
+    The central difference ``(up - down)/(2 MAP_STEP)`` of one group of the map from
     parameters to points; 0 where the group does not move (also where it is ``inf``: a
     flat punch's ``profile_exponent``, a rigid contact's ``beta``).
     """
@@ -149,7 +153,9 @@ def _contact_names(contact: Contact) -> str:
 def contact_fields(contact: Contact, load: float, curved: bool,
                    radius: float | None = None, E_star: float | None = None
                    ) -> dict[str, float]:
-    """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
+    """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N).
+
+    ``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
     ``radius`` and its pair's ``E*`` replaced where given (both moduli scaled together,
     Poisson's ratios kept): as :func:`~vibrofriction.bench.from_bench` builds them, the MDR contact
     (``curved``: the mean indentation ``d0`` with ``F(d0) = load``, ``k_zc = 2 E* a0``,
@@ -175,7 +181,9 @@ def contact_fields(contact: Contact, load: float, curved: bool,
 
 def contact_exponents(contact: Contact, name: str, load: float, curved: bool
                       ) -> dict[str, float]:
-    """``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS` (constants for the
+    """``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS`.
+
+    ``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS` (constants for the
     power-law tips: a sphere's ``k_zc`` goes as ``R^(1/3) E*^(2/3)``, its ``u_z0`` as the
     inverse), from two evaluations of :func:`contact_fields`.
     """
@@ -289,8 +297,9 @@ class Problem:
         return Physical(**self.values(ln))
 
     def start(self, name: str) -> float:
-        """The guess's value of the free parameter ``name`` (a field of the guess or a
-        parameter of the contact).
+        """The guess's value of the free parameter ``name``.
+
+        A field of the guess or a parameter of the contact.
         """
         if name in CONTACT_FITTABLE:
             return contact_value(self.contact, name)
@@ -321,9 +330,10 @@ class Problem:
         return self.data["sigma"].to_numpy() if self.weighted else 1.0
 
     def evaluate(self, ln: NDArray[np.float64]) -> tuple[NDArray[np.float64], int, int]:
-        """The residuals, and the counts of rows penalised (:meth:`penalty`) because the
-        parameters leave the model's domain (every row) or the solver's value is not
-        trusted.
+        """The residuals, and the counts of rows penalised (:meth:`penalty`).
+
+        Penalised because the parameters leave the model's domain (every row) or because the
+        solver's value is not trusted.
         """
         points = self.points(ln)
         if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
@@ -342,7 +352,9 @@ class Problem:
         return solved
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
-        """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
+        """The solver's arguments of every row at ``ln`` (eq. 20).
+
+        ``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
         zeta_y)`` of every row at ``ln`` (eq. 20), or None where the parameters leave the
         model's domain.
         """
@@ -429,7 +441,9 @@ class Problem:
 
     def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]
                          ) -> NDArray[np.float64]:
-        """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
+        """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver.
+
+        Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
         (:data:`SOLVER_STEP`; :data:`MDR_STEP` for a curved contact); 0 where a side is
         penalised.
         """
@@ -455,7 +469,9 @@ class Problem:
         return float(r @ r)
 
     def costs(self, population: NDArray[np.float64], map_, chunks: int) -> NDArray[np.float64]:
-        """:meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
+        """:meth:`cost` of every column of ``population``.
+
+        :meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
         :func:`scipy.optimize.differential_evolution`'s vectorised call), the rows of all
         members solved together in ``chunks`` interleaved tasks of ``map_`` (each point
         depends only on its own parameters, so the costs are those of :meth:`cost`).
@@ -486,8 +502,9 @@ class Problem:
 
 
     def coarse(self) -> Problem:
-        """The same problem on every other row of a table of at least
-        :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square).
+        """The same problem on every other row of a large table.
+
+        A table of at least :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square).
         """
         if len(self.data) < COARSE_ROWS:
             return self
@@ -500,7 +517,9 @@ class Problem:
 
 
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
+    """``mu_ratio`` and ``trusted`` at the points of ``task``: a pool task.
+
+    ``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
     :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
     :meth:`Problem.costs`.
     """
@@ -510,7 +529,9 @@ def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
 
 
 def _in_domain(values: dict[str, float]) -> bool:
-    """Whether ``values`` make a valid :class:`Physical` whose every point has
+    """Whether ``values`` make a valid :class:`Physical`.
+
+    Whether ``values`` make a valid :class:`Physical` whose every point has
     ``beta > alpha`` (checked here, so that no error of the model is swallowed).
     """
     positive = ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0")
@@ -543,7 +564,9 @@ _CONSTRAINED = {"natural_frequency": ("mass", "k_x", "k_x = mass (2 pi f_n)^2"),
 def free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
                    quality_factor: bool, points: int
                    ) -> tuple[tuple[str, ...], dict[str, tuple[str, float]]]:
-    """``free`` validated (a field a constraint holds is refused, naming the keyword that
+    """``free`` validated, and the fields that follow a free one by a constraint.
+
+    ``free`` validated (a field a constraint holds is refused, naming the keyword that
     releases it), and the fields that follow a free one by a constraint (``name:
     (source, +-1)``, ``ln name = +-ln source + const``).
     """

@@ -149,6 +149,7 @@ class FitResult:
 
     @classmethod
     def from_json(cls, path: str | Path) -> FitResult:
+        """A result saved by :meth:`to_json`."""
         doc = json.loads(Path(path).read_text())
         params = lmfit.Parameters()
         for n, p in doc["params"].items():
@@ -269,7 +270,9 @@ def judge(problem: Problem, chisqr: float, lower, penalised: int) -> tuple[str, 
 
 
 def chi_square_p(problem: Problem, chisqr: float) -> float:
-    """The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
+    """The probability of a chi-square at least ``chisqr``.
+
+    The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
     of freedom, if the model at the best fit were the truth and ``sigma`` right.
     """
     from scipy.stats import chi2

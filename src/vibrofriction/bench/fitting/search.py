@@ -46,6 +46,7 @@ class Stages:
 
     @contextmanager
     def timed(self, name: str) -> Iterator[dict[str, Any]]:
+        """Time the stage ``name``: its row, whose ``evaluations`` the caller sets."""
         row = {"stage": name, "seconds": 0.0, "evaluations": 0}
         self.rows.append(row)
         t = time.perf_counter()
@@ -54,12 +55,15 @@ class Stages:
 
     @property
     def nfev(self) -> int:
+        """The model evaluations of every stage."""
         return sum(r["evaluations"] for r in self.rows)
 
 
 def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: Stages,
             maxiter: int, popsize: int, seed: int, progress: bool, first: int):
-    """The global stage, then least squares from its best distinct points, ``first`` of
+    """The global stage, then least squares from its best distinct points.
+
+    The global stage, then least squares from its best distinct points, ``first`` of
     them before the others.  A first global stage whose first starts end not clearly
     good (:func:`_poor`) is followed by a second one (another seed) before its remaining
     starts are tried: a wrong valley is left rather than explored.  (Its own best point
@@ -103,7 +107,9 @@ def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: 
 
 def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
                   seed: int, workers, progress: bool, cores: int = 1):
-    """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
+    """Differential evolution over ``ln`` of the free parameters.
+
+    Differential evolution over ``ln`` of the free parameters, from a Sobol sample
     that includes the guess; ``workers``: 1 (in this process) or the pool's map over
     ``cores`` processes, to which each generation goes at once (:meth:`Problem.costs`:
     one task per member would cost a pickled problem and a round trip each, and left
@@ -148,6 +154,7 @@ def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
 
 
 def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
+    """The values of the free parameters (``ln``) of an lmfit result ``out``."""
     return np.array([out.params[n].value for n in free])
 
 

@@ -56,7 +56,9 @@ def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: 
 
 
 def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
-    """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
+    """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free parameter.
+
+    The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
     parameter from the best fit (:mod:`.procedure`), in parallel over parameters and
     sides, widened to reach the other local ``minima`` within the level; and the point
     of lowest chi-square a profile met, if lower than the fit's.
@@ -124,7 +126,9 @@ def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
 
 
 def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
-    """How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
+    """How far parameter ``j`` can move on ``side`` before the profile chi-square rises.
+
+    How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
     chi-square (the others refitted) has risen by ``target``: doubling steps to a
     bracket, then Brent's method; ``inf`` if it never does within the search range.
     Each refit starts from the previous one moved along ``slope`` (the valley's
@@ -173,7 +177,9 @@ def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
 def physical_params(out, free: tuple[str, ...], values: dict[str, float],
                      tied: dict[str, tuple[str, float]],
                      dists: dict[str, tuple[float, float]]):
-    """The fitted parameters in physical units (``values``: the system's fields and the
+    """The fitted parameters in physical units with their intervals and correlations.
+
+    The fitted parameters in physical units (``values``: the system's fields and the
     free contact parameters) with their 95.4 % profile intervals and ``stderr`` half the
     interval's longer side; the correlations of the least-squares covariance.  A
     parameter tied to a free one by a constraint or a contact geometry, ``ln x = p ln y +
@@ -196,7 +202,9 @@ def physical_params(out, free: tuple[str, ...], values: dict[str, float],
 
 
 def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
-    """One sentence per side of an interval the data do not close within the search
+    """One sentence per open side of an interval, and one for a lower minimum.
+
+    One sentence per side of an interval the data do not close within the search
     range, and one if the fit's minimum is still not the lowest found.
     """
     out = []

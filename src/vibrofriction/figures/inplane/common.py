@@ -64,6 +64,7 @@ def critical_v_pair(a: float, a_x: float, phase: float, zeta: float = 0.0, eta_c
 
 
 def inplane_columns(c: Curve) -> dict[str, NDArray]:
+    """The curve's damping and in-plane parameters as columns of its length."""
     s = c.series
     n = s.size
     return {"zeta": np.full(n, s.zeta), "eta_c": np.full(n, s.eta_c), "a_x": np.full(n, s.a_x),
@@ -72,7 +73,9 @@ def inplane_columns(c: Curve) -> dict[str, NDArray]:
 
 
 def mark_untrusted(ax, x: NDArray, c: Curve, color, ms: float = 2.5) -> None:
-    """Untrusted points as open circles at their (signed) value, or a bar over the range
+    """Untrusted points as open circles, or as a bar where they did not settle.
+
+    Untrusted points as open circles at their (signed) value, or a bar over the range
     of their last windows' means when they did not settle.
     """
     bad = ~np.asarray(c.trusted)

@@ -1,4 +1,6 @@
-"""Fig. 16: the drive's characteristic against the phase: the blocking forces and the idle velocity.
+"""Fig. 16: the drive's characteristic against the phase.
+
+The blocking forces and the idle velocity.
 """
 
 from __future__ import annotations
@@ -74,7 +76,9 @@ def blocking_forces(c: Curve, v: float = V_BLOCK[0]) -> tuple[float, float]:
 
 
 def idle_velocities(c: Curve, *, xtol: float = 1e-7) -> list[float]:
-    """Every ``V != 0`` at which the curve's ``mu`` changes sign, refined by Brent's method
+    """Every ``V != 0`` at which the curve's ``mu`` changes sign.
+
+    Every ``V != 0`` at which the curve's ``mu`` changes sign, refined by Brent's method
     on the solver (:func:`solve_points`); empty where ``mu`` has the sign of ``V``
     everywhere on the grid.  A bracket with an untrusted end is skipped.
     """

@@ -28,7 +28,9 @@ from .common import (
 
 # --------------------------------------------------------------------------- Fig. 15
 def _map_grid(quick: bool, a_x: float) -> tuple[NDArray, NDArray, float]:
-    """Phases (``0..2 pi``, an even number of steps: ``phase + pi`` is on the grid) and the
+    """The phases and the signed velocities of a map panel, and ``V_max``.
+
+    Phases (``0..2 pi``, an even number of steps: ``phase + pi`` is on the grid) and the
     signed velocities (cell centres, symmetric, no 0) of a map panel; ``V_max``.
     """
     zeta, eta_c = DAMPING
