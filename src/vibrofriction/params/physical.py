@@ -95,7 +95,8 @@ class Physical:
     Raises
     ------
     ValueError
-        A field out of its range (named, with the range), or an unknown ``inplane_on``.
+        A field outside its range in SI units (named, with the range: e.g. a mass or a
+        stiffness that is not > 0), or an ``inplane_on`` that is neither name.
 
     Examples
     --------
