@@ -54,8 +54,32 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """Inertial velocity ``V = v0 m omega/(mu0 F_N0) = c vbar`` (eqs. 12, 16), elementwise.
 
-    The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.  ValueError where
-    ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+    The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.
+
+    Parameters
+    ----------
+    alpha, beta, amplitude : array_like
+        The system's groups (eq. 20).
+    vbar : array_like
+        ``v0/v0*``, ``>= 0``.
+    zeta, eta_c : array_like, optional
+        The damping of the pin and of the contact (docs/damping.md).
+
+    Returns
+    -------
+    float or ndarray
+        ``V``, of the inputs' broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        Where ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import vbar_to_inertial
+    >>> vbar_to_inertial(0.5, 2.0, 0.5, [0.3, 1.0])  # c = a|beta - 1|/((beta - alpha)|alpha - 1|)
+    array([0.2       , 0.66666667])
     """
     v = valid_array("vbar", vbar)
     return as_float_or_array(critical_for_vbar(alpha, beta, amplitude, zeta, eta_c) * v)
@@ -67,6 +91,31 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
 
     ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``).
+
+    Parameters
+    ----------
+    alpha, beta, amplitude : array_like
+        The system's groups (eq. 20).
+    v_inertial : array_like
+        ``V``, ``>= 0``.
+    zeta, eta_c : array_like, optional
+        The damping of the pin and of the contact (docs/damping.md).
+
+    Returns
+    -------
+    float or ndarray
+        ``vbar``, of the inputs' broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        Where ``vbar`` is undefined (as in :func:`vbar_to_inertial`) or ``V < 0``.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import inertial_to_vbar
+    >>> inertial_to_vbar(0.5, 2.0, 0.5, 0.2)
+    0.3...
     """
     V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
     return as_float_or_array(V / critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))

@@ -23,8 +23,35 @@ def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
     """The pin dashpot ``c_x`` (N s/m) from its damping ratio or its quality factor.
 
     ``c_x = 2 zeta sqrt(k_x m)`` with ``zeta = 1/(2Q)``: ``Q`` is what an impact test
-    gives (the free decay of the pin with the contact open, paper Fig. 8b).  Exactly
-    one of ``zeta`` (``>= 0``) and ``quality_factor`` (``> 0``, ``inf`` undamped).
+    gives (the free decay of the pin with the contact open, paper Fig. 8b).
+
+    Parameters
+    ----------
+    k_x : float
+        The pin's stiffness, N/m.
+    mass : float
+        The body's mass, kg.
+    zeta : float, optional, keyword-only
+        The damping ratio, ``>= 0``.
+    quality_factor : float, optional, keyword-only
+        The quality factor ``Q``, ``> 0`` (``inf``: undamped); exactly one of ``zeta`` and
+        ``quality_factor``.
+
+    Returns
+    -------
+    float
+        ``c_x``, N s/m.
+
+    Raises
+    ------
+    ValueError
+        Both or neither of ``zeta`` and ``quality_factor``, or a value out of its range.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import pin_damping
+    >>> pin_damping(2.5e5, 0.01, quality_factor=50)  # sqrt(k_x m)/Q
+    1.0
     """
     if (zeta is None) == (quality_factor is None):
         raise ValueError("give exactly one of zeta and quality_factor")
