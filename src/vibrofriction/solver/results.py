@@ -100,7 +100,22 @@ _SECTION_PHASES = {c: codes.PHASE_NAMES[c] for c in (codes.STICK, codes.SLIP_POS
 
 
 def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> SectionState | None:
-    """The :class:`SectionState` of a solver row, or None where there is none (static)."""
+    """The :class:`SectionState` of a solver row, or None where there is none (static).
+
+    Parameters
+    ----------
+    y, x_dot, f : float
+        The section state's position, velocity and contact force (laboratory frame).
+    phase : int
+        The kernels' phase code (``phase`` of :data:`~vibrofriction.schema.INT_COLUMNS`).
+    e : float
+        The contact spring's elongation.
+
+    Returns
+    -------
+    SectionState or None
+        None where the phase has no section state or a value is not finite.
+    """
     name = _SECTION_PHASES.get(phase)
     if name is None or not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)):
         return None
@@ -285,7 +300,19 @@ SLOW_SETTLING = 1000
 
 
 def describe(r: FrictionResult) -> str:
-    """The message of a result: status, how it was obtained, and its caveats."""
+    """The message of a result: status, how it was obtained, and its caveats.
+
+    Parameters
+    ----------
+    r : FrictionResult
+        The result.
+
+    Returns
+    -------
+    str
+        One line: the status and what it means, the error estimate, and the caveats
+        (slow or neutral settling, and the like) where they apply.
+    """
     head = r.status.value + (f" (period {r.period})" if r.status is Status.PERIODIC else "")
     parts = [f"{head}: {r.status.message}", f"error estimate {r.error:.2g}"
              + ("" if r.trusted else " (not trusted)")]

@@ -75,14 +75,41 @@ def solve_gradients(
 ) -> tuple[dict[str, NDArray], Sensitivities]:
     """:func:`solve_points` and the sensitivities of its answers to the parameters.
 
-    No transverse oscillation; the eight parameters :data:`SENSITIVE`.
-
-    ``rel_step``: the central differences' step of the explicit parameter part, relative
-    to each parameter's scale; ``order``: 4 (``+-h``, ``+-2h``, the default) or 2 (half
-    the cost; off by up to ~1e-4 relative where the map at fixed ``z*`` bends);
-    ``parameters``: those differentiated (the others are ``nan``).  ``V < 0`` is
+    No transverse oscillation; the eight parameters :data:`SENSITIVE`.  ``V < 0`` is
     differentiated through the mirror of :func:`solve_points` (``mu(V, phase_x) =
     -mu(-V, phase_x + pi)``).
+
+    Parameters
+    ----------
+    alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x : array_like
+        The points, broadcast together, as for :func:`solve_points`.
+    inplane_on : str, keyword-only
+        ``"substrate"`` (default) or ``"holder"``.
+    initial : str or SectionState, keyword-only
+        The initial state, as for :func:`solve_points`.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds; None the defaults.
+    rel_step : float, keyword-only
+        The central differences' step of the explicit parameter part, relative to each
+        parameter's scale.
+    order : int, keyword-only
+        4 (``+-h``, ``+-2h``, the default) or 2 (half the cost; off by up to ~1e-4
+        relative where the map at fixed ``z*`` bends).
+    parameters : tuple of str, keyword-only
+        Those differentiated (the others are ``nan``); names of :data:`SENSITIVE`.
+
+    Returns
+    -------
+    columns : dict of str to ndarray
+        The named output columns of :func:`solve_points`.
+    sensitivities : Sensitivities
+        Their derivatives in the parameters.
+
+    Raises
+    ------
+    ValueError
+        An ``order`` other than 2 or 4, a name not in :data:`SENSITIVE`, or what
+        :func:`solve_points` refuses.
     """
     settings = settings or DEFAULT_SETTINGS
     cols = solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
@@ -174,8 +201,31 @@ def friction_gradient(
 
     :func:`~vibrofriction.solver.friction_coefficient` and ``d mu_ratio / d name`` for the
     parameters :data:`SENSITIVE` of its :class:`Dimensionless` system (``nan`` where this route has
-    none: see the module doc).  The velocity is given as for ``friction_coefficient``; no transverse
-    oscillation.
+    none: see the module doc).
+
+    Parameters
+    ----------
+    system : Dimensionless or Physical
+        The system: no transverse oscillation, a flat punch.
+    vbar, v_inertial, v0 : float
+        The sliding velocity, exactly one of them, as for :func:`friction_coefficient`.
+    initial : str or SectionState, keyword-only
+        The initial state, as for :func:`friction_coefficient`.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds; None the defaults.
+
+    Returns
+    -------
+    result : FrictionResult
+        The result at the point.
+    gradient : dict of str to float
+        ``d mu_ratio / d name`` for each name of :data:`SENSITIVE`.
+
+    Raises
+    ------
+    ValueError
+        A transverse oscillation (``a_y > 0``) or a curved tip, or the velocities as for
+        :func:`friction_coefficient`.
     """
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:

@@ -18,7 +18,24 @@ __all__ = ["DEFAULT_SETTINGS", "SolverSettings", "converged"]
 def converged(status: ArrayLike) -> NDArray[np.bool_]:
     """Which statuses are converged (:attr:`Status.ok`), elementwise.
 
-    Integer codes or :class:`Status` members.  The package's one test of convergence.
+    The package's one test of convergence.
+
+    Parameters
+    ----------
+    status : array_like
+        Integer codes (:attr:`Status.code`) or :class:`Status` members.
+
+    Returns
+    -------
+    numpy.bool_ or ndarray of bool
+        Of the shape of ``status``.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.solver import converged
+    >>> converged([vf.Status.PERIODIC.code, vf.Status.NOT_CONVERGED.code])
+    array([ True, False])
     """
     st = np.asarray(status)
     if st.ndim == 0 and st.dtype != object:  # one point: no array machinery
