@@ -217,9 +217,23 @@ def _damped(system: Physical, mass: float, quality_factor: float | None,
 
 
 def from_bench_file(path: str | os.PathLike) -> Physical:
-    """:func:`from_bench` from a JSON file of its keyword arguments.
+    """:func:`from_bench` from a JSON file of its keyword arguments (docs/bench.md).
 
-    docs/bench.md; :func:`read_bench_file` reads it.
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The bench file, read by :func:`read_bench_file`.
+
+    Returns
+    -------
+    Physical
+        The pin the file describes.
+
+    Raises
+    ------
+    ValueError
+        A file :func:`read_bench_file` refuses, a key :func:`from_bench` does not take, or
+        a value it refuses.
     """
     spec = read_bench_file(path)
     try:
@@ -231,11 +245,25 @@ def from_bench_file(path: str | os.PathLike) -> Physical:
 def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
     """The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md).
 
-    The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md),
-    the contact geometry built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
+    The contact geometry is built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
     ..., "pin": {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
     ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``
     instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The JSON file: one object of keyword arguments.
+
+    Returns
+    -------
+    dict of str to object
+        The keyword arguments, with ``"contact"`` a contact object where given.
+
+    Raises
+    ------
+    ValueError
+        A missing file, invalid JSON, not an object, or a malformed ``"contact"``.
     """
     import json
 
