@@ -94,12 +94,10 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
 
     Parameters
     ----------
-    alpha, beta, amplitude : array_like
-        The system's groups (eq. 20).
+    alpha, beta, amplitude, zeta, eta_c : array_like
+        The system, as for :func:`vbar_to_inertial`.
     v_inertial : array_like
         ``V``, ``>= 0``.
-    zeta, eta_c : array_like, optional
-        The damping of the pin and of the contact (docs/damping.md).
 
     Returns
     -------
