@@ -1,5 +1,6 @@
-"""The bench: measured friction curves, the fit of the model to them, the design of the
-oscillation (docs/bench.md).
+"""The bench: measured friction curves, the fit of the model, the design of the oscillation.
+
+From measured friction curves to the model and back (docs/bench.md).
 
 * :mod:`.measurements`: the table of measured points (:func:`read_measurements`);
 * :mod:`.fitting`: the model fitted with honest uncertainties (:func:`fit`,

@@ -78,8 +78,10 @@ def _parse_header(name: object) -> tuple[str, str | None]:
 
 
 def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
-    """The table of a CSV file and, per row, its line in the file (1-based, every line
-    counted: comments, blank lines and the header)."""
+    """The table of a CSV file and, per row, its line in the file.
+
+    Lines are 1-based, every line counted: comments, blank lines and the header.
+    """
     where = os.fspath(source)
     try:
         with open(source, encoding="utf-8-sig", newline="") as fh:
@@ -99,8 +101,10 @@ def _read_csv(source: str | os.PathLike) -> tuple[pd.DataFrame, list[int]]:
 
 
 def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | None]]:
-    """The known columns of ``frame`` (matched regardless of case) with their header
-    and unit; a name close to a known one but not it is an error."""
+    """The known columns of ``frame`` (matched regardless of case) with their header and unit.
+
+    A name close to a known one but not it is an error.
+    """
     columns: dict[str, tuple[object, str | None]] = {}
     for raw in frame.columns:
         name, unit = _parse_header(raw)
@@ -127,9 +131,24 @@ def _columns(frame: pd.DataFrame, where: str) -> dict[str, tuple[object, str | N
 def read_measurements(source: str | os.PathLike | pd.DataFrame) -> pd.DataFrame:
     """A measured table (CSV path or DataFrame) as a DataFrame in SI units, checked.
 
-    Returns the columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s),
-    ``sigma`` (nan where not given), ``du_x``, ``du_y`` (m) and ``phase_x``, ``phase_y``
-    (rad; 0 where not given), in the order of the input rows.
+    Parameters
+    ----------
+    source : str, os.PathLike or pandas.DataFrame
+        A CSV file or a table (docs/bench.md: the columns, their units in the headers).
+
+    Returns
+    -------
+    pandas.DataFrame
+        The columns ``v0`` (m/s), ``cof``, ``du_z`` (m), ``omega`` (rad/s), ``sigma`` (nan
+        where not given), ``du_x``, ``du_y`` (m) and ``phase_x``, ``phase_y`` (rad; 0 where
+        not given), in the order of the input rows.
+
+    Raises
+    ------
+    ValueError
+        A missing or unreadable file, a missing, repeated or unknown column, an unknown
+        unit, or a value that is not a finite number in its range (naming the column and
+        the row).
     """
     if isinstance(source, pd.DataFrame):
         frame, lines, where = source, None, "the DataFrame"

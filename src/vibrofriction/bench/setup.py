@@ -128,8 +128,11 @@ def _pin(f_n: float, mass: float | None, k_x: float | None) -> tuple[float, floa
 
 def _contact(load: float, contact: Geometry | None, contact_model: str,
              k_zc: float | None, k_xc: float | None) -> tuple[float, float, float, float]:
-    """The contact at the load: ``(u_z0, k_zc, k_xc, profile_exponent)``, from its
-    stiffnesses or its geometry, linearised or MDR."""
+    """The contact at the load.
+
+    ``(u_z0, k_zc, k_xc, profile_exponent)``, from its stiffnesses or its geometry, linearised
+    or MDR.
+    """
     exponent = math.inf
     if contact is not None:
         if k_zc is not None or k_xc is not None:
@@ -158,8 +161,10 @@ def _contact(load: float, contact: Geometry | None, contact_model: str,
 
 
 def _amplitude(du_z: float | None, dF_N: float | None, k_zc: float, exponent: float) -> float:
-    """The indentation amplitude ``du_z`` (m) from exactly one of it and the force
-    amplitude ``dF_N`` (N, a harmonic force: not for a curved MDR contact)."""
+    """The indentation amplitude ``du_z`` (m) from exactly one of it and ``dF_N``.
+
+    ``dF_N`` is the force amplitude (N, a harmonic force: not for a curved MDR contact).
+    """
     if (du_z is None) == (dF_N is None):
         raise ValueError("give exactly one of du_z (m) and dF_N (N) for the oscillation")
     if dF_N is not None and exponent != math.inf:
@@ -174,9 +179,11 @@ def _amplitude(du_z: float | None, dF_N: float | None, k_zc: float, exponent: fl
 
 def _dead_weight(u_z0: float, du_z: float, exponent: float, contact: Geometry | None,
                  k_zc: float, k_xc: float) -> tuple[float, float, float]:
-    """``(u_z0, k_zc, k_xc)`` where the load is the mean force over the cycle: the mean
-    indentation lowered (:func:`~vibrofriction.theory.dead_weight_indentation`), an MDR
-    contact's stiffnesses taken there."""
+    """``(u_z0, k_zc, k_xc)`` where the load is the mean force over the cycle.
+
+    The mean indentation lowered (:func:`~vibrofriction.theory.dead_weight_indentation`), an MDR
+    contact's stiffnesses taken there.
+    """
     try:
         u_z0 *= float(theory.dead_weight_indentation(du_z / u_z0, exponent))
     except ValueError as exc:
@@ -192,8 +199,10 @@ def _dead_weight(u_z0: float, du_z: float, exponent: float, contact: Geometry | 
 def _damped(system: Physical, mass: float, quality_factor: float | None,
             damping_ratio: float | None, eta_c: float,
             damping_ratio_y: float | None) -> Physical:
-    """``system`` with the pin's damping along and across the sliding and the contact's
-    loss factor."""
+    """``system`` with the pin's damping along and across the sliding, and the contact's.
+
+    The contact's damping as its loss factor.
+    """
     if damping_ratio_y is not None:
         k_y_, _ = system.pin_y
         zeta_y = float(checked("damping_ratio_y", damping_ratio_y, minimum=0.0))
@@ -208,8 +217,24 @@ def _damped(system: Physical, mass: float, quality_factor: float | None,
 
 
 def from_bench_file(path: str | os.PathLike) -> Physical:
-    """:func:`from_bench` from a JSON file of its keyword arguments (docs/bench.md;
-    :func:`read_bench_file` reads it)."""
+    """:func:`from_bench` from a JSON file of its keyword arguments (docs/bench.md).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The bench file, read by :func:`read_bench_file`.
+
+    Returns
+    -------
+    Physical
+        The pin the file describes.
+
+    Raises
+    ------
+    ValueError
+        A file :func:`read_bench_file` refuses, a key :func:`from_bench` does not take, or
+        a value it refuses.
+    """
     spec = read_bench_file(path)
     try:
         return from_bench(**spec)
@@ -218,11 +243,28 @@ def from_bench_file(path: str | os.PathLike) -> Physical:
 
 
 def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
-    """The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md),
-    the contact geometry built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
+    """The keyword arguments of :func:`from_bench` in a JSON file (docs/bench.md).
+
+    The contact geometry is built: ``"contact": {"type": "sphere" | "flat_punch", "radius":
     ..., "pin": {"E": ..., "nu": ...}, "counterface": {...}}``, or ``"type": "cone"`` with
     ``"slope"`` (``cot`` of the half-angle) or ``"power_law"`` with ``"c"`` and ``"n"``
-    instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact."""
+    instead of the radius; ``"contact_model": "mdr"`` selects the MDR contact.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The JSON file: one object of keyword arguments.
+
+    Returns
+    -------
+    dict of str to object
+        The keyword arguments, with ``"contact"`` a contact object where given.
+
+    Raises
+    ------
+    ValueError
+        A missing file, invalid JSON, not an object, or a malformed ``"contact"``.
+    """
     import json
 
     try:

@@ -1,5 +1,7 @@
-"""The command line's machinery: argparse parsers built from the option table, values
-checked against the schema, one-line errors and the exit codes.
+"""The command line's machinery.
+
+Argparse parsers built from the option table, values checked against the schema, one-line errors and
+the exit codes.
 
 Exit codes: 0 success, 2 bad input (one line on stderr), 3 some computed point is not
 trusted (one line counting them on stderr).  Standard library only (and the schema,
@@ -37,8 +39,10 @@ class UsageError(Exception):
 
 @dataclass(frozen=True)
 class Command:
-    """A sub-command: its name, one-line help, description, options and the function
-    that runs it (heavy imports happen inside it)."""
+    """A sub-command: its name, help, description, options and the function that runs it.
+
+    The help is one line; heavy imports happen inside the function.
+    """
 
     name: str
     help: str
@@ -58,8 +62,11 @@ class Command:
 
 
 class Args:
-    """The checked values of a command line: ``args["alpha"]`` is the value given or the
-    option's default; ``args.given`` only what was given."""
+    """The checked values of a command line.
+
+    ``args["alpha"]`` is the value given or the option's default; ``args.given`` only what was
+    given.
+    """
 
     def __init__(self, given: dict[str, Any], options: Sequence[Opt]) -> None:
         self.given = given
@@ -97,8 +104,11 @@ def exit_if_untrusted(trusted: Any, tol_trusted: float) -> None:
 
 
 def json_number(x: float | None) -> float | str | None:
-    """JSON has no inf/nan: encode them as strings (inf) or null (nan, and None: an
-    optional parameter left to its twin, ``alpha_y``)."""
+    """JSON has no inf/nan.
+
+    Encode them as strings (inf) or null (nan, and None: an optional parameter left to its twin,
+    ``alpha_y``).
+    """
     if x is None or math.isnan(x):
         return None
     if math.isinf(x):
@@ -272,8 +282,10 @@ def value_flags(commands: Sequence[Command]) -> set[str]:
 
 
 def glue(argv: Sequence[str], flags: set[str]) -> list[str]:
-    """``--v0 -1e-3`` as ``--v0=-1e-3``, so that argparse does not read a negative
-    number as an option."""
+    """``--v0 -1e-3`` as ``--v0=-1e-3``.
+
+    So that argparse does not read a negative number as an option.
+    """
     out: list[str] = []
     i = 0
     while i < len(argv):

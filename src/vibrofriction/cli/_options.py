@@ -115,16 +115,21 @@ def unit_words(unit: str) -> str:
 
 
 def range_words(rng: Range) -> str:
-    """The allowed values in the schema's words, with ``inf`` for ``math.inf``:
-    ``finite and > 0``, ``> 0 (inf allowed)``, ``> alpha or inf``."""
+    """The allowed values in the schema's words, with ``inf`` for ``math.inf``.
+
+    ``finite and > 0``, ``> 0 (inf allowed)``, ``> alpha or inf``.
+    """
     return rng.text().replace("math.inf", "inf")
 
 
 def check_value(opt_flag: str, rng: Range, value: float,
                 above: tuple[str, float] | None = None, name: str = "") -> None:
-    """ValueError in one line naming the option (and the parameter ``name``) and its
+    """ValueError in one line if ``value`` is outside ``rng``.
+
+    ValueError in one line naming the option (and the parameter ``name``) and its
     allowed values if ``value`` is outside ``rng`` (``above``: the flag and value of the
-    parameter it must exceed)."""
+    parameter it must exceed).
+    """
     ok = not math.isnan(value)
     if ok and math.isinf(value):
         ok = value > 0 and rng.allow_inf
@@ -155,8 +160,11 @@ def _equation(eq: str) -> str:
 
 def parameter_option(name: str, kind: str = "float", note: str = "",
                      requires: tuple[str, ...] = ()) -> Opt:
-    """The option of the schema's parameter ``name``: help from its long name, unit,
-    range, default (or twin) and equation; ``note`` is what the command adds."""
+    """The option of the schema's parameter ``name``.
+
+    Help from its long name, unit, range, default (or twin) and equation; ``note`` is what the
+    command adds.
+    """
     p = PARAMETER[name]
     unit = unit_words(p.unit)
     words = [p.long_name + (f" [{unit}]" if unit else ""), range_words(p.range)]
@@ -205,8 +213,11 @@ REQUIRES: dict[str, tuple[str, ...]] = {
 
 def model_options(kinds: dict[str, str], notes: dict[str, str] | None = None,
                   skip: Iterable[str] = ()) -> tuple[Opt, ...]:
-    """An option for every parameter of the schema (in its order; ``kinds``: the kind of
-    value of some of them, ``"float"`` otherwise) and every choice, except ``skip``."""
+    """An option for every parameter of the schema and every choice, except ``skip``.
+
+    An option for every parameter of the schema (in its order; ``kinds``: the kind of
+    value of some of them, ``"float"`` otherwise) and every choice, except ``skip``.
+    """
     notes = notes or {}
     skip = set(skip)
     out = [parameter_option(p.name, kinds.get(p.name, "float"), notes.get(p.name, ""),

@@ -1,6 +1,8 @@
-"""``vibrofriction fit`` and ``vibrofriction design``: from the bench to the model and back
-(docs/bench.md).  The pin is described by a bench file (JSON,
-:func:`~vibrofriction.bench.from_bench`)."""
+"""``vibrofriction fit`` and ``vibrofriction design``.
+
+From the bench to the model and back (docs/bench.md).  The pin is described by a bench file (JSON,
+:func:`~vibrofriction.bench.from_bench`).
+"""
 
 from __future__ import annotations
 

@@ -149,10 +149,13 @@ def _json_value(v: Any) -> Any:
 
 def json_row(r: FrictionResult, physical: Physical | None = None,
              v0: float | None = None) -> dict:
-    """Every field of a result (:data:`vibrofriction.schema.RESULT_FIELDS`, JSON-safe:
+    """Every field of a result, JSON-safe, with its ``vbar`` and its message.
+
+    Every field of a result (:data:`vibrofriction.schema.RESULT_FIELDS`, JSON-safe:
     nan as null, inf as "inf"; ``system`` as every parameter of the schema's
     dimensionless model), its ``vbar`` and its message; for a physical set-up also
-    ``v0`` (m/s), ``mu`` (mu0 * mu_ratio) and ``physical``, every SI parameter."""
+    ``v0`` (m/s), ``mu`` (mu0 * mu_ratio) and ``physical``, every SI parameter.
+    """
     row = {k: _json_value(v) for k, v in r.as_dict().items()}
     row["system"] = {n: json_number(getattr(r.system, n))
                      for n in parameter_names("dimensionless")}

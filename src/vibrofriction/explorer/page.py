@@ -166,8 +166,10 @@ class Explorer:
             self.case_text, width=350)
 
     def _main(self):
-        """The main column: the curve, the history and the map, the measurements and the
-        sharing tabs."""
+        """The main column.
+
+        The curve, the history and the map, the measurements and the sharing tabs.
+        """
         return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
                                           self.history_view.path_figure,
@@ -240,10 +242,13 @@ class Explorer:
             self._changed()
 
     def _guard_curved(self) -> None:
-        """With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
+        """With a curved tip, reset and disable what the MDR solver refuses.
+
+        With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
         and the axis ``vbar`` to ``V``, saying so next to each with the library's message,
         and disable them (and ``phase_y``); a flat punch enables them again.  The
-        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled."""
+        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled.
+        """
         try:
             n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value or "")
         except ValueError:
@@ -387,8 +392,10 @@ class Explorer:
         pn.state.execute(partial(self._history_at_rest, state))
 
     async def _history_at_rest(self, state: State, rest: float = 0.4) -> None:
-        """The history follows the curve once the inputs rest (not at every step of a
-        slider: it would hold up the next curve)."""
+        """The history follows the curve once the inputs rest.
+
+        Not at every step of a slider: it would hold up the next curve.
+        """
         await asyncio.sleep(rest)
         if self.state is not state or self._want is not None or self._busy:
             return
@@ -455,8 +462,11 @@ class Explorer:
             f"{self._point_text}")
 
     def _show_mdr_history(self, where: str, h: dict) -> None:
-        """A curved tip: the space-time view of its contact (or why there is none), the
-        forces where the MDR history gives them, and the point's results."""
+        """A curved tip: the space-time view of its contact, its forces and its results.
+
+        A curved tip: the space-time view of its contact (or why there is none), the
+        forces where the MDR history gives them, and the point's results.
+        """
         forces = h.get("t") is not None
         self.history_view.figure.visible = forces
         self.history_view.path_figure.visible = False
@@ -577,8 +587,10 @@ class Explorer:
 
     # ------------------------------------------------------------------ export
     def _export(self, fmt: str) -> io.BytesIO:
-        """The curve shown (with the inputs it was computed for) as a file: never an empty
-        one (the buttons are disabled until the first curve is shown)."""
+        """The curve shown (with the inputs it was computed for) as a file.
+
+        Never an empty one (the buttons are disabled until the first curve is shown).
+        """
         if self.curve is None:
             raise RuntimeError("no curve has been computed yet: nothing to export")
         if fmt == "csv":
@@ -588,6 +600,8 @@ class Explorer:
 
 
 def app(state: State | None = None) -> pn.viewable.Viewable:
-    """The explorer as a Panel object: serve it, or show it in a notebook
-    (``pn.extension()`` first)."""
+    """The explorer as a Panel object.
+
+    Serve it, or show it in a notebook (``pn.extension()`` first).
+    """
     return Explorer(state).layout

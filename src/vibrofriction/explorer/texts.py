@@ -1,5 +1,8 @@
-"""The explorer's sentences: the curve's status and readout, a picked point's values and a
-curved tip's static value and critical velocity."""
+"""The explorer's sentences.
+
+The curve's status and readout, a picked point's values and a curved tip's static value and critical
+velocity.
+"""
 
 from __future__ import annotations
 
@@ -28,10 +31,12 @@ def vbar_refusal(state: State) -> str:
 
 
 def curved_side_text(curve: dict, state: State) -> str:
-    """The case and the curved tip's values beside the curve: the static value (none with
-    ``a_x > 0``: it is the limit without the in-plane oscillation), the mean normal force,
-    the critical velocity of continuous sliding (or the library's reason for none), and
-    why ``V = 0`` is left out where it is."""
+    """The case and the curved tip's values beside the curve.
+
+    The static value (none with ``a_x > 0``: it is the limit without the in-plane oscillation),
+    the mean normal force, the critical velocity of continuous sliding (or the library's reason
+    for none), and why ``V = 0`` is left out where it is.
+    """
     static = (f"static value {curve['static']:.4g} (the smallest normal force over the "
               "mean)" if math.isfinite(curve["static"]) else
               "no static value (a curved tip's is that without the in-plane oscillation)"
@@ -59,9 +64,12 @@ def status_text(state: State) -> str:
 
 
 def point_text(curve: dict, i: int) -> str:
-    """The results of the curve's point ``i``: ``mu/mu0`` (or the COF), its status, the
-    mean normal force ``<F_N>/F_N0`` and the fractions of the contact disc in stick, slip
-    and out of contact over the period (the flat punch: its time fractions)."""
+    """The results of the curve's point ``i``.
+
+    ``mu/mu0`` (or the COF), its status, the mean normal force ``<F_N>/F_N0`` and the fractions
+    of the contact disc in stick, slip and out of contact over the period (the flat punch: its
+    time fractions).
+    """
     def value(name: str, fmt: str) -> str:
         v = float(np.asarray(curve[name], dtype=float)[i])
         return format(v, fmt) if math.isfinite(v) else "none"  # e.g. the static limit
@@ -76,8 +84,11 @@ def point_text(curve: dict, i: int) -> str:
 
 
 def readout_text(curve: dict) -> str:
-    """The curve's summary: the mean over its trusted points only (an untrusted value is
-    no answer), how many of the points are trusted, and the time it took."""
+    """The curve's summary.
+
+    The mean over its trusted points only (an untrusted value is no answer), how many of the
+    points are trusted, and the time it took.
+    """
     y, ok = np.asarray(curve["y"], dtype=float), np.asarray(curve["trusted"], dtype=bool)
     n_ok = int(np.count_nonzero(ok))
     took = f"computed in {curve['seconds']:.2f} s"

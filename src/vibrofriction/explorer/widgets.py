@@ -1,5 +1,8 @@
-"""The explorer's input widget: a slider and a text box for one parameter, kept in step, with
-its message line; and the styles of the page's messages and notes."""
+"""The explorer's input widget.
+
+A slider and a text box for one parameter, kept in step, with its message line; and the styles of
+the page's messages and notes.
+"""
 
 from __future__ import annotations
 
@@ -17,8 +20,11 @@ NOTE_STYLE = {"color": "#444444", "font-size": "12px", "margin": "0 10px"}
 
 
 class Input:
-    """A numeric input: a slider (logarithmic where the range spans decades), a box for
-    the exact value, and the inline message."""
+    """A numeric input.
+
+    A slider (logarithmic where the range spans decades), a box for the exact value, and the
+    inline message.
+    """
 
     def __init__(self, field: Field, value: float, on_change) -> None:
         self.field = field
@@ -61,6 +67,7 @@ class Input:
         self.text.value = format_value(value)
 
     def sync_slider(self, value: float) -> None:
+        """Move the slider to ``value`` without calling back."""
         self._quiet = True
         try:
             self.slider.value = self._position(value)
@@ -68,6 +75,7 @@ class Input:
             self._quiet = False
 
     def show_message(self, text: str) -> None:
+        """Show ``text`` below the input; hidden when empty."""
         self.message.object = text
         self.message.visible = bool(text)
 

@@ -33,7 +33,9 @@ __all__ = ["closed_form", "fig4_checks", "fig5_checks", "fig6_checks", "fig6_not
 
 def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
                   v_max_case_iii: float) -> list[Check]:
-    """Figs. 3 and 7: case III (mu = mu0), eq. (12) (mu = mu0 exactly above v0*, below
+    """Figs. 3 and 7: case III, eq. (12), the case IV plateau and monotonicity.
+
+    Figs. 3 and 7: case III (mu = mu0), eq. (12) (mu = mu0 exactly above v0*, below
     under it), the case IV plateau at finite beta against the rigid-contact one (eq. 32)
     and the monotonicity the caption of Fig. 3 states.
     """
@@ -97,8 +99,9 @@ def matrix_checks(curves: Mapping[str, Curve], amplitude: float, fig: str,
 
 
 def jumping_note(curves: Mapping[str, Curve], vbar_max: float) -> str:
-    """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn
-    against ``vbar``; with loss of contact eq. (12) no longer marks that onset.
+    """Fig. 7: where ``mu/mu0`` first reaches 1 (within 1e-9) on each panel drawn against ``vbar``.
+
+    With loss of contact eq. (12) no longer marks that onset.
     """
     first = []
     for c in curves.values():
@@ -175,7 +178,9 @@ def closed_form(name: str, vbar, amplitude: float, *, printed: bool = False):
 
 def fig4_checks(curves: Mapping[str, Curve],
                 systems: Mapping[str, tuple[float, float]]) -> list[Check]:
-    """Fig. 4: eq. (26) on the stiff curves, eq. (27) corrected and as printed on the soft
+    """Fig. 4: eqs. (26) and (27) on the stiff and soft curves, and monotonicity.
+
+    Fig. 4: eq. (26) on the stiff curves, eq. (27) corrected and as printed on the soft
     ones, monotonicity of the soft curves and the best-fitting exponent of eq. (27).
 
     ``systems`` maps ``"stiff"`` and ``"soft"`` to their ``(alpha, beta)``.
@@ -215,7 +220,9 @@ def fig4_checks(curves: Mapping[str, Curve],
 
 def fig5_checks(curves: Mapping[str, Curve], betas_below: tuple[float, ...],
                 betas_above: tuple[float, ...]) -> tuple[list[Check], list[str]]:
-    """Fig. 5: corrected eq. (27) as the upper envelope above beta = 1, monotonicity, and
+    """Fig. 5: corrected eq. (27) as the upper envelope above beta = 1, and monotonicity.
+
+    Fig. 5: corrected eq. (27) as the upper envelope above beta = 1, monotonicity, and
     (as sentences) where the plateau at mu0 begins near the resonance.
     """
     checks = []
@@ -280,11 +287,13 @@ def _by_amplitude(curves: Mapping[str, Curve], role: str) -> dict[float, Curve]:
 def fig6_checks(curves: Mapping[str, Curve], amplitudes: Sequence[float],
                 plateau_v: float, v_max: float,
                 velocity_amplitudes: Sequence[float] = (0.2, 0.5, 1.0, 1.5)) -> list[Check]:
-    """Fig. 6 (case IV, ``alpha = 1``, ``beta = inf``): the plateau against ``1 - a/2`` (last
-    eq. 32) and against :func:`~vibrofriction.theory.resonant_plateau` (small ``tau*``) and
-    ``resonant_plateau_exact`` (exact root of the energy balance, first eq. 32); the
-    distance of the drawn curves from it at their right edge ``v_max``; and ``v0/dv``
-    (eq. 32) from the simulated body velocity at ``V = plateau_v``.
+    """Fig. 6 (case IV, ``alpha = 1``, ``beta = inf``).
+
+    The plateau against ``1 - a/2`` (last eq. 32) and against
+    :func:`~vibrofriction.theory.resonant_plateau` (small ``tau*``) and
+    ``resonant_plateau_exact`` (exact root of the energy balance, first eq. 32); the distance of
+    the drawn curves from it at their right edge ``v_max``; and ``v0/dv`` (eq. 32) from the
+    simulated body velocity at ``V = plateau_v``.
 
     ``curves`` holds the drawn curves (``meta["role"] == "curve"``) and one series per
     amplitude ending at ``V = plateau_v`` (``meta["role"] == "plateau"``).
@@ -348,7 +357,9 @@ def fig6_note(curves: Mapping[str, Curve], amplitudes: Sequence[float],
 
 def prediction_note(mu0: float, u_z0: float, amplitudes_um: Sequence[float],
                     velocity_unit: float) -> str:
-    """Figs. 8-9: the predicted plateau COF ``mu0 * resonant_plateau_exact(du_z/u_z0)``
+    """Figs. 8-9: the predicted plateau COF for each amplitude, in words.
+
+    Figs. 8-9: the predicted plateau COF ``mu0 * resonant_plateau_exact(du_z/u_z0)``
     (first eq. 32) for each amplitude (micrometres), in words.
     """
     plateaus = ", ".join(
@@ -366,7 +377,9 @@ def prediction_note(mu0: float, u_z0: float, amplitudes_um: Sequence[float],
 # --------------------------------------------------------------------------- Fig. 10
 def fig10_checks(curves: Mapping[str, Curve], systems: Mapping[str, tuple[float, Physical]],
                  soft: str, stiff: str) -> tuple[list[Check], str]:
-    """Fig. 10: eq. (12) in m/s (trusted COF = mu0 at every ``v0 >= v0*``) per system, and a
+    """Fig. 10: eq. (12) in m/s per system, and a note on its limits.
+
+    Fig. 10: eq. (12) in m/s (trusted COF = mu0 at every ``v0 >= v0*``) per system, and a
     note comparing eq. (12) with the limits eq. (13) (``soft``) and eq. (14) (``stiff``).
 
     ``systems`` maps each curve's key to ``(drive frequency in Hz, Physical)``; each
@@ -400,7 +413,9 @@ def fig10_checks(curves: Mapping[str, Curve], systems: Mapping[str, tuple[float,
 # --------------------------------------------------------------------------- maps
 def map_field(curves: Mapping[str, Curve], kind: str, alpha: np.ndarray, beta: np.ndarray
               ) -> tuple[np.ndarray, np.ndarray]:
-    """``(mu/mu0, trusted)`` on the ``(beta, alpha)`` grid of one map (``kind`` = ``"vbar"``
+    """``(mu/mu0, trusted)`` on the ``(beta, alpha)`` grid of one map.
+
+    ``(mu/mu0, trusted)`` on the ``(beta, alpha)`` grid of one map (``kind`` = ``"vbar"``
     or ``"V"``), from one-point curves carrying ``meta`` ``map``, ``row`` and ``alpha``;
     nan and False where no curve lies.
     """
@@ -439,8 +454,9 @@ def history_transitions(h: History, window: tuple[float, float]) -> list[Event]:
 
 
 def history_mu_ratio(h: History) -> float:
-    """``mu/mu0`` of a sampled history: the time average of ``f`` over that of ``n`` (eq. 25,
-    trapezoidal rule over the samples).
+    """``mu/mu0`` of a sampled history.
+
+    The time average of ``f`` over that of ``n`` (eq. 25, trapezoidal rule over the samples).
     """
     return float(np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau))
 

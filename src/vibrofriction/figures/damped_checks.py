@@ -1,6 +1,7 @@
-"""Physics checks of the damped figures' data (:mod:`.damped`): pure functions from solved
-curves to :class:`~.recipe.Check` records, as :mod:`.checks` for the paper's figures: the
-onset of sliding, the damped case IV law and the series over ``beta``.
+"""Physics checks of the damped figures' data (:mod:`.damped`).
+
+Pure functions from solved curves to :class:`~.recipe.Check` records, as :mod:`.checks` for the
+paper's figures: the onset of sliding, the damped case IV law and the series over ``beta``.
 """
 
 from __future__ import annotations
@@ -81,11 +82,13 @@ def _damped_curve_checks(c: Curve, a: float, undamped: Curve | None, tolerance: 
 
 def damped_case_iv_checks(curves: Mapping[str, Curve], tolerance: float = 0.01
                           ) -> tuple[list[Check], str]:
-    """Fig. 11 (case IV with pin damping ``zeta``): for each damped curve ``mu = mu0`` above
-    ``1.02 V_c`` and ``mu < mu0`` below ``0.95 V_c`` (``V_c = a/(2 zeta)`` on a rigid
-    contact); for the undamped one the distance from the exact plateau (first eq. 32) at
-    its largest ``V``.  The note says, per damped curve, at which ``V`` it first departs
-    by more than ``tolerance`` from the undamped one (compared at their common ``V``).
+    """Fig. 11 (case IV with pin damping ``zeta``).
+
+    For each damped curve ``mu = mu0`` above ``1.02 V_c`` and ``mu < mu0`` below ``0.95 V_c``
+    (``V_c = a/(2 zeta)`` on a rigid contact); for the undamped one the distance from the exact
+    plateau (first eq. 32) at its largest ``V``.  The note says, per damped curve, at which
+    ``V`` it first departs by more than ``tolerance`` from the undamped one (compared at their
+    common ``V``).
 
     The curves share one system but ``zeta`` and are told apart by ``series.zeta``.
     """
@@ -118,11 +121,12 @@ def damped_case_iv_checks(curves: Mapping[str, Curve], tolerance: float = 0.01
 def damped_law_checks(damped: Mapping[str, Curve], undamped: Mapping[str, Curve],
                       systems: Mapping[str, tuple[Physical, Physical]], resonant: str
                       ) -> tuple[list[Check], str]:
-    """Fig. 12 (Fig. 10 with a damped pin): per system, the COF equals ``mu0`` above
-    ``1.02 v0*`` (damped ``v0*``, m/s) and stays below it under ``0.95 v0*``; the largest
-    change of the COF by the damping on the non-resonant systems (points trusted in
-    both); and at the ``resonant`` system the undamped curve's distance from the case IV
-    plateau (first eq. 32) at its largest ``v0``.
+    """Fig. 12 (Fig. 10 with a damped pin).
+
+    Per system, the COF equals ``mu0`` above ``1.02 v0*`` (damped ``v0*``, m/s) and stays below
+    it under ``0.95 v0*``; the largest change of the COF by the damping on the non-resonant
+    systems (points trusted in both); and at the ``resonant`` system the undamped curve's
+    distance from the case IV plateau (first eq. 32) at its largest ``v0``.
 
     ``damped`` and ``undamped`` hold the curves by system name, ``systems`` the
     ``(undamped, damped)`` :class:`Physical` of each; every curve carries its velocities
@@ -179,10 +183,11 @@ def damped_law_checks(damped: Mapping[str, Curve], undamped: Mapping[str, Curve]
 
 def damped_beta_series_checks(curves: Mapping[str, Curve], near: float = 0.15
                               ) -> tuple[list[Check], str]:
-    """Fig. 13 (Fig. 5 undamped and with a small pin damping): the number of untrusted
-    points of each (how many of them did not converge), and the largest
-    ``|mu_damped - mu_undamped|`` over the points trusted in both, over all ``beta`` and
-    away from the contact resonance (``|beta - 1| > near``); the note lists it per ``beta``.
+    """Fig. 13 (Fig. 5 undamped and with a small pin damping).
+
+    The number of untrusted points of each (how many of them did not converge), and the largest
+    ``|mu_damped - mu_undamped|`` over the points trusted in both, over all ``beta`` and away
+    from the contact resonance (``|beta - 1| > near``); the note lists it per ``beta``.
 
     The two curves of one ``beta`` share their velocities and are told apart by
     ``series.zeta`` (0 for the undamped one).

@@ -1,5 +1,7 @@
-"""The velocity ``vbar = v0/v0*`` (eq. 16) against the inertial velocity ``V``, and the
-limiting cases I-IV (Section 3)."""
+"""The velocity ``vbar = v0/v0*`` (eq. 16) and the limiting cases I-IV (Section 3).
+
+``vbar`` against the inertial velocity ``V``, and the cases' classification.
+"""
 
 from __future__ import annotations
 
@@ -34,8 +36,10 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
 
 def critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                        zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
-    """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise;
-    ValueError where ``vbar`` is undefined."""
+    """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise.
+
+    ValueError where ``vbar`` is undefined.
+    """
     al, am = validated({"alpha": alpha, "amplitude": amplitude}).values()
     c = np.asarray(theory.critical_inertial_velocity(al, beta, am, zeta, eta_c), dtype=float)
     why = _undefined_vbar(al, am, c)
@@ -50,8 +54,32 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """Inertial velocity ``V = v0 m omega/(mu0 F_N0) = c vbar`` (eqs. 12, 16), elementwise.
 
-    The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.  ValueError where
-    ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+    The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.
+
+    Parameters
+    ----------
+    alpha, beta, amplitude : array_like
+        The system's groups (eq. 20).
+    vbar : array_like
+        ``v0/v0*``, ``>= 0``.
+    zeta, eta_c : array_like, optional
+        The damping of the pin and of the contact (docs/damping.md).
+
+    Returns
+    -------
+    float or ndarray
+        ``V``, of the inputs' broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        Where ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import vbar_to_inertial
+    >>> vbar_to_inertial(0.5, 2.0, 0.5, [0.3, 1.0])  # c = a|beta - 1|/((beta - alpha)|alpha - 1|)
+    array([0.2       , 0.66666667])
     """
     v = valid_array("vbar", vbar)
     return as_float_or_array(critical_for_vbar(alpha, beta, amplitude, zeta, eta_c) * v)
@@ -62,7 +90,31 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      eta_c: ArrayLike = 0.0) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
 
-    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``)."""
+    ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``).
+
+    Parameters
+    ----------
+    alpha, beta, amplitude, zeta, eta_c : array_like
+        The system, as for :func:`vbar_to_inertial`.
+    v_inertial : array_like
+        ``V``, ``>= 0``.
+
+    Returns
+    -------
+    float or ndarray
+        ``vbar``, of the inputs' broadcast shape.
+
+    Raises
+    ------
+    ValueError
+        Where ``vbar`` is undefined (as in :func:`vbar_to_inertial`) or ``V < 0``.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import inertial_to_vbar
+    >>> inertial_to_vbar(0.5, 2.0, 0.5, 0.2)
+    0.3...
+    """
     V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
     return as_float_or_array(V / critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
 

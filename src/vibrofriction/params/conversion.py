@@ -1,5 +1,11 @@
-"""The one conversion: a system's :class:`Dimensionless` groups and the inertial velocity
-from whichever velocity was given."""
+"""A system's dimensionless groups and its inertial velocity, from any velocity given.
+
+The one conversion: :class:`Dimensionless` groups of a system and the inertial velocity from
+whichever velocity was given.
+
+A system's :class:`Dimensionless` groups and the inertial velocity from whichever velocity was
+given.
+"""
 
 from __future__ import annotations
 
@@ -19,7 +25,23 @@ System = Dimensionless | Physical
 
 
 def dimensionless(system: System) -> Dimensionless:
-    """The :class:`Dimensionless` groups of ``system`` (eq. 20; itself if it is one)."""
+    """The :class:`Dimensionless` groups of ``system`` (eq. 20; itself if it is one).
+
+    Parameters
+    ----------
+    system : Dimensionless or Physical
+        The system.
+
+    Returns
+    -------
+    Dimensionless
+        ``system`` itself, or :meth:`Physical.to_dimensionless` of it.
+
+    Raises
+    ------
+    TypeError
+        ``system`` is neither.
+    """
     if isinstance(system, Physical):
         return system.to_dimensionless()
     if isinstance(system, Dimensionless):
@@ -34,12 +56,44 @@ _FLOATS = (float, np.float64)
 def inertial_velocity(system: System, vbar: ArrayLike | None = None, *,
                       v_inertial: ArrayLike | None = None,
                       v0: ArrayLike | None = None) -> FloatOrArray:
-    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6) from exactly one of
-    ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
-    :class:`Physical` system only), elementwise: the package's one decision of which
-    velocity was given.  ValueError naming the parameter where it is invalid (negative,
-    not finite) or undefined (``vbar`` in cases III and IV: :meth:`Dimensionless.
-    critical_inertial_velocity` is 0 or inf there).
+    """The inertial velocity ``V = v0 m omega/(mu0 F_N0)`` (Fig. 6), elementwise.
+
+    From exactly one of ``vbar = v0/v0*`` (eq. 16), ``v_inertial`` itself, or ``v0`` in m/s (a
+    :class:`Physical` system only): the package's one decision of which velocity was given.
+
+    Parameters
+    ----------
+    system : Dimensionless or Physical
+        The system the velocity belongs to.
+    vbar : float or array_like, optional
+        ``v0/v0*`` (eq. 16), ``>= 0``.
+    v_inertial : float or array_like, optional, keyword-only
+        ``V`` itself (negative: backwards).
+    v0 : float or array_like, optional, keyword-only
+        The sliding velocity in m/s (a :class:`Physical` system only).
+
+    Returns
+    -------
+    float or ndarray
+        ``V``, of the given velocity's shape.
+
+    Raises
+    ------
+    ValueError
+        Not exactly one velocity given; a velocity invalid (negative ``vbar``, not finite;
+        named) or undefined (``vbar`` in cases III and IV:
+        :meth:`Dimensionless.critical_inertial_velocity` is 0 or inf there); ``v0`` of a
+        :class:`Dimensionless` system.
+    TypeError
+        ``system`` is neither a :class:`Dimensionless` nor a :class:`Physical` system.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.params import inertial_velocity
+    >>> system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+    >>> inertial_velocity(system, vbar=0.3)  # 0.3 V_c, V_c = 2/3
+    0.2...
     """
     # the common fast path; mypy sees no float in ArrayLike (only complex), hence the ignore
     if type(v_inertial) is float and vbar is None and v0 is None:  # type: ignore[unreachable]

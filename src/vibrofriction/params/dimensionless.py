@@ -62,6 +62,24 @@ class Dimensionless:
         ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
         slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
         dashpot oscillates; the substrate is at rest).
+
+    Raises
+    ------
+    ValueError
+        A field out of its range (named, with the range), or an unknown ``inplane_on``.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+    >>> system.case
+    <Case.GENERAL: 'general'>
+    >>> system.critical_inertial_velocity()  # a|beta - 1|/((beta - alpha)|alpha - 1|)
+    0.666666666666...
+    >>> vf.Dimensionless(alpha=1.0, beta=0.5, amplitude=0.5)
+    Traceback (most recent call last):
+    ...
+    ValueError: beta must be > alpha (= 1.0) or math.inf, got 0.5
     """
 
     alpha: float
@@ -79,13 +97,16 @@ class Dimensionless:
     inplane_on: str = "substrate"
 
     def __post_init__(self) -> None:
+        """Check every field against its range in the schema, and ``inplane_on``."""
         validate_fields(self, "dimensionless")
         checked_choice("inplane_on", self.inplane_on)
 
     @property
     def pin_y(self) -> tuple[float, float]:
-        """``(alpha_y, zeta_y)`` with None resolved to ``alpha``, ``zeta``: the pin across
-        the sliding."""
+        """``(alpha_y, zeta_y)`` with None resolved to ``alpha``, ``zeta``.
+
+        The pin across the sliding.
+        """
         return (self.alpha if self.alpha_y is None else self.alpha_y,
                 self.zeta if self.zeta_y is None else self.zeta_y)
 
@@ -122,8 +143,9 @@ class Dimensionless:
                              "docs/contact_geometry.md): use the inertial velocity v_inertial")
 
     def critical_inertial_velocity(self) -> float:
-        """``V_c``, the inertial velocity of continuous forward sliding (eq. 12 with
-        damping; with a longitudinal in-plane oscillation, the combined drive's).
+        """``V_c``, the inertial velocity of continuous forward sliding (eq. 12 with damping).
+
+        With a longitudinal in-plane oscillation, the combined drive's.
 
         Normal oscillation only, it is the velocity at ``vbar = 1``, undamped ``a|beta -
         1| / ((beta - alpha)|alpha - 1|)``: ``inf`` in case IV (``alpha = 1``), ``0`` in
@@ -153,10 +175,12 @@ class Dimensionless:
 
     @functools.cached_property
     def _vbar_unit(self) -> float:
-        """``V_c`` where ``vbar`` exists (computed once per system: the fields are frozen
-        and validated); ValueError where it does not (not cached), and with an in-plane
-        oscillation, whose velocities are signed and have no ``vbar`` (eq. 16 scales
-        by the normal oscillation's ``v0*`` only)."""
+        """``V_c`` where ``vbar`` exists, computed once per system.
+
+        The fields are frozen and validated.  ValueError where ``vbar`` does not exist (not cached),
+        and with an in-plane oscillation, whose velocities are signed and have no ``vbar`` (eq. 16
+        scales by the normal oscillation's ``v0*`` only).
+        """
         self._check_vbar_inplane()
         return float(critical_for_vbar(self.alpha, self.beta, self.amplitude, self.zeta,
                                         self.eta_c))

@@ -25,9 +25,11 @@ def valid_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
 
 
 def validate_fields(obj: Any, model: str) -> None:
-    """Check the fields of a frozen model dataclass against the schema's ranges
-    (:func:`~vibrofriction.validation.validated`) and store them as floats; an optional
-    field (``Parameter.twin``) left None stays None (its twin's value, whatever that is)."""
+    """Check the fields of a frozen model dataclass and store them as floats.
+
+    The schema's ranges (:func:`~vibrofriction.validation.validated`); an optional field
+    (``Parameter.twin``) left None stays None (its twin's value, whatever that is).
+    """
     given = {name: getattr(obj, name) for name in parameter_names(model)}
     values = validated({n: v for n, v in given.items() if v is not None
                         or not PARAMETER[n].twin})

@@ -23,8 +23,35 @@ def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
     """The pin dashpot ``c_x`` (N s/m) from its damping ratio or its quality factor.
 
     ``c_x = 2 zeta sqrt(k_x m)`` with ``zeta = 1/(2Q)``: ``Q`` is what an impact test
-    gives (the free decay of the pin with the contact open, paper Fig. 8b).  Exactly
-    one of ``zeta`` (``>= 0``) and ``quality_factor`` (``> 0``, ``inf`` undamped).
+    gives (the free decay of the pin with the contact open, paper Fig. 8b).
+
+    Parameters
+    ----------
+    k_x : float
+        The pin's stiffness, N/m.
+    mass : float
+        The body's mass, kg.
+    zeta : float, optional, keyword-only
+        The damping ratio, ``>= 0``.
+    quality_factor : float, optional, keyword-only
+        The quality factor ``Q``, ``> 0`` (``inf``: undamped); exactly one of ``zeta`` and
+        ``quality_factor``.
+
+    Returns
+    -------
+    float
+        ``c_x``, N s/m.
+
+    Raises
+    ------
+    ValueError
+        Both or neither of ``zeta`` and ``quality_factor``, or a value out of its range.
+
+    Examples
+    --------
+    >>> from vibrofriction.params import pin_damping
+    >>> pin_damping(2.5e5, 0.01, quality_factor=50)  # sqrt(k_x m)/Q
+    1.0
     """
     if (zeta is None) == (quality_factor is None):
         raise ValueError("give exactly one of zeta and quality_factor")
@@ -91,6 +118,23 @@ class Physical:
     inplane_on : str
         Where both components are imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
         of ``k_x`` and ``c_x``).
+
+    Raises
+    ------
+    ValueError
+        A field outside its range in SI units (named, with the range: e.g. a mass or a
+        stiffness that is not > 0), or an ``inplane_on`` that is neither name.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6,
+    ...                   du_z=2e-6, omega=6283.0, mu0=0.3)
+    >>> system = pin.to_dimensionless()  # eq. (20)
+    >>> system.alpha, system.beta, system.amplitude
+    (0.633294752172..., 1.139930553910..., 0.5)
+    >>> pin.F_N0, pin.critical_velocity()  # N, and v0* in m/s (eq. 12)
+    (1.0, 0.001798141031...)
     """
 
     mass: float
@@ -119,13 +163,13 @@ class Physical:
     normal_control: ClassVar[str] = "indentation"
 
     def __post_init__(self) -> None:
+        """Check every field against its range in the schema, and ``inplane_on``."""
         validate_fields(self, "physical")
         checked_choice("inplane_on", self.inplane_on)
 
     @property
     def pin_y(self) -> tuple[float, float]:
-        """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the
-        sliding."""
+        """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the sliding."""
         return (self.k_x if self.k_y is None else self.k_y,
                 self.c_x if self.c_y is None else self.c_y)
 
@@ -140,8 +184,11 @@ class Physical:
 
     @property
     def F_N0(self) -> float:
-        """Normal force at the mean indentation, N: ``k_zc u_z0`` (eq. 3; the mean force
-        without jumping); for a curved MDR contact ``F(d0) = k_zc u_z0 n/(n + 1)``."""
+        """Normal force at the mean indentation, N.
+
+        ``k_zc u_z0`` (eq. 3; the mean force without jumping); for a curved MDR contact
+        ``F(d0) = k_zc u_z0 n/(n + 1)``.
+        """
         if self.curved:
             n = self.profile_exponent
             return self.k_zc * self.u_z0 * n / (n + 1.0)
@@ -149,18 +196,22 @@ class Physical:
 
     @property
     def mean_normal_force(self) -> float:
-        """Mean normal force over the cycle, N: ``F_N0 <F(u_z0 + du_z cos)>/F(u_z0)``,
-        ``F_N0`` times :func:`~vibrofriction.theory.profile_mean_normal_force` of
-        ``a = du_z/u_z0`` (a linear contact: :func:`~vibrofriction.theory.mean_normal_force`,
-        ``F_N0`` unless it jumps); the load of a dead weight
-        (:func:`~vibrofriction.bench.from_bench`)."""
+        """Mean normal force over the cycle, N.
+
+        ``F_N0 <F(u_z0 + du_z cos)>/F(u_z0)``, ``F_N0`` times
+        :func:`~vibrofriction.theory.profile_mean_normal_force` of ``a = du_z/u_z0`` (a
+        linear contact: :func:`~vibrofriction.theory.mean_normal_force`, ``F_N0`` unless it
+        jumps); the load of a dead weight (:func:`~vibrofriction.bench.from_bench`).
+        """
         a = self.du_z / self.u_z0
         return self.F_N0 * float(theory.profile_mean_normal_force(a, self.profile_exponent))
 
     @property
     def dF_N(self) -> float:
-        """Amplitude of the normal force ``k_zc du_z``, N (eq. 3); ValueError for a curved
-        MDR contact, whose normal force is not harmonic."""
+        """Amplitude of the normal force ``k_zc du_z``, N (eq. 3).
+
+        ValueError for a curved MDR contact, whose normal force is not harmonic.
+        """
         self._check_flat("dF_N (the amplitude of a harmonic normal force)")
         return self.k_zc * self.du_z
 
@@ -191,8 +242,11 @@ class Physical:
 
     def with_damping(self, *, zeta: float | None = None, quality_factor: float | None = None,
                      eta_c: float | None = None) -> Physical:
-        """A copy with the pin's damping given as a ratio or a quality factor (not both)
-        and/or the contact's loss factor at ``omega``."""
+        """A copy with other damping of the pin and/or of the contact.
+
+        The pin's damping given as a ratio or a quality factor (not both) and/or the contact's loss
+        factor at ``omega``.
+        """
         changes: dict[str, float] = {}
         if zeta is not None or quality_factor is not None:
             changes["c_x"] = pin_damping(self.k_x, self.mass, zeta=zeta,
@@ -203,10 +257,13 @@ class Physical:
         return self.with_(**changes)
 
     def to_dimensionless(self) -> Dimensionless:
-        """``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the
-        in-plane oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``,
-        ``phase_y``, ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y``
-        (:meth:`transverse_groups`; None for an axisymmetric pin)."""
+        """The pin's :class:`Dimensionless` system at its own drive.
+
+        ``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the in-plane
+        oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``, ``phase_y``,
+        ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y`` (:meth:`transverse_groups`;
+        None for an axisymmetric pin).
+        """
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
         alpha_y, zeta_y = self.transverse_groups(self.omega)
         return Dimensionless(alpha=float(alpha), beta=float(beta), amplitude=float(a),
@@ -221,10 +278,12 @@ class Physical:
                              inplane_on=self.inplane_on)
 
     def transverse_groups(self, omega: ArrayLike) -> tuple[NDArray[np.float64] | None, ...]:
-        """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``
-        (rad/s), elementwise; each None where this pin leaves it to its twin: ``alpha_y``
-        where ``k_y`` is None, ``zeta_y`` where ``k_y`` and ``c_y`` both are (with ``k_y``
-        given, ``c_y = c_x`` has another damping ratio than ``zeta``)."""
+        """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``.
+
+        ``omega`` in rad/s, elementwise; each None where this pin leaves it to its twin: ``alpha_y``
+        where ``k_y`` is None, ``zeta_y`` where ``k_y`` and ``c_y`` both are (with ``k_y`` given,
+        ``c_y = c_x`` has another damping ratio than ``zeta``).
+        """
         omega = np.asarray(omega, dtype=float)
         k_y, c_y = self.pin_y
         alpha_y = None if self.k_y is None else k_y / (self.mass * omega**2)
@@ -236,15 +295,16 @@ class Physical:
                         du_x: ArrayLike = 0.0, phase_x: ArrayLike = 0.0,
                         du_y: ArrayLike = 0.0, phase_y: ArrayLike = 0.0
                         ) -> tuple[FloatOrArray | None, ...]:
-        """``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
-        zeta_y)`` of this pin at each point ``(v0, du_z, omega, du_x, phase_x, du_y,
-        phase_y)`` (SI), elementwise: the arguments of
-        :func:`~vibrofriction.solver.solve_points` for a measured table or a design's map
-        (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y``
-        are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
-        axisymmetric pin, :meth:`transverse_groups`).  A curved MDR contact's are those of
-        its scaled model (``a = du_z/d0``, velocities in units of ``mu0 F(d0)/(m omega)``):
-        pass them with ``profile_exponent`` to ``solve_points``."""
+        """The arguments of :func:`~vibrofriction.solver.solve_points` at SI points, elementwise.
+
+        ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y)`` of this
+        pin at each point ``(v0, du_z, omega, du_x, phase_x, du_y, phase_y)``, for a measured table
+        or a design's map (the pin's own ``du_z``, ``omega``, ``du_x``, ``phase_x``, ``du_y``,
+        ``phase_y`` are not used; its ``k_y``, ``c_y`` are: ``alpha_y``, ``zeta_y`` None for an
+        axisymmetric pin, :meth:`transverse_groups`).  A curved MDR contact's are those of its
+        scaled model (``a = du_z/d0``, velocities in units of ``mu0 F(d0)/(m omega)``): pass them
+        with ``profile_exponent`` to ``solve_points``.
+        """
         alpha, beta, a, zeta, eta = self.groups(du_z, omega)
         a_x = self.inplane_amplitude(du_x, omega)
         a_y = self.inplane_amplitude(du_y, omega)
@@ -254,17 +314,21 @@ class Physical:
                 phase_y, *self.transverse_groups(omega))
 
     def inplane_amplitude(self, du_x: ArrayLike, omega: ArrayLike) -> NDArray[np.float64]:
-        """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md) of an in-plane amplitude
-        ``du_x`` (m) at ``omega`` (rad/s), elementwise: the in-plane amplitude in units of
-        the length ``mu0 F_N0/(m omega^2)``, and equally ``omega du_x`` in units of the
-        inertial velocity ``mu0 F_N0/(m omega)``; the one conversion from SI."""
+        """``a_x = du_x m omega^2 / (mu0 F_N0)`` (docs/inplane.md), elementwise.
+
+        Of an in-plane amplitude ``du_x`` (m) at ``omega`` (rad/s): the in-plane amplitude in units
+        of the length ``mu0 F_N0/(m omega^2)``, and equally ``omega du_x`` in units of the inertial
+        velocity ``mu0 F_N0/(m omega)``; the one conversion from SI.
+        """
         du_x = np.asarray(du_x, dtype=float)
         return du_x * self.mass * np.asarray(omega, dtype=float) ** 2 / (self.mu0 * self.F_N0)
 
     def groups(self, du_z: ArrayLike, omega: ArrayLike) -> tuple[NDArray[np.float64], ...]:
-        """``(alpha, beta, a, zeta, eta_c)`` (eq. 20, docs/damping.md) of this pin driven at
-        ``omega`` (rad/s) with amplitude ``du_z`` (m), elementwise: the one conversion
-        from SI, for one point or a measured table."""
+        """``(alpha, beta, a, zeta, eta_c)`` (eq. 20, docs/damping.md) of this pin, elementwise.
+
+        Driven at ``omega`` (rad/s) with amplitude ``du_z`` (m): the one conversion from SI, for one
+        point or a measured table.
+        """
         du_z = np.asarray(du_z, dtype=float)
         omega = np.asarray(omega, dtype=float)
         stiffness = self.mass * omega**2
@@ -273,8 +337,9 @@ class Physical:
                 np.full(np.shape(omega), self.zeta), eta_c)
 
     def critical_velocity(self) -> float:
-        """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``): above it
-        the contact slides forward continuously.
+        """``v0*`` of eq. (12) with damping, m/s (``theory.critical_velocity``).
+
+        Above it the contact slides forward continuously.
 
         Undamped: ``inf`` if ``k_x = m omega^2`` (case IV), 0 if ``k_x + k_xc = m omega^2``
         (case III) or ``du_z = 0``; ``k_xc = inf`` gives ``mu0 omega du_z k_zc /
@@ -291,14 +356,18 @@ class Physical:
                                               self.c_xc))
 
     def velocity_unit(self, omega: ArrayLike | None = None) -> FloatOrArray:
-        """The unit of the inertial velocity, ``mu0 F_N0 / (m omega)`` in m/s (Fig. 6), at
-        this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s)."""
+        """The unit of the inertial velocity, ``mu0 F_N0 / (m omega)`` in m/s (Fig. 6).
+
+        At this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s).
+        """
         omega = self.omega if omega is None else valid_array("omega", omega)
         return as_float_or_array(self.mu0 * self.F_N0 / (self.mass * omega))
 
     def v0_to_inertial(self, v0: ArrayLike, omega: ArrayLike | None = None) -> FloatOrArray:
-        """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6 (at this pin's
-        ``omega`` or, elementwise, at other drive frequencies ``omega``, rad/s)."""
+        """``V = v0 m omega / (mu0 F_N0)``, the velocity axis of Fig. 6.
+
+        At this pin's ``omega`` or, elementwise, at other drive frequencies ``omega`` (rad/s).
+        """
         return as_float_or_array(valid_array("v0", v0) / self.velocity_unit(omega))
 
     def inertial_to_v0(self, v_inertial: ArrayLike) -> FloatOrArray:
@@ -307,8 +376,10 @@ class Physical:
                                  * self.velocity_unit())
 
     def v0_to_vbar(self, v0: ArrayLike) -> FloatOrArray:
-        """``vbar = v0 / v0*`` (eq. 16), ``v0 >= 0``; ValueError where ``v0*`` is 0 or
-        infinite (a backward velocity has no ``vbar``)."""
+        """``vbar = v0 / v0*`` (eq. 16), ``v0 >= 0``.
+
+        ValueError where ``v0*`` is 0 or infinite (a backward velocity has no ``vbar``).
+        """
         v0 = validated({"v0": v0}, ranges={"v0": NONNEGATIVE})["v0"]
         return self.to_dimensionless().inertial_to_vbar(self.v0_to_inertial(v0))
 

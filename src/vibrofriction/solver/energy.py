@@ -28,23 +28,29 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 
 def kernel_point(dim: Dimensionless, V: float
                  ) -> tuple[float, float, float, float, float, float, float, float, bool]:
-    """The kernels' point arguments ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x,
-    on_substrate)``."""
+    """The kernels' point arguments of a system at velocity ``V``.
+
+    ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, on_substrate)``.
+    """
     return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,
             dim.phase_x, dim.inplane_on == "substrate")
 
 
 def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
                    ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """``(X, X')``: the longitudinal in-plane oscillation ``a_x cos(tau + phase_x)`` and its
-    velocity at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    """``(X, X')``: the longitudinal in-plane oscillation and its velocity at ``tau``.
+
+    ``a_x cos(tau + phase_x)`` (docs/inplane.md), of the substrate or of the holder.
+    """
     return _harmonic(dim.a_x, dim.phase_x, tau)
 
 
 def transverse_motion(dim: Dimensionless, tau: NDArray[np.float64]
                       ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-    """``(Y, Y')``: the transverse oscillation ``a_y cos(tau + phase_y)`` and its velocity
-    at ``tau`` (docs/inplane.md), of the substrate or of the holder."""
+    """``(Y, Y')``: the transverse oscillation and its velocity at ``tau``.
+
+    ``a_y cos(tau + phase_y)`` (docs/inplane.md), of the substrate or of the holder.
+    """
     return _harmonic(dim.a_y, dim.phase_y, tau)
 
 
@@ -73,13 +79,15 @@ def _elongation_rate(dim: Dimensionless, cols: NDArray[np.float64],
 
 def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
            tau: NDArray[np.float64]) -> NDArray[np.float64]:
-    """Power input by the pulled end and dissipated by the pin dashpot, the contact
-    dashpot and friction (docs/damping.md, energy balance), from sampled columns (the
-    kernels' frame).  With an in-plane oscillation (docs/inplane.md): on the substrate the
-    body's laboratory position and velocity are ``y + X``, ``x' + X'`` and the substrate
-    works ``-f X'`` on the contact; on the holder the pulled end moves at ``V + X'`` and
-    the pin's spring and dashpot act on ``V tau + X - x``.  Friction dissipates ``f`` times
-    the slip velocity relative to the substrate, ``x' - e'`` in the kernels' frame."""
+    """Power input by the pulled end and dissipated by the dashpots and friction.
+
+    The pin dashpot, the contact dashpot and friction (docs/damping.md, energy balance), from
+    sampled columns (the kernels' frame).  With an in-plane oscillation (docs/inplane.md): on the
+    substrate the body's laboratory position and velocity are ``y + X``, ``x' + X'`` and the
+    substrate works ``-f X'`` on the contact; on the holder the pulled end moves at ``V + X'`` and
+    the pin's spring and dashpot act on ``V tau + X - x``.  Friction dissipates ``f`` times the slip
+    velocity relative to the substrate, ``x' - e'`` in the kernels' frame.
+    """
     y, xd, f = cols[:, codes.SMP_Y], cols[:, codes.SMP_XD], cols[:, codes.SMP_F]
     gamma = 2.0 * dim.zeta * math.sqrt(dim.alpha)
     k = dim.beta - dim.alpha
@@ -99,8 +107,10 @@ def _rates(dim: Dimensionless, V: float, cols: NDArray[np.float64],
 
 
 def _quadrature_nodes(taus: NDArray[np.float64], w_max: float):
-    """Gauss nodes between successive samples, each interval cut into pieces shorter than
-    a quarter of the fastest free period: ``(nodes, owner interval, piece width)``."""
+    """Gauss nodes between successive samples: ``(nodes, owner interval, piece width)``.
+
+    Each interval is cut into pieces shorter than a quarter of the fastest free period.
+    """
     h = np.diff(taus)
     pieces = np.maximum(1, np.ceil(h * w_max / (0.5 * math.pi))).astype(int)
     owner = np.repeat(np.arange(h.size), pieces)
@@ -113,9 +123,11 @@ def _quadrature_nodes(taus: NDArray[np.float64], w_max: float):
 
 def dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
                 taus: NDArray[np.float64]) -> dict[str, Any]:
-    """Cumulative work and dissipated energies (:data:`ENERGY_NAMES`) at ``taus``:
-    Gauss-Legendre quadrature of the closed forms between successive samples (no event
-    lies inside one), relative accuracy ~1e-10."""
+    """Cumulative work and dissipated energies (:data:`ENERGY_NAMES`) at ``taus``.
+
+    Gauss-Legendre quadrature of the closed forms between successive samples (no event lies
+    inside one), relative accuracy ~1e-10.
+    """
     w_max = max(1.0, math.sqrt(dim.alpha), 0.0 if dim.is_rigid else math.sqrt(dim.beta))
     nodes, owner, width = _quadrature_nodes(taus, w_max)
     cols = np.empty((nodes.size, codes.N_SMP_COLUMNS))

@@ -41,7 +41,29 @@ Initial = str | SectionState
 
 def initial_rows(initial: Initial | NDArray[np.object_], n: int,
                  systems: Callable[[int], Dimensionless]) -> tuple[int, NDArray[np.float64]]:
-    """Kernel start ``(kind, rows (y, x', e, phase))``; ``systems(i)`` is point i's system."""
+    """Kernel start ``(kind, rows (y, x', e, phase))``; ``systems(i)`` is point i's system.
+
+    Parameters
+    ----------
+    initial : str, SectionState or ndarray of SectionState
+        ``"sliding"``, ``"rest"``, one section state, or one per point.
+    n : int
+        The number of points.
+    systems : callable
+        ``systems(i)`` is point i's :class:`Dimensionless` system.
+
+    Returns
+    -------
+    kind : int
+        0 sliding, 1 rest, 2 explicit states.
+    rows : ndarray, shape (n, 4)
+        The explicit start ``(y, x', e, phase code)`` of each point (zeros otherwise).
+
+    Raises
+    ------
+    ValueError
+        An unknown initial state.
+    """
     init = np.zeros((n, 4))
     if isinstance(initial, SectionState):
         init[:] = (initial.y, initial.x_dot, initial.elongation(systems(0)),
@@ -74,9 +96,12 @@ def _mirror_rows(init: NDArray[np.float64], rows: NDArray[np.bool_]) -> None:
 
 def _mirror_outputs(out_f: NDArray[np.float64], out_i: NDArray[np.int64],
                     rows: NDArray[np.bool_]) -> None:
-    """The results of the mirrored problem as those of the given one: the signed columns
-    negated, the window range negated and swapped, slip+ and slip- swapped in the final
-    phase.  ``reverse_slip_fraction`` (slip against the sliding direction) is unchanged."""
+    """The results of the mirrored problem as those of the given one, in place.
+
+    The signed columns negated, the window range negated and swapped, slip+ and slip-
+    swapped in the final phase.  ``reverse_slip_fraction`` (slip against the sliding
+    direction) is unchanged.
+    """
     for k in _SIGNED:
         j = column_index(k)
         out_f[rows, j] = -out_f[rows, j]
@@ -109,23 +134,63 @@ def solve_points(
 ) -> dict[str, NDArray]:
     """Steady states at arbitrary points: the batch engine.
 
-    The parameters (:data:`vibrofriction.schema.POINT_COLUMNS`; ``inplane_on`` one name or
-    an array of names) broadcast together and are validated once against their ranges in
-    :data:`vibrofriction.schema.PARAMETERS` (:func:`~vibrofriction.solver.points.point_table`).
-    Each point goes to the method :func:`~vibrofriction.solver.methods.choose` picks (a
-    curved tip the MDR solver, a transverse oscillation the 2-D solver, else the 1-D
-    event-driven solver); what each covers is declared in
-    :data:`~vibrofriction.solver.methods.METHODS` (docs/solver.md, "What each solver
-    covers"), and a point, initial state or setting its method does not cover is refused
-    with a ``ValueError`` naming it, before anything is solved.  ``V < 0`` is solved by
-    the mirror ``x -> -x``: the point ``(-V, phase_x + pi)`` with ``mu_ratio`` and the
-    signed state negated (an explicit initial state is mirrored on the way in).
+    The parameters (:data:`vibrofriction.schema.POINT_COLUMNS`) broadcast together and are
+    validated once against their ranges in :data:`vibrofriction.schema.PARAMETERS`
+    (:func:`~vibrofriction.solver.points.point_table`).  Each point goes to the method
+    :func:`~vibrofriction.solver.methods.choose` picks (a curved tip the MDR solver, a
+    transverse oscillation the 2-D solver, else the 1-D event-driven solver); what each
+    covers is declared in :data:`~vibrofriction.solver.methods.METHODS` (docs/solver.md,
+    "What each solver covers").  ``V < 0`` is solved by the mirror ``x -> -x``: the point
+    ``(-V, phase_x + pi)`` with ``mu_ratio`` and the signed state negated (an explicit
+    initial state is mirrored on the way in).
 
-    Returns arrays of the inputs' shape named by :data:`~vibrofriction.schema.FLOAT_COLUMNS`
-    and ``INT_COLUMNS`` (``status`` as :attr:`Status.code`, ``method`` the index of the
-    method in :data:`~vibrofriction.schema.METHOD_NAMES`; ``y``, ``x_dot``, ``f``, ``e``,
-    ``phase`` the final section state, in the laboratory frame) and ``trusted``.  Results
-    are bitwise reproducible: each point depends only on its own parameters.
+    Parameters
+    ----------
+    alpha, beta, amplitude : array_like
+        The stiffness ratios and the relative normal amplitude of eq. (20).
+    v_inertial : array_like
+        The sliding velocity ``v0 m omega/(mu0 F_N0)`` (Fig. 6); negative is backwards.
+    zeta, eta_c : array_like, optional
+        The damping of the oscillator and of the contact (docs/damping.md).
+    a_x, phase_x : array_like, optional
+        The in-plane oscillation along the sliding direction and its phase.
+    a_y, phase_y, alpha_y, zeta_y : array_like or None, optional
+        The transverse oscillation, its phase, and the transverse stiffness and damping
+        (None: those of the sliding direction).
+    profile_exponent : array_like, optional
+        The tip's power-law exponent (``inf``: the flat punch).
+    inplane_on : str or array_like of str, keyword-only
+        Where the in-plane oscillation acts: ``"substrate"`` (default) or the other body;
+        one name or an array of names.
+    initial : str, SectionState or ndarray of SectionState, keyword-only
+        ``"sliding"`` (default), ``"rest"``, one :class:`SectionState` or one per point.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds; None takes :data:`DEFAULT_SETTINGS`.
+
+    Returns
+    -------
+    dict of str to ndarray
+        Arrays of the inputs' broadcast shape named by
+        :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS`` (``status`` as
+        :attr:`Status.code`, ``method`` the index of the method in
+        :data:`~vibrofriction.schema.METHOD_NAMES`; ``y``, ``x_dot``, ``f``, ``e``,
+        ``phase`` the final section state, in the laboratory frame) and ``trusted``.
+        Results are bitwise reproducible: each point depends only on its own parameters.
+
+    Raises
+    ------
+    ValueError
+        A parameter out of its range, or a point, initial state or setting its method
+        does not cover (named, before anything is solved).
+    TypeError
+        A required parameter missing.
+
+    Examples
+    --------
+    >>> from vibrofriction.solver import solve_points
+    >>> out = solve_points(alpha=0.5, beta=2.0, amplitude=0.5, v_inertial=0.1)
+    >>> float(out["mu_ratio"]), int(out["status"]), bool(out["trusted"])
+    (0.596291293623..., 0, True)
     """
     points = point_table({
         "alpha": alpha, "beta": beta, "amplitude": amplitude, "v_inertial": v_inertial,
@@ -137,7 +202,27 @@ def solve_points(
 
 def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
                 settings: SolverSettings) -> dict[str, NDArray]:
-    """:func:`solve_points` of a validated :class:`~vibrofriction.solver.points.PointTable`."""
+    """:func:`solve_points` of a validated :class:`~vibrofriction.solver.points.PointTable`.
+
+    Parameters
+    ----------
+    points : PointTable
+        The points, validated (:func:`~vibrofriction.solver.points.point_table`).
+    initial : str, SectionState or ndarray of SectionState
+        The initial state, as in :func:`solve_points`.
+    settings : SolverSettings
+        Accuracy and effort bounds.
+
+    Returns
+    -------
+    dict of str to ndarray
+        The named output columns, as in :func:`solve_points`.
+
+    Raises
+    ------
+    ValueError
+        An initial state or setting a point's method does not cover.
+    """
     n = len(points)
     kind, init = initial_rows(initial, n, points.system)
     chosen = choose(points["profile_exponent"], points["a_y"])
@@ -229,19 +314,44 @@ def friction_coefficient(
 
     Parameters
     ----------
-    system : a :class:`Dimensionless` ``(alpha, beta, amplitude)`` (eq. 20) or a
+    system : Dimensionless or Physical
+        A :class:`Dimensionless` system ``(alpha, beta, amplitude)`` (eq. 20) or a
         :class:`Physical` system in SI units.
-    vbar, v_inertial, v0 : the sliding velocity, exactly one of: ``v0/v0*`` (eq. 16),
-        ``v0 m omega/(mu0 F_N0)`` (Fig. 6; required in cases III and IV), or m/s
-        (Physical systems only); :func:`vibrofriction.params.inertial_velocity`.
-        Scalars give a :class:`FrictionResult`, arrays a :class:`FrictionResults` of
-        the same shape.
-    initial : ``"sliding"`` (default: steady sliding before the oscillation is switched
-        on at ``tau = 0``, docs/model.md; at ``V = 0`` the rest), ``"rest"``, or a
-        :class:`SectionState` (e.g. the
-        ``final_state`` of another result, for continuation).  Coexisting attractors
-        make the initial state part of the result's definition.
-    settings : accuracy and effort bounds (:class:`SolverSettings`).
+    vbar, v_inertial, v0 : float or array_like
+        The sliding velocity, exactly one of: ``v0/v0*`` (eq. 16), ``v0 m omega/(mu0
+        F_N0)`` (Fig. 6; required in cases III and IV), or m/s (Physical systems only);
+        :func:`vibrofriction.params.inertial_velocity`.  Scalars give a
+        :class:`FrictionResult`, arrays a :class:`FrictionResults` of the same shape.
+    initial : str or SectionState, keyword-only
+        ``"sliding"`` (default: steady sliding before the oscillation is switched on at
+        ``tau = 0``, docs/model.md; at ``V = 0`` the rest), ``"rest"``, or a
+        :class:`SectionState` (e.g. the ``final_state`` of another result, for
+        continuation).  Coexisting attractors make the initial state part of the
+        result's definition.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds (:class:`SolverSettings`); None the defaults.
+
+    Returns
+    -------
+    FrictionResult or FrictionResults
+        One result for a scalar velocity, results of the velocities' shape for an array.
+
+    Raises
+    ------
+    ValueError
+        Not exactly one velocity given, ``vbar`` where ``v0*`` does not exist (cases III
+        and IV), ``v0`` of a dimensionless system, or a point, initial state or setting
+        the solver does not cover.
+    TypeError
+        A system that is neither :class:`Dimensionless` nor :class:`Physical`.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+    >>> r = vf.friction_coefficient(system, vbar=0.3)
+    >>> r.mu_ratio, r.status, r.trusted
+    (0.597600554641..., <Status.PERIODIC: 'periodic'>, True)
     """
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)

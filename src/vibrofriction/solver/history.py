@@ -39,8 +39,10 @@ def _checked_run(periods: float, samples_per_period: int) -> None:
 
 def _start(dim: Dimensionless, V: float, initial: str | SectionState,
            settings: SolverSettings | None) -> tuple[float, float, float, float, int]:
-    """The start ``(y, x', e, e', phase)`` (the order of ``run_periods``); ``"steady"``
-    is the trusted steady state's."""
+    """The start ``(y, x', e, e', phase)`` (the order of ``run_periods``).
+
+    ``"steady"`` is the trusted steady state's.
+    """
     if isinstance(initial, str) and initial == "steady":
         steady = friction_coefficient(dim, v_inertial=V, settings=settings)
         if steady.final_state is None or not steady.trusted:
@@ -87,14 +89,11 @@ def simulate(
 ) -> History:
     """Time history over ``periods`` drive periods, sampled from the closed forms (Fig. 2).
 
-    ``initial``: ``"sliding"``, ``"rest"``, a :class:`SectionState`, or ``"steady"``:
-    the final section state of :func:`friction_coefficient` at the same point, so the
-    history shows the steady state rather than the transient (ValueError where that
-    result has no section state or is not trusted).  ``final_state`` is the state on
-    the last Poincare section within the history, ``tau = 2 pi floor(periods)``.
-    ``V < 0`` is integrated as it stands, from the mirror image of the named start of
-    ``-V`` (``"sliding"``: ``x' = V``, the spring stretched by ``-1``); at ``V = 0`` with
-    an in-plane oscillation ``"sliding"`` is the rest (as in :func:`solve_points`).
+    ``final_state`` is the state on the last Poincare section within the history,
+    ``tau = 2 pi floor(periods)``.  ``V < 0`` is integrated as it stands, from the mirror
+    image of the named start of ``-V`` (``"sliding"``: ``x' = V``, the spring stretched by
+    ``-1``); at ``V = 0`` with an in-plane oscillation ``"sliding"`` is the rest (as in
+    :func:`solve_points`).
 
     With a transverse oscillation (``a_y > 0``) the history is integrated by the 2-D
     solver's Runge-Kutta method (docs/inplane.md section 6): a :class:`PlaneHistory`, with
@@ -102,13 +101,53 @@ def simulate(
     components), and a :class:`SectionState` starts with the transverse components 0.
 
     A curved tip (finite ``profile_exponent``) is the MDR row of ``springs`` springs
-    (:func:`~vibrofriction.solver.mdr_history.mdr_history`; ``springs`` is ignored
-    otherwise), sampled on the uniform grid only (no event times): a
-    :class:`CurvedHistory`, with the contact fields; ``initial`` is ``"sliding"`` (the MDR
-    solver's start) or ``"steady"`` (the row's periodic orbit); the refusals of the MDR
-    solver apply (docs/contact_geometry.md).
+    (:func:`~vibrofriction.solver.mdr_history.mdr_history`), sampled on the uniform grid
+    only (no event times): a :class:`CurvedHistory`, with the contact fields; ``initial``
+    is ``"sliding"`` (the MDR solver's start) or ``"steady"`` (the row's periodic orbit);
+    the refusals of the MDR solver apply (docs/contact_geometry.md).
 
-    The 1-D solver's history is a :class:`History`.
+    Parameters
+    ----------
+    system : Dimensionless or Physical
+        The system, as in :func:`friction_coefficient`.
+    vbar, v_inertial, v0 : float
+        The sliding velocity, exactly one of them, as in :func:`friction_coefficient`.
+    periods : float, keyword-only
+        The drive periods simulated (default 5).
+    samples_per_period : int, keyword-only
+        The uniform samples a period (default 400); the 1-D and 2-D histories add the
+        event times.
+    initial : str, SectionState or ndarray, keyword-only
+        ``"sliding"`` (default), ``"rest"``, a :class:`SectionState`, or ``"steady"``: the
+        final section state of :func:`friction_coefficient` at the same point, so the
+        history shows the steady state rather than the transient; with a transverse
+        oscillation also a 2-D history's ``plane_state``.
+    settings : SolverSettings or None, keyword-only
+        The settings of the steady state that ``initial="steady"`` solves (and of the 2-D
+        integration); None the defaults.
+    springs : int, keyword-only
+        The springs of a curved tip's MDR row (ignored otherwise).
+
+    Returns
+    -------
+    History
+        The 1-D solver's :class:`History`, a :class:`PlaneHistory` with a transverse
+        oscillation, or a :class:`CurvedHistory` for a curved tip.
+
+    Raises
+    ------
+    ValueError
+        ``initial="steady"`` where that result has no section state or is not trusted,
+        an initial state the solver does not take, or the velocities as in
+        :func:`friction_coefficient`.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+    >>> h = vf.simulate(system, vbar=0.3, periods=2)
+    >>> h.tau.shape, [e.kind for e in h.events]
+    ((809,), ['stick->slip', 'slip->stick', 'stick->slip', 'slip->stick'])
     """
     dim = dimensionless(system)
     v = np.asarray(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0), dtype=float)
@@ -281,8 +320,10 @@ def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
                   x: NDArray[np.float64], uy: NDArray[np.float64], v: NDArray[np.float64],
                   e: NDArray[np.float64], f: NDArray[np.float64],
                   slip: NDArray[np.float64]) -> dict[str, Any]:
-    """Work input and dissipation of a 2-D history (the reference's definitions,
-    vibrofriction_reference.inplane): the trapezoidal rule over the samples."""
+    """Work input and dissipation of a 2-D history, by the trapezoidal rule over the samples.
+
+    The reference's definitions (vibrofriction_reference.inplane).
+    """
     X, Xd = inplane_motion(dim, tau)
     Y, Yd = transverse_motion(dim, tau)
     zero = np.zeros_like(tau)

@@ -24,8 +24,11 @@ __all__ = ["CurvedHistory", "Event", "History", "PlaneHistory"]
 
 @dataclass(frozen=True)
 class Event:
-    """A transition at drive time ``tau``: ``kind`` and the states before and after (names
-    of :class:`~vibrofriction.schema.ContactState`)."""
+    """A transition at drive time ``tau``.
+
+    ``kind`` and the states before and after (names of
+    :class:`~vibrofriction.schema.ContactState`).
+    """
 
     tau: float
     kind: str
@@ -88,8 +91,10 @@ class History:
         return isinstance(self, PlaneHistory)
 
     def _pin_energy(self) -> NDArray[np.float64]:
-        """``x'^2/2 + alpha (V tau - x)^2/2`` (with an oscillating holder the pin's spring
-        is stretched by ``V tau + X - x``)."""
+        """The pin's energy ``x'^2/2 + alpha (V tau - x)^2/2``.
+
+        With an oscillating holder the pin's spring is stretched by ``V tau + X - x``.
+        """
         d = self.system
         y = self.x - self.v_inertial * self.tau
         if d.a_x > 0.0 and d.inplane_on == "holder":
@@ -97,10 +102,12 @@ class History:
         return 0.5 * self.x_dot**2 + 0.5 * d.alpha * y**2
 
     def stored_energy(self) -> NDArray[np.float64]:
-        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2`` (with an
-        oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
-        transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's
-        row has ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``)."""
+        """Kinetic and elastic energy ``x'^2/2 + alpha (V tau - x)^2/2 + k e^2/2``.
+
+        With an oscillating holder the pin's spring is stretched by ``V tau + X - x``; in 2-D the
+        transverse terms are added, the pin's spring across ``alpha_y``; a curved tip's row has
+        ``sum f_i^2/(2 k_i)``, ``k_i = (beta - alpha) dxi``, for ``k e^2/2``.
+        """
         d = self.system
         out = self._pin_energy()
         if not d.is_rigid:
@@ -108,11 +115,13 @@ class History:
         return out
 
     def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
-        """The contact point's position relative to the substrate, ``(x_c, y_c)``: the
-        body's minus the contact spring's elongation minus the substrate's in-plane
-        displacement (none where the holder oscillates); ``y_c`` is 0 but in 2-D.
-        ``x_c`` advances by ``V`` per unit ``tau`` on average (the body slides over the
-        substrate): ``x_c - V tau`` is periodic in a periodic steady state."""
+        """The contact point's position relative to the substrate, ``(x_c, y_c)``.
+
+        The body's minus the contact spring's elongation minus the substrate's in-plane
+        displacement (none where the holder oscillates); ``y_c`` is 0 but in 2-D. ``x_c``
+        advances by ``V`` per unit ``tau`` on average (the body slides over the substrate):
+        ``x_c - V tau`` is periodic in a periodic steady state.
+        """
         d = self.system
         xc = self.x - self.e
         if d.inplane_on == "substrate" and d.a_x > 0.0:
@@ -126,8 +135,9 @@ class History:
 
 @dataclass(frozen=True, kw_only=True)
 class PlaneHistory(History):
-    """A history with a transverse oscillation (``a_y > 0``, the 2-D solver,
-    docs/inplane.md section 6): :class:`History` and the transverse components.
+    """A history with a transverse oscillation (``a_y > 0``, the 2-D solver).
+
+    :class:`History` and the transverse components (docs/inplane.md section 6).
 
     ``u_y`` and ``u_y_dot`` the body's transverse position and velocity, ``f_y`` the
     transverse contact force, ``e_y`` the transverse elongation, ``slip_velocity`` (shape
@@ -151,6 +161,7 @@ class PlaneHistory(History):
     plane_state: NDArray[np.float64]
 
     def stored_energy(self) -> NDArray[np.float64]:
+        """:meth:`History.stored_energy` with the transverse terms (pin across ``alpha_y``)."""
         d = self.system
         yy = self.u_y - (transverse_motion(d, self.tau)[0]
                          if d.inplane_on == "holder" else 0.0)
@@ -158,6 +169,7 @@ class PlaneHistory(History):
         return out + 0.5 * (d.beta - d.alpha) * self.e_y**2
 
     def contact_point(self) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+        """:meth:`History.contact_point` with the transverse component ``y_c``."""
         xc, _ = super().contact_point()
         yc = self.u_y - self.e_y
         if self.system.inplane_on == "substrate":
@@ -167,8 +179,9 @@ class PlaneHistory(History):
 
 @dataclass(frozen=True, kw_only=True)
 class CurvedHistory(History):
-    """A curved tip's history (finite ``profile_exponent``: the MDR row of ``M`` springs,
-    docs/contact_geometry.md "The history"): :class:`History` and the contact fields.
+    """A curved tip's history (finite ``profile_exponent``: the MDR row of ``M`` springs).
+
+    :class:`History` and the contact fields (docs/contact_geometry.md "The history").
 
     ``f = sum f_i`` and ``n = sum n_i`` (units ``mu0 F_N0``: ``n`` is ``F_N/F_N0``), ``e
     = f/(beta - alpha)`` (the springs' elongation weighted by stiffness; the flat punch's
@@ -202,8 +215,10 @@ class CurvedHistory(History):
     normal_impulse: NDArray[np.float64]
 
     def spring_normal(self) -> NDArray[np.float64]:
-        """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)`` (``w =
-        dxi (n + 1)/n``, the flat punch's ``dxi``), shape ``(N, M)``, unit ``mu0 F_N0``."""
+        """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)``.
+
+        ``w = dxi (n + 1)/n`` (the flat punch's ``dxi``); shape ``(N, M)``, unit ``mu0 F_N0``.
+        """
         n_exp = self.system.profile_exponent
         dxi = 2.0 * float(self.xi[0])
         flat = math.isinf(n_exp)
@@ -213,6 +228,7 @@ class CurvedHistory(History):
         return w * np.maximum(0.0, depth[:, None] - g[None, :])
 
     def stored_energy(self) -> NDArray[np.float64]:
+        """:meth:`History.stored_energy` with the row's springs, ``sum f_i^2/(2 k_i)``."""
         d = self.system
         k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])  # the row: sum f_i^2/(2 k dxi)
         return self._pin_energy() + 0.5 * np.sum(self.spring_f**2, axis=1) / k

@@ -64,12 +64,14 @@ def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
 def _start(alpha: float, a: float, n_exp: float, M: int,
            warm: tuple | None, offset: tuple[float, float] = (0.0, 0.0),
            ) -> tuple[float, float, np.ndarray, np.ndarray]:
-    """Section state to start a row of ``M`` springs from: steady sliding (``y = -sum
-    n_i(0)/alpha``, every loaded spring slipping forwards; in the laboratory frame, so
-    relative to an oscillating substrate ``y - X(0)``, ``y' - X'(0)``: ``offset``), or
-    ``warm = (y, y', st, e)``, a converged row of ``M/2`` springs (the same frame): each
-    spring inherits its parent cell's state (the elongation ``e = f/k`` does not depend on
-    the cell width), a stuck one clipped to its own friction limit at the section."""
+    """Section state to start a row of ``M`` springs from.
+
+    Steady sliding (``y = -sum n_i(0)/alpha``, every loaded spring slipping forwards; in the
+    laboratory frame, so relative to an oscillating substrate ``y - X(0)``, ``y' - X'(0)``:
+    ``offset``), or ``warm = (y, y', st, e)``, a converged row of ``M/2`` springs (the same
+    frame): each spring inherits its parent cell's state (the elongation ``e = f/k`` does not
+    depend on the cell width), a stuck one clipped to its own friction limit at the section.
+    """
     if warm is None:
         g, w, _, _, _, _ = row_geometry(a, n_exp, M)
         st = np.full(M, SLIP_POS, dtype=np.int64)

@@ -31,18 +31,23 @@ SPRINGS = 160
 
 def spring_row(amplitude: float, profile_exponent: float, springs: int
                ) -> tuple[NDArray[np.float64], NDArray[np.float64], float, NDArray[np.float64]]:
-    """``(xi, g, w, area)`` of a row: the springs' positions (cell midpoints on ``(0,
-    (1 + a)^(1/n)]``, unit ``a0``), their gaps ``xi^n``, the normal weight ``w = dxi (n +
-    1)/n`` (the flat punch's ``dxi``) and each spring's share of the disc of the largest
-    contact radius."""
+    """``(xi, g, w, area)`` of a row.
+
+    The springs' positions (cell midpoints on ``(0, (1 + a)^(1/n)]``, unit ``a0``), their gaps
+    ``xi^n``, the normal weight ``w = dxi (n + 1)/n`` (the flat punch's ``dxi``) and each
+    spring's share of the disc of the largest contact radius.
+    """
     g, w, dxi, _, _, area = _mdr.row_geometry(float(amplitude), float(profile_exponent),
                                               int(springs))
     return (np.arange(int(springs)) + 0.5) * dxi, g, float(w), area
 
 
 def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
-    """One name a sample: ``"flight"`` (no spring in contact), ``"stick"``, ``"slip+"``
-    or ``"slip-"`` where every spring in contact is in that state, else ``"partial"``."""
+    """One name a sample.
+
+    ``"flight"`` (no spring in contact), ``"stick"``, ``"slip+"`` or ``"slip-"`` where every
+    spring in contact is in that state, else ``"partial"``.
+    """
     touching = state != FLIGHT
     width = max(len(name) for name in (*PHASE_NAMES, PARTIAL))
     out = np.full(state.shape[0], PARTIAL, dtype=f"<U{width}")
@@ -55,9 +60,10 @@ def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
 
 def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
                 initial: object = "sliding", springs: int = SPRINGS) -> CurvedHistory:
-    """The history of a row of ``springs`` springs over ``periods`` drive periods, sampled
-    on the uniform grid of ``samples_per_period`` a period (``tau = 0`` to ``2 pi
-    periods``, both included), from the closed forms.
+    """The history of a row of ``springs`` springs over ``periods`` drive periods.
+
+    Sampled on the uniform grid of ``samples_per_period`` a period (``tau = 0`` to ``2 pi periods``,
+    both included), from the closed forms.
 
     ``initial``: ``"sliding"`` (the MDR solver's start: every loaded spring slipping
     forwards at its limit ``n_i(0)``, the pin stretched by the load at ``d0``: ``y =

@@ -44,6 +44,7 @@ class PointTable:
     shape: tuple[int, ...]
 
     def __len__(self) -> int:
+        """The number of points ``n``."""
         return self.values.shape[0]
 
     def __getitem__(self, name: str) -> NDArray[np.float64]:

@@ -58,6 +58,7 @@ class SectionState:
     e: float = math.nan
 
     def __post_init__(self) -> None:
+        """Check the phase's name and that ``y``, ``x_dot`` and ``f`` are finite."""
         if self.phase not in ("stick", "slip+", "slip-"):
             raise ValueError(f"phase must be 'stick', 'slip+' or 'slip-', got {self.phase!r}")
         for name in ("y", "x_dot", "f"):
@@ -83,9 +84,12 @@ assert tuple(f.name for f in STATE_FIELDS) == tuple(f.name for f in fields(Secti
 
 
 def _frozen(cls: type, values: dict[str, Any]) -> Any:
-    """An instance of the frozen dataclass ``cls`` with the fields ``values`` (all of them,
-    in field order), without its ``__init__``: for values already checked, as the
-    solver's are; the same object ``cls(**values)`` would be, a few microseconds sooner."""
+    """An instance of the frozen dataclass ``cls`` with the fields ``values``, unchecked.
+
+    ``values`` holds all the fields, in field order; ``__init__`` is not run: for values already
+    checked, as the solver's are; the same object ``cls(**values)`` would be, a few microseconds
+    sooner.
+    """
     obj: Any = object.__new__(cls)
     obj.__dict__.update(values)
     return obj
@@ -96,7 +100,22 @@ _SECTION_PHASES = {c: codes.PHASE_NAMES[c] for c in (codes.STICK, codes.SLIP_POS
 
 
 def section_state(y: float, x_dot: float, f: float, phase: int, e: float) -> SectionState | None:
-    """The :class:`SectionState` of a solver row, or None where there is none (static)."""
+    """The :class:`SectionState` of a solver row, or None where there is none (static).
+
+    Parameters
+    ----------
+    y, x_dot, f : float
+        The section state's position, velocity and contact force (laboratory frame).
+    phase : int
+        The kernels' phase code (``phase`` of :data:`~vibrofriction.schema.INT_COLUMNS`).
+    e : float
+        The contact spring's elongation.
+
+    Returns
+    -------
+    SectionState or None
+        None where the phase has no section state or a value is not finite.
+    """
     name = _SECTION_PHASES.get(phase)
     if name is None or not (math.isfinite(y) and math.isfinite(x_dot) and math.isfinite(f)):
         return None
@@ -132,7 +151,7 @@ _FIELDS_DOC = "\n".join(_field_doc(f) for f in RESULT_FIELDS)
 
 
 @dataclass(frozen=True)
-class FrictionResult:
+class FrictionResult:  # noqa: D101 (the docstring is __doc__ below: it lists the fields)
     mu_ratio: float
     status: Status
     error: float
@@ -174,6 +193,7 @@ class FrictionResult:
 
     @property
     def success(self) -> bool:
+        """Whether the status is a converged one (:attr:`Status.ok`)."""
         return self.status.ok
 
     @property
@@ -185,8 +205,11 @@ class FrictionResult:
             return math.nan
 
     def as_dict(self) -> dict[str, Any]:
-        """Every field by name (:data:`~vibrofriction.schema.RESULT_FIELDS`): ``status`` as
-        its name, ``final_state`` and ``system`` as dicts (None: no section state)."""
+        """Every field by name (:data:`~vibrofriction.schema.RESULT_FIELDS`).
+
+        ``status`` as its name, ``final_state`` and ``system`` as dicts (None: no section
+        state).
+        """
         out = {}
         for f in RESULT_FIELDS:
             v = getattr(self, f.name)
@@ -203,7 +226,7 @@ _check_fields(FrictionResult, {f.name: _OBJECT.get(f.name) or _SCALAR[f.kind]
 
 
 @dataclass(frozen=True)
-class FrictionResults:
+class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as FrictionResult's)
     mu_ratio: NDArray[np.float64]
     status: NDArray[np.object_]
     error: NDArray[np.float64]
@@ -230,17 +253,23 @@ class FrictionResults:
     final_state: NDArray[np.object_]
     system: Dimensionless
     v_inertial: NDArray[np.float64]
-    __doc__ = """Results over an array of velocities: the fields of :class:`FrictionResult`
-    as arrays of one shape (``system`` is shared)."""
+    __doc__ = """Results over an array of velocities.
+
+    The fields of :class:`FrictionResult` as arrays of one shape (``system`` is shared);
+    indexing gives one :class:`FrictionResult`, iteration each in turn.
+    """
 
     @property
     def shape(self) -> tuple[int, ...]:
+        """The shape of the velocities (and of every array field)."""
         return self.mu_ratio.shape
 
     def __len__(self) -> int:
+        """The length of the first axis."""
         return len(self.mu_ratio)
 
     def __getitem__(self, index: int | tuple[int, ...]) -> FrictionResult:
+        """The :class:`FrictionResult` at ``index``."""
         out = {}
         for f in RESULT_FIELDS:
             v = getattr(self, f.name)
@@ -251,11 +280,13 @@ class FrictionResults:
         return _frozen(FrictionResult, out)  # the fields of a result already built
 
     def __iter__(self) -> Iterator[FrictionResult]:
+        """Each point's :class:`FrictionResult`, in C order over every axis."""
         for i in np.ndindex(self.shape):
             yield self[i]
 
     @property
     def success(self) -> NDArray[np.bool_]:
+        """Which statuses are converged, elementwise (:func:`converged`)."""
         return converged(self.status)
 
 
@@ -269,7 +300,19 @@ SLOW_SETTLING = 1000
 
 
 def describe(r: FrictionResult) -> str:
-    """The message of a result: status, how it was obtained, and its caveats."""
+    """The message of a result: status, how it was obtained, and its caveats.
+
+    Parameters
+    ----------
+    r : FrictionResult
+        The result.
+
+    Returns
+    -------
+    str
+        One line: the status and what it means, the error estimate, and the caveats
+        (slow or neutral settling, and the like) where they apply.
+    """
     head = r.status.value + (f" (period {r.period})" if r.status is Status.PERIODIC else "")
     parts = [f"{head}: {r.status.message}", f"error estimate {r.error:.2g}"
              + ("" if r.trusted else " (not trusted)")]
@@ -319,8 +362,11 @@ _PLAIN = tuple(f.name for f in RESULT_FIELDS
 
 def result_from_columns(cols: Mapping[str, Any], system: Dimensionless,
                         v_inertial: float) -> FrictionResult:
-    """One point's :class:`FrictionResult` from its named columns (Python scalars, the
-    kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and ``trusted``)."""
+    """One point's :class:`FrictionResult` from its named columns.
+
+    Python scalars: the kernels' :data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS`` and
+    ``trusted``.
+    """
     return FrictionResult(
         status=Status.from_code(cols["status"]), method=METHOD_NAMES[cols["method"]],
         final_state=section_state(*(cols[f.name] for f in STATE_FIELDS)),
@@ -348,10 +394,12 @@ _I_STATUS, _I_ERROR, _I_METHOD = (column_index(k) for k in ("status", "error", "
 
 def result_from_rows(floats: list[float], ints: list[int], system: Dimensionless,
                      v_inertial: float, settings: SolverSettings) -> FrictionResult:
-    """One point's :class:`FrictionResult` from the kernels' output rows (as lists, in the
-    order of :data:`~vibrofriction.schema.FLOAT_COLUMNS` and ``INT_COLUMNS``): the same
-    result as :func:`result_from_columns` of their named columns with ``trusted`` from
-    ``settings``, built without a dictionary of columns or the dataclass's checks."""
+    """One point's :class:`FrictionResult` from the kernels' output rows.
+
+    The rows as lists, in the order of :data:`~vibrofriction.schema.FLOAT_COLUMNS` and
+    ``INT_COLUMNS``: the same result as :func:`result_from_columns` of their named columns with
+    ``trusted`` from ``settings``, built without a dictionary of columns or the dataclass's checks.
+    """
     status = Status.from_code(ints[_I_STATUS])
     row: list[Any] = [*floats, *ints]
     row += (status, settings.trusted_one(status, floats[_I_ERROR]),

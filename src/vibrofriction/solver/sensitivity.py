@@ -73,15 +73,43 @@ def solve_gradients(
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
 ) -> tuple[dict[str, NDArray], Sensitivities]:
-    """:func:`solve_points` (no transverse oscillation) and the sensitivities of its
-    answers to the eight parameters (:data:`SENSITIVE`).
+    """:func:`solve_points` and the sensitivities of its answers to the parameters.
 
-    ``rel_step``: the central differences' step of the explicit parameter part, relative
-    to each parameter's scale; ``order``: 4 (``+-h``, ``+-2h``, the default) or 2 (half
-    the cost; off by up to ~1e-4 relative where the map at fixed ``z*`` bends);
-    ``parameters``: those differentiated (the others are ``nan``).  ``V < 0`` is
+    No transverse oscillation; the eight parameters :data:`SENSITIVE`.  ``V < 0`` is
     differentiated through the mirror of :func:`solve_points` (``mu(V, phase_x) =
     -mu(-V, phase_x + pi)``).
+
+    Parameters
+    ----------
+    alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x : array_like
+        The points, broadcast together, as for :func:`solve_points`.
+    inplane_on : str, keyword-only
+        ``"substrate"`` (default) or ``"holder"``.
+    initial : str or SectionState, keyword-only
+        The initial state, as for :func:`solve_points`.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds; None the defaults.
+    rel_step : float, keyword-only
+        The central differences' step of the explicit parameter part, relative to each
+        parameter's scale.
+    order : int, keyword-only
+        4 (``+-h``, ``+-2h``, the default) or 2 (half the cost; off by up to ~1e-4
+        relative where the map at fixed ``z*`` bends).
+    parameters : tuple of str, keyword-only
+        Those differentiated (the others are ``nan``); names of :data:`SENSITIVE`.
+
+    Returns
+    -------
+    columns : dict of str to ndarray
+        The named output columns of :func:`solve_points`.
+    sensitivities : Sensitivities
+        Their derivatives in the parameters.
+
+    Raises
+    ------
+    ValueError
+        An ``order`` other than 2 or 4, a name not in :data:`SENSITIVE`, or what
+        :func:`solve_points` refuses.
     """
     settings = settings or DEFAULT_SETTINGS
     cols = solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
@@ -108,8 +136,10 @@ def sensitivities(
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
 ) -> Sensitivities:
-    """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points
-    (the same arguments; :func:`solve_gradients`)."""
+    """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points.
+
+    The same arguments as :func:`solve_gradients`.
+    """
     settings = settings or DEFAULT_SETTINGS
     if order not in (2, 4):
         raise ValueError(f"order must be 2 or 4, got {order!r}")
@@ -167,10 +197,36 @@ def friction_gradient(
     initial: Initial = "sliding",
     settings: SolverSettings | None = None,
 ) -> tuple[FrictionResult, dict[str, float]]:
-    """:func:`~vibrofriction.solver.friction_coefficient` at one point and
-    ``d mu_ratio / d name`` for the parameters :data:`SENSITIVE` of its
-    :class:`Dimensionless` system (``nan`` where this route has none: see the module doc).
-    The velocity is given as for ``friction_coefficient``; no transverse oscillation."""
+    """The friction coefficient at one point and its gradient in the parameters.
+
+    :func:`~vibrofriction.solver.friction_coefficient` and ``d mu_ratio / d name`` for the
+    parameters :data:`SENSITIVE` of its :class:`Dimensionless` system (``nan`` where this route has
+    none: see the module doc).
+
+    Parameters
+    ----------
+    system : Dimensionless or Physical
+        The system: no transverse oscillation, a flat punch.
+    vbar, v_inertial, v0 : float
+        The sliding velocity, exactly one of them, as for :func:`friction_coefficient`.
+    initial : str or SectionState, keyword-only
+        The initial state, as for :func:`friction_coefficient`.
+    settings : SolverSettings or None, keyword-only
+        Accuracy and effort bounds; None the defaults.
+
+    Returns
+    -------
+    result : FrictionResult
+        The result at the point.
+    gradient : dict of str to float
+        ``d mu_ratio / d name`` for each name of :data:`SENSITIVE`.
+
+    Raises
+    ------
+    ValueError
+        A transverse oscillation (``a_y > 0``) or a curved tip, or the velocities as for
+        :func:`friction_coefficient`.
+    """
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:
         raise ValueError(f"friction_gradient covers the 1-D solver only: a_y must be 0, "

@@ -16,8 +16,27 @@ __all__ = ["DEFAULT_SETTINGS", "SolverSettings", "converged"]
 
 
 def converged(status: ArrayLike) -> NDArray[np.bool_]:
-    """Which statuses are converged (:attr:`Status.ok`), elementwise: integer codes or
-    :class:`Status` members.  The package's one test of convergence."""
+    """Which statuses are converged (:attr:`Status.ok`), elementwise.
+
+    The package's one test of convergence.
+
+    Parameters
+    ----------
+    status : array_like
+        Integer codes (:attr:`Status.code`) or :class:`Status` members.
+
+    Returns
+    -------
+    numpy.bool_ or ndarray of bool
+        Of the shape of ``status``.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.solver import converged
+    >>> converged([vf.Status.PERIODIC.code, vf.Status.NOT_CONVERGED.code])
+    array([ True, False])
+    """
     st = np.asarray(status)
     if st.ndim == 0 and st.dtype != object:  # one point: no array machinery
         # a numpy bool, which broadcasts and indexes as a 0-d array would
@@ -65,6 +84,22 @@ class SolverSettings:
         estimate of ``|mu_ratio - exact|``) is at most this; the one definition used by
         the figures, the report, the sweep and the command line.  Every method honours
         it; the MDR solver also refines its row of springs until its error is below it.
+
+    Raises
+    ------
+    ValueError
+        A count that is not an integer >= 1, or a tolerance outside ``(0, 1)``.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> settings = vf.SolverSettings(max_periods=500, tol_trusted=1e-8)
+    >>> settings.chosen()  # the fields set, tol_trusted aside
+    ('max_periods',)
+    >>> vf.SolverSettings(rtol=2.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: settings.rtol must be a number in (0, 1) or None, got 2.0
     """
 
     max_periods: int | None = None
@@ -77,6 +112,7 @@ class SolverSettings:
     tol_trusted: float = 1e-5
 
     def __post_init__(self) -> None:
+        """Check each field given: counts integers >= 1, tolerances in (0, 1)."""
         # what the methods derive from the settings, once (not a field: not compared,
         # hashed or stored; the fields are frozen, so it never goes stale)
         object.__setattr__(self, "_derived", {})
@@ -95,20 +131,26 @@ class SolverSettings:
                                  f"{'' if f.name == 'tol_trusted' else ' or None'}, got {v}")
 
     def chosen(self) -> tuple[str, ...]:
-        """The fields given a value (not None), ``tol_trusted`` aside (every method
-        honours it)."""
+        """The fields given a value (not None), ``tol_trusted`` aside.
+
+        Every method honours ``tol_trusted``.
+        """
         return tuple(f.name for f in fields(self)
                      if f.name != "tol_trusted" and getattr(self, f.name) is not None)
 
     def resolved(self, defaults: Mapping[str, float | int]) -> dict[str, float | int]:
-        """The value of each field of ``defaults`` (a method's honoured settings and their
-        defaults): the one given here, else the default."""
+        """The value of each field of ``defaults``: the one given here, else the default.
+
+        ``defaults`` are a method's honoured settings and their defaults.
+        """
         return {k: d if getattr(self, k) is None else getattr(self, k)
                 for k, d in defaults.items()}
 
     def derived(self, key: str, make: Callable[[SolverSettings], Any]) -> Any:
-        """``make(self)``, computed once per settings object and key (a method's kernel
-        arguments: the one-point path pays a dictionary look-up)."""
+        """``make(self)``, computed once per settings object and key.
+
+        A method's kernel arguments: the one-point path pays a dictionary look-up.
+        """
         d = self.__dict__["_derived"]
         if key not in d:
             d[key] = make(self)

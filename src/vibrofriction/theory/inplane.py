@@ -1,5 +1,8 @@
-"""In-plane oscillations: kinematic friction, the critical velocity, cancellation, the
-static region and the regimes (docs/inplane.md)."""
+"""In-plane oscillations.
+
+Kinematic friction, the critical velocity, cancellation, the static region and the regimes
+(docs/inplane.md).
+"""
 
 from __future__ import annotations
 
@@ -19,6 +22,7 @@ INPLANE_ON = CHOICES["inplane_on"].values
 
 
 def checked_inplane_on(inplane_on: str) -> str:
+    """``inplane_on`` if it is ``"substrate"`` or ``"holder"``, else a ValueError."""
     return checked_choice("inplane_on", inplane_on)
 
 
@@ -74,9 +78,12 @@ def kinematic_mu_transverse(v: ArrayLike, a_y: ArrayLike) -> FloatOrArray:
 
 def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
                      zeta: NDArray[np.float64], eta: NDArray[np.float64], on: str):
-    """``P``, the contact's slip compliance ``1/(k(1 + i eta_c))``, the contact
-    impedance ``k + i c`` (0 for rigid: then unused) and the in-plane forcing ``G``
-    times ``P`` (substrate: ``-P``; holder: ``alpha + i gamma``)."""
+    """``P``, the slip compliance, the contact impedance and the in-plane forcing.
+
+    ``P``, the contact's slip compliance ``1/(k(1 + i eta_c))``, the contact impedance ``k + i c``
+    (0 for rigid: then unused) and the in-plane forcing ``G`` times ``P`` (substrate: ``-P``;
+    holder: ``alpha + i gamma``).
+    """
     gamma = 2.0 * zeta * np.sqrt(alpha)
     p = (alpha - 1.0) + 1j * gamma
     rigid = np.isinf(beta)
@@ -90,8 +97,11 @@ def _inplane_factors(alpha: NDArray[np.float64], beta: NDArray[np.float64],
 
 def _inplane_inputs(alpha, beta, amplitude, a_x, phase_x, zeta, eta_c, inplane_on
                     ) -> tuple[Any, ...]:
-    """The validated inputs of the in-plane closed forms (the schema's ranges; ``alpha``
-    as in the soft limit): ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``."""
+    """The validated inputs of the in-plane closed forms.
+
+    ``(on_substrate, alpha, beta, a, zeta, eta_c, a_x, phase_x)``, checked against the schema's
+    ranges (``alpha`` as in the soft limit).
+    """
     on = checked_inplane_on(inplane_on)
     values = validated({"alpha": alpha, "beta": beta, "amplitude": amplitude, "zeta": zeta,
                         "eta_c": eta_c, "a_x": a_x, "phase_x": phase_x},
@@ -222,9 +232,11 @@ def inplane_static_mu_ratio(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayL
 
 
 class PlaneStatic(NamedTuple):
-    """The region of mean forces ``(F_x, F_y)/(mu0 F_N0)`` a contact stuck through whole
-    cycles can hold under normal + in-plane oscillation in both directions
-    (:func:`plane_static_region`), given by its extent; ``nan`` where it is empty."""
+    """The region of mean forces ``(F_x, F_y)/(mu0 F_N0)`` a stuck contact can hold.
+
+    Stuck through whole cycles under normal + in-plane oscillation in both directions
+    (:func:`plane_static_region`), given by its extent; ``nan`` where it is empty.
+    """
 
     #: The largest and the smallest ``F_x`` of the region (held ``mu_ratio`` values).
     x_upper: FloatOrArray
@@ -240,10 +252,12 @@ PLANE_STATIC_SAMPLES = 4096
 
 def _axis_range(qa: NDArray[np.float64], qb: NDArray[np.float64],
                 n: NDArray[np.float64]) -> tuple[float, float]:
-    """The extent along ``a`` of ``{F: |F - (qa_j, qb_j)| <= n_j for all j}`` (a convex
-    set): at fixed ``F_a`` the feasible ``F_b`` is an intersection of intervals, of
-    concave width ``h(F_a) = min hi_j - max lo_j``; its maximum by golden section, the
-    ends where ``h = 0`` by bisection.  ``(nan, nan)`` where the set is empty."""
+    """The extent along ``a`` of ``{F: |F - (qa_j, qb_j)| <= n_j for all j}`` (a convex set).
+
+    At fixed ``F_a`` the feasible ``F_b`` is an intersection of intervals, of concave width
+    ``h(F_a) = min hi_j - max lo_j``; its maximum by golden section, the ends where ``h = 0`` by
+    bisection.  ``(nan, nan)`` where the set is empty.
+    """
     lo_dom, hi_dom = float(np.max(qa - n)), float(np.min(qa + n))
     if lo_dom > hi_dom:
         return math.nan, math.nan
@@ -291,8 +305,9 @@ def plane_static_region(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                         phase_y: ArrayLike, zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0,
                         inplane_on: str = "substrate", alpha_y: ArrayLike | None = None,
                         zeta_y: ArrayLike | None = None) -> PlaneStatic:
-    r"""Static friction under normal + in-plane oscillation in both directions: the
-    region of mean forces a contact stuck through the whole cycle can hold.
+    r"""Static friction under normal + in-plane oscillation in both directions.
+
+    The region of mean forces a contact stuck through the whole cycle can hold.
 
     In stick the contact point moves with the substrate and the two directions decouple
     (the pin's springs act along their axes, the contact spring is isotropic): each
@@ -344,8 +359,10 @@ def inplane_regime(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                    a_x: ArrayLike, phase_x: ArrayLike, zeta: ArrayLike = 0.0,
                    eta_c: ArrayLike = 0.0, inplane_on: str = "substrate",
                    rtol: float = 1e-9) -> NDArray[np.int8]:
-    r"""The regime of the combined drive near ``V = 0``, from the static band of
-    :func:`inplane_static_mu_ratio` (``upper = mu(0+)/mu0``, ``lower = mu(0-)/mu0``):
+    r"""The regime of the combined drive near ``V = 0``.
+
+    From the static band of :func:`inplane_static_mu_ratio` (``upper = mu(0+)/mu0``, ``lower =
+    mu(0-)/mu0``):
 
     * ``0`` **friction reduction**: ``lower < 0 < upper`` and ``upper = -lower`` (within
       ``rtol``): the oscillation lowers static friction equally both ways;

@@ -47,8 +47,10 @@ def mean_normal_force(amplitude: ArrayLike) -> FloatOrArray:
 
 
 def mean_normal_force_of(a: float) -> float:
-    """:func:`mean_normal_force` of one valid amplitude, in plain floats (the one-point
-    fast path of the solver, where numpy's overhead would be most of the call)."""
+    """:func:`mean_normal_force` of one valid amplitude, in plain floats.
+
+    The one-point fast path of the solver, where numpy's overhead would be most of the call.
+    """
     if a <= 1.0:
         return 1.0
     theta = math.acos(-1.0 / a)

@@ -1,6 +1,8 @@
-"""The real contact geometry by the method of dimensionality reduction (MDR): the mean
-force, the static ratio, the stiff law, the dead weight and the critical velocity of a
-profile ``z = c r^n`` (docs/contact_geometry.md)."""
+"""The real contact geometry by the method of dimensionality reduction (MDR).
+
+The mean force, the static ratio, the stiff law, the dead weight and the critical velocity of a
+profile ``z = c r^n`` (docs/contact_geometry.md).
+"""
 
 from __future__ import annotations
 
@@ -72,8 +74,10 @@ def profile_static_mu_ratio(amplitude: ArrayLike, profile_exponent: ArrayLike) -
 
 
 def _stiff_element(c: float, vbar: float) -> tuple[float, float]:
-    """Stiff limit of one flat element with ``n = max(0, c + cos tau)``, pulled at the
-    rate ``f' = vbar`` while it sticks: ``(deficit, <n>)``, ``<f> = <n> - deficit/(2 pi)``.
+    """Stiff limit of one flat element with ``n = max(0, c + cos tau)``.
+
+    Pulled at the rate ``f' = vbar`` while it sticks: ``(deficit, <n>)``, ``<f> = <n> - deficit/(2
+    pi)``.
 
     Stick starts where ``n' = -sin tau`` rises through ``vbar`` (``tau1 = pi + asin vbar``)
     or, if the element is out of contact then, at touch-down ``2 pi - theta``
@@ -119,8 +123,9 @@ def _stiff_flat(vbar: float, a: float) -> float:
 
 
 def mu_ratio_stiff_flat(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
-    r"""The stiff limit of a flat contact, jumping included: :func:`mu_ratio_stiff_exact`
-    for ``a <= 1``, extended to ``a > 1``.
+    r"""The stiff limit of a flat contact, jumping included.
+
+    :func:`mu_ratio_stiff_exact` for ``a <= 1``, extended to ``a > 1``.
 
     In units of ``dF_N``, ``n = max(0, c + cos tau)`` with ``c = 1/a`` and ``f' = vbar`` in
     stick. A jumping contact (``c < 1``) lands at ``tau_on = 2 pi - theta``,
@@ -252,10 +257,12 @@ _SLIDING_GRID = 1 << 15
 
 
 def _force_harmonics(a: float, n: float, N: int = _SLIDING_GRID) -> NDArray[np.float64]:
-    """``c_k``, ``k = 0 .. N/2 - 1``, of ``m(tau) = max(0, 1 + a cos tau)^p = c_0 + sum c_k
-    cos(k tau)`` (``p = 1 + 1/n``): closed form for the flat punch, else by FFT of ``N``
-    samples (the aliasing error of the kink at a jumping contact's lift-off is
-    ``O(N^-(p+1))``)."""
+    """The harmonics ``c_k`` of the total normal force ``m(tau) = max(0, 1 + a cos tau)^p``.
+
+    ``m(tau) = c_0 + sum c_k cos(k tau)``, ``k = 0 .. N/2 - 1`` (``p = 1 + 1/n``): closed form
+    for the flat punch, else by FFT of ``N`` samples (the aliasing error of the kink at a
+    jumping contact's lift-off is ``O(N^-(p+1))``).
+    """
     K = N // 2
     c = np.zeros(K)
     if math.isinf(n):
@@ -282,11 +289,13 @@ def _force_harmonics(a: float, n: float, N: int = _SLIDING_GRID) -> NDArray[np.f
 
 def _sliding_rate(c: NDArray[np.float64], alpha: float, beta: float, a: float, p: float,
                   zeta: float):
-    """``(tau, h on the grid, h)`` of continuous sliding driven by the total normal force
-    ``m = c_0 + sum c_k cos(k tau)`` (``c`` of :func:`_force_harmonics`; grid of
-    ``2 c.size`` points): ``h = -(y_p' + (p a/(beta - alpha)) sin tau)``, so that every
-    spring's slip velocity is ``V - h``; ``None`` where the response is unbounded (undamped
-    ``alpha = k^2`` with a ``k``-th harmonic in the force)."""
+    """``(tau, h on the grid, h)`` of continuous sliding under the total normal force.
+
+    The force ``m = c_0 + sum c_k cos(k tau)`` (``c`` of :func:`_force_harmonics`; grid of ``2
+    c.size`` points): ``h = -(y_p' + (p a/(beta - alpha)) sin tau)``, so that every spring's slip
+    velocity is ``V - h``; ``None`` where the response is unbounded (undamped ``alpha = k^2`` with a
+    ``k``-th harmonic in the force).
+    """
     K = c.size
     N = 2 * K
     k = np.arange(K, dtype=float)
@@ -315,10 +324,11 @@ def _sliding_rate(c: NDArray[np.float64], alpha: float, beta: float, a: float, p
 
 def _critical_of(c: NDArray[np.float64], alpha: float, beta: float, a: float, p: float,
                  zeta: float) -> float:
-    """``V_c`` of continuous sliding under the total normal force of harmonics ``c``: the
-    largest ``h`` (:func:`_sliding_rate`) where ``1 + a cos tau > 0`` (the grid's, refined
-    by Brent between its neighbours; the contact's ends for a jumping indenter), 0 if
-    negative."""
+    """``V_c`` of continuous sliding under the total normal force of harmonics ``c``.
+
+    The largest ``h`` (:func:`_sliding_rate`) where ``1 + a cos tau > 0`` (the grid's, refined
+    by Brent between its neighbours; the contact's ends for a jumping indenter), 0 if negative.
+    """
     if a == 0.0:
         return 0.0
     out = _sliding_rate(c, alpha, beta, a, p, zeta)

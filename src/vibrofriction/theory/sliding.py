@@ -1,5 +1,8 @@
-"""Sliding and static friction without jumping: eq. (2), the critical velocity of eqs.
-(12)-(14), steady sliding of eqs. (7)-(10) and the laws of eqs. (26), (27)."""
+"""Sliding and static friction without jumping.
+
+Eq. (2), the critical velocity of eqs. (12)-(14), steady sliding of eqs. (7)-(10) and the laws of
+eqs. (26), (27).
+"""
 
 from __future__ import annotations
 

@@ -13,8 +13,11 @@ from .domains import ANY_VBAR, NO_JUMPING, FloatOrArray, valid_array
 
 # --------------------------------------------------------------------------- stiff limit
 def _stiff_tau2(vbar: float) -> tuple[float, float]:
-    """``(tau1, tau2)``: stick starts where ``n' = k V`` on the rising branch and ends
-    where the stick line ``n(tau1) + a vbar (tau - tau1)`` meets ``n`` again."""
+    """``(tau1, tau2)``, the start and the end of stick.
+
+    Stick starts where ``n' = k V`` on the rising branch and ends where the stick line
+    ``n(tau1) + a vbar (tau - tau1)`` meets ``n`` again.
+    """
     tau1 = math.pi + math.asin(vbar)
     if vbar >= 1.0:
         return tau1, tau1

@@ -1,5 +1,7 @@
-"""The entry point :func:`design`: the refusals, and the choice between the normal and the
-in-plane design."""
+"""The entry point :func:`design`.
+
+The refusals, and the choice between the normal and the in-plane design.
+"""
 
 from __future__ import annotations
 
@@ -27,7 +29,9 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
            settings: SolverSettings | None = None, du_y: tuple[float, float] | None = None,
            phase_y: float | None = None, n_du_y: int = 4,
            n_phase_y: int = 4) -> DesignResult:
-    """The oscillation (``omega`` in rad/s, ``du_z`` in m, within the given ranges and
+    """The oscillation that minimises the COF of ``pin`` at the sliding velocity ``v0``.
+
+    The oscillation (``omega`` in rad/s, ``du_z`` in m, within the given ranges and
     ``omega du_z <= max_velocity_amplitude``) that minimises the COF of ``pin`` (eq. 25)
     at the sliding velocity ``v0`` (m/s); ``pin``'s own oscillation (``omega``, ``du_z``,
     ``du_x``, ``phase_x``) is not used (a pin with ``du_x > 0`` needs ``du_x=``: refused
@@ -105,8 +109,11 @@ def _refuse_for_mdr(pin: Physical, *, du_x, du_y, goal) -> None:
 
 
 def _refuse_unused(pin: Physical, *, du_x, du_y, phase_x, phase_y, inplane_on, goal) -> None:
-    """ValueError where the pin's own in-plane oscillation, or a phase or side given,
-    would not be used by the design asked for."""
+    """ValueError where an oscillation of the pin or an option would not be used.
+
+    The pin's own in-plane oscillation, or a phase or side given, that the design asked for would
+    not use.
+    """
     if du_y is None and pin.du_y > 0.0:
         raise ValueError(f"the pin has a transverse oscillation (du_y = {pin.du_y!r} m), "
                          f"which the design would not use: give du_y=(low, high) to design "

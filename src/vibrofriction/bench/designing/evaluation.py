@@ -1,5 +1,8 @@
-"""The solver at design points, the map's axes, the status of an optimum and the
-sensitivity table of the chosen oscillation: what the normal and the in-plane design share."""
+"""What the normal and the in-plane design share.
+
+The solver at design points, the map's axes, the status of an optimum and the sensitivity table of
+the chosen oscillation.
+"""
 
 from __future__ import annotations
 
@@ -35,6 +38,7 @@ ZERO_AMPLITUDE_FLOOR = 1e-2
 
 
 def checked_range(name: str, value, *, allow_zero: bool = False) -> tuple[float, float]:
+    """``(low, high)`` of a range given as a pair, both > 0 (>= 0 with ``allow_zero``)."""
     try:
         lo, hi = (float(x) for x in value)
     except (TypeError, ValueError):
@@ -48,11 +52,14 @@ def checked_range(name: str, value, *, allow_zero: bool = False) -> tuple[float,
 def solve_design(pin: Physical, v0: float, omega, du_z, settings: SolverSettings | None,
            du_x=0.0, phase_x=0.0, inplane_on: str = "substrate", du_y=0.0,
            phase_y=0.0) -> dict[str, np.ndarray]:
-    """``cof`` (nan where not trusted), ``mu_ratio``, ``error`` and ``trusted`` of ``pin``
+    """The COF and its trust of ``pin`` driven at design points.
+
+    ``cof`` (nan where not trusted), ``mu_ratio``, ``error`` and ``trusted`` of ``pin``
     driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x``, ``du_y`` (m),
     ``phase_x``, ``phase_y`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
     (:meth:`Physical.point_arguments`, the fit's conversion too; ``du_y > 0``: the 2-D
-    solver, with the pin's ``k_y``, ``c_y``)."""
+    solver, with the pin's ``k_y``, ``c_y``).
+    """
     omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
     args: tuple[Any, ...] = pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y)
@@ -65,8 +72,11 @@ def solve_design(pin: Physical, v0: float, omega, du_z, settings: SolverSettings
 
 
 def map_axes_2d(pin: Physical, w_range, d_range, n_omega: int, n_du_z: int):
-    """The map's frequencies (with the resonances inside) and amplitudes (0 included
-    when the range starts there), logarithmic."""
+    """The map's frequencies and amplitudes, logarithmic.
+
+    The frequencies with the resonances inside, the amplitudes with 0 included when the range starts
+    there.
+    """
     (w_lo, w_hi), (d_lo, d_hi) = w_range, d_range
     ws = np.geomspace(w_lo, w_hi, n_omega)
     resonances = [math.sqrt(pin.k_x / pin.mass)]
@@ -84,6 +94,7 @@ def map_axes_2d(pin: Physical, w_range, d_range, n_omega: int, n_du_z: int):
 
 
 def log_step(axis: np.ndarray) -> float:
+    """The logarithmic step of a map axis (its positive values), 0.1 for one value."""
     positive = axis[axis > 0]
     return math.log(positive[1] / positive[0]) if positive.size > 1 else 0.1
 
@@ -109,6 +120,7 @@ def map_status(untrusted: np.ndarray, feasible: np.ndarray, near: int, n_rejecte
 
 
 def map_dataset(ws, ds, sol, feasible, attrs) -> xr.Dataset:
+    """The map over ``(omega, du_z)`` as an xarray Dataset with named, described variables."""
     dims = ("omega", "du_z")
     return xr.Dataset(
         {"cof": (dims, sol["cof"], {"long_name": "coefficient of friction mu0 mu/mu0 "
@@ -124,9 +136,12 @@ def map_dataset(ws, ds, sol, feasible, attrs) -> xr.Dataset:
 
 
 def sensitivity_table(chosen: Physical, v0: float, settings: SolverSettings | None) -> pd.DataFrame:
-    """The COF at the optimum, with the frequency off by ``FREQUENCY_CHANGES`` and each
+    """The COF at the optimum and at its neighbours in frequency and pin parameters.
+
+    The COF at the optimum, with the frequency off by ``FREQUENCY_CHANGES`` and each
     pin parameter off by ``PARAMETER_CHANGE`` (nan and ``trusted`` False where the
-    solver does not trust its value)."""
+    solver does not trust its value).
+    """
     cases = [("optimum", chosen, chosen.omega)]
     cases += [(f"frequency {100 * c:+.0f} %", chosen, chosen.omega * (1 + c))
               for c in FREQUENCY_CHANGES]

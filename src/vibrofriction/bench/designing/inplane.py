@@ -1,5 +1,7 @@
-"""The in-plane and drive design: the combined optimum, the best of each direction, the
-phase map and the drive characteristic."""
+"""The in-plane and drive design.
+
+The combined optimum, the best of each direction, the phase map and the drive characteristic.
+"""
 
 from __future__ import annotations
 
@@ -34,6 +36,7 @@ def design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on,
                     velocity_rule, vmax, n_omega, n_du_z, n_du_x, n_phase, starts,
                     settings, du_y=None, phase_y=None, n_du_y=4,
                     n_phase_y=4) -> DesignResult:
+    """The in-plane and drive design: :func:`~vibrofriction.bench.design` with in-plane ranges."""
     v0, ranges, phase_x, phase_y, on, vmax = _inplane_inputs(
         pin, v0=v0, omega=omega, du_z=du_z, du_x=du_x, du_y=du_y, phase_x=phase_x,
         phase_y=phase_y, inplane_on=inplane_on, goal=goal, velocity_rule=velocity_rule,
@@ -93,9 +96,11 @@ def design_inplane(pin: Physical, *, v0, omega, du_z, du_x, phase_x, inplane_on,
 
 def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phase_y,
                     inplane_on, goal, velocity_rule, vmax, counts):
-    """The in-plane design's inputs checked: ``(v0, (omega, du_z, du_x, du_y) ranges,
-    phase_x, phase_y, inplane_on, vmax)``; ``counts``: ``(name, value, least)`` of each
-    size of the map."""
+    """The in-plane design's inputs checked.
+
+    ``(v0, (omega, du_z, du_x, du_y) ranges, phase_x, phase_y, inplane_on, vmax)``; ``counts``:
+    ``(name, value, least)`` of each size of the map.
+    """
     if goal not in GOALS:
         raise ValueError(f"goal must be one of {sorted(GOALS)}, got {goal!r}")
     if velocity_rule not in VELOCITY_RULES:
@@ -128,8 +133,10 @@ def _inplane_inputs(pin: Physical, *, v0, omega, du_z, du_x, du_y, phase_x, phas
 
 
 def _direction_rows(pin, v0, on, goal, space: Space, sizes, starts, settings) -> list[dict]:
-    """The best normal-only and longitudinal-only choices within the limits (where their
-    range is not empty)."""
+    """The best normal-only and longitudinal-only choices within the limits.
+
+    Each where its range is not empty.
+    """
     rows = []
     if space.du_z[1] > 0.0:
         rows.append(direction_row("normal only", pin, v0, on, goal,
@@ -144,9 +151,12 @@ def _direction_rows(pin, v0, on, goal, space: Space, sizes, starts, settings) ->
 
 def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
                      settings) -> list[dict]:
-    """The best normal + transverse and transverse-only choices, by the 2-D solver on a
+    """The best normal + transverse and transverse-only choices, by the 2-D solver.
+
+    The best normal + transverse and transverse-only choices, by the 2-D solver on a
     smaller map (:data:`PLANE_MAP`, :data:`PLANE_STARTS`); ``sizes``: ``(n_omega, n_du_z,
-    n_du_y, n_phase_y)``."""
+    n_du_y, n_phase_y)``.
+    """
     n_omega, n_du_z, n_du_y, n_phase_y = sizes
     plane_sizes = (min(n_omega, PLANE_MAP[0]), min(n_du_z, PLANE_MAP[1]), n_du_y, n_phase_y)
     plane_starts = min(starts, PLANE_STARTS)
@@ -161,9 +171,11 @@ def _transverse_rows(pin, v0, on, goal, plane: Space, sizes, starts,
 
 
 def _best_choice(goal: str, rows: list[dict], point, obj: float) -> tuple:
-    """``(omega, du_z, du_x, phase_x, du_y, phase_y)`` of the best row: the combined
-    optimum ``point`` unless a sub-design inside the allowed set did better (``rows[0]``,
-    the combined row, takes the choice)."""
+    """``(omega, du_z, du_x, phase_x, du_y, phase_y)`` of the best row.
+
+    The combined optimum ``point`` unless a sub-design inside the allowed set did better
+    (``rows[0]``, the combined row, takes the choice).
+    """
     choice = (*point, 0.0, 0.0)  # (omega, du_z, du_x, phase_x, du_y, phase_y)
     for row in rows[1:]:  # a sub-design inside the allowed set that did better wins
         if row["allowed"] and np.isfinite(row["cof"]) and \
@@ -176,9 +188,12 @@ def _best_choice(goal: str, rows: list[dict], point, obj: float) -> tuple:
 
 def _phase_map(pin, v0, on, space: Space, point, settings, n_phase: int = 73,
                n_du_x: int = 25) -> xr.Dataset | None:
-    """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
+    """The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z``.
+
+    The COF over ``(du_x, phase_x)`` at the chosen ``omega`` and ``du_z`` (what
     :func:`~vibrofriction.figures.plot_design` shows) when the phase is free (one
-    ``du_x`` when its range is a point)."""
+    ``du_x`` when its range is a point).
+    """
     if space.phase is not None or space.du_x[1] == 0.0:
         return None
     w, dz = point[0], point[1]
@@ -213,9 +228,12 @@ def _dataset_nd(axes, sol, feasible, attrs) -> xr.Dataset:
 
 
 def _drive_characteristic(result: DesignResult, settings: SolverSettings | None) -> None:
-    """The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
+    """The chosen oscillation's blocking force and idle velocity, in place.
+
+    The chosen oscillation's blocking force (``mu`` at ``V = +-BLOCKING_V``) and idle
     velocity (the root of ``mu(V) = 0`` above ``v0``, Brent's method on the solver,
-    bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place."""
+    bracketed by a scan up to ``1.01 V_c``, theory's critical velocity), in place.
+    """
     from scipy.optimize import brentq
 
     from ... import theory

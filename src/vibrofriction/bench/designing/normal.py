@@ -1,5 +1,7 @@
-"""The normal oscillation alone: the map over ``(omega, du_z)`` and its best points refined
-by Nelder-Mead."""
+"""The normal oscillation alone.
+
+The map over ``(omega, du_z)`` and its best points refined by Nelder-Mead.
+"""
 
 from __future__ import annotations
 
@@ -23,9 +25,12 @@ from .result import DesignResult
 
 
 def _refine(pin, v0, settings, starts, limits, steps):
-    """Nelder-Mead in ``(ln omega, ln du_z)`` from each start, inside the limits, on
+    """Nelder-Mead in ``(ln omega, ln du_z)`` from each start.
+
+    Nelder-Mead in ``(ln omega, ln du_z)`` from each start, inside the limits, on
     trusted values only.  Returns the lowest ``(omega, du_z, cof)`` found (the starts
-    included), the untrusted evaluations rejected in all and by the winning run."""
+    included), the untrusted evaluations rejected in all and by the winning run.
+    """
     from scipy.optimize import minimize
 
     (w_lo, w_hi), (d_lo, d_hi), vmax = limits
@@ -62,8 +67,11 @@ def _refine(pin, v0, settings, starts, limits, steps):
 
 def design_normal(pin: Physical, *, v0, omega, du_z, max_velocity_amplitude, n_omega,
                    n_du_z, starts, settings) -> DesignResult:
-    """The normal oscillation alone: the map over ``(omega, du_z)``, its lowest trusted
-    points refined, the status of the optimum."""
+    """The normal oscillation alone.
+
+    The map over ``(omega, du_z)``, its lowest trusted points refined, the status of the
+    optimum.
+    """
     v0 = float(checked("v0", v0, minimum=0.0, strict=True))
     w_range = checked_range("omega", omega)
     d_range = checked_range("du_z", du_z, allow_zero=True)

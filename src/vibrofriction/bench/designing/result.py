@@ -72,11 +72,15 @@ class DesignResult:
 
     @property
     def drive_ratio(self) -> float:
-        """The drive force at ``v0`` in units of ``mu0 <F_N>``: ``-mu_ratio``, positive
-        where the oscillation pushes the slider forward against a load."""
+        """The drive force at ``v0`` in units of ``mu0 <F_N>``.
+
+        ``-mu_ratio``, positive where the oscillation pushes the slider forward against a
+        load.
+        """
         return -self.mu_ratio
 
     def report(self) -> str:
+        """The design in words: the optimum, its COF and status, and its sensitivities."""
         s = self.system
         if not self.inplane:
             lines = [f"optimum at v0 = {self.v0:g} m/s: f = {s.omega / (2 * math.pi):.6g} Hz, "

@@ -1,5 +1,7 @@
-"""The allowed in-plane oscillations (:class:`Space`), their map over ``(omega, du_z,
-du_x, phase_x)`` and its optimisation."""
+"""The allowed in-plane oscillations (:class:`Space`), their map and its optimisation.
+
+The map is over ``(omega, du_z, du_x, phase_x)``.
+"""
 
 from __future__ import annotations
 
@@ -47,9 +49,12 @@ PLANE_STARTS = 2
 
 @dataclass
 class Space:
-    """The allowed oscillations: ranges (SI), the phase (``None``: free), the limit;
-    ``component`` the in-plane direction that ``du_x`` and ``phase`` stand for: ``"x"``
-    (longitudinal) or ``"y"`` (transverse: ``du_y``, ``phase_y``)."""
+    """The allowed oscillations.
+
+    Ranges (SI), the phase (``None``: free), the limit; ``component`` the in-plane direction
+    that ``du_x`` and ``phase`` stand for: ``"x"`` (longitudinal) or ``"y"`` (transverse:
+    ``du_y``, ``phase_y``).
+    """
 
     omega: tuple[float, float]
     du_z: tuple[float, float]
@@ -60,22 +65,27 @@ class Space:
     component: str = "x"
 
     def solve(self, pin, v0, w, dz, d, ph, on, settings) -> dict[str, np.ndarray]:
-        """:func:`solve_design` with the in-plane amplitude ``d`` and phase ``ph`` along
-        ``component``."""
+        """:func:`solve_design` with the in-plane amplitude ``d`` and phase ``ph``.
+
+        Along ``component``.
+        """
         if self.component == "y":
             return solve_design(pin, v0, w, dz, settings, 0.0, 0.0, on, d, ph)
         return solve_design(pin, v0, w, dz, settings, d, ph, on)
 
     def feasible(self, w, dz, dx) -> np.ndarray:
+        """Whether the velocity amplitude is within ``vmax`` by the rule, elementwise."""
         w, dz, dx = (np.asarray(x, float) for x in (w, dz, dx))
         speed = w * (np.hypot(dz, dx) if self.rule == "combined" else np.maximum(dz, dx))
         return speed <= self.vmax * (1 + 1e-12)
 
     def inside(self, w, dz, dx) -> bool:
+        """Whether one point is within the ranges and feasible."""
         return (self.omega[0] <= w <= self.omega[1] and self.du_z[0] <= dz <= self.du_z[1]
                 and self.du_x[0] <= dx <= self.du_x[1] and bool(self.feasible(w, dz, dx)))
 
     def restricted(self, **ranges) -> Space:
+        """A copy with some ranges replaced."""
         return Space(**{**self.__dict__, **ranges})
 
 
@@ -108,8 +118,11 @@ def objective_of(goal: str, cof: np.ndarray) -> np.ndarray:
 
 
 def _solve_map(pin, v0, axes, on, settings, space: Space):
-    """The solver on the 4-D grid; points without in-plane amplitude are solved at the
-    first phase only and copied (the phase means nothing there)."""
+    """The solver on the 4-D grid.
+
+    Points without in-plane amplitude are solved at the first phase only and copied (the phase
+    means nothing there).
+    """
     grids = np.meshgrid(*axes, indexing="ij")
     need = (grids[2] > 0.0) | (np.arange(axes[3].size) == 0)[None, None, None, :]
     sol = {k: np.full(grids[0].shape, np.nan) for k in ("cof", "mu_ratio", "error")}
@@ -123,11 +136,14 @@ def _solve_map(pin, v0, axes, on, settings, space: Space):
 
 
 def _refine_inplane(pin, v0, on, goal, settings, space: Space, starts, steps):
-    """Nelder-Mead from each start in the free coordinates (``ln omega``, ``ln du_z``,
+    """Nelder-Mead from each start in the free coordinates.
+
+    Nelder-Mead from each start in the free coordinates (``ln omega``, ``ln du_z``,
     ``ln du_x`` where the start's value is > 0 and its range not a point; ``phase_x``
     when free), inside the limits, on trusted values only.  Returns the best
     ``(point, objective)`` (starts included), the rejected evaluations in all and in
-    the winning run."""
+    the winning run.
+    """
     from scipy.optimize import minimize
 
     best = min(starts, key=lambda s: s[1])
@@ -178,8 +194,11 @@ def _refine_inplane(pin, v0, on, goal, settings, space: Space, starts, steps):
 
 
 def optimise(pin, v0, on, goal, space: Space, sizes, starts, settings):
-    """Map and refinement over ``space``: ``(point, objective, grids, axes, sol,
-    feasible, n_rejected, rejected_run)``; ValueError without a trusted feasible point."""
+    """Map and refinement over ``space``.
+
+    ``(point, objective, grids, axes, sol, feasible, n_rejected, rejected_run)``; ValueError
+    without a trusted feasible point.
+    """
     axes = _map_axes(pin, space, *sizes)
     grids, sol = _solve_map(pin, v0, axes, on, settings, space)
     feasible = space.feasible(*grids[:3])
@@ -198,8 +217,10 @@ def optimise(pin, v0, on, goal, space: Space, sizes, starts, settings):
 
 
 def untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
-    """Untrusted map points among the neighbours of the map point nearest ``point``
-    (amplitudes and frequency by ratio, the phase by its periodic distance)."""
+    """Untrusted map points among the neighbours of the map point nearest ``point``.
+
+    Amplitudes and frequency by ratio, the phase by its periodic distance.
+    """
     index = []
     for k, (ax, v) in enumerate(zip(axes, point, strict=True)):
         if k == 3:
@@ -215,8 +236,11 @@ def untrusted_near_nd(untrusted: np.ndarray, axes, point) -> int:
 
 
 def direction_row(name, pin, v0, on, goal, space, sizes, starts, settings):
-    """The best choice within ``space``: a row of ``directions`` (``du_x``, ``phase_x``,
-    ``du_y``, ``phase_y``: the one along ``space.component`` set, the other 0)."""
+    """The best choice within ``space``.
+
+    A row of ``directions`` (``du_x``, ``phase_x``, ``du_y``, ``phase_y``: the one along
+    ``space.component`` set, the other 0).
+    """
     try:
         point, _, *_ = optimise(pin, v0, on, goal, space, sizes, starts, settings)
     except ValueError:

@@ -1,7 +1,9 @@
-"""The fit's problem (:mod:`.procedure`): the free parameters in ``ln`` and the constraints
-that tie others to them, the residuals (with the penalty of a row the model cannot
-evaluate), and the model's COF at measured points (:func:`predict_cof`,
-:func:`synthetic_measurements`)."""
+"""The fit's problem (:mod:`.procedure`).
+
+The free parameters in ``ln`` and the constraints that tie others to them, the residuals (with the
+penalty of a row the model cannot evaluate), and the model's COF at measured points
+(:func:`predict_cof`, :func:`synthetic_measurements`).
+"""
 
 from __future__ import annotations
 
@@ -49,21 +51,26 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
                 settings: SolverSettings | None = None, *, du_x: NDArray | float = 0.0,
                 phase_x: NDArray | float = 0.0, du_y: NDArray | float = 0.0,
                 phase_y: NDArray | float = 0.0) -> NDArray[np.float64]:
-    """``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
+    """``mu0 * mu_ratio`` of ``system`` at each measured point (eq. 25).
+
+    ``mu0 * mu_ratio`` of ``system`` at each ``(v0, du_z, omega, du_x, phase_x, du_y,
     phase_y)`` (eq. 25; the in-plane oscillation on ``system.inplane_on``, ``du_y > 0``
     by the 2-D solver with the pin's ``k_y``, ``c_y``; a curved ``system`` by the MDR
     solver, docs/contact_geometry.md; ``system``'s own ``du_z``,
     ``omega``, ``du_x``, ``phase_x``, ``du_y``, ``phase_y`` are not used), ``nan`` where
     the solver's value is not trusted (:meth:`SolverSettings.trusted`): the count of
-    untrusted points is ``np.isnan(...).sum()``."""
+    untrusted points is ``np.isnan(...).sum()``.
+    """
     groups = _groups(system, v0, du_z, omega, du_x, phase_x, du_y, phase_y)
     return _cof(system.mu0, _solve_points((*groups, system.inplane_on, settings)))
 
 
 def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
-    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape: an
-    axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows
-    of several systems are concatenated, :meth:`Problem.costs`)."""
+    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape.
+
+    An axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows of
+    several systems are concatenated, :meth:`Problem.costs`).
+    """
     groups = list(system.point_arguments(*point))
     for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
         if groups[i] is None:
@@ -73,9 +80,12 @@ def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
 
 
 def _rate(up: ArrayLike, down: ArrayLike) -> NDArray[np.float64]:
-    """The central difference ``(up - down)/(2 MAP_STEP)`` of one group of the map from
+    """The central difference of one group of the map from parameters to points.
+
+    The central difference ``(up - down)/(2 MAP_STEP)`` of one group of the map from
     parameters to points; 0 where the group does not move (also where it is ``inf``: a
-    flat punch's ``profile_exponent``, a rigid contact's ``beta``)."""
+    flat punch's ``profile_exponent``, a rigid contact's ``beta``).
+    """
     a, b = np.asarray(up, dtype=float), np.asarray(down, dtype=float)
     moved = a != b
     return np.subtract(a, b, out=np.zeros(np.broadcast(a, b).shape), where=moved) \
@@ -91,12 +101,14 @@ def _cof(mu0: float, solved: tuple[NDArray, NDArray]) -> NDArray[np.float64]:
 def synthetic_measurements(system: Physical, du_z, v0, sigma: float,
                            rng: np.random.Generator, *,
                            settings: SolverSettings | None = None) -> pd.DataFrame:
-    """A measurement table made by the model, for a fit whose truth is known: at each
-    amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
-    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma``
-    (drawn per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the
-    format of :func:`~vibrofriction.bench.read_measurements`.  A truth the solver
-    does not trust at some point is refused (ValueError naming the points)."""
+    """A measurement table made by the model, for a fit whose truth is known.
+
+    At each amplitude of ``du_z`` (m) and each velocity of ``v0`` (m/s), at the system's
+    ``omega``, :func:`predict_cof` plus Gaussian noise of standard deviation ``sigma`` (drawn
+    per amplitude, in order).  SI columns ``v0, cof, du_z, omega, sigma``, the format of
+    :func:`~vibrofriction.bench.read_measurements`.  A truth the solver does not trust at some
+    point is refused (ValueError naming the points).
+    """
     v0 = np.asarray(v0, dtype=float)
     n = v0.size
     rows = []
@@ -121,8 +133,10 @@ Contact = FlatPunch | Sphere | Cone | PowerLaw
 
 
 def contact_value(contact: Contact, name: str) -> float:
-    """The value of the contact parameter ``name`` (:data:`CONTACT_FITTABLE`) of
-    ``contact``: its ``radius`` (m) or its pair's ``E*`` (Pa)."""
+    """The value of the contact parameter ``name`` (:data:`CONTACT_FITTABLE`) of ``contact``.
+
+    Its ``radius`` (m) or its pair's ``E*`` (Pa).
+    """
     if name == "E_star":
         return float(contact.e_star)
     if name == "radius" and isinstance(contact, Sphere | FlatPunch):
@@ -139,12 +153,15 @@ def _contact_names(contact: Contact) -> str:
 def contact_fields(contact: Contact, load: float, curved: bool,
                    radius: float | None = None, E_star: float | None = None
                    ) -> dict[str, float]:
-    """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
+    """``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N).
+
+    ``k_zc``, ``k_xc``, ``u_z0`` of ``contact`` at the normal ``load`` (N), with its
     ``radius`` and its pair's ``E*`` replaced where given (both moduli scaled together,
     Poisson's ratios kept): as :func:`~vibrofriction.bench.from_bench` builds them, the MDR contact
     (``curved``: the mean indentation ``d0`` with ``F(d0) = load``, ``k_zc = 2 E* a0``,
     ``k_xc = 2 G*_mdr a0``) or the linearised one (the tangent stiffnesses at the load,
-    ``u_z0 = load/k_zc``)."""
+    ``u_z0 = load/k_zc``).
+    """
     changes: dict[str, Any] = {}
     if radius is not None:
         changes["radius"] = radius
@@ -164,9 +181,12 @@ def contact_fields(contact: Contact, load: float, curved: bool,
 
 def contact_exponents(contact: Contact, name: str, load: float, curved: bool
                       ) -> dict[str, float]:
-    """``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS` (constants for the
+    """``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS`.
+
+    ``d ln field / d ln name`` of each of :data:`CONTACT_FIELDS` (constants for the
     power-law tips: a sphere's ``k_zc`` goes as ``R^(1/3) E*^(2/3)``, its ``u_z0`` as the
-    inverse), from two evaluations of :func:`contact_fields`."""
+    inverse), from two evaluations of :func:`contact_fields`.
+    """
     x = contact_value(contact, name)
     a = contact_fields(contact, load, curved, **{name: x})
     b = contact_fields(contact, load, curved, **{name: 2.0 * x})
@@ -174,10 +194,12 @@ def contact_exponents(contact: Contact, name: str, load: float, curved: bool
 
 
 def check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
-    """ValueError, naming the parameters, for a fit of a contact geometry it cannot make:
-    a contact parameter without ``contact``, the contact's fields next to its parameters,
+    """ValueError, naming the parameters, for a fit of a contact geometry it cannot make.
+
+    A contact parameter without ``contact``, the contact's fields next to its parameters,
     ``radius`` and ``E_star`` together (not identifiable: docs/bench.md), a curved guess's
-    contact fields without its geometry, or a guess not built from ``contact``."""
+    contact fields without its geometry, or a guess not built from ``contact``.
+    """
     geo = [n for n in free if n in CONTACT_FITTABLE]
     fields = [n for n in free if n in CONTACT_FIELDS]
     if contact is None:
@@ -275,8 +297,10 @@ class Problem:
         return Physical(**self.values(ln))
 
     def start(self, name: str) -> float:
-        """The guess's value of the free parameter ``name`` (a field of the guess or a
-        parameter of the contact)."""
+        """The guess's value of the free parameter ``name``.
+
+        A field of the guess or a parameter of the contact.
+        """
         if name in CONTACT_FITTABLE:
             return contact_value(self.contact, name)
         return float(getattr(self.guess, name))
@@ -294,9 +318,11 @@ class Problem:
         return self.guess.curved
 
     def penalty(self) -> NDArray[np.float64]:
-        """The residual of a row the model cannot evaluate: twice the largest honest one,
-        ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``, eq. 25), so that a failed
-        row always costs more than any misfit of it."""
+        """The residual of a row the model cannot evaluate.
+
+        Twice the largest honest one, ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``,
+        eq. 25), so that a failed row always costs more than any misfit of it.
+        """
         mu0_max = self.guess.mu0 if self.mu0_max is None else self.mu0_max
         return 2.0 * (mu0_max + np.abs(self.data["cof"].to_numpy())) / self._scale()
 
@@ -304,9 +330,11 @@ class Problem:
         return self.data["sigma"].to_numpy() if self.weighted else 1.0
 
     def evaluate(self, ln: NDArray[np.float64]) -> tuple[NDArray[np.float64], int, int]:
-        """The residuals, and the counts of rows penalised (:meth:`penalty`) because the
-        parameters leave the model's domain (every row) or the solver's value is not
-        trusted."""
+        """The residuals, and the counts of rows penalised (:meth:`penalty`).
+
+        Penalised because the parameters leave the model's domain (every row) or because the
+        solver's value is not trusted.
+        """
         points = self.points(ln)
         if points is None:  # e.g. exp overflow, or k_x + k_xc == k_x in floats
             return self.penalty(), len(self.data), 0
@@ -324,9 +352,12 @@ class Problem:
         return solved
 
     def points(self, ln: NDArray[np.float64]) -> tuple | None:
-        """``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
+        """The solver's arguments of every row at ``ln`` (eq. 20).
+
+        ``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
         zeta_y)`` of every row at ``ln`` (eq. 20), or None where the parameters leave the
-        model's domain."""
+        model's domain.
+        """
         values = self.values(ln)
         if not _in_domain(values):
             return None
@@ -345,15 +376,16 @@ class Problem:
 
     def jacobian(self, ln: NDArray[np.float64], vary: NDArray[np.bool_] | None = None
                  ) -> NDArray[np.float64]:
-        """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by
-        columns.  ``cof = mu0 mu_ratio`` is chained through the sensitivities of the
-        steady state (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and
-        the derivatives of the cheap map ``ln -> (mu0, alpha, ..., phase_x)``
-        (:meth:`points`, central differences of that map alone).  Rows without a
-        sensitivity (not periodic nor sliding, a neutral orbit, a difference across a
-        grazing, a transverse row: the 2-D solver has none) are differenced through the
-        solver, those rows only; penalised rows
-        (untrusted, outside the domain) are constant: 0."""
+        """``d residual / d ln`` of the free parameters ``vary`` (all by default): rows by columns.
+
+        ``cof = mu0 mu_ratio`` is chained through the sensitivities of the steady state
+        (:func:`~vibrofriction.solver.sensitivity.sensitivities`) and the derivatives of the
+        cheap map ``ln -> (mu0, alpha, ..., phase_x)`` (:meth:`points`, central differences
+        of that map alone).  Rows without a sensitivity (not periodic nor sliding, a neutral
+        orbit, a difference across a grazing, a transverse row: the 2-D solver has none) are
+        differenced through the solver, those rows only; penalised rows (untrusted, outside
+        the domain) are constant: 0.
+        """
         vary = np.ones(len(self.free), dtype=bool) if vary is None else np.asarray(vary)
         cols_j = np.flatnonzero(vary)
         out = np.zeros((len(self.data), cols_j.size))
@@ -409,9 +441,12 @@ class Problem:
 
     def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]
                          ) -> NDArray[np.float64]:
-        """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
+        """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver.
+
+        Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
         (:data:`SOLVER_STEP`; :data:`MDR_STEP` for a curved contact); 0 where a side is
-        penalised."""
+        penalised.
+        """
         sides = []
         step = MDR_STEP if self.curved else SOLVER_STEP
         for sign in (1.0, -1.0):
@@ -434,10 +469,13 @@ class Problem:
         return float(r @ r)
 
     def costs(self, population: NDArray[np.float64], map_, chunks: int) -> NDArray[np.float64]:
-        """:meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
+        """:meth:`cost` of every column of ``population``.
+
+        :meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
         :func:`scipy.optimize.differential_evolution`'s vectorised call), the rows of all
         members solved together in ``chunks`` interleaved tasks of ``map_`` (each point
-        depends only on its own parameters, so the costs are those of :meth:`cost`)."""
+        depends only on its own parameters, so the costs are those of :meth:`cost`).
+        """
         members = [self.points(x) for x in np.asarray(population, dtype=float).T]
         inside = [p for p in members if p is not None]
         out = np.empty(len(members))
@@ -464,8 +502,10 @@ class Problem:
 
 
     def coarse(self) -> Problem:
-        """The same problem on every other row of a table of at least
-        :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square)."""
+        """The same problem on every other row of a large table.
+
+        A table of at least :data:`COARSE_ROWS` rows (the global stage's cheaper chi-square).
+        """
         if len(self.data) < COARSE_ROWS:
             return self
         return dataclasses.replace(self, data=self.data.iloc[::2].reset_index(drop=True))
@@ -477,17 +517,23 @@ class Problem:
 
 
 def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
-    """``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
+    """``mu_ratio`` and ``trusted`` at the points of ``task``: a pool task.
+
+    ``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
     :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
-    :meth:`Problem.costs`."""
+    :meth:`Problem.costs`.
+    """
     *groups, inplane_on, settings = task
     out = solve_points(*groups, inplane_on=inplane_on, settings=settings)
     return out["mu_ratio"], out["trusted"]
 
 
 def _in_domain(values: dict[str, float]) -> bool:
-    """Whether ``values`` make a valid :class:`Physical` whose every point has
-    ``beta > alpha`` (checked here, so that no error of the model is swallowed)."""
+    """Whether ``values`` make a valid :class:`Physical`.
+
+    Whether ``values`` make a valid :class:`Physical` whose every point has
+    ``beta > alpha`` (checked here, so that no error of the model is swallowed).
+    """
     positive = ("mass", "k_x", "k_zc", "u_z0", "omega", "mu0")
     if not all(math.isfinite(values[n]) and values[n] > 0.0 for n in positive):
         return False
@@ -518,9 +564,12 @@ _CONSTRAINED = {"natural_frequency": ("mass", "k_x", "k_x = mass (2 pi f_n)^2"),
 def free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: bool,
                    quality_factor: bool, points: int
                    ) -> tuple[tuple[str, ...], dict[str, tuple[str, float]]]:
-    """``free`` validated (a field a constraint holds is refused, naming the keyword that
+    """``free`` validated, and the fields that follow a free one by a constraint.
+
+    ``free`` validated (a field a constraint holds is refused, naming the keyword that
     releases it), and the fields that follow a free one by a constraint (``name:
-    (source, +-1)``, ``ln name = +-ln source + const``)."""
+    (source, +-1)``, ``ln name = +-ln source + const``).
+    """
     unknown = [n for n in free if n not in FITTABLE + CONTACT_FITTABLE]
     if unknown or not free:
         raise ValueError(f"free must name fields of Physical among {list(FITTABLE)} or "

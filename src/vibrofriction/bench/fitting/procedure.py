@@ -1,5 +1,8 @@
-"""The fit, from the guess to the result: the problem checked and built, the search, the
-uncertainties and the verdict, in that order (the package's docstring describes each)."""
+"""The fit, from the guess to the result.
+
+The problem checked and built, the search, the uncertainties and the verdict, in that order (the
+package's docstring describes each).
+"""
 
 from __future__ import annotations
 
@@ -118,8 +121,11 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
 
 
 def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
-    """The :class:`FitResult` of the best fit ``out``: its verdict (a poor one widens the
-    intervals to the search range), parameters, intervals and warnings."""
+    """The :class:`FitResult` of the best fit ``out``.
+
+    Its verdict (a poor one widens the intervals to the search range), parameters, intervals and
+    warnings.
+    """
     free = problem.free
     ln = ln_of(out, free)
     _, outside, untrusted = problem.evaluate(ln)

@@ -1,5 +1,7 @@
-"""The fit's result (:mod:`.procedure`): :class:`FitResult` (the report, saving and loading),
-and the verdict on a fit's chi-square."""
+"""The fit's result (:mod:`.procedure`).
+
+:class:`FitResult` (the report, saving and loading), and the verdict on a fit's chi-square.
+"""
 
 from __future__ import annotations
 
@@ -106,9 +108,11 @@ class FitResult:
         return "\n".join(lines)
 
     def derived(self) -> dict[str, tuple[float, float | None]]:
-        """Quantities that move with the fitted fields, at the fit and at the guess:
+        """Quantities that move with the fitted fields, at the fit and at the guess.
+
         ``f_n`` (Hz), ``zeta``, ``Q``, ``c_x`` (N s/m), ``eta_c`` (eq. of docs/damping.md)
-        and ``F_N0`` (N, eq. 3)."""
+        and ``F_N0`` (N, eq. 3).
+        """
         def of(p: Physical) -> dict[str, float]:
             return {"f_n [Hz]": p.natural_frequency() / (2.0 * math.pi), "zeta": p.zeta,
                     "Q": p.quality_factor, "c_x [N s/m]": p.c_x, "eta_c": p.eta_c,
@@ -117,8 +121,10 @@ class FitResult:
         return {k: (v, guess.get(k)) for k, v in of(self.system).items()}
 
     def to_json(self, path: str | Path) -> Path:
-        """Save (the data, the system, the parameters with errors and correlations, the
-        verdict); an unbounded interval end is saved as ``null``."""
+        """Save (the data, the system, the parameters with errors and correlations, the verdict).
+
+        An unbounded interval end is saved as ``null``.
+        """
         path = Path(path)
         doc = {
             "system": dataclasses.asdict(self.system),
@@ -143,6 +149,7 @@ class FitResult:
 
     @classmethod
     def from_json(cls, path: str | Path) -> FitResult:
+        """A result saved by :meth:`to_json`."""
         doc = json.loads(Path(path).read_text())
         params = lmfit.Parameters()
         for n, p in doc["params"].items():
@@ -263,8 +270,11 @@ def judge(problem: Problem, chisqr: float, lower, penalised: int) -> tuple[str, 
 
 
 def chi_square_p(problem: Problem, chisqr: float) -> float:
-    """The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
-    of freedom, if the model at the best fit were the truth and ``sigma`` right."""
+    """The probability of a chi-square at least ``chisqr``.
+
+    The probability of a chi-square at least ``chisqr`` with ``points - free`` degrees
+    of freedom, if the model at the best fit were the truth and ``sigma`` right.
+    """
     from scipy.stats import chi2
 
     return float(chi2.sf(chisqr, max(len(problem.data) - len(problem.free), 1)))

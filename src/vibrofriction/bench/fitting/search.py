@@ -1,6 +1,9 @@
-"""The fit's search (:mod:`.procedure`): the global stage (differential evolution on ``ln``
-of the free parameters), then Levenberg-Marquardt from its best distinct points, and a
-second global stage when the first is not clearly good; where the time went (:class:`Stages`)."""
+"""The fit's search (:mod:`.procedure`).
+
+The global stage (differential evolution on ``ln`` of the free parameters), then Levenberg-Marquardt
+from its best distinct points, and a second global stage when the first is not clearly good; where
+the time went (:class:`Stages`).
+"""
 
 from __future__ import annotations
 
@@ -43,6 +46,7 @@ class Stages:
 
     @contextmanager
     def timed(self, name: str) -> Iterator[dict[str, Any]]:
+        """Time the stage ``name``: its row, whose ``evaluations`` the caller sets."""
         row = {"stage": name, "seconds": 0.0, "evaluations": 0}
         self.rows.append(row)
         t = time.perf_counter()
@@ -51,18 +55,22 @@ class Stages:
 
     @property
     def nfev(self) -> int:
+        """The model evaluations of every stage."""
         return sum(r["evaluations"] for r in self.rows)
 
 
 def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: Stages,
             maxiter: int, popsize: int, seed: int, progress: bool, first: int):
-    """The global stage, then least squares from its best distinct points, ``first`` of
+    """The global stage, then least squares from its best distinct points.
+
+    The global stage, then least squares from its best distinct points, ``first`` of
     them before the others.  A first global stage whose first starts end not clearly
     good (:func:`_poor`) is followed by a second one (another seed) before its remaining
     starts are tried: a wrong valley is left rather than explored.  (Its own best point
     is not judged before the least squares: unpolished, a right valley's best point
     looked poor on 2 of 4 data sets of ``benchmarks/bench_fit.py`` and cost a second
-    stage, 2026-11-26.)  The best fit and the local minima reached (chi-square, point)."""
+    stage, 2026-11-26.)  The best fit and the local minima reached (chi-square, point).
+    """
     # out: the best lmfit result so far, set by polish below
     out: Any = None
     minima: list[Any] = []
@@ -99,11 +107,14 @@ def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: 
 
 def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
                   seed: int, workers, progress: bool, cores: int = 1):
-    """Differential evolution over ``ln`` of the free parameters, from a Sobol sample
+    """Differential evolution over ``ln`` of the free parameters.
+
+    Differential evolution over ``ln`` of the free parameters, from a Sobol sample
     that includes the guess; ``workers``: 1 (in this process) or the pool's map over
     ``cores`` processes, to which each generation goes at once (:meth:`Problem.costs`:
     one task per member would cost a pickled problem and a round trip each, and left
-    the second core idle half the time)."""
+    the second core idle half the time).
+    """
     from scipy.optimize import differential_evolution
     from tqdm.auto import tqdm
 
@@ -122,8 +133,11 @@ def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: 
 
 
 def _poor(problem: Problem, chisqr: float) -> bool:
-    """A weighted fit that is not clearly good: its chi-square has a probability below
-    :data:`DOUBTFUL_P` (a wrong valley is one explanation, so another is looked for)."""
+    """A weighted fit that is not clearly good.
+
+    Its chi-square has a probability below :data:`DOUBTFUL_P` (a wrong valley is one
+    explanation, so another is looked for).
+    """
     return problem.weighted and chi_square_p(problem, chisqr) < DOUBTFUL_P
 
 
@@ -140,12 +154,15 @@ def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
 
 
 def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
+    """The values of the free parameters (``ln``) of an lmfit result ``out``."""
     return np.array([out.params[n].value for n in free])
 
 
 def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None):
-    """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``;
-    ``hold``: the index of a parameter kept at its value in ``x0`` (a profile)."""
+    """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``.
+
+    ``hold``: the index of a parameter kept at its value in ``x0`` (a profile).
+    """
     params = lmfit.Parameters()
     for i, (n, x, (lo, hi)) in enumerate(zip(problem.free, x0, bounds, strict=True)):
         params.add(n, value=float(np.clip(x, lo, hi)), min=lo, max=hi, vary=i != hold)
@@ -223,15 +240,21 @@ def _polish(task) -> _Fit:
 
 
 def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
-    """Least squares from every start (in parallel): the lowest chi-square, the
-    chi-squares and points reached from each start, and the count of model evaluations."""
+    """Least squares from every start (in parallel).
+
+    The lowest chi-square, the chi-squares and points reached from each start, and the count of
+    model evaluations.
+    """
     found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
     return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
 
 
 def _tick(bar) -> bool:
-    """Advance a progress bar; False, so that differential evolution goes on (a callback
-    returning True stops it, and tqdm's ``update`` returns True when it redraws)."""
+    """Advance a progress bar.
+
+    False, so that differential evolution goes on (a callback returning True stops it, and
+    tqdm's ``update`` returns True when it redraws).
+    """
     bar.update(1)
     return False

@@ -1,6 +1,8 @@
-"""The fit's uncertainties (:mod:`.procedure`): profile-likelihood intervals (a lower
-chi-square met on the way is fitted from), the parameters in physical units with their
-intervals and correlations, and what the data do not identify."""
+"""The fit's uncertainties (:mod:`.procedure`).
+
+Profile-likelihood intervals (a lower chi-square met on the way is fitted from), the parameters in
+physical units with their intervals and correlations, and what the data do not identify.
+"""
 
 from __future__ import annotations
 
@@ -29,9 +31,11 @@ RESTART_PROFILES = 0.5
 
 def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: Stages,
                    progress: bool):
-    """The profile intervals about ``out`` (:mod:`.procedure`); a lower chi-square met on
-    the way is fitted from.  The fit, the minima, the distances of the interval ends and
-    the lower point if the profiles met one again."""
+    """The profile intervals about ``out`` (:mod:`.procedure`).
+
+    A lower chi-square met on the way is fitted from.  The fit, the minima, the distances of the
+    interval ends and the lower point if the profiles met one again.
+    """
     free = problem.free
     with stages.timed("profiles") as row:
         dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
@@ -52,10 +56,13 @@ def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: 
 
 
 def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
-    """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
+    """The profile-likelihood distances ``(below, above)`` in ``ln`` of each free parameter.
+
+    The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
     parameter from the best fit (:mod:`.procedure`), in parallel over parameters and
     sides, widened to reach the other local ``minima`` within the level; and the point
-    of lowest chi-square a profile met, if lower than the fit's."""
+    of lowest chi-square a profile met, if lower than the fit's.
+    """
     from tqdm.auto import tqdm
 
     best = ln_of(out, problem.free)
@@ -89,8 +96,11 @@ def _recentre(dists, free: tuple[str, ...], old: NDArray, new: NDArray):
 
 
 def _s2(problem: Problem, out) -> float:
-    """The scale ``s^2`` of the profile level: the reduced chi-square, at least 1 when
-    the residuals are weighted by the measured ``sigma``."""
+    """The scale ``s^2`` of the profile level.
+
+    The reduced chi-square, at least 1 when the residuals are weighted by the measured
+    ``sigma``.
+    """
     return max(float(out.redchi), 1.0) if problem.weighted else float(out.redchi)
 
 
@@ -104,9 +114,11 @@ def _reach(dists, free: tuple[str, ...], best: NDArray, x: NDArray):
 
 
 def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
-    """How the others move with parameter ``j`` along the valley, to first order: column
-    ``j`` of the covariance over its diagonal entry (zeros without a covariance).  Only a
-    starting point for the profile's refits."""
+    """How the others move with parameter ``j`` along the valley, to first order.
+
+    Column ``j`` of the covariance over its diagonal entry (zeros without a covariance).  Only a
+    starting point for the profile's refits.
+    """
     if covar is None or np.shape(covar) != (size, size) or not covar[j, j] > 0:
         return np.zeros(size)
     slope = np.asarray(covar[:, j], dtype=float) / covar[j, j]
@@ -114,11 +126,14 @@ def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
 
 
 def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
-    """How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
+    """How far parameter ``j`` can move on ``side`` before the profile chi-square rises.
+
+    How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
     chi-square (the others refitted) has risen by ``target``: doubling steps to a
     bracket, then Brent's method; ``inf`` if it never does within the search range.
     Each refit starts from the previous one moved along ``slope`` (the valley's
-    direction at the best fit); a distance already refitted is not refitted again."""
+    direction at the best fit); a distance already refitted is not refitted again.
+    """
     from scipy.optimize import brentq
 
     problem, best, bounds, j, side, step, slope, target, chi_best = task
@@ -162,11 +177,14 @@ def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
 def physical_params(out, free: tuple[str, ...], values: dict[str, float],
                      tied: dict[str, tuple[str, float]],
                      dists: dict[str, tuple[float, float]]):
-    """The fitted parameters in physical units (``values``: the system's fields and the
+    """The fitted parameters in physical units with their intervals and correlations.
+
+    The fitted parameters in physical units (``values``: the system's fields and the
     free contact parameters) with their 95.4 % profile intervals and ``stderr`` half the
     interval's longer side; the correlations of the least-squares covariance.  A
     parameter tied to a free one by a constraint or a contact geometry, ``ln x = p ln y +
-    const``, gets the mapped interval of its source."""
+    const``, gets the mapped interval of its source.
+    """
     params, intervals = lmfit.Parameters(), {}
     for n in [*free, *tied]:
         source, sign = tied.get(n, (n, 1.0))
@@ -184,8 +202,11 @@ def physical_params(out, free: tuple[str, ...], values: dict[str, float],
 
 
 def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
-    """One sentence per side of an interval the data do not close within the search
-    range, and one if the fit's minimum is still not the lowest found."""
+    """One sentence per open side of an interval, and one for a lower minimum.
+
+    One sentence per side of an interval the data do not close within the search
+    range, and one if the fit's minimum is still not the lowest found.
+    """
     out = []
     for n in free:
         for side, d in zip(("below", "above"), dists[n], strict=True):
@@ -201,9 +222,11 @@ def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
 
 
 def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
-    """One sentence per parameter the data do not identify: at a bound, in a flat direction
-    of the Jacobian, strongly correlated with another; and one if the least-squares
-    covariance is singular (no correlations)."""
+    """One sentence per parameter the data do not identify.
+
+    At a bound, in a flat direction of the Jacobian, strongly correlated with another; and one
+    if the least-squares covariance is singular (no correlations).
+    """
     warnings = []
     free = problem.free
     for n, x, (lo, hi) in zip(free, ln, bounds, strict=True):
@@ -233,9 +256,11 @@ def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
 
 
 def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
-    """Central differences of the residuals in ``ln`` (columns: free parameters); a
-    curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in
-    steps of its error bar: a step of 1e-4 would difference those)."""
+    """Central differences of the residuals in ``ln`` (columns: free parameters).
+
+    A curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in steps of
+    its error bar: a step of 1e-4 would difference those).
+    """
     if problem.curved:
         jac = problem.jacobian(ln)
         return jac if np.all(np.isfinite(jac)) else None

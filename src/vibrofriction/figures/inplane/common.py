@@ -1,5 +1,7 @@
-"""The in-plane figures' pin, amplitudes and damping, and the helpers the three share:
-critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks."""
+"""The in-plane figures' pin, amplitudes and damping, and the helpers the three share.
+
+Critical velocities, the in-plane columns of a curve, untrusted marks, sliding checks.
+"""
 
 from __future__ import annotations
 
@@ -62,6 +64,7 @@ def critical_v_pair(a: float, a_x: float, phase: float, zeta: float = 0.0, eta_c
 
 
 def inplane_columns(c: Curve) -> dict[str, NDArray]:
+    """The curve's damping and in-plane parameters as columns of its length."""
     s = c.series
     n = s.size
     return {"zeta": np.full(n, s.zeta), "eta_c": np.full(n, s.eta_c), "a_x": np.full(n, s.a_x),
@@ -70,8 +73,11 @@ def inplane_columns(c: Curve) -> dict[str, NDArray]:
 
 
 def mark_untrusted(ax, x: NDArray, c: Curve, color, ms: float = 2.5) -> None:
-    """Untrusted points as open circles at their (signed) value, or a bar over the range
-    of their last windows' means when they did not settle."""
+    """Untrusted points as open circles, or as a bar where they did not settle.
+
+    Untrusted points as open circles at their (signed) value, or a bar over the range
+    of their last windows' means when they did not settle.
+    """
     bad = ~np.asarray(c.trusted)
     mu = c.mu_ratio
     valued = bad & np.isfinite(mu)
@@ -102,8 +108,10 @@ def sliding_check(curves: Sequence[Curve], where: str) -> Check:
 
 
 def below_check(curves: Sequence[Curve], where: str, below: float = 0.99) -> Check:
-    """Just below ``V_c`` the contact must stick or reverse: ``|mu| < 1``; the smallest
-    margin ``1 - |mu|`` there (it closes quadratically at ``V_c``)."""
+    """Just below ``V_c`` the contact must stick or reverse.
+
+    ``|mu| < 1``; the smallest margin ``1 - |mu|`` there (it closes quadratically at ``V_c``).
+    """
     margin, at = math.inf, "no points"
     n = 0
     for c in curves:

@@ -1,5 +1,7 @@
-"""Fig. 16: the drive's characteristic against the phase: the blocking forces and the idle
-velocity."""
+"""Fig. 16: the drive's characteristic against the phase.
+
+The blocking forces and the idle velocity.
+"""
 
 from __future__ import annotations
 
@@ -74,9 +76,12 @@ def blocking_forces(c: Curve, v: float = V_BLOCK[0]) -> tuple[float, float]:
 
 
 def idle_velocities(c: Curve, *, xtol: float = 1e-7) -> list[float]:
-    """Every ``V != 0`` at which the curve's ``mu`` changes sign, refined by Brent's method
+    """Every ``V != 0`` at which the curve's ``mu`` changes sign.
+
+    Every ``V != 0`` at which the curve's ``mu`` changes sign, refined by Brent's method
     on the solver (:func:`solve_points`); empty where ``mu`` has the sign of ``V``
-    everywhere on the grid.  A bracket with an untrusted end is skipped."""
+    everywhere on the grid.  A bracket with an untrusted end is skipped.
+    """
     s = c.series
     V, mu, ok = s.v_inertial, c.mu_ratio, c.trusted
 
@@ -96,8 +101,11 @@ def idle_velocities(c: Curve, *, xtol: float = 1e-7) -> list[float]:
 
 
 def _drive_data(curves: Mapping[str, Curve]) -> dict[tuple[float, float], dict]:
-    """Per ``(a_x, zeta)``: phases, blocking forces at both V_BLOCK, static band, idle
-    velocities (list per phase), and the solver's mu at the idle velocities."""
+    """Per ``(a_x, zeta)``.
+
+    Phases, blocking forces at both V_BLOCK, static band, idle velocities (list per phase), and
+    the solver's mu at the idle velocities.
+    """
     data = {}
     for a_x, zeta, eta_c in _drive_cases():
         rows = _drive_rows(curves, a_x, zeta)

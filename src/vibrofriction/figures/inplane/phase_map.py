@@ -1,5 +1,7 @@
-"""Fig. 15: the combined drive over ``(phase_x, V)``: reduction, drive and the boundary of
-continuous sliding."""
+"""Fig. 15: the combined drive over ``(phase_x, V)``.
+
+Reduction, drive and the boundary of continuous sliding.
+"""
 
 from __future__ import annotations
 
@@ -26,8 +28,11 @@ from .common import (
 
 # --------------------------------------------------------------------------- Fig. 15
 def _map_grid(quick: bool, a_x: float) -> tuple[NDArray, NDArray, float]:
-    """Phases (``0..2 pi``, an even number of steps: ``phase + pi`` is on the grid) and the
-    signed velocities (cell centres, symmetric, no 0) of a map panel; ``V_max``."""
+    """The phases and the signed velocities of a map panel, and ``V_max``.
+
+    Phases (``0..2 pi``, an even number of steps: ``phase + pi`` is on the grid) and the
+    signed velocities (cell centres, symmetric, no 0) of a map panel; ``V_max``.
+    """
     zeta, eta_c = DAMPING
     n_phase = 24 if quick else 96
     n_v = 15 if quick else 80

@@ -33,9 +33,11 @@ assert tuple(METHODS) == METHOD_NAMES
 
 
 def choose(profile_exponent: ArrayLike, a_y: ArrayLike) -> NDArray[np.int64]:
-    """The index in :data:`METHODS` of the method of each point: a curved tip (finite
-    ``profile_exponent``) the MDR solver, else a transverse oscillation (``a_y > 0``) the
-    2-D solver, else the 1-D event-driven solver."""
+    """The index in :data:`METHODS` of the method of each point.
+
+    A curved tip (finite ``profile_exponent``) the MDR solver, else a transverse oscillation
+    (``a_y > 0``) the 2-D solver, else the 1-D event-driven solver.
+    """
     curved = np.asarray(profile_exponent) != np.inf
     return np.where(curved, 2, np.where(np.asarray(a_y) > 0.0, 1, 0))
 

@@ -34,7 +34,9 @@ class Method(Protocol):
 
     def solve(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
               settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
-        """Output rows (:data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS``) of
-        ``points`` (``V >= 0``: ``V < 0`` is mirrored by the caller), started from
-        ``init_kind`` (:data:`INITIAL_KINDS`) and the rows ``init`` ``(y, x', e, phase)``."""
+        """Output rows (:data:`~vibrofriction.schema.FLOAT_COLUMNS`, ``INT_COLUMNS``) of ``points``.
+
+        ``V >= 0`` (``V < 0`` is mirrored by the caller), started from ``init_kind``
+        (:data:`INITIAL_KINDS`) and the rows ``init`` ``(y, x', e, phase)``.
+        """
         ...

@@ -65,9 +65,10 @@ class EventMethod:
 
 
 def event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:
-    """``(max_periods, min_periods, tol_state, tol_mean, max_events)`` of the event kernels:
-    ``settings`` resolved with the method's defaults (a setting it does not honour is
-    refused)."""
+    """``(max_periods, min_periods, tol_state, tol_mean, max_events)`` of the event kernels.
+
+    ``settings`` resolved with the method's defaults (a setting it does not honour is refused).
+    """
     return settings.derived("event", _event_arguments)
 
 
@@ -80,11 +81,14 @@ def _event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, 
 
 def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], points: PointTable,
           idx: NDArray[np.intp]) -> None:
-    """Mark :attr:`Status.HELD` the ``V = 0`` rows ``idx`` where the contact can stick
-    through whole cycles: a stuck band exists (``theory.inplane_static_mu_ratio``; a motion
-    from outside it approaches its edge with slips that die out), or the motion stuck
-    through its whole averaging window (no slip, no flight).  ``mu_ratio`` and ``error``
-    stay those of the motion from the given start (nan and inf where it did not settle)."""
+    """Mark :attr:`Status.HELD` the ``V = 0`` rows ``idx`` where the contact sticks for good.
+
+    Where the contact can stick through whole cycles: a stuck band exists
+    (``theory.inplane_static_mu_ratio``; a motion from outside it approaches its edge with slips
+    that die out), or the motion stuck through its whole averaging window (no slip, no flight).
+    ``mu_ratio`` and ``error`` stay those of the motion from the given start (nan and inf where it
+    did not settle).
+    """
     for on, rows in points.groups("inplane_on", idx):
         p = points.take(rows)
         band = theory.inplane_static_mu_ratio(p["alpha"], p["beta"], p["amplitude"],
@@ -118,10 +122,12 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
 
 def contact_columns(out_f: NDArray[np.float64], amplitude: NDArray[np.float64],
                     rows: NDArray[np.bool_]) -> None:
-    """The contact's columns of the flat-punch rows ``rows`` (``amplitude`` of all rows):
-    ``mean_normal_ratio`` by its closed form (:func:`theory.mean_normal_force`) and the
-    area fractions, which for the one spring of a flat punch are its time fractions (slip
-    either way)."""
+    """The contact's columns of the flat-punch rows ``rows`` (``amplitude`` of all rows).
+
+    ``mean_normal_ratio`` by its closed form (:func:`theory.mean_normal_force`) and the area
+    fractions, which for the one spring of a flat punch are its time fractions (slip either
+    way).
+    """
     if not np.any(rows):
         return
     out_f[rows, _O_NORMAL] = theory.mean_normal_force(amplitude[rows])

@@ -48,8 +48,10 @@ class PlaneMethod:
 
 
 def plane_arguments(settings: SolverSettings) -> tuple[float, int, int]:
-    """``(rtol, max_periods, max_events_per_period)`` of the 2-D kernels: ``settings``
-    resolved with the method's defaults."""
+    """``(rtol, max_periods, max_events_per_period)`` of the 2-D kernels.
+
+    ``settings`` resolved with the method's defaults.
+    """
     PLANE.capabilities.check_settings(settings)
     r = settings.resolved(PLANE.capabilities.settings)
     return float(r["rtol"]), int(r["max_periods"]), int(r["max_events_per_period"])
@@ -57,11 +59,13 @@ def plane_arguments(settings: SolverSettings) -> tuple[float, int, int]:
 
 def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
                points: PointTable, inplane_on: str) -> NDArray[np.bool_]:
-    """Which ``V = 0`` 2-D points (kernel ``status``, ``stick_fraction``) are held: the
-    region of mean forces a stuck contact can hold is not empty
-    (:func:`theory.plane_static_region`: a motion from outside it approaches its edge
-    with slips that die out, as in 1-D), or the motion stuck through its whole averaging
-    window or orbit.  ``points`` all have ``inplane_on``."""
+    """Which ``V = 0`` 2-D points (kernel ``status``, ``stick_fraction``) are held.
+
+    The region of mean forces a stuck contact can hold is not empty
+    (:func:`theory.plane_static_region`: a motion from outside it approaches its edge with slips
+    that die out, as in 1-D), or the motion stuck through its whole averaging window or orbit.
+    ``points`` all have ``inplane_on``.
+    """
     p = points
     region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"],
                                         p["phase_x"], p["a_y"], p["phase_y"], p["zeta"],
