@@ -3,7 +3,7 @@
 The held-out MDR bench table (tests/data/mdr_bench.csv, .json: a steel sphere of radius
 3 mm on steel, 20 N, an 800 Hz pin of 20 g with Q = 50, driven at 1 kHz, mu0 = 0.3;
 two indentation amplitudes x 9 velocities, noise 0.003, made by the independent spring-row
-reference ``vibrofriction_reference.mdr``), and the calls of tests/test_fit_mdr.py:
+reference ``vibrofriction_reference.mdr``), and the calls of tests/bench/test_fit_mdr.py:
 
 1. chi-square of the MDR model and of the linearised sphere at the truth (no fit);
 2. the fit with ``contact_model="mdr"``, ``free = mu0, radius, mass``, from a guess 1.3x

@@ -199,7 +199,7 @@ def test_the_version_is_the_one_written_in_pyproject():
     import tomllib
     from pathlib import Path
 
-    pyproject = Path(__file__).resolve().parent.parent / "pyproject.toml"
+    pyproject = Path(__file__).resolve().parents[2] / "pyproject.toml"
     assert vf.__version__ == tomllib.loads(pyproject.read_text())["project"]["version"]
 
 
@@ -208,7 +208,7 @@ def test_the_cli_and_citation_cff_give_that_version():
     import tomllib
     from pathlib import Path
 
-    root = Path(__file__).resolve().parent.parent
+    root = Path(__file__).resolve().parents[2]
     written = tomllib.loads((root / "pyproject.toml").read_text())["project"]["version"]
     out = _cli("--version")
     assert out.returncode == 0 and out.stdout.strip() == f"vibrofriction {written}", out

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import vibrofriction as vf
 
-SRC = Path(__file__).resolve().parents[1] / "src"
+SRC = Path(__file__).resolve().parents[2] / "src"
 # every C0 control character and DEL, except the tab and the newline; and a tab before a
 # letter, which is where "\tau", "\theta", "\tfrac" lost their backslash
 CONTROL = re.compile(r"[\x00-\x08\x0b-\x1f\x7f]|\t(?=[A-Za-z])")

@@ -15,7 +15,7 @@ from vibrofriction.bench.fitting import FitResult, _Problem, predict_cof, synthe
 from vibrofriction.figures import plot_fit
 from vibrofriction.solver import SolverSettings, solve_points
 
-DATA = Path(__file__).resolve().parent / "data"
+DATA = Path(__file__).resolve().parents[1] / "data"
 TRUE = vf.Physical.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                               normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                               du_z=0.5e-6, mu0=0.3)

@@ -21,7 +21,7 @@ from vibrofriction.bench.fit_problem import contact_exponents, contact_fields
 from vibrofriction.contact import Cone, Material, Sphere
 from vibrofriction_reference.mdr import mdr_reference
 
-HERE = Path(__file__).resolve().parent / "data"
+HERE = Path(__file__).resolve().parents[1] / "data"
 META = json.loads((HERE / "mdr_bench.json").read_text())
 T = META["truth"]
 STEEL = Material(T["E"], T["nu"])

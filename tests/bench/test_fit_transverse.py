@@ -18,7 +18,7 @@ from scipy.stats import chi2
 import vibrofriction as vf
 from vibrofriction.bench import predict_cof
 
-HERE = Path(__file__).resolve().parent / "data"
+HERE = Path(__file__).resolve().parents[1] / "data"
 META = json.loads((HERE / "transverse_bench.json").read_text())
 TRUTH = vf.Physical(**META["truth"])
 

@@ -14,7 +14,7 @@ import pytest
 import vibrofriction as vf
 from vibrofriction import theory
 
-EXAMPLES = Path(__file__).resolve().parent.parent / "examples"
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 def _load(name: str):

@@ -28,9 +28,9 @@ from urllib.parse import unquote, urlsplit
 
 import pytest
 
-from test_readme import NumberChecker
+from doctest_numbers import NumberChecker
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 DOCS = ROOT / "docs"
 HTML = DOCS / "_build" / "html"
 IMG = DOCS / "img"

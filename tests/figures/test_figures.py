@@ -70,7 +70,7 @@ def test_solve_cuts_the_batch_back_into_curves() -> None:
 
 def test_curves_carry_the_solvers_trusted_flags() -> None:
     """The figures hide exactly what the solver does not trust (one definition)."""
-    # a slow jumping point (tests/test_trust.py's SLOW): not converged within 256 periods
+    # a slow jumping point (tests/solver/test_trust.py's SLOW): not converged within 256 periods
     slow = (0.5343889244565606, 2.82801636121696, 2.8253189143838906)
     vbars = [0.04469609687392416, 0.5]
     s = series_at_vbar("k", *slow, vbars)

@@ -1,6 +1,6 @@
 """The in-plane oscillation through the public API: Physical (SI), the sweep, the CLI.
 
-The solver's in-plane physics is tested in tests/test_inplane_solver.py against the
+The solver's in-plane physics is tested in tests/inplane/test_inplane_solver.py against the
 independent reference; here the SI conversion, the critical velocity of the combined
 drive in m/s, the mirror symmetry through the sweep, validation and the command line.
 """
@@ -18,7 +18,7 @@ import pytest
 import vibrofriction as vf
 from vibrofriction import Dimensionless, Physical, friction_coefficient, sweep
 
-#: a pin like tests/test_fit.py's, at 1 kHz, with a 1 um longitudinal oscillation
+#: a pin like tests/bench/test_fit.py's, at 1 kHz, with a 1 um longitudinal oscillation
 PIN = dict(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
            omega=2 * math.pi * 1000.0, mu0=0.3)
 
@@ -177,7 +177,7 @@ def test_docs_inplane_code_runs() -> None:
     """The python blocks of docs/inplane.md run as written."""
     from pathlib import Path
 
-    text = (Path(__file__).resolve().parents[1] / "docs" / "inplane.md").read_text()
+    text = (Path(__file__).resolve().parents[2] / "docs" / "inplane.md").read_text()
     blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
     assert blocks
     namespace: dict = {}
@@ -200,7 +200,7 @@ def test_design_refuses_an_inplane_oscillation_rather_than_ignore_it() -> None:
 def _inplane_bench():
     from pathlib import Path
 
-    here = Path(__file__).resolve().parent / "data"
+    here = Path(__file__).resolve().parents[1] / "data"
     meta = json.loads((here / "inplane_bench.json").read_text())
     return vf.read_measurements(here / "inplane_bench.csv"), meta, Physical(**meta["truth"])
 
@@ -280,7 +280,7 @@ def test_regimes_of_the_combined_drive_agree_with_the_solver() -> None:
 def test_transverse_oscillation_is_refused_where_not_asked_for() -> None:
     """A pin with a transverse oscillation whose design does not give du_y is refused
     rather than designed without it (the fit takes du_y from the rows:
-    tests/test_fit_transverse.py); simulate computes it (the 2-D history)."""
+    tests/bench/test_fit_transverse.py); simulate computes it (the 2-D history)."""
     from vibrofriction.bench import design
 
     pin = Physical(**PIN, du_y=1e-6)

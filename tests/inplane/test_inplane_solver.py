@@ -7,14 +7,14 @@ it does not contain.
   phases, stick-slip, jumping, grazing, damped, near both resonances, pure longitudinal,
   ``V < 0``), cached by ``tests/data/make_inplane_reference.py``;
 * continuous sliding exactly above ``theory.inplane_critical_velocity`` (a closed form
-  checked against its own integration in tests/test_theory_inplane.py) and not below;
+  checked against its own integration in tests/theory/test_theory_inplane.py) and not below;
 * the kinematic law of a rigid body, ``theory.kinematic_mu_longitudinal``, approached as
   the system stiffens;
 * the mirror ``x -> -x`` of a backward velocity against the reference at ``V < 0``;
 * ``|f| <= n`` along histories of random points;
 * zero amplitude is the normal-only solver; the refusals.
 
-The Jacobian with the in-plane force is checked in tests/test_tangent.py.
+The Jacobian with the in-plane force is checked in tests/kernels/test_tangent.py.
 """
 
 from __future__ import annotations
@@ -35,7 +35,7 @@ from vibrofriction._kernels.sliding import orbit_slides, sliding_orbit
 from vibrofriction.schema import STATUS_BY_CODE, Status
 from vibrofriction.solver import solve_points
 
-DATA = json.loads((Path(__file__).parent / "data" / "inplane_reference.json").read_text())
+DATA = json.loads((Path(__file__).parents[1] / "data" / "inplane_reference.json").read_text())
 POINTS = DATA["points"]
 #: Agreement is required within SAFETY times the combined error bar (solver's error plus
 #: the reference's), plus the round-off of a mean of order 1.
@@ -240,7 +240,7 @@ def test_zero_amplitude_is_the_normal_only_solver() -> None:
 # --------------------------------------------------------------------------- refusals
 def test_zero_velocity_without_inplane_oscillation_is_the_static_limit() -> None:
     """``V = 0``, ``a_x = 0``: eq. (2) as before, also next to a point with ``a_x > 0``
-    (integrated: tests/test_inplane_vzero.py)."""
+    (integrated: tests/inplane/test_inplane_vzero.py)."""
     r = solve_points(0.5, 2.0, 0.5, 0.0)
     assert r["status"] == Status.STATIC.code and r["mu_ratio"] == 0.5
     r = solve_points(0.5, 2.0, 0.5, 0.0, a_x=[0.0, 0.5])

@@ -34,7 +34,7 @@ from vibrofriction._kernels import plane
 from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
 from vibrofriction.solver import solve_points
 
-DATA = json.loads((Path(__file__).parent / "data" / "plane_reference.json").read_text())
+DATA = json.loads((Path(__file__).parents[1] / "data" / "plane_reference.json").read_text())
 POINTS = DATA["points"]
 #: Agreement is required within SAFETY times the combined error bar.
 SAFETY = 3.0
@@ -267,7 +267,7 @@ def test_physical_transverse_amplitude() -> None:
 
 def test_refusals() -> None:
     """What the 2-D solver does not cover is refused (``V = 0`` is computed:
-    tests/test_plane_vzero.py)."""
+    tests/inplane/test_plane_vzero.py)."""
     with pytest.raises(ValueError, match="finite beta"):
         vf.friction_coefficient(vf.Dimensionless(0.5, math.inf, 0.5, a_y=0.5),
                                 v_inertial=0.3)

@@ -25,7 +25,7 @@ import vibrofriction as vf
 from vibrofriction import Dimensionless, Status, theory
 from vibrofriction.solver import SectionState, solve_points
 
-DATA = json.loads((Path(__file__).parent / "data" / "plane_vzero_reference.json").read_text())
+DATA = json.loads((Path(__file__).parents[1] / "data" / "plane_vzero_reference.json").read_text())
 PRELOAD = DATA["meta"]["preload"]
 SLIPS = [p for p in DATA["points"] if p["label"].startswith("slips")]
 HOLDS = [p for p in DATA["points"] if p["label"].startswith("held")]

@@ -217,7 +217,7 @@ def test_a_bad_exponent_is_named(value):
 
 @pytest.mark.parametrize("changes, needle", [
     (dict(eta_c=0.1), "eta_c"), (dict(a_y=0.5), "a_y"),
-    (dict(beta=math.inf), "beta")])  # a_x: computed (V != 0), tests/test_mdr_inplane.py
+    (dict(beta=math.inf), "beta")])  # a_x: computed (V != 0), tests/mdr/test_mdr_inplane.py
 def test_what_the_mdr_solver_does_not_cover_is_refused(changes, needle):
     system = vf.Dimensionless(**{**SPHERE, **changes})
     with pytest.raises(ValueError, match=f"MDR solver.*{needle} = "):
@@ -231,7 +231,7 @@ def test_curved_refusals_elsewhere():
     with pytest.raises(ValueError, match="initial"):
         vf.friction_coefficient(system, v_inertial=0.3, initial="rest")
     assert vf.simulate(system, v_inertial=0.3, periods=1, samples_per_period=8,
-                       springs=20).is_curved  # the MDR history (tests/test_mdr_history.py)
+                       springs=20).is_curved  # the MDR history (tests/mdr/test_mdr_history.py)
     with pytest.raises(ValueError, match="initial"):
         vf.simulate(system, v_inertial=0.3, initial="rest")
     pin = vf.Physical.from_bench(**BENCH, contact=Sphere(3e-3, STEEL, STEEL),
@@ -311,7 +311,7 @@ def test_docs_contact_geometry_code_runs():
     """The python block of docs/contact_geometry.md runs as written; what it states."""
     from pathlib import Path
 
-    text = (Path(__file__).resolve().parents[1] / "docs" / "contact_geometry.md").read_text()
+    text = (Path(__file__).resolve().parents[2] / "docs" / "contact_geometry.md").read_text()
     blocks = [b.split("```", 1)[0] for b in text.split("```python\n")[1:]]
     assert blocks
     ns: dict = {}

@@ -62,7 +62,7 @@ def test_reference_without_oscillation_is_unchanged():
     made before the in-plane oscillation was added to the reference (to 1e-10, not bit
     for bit: another machine's libm may round differently; on the machine that made the
     cache they are equal)."""
-    cached = json.loads((Path(__file__).parent / "data" / "mdr_reference.json")
+    cached = json.loads((Path(__file__).parents[1] / "data" / "mdr_reference.json")
                         .read_text())["points"]
     for p in cached[1:3]:
         r = mdr_reference(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
@@ -76,7 +76,7 @@ def test_reference_without_oscillation_is_unchanged():
 
 # 12 points with the reference cached by tests/data/make_mdr_inplane_reference.py (its own
 # code, no solver run there)
-CACHED = json.loads((Path(__file__).parent / "data" / "mdr_inplane_reference.json")
+CACHED = json.loads((Path(__file__).parents[1] / "data" / "mdr_inplane_reference.json")
                     .read_text())
 
 

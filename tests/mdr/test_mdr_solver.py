@@ -106,7 +106,7 @@ def test_static_limit_is_approached_as_V_falls():
 # 24 more points, drawn by a seeded generator over the regimes (stiff, soft, near a
 # resonance, general; jumping or not; damped or not; n from 0.7 to 5), with the reference
 # cached by tests/data/make_mdr_reference.py (its own code, no solver run there)
-RANDOM = json.loads((Path(__file__).parent / "data" / "mdr_reference.json").read_text())
+RANDOM = json.loads((Path(__file__).parents[1] / "data" / "mdr_reference.json").read_text())
 
 
 def test_random_reference_points_cover_the_regimes():

@@ -4,7 +4,7 @@ For seeded random points of every regime (``tests/reference_points.py``) the sol
 ``mu_ratio`` must be trusted and lie within its own stated ``error`` plus the reference's
 error bar ``err_ref`` of the reference value (eq. 25): a point the solver gives up on
 (failed, not converged, or a value it does not trust) is a failure, never an agreement
-(as in ``tests/test_differential_damped.py``). The reference
+(as in ``tests/reference/test_differential_damped.py``). The reference
 (:mod:`vibrofriction_reference`, peer B) shares no code with the solver; its error bar
 covers its discretisation error and its transient/averaging error (see
 ``reference_points``).

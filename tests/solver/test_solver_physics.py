@@ -32,7 +32,7 @@ def _contact_velocity(h, k):
 @pytest.mark.parametrize("alpha,beta,a", [r for r in REGIMES if r[1] != 0.9 and r[2] <= 1])
 @pytest.mark.parametrize("vbar", [1.05, 1.5, 3.0])
 def test_continuous_sliding_above_critical_velocity_gives_exactly_one(alpha, beta, a, vbar):
-    """Eqs. (10)-(12), for a contact that never opens (jumping: tests/test_trust.py)."""
+    """Eqs. (10)-(12), for a contact that never opens (jumping: tests/solver/test_trust.py)."""
     r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), vbar=vbar)
     assert r.trusted
     assert r.mu_ratio == pytest.approx(1.0, abs=1e-12)

@@ -39,7 +39,7 @@ def test_random_points_are_honest(la, lk, rigid, a, v):
         assert r.period >= 1 and 0.0 < r.error
         assert math.isnan(r.multiplier) or r.multiplier >= 0.0  # nan: no single chart
         # the error is what the orbit's verification says; trust follows from it alone
-        # (its calibration is tested in tests/test_differential.py and test_trust.py)
+        # (its calibration is tested in tests/reference/test_differential.py and test_trust.py)
     assert r.trusted == (r.success and r.error <= BUDGET.tol_trusted)
     if r.status in (vf.Status.PERIODIC, vf.Status.AVERAGED, vf.Status.SLIDING):
         total = r.stick_fraction + r.slip_fraction + r.flight_fraction

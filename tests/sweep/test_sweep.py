@@ -15,6 +15,7 @@ import xarray as xr
 
 import vibrofriction
 import vibrofriction.sweep as vsweep
+from sweep_grid import GRID, VBAR, assert_bitwise
 from vibrofriction import Dimensionless, Physical, friction_coefficient
 from vibrofriction.figures import cell_edges, is_geometric, plot_atlas
 from vibrofriction.solver import (
@@ -25,22 +26,6 @@ from vibrofriction.solver import (
     solve_points,
 )
 from vibrofriction.sweep import make_plan, parse_axis, sweep
-
-VBAR = np.linspace(0.0, 1.2, 13)
-GRID = dict(alpha=[0.01, 0.1, 0.3], beta=[2.0, 5.0], amplitude=0.5, vbar=VBAR)
-
-
-def assert_bitwise(a: xr.Dataset, b: xr.Dataset) -> None:
-    """Same variables, same coordinates, and every numeric array equal byte for byte."""
-    assert set(a.variables) == set(b.variables)
-    for name in a.variables:
-        x, y = a[name].values, b[name].values
-        assert a[name].dims == b[name].dims, name
-        if x.dtype.kind in "OUT" or y.dtype.kind in "OUT":
-            assert [str(v) for v in x.ravel()] == [str(v) for v in y.ravel()], name
-        else:
-            assert x.dtype == y.dtype, name
-            assert x.tobytes() == y.tobytes(), name
 
 
 @pytest.fixture(scope="module")

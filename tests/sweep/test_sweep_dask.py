@@ -14,7 +14,7 @@ import pytest
 import xarray as xr
 
 import vibrofriction.sweep as vsweep
-from test_sweep import GRID, assert_bitwise
+from sweep_grid import GRID, assert_bitwise
 from vibrofriction.sweep import open_atlas, sweep
 
 pytestmark = pytest.mark.slow  # a Dask cluster per module; the fast lane skips it

@@ -18,7 +18,7 @@ import xarray as xr
 import zarr
 
 import vibrofriction.sweep as vsweep
-from test_sweep import GRID, assert_bitwise
+from sweep_grid import GRID, assert_bitwise
 from vibrofriction.solver import SolverSettings
 from vibrofriction.sweep import compute_block, open_atlas, sweep
 
