@@ -33,8 +33,10 @@ from vibrofriction.solver.sensitivity import solve_gradients
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
-import bench_fit  # noqa: E402
+sys.path.insert(0, str(HERE.parent / "tests" / "solver"))
 import test_sensitivity  # noqa: E402
+
+import bench_fit  # noqa: E402
 
 FIT_MOVES = ("alpha", "beta", "amplitude", "v_inertial", "zeta")
 

@@ -35,13 +35,14 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
+sys.path.insert(0, str(ROOT / "tests" / "bench"))
 
 
 def tolerance() -> None:
     """Section 5: the 18 rows at the truth and the guess, tol_trusted 1e-5 and 1e-4."""
     import numpy as np
-
     import test_fit_mdr as t
+
     from vibrofriction.bench import predict_cof
     from vibrofriction.solver import SolverSettings
 
@@ -77,6 +78,7 @@ def main() -> None:
         tolerance()
         return
     import test_fit_mdr as t  # the test's set-up: data, truth, guess, the reference call
+
     from vibrofriction_reference.mdr import mdr_reference
 
     print("## 1. At the truth (no fit)\n")
