@@ -2,14 +2,14 @@ PYTHON ?= python3
 VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
-# pytest-xdist: one test process per core (-n auto; PYTEST_WORKERS=1 for a serial run); a
-# module whose tests share a module-scoped fixture (a wheel, a reproduction, a sweep, the
-# site) runs on one worker (--dist loadgroup, tests/conftest.py). The 25 slowest tests are
+# pytest-xdist: one test process per core (-n auto; PYTEST_WORKERS=0 for one process); the
+# tests of a module run on one worker (--dist loadfile), so that a module-scoped fixture (a
+# wheel, a reproduction, a sweep, the site) is computed once. The 25 slowest tests are
 # listed at the end. Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest
 # caches its rewritten test modules there (about 20 s of collection per worker otherwise)
 PYTEST_WORKERS ?= auto
 PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) \
-         --dist loadgroup --durations=25
+         --dist loadfile --durations=25
 
 .PHONY: demo test fast lint typecheck dist bench clean clean-cache browser docs
 

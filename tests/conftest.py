@@ -1,9 +1,10 @@
 """Shared fixtures and helpers for the test-suite.
 
-Under pytest-xdist (``make test``, ``make fast``: ``-n auto --dist loadgroup``) the tests
-of a module that defines a module-scoped fixture (a built wheel, a reproduction, a
-sweep, a rendered figure, the site's server) run on one worker, so that the fixture is
-computed once, not once per worker: they get the ``xdist_group`` of their module.
+Under pytest-xdist (``make test``, ``make fast``: ``-n auto --dist loadfile``) the tests
+of one module run on one worker, so that a module-scoped fixture (a built wheel, a
+reproduction, a sweep, a rendered figure, the site's server) is computed once, not once
+per worker. (``--dist loadgroup`` with an ``xdist_group`` per module would balance
+better, but pytest-xdist 3.8 on pytest 9.2 ignores the groups: pytest-xdist issue 1386.)
 """
 
 import numpy as np
@@ -21,19 +22,3 @@ def general_system():
 def rng():
     return np.random.default_rng(20170101)
 
-
-def _module_fixture(item: pytest.Item) -> bool:
-    """Whether ``item`` uses a module-scoped fixture of its own module."""
-    info = getattr(item, "_fixtureinfo", None)
-    if info is None:
-        return False
-    module = item.nodeid.split("::", 1)[0]
-    return any(defs[-1].scope == "module" and defs[-1].baseid == module
-               for defs in info.name2fixturedefs.values() if defs)
-
-
-@pytest.hookimpl(tryfirst=True)  # before xdist's own hook reads the groups
-def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item]) -> None:
-    for item in items:
-        if _module_fixture(item) and not item.get_closest_marker("xdist_group"):
-            item.add_marker(pytest.mark.xdist_group(item.nodeid.split("::", 1)[0]))
