@@ -149,6 +149,7 @@ def _cli(*args):
                           capture_output=True, text=True, timeout=300)
 
 
+@pytest.mark.slow
 def test_cli_mu_json_lines():
     out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5",
                "--vbar", "0.3,1.2", "--json")
@@ -163,6 +164,7 @@ def test_cli_mu_json_lines():
     assert json.loads(case4.stdout)["mu_ratio"] == pytest.approx(0.7427, abs=1e-3)
 
 
+@pytest.mark.slow
 def test_cli_mu_exits_3_with_a_count_when_a_point_is_not_trusted():
     # a slow jumping point (tests/test_trust.py's SLOW): not converged within 256 periods
     out = _cli("mu", "--alpha", "0.5343889244565606", "--beta", "2.82801636121696",
@@ -180,6 +182,7 @@ def test_cli_mu_exits_3_with_a_count_when_a_point_is_not_trusted():
     (("--alpha", "1", "--beta", "inf", "--amplitude", "0.5", "--vbar", "0.3"), "v_inertial"),
     (("--alpha", "0.5", "--beta", "2", "--amplitude", "x", "--vbar", "0.3"), "amplitude"),
 ])
+@pytest.mark.slow
 def test_cli_bad_input_exits_2_with_one_line(args, needle):
     out = _cli("mu", *args)
     assert out.returncode == 2

@@ -140,6 +140,7 @@ def test_friction_result_fields_are_the_schema() -> None:
     assert rs[1].mu_ratio == r.mu_ratio and rs[0].status is Status.STATIC
 
 
+@pytest.mark.slow
 def test_cli_json_prints_every_field() -> None:
     out = subprocess.run([sys.executable, "-m", "vibrofriction.cli", "mu", "--alpha", "0.5",
                           "--beta", "inf", "--amplitude", "0.5", "--vbar", "0,0.5", "--json"],
@@ -447,6 +448,7 @@ def test_validator_names_unknown_parameters_and_keeps_the_callers_order() -> Non
         validated({"amplitude": 1.5}, ranges={"amplitude": schema.Range(0.0, maximum=1.0)})
 
 
+@pytest.mark.slow
 def test_sweep_parameters_and_coordinates_are_the_schema() -> None:
     """The sweep's parameter names and every coordinate's units and long name come from
     the schema, for a dimensionless and a physical grid."""

@@ -70,6 +70,7 @@ def drive():
                      n_omega=5, n_du_z=3, n_du_x=4, n_phase=8)
 
 
+@pytest.mark.slow
 def test_the_drive_respects_the_limits_and_beats_a_brute_force_grid(drive):
     s = drive.system
     assert 0.8 * W <= s.omega <= 1.25 * W and 0.25 * U <= s.du_z <= 0.75 * U
@@ -254,6 +255,7 @@ def test_the_transverse_design_against_a_brute_force_grid(k_y):
     assert "across the sliding" in res.report()
 
 
+@pytest.mark.slow
 def test_the_design_chooses_the_transverse_direction_where_it_is_best():
     """Normal, longitudinal and transverse allowed within one velocity limit (the rule
     "each"): every row of ``directions`` is the by-hand conversion's value, each within its

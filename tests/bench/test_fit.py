@@ -188,6 +188,7 @@ def test_every_named_parameter_is_varied_and_derived_quantities_are_reported():
     assert "derived: f_n [Hz]" in res.report() and "c_x [N s/m]" in res.report()
 
 
+@pytest.mark.slow
 def test_a_wrong_constraint_gives_a_poor_verdict_and_intervals_that_hold_the_truth(tmp_path):
     """The guess's natural frequency is 14 % high and ``natural_frequency`` holds it: the
     fit cannot reach the truth.  Its profile intervals (conditional on the fit being right)
@@ -331,6 +332,7 @@ def test_the_reference_data_set_is_what_its_json_says():
     assert 1e-3 < chi2_dist.sf(chi2, len(data)) < 1 - 1e-3, chi2
 
 
+@pytest.mark.slow
 def test_fit_to_reference_data_holds_the_truth():
     """Held-out data made by the independent reference, mu0 and k_xc off by 1.3 and 1.6:
     the 95 % intervals hold the truth, or the verdict says the fit is poor (and then the
@@ -424,6 +426,7 @@ def test_save_and_load(tmp_path):
     assert len(fig.axes) == 2
 
 
+@pytest.mark.slow
 def test_profile_interval_is_where_chi_square_rises_by_four():
     """One free parameter: its profile is chi-square itself.  Scanned on a fine grid of
     ``mu0`` with :func:`predict_cof` (``mu0`` also sets the velocity scale, so the curve

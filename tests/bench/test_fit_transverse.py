@@ -59,6 +59,7 @@ def test_the_model_at_the_truth_scatters_as_sigma() -> None:
     assert axisymmetric > at_truth + 5.0
 
 
+@pytest.mark.slow
 def test_fit_to_transverse_reference_data_holds_the_truth() -> None:
     """mu0 and k_xc fitted (local stage and profiles; the global stage works too but
     takes minutes with 2-D rows) from a guess off by 1.2 and 1.4: a good fit whose 95 %

@@ -30,6 +30,7 @@ def bench_file(tmp_path):
     return path
 
 
+@pytest.mark.slow
 def test_mu_for_a_bench_file(bench_file):
     out = _cli("mu", "--bench", str(bench_file), "--v0", "0.01", "--json")
     assert out.returncode == 0, out.stderr
@@ -41,6 +42,7 @@ def test_mu_for_a_bench_file(bench_file):
     assert bad.returncode == 2 and "no bench file" in bad.stderr
 
 
+@pytest.mark.slow
 def test_fit_from_the_command_line(bench_file, tmp_path):
     pin = vf.Physical.from_bench_file(bench_file)
     v0 = np.geomspace(1e-3, 0.1, 12)
@@ -59,6 +61,7 @@ def test_fit_from_the_command_line(bench_file, tmp_path):
     assert bad.returncode == 2 and "free must name" in bad.stderr
 
 
+@pytest.mark.slow
 def test_design_from_the_command_line(bench_file, tmp_path):
     out = _cli("design", "--bench", str(bench_file), "--v0", "0.01", "--frequency-hz",
                "300:3000", "--du-z", "0:5e-7", "--max-velocity-amplitude", "0.005",
@@ -81,6 +84,7 @@ def test_design_from_the_command_line(bench_file, tmp_path):
     assert bad.returncode == 2 and "needs an in-plane oscillation" in bad.stderr
 
 
+@pytest.mark.slow
 def test_inplane_drive_design_from_the_command_line(bench_file, tmp_path):
     out = _cli("design", "--bench", str(bench_file), "--v0", "0.002", "--frequency-hz",
                "300:3000", "--du-z", "0:5e-7", "--du-x", "0:4e-6", "--goal", "drive",
@@ -93,6 +97,7 @@ def test_inplane_drive_design_from_the_command_line(bench_file, tmp_path):
     assert saved.attrs["goal"] == "drive"
 
 
+@pytest.mark.slow
 def test_fit_from_the_command_line_refuses_a_parameter_a_constraint_holds(bench_file,
                                                                           tmp_path):
     csv = tmp_path / "m.csv"

@@ -33,6 +33,7 @@ def _load(name: str):
     ("paper_experiment", ["paper_experiment.png"]),
     pytest.param("fit_pin_on_disk", ["fit_pin_on_disk.png"], marks=pytest.mark.slow),
 ])
+@pytest.mark.slow
 def test_example_runs_as_a_script(name, pngs, tmp_path):
     out = subprocess.run([sys.executable, str(EXAMPLES / f"{name}.py"), str(tmp_path)],
                          capture_output=True, text=True, timeout=300, cwd=tmp_path)

@@ -241,6 +241,7 @@ def test_shares_of_the_curve_merge_into_the_whole():
                                   compute.curve(stiff)["closed_forms"][0]["y"])
 
 
+@pytest.mark.slow
 def test_explorer_computes_in_worker_processes_without_a_server(monkeypatch):
     """The notebook path: no Bokeh server, the computations awaited on an event loop."""
     import asyncio

@@ -186,6 +186,7 @@ def test_soft_law_corrected_against_the_solver_near_the_soft_limit() -> None:
 
 
 @pytest.mark.parametrize("how", ["use", "env"])
+@pytest.mark.slow
 def test_importing_the_figures_leaves_the_matplotlib_backend_alone(tmp_path: Path,
                                                                     how: str) -> None:
     """A notebook's backend must survive ``import vibrofriction.figures``, the rendering of

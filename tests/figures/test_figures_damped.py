@@ -59,6 +59,7 @@ def test_damped_recipes_follow_the_paper_and_quick_is_smaller() -> None:
 
 
 @pytest.mark.parametrize("name", NAMES)
+@pytest.mark.slow
 def test_each_recipe_renders_figure_table_and_checks(rendered, name: str) -> None:
     r, curves, result = rendered[name]
     assert result.figure is not None and result.figure.axes

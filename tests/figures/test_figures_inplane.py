@@ -45,6 +45,7 @@ def test_inplane_recipes_are_registered_in_order_with_smaller_quick_grids() -> N
         assert q.points < f.points / 4
 
 
+@pytest.mark.slow
 def test_each_recipe_renders_a_figure_one_table_and_passing_checks(rendered) -> None:
     recipe, curves, result, png = rendered
     assert png.stat().st_size > 20_000

@@ -66,6 +66,7 @@ def test_fig19_sphere_contact_renders_with_its_checks(tmp_path) -> None:
     assert "27 %" in recipe.caption and f"{100 * centre_open:.1f} %" in out.notes
 
 
+@pytest.mark.slow
 def test_each_recipe_renders_a_figure_and_one_table(rendered) -> None:
     recipe, curves, result, png = rendered
     assert png.stat().st_size > 20_000
@@ -77,6 +78,7 @@ def test_each_recipe_renders_a_figure_and_one_table(rendered) -> None:
     assert any(math.isfinite(c.series.profile_exponent) for c in curves.values())
 
 
+@pytest.mark.slow
 def test_stiff_panels_meet_the_stiff_law(rendered) -> None:
     recipe, curves, result, _ = rendered
     if recipe.name != "fig17_shape":

@@ -21,6 +21,10 @@ import pytest
 from vibrofriction import theory
 from vibrofriction.figures import all_recipes
 
+# slow: the module reproduces every figure once (about 50 s of CPU), and its command
+# line tests start the package in a subprocess each
+pytestmark = pytest.mark.slow
+
 FIGURES = [r.name for r in all_recipes(quick=True)]
 
 # Largest deviations measured on the full grids (docs/theory.md), with a little room.

@@ -108,6 +108,7 @@ def test_sweep_mirror_symmetry_and_mount() -> None:
     assert np.max(np.abs(out["substrate"] - out["holder"])) > 0.05
 
 
+@pytest.mark.slow
 def test_physical_sweep_over_the_inplane_amplitude() -> None:
     p = Physical(**PIN, phase_x=1.0, inplane_on="holder")
     ds = sweep(p, du_x=[0.0, 1e-6], v0=[-0.01, 0.01], workers=1, progress=False)
@@ -135,6 +136,7 @@ def _cli(*args: str) -> subprocess.CompletedProcess:
                           capture_output=True, text=True, timeout=300)
 
 
+@pytest.mark.slow
 def test_cli_mu_inplane_signed_velocity() -> None:
     out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--a-x", "0.5",
                "--phase-x", "0.9", "--inplane-on", "holder", "--v-inertial", "-0.05,0.05",
@@ -153,6 +155,7 @@ def test_cli_mu_inplane_signed_velocity() -> None:
     assert bad.returncode == 2 and "--du-x, --du-y (m) need a physical set-up" in bad.stderr
 
 
+@pytest.mark.slow
 def test_cli_mu_physical_inplane() -> None:
     si = [f"--{k.replace('_', '-')}={v!r}" for k, v in PIN.items()]
     out = _cli("mu", *si, "--du-x", "1e-6", "--phase-x", "1", "--v0", "-0.01", "--json")
@@ -162,6 +165,7 @@ def test_cli_mu_physical_inplane() -> None:
     assert row["mu_ratio"] == expect.mu_ratio and row["system"]["a_x"] > 0
 
 
+@pytest.mark.slow
 def test_cli_sweep_inplane(tmp_path) -> None:
     out = _cli("sweep", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5", "--a-x", "0.5",
                "--phase-x", "0,1.5", "--v-inertial", "-0.5,0.5", "--inplane-on", "holder",
@@ -173,6 +177,7 @@ def test_cli_sweep_inplane(tmp_path) -> None:
     assert ds.attrs["inplane_on"] == "holder" and bool(ds.trusted.all())
 
 
+@pytest.mark.slow
 def test_docs_inplane_code_runs() -> None:
     """The python blocks of docs/inplane.md run as written."""
     from pathlib import Path
@@ -229,6 +234,7 @@ def test_inplane_measurements_are_read_and_predicted() -> None:
         vf.read_measurements(data.drop(columns=["du_x", "du_y"]))
 
 
+@pytest.mark.slow
 def test_fit_to_inplane_reference_data_holds_the_truth() -> None:
     """mu0 and k_xc fitted to the held-out in-plane data from a guess off by 1.3 and 1.6:
     the 95 % intervals hold the truth, and the mount is the guess's."""
@@ -290,6 +296,7 @@ def test_transverse_oscillation_is_refused_where_not_asked_for() -> None:
     assert h.is_plane and np.any(h.f_y != 0.0)
 
 
+@pytest.mark.slow
 def test_cli_transverse() -> None:
     """``--a-y``/``--phase-y`` (and ``--du-y`` in SI) reach the 2-D solver: the table gains
     the lateral column, --json carries lateral_ratio, and the values are the library's."""

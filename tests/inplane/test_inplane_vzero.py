@@ -66,6 +66,7 @@ def _band(p: tuple) -> tuple[float, float]:
 
 
 @pytest.mark.parametrize("p", SLIPS)
+@pytest.mark.slow
 def test_slipping_at_zero_velocity_is_one_number(p: tuple) -> None:
     """No stuck band: the solver's value from rest and from a preload of half the friction
     limit agree within their errors and with the reference from both starts."""
@@ -85,6 +86,7 @@ def test_slipping_at_zero_velocity_is_one_number(p: tuple) -> None:
 
 
 @pytest.mark.parametrize("p", HOLDS)
+@pytest.mark.slow
 def test_held_at_zero_velocity_says_so(p: tuple) -> None:
     """A stuck band: from rest and from a preload of half the friction limit the contact
     sticks through the whole window, the status is HELD (not trusted), the two values

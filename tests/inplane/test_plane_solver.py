@@ -170,6 +170,7 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver(q) -> None:
 
 
 # --------------------------------------------------------------------------- kinematic limit
+@pytest.mark.slow
 def test_kinematic_transverse_law_is_approached_as_the_system_stiffens() -> None:
     """``a = 0``, substrate: a body held by a stiff, well-damped pin (elastic contact ``k =
     alpha``) moves at ``V`` and the mean friction tends to ``(2/pi) K(m)/sqrt(1 + eps^2)``
@@ -225,6 +226,7 @@ def test_x_mirror_of_a_backward_velocity() -> None:
 
 
 # --------------------------------------------------------------------------- |f| <= n
+@pytest.mark.slow
 def test_contact_force_stays_in_the_cone_along_the_orbit() -> None:
     """Step by step over two periods of random points' motions from the sliding start:
     ``|f| <= n`` at every accepted step end (stick: the switch function >= 0)."""
@@ -277,6 +279,7 @@ def test_refusals() -> None:
         vf.Dimensionless(0.5, 2.0, 0.5, a_y=-1.0)
 
 
+@pytest.mark.slow
 def test_cli_takes_the_pin_across() -> None:
     import subprocess
     import sys

@@ -243,6 +243,7 @@ def test_first_root_finds_the_earliest_of_close_roots():
                                           (9.0, 0.0, 0.0), (900.0, 0.0, 0.0), (1.0, 0.05, 0.0),
                                           (900.0, 0.3, 0.0), (1.0, 2.0, 0.0), (4.0, 50.0, 0.0),
                                           (1.0, 0.1, 30.0), (1e4, 1e3, 0.0)])
+@pytest.mark.slow
 def test_first_root_misses_nothing_against_dense_sampling(w0sq, sig, r, rng):
     m = _mode(w0sq, sig, r)
     T = 2 * math.pi

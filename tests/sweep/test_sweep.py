@@ -217,6 +217,7 @@ def test_bitwise_identical_for_any_chunking(serial: xr.Dataset, chunk_size: int)
     assert_bitwise(serial, sweep(**GRID, workers=1, chunk_size=chunk_size, progress=False))
 
 
+@pytest.mark.slow
 def test_bitwise_identical_on_local_cores(serial: xr.Dataset) -> None:
     assert_bitwise(serial, sweep(**GRID, workers=2, chunk_size=11, progress=False))
 
@@ -258,6 +259,7 @@ def test_dimensionless_base_system_with_overrides() -> None:
 
 
 # --------------------------------------------------------------------------- continuation
+@pytest.mark.slow
 def test_continuation_up_then_down_from_previous_states() -> None:
     vbar = np.linspace(0.05, 1.2, 8)
     ds = sweep(alpha=[0.01, 0.3], beta=2.0, amplitude=0.5, vbar=vbar, continuation=True,
@@ -320,6 +322,7 @@ def _walk_by_hand(alpha: float, beta: float, amplitude: float, V: np.ndarray,
     return up, down[::-1]
 
 
+@pytest.mark.slow
 def test_continuation_over_v_inertial() -> None:
     V = np.array([0.0, 0.05, 0.1, 0.2, 0.4, 0.8])  # starts at the static limit (no state)
     ds = sweep(alpha=[0.01, 1.0], beta=4.0, amplitude=0.5, v_inertial=V, continuation=True,
@@ -343,6 +346,7 @@ def pin(**changes) -> Physical:
     return Physical(**base)
 
 
+@pytest.mark.slow
 def test_physical_sweep() -> None:
     system = pin()
     v0 = np.linspace(0.0, 2.0 * system.critical_velocity(), 6)
@@ -365,6 +369,7 @@ def test_physical_sweep() -> None:
                              workers=2, chunk_size=4, progress=False))
 
 
+@pytest.mark.slow
 def test_continuation_over_a_physical_grid() -> None:
     system = pin()
     v0 = np.linspace(0.2, 1.6, 5) * system.critical_velocity()
@@ -443,6 +448,7 @@ def test_cli_sweep_and_plot(tmp_path: Path) -> None:
     (["sweep", "--mass", "1", "--v0", "0.1", "--out", "x.zarr"], "missing --k-x"),
     (["plot", "nothing.zarr", "--out", "x.png"], "not a vibrofriction sweep store"),
 ])
+@pytest.mark.slow
 def test_cli_bad_input_is_one_line_and_exit_2(tmp_path: Path, args, message) -> None:
     r = _cli(*args, cwd=tmp_path)
     assert r.returncode == 2, (r.stdout, r.stderr)
@@ -465,6 +471,7 @@ def test_plot_function_curves_and_map(serial: xr.Dataset, tmp_path: Path) -> Non
         plot_atlas(serial, var="nope")
 
 
+@pytest.mark.slow
 def test_cli_sweep_exits_3_when_points_are_not_trusted(tmp_path: Path) -> None:
     r = _cli("sweep", "--alpha", "0.01,0.1,0.3", "--beta", "2,5", "--amplitude", "0.5",
              "--vbar", "0:1.2:13", "--out", "atlas.zarr", "--workers", "1",
@@ -497,6 +504,7 @@ def store(tmp_path_factory) -> Path:
     ("beta=abc", "--sel beta='abc': the value must be a number"),
     ("direction=up", "--sel direction: not a dimension"),
 ])
+@pytest.mark.slow
 def test_cli_plot_bad_sel_is_one_line_and_exit_2(store: Path, tmp_path: Path, sel,
                                                 message) -> None:
     r = _cli("plot", str(store), "--sel", sel, "--out", "x.png", cwd=tmp_path)

@@ -92,6 +92,7 @@ def test_interrupted_sweep_resumes_only_unfinished_blocks(
      r"settings.max_periods: store has 20000, this call 100"),
     (dict(initial="rest"), r"initial: store has 'sliding', this call 'rest'"),
 ])
+@pytest.mark.slow
 def test_store_of_another_sweep_is_a_clear_error(tmp_path: Path, changes, message) -> None:
     path = tmp_path / "atlas.zarr"
     sweep(**GRID, store=path, workers=1, chunk_size=40, progress=False)

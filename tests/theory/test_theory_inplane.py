@@ -179,6 +179,7 @@ def test_zero_inplane_amplitude_gives_the_normal_only_critical_velocity():
 @pytest.mark.parametrize("on", ["substrate", "holder"])
 @pytest.mark.parametrize("system", [(0.5, 2.0, 0.5, 0.0, 0.0), (0.3, 4.0, 0.8, 0.1, 0.2),
                                     (2.0, 3.0, 0.6, 0.05, 0.5)])
+@pytest.mark.slow
 def test_the_cancelling_phase_minimises_the_integrated_amplitude(system, on):
     alpha, beta, a, zeta, eta_c = system
     cancel = theory.inplane_cancellation(alpha, beta, a, zeta, eta_c, on)

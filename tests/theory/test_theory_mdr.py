@@ -67,6 +67,7 @@ def _quasi_static_row(vbar: float, c: np.ndarray, steps: int = 20_000) -> tuple[
 
 @pytest.mark.parametrize("vbar, a", [(0.1, 1.3), (0.4, 1.3), (0.2, 2.5), (0.7, 4.0),
                                      (0.3, 0.8)])
+@pytest.mark.slow
 def test_flat_stiff_law_with_jumping_against_a_brute_force(vbar, a):
     sf, sn = _quasi_static_row(vbar, np.array([1.0 / a]))
     assert theory.mu_ratio_stiff_flat(vbar, a) == pytest.approx(sf / sn, abs=3e-4)
@@ -84,6 +85,7 @@ def test_flat_stiff_law_extends_the_exact_law():
 
 @pytest.mark.parametrize("n", [1.0, 2.0])
 @pytest.mark.parametrize("vbar, a", [(0.15, 0.5), (0.5, 0.5), (0.3, 1.5)])
+@pytest.mark.slow
 def test_profile_stiff_law_against_a_brute_force_row(n, vbar, a):
     m = 400
     xi_max = (1 + a) ** (1 / n)
