@@ -184,6 +184,7 @@ def _cli(*args: str) -> subprocess.CompletedProcess:
                           text=True, timeout=300)
 
 
+@pytest.mark.slow
 def test_cli_mu_with_damping_and_for_a_physical_set_up():
     out = _cli("mu", "--alpha", "1", "--beta", "inf", "--amplitude", "0.5", "--zeta", "0.02",
                "--vbar", "0.5,1.01", "--json")
@@ -207,6 +208,7 @@ def test_cli_mu_with_damping_and_for_a_physical_set_up():
     assert bad.returncode == 2 and "--quality-factor" in bad.stderr
 
 
+@pytest.mark.slow
 def test_sweep_over_damping_axes(tmp_path):
     ds = vf.sweep(alpha=0.5, beta=2.0, amplitude=0.5, zeta=[0.0, 0.05], eta_c=[0.0, 0.2],
                   vbar=[0.5, 1.2], workers=1, progress=False)

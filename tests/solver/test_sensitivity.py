@@ -240,6 +240,7 @@ def test_fit_jacobian_falls_back_to_the_solver_where_there_is_no_sensitivity(mon
     assert np.max(err) < 1e-4, err.max(axis=0)
 
 
+@pytest.mark.slow
 def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
     """The lower profile of ``mass`` in the 5-parameter fit of benchmarks/bench_fit.py (data
     seed 11): with the exact Jacobian alone a refit at mass 0.00944 stopped 4.26 above the

@@ -173,6 +173,7 @@ def test_damaged_blocks_are_found_and_recomputed(tmp_path: Path, monkeypatch,
     assert_bitwise(reference, ds.load())
 
 
+@pytest.mark.slow
 def test_local_cores_into_store_equal_serial(tmp_path: Path, reference: xr.Dataset) -> None:
     ds = sweep(**GRID, store=tmp_path / "a.zarr", workers=2, chunk_size=7, progress=False)
     assert_bitwise(reference, ds.load())
