@@ -39,6 +39,7 @@ def _by_hand(v0, omega, du_z, du_x, phase_x):
 
 @pytest.mark.parametrize("V", [0.05, 0.2])
 @pytest.mark.parametrize("damped", [False, True])
+@pytest.mark.slow
 def test_the_friction_optimum_phase_is_opposite_the_cancellation_phase(V, damped):
     """Amplitudes fixed (a_x = 0.5), the phase free: friction is lowest at theory's
     *adding* phase, ``inplane_cancellation().phase_x + pi`` (the largest V_c), and highest
@@ -95,6 +96,7 @@ def test_the_drive_respects_the_limits_and_beats_a_brute_force_grid(drive):
     assert abs(ref.mu_ratio - drive.mu_ratio) <= 3 * (ref.mu_error + drive.error) + 1e-9
 
 
+@pytest.mark.slow
 def test_the_drive_reports_its_idle_velocity_and_blocking_force(drive):
     s = drive.system
     assert drive.goal == "drive" and drive.mu_ratio < 0.0 and drive.blocking_trusted
@@ -121,6 +123,7 @@ def test_the_drive_blocking_force_against_the_static_band():
     assert res.mu_ratio > 0.0 and math.isnan(res.idle_velocity) and "none" in res.idle_message
 
 
+@pytest.mark.slow
 def test_directions_and_the_each_rule():
     """The velocity rule "each" limits omega du_z and omega du_x separately; the table
     of directions holds the best normal-only and longitudinal-only choices, each inside
@@ -228,6 +231,7 @@ def _by_hand_y(v0, omega, du_z, du_y, phase_y, pin=PIN):
 
 
 @pytest.mark.parametrize("k_y", [None, 0.3 * M * W**2])
+@pytest.mark.slow
 def test_the_transverse_design_against_a_brute_force_grid(k_y):
     """Transverse only (``du_z = 0``, no ``du_x``), one frequency: the design's COF is the
     smallest of a brute-force grid of 2-D solves over ``du_y`` made here, and, friction

@@ -14,6 +14,7 @@ from vibrofriction.explorer.state import State
 from vibrofriction.explorer.views import CurveView, HistoryView
 
 
+@pytest.mark.slow
 def test_import_vibrofriction_does_not_import_panel():
     import subprocess
     import sys
@@ -209,6 +210,7 @@ def test_exports():
         exports.figure_bytes(c, "gif")
 
 
+@pytest.mark.slow
 def test_explorer_builds_and_refuses_bad_input_inline(monkeypatch):
     pn = pytest.importorskip("panel")
     from vibrofriction.explorer import page as app_module
@@ -410,6 +412,7 @@ def test_profile_selector_names_and_the_curved_refusals():
     assert not sphere.rest_refused and not State(a_x=0.2).rest_refused  # flat: V = 0 kept
 
 
+@pytest.mark.slow
 def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     """A sphere's curve: the library's MDR answer point for point (40 points at most), the
     static value and the mean normal force of its force law by quadrature, the stiff law

@@ -258,6 +258,7 @@ def _sweep(regime, points):
 
 
 @pytest.mark.parametrize("regime", REGIMES)
+@pytest.mark.slow
 def test_jacobian_and_gradient_match_differences(regime):
     _sweep(regime, random_points(2026, 8, regime))
 
@@ -271,6 +272,7 @@ def _with_inplane(points, seed):
 
 
 @pytest.mark.parametrize("regime", REGIMES)
+@pytest.mark.slow
 def test_jacobian_and_gradient_match_differences_inplane(regime):
     """The same with the in-plane force ``h`` (in the vector field before and after each
     event, and in a rigid stick's force and its event's time derivative)."""

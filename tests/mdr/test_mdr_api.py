@@ -294,6 +294,7 @@ def _cli(*args):
                           capture_output=True, text=True, timeout=300)
 
 
+@pytest.mark.slow
 def test_cli_mu_profile_exponent():
     out = _cli("mu", "--alpha", "0.5", "--beta", "2", "--amplitude", "0.5",
                "--profile-exponent", "2", "--v-inertial", "0.3", "--json")

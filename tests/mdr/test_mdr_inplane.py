@@ -45,6 +45,7 @@ def test_flat_punch_is_the_single_spring_solver_with_a_x(alpha, beta, a, V, zeta
 @pytest.mark.parametrize("alpha, beta, a, V, zeta, a_x, phase_x, on", [
     (0.5, 2.0, 0.5, 0.3, 0.0, 0.5, 1.0, "substrate"),
     (1.3, 4.0, 1.4, 0.8, 0.05, 1.2, 2.5, "holder")])
+@pytest.mark.slow
 def test_reference_flat_punch_is_the_1d_inplane_reference(alpha, beta, a, V, zeta, a_x,
                                                           phase_x, on):
     """The spring row (velocity Verlet, return mapping) against the 1-D in-plane reference
@@ -146,6 +147,7 @@ def test_what_is_still_refused_is_named(kw, name):
         mdr_friction(0.5, 2.0, 0.5, 0.0, 2.0, a_x=0.5)
 
 
+@pytest.mark.slow
 def test_cli_mu_curved_with_a_x():
     """`vibrofriction mu --profile-exponent 2 --a-x ...` gives the solver's values (it
     printed a critical velocity, not derived for a curved profile, and failed)."""

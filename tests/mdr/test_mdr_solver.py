@@ -29,6 +29,7 @@ def test_flat_punch_is_the_single_spring_solver(alpha, beta, a, V, zeta):
 @pytest.mark.parametrize("alpha, beta, a, V, zeta, n", [
     (0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 1.5, 0.3, 0.0, 2.0),
     (1.0, 3.0, 0.7, 0.5, 0.1, 1.0)])
+@pytest.mark.slow
 def test_equal_row_is_the_reference_as_its_step_falls(alpha, beta, a, V, zeta, n):
     """Same 20 springs: the reference's distance falls (second order) towards the exact row."""
     exact = mdr_row(alpha, beta, a, V, n, 20, zeta)
@@ -59,6 +60,7 @@ FINER = {(0.7, 1.5, 0.9, 0.1, 0.0, 2.0): {"resolutions": ((200, 800), (400, 1600
 
 
 @pytest.mark.parametrize("alpha, beta, a, V, zeta, n", POINTS)
+@pytest.mark.slow
 def test_agrees_with_the_reference_within_the_error_bars(alpha, beta, a, V, zeta, n):
     r = mdr_friction(alpha, beta, a, V, n, zeta=zeta)
     ref = mdr_reference(alpha, beta, a, V, n, transient_periods=300, average_periods=20,

@@ -44,6 +44,7 @@ POINTS = [
 
 
 @pytest.mark.parametrize("p", POINTS, ids=[p[-1] for p in POINTS])
+@pytest.mark.slow
 def test_damped_solver_agrees_with_the_damped_reference(p):
     alpha, beta, a, V, zeta, eta, _ = p
     r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a, zeta, eta), v_inertial=V)

@@ -167,6 +167,7 @@ def test_return_mapping_convergence_order(params, min_order):
     [STICK_SLIP, JUMPING, RIGID_CASE_IV, (0.5, 2.0, 1.0, 0.05)],
     ids=["stick-slip", "jumping-a1.5", "rigid-case-IV-V3", "grazing-a1"],
 )
+@pytest.mark.slow
 def test_peers_agree(params):
     # same initial state and windows: the difference is discretisation error only.
     # Observed |A - B(12800)|: 4e-9, 8e-8, 2e-7, 6e-9; |A - B(400)| < 8e-5.

@@ -75,6 +75,7 @@ STEPS = {"finite": (200, 800, 3200), "rigid": (800, 3200, 12800)}
 
 
 @pytest.mark.parametrize("p", POINTS, ids=[p[-1] for p in POINTS])
+@pytest.mark.slow
 def test_the_two_peers_agree_within_their_errors(p):
     """Peer A (events, rtol 1e-10; its error from a run at rtol 1e-8) against peer B's
     finest run, whose error is bounded by its distance to the two coarser runs (4 and 16
@@ -205,6 +206,7 @@ def test_peer_b_is_stable_with_steps_longer_than_the_dashpot_times(p, coarse_ste
 # --- (e) continuous sliding above the damped critical velocity --------------------------
 
 
+@pytest.mark.slow
 def test_continuous_sliding_above_the_damped_critical_velocity():
     alpha, beta, a, zeta, eta = 0.3, 2.0, 0.5, 0.05, 0.2
     gamma, k = 2.0 * zeta * math.sqrt(alpha), beta - alpha

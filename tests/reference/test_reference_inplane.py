@@ -40,6 +40,7 @@ def _bar(fun, *args, **kw):
 
 
 @pytest.mark.parametrize("p", ONE_D, ids=[p[-1] for p in ONE_D])
+@pytest.mark.slow
 def test_zero_inplane_amplitude_is_the_1d_peer_a(p):
     """Measured differences: 2.4e-12 to 8.6e-11 (benchmarks/inplane_reference_numbers.py)."""
     alpha, beta, a, V, zeta, eta, _ = p
@@ -92,6 +93,7 @@ def _kinematic_error(S, V, law, eta_c, **kw):
 
 @pytest.mark.parametrize("mode", ["substrate", "holder"])
 @pytest.mark.parametrize("direction, eta_c", [("x", 0.0), ("x", 0.2), ("y", 0.2)])
+@pytest.mark.slow
 def test_kinematic_laws_of_a_body_with_imposed_velocity(mode, direction, eta_c):
     """A body whose velocity is imposed, ``u' = (V, 0)`` (holder: ``(V + X', Y')``), on a
     substrate moving at ``v_s = (X', Y')`` (holder: at rest) slips at ``w = u' - v_s``
@@ -145,6 +147,7 @@ MIRROR = [
 
 
 @pytest.mark.parametrize("p, kw", MIRROR)
+@pytest.mark.slow
 def test_mirror_symmetry(p, kw):
     """``x -> -x`` maps the motion at ``(V, phase_x)`` from the sliding start onto the one
     at ``(-V, phase_x + pi)`` from the mirrored start: ``mu`` changes sign, the lateral
@@ -183,6 +186,7 @@ def test_friction_cone_and_energy_balance_per_period(p, kw):
 # --- (e) the error estimate of the steady-state means ---------------------------------
 
 
+@pytest.mark.slow
 def test_inplane_mean_error_bounds_a_longer_transient():
     kw = {"zeta": 0.02, "eta_c": 0.3, "a_x": 0.4, "phase_x": 1.0, "a_y": 0.3,
           "phase_y": 0.5}

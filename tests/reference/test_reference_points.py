@@ -129,6 +129,7 @@ def test_reference_mu_refuses_an_odd_window():
     + [(0.10315961089162809, 0.618467828993157, 2.3298697444586516, 2.2260654970135954)],
     ids=["general", "stiff", "jumping", "plateau-of-400-and-3200"],
 )
+@pytest.mark.slow
 def test_reference_error_bar_covers_a_finer_later_run(point):
     # a run with 4 times finer steps, after a 5 times longer transient: its own error is
     # far below the bar, so |mu - finer| must be within err

@@ -36,6 +36,7 @@ def _velocity(p):
 
 
 @pytest.mark.parametrize("p", POINTS, ids=lambda p: "-".join(f"{x:g}" for x in p if x is not None))
+@pytest.mark.slow
 def test_exact_solver_agrees_with_fixed_step_reference(p):
     s, V = _velocity(p)
     r = vf.friction_coefficient(s, v_inertial=V)

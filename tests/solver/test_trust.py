@@ -102,6 +102,7 @@ def _assert_friction_deficit_dies_out(m):
 @pytest.mark.parametrize("p", [(0.5, 2.0, 0.5, 0.3), (0.01, 0.02, 0.5, 0.5),
                                (0.5, 2.0, 1.5, 0.5), (2.0, 5.0, 0.8, 0.4),
                                (31.083, 33.976, 0.8507, 0.23652)])
+@pytest.mark.slow
 def test_periodic_error_bounds_the_distance_to_the_long_time_mean(p):
     """The error of a periodic result bounds |mu - lim of period means| (same start)."""
     s = vf.Dimensionless(*p[:3])
@@ -208,6 +209,7 @@ def test_trusted_is_status_and_error_against_the_settings_tolerance():
 # ----------------------------------------------------------------- finding 5: settling
 @pytest.mark.parametrize("p", [(31.083, 33.976, 0.8507, 0.23652), (0.5, 2.0, 0.5, 0.3),
                                (10.467, 49.110, 1.302, 1.460)])
+@pytest.mark.slow
 def test_settling_time_and_multiplier_match_a_long_integration(p):
     s = vf.Dimensionless(*p[:3])
     r = vf.friction_coefficient(s, vbar=p[3])
