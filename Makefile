@@ -2,6 +2,14 @@ PYTHON ?= python3
 VENV   ?= .venv
 BIN     = $(VENV)/bin
 OUT    ?= reproduction
+# pytest-xdist: one test process per core (-n auto; PYTEST_WORKERS=0 for one process); the
+# tests of a module run on one worker (--dist loadfile), so that a module-scoped fixture (a
+# wheel, a reproduction, a sweep, the site) is computed once. The 25 slowest tests are
+# listed at the end. Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest
+# caches its rewritten test modules there (about 20 s of collection per worker otherwise)
+PYTEST_WORKERS ?= auto
+PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) \
+         --dist loadfile --durations=25
 
 .PHONY: demo test fast lint typecheck dist bench clean clean-cache browser docs
 
@@ -25,18 +33,22 @@ docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as err
 	$(BIN)/python -m sphinx -b html -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
 	@echo "site: docs/_build/html/index.html"
 
+# The test lanes (docs/packaging.md, "Test lanes"):
+# * make test: every test (fast, slow and browser), the site built first; CI runs it
+# * make fast: the tests not marked slow or browser, stopping at the first failure
 test: $(BIN)/vibrofriction browser docs  ## the whole test suite, site, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/mypy
-	VIBROFRICTION_BROWSER_TESTS=required $(BIN)/python -m pytest -q
+	VIBROFRICTION_BROWSER_TESTS=required $(PYTEST)
 
 fast:  ## the development loop, installs nothing: lint, contracts, tests not slow or browser
 	@test -x $(BIN)/vibrofriction || (echo "make fast installs nothing: run 'make test' once first" >&2; exit 2)
+	@$(BIN)/python -c "import xdist" 2>/dev/null || (echo "make fast installs nothing: pytest-xdist is missing, run 'make test' once (it installs the dev group)" >&2; exit 2)
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/mypy
-	$(BIN)/python -m pytest -q -x -m "not slow and not browser"
+	$(PYTEST) -x -m "not slow and not browser"
 
 lint: $(BIN)/vibrofriction
 	$(BIN)/ruff check src tests benchmarks examples

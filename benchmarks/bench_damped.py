@@ -108,7 +108,7 @@ def write(reg: list[dict], cor: list[dict]) -> None:
         "Median wall time per steady-state point (ours: 50 repeats).  Peer B: fixed-step "
         "return mapping with both dashpots, 400 steps per fastest period, 200 transient + "
         "50 averaged periods (3 repeats); `B diff` is its deviation from our answer "
-        "(its discretisation and finite-window error: tests/test_reference_damped.py).",
+        "(its discretisation and finite-window error: tests/reference/test_reference_damped.py).",
         "",
         "| point | zeta | eta_c | ours (ms) | damped/undamped | status | mu/mu0 | error | "
         "B (ms) | B/ours | B diff |",

@@ -1,6 +1,6 @@
 """Time of a fit to 60 measured points (3 amplitudes x 20 velocities), stage by stage.
 
-Two calls, on the same synthetic data set (the pin of tests/test_fit.py: 800 Hz, Q = 50,
+Two calls, on the same synthetic data set (the pin of tests/bench/test_fit.py: 800 Hz, Q = 50,
 k_xc = 1.5e7 N/m, 20 N; noise 0.003 in the COF) from the same poor guess:
 
 * ``free = mu0, mass, k_xc, u_z0`` with the default constraints (``k_x`` follows
@@ -87,7 +87,7 @@ def main() -> None:
     lines = [f"# Fit time ({datetime.date.today()}, {platform.processor() or platform.machine()},"
              f" {os.cpu_count()} cores, workers={args.workers}, commit {commit})", "",
              "`python benchmarks/bench_fit.py`: 60 points (3 amplitudes x 20 velocities, noise "
-             "0.003), the pin of tests/test_fit.py, from a poor guess; one fit per data set "
+             "0.003), the pin of tests/bench/test_fit.py, from a poor guess; one fit per data set "
              f"(noise seeds {', '.join(map(str, seeds))}).", "",
              "| call | median time | max | per data set (s) | verdict (p) | "
              "global stages |", "|---|---|---|---|---|---|"]

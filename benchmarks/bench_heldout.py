@@ -18,7 +18,7 @@ Per point:
   process: median of 3 repeats, and its ``|mu - mu_ref|``.
 
 "agrees": trusted and ``|mu - mu_ref| <= max(error, 1e-9) + err_ref`` (the criterion of
-tests/test_differential.py); a calibration failure: ``|mu - mu_ref| > error + err_ref``.
+tests/reference/test_differential.py); a calibration failure: ``|mu - mu_ref| > error + err_ref``.
 The headline ratio is ``sum(B time) / sum(ours time)`` over the 49 points, with the
 median of the per-point ratios beside it.
 
@@ -62,7 +62,7 @@ from reference_points import REGIMES, random_points, reference_mu  # noqa: E402
 from vibrofriction.solver import solve_points  # noqa: E402
 from vibrofriction_reference import return_mapping_mu  # noqa: E402
 
-SEED = 4919  # tests/test_differential.py uses 2017
+SEED = 4919  # tests/reference/test_differential.py uses 2017
 PER_REGIME = 6
 DAMPING = (0.01, 0.05)  # (zeta, eta_c) of the one damped point
 OURS_REPEATS, OURS_BUDGET = 20, 10.0  # repeats, seconds (fewer once the budget is spent)
@@ -288,7 +288,7 @@ def report(runs: list[dict]) -> str:
         f"(general stick-slip, zeta {DAMPING[0]:g}, eta_c {DAMPING[1]:g}).  Reference: "
         "`reference_mu` (its default three resolutions; cached in heldout_reference.json), "
         "`err_ref = inf`: 'unbounded', counted neither way.  'agrees': trusted and "
-        "`|mu - mu_ref| <= max(error, 1e-9) + err_ref` (tests/test_differential.py); "
+        "`|mu - mu_ref| <= max(error, 1e-9) + err_ref` (tests/reference/test_differential.py); "
         "calibration failure: `|mu - mu_ref| > error + err_ref`.  Time: median of "
         f"{OURS_REPEATS} repeats (ours) and {PEER_REPEATS} (peer B: fixed step, 400 steps per "
         "fastest period, 200 + 50 periods), one process, side by side.  'B/ours total' is "

@@ -1,7 +1,7 @@
 """Cost of the steady state's parameter sensitivities against a plain solve.
 
 On the 60 points of the fit benchmark's data (benchmarks/bench_fit.py, data seed 11, the
-guess's parameters) and on the seeded random points of tests/test_sensitivity.py, times
+guess's parameters) and on the seeded random points of tests/solver/test_sensitivity.py, times
 (medians of repeats, interleaved): ``solve_points`` alone; ``solve_gradients`` with all
 eight parameters, order 4 (the default); and with order 2 and only the five parameters the
 fit moves (what the fit's Jacobian calls).  The ratio to the plain solve is the cost of a
@@ -33,8 +33,10 @@ from vibrofriction.solver.sensitivity import solve_gradients
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
-import bench_fit  # noqa: E402
+sys.path.insert(0, str(HERE.parent / "tests" / "solver"))
 import test_sensitivity  # noqa: E402
+
+import bench_fit  # noqa: E402
 
 FIT_MOVES = ("alpha", "beta", "amplitude", "v_inertial", "zeta")
 

@@ -199,7 +199,7 @@ def write(rows: list[dict]) -> None:
         "bounds its discretisation, averaging and transient errors). Each error is "
         "`|mu - mu_ref|`; an error below `err_ref` is not resolved, and a peer's true error "
         "is at least `|mu - mu_ref| - err_ref` (the column 'at least'). 'agrees': trusted "
-        "and `|mu - mu_ref| <= error + err_ref`, the test of tests/test_differential.py. "
+        "and `|mu - mu_ref| <= error + err_ref`, the test of tests/reference/test_differential.py. "
         "Peer B and the reference are one integrator at 400 and at 25600 (102400 rigid) "
         "steps.",
         "",

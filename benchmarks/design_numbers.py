@@ -1,7 +1,7 @@
 """The design numbers that docs/bench.md quotes ("Design the oscillation"), regenerated.
 
 1. The optimum against the operating velocity ``v0 = 0.001, 0.01, 0.1, 0.5 m/s`` for the
-   pin of ``tests/test_design.py`` (800 Hz, Q = 50, m = 0.01 kg, k_zc = 2e7 N/m,
+   pin of ``tests/bench/test_design.py`` (800 Hz, Q = 50, m = 0.01 kg, k_zc = 2e7 N/m,
    k_xc = 1.5e7 N/m, F_N0 = 20 N so u_z0 = 1 um, mu0 = 0.3) over 200-5000 Hz,
    0.1-0.9 um, ``omega du_z <= 0.01 m/s`` (the docs' call; default map and starts):
    frequency, amplitude, COF, the design's status and counts of untrusted points, the

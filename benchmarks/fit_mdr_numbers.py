@@ -3,7 +3,7 @@
 The held-out MDR bench table (tests/data/mdr_bench.csv, .json: a steel sphere of radius
 3 mm on steel, 20 N, an 800 Hz pin of 20 g with Q = 50, driven at 1 kHz, mu0 = 0.3;
 two indentation amplitudes x 9 velocities, noise 0.003, made by the independent spring-row
-reference ``vibrofriction_reference.mdr``), and the calls of tests/test_fit_mdr.py:
+reference ``vibrofriction_reference.mdr``), and the calls of tests/bench/test_fit_mdr.py:
 
 1. chi-square of the MDR model and of the linearised sphere at the truth (no fit);
 2. the fit with ``contact_model="mdr"``, ``free = mu0, radius, mass``, from a guess 1.3x
@@ -35,13 +35,14 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
+sys.path.insert(0, str(ROOT / "tests" / "bench"))
 
 
 def tolerance() -> None:
     """Section 5: the 18 rows at the truth and the guess, tol_trusted 1e-5 and 1e-4."""
     import numpy as np
-
     import test_fit_mdr as t
+
     from vibrofriction.bench import predict_cof
     from vibrofriction.solver import SolverSettings
 
@@ -77,6 +78,7 @@ def main() -> None:
         tolerance()
         return
     import test_fit_mdr as t  # the test's set-up: data, truth, guess, the reference call
+
     from vibrofriction_reference.mdr import mdr_reference
 
     print("## 1. At the truth (no fit)\n")

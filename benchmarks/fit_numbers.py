@@ -8,7 +8,7 @@ k_zc = 2e7 N/m, 20 N, mu0 = 0.3, driven at 1 kHz).
 
 1. The default call (``free = mu0, mass, k_xc, u_z0``; ``k_x`` follows ``mass`` at the
    measured natural frequency, ``k_zc`` follows ``u_z0`` at the applied load) from the
-   guess of tests/test_fit.py (off by factors 0.6-1.6, the measured f_n and Q): verdict,
+   guess of tests/bench/test_fit.py (off by factors 0.6-1.6, the measured f_n and Q): verdict,
    intervals (do they hold the truth?), their widths, correlations, time by stage.
 2. The shape of the profile: ``k_xc`` held at 0.5, 1 and 2 % either side of a best fit,
    the others refitted (a local fit from the best fit): the rise of the chi-square on
@@ -50,13 +50,13 @@ HERE = Path(__file__).resolve().parent
 DATA = HERE.parent / "tests" / "data"
 REFERENCE = json.loads((DATA / "reference_bench.json").read_text())
 TRUTH = vf.Physical(**REFERENCE["truth"])
-#: the guess of tests/test_fit.py's four-parameter reference test: the measured f_n and Q,
+#: the guess of tests/bench/test_fit.py's four-parameter reference test: the measured f_n and Q,
 #: the modal mass, contact stiffnesses and mu0 off by factors 0.6-1.6
 GUESS = vf.from_bench(natural_frequency_hz=800, mass=0.012, quality_factor=50,
                                normal_load=20, k_zc=2.8e7, k_xc=4.8e6,
                                drive_frequency_hz=1000, du_z=0.6e-6, mu0=0.39)
 FIVE = ["mu0", "mass", "k_x", "k_xc", "u_z0"]
-#: the pin of tests/test_fit.py (coverage, section 5)
+#: the pin of tests/bench/test_fit.py (coverage, section 5)
 PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
                              normal_load=20.0, k_zc=2e7, k_xc=1.5e7, drive_frequency_hz=1000.0,
                              du_z=0.5e-6, mu0=0.3)
@@ -131,7 +131,7 @@ def profile_shape(best) -> list[str]:
                   global_stage=False, progress=False)
     return ["## 2. The shape of the profile of k_xc", "",
             "### Synthetic data of benchmarks/bench_fit.py (noise seed 11; the pin of "
-            "tests/test_fit.py, k_xc = 1.5e7; 3 amplitudes x 20 velocities), mu0 and k_xc "
+            "tests/bench/test_fit.py, k_xc = 1.5e7; 3 amplitudes x 20 velocities), mu0 and k_xc "
             "free", "", *_profile_rows(synthetic, fit2),
             "### The reference data, about the fit of section 1", "",
             *_profile_rows(_data(), best)]
@@ -207,7 +207,7 @@ def coverage(n: int = 160) -> list[str]:
         lo, hi = res.intervals["mu0"]
         hits += lo <= true.mu0 <= hi
     return ["## 5. Coverage of the profile interval (mu0 alone)", "",
-            f"{n} synthetic data sets (the pin of tests/test_fit.py, mu0 uniform in 0.2-0.5, "
+            f"{n} synthetic data sets (the pin of tests/bench/test_fit.py, mu0 uniform in 0.2-0.5, "
             "k_xc one of 5e6, 1.5e7, 6e7; 2 amplitudes x 6 velocities, noise 0.003; seed "
             f"2027): the truth lies in the 95.4 % interval in **{hits} of {n}** "
             f"({100 * hits / n:.1f} %). Binomial(p = 0.954) tails: P(X <= {hits}) = "

@@ -3,7 +3,7 @@
 
 ``simulate(..., profile_exponent=n)`` records the MDR row at the sample times
 (vibrofriction.solver.mdr_history). Measured here, at the points of
-tests/test_mdr_history.py:
+tests/mdr/test_mdr_history.py:
 
 * the energy balance ``work_input - dissipated_pin - dissipated_friction = stored -
   stored(0)`` at every sample of 20 periods from the sliding start, and per period on the

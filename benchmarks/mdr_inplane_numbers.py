@@ -3,7 +3,7 @@ today"): the numbers of docs/contact_geometry.md, "In-plane oscillation along th
 
 1. The flat punch (one spring) of the MDR solver with ``a_x`` against the single-spring
    solver ``solve_points`` (the 1-D exact kernels) at the points of
-   tests/test_mdr_inplane.py.
+   tests/mdr/test_mdr_inplane.py.
 2. The spring-row reference's flat punch with ``a_x`` against the 1-D in-plane reference
    (``vibrofriction_reference.inplane``, DOP853 with events), two independent integrators.
 3. The MDR solver (``solve_points(..., profile_exponent=n, a_x=...)``) against the
@@ -42,7 +42,7 @@ from vibrofriction_reference.inplane import inplane_mean
 from vibrofriction_reference.mdr import mdr_mean, mdr_reference
 
 ROOT = Path(__file__).resolve().parents[1]
-FLAT = [  # (alpha, beta, a, V, zeta, a_x, phase_x, inplane_on), as tests/test_mdr_inplane.py
+FLAT = [  # (alpha, beta, a, V, zeta, a_x, phase_x, inplane_on), as tests/mdr/test_mdr_inplane.py
     (0.5, 2.0, 0.5, 0.3, 0.0, 0.5, 1.0, "substrate"),
     (0.7, 2.0, 0.5, 0.3, 0.0, 0.5, 1.0, "holder"),
     (1.3, 4.0, 1.4, 0.8, 0.05, 1.2, 2.5, "substrate"),

@@ -111,7 +111,7 @@ copybutton_only_copy_prompt_lines = True
 sphinx_gallery_conf = {
     "examples_dirs": "../examples",
     "gallery_dirs": "gallery",
-    # every example runs (tests/test_examples.py runs them as scripts too)
+    # every example runs (tests/docs/test_examples.py runs them as scripts too)
     "filename_pattern": r"/.*\.py$",
     "ignore_pattern": r"__init__\.py",
     # examples write PNGs with matplotlib.figure.Figure into the directory of argv[1]:

@@ -1,4 +1,11 @@
-"""Shared fixtures and helpers for the test-suite."""
+"""Shared fixtures and helpers for the test-suite.
+
+Under pytest-xdist (``make test``, ``make fast``: ``-n auto --dist loadfile``) the tests
+of one module run on one worker, so that a module-scoped fixture (a built wheel, a
+reproduction, a sweep, a rendered figure, the site's server) is computed once, not once
+per worker. (``--dist loadgroup`` with an ``xdist_group`` per module would balance
+better, but pytest-xdist 3.8 on pytest 9.2 ignores the groups: pytest-xdist issue 1386.)
+"""
 
 import numpy as np
 import pytest
@@ -14,3 +21,4 @@ def general_system():
 @pytest.fixture(scope="session")
 def rng():
     return np.random.default_rng(20170101)
+

@@ -1,6 +1,6 @@
 """Seeded random points per regime and the reference value with its own error bar.
 
-The harness of the differential tests (``tests/test_differential.py``): the exact
+The harness of the differential tests (``tests/reference/test_differential.py``): the exact
 solver against the independent fixed-step integrator of :mod:`vibrofriction_reference`
 (peer B), which shares no code with it. Every point is checked by
 ``vibrofriction.Dimensionless`` (the package's parameter validation; the reference
@@ -13,7 +13,7 @@ the sum of three bounds, each on one error of the reference, all measured:
 * discretisation: the largest ``|mu(fine) - mu(coarse)|`` over two coarser runs, with
   8 and ``sqrt 8`` times fewer steps. For an error ``C dt^p`` the fine run's error is
   ``|mu(fine) - mu(coarse)| / (8^p - 1)``: the safety factor is 63 at the order
-  ``p ~ 2`` of ``tests/test_reference.py`` (fitted slopes 1.7-2.3) and 7 at first
+  ``p ~ 2`` of ``tests/reference/test_reference.py`` (fitted slopes 1.7-2.3) and 7 at first
   order (Moreau's scheme at fine steps). It has to be that large, and a second coarse
   run is needed, because the error is not a smooth function of ``dt``: the switches fall
   anywhere between two steps, the error changes sign from one resolution to the next,

@@ -1,4 +1,4 @@
-"""Make the held-out in-plane bench data of tests/test_inplane_api.py with the reference.
+"""Make the held-out in-plane bench data of tests/inplane/test_inplane_api.py with the reference.
 
 Friction coefficients under normal + longitudinal oscillation (on the substrate) from
 ``vibrofriction_reference.inplane.inplane_mean`` (solve_ivp DOP853, shares no code with

@@ -1,4 +1,4 @@
-"""Make the in-plane reference cache of tests/test_inplane_solver.py (issue 20).
+"""Make the in-plane reference cache of tests/inplane/test_inplane_solver.py (issue 20).
 
 Each point of :data:`POINTS` (normal + longitudinal in-plane oscillation, every regime:
 substrate and holder, several phases, stick-slip, jumping, grazing, damped, a stiff

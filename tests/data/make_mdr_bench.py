@@ -1,4 +1,4 @@
-"""Make the held-out MDR bench data of tests/test_fit_mdr.py with the spring-row reference.
+"""Make the held-out MDR bench data of tests/bench/test_fit_mdr.py with the spring-row reference.
 
 Friction coefficients of a steel sphere on a steel flat under an imposed normal
 oscillation (``contact_model="mdr"``, docs/contact_geometry.md) from

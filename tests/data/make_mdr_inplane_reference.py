@@ -1,4 +1,4 @@
-"""Make the reference cache of tests/test_mdr_inplane.py: the MDR row with a longitudinal
+"""Make the reference cache of tests/mdr/test_mdr_inplane.py: the MDR row with a longitudinal
 in-plane oscillation (issue 21, "everything else as today"; docs/contact_geometry.md).
 
 Hand-picked points (:data:`POINTS`): sphere, cone and ``n = 3``; the oscillation on the

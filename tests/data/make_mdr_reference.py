@@ -1,4 +1,4 @@
-"""Make the MDR reference cache of tests/test_mdr_solver.py (issue 21, item 6).
+"""Make the MDR reference cache of tests/mdr/test_mdr_solver.py (issue 21, item 6).
 
 Random points over the regimes of the scaled MDR model (docs/contact_geometry.md), drawn by
 a seeded generator (:func:`points`): the profile exponent from cones to blunt tips

@@ -1,4 +1,4 @@
-"""Make the 2-D (transverse) reference cache of tests/test_plane_solver.py (issue 20).
+"""Make the 2-D (transverse) reference cache of tests/inplane/test_plane_solver.py (issue 20).
 
 Each point of :data:`POINTS` (a transverse oscillation ``a_y > 0``: transverse only
 ``a = 0``, combined normal + transverse, normal + longitudinal + transverse, substrate

@@ -1,4 +1,4 @@
-"""Make the ``v0 = 0`` 2-D reference cache of tests/test_plane_vzero.py (issue 20).
+"""Make the ``v0 = 0`` 2-D reference cache of tests/inplane/test_plane_vzero.py (issue 20).
 
 Each point of :data:`POINTS` (a transverse oscillation ``a_y > 0`` at ``V = 0``: contacts
 that slip in every cycle, transverse only and combined with a longitudinal one, jumping

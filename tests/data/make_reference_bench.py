@@ -1,4 +1,4 @@
-"""Make the held-out bench data set of tests/test_fit.py with the independent reference.
+"""Make the held-out bench data set of tests/bench/test_fit.py with the independent reference.
 
 The friction coefficients come from ``vibrofriction_reference.return_mapping_mu`` (peer
 B, fixed-step, shares no code with the solver being fitted), not from

@@ -1,4 +1,4 @@
-"""Make the held-out transverse bench data of tests/test_fit_transverse.py with the reference.
+"""Make the held-out transverse bench data of tests/bench/test_fit_transverse.py with the reference.
 
 Friction coefficients under normal + transverse oscillation (on the substrate), with a
 pin that is not axisymmetric (``k_y != k_x``), from
