@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from test_readme import NumberChecker
+from doctest_numbers import NumberChecker
 
 DOCS = Path(__file__).resolve().parents[2] / "docs"
 sys.path.insert(0, str(DOCS))
