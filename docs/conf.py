@@ -7,9 +7,13 @@ pages are generated from each public module's ``__all__`` (:mod:`api_pages`).
 
 from __future__ import annotations
 
+import importlib
+import pkgutil
 import re
 import sys
 from pathlib import Path
+
+from sphinx.pycode import ModuleAnalyzer
 
 DOCS = Path(__file__).resolve().parent
 sys.path.insert(0, str(DOCS))  # api_pages, gallery_hooks
@@ -207,7 +211,22 @@ def _viewcode_links(app, pagename, templatename, context, doctree) -> None:
         context["body"] = re.sub(r'<li><a href="builtins\.html">builtins</a></li>\s*', "", body)
 
 
+def _reexported_data_docs(app, what, name, obj, options, lines) -> None:
+    """The ``#:`` comment of a constant re-exported by a package (``vibrofriction.schema``
+    re-exports those of its modules), not the docstring of its type (dict, tuple)."""
+    if what != "data" or not name.startswith("vibrofriction."):
+        return
+    package, _, attr = name.rpartition(".")
+    module = importlib.import_module(package)
+    for sub in getattr(module, "__path__", None) and pkgutil.iter_modules(module.__path__) or ():
+        docs = ModuleAnalyzer.for_module(f"{package}.{sub.name}").find_attr_docs()
+        if ("", attr) in docs:
+            lines[:] = list(docs[("", attr)])
+            return
+
+
 def setup(app) -> None:
+    app.connect("autodoc-process-docstring", _reexported_data_docs)
     app.connect("autodoc-process-bases", _public_bases)
     app.connect("html-page-context", _breakable_titles)
     app.connect("html-page-context", _viewcode_links)
