@@ -28,7 +28,7 @@ copy of the queue's write end itself).  So each worker
    the worker was re-parented: the portable fallback (``spawn``, other systems; it
    runs between kernel calls, since the kernels hold the GIL).
 
-``tests/test_pool.py`` SIGKILLs a running two-worker sweep, reproduction, map and
+``tests/sweep/test_pool.py`` SIGKILLs a running two-worker sweep, reproduction, map and
 long-lived pool and checks that the fork server, the resource tracker and both workers
 are gone within seconds.
 """

@@ -49,7 +49,7 @@ dashpots trapezoidal and a return mapping of the Kelvin-Voigt element with exact
 relaxation: second order, stable for any ``zeta, eta_c`` (Moreau with the pin dashpot for
 a rigid contact).  Peer A adds ``e`` to its state when ``eta_c > 0`` and the events
 ``|k e + c x'| = n`` (stick ends) and ``x_c' = 0`` (slip ends).  Measured in
-``tests/test_reference_damped.py``: the peers agree to 2e-9-2e-7 on ten damped points of
+``tests/reference/test_reference_damped.py``: the peers agree to 2e-9-2e-7 on ten damped points of
 every regime, peer B's history closes the energy balance at second order.
 
 The in-plane oscillation of issue 20 (a 2-D tangential plane, the substrate or the holder

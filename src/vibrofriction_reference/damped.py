@@ -47,7 +47,7 @@ pin dashpot and the contact dashpot are A-stable for any ``dt``, and the relaxat
 and ``dt`` within the (undamped) Verlet limit ``dt sqrt(beta) < 2`` of the springs.
 Second order in ``dt`` (each switch costs an ``O(dt^2)`` local error: with ``c > 0`` the
 right-hand side is continuous, with ``c = 0`` the force is); measured in
-``tests/test_reference_damped.py``.
+``tests/reference/test_reference_damped.py``.
 
 **Rigid contact** (``beta = inf``, ``eta_c`` irrelevant): Moreau's midpoint scheme with
 the pin dashpot trapezoidal, the friction impulse in ``[-n dt, n dt]`` stopping the body

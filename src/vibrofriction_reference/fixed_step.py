@@ -217,7 +217,7 @@ def return_mapping_mu(
     steps_per_period)`` so that a whole number of steps fits a drive period.
     The average runs over ``average_periods`` drive periods after
     ``transient_periods``, from ``initial`` (``"sliding"``/0 or ``"rest"``/1).
-    Observed convergence (``tests/test_reference.py``): about second order in
+    Observed convergence (``tests/reference/test_reference.py``): about second order in
     ``dt`` (fitted slopes 1.7-2.3, irregular because the switches fall anywhere
     between two steps), with or without jumping -- a touchdown inside a step is
     placed at its closed-form time, without which the scheme is first order.
@@ -379,7 +379,7 @@ class ReferenceHistory:
     + gamma (V - x')``), and the energies dissipated by the pin dashpot (``int gamma
     (V - x')^2``), the contact dashpot (``int c e'^2``) and friction (``int f x_c'``).
     ``work_input - stored_energy + stored_energy[0]`` equals the sum of the three
-    dissipations to the order of the scheme (``tests/test_reference_damped.py``).
+    dissipations to the order of the scheme (``tests/reference/test_reference_damped.py``).
     """
 
     tau: np.ndarray

@@ -166,7 +166,7 @@ def test_cli_mu_json_lines():
 
 @pytest.mark.slow
 def test_cli_mu_exits_3_with_a_count_when_a_point_is_not_trusted():
-    # a slow jumping point (tests/test_trust.py's SLOW): not converged within 256 periods
+    # a slow jumping point (tests/solver/test_trust.py's SLOW): not converged within 256 periods
     out = _cli("mu", "--alpha", "0.5343889244565606", "--beta", "2.82801636121696",
                "--amplitude", "2.8253189143838906", "--v-inertial", "0.21615783285176932,5",
                "--max-periods", "256")
