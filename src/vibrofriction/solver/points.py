@@ -52,7 +52,14 @@ class PointTable:
         return self.values[:, point_index(name)]
 
     def take(self, rows: NDArray[np.intp]) -> PointTable:
-        """The table of the points ``rows`` (a copy; flat shape)."""
+        """The table of the points ``rows`` (increasing indices), flat.
+
+        Where ``rows`` is every point, the same rows without a copy (a table is never
+        written to).
+        """
+        n = len(rows)
+        if n == len(self) and (n == 0 or (rows[0] == 0 and rows[-1] == n - 1)):
+            return self if len(self.shape) == 1 else PointTable(self.values, (n,))
         return PointTable(np.ascontiguousarray(self.values[rows]), (len(rows),))
 
     def with_column(self, name: str, values: ArrayLike) -> PointTable:
