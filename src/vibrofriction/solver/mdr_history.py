@@ -58,6 +58,51 @@ def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
     return out
 
 
+def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, phase_x: float,
+                 M: int) -> tuple[float, float, NDArray[np.int64], NDArray[np.float64]]:
+    """The section state ``(y, y', st, e)`` :func:`mdr_history` starts from (its
+    ``initial``; ``Va = |V|``, ``phase_x`` that of the mirrored point where ``V < 0``)."""
+    alpha, beta, a, n_exp, zeta = (dim.alpha, dim.beta, dim.amplitude, dim.profile_exponent,
+                                   dim.zeta)
+    on_substrate = dim.inplane_on == "substrate"
+    if isinstance(initial, str) and initial == "sliding":
+        y, yd, st, e = _start(alpha, a, n_exp, M, None,
+                              frame_offset(a_x, phase_x, on_substrate))
+        # the solver's start leaves the springs beyond the mean contact radius out of
+        # contact until their touch-down late in the first period (its steady state is
+        # the same); in contact at tau = 0 (g_i < 1 + a), they slip forwards too
+        g = _mdr.row_geometry(a, n_exp, M)[0]
+        st[(st == FLIGHT) & (1.0 + a - g > 0.0)] = SLIP_POS
+    elif isinstance(initial, str) and initial == "steady":
+        r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
+                    inplane_on=dim.inplane_on)
+        if r["status"] == "not converged":
+            raise ValueError(f"initial='steady': the row of {M} springs did not converge "
+                             f"at this point (after {r['periods']} periods)")
+        y, yd, st, e = r["final_state"]
+        st, e = st.copy(), e.copy()
+    else:
+        raise ValueError(f"a curved profile starts from initial='sliding' or 'steady' "
+                         f"(the MDR row takes no section state), got {initial!r}")
+    return y, yd, st, e
+
+
+def _row_columns(sts: NDArray[np.int8], tau: NDArray[np.float64], a: float, n_exp: float,
+                 M: int) -> tuple[NDArray[np.float64], ...]:
+    """``(xi, stick_area, slip_area, stick_radius, contact_radius)`` of the history with
+    the springs' states ``sts`` at the phases ``tau``."""
+    xi, g, w, area = spring_row(a, n_exp, M)
+    stick = sts == STICK
+    slip = (sts == SLIP_POS) | (sts == SLIP_NEG)
+    stick_area = stick.astype(float) @ area
+    slip_area = slip.astype(float) @ area
+    stick_radius = np.where(stick.any(axis=1), np.max(np.where(stick, xi, 0.0), axis=1), 0.0)
+    depth = np.maximum(0.0, 1.0 + a * np.cos(tau))
+    contact_radius = np.where(depth > 0.0, 1.0, 0.0) if math.isinf(n_exp) \
+        else depth ** (1.0 / n_exp)
+    return xi, stick_area, slip_area, stick_radius, contact_radius
+
+
 def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
                 initial: object = "sliding", springs: int = SPRINGS) -> CurvedHistory:
     """The history of a row of ``springs`` springs over ``periods`` drive periods.
@@ -95,25 +140,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     ip = np.array([a_x * math.cos(phase_x), a_x * math.sin(phase_x),
                    0.0 if on_substrate else 1.0])
-    if isinstance(initial, str) and initial == "sliding":
-        y, yd, st, e = _start(alpha, a, n_exp, M, None,
-                              frame_offset(a_x, phase_x, on_substrate))
-        # the solver's start leaves the springs beyond the mean contact radius out of
-        # contact until their touch-down late in the first period (its steady state is
-        # the same); in contact at tau = 0 (g_i < 1 + a), they slip forwards too
-        g = _mdr.row_geometry(a, n_exp, M)[0]
-        st[(st == FLIGHT) & (1.0 + a - g > 0.0)] = SLIP_POS
-    elif isinstance(initial, str) and initial == "steady":
-        r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
-                    inplane_on=dim.inplane_on)
-        if r["status"] == "not converged":
-            raise ValueError(f"initial='steady': the row of {M} springs did not converge "
-                             f"at this point (after {r['periods']} periods)")
-        y, yd, st, e = r["final_state"]
-        st, e = st.copy(), e.copy()
-    else:
-        raise ValueError(f"a curved profile starts from initial='sliding' or 'steady' "
-                         f"(the MDR row takes no section state), got {initial!r}")
+    y, yd, st, e = _initial_row(dim, initial, Va, a_x, phase_x, M)
     tau_end = 2.0 * math.pi * periods
     tau = np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1)
     T = tau.size
@@ -127,15 +154,8 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     if events < 0:
         raise RuntimeError(f"the MDR row of {M} springs made no progress (more than "
                            f"{200 * M + 1000} segments in a period)")
-    xi, g, w, area = spring_row(a, n_exp, M)
-    stick = sts == STICK
-    slip = (sts == SLIP_POS) | (sts == SLIP_NEG)
-    stick_area = stick.astype(float) @ area
-    slip_area = slip.astype(float) @ area
-    stick_radius = np.where(stick.any(axis=1), np.max(np.where(stick, xi, 0.0), axis=1), 0.0)
-    depth = np.maximum(0.0, 1.0 + a * np.cos(tau))
-    contact_radius = np.where(depth > 0.0, 1.0, 0.0) if math.isinf(n_exp) \
-        else depth ** (1.0 / n_exp)
+    xi, stick_area, slip_area, stick_radius, contact_radius = _row_columns(sts, tau, a,
+                                                                           n_exp, M)
     if sign < 0.0:  # the mirror image: x -> -x, the slip directions swapped
         sts = np.where(sts == SLIP_POS, SLIP_NEG,
                        np.where(sts == SLIP_NEG, SLIP_POS, sts)).astype(np.int8)
