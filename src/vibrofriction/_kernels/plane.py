@@ -720,29 +720,12 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
 
 
 @jit
-def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
-                         zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
-                         max_events, out_f, out_i, s_out):
-    """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
-    e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
-    end; the output rows keep only the x components).
+def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
+    """A transient by plain iteration of the period map on ``s`` (in place): until the
+    map moves the state by < 1e-4, at most 20 periods. Returns the periods run.
     """
-    P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
-                   on_substrate)
-    out_f[:] = math.nan
-    out_f[O_WORK] = 0.0
-    out_i[:] = 0
-    out_i[I_PHASE] = -1
-    hmax = max_step(P)
-    W = np.zeros((14, N_Z))
-    cnt = np.zeros(N_C, np.int64)
-    s = np.empty(N_S)
     s2 = np.empty(N_S)
-    J = np.zeros((N_S, N_S))
-    info = np.zeros(4)
     acc = np.zeros(4)
-    start_state(P, init_kind, y0, xd0, e0, s)
-    s_start = s.copy()
     k = P[P_K]
     periods = 0
     # a transient by plain iteration: until the map moves the state by < 1e-4
@@ -756,100 +739,119 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
             s[i] = s2[i]
         if d < 1e-4:
             break
+    return periods
+
+
+@jit
+def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info):
+    """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
+    stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
+    mult, use_newton, periods)``, ``s`` the orbit's section state.
+    """
     status = ST_FAILED
     mult = math.nan
-    means = np.zeros(7)
-    s0 = s.copy()
     # V = 0: no Newton.  Where the contact can stick through whole cycles the stuck
     # orbits form a continuum (any preload in the stuck region), along which the period
     # map is singular; plain iteration follows the motion from the given start and keeps
     # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
     use_newton = P[P_V] != 0.0
-    budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
-    if cnt[C_FAIL] == 0:
-        scale = 1.0 + _dist(s, np.zeros(N_S), k)
-        if use_newton:
-            conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                          100.0 * rtol * scale, 12, J, info)
-            periods += int(info[2])
-            if conv:
-                ev = np.linalg.eigvals(J.astype(np.complex128))
-                mult = 0.0
-                for x in ev:
-                    mult = max(mult, abs(x))
-                if mult < 1.0 + 1e-6:
-                    status = ST_PERIODIC
-            if status != ST_PERIODIC and cnt[C_FAIL] == 0:
-                # Newton failed (a near-singular J - I: slow creep near V = 0, a stick
-                # through most of the cycle) or found an unstable orbit: plain iteration
-                # of the motion from the transient's end, bounded, before the averaging
-                use_newton = False
-                for i in range(N_S):
-                    s[i] = s0[i]
-                budget = min(budget - periods, FALLBACK_ITER)
-        if not use_newton and cnt[C_FAIL] == 0:
-            info[:] = 0.0
-            conv = iterate(P, s, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                           100.0 * rtol * scale, budget, info)
-            periods += int(info[2])
-            if conv:
-                mult = info[3]
+    if use_newton:
+        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                      100.0 * rtol * scale, 12, J, info)
+        periods += int(info[2])
+        if conv:
+            ev = np.linalg.eigvals(J.astype(np.complex128))
+            mult = 0.0
+            for x in ev:
+                mult = max(mult, abs(x))
+            if mult < 1.0 + 1e-6:
                 status = ST_PERIODIC
-        periods_to_orbit = periods
-        if status == ST_PERIODIC and periods > max_periods:
-            status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
-        res = info[1]
-        if status == ST_PERIODIC:
-            orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
-            periods += 1
-            # the tolerance's effect: the same orbit at 100 rtol
-            sl = s.copy()
-            info[:] = 0.0
-            loose = np.zeros(7)
-            if use_newton:
-                conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                              1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info)
-            else:
-                conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
-                               1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
-            if conv:
-                orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                           loose)
-                err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
-            else:
-                err = math.inf
-            periods += int(info[2]) + 1
-            # the section residual: a state error res moves a mean by about res/(1 - mult)
-            err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
-            out_f[O_ERR] = err
-            out_i[I_PERIOD] = 1
-            # settling: the linearised contraction from the start to within the error
-            # (plain iteration: the periods it took)
-            d0 = _dist(s_start, s, k)
-            if not use_newton:
-                out_f[O_SETTLE] = periods_to_orbit
-            elif d0 <= err or mult <= 0.0:
-                out_f[O_SETTLE] = 0.0
-            elif mult < 1.0 - 1e-6:
-                out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
-        elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
-            # the long-time average from the transient's end (not Newton's last iterate;
-            # at V = 0 the plain iteration's last state, the motion's own), its error the
-            # window's spread plus the difference from a run at 100 rtol
-            if use_newton:
-                for i in range(N_S):
-                    s[i] = s0[i]
-            sl = s.copy()
-            spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
-            loose = np.zeros(7)
-            average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
-            periods += 2 * N_AVG
-            if cnt[C_FAIL] == 0:
-                status = ST_AVERAGED
-                out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
-                                            abs(loose[1] - means[1]))
-        elif cnt[C_FAIL] == 0:
-            status = ST_NOT_CONVERGED
+        if status != ST_PERIODIC and cnt[C_FAIL] == 0:
+            # Newton failed (a near-singular J - I: slow creep near V = 0, a stick
+            # through most of the cycle) or found an unstable orbit: plain iteration
+            # of the motion from the transient's end, bounded, before the averaging
+            use_newton = False
+            for i in range(N_S):
+                s[i] = s0[i]
+            budget = min(budget - periods, FALLBACK_ITER)
+    if not use_newton and cnt[C_FAIL] == 0:
+        info[:] = 0.0
+        conv = iterate(P, s, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                       100.0 * rtol * scale, budget, info)
+        periods += int(info[2])
+        if conv:
+            mult = info[3]
+            status = ST_PERIODIC
+    return status, mult, use_newton, periods
+
+
+@jit
+def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newton, J, info,
+                 mult, res, periods, periods_to_orbit, means, out_f):
+    """The periodic orbit's means into ``means``, their error (the same orbit at ``100
+    rtol``, and the section residual ``res``) and the settling into ``out_f``. Returns
+    the periods run.
+    """
+    k = P[P_K]
+    orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
+    periods += 1
+    # the tolerance's effect: the same orbit at 100 rtol
+    sl = s.copy()
+    info[:] = 0.0
+    loose = np.zeros(7)
+    if use_newton:
+        conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info)
+    else:
+        conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
+                       1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
+    if conv:
+        orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                   loose)
+        err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
+    else:
+        err = math.inf
+    periods += int(info[2]) + 1
+    # the section residual: a state error res moves a mean by about res/(1 - mult)
+    err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
+    out_f[O_ERR] = err
+    # settling: the linearised contraction from the start to within the error
+    # (plain iteration: the periods it took)
+    d0 = _dist(s_start, s, k)
+    if not use_newton:
+        out_f[O_SETTLE] = periods_to_orbit
+    elif d0 <= err or mult <= 0.0:
+        out_f[O_SETTLE] = 0.0
+    elif mult < 1.0 - 1e-6:
+        out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
+    return periods
+
+
+@jit
+def _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status, means, out_f):
+    """The long-time average from the transient's end ``s0`` into ``means`` (not Newton's
+    last iterate; at V = 0 the plain iteration's last state, the motion's own), its error
+    the window's spread plus the difference from a run at 100 rtol. Returns the status.
+    """
+    if use_newton:
+        for i in range(N_S):
+            s[i] = s0[i]
+    sl = s.copy()
+    spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
+    loose = np.zeros(7)
+    average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
+    if cnt[C_FAIL] == 0:
+        status = ST_AVERAGED
+        out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
+                                    abs(loose[1] - means[1]))
+    return status
+
+
+@jit
+def _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out):
+    """The output rows (columns of ``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``) and the
+    final section state ``s`` into ``s_out``.
+    """
     if status == ST_PERIODIC or status == ST_AVERAGED:
         out_f[O_MU] = means[0]
         out_f[O_LAT] = means[1]
@@ -878,6 +880,57 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     out_i[I_PERIODS] = periods
     out_i[I_EVENTS] = cnt[C_EVENTS]
     out_i[I_DEGENERATE] = 0
+
+
+@jit
+def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
+                         zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
+                         max_events, out_f, out_i, s_out):
+    """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
+    e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
+    end; the output rows keep only the x components).
+    """
+    P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
+                   on_substrate)
+    out_f[:] = math.nan
+    out_f[O_WORK] = 0.0
+    out_i[:] = 0
+    out_i[I_PHASE] = -1
+    hmax = max_step(P)
+    W = np.zeros((14, N_Z))
+    cnt = np.zeros(N_C, np.int64)
+    s = np.empty(N_S)
+    J = np.zeros((N_S, N_S))
+    info = np.zeros(4)
+    start_state(P, init_kind, y0, xd0, e0, s)
+    s_start = s.copy()
+    k = P[P_K]
+    periods = _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods)
+    status = ST_FAILED
+    mult = math.nan
+    means = np.zeros(7)
+    s0 = s.copy()
+    budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
+    if cnt[C_FAIL] == 0:
+        scale = 1.0 + _dist(s, np.zeros(N_S), k)
+        status, mult, use_newton, periods = _orbit_search(
+            P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info)
+        periods_to_orbit = periods
+        if status == ST_PERIODIC and periods > max_periods:
+            status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
+        res = info[1]
+        if status == ST_PERIODIC:
+            out_i[I_PERIOD] = 1
+            periods = _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale,
+                                   use_newton, J, info, mult, res, periods,
+                                   periods_to_orbit, means, out_f)
+        elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
+            status = _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status,
+                               means, out_f)
+            periods += 2 * N_AVG
+        elif cnt[C_FAIL] == 0:
+            status = ST_NOT_CONVERGED
+    _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
 
 
 @jit
