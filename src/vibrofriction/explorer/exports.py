@@ -13,7 +13,7 @@ import numpy as np
 
 from .state import State
 
-__all__ = ["curve_csv", "figure_bytes", "snippet"]
+__all__ = ["curve_csv", "curve_file", "figure_bytes", "snippet"]
 
 
 def curve_csv(state: State, curve: dict) -> str:
@@ -114,3 +114,18 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     buf = io.BytesIO()
     fig.savefig(buf, format=fmt, dpi=150)
     return buf.getvalue()
+
+
+def curve_file(state: State | None, curve: dict | None, fmt: str) -> io.BytesIO:
+    """The curve shown (with the inputs ``state`` it was computed for) as a file.
+
+    ``fmt`` is ``"csv"`` or a figure format (``"png"``, ``"svg"``). Never an empty file:
+    before the first curve there is nothing to export (``RuntimeError``; the page keeps
+    its buttons disabled until then).
+    """
+    if curve is None:
+        raise RuntimeError("no curve has been computed yet: nothing to export")
+    if fmt == "csv":
+        assert state is not None  # set with the curve
+        return io.BytesIO(curve_csv(state, curve).encode())
+    return io.BytesIO(figure_bytes(curve, fmt))

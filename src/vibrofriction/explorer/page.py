@@ -587,17 +587,8 @@ class Explorer:
 
     # ------------------------------------------------------------------ export
     def _export(self, fmt: str) -> io.BytesIO:
-        """The curve shown (with the inputs it was computed for) as a file.
-
-        Never an empty one (the buttons are disabled until the first curve is shown).
-        """
-        if self.curve is None:
-            raise RuntimeError("no curve has been computed yet: nothing to export")
-        if fmt == "csv":
-            assert self.curve_state is not None  # set with the curve
-            return io.BytesIO(exports.curve_csv(self.curve_state, self.curve).encode())
-        return io.BytesIO(exports.figure_bytes(self.curve, fmt))
-
+        """The curve shown as a file (:func:`.exports.curve_file`)."""
+        return exports.curve_file(self.curve_state, self.curve, fmt)
 
 def app(state: State | None = None) -> pn.viewable.Viewable:
     """The explorer as a Panel object.

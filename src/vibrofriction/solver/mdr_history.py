@@ -60,8 +60,10 @@ def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
 
 def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, phase_x: float,
                  M: int) -> tuple[float, float, NDArray[np.int64], NDArray[np.float64]]:
-    """The section state ``(y, y', st, e)`` :func:`mdr_history` starts from (its
-    ``initial``; ``Va = |V|``, ``phase_x`` that of the mirrored point where ``V < 0``)."""
+    """The section state ``(y, y', st, e)`` :func:`mdr_history` starts from.
+
+    Its ``initial``; ``Va = |V|``, ``phase_x`` that of the mirrored point where ``V < 0``.
+    """
     alpha, beta, a, n_exp, zeta = (dim.alpha, dim.beta, dim.amplitude, dim.profile_exponent,
                                    dim.zeta)
     on_substrate = dim.inplane_on == "substrate"
@@ -89,8 +91,10 @@ def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, pha
 
 def _row_columns(sts: NDArray[np.int8], tau: NDArray[np.float64], a: float, n_exp: float,
                  M: int) -> tuple[NDArray[np.float64], ...]:
-    """``(xi, stick_area, slip_area, stick_radius, contact_radius)`` of the history with
-    the springs' states ``sts`` at the phases ``tau``."""
+    """The row columns of a history: ``(xi, stick_area, slip_area, stick_radius, contact_radius)``.
+
+    From the springs' states ``sts`` at the phases ``tau``.
+    """
     xi, g, w, area = spring_row(a, n_exp, M)
     stick = sts == STICK
     slip = (sts == SLIP_POS) | (sts == SLIP_NEG)
