@@ -285,7 +285,7 @@ def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
     beta = _text_box(page, 1)
     beta.fill("inf")
     beta.press("Enter")
-    page.get_by_text(re.compile(r"does not take a rigid contact \(beta = inf\) yet: got "
+    page.get_by_text(re.compile(r"does not take a rigid contact \(beta = inf\): got "
                                 r"beta = inf")).wait_for()
     assert page.get_by_text(READOUT).inner_text() == after  # the last good view stays
     assert page.locator(".vf-text-eta_c input").is_disabled()
