@@ -123,12 +123,13 @@ def point_table(parameters: Mapping[str, ArrayLike | str | None]) -> PointTable:
         numbers[name] = np.asarray(value, dtype=float)
     codes = {name: _choice_codes(name, parameters.get(name, CHOICES[name].default))
              for name in _CHOICE_NAMES}
-    arrays = np.broadcast_arrays(*numbers.values(), *codes.values())
-    shape = arrays[0].shape
-    values = np.empty((math.prod(shape), len(POINT_COLUMNS)))
-    for name, x in zip((*numbers, *codes), arrays, strict=True):
-        values[:, point_index(name)] = x.ravel()
-    validated({name: values[:, point_index(name)] for name in _NUMBERS})
+    validated(numbers)  # each value as given: a broadcast repeats values, it adds none
+    columns = {**numbers, **codes}
+    shape = np.broadcast_shapes(*(x.shape for x in columns.values()))
+    values = np.empty((*shape, len(POINT_COLUMNS)))
+    for name, x in columns.items():
+        values[..., point_index(name)] = x
+    values = values.reshape(math.prod(shape), len(POINT_COLUMNS))
     return PointTable(values, shape)
 
 

@@ -51,13 +51,15 @@ class EventMethod:
         for rows, kind in ((V > 0.0, init_kind),
                            (at_zero, 1 if init_kind == 0 else init_kind)):
             idx = np.flatnonzero(rows)
-            if idx.size:
+            if idx.size == len(points):  # every point: the rows written in place
+                steady_state_many(points.values, kind, init, *args, out_f, out_i)
+            elif idx.size:
                 of, oi = new_outputs(idx.size)
                 steady_state_many(points.take(idx).values, kind,
                                   np.ascontiguousarray(init[idx]), *args, of, oi)
                 out_f[idx], out_i[idx] = of, oi
         am = points["amplitude"]
-        contact_columns(out_f, am, np.ones(len(points), dtype=bool))
+        contact_columns(out_f, am, slice(None))
         _held(out_f, out_i, points, np.flatnonzero(at_zero))
         _static_limit(am, out_f, out_i, (V == 0.0) & ~at_zero)
         out_i[:, codes.I_METHOD] = _CODE
@@ -121,14 +123,14 @@ def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],
 
 
 def contact_columns(out_f: NDArray[np.float64], amplitude: NDArray[np.float64],
-                    rows: NDArray[np.bool_]) -> None:
+                    rows: NDArray[np.bool_] | slice) -> None:
     """The contact's columns of the flat-punch rows ``rows`` (``amplitude`` of all rows).
 
     ``mean_normal_ratio`` by its closed form (:func:`theory.mean_normal_force`) and the area
     fractions, which for the one spring of a flat punch are its time fractions (slip either
     way).
     """
-    if not np.any(rows):
+    if not isinstance(rows, slice) and not np.any(rows):
         return
     out_f[rows, _O_NORMAL] = theory.mean_normal_force(amplitude[rows])
     out_f[rows, _O_STICK_AREA] = out_f[rows, _O_STICK]

@@ -36,7 +36,7 @@ class PlaneMethod:
         out_f, out_i = new_outputs(len(points))
         plane_steady_state_many(points.values, init_kind, np.ascontiguousarray(init),
                                 *plane_arguments(settings), out_f, out_i)
-        contact_columns(out_f, points["amplitude"], np.ones(len(points), dtype=bool))
+        contact_columns(out_f, points["amplitude"], slice(None))
         idx = np.flatnonzero(points["v_inertial"] == 0.0)
         for on, rows in points.groups("inplane_on", idx):
             p = points.take(rows)
