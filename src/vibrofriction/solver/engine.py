@@ -277,13 +277,14 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
                  dim.phase_x, dim.inplane_on == "substrate", *start,
                  *event_arguments(settings), of, oi)
-    oi[_I_METHOD] = 0
     f = of.tolist()  # the contact's columns (as contact_columns), on Python floats
     f[_O_NORMAL] = theory.mean_normal_force_of(dim.amplitude)
     f[_O_STICK_AREA] = f[_O_STICK]
     f[_O_SLIP_AREA] = f[_O_SLIP] + f[_O_REVERSE]
     f[_O_OPEN_AREA] = f[_O_FLIGHT]
-    return result_from_rows(f, oi.tolist(), dim, V, settings)
+    ints = oi.tolist()
+    ints[_I_METHOD] = 0  # the event method
+    return result_from_rows(f, ints, dim, V, settings)
 
 
 @overload

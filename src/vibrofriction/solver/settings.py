@@ -151,10 +151,11 @@ class SolverSettings:
 
         A method's kernel arguments: the one-point path pays a dictionary look-up.
         """
-        d = self.__dict__["_derived"]
-        if key not in d:
-            d[key] = make(self)
-        return d[key]
+        try:
+            return self._derived[key]  # type: ignore[attr-defined]
+        except KeyError:
+            value = self._derived[key] = make(self)  # type: ignore[attr-defined]
+            return value
 
     def trusted(self, status: ArrayLike, error: ArrayLike) -> NDArray[np.bool_]:
         """Which results to trust: a converged status and ``error <= tol_trusted``.
