@@ -174,3 +174,10 @@ def test_a_point_table_is_validated_once_by_name() -> None:
     with pytest.raises(TypeError, match="unknown parameter"):
         point_table({"alpha": 0.5, "beta": 2.0, "amplitude": 0.5, "v_inertial": 0.3,
                      "gamma": 1.0})
+
+
+def test_no_points_is_no_work_and_keeps_the_shape() -> None:
+    out = solve_points(0.5, 2.0, 0.5, np.zeros((0, 3)))
+    assert out["mu_ratio"].shape == (0, 3) and out["method"].shape == (0, 3)
+    assert vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=np.array([])).shape \
+        == (0,)

@@ -241,9 +241,11 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
     out_f = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     out_i = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     for method, idx in parts:
+        if not idx.size:
+            continue
         if idx.size == n:  # one method for every point: its rows as they are
             out_f, out_i = method.solve(points, kind, init, settings)
-        elif idx.size:
+        else:
             out_f[idx], out_i[idx] = method.solve(points.take(idx), kind,
                                                   np.ascontiguousarray(init[idx]), settings)
     if np.any(backward):
