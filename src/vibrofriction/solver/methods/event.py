@@ -71,7 +71,10 @@ def event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, i
 
     ``settings`` resolved with the method's defaults (a setting it does not honour is refused).
     """
-    return settings.derived("event", _event_arguments)
+    try:  # the one-point path: one dictionary look-up
+        return settings._derived["event"]  # type: ignore[attr-defined]
+    except KeyError:
+        return settings.derived("event", _event_arguments)
 
 
 def _event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:
