@@ -21,7 +21,7 @@ from ..points import PointTable
 from ..settings import SolverSettings
 from .base import new_outputs
 
-__all__ = ["EVENT", "HELD_STICK", "contact_columns", "event_arguments"]
+__all__ = ["EVENT", "HELD_STICK", "contact_columns", "event_arguments", "holds"]
 
 #: A ``V = 0`` motion that sticks this fraction of its averaging window is held: all of
 #: it, no slip and no flight.
@@ -99,11 +99,20 @@ def _held(out_f: NDArray[np.float64], out_i: NDArray[np.int64], points: PointTab
         band = theory.inplane_static_mu_ratio(p["alpha"], p["beta"], p["amplitude"],
                                               p["a_x"], p["phase_x"], p["zeta"],
                                               p["eta_c"], on)
-        st = out_i[rows, codes.I_STATUS]
-        stuck = out_f[rows, _O_STICK] >= HELD_STICK
-        mark = (np.isfinite(np.atleast_1d(band.upper)) | stuck) & np.isin(
-            st, (Status.PERIODIC.code, Status.AVERAGED.code, Status.NOT_CONVERGED.code))
+        mark = holds(out_i[rows, codes.I_STATUS], out_f[rows, _O_STICK],
+                     np.isfinite(np.atleast_1d(band.upper)))
         out_i[rows[mark], codes.I_STATUS] = Status.HELD.code
+
+
+def holds(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
+          bounded: NDArray[np.bool_]) -> NDArray[np.bool_]:
+    """Which ``V = 0`` points are held (the 1-D and the 2-D solver alike).
+
+    A stuck region of mean forces exists (``bounded``) or the motion stuck through its
+    whole window, and the search ended without failing.
+    """
+    return (bounded | (stick_fraction >= HELD_STICK)) & np.isin(
+        status, (Status.PERIODIC.code, Status.AVERAGED.code, Status.NOT_CONVERGED.code))
 
 
 def _static_limit(amplitude: NDArray[np.float64], out_f: NDArray[np.float64],

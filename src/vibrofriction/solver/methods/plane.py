@@ -18,7 +18,7 @@ from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable
 from ..settings import SolverSettings
 from .base import new_outputs
-from .event import HELD_STICK, contact_columns
+from .event import contact_columns, holds
 
 __all__ = ["PLANE", "plane_arguments", "plane_held"]
 
@@ -70,9 +70,7 @@ def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
     region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"],
                                         p["phase_x"], p["a_y"], p["phase_y"], p["zeta"],
                                         p["eta_c"], inplane_on, p["alpha_y"], p["zeta_y"])
-    return (np.isfinite(np.atleast_1d(region.x_upper)) | (stick_fraction >= HELD_STICK)) \
-        & np.isin(status, (Status.PERIODIC.code, Status.AVERAGED.code,
-                           Status.NOT_CONVERGED.code))
+    return holds(status, stick_fraction, np.isfinite(np.atleast_1d(region.x_upper)))
 
 
 PLANE = PlaneMethod()
