@@ -181,3 +181,17 @@ def test_no_points_is_no_work_and_keeps_the_shape() -> None:
     assert out["mu_ratio"].shape == (0, 3) and out["method"].shape == (0, 3)
     assert vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=np.array([])).shape \
         == (0,)
+
+
+def test_a_curved_tip_history_honours_or_refuses_the_settings() -> None:
+    """simulate of a curved tip: the MDR solver's settings act on its steady start, the
+    others are refused by name, as in solve_points."""
+    sphere = vf.Dimensionless(0.5, 2.0, 0.5, zeta=0.05, profile_exponent=2.0)
+    with pytest.raises(ValueError, match="settings.max_events = 1 is not honoured by the MDR"):
+        vf.simulate(sphere, v_inertial=0.3, periods=0.1,
+                    settings=SolverSettings(max_events=1))
+    with pytest.raises(ValueError, match="did not converge"):
+        vf.simulate(sphere, v_inertial=0.3, periods=0.1, initial="steady", springs=20,
+                    settings=SolverSettings(max_periods=1))
+    h = vf.simulate(sphere, v_inertial=0.3, periods=0.1, initial="steady", springs=20)
+    assert np.all(np.isfinite(h.f))

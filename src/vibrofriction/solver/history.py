@@ -123,8 +123,9 @@ def simulate(
         history shows the steady state rather than the transient; with a transverse
         oscillation also a 2-D history's ``plane_state``.
     settings : SolverSettings or None, keyword-only
-        The settings of the steady state that ``initial="steady"`` solves (and of the 2-D
-        integration); None the defaults.
+        The settings of the steady state that ``initial="steady"`` solves (a curved tip:
+        its row's orbit) and of the 2-D integration; None the defaults. A setting the
+        point's solver does not honour is refused, as by :func:`solve_points`.
     springs : int, keyword-only
         The springs of a curved tip's MDR row (ignored otherwise).
 
@@ -156,12 +157,13 @@ def simulate(
     V = float(v)
     _checked_run(periods, samples_per_period)
     if dim.curved:
-        MDR.capabilities.check(table_of(dim, V), 0, DEFAULT_SETTINGS)
+        settings = settings or DEFAULT_SETTINGS
+        MDR.capabilities.check(table_of(dim, V), 0, settings)
         # the annotation is not enforced at run time: a bool, a float or 0 is refused here
         if isinstance(springs, bool) or not isinstance(  # type: ignore[redundant-expr]
                 springs, (int, np.integer)) or springs < 1:
             raise ValueError(f"springs must be an integer >= 1, got {springs!r}")
-        return mdr_history(dim, V, periods, samples_per_period, initial, springs)
+        return mdr_history(dim, V, periods, samples_per_period, initial, springs, settings)
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here

@@ -18,10 +18,12 @@ from numpy.typing import NDArray
 from .._kernels import mdr as _mdr
 from .._kernels.codes import FLIGHT, PHASE_NAMES, SLIP_NEG, SLIP_POS, STICK
 from .._kernels.phases import frame_offset, inplane_forcing
+from ..capabilities import CAPABILITIES
 from ..params import Dimensionless
 from ..schema import PARTIAL
 from .history_types import CurvedHistory
 from .mdr import SUBSTEPS, _check, _start, mdr_row
+from .settings import DEFAULT_SETTINGS, SolverSettings
 
 __all__ = ["SPRINGS", "mdr_history", "spring_row"]
 
@@ -59,10 +61,12 @@ def _summary_phase(state: NDArray[np.int8]) -> NDArray[np.str_]:
 
 
 def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, phase_x: float,
-                 M: int) -> tuple[float, float, NDArray[np.int64], NDArray[np.float64]]:
+                 M: int, settings: SolverSettings
+                 ) -> tuple[float, float, NDArray[np.int64], NDArray[np.float64]]:
     """The section state ``(y, y', st, e)`` :func:`mdr_history` starts from.
 
-    Its ``initial``; ``Va = |V|``, ``phase_x`` that of the mirrored point where ``V < 0``.
+    Its ``initial``; ``Va = |V|``, ``phase_x`` that of the mirrored point where ``V < 0``;
+    ``"steady"`` searches the orbit with the MDR solver's resolved ``settings``.
     """
     alpha, beta, a, n_exp, zeta = (dim.alpha, dim.beta, dim.amplitude, dim.profile_exponent,
                                    dim.zeta)
@@ -76,8 +80,10 @@ def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, pha
         g = _mdr.row_geometry(a, n_exp, M)[0]
         st[(st == FLIGHT) & (1.0 + a - g > 0.0)] = SLIP_POS
     elif isinstance(initial, str) and initial == "steady":
+        rs = settings.resolved(CAPABILITIES["mdr"].settings)
         r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
-                    inplane_on=dim.inplane_on)
+                    inplane_on=dim.inplane_on, state_tol=float(rs["tol_state"]),
+                    max_periods=int(rs["max_periods"]))
         if r["status"] == "not converged":
             raise ValueError(f"initial='steady': the row of {M} springs did not converge "
                              f"at this point (after {r['periods']} periods)")
@@ -108,7 +114,8 @@ def _row_columns(sts: NDArray[np.int8], tau: NDArray[np.float64], a: float, n_ex
 
 
 def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
-                initial: object = "sliding", springs: int = SPRINGS) -> CurvedHistory:
+                initial: object = "sliding", springs: int = SPRINGS,
+                settings: SolverSettings = DEFAULT_SETTINGS) -> CurvedHistory:
     """The history of a row of ``springs`` springs over ``periods`` drive periods.
 
     Sampled on the uniform grid of ``samples_per_period`` a period (``tau = 0`` to ``2 pi periods``,
@@ -144,7 +151,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     ip = np.array([a_x * math.cos(phase_x), a_x * math.sin(phase_x),
                    0.0 if on_substrate else 1.0])
-    y, yd, st, e = _initial_row(dim, initial, Va, a_x, phase_x, M)
+    y, yd, st, e = _initial_row(dim, initial, Va, a_x, phase_x, M, settings)
     tau_end = 2.0 * math.pi * periods
     tau = np.linspace(0.0, tau_end, int(round(samples_per_period * periods)) + 1)
     T = tau.size
