@@ -195,3 +195,6 @@ def test_a_curved_tip_history_honours_or_refuses_the_settings() -> None:
                     settings=SolverSettings(max_periods=1))
     h = vf.simulate(sphere, v_inertial=0.3, periods=0.1, initial="steady", springs=20)
     assert np.all(np.isfinite(h.f))
+    with pytest.raises(ValueError, match="settings.rtol = 0.5 is not honoured by the 1-D"):
+        vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=0.1,
+                    settings=SolverSettings(rtol=0.5))

@@ -19,6 +19,7 @@ from .energy import dissipation, inplane_motion, kernel_point, transverse_motion
 from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
 from .history_types import CurvedHistory, Event, History, PlaneHistory
 from .mdr_history import SPRINGS, mdr_history
+from .methods.event import EVENT
 from .methods.mdr import MDR
 from .methods.plane import PLANE, plane_arguments, plane_held
 from .points import table_of
@@ -167,6 +168,8 @@ def simulate(
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
+    if settings is not None:  # refused as by solve_points, whatever the start
+        EVENT.capabilities.check_settings(settings)
     start = _start(dim, V, initial, settings)  # type: ignore[arg-type]
     seg = _segments(dim, V, start, int(math.ceil(periods)))
     m = seg.shape[0]
