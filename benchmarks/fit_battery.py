@@ -209,14 +209,16 @@ def _statuses(res) -> dict:
     return dict(getattr(res, "determination", {}) or {})
 
 
-def run(only: list[int] | None, workers: int, write: str | None, seed: int) -> list[dict]:
+def run(only: list[int] | None, workers: int, write: str | None, seed: int,
+        options: dict | None = None) -> list[dict]:
     import vibrofriction as vf
 
     rows = []
     for s in load_sets(only):
         data, guess, kw = fit_call(s)
         chi_truth = truth_chisqr(s)
-        res = vf.fit(data, guess, workers=workers, progress=False, seed=seed, **kw)
+        res = vf.fit(data, guess, workers=workers, progress=False, seed=seed, **kw,
+                     **(options or {}))
         r = score(s, res, chi_truth)
         rows.append(r)
         print(f"set {r['index']:2d} {r['kind']:8s} chi2 {r['chisqr']:8.2f} truth "
@@ -226,7 +228,7 @@ def run(only: list[int] | None, workers: int, write: str | None, seed: int) -> l
     summary = summarise(rows)
     print(summary)
     if write:
-        _write(rows, summary, write, workers)
+        _write(rows, summary, write, workers, options or {})
     return rows
 
 
@@ -241,13 +243,14 @@ def summarise(rows: list[dict]) -> str:
             f"fit time median {statistics.median(times):.1f} s, max {max(times):.1f} s")
 
 
-def _write(rows: list[dict], summary: str, name: str, workers: int) -> None:
+def _write(rows: list[dict], summary: str, name: str, workers: int, options: dict) -> None:
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True, cwd=HERE).stdout.strip()
     dirty = subprocess.run(["git", "status", "--porcelain", "src"], capture_output=True,
                            text=True, cwd=HERE).stdout.strip()
+    shown = "".join(f" --fit {k}={v}" for k, v in options.items())
     head = (f"# Fit battery: {name}\n\n`python benchmarks/fit_battery.py run --workers "
-            f"{workers} --write {name}` at {commit}{' (src modified)' if dirty else ''}, "
+            f"{workers}{shown} --write {name}` at {commit}{' (src modified)' if dirty else ''}, "
             f"{datetime.date.today()}, {platform.machine()}, {len(rows)} sets of "
             f"benchmarks/data/fit_battery.json.\n\n**{summary}**\n\n")
     table = ["| set | kind | chi-square | truth's | valley | intervals | verdict | s |",
@@ -263,6 +266,16 @@ def _write(rows: list[dict], summary: str, name: str, workers: int) -> None:
     print(f"written to {out.relative_to(HERE.parent)}")
 
 
+def _keyword(text: str) -> tuple[str, object]:
+    key, _, value = text.partition("=")
+    for kind in (int, float):
+        try:
+            return key, kind(value)
+        except ValueError:
+            pass
+    return key, {"True": True, "False": False}.get(value, value)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="command", required=True)
@@ -274,11 +287,14 @@ def main() -> None:
     rn.add_argument("--workers", type=int, default=2)
     rn.add_argument("--write", default=None)
     rn.add_argument("--seed", type=int, default=0, help="the fit's seed")
+    rn.add_argument("--fit", action="append", default=[], metavar="KEY=VALUE",
+                    help="a keyword of vf.fit (a number or a word), e.g. search=evolution")
     args = ap.parse_args()
     if args.command == "make":
         make(args.sets, args.seed)
     else:
-        rows = run(args.only, args.workers, args.write, args.seed)
+        rows = run(args.only, args.workers, args.write, args.seed,
+                   dict(_keyword(kv) for kv in args.fit))
         sys.exit(0 if rows else 1)
 
 
