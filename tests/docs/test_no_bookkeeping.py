@@ -114,3 +114,20 @@ def test_the_guard_sees_absolute_paths(text):
                                   "python -m http.server -d docs/_build/html", "~/work/x"])
 def test_the_guard_passes_relative_paths_and_urls(text):
     assert not find_absolute_paths(text)
+
+
+def test_readme_claims_what_the_solvers_do():
+    """The README's summary of the solver claims only what holds, and where: the MDR
+    scan's sub-steps are the solver's constant, the flat punch alone has the root finder
+    that cannot miss close roots, Newton's orbit is not verified by a further
+    integration, and the parameter sensitivities are not called exact (their explicit
+    parameter part is a central difference)."""
+    from vibrofriction.solver import mdr
+
+    text = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
+    assert "verified by integration" not in text
+    assert "exact parameter sensitivities" not in text
+    close = text.index("cannot miss a pair of close roots")
+    assert "flat punch" in text[close - 120:close]
+    assert f"at least {mdr.SUBSTEPS} a period" in text
+    assert "no further period is integrated" in text
