@@ -23,6 +23,9 @@ TEXT = {".md", ".rst", ".py", ".css", ".html", ".txt", ".js", ".toml", ".cfg"}
 ISSUE = re.compile(r"\b(?:issues?|pull request|PR)\s*#?\d+\b|(?<![\w&/])#\d+\b", re.I)
 # 7 to 40 hex digits with at least one digit and one letter a-f: a (short) commit hash
 HASH = re.compile(r"(?<![\w.\-+/#])(?=[0-9a-f]*[a-f])(?=[0-9a-f]*[0-9])[0-9a-f]{7,40}(?![\w\-])")
+# a development branch named where a number was measured ("2026-11-26, branch `kern20`"):
+# in the prose its name is an emptied code span
+BRANCH = re.compile(r"\bbranch\s+``")
 # an absolute local path: /work/..., /home/..., /tmp/..., /Users/..., C:\...
 ABSOLUTE = re.compile(r"(?<![\w.:/~-])/(?:work|home|tmp|Users|root|mnt|var/folders)/"
                       r"|\b[A-Z]:\\[\w ]")
@@ -59,9 +62,9 @@ def _prose(text: str) -> list[tuple[int, str]]:
 
 
 def find_bookkeeping(text: str) -> list[tuple[int, str]]:
-    """(line, match) of each issue number or commit hash in a page's prose."""
+    """(line, match) of each issue number, commit hash or branch in a page's prose."""
     return [(number, m.group(0)) for number, line in _prose(text)
-            for pattern in (ISSUE, HASH) for m in pattern.finditer(line)]
+            for pattern in (ISSUE, HASH, BRANCH) for m in pattern.finditer(line)]
 
 
 def find_absolute_paths(text: str) -> list[tuple[int, str]]:
@@ -89,6 +92,7 @@ def test_no_absolute_local_paths(path):
     "Issue 20 adds an oscillation", "## Issue 21's figures", "as before (#20).",
     "see issues #7 and", "at commit 7dbaf74, 2026-11-25", "(b903c48, 2026-11-26)",
     "a full hash 3564b13b0c1f2d8e9a7b6c5d4e3f2a1b0c9d8e7f here",
+    "numbers of 2026-11-26, branch `kern20`):",
 ])
 def test_the_guard_sees_bookkeeping(text):
     assert find_bookkeeping(text)
