@@ -49,8 +49,8 @@ def png_scraper(block: Any, block_vars: dict[str, Any], gallery_conf: dict[str, 
 
 
 # the README's order: from a first curve to the bench
-ORDER = ["pin_si_units", "resonant_case_iv", "paper_experiment", "design_oscillation",
-         "fit_pin_on_disk", "atlas_on_dask"]
+ORDER = ["pin_si_units", "resonant_case_iv", "paper_experiment", "frictional_drive",
+         "sphere_stick_slip", "design_oscillation", "fit_pin_on_disk", "atlas_on_dask"]
 
 
 class ReadmeOrder:

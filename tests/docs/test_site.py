@@ -357,3 +357,35 @@ def test_getting_started_runs_and_prints_what_it_shows():
                                    optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     runner.run(test)
     assert runner.failures == 0, "docs/getting_started.md: see the doctest report above"
+
+
+@pytest.mark.browser
+@pytest.mark.slow
+@pytest.mark.parametrize("width", [1400, 900])
+def test_tables_fit_their_column(page, server, width):
+    """The theory page's summary table (the widest) wraps its cells, code included, to
+    the article's width instead of running over the page (docs/_static/custom.css)."""
+    page.set_viewport_size({"width": width, "height": 1000})
+    page.goto(server + "theory.html")
+    _math_typeset(page, 20)
+    sizes = page.eval_on_selector_all(
+        ".bd-article table",
+        "ts => ts.map(t => [t.scrollWidth, t.clientWidth, "
+        "t.closest('.bd-article').getBoundingClientRect().right"
+        " - t.getBoundingClientRect().right])")
+    assert sizes and all(scroll <= client + 1 and margin >= -1 for scroll, client, margin
+                         in sizes), sizes
+
+
+@pytest.mark.browser
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["frictional_drive", "sphere_stick_slip"])
+def test_new_gallery_pages_teach_in_steps(page, server, name):
+    """A gallery page alternates text and code: sections with prose between the code
+    blocks, and the figure the script drew."""
+    page.goto(server + f"gallery/{name}.html")
+    figures = [(s, w) for s, w in _images_loaded(page) if f"sphx_glr_{name}" in s]
+    assert figures and all(w > 0 for _, w in figures), figures
+    assert page.locator("main section section").count() >= 3  # the cells' headings
+    assert page.locator("main div.highlight-Python").count() >= 4
+    assert page.locator("main section section > p").count() >= 4
