@@ -29,7 +29,7 @@ from .problem import (
     search_bounds,
 )
 from .result import FitResult, judge
-from .search import Stages, ln_of, local_fit, run_search
+from .search import Stages, ln_of, local_fit, run_multistart, run_search
 from .uncertainty import estimate_uncertainties, identifiability, physical_params, profile_warnings
 
 #: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``:
@@ -40,6 +40,8 @@ CURVED_TOL = 1e-4
 #: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).
 GLOBAL_STAGE = (60, 12)
 CURVED_GLOBAL_STAGE = (20, 8)
+#: The multi-start stage's local starts and screened points.
+MULTISTART = (12, 128)
 
 __all__ = ["CURVED_TOL", "fit"]
 
@@ -51,7 +53,8 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
         seed: int = 0,
         workers: int = 1, progress: bool = True,
         settings: SolverSettings | None = None, jacobian: str = "exact",
-        contact: Contact | None = None) -> FitResult:
+        contact: Contact | None = None, search: str = "multistart", starts: int | None = None,
+        screen: int | None = None) -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
 
     ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
@@ -106,15 +109,20 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     workers = workers if workers >= 1 else available_cores()
     stages = Stages()
     with mapper(workers) as map_:
-        if global_stage:
+        if global_stage and search == "multistart":
+            out, minima = run_multistart(
+                problem, bounds, x0, map_, stages, MULTISTART[1] if screen is None else screen,
+                MULTISTART[0] if starts is None else starts, seed, progress, workers)
+        elif global_stage:
             out, minima = run_search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
                                   stages, maxiter, popsize, seed, progress, workers)
         else:
             with stages.timed("local") as row:
                 out, minima, row["evaluations"] = local_fit(problem, [x0], bounds, map_)
-        out, minima, dists, lower = estimate_uncertainties(problem, out, minima, bounds, map_,
-                                                   stages, progress)
+        out, minima, dists, lower, shape = estimate_uncertainties(problem, out, minima, bounds,
+                                                                  map_, stages, progress)
     res = _result(problem, out, bounds, tied, dists, lower)
+    res.extra["profiles"] = shape
     res.nfev, res.seconds = stages.nfev, time.perf_counter() - t0
     res.extra.update(local_minima=[float(m[0]) for m in minima], stages=stages.rows)
     return res

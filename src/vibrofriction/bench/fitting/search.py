@@ -105,6 +105,120 @@ def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: 
     return out, minima
 
 
+def run_multistart(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, screen: int,
+                   starts: int, seed: int, progress: bool, cores: int):
+    """Local least squares from many space-filling starts, then hops from the best.
+
+    A scrambled Sobol sample of ``screen`` points of the search box (and the guess) is scored
+    on the coarse table (:meth:`Problem.coarse`, a generation at once, :meth:`Problem.costs`);
+    least squares on every row run from the ``starts`` best of them that are distinct (no two
+    within :data:`DISTINCT` of the box's width in every parameter).  Then a basin hopping
+    (:func:`_hop`): least squares from random neighbours of the best minimum, round after
+    round, until :data:`CALM` rounds find nothing lower.  A fit still not clearly good
+    (:func:`_poor`) samples again (another seed).  The best fit and the local minima reached
+    (chi-square, point), lowest first.
+    """
+    out: Any = None
+    minima: list[Any] = []
+    coarse = problem.coarse()
+    rng = np.random.default_rng(seed)
+    for attempt in range(2):
+        with stages.timed("global") as row:
+            sample = _sobol(bounds, screen, seed + attempt)
+            if attempt == 0:
+                sample = np.vstack([x0, sample])
+            cost = coarse.costs(sample.T, map_=map_, chunks=CHUNKS * cores)
+            row["evaluations"] = len(sample)
+        chosen = _spread(sample, cost, bounds, starts, [m[1] for m in minima])
+        with stages.timed("local") as row:
+            found, more, row["evaluations"] = local_fit(problem, chosen, bounds, map_,
+                                                        progress=progress)
+        minima = sorted(minima + more, key=lambda r: r[0])
+        if out is None or found.chisqr < out.chisqr:
+            out = found
+        with stages.timed("hops") as row:
+            out, more, row["evaluations"] = _hop(problem, out, bounds, map_, rng, cores)
+        minima = sorted(minima + more, key=lambda r: r[0])
+        if not _poor(problem, out.chisqr):
+            break
+    return out, minima
+
+
+#: The basin hopping's steps in ``ln`` (a normal deviate of this scale in every parameter,
+#: half the hops at each), the hops of a round per process, and the rounds without a lower
+#: minimum (by more than :data:`GAIN` in chi-square) after which it stops, at most
+#: :data:`HOP_ROUNDS` rounds.
+HOP_SCALES = (0.1, 0.3)
+HOPS_PER_CORE = 2
+CALM = 3
+GAIN = 0.05
+HOP_ROUNDS = 12
+
+
+def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: int):
+    """Basin hopping from the minimum ``out``: the best fit, the minima met, the evaluations.
+
+    Each round runs least squares from ``HOPS_PER_CORE`` random neighbours per process of the
+    best minimum so far (steps :data:`HOP_SCALES` in ``ln``); a lower minimum becomes the
+    centre of the next round.  The chi-square of noisy data has many shallow valleys beside
+    the deepest (the stick-slip pattern of a row changes): a hop reaches a neighbour that a
+    descent cannot.
+    """
+    lo, hi = np.array(bounds, dtype=float).T
+    minima: list[Any] = []
+    spent, calm = 0, 0
+    count = max(HOPS_PER_CORE * cores, 2)
+    for _ in range(HOP_ROUNDS):
+        centre = ln_of(out, problem.free)
+        scales = np.resize(np.asarray(HOP_SCALES), count)[:, None]
+        hops = np.clip(centre + scales * rng.standard_normal((count, centre.size)), lo, hi)
+        found, more, nfev = local_fit(problem, list(hops), bounds, map_)
+        minima += more
+        spent += nfev
+        if found.chisqr < out.chisqr - GAIN:
+            out, calm = found, 0
+        else:
+            if found.chisqr < out.chisqr:
+                out = found
+            calm += 1
+            if calm == CALM:
+                break
+    return out, sorted(minima, key=lambda r: r[0]), spent
+
+
+#: Two starts of the multi-start stage are distinct when they differ by more than this
+#: fraction of the search box's width in some parameter.
+DISTINCT = 0.08
+
+
+def _sobol(bounds, n: int, seed: int) -> NDArray[np.float64]:
+    """``n`` points of a scrambled Sobol sequence in the box ``bounds`` (rows)."""
+    from scipy.stats import qmc
+
+    lo, hi = np.array(bounds, dtype=float).T
+    m = max(int(np.ceil(np.log2(max(n, 2)))), 1)
+    sample = qmc.Sobol(len(bounds), scramble=True, seed=seed).random_base2(m)[:n]
+    return lo + sample * (hi - lo)
+
+
+def _spread(sample: NDArray, cost: NDArray, bounds, count: int, taken) -> list[NDArray]:
+    """The ``count`` lowest-cost points of ``sample`` that are distinct from each other.
+
+    And from the points already ``taken`` (the minima of an earlier round).
+    """
+    lo, hi = np.array(bounds, dtype=float).T
+    width = np.where(hi > lo, hi - lo, 1.0)
+    chosen: list[NDArray] = []
+    near = [np.asarray(t, dtype=float) for t in taken]
+    for i in np.argsort(np.where(np.isfinite(cost), cost, np.inf), kind="stable"):
+        x = sample[i]
+        if all(np.max(np.abs(x - y) / width) > DISTINCT for y in chosen + near):
+            chosen.append(x)
+        if len(chosen) == count:
+            break
+    return chosen
+
+
 def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
                   seed: int, workers, progress: bool, cores: int = 1):
     """Differential evolution over ``ln`` of the free parameters.
@@ -158,7 +272,8 @@ def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
     return np.array([out.params[n].value for n in free])
 
 
-def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None):
+def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None,
+                  budget_factor: float = 1.0):
     """Levenberg-Marquardt (lmfit) over ``ln`` of the free parameters from ``x0``.
 
     ``hold``: the index of a parameter kept at its value in ``x0`` (a profile).
@@ -176,7 +291,7 @@ def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None
     nvary = len(problem.free) - (hold is not None)
     # a start that crawls along a kinked valley for thousands of evaluations does not win:
     # the budget is LOCAL_BUDGET evaluations per varied parameter
-    budget = LOCAL_BUDGET * (nvary + 1)
+    budget = int(LOCAL_BUDGET * budget_factor) * (nvary + 1)
 
     def leastsq(p, max_nfev, **jacobian_options):
         return lmfit.minimize(residual, p, method="leastsq",
@@ -239,13 +354,19 @@ def _polish(task) -> _Fit:
     return _Fit.of(least_squares(problem, x0, bounds))
 
 
-def local_fit(problem: Problem, starts: list[NDArray], bounds, map_):
+def local_fit(problem: Problem, starts: list[NDArray], bounds, map_, progress: bool = False):
     """Least squares from every start (in parallel).
 
     The lowest chi-square, the chi-squares and points reached from each start, and the count of
     model evaluations.
     """
-    found = list(map_(_polish, [(problem, x, bounds) for x in starts]))
+    from tqdm.auto import tqdm
+
+    found = []
+    with tqdm(total=len(starts), desc="fit: local starts", disable=not progress or len(starts) < 3) as bar:
+        for r in map_(_polish, [(problem, x, bounds) for x in starts]):
+            found.append(r)
+            bar.update(1)
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
     return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
 

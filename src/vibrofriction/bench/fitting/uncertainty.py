@@ -7,6 +7,7 @@ physical units with their intervals and correlations, and what the data do not i
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import lmfit
 import numpy as np
@@ -34,25 +35,26 @@ def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: 
     """The profile intervals about ``out`` (:mod:`.procedure`).
 
     A lower chi-square met on the way is fitted from.  The fit, the minima, the distances of the
-    interval ends and the lower point if the profiles met one again.
+    interval ends, the lower point if the profiles met one again, and the profiles' shape
+    (:func:`_profiles`).
     """
     free = problem.free
     with stages.timed("profiles") as row:
-        dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
-                                                     progress)
+        dists, lower, row["evaluations"], shape = _profiles(problem, out, minima, bounds, map_,
+                                                            progress)
     if lower is None:
-        return out, minima, dists, None
+        return out, minima, dists, None, shape
     old, old_best = out, ln_of(out, free)
     with stages.timed("local") as row:
         out, more, row["evaluations"] = local_fit(problem, [lower[1]], bounds, map_)
     minima = sorted(minima + more, key=lambda r: r[0])
     if old.chisqr - out.chisqr <= RESTART_PROFILES * _s2(problem, out):
         # the old level set holds the new one: its intervals, re-centred
-        return out, minima, _recentre(dists, free, old_best, ln_of(out, free)), None
+        return out, minima, _recentre(dists, free, old_best, ln_of(out, free)), None, shape
     with stages.timed("profiles") as row:
-        dists, lower, row["evaluations"] = _profiles(problem, out, minima, bounds, map_,
-                                                     progress)
-    return out, minima, dists, lower
+        dists, lower, row["evaluations"], shape = _profiles(problem, out, minima, bounds, map_,
+                                                            progress)
+    return out, minima, dists, lower, shape
 
 
 def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
@@ -60,8 +62,10 @@ def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
 
     The profile-likelihood distances ``(below, above)`` in ``ln`` of each free
     parameter from the best fit (:mod:`.procedure`), in parallel over parameters and
-    sides, widened to reach the other local ``minima`` within the level; and the point
-    of lowest chi-square a profile met, if lower than the fit's.
+    sides; from every other local minimum within the level as well, on the side away from
+    the best fit (the profile of one valley cannot see across the ridge to the next); the
+    point of lowest chi-square a profile met, if lower than the fit's; the profiles'
+    curves and the jumps of the model they crossed.
     """
     from tqdm.auto import tqdm
 
@@ -69,24 +73,65 @@ def _profiles(problem: Problem, out, minima, bounds, map_, progress: bool):
     chi = float(out.chisqr)
     level = PROFILE_LEVEL * _s2(problem, out)
     covar = out.covar
+    others = _other_valleys(best, chi, minima, level, bounds)
     tasks = []
     for j, n in enumerate(problem.free):
         se = out.params[n].stderr
-        step = 2.2 * se if se is not None and np.isfinite(se) and se > 0 else 0.05
+        step = float(np.clip(2.2 * se, MIN_STEP, MAX_STEP)) if (
+            se is not None and np.isfinite(se) and se > 0) else FIRST_STEP
         slope = _conditional_slope(covar, j, len(best))
-        tasks += [(problem, best, bounds, j, side, step, slope, level, chi)
+        alternatives = [x for _, x in others]
+        tasks += [(problem, best, best, bounds, j, side, step, slope, level, chi, alternatives)
                   for side in (-1.0, 1.0)]
+        for _, x in others:  # the far side of another valley, measured from the best fit
+            side = 1.0 if x[j] >= best[j] else -1.0
+            tasks.append((problem, x, best, bounds, j, side, step, slope, level, chi,
+                          [best]))
     with tqdm(total=len(tasks), desc="fit: profile intervals", disable=not progress) as bar:
         found = []
         for r in map_(_profile_side, tasks):
             found.append(r)
             bar.update(1)
-    dists = {n: (found[2 * j][0], found[2 * j + 1][0]) for j, n in enumerate(problem.free)}
+    dists = {n: [0.0, 0.0] for n in problem.free}
+    curves: dict[str, list[tuple[float, float]]] = {n: [] for n in problem.free}
+    jumps: dict[str, list[float]] = {n: [] for n in problem.free}
+    for task, r in zip(tasks, found, strict=True):
+        centre, j, side = task[1], task[4], task[5]
+        n = problem.free[j]
+        reach = side * (centre[j] - best[j]) + r.distance
+        k = 0 if side < 0 else 1
+        dists[n][k] = max(dists[n][k], reach)
+        curves[n] += [(float(centre[j] + side * d), float(c)) for d, c in r.curve]
+        jumps[n] += [float(centre[j] + side * d) for d in r.jumps]
+    dists_t = {n: (d[0], d[1]) for n, d in dists.items()}
     for chi_k, x in minima:  # another valley within the level widens the interval to it
         if chi_k - chi <= level:
-            dists = _reach(dists, problem.free, best, x)
-    lower = min((r[1] for r in found if r[1] is not None), key=lambda r: r[0], default=None)
-    return dists, lower, sum(r[2] for r in found)
+            dists_t = _reach(dists_t, problem.free, best, x)
+    lower = min((r.lower for r in found if r.lower is not None), key=lambda r: r[0],
+                default=None)
+    shape = {"curves": {n: sorted(set(c)) for n, c in curves.items()},
+             "jumps": {n: sorted(set(v)) for n, v in jumps.items()}, "level": level,
+             "chisqr": chi, "best": {n: float(best[j]) for j, n in enumerate(problem.free)}}
+    return dists_t, lower, sum(r.nfev for r in found), shape
+
+
+#: At most this many other local minima within the level are profiled (the lowest).
+OTHER_VALLEYS = 1
+
+
+def _other_valleys(best: NDArray, chi: float, minima, level: float, bounds):
+    """The local minima within ``level`` of ``chi`` that are distinct from ``best``."""
+    lo, hi = np.array(bounds, dtype=float).T
+    width = np.where(hi > lo, hi - lo, 1.0)
+    out: list[tuple[float, NDArray]] = []
+    for chi_k, x in minima:
+        if chi_k - chi > level:
+            continue
+        if all(np.max(np.abs(x - y) / width) > 0.02 for y in [best, *(o[1] for o in out)]):
+            out.append((chi_k, np.asarray(x, dtype=float)))
+        if len(out) == OTHER_VALLEYS:
+            break
+    return out
 
 
 def _recentre(dists, free: tuple[str, ...], old: NDArray, new: NDArray):
@@ -125,53 +170,129 @@ def _conditional_slope(covar, j: int, size: int) -> NDArray[np.float64]:
     return np.where(np.isfinite(slope), slope, 0.0)
 
 
-def _profile_side(task) -> tuple[float, tuple[float, NDArray] | None, int]:
+@dataclass
+class _Side:
+    """One side of a profile: its distance, the lowest point met, its evaluations, its curve.
+
+    ``curve``: ``(distance, chi-square)`` of every refit; ``jumps``: the distances where
+    the profile chi-square jumps (the model's discontinuities: a row's stick-slip pattern,
+    contact loss or status changes) by more than the level between refits closer than
+    :data:`JUMP_WIDTH`.
+    """
+
+    distance: float
+    lower: tuple[float, NDArray] | None
+    nfev: int
+    curve: list[tuple[float, float]]
+    jumps: list[float]
+
+
+#: The first step of a profile (``ln``) without a standard error, and the clip of
+#: ``2.2 stderr`` otherwise: a (nearly) singular covariance gives a standard error of
+#: 1e-14 that is no scale of the profile.
+FIRST_STEP = 0.05
+MIN_STEP = 2e-3
+MAX_STEP = 0.3
+#: After the profile first rises past the level, it looks this many doublings further
+#: (within the search range) for a point back below it: past a jump of the model or a
+#: ridge, the profile may come down again.
+LOOKAHEAD = 2
+#: A bracket narrower than this (in ``ln``, plus a tenth of its distance) across which the
+#: profile rises by more than the level is a jump of the model, not a slope (a parabola
+#: rises by a fifth of the level there).
+JUMP_WIDTH = 1e-3
+
+
+def _profile_side(task) -> _Side:
     """How far parameter ``j`` can move on ``side`` before the profile chi-square rises.
 
-    How far parameter ``j`` can move on ``side`` (in ``ln``) before the profile
-    chi-square (the others refitted) has risen by ``target``: doubling steps to a
-    bracket, then Brent's method; ``inf`` if it never does within the search range.
-    Each refit starts from the previous one moved along ``slope`` (the valley's
-    direction at the best fit); a distance already refitted is not refitted again.
+    How far parameter ``j`` can move on ``side`` (in ``ln``) from ``centre`` before the
+    profile chi-square (the others refitted) exceeds the best fit's by ``target``:
+    doubling steps to a bracket, :data:`LOOKAHEAD` more to see whether it comes down again,
+    then Brent's method; ``inf`` if it never rises within the search range.  Each refit
+    starts from the previous one moved along ``slope`` (the valley's direction at the best
+    fit); where a refit of the doubling steps lies above the level it is repeated from the
+    ``alternatives`` (the best fit, the other valleys) with the parameter held, and the
+    lowest wins: a refit that cannot descend across a jump of the model does not end the
+    interval.
     """
     from scipy.optimize import brentq
 
-    problem, best, bounds, j, side, step, slope, target, chi_best = task
-    limit = bounds[j][1] - best[j] if side > 0 else best[j] - bounds[j][0]
-    state = {"x": best.copy(), "d": 0.0, "nfev": 0, "lower": None}
-    rises = {0.0: 0.0}
+    (problem, centre, best, bounds, j, side, step, slope, target, chi_best,
+     alternatives) = task
+    limit = bounds[j][1] - centre[j] if side > 0 else centre[j] - bounds[j][0]
+    state = {"nfev": 0, "lower": None}
+    rises = {0.0: 0.0 if np.array_equal(centre, best) else float(problem.cost(centre)) - chi_best}
+    points = {0.0: centre.copy()}  # the refit at each distance
+    lo, hi = np.array(bounds).T
 
-    def rise(d: float) -> float:
+    def refit(x0: NDArray) -> tuple[NDArray, float]:
+        x0 = np.clip(x0, lo, hi)
+        if len(centre) == 1:
+            state["nfev"] += 1
+            return x0, problem.cost(x0)
+        out = least_squares(problem, x0, bounds, hold=j)
+        state["nfev"] += int(out.nfev)
+        return ln_of(out, problem.free), float(out.chisqr)
+
+    def rise(d: float, explore: bool = False) -> float:
         if d in rises:
             return rises[d]
-        x = state["x"] + side * (d - state["d"]) * slope
-        x[j] = best[j] + side * d
-        lo, hi = np.array(bounds).T
-        x = np.clip(x, lo, hi)
-        if len(best) == 1:
-            chi, state["nfev"] = problem.cost(x), state["nfev"] + 1
-        else:
-            out = least_squares(problem, x, bounds, hold=j)
-            x, chi = ln_of(out, problem.free), float(out.chisqr)
-            state["nfev"] += int(out.nfev)
-        state["x"], state["d"] = x, d
+        held = centre[j] + side * d
+        inner = max(k for k in points if k < d)  # the refit on the way from the centre
+        x = points[inner] + side * (d - inner) * slope
+        x[j] = held
+        x, chi = refit(x)
+        if explore and chi - chi_best > target:  # another start, across what stopped it
+            for alt in alternatives + [centre]:
+                y0 = np.array(alt, dtype=float)
+                y0[j] = held
+                y, c = refit(y0)
+                if c < chi:
+                    x, chi = y, c
+        points[d] = x
         if chi < chi_best - 1e-6 * max(chi_best, 1.0) and (
                 state["lower"] is None or chi < state["lower"][0]):
             state["lower"] = (chi, x)
         rises[d] = chi - chi_best
         return rises[d]
 
-    def root(d: float) -> float:  # nearly linear in d where the profile is a parabola
-        r = rise(d)
+    def root(d: float, explore: bool = False) -> float:  # ~linear in d on a parabola
+        r = rise(d, explore)
         return math.copysign(math.sqrt(abs(r)), r) - math.sqrt(target)
 
+    def done(distance: float, jumps: list[float]) -> _Side:
+        curve = sorted((d, chi_best + r) for d, r in rises.items())
+        return _Side(distance, state["lower"], state["nfev"], curve, jumps)
+
     inner, d = 0.0, min(step, limit)
-    while root(d) <= 0.0:
-        if d >= limit:
-            return math.inf, state["lower"], state["nfev"]
-        inner, d = d, min(2.0 * d, limit)
-    d = brentq(root, inner, d, xtol=1e-5, rtol=0.03, disp=False)
-    return float(d), state["lower"], state["nfev"]
+    while True:
+        while root(d, explore=True) <= 0.0:
+            if d >= limit:
+                return done(math.inf, [])
+            inner, d = d, min(2.0 * d, limit)
+        ahead, back = d, None  # does the profile come down again further out?
+        for _ in range(LOOKAHEAD):
+            if ahead >= limit:
+                break
+            ahead = min(2.0 * ahead, limit)
+            if root(ahead, explore=True) <= 0.0:
+                back = ahead
+                break
+        if back is None:
+            break
+        inner, d = back, min(2.0 * back, limit)
+        if inner >= limit:
+            return done(math.inf, [])
+    end = float(brentq(root, inner, d, xtol=1e-5, rtol=0.03, disp=False))
+    # a bracket that closed on a jump: the far side's refits (from every start) decide
+    near = [x for x in rises if x <= end]
+    far = [x for x in rises if x > end]
+    jumps = []
+    if near and far and min(far) - max(near) < JUMP_WIDTH + 0.1 * end and (
+            rises[min(far)] - rises[max(near)] > target):
+        jumps.append(end)
+    return done(end, jumps)
 
 
 def physical_params(out, free: tuple[str, ...], values: dict[str, float],
