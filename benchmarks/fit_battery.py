@@ -31,6 +31,7 @@ every free field.  The score of a fit:
 Run:
   python benchmarks/fit_battery.py make [--sets 25] [--seed 32]   # the data (1-2 min)
   python benchmarks/fit_battery.py run [--only 0,3] [--workers 2] [--write NAME]
+  python benchmarks/fit_battery.py profile [--set 3] [--out docs/img/fit_profiles.png]
 ``make`` writes benchmarks/data/fit_battery.json; ``run --write NAME`` writes
 benchmarks/results/fit_battery_NAME.md (and .json with every number).
 """
@@ -266,6 +267,23 @@ def _write(rows: list[dict], summary: str, name: str, workers: int, options: dic
     print(f"written to {out.relative_to(HERE.parent)}")
 
 
+def profile_figure(index: int, out: Path, workers: int) -> None:
+    """The fit of set ``index`` and its profiles (:func:`vibrofriction.figures.plot_profiles`)."""
+    import vibrofriction as vf
+    from vibrofriction.figures import plot_profiles
+
+    s = load_sets([index])[0]
+    data, guess, kw = fit_call(s)
+    res = vf.fit(data, guess, workers=workers, progress=False, **kw)
+    print(res.report())
+    print(score(s, res, truth_chisqr(s)))
+    fig = plot_profiles(res, truth={n: s["truth"][n] for n in FREE})
+    fig.suptitle(f"battery set {index} ({s['kind']}): profiles of a 5-parameter fit to data "
+                 "made by the independent reference", fontsize="small")
+    fig.savefig(out, dpi=110)
+    print(f"written to {out}")
+
+
 def _keyword(text: str) -> tuple[str, object]:
     key, _, value = text.partition("=")
     for kind in (int, float):
@@ -289,8 +307,14 @@ def main() -> None:
     rn.add_argument("--seed", type=int, default=0, help="the fit's seed")
     rn.add_argument("--fit", action="append", default=[], metavar="KEY=VALUE",
                     help="a keyword of vf.fit (a number or a word), e.g. search=evolution")
+    pf = sub.add_parser("profile")
+    pf.add_argument("--set", type=int, default=3)
+    pf.add_argument("--out", type=Path, default=HERE.parent / "docs" / "img" / "fit_profiles.png")
+    pf.add_argument("--workers", type=int, default=2)
     args = ap.parse_args()
-    if args.command == "make":
+    if args.command == "profile":
+        profile_figure(args.set, args.out, args.workers)
+    elif args.command == "make":
         make(args.sets, args.seed)
     else:
         rows = run(args.only, args.workers, args.write, args.seed,

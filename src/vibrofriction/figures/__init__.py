@@ -68,6 +68,7 @@ __all__ = [
     "plot_atlas",
     "plot_design",
     "plot_fit",
+    "plot_profiles",
     "solve",
     "solve_recipes",
     "style",
@@ -186,6 +187,35 @@ def plot_fit(result: FitResult) -> Figure:
     from .bench import plot_fit as _plot
 
     return _plot(result)
+
+
+def plot_profiles(result: FitResult, truth: dict[str, float] | None = None) -> Figure:
+    """A fit's profile chi-square per free parameter, with its level and its interval.
+
+    Every refit of the profiles (the parameter held, the others refitted), the level that
+    bounds the 95 % interval, the interval, the fit and, where given, the ``truth`` (a
+    mapping of parameter names to values). The bench is imported on first use.
+
+    Parameters
+    ----------
+    result : vibrofriction.bench.FitResult
+        What :func:`vibrofriction.fit` returned (a result loaded from JSON keeps no profiles).
+    truth : dict, optional
+        Values to mark, by parameter name.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> from vibrofriction.figures import plot_profiles
+    >>> plot_profiles(result).savefig("profiles.png", dpi=150)  # doctest: +SKIP
+    """
+    from .bench import plot_profiles as _plot
+
+    return _plot(result, truth)
 
 
 def plot_design(result: DesignResult) -> Figure:

@@ -1,4 +1,4 @@
-"""Figures of the bench: a fit against its data, and a design's map (docs/bench.md).
+"""Figures of the bench: a fit against its data, its profiles, a design's map (docs/bench.md).
 
 Pure drawing on :class:`~vibrofriction.bench.FitResult` and
 :class:`~vibrofriction.bench.DesignResult`; each returns a ``matplotlib.figure.Figure``.
@@ -15,7 +15,7 @@ from matplotlib.ticker import NullFormatter
 from ..bench import DesignResult, FitResult
 from . import style
 
-__all__ = ["plot_design", "plot_fit"]
+__all__ = ["plot_design", "plot_fit", "plot_profiles"]
 
 
 @style.styled
@@ -59,6 +59,56 @@ def plot_fit(result: FitResult) -> Figure:
     verdict = "" if result.quality == "good" else f"{result.quality.upper()} FIT; "
     ax.set_title(f"fit: {', '.join(result.free)} free; {verdict}reduced chi-square "
                  f"{result.redchi:.3g}", fontsize=8)
+    return fig
+
+
+@style.styled
+def plot_profiles(result: FitResult, truth: dict[str, float] | None = None) -> Figure:
+    """The profile chi-square of each free parameter, its level and its 95 % interval.
+
+    Every refit the profiles made (the others refitted, the parameter held; points, not a
+    line: the profiles from two valleys are two curves), the rise above
+    the fit's chi-square against the parameter, the level that bounds the interval, the
+    interval (shaded; the search range when not determined), the fit and, where given, the
+    ``truth``; the jumps of the model at an interval's end in red.
+    """
+    shape = result.extra.get("profiles")
+    if not shape:
+        raise ValueError("this fit has no profiles to show (a fit loaded from JSON keeps none: "
+                         "plot the result vf.fit returned)")
+    free = list(result.free)
+    cols = min(len(free), 3)
+    rows = math.ceil(len(free) / cols)
+    fig = style.figure(3.0 * cols, 2.5 * rows)
+    axes = np.atleast_1d(fig.subplots(rows, cols, squeeze=False)).ravel()
+    level, chi = shape["level"], shape["chisqr"]
+    for ax, name in zip(axes, free, strict=False):
+        curve = np.array(shape["curves"][name]) if shape["curves"][name] else np.zeros((0, 2))
+        best = math.exp(shape["best"][name])
+        if curve.size:
+            x, rise = np.exp(curve[:, 0]), curve[:, 1] - chi
+            order = np.argsort(x)
+            ax.plot(x[order], rise[order], ".", color="C0", ms=4,
+                    label="profile refits")
+        lo, hi = result.intervals.get(name, (math.nan, math.nan))
+        status = result.determination.get(name, "")
+        ax.axvspan(lo if math.isfinite(lo) else ax.get_xlim()[0],
+                   hi if math.isfinite(hi) else ax.get_xlim()[1], color="C2", alpha=0.15,
+                   label="95 % interval")
+        ax.axhline(level, color="k", lw=0.8, ls="--", label=f"level {level:.3g}")
+        ax.axvline(best, color="C1", lw=1.0, label="fit")
+        if truth and name in truth:
+            ax.axvline(truth[name], color="C3", lw=1.0, ls=":", label="truth")
+        for j in shape["jumps"][name]:
+            ax.plot([math.exp(j)], [level], "v", color="C3", ms=6)
+        ax.set_xscale("log")
+        ax.set_ylim(-0.05 * 3 * level, 3 * level)
+        ax.set_xlabel(name)
+        ax.set_title(status, fontsize="small")
+    axes[0].set_ylabel("chi-square rise")
+    axes[0].legend(fontsize="x-small", loc="upper left")
+    for ax in axes[len(free):]:
+        ax.set_visible(False)
     return fig
 
 

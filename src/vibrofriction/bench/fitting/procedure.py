@@ -30,7 +30,13 @@ from .problem import (
 )
 from .result import FitResult, judge
 from .search import Stages, ln_of, local_fit, run_multistart, run_search
-from .uncertainty import estimate_uncertainties, identifiability, physical_params, profile_warnings
+from .uncertainty import (
+    determination,
+    estimate_uncertainties,
+    identifiability,
+    physical_params,
+    profile_warnings,
+)
 
 #: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``:
 #: three times faster than the default 1e-5, and its error (``mu0 1e-4`` in the COF) is
@@ -148,6 +154,10 @@ def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
         extra["profile_intervals"] = intervals
         search = {n: (ln[j] - bounds[j][0], bounds[j][1] - ln[j]) for j, n in enumerate(free)}
         result_params, intervals = physical_params(out, free, named, tied, search)
+    status, combos = determination(out, problem, ln, bounds, dists)
+    for n, st in status.items():  # no standard error from the covariance of a loose parameter
+        if st == "not determined" and n in result_params:
+            result_params[n].stderr = None
     warnings = identifiability(out, problem, ln, bounds)
     warnings += profile_warnings(free, dists, tied, lower)
     return FitResult(params=result_params, system=system, data=problem.data, free=free,
@@ -157,4 +167,4 @@ def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
                      warnings=warnings, chisqr=float(out.chisqr), redchi=float(out.redchi),
                      nfev=0, seconds=0.0, weighted=problem.weighted, guess=problem.guess,
                      intervals=intervals, extra=extra, quality=quality, p_value=p_value,
-                     penalised=penalised)
+                     penalised=penalised, determination=status, combinations=combos)

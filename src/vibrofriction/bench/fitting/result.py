@@ -46,6 +46,9 @@ class FitResult:
     probability ``p_value`` below :data:`POOR_P`, a profile met a lower chi-square twice,
     or rows could not be evaluated) or ``"unjudged"`` (no ``sigma``);
     ``penalised``: rows the model could not evaluate at the best fit, by reason;
+    ``determination``: what the data hold of each free parameter, ``"determined"``,
+    ``"bounded below"``, ``"bounded above"`` or ``"not determined"``, and
+    ``combinations`` the combination they hold of one not determined (e.g. ``k_x/mass``);
     ``warnings``: one sentence per parameter the data do not identify; ``chisqr``,
     ``redchi``, ``nfev`` (model evaluations, global stage included) and ``seconds``.
     """
@@ -67,6 +70,8 @@ class FitResult:
     quality: str = "unjudged"
     p_value: float = math.nan
     penalised: dict[str, int] = field(default_factory=dict)
+    determination: dict[str, str] = field(default_factory=dict)
+    combinations: dict[str, str] = field(default_factory=dict)
 
     def predict(self, v0: NDArray, du_z: NDArray, omega: NDArray, *,
                 du_x: NDArray | float = 0.0, phase_x: NDArray | float = 0.0,
@@ -78,7 +83,7 @@ class FitResult:
 
     def report(self) -> str:
         """The fit in words and numbers: the verdict first."""
-        lines = [_verdict(self),
+        lines = [_verdict(self), *_held(self),
                  f"fit of {len(self.data)} points, {len(self.free)} free parameters "
                  f"({'weighted by sigma' if self.weighted else 'unweighted'}): "
                  f"chi-square {self.chisqr:.4g}, reduced {self.redchi:.4g}, "
@@ -93,7 +98,8 @@ class FitResult:
                     self.quality, "95 % interval")
         for name in self.params:
             lines.append(_parameter_line(name, self.params[name],
-                                         self.intervals.get(name), what))
+                                         self.intervals.get(name), what,
+                                         self.determination.get(name, "determined")))
         pairs = [(a, b, self.params[a].correl[b]) for i, a in enumerate(self.free)
                  for b in self.free[i + 1:] if self.params[a].correl
                  and b in self.params[a].correl]
@@ -135,7 +141,8 @@ class FitResult:
             "warnings": self.warnings, "chisqr": self.chisqr, "redchi": self.redchi,
             "nfev": self.nfev, "seconds": self.seconds, "weighted": self.weighted,
             "quality": self.quality, "p_value": _finite_or_none(self.p_value),
-            "penalised": self.penalised,
+            "penalised": self.penalised, "determination": self.determination,
+            "combinations": self.combinations,
             "intervals": {n: [_finite_or_none(lo), _finite_or_none(hi)]
                           for n, (lo, hi) in self.intervals.items()},
             "derived": {k: v for k, (v, _) in self.derived().items()},
@@ -167,7 +174,9 @@ class FitResult:
                           "profile_intervals": _intervals(doc.get("profile_intervals", {}))},
                    quality=doc.get("quality", "unjudged"),
                    p_value=math.nan if doc.get("p_value") is None else doc["p_value"],
-                   penalised=doc.get("penalised", {}))
+                   penalised=doc.get("penalised", {}),
+                   determination=doc.get("determination", {}),
+                   combinations=doc.get("combinations", {}))
 
 
 def _intervals(saved: dict) -> dict[str, tuple[float, float]]:
@@ -183,14 +192,18 @@ def _finite_or_none(x: float) -> float | None:
 
 def _verdict(res: FitResult) -> str:
     """The report's first line: what the chi-square says about the fit."""
-    dof = max(len(res.data) - len(res.free), 1)
+    dof = len(res.data) - len(res.free)
+    if dof <= 0:
+        return (f"FIT NOT JUDGED: {len(res.free)} free parameters for {len(res.data)} points "
+                "leave no degrees of freedom: the chi-square can say nothing about the fit, "
+                "and the intervals hold only if the model is right")
     chi = f"chi-square {res.chisqr:.4g} for {dof} degrees of freedom (p = {res.p_value:.2g}"
     if res.quality == "good":
         return f"GOOD FIT: {chi})"
     if res.quality == "doubtful":
         return (f"DOUBTFUL FIT: {chi} < {DOUBTFUL_P:g}): the fit may sit in a wrong valley "
-                "(a second global stage found no lower one), or a constraint, the model or "
-                "sigma may be off; the intervals hold only if this minimum is the right one")
+                f"({_searched(res)}), or a constraint, the model or sigma may be off; the "
+                "intervals hold only if this minimum is the right one")
     rows = sum(res.penalised.values())
     why = [f"{chi} < {POOR_P:g})"] if res.weighted and res.p_value < POOR_P else []
     if not res.extra.get("at_lowest_minimum", True):
@@ -204,6 +217,16 @@ def _verdict(res: FitResult) -> str:
     return (f"POOR FIT: {'; '.join(why)}: these parameters do not describe the data within "
             "the stated sigma (a wrong valley, a wrong constraint, a wrong model or an "
             "understated sigma); the intervals are the whole search range")
+
+
+def _searched(res: FitResult) -> str:
+    """What the global search did, as the stages that ran say."""
+    rounds = [r for r in res.extra.get("stages", []) if r["stage"] == "global"]
+    if not rounds:
+        return "no global search ran: global_stage=False"
+    if len(rounds) == 1:
+        return "the global search found no lower one"
+    return f"{len(rounds)} rounds of the global search found no lower one"
 
 
 def _constraint_lines(res: FitResult) -> list[str]:
@@ -239,10 +262,35 @@ def _constraint_lines(res: FitResult) -> list[str]:
     return ["constraints in force:" if lines else "constraints in force: none", *lines]
 
 
-def _parameter_line(name: str, p, interval: tuple[float, float] | None, what: str) -> str:
+def _held(res: FitResult) -> list[str]:
+    """What the data hold of the free parameters, in one line (none without a verdict)."""
+    if not res.determination:
+        return []
+    groups: dict[str, list[str]] = {}
+    for n in res.free:
+        groups.setdefault(res.determination[n], []).append(n)
+    parts = []
+    for status in ("determined", "bounded below", "bounded above", "not determined"):
+        names = groups.get(status, [])
+        if not names:
+            continue
+        text = f"{', '.join(names)} {status}"
+        combos = [res.combinations[n] for n in names if n in res.combinations]
+        if status == "not determined" and combos:
+            text += f" (the data hold {', '.join(dict.fromkeys(combos))})"
+        elif status.startswith("bounded"):
+            text += " only"
+        parts.append(text)
+    return ["what the data hold: " + "; ".join(parts)]
+
+
+def _parameter_line(name: str, p, interval: tuple[float, float] | None, what: str,
+                    status: str = "determined") -> str:
     """``name = value +- stderr, 95 % interval [lo, hi]``, an unbounded side in words."""
     err = (f"+- {p.stderr:.3g} ({100 * p.stderr / abs(p.value):.2g} %)"
            if p.stderr is not None and np.isfinite(p.stderr) else "(not bounded)")
+    if status == "not determined":
+        err, what = "not determined", "range explored"
     if interval is None or any(math.isnan(x) for x in interval):
         return f"  {name:6s} = {p.value:.6g} {err}"
     lo, hi = interval
@@ -261,6 +309,8 @@ def _json_default(x):
 
 def judge(problem: Problem, chisqr: float, lower, penalised: int) -> tuple[str, float]:
     """``(quality, p_value)`` of a fit (:mod:`.procedure`; :class:`FitResult`)."""
+    if len(problem.data) <= len(problem.free):  # no degrees of freedom: nothing to judge
+        return "unjudged", math.nan
     p_value = chi_square_p(problem, chisqr) if problem.weighted else math.nan
     if lower is not None or penalised or (problem.weighted and p_value < POOR_P):
         return "poor", p_value
@@ -277,4 +327,5 @@ def chi_square_p(problem: Problem, chisqr: float) -> float:
     """
     from scipy.stats import chi2
 
-    return float(chi2.sf(chisqr, max(len(problem.data) - len(problem.free), 1)))
+    dof = len(problem.data) - len(problem.free)
+    return float(chi2.sf(chisqr, dof)) if dof > 0 else math.nan

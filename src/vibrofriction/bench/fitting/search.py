@@ -150,7 +150,7 @@ def run_multistart(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, 
 #: :data:`HOP_ROUNDS` rounds.
 HOP_SCALES = (0.1, 0.3)
 HOPS_PER_CORE = 2
-CALM = 3
+CALM = 2
 GAIN = 0.05
 HOP_ROUNDS = 12
 

@@ -197,6 +197,8 @@ MAX_STEP = 0.3
 #: (within the search range) for a point back below it: past a jump of the model or a
 #: ridge, the profile may come down again.
 LOOKAHEAD = 2
+#: The relative precision of an interval's end (Brent's method on the profile).
+BRENT_RTOL = 0.05
 #: A bracket narrower than this (in ``ln``, plus a tenth of its distance) across which the
 #: profile rises by more than the level is a jump of the model, not a slope (a parabola
 #: rises by a fifth of the level there).
@@ -243,7 +245,10 @@ def _profile_side(task) -> _Side:
         x = points[inner] + side * (d - inner) * slope
         x[j] = held
         x, chi = refit(x)
-        if explore and chi - chi_best > target:  # another start, across what stopped it
+        # a rise past the level faster than a parabola's from the refit inside it: another
+        # start, across what may have stopped this one
+        if explore and chi - chi_best > target + 4.0 * max(rises[inner], 0.0) * (
+                d / inner if inner > 0 else 1.0) ** 2 / 4.0:
             for alt in alternatives + [centre]:
                 y0 = np.array(alt, dtype=float)
                 y0[j] = held
@@ -284,7 +289,7 @@ def _profile_side(task) -> _Side:
         inner, d = back, min(2.0 * back, limit)
         if inner >= limit:
             return done(math.inf, [])
-    end = float(brentq(root, inner, d, xtol=1e-5, rtol=0.03, disp=False))
+    end = float(brentq(root, inner, d, xtol=1e-5, rtol=BRENT_RTOL, disp=False))
     # a bracket that closed on a jump: the far side's refits (from every start) decide
     near = [x for x in rises if x <= end]
     far = [x for x in rises if x > end]
@@ -392,3 +397,63 @@ def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | No
         cols.append((problem.residual(ln + e) - problem.residual(ln - e)) / (2 * step))
     jac = np.array(cols).T
     return jac if np.all(np.isfinite(jac)) else None
+
+
+#: A direction of the Jacobian whose relative singular value is below this is weak: a
+#: parameter that the profiles leave open is reported with the combination along it that
+#: the data do hold.
+WEAK = 1e-2
+
+
+def determination(out, problem: Problem, ln: NDArray, bounds, dists
+                  ) -> tuple[dict[str, str], dict[str, str]]:
+    """What the data hold of each free parameter, and the combination they hold instead.
+
+    ``determined`` (both ends of its interval closed), ``bounded below`` or ``bounded
+    above`` (one end closed), ``not determined`` (neither, or the fit pins it, or a
+    strongly correlated neighbour, at the bound of the search range: its interval is then the
+    search range's, not the data's).  For a parameter not determined, the combination of it
+    and its partner along the weakest direction of the Jacobian that the data fix (e.g.
+    ``k_x/mass``), where the Jacobian shows one.
+    """
+    free = problem.free
+    pinned = [n for n, x, (lo, hi) in zip(free, ln, bounds, strict=True)
+              if min(x - lo, hi - x) < 1e-3]
+    status: dict[str, str] = {}
+    for n in free:
+        below, above = (math.isfinite(d) for d in dists[n])
+        correl = out.params[n].correl or {}
+        leaning = [m for m in pinned if m != n and abs(correl.get(m, 0.0)) > STRONG_CORRELATION]
+        if n in pinned or leaning or not (below or above):
+            status[n] = "not determined"
+        else:
+            status[n] = ("determined" if below and above else
+                         "bounded below" if below else "bounded above")
+    combos = {}
+    jac = _jacobian(problem, ln) if any(v != "determined" for v in status.values()) else None
+    if jac is not None and len(free) > 1:
+        _, sv, vt = np.linalg.svd(jac, full_matrices=False)
+        weak = [k for k in np.argsort(sv) if sv[0] > 0 and sv[k] / sv[0] < WEAK]
+        for n in (m for m in free if status[m] != "determined"):
+            j = free.index(n)
+            for k in weak:
+                v = vt[k]
+                if abs(v[j]) < 0.3:
+                    continue
+                partner = max((i for i in range(len(free)) if i != j), key=lambda i: abs(v[i]))
+                if abs(v[partner]) < 0.3 * abs(v[j]):
+                    continue
+                combos[n] = _combination(n, free[partner], -v[j] / v[partner])
+                break
+    return status, combos
+
+
+def _combination(a: str, b: str, power: float) -> str:
+    """``a b^power`` written as a ratio or product (``power`` rounded to a half if near one)."""
+    half = round(2.0 * power) / 2.0
+    p = half if abs(power - half) < 0.1 else round(power, 2)
+    if p == -1.0:
+        return f"{a}/{b}"
+    if p == 1.0:
+        return f"{a}*{b}"
+    return f"{a}*{b}^{p:g}"
