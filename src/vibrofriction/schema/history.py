@@ -4,7 +4,7 @@ See :mod:`vibrofriction.schema`; standard library only. Each sampled array of a 
 one :class:`~vibrofriction.schema.Field` here, with its unit and meaning (role
 ``"history"``); a quantity that is also a result's (the body velocity, the contact force, the
 contact spring's elongation) is the result's field. ``to_xarray()`` and ``to_dataframe()`` of a
-history take their attributes from :data:`HISTORY_FIELD`.
+history take their attributes from :data:`HISTORY_FIELD`, as do its events (``event_*``).
 """
 
 from __future__ import annotations
@@ -47,7 +47,7 @@ def _energy(name: str, long_name: str) -> Field:
 
 
 #: Every sampled quantity of a history, in the order of the classes' fields (:class:`History`,
-#: then :class:`PlaneHistory`'s, then :class:`CurvedHistory`'s own).
+#: then :class:`PlaneHistory`'s, then :class:`CurvedHistory`'s own), then its events'.
 HISTORY_FIELDS: tuple[Field, ...] = (
     _h("tau", "float", "1", "drive time, omega t (sample times include every event's, on "
        "both sides)", "tau"),
@@ -89,6 +89,14 @@ HISTORY_FIELDS: tuple[Field, ...] = (
     _area("slip_area_fraction", "in slip, either way"),
     _area("open_area_fraction", "out of contact"),
     _h("normal_impulse", "float", FORCE_UNIT, "integral of n over tau since tau = 0"),
+    # the transitions (History.events), one entry each
+    _h("event_tau", "float", "1", "drive time of each transition, omega t", "tau"),
+    _h("event_kind", "str", "1", "kind of each transition (stick, slip, lift-off, "
+       "touchdown, ...)"),
+    _h("event_before", "str", "1", "state of the contact before each transition "
+       "(ContactState)"),
+    _h("event_after", "str", "1", "state of the contact after each transition "
+       "(ContactState)"),
 )
 
 #: Every sampled quantity of a history by name.

@@ -254,7 +254,7 @@ class FrictionResult:  # noqa: D101 (the docstring is __doc__ below: it lists th
         for f in _TABLE_FIELDS:
             v = getattr(self, f.name)
             row[f.name] = v.value if isinstance(v, Status) else v
-        row.update({k: v[0] for k, v in _state_columns([self.final_state]).items()})
+        row.update({k: v[0] for k, v in state_columns([self.final_state]).items()})
         return row
 
     def __repr__(self) -> str:
@@ -368,7 +368,7 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
                 values = np.vectorize(lambda s: s.value, otypes=[object])(values)
             out.append(Column(f.name, dims, np.asarray(values), f.attrs(),
                               _CATEGORIES.get(f.name, ())))
-        flat = _state_columns(self.final_state.reshape(-1).tolist())
+        flat = state_columns(self.final_state.reshape(-1).tolist())
         for g in STATE_FIELDS:
             name = f"final_{g.name}"
             out.append(Column(name, dims, np.asarray(flat[name]).reshape(self.shape),
@@ -475,7 +475,7 @@ _CATEGORIES = {"status": tuple(s.value for s in Status), "method": METHOD_NAMES,
                "final_phase": (*_SECTION_PHASES.values(), "none")}
 
 
-def _state_columns(states: Iterable[SectionState | None]) -> dict[str, list[Any]]:
+def state_columns(states: Iterable[SectionState | None]) -> dict[str, list[Any]]:
     """The components of section states as ``final_*`` columns (nan, ``"none"``: no state)."""
     out: dict[str, list[Any]] = {f"final_{g.name}": [] for g in STATE_FIELDS}
     for s in states:
