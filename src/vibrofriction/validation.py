@@ -16,8 +16,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from .schema import CHOICES, PARAMETER, PARAMETERS, Range
 
-__all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "range_text",
-           "validated"]
+__all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "checked_count",
+           "checked_number", "range_text", "validated"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -54,6 +54,48 @@ def _floats(name: str, value: ArrayLike) -> NDArray[np.float64]:
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a number or an array of numbers, "
                          f"got {value!r}") from None
+
+
+#: The dtype kinds of real numbers: signed and unsigned integers, floats (not bool, str, ...).
+_REAL_KINDS = "iuf"
+
+
+def _not_a_number(value: object) -> tuple[object] | None:
+    """The first element of ``value`` that is no real number (a string, a bool, ...), if any.
+
+    As a 1-tuple (the element may be None); None where every element is a real number, or
+    where ``value`` is of a kind the float conversion judges itself.
+    """
+    if isinstance(value, str | bytes | bool | np.bool_):
+        return (value,)
+    if isinstance(value, np.ndarray | np.generic):
+        kind = value.dtype.kind
+        if kind in _REAL_KINDS or value.size == 0:
+            return None
+        flat = np.ravel(value)
+        if kind != "O":
+            return (flat[0],)
+        value = flat.tolist()
+    if isinstance(value, list | tuple):
+        for v in value:
+            bad = _not_a_number(v)
+            if bad is not None:
+                return bad
+    return None
+
+
+def _refuse_non_numbers(name: str, value: object, allowed: Range) -> None:
+    """ValueError naming ``name`` and its range where ``value`` holds a string or a bool.
+
+    ``float("1.0")`` and ``float(True)`` are numbers to numpy; a model parameter given as
+    either is more likely a mistake (a value read from a file, a flag) than meant.
+    """
+    if value.__class__ is float or value.__class__ is int:  # the common case, at once
+        return
+    bad = _not_a_number(value)
+    if bad is not None:
+        raise ValueError(f"{name} must be a real number or an array of real numbers "
+                         f"({allowed.text()}), not a {type(bad[0]).__name__}: got {value!r}")
 
 
 def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
@@ -187,8 +229,8 @@ def validated(values: Mapping[str, ArrayLike], *,
     Raises
     ------
     ValueError
-        Naming the parameter, its range and the first bad value; or naming an unknown
-        parameter.
+        Naming the parameter, its range and the first bad value; a string or a bool (a
+        numeric string such as ``"1.0"`` too: not a number); or naming an unknown parameter.
 
     Examples
     --------
@@ -215,12 +257,96 @@ def validated(values: Mapping[str, ArrayLike], *,
             out[p.name] = out[p.twin]
             continue
         r = ranges.get(p.name, p.range)
+        _refuse_non_numbers(p.name, values[p.name], r)
         if r.above and r.above in out:
             out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
         else:
             out[p.name] = checked(p.name, values[p.name], minimum=r.minimum, strict=r.strict,
                                   maximum=r.maximum, allow_inf=r.allow_inf)
     return {n: out[n] for n in values}
+
+
+def checked_number(name: str, value: object, allowed: Range) -> float:
+    """Check that ``value`` is one real number in the range ``allowed`` (a solver's setting).
+
+    Parameters
+    ----------
+    name : str
+        The setting's name, for the error message.
+    value : object
+        The value given.
+    allowed : Range
+        Its allowed values.
+
+    Returns
+    -------
+    float
+        ``value`` as a float.
+
+    Raises
+    ------
+    ValueError
+        In one sentence naming ``name`` and its range: a value out of range, nan, an array, a
+        string or a bool.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import POSITIVE
+    >>> from vibrofriction.validation import checked_number
+    >>> checked_number("tol", 1e-5, POSITIVE)
+    1e-05
+    >>> checked_number("tol", -1.0, POSITIVE)
+    Traceback (most recent call last):
+    ...
+    ValueError: tol must be finite and > 0, got -1.0
+    """
+    _refuse_non_numbers(name, value, allowed)
+    arr = checked(name, value, minimum=allowed.minimum, strict=allowed.strict,  # type: ignore[arg-type]
+                  maximum=allowed.maximum, allow_inf=allowed.allow_inf)
+    if arr.ndim:
+        raise ValueError(f"{name} must be one number ({allowed.text()}), got {value!r}")
+    return float(arr)
+
+
+def checked_count(name: str, value: object, minimum: int = 1) -> int:
+    """Check that ``value`` is a whole number ``>= minimum`` (an integral float such as 3.0 too).
+
+    Parameters
+    ----------
+    name : str
+        The count's name, for the error message.
+    value : object
+        The value given.
+    minimum : int, optional
+        The smallest count allowed.
+
+    Returns
+    -------
+    int
+        ``value`` as an int.
+
+    Raises
+    ------
+    ValueError
+        In one sentence naming ``name``: not a whole number (2.7, nan, a string, a bool),
+        or below ``minimum``.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import checked_count
+    >>> checked_count("n_springs", 3.0)
+    3
+    >>> checked_count("n_springs", 2.7)
+    Traceback (most recent call last):
+    ...
+    ValueError: n_springs must be a whole number >= 1 (such as 3 or 3.0), got 2.7
+    """
+    whole = isinstance(value, int | float | np.integer | np.floating) \
+        and not isinstance(value, bool | np.bool_) and float(value).is_integer()
+    if not (whole and value >= minimum):  # type: ignore[operator]
+        raise ValueError(f"{name} must be a whole number >= {minimum} (such as {minimum + 2} "
+                         f"or {minimum + 2}.0), got {value!r}")
+    return int(value)  # type: ignore[call-overload]
 
 
 def checked_choice(name: str, value: object) -> str:
