@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 from .schema import CHOICES, PARAMETER, PARAMETERS, Range
 
 __all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "checked_count",
-           "checked_number", "range_text", "validated"]
+           "checked_number", "range_text", "refuse_non_numbers", "validated"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -84,17 +84,42 @@ def _not_a_number(value: object) -> tuple[object] | None:
     return None
 
 
-def _refuse_non_numbers(name: str, value: object, allowed: Range) -> None:
+def refuse_non_numbers(name: str, value: object, allowed: Range) -> None:
     """ValueError naming ``name`` and its range where ``value`` holds a string or a bool.
 
     ``float("1.0")`` and ``float(True)`` are numbers to numpy; a model parameter given as
     either is more likely a mistake (a value read from a file, a flag) than meant.
+    :func:`validated` runs it on every parameter (and a sweep's grid before it builds its
+    axes); a text typed by a user is parsed first (:func:`checked` parses one).
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : object
+        The value given: a number, an array or a (nested) list of them.
+    allowed : Range
+        Its allowed values, named in the error message.
+
+    Raises
+    ------
+    ValueError
+        Where ``value`` holds a string, bytes or a bool.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import FINITE
+    >>> from vibrofriction.validation import refuse_non_numbers
+    >>> refuse_non_numbers("phase_x", "1.0", FINITE)
+    Traceback (most recent call last):
+    ...
+    ValueError: phase_x must be a real number or an array of them (finite), not a str: got '1.0'
     """
     if value.__class__ is float or value.__class__ is int:  # the common case, at once
         return
     bad = _not_a_number(value)
     if bad is not None:
-        raise ValueError(f"{name} must be a real number or an array of real numbers "
+        raise ValueError(f"{name} must be a real number or an array of them "
                          f"({allowed.text()}), not a {type(bad[0]).__name__}: got {value!r}")
 
 
@@ -257,7 +282,7 @@ def validated(values: Mapping[str, ArrayLike], *,
             out[p.name] = out[p.twin]
             continue
         r = ranges.get(p.name, p.range)
-        _refuse_non_numbers(p.name, values[p.name], r)
+        refuse_non_numbers(p.name, values[p.name], r)
         if r.above and r.above in out:
             out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
         else:
@@ -300,7 +325,7 @@ def checked_number(name: str, value: object, allowed: Range) -> float:
     ...
     ValueError: tol must be finite and > 0, got -1.0
     """
-    _refuse_non_numbers(name, value, allowed)
+    refuse_non_numbers(name, value, allowed)
     arr = checked(name, value, minimum=allowed.minimum, strict=allowed.strict,  # type: ignore[arg-type]
                   maximum=allowed.maximum, allow_inf=allowed.allow_inf)
     if arr.ndim:
