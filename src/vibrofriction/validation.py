@@ -176,6 +176,12 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
     return arr
 
 
+def _in_range(name: str, value: ArrayLike, r: Range) -> NDArray[np.float64]:
+    """:func:`checked` against the range ``r`` (its ``above`` aside)."""
+    return checked(name, value, minimum=r.minimum, strict=r.strict, maximum=r.maximum,
+                   allow_inf=r.allow_inf)
+
+
 def _checked_above(name: str, value: ArrayLike, other: str,
                    other_value: ArrayLike) -> NDArray[np.float64]:
     """Check that a value exceeds another, elementwise.
@@ -286,8 +292,7 @@ def validated(values: Mapping[str, ArrayLike], *,
         if r.above and r.above in out:
             out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
         else:
-            out[p.name] = checked(p.name, values[p.name], minimum=r.minimum, strict=r.strict,
-                                  maximum=r.maximum, allow_inf=r.allow_inf)
+            out[p.name] = _in_range(p.name, values[p.name], r)
     return {n: out[n] for n in values}
 
 
@@ -326,8 +331,7 @@ def checked_number(name: str, value: object, allowed: Range) -> float:
     ValueError: tol must be finite and > 0, got -1.0
     """
     refuse_non_numbers(name, value, allowed)
-    arr = checked(name, value, minimum=allowed.minimum, strict=allowed.strict,  # type: ignore[arg-type]
-                  maximum=allowed.maximum, allow_inf=allowed.allow_inf)
+    arr = _in_range(name, value, allowed)  # type: ignore[arg-type]
     if arr.ndim:
         raise ValueError(f"{name} must be one number ({allowed.text()}), got {value!r}")
     return float(arr)
@@ -338,10 +342,8 @@ def checked_count(name: str, value: object, minimum: int = 1) -> int:
 
     Parameters
     ----------
-    name : str
-        The count's name, for the error message.
-    value : object
-        The value given.
+    name, value : str, object
+        The count's name (for the error message) and its value.
     minimum : int, optional
         The smallest count allowed.
 

@@ -27,9 +27,10 @@ from ..schema import (
     STATE_FIELDS,
     STATE_PREFIX,
 )
+from . import tables
 from .energy import inplane_motion, transverse_motion
 from .results import SectionState, state_columns
-from .tables import Column, dataframe, dataset, number, system_coords, system_text, vbar_of
+from .tables import Column, number
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -176,9 +177,9 @@ class History:
         """Every array as a :class:`~vibrofriction.solver.tables.Column`, the schema's attrs."""
         out = [Column("v_inertial", (), np.asarray(self.v_inertial),
                       FIELD["v_inertial"].attrs(), coord=True),
-               Column("vbar", (), vbar_of(self.system, np.asarray(self.v_inertial)),
+               Column("vbar", (), tables.vbar_of(self.system, np.asarray(self.v_inertial)),
                       PARAMETER["vbar"].attrs(), coord=True),
-               *system_coords(self.system)]
+               *tables.system_coords(self.system)]
         for f in fields(self):
             if f.name in _NOT_SAMPLED:
                 continue
@@ -211,11 +212,8 @@ class History:
         return out
 
     def _attrs(self) -> dict[str, Any]:
-        from .. import __version__
-
-        return {"title": f"vibrofriction time history ({type(self).__name__}, {self._kind()})",
-                "source": f"vibrofriction {__version__}",
-                "inplane_on": self.system.inplane_on}
+        return tables.table_attrs(f"time history ({type(self).__name__}, {self._kind()})",
+                           self.system)
 
     def to_xarray(self) -> xr.Dataset:
         """The history as an :class:`xarray.Dataset`, labelled and described.
@@ -239,7 +237,7 @@ class History:
         >>> ds.x.dims, ds.x.attrs["units"], str(ds.phase.values[0])
         (('sample',), 'mu0 F_N0 / (m omega^2)', 'slip+')
         """
-        return dataset(self._columns(), self._attrs())
+        return tables.dataset(self._columns(), self._attrs())
 
     def to_dataframe(self) -> pd.DataFrame:
         """The sampled arrays as a :class:`pandas.DataFrame`, one row per sample.
@@ -270,7 +268,7 @@ class History:
                                for i, xy in enumerate(_XY)]
             else:
                 per_sample.append(c)
-        return dataframe(per_sample, ("sample",), self._attrs())
+        return tables.dataframe(per_sample, ("sample",), self._attrs())
 
     def __repr__(self) -> str:
         """A few lines: the span in drive periods, the samples, the events, the columns."""
@@ -281,12 +279,12 @@ class History:
                 f"to {number(float(self.tau[-1]))} ({number(periods)} drive "
                 f"period{'' if periods == 1.0 else 's'}), {self.tau.size} samples, "
                 f"{len(self.events)} events")
-        vbar = float(vbar_of(self.system, np.asarray(self.v_inertial)))
+        vbar = float(tables.vbar_of(self.system, np.asarray(self.v_inertial)))
         wrap = textwrap.TextWrapper(100, initial_indent="  ", subsequent_indent="    ").wrap
         return "\n".join((
             *textwrap.wrap(head, 100, subsequent_indent="    "),
             *wrap(f"at v_inertial = {number(self.v_inertial)} (vbar = {number(vbar)}); "
-                  f"{system_text(self.system)}"),
+                  f"{tables.system_text(self.system)}"),
             *wrap("arrays: " + ", ".join(names)),
             "  as a table: .to_dataframe(), .to_xarray()"))
 

@@ -35,7 +35,16 @@ from ..schema import (
     column_index,
 )
 from .settings import SolverSettings, converged
-from .tables import Column, dataframe, dataset, number, system_coords, system_text, vbar_of
+from .tables import (
+    Column,
+    dataframe,
+    dataset,
+    number,
+    system_coords,
+    system_text,
+    table_attrs,
+    vbar_of,
+)
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -376,11 +385,7 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
         return out
 
     def _attrs(self) -> dict[str, Any]:
-        from .. import __version__
-
-        return {"title": "vibrofriction steady-state results (FrictionResults)",
-                "source": f"vibrofriction {__version__}",
-                "inplane_on": self.system.inplane_on}
+        return table_attrs("steady-state results (FrictionResults)", self.system)
 
     def to_xarray(self) -> xr.Dataset:
         """The results as an :class:`xarray.Dataset`, labelled and described.
@@ -398,13 +403,11 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
 
         Examples
         --------
-        >>> import numpy as np
         >>> import vibrofriction as vf
-        >>> rs = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5),
-        ...                              vbar=np.array([0.3, 0.6]))
+        >>> rs = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=[0.3])
         >>> ds = rs.to_xarray()
-        >>> ds.mu_ratio.dims, ds.period.attrs["units"], list(ds.status.values)
-        (('point',), 'drive periods', ['periodic', 'periodic'])
+        >>> ds.mu_ratio.dims, ds.period.attrs["units"], str(ds.status[0].values)
+        (('point',), 'drive periods', 'periodic')
         """
         return dataset(self._columns(), self._attrs())
 
@@ -422,13 +425,11 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
 
         Examples
         --------
-        >>> import numpy as np
         >>> import vibrofriction as vf
-        >>> rs = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5),
-        ...                              vbar=np.array([0.3, 0.6]))
-        >>> df = rs.to_dataframe()
-        >>> df.shape, list(df.columns[:4]), str(df.status.dtype)
-        ((2, 30), ['v_inertial', 'vbar', 'mu_ratio', 'status'], 'category')
+        >>> table = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5),
+        ...                                 vbar=[0.3]).to_dataframe()
+        >>> table.shape, list(table.columns[:4]), str(table.status.dtype)
+        ((1, 30), ['v_inertial', 'vbar', 'mu_ratio', 'status'], 'category')
         """
         return dataframe(self._columns(), self._dims(), self._attrs())
 

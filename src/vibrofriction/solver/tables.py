@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     import xarray as xr
 
 __all__ = ["Column", "dataframe", "dataset", "number", "system_coords", "system_text",
-           "vbar_of"]
+           "table_attrs", "vbar_of"]
 
 
 @dataclass(frozen=True)
@@ -85,6 +85,11 @@ def vbar_of(system: Dimensionless, v_inertial: np.ndarray) -> np.ndarray:
         return np.asarray(system.inertial_to_vbar(v_inertial), dtype=float)
     except ValueError:
         return np.full(np.shape(v_inertial), math.nan)
+
+
+def table_attrs(title: str, system: Dimensionless) -> dict[str, Any]:
+    """The attributes of a table: its title and ``inplane_on``."""
+    return {"title": f"vibrofriction {title}", "inplane_on": system.inplane_on}
 
 
 def system_coords(system: Dimensionless) -> list[Column]:
