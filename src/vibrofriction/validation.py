@@ -331,6 +331,7 @@ def checked_number(name: str, value: object, allowed: Range) -> float:
     ValueError: tol must be finite and > 0, got -1.0
     """
     refuse_non_numbers(name, value, allowed)
+    # any object: checked() converts it to floats or says that it is not a number
     arr = _in_range(name, value, allowed)  # type: ignore[arg-type]
     if arr.ndim:
         raise ValueError(f"{name} must be one number ({allowed.text()}), got {value!r}")
@@ -368,12 +369,14 @@ def checked_count(name: str, value: object, minimum: int = 1) -> int:
     ...
     ValueError: n_springs must be a whole number >= 1 (such as 3 or 3.0), got 2.7
     """
-    whole = isinstance(value, int | float | np.integer | np.floating) \
-        and not isinstance(value, bool | np.bool_) and float(value).is_integer()
-    if not (whole and value >= minimum):  # type: ignore[operator]
+    count = None
+    if isinstance(value, int | float | np.integer | np.floating) \
+            and not isinstance(value, bool | np.bool_) and float(value).is_integer():
+        count = int(value)
+    if count is None or count < minimum:
         raise ValueError(f"{name} must be a whole number >= {minimum} (such as {minimum + 2} "
                          f"or {minimum + 2}.0), got {value!r}")
-    return int(value)  # type: ignore[call-overload]
+    return count
 
 
 def checked_choice(name: str, value: object) -> str:
