@@ -235,7 +235,7 @@ class History:
         >>> h = vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, periods=1)
         >>> ds = h.to_xarray()
         >>> ds.x.dims, ds.x.attrs["units"], str(ds.phase.values[0])
-        (('sample',), 'mu0 F_N0 / (m omega^2)', 'slip+')
+        (('sample',), 'mu0 F_N0 / (m omega^2)', 'stick')
         """
         return tables.dataset(self._columns(), self._attrs())
 
