@@ -16,8 +16,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from .schema import CHOICES, PARAMETER, PARAMETERS, Range
 
-__all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "range_text",
-           "validated"]
+__all__ = ["as_float_or_array", "checked", "checked_beta", "checked_choice", "checked_count",
+           "checked_number", "range_text", "refuse_non_numbers", "validated"]
 
 FloatOrArray = float | NDArray[np.float64]
 
@@ -54,6 +54,73 @@ def _floats(name: str, value: ArrayLike) -> NDArray[np.float64]:
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a number or an array of numbers, "
                          f"got {value!r}") from None
+
+
+#: The dtype kinds of real numbers: signed and unsigned integers, floats (not bool, str, ...).
+_REAL_KINDS = "iuf"
+
+
+def _not_a_number(value: object) -> tuple[object] | None:
+    """The first element of ``value`` that is no real number (a string, a bool, ...), if any.
+
+    As a 1-tuple (the element may be None); None where every element is a real number, or
+    where ``value`` is of a kind the float conversion judges itself.
+    """
+    if isinstance(value, str | bytes | bool | np.bool_):
+        return (value,)
+    if isinstance(value, np.ndarray | np.generic):
+        kind = value.dtype.kind
+        if kind in _REAL_KINDS or value.size == 0:
+            return None
+        flat = np.ravel(value)
+        if kind != "O":
+            return (flat[0],)
+        value = flat.tolist()
+    if isinstance(value, list | tuple):
+        for v in value:
+            bad = _not_a_number(v)
+            if bad is not None:
+                return bad
+    return None
+
+
+def refuse_non_numbers(name: str, value: object, allowed: Range) -> None:
+    """ValueError naming ``name`` and its range where ``value`` holds a string or a bool.
+
+    ``float("1.0")`` and ``float(True)`` are numbers to numpy; a model parameter given as
+    either is more likely a mistake (a value read from a file, a flag) than meant.
+    :func:`validated` runs it on every parameter (and a sweep's grid before it builds its
+    axes); a text typed by a user is parsed first (:func:`checked` parses one).
+
+    Parameters
+    ----------
+    name : str
+        The parameter's name, for the error message.
+    value : object
+        The value given: a number, an array or a (nested) list of them.
+    allowed : Range
+        Its allowed values, named in the error message.
+
+    Raises
+    ------
+    ValueError
+        Where ``value`` holds a string, bytes or a bool.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import FINITE
+    >>> from vibrofriction.validation import refuse_non_numbers
+    >>> refuse_non_numbers("phase_x", "1.0", FINITE)
+    Traceback (most recent call last):
+    ...
+    ValueError: phase_x must be a real number or an array of them (finite), not a str: got '1.0'
+    """
+    if value.__class__ is float or value.__class__ is int:  # the common case, at once
+        return
+    bad = _not_a_number(value)
+    if bad is not None:
+        raise ValueError(f"{name} must be a real number or an array of them "
+                         f"({allowed.text()}), not a {type(bad[0]).__name__}: got {value!r}")
 
 
 def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
@@ -107,6 +174,12 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
         raise ValueError(
             f"{name} must be {range_text(minimum, strict, maximum, allow_inf)}, got {first!r}")
     return arr
+
+
+def _in_range(name: str, value: ArrayLike, r: Range) -> NDArray[np.float64]:
+    """:func:`checked` against the range ``r`` (its ``above`` aside)."""
+    return checked(name, value, minimum=r.minimum, strict=r.strict, maximum=r.maximum,
+                   allow_inf=r.allow_inf)
 
 
 def _checked_above(name: str, value: ArrayLike, other: str,
@@ -187,8 +260,8 @@ def validated(values: Mapping[str, ArrayLike], *,
     Raises
     ------
     ValueError
-        Naming the parameter, its range and the first bad value; or naming an unknown
-        parameter.
+        Naming the parameter, its range and the first bad value; a string or a bool (a
+        numeric string such as ``"1.0"`` too: not a number); or naming an unknown parameter.
 
     Examples
     --------
@@ -215,12 +288,95 @@ def validated(values: Mapping[str, ArrayLike], *,
             out[p.name] = out[p.twin]
             continue
         r = ranges.get(p.name, p.range)
+        refuse_non_numbers(p.name, values[p.name], r)
         if r.above and r.above in out:
             out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
         else:
-            out[p.name] = checked(p.name, values[p.name], minimum=r.minimum, strict=r.strict,
-                                  maximum=r.maximum, allow_inf=r.allow_inf)
+            out[p.name] = _in_range(p.name, values[p.name], r)
     return {n: out[n] for n in values}
+
+
+def checked_number(name: str, value: object, allowed: Range) -> float:
+    """Check that ``value`` is one real number in the range ``allowed`` (a solver's setting).
+
+    Parameters
+    ----------
+    name : str
+        The setting's name, for the error message.
+    value : object
+        The value given.
+    allowed : Range
+        Its allowed values.
+
+    Returns
+    -------
+    float
+        ``value`` as a float.
+
+    Raises
+    ------
+    ValueError
+        In one sentence naming ``name`` and its range: a value out of range, nan, an array, a
+        string or a bool.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import POSITIVE
+    >>> from vibrofriction.validation import checked_number
+    >>> checked_number("tol", 1e-5, POSITIVE)
+    1e-05
+    >>> checked_number("tol", -1.0, POSITIVE)
+    Traceback (most recent call last):
+    ...
+    ValueError: tol must be finite and > 0, got -1.0
+    """
+    refuse_non_numbers(name, value, allowed)
+    # any object: checked() converts it to floats or says that it is not a number
+    arr = _in_range(name, value, allowed)  # type: ignore[arg-type]
+    if arr.ndim:
+        raise ValueError(f"{name} must be one number ({allowed.text()}), got {value!r}")
+    return float(arr)
+
+
+def checked_count(name: str, value: object, minimum: int = 1) -> int:
+    """Check that ``value`` is a whole number ``>= minimum`` (an integral float such as 3.0 too).
+
+    Parameters
+    ----------
+    name, value : str, object
+        The count's name (for the error message) and its value.
+    minimum : int, optional
+        The smallest count allowed.
+
+    Returns
+    -------
+    int
+        ``value`` as an int.
+
+    Raises
+    ------
+    ValueError
+        In one sentence naming ``name``: not a whole number (2.7, nan, a string, a bool),
+        or below ``minimum``.
+
+    Examples
+    --------
+    >>> from vibrofriction.validation import checked_count
+    >>> checked_count("n_springs", 3.0)
+    3
+    >>> checked_count("n_springs", 2.7)
+    Traceback (most recent call last):
+    ...
+    ValueError: n_springs must be a whole number >= 1 (such as 3 or 3.0), got 2.7
+    """
+    count = None
+    if isinstance(value, int | float | np.integer | np.floating) \
+            and not isinstance(value, bool | np.bool_) and float(value).is_integer():
+        count = int(value)
+    if count is None or count < minimum:
+        raise ValueError(f"{name} must be a whole number >= {minimum} (such as {minimum + 2} "
+                         f"or {minimum + 2}.0), got {value!r}")
+    return count
 
 
 def checked_choice(name: str, value: object) -> str:

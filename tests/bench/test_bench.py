@@ -153,3 +153,28 @@ def test_read_measurements_matches_names_regardless_of_case(tmp_path):
     frame = pd.DataFrame({"v0": [1e-3], "cof": [0.2], "du_z": [1e-6], "omega": [5e3],
                           "Sigma": [0.01]})
     assert vf.read_measurements(frame)["sigma"][0] == 0.01
+
+
+@pytest.mark.parametrize(("contact", "key"), [
+    ({"type": "sphere", "radius": 0.003, "radus": 0.003}, "radus"),
+    ({"type": "cone", "slope": 0.5, "radius": 0.003}, "radius"),  # a sphere's key
+    ({"type": "flat_punch", "radius": 1e-3, "mu0": 0.3}, "mu0"),  # a top-level key
+])
+def test_an_unknown_key_in_a_bench_files_contact_is_named(tmp_path, contact, key):
+    """It was ignored: a misspelt key left the contact as the file's other keys made it."""
+    import json
+
+    materials = {"pin": {"E": 210e9, "nu": 0.3}, "counterface": {"E": 210e9, "nu": 0.3}}
+    spec = {"natural_frequency_hz": 800, "mass": 0.01, "normal_load": 20, "mu0": 0.3,
+            "drive_frequency_hz": 1000, "du_z": 1e-7, "contact": {**contact, **materials}}
+    path = tmp_path / "bench.json"
+    path.write_text(json.dumps(spec))
+    sizes = {"sphere": "'radius'", "cone": "'slope'", "flat_punch": "'radius'"}[contact["type"]]
+    with pytest.raises(ValueError) as info:
+        vf.from_bench_file(path)
+    assert str(info.value) == (
+        f"bench file {str(path)!r}: unknown key {key!r} in \"contact\" of type "
+        f"{contact['type']!r}; its keys are 'type', {sizes}, 'pin', 'counterface'")
+    del spec["contact"][key]  # without it the file is read
+    path.write_text(json.dumps(spec))
+    assert isinstance(vf.from_bench_file(path), vf.Physical)

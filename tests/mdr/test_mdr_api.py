@@ -329,3 +329,37 @@ def test_docs_contact_geometry_code_runs():
     assert ns["sphere"][0].status is vf.Status.STATIC and ns["sphere"][1].trusted
     # "In-plane oscillation along the sliding": the values it states
     assert ns["rx"].mu_ratio == pytest.approx([-0.27147218, 0.58492697], abs=1e-8)
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    (dict(tol=-1.0), r"^tol must be finite and > 0, got -1.0$"),
+    (dict(tol=0.0), r"^tol must be finite and > 0, got 0.0$"),
+    (dict(tol=math.nan), r"^tol must be finite and > 0, got nan$"),
+    (dict(tol=math.inf), r"^tol must be finite and > 0, got inf$"),
+    (dict(tol="1e-5"), r"^tol must be a real number or an array of them \(finite and > 0\)"),
+    (dict(tol=True), r"^tol must be a real number .* not a bool"),
+    (dict(n_springs=2.7), r"^n_springs must be a whole number >= 1 \(such as 3 or 3.0\), "
+                          r"got 2.7$"),
+    (dict(n_springs=0), r"^n_springs must be a whole number >= 1 .*got 0$"),
+    (dict(n_springs=True), r"^n_springs must be a whole number >= 1 .*got True$"),
+    (dict(n_springs="20"), r"^n_springs must be a whole number >= 1 .*got '20'$"),
+    (dict(n_springs=math.nan), r"^n_springs must be a whole number"),
+])
+def test_the_mdr_entry_refuses_a_bad_tolerance_or_spring_count(kwargs, message):
+    """``tol = -1`` or nan ended the doubling at once, ``n_springs = 2.7`` ran 2 springs."""
+    from vibrofriction.solver.mdr import mdr_friction, mdr_row
+
+    with pytest.raises(ValueError, match=message):
+        mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, **kwargs)
+    if "n_springs" in kwargs:
+        with pytest.raises(ValueError, match=message):
+            mdr_row(0.5, 2.0, 0.5, 0.3, 2.0, kwargs["n_springs"])
+
+
+def test_the_mdr_entry_takes_an_integral_float_spring_count():
+    from vibrofriction.solver.mdr import mdr_friction
+
+    three = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, n_springs=3.0)
+    assert three["rows"] == (3, 6)
+    same = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, n_springs=3)
+    assert (three["mu_ratio"], three["error"]) == (same["mu_ratio"], same["error"])

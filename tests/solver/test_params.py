@@ -51,6 +51,57 @@ def test_dimensionless_validation(kwargs: dict, message: str) -> None:
         Dimensionless(**args)
 
 
+@pytest.mark.parametrize(
+    ("kwargs", "name", "kind"),
+    [
+        (dict(phase_x="1.0"), "phase_x", "str"),  # a numeric string: numpy reads 1.0
+        (dict(amplitude=True), "amplitude", "bool"),  # numpy reads 1.0
+        (dict(a_x=np.bool_(False)), "a_x", "bool"),
+        (dict(alpha=[0.5, "0.7"]), "alpha", "str"),
+        (dict(alpha=np.array(["0.5"])), "alpha", "str_"),
+        (dict(beta=np.array([2.0, True], dtype=object)), "beta", "bool"),
+        (dict(zeta=b"0.1"), "zeta", "bytes"),
+    ],
+)
+def test_strings_and_booleans_are_refused_in_one_sentence(kwargs: dict, name: str,
+                                                          kind: str) -> None:
+    """``float("1.0")`` and ``float(True)`` are numbers to numpy: the validator refuses them,
+    naming the parameter, what it must be and its range."""
+    args = dict(alpha=0.5, beta=2.0, amplitude=0.5) | kwargs
+    with pytest.raises(ValueError) as info:
+        Dimensionless(**args)
+    text = str(info.value)
+    assert text.startswith(f"{name} must be a real number or an array of them (")
+    assert f"not a {kind}: got" in text and text.count(". ") == 0 and "\n" not in text
+
+
+@pytest.mark.parametrize(("name", "value"), [("phase_x", "1.0"), ("du_z", True),
+                                             ("mass", "0.01")])
+def test_a_physical_set_up_refuses_strings_and_booleans(name: str, value) -> None:
+    with pytest.raises(ValueError, match=f"^{name} must be a real number or an array of them"):
+        physical(**{name: value})
+
+
+@pytest.mark.parametrize("value", [1, 1.0, np.float32(0.5), np.int64(2), np.array([0.5, 1.5]),
+                                   [0.5, 1], np.array(0.5, dtype=object)])
+def test_real_numbers_of_any_numeric_type_are_accepted(value) -> None:
+    d = Dimensionless(0.5, 2.0, 0.5, phase_x=value) if np.ndim(value) == 0 else None
+    assert d is None or d.phase_x == float(value)
+    from vibrofriction.validation import validated
+
+    np.testing.assert_array_equal(validated({"phase_x": value})["phase_x"],
+                                  np.asarray(value, dtype=float))
+
+
+@pytest.mark.parametrize("velocity", ["vbar", "v_inertial"])
+@pytest.mark.parametrize("value", ["0.3", True])
+def test_a_velocity_given_as_a_string_or_a_bool_is_refused(velocity: str, value) -> None:
+    import vibrofriction as vf
+
+    with pytest.raises(ValueError, match=f"^{velocity} must be a real number"):
+        vf.friction_coefficient(Dimensionless(0.5, 2.0, 0.5), **{velocity: value})
+
+
 def test_dimensionless_flags() -> None:
     assert Dimensionless(0.5, math.inf, 0.5).is_rigid
     assert not Dimensionless(0.5, 1e300, 0.5).is_rigid

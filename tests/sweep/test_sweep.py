@@ -80,7 +80,9 @@ def test_parse_axis_errors(text, message) -> None:
     (dict(beta=[1.0, 2.0], alpha=0.5), r"vbar does not exist where beta == 1"),
     (dict(amplitude=[0.0, 0.5]), r"vbar does not exist where amplitude == 0"),
     (dict(alpha=[[0.1, 0.2]]), r"alpha must be a scalar \(held fixed\) or a 1-D array"),
-    (dict(alpha="abc"), r"alpha must be a number or a 1-D list"),
+    (dict(alpha="abc"), r"alpha must be a real number or an array of them \(finite and > 0\)"),
+    (dict(phase_x="1.0"), r"phase_x must be a real number .* not a str: got '1.0'"),
+    (dict(amplitude=[0.5, True]), r"amplitude must be a real number .* not a bool"),
 ])
 def test_bad_grid_is_a_clear_error_before_any_work(changes, message, monkeypatch) -> None:
     def no_work(*args, **kwargs):

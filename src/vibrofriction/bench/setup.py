@@ -263,7 +263,8 @@ def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
     Raises
     ------
     ValueError
-        A missing file, invalid JSON, not an object, or a malformed ``"contact"``.
+        A missing file, invalid JSON, not an object, or a malformed ``"contact"`` (an
+        unknown key in it is named, with the keys its type allows).
     """
     import json
 
@@ -279,6 +280,14 @@ def read_bench_file(path: str | os.PathLike) -> dict[str, Any]:
     if contact is not None:
         kinds = {"sphere": (Sphere, ("radius",)), "flat_punch": (FlatPunch, ("radius",)),
                  "cone": (Cone, ("slope",)), "power_law": (PowerLaw, ("c", "n"))}
+        if isinstance(contact, dict) and contact.get("type") in kinds:
+            allowed = ("type", *kinds[contact["type"]][1], "pin", "counterface")
+            unknown = [k for k in contact if k not in allowed]
+            if unknown:
+                raise ValueError(f"bench file {os.fspath(path)!r}: unknown key "
+                                 f"{unknown[0]!r} in \"contact\" of type "
+                                 f"{contact['type']!r}; its keys are "
+                                 f"{', '.join(map(repr, allowed))}")
         try:
             kind, sizes = kinds[contact["type"]]
             spec["contact"] = kind(*(float(contact[k]) for k in sizes),

@@ -23,6 +23,7 @@ from __future__ import annotations
 from .fields import (
     CONTACT_STATE_NAMES,
     CONVERGED_CODES,
+    ENERGY_UNIT,
     FIELD,
     FIELDS,
     FLOAT_COLUMNS,
@@ -33,13 +34,16 @@ from .fields import (
     PARTIAL,
     RESULT_FIELDS,
     STATE_FIELDS,
+    STATE_PREFIX,
     STATUS_BY_CODE,
     VELOCITY_UNIT,
     ContactState,
     Field,
     Status,
+    cf_attrs,
     column_index,
 )
+from .history import HISTORY_FIELD, HISTORY_FIELDS, RADIUS_UNIT
 from .parameters import (
     CHOICES,
     FINITE,
@@ -59,10 +63,10 @@ from .parameters import (
     point_index,
 )
 
-__all__ = ["CHOICES", "CONTACT_STATE_NAMES", "CONVERGED_CODES", "Choice", "ContactState", "FIELD",
-           "FIELDS", "FINITE", "FLOAT_COLUMNS", "FORCE_UNIT", "Field", "INT_COLUMNS",
-           "LENGTH_UNIT", "METHOD_NAMES", "MODELS", "NONNEGATIVE", "NO_STATE",
-           "PARAMETER", "PARAMETERS", "PARTIAL", "POINT_COLUMNS", "POSITIVE",
-           "Parameter", "RESULT_FIELDS", "Range", "STATE_FIELDS", "STATUS_BY_CODE",
-           "Status", "VELOCITY_UNIT", "choice_names", "column_index", "parameter_names",
-           "parameters", "point_index"]
+__all__ = ["CHOICES", "CONTACT_STATE_NAMES", "CONVERGED_CODES", "Choice", "ContactState",
+           "ENERGY_UNIT", "FIELD", "FIELDS", "FINITE", "FLOAT_COLUMNS", "FORCE_UNIT", "Field",
+           "HISTORY_FIELD", "HISTORY_FIELDS", "INT_COLUMNS", "LENGTH_UNIT", "METHOD_NAMES",
+           "MODELS", "NONNEGATIVE", "NO_STATE", "PARAMETER", "PARAMETERS", "PARTIAL",
+           "POINT_COLUMNS", "POSITIVE", "Parameter", "RADIUS_UNIT", "RESULT_FIELDS", "Range",
+           "STATE_FIELDS", "STATE_PREFIX", "STATUS_BY_CODE", "Status", "VELOCITY_UNIT", "cf_attrs",
+           "choice_names", "column_index", "parameter_names", "parameters", "point_index"]

@@ -8,15 +8,16 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-__all__ = ["CONTACT_STATE_NAMES", "CONVERGED_CODES", "ContactState", "FIELD", "FIELDS",
-           "FLOAT_COLUMNS", "FORCE_UNIT", "Field", "INT_COLUMNS", "LENGTH_UNIT",
-           "NO_STATE", "PARTIAL", "RESULT_FIELDS", "STATE_FIELDS", "STATUS_BY_CODE",
-           "Status", "VELOCITY_UNIT", "column_index"]
+__all__ = ["CONTACT_STATE_NAMES", "CONVERGED_CODES", "ContactState", "ENERGY_UNIT", "FIELD",
+           "FIELDS", "FLOAT_COLUMNS", "FORCE_UNIT", "Field", "INT_COLUMNS", "LENGTH_UNIT",
+           "NO_STATE", "PARTIAL", "RESULT_FIELDS", "STATE_FIELDS", "STATE_PREFIX", "STATUS_BY_CODE",
+           "Status", "VELOCITY_UNIT", "cf_attrs", "column_index"]
 
 #: Units of the scaled variables (docs/model.md).
 VELOCITY_UNIT = "mu0 F_N0 / (m omega)"
 LENGTH_UNIT = "mu0 F_N0 / (m omega^2)"
 FORCE_UNIT = "mu0 F_N0"
+ENERGY_UNIT = "(mu0 F_N0)^2 / (m omega^2)"
 
 
 @dataclass(frozen=True)
@@ -66,6 +67,46 @@ class Field:
     column: tuple[str, int] | None = None
     role: str = "result"
     dtype: str = ""
+
+    def attrs(self, prefix: str = "") -> dict[str, str]:
+        """The field's CF-style attributes, as an xarray variable carries them.
+
+        Parameters
+        ----------
+        prefix : str, optional
+            Words put before the long name (``"final state ...: "``).
+
+        Returns
+        -------
+        dict of str to str
+            ``long_name``, ``symbol``, ``units`` and, where the field has one, ``equation``.
+
+        Examples
+        --------
+        >>> from vibrofriction.schema import FIELD
+        >>> FIELD["period"].attrs()["units"]
+        'drive periods'
+        """
+        return cf_attrs(prefix + self.long_name, self.symbol, self.unit, self.equation)
+
+
+def cf_attrs(long_name: str, symbol: str, unit: str, equation: str = "") -> dict[str, str]:
+    """CF-style attributes of a quantity: its long name, symbol, units and equation.
+
+    The one place where the schema's descriptions become the attributes of a labelled array
+    (a sweep's atlas, a result's or a history's ``to_xarray()``); ``equation`` only where
+    given.
+
+    Examples
+    --------
+    >>> from vibrofriction.schema import cf_attrs
+    >>> cf_attrs("drive time", "tau", "1")
+    {'long_name': 'drive time', 'symbol': 'tau', 'units': '1'}
+    """
+    attrs = {"long_name": long_name, "symbol": symbol, "units": unit}
+    if equation:
+        attrs["equation"] = equation
+    return attrs
 
 
 # --------------------------------------------------------------------------- contact states
@@ -217,6 +258,9 @@ FIELDS: tuple[Field, ...] = (
 FIELD: dict[str, Field] = {f.name: f for f in FIELDS}
 RESULT_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "result")
 STATE_FIELDS: tuple[Field, ...] = tuple(f for f in FIELDS if f.role == "state")
+#: The words before the long name of a component of the final section state stored on its
+#: own (``final_y``, ``final_x_dot``, ...: a sweep's atlas, ``FrictionResults.to_xarray()``).
+STATE_PREFIX = "final state on the Poincare section tau = 2 pi k: "
 
 
 def _columns(kind: str) -> tuple[str, ...]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .fields import FIELD, VELOCITY_UNIT
+from .fields import FIELD, VELOCITY_UNIT, cf_attrs
 
 __all__ = ["CHOICES", "Choice", "FINITE", "METHOD_NAMES", "MODELS", "NONNEGATIVE", "PARAMETER",
            "PARAMETERS", "POINT_COLUMNS", "POSITIVE", "Parameter", "Range",
@@ -146,6 +146,17 @@ class Parameter:
     def models(self) -> tuple[str, ...]:
         """Every model this parameter belongs to (``model`` first)."""
         return (self.model, *self.also)
+
+    def attrs(self) -> dict[str, str]:
+        """The parameter's CF-style attributes (:func:`~vibrofriction.schema.cf_attrs`).
+
+        Examples
+        --------
+        >>> from vibrofriction.schema import PARAMETER
+        >>> PARAMETER["k_x"].attrs()["units"]
+        'N m-1'
+        """
+        return cf_attrs(self.long_name, self.symbol, self.unit, self.equation)
 
     @property
     def label(self) -> str:

@@ -10,14 +10,31 @@ imports neither :mod:`.history` nor :mod:`.mdr_history`: both build on it.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+import textwrap
+from dataclasses import dataclass, field, fields
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..params import Dimensionless, Physical
+from ..schema import (
+    CONTACT_STATE_NAMES,
+    FIELD,
+    HISTORY_FIELD,
+    PARAMETER,
+    PARTIAL,
+    STATE_FIELDS,
+    STATE_PREFIX,
+)
+from . import tables
 from .energy import inplane_motion, transverse_motion
-from .results import SectionState
+from .results import SectionState, state_columns
+from .tables import Column, number
+
+if TYPE_CHECKING:
+    import pandas as pd
+    import xarray as xr
 
 __all__ = ["CurvedHistory", "Event", "History", "PlaneHistory"]
 
@@ -36,7 +53,27 @@ class Event:
     after: str
 
 
-@dataclass(frozen=True)
+#: The fields of a history that are not sampled arrays (the events, the point, the state).
+_NOT_SAMPLED = ("events", "system", "v_inertial", "final_state")
+#: The names of a pair's components, and of :attr:`PlaneHistory.plane_state`'s.
+_XY = ("x", "y")
+_PLANE_STATE = ("y_x", "y_y", "v_x", "v_y", "e_x", "e_y")
+#: The names a categorical column of a history may take, in order.
+_HISTORY_CATEGORIES = {"phase": (*CONTACT_STATE_NAMES, PARTIAL),
+                       "spring_state": CONTACT_STATE_NAMES,
+                       "event_before": CONTACT_STATE_NAMES, "event_after": CONTACT_STATE_NAMES}
+
+
+def _dims(name: str, values: np.ndarray) -> tuple[str, ...]:
+    """The dimensions of a history's array ``name`` (by its name and shape)."""
+    if name == "xi":
+        return ("spring",)
+    if name == "plane_state":
+        return ("plane_component",)
+    return ("sample", "spring" if name.startswith("spring_") else "component")[:values.ndim]
+
+
+@dataclass(frozen=True, repr=False)
 class History:
     """A time history sampled from the closed forms (Fig. 2).
 
@@ -132,8 +169,127 @@ class History:
         """Sample times in seconds for a physical system (``t = tau/omega``)."""
         return self.tau / physical.omega
 
+    def _kind(self) -> str:
+        """Which solver's history this is, in words."""
+        return "the 1-D solver"
 
-@dataclass(frozen=True, kw_only=True)
+    def _columns(self) -> list[Column]:
+        """Every array as a :class:`~vibrofriction.solver.tables.Column`, the schema's attrs."""
+        out = [Column("v_inertial", (), np.asarray(self.v_inertial),
+                      FIELD["v_inertial"].attrs(), coord=True),
+               Column("vbar", (), tables.vbar_of(self.system, np.asarray(self.v_inertial)),
+                      PARAMETER["vbar"].attrs(), coord=True),
+               *tables.system_coords(self.system)]
+        for f in fields(self):
+            if f.name in _NOT_SAMPLED:
+                continue
+            values = np.asarray(getattr(self, f.name))
+            if f.name == "spring_state":
+                values = np.asarray(CONTACT_STATE_NAMES)[values]
+            out.append(Column(f.name, _dims(f.name, values), values,
+                              HISTORY_FIELD[f.name].attrs(),
+                              _HISTORY_CATEGORIES.get(f.name, ()), f.name in ("tau", "xi")))
+        dims = {d for c in out for d in c.dims}
+        if "component" in dims:
+            out.append(Column("component", ("component",), np.asarray(_XY),
+                              {"long_name": "component in the plane: x along the sliding, "
+                               "y across"}, coord=True))
+        if "plane_component" in dims:
+            out.append(Column("plane_component", ("plane_component",),
+                              np.asarray(_PLANE_STATE), {"long_name": "component of the "
+                              "2-D section state"}, coord=True))
+        events = {"event_tau": [e.tau for e in self.events],
+                  "event_kind": [e.kind for e in self.events],
+                  "event_before": [e.before for e in self.events],
+                  "event_after": [e.after for e in self.events]}
+        out += [Column(k, ("event",), np.asarray(v, dtype=float if k == "event_tau" else str),
+                       HISTORY_FIELD[k].attrs(), _HISTORY_CATEGORIES.get(k, ()))
+                for k, v in events.items() if self.events]  # a curved tip's: none
+        if self.final_state is not None:
+            out += [Column(f"final_{g.name}", (), np.asarray(v[0]), g.attrs(STATE_PREFIX))
+                    for g, v in zip(STATE_FIELDS,
+                                    state_columns([self.final_state]).values(), strict=True)]
+        return out
+
+    def _attrs(self) -> dict[str, Any]:
+        return tables.table_attrs(f"time history ({type(self).__name__}, {self._kind()})",
+                           self.system)
+
+    def to_xarray(self) -> xr.Dataset:
+        """The history as an :class:`xarray.Dataset`, labelled and described.
+
+        Returns
+        -------
+        xarray.Dataset
+            Dimension ``sample`` (``tau`` its coordinate), ``component`` (``x``, ``y``: of
+            ``slip_velocity`` and ``impulse``), ``spring`` (a curved tip's row: ``xi`` its
+            coordinate), ``plane_component`` (``plane_state``) and ``event`` (``event_tau``,
+            ``event_kind``, ``event_before``, ``event_after``); the velocity and the system's
+            parameters as scalar coordinates; the final section state as ``final_y``, ...
+            Each variable's ``attrs`` hold its ``units`` and ``long_name`` from
+            :data:`vibrofriction.schema.HISTORY_FIELDS`; states are names, not codes.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> h = vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, periods=1)
+        >>> ds = h.to_xarray()
+        >>> ds.x.dims, ds.x.attrs["units"], str(ds.phase.values[0])
+        (('sample',), 'mu0 F_N0 / (m omega^2)', 'stick')
+        """
+        return tables.dataset(self._columns(), self._attrs())
+
+    def to_dataframe(self) -> pd.DataFrame:
+        """The sampled arrays as a :class:`pandas.DataFrame`, one row per sample.
+
+        Returns
+        -------
+        pandas.DataFrame
+            Indexed by ``sample``; a column per array with one value per sample (``tau``
+            first; ``phase`` a :class:`pandas.Categorical` of the states' names), and the
+            components of ``slip_velocity`` and ``impulse`` as ``slip_velocity_x``, ...
+            A curved tip's per-spring arrays, the events and the final state are in
+            :meth:`to_xarray`. ``DataFrame.attrs["units"]`` holds each column's unit.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> h = vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3, periods=1)
+        >>> df = h.to_dataframe()
+        >>> len(df) == h.tau.size, list(df.columns[:3]), df.attrs["units"]["f"]
+        (True, ['tau', 'x', 'x_dot'], 'mu0 F_N0')
+        """
+        per_sample = []
+        for c in self._columns():
+            if c.dims == ("sample", "component"):
+                per_sample += [Column(f"{c.name}_{xy}", ("sample",), c.values[:, i],
+                                      {**c.attrs, "long_name": f"{xy} component: "
+                                       f"{c.attrs['long_name']}"})
+                               for i, xy in enumerate(_XY)]
+            else:
+                per_sample.append(c)
+        return tables.dataframe(per_sample, ("sample",), self._attrs())
+
+    def __repr__(self) -> str:
+        """A few lines: the span in drive periods, the samples, the events, the columns."""
+        span = float(self.tau[-1] - self.tau[0]) if self.tau.size else 0.0
+        names = [f.name for f in fields(self) if f.name not in _NOT_SAMPLED]
+        periods = span / (2.0 * math.pi)
+        head = (f"{type(self).__name__} ({self._kind()}): tau {number(float(self.tau[0]))} "
+                f"to {number(float(self.tau[-1]))} ({number(periods)} drive "
+                f"period{'' if periods == 1.0 else 's'}), {self.tau.size} samples, "
+                f"{len(self.events)} events")
+        vbar = float(tables.vbar_of(self.system, np.asarray(self.v_inertial)))
+        wrap = textwrap.TextWrapper(100, initial_indent="  ", subsequent_indent="    ").wrap
+        return "\n".join((
+            *textwrap.wrap(head, 100, subsequent_indent="    "),
+            *wrap(f"at v_inertial = {number(self.v_inertial)} (vbar = {number(vbar)}); "
+                  f"{tables.system_text(self.system)}"),
+            *wrap("arrays: " + ", ".join(names)),
+            "  as a table: .to_dataframe(), .to_xarray()"))
+
+
+@dataclass(frozen=True, kw_only=True, repr=False)
 class PlaneHistory(History):
     """A history with a transverse oscillation (``a_y > 0``, the 2-D solver).
 
@@ -160,6 +316,9 @@ class PlaneHistory(History):
     impulse: NDArray[np.float64]
     plane_state: NDArray[np.float64]
 
+    def _kind(self) -> str:
+        return "the 2-D solver"
+
     def stored_energy(self) -> NDArray[np.float64]:
         """:meth:`History.stored_energy` with the transverse terms (pin across ``alpha_y``)."""
         d = self.system
@@ -177,7 +336,7 @@ class PlaneHistory(History):
         return xc, yc
 
 
-@dataclass(frozen=True, kw_only=True)
+@dataclass(frozen=True, kw_only=True, repr=False)
 class CurvedHistory(History):
     """A curved tip's history (finite ``profile_exponent``: the MDR row of ``M`` springs).
 
@@ -213,6 +372,9 @@ class CurvedHistory(History):
     slip_area_fraction: NDArray[np.float64]
     open_area_fraction: NDArray[np.float64]
     normal_impulse: NDArray[np.float64]
+
+    def _kind(self) -> str:
+        return f"a curved tip: a row of {self.xi.size} springs"
 
     def spring_normal(self) -> NDArray[np.float64]:
         """Each spring's normal force ``n_i = w max(0, 1 + a cos tau - xi_i^n)``.

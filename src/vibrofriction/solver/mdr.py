@@ -19,6 +19,8 @@ from .._kernels.codes import FLIGHT, SLIP_POS, STICK
 from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 from ..capabilities import CAPABILITIES
+from ..schema import POSITIVE
+from ..validation import checked_count, checked_number
 
 __all__ = ["mdr_friction", "mdr_row"]
 
@@ -111,9 +113,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     ``AVERAGE_WINDOW`` periods, its error the difference of the window's two halves:
     ``"averaged"`` (or ``"not converged"`` if the kernel made no progress).
     """
-    M = int(n_springs)
-    if M < 1:
-        raise ValueError(f"n_springs must be >= 1, got {n_springs}")
+    M = checked_count("n_springs", n_springs)
     a, n_exp = float(amplitude), float(profile_exponent)
     gamma = 2.0 * zeta * math.sqrt(alpha)
     on_substrate = inplane_on == "substrate"
@@ -175,8 +175,12 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     substrate or the holder (:func:`mdr_row`; ``V > 0`` only: ``V = 0`` with ``a_x > 0``
     is refused, as its steady state depends on the start).  ``state_tol`` and
     ``max_periods`` are each row's (:func:`mdr_row`; a row that may be passed over stops
-    after at most ``SKIP_PERIODS``).
+    after at most ``SKIP_PERIODS``). ``tol`` must be a finite number ``> 0`` and
+    ``n_springs`` a whole number ``>= 1`` (``3.0`` too): anything else is refused with a
+    ValueError naming it.
     """
+    tol = checked_number("tol", tol, POSITIVE)
+    n_given = None if n_springs is None else checked_count("n_springs", n_springs)
     alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x = (float(x) for x in (
         alpha, beta, amplitude, V, profile_exponent, zeta, a_x, phase_x))
     _check(alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x, inplane_on)
@@ -187,7 +191,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)
         r.update(order=math.inf, rows=(1,))
         return r
-    N = 20 if n_springs is None else int(n_springs)
+    N = 20 if n_given is None else n_given
     coarse = mdr_row(alpha, beta, amplitude, V, n_exp, N, zeta, max_periods=max_periods, **ip)
     skipped: list[dict[str, Any]] = []
     d_prev = math.nan  # the previous pair's difference

@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import math
 import operator
-from collections.abc import Iterator, Mapping
+from collections import Counter
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, fields
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -21,16 +22,33 @@ from numpy.typing import NDArray
 from .._kernels import codes
 from ..params import Dimensionless
 from ..schema import (
+    FIELD,
     FLOAT_COLUMNS,
     INT_COLUMNS,
     METHOD_NAMES,
+    PARAMETER,
     RESULT_FIELDS,
     STATE_FIELDS,
+    STATE_PREFIX,
     Field,
     Status,
     column_index,
 )
 from .settings import SolverSettings, converged
+from .tables import (
+    Column,
+    dataframe,
+    dataset,
+    number,
+    system_coords,
+    system_text,
+    table_attrs,
+    vbar_of,
+)
+
+if TYPE_CHECKING:
+    import pandas as pd
+    import xarray as xr
 
 __all__ = ["SLOW_SETTLING", "FrictionResult", "FrictionResults", "SectionState", "describe",
            "result_from_columns", "result_from_rows", "results_from_columns",
@@ -150,7 +168,7 @@ def _field_doc(f: Field) -> str:
 _FIELDS_DOC = "\n".join(_field_doc(f) for f in RESULT_FIELDS)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class FrictionResult:  # noqa: D101 (the docstring is __doc__ below: it lists the fields)
     mu_ratio: float
     status: Status
@@ -220,12 +238,59 @@ class FrictionResult:  # noqa: D101 (the docstring is __doc__ below: it lists th
             out[f.name] = v
         return out
 
+    def to_dict(self) -> dict[str, Any]:
+        """The result as one row of a table: :meth:`FrictionResults.to_dataframe`'s columns.
+
+        Returns
+        -------
+        dict of str to object
+            ``v_inertial`` and ``vbar`` (nan where ``v0*`` is zero or infinite), every field
+            of :data:`~vibrofriction.schema.RESULT_FIELDS` but ``final_state`` and ``system``
+            (``status`` as its name), and the final section state's components as
+            ``final_y``, ``final_x_dot``, ``final_f``, ``final_phase`` (``"none"``: no
+            section state) and ``final_e``; Python scalars. Unlike :meth:`as_dict`, flat:
+            the system's parameters are in ``system``.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=0.3)
+        >>> row = r.to_dict()
+        >>> row["status"], row["final_phase"], row["vbar"]
+        ('periodic', 'stick', 0.3)
+        """
+        row: dict[str, Any] = {"v_inertial": self.v_inertial, "vbar": self.vbar}
+        for f in _TABLE_FIELDS:
+            v = getattr(self, f.name)
+            row[f.name] = v.value if isinstance(v, Status) else v
+        row.update({k: v[0] for k, v in state_columns([self.final_state]).items()})
+        return row
+
+    def __repr__(self) -> str:
+        """A few lines: ``mu_ratio`` with its error, the status, the method, the point."""
+        s = self.final_state
+        state = "none (static limit)" if s is None else (
+            f"{s.phase} at y = {number(s.y)}, x' = {number(s.x_dot)}, f = {number(s.f)}")
+        period = f", period {self.period}" if self.status is Status.PERIODIC else ""
+        return "\n".join((
+            f"FrictionResult: mu_ratio = {self.mu_ratio:.10g} +- {number(self.error)} "
+            f"({self.status.value}{period}; {'' if self.trusted else 'not '}trusted), "
+            f"method {self.method}",
+            f"  at v_inertial = {number(self.v_inertial)} (vbar = {number(self.vbar)}); "
+            f"{system_text(self.system)}",
+            f"  time in stick {number(self.stick_fraction)}, slip+ {number(self.slip_fraction)},"
+            f" slip- {number(self.reverse_slip_fraction)}, flight "
+            f"{number(self.flight_fraction)}; {self.events} events in {self.periods} "
+            f"period{'' if self.periods == 1 else 's'}",
+            f"  final section state: {state}",
+            "  .message says how it was obtained; .to_dict() gives it as a row"))
+
 
 _check_fields(FrictionResult, {f.name: _OBJECT.get(f.name) or _SCALAR[f.kind]
                                for f in RESULT_FIELDS})
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, repr=False)
 class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as FrictionResult's)
     mu_ratio: NDArray[np.float64]
     status: NDArray[np.object_]
@@ -289,10 +354,136 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
         """Which statuses are converged, elementwise (:func:`converged`)."""
         return converged(self.status)
 
+    @property
+    def vbar(self) -> NDArray[np.float64]:
+        """``v0/v0*`` of every point, nan where ``v0*`` is zero or infinite (cases III, IV)."""
+        return vbar_of(self.system, self.v_inertial)
+
+    def _dims(self) -> tuple[str, ...]:
+        """The names of the points' dimensions: ``point``, or ``point_0``, ``point_1``, ..."""
+        n = self.mu_ratio.ndim
+        return ("point",) if n == 1 else tuple(f"point_{i}" for i in range(n))
+
+    def _columns(self) -> list[Column]:
+        """Every array as a :class:`~vibrofriction.solver.tables.Column`, the schema's attrs."""
+        dims = self._dims()
+        out = [Column("v_inertial", dims, self.v_inertial, FIELD["v_inertial"].attrs(),
+                      coord=True),
+               Column("vbar", dims, self.vbar, PARAMETER["vbar"].attrs(), coord=True),
+               *system_coords(self.system)]
+        for f in _TABLE_FIELDS:
+            values = getattr(self, f.name)
+            if f.name == "status":
+                values = np.vectorize(lambda s: s.value, otypes=[object])(values)
+            out.append(Column(f.name, dims, np.asarray(values), f.attrs(),
+                              _CATEGORIES.get(f.name, ())))
+        flat = state_columns(self.final_state.reshape(-1).tolist())
+        for g in STATE_FIELDS:
+            name = f"final_{g.name}"
+            out.append(Column(name, dims, np.asarray(flat[name]).reshape(self.shape),
+                              g.attrs(STATE_PREFIX), _CATEGORIES.get(name, ())))
+        return out
+
+    def _attrs(self) -> dict[str, Any]:
+        return table_attrs("steady-state results (FrictionResults)", self.system)
+
+    def to_xarray(self) -> xr.Dataset:
+        """The results as an :class:`xarray.Dataset`, labelled and described.
+
+        Returns
+        -------
+        xarray.Dataset
+            Dimensions ``point`` (or ``point_0``, ``point_1``, ... for several axes); the
+            coordinates ``v_inertial`` and ``vbar`` along them, and the system's
+            parameters as scalar coordinates; a data variable per field of
+            :data:`~vibrofriction.schema.RESULT_FIELDS` (``status`` and ``method`` as names)
+            and the final section state's components as ``final_y``, ..., ``final_phase``.
+            Each variable's ``attrs`` hold its ``units``, ``long_name``, ``symbol`` and
+            equation from :mod:`vibrofriction.schema`, as a sweep's atlas does.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> rs = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=[0.3])
+        >>> ds = rs.to_xarray()
+        >>> ds.mu_ratio.dims, ds.period.attrs["units"], str(ds.status[0].values)
+        (('point',), 'drive periods', 'periodic')
+        """
+        return dataset(self._columns(), self._attrs())
+
+    def to_dataframe(self) -> pd.DataFrame:
+        """The results as a :class:`pandas.DataFrame`, one row per point.
+
+        Returns
+        -------
+        pandas.DataFrame
+            The columns of :meth:`FrictionResult.to_dict` (``status``, ``method`` and
+            ``final_phase`` as :class:`pandas.Categorical` of their names); indexed by
+            ``point`` (a :class:`pandas.MultiIndex` over ``point_0``, ``point_1``, ... for
+            several axes, in C order). ``DataFrame.attrs["units"]`` holds each column's unit
+            (:mod:`vibrofriction.schema`); the system's parameters are in ``system``.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> table = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5),
+        ...                                 vbar=[0.3]).to_dataframe()
+        >>> table.shape, list(table.columns[:4]), str(table.status.dtype)
+        ((1, 30), ['v_inertial', 'vbar', 'mu_ratio', 'status'], 'category')
+        """
+        return dataframe(self._columns(), self._dims(), self._attrs())
+
+    def __repr__(self) -> str:
+        """A few lines: the shape, the status counts, the range of trusted ``mu_ratio``."""
+        flat_status = [s.value for s in self.status.reshape(-1)]
+        counts = Counter(flat_status)
+        trusted = self.trusted & np.isfinite(self.mu_ratio)
+        mu = self.mu_ratio[trusted]
+        span = f"from {mu.min():.6g} to {mu.max():.6g}" if mu.size else "none"
+        errors = self.error[np.isfinite(self.error)]
+        largest = number(float(np.max(self.error))) if self.error.size else "none"
+        if errors.size < self.error.size:
+            largest += f" ({self.error.size - errors.size} unbounded)"
+        methods = Counter(self.method.reshape(-1).tolist())
+        vbar = self.vbar
+        vbar_text = f", vbar {number(np.nanmin(vbar))} to {number(np.nanmax(vbar))}" \
+            if np.isfinite(vbar).any() else ""
+        return "\n".join((
+            f"FrictionResults: {self.mu_ratio.size} points, shape {self.shape}; "
+            f"{system_text(self.system)}",
+            f"  v_inertial {number(np.min(self.v_inertial))} to "
+            f"{number(np.max(self.v_inertial))}{vbar_text}",
+            "  status: " + ", ".join(f"{s.value} {counts[s.value]}" for s in Status
+                                     if counts[s.value]),
+            f"  trusted {int(np.sum(self.trusted))} of {self.trusted.size}; mu_ratio of the "
+            f"trusted {span}; largest error {largest}",
+            "  method: " + ", ".join(f"{m} {n}" for m, n in methods.items()),
+            "  one point: [i]; each field an array (.mu_ratio, .status, ...); as a table: "
+            ".to_dataframe()"))
+
 
 _check_fields(FrictionResults, {f.name: "Dimensionless" if f.name == "system" else
                                 _ARRAY.get(f.kind, "NDArray[np.object_]")
                                 for f in RESULT_FIELDS})
+
+
+#: The fields of a row of a table (:meth:`FrictionResult.to_dict`), besides the velocities
+#: and the final section state's components.
+_TABLE_FIELDS = tuple(f for f in RESULT_FIELDS
+                      if f.name not in ("final_state", "system", "v_inertial"))
+#: The names a categorical column may take, in order.
+_CATEGORIES = {"status": tuple(s.value for s in Status), "method": METHOD_NAMES,
+               "final_phase": (*_SECTION_PHASES.values(), "none")}
+
+
+def state_columns(states: Iterable[SectionState | None]) -> dict[str, list[Any]]:
+    """The components of section states as ``final_*`` columns (nan, ``"none"``: no state)."""
+    out: dict[str, list[Any]] = {f"final_{g.name}": [] for g in STATE_FIELDS}
+    for s in states:
+        for g in STATE_FIELDS:
+            none = "none" if g.name == "phase" else math.nan
+            out[f"final_{g.name}"].append(none if s is None else getattr(s, g.name))
+    return out
 
 
 #: Drive periods beyond which the approach to a periodic orbit counts as slow.

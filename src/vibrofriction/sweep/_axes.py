@@ -8,6 +8,9 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..schema import PARAMETER
+from ..validation import refuse_non_numbers
+
 __all__ = ["Axis", "make_axis", "parse_axis"]
 
 
@@ -27,6 +30,8 @@ class Axis:
 
 
 def make_axis(name: str, value: ArrayLike) -> Axis:
+    if name in PARAMETER:  # "1.0" or True: refused as the model's parameters are
+        refuse_non_numbers(name, value, PARAMETER[name].range)
     try:
         arr = np.array(value, dtype=float)
     except (TypeError, ValueError):

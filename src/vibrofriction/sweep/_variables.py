@@ -19,10 +19,10 @@ from ..schema import (
     PARAMETERS,
     RESULT_FIELDS,
     STATE_FIELDS,
+    STATE_PREFIX,
     STATUS_BY_CODE,
     VELOCITY_UNIT,
     Field,
-    Parameter,
     Status,
     parameter_names,
 )
@@ -55,24 +55,9 @@ def _flag_words(text: str) -> str:
 _STATUS_CODES = sorted(STATUS_BY_CODE)
 
 
-def _attrs(f: Field, prefix: str = "") -> dict[str, Any]:
-    """CF-style attributes of a schema field."""
-    attrs = {"long_name": prefix + f.long_name, "symbol": f.symbol, "units": f.unit}
-    if f.equation:
-        attrs["equation"] = f.equation
-    return attrs
-
-def _parameter_attrs(p: Parameter) -> dict[str, Any]:
-    """CF-style attributes of a model parameter (a coordinate of an atlas)."""
-    attrs = {"long_name": p.long_name, "symbol": p.symbol, "units": p.unit}
-    if p.equation:
-        attrs["equation"] = p.equation
-    return attrs
-
-
 #: Attributes of every coordinate: the schema's parameters, and ``direction``.
 COORD_ATTRS: dict[str, dict[str, Any]] = {
-    **{p.name: _parameter_attrs(p) for p in PARAMETERS},
+    **{p.name: p.attrs() for p in PARAMETERS},
     "direction": {"long_name": "direction of the velocity continuation: each point starts "
                                "from the final state of its predecessor in this direction",
                   "symbol": ""},
@@ -118,14 +103,14 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
     state as ``final_*``.
     """
     special = {"status": _status_attrs, "trusted": _trusted_attrs}
-    out = [Variable(f.name, f.dtype, _fill(f), special.get(f.name, lambda f=f: _attrs(f))(),
+    out = [Variable(f.name, f.dtype, _fill(f), special.get(f.name, f.attrs)(),
                     f.name)
            for f in RESULT_FIELDS if f.dtype and f.name != "v_inertial"]
     if velocity != "v_inertial":
         out.append(Variable("v_inertial", "f8", np.nan, dict(COORD_ATTRS["v_inertial"])))
-    prefix = "final state on the Poincare section tau = 2 pi k: "
+    prefix = STATE_PREFIX
     out += [Variable(f"final_{f.name}", f.dtype, _fill(f),
-                     _phase_attrs(prefix) if f.name == "phase" else _attrs(f, prefix), f.name)
+                     _phase_attrs(prefix) if f.name == "phase" else f.attrs(prefix), f.name)
             for f in STATE_FIELDS]
     return tuple(out)
 
