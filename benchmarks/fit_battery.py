@@ -172,7 +172,6 @@ def fit_call(s: dict):
     import pandas as pd
 
     import vibrofriction as vf
-
     from vibrofriction.bench import read_measurements
 
     data = read_measurements(pd.DataFrame(s["rows"], columns=s["columns"]))

@@ -246,7 +246,7 @@ def test_a_chi_square_probability_between_1e_3_and_5_percent_makes_the_fit_doubt
     for p, quality, stages in ((0.01, "doubtful", 2), (0.5, "good", 1)):
         scale = math.sqrt(fair.chisqr / chi2.isf(p, dof))
         res = vf.fit(data.assign(sigma=data.sigma * scale), TRUE, free=["mu0"],
-                     progress=False, maxiter=5, popsize=5)
+                     progress=False, starts=2, screen=8)
         assert res.p_value == pytest.approx(p, rel=1e-3)
         assert res.quality == quality
         assert res.report().startswith("DOUBTFUL FIT" if quality == "doubtful" else "GOOD")
@@ -303,7 +303,7 @@ def test_a_quasi_static_curve_does_not_bound_the_mass_and_the_fit_says_so():
     flat = [chi2(stiff.with_(mass=m)) for m in (0.1, 1.0, 10.0)]
     assert max(flat) - min(flat) < 4.0
     pair = vf.fit(data, stiff.with_(mass=1.5, k_x=2e3), free=["mass", "k_x"],
-                  natural_frequency=False, progress=False, maxiter=5, popsize=5)
+                  natural_frequency=False, progress=False, starts=2, screen=8)
     assert any(("mass and k_x" in w or "k_x and mass" in w) and "not identified" in w
                for w in pair.warnings), pair.warnings
     mass = vf.fit(data, stiff.with_(mass=1.5), free=["mass"], natural_frequency=False,

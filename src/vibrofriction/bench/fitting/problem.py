@@ -472,7 +472,7 @@ class Problem:
         """:meth:`cost` of every column of ``population``.
 
         :meth:`cost` of every column of ``population`` (``ln``, shape ``(free, S)``:
-        :func:`scipy.optimize.differential_evolution`'s vectorised call), the rows of all
+        the global search's screen), the rows of all
         members solved together in ``chunks`` interleaved tasks of ``map_`` (each point
         depends only on its own parameters, so the costs are those of :meth:`cost`).
         """

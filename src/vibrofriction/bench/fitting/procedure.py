@@ -29,7 +29,7 @@ from .problem import (
     search_bounds,
 )
 from .result import FitResult, judge
-from .search import Stages, ln_of, local_fit, run_multistart, run_search
+from .search import Stages, ln_of, local_fit, run_search
 from .uncertainty import (
     determination,
     estimate_uncertainties,
@@ -42,12 +42,10 @@ from .uncertainty import (
 #: three times faster than the default 1e-5, and its error (``mu0 1e-4`` in the COF) is
 #: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
 CURVED_TOL = 1e-4
-#: The global stage's ``maxiter`` and ``popsize`` without them: a flat punch's, and a
-#: curved contact's (the MDR solver is ~30 times slower a point: a shorter stage).
-GLOBAL_STAGE = (60, 12)
-CURVED_GLOBAL_STAGE = (20, 8)
-#: The multi-start stage's local starts and screened points.
-MULTISTART = (12, 128)
+#: The global search's local starts and screened points without ``starts``, ``screen``: a
+#: flat punch's, and a curved contact's (the MDR solver is ~30 times slower a point).
+SEARCH = (12, 128)
+CURVED_SEARCH = (3, 32)
 
 __all__ = ["CURVED_TOL", "fit"]
 
@@ -55,23 +53,24 @@ __all__ = ["CURVED_TOL", "fit"]
 def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tuple[str, ...] = (
         "mu0", "mass", "k_xc", "u_z0"), *, natural_frequency: bool = True,
         normal_load: bool = True, quality_factor: bool = True, span: float = 10.0,
-        global_stage: bool = True, maxiter: int | None = None, popsize: int | None = None,
+        global_stage: bool = True, starts: int | None = None, screen: int | None = None,
         seed: int = 0,
         workers: int = 1, progress: bool = True,
         settings: SolverSettings | None = None, jacobian: str = "exact",
-        contact: Contact | None = None, search: str = "multistart", starts: int | None = None,
-        screen: int | None = None) -> FitResult:
+        contact: Contact | None = None) -> FitResult:
     """Fit the fields ``free`` of ``guess`` to a measured table (module docstring).
 
     ``data``: a table of :func:`~vibrofriction.bench.read_measurements` (or its
     path).  ``natural_frequency``, ``normal_load``, ``quality_factor``: the constraints
     (module docstring); a parameter in ``free`` that one of them would hold is refused,
     naming the keyword that releases it.  ``span``: each free parameter is searched
-    within a factor ``span`` of the guess (``mu0`` as well).  ``maxiter``, ``popsize``
-    (default :data:`GLOBAL_STAGE`, :data:`CURVED_GLOBAL_STAGE` for a curved contact),
-    ``seed``: the global stage (:func:`scipy.optimize.differential_evolution`, on every
-    other row of a table of 20 rows or more).  ``workers``: processes for the global
-    stage, the local starts and the profiles (``-1``: every core), from the package's one
+    within a factor ``span`` of the guess (``mu0`` as well).  ``global_stage``: the global
+    search (:func:`.search.run_search`: a Sobol screen of ``screen`` points of the search box
+    on every other row of a table of 20 rows or more, least squares from its ``starts`` best
+    distinct points, then basin hops from the best minimum; defaults :data:`SEARCH`,
+    :data:`CURVED_SEARCH` for a curved contact; ``seed`` seeds it); without it, least squares
+    from the guess alone.  ``workers``: processes for the global
+    search, the local starts and the profiles (``-1``: every core), from the package's one
     pool (:mod:`vibrofriction.parallel`, forkserver workers that die with their parent):
     a script that fits with ``workers != 1`` runs the fit under
     ``if __name__ == "__main__":``.
@@ -95,9 +94,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     check_contact(guess, contact, free)
     if guess.curved and settings is None:
         settings = SolverSettings(tol_trusted=CURVED_TOL)
-    stage = CURVED_GLOBAL_STAGE if guess.curved else GLOBAL_STAGE
-    maxiter = stage[0] if maxiter is None else maxiter
-    popsize = stage[1] if popsize is None else popsize
+    search = CURVED_SEARCH if guess.curved else SEARCH
+    starts = search[0] if starts is None else _count("starts", starts)
+    screen = search[1] if screen is None else _count("screen", screen)
     for n in free:
         if n in CONTACT_FITTABLE:  # k_zc, k_xc, u_z0 follow it: ln y = p ln x + const
             assert contact is not None  # a contact parameter without contact= is refused
@@ -115,13 +114,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     workers = workers if workers >= 1 else available_cores()
     stages = Stages()
     with mapper(workers) as map_:
-        if global_stage and search == "multistart":
-            out, minima = run_multistart(
-                problem, bounds, x0, map_, stages, MULTISTART[1] if screen is None else screen,
-                MULTISTART[0] if starts is None else starts, seed, progress, workers)
-        elif global_stage:
-            out, minima = run_search(problem, bounds, x0, map_ if workers != 1 else 1, map_,
-                                  stages, maxiter, popsize, seed, progress, workers)
+        if global_stage:
+            out, minima = run_search(problem, bounds, x0, map_, stages, screen, starts, seed,
+                                     progress, workers)
         else:
             with stages.timed("local") as row:
                 out, minima, row["evaluations"] = local_fit(problem, [x0], bounds, map_)
@@ -132,6 +127,13 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     res.nfev, res.seconds = stages.nfev, time.perf_counter() - t0
     res.extra.update(local_minima=[float(m[0]) for m in minima], stages=stages.rows)
     return res
+
+
+def _count(name: str, value: object) -> int:
+    """``value`` as a count of at least 1 (ValueError naming ``name`` otherwise)."""
+    if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
+        raise ValueError(f"{name} must be a whole number >= 1, got {value!r}")
+    return int(value)
 
 
 def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:

@@ -1,17 +1,16 @@
 """The fit's search (:mod:`.procedure`).
 
-The global stage (differential evolution on ``ln`` of the free parameters), then Levenberg-Marquardt
-from its best distinct points, and a second global stage when the first is not clearly good; where
-the time went (:class:`Stages`).
+The global search: a space-filling screen of the search box, Levenberg-Marquardt from its best
+distinct points, a basin hopping from the best minimum, and a second round when the fit is not
+clearly good; where the time went (:class:`Stages`).
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from functools import partial
 from typing import Any
 
 import lmfit
@@ -21,19 +20,10 @@ from numpy.typing import NDArray
 from .problem import MDR_STEP, Problem
 from .result import DOUBTFUL_P, chi_square_p
 
-#: Local least-squares starts: the global stage's best point and its next best.
-STARTS = 4
-#: ... and for a curved (MDR) contact, whose every evaluation is ~30 times dearer.
-CURVED_STARTS = 2
 #: Model evaluations per varied parameter (plus one) that a local least-squares run may
 #: spend: a start that crawls along a kinked valley does not win.
 LOCAL_BUDGET = 60
-#: The global stage stops where its population has gathered in one valley: the spread
-#: (standard deviation) of the members' chi-squares below this fraction of their mean
-#: (scipy's ``tol``); the generations after it only refine the best point, which the
-#: least squares that follow do anyway.
-CONVERGED = 0.02
-#: Tasks per process of a generation of the global stage (:meth:`Problem.costs`): the
+#: Tasks per process of the screen of the global search (:meth:`Problem.costs`): the
 #: cost of a point varies tenfold, so a few interleaved tasks each even the load out.
 CHUNKS = 4
 
@@ -59,54 +49,8 @@ class Stages:
         return sum(r["evaluations"] for r in self.rows)
 
 
-def run_search(problem: Problem, bounds, x0: NDArray, de_workers, map_, stages: Stages,
-            maxiter: int, popsize: int, seed: int, progress: bool, first: int):
-    """The global stage, then least squares from its best distinct points.
-
-    The global stage, then least squares from its best distinct points, ``first`` of
-    them before the others.  A first global stage whose first starts end not clearly
-    good (:func:`_poor`) is followed by a second one (another seed) before its remaining
-    starts are tried: a wrong valley is left rather than explored.  (Its own best point
-    is not judged before the least squares: unpolished, a right valley's best point
-    looked poor on 2 of 4 data sets of ``benchmarks/bench_fit.py`` and cost a second
-    stage, 2026-11-26.)  The best fit and the local minima reached (chi-square, point).
-    """
-    # out: the best lmfit result so far, set by polish below
-    out: Any = None
-    minima: list[Any] = []
-    deferred: list[Any] = []
-
-    def polish(batch):
-        nonlocal out, minima
-        with stages.timed("local") as row:
-            found, more, row["evaluations"] = local_fit(problem, batch, bounds, map_)
-        minima = sorted(minima + more, key=lambda r: r[0])
-        if out is None or found.chisqr < out.chisqr:
-            out = found
-
-    coarse = problem.coarse()
-    for attempt in range(2):
-        last = attempt == 1
-        with stages.timed("global") as row:
-            de = _global_stage(coarse, bounds, x0, maxiter, popsize, seed + attempt,
-                               de_workers, progress, first)
-            row["evaluations"] = int(de.nfev) * (1 if de_workers == 1 else len(de.population))
-        starts = _distinct_starts(de, x0, CURVED_STARTS if problem.curved else STARTS)
-        polish(starts[:first])
-        if not last and _poor(problem, out.chisqr):
-            deferred = starts[first:]
-            continue
-        if starts[first:]:
-            polish(starts[first:])
-        if not _poor(problem, out.chisqr):
-            return out, minima
-    if deferred:
-        polish(deferred)
-    return out, minima
-
-
-def run_multistart(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, screen: int,
-                   starts: int, seed: int, progress: bool, cores: int):
+def run_search(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, screen: int,
+               starts: int, seed: int, progress: bool, cores: int):
     """Local least squares from many space-filling starts, then hops from the best.
 
     A scrambled Sobol sample of ``screen`` points of the search box (and the guess) is scored
@@ -114,7 +58,7 @@ def run_multistart(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, 
     least squares on every row run from the ``starts`` best of them that are distinct (no two
     within :data:`DISTINCT` of the box's width in every parameter).  Then a basin hopping
     (:func:`_hop`): least squares from random neighbours of the best minimum, round after
-    round, until :data:`CALM` rounds find nothing lower.  A fit still not clearly good
+    round, until a few rounds find nothing lower.  A fit still not clearly good
     (:func:`_poor`) samples again (another seed).  The best fit and the local minima reached
     (chi-square, point), lowest first.
     """
@@ -137,7 +81,8 @@ def run_multistart(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, 
         if out is None or found.chisqr < out.chisqr:
             out = found
         with stages.timed("hops") as row:
-            out, more, row["evaluations"] = _hop(problem, out, bounds, map_, rng, cores)
+            out, more, row["evaluations"] = _hop(problem, out, bounds, map_, rng, cores,
+                                                 calm=1 if problem.curved else CALM)
         minima = sorted(minima + more, key=lambda r: r[0])
         if not _poor(problem, out.chisqr):
             break
@@ -155,18 +100,20 @@ GAIN = 0.05
 HOP_ROUNDS = 12
 
 
-def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: int):
+def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: int,
+         calm: int = 2):
     """Basin hopping from the minimum ``out``: the best fit, the minima met, the evaluations.
 
     Each round runs least squares from ``HOPS_PER_CORE`` random neighbours per process of the
     best minimum so far (steps :data:`HOP_SCALES` in ``ln``); a lower minimum becomes the
-    centre of the next round.  The chi-square of noisy data has many shallow valleys beside
-    the deepest (the stick-slip pattern of a row changes): a hop reaches a neighbour that a
-    descent cannot.
+    centre of the next round; it stops after ``calm`` rounds without one (:data:`CALM`; one
+    for a curved contact, whose evaluations are ~30 times dearer).  The chi-square of noisy
+    data has shallow valleys beside the deepest (the stick-slip pattern of a row changes): a
+    hop reaches a neighbour that a descent cannot.
     """
     lo, hi = np.array(bounds, dtype=float).T
     minima: list[Any] = []
-    spent, calm = 0, 0
+    spent, quiet = 0, 0
     count = max(HOPS_PER_CORE * cores, 2)
     for _ in range(HOP_ROUNDS):
         centre = ln_of(out, problem.free)
@@ -176,12 +123,12 @@ def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: i
         minima += more
         spent += nfev
         if found.chisqr < out.chisqr - GAIN:
-            out, calm = found, 0
+            out, quiet = found, 0
         else:
             if found.chisqr < out.chisqr:
                 out = found
-            calm += 1
-            if calm == CALM:
+            quiet += 1
+            if quiet == calm:
                 break
     return out, sorted(minima, key=lambda r: r[0]), spent
 
@@ -219,33 +166,6 @@ def _spread(sample: NDArray, cost: NDArray, bounds, count: int, taken) -> list[N
     return chosen
 
 
-def _global_stage(problem: Problem, bounds, x0: NDArray, maxiter: int, popsize: int,
-                  seed: int, workers, progress: bool, cores: int = 1):
-    """Differential evolution over ``ln`` of the free parameters.
-
-    Differential evolution over ``ln`` of the free parameters, from a Sobol sample
-    that includes the guess; ``workers``: 1 (in this process) or the pool's map over
-    ``cores`` processes, to which each generation goes at once (:meth:`Problem.costs`:
-    one task per member would cost a pickled problem and a round trip each, and left
-    the second core idle half the time).
-    """
-    from scipy.optimize import differential_evolution
-    from tqdm.auto import tqdm
-
-    cost: Callable[..., Any]
-    how: dict[str, Any]
-    if workers == 1:
-        cost, how = problem.cost, {"updating": "immediate"}
-    else:  # a generation's members solved together, in CHUNKS tasks per worker
-        cost = partial(problem.costs, map_=workers, chunks=CHUNKS * cores)
-        how = {"updating": "deferred", "vectorized": True}
-    with tqdm(total=maxiter, desc="fit: global stage", unit="gen",
-              disable=not progress) as bar:
-        return differential_evolution(
-            cost, bounds, maxiter=maxiter, popsize=popsize, seed=seed, polish=False,
-            init="sobol", x0=x0, tol=CONVERGED, callback=lambda *a, **k: _tick(bar), **how)
-
-
 def _poor(problem: Problem, chisqr: float) -> bool:
     """A weighted fit that is not clearly good.
 
@@ -253,18 +173,6 @@ def _poor(problem: Problem, chisqr: float) -> bool:
     explanation, so another is looked for).
     """
     return problem.weighted and chi_square_p(problem, chisqr) < DOUBTFUL_P
-
-
-def _distinct_starts(de, x0: NDArray, count: int) -> list[NDArray]:
-    """The global stage's best point, then its next best distinct population members."""
-    starts = [np.asarray(de.x, dtype=float)]
-    for i in np.argsort(de.population_energies):
-        x = np.asarray(de.population[i], dtype=float)
-        if len(starts) == count:
-            break
-        if all(np.max(np.abs(x - y)) > 1e-3 for y in starts):
-            starts.append(x)
-    return starts
 
 
 def ln_of(out, free: tuple[str, ...]) -> NDArray[np.float64]:
@@ -363,19 +271,10 @@ def local_fit(problem: Problem, starts: list[NDArray], bounds, map_, progress: b
     from tqdm.auto import tqdm
 
     found = []
-    with tqdm(total=len(starts), desc="fit: local starts", disable=not progress or len(starts) < 3) as bar:
+    with tqdm(total=len(starts), desc="fit: local starts",
+              disable=not progress or len(starts) < 3) as bar:
         for r in map_(_polish, [(problem, x, bounds) for x in starts]):
             found.append(r)
             bar.update(1)
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])
     return min(found, key=lambda r: r.chisqr), minima, sum(r.nfev for r in found)
-
-
-def _tick(bar) -> bool:
-    """Advance a progress bar.
-
-    False, so that differential evolution goes on (a callback returning True stops it, and
-    tqdm's ``update`` returns True when it redraws).
-    """
-    bar.update(1)
-    return False

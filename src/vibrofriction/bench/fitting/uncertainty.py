@@ -223,7 +223,8 @@ def _profile_side(task) -> _Side:
     (problem, centre, best, bounds, j, side, step, slope, target, chi_best,
      alternatives) = task
     limit = bounds[j][1] - centre[j] if side > 0 else centre[j] - bounds[j][0]
-    state = {"nfev": 0, "lower": None}
+    spent = [0]
+    lowest: list[tuple[float, NDArray]] = []  # the lowest point met below the best fit
     rises = {0.0: 0.0 if np.array_equal(centre, best) else float(problem.cost(centre)) - chi_best}
     points = {0.0: centre.copy()}  # the refit at each distance
     lo, hi = np.array(bounds).T
@@ -231,10 +232,10 @@ def _profile_side(task) -> _Side:
     def refit(x0: NDArray) -> tuple[NDArray, float]:
         x0 = np.clip(x0, lo, hi)
         if len(centre) == 1:
-            state["nfev"] += 1
+            spent[0] += 1
             return x0, problem.cost(x0)
         out = least_squares(problem, x0, bounds, hold=j)
-        state["nfev"] += int(out.nfev)
+        spent[0] += int(out.nfev)
         return ln_of(out, problem.free), float(out.chisqr)
 
     def rise(d: float, explore: bool = False) -> float:
@@ -256,9 +257,8 @@ def _profile_side(task) -> _Side:
                 if c < chi:
                     x, chi = y, c
         points[d] = x
-        if chi < chi_best - 1e-6 * max(chi_best, 1.0) and (
-                state["lower"] is None or chi < state["lower"][0]):
-            state["lower"] = (chi, x)
+        if chi < chi_best - 1e-6 * max(chi_best, 1.0) and (not lowest or chi < lowest[0][0]):
+            lowest[:] = [(chi, x)]
         rises[d] = chi - chi_best
         return rises[d]
 
@@ -268,7 +268,7 @@ def _profile_side(task) -> _Side:
 
     def done(distance: float, jumps: list[float]) -> _Side:
         curve = sorted((d, chi_best + r) for d, r in rises.items())
-        return _Side(distance, state["lower"], state["nfev"], curve, jumps)
+        return _Side(distance, lowest[0] if lowest else None, spent[0], curve, jumps)
 
     inner, d = 0.0, min(step, limit)
     while True:
@@ -343,7 +343,7 @@ def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
                            f"profile chi-square never rises by {PROFILE_LEVEL:g} s^2")
     if lower is not None:
         out.append("a profile met a lower chi-square than the fit twice: the fit is not at "
-                   "the global minimum; widen the global stage (maxiter, popsize)")
+                   "the global minimum; widen the global search (starts, screen)")
     return out
 
 
