@@ -8,16 +8,14 @@ k_xc = 1.5e7 N/m, 20 N; noise 0.003 in the COF) from the same poor guess:
 * five varied parameters (``natural_frequency=False``).
 
 Each is run once on each of four data sets (noise seeds): the time depends on the data
-(a first global stage that ends in a wrong valley is followed by a second).
+(a first round of the global search that ends not clearly good is followed by a second).
 
-Each fit is run with each population of the global stage of ``--popsize``
-(differential evolution's ``popsize``; 12, the default) and each
-local Jacobian of ``--jacobian`` (``exact``: the steady state's sensitivities;
+Each fit is run with each local Jacobian of ``--jacobian`` (``exact``: the steady state's sensitivities;
 ``differences``: lmfit's), interleaved per data set so that the machine's load hits
 them alike.
 
 Run:  python benchmarks/bench_fit.py [--data-seeds 11,12,13,14] [--workers 2]
-      [--popsize 12,6] [--jacobian exact,differences] [--calls 4,5]
+      [--jacobian exact,differences] [--calls 4,5]
 Writes benchmarks/results/fit.md: this run on top, the runs before it below.
 """
 
@@ -60,8 +58,8 @@ def data(rng: np.random.Generator) -> pd.DataFrame:
                                   0.003, rng)
 
 
-def _label(variant: tuple[int, str]) -> str:
-    return f"popsize {variant[0]}, {variant[1]} Jacobian"
+def _label(variant: str) -> str:
+    return f"{variant} Jacobian"
 
 
 def main() -> None:
@@ -69,14 +67,12 @@ def main() -> None:
     ap.add_argument("--data-seeds", default="11,12,13,14",
                     help="noise seeds of the data sets, one fit of each per call")
     ap.add_argument("--workers", type=int, default=2)
-    ap.add_argument("--popsize", default="12",
-                    help="the global stage's populations compared, interleaved per data set")
     ap.add_argument("--jacobian", default="exact",
                     help="the local stages' Jacobians compared, interleaved per data set")
     ap.add_argument("--calls", default="4,5", help="the calls timed, by their varied count")
     args = ap.parse_args()
     calls = {k: v for k, v in CALLS.items() if k[0] in args.calls.split(",")}
-    variants = [(int(g), j) for g in args.popsize.split(",") for j in args.jacobian.split(",")]
+    variants = args.jacobian.split(",")
     seeds = [int(x) for x in args.data_seeds.split(",")]
     tables = {k: data(np.random.default_rng(k)) for k in seeds}
     vf.fit(tables[seeds[0]].head(6), TRUE, free=["mu0"], global_stage=False,
@@ -101,8 +97,7 @@ def main() -> None:
             for v in variants:
                 t = time.perf_counter()
                 res = vf.fit(tables[k], guess, **{"free": FREE, **kwargs},
-                             workers=args.workers, progress=False, popsize=v[0],
-                             jacobian=v[1])
+                             workers=args.workers, progress=False, jacobian=v)
                 times[v].append(time.perf_counter() - t)
                 verdicts[v].append(f"{res.quality} ({res.p_value:.2g})")
                 stages[v].append(sum(r["stage"] == "global" for r in res.extra["stages"]))

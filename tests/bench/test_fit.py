@@ -306,6 +306,11 @@ def test_a_quasi_static_curve_does_not_bound_the_mass_and_the_fit_says_so():
                   natural_frequency=False, progress=False, starts=2, screen=8)
     assert any(("mass and k_x" in w or "k_x and mass" in w) and "not identified" in w
                for w in pair.warnings), pair.warnings
+    # the report's second line: neither is determined (the curve barely moves with the mass,
+    # and not at all with k_x: no combination of the two is held either)
+    assert pair.determination == {"mass": "not determined", "k_x": "not determined"}
+    assert pair.report().splitlines()[1] == "what the data hold: mass, k_x not determined"
+    assert pair.params["mass"].stderr is None and pair.params["k_x"].stderr is None
     mass = vf.fit(data, stiff.with_(mass=1.5), free=["mass"], natural_frequency=False,
                   progress=False, global_stage=False)
     assert mass.intervals["mass"] == (-math.inf, math.inf)

@@ -114,3 +114,40 @@ def test_held_out_sets_of_the_battery(index):
     assert score["intervals_hold"], score
     assert res.quality in ("good", "doubtful")
     assert set(res.determination) == set(fb.FREE)
+
+
+@dataclass
+class RatioOnly:
+    """Residuals that depend on ``ln a - ln b`` only (and on ``ln c``): the data hold ``a/b``."""
+
+    free: tuple[str, ...] = ("a", "b", "c")
+    weighted: bool = True
+    curved: bool = False
+    jacobian_kind: str = "differences"
+
+    def residual(self, x):
+        ratio, c = x[0] - x[1], x[2]
+        return np.array([ratio / 0.1, (ratio - 0.5 * c) / 0.2, c / 0.1, (ratio + c) / 0.3])
+
+
+def test_what_the_data_hold_names_the_combination_of_two_loose_parameters():
+    """``a`` and ``b`` open on both sides (their profiles never close), ``c`` closed: the
+    first two are not determined, and the combination the data hold is their ratio."""
+    import lmfit
+
+    from vibrofriction.bench.fitting.uncertainty import determination
+
+    problem = RatioOnly()
+    params = lmfit.Parameters()
+    for n in problem.free:
+        params.add(n, value=0.0)
+
+    class Out:
+        pass
+
+    out = Out()
+    out.params = params
+    dists = {"a": (math.inf, math.inf), "b": (math.inf, math.inf), "c": (0.2, 0.2)}
+    status, combos = determination(out, problem, np.zeros(3), [(-2.0, 2.0)] * 3, dists)
+    assert status == {"a": "not determined", "b": "not determined", "c": "determined"}
+    assert combos == {"a": "a/b", "b": "b/a"}

@@ -90,14 +90,17 @@ def run_search(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, scre
 
 
 #: The basin hopping's steps in ``ln`` (a normal deviate of this scale in every parameter,
-#: half the hops at each), the hops of a round per process, and the rounds without a lower
-#: minimum (by more than :data:`GAIN` in chi-square) after which it stops, at most
+#: half the hops at each), the hops of a round per process (at least two a round), and the
+#: rounds without a minimum lower by more than :data:`GAIN` (an eighth of the profiles'
+#: level: a smaller gain moves no interval's end much) after which it stops, at most
 #: :data:`HOP_ROUNDS` rounds.
 HOP_SCALES = (0.1, 0.3)
-HOPS_PER_CORE = 2
+HOPS_PER_CORE = 1
 CALM = 2
-GAIN = 0.05
+GAIN = 0.5
 HOP_ROUNDS = 12
+#: A hop's least squares start next to a minimum: half the budget of a start from afar.
+HOP_BUDGET = 0.5
 
 
 def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: int,
@@ -119,7 +122,7 @@ def _hop(problem: Problem, out, bounds, map_, rng: np.random.Generator, cores: i
         centre = ln_of(out, problem.free)
         scales = np.resize(np.asarray(HOP_SCALES), count)[:, None]
         hops = np.clip(centre + scales * rng.standard_normal((count, centre.size)), lo, hi)
-        found, more, nfev = local_fit(problem, list(hops), bounds, map_)
+        found, more, nfev = local_fit(problem, list(hops), bounds, map_, budget=HOP_BUDGET)
         minima += more
         spent += nfev
         if found.chisqr < out.chisqr - GAIN:
@@ -258,12 +261,13 @@ class _Fit:
 
 
 def _polish(task) -> _Fit:
-    problem, x0, bounds = task
-    return _Fit.of(least_squares(problem, x0, bounds))
+    problem, x0, bounds, budget = task
+    return _Fit.of(least_squares(problem, x0, bounds, budget_factor=budget))
 
 
-def local_fit(problem: Problem, starts: list[NDArray], bounds, map_, progress: bool = False):
-    """Least squares from every start (in parallel).
+def local_fit(problem: Problem, starts: list[NDArray], bounds, map_, progress: bool = False,
+              budget: float = 1.0):
+    """Least squares from every start (in parallel), each within ``budget`` of the budget.
 
     The lowest chi-square, the chi-squares and points reached from each start, and the count of
     model evaluations.
@@ -273,7 +277,7 @@ def local_fit(problem: Problem, starts: list[NDArray], bounds, map_, progress: b
     found = []
     with tqdm(total=len(starts), desc="fit: local starts",
               disable=not progress or len(starts) < 3) as bar:
-        for r in map_(_polish, [(problem, x, bounds) for x in starts]):
+        for r in map_(_polish, [(problem, x, bounds, budget) for x in starts]):
             found.append(r)
             bar.update(1)
     minima = sorted(((r.chisqr, ln_of(r, problem.free)) for r in found), key=lambda r: r[0])

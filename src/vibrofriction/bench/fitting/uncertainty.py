@@ -193,9 +193,10 @@ class _Side:
 FIRST_STEP = 0.05
 MIN_STEP = 2e-3
 MAX_STEP = 0.3
-#: After the profile first rises past the level, it looks this many doublings further
-#: (within the search range) for a point back below it: past a jump of the model or a
-#: ridge, the profile may come down again.
+#: After the profile first rises past the level faster than a parabola, it looks this
+#: many doublings further (within the search range; one after a parabola's rise) for a
+#: point back below it: past a jump of the model or a ridge, the profile may come down
+#: again.
 LOOKAHEAD = 2
 #: The relative precision of an interval's end (Brent's method on the profile).
 BRENT_RTOL = 0.05
@@ -229,27 +230,29 @@ def _profile_side(task) -> _Side:
     points = {0.0: centre.copy()}  # the refit at each distance
     lo, hi = np.array(bounds).T
 
-    def refit(x0: NDArray) -> tuple[NDArray, float]:
+    def refit(x0: NDArray, budget: float = 1.0) -> tuple[NDArray, float]:
         x0 = np.clip(x0, lo, hi)
         if len(centre) == 1:
             spent[0] += 1
             return x0, problem.cost(x0)
-        out = least_squares(problem, x0, bounds, hold=j)
+        out = least_squares(problem, x0, bounds, hold=j, budget_factor=budget)
         spent[0] += int(out.nfev)
         return ln_of(out, problem.free), float(out.chisqr)
 
-    def rise(d: float, explore: bool = False) -> float:
+    def steep(d: float, r: float) -> bool:
+        """A rise past the level faster than a parabola's from the refit inside ``d``."""
+        inner = max(k for k in rises if k < d)
+        return r > target + max(rises[inner], 0.0) * (d / inner if inner > 0 else 1.0) ** 2
+
+    def rise(d: float, explore: bool = False, budget: float = 1.0) -> float:
         if d in rises:
             return rises[d]
         held = centre[j] + side * d
         inner = max(k for k in points if k < d)  # the refit on the way from the centre
         x = points[inner] + side * (d - inner) * slope
         x[j] = held
-        x, chi = refit(x)
-        # a rise past the level faster than a parabola's from the refit inside it: another
-        # start, across what may have stopped this one
-        if explore and chi - chi_best > target + 4.0 * max(rises[inner], 0.0) * (
-                d / inner if inner > 0 else 1.0) ** 2 / 4.0:
+        x, chi = refit(x, budget)
+        if explore and steep(d, chi - chi_best):  # another start, across what stopped it
             for alt in alternatives + [centre]:
                 y0 = np.array(alt, dtype=float)
                 y0[j] = held
@@ -262,8 +265,8 @@ def _profile_side(task) -> _Side:
         rises[d] = chi - chi_best
         return rises[d]
 
-    def root(d: float, explore: bool = False) -> float:  # ~linear in d on a parabola
-        r = rise(d, explore)
+    def root(d: float, explore: bool = False, budget: float = 1.0) -> float:
+        r = rise(d, explore, budget)  # root: ~linear in d on a parabola
         return math.copysign(math.sqrt(abs(r)), r) - math.sqrt(target)
 
     def done(distance: float, jumps: list[float]) -> _Side:
@@ -276,12 +279,14 @@ def _profile_side(task) -> _Side:
             if d >= limit:
                 return done(math.inf, [])
             inner, d = d, min(2.0 * d, limit)
-        ahead, back = d, None  # does the profile come down again further out?
-        for _ in range(LOOKAHEAD):
+        # does the profile come down again further out? Two doublings past a steep rise,
+        # one past a parabola's, each refit on half the budget (it need only come down)
+        ahead, back = d, None
+        for _ in range(LOOKAHEAD if steep(d, rises[d]) else 1):
             if ahead >= limit:
                 break
             ahead = min(2.0 * ahead, limit)
-            if root(ahead, explore=True) <= 0.0:
+            if root(ahead, explore=True, budget=0.5) <= 0.0:
                 back = ahead
                 break
         if back is None:
