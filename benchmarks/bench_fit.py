@@ -10,9 +10,9 @@ k_xc = 1.5e7 N/m, 20 N; noise 0.003 in the COF) from the same poor guess:
 Each is run once on each of four data sets (noise seeds): the time depends on the data
 (a first round of the global search that ends not clearly good is followed by a second).
 
-Each fit is run with each local Jacobian of ``--jacobian`` (``exact``: the steady state's sensitivities;
-``differences``: lmfit's), interleaved per data set so that the machine's load hits
-them alike.
+Each fit is run with each local Jacobian of ``--jacobian`` (``exact``: the steady
+state's sensitivities; ``differences``: lmfit's), interleaved per data set so that the
+machine's load hits them alike.
 
 Run:  python benchmarks/bench_fit.py [--data-seeds 11,12,13,14] [--workers 2]
       [--jacobian exact,differences] [--calls 4,5]
