@@ -56,7 +56,11 @@ def test_fit_from_the_command_line(bench_file, tmp_path):
     saved = json.loads((tmp_path / "fit" / "fit.json").read_text())
     assert saved["params"]["mu0"]["value"] == pytest.approx(0.3, rel=1e-6)
     assert saved["quality"] == "good" and out.stdout.startswith("GOOD FIT")
-    assert (tmp_path / "fit" / "fit.png").stat().st_size > 0
+    # what the data hold, in the report's second line, as in the API's report
+    assert out.stdout.splitlines()[1] == "what the data hold: mu0 determined"
+    assert saved["determination"] == {"mu0": "determined"}
+    for figure in ("fit.png", "profiles.png"):
+        assert (tmp_path / "fit" / figure).stat().st_size > 0
     bad = _cli("fit", str(csv), "--bench", str(bench_file), "--free", "mu0,oops")
     assert bad.returncode == 2 and "free must name" in bad.stderr
 

@@ -39,7 +39,7 @@ def run_fit(a: Args) -> None:
 
     from ..bench import fit, from_bench_file, read_bench_file
     from ..contact import FlatPunch, Sphere
-    from ..figures import plot_fit
+    from ..figures import plot_fit, plot_profiles
 
     bench, free = a["bench"], a["free"]
     guess = from_bench_file(bench)
@@ -65,9 +65,10 @@ def run_fit(a: Args) -> None:
     folder.mkdir(parents=True, exist_ok=True)
     (folder / "report.txt").write_text(res.report() + "\n")
     plot_fit(res).savefig(folder / "fit.png", dpi=150)
+    plot_profiles(res).savefig(folder / "profiles.png", dpi=120)
     res.to_json(folder / "fit.json")
     print(res.report())
-    print(f"-> {folder}/report.txt, fit.png, fit.json")
+    print(f"-> {folder}/report.txt, fit.png, profiles.png, fit.json")
 
 
 def run_design(a: Args) -> None:
@@ -117,10 +118,10 @@ FIT = Command(
          default=True),
      Opt("normal_load", "keep k_zc u_z0 = F_N0", kind="flag", default=True),
      Opt("quality_factor", "keep the pin's damping ratio", kind="flag", default=True),
-     Opt("workers", "processes for the global stage, the local starts and the profiles "
+     Opt("workers", "processes for the global search, the local starts and the profiles "
          "(-1: every core)", kind="int", default=-1, metavar=INT),
-     Opt("out", "folder for report.txt, fit.png, fit.json", kind="text", default="fit",
-         metavar="DIR"),
+     Opt("out", "folder for report.txt, fit.png, profiles.png, fit.json", kind="text",
+         default="fit", metavar="DIR"),
      Opt("progress", "progress bars on stderr", kind="flag", default=True)),
     run_fit)
 
