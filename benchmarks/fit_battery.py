@@ -194,10 +194,16 @@ def score(s: dict, res, chi_truth: float) -> dict:
     excluded = [n for n in FREE
                 if not res.intervals[n][0] <= s["truth"][n] <= res.intervals[n][1]]
     must_hold = chi_truth - res.chisqr <= INTERVAL_LEVEL
+    # an interval with the fitted value at (or within 1e-4 of) one of its ends: a profile
+    # that stopped at once, at a jump of the model or a refit gone astray
+    pinched = [n for n in FREE if not min(res.params[n].value - res.intervals[n][0],
+                                          res.intervals[n][1] - res.params[n].value)
+               > 1e-4 * res.params[n].value]
     return {"index": s["index"], "kind": s["kind"], "chisqr": res.chisqr,
             "truth_chisqr": chi_truth, "valley": res.chisqr <= chi_truth + VALLEY_MARGIN,
             "must_hold": must_hold, "excluded": excluded,
             "intervals_hold": not (must_hold and excluded), "quality": res.quality,
+            "pinched": pinched,
             "seconds": res.seconds, "nfev": res.nfev,
             "intervals": {n: list(res.intervals[n]) for n in FREE},
             "values": {n: res.params[n].value for n in FREE},

@@ -103,7 +103,7 @@ def test_held_out_sets_of_the_battery(index):
     truth under a GOOD verdict (the search stopped in a valley beside the truth's), a stiff
     set whose valley the search missed, a jumping set.  The fit reaches the truth's
     chi-square (+1), every interval holds the truth whenever the truth's chi-square is
-    within 3.84 of the fit's."""
+    within 3.84 of the fit's, and none has the fitted value at one of its ends."""
     fb = _battery()
     s = fb.load_sets([index])[0]
     data, guess, kw = fb.fit_call(s)
@@ -112,6 +112,7 @@ def test_held_out_sets_of_the_battery(index):
     print(score)
     assert score["valley"], score
     assert score["intervals_hold"], score
+    assert not score["pinched"], score  # no fitted value at an end of its own interval
     assert res.quality in ("good", "doubtful")
     assert set(res.determination) == set(fb.FREE)
 
