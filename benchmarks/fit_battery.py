@@ -207,12 +207,8 @@ def score(s: dict, res, chi_truth: float) -> dict:
             "seconds": res.seconds, "nfev": res.nfev,
             "intervals": {n: list(res.intervals[n]) for n in FREE},
             "values": {n: res.params[n].value for n in FREE},
-            "statuses": _statuses(res)}
-
-
-def _statuses(res) -> dict:
-    """What the report says of each free parameter, if it says it (``res.determination``)."""
-    return dict(getattr(res, "determination", {}) or {})
+            "statuses": dict(getattr(res, "determination", {}) or {}),
+            "combinations": dict(getattr(res, "combinations", {}) or {})}
 
 
 def run(only: list[int] | None, workers: int, write: str | None, seed: int,
@@ -243,10 +239,19 @@ def summarise(rows: list[dict]) -> str:
     valley = sum(r["valley"] for r in rows)
     hold = sum(r["intervals_hold"] for r in rows)
     good_wrong = sum(r["quality"] == "good" and not r["intervals_hold"] for r in rows)
+    pinched = sum(bool(r.get("pinched")) for r in rows)
     times = [r["seconds"] for r in rows]
     return (f"valley found in {valley} of {n} sets; intervals hold the truth (where they "
             f"must) in {hold} of {n}; GOOD verdicts excluding the truth: {good_wrong}; "
+            f"fits with a value at an end of its interval: {pinched}; "
             f"fit time median {statistics.median(times):.1f} s, max {max(times):.1f} s")
+
+
+def _loose(r: dict) -> str:
+    """The parameters a fit did not determine, with the combination the data hold."""
+    out = [n + (f" ({r['combinations'][n]} held)" if n in r.get("combinations", {}) else "")
+           for n, st in r.get("statuses", {}).items() if st != "determined"]
+    return ", ".join(out) or "-"
 
 
 def _write(rows: list[dict], summary: str, name: str, workers: int, options: dict) -> None:
@@ -259,13 +264,14 @@ def _write(rows: list[dict], summary: str, name: str, workers: int, options: dic
             f"{workers}{shown} --write {name}` at {commit}{' (src modified)' if dirty else ''}, "
             f"{datetime.date.today()}, {platform.machine()}, {len(rows)} sets of "
             f"benchmarks/data/fit_battery.json.\n\n**{summary}**\n\n")
-    table = ["| set | kind | chi-square | truth's | valley | intervals | verdict | s |",
-             "|---:|---|---:|---:|---|---|---|---:|"]
+    table = ["| set | kind | chi-square | truth's | valley | intervals | verdict | not determined"
+             " | s |", "|---:|---|---:|---:|---|---|---|---|---:|"]
     table += [f"| {r['index']} | {r['kind']} | {r['chisqr']:.2f} | {r['truth_chisqr']:.2f} | "
               f"{'yes' if r['valley'] else 'no'} | "
               f"{'hold' if r['intervals_hold'] else 'exclude ' + ', '.join(r['excluded'])}"
-              f"{'' if r['must_hold'] else ' (not required)'} | {r['quality']} | "
-              f"{r['seconds']:.1f} |" for r in rows]
+              f"{'' if r['must_hold'] else ' (not required)'}"
+              f"{' pinched ' + ', '.join(r['pinched']) if r.get('pinched') else ''} | "
+              f"{r['quality']} | {_loose(r)} | {r['seconds']:.1f} |" for r in rows]
     out = HERE / "results" / f"fit_battery_{name}.md"
     out.write_text(head + "\n".join(table) + "\n")
     out.with_suffix(".json").write_text(json.dumps(rows, indent=1, default=float) + "\n")

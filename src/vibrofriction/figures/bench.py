@@ -84,7 +84,7 @@ def plot_profiles(result: FitResult, truth: dict[str, float] | None = None) -> F
     level, chi = shape["level"], shape["chisqr"]
     for ax, name in zip(axes, free, strict=False):
         curve = np.array(shape["curves"][name]) if shape["curves"][name] else np.zeros((0, 2))
-        best = math.exp(shape["best"][name])
+        best = result.params[name].value
         if curve.size:
             x, rise = np.exp(curve[:, 0]), curve[:, 1] - chi
             order = np.argsort(x)
