@@ -208,6 +208,9 @@ def test_a_wrong_constraint_gives_a_poor_verdict_and_intervals_that_hold_the_tru
         assert lo <= getattr(TRUE, n) <= hi
         assert (lo, hi) == pytest.approx((getattr(guess, n) / 10, getattr(guess, n) * 10))
     assert "search range (the fit is poor)" in res.report()
+    assert res.report().splitlines()[1].startswith("what the data hold: nothing while the fit "
+                                                   "is poor")
+    assert set(res.determination.values()) == {"not determined"}
     back = FitResult.from_json(res.to_json(tmp_path / "fit.json"))
     assert back.intervals == res.intervals and back.report().splitlines()[0] == \
         res.report().splitlines()[0]

@@ -157,6 +157,8 @@ def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
         search = {n: (ln[j] - bounds[j][0], bounds[j][1] - ln[j]) for j, n in enumerate(free)}
         result_params, intervals = physical_params(out, free, named, tied, search)
     status, combos = determination(out, problem, ln, bounds, dists)
+    if quality == "poor":  # a model that does not fit the data determines nothing of them
+        status, combos = dict.fromkeys(free, "not determined"), {}
     for n, st in status.items():  # no standard error from the covariance of a loose parameter
         if st == "not determined" and n in result_params:
             result_params[n].stderr = None

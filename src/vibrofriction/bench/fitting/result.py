@@ -97,9 +97,10 @@ class FitResult:
                 "doubtful": "95 % interval if this minimum is the right one"}.get(
                     self.quality, "95 % interval")
         for name in self.params:
+            status = "poor" if self.quality == "poor" else self.determination.get(
+                name, "determined")
             lines.append(_parameter_line(name, self.params[name],
-                                         self.intervals.get(name), what,
-                                         self.determination.get(name, "determined")))
+                                         self.intervals.get(name), what, status))
         pairs = [(a, b, self.params[a].correl[b]) for i, a in enumerate(self.free)
                  for b in self.free[i + 1:] if self.params[a].correl
                  and b in self.params[a].correl]
@@ -266,6 +267,9 @@ def _held(res: FitResult) -> list[str]:
     """What the data hold of the free parameters, in one line (none without a verdict)."""
     if not res.determination:
         return []
+    if res.quality == "poor":
+        return ["what the data hold: nothing while the fit is poor (the intervals are the "
+                "search range)"]
     groups: dict[str, list[str]] = {}
     for n in res.free:
         groups.setdefault(res.determination[n], []).append(n)
