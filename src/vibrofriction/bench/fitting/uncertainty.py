@@ -48,8 +48,11 @@ def estimate_uncertainties(problem: Problem, out, minima, bounds, map_, stages: 
     with stages.timed("local") as row:
         out, more, row["evaluations"] = local_fit(problem, [lower[1]], bounds, map_)
     minima = sorted(minima + more, key=lambda r: r[0])
-    if old.chisqr - out.chisqr <= RESTART_PROFILES * _s2(problem, out):
-        # the old level set holds the new one: its intervals, re-centred
+    new_best = ln_of(out, free)
+    inside = all(old_best[j] - dists[n][0] <= new_best[j] <= old_best[j] + dists[n][1]
+                 for j, n in enumerate(free))
+    if inside and old.chisqr - out.chisqr <= RESTART_PROFILES * _s2(problem, out):
+        # the old level set holds the new one (and its minimum): its intervals, re-centred
         return out, minima, _recentre(dists, free, old_best, ln_of(out, free)), None, shape
     with stages.timed("profiles") as row:
         dists, lower, row["evaluations"], shape = _profiles(problem, out, minima, bounds, map_,
