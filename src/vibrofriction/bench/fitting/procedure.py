@@ -44,7 +44,7 @@ from .uncertainty import (
 CURVED_TOL = 1e-4
 #: The global search's local starts and screened points without ``starts``, ``screen``: a
 #: flat punch's, and a curved contact's (the MDR solver is ~30 times slower a point).
-SEARCH = (12, 128)
+SEARCH = (12, 512)
 CURVED_SEARCH = (3, 32)
 
 __all__ = ["CURVED_TOL", "fit"]
