@@ -35,10 +35,7 @@ Writes tests/data/mdr_fine_reference.json.
 
 from __future__ import annotations
 
-import json
 import math
-import platform
-import subprocess
 import sys
 import time
 from pathlib import Path
@@ -50,7 +47,7 @@ from vibrofriction_reference.mdr import mdr_mean
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from make_mdr_reference import DRIFTING  # noqa: E402
+from make_mdr_reference import DRIFTING, write_cache  # noqa: E402
 from make_mdr_reference import points as random_points  # noqa: E402
 
 TOL_TRUSTED = 1e-5  # the solver's default tol_trusted, which the bars must be well below
@@ -133,14 +130,9 @@ def main() -> None:
         print(f"{d['label']:36s} mu {d['mu_ref']:+.8f} +- {d['err_ref']:.1e}  "
               f"rows {d['levels'][-1]}  {d['seconds']} s", flush=True)
         rows.append(d)
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True, cwd=HERE).stdout.strip()
-    meta = {"script": "tests/data/make_mdr_fine_reference.py", "commit": commit,
-            "date": time.strftime("%Y-%m-%d"), "machine": platform.platform(),
-            "target": TARGET, "transient_periods": TRANSIENT, "average_periods": AVERAGE,
-            "initial": "sliding", "calibration_seed": CALIBRATION_SEED}
-    (HERE / "mdr_fine_reference.json").write_text(json.dumps({"meta": meta, "points": rows},
-                                                             indent=1) + "\n")
+    write_cache("mdr_fine_reference.json", "tests/data/make_mdr_fine_reference.py", rows,
+                target=TARGET, transient_periods=TRANSIENT, average_periods=AVERAGE,
+                initial="sliding", calibration_seed=CALIBRATION_SEED)
 
 
 if __name__ == "__main__":
