@@ -83,3 +83,11 @@ def test_a_sweep_of_a_curved_tip_on_vbar():
     mu = variables["mu_ratio"].ravel()
     assert mu[0] < 0.9999 and mu[1] == pytest.approx(1.0, abs=1e-10)
     assert mu[0] == vf.friction_coefficient(vf.Dimensionless(**TIPS[0]), vbar=0.98).mu_ratio
+
+
+def test_the_stiff_laws_vbar_is_the_limit_of_the_tips():
+    """docs/contact_geometry.md, "Stiff law of a curved profile": the stiff law's
+    ``(beta - alpha) V n/((n + 1) a)`` is ``V/V_c`` as ``alpha, beta -> 0``."""
+    ratios = [float(vf.theory.profile_critical_velocity(al, 2 * al, 0.5, 2.0)) * al / 1.5 / 0.5
+              for al in (0.05, 0.005)]
+    assert ratios == [pytest.approx(0.948, abs=5e-4), pytest.approx(0.995, abs=5e-4)]
