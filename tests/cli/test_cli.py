@@ -219,8 +219,14 @@ def test_a_curved_tip_prints_no_nan(capsys):
     code, out, err = _run(capsys, "mu", *SYSTEM, "--profile-exponent", "2",
                           "--v-inertial", "0.3")
     assert code == 0, err
-    assert "nan" not in out and "vbar" not in out
-    assert "profile_exponent=2" in out and "v_inertial" in out
+    assert "nan" not in out and "profile_exponent=2" in out and "v_inertial" in out
+    # vbar = V / V_c, the tip's critical velocity (0.98999 here)
+    Vc = float(vf.theory.profile_critical_velocity(0.5, 2.0, 0.5, 2.0))
+    assert "vbar" in out and f"{0.3 / Vc:.4g}" in out
+    code, out, err = _run(capsys, "mu", *SYSTEM, "--profile-exponent", "2",
+                          "--vbar", "0.98,1.02")
+    assert code == 0, err
+    assert f"{0.98 * Vc:.5g}" in out and "1.0000000000" in out
 
 
 def test_a_negative_velocity_is_a_value_not_an_option(capsys):

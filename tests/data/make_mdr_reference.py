@@ -106,14 +106,19 @@ def main() -> None:
         print(f"{d['label']:36s} mu {r.mu_ratio:.8f} +- {r.mu_error:.1e}  {d['seconds']} s",
               flush=True)
         rows.append(d)
+    write_cache("mdr_reference.json", "tests/data/make_mdr_reference.py", rows, seed=SEED,
+                transient_periods=TRANSIENT, average_periods=AVERAGE, initial="sliding")
+
+
+def write_cache(name: str, script: str, rows: list[dict], **meta) -> None:
+    """Write ``{"meta": ..., "points": rows}`` to ``tests/data/name``, the meta naming the
+    script, the commit, the date and the machine, then ``meta``."""
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True, cwd=HERE).stdout.strip()
-    meta = {"script": "tests/data/make_mdr_reference.py", "commit": commit,
-            "date": time.strftime("%Y-%m-%d"), "machine": platform.platform(),
-            "seed": SEED, "transient_periods": TRANSIENT, "average_periods": AVERAGE,
-            "initial": "sliding"}
-    (HERE / "mdr_reference.json").write_text(json.dumps({"meta": meta, "points": rows},
-                                                        indent=1) + "\n")
+    head = {"script": script, "commit": commit, "date": time.strftime("%Y-%m-%d"),
+            "machine": platform.platform()}
+    (HERE / name).write_text(json.dumps({"meta": {**head, **meta}, "points": rows},
+                                        indent=1) + "\n")
 
 
 if __name__ == "__main__":

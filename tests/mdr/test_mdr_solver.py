@@ -140,6 +140,8 @@ def test_agrees_with_the_cached_reference_within_the_error_bars(p):
         assert r["status"] == "periodic" and r["mu_ratio"] == pytest.approx(1.0, abs=1e-9)
         assert 0 < r["mu_ratio"] - p["mu_ref"] < 3e-7
         return
+    # these bars (median 1.6e-5) exceed tol_trusted: the comparison at the solver's
+    # tolerance is tests/mdr/test_mdr_fine_reference.py's, with bars of at most 2e-6
     assert abs(r["mu_ratio"] - p["mu_ref"]) <= r["error"] + p["err_ref"]
 
 

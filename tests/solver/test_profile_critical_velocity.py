@@ -150,5 +150,6 @@ def test_systems_expose_it():
         d.alpha, d.beta, d.amplitude, 2.0) * 0.3 * F0 / (0.2 * pin.omega), rel=1e-12)
     r = vf.friction_coefficient(pin, v0=[0.99 * v0c, 1.01 * v0c])
     assert r.mu_ratio[1] == pytest.approx(1.0, abs=1e-12) and r.mu_ratio[0] < 1.0
-    with pytest.raises(ValueError, match="vbar"):
-        pin.v0_to_vbar(0.01)
+    # vbar of the tip: v0 over its critical velocity (tests/mdr/test_mdr_vbar.py)
+    assert pin.v0_to_vbar(v0c) == pytest.approx(1.0, rel=1e-12)
+    assert pin.vbar_to_v0(0.5) == pytest.approx(0.5 * v0c, rel=1e-12)

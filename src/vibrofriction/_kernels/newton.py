@@ -32,6 +32,11 @@ NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this is neutral
 UNSTABLE = 1.0 + 1e-6  # and above this, repelling
 QUADRATIC = 0.01  # Newton steps shrinking at least this fast are in the quadratic regime
 EARLY_ERROR = 1e-12  # a mean predicted one step early is taken only this accurate
+# ... and only within this fraction of the residual's tolerance, where that is smaller: a
+# tighter tol_state (below the default 1e-10, whose Newton tolerance is 1e-11) makes the
+# early answer as much tighter, or takes the next map (without it, an early answer at
+# 1e-12 passed every tolerance, and tol_state = 1e-13 returned the default's very bits)
+EARLY_FRACTION = 0.1
 
 
 @jit
@@ -147,11 +152,12 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     |G_j dz_j| / int n``.  In the quadratic regime (the step shrank by ``QUADRATIC`` or
     more, ``rho = |dz| / |dz_prev|``) an iterate is accepted one map earlier, where the
     next residual, about ``rho^2 |dz|``, would be within ``tol`` and the bound below is
-    within ``EARLY_ERROR``: the state is ``z + dz``, ``mu`` the window mean plus
-    ``G . dz / int n``, and ``shift = |R| rho^2 + rho sum_j |G_j dz_j| / int n``, ``R`` the
-    error of the previous iterate's first-order prediction of this window mean (the
-    second-order remainder, which scales as ``|dz|^2``); the sum of moduli, not the
-    modulus of the sum, as the terms of the next step need not cancel as this one's do.
+    within ``min(EARLY_ERROR, EARLY_FRACTION tol)``: the state is ``z + dz``, ``mu`` the
+    window mean plus ``G . dz / int n``, and ``shift = |R| rho^2 + rho sum_j |G_j dz_j| /
+    int n``, ``R`` the error of the previous iterate's first-order prediction of this
+    window mean (the second-order remainder, which scales as ``|dz|^2``); the sum of
+    moduli, not the modulus of the sum, as the terms of the next step need not cancel as
+    this one's do.
     The phase-time fractions of ``acc`` are then those of the iterate, within about
     ``|dz|`` of the orbit's.
     """
@@ -217,7 +223,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
         # plus the next step's first-order term, bounded by rho sum |G_j dz_j|
         bound = abs(mu - predicted) * rho * rho + shift * rho
         early = (not converged and rho <= QUADRATIC and dzn * rho * rho <= tol * scale0
-                 and bound <= EARLY_ERROR)
+                 and bound <= min(EARLY_ERROR, EARLY_FRACTION * tol))
         if converged or early:
             if degenerate > 0 or not smooth:
                 break

@@ -20,13 +20,21 @@ from .fields import FloatOrArray, valid_array
 
 # --------------------------------------------------------------------------- vbar <-> V
 def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
-                    factor: NDArray[np.float64]) -> str | None:
+                    factor: NDArray[np.float64],
+                    curved: NDArray[np.bool_] | bool = False) -> str | None:
     """Why ``vbar`` does not exist at the first point where it does not, or None."""
     bad = (factor == 0.0) | np.isinf(factor)
     if not np.any(bad):
         return None
-    al, am, c, b = (np.atleast_1d(x) for x in np.broadcast_arrays(alpha, amplitude, factor, bad))
+    al, am, c, b, cu = (np.atleast_1d(x)
+                        for x in np.broadcast_arrays(alpha, amplitude, factor, bad, curved))
     i = int(np.flatnonzero(b)[0])
+    if cu[i] and am[i] != 0.0:
+        # theory.profile_critical_velocity: inf undamped at alpha = k^2, every harmonic k of
+        # the curved tip's normal force
+        return (f"a curved tip at alpha = {al[i]!r}: v0* is "
+                + ("infinite (undamped, alpha = k^2 for a harmonic k of its normal force)"
+                   if math.isinf(c[i]) else "zero"))
     if math.isinf(c[i]):
         return f"alpha == 1 (case IV): v0* is infinite (alpha = {al[i]!r})"
     if am[i] == 0.0:
@@ -35,14 +43,27 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
 
 
 def critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
-                       zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0) -> NDArray[np.float64]:
+                       zeta: ArrayLike = 0.0, eta_c: ArrayLike = 0.0,
+                       profile_exponent: ArrayLike = math.inf) -> NDArray[np.float64]:
     """``V_c = V/vbar`` (eqs. 12, 16, 20; damped: docs/damping.md) elementwise.
 
+    A curved tip (finite ``profile_exponent``, the MDR contact): its critical velocity of
+    continuous sliding, :func:`~vibrofriction.theory.profile_critical_velocity`
+    (docs/contact_geometry.md; derived without contact damping: ``eta_c > 0`` is refused).
     ValueError where ``vbar`` is undefined.
     """
     al, am = validated({"alpha": alpha, "amplitude": amplitude}).values()
     c = np.asarray(theory.critical_inertial_velocity(al, beta, am, zeta, eta_c), dtype=float)
-    why = _undefined_vbar(al, am, c)
+    curved = np.isfinite(np.asarray(profile_exponent, dtype=float))
+    if np.any(curved):
+        if np.any(curved & (np.asarray(eta_c, dtype=float) > 0.0)):
+            raise ValueError("vbar of a curved tip is derived without contact damping "
+                             "(eta_c > 0; docs/contact_geometry.md): use the inertial "
+                             "velocity v_inertial instead")
+        tip = np.asarray(theory.profile_critical_velocity(al, beta, am, profile_exponent,
+                                                          zeta), dtype=float)
+        c = np.where(curved, tip, c)
+    why = _undefined_vbar(al, am, c, curved)
     if why is not None:
         raise ValueError(f"vbar is undefined for {why}; use the inertial velocity "
                          "v_inertial instead")
@@ -51,7 +72,8 @@ def critical_for_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
 
 def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      vbar: ArrayLike, zeta: ArrayLike = 0.0,
-                     eta_c: ArrayLike = 0.0) -> FloatOrArray:
+                     eta_c: ArrayLike = 0.0,
+                     profile_exponent: ArrayLike = math.inf) -> FloatOrArray:
     """Inertial velocity ``V = v0 m omega/(mu0 F_N0) = c vbar`` (eqs. 12, 16), elementwise.
 
     The one conversion from ``vbar = v0/v0*`` to ``V`` in the package.
@@ -64,6 +86,10 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
         ``v0/v0*``, ``>= 0``.
     zeta, eta_c : array_like, optional
         The damping of the pin and of the contact (docs/damping.md).
+    profile_exponent : array_like, optional
+        ``n`` of a curved tip ``z = c r^n`` (the MDR contact): ``c`` is then its critical
+        velocity, :func:`~vibrofriction.theory.profile_critical_velocity`; ``inf`` (the
+        default) a flat punch.
 
     Returns
     -------
@@ -73,7 +99,8 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     Raises
     ------
     ValueError
-        Where ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``) or negative.
+        Where ``vbar`` is undefined (``alpha = 1``, ``beta = 1`` or ``a = 0``; a curved tip
+        at an undamped ``alpha = k^2``, or with ``eta_c > 0``) or negative.
 
     Examples
     --------
@@ -82,19 +109,21 @@ def vbar_to_inertial(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     array([0.2       , 0.66666667])
     """
     v = valid_array("vbar", vbar)
-    return as_float_or_array(critical_for_vbar(alpha, beta, amplitude, zeta, eta_c) * v)
+    return as_float_or_array(critical_for_vbar(alpha, beta, amplitude, zeta, eta_c,
+                                               profile_exponent) * v)
 
 
 def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
                      v_inertial: ArrayLike, zeta: ArrayLike = 0.0,
-                     eta_c: ArrayLike = 0.0) -> FloatOrArray:
+                     eta_c: ArrayLike = 0.0,
+                     profile_exponent: ArrayLike = math.inf) -> FloatOrArray:
     """``vbar = V / c`` (eqs. 12, 16), elementwise: the inverse of :func:`vbar_to_inertial`.
 
     ``vbar`` is defined for ``V >= 0`` only (a backward velocity has no ``vbar``).
 
     Parameters
     ----------
-    alpha, beta, amplitude, zeta, eta_c : array_like
+    alpha, beta, amplitude, zeta, eta_c, profile_exponent : array_like
         The system, as for :func:`vbar_to_inertial`.
     v_inertial : array_like
         ``V``, ``>= 0``.
@@ -116,7 +145,8 @@ def inertial_to_vbar(alpha: ArrayLike, beta: ArrayLike, amplitude: ArrayLike,
     0.3...
     """
     V = validated({"v_inertial": v_inertial}, ranges={"v_inertial": NONNEGATIVE})["v_inertial"]
-    return as_float_or_array(V / critical_for_vbar(alpha, beta, amplitude, zeta, eta_c))
+    return as_float_or_array(V / critical_for_vbar(alpha, beta, amplitude, zeta, eta_c,
+                                                   profile_exponent))
 
 
 # --------------------------------------------------------------------------- cases

@@ -135,13 +135,6 @@ class Dimensionless:
         """``True`` for a curved tip (finite ``profile_exponent``: the MDR contact)."""
         return self.profile_exponent != math.inf
 
-    def _check_flat(self, what: str) -> None:
-        if self.curved:
-            raise ValueError(f"{what} is not wired for a curved profile yet "
-                             f"(profile_exponent = {self.profile_exponent!r}; its critical "
-                             "velocity is critical_inertial_velocity(), "
-                             "docs/contact_geometry.md): use the inertial velocity v_inertial")
-
     def critical_inertial_velocity(self) -> float:
         """``V_c``, the inertial velocity of continuous forward sliding (eq. 12 with damping).
 
@@ -179,14 +172,14 @@ class Dimensionless:
 
         The fields are frozen and validated.  ValueError where ``vbar`` does not exist (not cached),
         and with an in-plane oscillation, whose velocities are signed and have no ``vbar`` (eq. 16
-        scales by the normal oscillation's ``v0*`` only).
+        scales by the normal oscillation's ``v0*`` only).  A curved tip: its critical velocity
+        (:meth:`critical_inertial_velocity`, ``theory.profile_critical_velocity``).
         """
         self._check_vbar_inplane()
         return float(critical_for_vbar(self.alpha, self.beta, self.amplitude, self.zeta,
-                                        self.eta_c))
+                                        self.eta_c, self.profile_exponent))
 
     def _check_vbar_inplane(self) -> None:
-        self._check_flat("vbar (v0/v0* of eq. 16)")
         if self.a_x > 0.0 or self.a_y > 0.0:
             raise ValueError(f"vbar (v0/v0* of eq. 16) is not defined with an in-plane "
                              f"oscillation (a_x = {self.a_x!r}, a_y = {self.a_y!r}); use the "
@@ -200,4 +193,4 @@ class Dimensionless:
         """``vbar = V / V_c`` (eqs. 12, 16); ValueError where ``vbar`` is undefined."""
         self._check_vbar_inplane()
         return inertial_to_vbar(self.alpha, self.beta, self.amplitude, v_inertial, self.zeta,
-                                self.eta_c)
+                                self.eta_c, self.profile_exponent)

@@ -438,10 +438,6 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     _check_above(axes)
     if velocity.name == "vbar":
         by_name = {a.name: a for a in axes}
-        if np.any(np.isfinite(by_name["profile_exponent"].values)):
-            raise ValueError("vbar (v0/v0* of eq. 16) is not defined for a curved profile "
-                             "yet (profile_exponent finite in the grid): sweep v_inertial "
-                             "instead")
         if np.any(by_name["a_x"].values > 0.0) or np.any(by_name["a_y"].values > 0.0):
             raise ValueError("vbar (v0/v0* of eq. 16) is not defined with an in-plane "
                              "oscillation (a_x or a_y > 0 in the grid): sweep v_inertial (signed) "
