@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from html import escape
 
 import numpy as np
 import pytest
@@ -532,6 +533,8 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
 
     monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
     ex = app_module.Explorer(State(eta_c=0.1, a_x=0.3, a_y=0.2, inplane_on="holder"))
+    # an in-plane drive has no vbar: the axis is V at once, said beside the axis
+    assert ex.state.axis == "V" and "axis set from vbar to V" in ex.axis_message.object
     ex.profile.value = "sphere"
     assert ex.state.profile_exponent == 2.0 and ex.state.axis == "V"
     assert ex.state.eta_c == 0.0 and ex.state.a_y == 0.0
@@ -548,7 +551,6 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     assert not ex.inplane_on.disabled
     assert "eta_c reset from 0.1 to 0: the MDR solver" in ex.inputs["eta_c"].message.object
     assert "a_y reset from 0.2 to 0: the MDR solver" in ex.inputs["a_y"].message.object
-    assert "axis set from vbar to V" in ex.axis_message.object
     assert ex.profile_note.visible
     assert ex.inputs["profile_exponent"].text.disabled  # only the power law is typed
     ex.inputs["beta"].text.value = "inf"
@@ -564,3 +566,16 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     assert ex.state.profile_exponent == math.inf
     assert not ex.inputs["eta_c"].text.disabled and not ex.inputs["eta_c"].message.visible
     assert not ex.profile_note.visible and not ex.axis_message.visible
+    flat = app_module.Explorer(State())  # the axis vbar: a curved tip switches it
+    flat.profile.value = "cone"
+    try:  # the library's word on vbar for a cone
+        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=1.0).vbar_to_inertial(1.0)
+        refusal = ""
+    except ValueError as exc:
+        refusal = str(exc)
+    assert flat.state.profile_exponent == 1.0
+    assert flat.state.axis == ("V" if refusal else "vbar")
+    if refusal:
+        assert "axis set from vbar to V: vbar is not defined for a curved tip" in \
+            flat.axis_message.object
+        assert escape(refusal) in flat.axis_message.object
