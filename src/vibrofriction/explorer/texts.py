@@ -28,7 +28,7 @@ def with_more(short: str, more: str = "") -> str:
     if not more:
         return escape(short)
     return (f"{escape(short)}<details class=\"vf-more\"><summary>more</summary>"
-            f"{escape(more)}</details>")
+            f"<div>{escape(more)}</div></details>")
 
 
 def vbar_refusal(state: State) -> str:

@@ -335,7 +335,7 @@ class MapView:
         fig = figure(height=330, width=500, x_axis_type="log", y_axis_type="log",
                      x_range=Range1d(a0, a1), y_range=Range1d(b0, b1),
                      tools="tap,pan,wheel_zoom,reset,save", toolbar_location=TOOLBAR,
-                     title="cases I-IV (vf.classify): click to move there",
+                     title="cases I-IV: click to move there",
                      x_axis_label="alpha", y_axis_label="beta")
         fig.image_rgba(image=[img], x=a0, y=b0, dw=a1 - a0, dh=b1 - b0)
         # the resonance bands are thinner than a pixel of the grid: draw them as lines
