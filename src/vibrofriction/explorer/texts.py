@@ -27,7 +27,7 @@ def with_more(short: str, more: str = "") -> str:
     """
     if not more:
         return escape(short)
-    return (f"{escape(short)}<details class=\"vf-more\"><summary>more</summary>"
+    return (f"<span>{escape(short)}</span><details class=\"vf-more\"><summary>more</summary>"
             f"<div>{escape(more)}</div></details>")
 
 
@@ -96,7 +96,7 @@ def flat_side_text(curve: dict, state: State) -> str:
                 "The static value is the limit v0 -> 0+ (eq. 2). ")
         if curve["jumping"]:
             more += "a > 1: eq. (12) is not the onset of sliding. "
-    return with_more(short, f"{more}Case {curve['case']}: {curve['case_text']}")
+    return with_more(short, f"{more}{curve['case_text']}")
 
 
 def curved_side_text(curve: dict, state: State) -> str:
@@ -119,7 +119,7 @@ def curved_side_text(curve: dict, state: State) -> str:
     short = f"case {curve['case']}; {curve['profile']} (MDR): {static}; {critical}"
     more = (f"The {static} ({static_why}); the mean normal force <F_N>/F_N0 = "
             f"{curve['mean_normal']:.5g}; the {critical} ({critical_why}). "
-            f"Case {curve['case']}: {curve['case_text']}")
+            f"{curve['case_text']}")
     if curve["rest_note"]:
         short += "; V = 0 left out of the curve"
         more += f" {curve['rest_note']}."
