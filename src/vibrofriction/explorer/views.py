@@ -89,9 +89,9 @@ class CurveView:
                      x_axis_type=kind, title="mu/mu0 against velocity (exact solver)",
                      toolbar_location=TOOLBAR, y_range=Range1d(0.0, 1.0))
         fig.line("x", "y", source=self.trusted, line_width=2, color="#1f77b4",
-                 legend_label="exact solver (trusted)")
+                 legend_label="computed (trusted)")
         pts = fig.scatter("x", "y", source=self.trusted, size=4, color="#1f77b4",
-                          legend_label="exact solver (trusted)")
+                          legend_label="computed (trusted)")
         fig.scatter("x", "y", source=self.untrusted, size=7, fill_color=None,
                     line_color="#888888", line_width=1.5,
                     legend_label="not trusted (solver error > tol)")
@@ -287,7 +287,9 @@ class HistoryView:
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
         _legend_follows_data([self.figure])  # no f_y entry in 1-D
-        self.figure.legend.nrows = 2 if f_y is not None else "auto"  # f_y: one more entry
+        # one row holds four entries in the width of the figure: the phases, n, f, f_y, events
+        entries = len({s[2] for s in h["spans"]}) + 2 + (f_y is not None) + bool(h["events"])
+        self.figure.legend.nrows = 2 if entries > 4 else "auto"
 
     def _show_path(self, h: dict) -> None:
         """The contact point on the substrate.
