@@ -25,6 +25,15 @@ def _empty(**columns) -> ColumnDataSource:
     return ColumnDataSource({k: [] for k in columns} if columns else {"x": [], "y": []})
 
 
+def _set_range(axis_range: Range1d, start: float, end: float) -> None:
+    """Set a figure's range, and where its toolbar's reset returns.
+
+    A ``Range1d``: the browser shows what is set here (a ``DataRange1d`` set from Python kept
+    the range of an earlier view in the page).
+    """
+    axis_range.update(start=start, end=end, reset_start=start, reset_end=end)
+
+
 def _legend_follows_data(figures) -> None:
     """Show a legend entry only while its renderers have something to draw."""
     for fig in figures:
@@ -174,8 +183,7 @@ class CurveView:
             if len(src.data["x0"]):
                 src.data = {**src.data, "y0": [bottom], "y1": [top]}
         for fig in self.figures.values():
-            # a Range1d set from here: the browser keeps it (a DataRange1d kept its first)
-            fig.y_range.update(start=bottom, end=top, reset_start=bottom, reset_end=top)
+            _set_range(fig.y_range, bottom, top)
         _legend_follows_data(self.figures.values())
 
     def show_measurements(self, groups: list[dict]) -> None:
@@ -229,7 +237,8 @@ class HistoryView:
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
                      title="time history: click a point of the curve",
                      x_axis_label="t/T (drive periods)",
-                     y_axis_label="force / (mu0 F_N0)", toolbar_location=TOOLBAR)
+                     y_axis_label="force / (mu0 F_N0)", toolbar_location=TOOLBAR,
+                     x_range=Range1d(0.0, 3.0), y_range=Range1d(-1.0, 2.0))
         fig.quad("left", "right", "bottom", "top", source=self.spans, color="color",
                  alpha=0.6, legend_field="phase")
         fig.line("t", "n", source=self.lines, color="black", line_width=1.5,
@@ -280,10 +289,8 @@ class HistoryView:
         ev_t = np.array([e[0] for e in h["events"]], dtype=float)
         self.events.data = {"t": ev_t, "y": np.interp(ev_t, t, f) if ev_t.size else ev_t,
                             "kind": [e[1] for e in h["events"]]}
-        self.figure.y_range.start = lo - 0.05 * pad
-        self.figure.y_range.end = hi + pad
-        self.figure.x_range.start = float(t[0])
-        self.figure.x_range.end = float(t[-1])
+        _set_range(self.figure.y_range, lo - 0.05 * pad, hi + pad)
+        _set_range(self.figure.x_range, float(t[0]), float(t[-1]))
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
         _legend_follows_data([self.figure])  # no f_y entry in 1-D
@@ -443,7 +450,7 @@ class SpaceTimeView:
         self.radii.data = {"t": t, "stick": st.get("stick_radius", np.full(t.size, np.nan)),
                            "contact": st.get("contact_radius", np.full(t.size, np.nan))}
         self.note.text = ""
-        fig.x_range.start, fig.x_range.end = t0, t1
-        fig.y_range.start, fig.y_range.end = 0.0, top
+        _set_range(fig.x_range, t0, t1)
+        _set_range(fig.y_range, 0.0, top)
         fig.title.text = (f"contact in space and time at {where} ({st['springs']} MDR "
                           "springs, one period)")
