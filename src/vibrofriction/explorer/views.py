@@ -279,7 +279,10 @@ class HistoryView:
         hi = max(float(np.max(f)), float(np.max(n)))
         if f_y is not None:
             lo, hi = min(lo, float(np.min(f_y))), max(hi, float(np.max(f_y)))
-        pad = 0.35 * (hi - lo or 1.0)
+        # one row holds four entries in the width of the figure: the phases, n, f, f_y, events
+        entries = len({s[2] for s in h["spans"]}) + 2 + (f_y is not None) + bool(h["events"])
+        two_rows = entries > 4
+        pad = (0.6 if two_rows else 0.35) * (hi - lo or 1.0)  # room for the legend on top
         self.spans.data = {
             "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
             "bottom": [lo - 0.05 * pad] * len(h["spans"]),
@@ -294,9 +297,7 @@ class HistoryView:
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
         _legend_follows_data([self.figure])  # no f_y entry in 1-D
-        # one row holds four entries in the width of the figure: the phases, n, f, f_y, events
-        entries = len({s[2] for s in h["spans"]}) + 2 + (f_y is not None) + bool(h["events"])
-        self.figure.legend.nrows = 2 if entries > 4 else "auto"
+        self.figure.legend.nrows = 2 if two_rows else "auto"
 
     def _show_path(self, h: dict) -> None:
         """The contact point on the substrate.
