@@ -645,13 +645,13 @@ def test_notes_of_a_change_go_with_the_next_change(monkeypatch):
     assert ex.state.a_y == 0.0
     ex.profile.value = "sphere"  # resets a_y, never applied
     message = ex.inputs["a_y"].message.object
-    assert message.startswith("a_y = 0.5 (never applied) cleared to 0: the MDR solver")
+    assert message.startswith("<span>a_y = 0.5 (never applied) cleared to 0: the MDR solver")
     assert "reset from" not in message
     ex.inputs["beta"].text.value = "2"
     ex.profile.value = "power"
     for name in ("a_y", "eta_c"):
         assert ex.inputs[name].message.object.startswith(
-            "disabled: the MDR solver does not take it yet")
+            "<span>disabled: the MDR solver does not take it yet")
     assert not ex.axis_message.visible  # the switch was news at the sphere's change only
     ex.profile.value = "flat"
     assert ex.state.profile_exponent == math.inf
@@ -670,7 +670,7 @@ def test_an_inplane_amplitude_on_vbar_switches_the_axis(monkeypatch):
         ex.inputs[name].text.value = "0.5"
         assert ex.state.axis == "V" and getattr(ex.state, name) == 0.5
         assert ex.inputs[name].message.object.startswith(
-            "the velocity axis is now V: vbar is not defined with an in-plane oscillation")
+            "<span>the velocity axis is now V: vbar is not defined with an in-plane oscillation")
         assert "axis set from vbar to V" in ex.axis_message.object
         assert escape("use the inertial velocity v_inertial") in ex.axis_message.object
         ex.inputs["alpha"].text.value = "0.3"
