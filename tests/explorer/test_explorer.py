@@ -630,6 +630,14 @@ def test_the_curve_view_fits_its_y_axis_and_marks_points_without_value():
     assert list(view.missing.data["x"]) == [0.0]
     assert fig.y_range.start < view.missing.data["y"][0] < np.nanmin(held["y"])
     assert len(view.untrusted.data["x"]) == 0  # no value, so not among the hollow circles
+    import matplotlib
+
+    with matplotlib.rc_context({"svg.fonttype": "none"}):  # the legend's text as text
+        svg = exports.figure_bytes(held, "svg").decode()
+    assert "not trusted, no value" in svg  # the export marks it too
+    with matplotlib.rc_context({"svg.fonttype": "none"}):
+        assert "no value" not in exports.figure_bytes(compute.curve(State(points=20)),
+                                                      "svg").decode()
 
 
 def test_notes_of_a_change_go_with_the_next_change(monkeypatch):
