@@ -359,6 +359,12 @@ def test_titles_are_whole_and_clear_of_the_toolbars(page, server):
     titles = page.evaluate(_TITLES)
     assert any("path on the substrate" in t for t in titles["seen"]), titles
     assert titles["bad"] == [], titles
+    page.goto(server + "?profile_exponent=2&axis=V&v_max=1.2")
+    page.get_by_text(re.compile(r"point at V = ")).wait_for()
+    page.wait_for_function(
+        f"() => ({_TITLES})().seen.some(t => t.startsWith('contact in space and time at'))")
+    titles = page.evaluate(_TITLES)
+    assert titles["bad"] == [], titles
 
 
 def test_an_inplane_amplitude_on_vbar_switches_the_axis_to_v(page, server):
