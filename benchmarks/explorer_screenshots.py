@@ -9,10 +9,12 @@ history after a click on the curve), ``explorer_map.png`` (the case map, soft co
 ``explorer_path.png`` (a transverse drive: the history with ``f_y`` and the contact point's
 path in the plane, cropped to the history) and ``explorer_mdr.png`` (a sphere: eta_c
 reset with the MDR solver's refusal beside it, its curve and its critical velocity of
-continuous sliding, a point's history and its contact in space and time).
+continuous sliding, a point's history and its contact in space and time) and
+``explorer_axis.png`` (a_x typed on the axis vbar: the axis switched to V, said beside a_x and
+the axis; the mount's note under its toggle).
 
 Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
-      mdr]
+      mdr axis]
 """
 
 from __future__ import annotations
@@ -105,6 +107,17 @@ def main(which: list[str]) -> None:
                 page.get_by_text(re.compile("point at V = ")).wait_for()
                 time.sleep(1.5)
                 shoot(page, "mdr")
+            if "axis" in which:
+                page = opened(browser, url)
+                shown = page.get_by_text(READOUT).inner_text()
+                box = page.locator(".vf-text-a_x input")
+                box.fill("0.5")
+                box.press("Enter")
+                while page.get_by_text(READOUT).inner_text() == shown:
+                    time.sleep(0.1)
+                page.get_by_text(re.compile("history at V = ")).wait_for()
+                time.sleep(1.5)
+                shoot(page, "axis", 1000)
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:
@@ -131,4 +144,4 @@ def main(which: list[str]) -> None:
 
 if __name__ == "__main__":
     main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit",
-                             "path", "mdr"])
+                             "path", "mdr", "axis"])

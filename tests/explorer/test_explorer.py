@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from html import escape
 
 import numpy as np
 import pytest
@@ -533,6 +534,8 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
 
     monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
     ex = app_module.Explorer(State(eta_c=0.1, a_x=0.3, a_y=0.2, inplane_on="holder"))
+    # an in-plane drive has no vbar: the axis is V at once, said beside the axis
+    assert ex.state.axis == "V" and "axis set from vbar to V" in ex.axis_message.object
     ex.profile.value = "sphere"
     assert ex.state.profile_exponent == 2.0 and ex.state.axis == "V"
     assert ex.state.eta_c == 0.0 and ex.state.a_y == 0.0
@@ -549,7 +552,6 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     assert not ex.inplane_on.disabled
     assert "eta_c reset from 0.1 to 0: the MDR solver" in ex.inputs["eta_c"].message.object
     assert "a_y reset from 0.2 to 0: the MDR solver" in ex.inputs["a_y"].message.object
-    assert "axis set from vbar to V" in ex.axis_message.object
     assert ex.profile_note.visible
     assert ex.inputs["profile_exponent"].text.disabled  # only the power law is typed
     ex.inputs["beta"].text.value = "inf"
@@ -565,3 +567,138 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     assert ex.state.profile_exponent == math.inf
     assert not ex.inputs["eta_c"].text.disabled and not ex.inputs["eta_c"].message.visible
     assert not ex.profile_note.visible and not ex.axis_message.visible
+    flat = app_module.Explorer(State())  # the axis vbar: a curved tip switches it
+    flat.profile.value = "cone"
+    try:  # the library's word on vbar for a cone
+        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=1.0).vbar_to_inertial(1.0)
+        refusal = ""
+    except ValueError as exc:
+        refusal = str(exc)
+    assert flat.state.profile_exponent == 1.0
+    assert flat.state.axis == ("V" if refusal else "vbar")
+    if refusal:
+        assert "axis set from vbar to V: vbar is not defined for a curved tip" in \
+            flat.axis_message.object
+        assert escape(refusal) in flat.axis_message.object
+
+
+@pytest.mark.parametrize("changes, same", [
+    ({}, True),  # no in-plane oscillation: nothing for the mount to move
+    ({"a_x": 0.5, "phase_x": 1.0, "eta_c": 0.1}, True),  # alpha = 1/2, zeta = 0
+    ({"a_y": 0.4, "phase_y": 0.3, "eta_c": 0.1}, True),  # the 2-D solver alike
+    ({"a_x": 0.5, "phase_x": 1.0, "zeta": 0.05}, False),  # pin damping
+    ({"a_x": 0.5, "phase_x": 1.0, "alpha": 0.45}, False),
+])
+def test_the_mount_note_says_where_substrate_and_holder_are_the_same_drive(changes, same):
+    """The note (texts.mount_note) against the library: where it says the two mounts are
+    the same, friction_coefficient gives the same values on both at V != 0 (to round-off);
+    where it says nothing, they differ."""
+    from vibrofriction.explorer.texts import mount_note
+
+    state = State(axis="V", **changes)
+    note = mount_note(state)
+    assert bool(note) == same
+    V = np.array([-0.6, -0.2, 0.2, 0.4, 0.6])
+    mu = [np.asarray(vf.friction_coefficient(state.with_(inplane_on=m).system(),
+                                             v_inertial=V).mu_ratio) for m in
+          ("substrate", "holder")]
+    gap = float(np.max(np.abs(mu[0] - mu[1])))
+    assert (gap < 1e-9) if same else (gap > 1e-3), gap
+    assert mount_note(State(mode="bench")) == ""
+
+
+def test_the_curve_view_fits_its_y_axis_and_marks_points_without_value():
+    """The y axis follows each curve shown (a bench's COF after a mu/mu0 curve: not 1), takes
+    in the measurements, and an untrusted point without a value (held at V = 0) is marked
+    on the axis's bottom edge."""
+    from bokeh.models import Range1d
+
+    view = CurveView()
+    view.show(compute.curve(State(points=20)), False)
+    fig = view.figures["linear"]
+    assert isinstance(fig.y_range, Range1d) and fig.y_range.end > 1.0
+    bench = compute.curve(State(mode="bench", points=20))
+    assert np.nanmax(bench["y"]) < 0.31
+    view.show(bench, False)
+    assert -0.05 < fig.y_range.start <= 0.0 and 0.3 < fig.y_range.end < 0.33
+    assert fig.y_range.reset_end == fig.y_range.end  # the toolbar's reset comes back here
+    view.show_measurements([{"x": [0.1], "cof": [0.45], "label": "m"}])
+    assert fig.y_range.end > 0.45
+    held = compute.curve(State(a_x=0.5, axis="V", v_min=-0.5, v_max=0.5, points=11))
+    assert held["x"][5] == 0.0 and np.isnan(held["y"][5]) and not held["trusted"][5]
+    view.show_measurements([])
+    view.show(held, False)
+    assert list(view.missing.data["x"]) == [0.0]
+    assert fig.y_range.start < view.missing.data["y"][0] < np.nanmin(held["y"])
+    assert len(view.untrusted.data["x"]) == 0  # no value, so not among the hollow circles
+    import matplotlib
+
+    with matplotlib.rc_context({"svg.fonttype": "none"}):  # the legend's text as text
+        svg = exports.figure_bytes(held, "svg").decode()
+    assert "not trusted, no value" in svg  # the export marks it too
+    with matplotlib.rc_context({"svg.fonttype": "none"}):
+        assert "no value" not in exports.figure_bytes(compute.curve(State(points=20)),
+                                                      "svg").decode()
+
+
+def test_notes_of_a_change_go_with_the_next_change(monkeypatch):
+    """What the page did at a change (reset, switched) is said at that change only; a value
+    never applied is not said to be reset; the disabled inputs keep their reason."""
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page as app_module
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    ex = app_module.Explorer(State())
+    ex.inputs["beta"].text.value = "0.1"  # refused: the state stays the last good one
+    ex.inputs["a_y"].text.value = "0.5"
+    assert ex.state.a_y == 0.0
+    ex.profile.value = "sphere"  # resets a_y, never applied
+    message = ex.inputs["a_y"].message.object
+    assert message.startswith("<span>a_y = 0.5 (never applied) cleared to 0: the MDR solver")
+    assert "reset from" not in message
+    ex.inputs["beta"].text.value = "2"
+    ex.profile.value = "power"
+    for name in ("a_y", "eta_c"):
+        assert ex.inputs[name].message.object.startswith(
+            "<span>disabled: the MDR solver does not take it yet")
+    assert not ex.axis_message.visible  # the switch was news at the sphere's change only
+    ex.profile.value = "flat"
+    assert ex.state.profile_exponent == math.inf
+    ex.inputs["a_x"].text.value = "0.4"  # the axis is V already: nothing to switch
+    assert not ex.axis_message.visible and not ex.inputs["a_x"].message.visible
+    assert ex.state.a_x == 0.4
+
+
+def test_an_inplane_amplitude_on_vbar_switches_the_axis(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page as app_module
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    for name in ("a_x", "a_y"):
+        ex = app_module.Explorer(State())
+        ex.inputs[name].text.value = "0.5"
+        assert ex.state.axis == "V" and getattr(ex.state, name) == 0.5
+        assert ex.inputs[name].message.object.startswith(
+            "<span>the velocity axis is now V: vbar is not defined with an in-plane oscillation")
+        assert "axis set from vbar to V" in ex.axis_message.object
+        assert escape("use the inertial velocity v_inertial") in ex.axis_message.object
+        ex.inputs["alpha"].text.value = "0.3"
+        assert not ex.axis_message.visible and not ex.inputs[name].message.visible
+    ex = app_module.Explorer(State(mode="bench"))  # the bench has no in-plane input
+    assert ex.state.axis == "vbar"
+
+
+def test_side_texts_are_short_with_the_details_behind_more():
+    from vibrofriction.explorer.texts import curved_side_text, flat_side_text, with_more
+
+    assert with_more("a < b") == "a &lt; b"
+    html = with_more("short", "<F_N>")
+    assert html.startswith("<span>short</span><details") and "&lt;F_N&gt;" in html
+    for state in (State(points=12), State(a_x=1.0, phase_x=3.1, axis="V", points=12),
+                  State(a_y=0.5, axis="V", v_min=0.1, points=4),
+                  State(profile_exponent=2.0, axis="V", points=4)):
+        c = compute.curve(state)
+        text = (flat_side_text if c["profile"] == "flat punch" else curved_side_text)(c, state)
+        short, more = text.split("<details", 1)
+        assert short.startswith(f"<span>case {c['case']}") and len(short) < 120, short
+        assert c["case_text"].split(":")[0] in more

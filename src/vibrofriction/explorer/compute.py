@@ -22,7 +22,7 @@ from vibrofriction.schema import RESULT_FIELDS, ContactState, parameter_names
 from .state import AXES, State
 
 __all__ = ["CONTACT_STATES", "case_map", "curve", "history", "measurement_curves",
-           "parse_measurements", "profile_text", "run_fit"]
+           "not_computed", "parse_measurements", "profile_text", "run_fit"]
 
 CASE_COLORS = {"I": "#a6cee3", "II": "#b2df8a", "III": "#fb9a99", "IV": "#fdbf6f",
                "general": "#f0f0f0"}
@@ -55,6 +55,12 @@ POINT_COLUMNS = ("x", "y", *RESULT_COLUMNS)
 def _inertial(state: State, system, x: np.ndarray) -> np.ndarray:
     """The curve's velocities ``x`` as inertial velocities (the library's conversion)."""
     return np.asarray(inertial_velocity(system, **{state.velocity_keyword(): x}), dtype=float)
+
+
+def not_computed(curve: dict) -> np.ndarray:
+    """The points of a curve without a value (e.g. ``V = 0`` of the 2-D solver)."""
+    return ~np.asarray(curve["trusted"], dtype=bool) & ~np.isfinite(
+        np.asarray(curve["y"], dtype=float))
 
 
 def merge(parts: list[dict]) -> dict:

@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from .compute import not_computed
 from .state import State
 
 __all__ = ["curve_csv", "curve_file", "figure_bytes", "snippet"]
@@ -96,9 +97,15 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     if curve.get("rest_note") and 0 < k < len(x):  # V = 0 left out: the line breaks
         line_x, line_y = np.insert(x, k, 0.0), np.insert(line_y, k, np.nan)
     ax.plot(line_x, line_y, "-", color="C0", lw=1.5, label=solver)
-    if np.any(~ok):
-        ax.plot(x[~ok], y[~ok], "o", mfc="none", color="0.5", ms=4,
+    bad = ~ok & np.isfinite(y)
+    if np.any(bad):
+        ax.plot(x[bad], y[bad], "o", mfc="none", color="0.5", ms=4,
                 label="not trusted (solver)")
+    gap = not_computed(curve)
+    if np.any(gap):  # no value: marked on the bottom edge
+        ax.plot(x[gap], np.full(int(gap.sum()), 0.02), "v", mfc="none", color="0.5", ms=5,
+                transform=ax.get_xaxis_transform(), clip_on=False,
+                label="not trusted, no value")
     for k, form in enumerate(curve["closed_forms"]):
         ax.plot(form["x"], form["y"], "--", color=f"C{k + 1}", lw=1.2, label=form["label"])
     if math.isfinite(curve["static"]):

@@ -37,7 +37,16 @@ from .state import (
     parse_number,
     profile_of,
 )
-from .texts import curved_side_text, point_text, readout_text, status_text, vbar_refusal
+from .texts import (
+    curved_side_text,
+    flat_side_text,
+    mount_note,
+    point_text,
+    readout_text,
+    status_text,
+    vbar_refusal,
+    with_more,
+)
 from .views import CurveView, HistoryView, MapView, SpaceTimeView
 from .widgets import ERROR_STYLE, NOTE_STYLE, Input
 
@@ -77,7 +86,9 @@ class Explorer:
         self._point_text = ""  # the picked point's results, from the curve
         self._point_y = math.nan
         self._adjusting = False  # the page itself is setting inputs (no new reading)
-        self._mdr_notes: dict[str, str] = {}  # inputs reset or switched for a curved tip
+        # what the page did to the inputs at the last change (reset, switched) and why the
+        # disabled ones are: by input name or "axis"; made anew at every change
+        self._notes: dict[str, str] = {}
         self._build()
         self._changed()
         for name, text in query_problems.items():  # kept: the defaults stand in for them
@@ -107,12 +118,15 @@ class Explorer:
             value=s.mode, color="primary", width=320)
         self.axis = pn.widgets.RadioButtonGroup(options={k: k for k in AXES}, value=s.axis,
                                                 width=200, label="velocity axis")
-        self.axis_message = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
+        self.axis_message = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310,
+                                         css_classes=["vf-axis-message"])
         self.log_x = pn.widgets.Checkbox(label="logarithmic velocity axis", value=s.log_x)
         self.inplane_on = pn.widgets.RadioButtonGroup(
             options={f"in-plane on the {v}": v for v in CHOICES["inplane_on"].values},
             value=s.inplane_on, width=320, label="inplane_on",
             css_classes=["vf-inplane-on"])
+        self.inplane_note = pn.pane.HTML("", styles=NOTE_STYLE, visible=False, width=310,
+                                         css_classes=["vf-inplane-note"])
         self.general = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
         for w in (self.mode, self.axis, self.log_x, self.inplane_on):
             w.param.watch(lambda e: self._changed(), "value")
@@ -121,7 +135,7 @@ class Explorer:
         self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
         self.history_text = pn.pane.Markdown("click a point of the curve for its history",
                                              css_classes=["vf-history"])
-        self.case_text = pn.pane.Markdown("", width=330)
+        self.case_text = pn.pane.HTML("", width=330, css_classes=["vf-case"])
 
     def _build_views(self) -> None:
         """The curve, history, space-time and map views, their taps wired."""
@@ -138,7 +152,7 @@ class Explorer:
     def _build_input_boxes(self) -> None:
         """The dimensionless and the bench inputs, each in its box (one shown per mode)."""
         self.dim_box = pn.Column(*(self.inputs[f.name].layout for f in DIMENSIONLESS),
-                                 self.inplane_on,
+                                 self.inplane_on, self.inplane_note,
                                  pn.pane.Markdown("**the tip** (profile z = c r^n)"),
                                  self.profile, self.inputs[PROFILE.name].layout,
                                  self.profile_note, margin=0)
@@ -147,11 +161,12 @@ class Explorer:
         self.bench_file.param.watch(self._bench_file, "value")
         self.bench_box.append(pn.Column(pn.pane.Markdown("bench file (JSON, docs/bench.md):"),
                                         self.bench_file, margin=0))
-        self.bench_box.append(pn.pane.Markdown(
-            "The bench inputs are the linearised contact (its stiffnesses at the load): a "
-            "curved tip is chosen on the dimensionless inputs (in SI: "
-            "`vf.from_bench(contact=Sphere(...), contact_model=\"mdr\")`, "
-            "docs/contact_geometry.md).", width=330, styles=NOTE_STYLE))
+        self.bench_box.append(pn.pane.HTML(with_more(
+            "The bench inputs are the linearised contact: a curved tip is chosen on the "
+            "dimensionless inputs.",
+            "The linearised contact: its stiffnesses at the load. A curved tip in SI units: "
+            "vf.from_bench(contact=Sphere(...), contact_model=\"mdr\") in Python "
+            "(docs/contact_geometry.md)."), width=330, styles=NOTE_STYLE))
 
     def _sidebar(self):
         """The sidebar: the mode, the inputs, the velocity axis and the curve's status."""
@@ -241,73 +256,114 @@ class Explorer:
         else:
             self._changed()
 
-    def _guard_curved(self) -> None:
-        """With a curved tip, reset and disable what the MDR solver refuses.
+    def _guard(self) -> None:
+        """Before the inputs are read: what a curved tip or an in-plane drive excludes.
 
-        With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0
-        and the axis ``vbar`` to ``V``, saying so next to each with the library's message,
-        and disable them (and ``phase_y``); a flat punch enables them again.  The
-        longitudinal oscillation (``a_x``, ``phase_x``, the mount) stays enabled.
+        With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0, saying
+        so next to each with the library's message, and disable them (and ``phase_y``) with
+        the reason beside them; a flat punch enables them again.  The longitudinal
+        oscillation (``a_x``, ``phase_x``, the mount) stays enabled.  Where ``vbar`` is not
+        defined (a curved tip, an in-plane amplitude ``a_x`` or ``a_y`` > 0), switch the axis
+        to ``V``, saying why next to the axis and the amplitude.
         """
         try:
             n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value or "")
         except ValueError:
             return  # read_inputs says so
-        curved = self.mode.value == "dimensionless" and n != math.inf
+        dimensionless = self.mode.value == "dimensionless"
+        curved = dimensionless and n != math.inf
         self.inputs[PROFILE.name].enable(self.profile.value == "power")
         for name in _MDR_DISABLED:
             self.inputs[name].enable(not curved)
-        if not curved:
-            self._mdr_notes = {}
-            self.profile_note.visible = False
-            return
         probe = self.state.with_(profile_exponent=n, mode="dimensionless")
         self._adjusting = True
         try:
-            for name in MDR_REFUSED:
-                box = self.inputs[name].text
-                try:
-                    value = parse_number(name, box.value or "")
-                except ValueError:
-                    value = 1.0  # unreadable: reset it too
-                if value != 0.0:
-                    why = curved_refusal(probe, name, value) or "refused"
-                    self._mdr_notes[name] = f"{name} reset from {box.value} to 0: {why}"
-                    box.value = "0"
-            if self.axis.value == "vbar":
-                self._mdr_notes["axis"] = f"axis set from vbar to V: {vbar_refusal(probe)}"
-                self.axis.value = "V"
+            if curved:
+                self._reset_refused(probe)
+            if dimensionless and self.axis.value == "vbar":
+                self._leave_vbar(probe, curved)
         finally:
             self._adjusting = False
-        self.profile_note.object = (
-            f"a {compute.profile_text(n)} by the MDR solver (docs/contact_geometry.md): "
-            f"at most {MDR_POINTS} points a curve (~30 ms a point). It takes the "
-            "longitudinal in-plane oscillation (a_x, phase_x, the mount) at V != 0 (with "
-            "a_x > 0 the curve leaves V = 0 out). Not taken by it yet, so disabled: contact "
-            "damping eta_c, the transverse oscillation a_y, beta = inf, the axis vbar.")
-        self.profile_note.visible = True
+        self.profile_note.visible = curved
+        if curved:
+            self.profile_note.object = with_more(
+                f"{compute.profile_text(n)} by the MDR solver (at most {MDR_POINTS} points); "
+                "not taken yet, so disabled: eta_c, a_y, beta = inf, the axis vbar",
+                f"A curved tip is computed by the MDR solver (docs/contact_geometry.md): at "
+                f"most {MDR_POINTS} points a curve (~30 ms a point). It takes the "
+                "longitudinal in-plane oscillation (a_x, phase_x, the mount) at V != 0 (with "
+                "a_x > 0 the curve leaves V = 0 out). It does not take yet: contact damping "
+                "eta_c, the transverse oscillation a_y, a rigid contact beta = inf, the axis "
+                "vbar.")
+
+    def _typed(self, name: str) -> float | None:
+        """The value typed in the box of ``name``, or None where it does not read."""
+        try:
+            return parse_number(name, self.inputs[name].text.value or "")
+        except ValueError:
+            return None
+
+    def _reset_refused(self, probe: State) -> None:
+        """Reset to 0 the inputs the MDR solver refuses; the reason beside each."""
+        for name in MDR_REFUSED:
+            box = self.inputs[name].text
+            value = self._typed(name)
+            why = curved_refusal(probe, name, 1.0 if value in (None, 0.0) else value)
+            if value == 0.0:  # the library's refusal without its "got ..." of a probe value
+                self._notes[name] = with_more("disabled: the MDR solver does not take it yet",
+                                              why.split(": got ")[0])
+                continue
+            applied = value is not None and value == getattr(self.state, name)
+            self._notes[name] = with_more(
+                f"{name} reset from {box.value} to 0: the MDR solver does not take it yet"
+                if applied else f"{name} = {box.value} (never applied) cleared to 0: the MDR "
+                "solver does not take it yet", why)
+            box.value = "0"
+
+    def _leave_vbar(self, probe: State, curved: bool) -> None:
+        """Switch the axis ``vbar`` to ``V`` where ``vbar`` is not defined; say why."""
+        amplitudes = {n: v for n in ("a_x", "a_y") if (v := self._typed(n)) and v > 0.0}
+        if not (curved or amplitudes):
+            return
+        why = vbar_refusal(probe.with_(**{"a_x": 0.0, "a_y": 0.0, **amplitudes}))
+        if not why:
+            return
+        self.axis.value = "V"
+        cause = "a curved tip" if curved else "an in-plane oscillation"
+        self._notes["axis"] = with_more(f"axis set from vbar to V: vbar is not defined for "
+                                        f"{cause}", why)
+        if not curved:
+            for name in amplitudes:
+                self._notes[name] = with_more(
+                    "the velocity axis is now V: vbar is not defined with an in-plane "
+                    "oscillation", why)
 
     def _changed(self) -> None:
         """Read every input; on success ask for the curve, else place the message."""
         if self._adjusting:
             return
+        self._notes = {}  # what the last change did is no longer news
         self._show_mode()
-        self._guard_curved()
+        self._guard()
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
                                 log_x=bool(self.log_x.value),
                                 inplane_on=self.inplane_on.value)
         texts: dict[str, Any] = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
-        notes = self._mdr_notes
+        notes = self._notes
         for name, inp in self.inputs.items():
-            inp.show_message(problems.get(name, notes.get(name, "")))
+            inp.show_message(problems.get(name, notes.get(name, "")), note=name not in problems)
         self.general.object = problems.get(GENERAL, "")
         self.general.visible = GENERAL in problems
         axis_text = problems.get("axis", notes.get("axis", ""))
         self.axis_message.object = axis_text
+        self.axis_message.styles = ERROR_STYLE if "axis" in problems else NOTE_STYLE
         self.axis_message.visible = bool(axis_text)
         if state is None:
             return
+        mount = mount_note(state)
+        self.inplane_note.object = mount
+        self.inplane_note.visible = bool(mount)
         for n in self._names():
             self.inputs[n].sync_slider(getattr(state, n))
         self.state = state
@@ -367,22 +423,8 @@ class Explorer:
         self.curve_view.show(curve, state.log_x)
         self.map_view.show(curve["alpha"], curve["beta"])
         self.readout.object = readout_text(curve)
-        crit = curve["critical"]
-        band = curve["band"]
-        static = ("transverse oscillation: no closed-form static value, no critical "
-                  "velocity (the slip keeps turning)" if curve["a_y"] > 0 else
-                  f"static value {curve['static']:.4g}" if band is None else
-                  f"blocking forces (stuck band) {band[0]:.4g} at V -> 0+, {band[1]:.4g} at "
-                  f"V -> 0-: {band[2]}")
-        if curve["profile"] != "flat punch":
-            self.case_text.object = curved_side_text(curve, state)
-        else:
-            self.case_text.object = (
-                f"**case {curve['case']}**: {curve['case_text']}\n\n"
-                f"{static}" + ("" if curve["a_y"] > 0 else
-                               f"; critical velocity ({state.axis}) {crit:.4g}"
-                               + (" (a > 1: eq. 12 is not the onset of sliding)"
-                                  if curve["jumping"] else "")))
+        self.case_text.object = (flat_side_text if curve["profile"] == "flat punch" else
+                                 curved_side_text)(curve, state)
         self.snippet.object = f"```python\n{exports.snippet(state)}```"
         query = urlencode(state.to_query())
         self.link.object = f"Share this view: the page's address holds it (`?{query}`)."

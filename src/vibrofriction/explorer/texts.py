@@ -7,6 +7,7 @@ velocity.
 from __future__ import annotations
 
 import math
+from html import escape
 
 import numpy as np
 
@@ -15,43 +16,114 @@ from .state import (
     State,
 )
 
-__all__ = ["curved_side_text", "point_text", "readout_text", "status_text"]
+__all__ = ["curved_side_text", "flat_side_text", "mount_note", "point_text", "readout_text",
+           "status_text", "vbar_refusal", "with_more"]
+
+
+def with_more(short: str, more: str = "") -> str:
+    """A short line, and the details behind a "more" toggle (HTML; both escaped).
+
+    The side panel shows the line; ``more`` opens with a click (an HTML ``details``).
+    """
+    if not more:
+        return escape(short)
+    return (f"<span>{escape(short)}</span><details class=\"vf-more\"><summary>more</summary>"
+            f"<div>{escape(more)}</div></details>")
 
 
 def vbar_refusal(state: State) -> str:
-    """The library's message refusing the axis ``vbar`` for the state's curved tip."""
+    """The library's message refusing the axis ``vbar`` for the state's tip and drive.
+
+    ``""`` where ``vbar`` is defined (a flat punch without an in-plane oscillation).
+    """
     import vibrofriction as vf
 
     try:
-        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=state.profile_exponent
-                         ).vbar_to_inertial(1.0)
+        vf.Dimensionless(0.5, 2.0, 0.5, a_x=state.a_x, a_y=state.a_y,
+                         profile_exponent=state.profile_exponent).vbar_to_inertial(1.0)
     except ValueError as exc:
         return str(exc)
-    return "vbar is not available for this tip"
+    return ""
+
+
+def mount_note(state: State) -> str:
+    """Why the mount (substrate or holder) changes nothing here, or ``""`` where it matters.
+
+    With neither ``a_x`` nor ``a_y`` the mount has nothing to move.  Otherwise the two
+    mounts are the same drive where the in-plane force on the pin is the same
+    (docs/inplane.md, "The exact solver"; the 2-D model of its section 6 alike): in the
+    substrate's frame it is ``(1 - alpha) X - gamma X'`` on the substrate and ``alpha X +
+    gamma X'`` on the holder, equal for every ``X`` iff ``alpha = 1/2`` and ``gamma = 2 zeta
+    sqrt(alpha) = 0``; the contact (its damping ``eta_c`` included) sees the same relative
+    motion in both.  Only a point held at ``V = 0`` (stuck through whole cycles, its value
+    set by where it starts, not trusted) can differ.
+    """
+    if state.mode != "dimensionless":
+        return ""
+    if state.a_x == 0.0 and state.a_y == 0.0:
+        return with_more("no in-plane oscillation (a_x = a_y = 0): the mount changes nothing",
+                         "The mount says where the in-plane oscillation is imposed; without "
+                         "one both choices are the same system.")
+    if state.alpha == 0.5 and state.zeta == 0.0:
+        return with_more(
+            "at alpha = 1/2 without pin damping (zeta = 0) both mounts are the same drive: "
+            "the same curve",
+            "In the substrate's frame the in-plane oscillation X acts on the pin as the force "
+            "(1 - alpha) X - gamma X' on the substrate and alpha X + gamma X' on the holder "
+            "(gamma = 2 zeta sqrt(alpha)); they are equal for every X only at alpha = 1/2, "
+            "zeta = 0. The contact, with its damping eta_c, sees the same relative motion in "
+            "both (docs/inplane.md). Only a point held at V = 0, whose value depends on its "
+            "start (not trusted), can differ.")
+    return ""
+
+
+def flat_side_text(curve: dict, state: State) -> str:
+    """The case, the static value (or the stuck band) and the critical velocity (HTML).
+
+    One short line; the case's description and the details behind "more".
+    """
+    crit, band = curve["critical"], curve["band"]
+    if curve["a_y"] > 0:
+        short = f"case {curve['case']}; no static value, no critical velocity"
+        more = ("A transverse oscillation: no closed-form static value and no critical "
+                "velocity (the slip keeps turning).")
+    else:
+        first = (f"static value {curve['static']:.4g}" if band is None else
+                 f"stuck band {band[0]:.4g} (V -> 0+), {band[1]:.4g} (V -> 0-): {band[2]}")
+        short = f"case {curve['case']}; {first}; critical velocity ({state.axis}) {crit:.4g}"
+        more = ("The blocking forces of the closed-form stuck band (docs/inplane.md "
+                "section 3). " if band is not None else
+                "The static value is the limit v0 -> 0+ (eq. 2). ")
+        if curve["jumping"]:
+            more += "a > 1: eq. (12) is not the onset of sliding. "
+    return with_more(short, f"{more}{curve['case_text']}")
 
 
 def curved_side_text(curve: dict, state: State) -> str:
-    """The case and the curved tip's values beside the curve.
+    """The case and the curved tip's values beside the curve (HTML: short, then "more").
 
     The static value (none with ``a_x > 0``: it is the limit without the in-plane oscillation),
     the mean normal force, the critical velocity of continuous sliding (or the library's reason
     for none), and why ``V = 0`` is left out where it is.
     """
-    static = (f"static value {curve['static']:.4g} (the smallest normal force over the "
-              "mean)" if math.isfinite(curve["static"]) else
-              "no static value (a curved tip's is that without the in-plane oscillation)"
-              if curve["a_x"] > 0 else "no static value (the curve starts at V < 0)")
+    static = (f"static value {curve['static']:.4g}" if math.isfinite(curve["static"]) else
+              "no static value")
+    static_why = ("the smallest normal force over the mean" if math.isfinite(curve["static"])
+                  else "a curved tip's is that without the in-plane oscillation"
+                  if curve["a_x"] > 0 else "the curve starts at V < 0")
     crit = curve["critical"]
-    critical = (f"critical velocity ({state.axis}) {crit:.4g} (continuous sliding above "
-                "it: mu = mu0)" if math.isfinite(crit) else
-                f"no critical velocity: {curve['critical_note']}" if curve["critical_note"]
-                else "no finite critical velocity")
-    text = (f"**case {curve['case']}**: {curve['case_text']}\n\n"
-            f"**{curve['profile']}** (MDR): {static}; mean normal force "
-            f"<F_N>/F_N0 = {curve['mean_normal']:.5g}; {critical}")
+    critical = (f"critical velocity ({state.axis}) {crit:.4g}" if math.isfinite(crit) else
+                "no critical velocity")
+    critical_why = ("continuous sliding above it: mu = mu0" if math.isfinite(crit) else
+                    curve["critical_note"] or "it is not finite")
+    short = f"case {curve['case']}; {curve['profile']} (MDR): {static}; {critical}"
+    more = (f"The {static} ({static_why}); the mean normal force <F_N>/F_N0 = "
+            f"{curve['mean_normal']:.5g}; the {critical} ({critical_why}). "
+            f"{curve['case_text']}")
     if curve["rest_note"]:
-        text += f"\n\n**{curve['rest_note']}**"
-    return text
+        short += "; V = 0 left out of the curve"
+        more += f" {curve['rest_note']}."
+    return with_more(short, more)
 
 
 def status_text(state: State) -> str:

@@ -10,17 +10,28 @@ from bokeh.plotting import figure
 
 from ..figures.style import PHASE_COLORS
 from ..schema import PARTIAL, ContactState
-from .compute import CASE_COLORS, CONTACT_STATES
+from .compute import CASE_COLORS, CONTACT_STATES, not_computed
 
 __all__ = ["CurveView", "HistoryView", "MapView", "SpaceTimeView"]
 
 _TOOLS = "pan,wheel_zoom,box_zoom,reset,save"
+#: the toolbars stand right of their plots: above, they would cover the titles
+TOOLBAR = "right"
 _FORM_COLORS = ("#d95f02", "#7570b3", "#e7298a")
 _DATA_COLORS = ("#1b9e77", "#e6ab02", "#a6761d", "#666666", "#66a61e", "#e41a1c")
 
 
 def _empty(**columns) -> ColumnDataSource:
     return ColumnDataSource({k: [] for k in columns} if columns else {"x": [], "y": []})
+
+
+def _set_range(axis_range: Range1d, start: float, end: float) -> None:
+    """Set a figure's range, and where its toolbar's reset returns.
+
+    A ``Range1d``: the browser shows what is set here (a ``DataRange1d`` set from Python kept
+    the range of an earlier view in the page).
+    """
+    axis_range.update(start=start, end=end, reset_start=start, reset_end=end)
 
 
 def _legend_follows_data(figures) -> None:
@@ -38,6 +49,29 @@ def _legend_outside(fig, location: str = "bottom_right") -> None:
     fig.legend.click_policy = "hide"
 
 
+def _legend_beside(fig) -> None:
+    """The legend right of the plot, where it covers no data."""
+    fig.add_layout(fig.legend[0], "right")
+    fig.legend.label_text_font_size = "8pt"
+    fig.legend.click_policy = "hide"
+    fig.legend.spacing = 0
+    fig.legend.padding = 4
+
+
+def y_extent(values, reference: float) -> tuple[float, float]:
+    """The range of the values a curve's plot shows.
+
+    From 0 (or the lowest value, if below) to the highest of ``values`` (arrays: the
+    curve, the static value, the closed forms, measurements and fits), and at least to
+    ``reference``, the value of continuous sliding (1 for mu/mu0, mu0 for a bench's COF).
+    """
+    finite = np.concatenate([np.ravel(np.asarray(v, dtype=float)) for v in values] or [[]])
+    finite = finite[np.isfinite(finite)]
+    lo = min(0.0, float(finite.min())) if finite.size else 0.0
+    hi = max(reference, float(finite.max())) if finite.size else reference
+    return lo, hi if hi > lo else lo + 1.0
+
+
 class CurveView:
     """``mu/mu0`` (or the COF) against velocity.
 
@@ -48,6 +82,7 @@ class CurveView:
     def __init__(self, x_log: bool = False) -> None:
         self.trusted = _empty(x=1, y=1, n=1, stick=1, slip=1, open=1)
         self.untrusted = _empty(x=1, y=1, status=1)
+        self.missing = _empty(x=1, y=1, status=1)  # no value: marked on the bottom edge
         self.static = _empty(x=1, y=1)
         self.critical = _empty(x0=1, x1=1, y0=1, y1=1)  # the flat punch's (eq. 12)
         self.critical_curved = _empty(x0=1, x1=1, y0=1, y1=1)  # continuous sliding
@@ -55,29 +90,33 @@ class CurveView:
         self.measured = _empty(x=1, y=1, group=1, color=1)
         self.fitted = _empty(xs=1, ys=1, color=1)
         self.picked = _empty(x=1, y=1)
+        self._reference = 1.0  # the value of continuous sliding: mu/mu0 = 1 or a bench's mu0
         self.figures = {kind: self._figure(kind) for kind in ("linear", "log")}
 
     def _figure(self, kind: str):
         fig = figure(height=400, sizing_mode="stretch_width", tools=_TOOLS + ",tap",
                      x_axis_type=kind, title="mu/mu0 against velocity (exact solver)",
-                     toolbar_location="above")
+                     toolbar_location=TOOLBAR, y_range=Range1d(0.0, 1.0))
         fig.line("x", "y", source=self.trusted, line_width=2, color="#1f77b4",
-                 legend_label="exact solver (trusted)")
+                 legend_label="computed (trusted)")
         pts = fig.scatter("x", "y", source=self.trusted, size=4, color="#1f77b4",
-                          legend_label="exact solver (trusted)")
+                          legend_label="computed (trusted)")
         fig.scatter("x", "y", source=self.untrusted, size=7, fill_color=None,
                     line_color="#888888", line_width=1.5,
                     legend_label="not trusted (solver error > tol)")
+        fig.scatter("x", "y", source=self.missing, size=9, marker="inverted_triangle",
+                    fill_color=None, line_color="#888888", line_width=1.5,
+                    legend_label="not trusted, no value (on the axis)")
         fig.multi_line("xs", "ys", source=self.forms, color="color", line_dash="dashed",
                        line_width=2, legend_field="form")
         fig.scatter("x", "y", source=self.static, marker="square", size=10, color="black",
-                    legend_label="static value mu(v0 -> 0), eq. (2) (curved tip: its analogue)")
+                    legend_label="static value mu(v0 -> 0)")
         fig.segment("x0", "y0", "x1", "y1", source=self.critical, color="#d62728",
                     line_dash="dotted", line_width=2,
                     legend_label="critical velocity, eq. (12)")
         fig.segment("x0", "y0", "x1", "y1", source=self.critical_curved, color="#d62728",
                     line_dash="dotted", line_width=2,
-                    legend_label="critical velocity of continuous sliding (curved tip)")
+                    legend_label="critical velocity: continuous sliding")
         fig.scatter("x", "y", source=self.measured, size=8, marker="triangle",
                     color="color", legend_field="group")
         fig.multi_line("xs", "ys", source=self.fitted, color="color", line_width=2,
@@ -87,7 +126,7 @@ class CurveView:
         fig.add_tools(HoverTool(renderers=[pts], tooltips=[
             ("v", "@x{0.0000g}"), ("mu", "@y{0.000000}"), ("<F_N>/F_N0", "@n{0.0000}"),
             ("stick, slip, open", "@stick{0.000}, @slip{0.000}, @open{0.000}")]))
-        _legend_outside(fig)
+        _legend_beside(fig)
         return fig
 
     def show(self, curve: dict, log_x: bool) -> None:
@@ -107,12 +146,13 @@ class CurveView:
         self.untrusted.data = {"x": x[bad], "y": y[bad], "status": curve["status"][bad]}
         shown = math.isfinite(curve["static"])
         self.static.data = {"x": [x[0]] if shown else [], "y": [curve["static"]] if shown else []}
-        ymin = min(0.0, float(np.nanmin(y)) if np.any(np.isfinite(y)) else 0.0)
-        ymax = max(1.0 if curve["mu0"] is None else curve["mu0"],
-                   float(np.nanmax(y)) if np.any(np.isfinite(y)) else 1.0)
+        self._reference = 1.0 if curve["mu0"] is None else curve["mu0"]
+        gap = not_computed(curve)
+        self.missing.data = {"x": x[gap], "y": np.zeros(int(gap.sum())),  # see _rescale
+                             "status": curve["status"][gap]}
         crit = curve["critical"]
         in_range = math.isfinite(crit) and x[0] <= crit <= x[-1]
-        line = {"x0": [crit], "x1": [crit], "y0": [0.0], "y1": [1.05 * ymax]}
+        line = {"x0": [crit], "x1": [crit], "y0": [0.0], "y1": [1.0]}  # see _rescale
         none: dict[str, list[float]] = {k: [] for k in line}
         curved = curve["profile"] != "flat punch"
         self.critical.data = line if in_range and not curved else none
@@ -128,9 +168,22 @@ class CurveView:
                 f"{curve['profile']}, MDR solver"
             fig.title.text = (f"{curve['y_label']} against velocity ({solver}): case "
                               f"{curve['case']}")
-            fig.y_range.start = ymin - 0.04 * (ymax - ymin)  # the static value may be 0
-            fig.y_range.end = ymax + 0.08 * (ymax - ymin)
         self.picked.data = {"x": [], "y": []}
+        self._rescale()
+
+    def _rescale(self) -> None:
+        """Fit the y axis to what is drawn; the points without a value on its bottom edge."""
+        values = [self.trusted.data["y"], self.untrusted.data["y"], self.static.data["y"],
+                  *self.forms.data["ys"], self.measured.data["y"], *self.fitted.data["ys"]]
+        lo, hi = y_extent(values, self._reference)
+        bottom, top = lo - 0.05 * (hi - lo), hi + 0.06 * (hi - lo)  # the static value may be 0
+        self.missing.data = {**self.missing.data,
+                             "y": np.full(len(self.missing.data["x"]), lo - 0.03 * (hi - lo))}
+        for src in (self.critical, self.critical_curved):  # the vertical line: edge to edge
+            if len(src.data["x0"]):
+                src.data = {**src.data, "y0": [bottom], "y1": [top]}
+        for fig in self.figures.values():
+            _set_range(fig.y_range, bottom, top)
         _legend_follows_data(self.figures.values())
 
     def show_measurements(self, groups: list[dict]) -> None:
@@ -142,14 +195,14 @@ class CurveView:
             labels += [f"measured: {g['label']}"] * len(g["x"])
             colors += [_DATA_COLORS[k % len(_DATA_COLORS)]] * len(g["x"])
         self.measured.data = {"x": xs, "y": ys, "group": labels, "color": colors}
-        _legend_follows_data(self.figures.values())
+        self._rescale()
 
     def show_fit(self, curves: list[dict]) -> None:
         """Draw the fitted curves, one per group."""
         self.fitted.data = {"xs": [c["x"] for c in curves], "ys": [c["cof"] for c in curves],
                             "color": [_DATA_COLORS[k % len(_DATA_COLORS)]
                                       for k in range(len(curves))]}
-        _legend_follows_data(self.figures.values())
+        self._rescale()
 
     def pick(self, x: float, y: float) -> None:
         """Mark the picked point ``(x, y)``."""
@@ -184,7 +237,8 @@ class HistoryView:
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
                      title="time history: click a point of the curve",
                      x_axis_label="t/T (drive periods)",
-                     y_axis_label="force / (mu0 F_N0)", toolbar_location="above")
+                     y_axis_label="force / (mu0 F_N0)", toolbar_location=TOOLBAR,
+                     x_range=Range1d(0.0, 3.0), y_range=Range1d(-1.0, 2.0))
         fig.quad("left", "right", "bottom", "top", source=self.spans, color="color",
                  alpha=0.6, legend_field="phase")
         fig.line("t", "n", source=self.lines, color="black", line_width=1.5,
@@ -201,7 +255,7 @@ class HistoryView:
         fig.legend.orientation = "horizontal"
         self.figure = fig
         path = figure(height=300, sizing_mode="stretch_width", tools=_TOOLS,
-                      title="contact point on the substrate", toolbar_location="above",
+                      title="contact point on the substrate", toolbar_location=TOOLBAR,
                       x_axis_label="t/T (drive periods)", y_axis_label="x_c")
         path.line("x", "y", source=self.path, color="#bbbbbb", line_width=1)
         dots = path.scatter("x", "y", source=self.path_points, color="color", size="size",
@@ -225,7 +279,10 @@ class HistoryView:
         hi = max(float(np.max(f)), float(np.max(n)))
         if f_y is not None:
             lo, hi = min(lo, float(np.min(f_y))), max(hi, float(np.max(f_y)))
-        pad = 0.35 * (hi - lo or 1.0)
+        # one row holds four entries in the width of the figure: the phases, n, f, f_y, events
+        entries = len({s[2] for s in h["spans"]}) + 2 + (f_y is not None) + bool(h["events"])
+        two_rows = entries > 4
+        pad = (0.6 if two_rows else 0.35) * (hi - lo or 1.0)  # room for the legend on top
         self.spans.data = {
             "left": [s[0] for s in h["spans"]], "right": [s[1] for s in h["spans"]],
             "bottom": [lo - 0.05 * pad] * len(h["spans"]),
@@ -235,14 +292,12 @@ class HistoryView:
         ev_t = np.array([e[0] for e in h["events"]], dtype=float)
         self.events.data = {"t": ev_t, "y": np.interp(ev_t, t, f) if ev_t.size else ev_t,
                             "kind": [e[1] for e in h["events"]]}
-        self.figure.y_range.start = lo - 0.05 * pad
-        self.figure.y_range.end = hi + pad
-        self.figure.x_range.start = float(t[0])
-        self.figure.x_range.end = float(t[-1])
+        _set_range(self.figure.y_range, lo - 0.05 * pad, hi + pad)
+        _set_range(self.figure.x_range, float(t[0]), float(t[-1]))
         self.figure.title.text = (f"time history at {where}: mu/mu0 = {h['mu_ratio']:.5g}"
                                   f"{'' if h['steady'] else ' (transient)'}")
         _legend_follows_data([self.figure])  # no f_y entry in 1-D
-        self.figure.legend.nrows = 2 if f_y is not None else "auto"  # f_y: one more entry
+        self.figure.legend.nrows = 2 if two_rows else "auto"
 
     def _show_path(self, h: dict) -> None:
         """The contact point on the substrate.
@@ -289,8 +344,8 @@ class MapView:
         (a0, a1), (b0, b1) = case_map["alpha_range"], case_map["beta_range"]
         fig = figure(height=330, width=500, x_axis_type="log", y_axis_type="log",
                      x_range=Range1d(a0, a1), y_range=Range1d(b0, b1),
-                     tools="tap,pan,wheel_zoom,reset,save", toolbar_location="above",
-                     title="cases I-IV (vf.classify): click to move there",
+                     tools="tap,pan,wheel_zoom,reset,save", toolbar_location=TOOLBAR,
+                     title="cases I-IV: click to move there",
                      x_axis_label="alpha", y_axis_label="beta")
         fig.image_rgba(image=[img], x=a0, y=b0, dw=a1 - a0, dh=b1 - b0)
         # the resonance bands are thinner than a pixel of the grid: draw them as lines
@@ -349,7 +404,7 @@ class SpaceTimeView:
         mapper = LinearColorMapper(palette=list(CONTACT_COLORS), low=-0.5,
                                    high=len(CONTACT_COLORS) - 0.5)
         fig = figure(height=330, sizing_mode="stretch_width", tools=_TOOLS,
-                     title="contact in space and time (curved tip)", toolbar_location="above",
+                     title="contact in space and time (curved tip)", toolbar_location=TOOLBAR,
                      x_axis_label="t/T (drive periods)",
                      y_axis_label="xi = x/a0 (position along the profile)",
                      x_range=Range1d(0.0, 1.0), y_range=Range1d(0.0, 1.0),
@@ -396,7 +451,7 @@ class SpaceTimeView:
         self.radii.data = {"t": t, "stick": st.get("stick_radius", np.full(t.size, np.nan)),
                            "contact": st.get("contact_radius", np.full(t.size, np.nan))}
         self.note.text = ""
-        fig.x_range.start, fig.x_range.end = t0, t1
-        fig.y_range.start, fig.y_range.end = 0.0, top
+        _set_range(fig.x_range, t0, t1)
+        _set_range(fig.y_range, 0.0, top)
         fig.title.text = (f"contact in space and time at {where} ({st['springs']} MDR "
                           "springs, one period)")

@@ -74,9 +74,10 @@ class Input:
         finally:
             self._quiet = False
 
-    def show_message(self, text: str) -> None:
-        """Show ``text`` below the input; hidden when empty."""
+    def show_message(self, text: str, note: bool = False) -> None:
+        """Show ``text`` below the input (``note``: what the page did); hidden when empty."""
         self.message.object = text
+        self.message.styles = NOTE_STYLE if note else ERROR_STYLE
         self.message.visible = bool(text)
 
     def enable(self, on: bool) -> None:
