@@ -1,8 +1,8 @@
 """The package's one pool of local worker processes.
 
 Every local parallel computation runs here: sweeps (:func:`run_tasks`), ``vibrofriction
-reproduce`` (:func:`run_tasks`), the fit's global stage and local starts (:func:`mapper`,
-also a ``workers=`` argument of :func:`scipy.optimize.differential_evolution`) and the
+reproduce`` (:func:`run_tasks`), the fit's global search, local starts and profiles
+(:func:`mapper`, also a ``workers=`` argument of scipy's optimisers) and the
 explorer's long-lived workers (:func:`start_pool`).  The module imports nothing of the
 package: it sits below every consumer (``pyproject.toml``, the layers contract).
 
