@@ -8,8 +8,8 @@ history after a click on the curve), ``explorer_map.png`` (the case map, soft co
 ``explorer_fit.png`` (a measured CSV at two amplitudes overlaid and fitted) and
 ``explorer_path.png`` (a transverse drive: the history with ``f_y`` and the contact point's
 path in the plane, cropped to the history) and ``explorer_mdr.png`` (a sphere: eta_c
-reset with the MDR solver's refusal beside it, its curve and its critical velocity of
-continuous sliding, a point's history and its contact in space and time) and
+reset with the MDR solver's refusal beside it, its curve on the axis vbar and its critical
+velocity of continuous sliding, a point's history and its contact in space and time) and
 ``explorer_axis.png`` (a_x typed on the axis vbar: the axis switched to V, said beside a_x and
 the axis; the mount's note under its toggle).
 
@@ -104,7 +104,7 @@ def main(which: list[str]) -> None:
                 page.get_by_role("button", name="sphere", exact=True).click()
                 while page.get_by_text(READOUT).inner_text() == shown:
                     time.sleep(0.1)
-                page.get_by_text(re.compile("point at V = ")).wait_for()
+                page.get_by_text(re.compile("point at vbar = ")).wait_for()
                 time.sleep(1.5)
                 shoot(page, "mdr")
             if "axis" in which:

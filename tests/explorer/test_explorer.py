@@ -447,6 +447,13 @@ def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     total = (c["stick_area_fraction"] + c["slip_area_fraction"]
              + c["open_area_fraction"])[moving]
     np.testing.assert_allclose(total, 1.0, atol=1e-9)  # the disc is in one of the three
+    # on the axis vbar: V over the sphere's critical velocity (0.98999), its line at 1
+    on_vbar = compute.curve(state.with_(axis="vbar", v_max=1.5, points=4))
+    np.testing.assert_array_equal(on_vbar["x"], [0.0, 0.5, 1.0, 1.5])
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0),
+                                v_inertial=0.98999 * np.array([0.0, 0.5, 1.0, 1.5]))
+    np.testing.assert_allclose(on_vbar["y"], r.mu_ratio, rtol=1e-4)
+    assert on_vbar["critical"] == 1.0 and on_vbar["x_label"] == "vbar = v0/v0*"
     stiff = compute.curve(State(alpha=0.01, beta=0.02, profile_exponent=2.0, axis="V",
                                 v_max=80.0, points=6))
     assert [f["label"] for f in stiff["closed_forms"]] == [
@@ -567,19 +574,34 @@ def test_choosing_a_curved_tip_resets_and_disables_what_it_refuses(monkeypatch):
     assert ex.state.profile_exponent == math.inf
     assert not ex.inputs["eta_c"].text.disabled and not ex.inputs["eta_c"].message.visible
     assert not ex.profile_note.visible and not ex.axis_message.visible
-    flat = app_module.Explorer(State())  # the axis vbar: a curved tip switches it
+    flat = app_module.Explorer(State())  # the axis vbar: a curved tip keeps it
     flat.profile.value = "cone"
-    try:  # the library's word on vbar for a cone
-        vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=1.0).vbar_to_inertial(1.0)
-        refusal = ""
-    except ValueError as exc:
-        refusal = str(exc)
-    assert flat.state.profile_exponent == 1.0
-    assert flat.state.axis == ("V" if refusal else "vbar")
-    if refusal:
-        assert "axis set from vbar to V: vbar is not defined for a curved tip" in \
-            flat.axis_message.object
-        assert escape(refusal) in flat.axis_message.object
+    assert flat.state.profile_exponent == 1.0 and flat.state.axis == "vbar"
+    assert not flat.axis_message.visible
+    # its unit is the cone's critical velocity of continuous sliding, as the library's
+    V_c = vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=1.0).vbar_to_inertial(1.0)
+    assert V_c == vf.theory.profile_critical_velocity(0.5, 2.0, 0.5, 1.0)
+    # an in-plane amplitude on the cone still switches it, for that reason (not the tip)
+    flat.inputs["a_x"].text.value = "0.3"
+    assert flat.state.axis == "V" and flat.state.a_x == 0.3
+    assert "axis set from vbar to V: vbar is not defined with an in-plane oscillation" in \
+        flat.axis_message.object
+    assert "curved tip" not in flat.axis_message.object
+    assert "not defined with an in-plane oscillation (a_x = 0.3" in flat.axis_message.object
+
+
+def test_vbar_refusal_is_the_librarys():
+    """The reasons left for refusing vbar: an in-plane amplitude (any tip), contact damping
+    with a curved tip; a curved tip alone and a damped flat punch have vbar."""
+    from vibrofriction.explorer.texts import vbar_refusal
+
+    assert vbar_refusal(State()) == vbar_refusal(State(profile_exponent=2.0)) == ""
+    assert vbar_refusal(State(eta_c=0.1)) == ""
+    assert vbar_refusal(State(profile_exponent=2.0, eta_c=0.1)).startswith(
+        "vbar of a curved tip is derived without contact damping")
+    for tip in (math.inf, 2.0):
+        assert "not defined with an in-plane oscillation (a_x = 0.2" in vbar_refusal(
+            State(profile_exponent=tip, a_x=0.2))
 
 
 @pytest.mark.parametrize("changes, same", [

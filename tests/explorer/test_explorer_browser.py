@@ -256,23 +256,24 @@ def _colour_share(png: bytes, rgb: tuple[int, int, int]) -> float:
 
 def test_sphere_draws_its_curve_and_its_contact_in_space_and_time(page, server):
     """Choose the sphere: its eta_c is reset with the library's refusal beside it (a_x
-    stays enabled), the curve is the MDR solver's (40 points), its critical velocity is
-    named, the space-time view of the picked point is drawn (stick and slip pixels in
-    it), a typed beta = inf is refused beside beta."""
+    stays enabled, the axis stays vbar), the curve is the MDR solver's (40 points), its
+    critical velocity is named, the space-time view of the picked point is drawn (stick and
+    slip pixels in it), a typed beta = inf is refused beside beta."""
     from vibrofriction.explorer.views import CONTACT_COLORS
     from vibrofriction.schema import ContactState
 
     before = _open(page, server + "?eta_c=0.1")
     page.get_by_role("button", name="sphere", exact=True).click()
     page.get_by_text(re.compile(r"eta_c.*reset from 0\.1 to 0: the MDR solver")).wait_for()
-    page.get_by_text(re.compile(r"axis set from vbar to V")).wait_for()
     after = _changed(page, READOUT.pattern, before)
     assert re.search(r"over the \d+ trusted of 40 points", after), after
-    # its critical velocity of continuous sliding (docs/contact_geometry.md: 0.98999)
+    # the axis vbar stays: V over the critical velocity of continuous sliding, at vbar = 1
     page.get_by_text(re.compile(r"sphere \(n = 2\) \(MDR\): static value 0\.33\d*; critical "
-                                r"velocity \(V\) 0\.99")).wait_for()
+                                r"velocity \(vbar\) 1\b")).wait_for()
+    assert "axis=V" not in page.evaluate("() => window.location.search")
+    assert not page.locator(".vf-axis-message").is_visible()
     assert not page.locator(".vf-text-a_x input").is_disabled()  # the MDR solver takes a_x
-    point = page.get_by_text(re.compile(r"point at V = .*\(sphere \(n = 2\), MDR\)"))
+    point = page.get_by_text(re.compile(r"point at vbar = .*\(sphere \(n = 2\), MDR\)"))
     point.wait_for()
     assert re.search(r"<F_N>/F_N0 = 1\.04\d+, contact over the period: stick 0\.\d+",
                      point.inner_text()), point.inner_text()

@@ -27,7 +27,7 @@ def field_of(message: str, mode: str = "dimensionless") -> str:
     if word == "eta_c" and mode == "bench":
         return "bench_eta_c"
     if "v0* is" in message or "v0 (m/s) needs" in message or \
-            (word == "vbar" and "curved profile" in message):
+            (word == "vbar" and "curved tip" in message):
         return "axis"
     word = _ALIASES.get(word, word)
     return word if word in FIELDS else GENERAL

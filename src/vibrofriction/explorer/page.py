@@ -262,9 +262,9 @@ class Explorer:
         With a curved tip, reset what the MDR solver refuses (``eta_c``, ``a_y``) to 0, saying
         so next to each with the library's message, and disable them (and ``phase_y``) with
         the reason beside them; a flat punch enables them again.  The longitudinal
-        oscillation (``a_x``, ``phase_x``, the mount) stays enabled.  Where ``vbar`` is not
-        defined (a curved tip, an in-plane amplitude ``a_x`` or ``a_y`` > 0), switch the axis
-        to ``V``, saying why next to the axis and the amplitude.
+        oscillation (``a_x``, ``phase_x``, the mount) and the axis ``vbar`` stay.  Where the
+        library refuses ``vbar`` (an in-plane amplitude ``a_x`` or ``a_y`` > 0), switch the
+        axis to ``V``, saying why next to the axis and the amplitude.
         """
         try:
             n = parse_number(PROFILE.name, self.inputs[PROFILE.name].text.value or "")
@@ -281,20 +281,20 @@ class Explorer:
             if curved:
                 self._reset_refused(probe)
             if dimensionless and self.axis.value == "vbar":
-                self._leave_vbar(probe, curved)
+                self._leave_vbar(probe)
         finally:
             self._adjusting = False
         self.profile_note.visible = curved
         if curved:
             self.profile_note.object = with_more(
                 f"{compute.profile_text(n)} by the MDR solver (at most {MDR_POINTS} points); "
-                "not taken yet, so disabled: eta_c, a_y, beta = inf, the axis vbar",
+                "not taken yet, so disabled: eta_c, a_y, beta = inf",
                 f"A curved tip is computed by the MDR solver (docs/contact_geometry.md): at "
                 f"most {MDR_POINTS} points a curve (~30 ms a point). It takes the "
                 "longitudinal in-plane oscillation (a_x, phase_x, the mount) at V != 0 (with "
-                "a_x > 0 the curve leaves V = 0 out). It does not take yet: contact damping "
-                "eta_c, the transverse oscillation a_y, a rigid contact beta = inf, the axis "
-                "vbar.")
+                "a_x > 0 the curve leaves V = 0 out) and the axis vbar (V over the tip's "
+                "critical velocity of continuous sliding). It does not take yet: contact "
+                "damping eta_c, the transverse oscillation a_y, a rigid contact beta = inf.")
 
     def _typed(self, name: str) -> float | None:
         """The value typed in the box of ``name``, or None where it does not read."""
@@ -320,23 +320,27 @@ class Explorer:
                 "solver does not take it yet", why)
             box.value = "0"
 
-    def _leave_vbar(self, probe: State, curved: bool) -> None:
-        """Switch the axis ``vbar`` to ``V`` where ``vbar`` is not defined; say why."""
-        amplitudes = {n: v for n in ("a_x", "a_y") if (v := self._typed(n)) and v > 0.0}
-        if not (curved or amplitudes):
-            return
-        why = vbar_refusal(probe.with_(**{"a_x": 0.0, "a_y": 0.0, **amplitudes}))
+    def _leave_vbar(self, probe: State) -> None:
+        """Switch the axis ``vbar`` to ``V`` where the library refuses ``vbar``; say why.
+
+        The refusals that remain: an in-plane amplitude (``a_x`` or ``a_y`` > 0, any tip)
+        and contact damping (``eta_c > 0``) with a curved tip; the library's message goes
+        behind "more".
+        """
+        typed = {n: v for n in ("a_x", "a_y", "eta_c") if (v := self._typed(n)) and v > 0.0}
+        why = vbar_refusal(probe.with_(**{"a_x": 0.0, "a_y": 0.0, "eta_c": 0.0, **typed}))
         if not why:
             return
         self.axis.value = "V"
-        cause = "a curved tip" if curved else "an in-plane oscillation"
-        self._notes["axis"] = with_more(f"axis set from vbar to V: vbar is not defined for "
-                                        f"{cause}", why)
-        if not curved:
-            for name in amplitudes:
-                self._notes[name] = with_more(
-                    "the velocity axis is now V: vbar is not defined with an in-plane "
-                    "oscillation", why)
+        amplitudes = [n for n in ("a_x", "a_y") if n in typed]
+        cause = ("with an in-plane oscillation" if amplitudes else
+                 "for a curved tip with contact damping (eta_c > 0)")
+        self._notes["axis"] = with_more(f"axis set from vbar to V: vbar is not defined {cause}",
+                                        why)
+        for name in amplitudes:
+            self._notes[name] = with_more(
+                "the velocity axis is now V: vbar is not defined with an in-plane "
+                "oscillation", why)
 
     def _changed(self) -> None:
         """Read every input; on success ask for the curve, else place the message."""

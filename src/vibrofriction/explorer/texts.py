@@ -34,12 +34,15 @@ def with_more(short: str, more: str = "") -> str:
 def vbar_refusal(state: State) -> str:
     """The library's message refusing the axis ``vbar`` for the state's tip and drive.
 
-    ``""`` where ``vbar`` is defined (a flat punch without an in-plane oscillation).
+    ``""`` where ``vbar`` is defined: without an in-plane oscillation, for a flat punch or a
+    curved tip (its critical velocity of continuous sliding) without contact damping.  The
+    tip, the in-plane amplitudes and ``eta_c`` are the state's; the groups a regular point
+    (the resonances that leave ``vbar`` undefined are the axis's message, not a switch).
     """
     import vibrofriction as vf
 
     try:
-        vf.Dimensionless(0.5, 2.0, 0.5, a_x=state.a_x, a_y=state.a_y,
+        vf.Dimensionless(0.5, 2.0, 0.5, eta_c=state.eta_c, a_x=state.a_x, a_y=state.a_y,
                          profile_exponent=state.profile_exponent).vbar_to_inertial(1.0)
     except ValueError as exc:
         return str(exc)
