@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 from matplotlib.figure import Figure
-from matplotlib.ticker import NullFormatter
+from matplotlib.ticker import LogLocator, NullFormatter
 
 from ..bench import DesignResult, FitResult
 from . import style
@@ -101,7 +101,13 @@ def plot_profiles(result: FitResult, truth: dict[str, float] | None = None) -> F
             ax.axvline(truth[name], color="C3", lw=1.0, ls=":", label="truth")
         for j in shape["jumps"][name]:
             ax.plot([math.exp(j)], [level], "v", color="C3", ms=6)
-        ax.set_xscale("log")
+        shown = [v for v in (*(np.exp(curve[:, 0]) if curve.size else ()), lo, hi, best)
+                 if math.isfinite(v) and v > 0]
+        if max(shown) / min(shown) > 5.0:  # decades: a log axis, labels at 1, 2, 5
+            ax.set_xscale("log")
+            ax.xaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+            ax.xaxis.set_minor_formatter(NullFormatter())
+        ax.tick_params(axis="x", labelsize="x-small")
         ax.set_ylim(-0.05 * 3 * level, 3 * level)
         ax.set_xlabel(name)
         ax.set_title(status, fontsize="small")
