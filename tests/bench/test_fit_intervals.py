@@ -152,3 +152,25 @@ def test_what_the_data_hold_names_the_combination_of_two_loose_parameters():
     status, combos = determination(out, problem, np.zeros(3), [(-2.0, 2.0)] * 3, dists)
     assert status == {"a": "not determined", "b": "not determined", "c": "determined"}
     assert combos == {"a": "a/b", "b": "b/a"}
+
+
+def test_plot_profiles_draws_each_free_parameter_and_refuses_a_loaded_fit(tmp_path):
+    """One panel per free parameter, titled by what the data hold, with the refits of its
+    profile as points; a fit loaded from JSON keeps no profiles: refused in one sentence."""
+    from vibrofriction.bench.fitting import FitResult
+    from vibrofriction.figures import plot_profiles
+
+    data = synthetic_measurements(TRUE, (0.3e-6, 0.9e-6), np.geomspace(1e-3, 0.2, 8), 0.003,
+                                  np.random.default_rng(4))
+    res = vf.fit(data, TRUE.with_(mu0=0.33, k_xc=1.8e7), free=["mu0", "k_xc"], progress=False,
+                 global_stage=False)
+    fig = plot_profiles(res, truth={"mu0": TRUE.mu0, "k_xc": TRUE.k_xc})
+    shown = [ax for ax in fig.axes if ax.get_visible()]
+    assert [ax.get_xlabel() for ax in shown] == ["mu0", "k_xc"]
+    assert [ax.get_title() for ax in shown] == [res.determination[n] for n in ("mu0", "k_xc")]
+    refits = shown[0].lines[0].get_xdata()
+    assert len(refits) == len(res.extra["profiles"]["curves"]["mu0"]) >= 3
+    fig.savefig(tmp_path / "profiles.png")
+    back = FitResult.from_json(res.to_json(tmp_path / "fit.json"))
+    with pytest.raises(ValueError, match="no profiles"):
+        plot_profiles(back)
