@@ -52,6 +52,12 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
+# the SI -> dimensionless groups written out from the paper, without the package: the held-out
+# bench data's own conversion (tests/data/make_reference_bench.py), one copy
+sys.path.insert(0, str(HERE.parent / "tests" / "data"))
+from make_reference_bench import groups  # noqa: E402
+
+sys.path.pop(0)
 DATA = HERE / "data" / "fit_battery.json"
 KINDS = ("general", "jumping", "damped", "resonant", "stiff")
 FREE = ("mu0", "mass", "k_x", "k_xc", "u_z0")
@@ -88,16 +94,6 @@ def draw_truth(kind: str, rng: np.random.Generator) -> dict:
              "c_x": 2.0 * math.sqrt(k_x * mass) / (2.0 * q), "c_xc": eta_c * k_xc / omega}
     amplitudes = [u_z0 * top * s for s in (0.3, 0.6, 1.0)]
     return {"truth": truth, "amplitudes": amplitudes, "quality_factor": q}
-
-
-def groups(p: dict, du_z: float, v0: float) -> tuple[float, ...]:
-    """``alpha, beta`` (eq. 20), ``a = du_z/u_z0``, ``V = v0 m omega / (mu0 F_N0)`` (Fig. 6),
-    ``zeta = c_x / (2 sqrt(k_x m))``, ``eta_c = omega c_xc / k_xc`` (docs/damping.md)."""
-    stiffness = p["mass"] * p["omega"] ** 2
-    V = v0 * p["mass"] * p["omega"] / (p["mu0"] * p["k_zc"] * p["u_z0"])
-    return (p["k_x"] / stiffness, (p["k_x"] + p["k_xc"]) / stiffness, du_z / p["u_z0"], V,
-            p["c_x"] / (2.0 * math.sqrt(p["k_x"] * p["mass"])),
-            p["omega"] * p["c_xc"] / p["k_xc"])
 
 
 def reference_mu(p: dict, du_z: float, v0: float) -> tuple[float, float]:
