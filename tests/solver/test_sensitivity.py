@@ -273,10 +273,10 @@ def test_a_profile_with_the_exact_jacobian_does_not_stop_in_a_kink():
         bounds = search_bounds(problem, 10.0)
         out = least_squares(problem, start, bounds)
         best = ln_of(out, free)
-        task = (problem, best, bounds, 1, -1.0, 2.2 * out.params["mass"].stderr,
+        task = (problem, best, best, bounds, 1, -1.0, 2.2 * out.params["mass"].stderr,
                 _conditional_slope(out.covar, 1, 5), PROFILE_LEVEL * _s2(problem, out),
-                out.chisqr)
-        end[kind] = math.exp(best[1] - _profile_side(task)[0])
+                out.chisqr, [])
+        end[kind] = math.exp(best[1] - _profile_side(task).distance)
     assert end["differences"] == pytest.approx(0.00924, rel=2e-3)
     assert end["exact"] == pytest.approx(end["differences"], rel=2e-3)
 

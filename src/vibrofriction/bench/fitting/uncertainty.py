@@ -216,8 +216,11 @@ def _profile_side(task) -> _Side:
     profile chi-square (the others refitted) exceeds the best fit's by ``target``:
     doubling steps to a bracket, :data:`LOOKAHEAD` more to see whether it comes down again,
     then Brent's method; ``inf`` if it never rises within the search range.  Each refit
-    starts from the previous one moved along ``slope`` (the valley's direction at the best
-    fit); where a refit of the doubling steps lies above the level it is repeated from the
+    starts from the refit next to it on the centre's side, moved along ``slope`` (the
+    valley's direction at the best fit); one that lands above the level is repeated from
+    the refit next to it on the far side (a refit from either side can stop in a kink's
+    dip that the other passes); where a
+    refit of the doubling steps rises steeply above the level it is repeated from the
     ``alternatives`` (the best fit, the other valleys) with the parameter held, and the
     lowest wins: a refit that cannot descend across a jump of the model does not end the
     interval.
@@ -255,6 +258,14 @@ def _profile_side(task) -> _Side:
         x = points[inner] + side * (d - inner) * slope
         x[j] = held
         x, chi = refit(x, budget)
+        outer = [k for k in points if k > d]
+        if chi - chi_best > target and outer:  # above the level: also from the far side
+            k = min(outer)
+            y0 = points[k] - side * (k - d) * slope
+            y0[j] = held
+            y, c = refit(y0, budget)
+            if c < chi:
+                x, chi = y, c
         if explore and steep(d, chi - chi_best):  # another start, across what stopped it
             for alt in alternatives + [centre]:
                 y0 = np.array(alt, dtype=float)
