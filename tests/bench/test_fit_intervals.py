@@ -174,3 +174,11 @@ def test_plot_profiles_draws_each_free_parameter_and_refuses_a_loaded_fit(tmp_pa
     back = FitResult.from_json(res.to_json(tmp_path / "fit.json"))
     with pytest.raises(ValueError, match="no profiles"):
         plot_profiles(back)
+
+
+@pytest.mark.parametrize("kwargs, name", [(dict(starts=0), "starts"), (dict(screen=2.5), "screen"),
+                                          (dict(starts=True), "starts")])
+def test_the_search_sizes_are_whole_numbers(kwargs, name):
+    data = synthetic_measurements(TRUE, (0.6e-6,), [0.01, 0.02], 0.003, np.random.default_rng(2))
+    with pytest.raises(ValueError, match=f"{name} must be a whole number >= 1"):
+        vf.fit(data, TRUE, free=["mu0"], progress=False, **kwargs)
