@@ -52,10 +52,10 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
-# the SI -> dimensionless groups written out from the paper, without the package: the held-out
-# bench data's own conversion (tests/data/make_reference_bench.py), one copy
+# the SI -> dimensionless groups written out from the paper, without the package, and peer B's
+# COF with its error bar: the held-out bench data's own (tests/data/make_reference_bench.py)
 sys.path.insert(0, str(HERE.parent / "tests" / "data"))
-from make_reference_bench import groups  # noqa: E402
+from make_reference_bench import groups, reference_mu  # noqa: E402
 
 sys.path.pop(0)
 DATA = HERE / "data" / "fit_battery.json"
@@ -96,17 +96,6 @@ def draw_truth(kind: str, rng: np.random.Generator) -> dict:
     return {"truth": truth, "amplitudes": amplitudes, "quality_factor": q}
 
 
-def reference_mu(p: dict, du_z: float, v0: float) -> tuple[float, float]:
-    """``mu_ratio`` by peer B and its error bar (two resolutions)."""
-    from vibrofriction_reference import return_mapping_mu
-
-    alpha, beta, a, V, zeta, eta_c = groups(p, du_z, v0)
-    coarse, fine = (return_mapping_mu(alpha, beta, a, V, steps_per_period=n,
-                                      transient_periods=t, average_periods=60, zeta=zeta,
-                                      eta_c=eta_c) for n, t in ((400, 400), (800, 800)))
-    return fine, abs(fine - coarse)
-
-
 def make_set(index: int, kind: str, rng: np.random.Generator) -> dict:
     """One data set of ``kind``: truth, guess, the measured rows and the reference's bar."""
     drawn = draw_truth(kind, rng)
@@ -119,7 +108,7 @@ def make_set(index: int, kind: str, rng: np.random.Generator) -> dict:
     rows, bar = [], 0.0
     for du in drawn["amplitudes"]:
         for v in v0:
-            mu, e = reference_mu(truth, du, float(v))
+            mu, e = reference_mu(truth, du, float(v), transients=(400, 800))
             bar = max(bar, e)
             rows.append([float(v), truth["mu0"] * mu + float(rng.normal(0.0, sigma)), du,
                          truth["omega"], sigma])

@@ -50,12 +50,15 @@ def groups(p: dict, du_z: float, v0: float) -> tuple[float, ...]:
             p["omega"] * p["c_xc"] / p["k_xc"])
 
 
-def reference_mu(p: dict, du_z: float, v0: float) -> tuple[float, float]:
-    """``mu_ratio`` by peer B and its error bar (two resolutions)."""
+def reference_mu(p: dict, du_z: float, v0: float,
+                 transients: tuple[int, int] = (300, 600)) -> tuple[float, float]:
+    """``mu_ratio`` by peer B and its error bar (two resolutions, 400 and 800 steps a period,
+    after ``transients`` periods each)."""
     alpha, beta, a, V, zeta, eta_c = groups(p, du_z, v0)
     coarse, fine = (return_mapping_mu(alpha, beta, a, V, steps_per_period=n,
                                       transient_periods=t, average_periods=60, zeta=zeta,
-                                      eta_c=eta_c) for n, t in ((400, 300), (800, 600)))
+                                      eta_c=eta_c)
+                    for n, t in zip((400, 800), transients, strict=True))
     return fine, abs(fine - coarse)
 
 
