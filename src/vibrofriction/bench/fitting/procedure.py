@@ -34,6 +34,7 @@ from .uncertainty import (
     determination,
     estimate_uncertainties,
     identifiability,
+    jacobian_at,
     physical_params,
     profile_warnings,
 )
@@ -156,13 +157,14 @@ def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
         extra["profile_intervals"] = intervals
         search = {n: (ln[j] - bounds[j][0], bounds[j][1] - ln[j]) for j, n in enumerate(free)}
         result_params, intervals = physical_params(out, free, named, tied, search)
-    status, combos = determination(out, problem, ln, bounds, dists)
+    jac = jacobian_at(problem, ln)  # one Jacobian for what the data hold and the warnings
+    status, combos = determination(out, problem, ln, bounds, dists, jac)
     if quality == "poor":  # a model that does not fit the data determines nothing of them
         status, combos = dict.fromkeys(free, "not determined"), {}
     for n, st in status.items():  # no standard error from the covariance of a loose parameter
         if st == "not determined" and n in result_params:
             result_params[n].stderr = None
-    warnings = identifiability(out, problem, ln, bounds)
+    warnings = identifiability(out, problem, ln, bounds, jac)
     warnings += profile_warnings(free, dists, tied, lower)
     return FitResult(params=result_params, system=system, data=problem.data, free=free,
                      constraints={"natural_frequency": problem.natural_frequency,

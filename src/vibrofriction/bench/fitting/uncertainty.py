@@ -366,19 +366,27 @@ def profile_warnings(free: tuple[str, ...], dists, tied, lower) -> list[str]:
     return out
 
 
-def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
+def pinned(free: tuple[str, ...], ln: NDArray, bounds) -> list[str]:
+    """The free parameters the fit leaves at a bound of their search range (within 1e-3)."""
+    return [n for n, x, (lo, hi) in zip(free, ln, bounds, strict=True)
+            if min(x - lo, hi - x) < 1e-3]
+
+
+def identifiability(out, problem: Problem, ln: NDArray, bounds,
+                    jac: NDArray | None = None) -> list[str]:
     """One sentence per parameter the data do not identify.
 
-    At a bound, in a flat direction of the Jacobian, strongly correlated with another; and one
-    if the least-squares covariance is singular (no correlations).
+    At a bound, in a flat direction of the Jacobian (``jac``: :func:`jacobian_at`, computed
+    when not given), strongly correlated with another; and one if the least-squares
+    covariance is singular (no correlations).
     """
     warnings = []
     free = problem.free
-    for n, x, (lo, hi) in zip(free, ln, bounds, strict=True):
-        if min(x - lo, hi - x) < 1e-3:
-            warnings.append(f"{n} is at the bound of its search range ({math.exp(lo):.3g} .. "
-                            f"{math.exp(hi):.3g}): the data push it out; widen span or fix it")
-    jac = _jacobian(problem, ln)
+    for n in pinned(free, ln, bounds):
+        lo, hi = bounds[free.index(n)]
+        warnings.append(f"{n} is at the bound of its search range ({math.exp(lo):.3g} .. "
+                        f"{math.exp(hi):.3g}): the data push it out; widen span or fix it")
+    jac = jacobian_at(problem, ln) if jac is None else jac
     if jac is not None and len(free) > 1:
         u, sv, vt = np.linalg.svd(jac, full_matrices=False)
         if sv[0] > 0:
@@ -400,7 +408,7 @@ def identifiability(out, problem: Problem, ln: NDArray, bounds) -> list[str]:
     return warnings
 
 
-def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
+def jacobian_at(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
     """Central differences of the residuals in ``ln`` (columns: free parameters).
 
     A curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in steps of
@@ -424,32 +432,34 @@ def _jacobian(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | No
 WEAK = 1e-2
 
 
-def determination(out, problem: Problem, ln: NDArray, bounds, dists
-                  ) -> tuple[dict[str, str], dict[str, str]]:
+def determination(out, problem: Problem, ln: NDArray, bounds, dists,
+                  jac: NDArray | None = None) -> tuple[dict[str, str], dict[str, str]]:
     """What the data hold of each free parameter, and the combination they hold instead.
 
     ``determined`` (both ends of its interval closed), ``bounded below`` or ``bounded
     above`` (one end closed), ``not determined`` (neither, or the fit pins it, or a
     strongly correlated neighbour, at the bound of the search range: its interval is then the
     search range's, not the data's).  For a parameter not determined, the combination of it
-    and its partner along the weakest direction of the Jacobian that the data fix (e.g.
-    ``k_x/mass``), where the Jacobian shows one.
+    and its partner along the weakest direction of the Jacobian (``jac``: :func:`jacobian_at`,
+    computed when needed and not given) that the data fix (e.g. ``k_x/mass``), where the
+    Jacobian shows one.
     """
     free = problem.free
-    pinned = [n for n, x, (lo, hi) in zip(free, ln, bounds, strict=True)
-              if min(x - lo, hi - x) < 1e-3]
+    at_bound = pinned(free, ln, bounds)
     status: dict[str, str] = {}
     for n in free:
         below, above = (math.isfinite(d) for d in dists[n])
         correl = out.params[n].correl or {}
-        leaning = [m for m in pinned if m != n and abs(correl.get(m, 0.0)) > STRONG_CORRELATION]
-        if n in pinned or leaning or not (below or above):
+        leaning = [m for m in at_bound
+                   if m != n and abs(correl.get(m, 0.0)) > STRONG_CORRELATION]
+        if n in at_bound or leaning or not (below or above):
             status[n] = "not determined"
         else:
             status[n] = ("determined" if below and above else
                          "bounded below" if below else "bounded above")
     combos = {}
-    jac = _jacobian(problem, ln) if any(v != "determined" for v in status.values()) else None
+    if jac is None and any(v != "determined" for v in status.values()):
+        jac = jacobian_at(problem, ln)
     if jac is not None and len(free) > 1:
         _, sv, vt = np.linalg.svd(jac, full_matrices=False)
         weak = [k for k in np.argsort(sv) if sv[0] > 0 and sv[k] / sv[0] < WEAK]
