@@ -56,8 +56,10 @@ lint: $(BIN)/vibrofriction
 typecheck: $(BIN)/vibrofriction  ## mypy on src/ (configured in pyproject.toml)
 	$(BIN)/mypy
 
-dist: $(BIN)/vibrofriction  ## the wheel and the sdist into dist/ (docs/packaging.md)
-	$(BIN)/python -m build
+dist: $(BIN)/vibrofriction  ## the wheel and the sdist into dist/, kernels precompiled (docs/packaging.md)
+	$(BIN)/python -c "from vibrofriction.warmup import build_shipped; build_shipped()"
+	$(BIN)/python -m build --sdist  # source only (MANIFEST.in excludes compiled files)
+	$(BIN)/python -m build --wheel  # from the tree: the kernels of _kernels/_shipped with it
 
 bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/results/
 	$(BIN)/python benchmarks/bench_solver.py
@@ -67,3 +69,4 @@ clean:
 
 clean-cache:  ## numba checks only a kernel's own file: clear the cache after editing _kernels/
 	find src -name '*.nbi' -delete; find src -name '*.nbc' -delete
+	rm -rf src/vibrofriction/_kernels/_shipped

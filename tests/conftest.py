@@ -7,10 +7,16 @@ per worker. (``--dist loadgroup`` with an ``xdist_group`` per module would balan
 better, but pytest-xdist 3.8 on pytest 9.2 ignores the groups: pytest-xdist issue 1386.)
 """
 
+import os
+
 import numpy as np
 import pytest
 
 import vibrofriction as vf
+
+# No compile notice on stderr (tests compare stderr; the notice has its own tests, which
+# turn it on): set before any kernel compiles, inherited by the subprocesses tests start
+os.environ.setdefault("VIBROFRICTION_COMPILE_NOTICE", "0")
 
 
 @pytest.fixture(scope="session")

@@ -39,8 +39,8 @@ from .figures.series import (
     solve,
     solve_points_on,
 )
-from .params import Dimensionless
-from .solver import STATUS_BY_CODE, SolverSettings, simulate, solve_points
+from .solver import STATUS_BY_CODE, SolverSettings
+from .warmup import warm_up
 
 if TYPE_CHECKING:
     from .parallel import Task
@@ -353,13 +353,13 @@ class Reproduction:
     processes: tuple[int, ...] = ()
 
 
-def _warm_up() -> None:
-    """Compile (or load from the numba cache) the kernels the solving and rendering use."""
-    solve_points(0.5, 2.0, 0.5, 0.3)
-    solve_points(1.0, math.inf, 1.5, 0.3)
-    solve_points(0.5, 2.0, 0.5, -0.3, 0.05, 0.1, 0.5, 1.0)
-    solve_points(0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0)  # the 2-D kernel
-    simulate(Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=1, samples_per_period=8)
+#: The kernels the solving and rendering use (:data:`vibrofriction.warmup.PARTS`).
+_PARTS = ("flat", "plane", "curved", "histories")
+
+
+def _load() -> None:
+    """Each worker loads them (from the disk cache the parent's warm-up wrote) first."""
+    warm_up(_PARTS, workers=1, progress=False)
 
 
 def _select(todo: list[Recipe], only: Sequence[str] | None) -> list[Recipe]:
@@ -423,16 +423,14 @@ def reproduce(out: Path | str, *, quick: bool = False, workers: int | None = Non
     batches = [_Batch.of(i, r, _CHUNK) for i, r in enumerate(todo)]
     n_points = sum(b.size for b in batches)
     bar_kw = {"disable": not progress, "dynamic_ncols": True, "leave": True}
-    with tqdm(total=1, desc="compiling", unit="", **bar_kw) as bar:
-        _warm_up()
-        bar.update(1)
+    warm_up(_PARTS, workers=workers, progress=progress)  # compiles once, on every core
     with tqdm(total=n_points, desc="solving", unit="pt", smoothing=0.1, **bar_kw) as pbar, \
             tqdm(total=len(todo), desc="figures", unit="fig", **bar_kw) as fbar:
         schedule = _Schedule(todo, batches, quick, out, pbar, fbar)
         if workers == 1:
             _run_here(schedule)
         else:  # one extra task in flight keeps every core busy
-            run_tasks(schedule, workers=workers, warm_up=_warm_up, in_flight=workers + 1)
+            run_tasks(schedule, workers=workers, warm_up=_load, in_flight=workers + 1)
     done = sorted(schedule.done, key=lambda d: d.index)
     seconds = time.perf_counter() - t0
     checks = tuple(c for d in done for c in d.checks)

@@ -1,9 +1,12 @@
 """The wheel installs in a fresh virtual environment and works from a read-only install.
 
-The wheel is built from this tree (``python -m build``: its build backend comes from PyPI),
-installed with ``--no-deps --no-index`` into a new venv that sees this environment's
-packages through a ``.pth`` line (nothing else is downloaded), and the installed package
-is made read-only. There, the console script, ``reproduce --only`` and an example run, and
+The wheel is built as ``make dist`` builds it, from a copy of this tree's tracked files:
+the kernels precompiled into ``_kernels/_shipped`` (:func:`vibrofriction.warmup.build_shipped`),
+then ``python -m build`` (its build backend comes from PyPI). It is installed with
+``--no-deps --no-index`` into a new venv that sees this environment's packages through a
+``.pth`` line (nothing else is downloaded), and the installed package is made read-only.
+There, the console script, ``reproduce --only`` and an example run; the first calls of
+every solver compile nothing (the shipped kernels load), and without the shipped cache
 numba caches the kernels in the user-wide cache (``$HOME/.cache/numba``) instead of the
 package folder: a second run loads them from there and compiles nothing.
 
@@ -14,6 +17,7 @@ user would.
 
 from __future__ import annotations
 
+import dataclasses
 import json
 import os
 import shutil
@@ -38,13 +42,35 @@ def _run(args, **kwargs):
     return subprocess.run(args, capture_output=True, text=True, **kwargs)
 
 
+def _tracked_copy(dest: Path) -> Path:
+    """The files git tracks (or, outside a checkout, the tree without caches) in ``dest``."""
+    listed = _run(["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+                  cwd=ROOT, timeout=60)
+    if listed.returncode == 0:
+        for name in listed.stdout.split("\0"):
+            if name and (ROOT / name).is_file():
+                (dest / name).parent.mkdir(parents=True, exist_ok=True)
+                shutil.copy2(ROOT / name, dest / name)
+    else:
+        shutil.copytree(ROOT, dest, dirs_exist_ok=True, ignore=shutil.ignore_patterns(
+            ".venv", ".git", "__pycache__", "_shipped", "_build", "*.egg-info", "dist"))
+    return dest
+
+
 @pytest.fixture(scope="module")
 def dist(tmp_path_factory) -> Path:
-    """``python -m build``: the sdist, and the wheel built from the sdist."""
+    """``make dist``: the kernels precompiled, the sdist, and the wheel."""
+    tree = _tracked_copy(tmp_path_factory.mktemp("tree"))
+    env = {k: v for k, v in os.environ.items() if not k.startswith("NUMBA_")}
+    shipped = _run([sys.executable, "-c", "from vibrofriction.warmup import build_shipped; "
+                    "print(build_shipped())"], timeout=900,
+                   env={**env, "PYTHONPATH": str(tree / "src")})
+    assert shipped.returncode == 0 and int(shipped.stdout) > 100, shipped.stderr[-2000:]
     out = tmp_path_factory.mktemp("dist")
-    built = _run([sys.executable, "-m", "build", "--outdir", str(out), str(ROOT)],
-                 timeout=600)
-    assert built.returncode == 0, built.stdout[-2000:] + built.stderr[-2000:]
+    for kind in ("--sdist", "--wheel"):  # the wheel from the tree: the sdist is source only
+        built = _run([sys.executable, "-m", "build", kind, "--outdir", str(out), str(tree)],
+                     timeout=600)
+        assert built.returncode == 0, built.stdout[-2000:] + built.stderr[-2000:]
     return out
 
 
@@ -119,11 +145,16 @@ def install(tmp_path_factory, wheel) -> Iterator[Install]:
             p.chmod(p.stat().st_mode | stat.S_IWUSR)
 
 
-def test_the_wheel_carries_the_typing_marker_and_the_license_and_no_caches(wheel):
+SHIPPED = "vibrofriction/_kernels/_shipped/"
+
+
+def test_the_wheel_carries_the_typing_marker_the_license_and_the_shipped_kernels(wheel):
     names = zipfile.ZipFile(wheel).namelist()
     assert "vibrofriction/py.typed" in names and "vibrofriction_reference/py.typed" in names
     assert any(n.endswith(".dist-info/licenses/LICENSE") for n in names)
-    assert not [n for n in names if n.endswith((".nbi", ".nbc", ".pyc"))]
+    cached = [n for n in names if n.endswith((".nbi", ".nbc", ".pyc"))]
+    assert cached and all(n.startswith(SHIPPED) and not n.endswith(".pyc") for n in cached)
+    assert any(n.startswith(SHIPPED + "mdr.") for n in cached)  # the curved tip's too
     assert not [n for n in names if n.startswith(("tests/", "docs/", "examples/"))]
 
 
@@ -150,13 +181,56 @@ def test_the_console_script_runs_from_the_read_only_install(install):
     assert version.returncode == 0 and version.stdout.startswith("vibrofriction "), version
 
 
+_FIRST_CALLS = """
+import dataclasses
+import json
+from numba.core import event
+import vibrofriction as vf
+
+compiled = []
+class Count(event.Listener):
+    def on_start(self, ev):
+        pass
+    def on_end(self, ev):
+        compiled.append(ev.data["dispatcher"].py_func.__qualname__)
+event.register("numba:compile", Count())
+system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+values = [vf.friction_coefficient(system, v_inertial=0.3).mu_ratio]
+for other in (dict(profile_exponent=2.0), dict(a_y=0.5), dict(zeta=0.05, a_x=0.3)):
+    values.append(vf.friction_coefficient(dataclasses.replace(system, **other),
+                                          v_inertial=0.3).mu_ratio)
+vf.simulate(system, v_inertial=0.3, periods=1)
+print(json.dumps({"compiled": compiled, "values": values}))
+"""
+
+
+def test_the_first_calls_of_every_solver_load_the_shipped_kernels_and_compile_nothing(install):
+    from vibrofriction._kernels.jit import _runs_shipped
+
+    if not _runs_shipped():
+        pytest.skip("this machine cannot run the shipped kernels' code (x86-64-v3)")
+    before = install.files()
+    got = install.run(str(install.python), "-c", _FIRST_CALLS)
+    assert got.returncode == 0, got.stderr[-3000:]
+    first = json.loads(got.stdout.splitlines()[-1])
+    assert first["compiled"] == [], first["compiled"][:10]
+    # the same numbers as this environment's own compiled kernels
+    import vibrofriction as vf
+
+    system = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)
+    here = [vf.friction_coefficient(dataclasses.replace(system, **o), v_inertial=0.3).mu_ratio
+            for o in ({}, dict(profile_exponent=2.0), dict(a_y=0.5), dict(zeta=0.05, a_x=0.3))]
+    assert first["values"] == pytest.approx(here, rel=1e-12, abs=1e-14)
+    assert install.files() == before  # nothing written into the installed package
+
+
 def test_numba_caches_in_the_user_cache_from_the_read_only_install(install):
     before = install.files()
     mu = [str(install.venv / "bin" / "vibrofriction"), "mu", "--alpha", "1", "--beta", "inf",
           "--amplitude", "0.5", "--v-inertial", "3", "--json"]
     logs, values = [], []
-    for _ in range(2):
-        out = install.run(*mu, NUMBA_DEBUG_CACHE="1")
+    for _ in range(2):  # without the shipped kernels: compiled for this machine, cached
+        out = install.run(*mu, NUMBA_DEBUG_CACHE="1", VIBROFRICTION_SHIPPED_CACHE="0")
         assert out.returncode == 0, out.stderr[-3000:]
         lines = out.stdout.splitlines()
         logs.append([line for line in lines if line.startswith("[cache]")])

@@ -1,21 +1,93 @@
 """The one place where kernels are compiled (cf. hapsira's ``core/jit.py``).
 
-``VIBROFRICTION_JIT_CACHE=0`` disables the on-disk cache; ``NUMBA_DISABLE_JIT=1``
+Compiled code is cached on disk by numba (next to the sources, or in the user's cache
+folder where the package is read-only), and looked up in a second place when numba's
+cache has no entry: the **shipped cache**, ``_kernels/_shipped/``, which a wheel built by
+``make dist`` carries (:func:`vibrofriction.warmup.build_shipped`). Its kernels are
+compiled for the x86-64-v3 level of the x86-64 psABI (the AVX2/FMA machines of the last
+decade; its code runs as fast as code compiled for the machine itself), so they load on any
+such machine with the Python and numba versions they were compiled with; elsewhere the
+kernels compile as usual. numba's own entries, compiled for the machine itself, come
+first. An entry is used only if the kernel's source file and bytecode are those it was
+compiled from (numba's checks), so a stale entry is never used.
+
+``VIBROFRICTION_JIT_CACHE=0`` disables both caches, ``VIBROFRICTION_SHIPPED_CACHE=0`` the
+shipped one only (the kernels then compile for the machine itself); ``NUMBA_DISABLE_JIT=1``
 runs everything as plain Python (for coverage and debugging).
 """
 
+import functools
 import os
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any, TypeVar
 
 import numba
 import numpy as np
 from numba.core import cgutils, types
+from numba.core.caching import FunctionCache, IndexDataCacheFile
 from numba.extending import intrinsic, overload
+
+from . import notice
 
 F = TypeVar("F", bound=Callable[..., Any])
 
 _CACHE = os.environ.get("VIBROFRICTION_JIT_CACHE", "1") != "0"
+_SHIPPED = os.environ.get("VIBROFRICTION_SHIPPED_CACHE", "1") != "0"
+#: The shipped cache's folder (absent in a source checkout until ``make dist``).
+SHIPPED = Path(__file__).resolve().parent / "_shipped"
+#: The CPU target of the shipped cache's code (LLVM's name; its features implied by it).
+SHIPPED_CPU = "x86-64-v3"
+#: What x86-64-v3 requires of a machine (LLVM's feature names, v2's included).
+_V3 = ("avx", "avx2", "bmi", "bmi2", "f16c", "fma", "lzcnt", "movbe", "xsave", "cx16",
+       "popcnt", "sahf", "sse3", "sse4.1", "sse4.2", "ssse3")
+
+
+@functools.cache
+def _runs_shipped() -> bool:
+    """Whether this machine runs the shipped cache's code (x86-64 with every v3 feature)."""
+    import platform
+
+    from llvmlite import binding  # type: ignore[import-untyped]
+
+    if not _SHIPPED or platform.machine().lower() not in ("x86_64", "amd64"):
+        return False
+    features = binding.get_host_cpu_features()
+    return all(features.get(f, False) for f in _V3)
+
+
+notice.install()
+
+
+class _Cache(FunctionCache):
+    """numba's on-disk cache, then the shipped one (a read-only folder)."""
+
+    def __init__(self, py_func: Callable[..., Any]) -> None:
+        super().__init__(py_func)
+        self._shipped = IndexDataCacheFile(cache_path=str(SHIPPED),
+                                           filename_base=self._impl.filename_base,
+                                           source_stamp=self._impl.locator.get_source_stamp())
+
+    def _load_overload(self, sig: Any, target_context: Any) -> Any:
+        data = super()._load_overload(sig, target_context)
+        if data is None and self._enabled and SHIPPED.is_dir() and _runs_shipped():
+            sig_, machine, code = self._index_key(sig, target_context.codegen())
+            data = self._shipped.load((sig_, (machine[0], SHIPPED_CPU, ""), code))
+            if data is not None:
+                data = self._impl.rebuild(target_context, data)
+        return data
+
+
+def caching() -> bool:
+    """Whether compiled kernels are cached on disk (``VIBROFRICTION_JIT_CACHE``)."""
+    return _CACHE
+
+
+def _compiled(func: F, **options: Any) -> F:
+    dispatcher = numba.njit(cache=_CACHE, fastmath=False, error_model="numpy", **options)(func)
+    if _CACHE:
+        dispatcher._cache = _Cache(dispatcher.py_func)
+    return dispatcher  # type: ignore[no-any-return]
 
 
 def jit(func: F) -> F:
@@ -24,15 +96,14 @@ def jit(func: F) -> F:
     Typed as returning ``func`` itself: the dispatcher is called as the function it
     compiles, so that mypy checks each call against the kernel's signature.
     """
-    return numba.njit(cache=_CACHE, fastmath=False, error_model="numpy")(func)  # type: ignore[return-value]
+    return _compiled(func)
 
 
 def jit_inline(func: F) -> F:
     """:func:`jit`, the body inlined into each caller at Numba IR level: for the helpers
     of a hot path, so that splitting a kernel by job costs no call.
     """
-    return numba.njit(cache=_CACHE, fastmath=False, error_model="numpy",  # type: ignore[return-value]
-                      inline="always")(func)
+    return _compiled(func, inline="always")
 
 
 def stack_matrix(rows: int, cols: int) -> np.ndarray:

@@ -12,7 +12,7 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 
-from . import bench, explore, mu, reproduce, sweep
+from . import bench, explore, mu, reproduce, sweep, warmup
 from ._app import (
     USAGE_EXIT,
     Command,
@@ -29,7 +29,7 @@ from ._app import (
 
 #: Every sub-command, in the order of ``vibrofriction --help``.
 COMMANDS: tuple[Command, ...] = (mu.COMMAND, sweep.COMMAND, sweep.PLOT, reproduce.COMMAND,
-                                 bench.FIT, bench.DESIGN, explore.COMMAND)
+                                 bench.FIT, bench.DESIGN, explore.COMMAND, warmup.COMMAND)
 DESCRIPTION = ("Friction under normal oscillations (Mao, Popov, Starcevic, Popov 2017): "
                "exact steady states, the paper's figures, atlases.")
 

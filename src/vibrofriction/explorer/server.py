@@ -12,10 +12,13 @@ def serve(port: int = 5006, show: bool = True) -> None:
 
     import panel as pn
 
+    from ..warmup import warm_up
     from . import pool
     from .page import app
 
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # stop the workers too
+    print("vibrofriction explorer: starting (loading the solver's kernels) ...", flush=True)
+    warm_up(("flat", "histories"))  # compiled once here (with progress), then loaded by each worker
     pool.warm_up()
     pn.extension()
     print(f"vibrofriction explorer: http://127.0.0.1:{port}/  (Ctrl-C stops it)", flush=True)

@@ -66,14 +66,17 @@ def identity() -> tuple[str, str]:
 def warm_up() -> None:
     """Load the compiled kernels (from numba's on-disk cache, or compile and cache them).
 
-    Each worker process of a sweep runs it first, so that no block pays for it.
+    Each worker process of a sweep runs it first, so that no block pays for it: the
+    ``flat`` part of :func:`vibrofriction.warmup.warm_up`.
 
     Examples
     --------
     >>> from vibrofriction.sweep import warm_up
     >>> warm_up()
     """
-    solve_points(0.5, 2.0, 0.5, 0.1)
+    from ..warmup import warm_up as compile_parts
+
+    compile_parts(["flat"], workers=1, progress=False)
 
 
 def _rows(plan: Plan, block: int) -> dict[str, np.ndarray]:

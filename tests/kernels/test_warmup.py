@@ -1,0 +1,89 @@
+"""The warm-up (``vibrofriction warmup``) and the compile notice of a cold start.
+
+The shipped cache (kernels precompiled into the wheel) is tested where a wheel is built:
+tests/api/test_wheel.py.
+"""
+
+import subprocess
+import sys
+
+import numba
+import pytest
+
+from vibrofriction._kernels import jit, notice
+from vibrofriction.cli import run
+from vibrofriction.warmup import PARTS, warm_up
+
+
+def _fresh_function():
+    """A new function each call: numba compiles it at its first call (no cache)."""
+    def add_one(x):
+        return x + 1.0
+
+    return numba.njit(cache=False)(add_one)
+
+
+def test_a_slow_compilation_shows_a_notice_on_stderr_and_a_load_none(monkeypatch, capsys):
+    monkeypatch.setenv("VIBROFRICTION_COMPILE_NOTICE", "1")
+    monkeypatch.setattr(notice, "AFTER", 0.0)  # every compilation counts as slow
+    f = _fresh_function()
+    assert f(1.0) == 2.0
+    err = capsys.readouterr().err
+    assert err.startswith(notice.TEXT) and ": 1 functions, 0 s" in err, err
+    assert f(2.0) == 3.0  # compiled already: nothing to say
+    assert capsys.readouterr().err == ""
+
+
+@pytest.mark.parametrize("how", ["environment", "quiet"])
+def test_the_notice_is_off_by_the_environment_or_inside_a_warm_up(how, monkeypatch, capsys):
+    monkeypatch.setenv("VIBROFRICTION_COMPILE_NOTICE", "0" if how == "environment" else "1")
+    monkeypatch.setattr(notice, "AFTER", 0.0)
+    f = _fresh_function()
+    if how == "quiet":
+        with notice.quiet():
+            f(1.0)
+    else:
+        f(1.0)
+    assert capsys.readouterr().err == ""
+
+
+def test_a_second_warm_up_compiles_nothing():
+    warm_up(["flat"], workers=1, progress=False)
+    again = warm_up(["flat"], workers=1, progress=False)
+    assert again.parts == ("flat",) and again.compiled == 0 and again.workers == 1
+
+
+@pytest.mark.parametrize("parts", [["flats"], []])
+def test_unknown_or_no_parts_are_refused_by_name(parts):
+    with pytest.raises(ValueError, match="parts must be among flat, plane, curved"):
+        warm_up(parts, workers=1, progress=False)
+
+
+def test_the_command_says_what_it_did(capsys):
+    assert run(["warmup", "--part", "flat", "--workers", "1", "--no-progress"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("flat: ") and out.rstrip().endswith(" s"), out
+
+
+def test_the_command_refuses_an_unknown_part_in_one_line():
+    got = subprocess.run([sys.executable, "-m", "vibrofriction", "warmup", "--part", "curve"],
+                         capture_output=True, text=True, timeout=120)
+    assert got.returncode == 2
+    assert got.stderr.strip().count("\n") == 0 and "--part" in got.stderr, got.stderr
+    assert ", ".join(PARTS) in got.stderr
+
+
+def test_the_shipped_cache_is_asked_only_where_its_code_runs(monkeypatch):
+    """x86-64-v3 code (AVX2, FMA, ...) on a machine without one of them would crash."""
+    jit._runs_shipped.cache_clear()
+    monkeypatch.setattr("llvmlite.binding.get_host_cpu_features",
+                        lambda: {f: True for f in jit._V3} | {"fma": False})
+    try:
+        assert not jit._runs_shipped()
+        jit._runs_shipped.cache_clear()
+        monkeypatch.setattr("llvmlite.binding.get_host_cpu_features",
+                            lambda: dict.fromkeys(jit._V3, True))
+        assert jit._runs_shipped() == (jit._SHIPPED and __import__("platform").machine()
+                                       in ("x86_64", "AMD64"))
+    finally:
+        jit._runs_shipped.cache_clear()
