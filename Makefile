@@ -13,19 +13,25 @@ PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS
 
 .PHONY: demo test fast lint typecheck dist bench clean clean-cache browser docs
 
+# The package and what it needs to run (make demo); the tools of the tests on top (make test)
 $(BIN)/vibrofriction: pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e . --group dev  # PEP 735 group: pip >= 25.1
+	$(BIN)/pip install --quiet -e .
+	touch $@
+
+$(VENV)/.dev: $(BIN)/vibrofriction pyproject.toml
+	$(BIN)/pip install --quiet --group dev  # PEP 735 group: pip >= 25.1
 	touch $@
 
 demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 	$(BIN)/vibrofriction reproduce --out $(OUT)
+	@echo "the command line: .venv/bin/vibrofriction --help (or 'source .venv/bin/activate' first)"
 
 browser:  ## the distribution's headless Chromium for the explorer's browser tests
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
 
-$(VENV)/.docs: $(BIN)/vibrofriction pyproject.toml
+$(VENV)/.docs: $(VENV)/.dev pyproject.toml
 	$(BIN)/pip install --quiet --group docs  # PEP 735 group, as dev
 	touch $@
 
@@ -36,7 +42,7 @@ docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as err
 # The test lanes (docs/packaging.md, "Test lanes"):
 # * make test: every test (fast, slow and browser), the site built first; CI runs it
 # * make fast: the tests not marked slow or browser, stopping at the first failure
-test: $(BIN)/vibrofriction browser docs  ## the whole test suite, site, slow and browser tests included
+test: $(VENV)/.dev browser docs  ## the whole test suite, site, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/mypy
@@ -50,18 +56,18 @@ fast:  ## the development loop, installs nothing: lint, contracts, tests not slo
 	$(BIN)/mypy
 	$(PYTEST) -x -m "not slow and not browser"
 
-lint: $(BIN)/vibrofriction
+lint: $(VENV)/.dev
 	$(BIN)/ruff check src tests benchmarks examples
 
-typecheck: $(BIN)/vibrofriction  ## mypy on src/ (configured in pyproject.toml)
+typecheck: $(VENV)/.dev  ## mypy on src/ (configured in pyproject.toml)
 	$(BIN)/mypy
 
-dist: $(BIN)/vibrofriction  ## the wheel and the sdist into dist/, kernels precompiled (docs/packaging.md)
+dist: $(VENV)/.dev  ## the wheel and the sdist into dist/, kernels precompiled (docs/packaging.md)
 	$(BIN)/python -c "from vibrofriction.warmup import build_shipped; build_shipped()"
 	$(BIN)/python -m build --sdist  # source only (MANIFEST.in excludes compiled files)
 	$(BIN)/python -m build --wheel  # from the tree: the kernels of _kernels/_shipped with it
 
-bench: $(BIN)/vibrofriction  ## peer benchmarks, results written to benchmarks/results/
+bench: $(VENV)/.dev  ## peer benchmarks, results written to benchmarks/results/
 	$(BIN)/python benchmarks/bench_solver.py
 
 clean:
