@@ -74,6 +74,12 @@ def test_scalar_velocities_convert_as_arrays_do(general_system):
         vf.params.inertial_velocity(general_system, math.nan)
     with pytest.raises(ValueError, match="vbar is undefined for beta == 1"):
         vf.friction_coefficient(vf.Dimensionless(0.5, 1.0, 0.5), vbar=0.3)
+    # the value as a number, not a numpy repr (np.float64(1.0))
+    with pytest.raises(ValueError, match=r"v0\* is infinite \(alpha = 1\); use"):
+        vf.friction_coefficient(vf.Dimensionless(1.0, math.inf, 0.5), vbar=0.3)
+    with pytest.raises(ValueError, match=r"a curved tip at alpha = 4: v0\* is infinite"):
+        vf.friction_coefficient(vf.Dimensionless(4.0, 9.0, 0.5, profile_exponent=2.0),
+                                vbar=0.3)
 
 
 def test_trusted_one_is_trusted_for_every_status():

@@ -453,7 +453,8 @@ def test_sphere_curve_is_the_mdr_solvers_with_its_static_value():
     r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0),
                                 v_inertial=0.98999 * np.array([0.0, 0.5, 1.0, 1.5]))
     np.testing.assert_allclose(on_vbar["y"], r.mu_ratio, rtol=1e-4)
-    assert on_vbar["critical"] == 1.0 and on_vbar["x_label"] == "vbar = v0/v0*"
+    assert on_vbar["critical"] == 1.0
+    assert on_vbar["x_label"] == "vbar = v0/v0* (v0*: the curved tip's critical velocity)"
     stiff = compute.curve(State(alpha=0.01, beta=0.02, profile_exponent=2.0, axis="V",
                                 v_max=80.0, points=6))
     assert [f["label"] for f in stiff["closed_forms"]] == [

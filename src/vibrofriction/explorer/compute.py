@@ -139,7 +139,8 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
                                                   scale),
-        "x_label": AXES[state.axis][1],
+        "x_label": ("vbar = v0/v0* (v0*: the curved tip's critical velocity)"
+                    if curved and state.axis == "vbar" else AXES[state.axis][1]),
         "y_label": "COF = mu" if scale != 1.0 else "mu/mu0",
         "mu0": scale if scale != 1.0 else None,
         "seconds": time.perf_counter() - t0,

@@ -32,11 +32,11 @@ def _undefined_vbar(alpha: NDArray[np.float64], amplitude: NDArray[np.float64],
     if cu[i] and am[i] != 0.0:
         # theory.profile_critical_velocity: inf undamped at alpha = k^2, every harmonic k of
         # the curved tip's normal force
-        return (f"a curved tip at alpha = {al[i]!r}: v0* is "
+        return (f"a curved tip at alpha = {al[i]:g}: v0* is "
                 + ("infinite (undamped, alpha = k^2 for a harmonic k of its normal force)"
                    if math.isinf(c[i]) else "zero"))
     if math.isinf(c[i]):
-        return f"alpha == 1 (case IV): v0* is infinite (alpha = {al[i]!r})"
+        return f"alpha == 1 (case IV): v0* is infinite (alpha = {al[i]:g})"
     if am[i] == 0.0:
         return "amplitude == 0: v0* is zero"
     return "beta == 1 (case III): v0* is zero"
