@@ -40,7 +40,10 @@ FIRST_CALL = ("import vibrofriction as vf; vf.friction_coefficient("
 
 
 def _run(args: list[str], **kwargs) -> subprocess.CompletedProcess:
-    return subprocess.run(args, capture_output=True, text=True, check=True, **kwargs)
+    done = subprocess.run(args, capture_output=True, text=True, **kwargs)
+    if done.returncode:
+        raise RuntimeError(f"{' '.join(args)[:200]} failed:\n{done.stderr[-3000:]}")
+    return done
 
 
 def build_wheel(tmp: Path) -> Path:
@@ -65,8 +68,9 @@ def fresh_venv(tmp: Path, wheel: Path) -> Path:
     venv = tmp / "venv"
     _run([sys.executable, "-m", "venv", "--without-pip", str(venv)])
     python = venv / "bin" / "python"
+    clean = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
     _run([sys.executable, "-m", "pip", "--python", str(python), "install", "--no-deps",
-          "--quiet", str(wheel)])
+          "--quiet", str(wheel)], env=clean)  # (a PYTHONPATH holding the package: no-op)
     site = _run([str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"]
                 ).stdout.strip()
     (Path(site) / "zz_environment.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
