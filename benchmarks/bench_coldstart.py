@@ -78,7 +78,12 @@ def fresh_venv(tmp: Path, wheel: Path) -> Path:
 
 
 def first_call(python: Path, home: Path, **extra: str) -> float:
-    """Wall seconds of a fresh process running :data:`FIRST_CALL` (fresh ``home``)."""
+    """Wall seconds of a fresh process running :data:`FIRST_CALL`: a fresh ``home`` (the
+    user-wide numba cache) and no numba cache beside the installed package (where numba
+    writes when it can)."""
+    for path in python.parent.parent.glob("lib/python*/site-packages/vibrofriction/**/*.nb[ic]"):
+        if "_shipped" not in path.parts:
+            path.unlink()
     shutil.rmtree(home, ignore_errors=True)
     home.mkdir()
     env = {k: v for k, v in os.environ.items()
