@@ -44,6 +44,8 @@ def n(s: str) -> str:
 
 _DN, _MI = "docs_numbers.", "mdr_inplane_numbers."
 _SENS = "tests/solver/test_sensitivity.py"
+_SHAPE = "mdr_shape_numbers"
+_EQUAL_F = "## flat punch a = {}: A_F = "  # + "...; curved tips at equal A_F", the first
 _FLAT1 = "(0.5, 2, 0.5, 0.3, zeta 0, a_x 0.5, 1, substrate)"
 _FLAT2 = "(1.3, 4, 1.4, 0.8, zeta 0.05, a_x 1.2, 2.5, holder)"
 _FIRST = r"^([^ ,]+)"  # the first word of a row's value
@@ -123,6 +125,28 @@ QUOTES: list[Quote] = [
           "mdr_friction (two differences)", r"^(\S+) \+- (\S+) ()"),
     Quote("docs/contact_geometry.md", n("the point gives $# \\pm #$, # off"), _MI + "short_bar",
           "mdr_friction from the reference", r"()()(.*)"),
+    # docs/contact_geometry.md, "How much the shape matters"
+    Quote("docs/contact_geometry.md", n("is a sphere at $a = #$ and a cone at `#`; the jumping"),
+          _SHAPE, _EQUAL_F.format("0.5") + "\na: flat punch", r"sphere (\S+) .* cone (\S+) "),
+    Quote("docs/contact_geometry.md", n("the jumping flat punch $a = 1.5$ ($A_F = #$)"), _SHAPE,
+          _EQUAL_F.format("0.5") + "\n## flat punch a = 1.5: A_F = ", r"^([^;]+);"),
+    Quote("docs/contact_geometry.md", n("is a sphere at $a = #$ and a cone at `#`: **at equal"),
+          _SHAPE, _EQUAL_F.format("1.5") + "\na: flat punch", r"sphere (\S+) .* cone (\S+) "),
+    Quote("docs/contact_geometry.md", n("(flat #, sphere #, cone #: the smallest force"), _SHAPE,
+          _EQUAL_F.format("0.5") + "\na: flat punch", r"static (\S+)\), sphere .* static (\S+)\), .* static (\S+)\)$"),
+    *(Quote("docs/contact_geometry.md", n(text), _SHAPE, f"{_EQUAL_F.format(a)}\n{line}",
+            r"^(\S+) \| (\S+) \| (\S+) \|")
+      for a, text, line in (
+          ("0.5", "stiff $x = 5$: flat #, sphere #, cone #;", "| stiff (0.01, 0.02) | 5 | "),
+          ("0.5", "soft $x = 0.05$: #, #, #;", "| soft (0.01, 40) | 0.05 | "),
+          ("0.5", "resonant $x = 1$: #, #, #;", "| resonant (1, 3) | 1 | "),
+          ("1.5", "stiff $x = 45$: flat #, sphere #, cone #;", "| stiff (0.01, 0.02) | 45 | "),
+          ("1.5", "soft $x = 0.15$: #, #, #;", "| soft (0.01, 40) | 0.15 | "),
+          ("1.5", "resonant $x = 0.2$: #, #, # (", "| resonant (1, 3) | 0.2 | "),
+          ("1.5", "(and still #, #, # at $x = 3$", "| resonant (1, 3) | 3 | "))),
+    Quote("docs/contact_geometry.md", n("e.g. stiff $x = 15$: #, #, #; with jumping"), _SHAPE,
+          "## flat punch a = 0.5: A_F = 0.5000; curved tips at equal indentation amplitude a\n"
+          "| stiff (0.01, 0.02) | 15 | ", r"^(\S+) \| (\S+) \| (\S+) \|"),
     # docs/solver.md
     Quote("docs/solver.md", n("re-solves the orbit each time), worst relative disagreement #;"),
           _SENS, "worst relative disagreement of d mu / d theta"),

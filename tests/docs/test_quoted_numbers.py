@@ -12,7 +12,9 @@ results file or a page fails and names the page or file, the quantity and both v
 from __future__ import annotations
 
 import importlib
+import os
 import re
+import subprocess
 import sys
 from collections.abc import Callable
 from functools import cache
@@ -30,6 +32,12 @@ SCRIPTS = {"docs_numbers": ("CLAIMS", "benchmarks/results/docs_numbers.md"),
 #: sections that integrate the spring-row reference (seconds warm, a compilation cold)
 SLOW = {"mdr_inplane_numbers.reference_flat_punch", "mdr_inplane_numbers.against_reference",
         "mdr_inplane_numbers.short_bar"}
+#: scripts that print their results file whole: the output against the committed file line
+#: by line, but for the lines matching the pattern (the date and commit, wall times); a
+#: quote's key is the beginning of its line, after the first line that begins with the
+#: text before a "\n" in the key where there is one
+PRINTED = {"mdr_shape_numbers": ("benchmarks/results/mdr_shape.md",
+                                 r"^# 20\d\d-\d\d-\d\d, commit \w+, |^\d+ s$")}
 #: sources that are tests computing quoted numbers themselves (they call quoted_numbers.check)
 TEST_SOURCES = {"tests/solver/test_sensitivity.py"}
 
@@ -78,8 +86,41 @@ def test_results_file_and_pages_quote_what_the_section_computes(source):
     assert not problems, "\n".join(problems)
 
 
+def _line_rows(lines: list[str], keys: set[str]) -> dict[str, str]:
+    """``{key: the rest of its line}`` for the keys found once (see :data:`PRINTED`)."""
+    out = {}
+    for key in keys:
+        after, _, start = key.rpartition("\n")
+        first = next((i for i, line in enumerate(lines) if line.startswith(after)), None)
+        if first is None:
+            continue
+        found = [line for line in lines[first:] if line.startswith(start)]
+        if found and (after or len(found) == 1):
+            out[key] = found[0][len(start):]
+    return out
+
+
+@pytest.mark.parametrize("script", sorted(PRINTED))
+def test_printed_results_file_and_pages_quote_what_the_script_prints(script):
+    results, volatile = PRINTED[script]
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        [str(ROOT / "src"), *filter(None, [os.environ.get("PYTHONPATH")])]))
+    out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / f"{script}.py")], env=env,
+                         check=True, capture_output=True, text=True, timeout=600).stdout
+    printed, written = ([line for line in text.splitlines() if not re.search(volatile, line)]
+                        for text in (out, (ROOT / results).read_text()))
+    problems = [f"{results}: the file has {w!r}, the script prints {p!r}"
+                for w, p in zip(written, printed, strict=False) if w != p]
+    if len(written) != len(printed):
+        problems.append(f"{results}: {len(written)} lines, the script prints {len(printed)}")
+    quotes = [q for q in QUOTES if q.source == script]
+    rows = _line_rows(out.splitlines(), {q.key for q in quotes})
+    problems += [p for q in quotes for p in disagreements(q, rows)]
+    assert not problems, "\n".join(problems[:20])
+
+
 def test_every_quote_has_a_source():
-    names = set(_section_names())
+    names = {*_section_names(), *PRINTED}
     for q in QUOTES:
         if q.source in TEST_SOURCES:
             assert f'check("{q.source}"' in (ROOT / q.source).read_text(), q
