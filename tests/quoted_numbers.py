@@ -133,7 +133,8 @@ QUOTES: list[Quote] = [
     Quote("docs/contact_geometry.md", n("is a sphere at $a = #$ and a cone at `#`: **at equal"),
           _SHAPE, _EQUAL_F.format("1.5") + "\na: flat punch", r"sphere (\S+) .* cone (\S+) "),
     Quote("docs/contact_geometry.md", n("(flat #, sphere #, cone #: the smallest force"), _SHAPE,
-          _EQUAL_F.format("0.5") + "\na: flat punch", r"static (\S+)\), sphere .* static (\S+)\), .* static (\S+)\)$"),
+          _EQUAL_F.format("0.5") + "\na: flat punch",
+          r"static (\S+)\), sphere .* static (\S+)\), .* static (\S+)\)$"),
     *(Quote("docs/contact_geometry.md", n(text), _SHAPE, f"{_EQUAL_F.format(a)}\n{line}",
             r"^(\S+) \| (\S+) \| (\S+) \|")
       for a, text, line in (
