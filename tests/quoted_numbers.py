@@ -148,6 +148,11 @@ QUOTES: list[Quote] = [
     Quote("docs/contact_geometry.md", n("e.g. stiff $x = 15$: #, #, #; with jumping"), _SHAPE,
           "## flat punch a = 0.5: A_F = 0.5000; curved tips at equal indentation amplitude a\n"
           "| stiff (0.01, 0.02) | 15 | ", r"^(\S+) \| (\S+) \| (\S+) \|"),
+    # docs/contact_geometry.md, "Continuous sliding"
+    *(Quote("docs/contact_geometry.md", n(f"| $a = {a}$ | #{eq} | # | # | # |"),
+            "mdr_critical_numbers", f"| (0.5, 2) (0.5, 2) | {a} | ",
+            r"^(\S+) \(\S+\) \| (\S+) \(\S+\) \| (\S+) \(\S+\) \| (\S+) \(")
+      for a, eq in (("0.2", ""), ("0.5", ""), ("1.5", " (eq. 12: 2.0)"))),
     # docs/solver.md
     Quote("docs/solver.md", n("re-solves the orbit each time), worst relative disagreement #;"),
           _SENS, "worst relative disagreement of d mu / d theta"),
