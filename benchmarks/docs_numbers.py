@@ -5,7 +5,9 @@ that neither `vibrofriction reproduce` nor another benchmark produces.
     PYTHONPATH=src python benchmarks/docs_numbers.py --only settling
 
 One function per claim (the section of the docs it backs is in its docstring); each
-returns rows ``(quantity, value)``.  One process, one core; about a minute warm.
+returns rows ``(quantity, value)`` (``benchmarks/sections.py``; a row whose quantity says
+"wall time" is machine-dependent, the others are checked against the docs by
+tests/docs/test_quoted_numbers.py).  One process, one core; about a minute warm.
 """
 
 from __future__ import annotations
@@ -22,10 +24,10 @@ from pathlib import Path
 import numpy as np
 
 import vibrofriction as vf
+from sections import WALL, Rows, section
 from vibrofriction import solver, theory
 from vibrofriction.solver import SolverSettings
 
-Rows = list[tuple[str, str]]
 RESULTS = Path(__file__).parent / "results" / "docs_numbers.md"
 
 
@@ -44,7 +46,7 @@ def settling() -> Rows:
 def unsettled() -> Rows:
     """docs/solver.md, last section: (0.01, 1.01, 1, vbar 0.02) with the default budget."""
     r = vf.friction_coefficient(vf.Dimensionless(0.01, 1.01, 1.0), vbar=0.02)
-    return [("status", r.status.name.lower()), ("mu_ratio", str(r.mu_ratio)),
+    return [("status", r.status.name.lower()), ("mu_ratio", f"{r.mu_ratio:.6g}"),
             ("window_min .. window_max", f"{r.window_min:.3f} .. {r.window_max:.3f}"),
             ("drift_rate (per period)", _g(r.drift_rate, 2))]
 
@@ -69,15 +71,21 @@ def long_budget() -> Rows:
 
 def near_beta_one_default() -> Rows:
     """docs/solver.md, table near beta = 1 with the default budget (Newton with a limited
-    step, since b903c48): alpha = 0.01, a = 1, and Fig. 5's last point vbar = 0.072."""
-    rows = []
+    step, since b903c48): alpha = 0.01, a = 1, and Fig. 5's last point vbar = 0.072; the
+    least and most work at the points other than vbar 0.016 and 0.02 (beta 1.01), and the
+    range of the settling times."""
+    rows, others, settling = [], [], []
     for beta, vbar in (*LONG_BUDGET, (1.01, 0.072)):
         r = vf.friction_coefficient(vf.Dimensionless(0.01, beta, 1.0), vbar=vbar)
         rows.append((f"beta {beta}, vbar {vbar}",
                      f"{r.status.name.lower()}, mu/mu0 {r.mu_ratio:.6g}, work {r.work:,.0f}, "
                      f"multiplier {r.multiplier:.5f}, settling {r.settling_periods:,.0f}, "
                      f"trusted {r.trusted}"))
-    return rows
+        settling.append(r.settling_periods)
+        if (beta, vbar) not in ((1.01, 0.016), (1.01, 0.02)):
+            others.append(r.work)
+    return [*rows, ("work at the others: least-most", f"{min(others):.0f}-{max(others):.0f}"),
+            ("settling: least, most", f"{min(settling):,.0f} to {max(settling):.3g}")]
 
 
 def stiff_contacts() -> Rows:
@@ -98,14 +106,14 @@ def stiff_contacts() -> Rows:
                     t.append(time.perf_counter() - t0)
                 times.append(float(np.median(t)))
                 dmu.append(abs(r.mu_ratio - vf.friction_coefficient(rigid, v_inertial=V).mu_ratio))
-            rows.append((f"alpha {alpha:g}, beta {beta:g}",
-                         f"{1e3 * min(times):.2g}-{1e3 * max(times):.2g} ms, "
-                         f"|mu - mu(rigid)| <= {_g(max(dmu), 2)}"))
+            rows += [(f"alpha {alpha:g}, beta {beta:g}: |mu - mu(rigid)| <=", _g(max(dmu), 2)),
+                     (f"alpha {alpha:g}, beta {beta:g}: {WALL} (ms)",
+                      f"{1e3 * min(times):.2g}-{1e3 * max(times):.2g}")]
     t0 = time.perf_counter()
     r = vf.friction_coefficient(vf.Dimensionless(1e-4, 1e6, 0.5), vbar=0.1)
-    rows.append(("corner alpha 1e-4, beta 1e6, a 0.5, vbar 0.1",
-                 f"{time.perf_counter() - t0:.2g} s, {r.periods:,} periods, {r.events:.2g} events, "
-                 f"{r.status.name.lower()}"))
+    corner = "corner alpha 1e-4, beta 1e6, a 0.5, vbar 0.1"
+    rows += [(f"{corner}: {WALL} (s)", f"{time.perf_counter() - t0:.2g}"),
+             (corner, f"{r.periods:,} periods, {r.events:.2g} events, {r.status.name.lower()}")]
     return rows
 
 
@@ -288,7 +296,7 @@ def contact_geometry_using_it() -> Rows:
             ("stiff contact (mass 0.01): mu_ratio, error, rows, skipped",
              f"{stiff['mu_ratio']:.7f}, {stiff['error']:.2g}, {stiff['rows']}, "
              f"{stiff['skipped_rows']}"),
-            ("stiff contact: time (s)", f"{t_stiff:.2f}")]
+            (f"stiff contact: {WALL} (s)", f"{t_stiff:.2f}")]
 
 
 CLAIMS: dict[str, Callable[[], Rows]] = {
@@ -322,10 +330,7 @@ def main() -> None:
     for name in args.only or CLAIMS:
         t0 = time.perf_counter()
         rows = CLAIMS[name]()
-        doc = (CLAIMS[name].__doc__ or "").strip().replace("\n    ", " ")
-        table = "\n".join(f"| {q} | {v} |" for q, v in rows)
-        parts.append(f"## `{name}` ({time.perf_counter() - t0:.1f} s)\n\n{doc}\n\n"
-                     f"| quantity | value |\n|---|---|\n{table}\n")
+        parts.append(section(name, CLAIMS[name].__doc__ or "", rows, time.perf_counter() - t0))
         print(parts[-1], flush=True)
     parts.append(f"Total {time.perf_counter() - total:.0f} s.\n")
     if not args.only:

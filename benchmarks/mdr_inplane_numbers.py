@@ -12,6 +12,10 @@ today"): the numbers of docs/contact_geometry.md, "In-plane oscillation along th
 4. The solver's error bar against the independent spring row refined until its bar is at
    most 2e-6, at 24 random points (seed 5; cached by tests/data/make_mdr_fine_reference.py)
    and at one point where a bar of one difference of rows is short.
+One function per section, each returning rows ``(quantity, value)`` (``sections.py``;
+tests/docs/test_quoted_numbers.py checks the quoted ones); the sections 1-4 take about
+ten seconds warm.
+
 5. With ``--baseline REV``: without the oscillation (``a_x = 0``) the MDR solver's results
    bit for bit against that revision's ``src`` (exported by ``git archive``, run in a
    fresh process): ``mdr_friction`` and a row of 20 springs at five points.
@@ -32,9 +36,11 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from itertools import pairwise
 from pathlib import Path
 
+from sections import WALL, Rows, section
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction, mdr_row
 from vibrofriction_reference.inplane import inplane_mean
@@ -79,21 +85,109 @@ def _bits() -> list:
 SHORT = (1.0, 3.0, 0.6, 0.4, 0.02, 2.0, 0.5, 0.5, "holder")
 
 
-def _calibration() -> None:
-    """The solver's error bar against the independent reference, refined until its bar is
-    at most 2e-6 (tests/data/make_mdr_fine_reference.py, its cache)."""
+def _point(al, be, a, V, z, ax, px, on) -> str:
+    return f"({al:g}, {be:g}, {a:g}, {V:g}, zeta {z:g}, a_x {ax:g}, {px:.4g}, {on})"
+
+
+def flat_punch() -> Rows:
+    """1. Flat punch: the MDR solver (one spring) against the 1-D solver ``solve_points``
+    at the points of tests/mdr/test_mdr_inplane.py (alpha, beta, a, V, zeta, a_x, phase_x,
+    mount)."""
+    rows, worst = [], 0.0
+    for al, be, a, V, z, ax, px, on in FLAT:
+        r = mdr_friction(al, be, a, V, math.inf, zeta=z, a_x=ax, phase_x=px, inplane_on=on)
+        s = float(solve_points(al, be, a, V, zeta=z, a_x=ax, phase_x=px,
+                               inplane_on=on)["mu_ratio"])
+        d = r["mu_ratio"] - s
+        worst = max(worst, abs(d))
+        rows.append((_point(al, be, a, V, z, ax, px, on),
+                     f"MDR {r['mu_ratio']:.12f}, 1-D {s:.12f}, diff {d:.1e}"))
+    return [*rows, ("largest |diff|", f"{worst:.1e}")]
+
+
+def reference_flat_punch() -> Rows:
+    """2. The reference's flat punch: the spring row (200 springs, 400 steps) against the
+    1-D in-plane reference (``vibrofriction_reference.inplane``, DOP853 with events), two
+    independent integrators."""
+    rows = []
+    for al, be, a, V, z, ax, px, on in REFERENCE_FLAT:
+        ip = dict(a_x=ax, phase_x=px, inplane_on=on)
+        row = mdr_reference(al, be, a, V, math.inf, transient_periods=200,
+                            average_periods=20, zeta=z, **ip)
+        one = inplane_mean(al, be, a, V, 100, 20, zeta=z, tolerance_check=False, **ip)
+        rows.append((_point(al, be, a, V, z, ax, px, on),
+                     f"row {row.mu_ratio:.8f} +- {row.mu_error:.1e}, 1-D {one.mu_ratio:.8f} +- "
+                     f"{one.mu_error:.1e}, diff {row.mu_ratio - one.mu_ratio:.1e}"))
+    return rows
+
+
+def _median_time(f, repeat: int = 3) -> tuple[float, object]:
+    times, out = [], None
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        out = f()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times), out
+
+
+def against_reference() -> Rows:
+    """3. The MDR solver (``solve_points`` at ``tol_trusted`` 1e-5) against the spring-row
+    reference ``mdr_reference`` at the rows of tests/data/mdr_inplane_reference.json (300 +
+    20 periods), re-run here side by side (the solver's time a median of 3). ``ratio`` =
+    |diff|/(solver error + reference bar), <= 1 within the bars."""
+    pts = json.loads((ROOT / "tests" / "data" / "mdr_inplane_reference.json").read_text())
+    rows, ratios, diffs, errors, t_sol, t_ref = [], [], [], [], [], []
+    for p in pts["points"]:
+        args = (p["alpha"], p["beta"], p["amplitude"], p["v_inertial"], p["zeta"])
+        ts, s = _median_time(lambda args=args, p=p: solve_points(
+            *args, a_x=p["a_x"], phase_x=p["phase_x"],
+            profile_exponent=p["profile_exponent"], inplane_on=p["inplane_on"]))
+        t0 = time.perf_counter()
+        ref = mdr_reference(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
+                            p["profile_exponent"],
+                            resolutions=tuple(tuple(x) for x in p["resolutions"]),
+                            transient_periods=pts["meta"]["transient_periods"],
+                            average_periods=pts["meta"]["average_periods"], zeta=p["zeta"],
+                            a_x=p["a_x"], phase_x=p["phase_x"], inplane_on=p["inplane_on"])
+        t_ref.append(time.perf_counter() - t0)
+        t_sol.append(ts)
+        mu, err = float(s["mu_ratio"]), float(s["error"])
+        d = mu - ref.mu_ratio
+        ratios.append(abs(d) / (err + ref.mu_error))
+        diffs.append(abs(d))
+        errors.append(err)
+        rows.append((f"{p['label']} (n {p['profile_exponent']:g}, {p['inplane_on']})",
+                     f"solver {mu:+.8f} +- {err:.1e}, reference {ref.mu_ratio:+.8f} +- "
+                     f"{ref.mu_error:.1e}, diff {d:.1e}, ratio {ratios[-1]:.2f}"))
+    stiff = next(p for p in pts["points"] if p["label"] == "sphere substrate stiff damped")
+    moves = [mdr_mean(stiff["alpha"], stiff["beta"], stiff["amplitude"], stiff["v_inertial"],
+                      stiff["profile_exponent"], M, steps, 300, 20, zeta=stiff["zeta"],
+                      a_x=stiff["a_x"], phase_x=stiff["phase_x"],
+                      inplane_on=stiff["inplane_on"]).mu_ratio
+             for M, steps in ((100, 200), (200, 400), (400, 800), (800, 1600))]
+    return [*rows,
+            ("the stiff point's reference rows (100, 200) ... (800, 1600)",
+             ", ".join(f"{m:.8f}" for m in moves)),
+            ("their steps", ", ".join(f"{abs(b - a):.1e}" for a, b in pairwise(moves))),
+            ("within the combined bars", f"{sum(r <= 1.0 for r in ratios)} of {len(ratios)}"),
+            ("largest ratio", f"{max(ratios):.2f}"),
+            ("|diff|, smallest to largest", f"{min(diffs):.1e} to {max(diffs):.1e}"),
+            ("the solver's errors, smallest to largest", f"{min(errors):.1e} to {max(errors):.1e}"),
+            (f"median {WALL} per point (s): solver, reference (its two rows)",
+             f"{statistics.median(t_sol):.3f}, {statistics.median(t_ref):.2f}")]
+
+
+def calibration() -> Rows:
+    """4. The solver's error bar against the independent reference: 24 random points (seed
+    5; n = 1, 2, 3 in turn, substrate and holder in turn, alpha in (0.2, 2), beta - alpha
+    in (0.5, 4), a in (0.2, 1.8), V in (0.1, 1), zeta 0, 0.02 or 0.1, a_x in (0.2, 2),
+    phase_x in (0, 2 pi)). Reference: the spring row of ``vibrofriction_reference.mdr`` (no
+    code shared with the solver) refined until its bar is at most 2e-6
+    (tests/data/mdr_fine_reference.json, made by tests/data/make_mdr_fine_reference.py).
+    ``short`` where |mdr_friction - reference| > its error + the reference's bar."""
     cache = json.loads((ROOT / "tests" / "data" / "mdr_fine_reference.json").read_text())
     pts = [p for p in cache["points"] if p["set"] == "calibration"]
     bars = [p["err_ref"] for p in pts]
-    print("\n## 4. The solver's error against the independent reference\n")
-    print(f"{len(pts)} random points (seed 5): n = 1, 2, 3 in turn, substrate and holder in "
-          "turn, alpha in (0.2, 2), beta - alpha in (0.5, 4), a in (0.2, 1.8), V in (0.1, 1), "
-          "zeta 0, 0.02 or 0.1, a_x in (0.2, 2), phase_x in (0, 2 pi). Reference: the "
-          "spring row of `vibrofriction_reference.mdr` (no code shared with the solver) "
-          "refined until its bar is at most 2e-6 (tests/data/mdr_fine_reference.json, made "
-          f"by tests/data/make_mdr_fine_reference.py): bars median "
-          f"{statistics.median(bars):.1e}, largest {max(bars):.1e}. `short` where "
-          "|mdr_friction - reference| > its error + the reference's bar.\n")
     short, alone, ratios, combined, first, errors = 0, 0, [], [], 0, []
     for p in pts:
         r = mdr_friction(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
@@ -106,26 +200,41 @@ def _calibration() -> None:
         combined.append(d / (r["error"] + p["err_ref"]))
         errors.append(r["error"])
         first += r["rows"] == (20, 40)
-    print(f"short: {short} of {len(pts)} (beyond its error alone: {alone}); |diff|/error "
-          f"median {statistics.median(ratios):.2g}, largest {max(ratios):.2g}; "
-          f"|diff|/(error + bar) median {statistics.median(combined):.2g}, largest "
-          f"{max(combined):.2g}; the solver's errors {min(errors):.1e} to "
-          f"{max(errors):.1e}; {first} of {len(pts)} stopped at the first pair (20, 40)\n")
+    n = len(pts)
+    return [("reference bars: median, largest", f"{statistics.median(bars):.1e}, {max(bars):.1e}"),
+            ("short", f"{short} of {n}"), ("beyond its error alone", f"{alone} of {n}"),
+            ("|diff|/error: median, largest", f"{statistics.median(ratios):.2g}, "
+             f"{max(ratios):.2g}"),
+            ("|diff|/(error + bar): median, largest", f"{statistics.median(combined):.2g}, "
+             f"{max(combined):.2g}"),
+            ("the solver's errors, smallest to largest", f"{min(errors):.1e} to {max(errors):.1e}"),
+            ("stopped at the first pair (20, 40)", f"{first} of {n}")]
+
+
+def short_bar() -> Rows:
+    """4. A short bar of one difference, at :data:`SHORT` (alpha, beta, a, V, zeta, n, a_x,
+    phase_x, mount): the solver's rows of 20 and 40 springs from cold starts agree by
+    chance, 80 moves; the reference refined as in ``calibration``; ``mdr_friction`` counts
+    two differences."""
     al, be, a, V, z, n, ax, px, on = SHORT
     kw = dict(a_x=ax, phase_x=px, inplane_on=on)
     r = mdr_friction(al, be, a, V, n, zeta=z, **kw)
     ref = refine(dict(label="short", alpha=al, beta=be, amplitude=a, v_inertial=V, zeta=z,
                       profile_exponent=n, **kw))
     rows = {M: mdr_row(al, be, a, V, n, M, z, **kw)["mu_ratio"] for M in (20, 40, 80, 160)}
-    print(f"A short bar of one difference: ({al:g}, {be:g}, {a:g}, {V:g}, zeta {z:g}, "
-          f"n = {n:g}, a_x {ax:g}, phase_x {px:g}, {on}): the reference "
-          f"{ref['mu_ref']:.8f} +- {ref['err_ref']:.1e} (rows {ref['levels'][-1]}); the "
-          "solver's rows from cold starts: "
-          + ", ".join(f"{M}: {v:.8f}" for M, v in rows.items())
-          + f" (20 and 40 agree by chance, 80 moves: a bar of their difference, "
-          f"{abs(rows[40] - rows[20]):.1e}, is {abs(rows[40] - ref['mu_ref']):.1e} short); "
-          f"mdr_friction (two differences) {r['mu_ratio']:.8f} +- {r['error']:.1e} (rows "
-          f"{r['rows']}), {abs(r['mu_ratio'] - ref['mu_ref']):.1e} off.")
+    return [("reference", f"{ref['mu_ref']:.8f} +- {ref['err_ref']:.1e} (rows "
+             f"{ref['levels'][-1]})"),
+            *((f"the solver's row of {M}", f"{v:.8f}") for M, v in rows.items()),
+            ("bar of the difference of the rows 20, 40", f"{abs(rows[40] - rows[20]):.1e}"),
+            ("row 40 from the reference", f"{abs(rows[40] - ref['mu_ref']):.1e}"),
+            ("mdr_friction (two differences)", f"{r['mu_ratio']:.8f} +- {r['error']:.1e} "
+             f"(rows {r['rows']})"),
+            ("mdr_friction from the reference", f"{abs(r['mu_ratio'] - ref['mu_ref']):.1e}")]
+
+
+SECTIONS: dict[str, Callable[[], Rows]] = {
+    f.__name__: f for f in (flat_punch, reference_flat_punch, against_reference, calibration,
+                            short_bar)}
 
 
 def _bits_in(src: Path) -> list:
@@ -133,15 +242,6 @@ def _bits_in(src: Path) -> list:
     out = subprocess.run([sys.executable, __file__, "--bits-only"], env=env, check=True,
                          capture_output=True, text=True).stdout
     return json.loads(out)
-
-
-def _median_time(f, repeat: int = 3) -> tuple[float, object]:
-    times, out = [], None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = f()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), out
 
 
 def main() -> None:
@@ -159,77 +259,12 @@ def main() -> None:
     flag = f" --baseline {opts.baseline}" if opts.baseline else ""
     print(f"`PYTHONPATH=src python benchmarks/mdr_inplane_numbers.py{flag}`, "
           f"{time.strftime('%Y-%m-%d')}, commit {commit}, {platform.platform()} "
-          "(the 2-core shared machine).\n")
+          "(the 2-core shared machine; times are wall times).\n")
     mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, a_x=0.5)  # compile / load the caches
-    print("## 1. Flat punch: MDR solver (one spring) against the 1-D solver\n")
-    print("| alpha | beta | a | V | zeta | a_x | phase_x | on | MDR | 1-D | diff |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    worst = 0.0
-    for al, be, a, V, z, ax, px, on in FLAT:
-        r = mdr_friction(al, be, a, V, math.inf, zeta=z, a_x=ax, phase_x=px, inplane_on=on)
-        s = float(solve_points(al, be, a, V, zeta=z, a_x=ax, phase_x=px,
-                               inplane_on=on)["mu_ratio"])
-        d = r["mu_ratio"] - s
-        worst = max(worst, abs(d))
-        print(f"| {al:g} | {be:g} | {a:g} | {V:g} | {z:g} | {ax:g} | {px:.4g} | {on} | "
-              f"{r['mu_ratio']:.12f} | {s:.12f} | {d:.1e} |")
-    print(f"\nlargest |diff| {worst:.1e}\n")
-    print("## 2. Reference flat punch: spring row against the 1-D in-plane reference\n")
-    print("| point | row (200 springs, 400 steps) +- bar | 1-D DOP853 +- bar | diff |")
-    print("| --- | --- | --- | --- |")
-    for al, be, a, V, z, ax, px, on in REFERENCE_FLAT:
-        ip = dict(a_x=ax, phase_x=px, inplane_on=on)
-        row = mdr_reference(al, be, a, V, math.inf, transient_periods=200,
-                            average_periods=20, zeta=z, **ip)
-        one = inplane_mean(al, be, a, V, 100, 20, zeta=z, tolerance_check=False, **ip)
-        print(f"| ({al:g}, {be:g}, {a:g}, {V:g}, zeta {z:g}, a_x {ax:g}, {px:g}, {on}) | "
-              f"{row.mu_ratio:.8f} +- {row.mu_error:.1e} | {one.mu_ratio:.8f} +- "
-              f"{one.mu_error:.1e} | {row.mu_ratio - one.mu_ratio:.1e} |")
-    print("\n## 3. MDR solver against the spring-row reference\n")
-    print("Reference: `mdr_reference` at the rows of tests/data/mdr_inplane_reference.json "
-          "(300 + 20 periods), re-run here; solver: `solve_points` at `tol_trusted` "
-          "(1e-5). `ratio` = |diff|/(solver error + reference bar), <= 1 within the bars.\n")
-    print("| point | n | on | solver +- error | reference +- bar | diff | ratio | "
-          "solver s | reference s |")
-    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-    pts = json.loads((ROOT / "tests" / "data" / "mdr_inplane_reference.json").read_text())
-    ratios, t_sol, t_ref = [], [], []
-    for p in pts["points"]:
-        args = (p["alpha"], p["beta"], p["amplitude"], p["v_inertial"], p["zeta"])
-        ts, s = _median_time(lambda args=args, p=p: solve_points(
-            *args, a_x=p["a_x"], phase_x=p["phase_x"],
-            profile_exponent=p["profile_exponent"], inplane_on=p["inplane_on"]))
+    for name, f in SECTIONS.items():
         t0 = time.perf_counter()
-        ref = mdr_reference(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
-                            p["profile_exponent"],
-                            resolutions=tuple(tuple(x) for x in p["resolutions"]),
-                            transient_periods=pts["meta"]["transient_periods"],
-                            average_periods=pts["meta"]["average_periods"], zeta=p["zeta"],
-                            a_x=p["a_x"], phase_x=p["phase_x"], inplane_on=p["inplane_on"])
-        tr = time.perf_counter() - t0
-        mu, err = float(s["mu_ratio"]), float(s["error"])
-        d = mu - ref.mu_ratio
-        ratio = abs(d) / (err + ref.mu_error)
-        ratios.append(ratio)
-        t_sol.append(ts)
-        t_ref.append(tr)
-        print(f"| {p['label']} | {p['profile_exponent']:g} | {p['inplane_on']} | "
-              f"{mu:+.8f} +- {err:.1e} | {ref.mu_ratio:+.8f} +- {ref.mu_error:.1e} | "
-              f"{d:.1e} | {ratio:.2f} | {ts:.3f} | {tr:.2f} |")
-    stiff = next(p for p in pts["points"] if p["label"] == "sphere substrate stiff damped")
-    moves = [mdr_mean(stiff["alpha"], stiff["beta"], stiff["amplitude"], stiff["v_inertial"],
-                      stiff["profile_exponent"], M, steps, 300, 20, zeta=stiff["zeta"],
-                      a_x=stiff["a_x"], phase_x=stiff["phase_x"],
-                      inplane_on=stiff["inplane_on"]).mu_ratio
-             for M, steps in ((100, 200), (200, 400), (400, 800), (800, 1600))]
-    print("\nThe stiff point's reference rows (100, 200) ... (800, 1600): "
-          + ", ".join(f"{m:.8f}" for m in moves) + " (steps "
-          + ", ".join(f"{abs(b - a):.1e}" for a, b in pairwise(moves)) + ")\n")
-    within = sum(r <= 1.0 for r in ratios)
-    print(f"\nwithin the combined bars: {within} of {len(ratios)} (largest ratio "
-          f"{max(ratios):.2f}); time per point median: solver {statistics.median(t_sol):.3f} s,"
-          f" reference {statistics.median(t_ref):.2f} s (its two rows)")
-    _calibration()
+        rows = f()
+        print(section(name, f.__doc__ or "", rows, time.perf_counter() - t0), flush=True)
     if opts.baseline:
         base = subprocess.run(["git", "rev-parse", "--short", opts.baseline],
                               capture_output=True, text=True, cwd=ROOT,
@@ -240,7 +275,7 @@ def main() -> None:
             subprocess.run(["tar", "-x", "-C", tmp], input=archive, check=True)
             old = _bits_in(Path(tmp) / "src")
         new = _bits_in(ROOT / "src")
-        print(f"\n## 5. Without the oscillation: this tree against {base}, bit for bit\n")
+        print(f"## 5. Without the oscillation: this tree against {base}, bit for bit\n")
         print("`mdr_friction` (mu_ratio, error, periods) and `mdr_row` of 20 springs "
               "(mu_ratio, periods, final y, y') at a_x = 0, each tree in a fresh process.\n")
         print("| alpha, beta, a, V, zeta, n | mdr_friction mu_ratio | equal |")

@@ -20,6 +20,7 @@ import math
 import numpy as np
 import pytest
 
+from quoted_numbers import check
 from reference_points import REGIMES, random_points
 from vibrofriction import Dimensionless
 from vibrofriction.bench import from_bench
@@ -113,6 +114,8 @@ def test_gradient_matches_full_solver_differences(compared):
             assert err <= TOL_MU, (r["regime"], r["pt"], k, r["mu"][k], fd[0])
     assert checked >= MIN_PERIODIC, checked
     print(f"\n{checked} periodic points, worst relative disagreement {worst:.1e}")
+    check("tests/solver/test_sensitivity.py",
+          {"worst relative disagreement of d mu / d theta": f"{worst:.1e}"})
 
 
 def test_state_derivative_matches_full_solver_differences(compared):
@@ -128,6 +131,8 @@ def test_state_derivative_matches_full_solver_differences(compared):
             assert err <= TOL_STATE, (r["regime"], r["pt"], k, dz, fd[1:])
     assert n >= 8 * MIN_PERIODIC // 2
     print(f"\n{n} state derivatives, worst disagreement {worst:.1e}")
+    check("tests/solver/test_sensitivity.py",
+          {"worst disagreement of d z* / d theta": f"{worst:.1e}"})
 
 
 def test_every_mode_is_covered(compared):

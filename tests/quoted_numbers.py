@@ -1,0 +1,285 @@
+"""Every deterministic number the docs quote, declared once: the page, the quoted text,
+the script section that computes it and the row (tests/docs/test_quoted_numbers.py
+recomputes the sections and checks the pages and the committed results files;
+tests/solver/test_sensitivity.py checks the numbers its own comparison computes).
+
+A :class:`Quote` names a page, a regular expression that matches the page's text (its
+whitespace collapsed to single spaces) exactly once, with one group per quoted number,
+the source (``"docs_numbers.settling"``: the function ``settling`` of
+``benchmarks/docs_numbers.py``; or a test module) and the quantity of the source's row;
+``field`` picks the numbers out of the row's value (one group per number of ``text``).
+A quoted number agrees when the computed one rounds to it at the digits it shows
+(``1.9`` for 1.87; ``1.6 \\cdot 10^{-6}`` and ``1.6e-6`` alike; ``51,806``); a word
+(a status) must be equal.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+from doctest_numbers import _tolerance
+
+ROOT = Path(__file__).resolve().parents[1]
+_NUM = r"([-+]?[\d.,]+(?:e[-+]?\d+| \\cdot 10\^\{[-+]?\d+\})?)"  # one quoted number
+
+
+@dataclass(frozen=True)
+class Quote:
+    """One or more numbers of a page, computed by one row of a source."""
+
+    page: str  # relative to the repository, e.g. "docs/solver.md"
+    text: str  # regex on the page's text, one group per quoted number
+    source: str  # "script.section", or "tests/<layer>/test_x.py" for a test's own numbers
+    key: str  # the row's quantity
+    field: str = "(.*)"  # regex on the row's value, one group per group of ``text``
+
+
+def n(s: str) -> str:
+    """``text`` with ``#`` standing for one quoted number (a group), the rest literal."""
+    return _NUM.join(re.escape(part) for part in s.split("#"))
+
+
+_DN, _MI = "docs_numbers.", "mdr_inplane_numbers."
+_SENS = "tests/solver/test_sensitivity.py"
+_SHAPE = "mdr_shape_numbers"
+_EQUAL_F = "## flat punch a = {}: A_F = "  # + "...; curved tips at equal A_F", the first
+_FLAT1 = "(0.5, 2, 0.5, 0.3, zeta 0, a_x 0.5, 1, substrate)"
+_FLAT2 = "(1.3, 4, 1.4, 0.8, zeta 0.05, a_x 1.2, 2.5, holder)"
+_FIRST = r"^([^ ,]+)"  # the first word of a row's value
+_STIFF = "stiff contact (mass 0.01): mu_ratio, error, rows, skipped"
+_SLOPE = "slope at (0.01, 1e6), a = {}, vbar 1e-3 (sqrt(4 pi/9) = 1.1816)"
+
+
+def _each(page: str, text: str, source: str, *rows: tuple[str, str]) -> list[Quote]:
+    """One quote per number of ``text``, in order: ``rows`` are their ``(key, field)``,
+    each field with one group."""
+    k = len(rows)
+    return [Quote(page, text, source, key, "()" * i + field + "()" * (k - 1 - i))
+            for i, (key, field) in enumerate(rows)]
+
+
+def _long_budget(beta: str, vbar: str) -> Quote:
+    return Quote("docs/solver.md", n(f"| {beta} | {vbar} | # | # | # | # |"),
+                 _DN + "long_budget", f"beta {beta}, vbar {vbar}",
+                 r"mu/mu0 ([^,]+), periods ([\d,]+), multiplier ([\d.]+), settling ([\d,]+),")
+
+
+def _case_iv_rise(a: str) -> Quote:
+    return Quote("docs/damping.md", n(f"| {a} | # | # | # |"), _DN + "case_iv_rise", f"a = {a}",
+                 r"zeta 0.005: (\S+), zeta 0.02: (\S+), zeta 0.05: (\S+)$")
+
+
+QUOTES: list[Quote] = [
+    # docs/contact_geometry.md, "Using it"
+    Quote("docs/contact_geometry.md", n("`r.mu_ratio = #` (error #, status ") + r"(\w+);",
+          _DN + "contact_geometry_using_it", "sphere (mdr): mu_ratio, error, status",
+          r"^(\S+), (\S+), (\w+)$"),
+    Quote("docs/contact_geometry.md", n("`mean_normal_ratio` #;"),
+          _DN + "contact_geometry_using_it", "sphere (mdr): mean_normal_ratio"),
+    Quote("docs/contact_geometry.md", n("stick, slip, open #, #, # of the disc"),
+          _DN + "contact_geometry_using_it", "sphere (mdr): stick, slip, open area",
+          r"^(\S+), (\S+), (\S+)$"),
+    Quote("docs/contact_geometry.md", n("`r_lin.mu_ratio = #` for the linearised one at the "
+                                        "same $V = #$"),
+          _DN + "contact_geometry_using_it", "linearised: mu_ratio, error", r"^(\S+),.*()$"),
+    Quote("docs/contact_geometry.md", n("at the same $V = #$"), _DN + "contact_geometry_using_it",
+          "V (both)"),
+    Quote("docs/contact_geometry.md", n("it is now periodic, $# \\pm #$ (rows #, #)"),
+          _DN + "contact_geometry_using_it", _STIFF, r"^(\S+), (\S+), \((\d+), (\d+)\)"),
+    # docs/contact_geometry.md, "In-plane oscillation along the sliding"
+    Quote("docs/contact_geometry.md", n("`solve_points` with `a_x` within # at seven points"),
+          _MI + "flat_punch", "largest |diff|"),
+    *_each("docs/contact_geometry.md", n("# and # apart against the row's bars # and #"),
+           _MI + "reference_flat_punch", (_FLAT1, r"diff (\S+)$"), (_FLAT2, r"diff (\S+)$"),
+           (_FLAT1, r"^row \S+ \+- ([^,]+),"), (_FLAT2, r"^row \S+ \+- ([^,]+),")),
+    Quote("docs/contact_geometry.md", n("**# of # within the combined bars**"),
+          _MI + "against_reference", "within the combined bars", r"^(\d+) of (\d+)$"),
+    *_each("docs/contact_geometry.md", n("`|diff|/(error + bar)` at most # (# to # apart; the "
+                                         "solver's errors # to #)"),
+           _MI + "against_reference", ("largest ratio", "(.*)"),
+           ("|diff|, smallest to largest", r"^(\S+) to"),
+           ("|diff|, smallest to largest", r"to (\S+)$"),
+           ("the solver's errors, smallest to largest", r"^(\S+) to"),
+           ("the solver's errors, smallest to largest", r"to (\S+)$")),
+    Quote("docs/contact_geometry.md", n("bar (# from its rows (100, 200) to (200, 400)) was short "
+                                        "(it moves # more to (400, 800))"),
+          _MI + "against_reference", "their steps", r"^([^,]+), ([^,]+),"),
+    Quote("docs/contact_geometry.md", n("(bars median #, largest #;"), _MI + "calibration",
+          "reference bars: median, largest", r"^(\S+), (\S+)$"),
+    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (its errors # to #)"),
+          _MI + "calibration", "|diff|/error: median, largest", r"^(\S+), (\S+)$()()"),
+    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (its errors # to #)"),
+          _MI + "calibration", "the solver's errors, smallest to largest", r"()()^(\S+) to (\S+)$"),
+    *_each("docs/contact_geometry.md", n("agree by chance (#, #; 80 springs: #), and a bar of "
+                                         "their one difference, #, is # short of the "
+                                         "reference's $# \\pm #$"),
+           _MI + "short_bar", ("the solver's row of 20", "(.*)"),
+           ("the solver's row of 40", "(.*)"), ("the solver's row of 80", "(.*)"),
+           ("bar of the difference of the rows 20, 40", "(.*)"),
+           ("row 40 from the reference", "(.*)"), ("reference", r"^(\S+) \+-"),
+           ("reference", r"\+- (\S+) ")),
+    Quote("docs/contact_geometry.md", n("the point gives $# \\pm #$, # off"), _MI + "short_bar",
+          "mdr_friction (two differences)", r"^(\S+) \+- (\S+) ()"),
+    Quote("docs/contact_geometry.md", n("the point gives $# \\pm #$, # off"), _MI + "short_bar",
+          "mdr_friction from the reference", r"()()(.*)"),
+    # docs/contact_geometry.md, "How much the shape matters"
+    Quote("docs/contact_geometry.md", n("is a sphere at $a = #$ and a cone at `#`; the jumping"),
+          _SHAPE, _EQUAL_F.format("0.5") + "\na: flat punch", r"sphere (\S+) .* cone (\S+) "),
+    Quote("docs/contact_geometry.md", n("the jumping flat punch $a = 1.5$ ($A_F = #$)"), _SHAPE,
+          _EQUAL_F.format("0.5") + "\n## flat punch a = 1.5: A_F = ", r"^([^;]+);"),
+    Quote("docs/contact_geometry.md", n("is a sphere at $a = #$ and a cone at `#`: **at equal"),
+          _SHAPE, _EQUAL_F.format("1.5") + "\na: flat punch", r"sphere (\S+) .* cone (\S+) "),
+    Quote("docs/contact_geometry.md", n("(flat #, sphere #, cone #: the smallest force"), _SHAPE,
+          _EQUAL_F.format("0.5") + "\na: flat punch",
+          r"static (\S+)\), sphere .* static (\S+)\), .* static (\S+)\)$"),
+    *(Quote("docs/contact_geometry.md", n(text), _SHAPE, f"{_EQUAL_F.format(a)}\n{line}",
+            r"^(\S+) \| (\S+) \| (\S+) \|")
+      for a, text, line in (
+          ("0.5", "stiff $x = 5$: flat #, sphere #, cone #;", "| stiff (0.01, 0.02) | 5 | "),
+          ("0.5", "soft $x = 0.05$: #, #, #;", "| soft (0.01, 40) | 0.05 | "),
+          ("0.5", "resonant $x = 1$: #, #, #;", "| resonant (1, 3) | 1 | "),
+          ("1.5", "stiff $x = 45$: flat #, sphere #, cone #;", "| stiff (0.01, 0.02) | 45 | "),
+          ("1.5", "soft $x = 0.15$: #, #, #;", "| soft (0.01, 40) | 0.15 | "),
+          ("1.5", "resonant $x = 0.2$: #, #, # (", "| resonant (1, 3) | 0.2 | "),
+          ("1.5", "(and still #, #, # at $x = 3$", "| resonant (1, 3) | 3 | "))),
+    Quote("docs/contact_geometry.md", n("e.g. stiff $x = 15$: #, #, #; with jumping"), _SHAPE,
+          "## flat punch a = 0.5: A_F = 0.5000; curved tips at equal indentation amplitude a\n"
+          "| stiff (0.01, 0.02) | 15 | ", r"^(\S+) \| (\S+) \| (\S+) \|"),
+    # docs/contact_geometry.md, "Continuous sliding"
+    *(Quote("docs/contact_geometry.md", n(f"| $a = {a}$ | #{eq} | # | # | # |"),
+            "mdr_critical_numbers", f"| (0.5, 2) (0.5, 2) | {a} | ",
+            r"^(\S+) \(\S+\) \| (\S+) \(\S+\) \| (\S+) \(\S+\) \| (\S+) \(")
+      for a, eq in (("0.2", ""), ("0.5", ""), ("1.5", " (eq. 12: 2.0)"))),
+    # docs/solver.md
+    Quote("docs/solver.md", n("re-solves the orbit each time), worst relative disagreement #;"),
+          _SENS, "worst relative disagreement of d mu / d theta"),
+    Quote("docs/solver.md", n("the differences of the solver's final section state, worst #"),
+          _SENS, "worst disagreement of d z* / d theta"),
+    *_each("docs/solver.md", n("`multiplier = #`, $\\mu = #$, error #, and needs about # periods"),
+           _DN + "settling", ("multiplier", "(.*)"), ("mu/mu0", "(.*)"), ("error", "(.*)"),
+           ("settling_periods", "(.*)")),
+    Quote("docs/solver.md", n("(`tests/solver/test_solver_physics.py`; # at $\\beta = 2"),
+          _DN + "near_alpha_one", "max |mu(1 +- 1e-9) - mu(1)| at V = 0.5, 1, 3"),
+    Quote("docs/solver.md", n("(# at $\\alpha = 1000, \\beta = 10^4$"), _DN + "stiff_contacts",
+          "alpha 1000, beta 10000: |mu - mu(rigid)| <="),
+    *_each("docs/solver.md", n("work # periods at $\\bar v = 0.02$, #-# at the others, # at "
+                               "$\\bar v = 0.016$"),
+           _DN + "near_beta_one_default", ("beta 1.01, vbar 0.02", r"work ([\d,]+),"),
+           ("work at the others: least-most", r"^(\d+)-"),
+           ("work at the others: least-most", r"-(\d+)$"),
+           ("beta 1.01, vbar 0.016", r"work ([\d,]+),")),
+    Quote("docs/solver.md", n("estimates from the multiplier (# to # periods"),
+          _DN + "near_beta_one_default", "settling: least, most", r"^(\S+) to (\S+)$"),
+    *(_long_budget(beta, vbar) for beta, vbar in (("1.01", "0.016"), ("1.01", "0.02"),
+                                                  ("1.01", "0.04"), ("1.01", "0.064"),
+                                                  ("1.02", "0.05"), ("1.005", "0.02"))),
+    Quote("docs/solver.md", n("effect of a loss factor just above the floor is at most $#"),
+          _DN + "loss_factor_floor", "max |mu(eta_c) - mu(0)| / eta_c, eta_c = 1.5e-6, 1e-5"),
+    # docs/damping.md
+    *_each("docs/damping.md", n("gives $V_c = #$; the solver has $\\mu = #$ at $0.9 V_c$ and "
+                                "$\\mu = #$ at $1.02 V_c$"),
+           _DN + "case_iii_damped", ("V_c", "(.*)"), ("mu/mu0 at 0.9 V_c", "(.*)"),
+           ("mu/mu0 at 1.02 V_c", r"^(\S+) \(sliding\)$")),
+    *(_case_iv_rise(a) for a in ("0.2", "0.5", "1.0", "1.5")),
+    *_each("docs/damping.md", n("linearly in $\\alpha$: #, #, # for"), _DN + "stiff_exact_law",
+           *((f"solver vs exact law, (alpha, beta) = ({alpha}, {beta})",
+              r"^(\S+) \(trusted: True\)")
+             for alpha, beta in (("0.01", "0.02"), ("0.001", "0.002"), ("0.0001", "0.0002")))),
+    Quote("docs/damping.md", n("differs from the exact law by at most $# a$**, near $\\bar v "
+                               "= #$"),
+          _DN + "stiff_exact_law", "max |eq. 26 - exact| / a, a = 1.0", r"^(\S+) at vbar (\S+)$"),
+    Quote("docs/damping.md", n("measured effect on $\\mu$ of a loss factor just above that floor "
+                               "is at most $#"),
+          _DN + "loss_factor_floor", "max |mu(eta_c) - mu(0)| / eta_c, eta_c = 1.5e-6, 1e-5"),
+    # docs/figures.md
+    *_each("docs/figures.md", n("`mu/mu0` = #, #, #, #, #, #, # for `zeta` = 0, 1e-5, 1e-4"),
+           _DN + "fig13_zeta_series",
+           *((f"zeta {zeta}", r"^(\S+) \(periodic, trusted True\)$")
+             for zeta in ("0", "1e-05", "0.0001", "0.0003", "0.001", "0.003", "0.01"))),
+    Quote("docs/figures.md", n("the point `vbar = 0.02` converges to `mu/mu0 = #`"),
+          _DN + "long_budget", "beta 1.01, vbar 0.02", r"mu/mu0 ([^,]+),"),
+    Quote("docs/figures.md", n("and settles after about # periods (`long_budget`"),
+          _DN + "long_budget", "beta 1.01, vbar 0.02", r"settling ([\d,]+),"),
+    # docs/theory.md
+    Quote("docs/theory.md", n("|\\alpha - 1|) = #$ at (0.01, 400.01)"),
+          _DN + "critical_velocity_limits", "v0*/v0*_soft at (0.01, 400.01)"),
+    Quote("docs/theory.md", n("|\\alpha - 1| = #$ at (0.01, 0.02)"),
+          _DN + "critical_velocity_limits", "v0*/v0*_stiff at (0.01, 0.02)"),
+    Quote("docs/theory.md", n("deeper in the soft limit, (0.01, 1e4): #;"), _DN + "soft_limit",
+          "max |numerics - eq. 27 corrected| at (0.01, 1e4)"),
+    Quote("docs/theory.md", n("and # at $\\beta = 10^4$"), _DN + "soft_limit",
+          "least-squares exponent at (0.01, 1e4)"),
+    *(Quote("docs/theory.md", n("(# measured at $\\beta = 10^6$, vbar = 1e-3, a = 0.5 and 1)"),
+            _DN + "soft_limit", _SLOPE.format(a)) for a in ("0.5", "1.0")),
+    *_each("docs/theory.md", n("at a = 1.5 $\\mu/\\mu_0$ is # at V = 0.05 and # at V = 0.1 for "
+                               "(0.2, 1), reaching 1 only at V = # (# for alpha = 0.01;"),
+           _DN + "case_iii_jumping", ("(alpha, beta) = (0.2, 1)", r"mu/mu0 (\S+) at V = 0.05"),
+           ("(alpha, beta) = (0.2, 1)", r"(\S+) at V = 0.1;"),
+           ("(alpha, beta) = (0.2, 1)", r"= 1 from V = (\S+)$"),
+           ("(alpha, beta) = (0.01, 1)", r"= 1 from V = (\S+)$")),
+    Quote("docs/theory.md", n("where the numerics give # and # (deviation"),
+          _DN + "case_iv_plateau", "plateau (exact tau*) a = 1.5, 2, 5, 1e6", r"^(\S+), (\S+),"),
+    Quote("docs/theory.md", n("(Section 6): # (a = 1.5), # (2), # (5), and tends to # for"),
+          _DN + "case_iv_plateau", "plateau (exact tau*) a = 1.5, 2, 5, 1e6",
+          r"^(\S+), (\S+), (\S+), (\S+)$"),
+    Quote("docs/theory.md", n("the approximation tends to $1 - \\pi/4 = #$"),
+          _DN + "case_iv_plateau", "small-tau* approximation, a = 1e6"),
+    Quote("docs/theory.md", n("within 1e-3 of the plateau for V >= # (a = 0.2), # (0.5), # (0.8), "
+                              "# (1), # (1.5), # (2)"),
+          _DN + "case_iv_plateau", "within 1e-3 of the plateau from",
+          r"a = 0.2: V >= (\S+), a = 0.5: V >= (\S+), a = 0.8: V >= (\S+), a = 1.0: V >= (\S+), "
+          r"a = 1.5: V >= (\S+), a = 2.0: V >= (\S+)$"),
+]
+
+
+def _number(s: str) -> tuple[float, float] | None:
+    """The value of a quoted or computed number and half a unit of its last digit, or
+    None for a word."""
+    plain = re.sub(r" \\cdot 10\^\{([-+]?\d+)\}", r"e\1", s.replace(",", "").strip())
+    if not re.fullmatch(r"[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?", plain):
+        return None
+    return float(plain), _tolerance(plain)
+
+
+@cache
+def page_text(page: str) -> str:
+    """The page's text, whitespace collapsed to single spaces."""
+    return " ".join((ROOT / page).read_text().split())
+
+
+def disagreements(quote: Quote, rows: dict[str, str]) -> list[str]:
+    """What is wrong with ``quote`` given its source's rows ``{quantity: value}``: each
+    problem named by page, quantity, quoted and computed value (empty: it agrees)."""
+    where = f"{quote.page} ({quote.source}, {quote.key!r})"
+    found = list(re.finditer(quote.text, page_text(quote.page)))
+    if len(found) != 1:
+        return [f"{where}: the quoted text {quote.text!r} is found {len(found)} times "
+                "(it must be found once)"]
+    if quote.key not in rows:
+        return [f"{where}: the source has no row {quote.key!r} (it has {sorted(rows)})"]
+    computed = re.search(quote.field, rows[quote.key])
+    if computed is None or len(computed.groups()) != len(found[0].groups()):
+        return [f"{where}: the row's value {rows[quote.key]!r} does not match the field "
+                f"{quote.field!r} with one group per quoted number"]
+    out = []
+    for shown, value in zip(found[0].groups(), computed.groups(), strict=True):
+        if value == "":  # a group of another quote of the same text
+            continue
+        q, c = _number(shown), _number(value)
+        ok = (shown == value if q is None or c is None
+              else abs(c[0] - q[0]) <= q[1])
+        if not ok:
+            out.append(f"{where}: the page quotes {shown}, the source computes {value}")
+    return out
+
+
+def check(source: str, rows: dict[str, str]) -> None:
+    """Assert that every quote of ``source`` agrees with ``rows`` (for a test that computes
+    quoted numbers itself)."""
+    quotes = [q for q in QUOTES if q.source == source and q.key in rows]
+    assert quotes, f"no quote has the source {source} and a key of {sorted(rows)}"
+    problems = [p for q in quotes for p in disagreements(q, rows)]
+    assert not problems, "\n".join(problems)
