@@ -245,6 +245,19 @@ def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t):
 
 
 @jit
+def _scan_bounds(dc, ddc, m, T, w, k, a, V):
+    """``(L_m, L_v, M_m, M_v)``: bounds on ``[0, T]`` of the groups' first derivatives
+    (margins: ``|f'| <= w a + k (|y'| + |V|)``; slip velocities: ``|y''| + w a/k``), for the
+    scan's longer steps, and of their second derivatives (margins: ``|f''| <= w a +
+    k |y''|``; slip velocities: ``|y'''| + w a/k``), for :func:`_first_crossing`; ``dc``,
+    ``ddc`` the coefficients of ``y'``, ``y''``.
+    """
+    s2 = sup_bound(ddc, m, T)
+    return (w * a + k * (sup_bound(dc, m, T) + abs(V)), s2 + w * a / k, w * a + k * s2,
+            sup_bound(derivative(ddc, m), m, T) + w * a / k)
+
+
+@jit
 def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, fa, da,
                     tb, fb, db, m2, tol, stk):
     """The earliest sign change of a group's event function ``f`` on ``[ta, tb]`` (values
@@ -714,15 +727,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             t_ev = 0.0
         else:
             h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
-            # bounds on the segment of the groups' first derivatives (margins:
-            # |f'| <= w a + k (|y'| + |V|); slip velocities: |y''| + w a/k), for the
-            # longer steps, and of their second derivatives (margins: |f''| <= w a +
-            # k |y''|; slip velocities: |y'''| + w a/k), for _first_crossing
-            s2 = sup_bound(ddc, m, T)
-            lb_m = w * a + k * (sup_bound(dc, m, T) + abs(V))
-            lb_v = s2 + w * a / k
-            m2_m = w * a + k * s2
-            m2_v = sup_bound(derivative(ddc, m), m, T) + w * a / k
+            lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, k, a, V)
             ta = 0.0
             while ta < T and not scanned:
                 step = h
@@ -761,9 +766,17 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                         scanned = True
                     elif (fa > 0.0 or ta == 0.0) and not (clear and f > 0.0):
                         # the earliest root on [ta, tb], none missed (a dip below 0 and
-                        # back within the sub-step included)
-                        tl = tol_s if j < 2 else tol_v
+                        # back within the sub-step included); the tests of
+                        # _first_crossing on the whole sub-step first, inline
                         m2 = m2_m if j < 2 else m2_v
+                        hh = 0.5 * (tb - ta)
+                        dip = 0.5 * m2 * hh * hh
+                        if f > 0.0 and fa > 0.0 and (min(fa, f) > dip or (
+                                fa + gslope[j] * hh > dip and f - d * hh > dip)):
+                            gprev[j] = f
+                            gslope[j] = d
+                            continue
+                        tl = tol_s if j < 2 else tol_v
                         tq, fq, dq, tr, fr, dr = _first_crossing(
                             c, dc, ddc, m, cs, j, cp, cm, w, k, a, V, y, cth, sth, ta, fa,
                             gslope[j], tb, f, d, m2, tl, stk)
