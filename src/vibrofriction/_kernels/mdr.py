@@ -69,6 +69,9 @@ import math
 import numpy as np
 
 from .basis import (
+    EXP,
+    OSC,
+    _u_bound,
     basis_values,
     derivative,
     dot,
@@ -76,7 +79,6 @@ from .basis import (
     integral,
     integral_basis,
     make_mode,
-    sup_bound,
 )
 from .codes import FLIGHT, SLIP_NEG, SLIP_POS, STICK
 from .jit import jit
@@ -245,16 +247,39 @@ def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t):
 
 
 @jit
+def _sup(c, m, T, u):
+    """:func:`.basis.sup_bound` of ``c`` on ``[0, T]`` (no relaxation term), ``u`` the
+    bound of the responses ``|C + i S|`` (:func:`.basis._u_bound`), square roots for
+    ``hypot`` (the bound's own margin of 1e-12 covers their rounding).
+    """
+    b = max(abs(c[0]), abs(c[0] + c[1] * T)) + math.sqrt(c[2] * c[2] + c[3] * c[3])
+    if u != 0.0:
+        b += math.sqrt(c[6] * c[6] + c[7] * c[7]) * u
+    D, E = c[4], c[5]
+    if m[0] == EXP:
+        b += abs(D) + abs(E)
+    elif m[0] == OSC:
+        q = m[3]
+        b += min(math.sqrt(D * D + (E / q) * (E / q)), abs(D) + abs(E) * T)
+    else:
+        b += abs(D) + abs(E) * T
+    return b * (1.0 + 1e-12)
+
+
+@jit
 def _scan_bounds(dc, ddc, m, T, w, k, a, V):
     """``(L_m, L_v, M_m, M_v)``: bounds on ``[0, T]`` of the groups' first derivatives
     (margins: ``|f'| <= w a + k (|y'| + |V|)``; slip velocities: ``|y''| + w a/k``), for the
     scan's longer steps, and of their second derivatives (margins: ``|f''| <= w a +
     k |y''|``; slip velocities: ``|y'''| + w a/k``), for :func:`_first_crossing`; ``dc``,
-    ``ddc`` the coefficients of ``y'``, ``y''``.
+    ``ddc`` the coefficients of ``y'``, ``y''`` (the bounds of :func:`.basis.sup_bound`).
     """
-    s2 = sup_bound(ddc, m, T)
-    return (w * a + k * (sup_bound(dc, m, T) + abs(V)), s2 + w * a / k, w * a + k * s2,
-            sup_bound(derivative(ddc, m), m, T) + w * a / k)
+    u = 0.0
+    if dc[6] != 0.0 or dc[7] != 0.0 or ddc[6] != 0.0 or ddc[7] != 0.0:
+        u = _u_bound(m, T)
+    s2 = _sup(ddc, m, T, u)
+    return (w * a + k * (_sup(dc, m, T, u) + abs(V)), s2 + w * a / k, w * a + k * s2,
+            _sup(derivative(ddc, m), m, T, u) + w * a / k)
 
 
 @jit
@@ -266,7 +291,8 @@ def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t
     whose ends are positive holds no root where ``min(fa, fb) > m2 h^2/8`` (the linear
     interpolant's error) or where the tangent parabolas from its ends stay positive up to
     its midpoint; a piece ending at or below 0 holds one root where ``f`` is monotone
-    (``-da > m2 h``); other pieces are bisected, leftmost first, down to the width at
+    (``f' <= min(da + m2 (t - ta), db + m2 (tb - t)) < 0``: ``da + db + m2 h < 0``); other
+    pieces are bisected, leftmost first, down to the width at
     which ``m2 h^2/8 <= tol``: a dip of at most ``tol`` (round-off) there is a touch, not
     an event. ``stk``: scratch of right ends ``(t, f, f')``.
 
@@ -286,7 +312,7 @@ def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t
         q = 0.125 * m2 * h * h
         last = q <= tol or top >= stk.shape[0] - 1
         if fb <= 0.0:
-            if fa <= 0.0 or (da < 0.0 and -da > m2 * h) or last:
+            if fa <= 0.0 or da + db + m2 * h < 0.0 or last:
                 return ta, fa, da, b, fb, db
         else:
             hh = 0.5 * h
