@@ -41,15 +41,23 @@ its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
 
 These four group functions are scanned on sub-steps of the segment (``2 pi/substeps`` or
 ``0.5/sqrt(alpha + K)``, longer where each group's value over a bound of its derivative on
-the segment shows it cannot reach 0 within the step), a sign change is refined to
-round-off (Newton steps in the bracket, Illinois as fallback), and the earliest root ends
-the segment (a scan costs O(1), not
-O(springs); switching groups as a whole, not spring by spring at round-off distances,
-removed the stalls of the first version). A dip below
-zero shorter than a sub-step is not seen (a grazing event); that is the method's only
-approximation besides round-off. A group that has just switched starts at its root, so in
-its first sub-step it is also probed nearer the start (a spring touching down stuck may
-slip again within the sub-step).
+the segment shows it cannot reach 0 within the step), and no root is missed
+(:func:`_first_crossing`, as the flat punch's :func:`.roots.first_root`): a sub-step whose
+ends are positive is proven free of roots by a bound ``M`` of the function's second
+derivative on the segment (:func:`_scan_bounds`; the linear interpolant's error
+``M h^2/8``, or the tangent parabolas from both ends), else bisected, leftmost first, so a
+dip below zero and back within a sub-step (a pair of close roots, a grazing event) is
+found; the bisection stops where ``M h^2/8`` falls to the round-off tolerance (``1e-12`` of
+the function's scale), so a dip shallower than that counts as a touch. The earliest sign
+change is refined to round-off (Newton steps in the bracket, Illinois as fallback) and
+ends the segment (a scan costs O(1), not O(springs); switching groups as a whole, not
+spring by spring at round-off distances, removed the stalls of the first version). A group
+that has just switched starts at its root, so a sign change in its first sub-step is
+bracketed by a positive value nearer the start (where the start's slope guarantees one,
+``f >= f'(0) t - M t^2/2``, then at halvings of the step: a spring touching down stuck may
+slip again within the sub-step); a rise shorter than 1/4096 of the sub-step that the
+start's slope does not guarantee is the one case still passed over (a group still below 0
+at the next segment's start switches there).
 
 Each spring's state is one of the package's contact states (:mod:`.codes`, from
 ``vibrofriction.schema.ContactState``): ``STICK``, ``SLIP_POS``, ``SLIP_NEG`` or ``FLIGHT``
