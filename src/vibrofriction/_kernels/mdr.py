@@ -55,7 +55,7 @@ spring by spring at round-off distances, removed the stalls of the first version
 that has just switched starts at its root, so a sign change in its first sub-step is
 bracketed by a positive value nearer the start (where the start's slope guarantees one,
 ``f >= f'(0) t - M t^2/2``, then at halvings of the step: a spring touching down stuck may
-slip again within the sub-step); a rise shorter than 1/4096 of the sub-step that the
+slip again within the sub-step); a rise shorter than 1/65536 of the sub-step that the
 start's slope does not guarantee is the one case still passed over (a group still below 0
 at the next segment's start switches there).
 
@@ -823,7 +823,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                             # m2 t^2/2, then halving); none: no event
                             t0_, f0_, d0_ = tr, fr, dr
                             tr = -1.0
-                            for it in range(13):
+                            for it in range(17):
                                 if it == 0:
                                     tp_ = dq / m2 if dq > 0.0 else 0.0
                                     if not 0.0 < tp_ < t0_:
