@@ -41,15 +41,23 @@ its integral over a period is 0 (the period's ``int sum f_i`` keeps its form).
 
 These four group functions are scanned on sub-steps of the segment (``2 pi/substeps`` or
 ``0.5/sqrt(alpha + K)``, longer where each group's value over a bound of its derivative on
-the segment shows it cannot reach 0 within the step), a sign change is refined to
-round-off (Newton steps in the bracket, Illinois as fallback), and the earliest root ends
-the segment (a scan costs O(1), not
-O(springs); switching groups as a whole, not spring by spring at round-off distances,
-removed the stalls of the first version). A dip below
-zero shorter than a sub-step is not seen (a grazing event); that is the method's only
-approximation besides round-off. A group that has just switched starts at its root, so in
-its first sub-step it is also probed nearer the start (a spring touching down stuck may
-slip again within the sub-step).
+the segment shows it cannot reach 0 within the step), and no root is missed
+(:func:`_first_crossing`, as the flat punch's :func:`.roots.first_root`): a sub-step whose
+ends are positive is proven free of roots by a bound ``M`` of the function's second
+derivative on the segment (:func:`_scan_bounds`; the linear interpolant's error
+``M h^2/8``, or the tangent parabolas from both ends), else bisected, leftmost first, so a
+dip below zero and back within a sub-step (a pair of close roots, a grazing event) is
+found; the bisection stops where ``M h^2/8`` falls to the round-off tolerance (``1e-12`` of
+the function's scale), so a dip shallower than that counts as a touch. The earliest sign
+change is refined to round-off (Newton steps in the bracket, Illinois as fallback) and
+ends the segment (a scan costs O(1), not O(springs); switching groups as a whole, not
+spring by spring at round-off distances, removed the stalls of the first version). A group
+that has just switched starts at its root, so a sign change in its first sub-step is
+bracketed by a positive value nearer the start (where the start's slope guarantees one,
+``f >= f'(0) t - M t^2/2``, then at halvings of the step: a spring touching down stuck may
+slip again within the sub-step); a rise shorter than 1/65536 of the sub-step that the
+start's slope does not guarantee is the one case still passed over (a group still below 0
+at the next segment's start switches there).
 
 Each spring's state is one of the package's contact states (:mod:`.codes`, from
 ``vibrofriction.schema.ContactState``): ``STICK``, ``SLIP_POS``, ``SLIP_NEG`` or ``FLIGHT``
@@ -69,6 +77,9 @@ import math
 import numpy as np
 
 from .basis import (
+    EXP,
+    OSC,
+    _u_bound,
     basis_values,
     derivative,
     dot,
@@ -76,7 +87,6 @@ from .basis import (
     integral,
     integral_basis,
     make_mode,
-    sup_bound,
 )
 from .codes import FLIGHT, SLIP_NEG, SLIP_POS, STICK
 from .jit import jit
@@ -229,6 +239,104 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
             dt = 2.0 * res if f > 0.0 else -2.0 * res
         t = t + dt
     return tb
+
+
+@jit
+def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t):
+    """A group's event function and its derivative at ``t`` (:func:`_group_value`,
+    :func:`_group_slope`).
+    """
+    b = basis_values(m, t, cs, False)
+    ct = cth * b[2] - sth * b[3]
+    st = sth * b[2] + cth * b[3]
+    yd = dot(dc, b)
+    return (_group_value(kind, cp, cm, w, k, a, V, dot(c, b), yd, y0, t, ct, st),
+            _group_slope(kind, w, k, a, V, yd, dot(ddc, b), ct, st))
+
+
+@jit
+def _sup(c, m, T, u):
+    """:func:`.basis.sup_bound` of ``c`` on ``[0, T]`` (no relaxation term), ``u`` the
+    bound of the responses ``|C + i S|`` (:func:`.basis._u_bound`), square roots for
+    ``hypot`` (the bound's own margin of 1e-12 covers their rounding).
+    """
+    b = max(abs(c[0]), abs(c[0] + c[1] * T)) + math.sqrt(c[2] * c[2] + c[3] * c[3])
+    if u != 0.0:
+        b += math.sqrt(c[6] * c[6] + c[7] * c[7]) * u
+    D, E = c[4], c[5]
+    if m[0] == EXP:
+        b += abs(D) + abs(E)
+    elif m[0] == OSC:
+        q = m[3]
+        b += min(math.sqrt(D * D + (E / q) * (E / q)), abs(D) + abs(E) * T)
+    else:
+        b += abs(D) + abs(E) * T
+    return b * (1.0 + 1e-12)
+
+
+@jit
+def _scan_bounds(dc, ddc, m, T, w, k, a, V):
+    """``(L_m, L_v, M_m, M_v)``: bounds on ``[0, T]`` of the groups' first derivatives
+    (margins: ``|f'| <= w a + k (|y'| + |V|)``; slip velocities: ``|y''| + w a/k``), for the
+    scan's longer steps, and of their second derivatives (margins: ``|f''| <= w a +
+    k |y''|``; slip velocities: ``|y'''| + w a/k``), for :func:`_first_crossing`; ``dc``,
+    ``ddc`` the coefficients of ``y'``, ``y''`` (the bounds of :func:`.basis.sup_bound`).
+    """
+    u = 0.0
+    if dc[6] != 0.0 or dc[7] != 0.0 or ddc[6] != 0.0 or ddc[7] != 0.0:
+        u = _u_bound(m, T)
+    s2 = _sup(ddc, m, T, u)
+    return (w * a + k * (_sup(dc, m, T, u) + abs(V)), s2 + w * a / k, w * a + k * s2,
+            _sup(derivative(ddc, m), m, T, u) + w * a / k)
+
+
+@jit
+def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, fa, da,
+                    tb, fb, db, m2, tol, stk):
+    """The earliest sign change of a group's event function ``f`` on ``[ta, tb]`` (values
+    ``fa``, ``fb`` and slopes ``da``, ``db`` at the ends), never missed, as in
+    :func:`.roots.first_root`: with ``m2`` a bound of ``|f''|`` on the interval, a piece
+    whose ends are positive holds no root where ``min(fa, fb) > m2 h^2/8`` (the linear
+    interpolant's error) or where the tangent parabolas from its ends stay positive up to
+    its midpoint; a piece ending at or below 0 holds one root where ``f`` is monotone
+    (``f' <= min(da + m2 (t - ta), db + m2 (tb - t)) < 0``: ``da + db + m2 h < 0``); other
+    pieces are bisected, leftmost first, down to the width at
+    which ``m2 h^2/8 <= tol``: a dip of at most ``tol`` (round-off) there is a touch, not
+    an event. ``stk``: scratch of right ends ``(t, f, f')``.
+
+    Returns ``(tl, fl, dl, tr, fr, dr)``: the earliest bracket, ``fl > 0 >= fr``, or, where the
+    left end is not positive (a group at its root at the segment's start), the first right
+    end at or below 0; ``tr = -1``: no root.
+    """
+    stk[0, 0] = tb
+    stk[0, 1] = fb
+    stk[0, 2] = db
+    top = 0
+    while top >= 0:
+        b = stk[top, 0]
+        fb = stk[top, 1]
+        db = stk[top, 2]
+        h = b - ta
+        q = 0.125 * m2 * h * h
+        last = q <= tol or top >= stk.shape[0] - 1
+        if fb <= 0.0:
+            if fa <= 0.0 or da + db + m2 * h < 0.0 or last:
+                return ta, fa, da, b, fb, db
+        else:
+            hh = 0.5 * h
+            dip = 0.5 * m2 * hh * hh
+            if last or min(fa, fb) > q or (fa + da * hh - dip > 0.0
+                                           and fb - db * hh - dip > 0.0):
+                ta, fa, da = b, fb, db
+                top -= 1
+                continue
+        t = 0.5 * (ta + b)
+        f, d = _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t)
+        top += 1
+        stk[top, 0] = t
+        stk[top, 1] = f
+        stk[top, 2] = d
+    return ta, fa, da, -1.0, 0.0, 0.0
 
 
 # the columns of a recorded sample (:func:`run_periods`' ``rec``): the body's ``y``, ``y'``,
@@ -533,7 +641,8 @@ def _row_setup(a, n_exp, M):
 def _scratch(M):
     """Work arrays of :func:`_period`: the max-trees (``P`` leaves, a stack for their
     search), each state's members, the running sums, ``eh``, the springs switched at the
-    last event, buffers; the four groups' values, roots and flags.
+    last event, buffers; the four groups' values, roots and flags, their slopes and the
+    stack of :func:`_first_crossing`.
     """
     P = 1
     while P < M:
@@ -546,7 +655,8 @@ def _scratch(M):
             np.zeros(4, dtype=np.int64), np.zeros(M, dtype=np.int64), np.zeros(5),
             np.zeros(M), np.zeros(M, dtype=np.int64), np.zeros(M, dtype=np.int64),
             np.zeros(M, dtype=np.bool_), np.zeros(M), np.zeros(4), np.zeros(4),
-            np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_))
+            np.zeros(4, dtype=np.bool_), np.zeros(4, dtype=np.bool_), np.zeros(4),
+            np.zeros((64, 3)))
 
 
 @jit
@@ -558,7 +668,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
     """
     g, w, dxi, tau_off, tau_on, area, nint, ev_ph, ev_i, ev_on = geo
     (P, stack, tp, tm, memb, cnt, pos, sums, eh, fl, buf, taken, e_cur, gprev, groot, gon,
-     gfresh) = scr
+     gfresh, gslope, stk) = scr
     k = (beta - alpha) * dxi
     tol_c = 1e-11 * w * (2.0 + a)
     tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
@@ -630,39 +740,35 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
         # values at the start; a group at or past its event (not just switched)
         # switches now
         tol_v = 1e-12 * (abs(yd) + abs(V) + w * a / k)
+        ddc = derivative(dc, m)
+        b = basis_values(m, 0.0, cs, False)
+        ydd = dot(ddc, b)
         immediate = False
         for j in range(4):
             groot[j] = np.inf
             if not gon[j]:
                 continue
             gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, cth, sth)
+            gslope[j] = _group_slope(j, w, k, a, V, yd, ydd, cth, sth)
             tl = tol_s if j < 2 else tol_v
             if not gfresh[j] and gprev[j] < -tl:
                 groot[j] = 0.0
                 immediate = True
         t_ev = T
         t_b = -1.0  # the last scan point (its basis values b)
-        b = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
         scanned = immediate
         if scanned:
             t_ev = 0.0
         else:
             h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
-            lb_m = -1.0  # the bounds of the groups' derivatives, once needed
-            lb_v = 0.0
+            lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, k, a, V)
             ta = 0.0
             while ta < T and not scanned:
                 step = h
-                if ta > 0.0 and lb_m < 0.0 and T - ta > 4.0 * h:
+                if ta > 0.0:
                     # a longer step where no group can reach 0 within it: each group's
-                    # value over a bound of its derivative on the segment (margins:
-                    # |f'| <= w a + k (|y'| + |V|); slip velocities: |y''| + w a/k);
-                    # never shorter than the fixed sub-step h, so the scan is at least as
-                    # fine as the fixed one everywhere (bounds only where the segment has
-                    # more than a few sub-steps left)
-                    lb_m = w * a + k * (sup_bound(dc, m, T) + abs(V))
-                    lb_v = sup_bound(derivative(dc, m), m, T) + w * a / k
-                if ta > 0.0 and lb_m >= 0.0:
+                    # value over the bound of its derivative; never shorter than the
+                    # fixed sub-step h
                     hs_ = np.inf
                     for j in range(4):
                         if gon[j]:
@@ -671,10 +777,12 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                                 hs_ = hj
                     if hs_ > step:
                         step = hs_
+                clear = step > h  # every group positive on [ta, tb) by that bound
                 tb = min(T, ta + step)
                 b = basis_values(m, tb, cs, False)
                 yb = dot(c, b)
                 ydb = dot(dc, b)
+                yddb = dot(ddc, b)
                 ctau = cth * b[2] - sth * b[3]
                 stau = sth * b[2] + cth * b[3]
                 best = T
@@ -682,40 +790,62 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                     if not gon[j]:
                         continue
                     f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, ctau, stau)
+                    d = _group_slope(j, w, k, a, V, ydb, yddb, ctau, stau)
                     if j < 2 and f > 0.0 and -f > viol:
                         viol = -f
                     fa = gprev[j]
-                    tq = ta
-                    if f <= 0.0 and fa <= 0.0 and ta == 0.0 and gfresh[j]:
-                        # a group that has just switched (its function at 0) can rise
-                        # and fall back within the first sub-step (a spring touching
-                        # down stuck, slipping again 0.002 later): a positive value
-                        # nearer the start brackets that root
-                        tl = tol_s if j < 2 else tol_v
-                        tp_ = tb
-                        for _ in range(12):
-                            tp_ *= 0.5
-                            bp = basis_values(m, tp_, cs, False)
-                            fp = _group_value(j, cp, cm, w, k, a, V, dot(c, bp),
-                                              dot(dc, bp), y, tp_,
-                                              cth * bp[2] - sth * bp[3],
-                                              sth * bp[2] + cth * bp[3])
-                            if fp > tl:
-                                fa = fp
-                                tq = tp_
-                                break
                     if f <= 0.0 and fa <= 0.0 and ta == 0.0 and not gfresh[j]:
                         groot[j] = 0.0  # at its event within round-off, and leaving
                         best = 0.0
                         scanned = True
-                    elif f <= 0.0 and fa > 0.0:
-                        r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, cth,
-                                          sth, tq, tb, fa, f)
-                        groot[j] = r
-                        if r < best:
-                            best = r
-                        scanned = True
+                    elif (fa > 0.0 or ta == 0.0) and not (clear and f > 0.0):
+                        # the earliest root on [ta, tb], none missed (a dip below 0 and
+                        # back within the sub-step included); the tests of
+                        # _first_crossing on the whole sub-step first, inline
+                        m2 = m2_m if j < 2 else m2_v
+                        hh = 0.5 * (tb - ta)
+                        dip = 0.5 * m2 * hh * hh
+                        if f > 0.0 and fa > 0.0 and (min(fa, f) > dip or (
+                                fa + gslope[j] * hh > dip and f - d * hh > dip)):
+                            gprev[j] = f
+                            gslope[j] = d
+                            continue
+                        tl = tol_s if j < 2 else tol_v
+                        tq, fq, dq, tr, fr, dr = _first_crossing(
+                            c, dc, ddc, m, cs, j, cp, cm, w, k, a, V, y, cth, sth, ta, fa,
+                            gslope[j], tb, f, d, m2, tl, stk)
+                        if tr >= 0.0 and fq <= 0.0:
+                            # a group at its root at the start (just switched) can rise
+                            # and fall back within the first sub-step (a spring touching
+                            # down stuck, slipping again 0.002 later): a positive value
+                            # nearer the start brackets that root (first where the
+                            # start's slope and m2 guarantee one, f >= f(0) + f'(0) t -
+                            # m2 t^2/2, then halving); none: no event
+                            t0_, f0_, d0_ = tr, fr, dr
+                            tr = -1.0
+                            for it in range(17):
+                                if it == 0:
+                                    tp_ = dq / m2 if dq > 0.0 else 0.0
+                                    if not 0.0 < tp_ < t0_:
+                                        continue
+                                else:
+                                    tp_ = t0_ * 0.5 ** it
+                                fp, dp = _group_point(c, dc, ddc, m, cs, j, cp, cm, w, k,
+                                                      a, V, y, cth, sth, tp_)
+                                if fp > tl:
+                                    tq, fq, dq, tr, fr, dr = _first_crossing(
+                                        c, dc, ddc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                                        sth, tp_, fp, dp, t0_, f0_, d0_, m2, tl, stk)
+                                    break
+                        if tr >= 0.0:
+                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                                              sth, tq, tr, fq, fr)
+                            groot[j] = r
+                            if r < best:
+                                best = r
+                            scanned = True
                     gprev[j] = f
+                    gslope[j] = d
                 if scanned:
                     t_ev = best
                 t_b = tb

@@ -25,7 +25,7 @@ from ..validation import checked_count, checked_number
 __all__ = ["mdr_friction", "mdr_row"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
-SUBSTEPS = 1024  # the scan's floor of sub-steps a period (docs: grazing events)
+SUBSTEPS = 64  # the scan's sub-steps a period: a cost, not a resolution (no root is missed)
 # a row's default budget and tolerance: the MDR solver's declared defaults of
 # SolverSettings.max_periods and tol_state
 MAX_PERIODS = int(CAPABILITIES["mdr"].settings["max_periods"])
