@@ -122,10 +122,11 @@ def test_the_guard_passes_relative_paths_and_urls(text):
 
 def test_readme_claims_what_the_solvers_do():
     """The README's summary of the solver claims only what holds, and where: the MDR
-    scan's sub-steps are the solver's constant, the flat punch alone has the root finder
-    that cannot miss close roots, Newton's orbit is not verified by a further
-    integration, and the parameter sensitivities are not called exact (their explicit
-    parameter part is a central difference)."""
+    scan's sub-steps are the solver's constant, the claim that no pair of close roots is
+    missed is made of the flat punch's root finder (and, with its one exception, of the
+    MDR scan, which bounds its functions between samples), Newton's orbit is not verified
+    by a further integration, and the parameter sensitivities are not called exact (their
+    explicit parameter part is a central difference)."""
     from vibrofriction.solver import mdr
 
     text = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
