@@ -144,7 +144,7 @@ def main() -> None:
     ]
     if demo is not None:
         lines += ["", f"`make demo` in a fresh clone (venv, install, compile, every figure): "
-                  f"{demo:.0f} s ({demo / 60:.0f} min {demo % 60:.0f} s)."]
+                  f"{demo:.0f} s ({int(demo // 60)} min {round(demo % 60)} s)."]
     out = ROOT / "benchmarks" / "results" / "coldstart.md"
     out.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))

@@ -28,6 +28,7 @@ MODULES = [
      "states"),
     ("vibrofriction.validation", "The one validator of model parameters"),
     ("vibrofriction.parallel", "The one pool of worker processes"),
+    ("vibrofriction.warmup", "Compiling the solver's kernels ahead: the warm-up"),
 ]
 SKIP_TOP = {"__version__", "sweep"}  # a string, and the module documented below
 
