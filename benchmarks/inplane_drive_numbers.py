@@ -10,7 +10,8 @@ At V = 0 itself (docs/inplane.md, "v0 = 0"): the mean force from rest and from p
 a_x with the damping, beside the stuck band.
 
 Run:  python benchmarks/inplane_drive_numbers.py   (about 10 s; writes
-benchmarks/results/inplane_drive.md)
+benchmarks/results/inplane_drive.md; with ``--print`` it prints the same text and writes
+nothing: tests/docs/test_quoted_numbers.py compares it with the committed file)
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import datetime
 import math
 import platform
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -65,7 +67,8 @@ def main() -> None:
         lines.append("")
     lines += zero_velocity()
     text = "\n".join(lines)
-    (HERE / "results" / "inplane_drive.md").write_text(text)
+    if "--print" not in sys.argv[1:]:
+        (HERE / "results" / "inplane_drive.md").write_text(text)
     print(text)
 
 

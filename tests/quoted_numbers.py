@@ -61,6 +61,28 @@ def _each(page: str, text: str, source: str, *rows: tuple[str, str]) -> list[Quo
             for i, (key, field) in enumerate(rows)]
 
 
+_IP, _DRIVE, _VZERO = "docs/inplane.md", "inplane_drive_numbers", "plane_vzero_numbers"
+_IPN = "inplane_numbers."
+_EXAMPLE = "(0.5, 2, 0.5), {}, zeta {}, eta_c {}"
+_V0 = "## V = 0, zeta = 0.05, eta_c = 0.1\n| {} | "  # a row of the drive's table at V = 0
+_CELL = r" \| (\S+) {} \([^)]*\)"  # one cell of that table: the mean force, its status
+
+
+def _kinematic(on: str, alpha: str, amp: str, along: str) -> Quote:
+    return Quote(_IP, n(f"| {on}, $\\alpha = {alpha}$ | {amp} | #{along} | # |"),
+                 _IPN + "kinematic", f"{on}, alpha {float(alpha)}, amplitude {float(amp)}",
+                 r"^longitudinal (\S+), transverse (\S+) \(")
+
+
+def _at_v0(a_x: str, status: str) -> Quote:
+    """A row of the table at V = 0 of docs/inplane.md: the band and five preloads."""
+    band = "# / #" if status == "held" else "none"
+    cell = " held" if status == "held" else ""
+    return Quote(_IP, n(f"| {a_x} | {band} |" + f" #{cell} |" * 5), _DRIVE, _V0.format(a_x),
+                 (r"^(\S+) / (\S+)" if status == "held" else r"^\+nan / \+nan")
+                 + _CELL.format(status) * 5)
+
+
 def _long_budget(beta: str, vbar: str) -> Quote:
     return Quote("docs/solver.md", n(f"| {beta} | {vbar} | # | # | # | # |"),
                  _DN + "long_budget", f"beta {beta}, vbar {vbar}",
@@ -232,6 +254,45 @@ QUOTES: list[Quote] = [
           _DN + "case_iv_plateau", "within 1e-3 of the plateau from",
           r"a = 0.2: V >= (\S+), a = 0.5: V >= (\S+), a = 0.8: V >= (\S+), a = 1.0: V >= (\S+), "
           r"a = 1.5: V >= (\S+), a = 2.0: V >= (\S+)$"),
+    # docs/inplane.md, section 1: the kinematic laws against the dynamics
+    *(_kinematic(on, alpha, amp, along) for on, alpha, amp, along in (
+        ("substrate", "0.01", "10", ""), ("substrate", "0.1", "3", ""),
+        ("substrate", "0.1", "10", ""), ("substrate", "10", "1", ""),
+        ("substrate", "10", "3", ""), ("substrate", "100", "1", ""),
+        ("holder", "0.1", "3", " (law not applicable)"), ("holder", "100", "1", ""))),
+    # docs/inplane.md, sections 2 and 3: the example system's closed forms
+    Quote(_IP, n("undamped $V_c = #$ (both modes: $H = -1$ at $\\alpha = 0.5$), against `#` "
+                 "without the in-plane oscillation; cancellation at $\\varphi_x = #$ with "
+                 "$a_x = #$."),
+          _IPN + "combined_critical", _EXAMPLE.format("substrate", "0.0", "0.0"),
+          r"(?=.*pi/2\) (\S+);)(?=.*a_x=0\) (\S+);)(?=.*phase (\S+), a_x (\S+);)"),
+    *_each(_IP, n("With $\\zeta = 0.05, \\eta_c = 0.1$: `#` (substrate), `#` (holder)."),
+           _IPN + "combined_critical",
+           *((_EXAMPLE.format(on, "0.05", "0.1"), r"V_c\(0.5, pi/2\) (\S+);")
+             for on in ("substrate", "holder"))),
+    Quote(_IP, n("(# rad at `(0.5, 2, 0.5)`"), _IPN + "combined_critical",
+          _EXAMPLE.format("substrate", "0.05", "0.1"), r"cancels at phase (\S+),"),
+    *(Quote(_IP, n(text), _IPN + "combined_critical", _EXAMPLE.format("substrate", *damping),
+            r"static mu\(0\+\) (\S+), mu\(0-\) (\S+)$")
+      for text, damping in (("(`#, #` for the example system", ("0.0", "0.0")),
+                            ("(`#, #` with $\\zeta = 0.05$", ("0.05", "0.1")))),
+    # docs/inplane.md, section 5: v0 = 0, the example system
+    *(_at_v0(a_x, status) for a_x, status in (("0.5", "held"), ("1", "held"),
+                                              ("1.25", "periodic"), ("2", "periodic"))),
+    *_each(_IP, n("between the creeping limits $\\mu(0^-) = #$ and $\\mu(0^+) = #$"), _DRIVE,
+           *(("## zeta = 0.05, eta_c = 0.1\n* blocking force (the limits V -> 0+ and 0-): ",
+              field) for field in (r" and (\S+) at", r"^(\S+) and"))),
+    # docs/inplane.md, section 5 in 2-D, and the slow points near v0 = 0
+    *(Quote(_IP, n(text), _VZERO, f"| {point} | rest | ", r"^\w+ \| \S+ \| (\S+) \|")
+      for text, point in (("held `#` and slipping", "held, transverse only"),
+                          ("and slipping `#`)", "slips, transverse only"))),
+    Quote(_IP, n("preloaded start, `#` off"), _VZERO, "| held, holder, anisotropic | preload | ",
+          r"^\w+ \| \S+ \| \S+ \| \S+ \| (\S+) \|"),
+    *(Quote(_IP, n(before) + r"(\w+)" + n(", #, "), _VZERO, f"| {point} | ",
+            r"^\S+ \| (\w+) \| \S+ \| \S+ \| (\S+) \|")
+      for before, point in (("error 1.8e-3, 37.6 s | ", "transverse bench, v0 = -1.4e-4 m/s"),
+                            ("error 3.4e-4, 288 s | ", "transverse bench, phase_y = pi/2"),
+                            ("error 2.7e-4, 39.2 s | ", "fuzz_plane slowest (undamped)"))),
 ]
 
 

@@ -28,20 +28,32 @@ from sections import WALL, read_sections, row_line  # noqa: E402
 
 #: script -> (its section functions' registry, its results file)
 SCRIPTS = {"docs_numbers": ("CLAIMS", "benchmarks/results/docs_numbers.md"),
-           "mdr_inplane_numbers": ("SECTIONS", "benchmarks/results/mdr_inplane.md")}
+           "mdr_inplane_numbers": ("SECTIONS", "benchmarks/results/mdr_inplane.md"),
+           "inplane_numbers": ("CLAIMS", "benchmarks/results/inplane_numbers.md")}
 #: sections that integrate the spring-row reference (seconds warm, a compilation cold)
 SLOW = {"mdr_inplane_numbers.reference_flat_punch", "mdr_inplane_numbers.against_reference",
         "mdr_inplane_numbers.short_bar"}
-#: scripts that print their results file whole: the output against the committed file line
-#: by line, but for the lines matching the pattern (the date and commit, wall times) and
-#: for a wall time in a table's column (the group 2 of the optional mask); a quote's key is
-#: the beginning of its line, after the first line that begins with the text before a
-#: "\n" in the key where there is one
+#: scripts that print their results file whole (run with the arguments given): the output
+#: against the committed file line by line, but for the lines matching the pattern (the
+#: date and commit, wall times) and for a wall time in a table's column (the group 2 of the
+#: optional mask); a quote's key is the beginning of its line, after the first line that
+#: begins with the text before a "\n" in the key where there is one
 _DATED = r"^# 20\d\d-\d\d-\d\d, commit \w+, |^\d+ s$"
-PRINTED = {"mdr_shape_numbers": ("benchmarks/results/mdr_shape.md", _DATED, None),
-           "mdr_critical_numbers": ("benchmarks/results/mdr_critical.md", _DATED,
-                                    # the FFT grid's table: ms a call
-                                    r"^(\| \([^|]*\) \| [\d.]+ \| \S+ \| \S+ \| )([\d.]+)( \|)$")}
+PRINTED: dict[str, tuple[str, str, str | None, tuple[str, ...]]] = {
+    "mdr_shape_numbers": ("benchmarks/results/mdr_shape.md", _DATED, None, ()),
+    "mdr_critical_numbers": ("benchmarks/results/mdr_critical.md", _DATED,
+                             # the FFT grid's table: ms a call
+                             r"^(\| \([^|]*\) \| [\d.]+ \| \S+ \| \S+ \| )([\d.]+)( \|)$", ()),
+    "inplane_drive_numbers": ("benchmarks/results/inplane_drive.md",
+                              r"^20\d\d-\d\d-\d\d \d\d:\d\d UTC, commit \w+, ",
+                              # the stated error, round-off (1e-13 to 1e-11) that moves from
+                              # run to run: the solver's, not the page's, to check
+                              r"^(\| [-+][\d.e-]+ \| [-+][\d.]+ \| )(\d\.\de-1\d)( \| True \|)$",
+                              ("--print",)),
+    "plane_vzero_numbers": ("benchmarks/results/plane_vzero.md",
+                            # the date and commit, the number of repeats; the median times
+                            r"^# 2-D solver at and near v0 = 0 \(|^Made by ",
+                            r"^(\| .* \| )(\d[\d.]* m?s)( \|)$", ("--print", "--repeats", "1"))}
 #: sources that are tests computing quoted numbers themselves (they call quoted_numbers.check)
 TEST_SOURCES = {"tests/solver/test_sensitivity.py"}
 
@@ -124,14 +136,16 @@ def _line_rows(lines: list[str], keys: set[str]) -> dict[str, str]:
 
 @pytest.mark.parametrize("script", sorted(PRINTED))
 def test_printed_results_file_and_pages_quote_what_the_script_prints(script):
-    results, volatile, mask = PRINTED[script]
+    results, volatile, mask, args = PRINTED[script]
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
         [str(ROOT / "src"), *filter(None, [os.environ.get("PYTHONPATH")])]))
-    out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / f"{script}.py")], env=env,
+    out = subprocess.run([sys.executable, str(ROOT / "benchmarks" / f"{script}.py"), *args],
+                         env=env,
                          check=True, capture_output=True, text=True, timeout=600).stdout
     printed, written = ([re.sub(mask, r"\1(wall time)\3", line) if mask else line
                          for line in text.splitlines() if not re.search(volatile, line)]
-                        for text in (out, (ROOT / results).read_text()))
+                        # a trailing empty line (print's newline after the file's) aside
+                        for text in (out.rstrip("\n"), (ROOT / results).read_text()))
     problems = [f"{results}: the file has {w!r}, the script prints {p!r}"
                 for w, p in zip(written, printed, strict=False) if w != p]
     if len(written) != len(printed):
