@@ -1,8 +1,9 @@
 """Convergence of the MDR spring-row reference (src/vibrofriction_reference/mdr.py) in the
 number of springs and in the time step, and its distance to the closed forms of
-docs/contact_geometry.md. Prints the tables quoted there.
+docs/contact_geometry.md. Prints the tables quoted there, the whole results file
+(tests/docs/test_quoted_numbers.py compares its output with the committed file):
 
-    PYTHONPATH=src python benchmarks/mdr_convergence.py
+    PYTHONPATH=src python benchmarks/mdr_convergence.py > benchmarks/results/mdr_convergence.md
 """
 
 from __future__ import annotations
@@ -41,6 +42,11 @@ def closed_forms() -> None:
 def main() -> None:
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True).stdout.strip()
+    print("# MDR spring-row reference: convergence and closed forms\n")
+    print("Regenerate: `PYTHONPATH=src python benchmarks/mdr_convergence.py > "
+          "benchmarks/results/mdr_convergence.md` (machine: 2 shared cores).")
+    print("Errors are absolute errors of `mu_ratio` against the (1600 springs, 1600 "
+          "steps/period) run.\n")
     print(f"# {time.strftime('%Y-%m-%d')}, commit {commit}, {platform.machine()} "
           f"{platform.python_version()}, windows {WINDOWS}")
     closed_forms()

@@ -83,6 +83,23 @@ def _at_v0(a_x: str, status: str) -> Quote:
                  + _CELL.format(status) * 5)
 
 
+_CG, _HIST, _CONV = "docs/contact_geometry.md", "mdr_history_numbers", "mdr_convergence"
+_CLOSED = "## closed forms (vibrofriction.theory)\n| {} | "  # a row of mdr_convergence's first
+_COLUMNS = r"^(\S+) \| (\S+) \| (\S+) \| (\S+) \|$"  # a row's four columns after its key
+_DEFAULT = "\nmdr_reference default ((100, 200), (200, 400)): "  # after a point's heading
+_POINT = {"sphere": "## sphere, soft, a=0.5", "jumping": "## sphere, resonant, jumping a=1.5",
+          "cone": "## cone, stiff-ish, a=0.8"}
+
+
+def _closed_forms(a: str) -> Quote:
+    """A row of the closed forms' table of docs/contact_geometry.md (15 numbers)."""
+    three = "#, #, #"
+    return Quote(_CG, n(f"| {a} | {three} | {three} | {three}; {three}; {three} |"), _CONV,
+                 _CLOSED.format(a), r"^([^,]+), ([^,]+), ([^ ]+) \| ([^,]+), ([^,]+), ([^ ]+) "
+                 r"\| ([^,]+), ([^,]+), ([^;]+); ([^,]+), ([^,]+), ([^;]+); ([^,]+), ([^,]+), "
+                 r"([^ ]+) \|$")
+
+
 def _long_budget(beta: str, vbar: str) -> Quote:
     return Quote("docs/solver.md", n(f"| {beta} | {vbar} | # | # | # | # |"),
                  _DN + "long_budget", f"beta {beta}, vbar {vbar}",
@@ -293,6 +310,45 @@ QUOTES: list[Quote] = [
       for before, point in (("error 1.8e-3, 37.6 s | ", "transverse bench, v0 = -1.4e-4 m/s"),
                             ("error 3.4e-4, 288 s | ", "transverse bench, phase_y = pi/2"),
                             ("error 2.7e-4, 39.2 s | ", "fuzz_plane slowest (undamped)"))),
+    # docs/contact_geometry.md, the closed forms and the spring-row reference
+    *(_closed_forms(a) for a in ("0.2", "0.5", "0.8", "1.0", "1.5", "3.0")),
+    Quote(_CG, n("(sphere # against flat # at $a = 0.5, \\bar v = 0.3$)"), _CONV,
+          _CLOSED.format("0.5"), r"^(?=(?:[^;]*; ){1}[^,]*, (\S+),)(?=[^|]*\|[^|]*\| [^,]*, "
+          r"(\S+),)"),
+    *(Quote(_CG, n(text), _CONV, f"{_POINT[point]}\n| 800 | ", _COLUMNS)
+      for text, point in (("(sphere, soft: #, #, #, # at 100 ... 800 steps", "sphere"),
+                          ("cone: #, #, #, #), and about second order", "cone"))),
+    *_each(_CG, n("(sphere, 800 steps: #, #, #, #, # at 50 ... 800 springs"), _CONV,
+           *((f"{_POINT['sphere']}\n| {m} | ", r"\| (\S+) \|$") for m in (50, 100, 200, 400, 800))),
+    *_each(_CG, n("three points measured (# vs #; # vs # jumping; # vs # cone)"), _CONV,
+           *((_POINT[p] + _DEFAULT, field) for p in ("sphere", "jumping", "cone")
+             for field in (r"\+- (\S+); true", r"true error (\S+);"))),
+    *_each(_CG, n("(sphere # +- # vs #; jumping # vs #)"), _CONV,
+           (_POINT["sphere"] + _DEFAULT, r"F_N0 = (\S+) \+-"),
+           (_POINT["sphere"] + _DEFAULT, r"F_N0 = \S+ \+- (\S+),"),
+           (_POINT["sphere"] + _DEFAULT, r"closed form (\S+)$"),
+           (_POINT["jumping"] + _DEFAULT, r"F_N0 = (\S+) \+-"),
+           (_POINT["jumping"] + _DEFAULT, r"closed form (\S+)$")),
+    *(Quote(_CG, n(text), _CONV, f"## static limit\n| n=2 | {a} | ",
+            r"\| (\S+) \| (\S+) \| (\S+) \|$")
+      for text, a in (("(sphere $a = 0.5$: #, #, # at $V", "0.5"),
+                      ("jumping: #, #, # towards 0)", "1.5"))),
+    # docs/contact_geometry.md, "The history"
+    Quote(_CG, n("dissipation to # of it (the jumping cone"), _HIST,
+          "## Energy balance\n"
+          "| (1.0, 3.0, 1.3, 0.5, 1.0, 0.0, 'a_x 0.8, phase_x 2.5, substrate') | ",
+          r"\| -?(\S+) \|$"),
+    Quote(_CG, n("$\\zeta = 0.1$: # = # + #;"), _HIST,
+          "## Energy balance\n| (0.5, 2.0, 1.5, 0.3, 2.0, 0.1) | ",
+          r"^\S+ \| \S+ \| (\S+) \| (\S+) \| (\S+) \|"),
+    *(Quote(_CG, n(text), _HIST, f"## One period of the periodic orbit\n| {point} | ",
+            r"^\d+ \| (\S+) \| \S+ \| (\S+) \+- (\S+) \|")
+      for text, point in (("its error (# against # +- # for the sphere",
+                           "(0.5, 2.0, 0.5, 0.3, 2.0, 0.0)"),
+                          ("; # against # +- # jumping)", "(0.5, 2.0, 1.5, 0.3, 2.0, 0.1)"))),
+    Quote(_CG, n("every spring's force agrees to #, #, # of the largest"), _HIST,
+          "## Every spring's force against the spring-row reference\n"
+          "| (0.5, 2.0, 0.5, 0.3, 2.0, 0.0) | ", r"^(\S+) \| (\S+) \| (\S+) \|$"),
 ]
 
 

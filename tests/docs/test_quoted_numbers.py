@@ -34,10 +34,11 @@ SCRIPTS = {"docs_numbers": ("CLAIMS", "benchmarks/results/docs_numbers.md"),
 SLOW = {"mdr_inplane_numbers.reference_flat_punch", "mdr_inplane_numbers.against_reference",
         "mdr_inplane_numbers.short_bar"}
 #: scripts that print their results file whole (run with the arguments given): the output
-#: against the committed file line by line, but for the lines matching the pattern (the
-#: date and commit, wall times) and for a wall time in a table's column (the group 2 of the
-#: optional mask); a quote's key is the beginning of its line, after the first line that
-#: begins with the text before a "\n" in the key where there is one
+#: against the committed file line by line (numbers that are both round-off agree, as in
+#: :func:`_agree`), but for the lines matching the pattern (the date and commit, wall times)
+#: and for a wall time in a table's column (the group 2 of the optional mask); a quote's key
+#: is the beginning of its line, after the first line that begins with the text before a
+#: "\n" in the key where there is one
 _DATED = r"^# 20\d\d-\d\d-\d\d, commit \w+, |^\d+ s$"
 PRINTED: dict[str, tuple[str, str, str | None, tuple[str, ...]]] = {
     "mdr_shape_numbers": ("benchmarks/results/mdr_shape.md", _DATED, None, ()),
@@ -53,7 +54,11 @@ PRINTED: dict[str, tuple[str, str, str | None, tuple[str, ...]]] = {
     "plane_vzero_numbers": ("benchmarks/results/plane_vzero.md",
                             # the date and commit, the number of repeats; the median times
                             r"^# 2-D solver at and near v0 = 0 \(|^Made by ",
-                            r"^(\| .* \| )(\d[\d.]* m?s)( \|)$", ("--print", "--repeats", "1"))}
+                            r"^(\| .* \| )(\d[\d.]* m?s)( \|)$", ("--print", "--repeats", "1")),
+    "mdr_history_numbers": ("benchmarks/results/mdr_history.md", _DATED,
+                            # the time table: ms a history, two columns
+                            r"^(\| \([^|]*\) \| \d+ \| )(\d+ ms \| \d+ ms)( \|)$", ()),
+    "mdr_convergence": ("benchmarks/results/mdr_convergence.md", _DATED, None, ())}
 #: sources that are tests computing quoted numbers themselves (they call quoted_numbers.check)
 TEST_SOURCES = {"tests/solver/test_sensitivity.py"}
 
@@ -147,7 +152,7 @@ def test_printed_results_file_and_pages_quote_what_the_script_prints(script):
                         # a trailing empty line (print's newline after the file's) aside
                         for text in (out.rstrip("\n"), (ROOT / results).read_text()))
     problems = [f"{results}: the file has {w!r}, the script prints {p!r}"
-                for w, p in zip(written, printed, strict=False) if w != p]
+                for w, p in zip(written, printed, strict=False) if not _agree(w, p)]
     if len(written) != len(printed):
         problems.append(f"{results}: {len(written)} lines, the script prints {len(printed)}")
     quotes = [q for q in QUOTES if q.source == script]
