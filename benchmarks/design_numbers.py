@@ -22,7 +22,9 @@
    ``a_x = 0.5``, undamped and ``zeta = 0.05, eta_c = 0.1``.
 
 Run: ``.venv/bin/python benchmarks/design_numbers.py`` (writes
-benchmarks/results/design.md).  One process, one core.
+benchmarks/results/design.md; with ``--print`` it prints the same text and writes nothing:
+tests/docs/test_quoted_numbers.py compares it with the committed file).  One process, one
+core.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from __future__ import annotations
 import math
 import os
 import platform
+import sys
 import time
 from pathlib import Path
 
@@ -219,10 +222,11 @@ def main() -> None:
         *phase_rows(),
         "",
     ]
-    out = HERE / "results" / "design.md"
-    out.write_text("\n".join(lines))
     print("\n".join(lines))
-    print(f"-> {out}")
+    if "--print" not in sys.argv[1:]:
+        out = HERE / "results" / "design.md"
+        out.write_text("\n".join(lines))
+        print(f"-> {out}")
 
 
 if __name__ == "__main__":

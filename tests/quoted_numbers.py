@@ -100,6 +100,25 @@ def _closed_forms(a: str) -> Quote:
                  r"([^ ]+) \|$")
 
 
+_BENCH, _DESIGN = "docs/bench.md", "design_numbers"
+
+
+def _cols(*index: int) -> str:
+    """A field picking the columns ``index`` (0: the first after the row's key), in that
+    order, out of a table row's value."""
+    return "".join(rf"(?=^(?:[^|]*\| ){{{i}}}([^|]*?) \|)" for i in index)
+
+
+#: the blocking forces mu(0+), mu(0-) of a row of the in-plane design table (its column 7)
+_BLOCK = r"(?=^(?:[^|]*\| ){7}(\S+) / (\S+) \|)"
+
+
+def _design(key: str, text: str, *index: int) -> Quote:
+    """Numbers of one row of design_numbers' tables, ``index`` its columns in the text's
+    order."""
+    return Quote(_BENCH, n(text), _DESIGN, key, _cols(*index))
+
+
 def _long_budget(beta: str, vbar: str) -> Quote:
     return Quote("docs/solver.md", n(f"| {beta} | {vbar} | # | # | # | # |"),
                  _DN + "long_budget", f"beta {beta}, vbar {vbar}",
@@ -349,6 +368,32 @@ QUOTES: list[Quote] = [
     Quote(_CG, n("every spring's force agrees to #, #, # of the largest"), _HIST,
           "## Every spring's force against the spring-row reference\n"
           "| (0.5, 2.0, 0.5, 0.3, 2.0, 0.0) | ", r"^(\S+) \| (\S+) \| (\S+) \|$"),
+    # docs/bench.md, "Design the oscillation"
+    *(Quote(_BENCH, n("the best frequency is #, #, # and # Hz at `v0 = 0.001, 0.01, 0.1, 0.5 "
+                      "m/s`, always at the largest amplitude, 0.9 um, with COF #, #, #, #;"),
+            _DESIGN, f"## The optimum against the operating velocity (default map 161 x 41, "
+            f"8 starts)\n| {v0} | ", "()" * i + _cols(0) + "()" * (3 - i) + "()" * i + _cols(3)
+            + "()" * (3 - i))
+      for i, v0 in enumerate(("0.001", "0.01", "0.1", "0.5"))),
+    Quote(_BENCH, n("COF (#, # against #), which is"), _DESIGN, "## The optimum against\n| 0.01 | ",
+          r"(?=^(?:[^|]*\| ){6}(\S+) / (\S+) \|)" + _cols(3)),  # COF at f -1 % / +1 %
+    _design("| 21 x 5 | 1 | ", "a single start stops at # Hz, # above the", 0, 2),
+    _design("| friction | 0.01 | 0.01 | ", "(# Hz, # um normal, # um longitudinal, `phase_x` # "
+            "rad) gives COF #, against # with the normal oscillation alone and # with the "
+            "longitudinal one alone", 0, 1, 2, 3, 4, 5, 6),
+    _design("| friction | 0.1 | 0.01 | ", "at 0.1 m/s # against # and #;", 4, 5, 6),
+    _design("| friction | 0.001 | 0.01 | ", "(force-free sliding, COF # against # and #)",
+            4, 5, 6),
+    _design("| each | ", "allowing a little more, gives # at 0.01 m/s", 4),
+    Quote(_BENCH, n("(COF #; # Hz, # um at `phase_x` #), blocking force `mu(0+) = #`, "
+                    "`mu(0-) = #` (an actuator: both limits push), idle velocity # m/s"),
+          _DESIGN, "| drive | 0.001 | 0.01 | ", _cols(4, 0, 2, 3) + _BLOCK + _cols(8)),
+    Quote(_BENCH, n("range (# Hz, # um, # um, `phase_x` #): COF #, blocking # both ways, "
+                    "idle velocity # m/s"), _DESIGN, "| drive | 0.001 | 0.03 | ",
+          _cols(0, 1, 2, 3, 4) + _BLOCK.replace(r" / (\S+)", r" / \S+") + _cols(8)),
+    Quote(_BENCH, n("blocking # both ways"), _DESIGN, "| drive | 0.001 | 0.03 | ",
+          _BLOCK.replace(r"(\S+) / ", r"\S+ / ")),
+    _design("| drive | 0.003 | 0.03 | ", "at `v0 = 0.003` m/s COF #, idle # m/s", 4, 8),
 ]
 
 

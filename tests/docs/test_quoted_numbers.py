@@ -1,12 +1,14 @@
 """Every deterministic number the docs quote against what its script prints now.
 
-The quotes are declared in tests/quoted_numbers.py. For each section of
-``benchmarks/docs_numbers.py`` and ``benchmarks/mdr_inplane_numbers.py`` the test calls the
-section function and checks (a) that the committed results file holds the same rows, to
-the digits it prints (rows of wall times aside: they are machine-dependent and the
-results file says where and when they were measured), and (b) that each page quoting
-the section quotes the same values, to the digits it quotes. A drift in the code, the
-results file or a page fails and names the page or file, the quantity and both values.
+The quotes are declared in tests/quoted_numbers.py. For each section of the scripts of
+:data:`SCRIPTS` (``benchmarks/docs_numbers.py``, ``mdr_inplane_numbers.py``,
+``inplane_numbers.py``) the test calls the section function and checks (a) that the
+committed results file holds the same rows, to the digits it prints (rows of wall times
+aside: they are machine-dependent and the results file says where and when they were
+measured), and (b) that each page quoting the section quotes the same values, to the
+digits it quotes. The scripts of :data:`PRINTED` are run whole and their output compared
+with their results file the same way. A drift in the code, the results file or a page
+fails and names the page or file, the quantity and both values.
 """
 
 from __future__ import annotations
@@ -58,7 +60,9 @@ PRINTED: dict[str, tuple[str, str, str | None, tuple[str, ...]]] = {
     "mdr_history_numbers": ("benchmarks/results/mdr_history.md", _DATED,
                             # the time table: ms a history, two columns
                             r"^(\| \([^|]*\) \| \d+ \| )(\d+ ms \| \d+ ms)( \|)$", ()),
-    "mdr_convergence": ("benchmarks/results/mdr_convergence.md", _DATED, None, ())}
+    "mdr_convergence": ("benchmarks/results/mdr_convergence.md", _DATED, None, ()),
+    "design_numbers": ("benchmarks/results/design.md", r"^Date: 20\d\d-",
+                       r"^(\| .* \| )(\d+\.\d)( \|)$", ("--print",))}  # time (s) a design
 #: sources that are tests computing quoted numbers themselves (they call quoted_numbers.check)
 TEST_SOURCES = {"tests/solver/test_sensitivity.py"}
 
@@ -139,7 +143,13 @@ def _line_rows(lines: list[str], keys: set[str]) -> dict[str, str]:
     return out
 
 
-@pytest.mark.parametrize("script", sorted(PRINTED))
+#: printed scripts that take more than 30 s of CPU (design_numbers: 20 designs, 70 s)
+SLOW_PRINTED = {"design_numbers"}
+
+
+@pytest.mark.parametrize("script", [
+    pytest.param(s, marks=[pytest.mark.slow] if s in SLOW_PRINTED else [], id=s)
+    for s in sorted(PRINTED)])
 def test_printed_results_file_and_pages_quote_what_the_script_prints(script):
     results, volatile, mask, args = PRINTED[script]
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(
