@@ -109,6 +109,8 @@ def _cols(*index: int) -> str:
     return "".join(rf"(?=^(?:[^|]*\| ){{{i}}}([^|]*?) \|)" for i in index)
 
 
+#: the reference's difference from the design and its bar, of the in-plane design table
+_REF = (r"(?=^(?:[^|]*\| ){9}(\S+) \(\S+\) \|)", r"(?=^(?:[^|]*\| ){9}\S+ \((\S+)\) \|)")
 #: the blocking forces mu(0+), mu(0-) of a row of the in-plane design table (its column 7)
 _BLOCK = r"(?=^(?:[^|]*\| ){7}(\S+) / (\S+) \|)"
 
@@ -394,6 +396,9 @@ QUOTES: list[Quote] = [
     Quote(_BENCH, n("blocking # both ways"), _DESIGN, "| drive | 0.001 | 0.03 | ",
           _BLOCK.replace(r"(\S+) / ", r"\S+ / ")),
     _design("| drive | 0.003 | 0.03 | ", "at `v0 = 0.003` m/s COF #, idle # m/s", 4, 8),
+    *_each(_BENCH, n("points where that bar is large: # (bar #) and # (bar #, the"), _DESIGN,
+           *((key, field) for key in ("| friction | 0.001 | 0.01 | ", "| drive | 0.001 | 0.03 | ")
+             for field in _REF)),
 ]
 
 
