@@ -320,6 +320,12 @@ QUOTES: list[Quote] = [
     *_each(_IP, n("between the creeping limits $\\mu(0^-) = #$ and $\\mu(0^+) = #$"), _DRIVE,
            *(("## zeta = 0.05, eta_c = 0.1\n* blocking force (the limits V -> 0+ and 0-): ",
               field) for field in (r" and (\S+) at", r"^(\S+) and"))),
+    # docs/figures.md, Fig. 16: the drive's blocking forces and the band
+    *(Quote("docs/figures.md", n("`a_x = 0.5`: # / # undamped (band +-0.375) and # / # damped "
+                                 "(band # / #)"), _DRIVE,
+            f"## zeta = {zeta}\n* blocking force (the limits V -> 0+ and 0-): ", field)
+      for zeta, field in (("0.0", r"^(\S+) and (\S+) at()()()()"),
+                          ("0.05", r"()()^(\S+) and (\S+) at .* contact (\S+) / (\S+)$"))),
     # docs/inplane.md, section 5 in 2-D, and the slow points near v0 = 0
     *(Quote(_IP, n(text), _VZERO, f"| {point} | rest | ", r"^\w+ \| \S+ \| (\S+) \|")
       for text, point in (("held `#` and slipping", "held, transverse only"),
