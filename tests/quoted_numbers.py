@@ -330,6 +330,12 @@ QUOTES: list[Quote] = [
     *(Quote(_IP, n(text), _VZERO, f"| {point} | rest | ", r"^\w+ \| \S+ \| (\S+) \|")
       for text, point in (("held `#` and slipping", "held, transverse only"),
                           ("and slipping `#`)", "slips, transverse only"))),
+    Quote(_IP, n("$|\\mu - \\mu_\\text{ref}|$ at most `#`, $|\\text{lat} - "
+                 "\\text{lat}_\\text{ref}|$ at most `#` (stated errors `#` to `#`)"), _VZERO,
+          "Where it slips: ",
+          r"at most (\S+), \|lat - ref\| at most (\S+), stated errors (\S+) to (\S+);"),
+    Quote(_IP, n("inside the region and within `#` of the reference's"), _VZERO,
+          "Where it slips: ", r"both within (\S+)\.$"),
     Quote(_IP, n("preloaded start, `#` off"), _VZERO, "| held, holder, anisotropic | preload | ",
           r"^\w+ \| \S+ \| \S+ \| \S+ \| (\S+) \|"),
     *(Quote(_IP, n(before) + r"(\w+)" + n(", #, "), _VZERO, f"| {point} | ",
