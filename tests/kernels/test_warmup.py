@@ -4,6 +4,8 @@ The shipped cache (kernels precompiled into the wheel) is tested where a wheel i
 tests/api/test_wheel.py.
 """
 
+import os
+import platform
 import subprocess
 import sys
 
@@ -83,7 +85,17 @@ def test_the_shipped_cache_is_asked_only_where_its_code_runs(monkeypatch):
         jit._runs_shipped.cache_clear()
         monkeypatch.setattr("llvmlite.binding.get_host_cpu_features",
                             lambda: dict.fromkeys(jit._V3, True))
-        assert jit._runs_shipped() == (jit._SHIPPED and __import__("platform").machine()
+        assert jit._runs_shipped() == (jit._SHIPPED and platform.machine()
                                        in ("x86_64", "AMD64"))
     finally:
         jit._runs_shipped.cache_clear()
+
+
+def test_the_kernels_run_as_plain_python_without_the_compiler():
+    """``NUMBA_DISABLE_JIT=1`` (coverage, debugging): no dispatcher, so no cache to set."""
+    code = ("import vibrofriction as vf; r = vf.friction_coefficient(vf.Dimensionless("
+            "alpha=0.5, beta=2.0, amplitude=0.5), vbar=0.3); print(round(r.mu_ratio, 6))")
+    got = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         timeout=300, env={**os.environ, "NUMBA_DISABLE_JIT": "1"})
+    assert got.returncode == 0, got.stderr[-2000:]
+    assert got.stdout.strip() == "0.597601"  # the README's value, 0.5976005546

@@ -84,8 +84,8 @@ def caching() -> bool:
 
 
 def _compiled(func: F, **options: Any) -> F:
-    dispatcher = numba.njit(cache=_CACHE, fastmath=False, error_model="numpy", **options)(func)
-    if _CACHE:
+    dispatcher = numba.njit(cache=False, fastmath=False, error_model="numpy", **options)(func)
+    if _CACHE and hasattr(dispatcher, "py_func"):  # not a plain function (NUMBA_DISABLE_JIT)
         dispatcher._cache = _Cache(dispatcher.py_func)
     return dispatcher  # type: ignore[no-any-return]
 
