@@ -69,8 +69,8 @@ def _ping_curved() -> int:
 def warm_up() -> None:
     """Start the workers and load the kernels in each (the first page then draws at once).
 
-    The MDR solver's kernels (a curved tip) load after, while the page is served (they compile on a
-    first start without numba's cache: the page must not wait for them).
+    The MDR solver's kernels (a curved tip) load after, while the page is served (from the disk
+    cache the server's warm-up wrote, :func:`vibrofriction.explorer.serve`).
     """
     for kind, size in _SIZES.items():
         futures = [_pool(kind).submit(_ping) for _ in range(size)]

@@ -18,7 +18,9 @@ def serve(port: int = 5006, show: bool = True) -> None:
 
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # stop the workers too
     print("vibrofriction explorer: starting (loading the solver's kernels) ...", flush=True)
-    warm_up(("flat", "histories"))  # compiled once here (with progress), then loaded by each worker
+    # compiled once (with progress; on a cold start the curved tip's kernels beside the flat
+    # punch's, no longer in wall time), then loaded by each worker
+    warm_up(("flat", "curved", "histories"))
     pool.warm_up()
     pn.extension()
     print(f"vibrofriction explorer: http://127.0.0.1:{port}/  (Ctrl-C stops it)", flush=True)
