@@ -183,9 +183,9 @@ def warm_up(parts: Sequence[str] | None = None, *, workers: int | None = None,
         bar.update(1)
         bar.set_postfix_str(f"{compiled} functions compiled")
 
-    with tqdm(total=len(names), desc="compiling the solver's kernels, once", unit=" part",
-              disable=not progress, file=sys.stderr,
-              bar_format="{desc}: {n}/{total} parts [{elapsed}] {postfix}") as bar:
+    with tqdm(total=len(names), desc="the solver's kernels (compiled once, then loaded from "
+              "disk)", unit=" part", disable=not progress, file=sys.stderr,
+              bar_format="{desc}: {n}/{total} parts [{elapsed}]{postfix}") as bar:
         if workers > 1:
             tasks = iter([(_run_part, (name,), done) for name in names])
             run_tasks(lambda: next(tasks, None), workers=workers)
