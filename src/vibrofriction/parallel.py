@@ -324,8 +324,9 @@ def mapper(workers: int, warm_up: Callable[[], None] | None = None) -> Iterator[
     with process_pool(workers, warm_up) as pool:
 
         def map_(func: Callable[[Any], Any], items: Iterable[Any]) -> list[Any]:
-            futures = [pool.submit(func, item) for item in items]
-            try:
+            futures: list[Future] = []
+            try:  # a worker may die while the items are still being submitted
+                futures.extend(pool.submit(func, item) for item in items)
                 return [f.result() for f in futures]
             except BrokenProcessPool as exc:
                 raise _worker_died() from exc

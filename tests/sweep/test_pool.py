@@ -164,6 +164,21 @@ def test_a_map_raises_a_task_s_error_and_a_dead_worker() -> None:
             map_(_exit_worker, [3, 3])
 
 
+def _slowly(items):
+    """The items, the next one a second after the first was taken."""
+    for i, item in enumerate(items):
+        if i:
+            time.sleep(1.0)
+        yield item
+
+
+def test_a_worker_dying_while_items_are_still_submitted_raises_the_same() -> None:
+    """The pool is broken before the second item is submitted (submit itself raises)."""
+    with mapper(2) as map_:
+        with pytest.raises(RuntimeError, match="a local worker process died"):
+            map_(_exit_worker, _slowly([3, 3]))
+
+
 def test_a_map_drives_differential_evolution_as_its_workers() -> None:
     """The fit's global stage: scipy calls ``workers(func, population)``; the answer is
     the one of the serial run (same seed, deferred updating), found in the workers."""
