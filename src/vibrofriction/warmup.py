@@ -71,6 +71,20 @@ def _gradients() -> None:
 PARTS: dict[str, Callable[[], None]] = {
     "flat": _flat, "plane": _plane, "curved": _curved, "histories": _histories,
     "gradients": _gradients}
+#: A kernel of each part (module of ``_kernels``, name): found in a disk cache, the part is
+#: taken to be there (loaded here, no pool started)
+_MARKS = {"flat": ("steady", "steady_state_many"), "plane": ("plane", "plane_steady_state_many"),
+          "curved": ("mdr", "steady_row"), "histories": ("integrate", "run_periods"),
+          "gradients": ("sensitivity", "orbit_sensitivity_many")}
+
+
+def _cached(name: str) -> bool:
+    import importlib
+
+    from ._kernels.jit import cached
+
+    module, kernel = _MARKS[name]
+    return cached(getattr(importlib.import_module(f"._kernels.{module}", __package__), kernel))
 
 
 @dataclass(frozen=True)
@@ -86,7 +100,7 @@ class WarmUp:
     seconds : float
         Wall time.
     workers : int
-        Processes that compiled.
+        Processes that compiled (1 where every part was in a disk cache already).
     """
 
     parts: tuple[str, ...]
@@ -149,8 +163,9 @@ def warm_up(parts: Sequence[str] | None = None, *, workers: int | None = None,
     workers : int, optional
         Processes that compile parts side by side first (the package's pool,
         :mod:`vibrofriction.parallel`), each writing numba's disk cache, which this process
-        then loads; default ``min(2, available cores)``; ``1`` compiles here. Without a
-        disk cache (``VIBROFRICTION_JIT_CACHE=0``) everything compiles here.
+        then loads; default ``min(2, available cores)``; ``1`` compiles here. Where a disk
+        cache already holds every part, or without one (``VIBROFRICTION_JIT_CACHE=0``),
+        everything happens here, in this process.
     progress : bool, optional
         A progress bar on stderr (a part a step).
 
@@ -175,6 +190,8 @@ def warm_up(parts: Sequence[str] | None = None, *, workers: int | None = None,
     names = _checked(parts)
     workers = min(2, available_cores()) if workers is None else check_workers(workers)
     workers = min(workers, len(names)) if caching() else 1
+    if workers > 1 and all(_cached(name) for name in names):
+        workers = 1  # a load: a pool would only cost its start
     compiled = 0
 
     def done(n: int) -> None:

@@ -12,7 +12,7 @@ import sys
 import numba
 import pytest
 
-from vibrofriction._kernels import jit, notice
+from vibrofriction._kernels import jit, notice, steady
 from vibrofriction.cli import run
 from vibrofriction.warmup import PARTS, warm_up
 
@@ -49,10 +49,13 @@ def test_the_notice_is_off_by_the_environment_or_inside_a_warm_up(how, monkeypat
     assert capsys.readouterr().err == ""
 
 
-def test_a_second_warm_up_compiles_nothing():
-    warm_up(["flat"], workers=1, progress=False)
-    again = warm_up(["flat"], workers=1, progress=False)
-    assert again.parts == ("flat",) and again.compiled == 0 and again.workers == 1
+def test_a_second_warm_up_compiles_nothing_and_starts_no_pool():
+    warm_up(["flat", "plane"], workers=1, progress=False)
+    again = warm_up(["plane", "flat"], workers=2, progress=False)
+    assert again.parts == ("flat", "plane") and again.compiled == 0
+    assert again.workers == 1  # in the disk cache: loaded here, no pool started
+    assert jit.cached(steady.steady_state_many)
+    assert not jit.cached(len)  # not a kernel
 
 
 @pytest.mark.parametrize("parts", [["flats"], []])

@@ -78,6 +78,17 @@ class _Cache(FunctionCache):
         return data
 
 
+def cached(kernel: Callable[..., Any]) -> bool:
+    """Whether a disk cache (numba's, or the shipped one on a machine it serves) holds
+    compiled code of ``kernel``, for any signature (an index look-up, nothing compiled).
+    """
+    cache = getattr(kernel, "_cache", None)
+    if not isinstance(cache, _Cache):
+        return False
+    return bool(cache._cache_file._load_index()) or (
+        SHIPPED.is_dir() and _runs_shipped() and bool(cache._shipped._load_index()))
+
+
 def caching() -> bool:
     """Whether compiled kernels are cached on disk (``VIBROFRICTION_JIT_CACHE``)."""
     return _CACHE
