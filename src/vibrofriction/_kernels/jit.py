@@ -66,7 +66,7 @@ class _Cache(FunctionCache):
         super().__init__(py_func)
         self._shipped = IndexDataCacheFile(cache_path=str(SHIPPED),
                                            filename_base=self._impl.filename_base,
-                                           source_stamp=self._impl.locator.get_source_stamp())
+                                           source_stamp=self._cache_file._source_stamp)
 
     def _load_overload(self, sig: Any, target_context: Any) -> Any:
         data = super()._load_overload(sig, target_context)
