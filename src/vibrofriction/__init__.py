@@ -27,7 +27,7 @@ if TYPE_CHECKING:
         read_measurements,
         synthetic_measurements,
     )
-    from .params import Case, Dimensionless, Physical, classify, pin_damping
+    from .params import Case, Dimensionless, Physical, RateAndState, classify, pin_damping
     from .solver import (
         CurvedHistory,
         Event,
@@ -50,8 +50,8 @@ if TYPE_CHECKING:
 # ``vibrofriction.sweep`` (a callable module) pulls in xarray, zarr and Dask and the bench
 # lmfit, pandas and xarray, likewise only when used.
 _WHERE = {
-    **dict.fromkeys(("Case", "Dimensionless", "Physical", "classify", "pin_damping"),
-                    ".params"),
+    **dict.fromkeys(("Case", "Dimensionless", "Physical", "RateAndState", "classify",
+                     "pin_damping"), ".params"),
     **dict.fromkeys(("CurvedHistory", "Event", "FrictionResult", "FrictionResults", "History",
                      "PlaneHistory", "SectionState", "SolverSettings", "Status",
                      "friction_coefficient", "simulate"), ".solver"),
@@ -103,6 +103,7 @@ __all__ = [
     "History",
     "Physical",
     "PlaneHistory",
+    "RateAndState",
     "SectionState",
     "SolverSettings",
     "Status",

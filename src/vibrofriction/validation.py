@@ -10,6 +10,7 @@ allowed range and the first offending value.  The model's parameters are checked
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -293,7 +294,38 @@ def validated(values: Mapping[str, ArrayLike], *,
             out[p.name] = _checked_above(p.name, values[p.name], r.above, out[r.above])
         else:
             out[p.name] = _in_range(p.name, values[p.name], r)
+    _check_friction_law(out)
     return {n: out[n] for n in values}
+
+
+#: Pairs of the friction law's parameters that cannot go together: ``(name, other, bad,
+#: why)``, refused where ``bad(value, other's value)`` (the first offending value named).
+_FRICTION_PAIRS: tuple[tuple[str, str, Any, str], ...] = (
+    ("rs_b", "rs_a", lambda b, a: (b > 0.0) & (a == 0.0),
+     "rs_b > 0 needs rs_a > 0 (rs_a = 0 is Coulomb friction)"),
+    ("rs_alpha_ld", "rs_a", lambda al, a: (al > 0.0) & (a == 0.0),
+     "rs_alpha_ld > 0 needs rs_a > 0 (rs_a = 0 is Coulomb friction)"),
+    ("rs_alpha_ld", "rs_b", lambda al, b: (al > 0.0) & (b == 0.0),
+     "rs_alpha_ld > 0 needs rs_b > 0 (the state's response to the normal force is "
+     "alpha_ld/b)"),
+    ("rs_alpha_ld", "amplitude", lambda al, am: (al > 0.0) & (am >= 1.0),
+     "rs_alpha_ld > 0 needs amplitude < 1 (the response -(alpha_ld/b) theta n'/n diverges "
+     "where the normal force reaches 0)"),
+    ("static_ratio", "rs_a", lambda s, a: (s != 1.0) & (a > 0.0),
+     "static_ratio > 1 is a law of Coulomb friction: it needs rs_a = 0"),
+)
+
+
+def _check_friction_law(out: Mapping[str, NDArray[np.float64]]) -> None:
+    """Refuse the friction law's parameters that cannot go together (both given)."""
+    for name, other, bad, why in _FRICTION_PAIRS:
+        if name in out and other in out:
+            x, y = np.broadcast_arrays(out[name], out[other])
+            hit = bad(x, y)
+            if np.any(hit):
+                i = np.flatnonzero(hit)[0]
+                raise ValueError(f"{why}: got {name} = {float(x.flat[i]):g} with {other} = "
+                                 f"{float(y.flat[i]):g}")
 
 
 def checked_number(name: str, value: object, allowed: Range) -> float:

@@ -169,7 +169,8 @@ def test_dataset_is_labelled(serial: xr.Dataset) -> None:
     methods = json.loads(ds.attrs["solver_methods"])
     assert methods["event"]["tol_mean"] == 1e-7 and methods["mdr"]["max_periods"] == 4000
     assert ds.attrs["velocity"] == "vbar"
-    assert ds.attrs["fixed"] == "a_x a_y amplitude eta_c phase_x phase_y profile_exponent zeta"
+    assert ds.attrs["fixed"] == ("a_x a_y amplitude eta_c phase_x phase_y profile_exponent rs_a "
+                                 "rs_alpha_ld rs_b rs_d_c rs_v_ref static_ratio zeta")
 
 
 def test_values_match_friction_coefficient_bitwise(serial: xr.Dataset) -> None:

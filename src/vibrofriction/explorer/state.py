@@ -69,7 +69,8 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
 #: the tip's profile is offered by a selector of its own (:data:`PROFILES`, :data:`PROFILE`)
 #: over the MDR solver (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is
 #: axisymmetric here
-_NOT_OFFERED = ("profile_exponent",)
+_NOT_OFFERED = ("profile_exponent", "static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref",
+                "rs_alpha_ld")
 DIMENSIONLESS = tuple(_model_field(n, *_SLIDERS[n])
                       for n in parameter_names("dimensionless", optional=False)
                       if n not in _NOT_OFFERED)
@@ -84,7 +85,8 @@ PROFILE = _model_field("profile_exponent", 0.25, 20.0,
 #: with the library's refusal shown next to them (docs/explorer.md); it takes the
 #: longitudinal in-plane oscillation ``a_x`` at ``V != 0`` (not at ``V = 0``:
 #: :meth:`State.velocities` leaves that point out)
-MDR_REFUSED = tuple(lim.parameter for lim in CAPABILITIES["mdr"].limits if lim.whole)
+MDR_REFUSED = tuple(lim.parameter for lim in CAPABILITIES["mdr"].limits
+                    if lim.whole and lim.parameter not in _NOT_OFFERED)
 #: the most points of a curve of a curved tip (the MDR solver: ~30 ms a point, up to a few
 #: tenths of a second near the onset of sliding)
 MDR_POINTS = 40

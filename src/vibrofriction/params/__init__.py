@@ -13,8 +13,9 @@ from __future__ import annotations
 from .cases import Case, classify, inertial_to_vbar, vbar_to_inertial
 from .conversion import System, dimensionless, inertial_velocity
 from .dimensionless import Dimensionless
+from .friction import RateAndState
 from .physical import Physical, pin_damping
 
-__all__ = ["Case", "Dimensionless", "Physical", "System", "classify", "dimensionless",
-           "inertial_to_vbar", "inertial_velocity", "pin_damping",
+__all__ = ["Case", "Dimensionless", "Physical", "RateAndState", "System", "classify",
+           "dimensionless", "inertial_to_vbar", "inertial_velocity", "pin_damping",
            "vbar_to_inertial"]

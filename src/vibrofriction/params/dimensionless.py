@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from dataclasses import dataclass
@@ -13,6 +14,7 @@ from vibrofriction.validation import as_float_or_array, checked_choice
 
 from .cases import Case, classify, critical_for_vbar, inertial_to_vbar
 from .fields import FloatOrArray, valid_array, validate_fields
+from .friction import RateAndState
 
 
 # --------------------------------------------------------------------------- dimensionless
@@ -62,6 +64,18 @@ class Dimensionless:
         ``"substrate"`` (default: the contact point sticks to the oscillating substrate,
         slip is relative to it) or ``"holder"`` (the pulled end of the system spring and
         dashpot oscillates; the substrate is at rest).
+    static_ratio : float
+        ``mu_static / mu0 >= 1``: a stuck contact holds while ``|f| <= static_ratio n`` and
+        then slips at the kinetic ``mu0`` (default 1: Coulomb friction;
+        docs/friction_laws.md).
+    rs_a, rs_b, rs_d_c, rs_v_ref, rs_alpha_ld : float
+        Rate-and-state friction in the model's units (docs/friction_laws.md): ``a``, ``b``
+        and the Linker-Dieterich ``alpha`` over ``mu_star = mu0``, ``d_c`` in units of the
+        inertial length ``mu_star F_N0 / (m omega^2)``, ``v_ref`` in units of the inertial
+        velocity.  ``rs_a = 0`` (default) is Coulomb friction; :meth:`with_friction`
+        sets them from a :class:`~vibrofriction.RateAndState` law.
+    rs_law : str
+        The state's evolution law, ``"aging"`` (default) or ``"slip"``.
 
     Raises
     ------
@@ -94,12 +108,36 @@ class Dimensionless:
     alpha_y: float | None = None
     zeta_y: float | None = None
     profile_exponent: float = math.inf
+    static_ratio: float = 1.0
+    rs_a: float = 0.0
+    rs_b: float = 0.0
+    rs_d_c: float = 1.0
+    rs_v_ref: float = 1.0
+    rs_alpha_ld: float = 0.0
     inplane_on: str = "substrate"
+    rs_law: str = "aging"
 
     def __post_init__(self) -> None:
-        """Check every field against its range in the schema, and ``inplane_on``."""
+        """Check every field against its range in the schema, and the choices."""
         validate_fields(self, "dimensionless")
         checked_choice("inplane_on", self.inplane_on)
+        checked_choice("rs_law", self.rs_law)
+
+    @property
+    def friction(self) -> RateAndState | None:
+        """The rate-and-state law in the model's units, or None (Coulomb: ``rs_a = 0``)."""
+        if self.rs_a == 0.0:
+            return None
+        return RateAndState(a=self.rs_a, b=self.rs_b, d_c=self.rs_d_c, v_ref=self.rs_v_ref,
+                            alpha_ld=self.rs_alpha_ld, law=self.rs_law)
+
+    def with_friction(self, friction: RateAndState | None) -> Dimensionless:
+        """A copy with the rate-and-state law ``friction`` (in the model's units; None: Coulomb)."""
+        if friction is None:
+            return dataclasses.replace(self, rs_a=0.0, rs_b=0.0, rs_alpha_ld=0.0)
+        return dataclasses.replace(self, rs_a=friction.a, rs_b=friction.b, rs_d_c=friction.d_c,
+                                   rs_v_ref=friction.v_ref, rs_alpha_ld=friction.alpha_ld,
+                                   rs_law=friction.law)
 
     @property
     def pin_y(self) -> tuple[float, float]:

@@ -16,6 +16,7 @@ from vibrofriction.validation import as_float_or_array, checked, checked_choice,
 
 from .dimensionless import Dimensionless
 from .fields import FloatOrArray, valid_array, valid_float, validate_fields
+from .friction import RateAndState
 
 
 def pin_damping(k_x: float, mass: float, *, zeta: float | None = None,
@@ -118,6 +119,13 @@ class Physical:
     inplane_on : str
         Where both components are imposed: ``"substrate"`` (default) or ``"holder"`` (the pulled end
         of ``k_x`` and ``c_x``).
+    mu_static : float or None
+        The static coefficient of friction, ``>= mu0``: a stuck contact holds while ``|f| <=
+        mu_static n`` and then slips at the kinetic ``mu0``; None (default) is ``mu0``
+        (Coulomb friction; docs/friction_laws.md).
+    friction : RateAndState or None
+        Rate-and-state friction in SI units (:class:`~vibrofriction.RateAndState`, with
+        ``mu_star = mu0``); None (default) is Coulomb friction.
 
     Raises
     ------
@@ -154,7 +162,9 @@ class Physical:
     k_y: float | None = None
     c_y: float | None = None
     profile_exponent: float = math.inf
+    mu_static: float | None = None
     inplane_on: str = "substrate"
+    friction: RateAndState | None = None
 
     #: How :func:`~vibrofriction.bench.from_bench` set ``u_z0`` from its load (not a field:
     #: the model is the imposed indentation about ``u_z0`` either way, and a copy made by
@@ -166,6 +176,34 @@ class Physical:
         """Check every field against its range in the schema, and ``inplane_on``."""
         validate_fields(self, "physical")
         checked_choice("inplane_on", self.inplane_on)
+        if self.mu_static is not None and self.mu_static < self.mu0:
+            raise ValueError(f"mu_static must be >= mu0 (= {self.mu0!r}; the static coefficient "
+                             f"is at least the kinetic one), got {self.mu_static!r}")
+        if self.friction is not None:
+            if not isinstance(self.friction, RateAndState):
+                raise TypeError("friction must be a vibrofriction.RateAndState or None, got "
+                                f"{type(self.friction).__name__}")
+            if self.mu_static is not None and self.mu_static != self.mu0:
+                raise ValueError("mu_static is a law of Coulomb friction: give it without "
+                                 f"friction= (got mu_static = {self.mu_static!r} with a "
+                                 "rate-and-state law)")
+
+    @property
+    def static_ratio(self) -> float:
+        """``mu_static / mu0`` (1 for Coulomb friction)."""
+        return 1.0 if self.mu_static is None else self.mu_static / self.mu0
+
+    def friction_fields(self, omega: float | None = None) -> dict[str, float | str]:
+        """The friction law's fields of :class:`Dimensionless` at ``omega`` (this pin's if None).
+
+        ``static_ratio`` and, with a rate-and-state law, ``rs_*`` (:meth:`RateAndState.scaled`).
+        """
+        fields: dict[str, float | str] = {"static_ratio": self.static_ratio}
+        if self.friction is not None:
+            fields.update(self.friction.scaled(self.mu0, self.F_N0, self.mass,
+                                               self.omega if omega is None else omega
+                                               ).scaled_fields())
+        return fields
 
     @property
     def pin_y(self) -> tuple[float, float]:
@@ -261,8 +299,8 @@ class Physical:
 
         ``alpha``, ``beta`` (eq. 20), ``a = du_z/u_z0``, ``zeta``, ``eta_c``, the in-plane
         oscillation ``a_x`` (:meth:`inplane_amplitude`), ``phase_x``, ``a_y``, ``phase_y``,
-        ``inplane_on``, and the transverse pin ``alpha_y``, ``zeta_y`` (:meth:`transverse_groups`;
-        None for an axisymmetric pin).
+        ``inplane_on``, the transverse pin ``alpha_y``, ``zeta_y`` (:meth:`transverse_groups`;
+        None for an axisymmetric pin) and the friction law (:meth:`friction_fields`).
         """
         alpha, beta, a, zeta, eta_c = self.groups(self.du_z, self.omega)
         alpha_y, zeta_y = self.transverse_groups(self.omega)
@@ -275,7 +313,7 @@ class Physical:
                              alpha_y=None if alpha_y is None else float(alpha_y),
                              zeta_y=None if zeta_y is None else float(zeta_y),
                              profile_exponent=self.profile_exponent,
-                             inplane_on=self.inplane_on)
+                             inplane_on=self.inplane_on, **self.friction_fields())  # type: ignore[arg-type]
 
     def transverse_groups(self, omega: ArrayLike) -> tuple[NDArray[np.float64] | None, ...]:
         """``(alpha_y, zeta_y) = (k_y / (m omega^2), c_y / (2 sqrt(k_y m)))`` at ``omega``.

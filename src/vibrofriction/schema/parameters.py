@@ -240,6 +240,27 @@ PARAMETERS: tuple[Parameter, ...] = (
        "(1 cone, 2 sphere; inf = the flat punch, the single spring of the seed): the "
        "contact by the method of dimensionality reduction", "n", "docs/contact_geometry.md",
        Range(0.0, strict=True, allow_inf=True), float("inf"), also=(_P,)),
+    _p("mu_static", _P, "1", "static coefficient of friction: a stuck contact holds while "
+       "|f| <= mu_static n, then its force drops to mu0 n (mu0 the kinetic one; >= mu0); "
+       "None: mu0 (Coulomb friction)", "mu_s", "docs/friction_laws.md", twin="mu0"),
+    _p("static_ratio", _D, "1", "static over kinetic coefficient of friction, mu_static / mu0 "
+       "(>= 1; 1: Coulomb friction)", "mu_s/mu0", "docs/friction_laws.md", Range(1.0), 1.0,
+       "mu_static / mu0"),
+    _p("rs_a", _D, "1", "direct effect a of rate-and-state friction over mu_star (mu_star = "
+       "mu0; 0: Coulomb friction, no rate-and-state law)", "a/mu_star",
+       "docs/friction_laws.md", NONNEGATIVE, 0.0, "a / mu_star"),
+    _p("rs_b", _D, "1", "evolution effect b of rate-and-state friction over mu_star (b > a: "
+       "velocity weakening)", "b/mu_star", "docs/friction_laws.md", NONNEGATIVE, 0.0,
+       "b / mu_star"),
+    _p("rs_d_c", _D, "1", "critical slip distance d_c of rate-and-state friction in units of "
+       "the inertial length mu_star F_N0 / (m omega^2)", "d_c", "docs/friction_laws.md",
+       POSITIVE, 1.0, "d_c m omega^2 / (mu_star F_N0)"),
+    _p("rs_v_ref", _D, "1", "reference slip velocity v_ref of rate-and-state friction in units "
+       "of the inertial velocity mu_star F_N0 / (m omega)", "v_ref", "docs/friction_laws.md",
+       POSITIVE, 1.0, "v_ref m omega / (mu_star F_N0)"),
+    _p("rs_alpha_ld", _D, "1", "Linker-Dieterich coefficient alpha of the state's response to "
+       "the normal force over mu_star (0: no normal-stress memory)", "alpha_LD/mu_star",
+       "docs/friction_laws.md", NONNEGATIVE, 0.0, "alpha_LD / mu_star"),
     _p("vbar", _V, "1", "sliding velocity over the critical velocity, v0 / v0*", "vbar",
        "(16)", NONNEGATIVE, definition="v0 / v0*"),
     _p("v_inertial", _V, VELOCITY_UNIT, FIELD["v_inertial"].long_name, "V", "Fig. 6",
@@ -305,6 +326,10 @@ CHOICES: dict[str, Choice] = {
                          "substrate (the contact point sticks to it; slip is relative to "
                          "it) or the pin's holder (the pulled end of the system spring)",
                          ("substrate", "holder"), "substrate", also=(_P,)),
+    "rs_law": Choice("rs_law", _D, "the evolution law of the state of rate-and-state "
+                     "friction (rs_a > 0): aging, theta' = 1 - |w'| theta / d_c, or slip, "
+                     "theta' = -(|w'| theta / d_c) ln(|w'| theta / d_c)",
+                     ("aging", "slip"), "aging"),
 }
 
 
@@ -325,7 +350,7 @@ def choice_names(model: str) -> tuple[str, ...]:
     --------
     >>> from vibrofriction.schema import choice_names
     >>> choice_names("dimensionless")
-    ('inplane_on',)
+    ('inplane_on', 'rs_law')
     """
     return tuple(c.name for c in CHOICES.values() if model in (c.model, *c.also))
 
@@ -380,7 +405,7 @@ def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
     >>> from vibrofriction.schema import parameter_names
     >>> parameter_names("dimensionless", optional=False)
     ('alpha', 'beta', 'amplitude', 'zeta', 'eta_c', 'a_x', 'phase_x', 'a_y', 'phase_y',
-     'profile_exponent')
+     'profile_exponent', 'static_ratio', 'rs_a', 'rs_b', 'rs_d_c', 'rs_v_ref', 'rs_alpha_ld')
     """
     return tuple(p.name for p in parameters(model) if optional or not p.twin)
 

@@ -127,8 +127,15 @@ def solve_points(
     alpha_y: ArrayLike | None = None,
     zeta_y: ArrayLike | None = None,
     profile_exponent: ArrayLike = math.inf,
+    static_ratio: ArrayLike = 1.0,
+    rs_a: ArrayLike = 0.0,
+    rs_b: ArrayLike = 0.0,
+    rs_d_c: ArrayLike = 1.0,
+    rs_v_ref: ArrayLike = 1.0,
+    rs_alpha_ld: ArrayLike = 0.0,
     *,
     inplane_on: str | ArrayLike = "substrate",
+    rs_law: str | ArrayLike = "aging",
     initial: Initial | NDArray[np.object_] = "sliding",
     settings: SolverSettings | None = None,
 ) -> dict[str, NDArray]:
@@ -159,9 +166,17 @@ def solve_points(
         (None: those of the sliding direction).
     profile_exponent : array_like, optional
         The tip's power-law exponent (``inf``: the flat punch).
+    static_ratio : array_like, optional
+        ``mu_static / mu0 >= 1`` (1: Coulomb friction; docs/friction_laws.md).
+    rs_a, rs_b, rs_d_c, rs_v_ref, rs_alpha_ld : array_like, optional
+        Rate-and-state friction in the model's units (``rs_a = 0``: Coulomb friction;
+        docs/friction_laws.md).
     inplane_on : str or array_like of str, keyword-only
         Where the in-plane oscillation acts: ``"substrate"`` (default) or the other body;
         one name or an array of names.
+    rs_law : str or array_like of str, keyword-only
+        The state's evolution law of rate-and-state friction: ``"aging"`` (default) or
+        ``"slip"``.
     initial : str, SectionState or ndarray of SectionState, keyword-only
         ``"sliding"`` (default), ``"rest"``, one :class:`SectionState` or one per point.
     settings : SolverSettings or None, keyword-only
@@ -196,7 +211,9 @@ def solve_points(
         "alpha": alpha, "beta": beta, "amplitude": amplitude, "v_inertial": v_inertial,
         "zeta": zeta, "eta_c": eta_c, "a_x": a_x, "phase_x": phase_x, "a_y": a_y,
         "phase_y": phase_y, "alpha_y": alpha_y, "zeta_y": zeta_y,
-        "profile_exponent": profile_exponent, "inplane_on": inplane_on})
+        "profile_exponent": profile_exponent, "static_ratio": static_ratio, "rs_a": rs_a,
+        "rs_b": rs_b, "rs_d_c": rs_d_c, "rs_v_ref": rs_v_ref, "rs_alpha_ld": rs_alpha_ld,
+        "inplane_on": inplane_on, "rs_law": rs_law})
     return solve_table(points, initial, settings or DEFAULT_SETTINGS)
 
 
@@ -360,7 +377,7 @@ def friction_coefficient(
     """
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
-    if V.__class__ is float and V > 0.0 \
+    if V.__class__ is float and V > 0.0 and dim.static_ratio == 1.0 and dim.rs_a == 0.0 \
             and method_of(dim.profile_exponent, dim.a_y) is EVENT:  # one moving point
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)

@@ -24,6 +24,10 @@ from ..solver import section_state, solve_points
 from ._grid import DIMENSIONLESS, Plan
 from ._variables import point_variables, row_variables
 
+#: The parameters of the critical velocity of continuous sliding (the same for a static
+#: coefficient above the kinetic one: a sliding contact has the kinetic force).
+CRITICAL_ARGUMENTS = ("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x")
+
 __all__ = ["compute_block", "identity", "warm_up"]
 
 #: the source files that determine the values of a sweep (relative to the package)
@@ -115,14 +119,14 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
     point = {n: p[n] for n in DIMENSIONLESS}
     shape = p["alpha"].shape
     # V at vbar = 1, eq. (12) damped: also where vbar does not exist (inf, 0)
-    plain = {n: x for n, x in point.items() if n not in ("a_y", "phase_y", "profile_exponent")}
+    plain = {n: x for n, x in point.items() if n in CRITICAL_ARGUMENTS}
     critical = np.array(theory.critical_inertial_velocity(**plain, inplane_on=plan.inplane_on),
                         dtype=float).reshape(shape)
     # a transverse oscillation: no continuous sliding at full friction (docs/inplane.md)
     critical = np.where(np.asarray(point["a_y"]).reshape(shape) > 0.0, np.inf, critical)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
-        system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},
+        system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},  # type: ignore[arg-type]
                                inplane_on=plan.inplane_on)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         if system.curved:
@@ -150,7 +154,7 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     V = np.empty((*shape, vel.size))
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
-        system = Physical(**{name: float(arr[i]) for name, arr in p.items()},
+        system = Physical(**{name: float(arr[i]) for name, arr in p.items()},  # type: ignore[arg-type]
                           inplane_on=plan.inplane_on)
         dim = system.to_dimensionless()
         for n, x in point.items():
