@@ -113,6 +113,8 @@ def _physical(a: Args) -> Physical:
             physical = physical.with_(**inplane)
         if pin_y:
             physical = physical.with_(**pin_y)
+        if a.has("mu_static"):
+            physical = physical.with_(mu_static=a["mu_static"])
         if a.has("profile_exponent") and a["profile_exponent"] != physical.profile_exponent:
             raise ValueError("--profile-exponent: a bench file's contact geometry and "
                              "contact_model give the profile (docs/bench.md)")
@@ -123,7 +125,8 @@ def _physical(a: Args) -> Physical:
     if a.has("quality_factor") and a.has("c_x"):
         raise ValueError("give either --c-x or --quality-factor")
     system = Physical(**{n: a[n] for n in REQUIRED_SI}, c_x=a["c_x"], c_xc=a["c_xc"],
-                      **inplane, **pin_y, profile_exponent=a["profile_exponent"])
+                      **inplane, **pin_y, profile_exponent=a["profile_exponent"],
+                      mu_static=a["mu_static"])
     if a.has("quality_factor"):
         system = system.with_damping(quality_factor=a["quality_factor"])
     return system
