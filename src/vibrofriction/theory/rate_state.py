@@ -119,7 +119,8 @@ def sliding_eigenvalues(alpha: float, beta: float, zeta: float, v: float, rs_a: 
     Per unit of the drive's time ``tau = omega t``; ``Im s`` is the angular frequency of
     the stick-slip that grows where ``Re s > 0``.
     """
-    return np.roots(sliding_polynomial(alpha, beta, zeta, v, rs_a, rs_b, rs_d_c, rs_v_ref))
+    return np.roots(sliding_polynomial(alpha, beta, zeta, v, rs_a, rs_b, rs_d_c,
+                                       rs_v_ref)).astype(complex)
 
 
 def _hurwitz_margin(c: NDArray[np.float64]) -> float:
