@@ -72,6 +72,18 @@ cannot run without is refused, with a ValueError naming the parameter and its ra
 """
 
 from .events import PeerRun, solve_ivp_mu, solve_ivp_run
+from .friction_laws import (
+    RateStateHistory,
+    RateStateRun,
+    StaticKineticHistory,
+    StaticKineticRun,
+    mu_steady_state,
+    rate_state_history,
+    rate_state_run,
+    static_kinetic_history,
+    static_kinetic_mu,
+    static_kinetic_run,
+)
 from .fixed_step import (
     PeriodMeans,
     ReferenceHistory,
@@ -92,15 +104,25 @@ __all__ = [
     "MDRReference",
     "PeerRun",
     "PeriodMeans",
+    "RateStateHistory",
+    "RateStateRun",
     "ReferenceHistory",
+    "StaticKineticHistory",
+    "StaticKineticRun",
     "inplane_mean",
     "inplane_run",
     "mdr_mean",
     "mdr_reference",
+    "mu_steady_state",
+    "rate_state_history",
+    "rate_state_run",
     "return_mapping_history",
     "return_mapping_mu",
     "return_mapping_periods",
     "solve_ivp_mu",
     "solve_ivp_run",
+    "static_kinetic_history",
+    "static_kinetic_mu",
+    "static_kinetic_run",
     "steps_per_drive_period",
 ]
