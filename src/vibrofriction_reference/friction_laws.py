@@ -47,13 +47,18 @@ rate; ``a, b, alpha_ld`` fractions of ``mu_star`` (the force unit is ``mu_star F
     aging: theta' = 1 - |w'| theta/d_c;  slip: theta' = -(|w'| theta/d_c) ln(|w'| theta/d_c)
     Linker-Dieterich: theta' += -(alpha_ld/b) theta n'/n
 
-*Method.*  :func:`scipy.integrate.solve_ivp` with ``method="Radau"`` (implicit, L-stable:
-the slip rate is exponentially stiff as ``n -> 0``) and an analytic Jacobian, on the
-state ``(y, x', e = x - w, ln theta)`` (finite contact, ``f = k e``) or ``(y, x', ln
-theta)`` (rigid, ``w = x``, ``f = n mu(x', theta)``), with the integrals of ``f`` and ``n``
-as quadrature variables, one drive period at a time and cut at lift-off and touch-down
-(``cos tau = -1/A``).  In flight ``f = 0``, ``e = 0``, ``theta' = 1`` (aging) or 0 (slip);
-the contact re-forms unloaded.  Error bar: the same run at ``rtol`` and ``100 rtol``.
+*Method.*  :func:`scipy.integrate.solve_ivp` with an implicit method and an analytic
+Jacobian (the slip rate is exponentially stiff, and its stiffness grows like ``1/n`` as
+``n -> 0``): ``method="LSODA"`` by default (ODEPACK's switching Adams/BDF code), an arc it
+fails on redone with ``"Radau"``; ``"Radau"`` or ``"BDF"`` on request.  The state is ``(y,
+x', e = x - w, ln theta)`` (finite contact, ``f = k e``, ``e' = x' - w'(f, theta, n)``) or
+``(y, x', ln theta)`` (rigid, ``w = x``, ``f = n mu(x', theta)``), with the integrals of
+``f`` and ``n`` as quadrature variables, one drive period at a time.  With ``A >= 1`` a
+contact arc is cut where ``n`` falls to ``1e-6`` short of the lift-off (touch-down) at
+``cos tau = -1/A`` (the force there is below ``n``: its impulse is below ``1e-12``); in
+flight (closed form) ``f = 0``, ``e = 0``, ``theta' = 1`` (aging) or 0 (slip law), and the
+contact re-forms unloaded.  Error bar: the same run at ``rtol`` and ``100 rtol``.
+Exponentials are evaluated in logarithms (``exp(1/a)`` overflows for ``a < 1.4e-3``).
 """
 
 from __future__ import annotations
@@ -65,7 +70,6 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 from scipy.integrate import solve_ivp
-from scipy.linalg import expm
 
 from .model import (
     INITIAL_SLIDING,
@@ -310,6 +314,19 @@ def _law1_steps(alpha, beta, zeta, steps_per_period) -> int:
     return max(N, int(math.ceil(float(steps_per_period) * gamma - 1e-9)))
 
 
+def _law1_window(alpha, beta, amplitude, V, static_ratio, zeta, steps_per_period,
+                 transient_periods, average_periods, initial, refine):
+    """Checked parameters, one run at ``refine`` times the steps: per-period integrals, ``N``."""
+    alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
+    sigma = _check_sigma(static_ratio)
+    zeta, _ = check_damping(zeta, 0.0)
+    transient, average = check_windows(transient_periods, average_periods)
+    N = refine * _law1_steps(alpha, beta, zeta, steps_per_period)
+    pf, pn, _ = _law1(alpha, beta, amplitude, V, sigma, zeta, N, transient + average,
+                      transient, initial_code(initial), False)
+    return pf, pn, N
+
+
 @dataclass(frozen=True)
 class StaticKineticRun:
     """Result of :func:`static_kinetic_run`.
@@ -356,21 +373,14 @@ def static_kinetic_run(
     docstring for the method; measured order and cost in
     ``tests/reference/test_reference_friction_laws.py``.
     """
-    alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
-    sigma = _check_sigma(static_ratio)
-    zeta, _ = check_damping(zeta, 0.0)
-    transient, average = check_windows(transient_periods, average_periods)
-    code = initial_code(initial)
-    N = _law1_steps(alpha, beta, zeta, steps_per_period)
-    means = []
-    for steps in (2 * N, N):
-        pf, pn, _ = _law1(alpha, beta, amplitude, V, sigma, zeta, steps, transient + average,
-                          transient, code, False)
-        means.append((pf, pn))
-    (pf, pn), (pf_c, pn_c) = means
+    pf, pn, N = _law1_window(alpha, beta, amplitude, V, static_ratio, zeta, steps_per_period,
+                             transient_periods, average_periods, initial, 2)
+    pf_c, pn_c, _ = _law1_window(alpha, beta, amplitude, V, static_ratio, zeta,
+                                 steps_per_period, transient_periods, average_periods, initial,
+                                 1)
     mu = float(pf.sum() / pn.sum())
     mu_c = float(pf_c.sum() / pn_c.sum())
-    return StaticKineticRun(mu, mu_c, abs(mu - mu_c), pf / TWO_PI, pn / TWO_PI, 2 * N)
+    return StaticKineticRun(mu, mu_c, abs(mu - mu_c), pf / TWO_PI, pn / TWO_PI, N)
 
 
 def static_kinetic_mu(
@@ -386,18 +396,13 @@ def static_kinetic_mu(
     average_periods: int = 50,
     initial: int | str = INITIAL_SLIDING,
 ) -> float:
-    """``<f>/<n>`` of one run at ``steps_per_period`` (no error bar; see :func:`static_kinetic_run`).
+    """``<f>/<n>`` of law 1, one run at ``steps_per_period`` (see :func:`static_kinetic_run`).
 
     The step is ``2 pi / steps_per_drive_period(alpha, beta, steps_per_period)`` (that of
     the coarse run of :func:`static_kinetic_run` at the same ``steps_per_period``).
     """
-    alpha, beta, amplitude, V = check_parameters(alpha, beta, amplitude, V)
-    sigma = _check_sigma(static_ratio)
-    zeta, _ = check_damping(zeta, 0.0)
-    transient, average = check_windows(transient_periods, average_periods)
-    N = _law1_steps(alpha, beta, zeta, steps_per_period)
-    pf, pn, _ = _law1(alpha, beta, amplitude, V, sigma, zeta, N, transient + average,
-                      transient, initial_code(initial), False)
+    pf, pn, _ = _law1_window(alpha, beta, amplitude, V, static_ratio, zeta, steps_per_period,
+                             transient_periods, average_periods, initial, 1)
     return float(pf.sum() / pn.sum())
 
 
@@ -646,16 +651,27 @@ def _flight(model: _RateState, z: np.ndarray, t0: float, t1: float,
             t_eval: np.ndarray | None, rows: list) -> np.ndarray:
     """The state after a flight from ``t0`` to ``t1``, in closed form (samples into ``rows``).
 
-    ``y'' = -alpha y - gamma y'`` (a matrix exponential), ``e = 0``; aging ``theta' = 1``,
-    slip law ``theta' = 0``; no force, so the quadratures do not change.
+    ``y'' = -alpha y - gamma y'`` (its matrix exponential in closed form), ``e = 0``;
+    aging ``theta' = 1``, slip law ``theta' = 0``; no force, so the quadratures stay.
     """
-    M = np.array([[0.0, 1.0], [-model.alpha, -model.gamma]])
+    al, hg = model.alpha, 0.5 * model.gamma
+    K = np.array([[hg, 1.0], [-al, -hg]])  # M + gamma/2, M = [[0, 1], [-alpha, -gamma]]
+    d = hg * hg - al  # K @ K = d I, so exp(M t) = exp(-gamma t/2) (C(t) I + S(t) K)
     yv0 = np.array([z[0], z[1] - model.V])
     theta0 = math.exp(z[model.i_lam])
 
     def at(t):
         out = z.copy()
-        yv = expm(M * (t - t0)) @ yv0
+        s = t - t0
+        if d > 0.0:
+            r = math.sqrt(d)
+            c, sn = math.cosh(r * s), math.sinh(r * s) / r
+        elif d < 0.0:
+            r = math.sqrt(-d)
+            c, sn = math.cos(r * s), math.sin(r * s) / r
+        else:
+            c, sn = 1.0, s
+        yv = math.exp(-hg * s) * (c * yv0 + sn * (K @ yv0))
         out[0], out[1] = yv[0], yv[1] + model.V
         if not model.rigid:
             out[2] = 0.0
@@ -721,9 +737,9 @@ def _integrate(model: _RateState, periods: int, rtol: float, atol: float,
             stats["njev"] += sol.njev
             stats["nlu"] += sol.nlu
             z = sol.y[:, -1].copy()
-            if t_eval is not None:
-                for t in t_eval:
-                    rows.append((float(t), sol.sol(t), True))
+            if t_eval is not None and len(t_eval):
+                rows.extend((float(t), zz, True)
+                            for t, zz in zip(t_eval, sol.sol(t_eval).T, strict=True))
         pf[j], pn[j] = z[i_f], z[i_f + 1]
     return pf, pn, rows, stats
 
@@ -817,7 +833,7 @@ def rate_state_run(
     method: str = "LSODA",
     theta0: float | None = None,
 ) -> RateStateRun:
-    """``<f>/<n>`` with rate-and-state friction (law 2), ``solve_ivp`` (Radau) arc by arc.
+    """``<f>/<n>`` with rate-and-state friction (law 2), ``solve_ivp`` arc by arc.
 
     ``alpha, beta, amplitude, V`` as the Coulomb peers (``beta = math.inf``: rigid
     contact, ``w = x``), ``zeta`` the pin's damping ratio; ``a > 0``, ``b >= 0`` (fractions
@@ -826,10 +842,15 @@ def rate_state_run(
     ``"aging"`` or ``"slip"``.  Starts in steady sliding at ``V`` without oscillation
     (``theta = d_c/V``, ``f = mu_steady_state(V)``, ``e = f/k``, ``x' = V``, ``y =
     -f/alpha``), averages over ``average_periods`` drive periods after
-    ``transient_periods``.  The error bar comes from a second run at ``100 rtol, 100
-    atol``.  A rigid contact needs ``2 v_ref exp(-(1 + b ln(theta v_ref/d_c))/a)`` well
-    above the smallest float (the slope ``df/dx'`` at rest is its inverse): with ``a``
-    near 1e-3 use a finite contact.
+    ``transient_periods``; ``theta0`` replaces the initial ``theta`` (a perturbed start).
+    The error bar comes from a second run at ``100 rtol, 100 atol``; ``method``
+    ``"LSODA"`` (an arc it fails on is redone with Radau), ``"Radau"`` or ``"BDF"``
+    (the three agree to about 1e-8 at the default tolerances).  A rigid contact that
+    sticks is stiff like ``n a / c``, ``c = 2 v_ref exp(-(1 + b ln(theta v_ref/d_c))/a)``
+    (the slope ``df/dx'`` at rest): fine at ``a = 0.05, v_ref = 0.01`` (``c`` near
+    1e-10), but runs at ``a = 0.02`` that stick may take minutes or fail; use a stiff
+    finite contact there (its gap to the rigid one falls like ``1/k``), which is well
+    behaved down to ``a = 1e-3``.
     """
     model = _rate_state_model(alpha, beta, amplitude, V, a, b, d_c, v_ref, alpha_ld, law, zeta,
                               theta0)
