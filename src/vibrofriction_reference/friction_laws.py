@@ -52,8 +52,10 @@ Jacobian (the slip rate is exponentially stiff, and its stiffness grows like ``1
 ``n -> 0``): ``method="LSODA"`` by default (ODEPACK's switching Adams/BDF code), an arc it
 fails on redone with ``"Radau"``; ``"Radau"`` or ``"BDF"`` on request.  The state is ``(y,
 x', e = x - w, ln theta)`` (finite contact, ``f = k e``, ``e' = x' - w'(f, theta, n)``) or
-``(y, x', ln theta)`` (rigid, ``w = x``, ``f = n mu(x', theta)``), with the integrals of
-``f`` and ``n`` as quadrature variables, one drive period at a time.  With ``A >= 1`` a
+``(y, f, ln theta)`` (rigid, ``w = x``, ``f = n mu(x', theta)``: the force is the state and
+``x' = w'(f, theta, n)``, because the slope ``df/dx'`` at rest is ``exp(1/a)``; ``x'`` in
+flight), with the integrals of ``f`` and ``n`` as quadrature variables, one drive period
+at a time.  With ``A >= 1`` a
 contact arc is cut where ``n`` falls to ``1e-6`` short of the lift-off (touch-down) at
 ``cos tau = -1/A`` (the force there is below ``n``: its impulse is below ``1e-12``); in
 flight (closed form) ``f = 0``, ``e = 0``, ``theta' = 1`` (aging) or 0 (slip law), and the
@@ -546,17 +548,50 @@ class _RateState:
             rate += self.alpha_ld / self.b * self.A * math.sin(t) / n
         return rate, d_w, d_lam
 
+    def _rigid(self, t, z):
+        """A rigid contact in contact: state ``[y, f, ln theta, I_f, I_n]``.
+
+        The body velocity is the slip rate, ``x' = W(f, theta, n)`` (the inverse of ``f = n
+        mu(x', theta)``), and ``f`` follows from differentiating it: ``x'' = W_f f' + W_lam
+        lam' + W_n n'`` with ``W_lam = -(b/a) W``, ``W_n = -W_f f/n``, so
+
+            f' = (F - f + (b/a) W lam') / W_f + f n'/n,   F = -alpha y + gamma (V - W)
+
+        (a stiff relaxation of ``f`` towards the holding force ``F`` where the contact
+        sticks, ``W_f`` tiny, which implicit methods handle; its inverse, ``x'`` as the
+        state with ``f = n mu(x')``, has a slope ``df/dx'`` of ``exp(1/a)`` at rest).
+        Returns ``(W, lam', f', d f'/d[y, f, lam, ..], W_f, W_lam, d lam'/df, d lam'/dlam)``.
+        """
+        a, b, al, g = self.a, self.b, self.alpha, self.gamma
+        n = self.n(t)
+        f, lam = z[1], z[2]
+        w, ln_w, w_f = self.slip_rate(f, n, lam)
+        q = abs(f) / (a * n)
+        # 1 / W_f = a n exp(Phi/a) / (2 v_ref cosh q), in logarithms
+        inv_wf = math.exp(min(math.log(a * n) + self.phi_over_a(lam) - math.log(self.v_ref)
+                              - q - math.log1p(math.exp(-2.0 * q)), _EXP_MAX))
+        w_lam = -b / a * w
+        rate, d_w, d_lam = self.lam_rate(w, ln_w, lam, t, n)
+        rate_f, rate_lam = d_w * w_f, d_lam + d_w * w_lam
+        dn_n = -self.A * math.sin(t) / n
+        F = -al * z[0] + g * (self.V - w)
+        N = F - f + b / a * w * rate
+        f_rate = N * inv_wf + f * dn_n
+        N_f = -g * w_f - 1.0 + b / a * (w_f * rate + w * rate_f)
+        N_lam = -g * w_lam + b / a * (w_lam * rate + w * rate_lam)
+        tanh_q = math.copysign(math.tanh(q), f)
+        row_f = (-al * inv_wf, N_f * inv_wf - N * tanh_q / (a * n) * inv_wf + dn_n,
+                 (N_lam + b / a * N) * inv_wf, 0.0, 0.0)
+        return w, rate, f_rate, row_f, w_f, w_lam, rate_f, rate_lam
+
     def contact(self, t, z):
         """Right-hand side in contact."""
         al, g, V = self.alpha, self.gamma, self.V
         n = self.n(t)
         lam = z[self.i_lam]
         if self.rigid:
-            mu, _, _ = self.mu(z[1], lam)
-            f = n * mu
-            w, ln_w = z[1], (math.log(abs(z[1])) if z[1] else -math.inf)
-            rate, _, _ = self.lam_rate(w, ln_w, lam, t, n)
-            return np.array([z[1] - V, -al * z[0] + g * (V - z[1]) - f, rate, f, n])
+            w, rate, f_rate = self._rigid(t, z)[:3]
+            return np.array([w - V, f_rate, rate, z[1], n])
         f = self.k * z[2]
         w, ln_w, _ = self.slip_rate(f, n, lam)
         rate, _, _ = self.lam_rate(w, ln_w, lam, t, n)
@@ -571,13 +606,11 @@ class _RateState:
         J[0, 1] = 1.0
         J[1, 0], J[1, 1] = -al, -g
         if self.rigid:
-            _, mu_u, mu_lam = self.mu(z[1], lam)
-            ln_w = math.log(abs(z[1])) if z[1] else -math.inf
-            _, d_w, d_lam = self.lam_rate(z[1], ln_w, lam, t, n)
-            J[1, 1] -= n * mu_u
-            J[1, 2] = -n * mu_lam
-            J[2, 1], J[2, 2] = d_w, d_lam
-            J[3, 1], J[3, 2] = n * mu_u, n * mu_lam
+            _, _, _, row_f, w_f, w_lam, rate_f, rate_lam = self._rigid(t, z)
+            J[0] = (0.0, w_f, w_lam, 0.0, 0.0)
+            J[1] = row_f
+            J[2, 1], J[2, 2] = rate_f, rate_lam
+            J[3, 1] = 1.0
             return J
         w, ln_w, w_f = self.slip_rate(k * z[2], n, lam)
         w_e, w_lam = w_f * k, -self.b / self.a * w
@@ -613,7 +646,7 @@ class _RateState:
         n = self.n(t)
         lam = z[self.i_lam]
         if self.rigid:
-            return n * self.mu(z[1], lam)[0], z[1], n
+            return z[1], self.slip_rate(z[1], n, lam)[0], n
         f = self.k * z[2]
         return f, self.slip_rate(f, n, lam)[0], n
 
@@ -621,8 +654,17 @@ class _RateState:
         """Steady sliding at ``V`` before the oscillation (``n = 1``), ``theta = theta0``."""
         f = mu_steady_state(self.V, self.a, self.b, self.v_ref)
         lam = math.log(self.theta0)
-        z = [-f / self.alpha, self.V] + ([] if self.rigid else [f / self.k]) + [lam, 0.0, 0.0]
-        return np.array(z)
+        if self.rigid:  # f = n mu(V, theta) at tau = 0, so that x' = V
+            z = [-f / self.alpha, self.n(0.0) * self.mu(self.V, lam)[0]]
+        else:
+            z = [-f / self.alpha, self.V, f / self.k]
+        return np.array(z + [lam, 0.0, 0.0])
+
+    def velocity(self, t, z, in_contact):
+        """The body velocity ``x'`` of the state ``z``."""
+        if self.rigid and in_contact:
+            return self.slip_rate(z[1], self.n(t), z[2])[0]
+        return z[1]
 
 
 def _arcs(A: float, j: int) -> list[tuple[float, float, bool]]:
@@ -685,25 +727,41 @@ def _flight(model: _RateState, z: np.ndarray, t0: float, t1: float,
     return at(t1)
 
 
+_MAX_CALLS = 300_000
+"""Right-hand-side evaluations allowed on one contact arc (a few thousand are usual)."""
+
+
+class _TooLong(Exception):
+    """An arc took more than :data:`_MAX_CALLS` evaluations."""
+
+
 def _solve_arc(model: _RateState, t0: float, t1: float, z: np.ndarray, method: str,
                rtol: float, atol: float, dense: bool):
     """``solve_ivp`` over one contact arc; an arc that LSODA fails on is redone with Radau."""
     for meth in (method, "Radau") if method != "Radau" else (method,):
+        calls = [0]
+
+        def fun(t, y, calls=calls):
+            calls[0] += 1
+            if calls[0] > _MAX_CALLS:
+                raise _TooLong(f"more than {_MAX_CALLS} evaluations")
+            return model.contact(t, y)
+
         # a diverging Newton iteration (which the solver detects, and retries with a
         # shorter step) may overflow on the way; LSODA warns when it gives up
         with np.errstate(over="ignore", divide="ignore", invalid="ignore"), \
                 warnings.catch_warnings():
             warnings.simplefilter("error", UserWarning)
             try:
-                sol = solve_ivp(model.contact, (t0, t1), z, method=meth, jac=model.contact_jac,
+                sol = solve_ivp(fun, (t0, t1), z, method=meth, jac=model.contact_jac,
                                 rtol=rtol, atol=atol, dense_output=dense)
-            except UserWarning as exc:
-                message = str(exc)
+            except (UserWarning, _TooLong) as exc:
+                message = f"{meth}: {exc}"
                 continue
         if sol.success:
             return sol
-        message = sol.message
-    raise RuntimeError(f"solve_ivp ({method}) failed on tau in [{t0:.9g}, {t1:.9g}]: {message}")
+        message = f"{meth}: {sol.message}"
+    raise RuntimeError(f"solve_ivp failed on tau in [{t0:.9g}, {t1:.9g}]: {message}")
 
 
 def _integrate(model: _RateState, periods: int, rtol: float, atol: float,
@@ -723,8 +781,11 @@ def _integrate(model: _RateState, periods: int, rtol: float, atol: float,
     for j in range(periods):
         z[i_f:] = 0.0
         for t0, t1, contact in _arcs(model.A, j):
-            if not contact and not model.rigid:
-                z[2] = 0.0  # lift-off: e is 0 there (f = n mu = 0), up to the tolerance
+            if not contact:  # lift-off: f = n mu is 0 there, up to n = _N_CUT
+                if model.rigid:
+                    z[1] = model.velocity(t0, z, True)  # the state holds x' in flight
+                else:
+                    z[2] = 0.0
             t_eval = None
             if points_per_period:
                 grid = TWO_PI * j + TWO_PI * np.arange(1, points_per_period + 1) / points_per_period
@@ -732,6 +793,8 @@ def _integrate(model: _RateState, periods: int, rtol: float, atol: float,
             if not contact:
                 z = _flight(model, z, t0, t1, t_eval, rows)
                 continue
+            if model.rigid and t0 > TWO_PI * j:  # touch-down: f = n mu(x', theta)
+                z[1] = model.n(t0) * model.mu(z[1], z[2])[0]
             sol = _solve_arc(model, t0, t1, z, method, rtol, atol, t_eval is not None)
             stats["nfev"] += sol.nfev
             stats["njev"] += sol.njev
@@ -846,11 +909,12 @@ def rate_state_run(
     The error bar comes from a second run at ``100 rtol, 100 atol``; ``method``
     ``"LSODA"`` (an arc it fails on is redone with Radau), ``"Radau"`` or ``"BDF"``
     (the three agree to about 1e-8 at the default tolerances).  A rigid contact that
-    sticks is stiff like ``n a / c``, ``c = 2 v_ref exp(-(1 + b ln(theta v_ref/d_c))/a)``
-    (the slope ``df/dx'`` at rest): fine at ``a = 0.05, v_ref = 0.01`` (``c`` near
-    1e-10), but runs at ``a = 0.02`` that stick may take minutes or fail; use a stiff
+    sticks switches between stick and slip within ``a`` in ``f/n``, where ``x'`` changes by
+    ``exp(1/a)``: measured fine at ``a = 0.05`` and at ``a = 0.02`` without jumping, but at
+    ``a = 0.02`` with jumping or at ``a <= 0.01`` it can fail (RuntimeError: a step below
+    the spacing of floats, or more than 300 000 evaluations on one contact arc); use a stiff
     finite contact there (its gap to the rigid one falls like ``1/k``), which is well
-    behaved down to ``a = 1e-3``.
+    behaved down to ``a = 1e-3``.  Raises RuntimeError where the integrator fails.
     """
     model = _rate_state_model(alpha, beta, amplitude, V, a, b, d_c, v_ref, alpha_ld, law, zeta,
                               theta0)
@@ -924,5 +988,6 @@ def rate_state_history(
     for i, (t, z, contact) in enumerate(rows):
         f, w, n = model.observables(t, z, contact)
         e = 0.0 if model.rigid else z[2]
-        cols[:, i] = (t, z[0], z[1], e, f, math.exp(z[model.i_lam]), w, n)
+        cols[:, i] = (t, z[0], model.velocity(t, z, contact), e, f, math.exp(z[model.i_lam]),
+                      w, n)
     return RateStateHistory(*cols)
