@@ -103,9 +103,9 @@ _FLYING = 2
 def _law1_finite(alpha, k, sigma, a, V, gamma, N, n_total, avg_start, initial, record):
     """Velocity Verlet + return mapping with a stuck/slipping flag, finite contact.
 
-    Returns the window's integrals of ``f`` and ``n``, the per-period integrals and, if
-    ``record``, the history rows ``tau, x, x', f, n, state`` (state 0 stuck, +-1 slipping
-    in that direction, 2 flying).
+    Returns the integrals of ``f`` and ``n`` over each drive period after ``avg_start``
+    and, if ``record``, the history rows ``tau, x, x', f, n, state`` (state 0 stuck, +-1
+    slipping in that direction, 2 flying).
     """
     dt = TWO_PI / N
     h = 0.5 * dt
