@@ -10,7 +10,7 @@ Law 1 (static above kinetic, :func:`static_kinetic_run`, fixed steps):
 Law 2 (rate-and-state, :func:`rate_state_run`, ``solve_ivp``):
 (d) at ``A = 0`` with stable sliding it returns to ``mu_ss(V)`` from a perturbed state,
     under the aging and the slip law alike (the same steady state); a stiff finite contact
-    approaches the rigid one;
+    approaches the rigid one; LSODA and Radau agree within their bars;
 (e) the Coulomb limit ``a, b -> 0`` approaches the Coulomb peers, at first order in ``a``;
 (f) the energy balance of a steady period closes on a history;
 (g) parameters it cannot run with are refused.
@@ -174,6 +174,16 @@ def test_law2_stiff_finite_contact_approaches_the_rigid_one():
             for beta in (1e3, 1e4)]
     assert gaps[0] < 1e-4
     assert 5 < gaps[0] / gaps[1] < 20
+
+
+@pytest.mark.parametrize("beta, A", [(2.0, 0.5), (2.0, 1.5)])
+def test_law2_lsoda_and_radau_agree_within_their_bars(beta, A):
+    kw = {"zeta": 0.2, "transient_periods": 3, "average_periods": 2, "law": "slip"}
+    args = (0.5, beta, A, 0.3, 0.05, 0.025, 0.01, 0.01)
+    lsoda = rate_state_run(*args, **kw)
+    radau = rate_state_run(*args, method="Radau", **kw)
+    assert lsoda.error < 1e-5 and radau.error < 1e-5
+    assert abs(lsoda.mu_ratio - radau.mu_ratio) <= lsoda.error + radau.error
 
 
 # --- (e) the Coulomb limit ------------------------------------------------------------------
