@@ -100,6 +100,14 @@ def report(table: list[dict]) -> str:
             cells += [f"{t:.3f}", f"{ratio:.2f}", f"{r.mu_ratio:.6f}", r.status.value]
         lines.append("| " + " | ".join(cells) + " |")
     lines.append("")
+    for row in table:
+        for sr in RATIOS:
+            r = row[sr][2]
+            if r.status.value == "not converged":
+                lines.append(f"* {row['point']}, `static_ratio = {sr}`: the motion does not lock "
+                             f"to the drive within {r.periods} periods (its window means "
+                             f"{r.window_min:.7f} ... {r.window_max:.7f}): not converged, the "
+                             "time is the whole budget.")
     for sr in RATIOS:
         ratios = [row[sr][1] for row in table]
         lines.append(f"* `static_ratio = {sr}`: median ratio over the {len(ratios)} regimes "
