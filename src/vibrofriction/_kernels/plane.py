@@ -387,38 +387,32 @@ def entry(P, t, z):
 @jit
 def entry_hint(P, t, z, hint):
     """The phase of a contact state whose phase before was ``hint`` (``z`` adjusted in
-    place).  ``static_ratio = 1``: :func:`entry` (the state fixes the phase).  Above 1
-    the state does not (a force between the kinetic circle ``n`` and the static one
-    ``static_ratio n`` is held in stick and slides in slip), so the phase is carried
-    across the section: a stuck state stays stuck unless it lies at or beyond the static
-    circle with its margin falling (then it slips: the force drops to ``n``, a Jenkins
-    contact's elongation jumps to ``n/k``); a slipping one slips while its slip speed is
-    positive (Kelvin-Voigt: ``|F| > n``; Jenkins: put on the cone, ``lam > 0``), else
-    sticks.  A hint other than slip (a contact with no history) is stick.
+    place).  ``static_ratio = 1`` or a slipping ``hint``: :func:`entry` (slip where the
+    state is on or beyond the kinetic circle with a positive slip speed).  Above 1 a
+    stuck state holds up to the static circle ``static_ratio n`` (a force between the two
+    circles is held in stick and slides in slip: the state alone does not fix the phase,
+    which is therefore carried across the section): stick unless it lies at or beyond
+    the static circle with its margin falling; then it slips, the force dropping to ``n``
+    (a Jenkins contact's elongation jumps to the kinetic cone ``n/k``), and sticks again
+    at once where its slip speed there is not positive.
     """
     sr = P[P_SR]
-    if sr == 1.0:
+    if sr == 1.0 or hint == SLIP:
         return entry(P, t, z)
     k, c = P[P_K], P[P_C]
     n, dn = normal_force(P[P_A], t)
     if c > 0.0:
         fx, fy, _, _, _ = contact(STICK, P, t, z)
-        F = math.hypot(fx, fy)
-        if hint == SLIP:
-            return SLIP if F > n else STICK
-        return STICK if F <= sr * n else SLIP
+        return STICK if math.hypot(fx, fy) <= sr * n else SLIP
     r = math.hypot(z[4], z[5])
-    if r == 0.0:
+    if r == 0.0 or k * r < sr * n * (1.0 - 1e-9):
         return STICK
-    if hint != SLIP:
-        if k * r < sr * n * (1.0 - 1e-9):
-            return STICK
-        _, _, _, _, vsx, vsy = drive(P, t)
-        rate = (z[4] * (z[2] - vsx) + z[5] * (z[3] - vsy)) / r  # d|e|/dt in stick
-        if k * rate <= sr * dn:  # the margin sr n - k |e| does not fall: still stuck
-            z[4] *= sr * n / (k * r) * (1.0 - MARGIN)
-            z[5] *= sr * n / (k * r) * (1.0 - MARGIN)
-            return STICK
+    _, _, _, _, vsx, vsy = drive(P, t)
+    rate = (z[4] * (z[2] - vsx) + z[5] * (z[3] - vsy)) / r  # d|e|/dt in stick
+    if k * rate <= sr * dn:  # the margin sr n - k |e| does not fall: still stuck
+        z[4] *= sr * n / (k * r) * (1.0 - MARGIN)
+        z[5] *= sr * n / (k * r) * (1.0 - MARGIN)
+        return STICK
     z[4] *= n / (k * r)  # on the kinetic cone (from the static circle: the jump)
     z[5] *= n / (k * r)
     if contact(SLIP, P, t, z)[4] > 0.0:
@@ -979,7 +973,9 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     out_i[I_PHASE] = -1
     hmax = max_step(P)
     W = np.zeros((N_W, N_Z))
-    W[W_MODE, 0] = STICK  # a contact with no history starts stuck
+    # the phase before the start: steady sliding slips (where the state allows it), a
+    # contact with no history (rest, an explicit state) is stuck
+    W[W_MODE, 0] = SLIP if init_kind == 0 else STICK
     cnt = np.zeros(N_C, np.int64)
     s = np.empty(N_S)
     J = np.zeros((N_S, N_S))
@@ -1030,7 +1026,7 @@ def cone_excess(P, periods, rtol):
     z = W[13]
     for i in range(N_S):
         z[i] = s[i]
-    mode = entry_hint(P, 0.0, z, STICK)
+    mode = entry_hint(P, 0.0, z, SLIP)  # the sliding start
     for j in range(periods):
         mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000)
         if not ok:

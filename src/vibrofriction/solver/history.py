@@ -218,8 +218,10 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
                  settings: SolverSettings | None) -> tuple[NDArray[np.float64], int]:
     """The 2-D start ``(y_x, y_y, v_x, v_y, e_x, e_y)`` at ``tau = 0`` and its phase.
 
-    The phase is the steady orbit's at its section for ``"steady"``, else stick (a contact
-    with no history starts stuck); it matters only where ``static_ratio > 1``.
+    The phase is the steady orbit's at its section for ``"steady"``, slip for
+    ``"sliding"`` (slipping where the state allows it, as the 2-D solver's start), else
+    stick (a contact with no history starts stuck); it matters only where ``static_ratio
+    > 1`` (:func:`vibrofriction._kernels.plane.entry_hint`).
     """
     s = np.zeros(_plane.N_S + 1)
     s[_plane.N_S] = codes.STICK
@@ -250,7 +252,7 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
             raise ValueError(f"initial must be 'sliding', 'rest', 'steady', a SectionState "
                              f"or a plane_state, got {initial!r}")
         _plane.start_state(_plane_parameters(dim, V), kind, 0.0, 0.0, 0.0, s)
-        return s[:_plane.N_S], codes.STICK
+        return s[:_plane.N_S], _plane.SLIP if kind == 0 else codes.STICK
     if isinstance(initial, SectionState):
         s[0], s[2], s[4] = initial.y, initial.x_dot, initial.elongation(dim)
         return s[:_plane.N_S], codes.STICK
