@@ -7,6 +7,9 @@ cone, jumping sphere) is solved by ``solve_points`` at ``static_ratio = 1`` and 
 table gives the medians of the wall times, their ratio, and each answer (``mu_ratio``,
 status, stated error, events).  The law's target for the 1-D solver: a static-above-kinetic
 point at most 1.5 times a Coulomb point at the same parameters (median over regimes).
+Second table: the MDR row's convergence in the number of springs ``N`` at the sphere
+point, ``s = 1`` and ``s = 1.3`` (each row from the sliding start, ``mdr_row``), against
+the row of 2560 springs.
 
     PYTHONPATH=src python benchmarks/bench_static_kinetic_plane_mdr.py [--write]
 
@@ -26,6 +29,7 @@ import numpy as np
 
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
+from vibrofriction.solver.mdr import mdr_row
 
 S = 1.3
 REPEATS = 9
@@ -94,9 +98,29 @@ def table(rows: list[tuple]) -> str:
     return "\n".join(head + body + tail)
 
 
+ROWS = (40, 80, 160, 240, 280, 320, 400, 480, 560, 640, 1280)
+
+
+def convergence() -> str:
+    """The MDR sphere's row means against ``N`` at ``s = 1`` and ``S``."""
+    kw = MDR[0][1]
+    args = (kw["alpha"], kw["beta"], kw["amplitude"], kw["v_inertial"],
+            kw["profile_exponent"])
+    lines = [f"| N | s = 1: mu_ratio - mu(2560) | s = {S}: mu_ratio - mu(2560) |",
+             "|---|---|---|"]
+    cols = []
+    for s in (1.0, S):
+        ref = mdr_row(*args, 2560, kw["zeta"], static_ratio=s)["mu_ratio"]
+        cols.append([mdr_row(*args, n, kw["zeta"], static_ratio=s)["mu_ratio"] - ref
+                     for n in ROWS])
+    lines += [f"| {n} | {a:+.2e} | {b:+.2e} |" for n, a, b in zip(ROWS, *cols, strict=True)]
+    return "\n".join(lines)
+
+
 def main() -> None:
     rows = measure()
-    text = table(rows)
+    text = table(rows) + "\n\nThe MDR row's convergence in N (sphere point):\n\n" \
+        + convergence()
     print(text)
     if "--write" in sys.argv:
         rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
