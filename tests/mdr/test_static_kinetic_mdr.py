@@ -58,7 +58,7 @@ def _dim(alpha, beta, a, n, zeta, s=1.0, **inplane):
 
 # --------------------------------------------------------------------------- s = 1
 def test_static_ratio_one_is_the_row_before_bit_for_bit():
-    for p, expected in zip(BASELINE["mdr_points"], BASELINE["mdr_outputs"]):
+    for p, expected in zip(BASELINE["mdr_points"], BASELINE["mdr_outputs"], strict=True):
         r = mdr_row(p["alpha"], p["beta"], p["amplitude"], p["V"], p["profile_exponent"], 20,
                     p["zeta"], a_x=p["a_x"], phase_x=p["phase_x"],
                     inplane_on=p["inplane_on"], static_ratio=1.0)
@@ -73,7 +73,8 @@ def test_static_ratio_one_is_the_row_before_bit_for_bit():
 
 
 def test_static_ratio_one_is_the_solver_and_history_before_bit_for_bit():
-    for p, expected in zip(BASELINE["mdr_solver_points"], BASELINE["mdr_solver_outputs"]):
+    for p, expected in zip(BASELINE["mdr_solver_points"], BASELINE["mdr_solver_outputs"],
+                           strict=True):
         got = {k: np.asarray(v).item() for k, v in solve_points(**p, static_ratio=1.0).items()}
         for k, v in expected.items():
             assert got[k] == v or (v != v and got[k] != got[k]), k
