@@ -24,7 +24,6 @@ tests/mdr/test_static_kinetic_mdr.py.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 from dataclasses import replace
@@ -36,6 +35,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import vibrofriction as vf
+from history_checks import history_digest, period_balance, section_rows
 from vibrofriction._kernels import plane
 from vibrofriction.capabilities import Refusal
 from vibrofriction.params import Dimensionless
@@ -84,11 +84,7 @@ def test_static_ratio_one_history_is_the_history_before_bit_for_bit(j: int) -> N
     h = BASELINE["histories"][j]
     sim = vf.simulate(Dimensionless(**h["system"], static_ratio=1.0), v_inertial=h["v_inertial"],
                       periods=h["periods"], initial=h["initial"])
-    d = hashlib.sha256()
-    for name in ("tau", "x", "x_dot", "f", "n", "e", "work_input", "dissipated_pin",
-                 "dissipated_contact", "dissipated_friction", "impulse"):
-        d.update(np.ascontiguousarray(getattr(sim, name), dtype=float).tobytes())
-    assert d.hexdigest() == BASELINE["history_sha256"][j]
+    assert history_digest(sim) == BASELINE["history_sha256"][j]
 
 
 # --------------------------------------------------------------------------- the law
@@ -148,22 +144,6 @@ def test_the_static_circle_is_reached_and_s_changes_the_answer() -> None:
     assert mus[0] < mus[1] < mus[2]
 
 
-def _section_rows(h: vf.History) -> list[int]:
-    """The last row at each ``tau = 2 pi k`` (the state after any event there)."""
-    k = int(round(h.tau[-1] / TWO_PI))
-    return [int(np.flatnonzero(np.isclose(h.tau, TWO_PI * j, rtol=0, atol=1e-12))[-1])
-            for j in range(k + 1)]
-
-
-def _balance(h: vf.History) -> float:
-    """The largest energy residual per period, relative to the work per period."""
-    rows = _section_rows(h)
-    E = h.stored_energy()
-    d = (h.dissipated_pin + h.dissipated_contact + h.dissipated_friction)
-    res = np.diff(h.work_input[rows]) - np.diff(d[rows]) - np.diff(E[rows])
-    return float(np.max(np.abs(res) / np.maximum(np.abs(np.diff(h.work_input[rows])), 1e-3)))
-
-
 @pytest.mark.parametrize("label,d,V", POINTS, ids=IDS)
 def test_energy_balance_per_period_with_the_jumps(label: str, d: Dimensionless,
                                                   V: float) -> None:
@@ -171,9 +151,9 @@ def test_energy_balance_per_period_with_the_jumps(label: str, d: Dimensionless,
     Jenkins contact's jumps dissipate ``k (|e_before|^2 - |e_after|^2)/2`` each (without it
     the balance fails by that much)."""
     sys_ = replace(d, static_ratio=1.5)
-    coarse = _balance(vf.simulate(sys_, v_inertial=V, periods=2, samples_per_period=200))
+    coarse = period_balance(vf.simulate(sys_, v_inertial=V, periods=2, samples_per_period=200))
     h = vf.simulate(sys_, v_inertial=V, periods=2, samples_per_period=800)
-    fine = _balance(h)
+    fine = period_balance(h)
     print(label, coarse, fine)
     # a Kelvin-Voigt contact's fast relaxation after the force's drop (time eta_c) is the
     # largest part of the quadrature's error: 1.4e-4 at 800 samples a period
@@ -196,7 +176,7 @@ def test_steady_history_carries_the_phase_at_the_section(label: str, d: Dimensio
     r = vf.friction_coefficient(sys_, v_inertial=V)
     assert r.status is Status.PERIODIC
     h = vf.simulate(sys_, v_inertial=V, periods=2, initial="steady")
-    rows = _section_rows(h)
+    rows = section_rows(h)
     n_mean = float(np.mean(np.maximum(0.0, 1 + d.amplitude * np.cos(np.linspace(
         0, TWO_PI, 200001)[:-1]))))
     mu = (h.impulse[rows[-1], 0] - h.impulse[rows[0], 0]) / (2 * TWO_PI * n_mean)

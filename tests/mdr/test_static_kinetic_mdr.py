@@ -21,7 +21,6 @@ kinetic one").
 
 from __future__ import annotations
 
-import hashlib
 import json
 import math
 from dataclasses import replace
@@ -33,6 +32,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 import vibrofriction as vf
+from history_checks import history_digest
 from vibrofriction import theory
 from vibrofriction.schema import ContactState, Status
 from vibrofriction.solver import solve_points
@@ -81,11 +81,7 @@ def test_static_ratio_one_is_the_solver_and_history_before_bit_for_bit():
     h = BASELINE["histories"][2]
     sim = vf.simulate(vf.Dimensionless(**h["system"], static_ratio=1.0),
                       v_inertial=h["v_inertial"], periods=h["periods"], initial=h["initial"])
-    d = hashlib.sha256()
-    for name in ("tau", "x", "x_dot", "f", "n", "e", "work_input", "dissipated_pin",
-                 "dissipated_contact", "dissipated_friction", "impulse"):
-        d.update(np.ascontiguousarray(getattr(sim, name), dtype=float).tobytes())
-    assert d.hexdigest() == BASELINE["history_sha256"][2]
+    assert history_digest(sim) == BASELINE["history_sha256"][2]
 
 
 # --------------------------------------------------------------------------- the law

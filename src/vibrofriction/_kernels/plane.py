@@ -375,6 +375,15 @@ def entry(P, t, z):
     r = math.hypot(z[4], z[5])
     if k * r < n * (1.0 - 1e-9) or r == 0.0:
         return STICK
+    return _onto_cone(P, t, z, n, k, r)
+
+
+@jit
+def _onto_cone(P, t, z, n, k, r):
+    """A Jenkins contact's elongation ``e`` (of length ``r``) put on the kinetic cone ``|e| =
+    n/k``, its direction kept: slip where the slip speed there is positive, else stick a
+    relative :data:`MARGIN` inside.
+    """
     z[4] *= n / (k * r)
     z[5] *= n / (k * r)
     if contact(SLIP, P, t, z)[4] > 0.0:
@@ -413,13 +422,7 @@ def entry_hint(P, t, z, hint):
         z[4] *= sr * n / (k * r) * (1.0 - MARGIN)
         z[5] *= sr * n / (k * r) * (1.0 - MARGIN)
         return STICK
-    z[4] *= n / (k * r)  # on the kinetic cone (from the static circle: the jump)
-    z[5] *= n / (k * r)
-    if contact(SLIP, P, t, z)[4] > 0.0:
-        return SLIP
-    z[4] *= 1.0 - MARGIN
-    z[5] *= 1.0 - MARGIN
-    return STICK
+    return _onto_cone(P, t, z, n, k, r)  # from the static circle: the jump
 
 
 @jit
