@@ -77,6 +77,12 @@ from .sliding import (
     static_mu_ratio,
     steady_sliding,
 )
+from .static_kinetic import (
+    QuasiStaticSlip,
+    static_kinetic_critical_velocity,
+    static_kinetic_slip,
+    static_kinetic_static_limit,
+)
 from .stiff import mu_ratio_stiff_exact
 
 __all__ = [
@@ -95,6 +101,7 @@ __all__ = [
     "inplane_regime",
     "inplane_static_mu_ratio",
     "PlaneStatic",
+    "QuasiStaticSlip",
     "plane_static_region",
     "kinematic_mu_longitudinal",
     "kinematic_mu_transverse",
@@ -116,6 +123,9 @@ __all__ = [
     "resonant_tau_star",
     "resonant_velocity_ratio",
     "resonant_velocity_ratio_exact",
+    "static_kinetic_critical_velocity",
+    "static_kinetic_slip",
+    "static_kinetic_static_limit",
     "static_mu_ratio",
     "steady_sliding",
 ]
