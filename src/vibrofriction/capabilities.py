@@ -216,6 +216,9 @@ MDR = Capabilities(
               "that stick through whole cycles keep the elongation of the start, so "
               "the steady state depends on it; give a velocity != 0)",
               lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
+        Limit("static_ratio", "a static coefficient above the kinetic one at v_inertial = 0 "
+              "(its static limit depends on the dynamics of the slips: give a velocity != 0)",
+              lambda p: (p["static_ratio"] != 1.0) & (p["v_inertial"] == 0.0)),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),

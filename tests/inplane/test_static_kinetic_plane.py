@@ -242,7 +242,8 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver_with_the_same_law() -> 
     """``a_y -> 0`` is the 1-D solver at the same ``s`` (the 1-D solver's own law): skipped
     while the 1-D solver refuses ``static_ratio > 1``."""
     pts = [(0.5, 2.0, 0.5, 0.3, 0.05, 0.0), (1.3, 4.0, 1.4, 0.8, 0.0, 0.1),
-           (0.5, 2.0, 0.6, 0.3, 0.1, 0.0)]
+           (0.5, 2.0, 0.6, 0.3, 0.1, 0.0), (0.5, 4.0, 1.5, 0.3, 0.1, 0.2),
+           (1.0, 3.0, 0.9, 1.0, 0.1, 0.0), (2.5, 3.0, 2.0, 0.4, 0.02, 0.0)]
     try:
         solve_points(*pts[0][:4], zeta=pts[0][4], eta_c=pts[0][5], static_ratio=1.3)
     except Refusal:
@@ -251,5 +252,7 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver_with_the_same_law() -> 
         for s in (1.3, 2.0):
             one = solve_points(al, be, a, V, zeta=ze, eta_c=et, static_ratio=s)
             two = solve_points(al, be, a, V, zeta=ze, eta_c=et, a_y=1e-7, static_ratio=s)
+            print(f"{float(one['mu_ratio']):.10f} {float(two['mu_ratio']):.10f} "
+                  f"{abs(float(one['mu_ratio']) - float(two['mu_ratio'])):.1e}")
             assert abs(float(one["mu_ratio"]) - float(two["mu_ratio"])) <= \
                 float(one["error"]) + float(two["error"]) + 1e-8
