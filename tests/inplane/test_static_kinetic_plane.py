@@ -38,7 +38,7 @@ import vibrofriction as vf
 from history_checks import history_digest, period_balance, section_rows
 from vibrofriction._kernels import plane
 from vibrofriction.capabilities import Refusal
-from vibrofriction.params import Dimensionless
+from vibrofriction.params import Dimensionless, inertial_velocity
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
 
@@ -256,3 +256,24 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver_with_the_same_law() -> 
                   f"{abs(float(one['mu_ratio']) - float(two['mu_ratio'])):.1e}")
             assert abs(float(one["mu_ratio"]) - float(two["mu_ratio"])) <= \
                 float(one["error"]) + float(two["error"]) + 1e-8
+
+
+# --------------------------------------------------------------------------- API
+def test_physical_mu_static_reaches_the_2d_solver_and_its_history() -> None:
+    """``Physical(..., mu_static=...)`` is ``static_ratio = mu_static/mu0`` for the 2-D
+    solver, declared among its parameters; ``simulate`` carries it."""
+    from vibrofriction.capabilities import CAPABILITIES
+    assert "static_ratio" in CAPABILITIES["plane"].parameters
+    assert not [lim for lim in CAPABILITIES["plane"].limits if lim.parameter == "static_ratio"]
+    pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
+                      omega=TWO_PI * 1000, mu0=0.3, mu_static=0.39, du_y=1e-6, phase_y=1.0)
+    d = pin.to_dimensionless()
+    assert d.static_ratio == pytest.approx(1.3, rel=1e-15)
+    r = vf.friction_coefficient(pin, v0=0.01)
+    assert r.method == "plane" and r.status is Status.PERIODIC
+    V = float(inertial_velocity(pin, v0=0.01))
+    assert r.mu_ratio == vf.friction_coefficient(d, v_inertial=V).mu_ratio
+    assert r.mu_ratio != vf.friction_coefficient(replace(d, static_ratio=1.0),
+                                                 v_inertial=V).mu_ratio
+    h = vf.simulate(pin, v0=0.01, periods=1)
+    assert isinstance(h, vf.PlaneHistory) and h.system.static_ratio == d.static_ratio
