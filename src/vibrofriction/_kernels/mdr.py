@@ -17,15 +17,19 @@ contact point, sign ``s``) exerts ``s n_i(tau)``, one out of contact nothing::
 package's basis (:mod:`.basis`: free motion, periodic response or, near the resonance
 ``alpha + K = 1``, the responses from rest). Events:
 
-* stick -> slip where the margin ``n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``);
+* stick -> slip where the margin ``s_r n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``;
+  ``s_r = static_ratio >= 1``, the static limit over the kinetic one, ``sr`` in the code);
   the margins of all stuck springs are one function of time minus each spring's constant
-  ``w g_i +- k e_i``, so only the largest constant on each side is scanned, and the
-  springs sharing it (a cluster that stuck together) slip together;
+  ``s_r w g_i +- k e_i``, so only the largest constant on each side is scanned, and the
+  springs sharing it (a cluster that stuck together) slip together; a slipping spring
+  exerts the kinetic ``+-n_i``, so where ``s_r > 1`` its force drops at the switch (its
+  energy goes to friction's dissipation) and, where the slip velocity is not positive
+  there, it sticks again at once (:func:`_slip_jump`);
 * slip -> stick where the slip velocity ``s (y' + V) - n_i'/k`` reaches 0: the same for
   every spring slipping in direction ``s`` (``n_i' = -w a sin tau``), so the group sticks
   at once;
 * lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
-  down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
+  down starts unloaded, stuck if ``k |x'| <= s_r n_i'`` there, else slipping with ``sign x'``.
 
 A longitudinal in-plane oscillation ``X = a_x cos(tau + phase_x)`` (issue 20,
 docs/inplane.md) enters as in the single-spring kernels (:func:`.phases.inplane_forcing`):
@@ -989,7 +993,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``, the
     in-plane force integrating to 0 over a period) and
     of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
-    contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
+    contact) of the last period, the largest ``|f_i| - sr n_i`` of the stuck springs seen at
+    the scan points, the
     number of events of the last period (``-1``: no progress) and the final body state.
 
     ``rec = (tau, body, f, state, ip)``, optional: record the samples at the sorted times
@@ -997,7 +1002,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     every spring's tangential force ``f`` and state ``state`` (``T x M``), from the closed
     forms (:func:`_record_segment`; ``ip = (c, d, holder)`` the in-plane oscillation
     ``X = c cos tau - d sin tau`` of the substrate or, ``holder != 0``, of the holder, for
-    the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.
+    the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.  ``sr``: the
+    static ratio ``mu_static/mu0 >= 1`` (module docstring).
     """
     geo = _row_setup(a, n_exp, M)
     scr = _scratch(M)
@@ -1082,11 +1088,12 @@ def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_peri
     Anderson mixing of the last ``anderson`` period maps once the springs' states at the
     section repeat (a change of them restarts the history), then plain iteration (at
     least 5 periods of it before convergence counts). The loop of
-    :func:`vibrofriction.solver.mdr.mdr_row`, compiled.
+    :func:`vibrofriction.solver.mdr.mdr_row`, compiled; ``sr`` the static ratio.
 
     Returns ``(periods, converged, pf, nint, frac, viol, events, y, yd)``: the per-period
     ``int sum f_i``, ``int sum n_i`` over a period, the last period's area fractions, the
-    largest ``|f_i| - n_i`` at the scan points, the last period's events (``-1``: no
+    largest ``|f_i| - sr n_i`` of the stuck springs at the scan points (``sr`` the static
+    ratio), the last period's events (``-1``: no
     progress) and the final body state.
     """
     geo = _row_setup(a, n_exp, M)

@@ -16,7 +16,11 @@ the contact isotropic.  Stick: ``e' = v - v_s``,
 k e + c (v - v_s)``, ``e' = (f - k e)/c``.  Slip, Jenkins (``c = 0``): ``|e| = n/k``,
 ``d = e/|e|``, ``f = n d``, ``e' = w - lam d`` with ``w = v - v_s`` and the slip speed
 ``lam = d.w - n'/k`` (slip ends where it falls to 0).  Flight: ``f = 0``, ``e' = -k e/c``
-(``e = 0`` for Jenkins).
+(``e = 0`` for Jenkins).  A static coefficient above the kinetic one (``static_ratio = s >
+1``, ``P[P_SR]``): stick holds while ``|f| <= s n`` (the static circle), slip exerts ``n``
+(the kinetic one), so the force drops at each stick -> slip (a Jenkins contact's ``e``
+jumps to the kinetic cone) and the phase at a section is carried with the state
+(:func:`entry_hint`, ``W[W_MODE]``).
 
 Method: every phase (stick, slip, flight) is integrated by the Dormand-Prince 5(4)
 embedded Runge-Kutta pair (local extrapolation, error control on ``y, v, e`` and the
