@@ -177,14 +177,12 @@ PLANE = Capabilities(
     title="the 2-D solver",
     takes="a flat punch, profile_exponent = inf, with a transverse oscillation, a_y > 0",
     parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x", "a_y",
-                "phase_y", "alpha_y", "zeta_y", "v_inertial", "inplane_on"),
+                "phase_y", "alpha_y", "zeta_y", "static_ratio", "v_inertial", "inplane_on"),
     limits=(
         Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
               lambda p: p["beta"] == math.inf),
         Limit("amplitude", "grazing (amplitude = 1) with eta_c = 0",
               lambda p: (p["amplitude"] == 1.0) & (p["eta_c"] == 0.0)),
-        Limit("static_ratio", "a static coefficient above the kinetic one (static_ratio > 1)",
-              lambda p: p["static_ratio"] != 1.0, whole=True),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),
@@ -207,7 +205,7 @@ MDR = Capabilities(
     title="the MDR solver",
     takes="a curved tip, profile_exponent finite",
     parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x",
-                "profile_exponent", "v_inertial", "inplane_on"),
+                "profile_exponent", "static_ratio", "v_inertial", "inplane_on"),
     limits=(
         Limit("beta", "a rigid contact (beta = inf)", lambda p: p["beta"] == math.inf),
         Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
@@ -218,8 +216,9 @@ MDR = Capabilities(
               "that stick through whole cycles keep the elongation of the start, so "
               "the steady state depends on it; give a velocity != 0)",
               lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
-        Limit("static_ratio", "a static coefficient above the kinetic one (static_ratio > 1)",
-              lambda p: p["static_ratio"] != 1.0, whole=True),
+        Limit("static_ratio", "a static coefficient above the kinetic one at v_inertial = 0 "
+              "(its static limit depends on the dynamics of the slips: give a velocity != 0)",
+              lambda p: (p["static_ratio"] != 1.0) & (p["v_inertial"] == 0.0)),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),
