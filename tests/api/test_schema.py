@@ -321,8 +321,10 @@ def test_model_dataclasses_are_the_schema(cls, model) -> None:
     """Every field of Dimensionless and Physical is a schema parameter of its model, in
     the schema's order, with the schema's default (None: required), followed by the
     model's choices (``schema.CHOICES``: names, not numbers, e.g. ``inplane_on``) with
-    theirs."""
-    fields = dataclasses.fields(cls)
+    theirs; Physical ends with its friction law (an object: ``RateAndState`` or None, whose own
+    fields are the schema's ``rs_*`` once scaled)."""
+    fields = [f for f in dataclasses.fields(cls) if f.name != "friction"]
+    assert cls is not vf.Physical or dataclasses.fields(cls)[-1].name == "friction"
     choices = schema.choice_names(model)
     numeric = fields[:len(fields) - len(choices)]
     assert tuple(f.name for f in numeric) == parameter_names(model)
@@ -413,7 +415,8 @@ def test_optional_parameters_default_to_their_twin() -> None:
     from vibrofriction.validation import validated
 
     twins = {p.name: p.twin for p in PARAMETERS if p.twin}
-    assert twins == {"alpha_y": "alpha", "zeta_y": "zeta", "k_y": "k_x", "c_y": "c_x"}
+    assert twins == {"alpha_y": "alpha", "zeta_y": "zeta", "k_y": "k_x", "c_y": "c_x",
+                     "mu_static": "mu0"}
     out = validated({"alpha": np.array([0.5, 2.0]), "alpha_y": None})
     np.testing.assert_array_equal(out["alpha_y"], [0.5, 2.0])
     with pytest.raises(ValueError, match="k_y = None means the value of k_x"):

@@ -180,8 +180,8 @@ class State:
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
-            return vf.Dimensionless(**{n: getattr(self, n) for n in
-                                       parameter_names("dimensionless", optional=False)},
+            return vf.Dimensionless(**{f.name: getattr(self, f.name) for f in DIMENSIONLESS},
+                                    profile_exponent=self.profile_exponent,
                                     inplane_on=self.inplane_on)
         return vf.from_bench(**self.bench_arguments())
 
