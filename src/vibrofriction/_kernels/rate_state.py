@@ -545,8 +545,11 @@ def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, D, gmu):
     """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
     gradient ``gmu`` of the period's mean, by forward differences; returns ``ok``."""
     zp = np.empty(NZ)
+    wv, s = _weights(P, z0)
     for c in range(NM):
-        dj = 1e-6 * (1.0 + abs(z0[c]))
+        # sqrt(rtol) of the state's scale (in force units): the integration's noise,
+        # ~ rtol, makes an error ~ sqrt(rtol) in D, as the truncation of the difference
+        dj = math.sqrt(rtol) * s / wv[c]
         zp[:] = z0
         zp[c] += dj
         hb = np.array([hbox[0]])
@@ -706,7 +709,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 zr = zn.copy()
                 ok = _newton(P, zr, rtol / REFINE, hn, work, count, D, gmu, True, res2)
                 periods += res2[3]
-                if ok:
+                if ok and res2[2] < NEUTRAL:  # attracting by both Jacobians
                     z[:] = zr
                     out_f[O_MU] = res2[0]
                     err = ERROR_SAFETY * (abs(res2[0] - res[0]) + res2[1])
