@@ -121,12 +121,13 @@ def test_critical_stiffness(factor: float) -> None:
         assert r.window_min < r.sliding_mu_ratio - 1e-6
 
 
-def _orbit(P: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def _orbit(P: np.ndarray) -> tuple[np.ndarray, int]:
+    """The periodic orbit's section state (kernels' variables) and the status code."""
     z = rs.sliding_start(P, (0.0, 0.0))
     of = np.empty(len(FLOAT_COLUMNS))
     oi = np.empty(len(INT_COLUMNS), np.int64)
     rs.rs_steady_state(P, z, 1e-9, 2000, 1e-8, (0.0, 0.0), of, oi)
-    return z, of
+    return z, int(oi[column_index("status")])
 
 
 @pytest.mark.parametrize("law", [0.0, 1.0])
@@ -137,8 +138,8 @@ def test_energy_balance(law: float, zeta: float) -> None:
     V = 0.5
     P = rs.make_parameters(0.5, 2.0, 0.5, V, zeta, 0.0, 0.0, True, 0.01, 0.005, 0.01, 1.0,
                            0.0, law)
-    z, of = _orbit(P)
-    assert of[column_index("status")] == Status.PERIODIC.code
+    z, status = _orbit(P)
+    assert status == Status.PERIODIC.code
     work = rs._workspace()
     count = np.zeros(3, np.int64)
     assert rs.rs_period(P, z, 1e-10, np.array([1e-3]), work, count)
@@ -152,7 +153,8 @@ def test_local_force_bounded() -> None:
     reaches: along the orbit the local coefficient stays within a few ``a`` of ``mu_ss``."""
     P = rs.make_parameters(0.5, 2.0, 0.9, 0.5, 0.0, 0.0, 0.0, True, 0.01, 0.005, 0.01, 1.0,
                            0.0, 0.0)
-    z, _ = _orbit(P)
+    z, status = _orbit(P)
+    assert status == Status.PERIODIC.code
     work = rs._workspace()
     count = np.zeros(3, np.int64)
     hb = np.array([1e-3])
