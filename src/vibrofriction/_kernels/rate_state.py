@@ -1,37 +1,43 @@
 r"""Rate-and-state friction on the 1-D flat punch: a Rosenbrock integrator and the steady state.
 
 Scaled variables as everywhere (docs/model.md): ``tau = omega t``, forces in ``mu_star F_N0``,
-``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (``inf``: rigid contact),
-``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane forcing
-(:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f + h``; the
-massless contact point slips at the rate the law gives by inversion (docs/friction_laws.md)::
+``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (finite: a rigid contact is
+refused by the method), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
+forcing (:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f +
+h`` with ``f = k e``; the massless contact point slips at the rate the law gives by
+inversion (docs/friction_laws.md)::
 
-    w' = 2 v_ref sinh(f/(a n)) exp(-Q),  Q = (1 + b ln(theta v_ref/d_c))/a,
+    w' = 2 v_ref sinh(m/a) exp(-Q),  Q = (1 + b ln(theta v_ref/d_c))/a,  m = f/n.
 
-``f = k e``, ``e' = x' - w'`` (finite contact) or ``w' = x'``, ``f = n a asinh(x' e^Q/(2 v_ref))``
-(rigid contact).  The state is integrated as ``L = ln theta`` (theta spans decades): aging
-``L' = e^-L - |w'|/d_c``, slip ``L' = -g (ln g + L)`` with ``g = |w'|/d_c``, plus the
-Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight (``n <= 0``, ``A > 1``) ``f = 0``,
-aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms unloaded (``e = 0``).
+The contact's variable is the local coefficient ``m = k e/n`` rather than ``e`` (it stays
+finite as ``n -> 0``): ``m' = (k (x' - w') - m n')/n``.  The state is integrated as ``L = ln
+theta`` (theta spans decades): aging ``L' = e^-L - |w'|/d_c``, slip ``L' = -g (ln g + L)``
+with ``g = |w'|/d_c``, plus the Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight
+(``A > 1``) ``f = 0``, aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms
+unloaded (``e = n m/k = 0``) on the slow manifold of ``m`` (:func:`_touchdown_mu`).
 
-The state vector is ``z = (y, x', e, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
+The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
 friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
 reset at each section, integrated by the same steps.  Integrator: RODAS4 (Hairer & Wanner,
 *Solving ODEs II*, IV.7; 6 stages, order 4 with an embedded order 3, L-stable, stiffly
 accurate), the analytic Jacobian and time derivative, step control on
-``max |err_i|/(rtol (s_i + |z_i|))``.  Lift-off and touch-down are at the closed-form
-phases ``cos tau = -1/A``; the contact segments end (and start) ``CUT_DELTA`` in normal
-force short of them, where ``f <= n`` is below round-off of the averages.
+``max |err_i|/(rtol (1 + |z_i|))``.  Lift-off and touch-down are at the closed-form
+phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
+where ``|f| = n |m|`` is below round-off of the averages.
 
-The steady state (:func:`rs_steady_state`): a few periods from the start, then Newton's
-method on the period map with a finite-difference Jacobian (chord steps, refreshed where
-they stall).  An attracting orbit found (Floquet multiplier below 1) is refined at
-``rtol/REFINE``: the answer is the refined mean, its error twice the change of the mean
-between the two tolerances plus the last Newton correction (the integration error
-propagated and the Newton residual).  Otherwise (a response not locked to the drive:
-self-excited stick-slip of a weakening contact, a subharmonic, a slow modulation) the motion
-is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is said with
-the windows' disagreement as the error, never ``PERIODIC``.
+The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
+method on the period map with a finite-difference Jacobian (the perturbed maps replay the
+base map's steps, so that the difference is one of a smooth map), Broyden updates between
+Jacobians, refreshed where the steps stall.  An attracting orbit found (the spectral radius
+of the Jacobian, the Floquet multiplier, below 1) is refined by one map at ``rtol/REFINE``
+and one chord step: the answer is the refined mean, its error twice the change of the mean
+between the two tolerances plus the next Newton step's change of the mean (the integration
+error propagated and the Newton residual).  Otherwise (a response not locked to the drive:
+self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response)
+the motion is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is
+said with the windows' disagreement as the error, never ``PERIODIC``.  Where the motion sits
+on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
+equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
 """
 
 import math
@@ -509,7 +515,8 @@ def rs_period(P, z, rtol, hbox, work, count):
 @jit
 def _period(P, z, rtol, hbox, work, count, log, lp):
     """:func:`rs_period`, its steps recorded or replayed (:func:`_segment`; ``lp[0]`` is
-    reset to the start of ``log``)."""
+    reset to the start of ``log``).
+    """
     scale = _scales(P)
     lp[0] = 0
     z[Z_F] = z[Z_D] = z[Z_G] = 0.0
@@ -575,7 +582,8 @@ def _distance(wv, z1, z2):
 @jit
 def _map_mean(P, z, rtol, hbox, work, count, log, lp):
     """``(ok, mu)``: the period map from ``z`` in place (:func:`_period`) and the period's
-    mean ``F/N``."""
+    mean ``F/N``.
+    """
     ok = _period(P, z, rtol, hbox, work, count, log, lp)
     return ok, z[Z_F] / (TWO_PI * P[P_NBAR])
 
@@ -730,7 +738,8 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
 @jit
 def _broyden(D, a0, a1, b0, b1):
     """Broyden's update of the period map's Jacobian ``D`` from the step ``a0 -> b0`` with
-    the images ``a1``, ``b1``: ``D += (dP - D dz) dz^T/|dz|^2``."""
+    the images ``a1``, ``b1``: ``D += (dP - D dz) dz^T/|dz|^2``.
+    """
     nz = 0.0
     for c in range(NM):
         nz += (b0[c] - a0[c]) ** 2
