@@ -53,7 +53,7 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
         initial = steady.final_state
     kind, init = initial_rows(initial, 1, lambda i: dim)
     if kind == 2:  # a laboratory state: into the kernels' frame (docs/inplane.md)
-        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:]), init[0, 0], init[0, 1])
+        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:9]), init[0, 0], init[0, 1])
         return y, xd, init[0, 2], math.nan, int(init[0, 3])
     if kind == 0 and V == 0.0 and dim.a_x > 0.0:
         kind = 1  # "sliding" has no direction at V = 0: the rest, as in solve_points
@@ -170,8 +170,8 @@ def simulate(
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     refuse_rate_state(dim, "simulate", "time histories")
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
-    if settings is not None:  # refused as by solve_points, whatever the start
-        EVENT.capabilities.check_settings(settings)
+    # refused as by solve_points (the limits and the settings), whatever the start
+    EVENT.capabilities.check(table_of(dim, V), 0, settings or DEFAULT_SETTINGS)
     start = _start(dim, V, initial, settings)  # type: ignore[arg-type]
     seg = _segments(dim, V, start, int(math.ceil(periods)))
     m = seg.shape[0]
