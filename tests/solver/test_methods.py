@@ -61,7 +61,7 @@ def test_declarations_name_real_parameters_settings_and_columns() -> None:
     table = capability_table()
     for method in METHODS.values():
         assert method.capabilities.title in table
-    assert table.count("\n") == 11  # head, rule and nine rows
+    assert table.count("\n") == 12  # head, rule and ten rows
 
 
 def test_choose_is_the_documented_rule() -> None:

@@ -105,6 +105,10 @@ NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
 CONTACT, FLIGHT = 0, 1
 RECORD, REPLAY = 1, 2  # modes of a period map's step log
+# a replayed step whose error estimate exceeds this many tolerances fails the replay (the
+# finite differences then take adaptive steps): in a stiff layer (the touch-down) a step
+# accepted for one motion can be far too long for a neighbouring one
+REPLAY_ERROR = 10.0
 LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
 CUT_DELTA = 1e-13  # contact segments end where n = CUT_DELTA before lift-off (see doc)
 EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
@@ -468,7 +472,7 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
             last = hh < 0.0  # the segment's last step is recorded negative
             hh = abs(hh)
             err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
-            if not math.isfinite(err):
+            if not err <= REPLAY_ERROR:  # the step does not suit the perturbed motion
                 return False
             t = t1 if last else t + hh
             z[:] = znew
@@ -608,30 +612,69 @@ def _map_mean(P, z, rtol, hbox, work, count, log, lp):
 @jit
 def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, log, lp, D, gmu):
     """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
-    gradient ``gmu`` of the period's mean, by forward differences; returns ``ok``.
+    gradient ``gmu`` of the period's mean, by finite differences; returns ``ok``.
 
-    The perturbed maps replay the steps of the map ``z0 -> z1`` (``log``, ``lp[0]`` steps):
-    the difference is then one of a smooth map, its error the truncation's, ``~ dj``.  Where
-    that map took more steps than the log holds, they are adaptive (an error ``~ rtol/dj``
-    from the step sequences' differences).
+    Each column first by forward differences that replay the steps of the map ``z0 -> z1``
+    (``log``, ``lp[0]`` steps; the difference is then one of a smooth map, its error the
+    truncation's), at ``dj`` and ``2 dj``: where the two agree (to ``1e-3``) the first is
+    taken.  Where they do not (a stiff layer, e.g. a touch-down, where the steps of one
+    motion do not suit its neighbour), where a replayed step's error estimate is too large,
+    or where the log overflowed, the column is a central difference of adaptive maps at
+    ``rtol/REFINE^2`` over ``1e-4`` of the state's scale.  Returns the maps integrated as
+    the second value (``-1``: failed).
     """
     zp = np.empty(NZ)
+    zq = np.empty(NZ)
+    col = np.empty(NM)
     wv, s = _weights(P, z0)
-    replay = lp[0] <= log.shape[0]
+    steps = lp[0]
+    replay = steps <= log.shape[0]
+    maps = 0
     for c in range(NM):
-        dj = (1e-7 if replay else math.sqrt(rtol)) * s / wv[c]
-        zp[:] = z0
-        zp[c] += dj
-        hb = np.array([hbox[0]])
-        lp[1] = REPLAY if replay else 0
-        ok, mu = _map_mean(P, zp, rtol, hb, work, count, log, lp)
-        lp[1] = 0
-        if not ok:
-            return False
+        good = False
+        if replay:
+            dj = 1e-7 * s / wv[c]
+            zp[:] = z0
+            zp[c] += dj
+            lp[1] = REPLAY
+            ok1, mu = _map_mean(P, zp, rtol, hbox, work, count, log, lp)
+            zq[:] = z0
+            zq[c] += 2.0 * dj
+            ok2, mu2 = _map_mean(P, zq, rtol, hbox, work, count, log, lp)
+            lp[1] = 0
+            maps += 2
+            if ok1 and ok2:
+                good = True
+                big = 1.0
+                for r in range(NM):
+                    col[r] = (zp[r] - z1[r]) / dj
+                    big = max(big, abs(col[r]))
+                for r in range(NM):
+                    if abs((zq[r] - z1[r]) / (2.0 * dj) - col[r]) > 1e-3 * big:
+                        good = False
+                gm = (mu - mu1) / dj
+                if abs((mu2 - mu1) / (2.0 * dj) - gm) > 1e-3 * (1.0 + abs(gm)):
+                    good = False
+        if not good:
+            dj = 1e-4 * s / wv[c]
+            tight = rtol / (REFINE * REFINE)
+            zp[:] = z0
+            zp[c] += dj
+            ok1, mu = _map_mean(P, zp, tight, np.array([hbox[0]]), work, count, log, lp)
+            zq[:] = z0
+            zq[c] -= dj
+            ok2, mu2 = _map_mean(P, zq, tight, np.array([hbox[0]]), work, count, log, lp)
+            maps += 2
+            if not (ok1 and ok2):
+                return False, maps
+            for r in range(NM):
+                col[r] = (zp[r] - zq[r]) / (2.0 * dj)
+            gm = (mu - mu2) / (2.0 * dj)
         for r in range(NM):
-            D[r, c] = (zp[r] - z1[r]) / dj
-        gmu[c] = (mu - mu1) / dj
-    return True
+            D[r, c] = col[r]
+        gmu[c] = gm
+    lp[0] = steps
+    return True, maps
 
 
 @jit
@@ -720,8 +763,8 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
                 (it >= 6 and d > NEWTON_PROGRESS * d_first):
             break  # diverged, or not converging: left to the motion
         if not have_jac or (d > 0.5 * d_old and d > tol * s):
-            ok = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)
-            maps += NM
+            ok, m = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)
+            maps += m
             if not ok:
                 break
             have_jac = True
