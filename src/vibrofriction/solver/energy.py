@@ -27,13 +27,13 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 
 
 def kernel_point(dim: Dimensionless, V: float
-                 ) -> tuple[float, float, float, float, float, float, float, float, bool]:
+                 ) -> tuple[float, float, float, float, float, float, float, float, bool, float]:
     """The kernels' point arguments of a system at velocity ``V``.
 
-    ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, on_substrate)``.
+    ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, on_substrate, static_ratio)``.
     """
     return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,
-            dim.phase_x, dim.inplane_on == "substrate")
+            dim.phase_x, dim.inplane_on == "substrate", dim.static_ratio)
 
 
 def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
