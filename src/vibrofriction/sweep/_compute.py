@@ -124,14 +124,24 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
                         dtype=float).reshape(shape)
     # a transverse oscillation: no continuous sliding at full friction (docs/inplane.md)
     critical = np.where(np.asarray(point["a_y"]).reshape(shape) > 0.0, np.inf, critical)
+    critical = _coulomb_only(critical, np.asarray(point["rs_a"]).reshape(shape) > 0.0)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
         system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},  # type: ignore[arg-type]
-                               inplane_on=plan.inplane_on)
+                               inplane_on=plan.inplane_on, rs_law=plan.rs_law)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         if system.curved:
             critical[i] = _curved_critical(system.critical_inertial_velocity)
     return point, {"critical_velocity": critical}, V
+
+
+def _coulomb_only(critical: np.ndarray, rate_state: np.ndarray | bool) -> np.ndarray:
+    """The critical velocity, nan where the friction is rate-and-state (eq. 12 is Coulomb's).
+
+    A static coefficient above the kinetic one keeps it: a sliding contact carries the
+    kinetic force, so continuous sliding sets in where it does with Coulomb friction.
+    """
+    return np.where(rate_state, np.nan, critical)
 
 
 def _curved_critical(critical: Callable[[], float]) -> float:
@@ -155,13 +165,14 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
         system = Physical(**{name: float(arr[i]) for name, arr in p.items()},  # type: ignore[arg-type]
-                          inplane_on=plan.inplane_on)
+                          inplane_on=plan.inplane_on, friction=plan.friction)
         dim = system.to_dimensionless()
         for n, x in point.items():
             x[i] = getattr(dim, n)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         vstar[i] = _curved_critical(system.critical_velocity) if system.curved \
             else system.critical_velocity()
+    vstar = _coulomb_only(vstar, plan.friction is not None)
     return point, {"critical_velocity": vstar, **point}, V
 
 
@@ -174,7 +185,7 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
             cols = solve_points(**{n: x[i] for n, x in point.items()}, v_inertial=V[i][j],
-                                inplane_on=plan.inplane_on,
+                                inplane_on=plan.inplane_on, rs_law=plan.rs_law,
                                 initial=state if state is not None else plan.initial,
                                 settings=plan.settings)
             if out is None:
@@ -225,7 +236,7 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
         V = np.broadcast_to(V[..., None, :], shape)
     else:
         cols = solve_points(**{n: x[..., None] for n, x in point.items()}, v_inertial=V,
-                            inplane_on=plan.inplane_on,
+                            inplane_on=plan.inplane_on, rs_law=plan.rs_law,
                             initial=plan.initial, settings=plan.settings)
         shape = V.shape
     cols["v_inertial"] = V

@@ -115,6 +115,13 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
     return tuple(out)
 
 
+#: The critical velocity under the friction laws (docs/friction_laws.md).
+_LAW_COMMENT = ("Coulomb friction's (eq. 12, mu0 the kinetic coefficient), also with a static "
+                "coefficient above the kinetic one (static_ratio > 1: a sliding contact "
+                "carries the kinetic force); nan for rate-and-state friction (rs_a > 0), "
+                "for which eq. 12 does not hold")
+
+
 def row_variables(kind: str) -> tuple[Variable, ...]:
     """Variables of the non-velocity parameters only (one value per curve)."""
     if kind == "dimensionless":
@@ -123,6 +130,7 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "units, damped (V at vbar = 1 without in-plane oscillation; with "
                          "one, the combined drive's, docs/inplane.md); undamped inf in case "
                          "IV (alpha = 1), 0 in case III (beta = 1); 0 at amplitude 0",
+            "comment": _LAW_COMMENT,
             "symbol": "v0* m omega / (mu0 F_N0)", "units": _VEL_UNIT,
             "equation": "(12)"}),)
     return (
@@ -131,6 +139,7 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "forward (with an in-plane oscillation, the combined drive's); inf "
                          "at k_x = m omega^2 (case IV), 0 at k_x + k_xc = m omega^2 (case "
                          "III)",
+            "comment": _LAW_COMMENT,
             "symbol": "v0*", "units": "m s-1", "equation": "(12)"}),
         *(Variable(n, "f8", np.nan, dict(COORD_ATTRS[n]))
           for n in parameter_names("dimensionless", optional=False)  # from the SI ones
