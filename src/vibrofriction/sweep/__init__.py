@@ -127,10 +127,11 @@ def sweep(
         Points with a finite ``n`` are solved by the MDR solver, point by point (a
         tenth of a second to seconds each), from steady sliding (no continuation), on
         the ``v_inertial`` or ``v0`` axis (``vbar`` is not defined for them yet), and
-        not with ``eta_c``, ``a_x``, ``a_y`` > 0 or ``beta = inf`` (a ValueError when
-        solved); their ``critical_velocity`` is ``theory.profile_critical_velocity``
-        (nan with ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived). In a physical sweep
-        the other SI fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with
+        not with ``eta_c``, ``a_y`` > 0 (refused before any work), ``a_x > 0`` at
+        ``V = 0`` or ``beta = inf`` (a ValueError when solved); their
+        ``critical_velocity`` is ``theory.profile_critical_velocity`` (nan with
+        ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived). In a physical sweep the other SI
+        fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with
         ``n`` (:class:`~vibrofriction.params.Physical`): not the same tip seen flat.
     static_ratio : array_like, optional
         ``mu_static/mu0 >= 1``, the static coefficient of friction over the kinetic one
