@@ -18,8 +18,8 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-__all__ = ["CAPABILITIES", "EVENT", "INITIAL_KINDS", "MDR", "PLANE", "Capabilities", "Limit",
-           "Refusal", "capability_table", "refused_by"]
+__all__ = ["CAPABILITIES", "EVENT", "FRICTION_LAWS", "INITIAL_KINDS", "MDR", "PLANE",
+           "Capabilities", "Limit", "Refusal", "capability_table", "friction_laws", "refused_by"]
 
 #: The kinds of initial state, by the kernels' code: steady sliding, rest, a section state.
 INITIAL_KINDS = ("sliding", "rest", "section state")
@@ -263,12 +263,24 @@ def capability_table() -> str:
                     for k, v in c.settings.items()) + ", `tol_trusted`"
           for c in caps]),
         ("outputs (the rest nan)", [_outputs(c) for c in caps]),
+        ("local friction laws", [", ".join(friction_laws(c)) for c in caps]),
         ("sensitivities", ["yes" if c.sensitivities else "no" for c in caps]),
         ("time histories", ["yes" if c.histories else "no" for c in caps]),
     ]
     head = "| | " + " | ".join(f"{c.title} (`{c.name}`)" for c in caps) + " |\n"
     head += "|---" * (len(caps) + 1) + "|\n"
     return head + "".join(f"| {k} | " + " | ".join(v) + " |\n" for k, v in rows)
+
+
+#: The local friction laws and the parameter that switches each on (Coulomb's always holds).
+FRICTION_LAWS = {"static above kinetic": "static_ratio", "rate-and-state": "rs_a"}
+
+
+def friction_laws(c: Capabilities) -> list[str]:
+    """The local friction laws ``c`` covers: Coulomb's, and each whose parameter it uses."""
+    refused = {lim.parameter for lim in c.limits if lim.whole}
+    return ["Coulomb", *(law for law, p in FRICTION_LAWS.items()
+                         if p in c.parameters and p not in refused)]
 
 
 def _outputs(c: Capabilities) -> str:

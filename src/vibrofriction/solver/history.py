@@ -168,8 +168,8 @@ def simulate(
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
-    if settings is not None:  # refused as by solve_points, whatever the start
-        EVENT.capabilities.check_settings(settings)
+    # refused as by solve_points (the limits and the settings), whatever the start
+    EVENT.capabilities.check(table_of(dim, V), 0, settings or DEFAULT_SETTINGS)
     start = _start(dim, V, initial, settings)  # type: ignore[arg-type]
     seg = _segments(dim, V, start, int(math.ceil(periods)))
     m = seg.shape[0]
