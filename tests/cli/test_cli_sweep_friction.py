@@ -79,6 +79,15 @@ def test_a_physical_sweep_takes_mu_static_and_holds_the_rate_and_state_law(capsy
     plan = vf.sweep.make_plan(system=g.pop("system"), v0=g.pop("v0"),
                               rs_law=g.pop("rs_law", None), physical=g)
     assert plan.friction == system.friction and plan.rs_law == "slip"
+    # the law's own SI parameters as axes: the system's law has the first values
+    code, _, err = _run(capsys, *PHYS, "--friction-a", "0.006", "--friction-b", "0.009",
+                        "--friction-d-c", "1e-7:4e-7:3", "--friction-v-ref", "1e-3,2e-3",
+                        "--v0", "0.01")
+    assert code == 0, err
+    g = grid["grid"]
+    assert np.array_equal(g["friction_d_c"], np.linspace(1e-7, 4e-7, 3))
+    assert np.array_equal(g["friction_v_ref"], [1e-3, 2e-3])
+    assert g["system"].friction == vf.RateAndState(a=0.006, b=0.009, d_c=1e-7, v_ref=1e-3)
     code, _, err = _run(capsys, *PHYS, "--mu-static", "0.3,0.45", "--v0", "0.01")
     assert code == 0, err
     assert np.array_equal(grid["grid"]["mu_static"], [0.3, 0.45])
@@ -109,6 +118,10 @@ def test_a_physical_sweep_takes_mu_static_and_holds_the_rate_and_state_law(capsy
     ((*PHYS, "--v0", "0.01", "--friction-a", "0.01"),
      "rate-and-state friction (--friction-a) needs --friction-d-c, --friction-v-ref"),
     ((*PHYS, "--v0", "0.01", "--mu-static", "0.2,0.4"), "mu_static must be >= mu0 (= 0.3"),
+    ((*PHYS, "--v0", "0.01", *LAW_SI[2:], "--friction-a", "0.01,0"),
+     "--friction-a (friction_a) must be finite and > 0, got 0"),
+    ((*PHYS, "--v0", "0.01", *LAW_SI, "--friction-alpha-ld", "1e-3", "--friction-b", "0,1e-2"),
+     "alpha_ld = 0.001 > 0 needs b > 0"),
     ((*PHYS, "--v0", "0.01", *LAW_SI, "--mu-static", "0.4"),
      "mu_static is a law of Coulomb friction"),
     ((*PHYS, "--v0", "0.01", "--mu-static", "0.45", "--profile-exponent", "2"),

@@ -6,7 +6,6 @@ store, and atlases equal to :func:`~vibrofriction.friction_coefficient` bit for 
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 from pathlib import Path
 
@@ -95,16 +94,25 @@ def test_a_physical_plan_carries_the_law_and_mu_static() -> None:
     plan = make_plan(system=pin(friction=law), physical=dict(du_z=[1.0e-6, 2.0e-6]),
                      v0=[0.01, 0.02])
     assert plan.friction == law and plan.rs_law == "aging"
-    assert plan.signature()["friction"] == {
-        "a": (0.006).hex(), "b": (0.009).hex(), "d_c": (2.0e-7).hex(), "v_ref": (1.0e-3).hex(),
-        "alpha_ld": (1.0e-4).hex(), "law": "aging"}
+    # the law's SI parameters: axes held at the law's values
+    assert {n: plan.fixed[f"friction_{n}"] for n in ("a", "b", "d_c", "v_ref", "alpha_ld")} == {
+        "a": 0.006, "b": 0.009, "d_c": 2.0e-7, "v_ref": 1.0e-3, "alpha_ld": 1.0e-4}
+    assert plan.signature()["params"]["friction_d_c"] == (2.0e-7).hex()
+    assert plan.signature()["friction"] == "rate-and-state"
     slip = make_plan(system=pin(friction=law), physical=dict(du_z=[1.0e-6, 2.0e-6]),
                      v0=[0.01, 0.02], rs_law="slip")
     assert slip.friction == dataclasses.replace(law, law="slip") and slip.rs_law == "slip"
+    assert slip.token() != plan.token()
     other = make_plan(system=pin(friction=rate_state(d_c=3.0e-7)),
                       physical=dict(du_z=[1.0e-6, 2.0e-6]), v0=[0.01, 0.02])
-    assert other.signature()["friction"]["d_c"] == (3.0e-7).hex()
+    assert other.signature()["params"]["friction_d_c"] == (3.0e-7).hex()
     assert other.token() != plan.token()
+    swept = make_plan(system=pin(friction=law), physical=dict(friction_d_c=[1e-7, 4e-7],
+                                                              friction_b=[0.005, 0.01]), v0=0.01)
+    assert swept.dims == ("friction_b", "friction_d_c")
+    coulomb = make_plan(system=pin(), v0=0.01)
+    assert coulomb.signature()["friction"] is None
+    assert not any(a.name.startswith("friction_") for a in coulomb.params)
     # mu_static: an SI axis where given (None: mu0, no axis)
     assert "mu_static" not in [a.name for a in make_plan(system=pin(), v0=0.01).params]
     static = make_plan(system=pin(), physical=dict(mu_static=[0.3, 0.45]), v0=0.01)
@@ -129,6 +137,16 @@ def test_a_physical_grid_scales_its_law_as_the_system_does() -> None:
                 assert point[name][i, j] == fields[name], name
                 assert rows[name][i, j] == fields[name], name
             assert math.isnan(rows["critical_velocity"][i, j])  # rate-and-state: no eq. 12
+    # the law's own SI parameters swept: each row's law is the system's with them
+    plan = make_plan(system=system, physical=dict(friction_d_c=[1.0e-7, 4.0e-7],
+                                                  friction_b=[0.004, 0.009]), v0=[0.01])
+    point, rows, _ = _physical_rows(plan, 0, np.array([0.01]))
+    for i, b in enumerate((0.004, 0.009)):
+        for j, d_c in enumerate((1.0e-7, 4.0e-7)):
+            fields = system.with_(friction=rate_state(b=b, d_c=d_c, alpha_ld=1.0e-4,
+                                                      law="slip")).friction_fields()
+            for name in ("rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld"):
+                assert point[name][i, j] == fields[name], name
     static = make_plan(system=pin(mu_static=0.45), physical=dict(mu0=[0.3, 0.36]), v0=[0.01])
     point, rows, _ = _physical_rows(static, 0, np.array([0.01]))
     assert point["static_ratio"].tolist() == [0.45 / 0.3, 0.45 / 0.36]
@@ -173,9 +191,10 @@ def test_bad_friction_grids_are_refused_by_name_before_any_work(changes, message
                           r"system takes it as friction=RateAndState"),
     (dict(rs_a=[0.01]), r"rs_a: a Physical system's friction law is its mu_static"),
     (dict(static_ratio=1.5), r"static_ratio: a Physical system's friction law"),
-    (dict(friction_a=[0.01, 0.02]), r"friction_a: the parameters of the rate-and-state law "
-                                    r"of a physical sweep are held"),
-    (dict(d_c=[1e-6]), r"d_c: the parameters of the rate-and-state law"),
+    (dict(friction_a=[0.01, 0.02]), r"friction_a needs rate-and-state friction: a Physical "
+                                    r"system takes it as friction=RateAndState"),
+    (dict(d_c=[1e-6]), r"d_c: a physical sweep takes the parameters of its rate-and-state "
+                       r"law as friction_d_c"),
     (dict(mu_static=[0.2, 0.4]), r"mu_static must be >= mu0 \(= 0.3"),
     (dict(mu0=[0.3, 0.5], mu_static=0.4), r"invalid corner .*'mu0': 0.5.*mu_static must "
                                           r"be >= mu0"),
@@ -190,6 +209,19 @@ def test_a_physical_law_with_alpha_ld_and_jumping_is_refused_at_a_corner(no_work
     with pytest.raises(ValueError, match=r"invalid corner .*'du_z': 4e-06.*rs_alpha_ld > 0 "
                                          r"needs amplitude < 1"):
         sweep(system, du_z=[1.0e-6, 4.0e-6], v0=0.01, workers=1, progress=False)
+
+
+@pytest.mark.parametrize(("changes", "message"), [
+    (dict(friction_a=[0.0, 0.01]), r"friction_a = 0: a must be finite and > 0, got 0.0"),
+    (dict(friction_d_c=[-1e-7]), r"friction_d_c = -1e-07: d_c must be finite and > 0"),
+    (dict(friction_b=[0.0, 0.01], friction_alpha_ld=1e-3),
+     r"invalid corner .*'friction_b': 0.0.*alpha_ld = 0.001 > 0 needs b > 0"),
+    (dict(friction_b=[0.0, 0.01], friction_alpha_ld=[0.0, 1e-3]),
+     r"invalid corner .*'friction_b': 0.0.*'friction_alpha_ld': 0.001.*needs b > 0"),
+])
+def test_bad_values_of_a_physical_law_are_refused_by_name(changes, message, no_work) -> None:
+    with pytest.raises(ValueError, match=message):
+        sweep(pin(friction=rate_state()), v0=0.01, workers=1, progress=False, **changes)
 
 
 def test_mu_static_with_a_rate_and_state_law_is_refused(no_work) -> None:
@@ -238,7 +270,6 @@ def test_an_atlas_over_static_ratio_equals_friction_coefficient_bitwise() -> Non
     ds = sweep(**BASE, static_ratio=ratios, v_inertial=V, workers=1, progress=False)
     assert ds.mu_ratio.dims == ("static_ratio", "v_inertial")
     assert ds.attrs["rs_law"] == "aging"
-    assert ds.attrs["friction"] == "none (Coulomb friction)"
     coulomb = Dimensionless(**BASE).critical_inertial_velocity()
     for s in ratios:
         ref = friction_coefficient(Dimensionless(**BASE, static_ratio=s), v_inertial=V)
@@ -301,12 +332,14 @@ def test_an_atlas_over_rs_a_equals_friction_coefficient_bitwise() -> None:
 def test_a_physical_sweep_keeps_its_rate_and_state_law() -> None:
     system = pin(friction=rate_state(law="slip"))
     v0 = np.array([0.6, 1.2]) * pin().critical_velocity()
-    ds = sweep(system, du_z=[1.0e-6, 2.0e-6], v0=v0, workers=1, progress=False)
+    ds = sweep(system, du_z=[1.0e-6, 2.0e-6], friction_d_c=[1.0e-7, 2.0e-7], v0=v0,
+               workers=1, progress=False)
     assert ds.attrs["rs_law"] == "slip"
-    assert json.loads(ds.attrs["friction"]) == dataclasses.asdict(system.friction)
-    for du_z in (1.0e-6, 2.0e-6):
-        s = system.with_(du_z=du_z)
-        row = ds.sel(du_z=du_z)
+    assert ds.mu_ratio.dims == ("du_z", "friction_d_c", "v0")
+    assert (float(ds.friction_a), ds.friction_d_c.attrs["units"]) == (0.006, "m")
+    for du_z, d_c in ((1.0e-6, 1.0e-7), (2.0e-6, 2.0e-7), (2.0e-6, 1.0e-7)):
+        s = system.with_(du_z=du_z, friction=rate_state(d_c=d_c, law="slip"))
+        row = ds.sel(du_z=du_z, friction_d_c=d_c)
         for name, value in s.friction_fields().items():
             if name != "rs_law":
                 assert float(row[name]) == value, name

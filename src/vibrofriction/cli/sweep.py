@@ -36,7 +36,7 @@ OPTIONS: tuple[Opt, ...] = (
     Opt("out", "zarr store to write (resumed if it exists)", kind="text", metavar="STORE",
         required=True),
     *_AXIS_OPTIONS,
-    *FRICTION_SI,
+    *(with_(o, kind="axis", metavar=FLOATS) for o in FRICTION_SI),
     Opt("scheduler", "Dask scheduler address (tcp://host:port): run on that cluster",
         kind="text", metavar="ADDRESS"),
     Opt("workers", "local worker processes (default: all cores)", kind="int", metavar=INT,
@@ -57,7 +57,8 @@ REQUIRED_SI = tuple(n for n in _PHYSICAL if _BY_NAME[n].default is None)
 OPTIONAL_SI = tuple(n for n in _PHYSICAL if _BY_NAME[n].default is not None)
 #: The friction law of a physical sweep: the static coefficient (an axis; default mu0) and
 #: the rate-and-state law's fixed values (SI).
-LAW_SI = ("mu_static", *(o.name for o in FRICTION_SI))
+FRICTION = tuple(o.name for o in FRICTION_SI)
+LAW_SI = ("mu_static", *FRICTION)
 #: The parameters of both kinds of sweep (a phase, the tip's profile), and the choice.
 SHARED = ("phase_x", "phase_y", "profile_exponent")
 SCALED = tuple(n for n in parameter_names("dimensionless", optional=False)
@@ -122,17 +123,24 @@ def _grid(a: Args) -> dict:
 def _physical_grid(a: Args) -> dict:
     import numpy as np
 
-    from ..params import Physical
-    from .mu import _friction
+    from ..params import Physical, RateAndState
 
     missing = [flag(n) for n in (*REQUIRED_SI, "v0") if not a.has(n)]
     if missing:
         raise ValueError("a physical sweep needs every SI parameter and v0; missing "
                          + ", ".join(missing))
-    values = {n: _axis(a, n) for n in (*REQUIRED_SI, *OPTIONAL_SI, *SHARED, "mu_static")
+    values = {n: _axis(a, n) for n in (*REQUIRED_SI, *OPTIONAL_SI, *SHARED, *LAW_SI)
               if a.has(n)}
     first: dict[str, Any] = {k: float(np.atleast_1d(v)[0]) for k, v in values.items()}
-    return dict(system=Physical(**first, friction=_friction(a)), v0=_axis(a, "v0"), **values)
+    law = {n.removeprefix("friction_"): first.pop(n) for n in FRICTION if n in first}
+    friction = None
+    if law:  # --friction-a is given (the others require it): the law of the first values
+        missing = [flag(n) for n in ("friction_d_c", "friction_v_ref") if not a.has(n)]
+        if missing:
+            raise ValueError("rate-and-state friction (--friction-a) needs "
+                             + ", ".join(missing))
+        friction = RateAndState(**law, law=a["rs_law"])
+    return dict(system=Physical(**first, friction=friction), v0=_axis(a, "v0"), **values)
 
 
 def _run(grid: dict, options: dict, *, scheduler: str | None, workers: int | None):
@@ -209,9 +217,9 @@ COMMAND = Command(
     or start:stop:num[:log] (0:1.2:121 is linspace, 1e-2:1e2:41:log geomspace). Give the
     dimensionless parameters with --vbar or --v-inertial, or the SI ones with --v0.
     The friction law: --static-ratio and --rs-a ... --rs-alpha-ld are axes of a
-    dimensionless sweep, --mu-static an axis of a physical one, whose rate-and-state law
-    is held (--friction-a, --friction-b, --friction-d-c, --friction-v-ref,
-    --friction-alpha-ld); --rs-law is one for the grid.
+    dimensionless sweep, --mu-static and the rate-and-state law's --friction-a,
+    --friction-b, --friction-d-c, --friction-v-ref, --friction-alpha-ld axes of a physical
+    one; --rs-law is one for the grid.
 
     Exit status 0 if every point is trusted (converged status and error <= tol_trusted),
     3 if some are not (everything is still written), 2 for bad input.

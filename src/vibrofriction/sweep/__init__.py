@@ -105,8 +105,9 @@ def sweep(
         :class:`~vibrofriction.params.Physical` system, swept over any of its SI fields
         passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
         du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...,
-        mu_static=...``) and the velocity ``v0`` (m/s); its rate-and-state law
-        (``friction``) is held as it is.
+        mu_static=...``, and of its rate-and-state law ``friction_a=...,
+        friction_b=..., friction_d_c=..., friction_v_ref=..., friction_alpha_ld=...``)
+        and the velocity ``v0`` (m/s).
     alpha, beta, amplitude : array_like, optional
         Eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid contact.
         ``beta > alpha`` must hold at every grid point.
@@ -146,8 +147,10 @@ def sweep(
         grid takes, ``vbar`` and continuation with ``rs_a > 0``. A rate-and-state
         row's ``critical_velocity`` is nan (eq. 12 is Coulomb's); a static coefficient
         keeps the Coulomb one (a sliding contact carries the kinetic force). Physical
-        systems hold their ``friction=RateAndState(...)`` (SI), whose scaled ``rs_*``
-        are coordinates of the atlas.
+        systems sweep the SI parameters of their ``friction=RateAndState(...)`` as
+        ``friction_a`` ... ``friction_alpha_ld`` (held at the law's values unless given;
+        its ``law`` is the grid's ``rs_law``), and the scaled ``rs_*`` of each row
+        (:meth:`~vibrofriction.Physical.friction_fields`) are coordinates of the atlas.
     inplane_on : {"substrate", "holder"}, optional
         Where the in-plane oscillation is imposed (one for the whole grid); default the
         system's, or ``"substrate"``.

@@ -19,9 +19,9 @@ from pathlib import Path
 import numpy as np
 
 from .. import theory
-from ..params import Dimensionless, Physical, inertial_velocity
+from ..params import Dimensionless, inertial_velocity
 from ..solver import section_state, solve_points
-from ._grid import DIMENSIONLESS, Plan
+from ._grid import DIMENSIONLESS, Plan, physical_system
 from ._variables import point_variables, row_variables
 
 #: The parameters of the critical velocity of continuous sliding (the same for a static
@@ -164,8 +164,8 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     V = np.empty((*shape, vel.size))
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
-        system = Physical(**{name: float(arr[i]) for name, arr in p.items()},  # type: ignore[arg-type]
-                          inplane_on=plan.inplane_on, friction=plan.friction)
+        system = physical_system({name: float(arr[i]) for name, arr in p.items()}
+                                 | {"inplane_on": plan.inplane_on}, plan.friction)
         dim = system.to_dimensionless()
         for n, x in point.items():
             x[i] = getattr(dim, n)

@@ -35,9 +35,6 @@ def _attrs(plan: Plan) -> dict:
         "initial": plan.initial,
         "inplane_on": plan.inplane_on,
         "rs_law": plan.rs_law,
-        # a physical sweep's rate-and-state law in SI units (its scaled rs_* are coordinates)
-        "friction": "none (Coulomb friction)" if plan.friction is None else json.dumps(
-            dataclasses.asdict(plan.friction), sort_keys=True),
         "continuation": int(plan.continuation),
         "solver_settings": json.dumps(s, sort_keys=True),
         # what each solver ran with: the settings resolved with its own defaults

@@ -39,6 +39,7 @@ __all__ = [
     "Plan",
     "check_methods",
     "make_plan",
+    "physical_system",
     "parse_axis",
 ]
 
@@ -52,8 +53,10 @@ MU_STATIC = "mu_static"
 #: ``amplitude < 1``).
 FRICTION_LAW = ("static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld")
 _LAW_CORNERS = ("amplitude", *FRICTION_LAW)
-#: A physical sweep's rate-and-state law is the system's ``friction`` (SI), held fixed.
+#: The SI parameters of a physical sweep's rate-and-state law (the system's ``friction``):
+#: axes ``friction_a`` ... (held at the law's values unless swept) where it has one.
 _SI_LAW = ("a", "b", "d_c", "v_ref", "alpha_ld")
+FRICTION_SI = tuple(f"friction_{n}" for n in _SI_LAW)
 #: The parameters some solver refuses at every value but its default (a ``whole``
 #: :class:`~vibrofriction.capabilities.Limit`): checked before any work.
 _LIMITED = tuple(dict.fromkeys(lim.parameter for c in CAPABILITIES.values()
@@ -109,7 +112,8 @@ class Plan:
     rs_law : str, optional
         The state's evolution law of rate-and-state friction, one for the grid.
     friction : RateAndState, optional
-        A physical sweep's rate-and-state law in SI units (None: Coulomb friction).
+        A physical sweep's rate-and-state law in SI units (None: Coulomb friction): its
+        ``law``; its parameters are the axes ``friction_a`` ... of :attr:`params`.
 
     Examples
     --------
@@ -206,7 +210,7 @@ class Plan:
             "initial": self.initial,
             "inplane_on": self.inplane_on,
             "rs_law": self.rs_law,
-            "friction": _law_signature(self.friction),
+            "friction": None if self.friction is None else "rate-and-state",
             "continuation": self.continuation,
             "version": self.version,
             "fingerprint": self.fingerprint,
@@ -224,14 +228,6 @@ class Plan:
         if len(chunks) != len(self.shape) or any(c < 1 for c in chunks):
             raise ValueError(f"bad block shape {chunks} for a grid of shape {self.shape}")
         return dataclasses.replace(self, chunks=tuple(int(c) for c in chunks))
-
-
-def _law_signature(law: RateAndState | None) -> dict[str, str] | None:
-    """A physical sweep's rate-and-state law as its store records it (None: Coulomb)."""
-    if law is None:
-        return None
-    return {"a": law.a.hex(), "b": law.b.hex(), "d_c": law.d_c.hex(),
-            "v_ref": law.v_ref.hex(), "alpha_ld": law.alpha_ld.hex(), "law": law.law}
 
 
 def _chunks(shape: tuple[int, ...], n_tail: int, chunk_size: int,
@@ -448,7 +444,9 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     """The SI axes (canonical order) and ``v0`` of a sweep around ``system``.
 
     ``mu_static`` is an axis where it is given (a keyword or the system's), else ``mu0``
-    holds for it; the system's rate-and-state law (``friction``) is carried as it is.
+    holds for it; a rate-and-state law (``friction``) gives the axes ``friction_a``,
+    ``friction_b``, ``friction_d_c``, ``friction_v_ref``, ``friction_alpha_ld`` (its SI
+    parameters, held at the law's values unless given).
     """
     law = [n for n in FRICTION_LAW if dimensionless.get(n) is not None]
     if law:
@@ -460,30 +458,61 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
                          "alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not "
                          "allowed, nor a_y (sweep c_x, c_xc, du_x, du_y instead of zeta, "
                          "eta_c, a_x, a_y)")
+    bare = sorted(n for n in physical if n in _SI_LAW)
+    if bare:
+        raise ValueError(f"{', '.join(bare)}: a physical sweep takes the parameters of its "
+                         f"rate-and-state law as {', '.join('friction_' + n for n in bare)}")
+    law = sorted(n for n in physical if n in FRICTION_SI)
+    if law and system.friction is None:
+        raise ValueError(f"{', '.join(law)} need{'s' if len(law) == 1 else ''} "
+                         "rate-and-state friction: a Physical system "
+                         "takes it as friction=RateAndState(a=..., b=..., d_c=..., v_ref=...), "
+                         "and this one has none (Coulomb friction)")
     names = PHYSICAL + ((MU_STATIC,) if MU_STATIC in physical or system.mu_static is not None
-                        else ())
-    law = sorted(n for n in physical if n in _SI_LAW or n.removeprefix("friction_") in _SI_LAW)
-    if law:
-        raise ValueError(f"{', '.join(law)}: the parameters of the rate-and-state law of a "
-                         "physical sweep are held (the system's friction=RateAndState(...)); "
-                         "to sweep them, sweep a dimensionless grid over rs_a, rs_b, rs_d_c, "
-                         "rs_v_ref, rs_alpha_ld")
+                        else ()) + (FRICTION_SI if system.friction is not None else ())
     unknown = sorted(set(physical) - set(names) - {MU_STATIC})
     if unknown:
         raise ValueError(f"unknown physical parameter(s) {unknown}; "
-                         f"choose from {[*PHYSICAL, MU_STATIC]}")
+                         f"choose from {[*PHYSICAL, MU_STATIC, *FRICTION_SI]}")
     if v0 is None:
         raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
-    base = dataclasses.asdict(system)
+    base = _physical_fields(system)
     params = tuple(make_axis(n, physical.get(n, base[n])) for n in names)
     fixed = {n: base[n] for n in choice_names("physical")} | {"friction": system.friction}
     velocity = make_axis("v0", v0)
     validated({"v0": velocity.values})
     for a in params:  # each value of each axis, with the others at their base values
         for x in np.atleast_1d(a.values):
-            system.with_(**{a.name: float(x)})
+            try:
+                physical_system(base | {a.name: float(x)}, system.friction)
+            except ValueError as exc:  # RateAndState names its own fields: a, b, ...
+                named = a.name in FRICTION_SI
+                raise ValueError(f"{a.name} = {float(x):g}: {exc}" if named else str(exc)) \
+                    from None
     _check_physical_corners(params, velocity, fixed)
     return params, velocity
+
+
+def _physical_fields(system: Physical) -> dict[str, Any]:
+    """The fields of ``system``, its rate-and-state law as ``friction_a`` ... (if any)."""
+    fields = dataclasses.asdict(system)
+    law = fields.pop("friction")
+    return fields | ({} if law is None else {f"friction_{n}": law[n] for n in _SI_LAW})
+
+
+def physical_system(values: dict[str, Any], friction: RateAndState | None) -> Physical:
+    """The system of a physical grid's point: its SI fields and its law's ``friction_*``.
+
+    ``friction`` is the grid's law (its ``law``, and its parameters where ``values`` has
+    no ``friction_*``).
+    """
+    own = {n.removeprefix("friction_"): values[n] for n in FRICTION_SI if n in values}
+    if own:
+        if friction is None:
+            raise ValueError(f"{', '.join(own)} need a rate-and-state law (friction=None)")
+        friction = dataclasses.replace(friction, **own)
+    return Physical(**{n: v for n, v in values.items() if n not in FRICTION_SI and
+                       n != "friction"}, friction=friction)
 
 
 def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
@@ -661,7 +690,7 @@ def _physical_corners(params: tuple[Axis, ...], fixed: dict[str, Any]):
     for corner in itertools.product(*ends):
         where = dict(zip(names, corner, strict=True))
         try:
-            yield where, Physical(**where | fixed)
+            yield where, physical_system(where | fixed, fixed.get("friction"))
         except ValueError as exc:
             raise ValueError(f"the physical grid has an invalid corner {where}: {exc}") from None
 

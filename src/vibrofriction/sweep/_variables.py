@@ -55,9 +55,24 @@ def _flag_words(text: str) -> str:
 _STATUS_CODES = sorted(STATUS_BY_CODE)
 
 
-#: Attributes of every coordinate: the schema's parameters, and ``direction``.
+#: The SI parameters of a physical sweep's rate-and-state law (``Physical.friction``).
+_FRICTION_SI_ATTRS = {
+    "friction_a": ("direct effect a of rate-and-state friction (mu_star = mu0)", "1", "a"),
+    "friction_b": ("evolution effect b of rate-and-state friction", "1", "b"),
+    "friction_d_c": ("critical slip distance of rate-and-state friction", "m", "d_c"),
+    "friction_v_ref": ("reference slip velocity of rate-and-state friction", "m s-1",
+                       "v_ref"),
+    "friction_alpha_ld": ("Linker-Dieterich coefficient of rate-and-state friction", "1",
+                          "alpha_LD"),
+}
+
+#: Attributes of every coordinate: the schema's parameters, a physical sweep's
+#: rate-and-state law, and ``direction``.
 COORD_ATTRS: dict[str, dict[str, Any]] = {
     **{p.name: p.attrs() for p in PARAMETERS},
+    **{name: {"long_name": words, "units": units, "symbol": symbol,
+              "equation": "docs/friction_laws.md"}
+       for name, (words, units, symbol) in _FRICTION_SI_ATTRS.items()},
     "direction": {"long_name": "direction of the velocity continuation: each point starts "
                                "from the final state of its predecessor in this direction",
                   "symbol": ""},
