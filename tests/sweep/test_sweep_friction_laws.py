@@ -352,3 +352,15 @@ def test_a_rate_and_state_block_is_solved_with_the_plans_law() -> None:
     _, values = compute_block(plan, 0)
     ref = friction_coefficient(Dimensionless(**BASE, **LAW, rs_law="slip"), v_inertial=V)
     assert values["mu_ratio"].tobytes() == ref.mu_ratio.tobytes()
+
+
+def test_continuation_carries_the_static_coefficient() -> None:
+    ds = sweep(**BASE, static_ratio=[1.0, 1.5], v_inertial=V, continuation=True, workers=1,
+               progress=False)
+    assert ds.mu_ratio.dims == ("static_ratio", "direction", "v_inertial")
+    for s in (1.0, 1.5):  # each upward walk starts from steady sliding, as a single point
+        first = friction_coefficient(Dimensionless(**BASE, static_ratio=s), v_inertial=V[:1])
+        got = ds.mu_ratio.sel(static_ratio=s, direction="up").values[:1]
+        assert got.tobytes() == first.mu_ratio.tobytes()
+    assert not np.array_equal(ds.mu_ratio.sel(static_ratio=1.5).values,
+                              ds.mu_ratio.sel(static_ratio=1.0).values)
