@@ -32,7 +32,8 @@ __all__ = ["compute_block", "identity", "warm_up"]
 
 #: the source files that determine the values of a sweep (relative to the package)
 _VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "solver/methods/*.py", "schema/*.py",
-                  "capabilities.py", "params/*.py", "theory/*.py", "sweep/_compute.py")
+                  "capabilities.py", "params/*.py", "theory/*.py", "sweep/_compute.py",
+                  "sweep/_grid.py")  # _grid: a physical row's system (physical_system)
 
 
 @functools.cache

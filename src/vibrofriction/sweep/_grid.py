@@ -284,6 +284,9 @@ def make_plan(
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work.
 
+    (What the solvers chosen in the grid never take is checked by :func:`check_methods`,
+    which :func:`sweep` calls on the plan: a plan itself is only the grid.)
+
     The grid's parameters and options are those of :func:`sweep` (``system``,
     ``alpha`` ... ``profile_exponent``, the friction law's ``static_ratio``, ``rs_a`` ...
     ``rs_alpha_ld``, ``inplane_on``, ``rs_law``, the velocity axis, ``settings``,
@@ -451,8 +454,9 @@ def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLi
     law = [n for n in FRICTION_LAW if dimensionless.get(n) is not None]
     if law:
         raise ValueError(f"{', '.join(law)}: a Physical system's friction law is its "
-                         "mu_static (an SI axis: sweep mu_static=[...]) and its "
-                         "friction=RateAndState(...) in SI units, held fixed")
+                         "mu_static and its friction=RateAndState(...) in SI units: sweep "
+                         "mu_static=[...] or friction_a=[...], friction_b, friction_d_c, "
+                         "friction_v_ref, friction_alpha_ld")
     if any(v is not None for v in dimensionless.values()):
         raise ValueError("a Physical system is swept over its SI parameters and v0; "
                          "alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not "
