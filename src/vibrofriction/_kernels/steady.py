@@ -99,6 +99,7 @@ from .period import (
     N_ACC,
     advance_counted,
     advance_period,
+    pure_forward_slip,
 )
 from .phases import (
     ETA_ELASTIC,
@@ -364,8 +365,15 @@ def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
         out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, 0.0
         _sliding_window(M, win)
         return ST_SLIDING, 0, 0
-    return _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win,
-                out_f, certify, ys, yds, es)
+    status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
+                             count, win, out_f, certify, ys, yds, es)
+    if status == ST_PERIODIC and certify and pure_forward_slip(win) and sliding_certificate(
+            z[0], z[1], z[2], int(z[3]), M, True, ys, yds, es):
+        # the orbit found is the sliding one, and the motion from its state slides for ever
+        out_f[O_MU], out_f[O_ERR] = 1.0, 0.0
+        _sliding_window(M, win)
+        return ST_SLIDING, 0, k
+    return status, period, k
 
 
 @jit

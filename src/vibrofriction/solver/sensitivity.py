@@ -224,7 +224,8 @@ def friction_gradient(
     Raises
     ------
     ValueError
-        A transverse oscillation (``a_y > 0``) or a curved tip, or the velocities as for
+        A transverse oscillation (``a_y > 0``), a curved tip, a static coefficient above
+        the kinetic one (``static_ratio > 1``), or the velocities as for
         :func:`friction_coefficient`.
     """
     dim: Dimensionless = dimensionless(system)
@@ -234,6 +235,7 @@ def friction_gradient(
     if dim.profile_exponent != math.inf:
         raise ValueError(f"friction_gradient covers the flat punch only: profile_exponent "
                          f"must be inf, got {dim.profile_exponent!r}")
+    # the parameter differences of the period map (module doc) take Coulomb's law
     for name, coulomb in (("static_ratio", 1.0), ("rs_a", 0.0)):
         if getattr(dim, name) != coulomb:
             raise ValueError(f"friction_gradient covers Coulomb friction only: {name} must be "
