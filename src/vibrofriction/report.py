@@ -208,6 +208,10 @@ def _render(index: int, quick: bool, name: str, out: Path,
                 + (f"a_y={s.a_y!r}, phase_y={s.phase_y!r}, " if s.a_y else "")
                 + (f"profile_exponent={s.profile_exponent!r}, "
                    if s.profile_exponent != math.inf else "")
+                + (f"static_ratio={s.static_ratio!r}, " if s.static_ratio != 1.0 else "")
+                + (f"rs_a={s.rs_a!r}, rs_b={s.rs_b!r}, rs_d_c={s.rs_d_c!r}, "
+                   f"rs_v_ref={s.rs_v_ref!r}, rs_alpha_ld={s.rs_alpha_ld!r}, "
+                   f"rs_law={s.rs_law!r}, " if s.rs_a else "")
                 + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
@@ -222,18 +226,18 @@ class _Batch:
     """The points of one recipe, split into strided chunks (expensive regions spread out)."""
 
     index: int
-    columns: list[np.ndarray]  # the POINT_ARGS arrays, then inplane_on (point_columns)
+    columns: list[np.ndarray]  # the POINT_ARGS, then the CHOICE_ARGS arrays (point_columns)
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
 
     @classmethod
     def of(cls, index: int, recipe: Recipe, chunk: int) -> _Batch:
-        columns, on = point_columns(recipe.series)
+        columns = point_columns(recipe.series)
         n = columns[0].size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, [*columns, on], chunks, {}, len(chunks))
+        return cls(index, columns, chunks, {}, len(chunks))
 
     @property
     def size(self) -> int:
