@@ -224,7 +224,8 @@ def friction_gradient(
     Raises
     ------
     ValueError
-        A transverse oscillation (``a_y > 0``) or a curved tip, or the velocities as for
+        A transverse oscillation (``a_y > 0``), a curved tip, a static coefficient above
+        the kinetic one (``static_ratio > 1``), or the velocities as for
         :func:`friction_coefficient`.
     """
     dim: Dimensionless = dimensionless(system)
@@ -234,6 +235,10 @@ def friction_gradient(
     if dim.profile_exponent != math.inf:
         raise ValueError(f"friction_gradient covers the flat punch only: profile_exponent "
                          f"must be inf, got {dim.profile_exponent!r}")
+    if dim.static_ratio != 1.0:
+        # the parameter differences of the period map (module doc) take Coulomb's law
+        raise ValueError(f"friction_gradient covers Coulomb friction only: static_ratio must "
+                         f"be 1, got {dim.static_ratio!r}")
     V = float(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0))
     cols, sens = solve_gradients(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                                  dim.a_x, dim.phase_x, inplane_on=dim.inplane_on,
