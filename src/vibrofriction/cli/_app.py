@@ -204,7 +204,7 @@ def checked(namespace: argparse.Namespace, options: Sequence[Opt]) -> Args:
         if opt.name in given and opt.requires:
             if not any(_nonzero(given.get(r)) for r in opt.requires if r in known):
                 need = " or ".join(flag(r) for r in opt.requires if r in known)
-                raise ValueError(f"{opt.flag} needs {need} (a nonzero amplitude); "
+                raise ValueError(f"{opt.flag} needs {need} (nonzero); "
                                  "without it it would be ignored")
     return Args(given, options)
 

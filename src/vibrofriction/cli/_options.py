@@ -208,7 +208,26 @@ REQUIRES: dict[str, tuple[str, ...]] = {
     "k_y": ("du_y",),
     "c_y": ("du_y",),
     "inplane_on": ("a_x", "a_y", "du_x", "du_y"),
+    **dict.fromkeys(("rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld", "rs_law"),
+                    ("rs_a", "friction_a")),
+    **dict.fromkeys(("friction_b", "friction_d_c", "friction_v_ref", "friction_alpha_ld"),
+                    ("friction_a",)),
 }
+
+#: Rate-and-state friction of a physical set-up (``Physical(friction=RateAndState(...))``):
+#: its coefficients as they are, ``d_c`` in m and ``v_ref`` in m/s; ``--rs-law`` chooses the
+#: state's law in both kinds of system.
+FRICTION_SI = tuple(
+    Opt(f"friction_{name}", f"rate-and-state friction of a physical set-up: {words}",
+        metavar=FLOAT, range=rng, requires=REQUIRES.get(f"friction_{name}", ()),
+        group=GROUPS["physical"])
+    for name, words, rng in (
+        ("a", "the direct effect a (mu_star = --mu0; with --friction-d-c, --friction-v-ref)",
+         Range(0.0, strict=True)),
+        ("b", "the evolution effect b (default 0)", Range(0.0)),
+        ("d_c", "the critical slip distance d_c [m]", Range(0.0, strict=True)),
+        ("v_ref", "the reference slip velocity v_ref [m s-1]", Range(0.0, strict=True)),
+        ("alpha_ld", "the Linker-Dieterich coefficient alpha (default 0)", Range(0.0))))
 
 
 def model_options(kinds: dict[str, str], notes: dict[str, str] | None = None,

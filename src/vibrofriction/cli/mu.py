@@ -9,6 +9,7 @@ from ..schema import choice_names, parameter_names, parameters
 from ._app import Args, Command, exit_if_untrusted, json_number
 from ._options import (
     FLOAT,
+    FRICTION_SI,
     GROUPS,
     INITIAL,
     MAX_PERIODS,
@@ -20,7 +21,7 @@ from ._options import (
 )
 
 if TYPE_CHECKING:
-    from ..params import Dimensionless, Physical
+    from ..params import Dimensionless, Physical, RateAndState
     from ..solver import FrictionResult, FrictionResults
 
 #: The SI set-up's parameters every physical set-up needs (no default, no twin).
@@ -40,7 +41,7 @@ OPTIONS: tuple[Opt, ...] = (
         group=GROUPS["physical"]),
     Opt("bench", "physical set-up from a bench file (JSON, docs/bench.md), with --v0",
         kind="text", metavar="FILE", group=GROUPS["physical"]),
-    INITIAL, MAX_PERIODS, TOL_TRUSTED,
+    *FRICTION_SI, INITIAL, MAX_PERIODS, TOL_TRUSTED,
     Opt("as_json", "one JSON object per point: every field of the result (and, for a "
         "physical set-up, v0 in m/s, mu and the SI parameters)", kind="flag",
         flags=("--json",), negatable=False),
@@ -52,7 +53,7 @@ SCALED_ONLY = (*[p.name for p in parameters("dimensionless") if "physical" not i
 _SCALED_INPLANE = ("a_x", "a_y", "alpha_y", "zeta_y")
 _SI_INPLANE = ("du_x", "du_y", "k_y", "c_y")
 SI_ONLY = (*[n for n in parameter_names("physical") if n not in parameter_names(
-    "dimensionless")], "v0", "quality_factor", "bench")
+    "dimensionless")], "v0", "quality_factor", "bench", *(o.name for o in FRICTION_SI))
 
 
 def run(a: Args) -> None:
@@ -113,8 +114,8 @@ def _physical(a: Args) -> Physical:
             physical = physical.with_(**inplane)
         if pin_y:
             physical = physical.with_(**pin_y)
-        if a.has("mu_static"):
-            physical = physical.with_(mu_static=a["mu_static"])
+        if a.has("mu_static") or a.has("friction_a"):
+            physical = physical.with_(mu_static=a["mu_static"], friction=_friction(a))
         if a.has("profile_exponent") and a["profile_exponent"] != physical.profile_exponent:
             raise ValueError("--profile-exponent: a bench file's contact geometry and "
                              "contact_model give the profile (docs/bench.md)")
@@ -126,10 +127,24 @@ def _physical(a: Args) -> Physical:
         raise ValueError("give either --c-x or --quality-factor")
     system = Physical(**{n: a[n] for n in REQUIRED_SI}, c_x=a["c_x"], c_xc=a["c_xc"],
                       **inplane, **pin_y, profile_exponent=a["profile_exponent"],
-                      mu_static=a["mu_static"])
+                      mu_static=a["mu_static"], friction=_friction(a))
     if a.has("quality_factor"):
         system = system.with_damping(quality_factor=a["quality_factor"])
     return system
+
+
+def _friction(a: Args) -> RateAndState | None:
+    """The rate-and-state law of a physical set-up's flags (None: Coulomb friction)."""
+    from ..params import RateAndState
+
+    if not a.has("friction_a"):
+        return None
+    missing = [flag(n) for n in ("friction_d_c", "friction_v_ref") if not a.has(n)]
+    if missing:
+        raise ValueError("rate-and-state friction (--friction-a) needs " + ", ".join(missing))
+    return RateAndState(a=a["friction_a"], b=a["friction_b"] or 0.0, d_c=a["friction_d_c"],
+                        v_ref=a["friction_v_ref"], alpha_ld=a["friction_alpha_ld"] or 0.0,
+                        law=a["rs_law"])
 
 
 def _dimensionless(a: Args) -> Dimensionless:
