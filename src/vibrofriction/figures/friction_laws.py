@@ -142,7 +142,7 @@ def _draw_laws(curves: Mapping[str, Curve]):
     ax.text(vc * 1.08, 1 - a + 0.01, rf"Coulomb $V_c$ = {vc:.3g}", rotation=90, fontsize=6,
             color="0.35", va="bottom")
     ax.axhline(1 - a, color="0.6", lw=0.5, ls=":")
-    ax.set_ylabel(style.MU + r" ($\mu_0$: kinetic, $\mu_*$)")
+    ax.set_ylabel(style.MU)
     ax.set_title(r"(a) under the oscillation (solid); steady sliding without it (dashed)",
                  fontsize=7)
     ax2.axhline(1.0, color="0.6", lw=0.5, ls=":")
@@ -214,7 +214,8 @@ def friction_laws(quick: bool = False) -> Recipe:
             f"damping) under the normal oscillation $\\Delta F_N/F_{{N,0}}$ = "
             f"{p['amplitude']:g}, for four local laws: Coulomb ($\\mu_0$), a static "
             "coefficient 1.3 times the kinetic one, and rate-and-state friction (aging law, "
-            "$d_c$ = 1 inertial length, $v_{ref}$ = 1 inertial velocity) strengthening "
+            "$d_c$ = 1 inertial length, $v_{ref}$ = 1 inertial velocity; $\\mu_0 = \\mu_*$) "
+            "strengthening "
             "($a$ = 0.05, $b$ = 0.03) and weakening ($a$ = 0.03, $b$ = 0.05), $a$, $b$ over "
             "$\\mu_* = \\mu_0$. Dashed: each law's steady sliding without oscillation, "
             "$\\mu_{ss}(v_0)/\\mu_0$ (1 for both Coulomb laws). (b) The ratio of the two: "
@@ -234,7 +235,7 @@ BUREAU_LD = 0.2
 #: The rate-and-state law of the interface (SI: d_c in m, v_ref in m/s), mu_star = 0.5.
 _BUREAU_MU = 0.5
 _BUREAU_LAW = {"a": 0.01, "b": 0.014, "d_c": 0.5e-6, "v_ref": 10e-6}
-_BUREAU_F_RANGE = (1.0, 300.0)   # Hz, log-spaced
+_BUREAU_F_RANGE = (0.3, 300.0)   # Hz, log-spaced
 #: The three models of Fig. 21: label, colour, Linker-Dieterich alpha (None: Coulomb).
 _BUREAU_MODELS: dict[str, tuple[str, str, float | None]] = {
     "coulomb": (r"Coulomb, $\mu_0 = \mu_*$", "black", None),
@@ -265,7 +266,7 @@ def bureau_pin(model: str = "rs", frequency_hz: float = BUREAU_FREQUENCY_HZ,
 
 def _bureau_grids(quick: bool) -> tuple[NDArray, NDArray]:
     amplitudes = np.linspace(0.0, 0.9, 4 if quick else 19)
-    frequencies = np.geomspace(*_BUREAU_F_RANGE, 5 if quick else 25)
+    frequencies = np.geomspace(*_BUREAU_F_RANGE, 5 if quick else 31)
     return amplitudes, frequencies
 
 
@@ -289,6 +290,22 @@ def _bureau_steady() -> float:
     """``mu_ss(v0)/mu_star`` of Fig. 21's interface (the same in SI and in the model)."""
     law = RateAndState(**_BUREAU_LAW)
     return law.steady_mu(BUREAU_V0, mu_star=_BUREAU_MU) / _BUREAU_MU
+
+
+def _coulomb_frequency() -> float:
+    """The drive frequency (Hz) at which the Coulomb model's critical velocity ``v0*`` is ``v0``.
+
+    Below it the Coulomb contact slides throughout (``mu = mu0``); ``v0*`` grows with the
+    frequency (bisection in ``ln f``).
+    """
+    lo, hi = math.log(1e-3), math.log(1e3)
+    for _ in range(100):
+        mid = 0.5 * (lo + hi)
+        if bureau_pin("coulomb", math.exp(mid)).critical_velocity() < BUREAU_V0:
+            lo = mid
+        else:
+            hi = mid
+    return math.exp(0.5 * (lo + hi))
 
 
 def _ageing_frequency() -> float:
@@ -329,8 +346,8 @@ def _draw_bureau(curves: Mapping[str, Curve]):
     for ax in (ax_a, ax_f):
         ax.axhline(ss, color="#1f77b4", lw=0.6, ls=(0, (4, 2)), zorder=1)
         ax.axhline(1.0, color="0.5", lw=0.5, ls=":", zorder=1)
-    ax_a.plot([0, 0.9], [1.0, 0.1], color="0.6", lw=0.5, ls=":")
-    ax_a.text(0.62, 0.4, r"$1 - \Delta F_N/F_{N,0}$", fontsize=6, color="0.4", rotation=-28)
+    ax_a.plot([0, 0.9], [1.0, 0.1], color="0.45", lw=0.7, ls=":", zorder=5)
+    ax_f.axhline(1 - BUREAU_AMPLITUDE, color="0.45", lw=0.7, ls=":", zorder=5)
     ax_a.set_xlim(-0.02, 0.92)
     ax_a.set_xlabel(r"modulation amplitude $\Delta F_N/F_{N,0}$")
     ax_a.set_ylabel(r"mean friction $\langle F_x\rangle/(\mu_* \langle F_N\rangle)$")
@@ -340,12 +357,18 @@ def _draw_bureau(curves: Mapping[str, Curve]):
     fa = _ageing_frequency()
     ax_f.axvline(fa, color="0.5", lw=0.6, ls=(0, (2, 2)))
     ax_f.text(fa * 1.08, 0.32, r"$v_0/(2\pi d_c)$", fontsize=6, color="0.35", rotation=90)
+    fc = _coulomb_frequency()
+    ax_f.axvline(fc, color="black", lw=0.6, ls=(0, (1, 1.5)))
+    ax_f.text(fc * 1.08, 0.32, r"Coulomb $v_0^* = v_0$", fontsize=6, color="black",
+              rotation=90)
     ax_f.set_xlabel("drive frequency (Hz)")
     ax_f.set_title(rf"(b) at $\Delta F_N/F_{{N,0}} = {BUREAU_AMPLITUDE:g}$", fontsize=7)
     ax_a.set_ylim(0.0, 1.15)
     handles.append(Line2D([], [], color="#1f77b4", lw=0.6, ls=(0, (4, 2)),
                           label=r"rate-and-state steady sliding without modulation, "
                                 r"$\mu_{ss}(v_0)/\mu_*$"))
+    handles.append(Line2D([], [], color="0.45", lw=0.7, ls=":",
+                          label=r"Coulomb static value $1 - \Delta F_N/F_{N,0}$ (eq. 2)"))
     fig.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6,
                handlelength=2.0)
     fig.suptitle(rf"normal-load modulation at $v_0$ = {BUREAU_V0 * 1e6:g} $\mu$m/s: "
@@ -367,6 +390,18 @@ def _bureau_checks(curves: Mapping[str, Curve]) -> list[Check]:
         f"amplitude 0 at {BUREAU_FREQUENCY_HZ:g} Hz, the three models "
         f"({int(np.isfinite(mu).sum())} trusted of {len(zero)})", d, at,
         f"mu_ss(v0)/mu_star = {ss:.6f}; the Linker-Dieterich term needs n' != 0"))
+    static = [c for c in curves.values() if c.series.meta["model"] == "coulomb"
+              and c.series.meta["sweep"] == "amplitude" and c.series.amplitude > 0.0]
+    ratio = max(BUREAU_V0 / bureau_pin("coulomb", amplitude=c.series.amplitude)
+                .critical_velocity() for c in static)
+    d, at = max_deviation(np.array([float(c.trusted_mu[0]) for c in static]),
+                          np.array([1.0 - c.series.amplitude for c in static]),
+                          [f"amplitude {c.series.amplitude:g}" for c in static])
+    checks.append(Check(
+        "Coulomb model: the static value 1 - a (eq. 2) where v0 << v0*",
+        f"the amplitude sweep at {BUREAU_FREQUENCY_HZ:g} Hz, a > 0 ({len(static)} points), "
+        f"v0/v0* <= {ratio:.3g}", d, at,
+        "the deviation vanishes as v0/v0* -> 0"))
     return checks
 
 
@@ -437,16 +472,18 @@ WEAKENING_LAW: dict[str, Any] = {"rs_a": 0.03, "rs_b": 0.05, "rs_d_c": 1.0, "rs_
                                  "rs_law": "aging"}
 _MAP_V = (0.05, 5.0)         # inertial velocity, log-spaced
 _MAP_A = (0.0, 0.9)          # normal amplitude, linear (no loss of contact)
-#: The verdicts of the map: locked to the drive (or steady), self-excited, undecided.
+#: The verdicts of the map (:func:`_verdict`): locked to the drive (or steady sliding),
+#: self-excited, no periodic orbit and no settled mean, failed.
 _LOCKED = (Status.PERIODIC, Status.SLIDING)
-_VERDICT_COLORS = ("#a6d96a", "#fdae61", "0.75")
-_VERDICT_NAMES = ("locked to the drive (periodic)", "self-excited stick-slip (averaged)",
-                  "undecided (not converged, failed)")
+_VERDICTS = ("locked", "self-excited", "not settled", "failed")
+_VERDICT_COLORS = ("#a6d96a", "#fdae61", "#fee08b", "0.6")
+_VERDICT_NAMES = ("locked to the drive (periodic)", "self-excited, not locked (averaged)",
+                  "no periodic orbit, mean not settled (not converged)", "failed")
 
 
 def _map_grid(quick: bool) -> tuple[NDArray, NDArray]:
-    return (np.geomspace(*_MAP_V, 6 if quick else 25),
-            np.linspace(*_MAP_A, 4 if quick else 19))
+    return (np.geomspace(*_MAP_V, 5 if quick else 21),
+            np.linspace(*_MAP_A, 3 if quick else 13))
 
 
 def _map_series(quick: bool) -> tuple[Series, ...]:
@@ -457,9 +494,14 @@ def _map_series(quick: bool) -> tuple[Series, ...]:
 
 
 def _verdict(c: Curve) -> NDArray[np.int64]:
-    """0 locked (periodic or sliding), 1 self-excited (averaged), 2 undecided."""
+    """The index in :data:`_VERDICTS` of each point's status.
+
+    0 locked (periodic or continuous sliding), 1 self-excited (averaged), 2 not settled
+    (not converged), 3 failed (any other status).
+    """
     locked = np.isin(c.status, [s.code for s in _LOCKED])
-    return np.where(locked, 0, np.where(c.status == Status.AVERAGED.code, 1, 2))
+    return np.select([locked, c.status == Status.AVERAGED.code,
+                      c.status == Status.NOT_CONVERGED.code], [0, 1, 2], 3)
 
 
 def _stable_at_rest(V: NDArray) -> NDArray[np.bool_]:
@@ -480,7 +522,7 @@ def _onset_velocities() -> list[float]:
 def _map_fields(curves: Mapping[str, Curve], quick: bool
                 ) -> tuple[NDArray, NDArray, NDArray, NDArray, NDArray]:
     V, amplitudes = _map_grid(quick)
-    verdict = np.full((amplitudes.size, V.size), 2)
+    verdict = np.full((amplitudes.size, V.size), 3)
     mu = np.full((amplitudes.size, V.size), np.nan)
     for c in curves.values():
         i = c.series.meta["row"]
@@ -500,9 +542,10 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
     ax, ax2 = fig.subplots(1, 2, sharey=True)
     ev = cell_edges(V, log=True, name="V")
     ea = cell_edges(amplitudes, log=False, name="amplitude")
+    ea[0], ea[-1] = max(ea[0], 0.0), min(ea[-1], 1.0)  # no negative amplitude, no flight
     cmap = mcolors.ListedColormap(_VERDICT_COLORS)
-    ax.pcolormesh(ev, ea, verdict, cmap=cmap, norm=mcolors.BoundaryNorm([-0.5, 0.5, 1.5, 2.5],
-                                                                          3),
+    ax.pcolormesh(ev, ea, verdict, cmap=cmap,
+                  norm=mcolors.BoundaryNorm(np.arange(len(_VERDICTS) + 1) - 0.5, len(_VERDICTS)),
                   shading="flat", rasterized=True)
     m = ax2.pcolormesh(ev, ea, np.ma.masked_invalid(mu / ss[None, :]), shading="flat",
                        cmap="viridis", rasterized=True)
@@ -523,7 +566,7 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
         axis.set_ylim(ea[0], ea[-1])
         axis.set_xlabel(r"$V = v_0 m\omega/(\mu_0 F_{N,0})$")
     stable = _stable_at_rest(fine)
-    y0 = ea[0] - 0.0
+    y0 = ea[0]
     ax.scatter(fine[stable], np.full(stable.sum(), y0), marker="s", s=4, color="#1a9641",
                clip_on=False, zorder=5)
     ax.scatter(fine[~stable], np.full((~stable).sum(), y0), marker="s", s=4, color="#d7191c",
@@ -558,24 +601,30 @@ def _map_checks(curves: Mapping[str, Curve], quick: bool) -> tuple[list[Check], 
     if amplitudes[0] != 0.0:
         return checks, ""
     stable = _stable_at_rest(V)
-    expected = np.where(stable, 0, 1)
-    wrong = [f"V = {v:.3g}" for v, got, want in zip(V, verdict[0], expected, strict=True)
-             if got != want]
+    row = verdict[0]
+    # a claim against the theory: locked where sliding is unstable, or not locked (averaged,
+    # not settled) where it is stable; a failed point claims nothing
+    wrong = (stable & ((row == 1) | (row == 2))) | (~stable & (row == 0))
+    failed = row == 3
     checks.append(Check(
-        "amplitude 0: locked (steady sliding) where theory.sliding_is_stable, self-excited "
-        "(averaged) where not: the number of velocities where the solver's verdict differs",
-        f"the {V.size} velocities of the map's first row (amplitude 0)", float(len(wrong)),
-        ", ".join(wrong) or "nowhere",
-        "onset of instability at V = " + ", ".join(f"{v:.3g}" for v in _onset_velocities())))
+        "amplitude 0: steady sliding (locked) where theory.sliding_is_stable, not locked "
+        "(averaged or not settled) where not: the number of velocities where the solver's "
+        "verdict contradicts the theory",
+        f"the {V.size} velocities of the map's first row (amplitude 0)", float(wrong.sum()),
+        ", ".join(f"V = {v:.3g} ({_VERDICTS[k]})" for v, k in zip(V[wrong], row[wrong],
+                                                                   strict=True)) or "nowhere",
+        "onset of instability at V = " + ", ".join(f"{v:.3g}" for v in _onset_velocities())
+        + (f"; failed at V = {', '.join(f'{v:.3g}' for v in V[failed])}" if failed.any()
+           else "")))
     keep = stable & np.isfinite(mu[0])
     d, at = max_deviation(mu[0][keep], ss[keep], [f"V = {v:.3g}" for v in V[keep]])
     checks.append(Check(
         "amplitude 0, stable steady sliding: mu = mu_ss(V)/mu_star",
         f"the {int(keep.sum())} trusted points of the first row where sliding is stable",
         d, at))
-    n = {k: int(np.sum(verdict[1:] == k)) for k in range(3)}
-    notes = (f"Under the oscillation (amplitude > 0): {n[0]} points locked to the drive, "
-             f"{n[1]} self-excited, {n[2]} undecided.")
+    n = [int(np.sum(verdict[1:] == k)) for k in range(len(_VERDICTS))]
+    notes = ("Under the oscillation (amplitude > 0): " + ", ".join(
+        f"{k} {name}" for k, name in zip(n, _VERDICTS, strict=True)) + " points.")
     return checks, notes
 
 
@@ -589,7 +638,9 @@ def weakening_map(quick: bool = False) -> Recipe:
         f"grid: v_inertial in {_MAP_V} ({V.size} log points) x amplitude in {_MAP_A} "
         f"({amplitudes.size} points); initial state: steady sliding",
         "verdict: locked = status periodic (or continuous sliding); self-excited = status "
-        "averaged (no periodic orbit locked to the drive); undecided = not converged or failed",
+        "averaged (no periodic orbit locked to the drive, the mean settled); not settled = "
+        "status not converged (no periodic orbit within max_periods, the mean not settled); "
+        "failed = any other status",
         "stable_at_rest = steady sliding without oscillation linearly stable "
         "(theory.sliding_is_stable); steady_mu_ratio = mu_ss(v0)/mu_star")
 
@@ -598,7 +649,7 @@ def weakening_map(quick: bool = False) -> Recipe:
         checks, notes = _map_checks(curves, quick)
 
         def extra(c: Curve) -> dict[str, NDArray]:
-            verdict = np.array(("locked", "self-excited", "undecided"), dtype=object)
+            verdict = np.array(_VERDICTS, dtype=object)
             return {**_law_columns(c),
                     "verdict": verdict[_verdict(c)],
                     "stable_at_rest": _stable_at_rest(c.v_inertial).astype(int),
@@ -622,9 +673,11 @@ def weakening_map(quick: bool = False) -> Recipe:
             "$\\Delta F_N/F_{N,0}$ (no loss of contact), started from steady sliding. (a) "
             "The solver's verdict: green, the response locks to the drive (status "
             "periodic); orange, self-excited stick-slip not locked to it (status averaged); "
-            "gray, undecided. Squares along amplitude 0: the linear stability of steady "
-            "sliding without oscillation (`theory.sliding_is_stable`: the characteristic "
-            "quartic with the contact spring in series, Hurwitz), green stable, red "
+            "yellow, no periodic orbit and a mean not settled within the solver's period "
+            "bound (status not converged); gray, failed. Squares along amplitude 0: the "
+            "linear stability of steady sliding without oscillation "
+            "(`theory.sliding_is_stable`: the characteristic quartic with the contact "
+            "spring in series, Hurwitz), green stable, red "
             f"unstable; purple vertical: its onset at $V$ = {onsets}. Black dashed: the "
             "Coulomb critical velocity $V_c(a)$ (eq. 12), for reference. (b) The mean "
             "friction over steady sliding, $\\mu_{macro}/\\mu_{ss}(v_0)$, where trusted."),
