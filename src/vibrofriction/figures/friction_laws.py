@@ -566,11 +566,11 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
         axis.set_ylim(ea[0], ea[-1])
         axis.set_xlabel(r"$V = v_0 m\omega/(\mu_0 F_{N,0})$")
     stable = _stable_at_rest(fine)
-    y0 = ea[0]
-    ax.scatter(fine[stable], np.full(stable.sum(), y0), marker="s", s=4, color="#1a9641",
-               clip_on=False, zorder=5)
-    ax.scatter(fine[~stable], np.full((~stable).sum(), y0), marker="s", s=4, color="#d7191c",
-               clip_on=False, zorder=5)
+    # the theory's verdict at amplitude 0: a strip just below the axis, under the first row
+    strip = ax.get_xaxis_transform()
+    for where, color in ((stable, "#1a9641"), (~stable, "#d7191c")):
+        ax.scatter(fine[where], np.full(where.sum(), -0.025), marker="s", s=3, color=color,
+                   transform=strip, clip_on=False, zorder=5)
     ax.set_ylabel(r"normal amplitude $\Delta F_N/F_{N,0}$")
     ax.set_title("(a) the response: locked to the drive or self-excited", fontsize=7)
     ax2.set_title(r"(b) mean friction over steady sliding, $\mu_{macro}/\mu_{ss}$", fontsize=7)
@@ -580,9 +580,9 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
     handles += [Line2D([], [], color="#7b3294", lw=0.9,
                        label="onset of instability of steady sliding without oscillation"),
                 Line2D([], [], color="#1a9641", marker="s", ls="none", ms=2.5,
-                       label="steady sliding stable (amplitude 0, theory)"),
+                       label="steady sliding stable (amplitude 0, theory; below the axis)"),
                 Line2D([], [], color="#d7191c", marker="s", ls="none", ms=2.5,
-                       label="steady sliding unstable (amplitude 0, theory)"),
+                       label="steady sliding unstable (amplitude 0, theory; below the axis)"),
                 Line2D([], [], color="black", lw=0.7, ls=(0, (3, 1.5)),
                        label=r"Coulomb $V_c(a)$: continuous sliding to its right")]
     fig.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6,
@@ -674,12 +674,14 @@ def weakening_map(quick: bool = False) -> Recipe:
             "The solver's verdict: green, the response locks to the drive (status "
             "periodic); orange, self-excited stick-slip not locked to it (status averaged); "
             "yellow, no periodic orbit and a mean not settled within the solver's period "
-            "bound (status not converged); gray, failed. Squares along amplitude 0: the "
+            "bound (status not converged); gray, failed. Squares below the axis: at "
+            "amplitude 0, the "
             "linear stability of steady sliding without oscillation "
             "(`theory.sliding_is_stable`: the characteristic quartic with the contact "
             "spring in series, Hurwitz), green stable, red "
             f"unstable; purple vertical: its onset at $V$ = {onsets}. Black dashed: the "
             "Coulomb critical velocity $V_c(a)$ (eq. 12), for reference. (b) The mean "
-            "friction over steady sliding, $\\mu_{macro}/\\mu_{ss}(v_0)$, where trusted."),
+            "friction over steady sliding, $\\mu_{macro}/\\mu_{ss}(v_0)$, where trusted "
+            "(white: not trusted)."),
         series=_map_series(quick), render=render, parameters=params)
 
