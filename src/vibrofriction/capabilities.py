@@ -2,9 +2,10 @@
 
 Four solvers stand behind :func:`~vibrofriction.solver.solve_points`: the 1-D
 event-driven solver (``event``), the 2-D solver (``plane``), the MDR solver of curved
-tips (``mdr``) and the rate-and-state solver of a flat punch (``rate_state``).  Each one's :class:`Capabilities` say which points it is chosen for, the
-parameters it uses, the points it refuses (:class:`Limit`), the initial states, settings
-(with its own defaults), outputs, sensitivities and histories it covers.  The solvers
+tips (``mdr``) and the rate-and-state solver of a flat punch (``rate_state``).  Each
+one's :class:`Capabilities` say which points it is chosen for, the parameters it uses, the
+points it refuses (:class:`Limit`), the initial states, settings (with its own defaults),
+outputs, sensitivities and histories it covers.  The solvers
 (:mod:`vibrofriction.solver.methods`) check points against them, and the refusal
 messages, the command line's help, the explorer's disabled controls and the table "what
 each solver covers" (docs/solver.md, :func:`capability_table`) are made from them.  This

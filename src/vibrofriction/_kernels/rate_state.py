@@ -181,7 +181,8 @@ def _slip_rate(P, m, L):
 @jit
 def local_mu(P, w, L):
     """The local coefficient ``a asinh(w'/(2 v_ref) e^Q)`` at the slip rate ``w'``, without
-    overflow."""
+    overflow.
+    """
     if w == 0.0:
         return 0.0
     a = P[P_RA]
@@ -194,7 +195,8 @@ def local_mu(P, w, L):
 def _touchdown_mu(P, tau, v, L):
     """The local coefficient on the slow manifold at the re-formed contact's tiny load:
     ``m' = 0`` to leading order, ``k (x' - w'(m)) = m n'`` (Newton's method from the
-    coefficient at the slip rate ``x'``; the left side decreases in ``m``)."""
+    coefficient at the slip rate ``x'``; the left side decreases in ``m``).
+    """
     k = P[P_K]
     nd = -P[P_A] * math.sin(tau)
     m = local_mu(P, v, L)
@@ -455,7 +457,8 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count):
 @jit
 def _cuts(P):
     """``(end of contact, start of the next contact)`` within the period: the phases
-    where ``n`` is ``CUT_DELTA`` before lift-off and after touch-down (``A >= 1``)."""
+    where ``n`` is ``CUT_DELTA`` before lift-off and after touch-down (``A >= 1``).
+    """
     A = P[P_A]
     if A < 1.0:
         return TWO_PI, TWO_PI
@@ -501,7 +504,8 @@ def contact_state(P, z):
 @jit
 def sliding_start(P, offset):
     """Steady sliding at ``V`` before the oscillation: ``theta = d_c/V``, ``f = mu_ss(V)``,
-    ``e = f/k``, ``x' = V``, ``y = -f/alpha`` (laboratory frame, then the kernels')."""
+    ``e = f/k``, ``x' = V``, ``y = -f/alpha`` (laboratory frame, then the kernels').
+    """
     V = P[P_V]
     f = steady_mu(V, P[P_RA], P[P_RB], P[P_DC], P[P_VREF])
     z = np.zeros(NZ)
@@ -515,7 +519,8 @@ def sliding_start(P, offset):
 @jit
 def _weights(P, z):
     """Weights of the section distance (forces and velocities, as the event solver's) and
-    its relative scale."""
+    its relative scale.
+    """
     wv = np.empty(NM)
     wv[Z_Y] = P[P_ALPHA]
     wv[Z_V] = 1.0
@@ -543,10 +548,14 @@ def _map_mean(P, z, rtol, hbox, work, count):
 @jit
 def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, D, gmu):
     """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
-    gradient ``gmu`` of the period's mean, by forward differences; returns ``ok``."""
+    gradient ``gmu`` of the period's mean, by forward differences; returns ``ok``.
+    """
     zp = np.empty(NZ)
+    wv, s = _weights(P, z0)
     for c in range(NM):
-        dj = 1e-6 * (1.0 + abs(z0[c]))
+        # sqrt(rtol) of the state's scale (in force units): the integration's noise,
+        # ~ rtol, makes an error ~ sqrt(rtol) in D, as the truncation of the difference
+        dj = math.sqrt(rtol) * s / wv[c]
         zp[:] = z0
         zp[c] += dj
         hb = np.array([hbox[0]])
@@ -562,7 +571,8 @@ def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, D, gmu):
 @jit
 def _solve(m, r):
     """Solve ``m x = r`` in place (``x`` into ``r``) by Gaussian elimination with partial
-    pivoting; False where ``m`` is singular."""
+    pivoting; False where ``m`` is singular.
+    """
     nd = r.shape[0]
     for c in range(nd):
         p = c
@@ -706,7 +716,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 zr = zn.copy()
                 ok = _newton(P, zr, rtol / REFINE, hn, work, count, D, gmu, True, res2)
                 periods += res2[3]
-                if ok:
+                if ok and res2[2] < NEUTRAL:  # attracting by both Jacobians
                     z[:] = zr
                     out_f[O_MU] = res2[0]
                     err = ERROR_SAFETY * (abs(res2[0] - res[0]) + res2[1])

@@ -193,7 +193,8 @@ FIELDS: tuple[Field, ...] = (
           "touchdown)", column=("int", 3), dtype="i8"),
     Field("method", "str", "1", "the solver that computed the result (METHOD_NAMES: "
           "'event' the 1-D event-driven solver, 'plane' the 2-D solver, 'mdr' the curved "
-          "tip's solver, 'rate_state' the rate-and-state solver; the kernels' rows hold its index)", column=("int", 6), dtype="i1"),
+          "tip's solver, 'rate_state' the rate-and-state solver; the kernels' rows hold its "
+          "index)", column=("int", 6), dtype="i1"),
     Field("work", "float", "drive periods", "drive periods integrated in all, Newton's period "
           "maps, verification and averaging included", column=("float", 15), dtype="f8"),
     _fraction(ContactState.STICK, 2),

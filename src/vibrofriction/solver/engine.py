@@ -248,6 +248,7 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
     for method, idx in parts:  # every refusal before any work
         if idx.size:
             method.capabilities.check(points.take(idx), kind, settings)
+    sliding = sliding_mu_ratio(points)  # of the given velocities, before the mirror
     backward = points["v_inertial"] < 0.0
     if np.any(backward):  # the mirror x -> -x
         points = points.with_column("v_inertial", np.abs(points["v_inertial"]))
@@ -267,7 +268,7 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
                                                   np.ascontiguousarray(init[idx]), settings)
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
-    out_f[:, _O_SLIDING] = sliding_mu_ratio(points)
+    out_f[:, _O_SLIDING] = sliding
     out = {k: out_f[:, j].reshape(points.shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(points.shape) for j, k in enumerate(INT_COLUMNS)})
     out["trusted"] = settings.trusted(out["status"], out["error"])

@@ -1,7 +1,7 @@
 """The solvers behind :func:`~vibrofriction.solver.solve_points`, one module each.
 
-Each method (:mod:`.event`, :mod:`.plane`, :mod:`.mdr`, :mod:`.rate_state`) implements the protocol of
-:mod:`.base`: its :class:`~vibrofriction.capabilities.Capabilities` (declared in
+Each method (:mod:`.event`, :mod:`.plane`, :mod:`.mdr`, :mod:`.rate_state`) implements the
+protocol of :mod:`.base`: its :class:`~vibrofriction.capabilities.Capabilities` (declared in
 :mod:`vibrofriction.capabilities`) and ``solve``.  :func:`choose` is
 the one rule that picks the method of a point; :data:`METHODS` lists them by name, in the
 order of :data:`vibrofriction.schema.METHOD_NAMES`.  A new solver is one new module here,

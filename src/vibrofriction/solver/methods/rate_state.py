@@ -50,8 +50,10 @@ class RateStateMethod:
 
 
 def rate_state_arguments(settings: SolverSettings) -> tuple[float, int, float]:
-    """``(rtol, max_periods, tol_mean)`` of the rate-and-state kernels (``settings`` resolved
-    with the method's defaults; a setting it does not honour is refused)."""
+    """``(rtol, max_periods, tol_mean)`` of the rate-and-state kernels.
+
+    ``settings`` resolved with the method's defaults (a setting it does not honour is refused).
+    """
     RATE_STATE.capabilities.check_settings(settings)
     r = settings.resolved(RATE_STATE.capabilities.settings)
     return float(r["rtol"]), int(r["max_periods"]), float(r["tol_mean"])
