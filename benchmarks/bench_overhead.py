@@ -116,7 +116,7 @@ def measure() -> dict[str, dict[str, float]]:
         of = np.empty(len(vf.solver.FLOAT_COLUMNS))
         oi = np.empty(len(vf.solver.INT_COLUMNS), dtype=np.int64)
         args = (system.alpha, system.beta, system.amplitude, V, system.zeta, system.eta_c,
-                system.a_x, system.phase_x, True, 0, 0.0, 0.0, 0.0, 0,
+                system.a_x, system.phase_x, True, system.static_ratio, 0, 0.0, 0.0, 0.0, 0,
                 *event_arguments(DEFAULT_SETTINGS), of, oi)
         stub_one, stub_many = _stub(real_one), _stub(real_many)
         t = _interleaved_medians({

@@ -67,7 +67,7 @@ def worker() -> None:
     starts = []
     for _, alpha, beta, a, V, zeta, eta in json.loads(sys.stdin.readline()):
         M = make_model(alpha, beta, a, V, zeta, eta, 0.0, 0.0, False)
-        y, xd, e, ph, _ = initial_point(0, alpha, beta, a, V, zeta, eta, 0.0, 0.0, False)
+        y, xd, e, ph, _ = initial_point(0, alpha, beta, a, V, zeta, eta, 0.0, 0.0, False, 1.0)
         y, xd, e, ph, _, _, _ = period_map(y, xd, e, ph, WARM, M, MAX_EVENTS)
         starts.append((M, y, xd, e, ph))
     J = np.zeros((3, 3))

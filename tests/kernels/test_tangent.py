@@ -175,7 +175,7 @@ def _rel(a, b):
 def _history(pt, zeta, eta, z3, ph, p):
     """The segments of ``p`` periods from the section state (``run_periods``)."""
     seg = np.zeros((50_000, N_SEG_COLUMNS))
-    n = run_periods(0.0, z3[0], z3[1], z3[2], math.nan, ph, *_args(pt, zeta, eta), p,
+    n = run_periods(0.0, z3[0], z3[1], z3[2], math.nan, ph, *_args(pt, zeta, eta), 1.0, p,
                     seg.shape[0], seg)
     assert n > 0
     return seg[:n]

@@ -319,6 +319,23 @@ def test_static_limit_without_oscillation(beta, zeta):
     assert gaps[1] <= 0.2 * gaps[0] + 1e-9
 
 
+def test_static_limit_refuses_what_it_does_not_cover():
+    with pytest.raises(ValueError, match="zeta"):
+        theory.static_kinetic_static_limit(0.5, 3.0, 0.0, 1.4, 0.0)
+    with pytest.raises(ValueError, match="amplitude"):
+        theory.static_kinetic_static_limit(0.5, 3.0, 0.5, 1.4, 0.1)
+    with pytest.raises(ValueError, match="amplitude"):
+        theory.static_kinetic_static_limit(0.5, math.inf, 1.5, 1.4, 0.1)
+    with pytest.raises(ValueError, match="static_ratio"):
+        theory.static_kinetic_static_limit(0.5, math.inf, 0.5, 0.9, 0.1)
+    # damped a = 0, rigid: 1 + (s_r - 1)(1 - q)/2 in closed form
+    q = math.exp(-math.pi * 0.05 / math.sqrt(1 - 0.05**2))
+    assert theory.static_kinetic_static_limit(0.5, math.inf, 0.0, 1.4, 0.05) == \
+        pytest.approx(1 + 0.4 * (1 - q) / 2, abs=1e-9)
+    # an over-damped pin: the first slip never ends, sliding
+    assert theory.static_kinetic_static_limit(0.5, math.inf, 0.0, 1.4, 1.5) == 1.0
+
+
 @pytest.mark.parametrize("alpha, a, sr, zeta", [(0.5, 0.5, 1.4, 0.05), (0.5, 0.5, 1.4, 0.0),
                                                 (2.0, 0.3, 2.5, 0.1), (0.05, 0.7, 1.3, 0.02),
                                                 (0.5, 0.5, 1.0, 0.05)])

@@ -156,6 +156,10 @@ def _limit_scalar(alpha: float, beta: float, a: float, sr: float, zeta: float) -
     if not rigid and a > 0.0:
         raise ValueError("static_kinetic_static_limit of a finite contact is derived at "
                          f"amplitude = 0 only, got amplitude = {a:g} (use beta = inf)")
+    if not rigid and zeta == 0.0 and sr > 1.0:
+        raise ValueError("static_kinetic_static_limit of a finite contact needs pin damping "
+                         "(zeta > 0, got 0): undamped, the stuck body's oscillation never dies "
+                         "and the cycle depends on its phase")
     if a == 0.0 and zeta >= 1.0 and sr > 1.0:
         return 1.0  # the first slip never ends: the body slides on at V, f = n
     slip = _slip_scalar(alpha, a, sr, zeta)
@@ -165,9 +169,7 @@ def _limit_scalar(alpha: float, beta: float, a: float, sr: float, zeta: float) -
     if not rigid:
         # the contact spring holds f = n = 1 after the slip, the pin's spring F_e: the stuck
         # body settles (damped) where both are equal, f_eq = (alpha 1 + k F_e)/beta, its
-        # force swinging between 1 and 2 f_eq - 1 on the way (undamped: for ever, and the
-        # next slip starts at the peak s_r with F = 1, a slip of zero length; the mean of
-        # the two alternating stick phases is the same, see docs/friction_laws.md)
+        # force swinging between 1 and 2 f_eq - 1 on the way
         k = beta - alpha
         f_stick = (alpha + k * slip.force_after) / beta
         if 2.0 * f_stick - 1.0 < -sr:
@@ -194,9 +196,11 @@ def static_kinetic_static_limit(alpha: ArrayLike, beta: ArrayLike, amplitude: Ar
     :func:`static_kinetic_slip`.  At ``a = 0`` undamped this is the saw-tooth between
     ``2 - s_r`` and ``s_r``, mean 1 for every ``s_r`` (exactly 1 at every ``V``, the slip's
     force being the kinetic 1 too); damped, ``1 + (s_r - 1)(1 - q)/2``.  Finite elastic
-    contact at ``a = 0``: after the slip the contact spring holds ``f = 1`` and the pin
-    ``F_e``; the stuck body settles at ``f_s = (alpha + k F_e)/beta``, so undamped
-    ``mu -> 1 + (s_r - 1) alpha/(2 beta)``.  At ``s_r = 1`` it is eq. (2), ``1 - a``.
+    contact at ``a = 0`` with pin damping: after the slip the contact spring holds ``f = 1``
+    and the pin ``F_e``; the stuck body settles (its oscillation at ``sqrt(beta)`` dies in
+    the long stick) at ``f_s = (alpha + k F_e)/beta``.  Undamped it never settles and the
+    next slip starts at a peak of its oscillation: not covered (the limits ``V -> 0`` and
+    ``zeta -> 0`` do not commute there).  At ``s_r = 1`` it is eq. (2), ``1 - a``.
     Pin damping ``zeta >= 1`` at ``a = 0``: the first slip never ends, 1.  nan where the
     cycle is not this one (the body slips back after a slip, or a stuck body's swing
     reaches ``-s_r``).
@@ -220,7 +224,8 @@ def static_kinetic_static_limit(alpha: ArrayLike, beta: ArrayLike, amplitude: Ar
     Raises
     ------
     ValueError
-        A parameter out of its range, or a finite contact with ``a > 0``.
+        A parameter out of its range, or a finite contact with ``a > 0`` or without pin
+        damping.
     """
     v = {k: valid_array(k, x, NO_JUMPING if k == "amplitude" else None)
          for k, x in (("alpha", alpha), ("beta", beta), ("amplitude", amplitude),
