@@ -493,8 +493,10 @@ def _report_header(*, quick: bool, seconds: float, workers: int, points: int) ->
         f"{points} steady states, {seconds:.1f} s wall time on {workers} worker "
         f"process(es), {os.cpu_count()} CPU(s), Python {platform.python_version()}.",
         "",
-        "Every curve is computed by the exact event-driven solver from the initial state "
-        "'steady sliding before the oscillation is switched on' (docs/model.md). Data behind "
+        "Every curve is computed by the solver that covers its points (the exact "
+        "event-driven solver; the MDR, 2-D and rate-and-state solvers where a figure needs "
+        "them: docs/solver.md) from the initial state 'steady sliding before the oscillation "
+        "is switched on' (docs/model.md). Data behind "
         "each figure are in `data/` (CSV, parameters in the `#` header). Points whose "
         "steady state did not converge (or whose error estimate exceeds 1e-5) are drawn as "
         "open circles and are not joined into the curves. Corrections to the paper are "
