@@ -162,9 +162,13 @@ def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
     return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(*columns: np.ndarray) -> tuple[int, dict[str, np.ndarray]]:
-    """``(pid, solve_points_on(*columns))``: the pid says which process did the work."""
-    return os.getpid(), solve_points_on(*columns)
+def _solve_chunk(settings: SolverSettings | None, *columns: np.ndarray
+                 ) -> tuple[int, dict[str, np.ndarray]]:
+    """``(pid, solve_points_on(*columns, settings=settings))``: the pid says who worked.
+
+    ``settings`` are the recipe's (None: the defaults).
+    """
+    return os.getpid(), solve_points_on(*columns, settings=settings)
 
 
 @dataclass(frozen=True)
@@ -230,6 +234,7 @@ class _Batch:
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
+    settings: SolverSettings | None = None  # the recipe's
 
     @classmethod
     def of(cls, index: int, recipe: Recipe, chunk: int) -> _Batch:
@@ -237,7 +242,7 @@ class _Batch:
         n = columns[0].size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, columns, chunks, {}, len(chunks))
+        return cls(index, columns, chunks, {}, len(chunks), recipe.settings)
 
     @property
     def size(self) -> int:
@@ -287,7 +292,7 @@ class _Schedule:
             return _render, args, self._rendered
         if self.compute:
             b, idx = self.compute.popleft()
-            args = tuple(c[idx] for c in b.columns)
+            args = (b.settings, *(c[idx] for c in b.columns))
             return _solve_chunk, args, functools.partial(self._solved, b, idx)
         return None
 

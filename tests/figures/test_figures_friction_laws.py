@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
-from vibrofriction.figures import all_recipes, friction_laws, style
+from vibrofriction.figures import Recipe, all_recipes, friction_laws, style
 from vibrofriction.figures.recipe import solve_recipes
 from vibrofriction.figures.series import (
     CHOICE_ARGS,
@@ -258,3 +258,22 @@ def test_fig22_amplitude_zero_agrees_with_the_stability_of_steady_sliding(render
     row = curves["a=0"]
     stable = friction_laws._stable_at_rest(row.v_inertial)
     assert stable.any() and (~stable).any()  # both sides of the onset are on the grid
+
+
+def test_a_recipes_own_settings_reach_the_solver() -> None:
+    """solve_recipes solves a recipe with its own settings, the others with the run's."""
+    seen: list = []
+
+    def runner(*columns, settings=None):
+        seen.append((len(columns[0]), settings))
+        return solve_points_on(*columns, settings=settings)
+
+    point = (Series("p", 0.5, 2.0, 0.5, [0.1], np.nan),)
+    strict = vf.SolverSettings(tol_trusted=1e-300)
+    recipes = [Recipe("own", "", "", point, lambda c: None, settings=strict),
+               Recipe("run", "", "", point, lambda c: None)]
+    own, run = solve_recipes(recipes, runner=runner)
+    assert sorted(seen, key=lambda x: x[1] is None) == [(1, strict), (1, None)]
+    assert not own["p"].trusted[0] and run["p"].trusted[0]  # the same value, two verdicts
+    assert own["p"].mu_ratio[0] == run["p"].mu_ratio[0]
+    assert friction_laws.weakening_map(True).settings is friction_laws.WEAKENING_SETTINGS

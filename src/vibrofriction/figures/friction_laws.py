@@ -28,6 +28,7 @@ from numpy.typing import NDArray
 from .. import theory
 from ..params import Dimensionless, Physical, RateAndState
 from ..schema import STATUS_BY_CODE, Status
+from ..solver import SolverSettings
 from . import style
 from .edges import cell_edges
 from .recipe import Check, Recipe, Rendered, curve_table, max_deviation
@@ -42,6 +43,7 @@ __all__ = [
     "LAWS_PIN",
     "WEAKENING_LAW",
     "WEAKENING_PIN",
+    "WEAKENING_SETTINGS",
     "bureau_pin",
     "friction_laws",
     "load_modulation",
@@ -472,6 +474,10 @@ WEAKENING_LAW: dict[str, Any] = {"rs_a": 0.03, "rs_b": 0.05, "rs_d_c": 1.0, "rs_
                                  "rs_law": "aging"}
 _MAP_V = (0.05, 5.0)         # inertial velocity, log-spaced
 _MAP_A = (0.0, 0.9)          # normal amplitude, linear (no loss of contact)
+#: Fig. 22's settings: a self-excited stick-slip's running mean settles as the inverse of
+#: the periods averaged, so its mean is asked to 1e-4 (and trusted at that error) within the
+#: solver's period bound; a locked orbit's error is that of Newton's method either way.
+WEAKENING_SETTINGS = SolverSettings(tol_mean=1e-4, tol_trusted=1e-4)
 #: The verdicts of the map (:func:`_verdict`): locked to the drive (or steady sliding),
 #: self-excited, no periodic orbit and no settled mean, failed.
 _LOCKED = (Status.PERIODIC, Status.SLIDING)
@@ -637,6 +643,9 @@ def weakening_map(quick: bool = False) -> Recipe:
         + ", ".join(f"{k} = {v!r}" for k, v in law.items()) + " (model units)",
         f"grid: v_inertial in {_MAP_V} ({V.size} log points) x amplitude in {_MAP_A} "
         f"({amplitudes.size} points); initial state: steady sliding",
+        f"solver settings: tol_mean = {WEAKENING_SETTINGS.tol_mean:g} (a self-excited "
+        f"motion's mean), tol_trusted = {WEAKENING_SETTINGS.tol_trusted:g}; the others the "
+        "rate-and-state solver's defaults",
         "verdict: locked = status periodic (or continuous sliding); self-excited = status "
         "averaged (no periodic orbit locked to the drive, the mean settled); not settled = "
         "status not converged (no periodic orbit within max_periods, the mean not settled); "
@@ -682,6 +691,9 @@ def weakening_map(quick: bool = False) -> Recipe:
             f"unstable; purple vertical: its onset at $V$ = {onsets}. Black dashed: the "
             "Coulomb critical velocity $V_c(a)$ (eq. 12), for reference. (b) The mean "
             "friction over steady sliding, $\\mu_{macro}/\\mu_{ss}(v_0)$, where trusted "
-            "(white: not trusted)."),
-        series=_map_series(quick), render=render, parameters=params)
+            "(white: not trusted). A self-excited motion's mean is asked to 1e-4 "
+            "(`tol_mean`) and trusted at that error (`tol_trusted`), since its running mean "
+            "settles only as the inverse of the periods averaged."),
+        series=_map_series(quick), render=render, parameters=params,
+        settings=WEAKENING_SETTINGS)
 
