@@ -1,37 +1,43 @@
 r"""Rate-and-state friction on the 1-D flat punch: a Rosenbrock integrator and the steady state.
 
 Scaled variables as everywhere (docs/model.md): ``tau = omega t``, forces in ``mu_star F_N0``,
-``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (``inf``: rigid contact),
-``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane forcing
-(:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f + h``; the
-massless contact point slips at the rate the law gives by inversion (docs/friction_laws.md)::
+``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (finite: a rigid contact is
+refused by the method), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
+forcing (:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f +
+h`` with ``f = k e``; the massless contact point slips at the rate the law gives by
+inversion (docs/friction_laws.md)::
 
-    w' = 2 v_ref sinh(f/(a n)) exp(-Q),  Q = (1 + b ln(theta v_ref/d_c))/a,
+    w' = 2 v_ref sinh(m/a) exp(-Q),  Q = (1 + b ln(theta v_ref/d_c))/a,  m = f/n.
 
-``f = k e``, ``e' = x' - w'`` (finite contact) or ``w' = x'``, ``f = n a asinh(x' e^Q/(2 v_ref))``
-(rigid contact).  The state is integrated as ``L = ln theta`` (theta spans decades): aging
-``L' = e^-L - |w'|/d_c``, slip ``L' = -g (ln g + L)`` with ``g = |w'|/d_c``, plus the
-Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight (``n <= 0``, ``A > 1``) ``f = 0``,
-aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms unloaded (``e = 0``).
+The contact's variable is the local coefficient ``m = k e/n`` rather than ``e`` (it stays
+finite as ``n -> 0``): ``m' = (k (x' - w') - m n')/n``.  The state is integrated as ``L = ln
+theta`` (theta spans decades): aging ``L' = e^-L - |w'|/d_c``, slip ``L' = -g (ln g + L)``
+with ``g = |w'|/d_c``, plus the Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight
+(``A > 1``) ``f = 0``, aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms
+unloaded (``e = n m/k = 0``) on the slow manifold of ``m`` (:func:`_touchdown_mu`).
 
-The state vector is ``z = (y, x', e, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
+The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
 friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
 reset at each section, integrated by the same steps.  Integrator: RODAS4 (Hairer & Wanner,
 *Solving ODEs II*, IV.7; 6 stages, order 4 with an embedded order 3, L-stable, stiffly
 accurate), the analytic Jacobian and time derivative, step control on
-``max |err_i|/(rtol (s_i + |z_i|))``.  Lift-off and touch-down are at the closed-form
-phases ``cos tau = -1/A``; the contact segments end (and start) ``CUT_DELTA`` in normal
-force short of them, where ``f <= n`` is below round-off of the averages.
+``max |err_i|/(rtol (1 + |z_i|))``.  Lift-off and touch-down are at the closed-form
+phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
+where ``|f| = n |m|`` is below round-off of the averages.
 
-The steady state (:func:`rs_steady_state`): a few periods from the start, then Newton's
-method on the period map with a finite-difference Jacobian (chord steps, refreshed where
-they stall).  An attracting orbit found (Floquet multiplier below 1) is refined at
-``rtol/REFINE``: the answer is the refined mean, its error twice the change of the mean
-between the two tolerances plus the last Newton correction (the integration error
-propagated and the Newton residual).  Otherwise (a response not locked to the drive:
-self-excited stick-slip of a weakening contact, a subharmonic, a slow modulation) the motion
-is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is said with
-the windows' disagreement as the error, never ``PERIODIC``.
+The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
+method on the period map with a finite-difference Jacobian (the perturbed maps replay the
+base map's steps, so that the difference is one of a smooth map), Broyden updates between
+Jacobians, refreshed where the steps stall.  An attracting orbit found (the spectral radius
+of the Jacobian, the Floquet multiplier, below 1) is refined by one map at ``rtol/REFINE``
+and one chord step: the answer is the refined mean, its error twice the change of the mean
+between the two tolerances plus the next Newton step's change of the mean (the integration
+error propagated and the Newton residual).  Otherwise (a response not locked to the drive:
+self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response)
+the motion is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is
+said with the windows' disagreement as the error, never ``PERIODIC``.  Where the motion sits
+on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
+equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
 """
 
 import math
@@ -98,6 +104,8 @@ Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
 NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
 CONTACT, FLIGHT = 0, 1
+RECORD, REPLAY = 1, 2  # modes of a period map's step log
+LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
 CUT_DELTA = 1e-13  # contact segments end where n = CUT_DELTA before lift-off (see doc)
 EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
 H_MAX = 0.25 * math.pi  # the longest step
@@ -107,8 +115,10 @@ SAFETY = 0.9
 REFINE = 20.0  # the refinement's tolerance is rtol/REFINE
 ERROR_SAFETY = 2.0
 NEWTON_ITERATIONS = 10
+NEWTON_PROGRESS = 0.1  # after 4 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
-SETTLE = 2  # periods from the start before Newton's method
+SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
+# steps are poor: the period map is far from linear)
 FIRST_CHECK = 16  # the first checkpoint of the running average, doubling
 KICK = 1e-3  # relative velocity kick off a repelling orbit the motion sits on
 ROUNDOFF_MU = 1e-13
@@ -420,15 +430,33 @@ def _scales(P):
 
 
 @jit
-def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count):
+def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
     """Integrate ``z`` from ``t0`` to ``t1`` in ``mode``; ``hbox[0]`` carries the step size.
 
-    ``count[0]`` counts the accepted steps, ``count[1]`` the rejected ones.  Returns False
-    where the step size fell below ``H_MIN`` or ``MAX_STEPS`` were taken.
+    ``count[0]`` counts the accepted steps, ``count[1]`` the rejected ones.  ``lp[1]``: 0
+    adaptive, ``RECORD`` adaptive with the accepted steps appended to ``log`` (at ``lp[0]``;
+    beyond its end nothing is recorded and ``lp[0]`` is set past it), ``REPLAY`` the steps of
+    ``log`` taken as they are (no error control: a finite difference of the period map is
+    then one of a smooth map).  Returns False where the step size fell below ``H_MIN``,
+    ``MAX_STEPS`` were taken, or a replayed step is not finite.
     """
     ws, K, J, M, piv, znew = work
     t = t0
     steps = 0
+    if lp[1] == REPLAY:
+        while t < t1:
+            if lp[0] >= log.shape[0]:
+                return False
+            hh = log[lp[0]]
+            lp[0] += 1
+            last = t + hh >= t1
+            err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
+            if not math.isfinite(err):
+                return False
+            t = t1 if last else t + hh
+            z[:] = znew
+            count[0] += 1
+        return True
     while t < t1:
         hh = min(hbox[0], H_MAX)
         last = t + hh >= t1 * (1.0 - 1e-15) or t + hh >= t1
@@ -444,6 +472,10 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count):
             steps += 1
             if steps > MAX_STEPS:
                 return False
+            if lp[1] == RECORD:
+                if lp[0] < log.shape[0]:
+                    log[lp[0]] = hh
+                lp[0] += 1
             fac = min(6.0, max(0.2, SAFETY * (max(err, 1e-10)) ** -0.25))
             if not (last and fac > 1.0):  # a clipped last step says little about the next
                 hbox[0] = hh * fac
@@ -477,21 +509,30 @@ def rs_period(P, z, rtol, hbox, work, count):
     ``F``, ``D``, ``G`` over the period (reset first).  ``count[2]`` counts lift-offs and
     touch-downs.  Returns False where the integration failed.
     """
+    return _period(P, z, rtol, hbox, work, count, np.empty(1), np.zeros(2, np.int64))
+
+
+@jit
+def _period(P, z, rtol, hbox, work, count, log, lp):
+    """:func:`rs_period`, its steps recorded or replayed (:func:`_segment`; ``lp[0]`` is
+    reset to the start of ``log``).
+    """
     scale = _scales(P)
+    lp[0] = 0
     z[Z_F] = z[Z_D] = z[Z_G] = 0.0
     c_off, c_on = _cuts(P)
     if c_off >= TWO_PI:
-        return _segment(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count)
-    if not _segment(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count):
+        return _segment(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
+    if not _segment(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp):
         return False
     z[Z_M] = 0.0  # lift-off: the contact spring unloads
     count[2] += 2
-    if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count):
+    if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp):
         return False
     # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
     # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-16)
     z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
-    return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count)
+    return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
 
 
 @jit
@@ -539,27 +580,35 @@ def _distance(wv, z1, z2):
 
 
 @jit
-def _map_mean(P, z, rtol, hbox, work, count):
-    """``(ok, mu)``: the period map from ``z`` in place and the period's mean ``F/N``."""
-    ok = rs_period(P, z, rtol, hbox, work, count)
+def _map_mean(P, z, rtol, hbox, work, count, log, lp):
+    """``(ok, mu)``: the period map from ``z`` in place (:func:`_period`) and the period's
+    mean ``F/N``.
+    """
+    ok = _period(P, z, rtol, hbox, work, count, log, lp)
     return ok, z[Z_F] / (TWO_PI * P[P_NBAR])
 
 
 @jit
-def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, D, gmu):
+def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, log, lp, D, gmu):
     """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
     gradient ``gmu`` of the period's mean, by forward differences; returns ``ok``.
+
+    The perturbed maps replay the steps of the map ``z0 -> z1`` (``log``, ``lp[0]`` steps):
+    the difference is then one of a smooth map, its error the truncation's, ``~ dj``.  Where
+    that map took more steps than the log holds, they are adaptive (an error ``~ rtol/dj``
+    from the step sequences' differences).
     """
     zp = np.empty(NZ)
     wv, s = _weights(P, z0)
+    replay = lp[0] <= log.shape[0]
     for c in range(NM):
-        # sqrt(rtol) of the state's scale (in force units): the integration's noise,
-        # ~ rtol, makes an error ~ sqrt(rtol) in D, as the truncation of the difference
-        dj = math.sqrt(rtol) * s / wv[c]
+        dj = (1e-7 if replay else math.sqrt(rtol)) * s / wv[c]
         zp[:] = z0
         zp[c] += dj
         hb = np.array([hbox[0]])
-        ok, mu = _map_mean(P, zp, rtol, hb, work, count)
+        lp[1] = REPLAY if replay else 0
+        ok, mu = _map_mean(P, zp, rtol, hb, work, count, log, lp)
+        lp[1] = 0
         if not ok:
             return False
         for r in range(NM):
@@ -618,11 +667,11 @@ def _newton_step(D, z0, z1, dz):
 
 
 @jit
-def _newton(P, z, rtol, hbox, work, count, D, gmu, have_jac, res):
+def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
     """Newton's method on the period map from ``z``; on success ``z`` is the orbit's state.
 
-    ``D``, ``gmu``: the period map's Jacobian and the mean's gradient (finite differences;
-    used as given where ``have_jac``, refreshed where the chord steps stall).  ``res``
+    ``D``, ``gmu`` receive the period map's Jacobian and the mean's gradient (finite
+    differences, :func:`_jacobian`; chord steps, refreshed where they stall).  ``res``
     receives ``(mu, shift, multiplier, maps)``: the orbit's mean, the change of the mean the
     next Newton step would make (``|gmu . dz|``), the spectral radius of ``D`` and the period
     maps integrated.  Returns True where the residual fell to the integration's level
@@ -630,27 +679,37 @@ def _newton(P, z, rtol, hbox, work, count, D, gmu, have_jac, res):
     """
     z0 = z.copy()
     z1 = z.copy()
+    zp0 = z.copy()  # the previous iterate and its image (Broyden's update)
+    zp1 = z.copy()
     dz = np.empty(NM)
     maps = 0
     d_old = math.inf
-    tol = 100.0 * rtol
+    tol = 10.0 * rtol
     res[3] = 0.0
+    have_jac = False
     for it in range(NEWTON_ITERATIONS):
         z1[:] = z0
-        ok, mu = _map_mean(P, z1, rtol, hbox, work, count)
+        lp[1] = RECORD
+        ok, mu = _map_mean(P, z1, rtol, hbox, work, count, log, lp)
+        lp[1] = 0
         maps += 1
         if not ok:
             break
         wv, s = _weights(P, z0)
         d = _distance(wv, z0, z1)
-        if not math.isfinite(d) or (it > 0 and d > 100.0 * s):
-            break  # diverged
-        if not have_jac or (d > 0.25 * d_old and d > tol * s):
-            ok = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, D, gmu)
+        if it == 0:
+            d_first = d
+        if not math.isfinite(d) or (it > 0 and d > 100.0 * s) or \
+                (it >= 4 and d > NEWTON_PROGRESS * d_first):
+            break  # diverged, or not converging: left to the motion
+        if not have_jac or (d > 0.5 * d_old and d > tol * s):
+            ok = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)
             maps += NM
             if not ok:
                 break
             have_jac = True
+        elif it > 0:
+            _broyden(D, zp0, zp1, z0, z1)
         if not _newton_step(D, z0, z1, dz):
             break  # singular: no orbit found here
         if d <= tol * s:
@@ -663,6 +722,8 @@ def _newton(P, z, rtol, hbox, work, count, D, gmu, have_jac, res):
             z[:] = z0
             return True
         d_old = d
+        zp0[:] = z0
+        zp1[:] = z1
         # a step longer than half the state's scale is cut
         step = 0.0
         for r in range(NM):
@@ -672,6 +733,24 @@ def _newton(P, z, rtol, hbox, work, count, D, gmu, have_jac, res):
             z0[r] += cut * dz[r]
     res[3] = maps
     return False
+
+
+@jit
+def _broyden(D, a0, a1, b0, b1):
+    """Broyden's update of the period map's Jacobian ``D`` from the step ``a0 -> b0`` with
+    the images ``a1``, ``b1``: ``D += (dP - D dz) dz^T/|dz|^2``.
+    """
+    nz = 0.0
+    for c in range(NM):
+        nz += (b0[c] - a0[c]) ** 2
+    if nz == 0.0:
+        return
+    for r in range(NM):
+        u = b1[r] - a1[r]
+        for c in range(NM):
+            u -= D[r, c] * (b0[c] - a0[c])
+        for c in range(NM):
+            D[r, c] += u * (b0[c] - a0[c]) / nz
 
 
 @jit
@@ -687,7 +766,9 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
     res = np.zeros(4)
-    res2 = np.zeros(4)
+    log = np.empty(LOG_SIZE)
+    lp = np.zeros(2, np.int64)
+    dzf = np.empty(NM)
     D = np.empty((NM, NM))
     gmu = np.empty(NM)
     periods = 0.0  # maps integrated, Newton's included
@@ -707,21 +788,28 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
         if k == next_newton:
             zn = z.copy()
             hn = np.array([hbox[0]])  # a failed map's step size is not the motion's
-            found = _newton(P, zn, rtol, hn, work, count, D, gmu, False, res)
+            found = _newton(P, zn, rtol, hn, work, count, log, lp, D, gmu, res)
             periods += res[3]
             next_newton = 4 * k
             if found and res[2] < NEUTRAL:
-                # the same orbit at rtol/REFINE: the change of its mean is the integration's
-                # error (an upper bound of the refined one's, which is reported)
-                zr = zn.copy()
-                ok = _newton(P, zr, rtol / REFINE, hn, work, count, D, gmu, True, res2)
-                periods += res2[3]
-                if ok and res2[2] < NEUTRAL:  # attracting by both Jacobians
-                    z[:] = zr
-                    out_f[O_MU] = res2[0]
-                    err = ERROR_SAFETY * (abs(res2[0] - res[0]) + res2[1])
-                    out_f[O_ERR] = max(err, ROUNDOFF_MU * (1.0 + abs(res2[0])))
-                    out_f[O_MULT] = res2[2]
+                # the same orbit at rtol/REFINE: one map from it and one chord step; the
+                # change of the mean is the integration's error (a bound of the coarse
+                # value's, reported for the refined one)
+                zf = zn.copy()
+                ok, muf = _map_mean(P, zf, rtol / REFINE, hn, work, count, log, lp)
+                periods += 1.0
+                wv, s = _weights(P, zn)
+                if ok and _newton_step(D, zn, zf, dzf) and \
+                        _distance(wv, zn, zf) <= 1e3 * rtol * s:
+                    shift = 0.0
+                    for r in range(NM):
+                        shift += gmu[r] * dzf[r]
+                        z[r] = zn[r] + dzf[r]
+                    mu = muf + shift
+                    out_f[O_MU] = mu
+                    err = ERROR_SAFETY * (abs(mu - res[0]) + res[1])
+                    out_f[O_ERR] = max(err, ROUNDOFF_MU * (1.0 + abs(mu)))
+                    out_f[O_MULT] = res[2]
                     status = ST_PERIODIC
                     period = 1
                     settle = float(k)
@@ -739,7 +827,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                     nchk = 0
         if k >= max_periods:
             break
-        ok, mu = _map_mean(P, z, rtol, hbox, work, count)
+        ok, mu = _map_mean(P, z, rtol, hbox, work, count, log, lp)
         periods += 1.0
         if not ok:
             failed = True
