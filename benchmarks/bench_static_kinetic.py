@@ -24,7 +24,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import numpy as np  # noqa: E402
 
 import vibrofriction as vf  # noqa: E402
-from bench_solver import POINTS  # noqa: E402
+from bench_solver import POINTS, _median_time  # noqa: E402
 
 HERE = Path(__file__).resolve().parent
 QUICK = "--quick" in sys.argv
@@ -34,18 +34,6 @@ EXTRA = [("damped stick-slip", 0.5, 2.0, 0.5, 0.5, None, 0.05, 0.0),
          ("viscoelastic contact", 0.5, 2.0, 0.5, 0.5, None, 0.0, 0.2),
          ("rigid, damped, a = 0.8", 0.3, float("inf"), 0.8, 0.5, None, 0.05, 0.0),
          ("jumping, damped", 0.3, 5.0, 1.3, 0.5, None, 0.02, 0.0)]
-
-
-def _time(fn, repeats: int, budget: float) -> tuple[float, object]:
-    times, out = [], None
-    t_start = time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        out = fn()
-        times.append(time.perf_counter() - t0)
-        if time.perf_counter() - t_start > budget:
-            break
-    return statistics.median(times), out
 
 
 def rows() -> list[dict]:
@@ -61,8 +49,9 @@ def rows() -> list[dict]:
         res = [[], [], []]
         for _ in range(3 if QUICK else 9):  # alternate, so that drifts hit both alike
             for i, s in enumerate(systems):
-                res[i].append(_time(lambda s=s, V=V: vf.friction_coefficient(s, v_inertial=V),
-                                    3 if QUICK else 7, 2.0))
+                res[i].append(_median_time(
+                    lambda s=s, V=V: vf.friction_coefficient(s, v_inertial=V),
+                    3 if QUICK else 7, 2.0))
         times = [statistics.median(t for t, _ in r) for r in res]
         results = [r[-1][1] for r in res]
         row = {"point": label, "V": V, "zeta": zeta, "eta_c": eta,

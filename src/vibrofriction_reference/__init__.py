@@ -61,6 +61,24 @@ The MDR contact of issue 21 (a row of springs on the 1-D profile of ``z = c r^n`
 with its own Coulomb law): :func:`mdr_mean` and :func:`mdr_reference` (:mod:`.mdr`,
 ``docs/contact_geometry.md``), the latter with an error bar from two resolutions.
 
+Two local friction laws beyond Coulomb's (:mod:`.friction_laws`; the pin dashpot ``zeta``,
+no contact dashpot), each with an error bar from two runs:
+
+* static friction above kinetic, ``sigma = static_ratio = mu_static/mu0 >= 1`` (a stuck
+  contact holds while ``|f| <= sigma n``, then the force drops to ``n`` and slips until
+  the slip velocity would reverse): :func:`static_kinetic_run` (the mean, the error bar
+  from ``N`` and ``2 N`` steps, the per-period means), :func:`static_kinetic_mu` (one
+  resolution) and :func:`static_kinetic_history`.  Fixed steps, second order: velocity
+  Verlet with a return mapping that keeps a stuck/slipping flag (finite contact), Moreau
+  time-stepping (rigid), the drop of the force placed inside its step.  ``sigma = 1`` is
+  Coulomb's law, the model of the two peers above;
+* rate-and-state friction (``a, b, d_c, v_ref``, the aging or the slip law, the
+  Linker-Dieterich coupling ``alpha_ld``): :func:`rate_state_run` (the mean over a window
+  after a transient, the error bar from two tolerances, the per-period means),
+  :func:`rate_state_history` and :func:`mu_steady_state`.  ``solve_ivp`` (LSODA with an
+  analytic Jacobian, Radau where LSODA fails) arc by arc, cut near lift-off and touch-down,
+  flights in closed form.
+
 Neither peer detects a periodic orbit: each averages over a fixed window after a
 fixed transient, from a stated initial state. Compare them (and the main
 solver) at the same transient/average windows when checking discretisation
@@ -79,6 +97,18 @@ from .fixed_step import (
     return_mapping_mu,
     return_mapping_periods,
 )
+from .friction_laws import (
+    RateStateHistory,
+    RateStateRun,
+    StaticKineticHistory,
+    StaticKineticRun,
+    mu_steady_state,
+    rate_state_history,
+    rate_state_run,
+    static_kinetic_history,
+    static_kinetic_mu,
+    static_kinetic_run,
+)
 from .inplane import InplaneMean, InplaneRun, inplane_mean, inplane_run
 from .mdr import MDRMean, MDRReference, mdr_mean, mdr_reference
 from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
@@ -92,15 +122,25 @@ __all__ = [
     "MDRReference",
     "PeerRun",
     "PeriodMeans",
+    "RateStateHistory",
+    "RateStateRun",
     "ReferenceHistory",
+    "StaticKineticHistory",
+    "StaticKineticRun",
     "inplane_mean",
     "inplane_run",
     "mdr_mean",
     "mdr_reference",
+    "mu_steady_state",
+    "rate_state_history",
+    "rate_state_run",
     "return_mapping_history",
     "return_mapping_mu",
     "return_mapping_periods",
     "solve_ivp_mu",
     "solve_ivp_run",
+    "static_kinetic_history",
+    "static_kinetic_mu",
+    "static_kinetic_run",
     "steps_per_drive_period",
 ]

@@ -81,22 +81,17 @@ def test_the_base_covers_every_regime():
 
 # --------------------------------------------------------------------------- s_r > 1
 def _random_points(n, seed):
-    """Random valid points of every regime with ``1 < s_r <= 2.5``: finite elastic,
-    viscoelastic and rigid contact, pin damping, jumping, an in-plane oscillation."""
+    """The base's random points of every regime (finite elastic, viscoelastic and rigid
+    contact, pin damping, jumping, no oscillation, an in-plane oscillation on the substrate
+    or the holder, both starts), drawn afresh, each with a static ratio ``1 < s_r <= 2.5``."""
     rng = np.random.default_rng(seed)
     out = []
-    for i in range(n):
-        contact = ("elastic", "viscous", "rigid")[i % 3]
-        alpha = float(rng.uniform(0.05, 2.5))
-        beta = math.inf if contact == "rigid" else alpha + float(rng.uniform(0.4, 15.0))
-        a = float(rng.uniform(1.05, 1.6)) if i % 4 == 1 else float(rng.uniform(0.0, 0.95))
-        dim = vf.Dimensionless(
-            alpha, beta, a, zeta=float(rng.uniform(0.01, 0.3)) if i % 2 == 0 else 0.0,
-            eta_c=float(rng.uniform(0.05, 0.6)) if contact == "viscous" else 0.0,
-            a_x=float(rng.uniform(0.05, 0.4)) if i % 5 == 3 else 0.0,
-            phase_x=float(rng.uniform(0.0, 2 * math.pi)),
-            static_ratio=float(rng.uniform(1.05, 2.5)))
-        out.append((dim, float(rng.uniform(0.02, 0.6)), ("sliding", "rest")[i % 2]))
+    for p in MAKER.points(seed)[:n]:
+        dim = vf.Dimensionless(p["alpha"], p["beta"], p["amplitude"], zeta=p["zeta"],
+                               eta_c=p["eta_c"], a_x=p["a_x"], phase_x=p["phase_x"],
+                               inplane_on=p["inplane_on"],
+                               static_ratio=float(rng.uniform(1.05, 2.5)))
+        out.append((dim, p["v_inertial"], p["initial"]))
     return out
 
 

@@ -188,56 +188,38 @@ def event_gradient(M, phase, tau, y, xd, e):
 
 
 @jit
-def saltation(M, ph0, ph1, tau, y, xd, e, J, G):
+def saltation(M, ph0, ph1, tau, y, xd, e, J, G, e_before=math.nan):
     """Apply the saltation matrix of the event ``ph0 -> ph1`` at ``(tau, y, x', e)`` to
     ``J``, and the force jump times the event's time shift to ``G``.  Returns False
     where the event is tangential (``g' = 0``: the map is not differentiable there).
+
+    ``e_before`` (nan: ``e`` is continuous): the elongation before an event that resets it,
+    the break of an elastic contact where ``s_r > 1``.  The event ``g = s_r n - s k e = 0``
+    sets ``e_+ = R(tau) = s n(tau)/k`` (the contact point jumps; ``e_- = s_r e_+``), so the
+    perturbation after it, at a fixed time, is ``dz_+ = R_z dz_- + (R_z F_- + R_tau - F_+)
+    dt`` with ``dt = -grad g . dz_-/g'`` and ``R_z = diag(1, 1, 0)``: ``y`` and ``x'`` get
+    ``(F_- - F_+) dt`` as at any event, ``e`` forgets its perturbation and gets ``(R' -
+    e'_+) dt`` (0 into slip, where ``e'_+ = R'``; into stick, the jump that ends at once,
+    ``R' - x'``).  ``f`` drops from ``s s_r n`` to ``f_+``: ``G`` gets the drop times ``dt``.
     """
-    g0, g1, g2, g_t = event_gradient(M, ph0, tau, y, xd, e)
-    a0, a1, a2 = vector_field(M, ph0, tau, y, xd, e)
+    reset = not math.isnan(e_before)
+    eb = e_before if reset else e
+    g0, g1, g2, g_t = event_gradient(M, ph0, tau, y, xd, eb)
+    a0, a1, a2 = vector_field(M, ph0, tau, y, xd, eb)
     b0, b1, b2 = vector_field(M, ph1, tau, y, xd, e)
     rate = g0 * a0 + g1 * a1 + g2 * a2 + g_t
     if rate == 0.0 or not math.isfinite(rate):
         return False
-    jump = contact_force(M, ph0, tau, y, xd, e) - contact_force(M, ph1, tau, y, xd, e)
+    jump = contact_force(M, ph0, tau, y, xd, eb) - contact_force(M, ph1, tau, y, xd, e)
+    r_t = -M[M_A] * math.sin(tau) / M[M_K] * (1.0 if e >= 0.0 else -1.0) if reset else 0.0
     for j in range(J.shape[1]):
         dt = -(g0 * J[0, j] + g1 * J[1, j] + g2 * J[2, j]) / rate
         J[0, j] -= (b0 - a0) * dt
         J[1, j] -= (b1 - a1) * dt
-        J[2, j] -= (b2 - a2) * dt
-        G[j] += jump * dt
-    return True
-
-
-@jit
-def jump_saltation(M, ph1, tau, y, xd, e, J, G):
-    """The saltation of stick -> slip of an elastic contact where ``s_r > 1`` (the jump).
-
-    The event ``g = s_r n - s k e = 0`` resets the elongation, ``e_+ = R(tau) = s n(tau)/k``
-    (the contact point jumps; ``e_- = s_r e_+``), so the perturbation after it, at a fixed
-    time, is ``dz_+ = R_z dz_- + (R_z F_- + R_tau - F_+) dt`` with ``dt = -grad g . dz_-/g'``
-    and ``R_z = diag(1, 1, 0)``: ``y`` and ``x'`` get ``(F_- - F_+) dt`` as at any event, ``e``
-    forgets its perturbation and gets ``(R' - e'_+) dt`` (0 into slip, where ``e'_+ = R'``;
-    into stick, the jump that ends at once, ``R' - x'``).  ``f`` drops from ``s s_r n`` to
-    ``f_+``: ``G`` gets the jump times ``dt``.  ``(y, x', e)`` is the state after the jump.
-    Returns False where the event is tangential.
-    """
-    sr = M[M_SR]
-    eb = sr * e  # the elongation before the jump
-    g0, g1, g2, g_t = event_gradient(M, STICK, tau, y, xd, eb)
-    a0, a1, a2 = vector_field(M, STICK, tau, y, xd, eb)
-    b0, b1, b2 = vector_field(M, ph1, tau, y, xd, e)
-    rate = g0 * a0 + g1 * a1 + g2 * a2 + g_t
-    if rate == 0.0 or not math.isfinite(rate):
-        return False
-    s = 1.0 if e >= 0.0 else -1.0
-    r_t = -s * M[M_A] * math.sin(tau) / M[M_K]  # R'(tau)
-    jump = M[M_K] * eb - contact_force(M, ph1, tau, y, xd, e)
-    for j in range(J.shape[1]):
-        dt = -(g0 * J[0, j] + g1 * J[1, j] + g2 * J[2, j]) / rate
-        J[0, j] -= (b0 - a0) * dt
-        J[1, j] -= (b1 - a1) * dt
-        J[2, j] = (r_t - b2) * dt
+        if reset:
+            J[2, j] = (r_t - b2) * dt
+        else:
+            J[2, j] -= (b2 - a2) * dt
         G[j] += jump * dt
     return True
 
@@ -260,8 +242,8 @@ def advance_period_tangent(z, acc, count, M, max_events, J, G):
         segment_flow(M, ph, free, t, J, G)
         if ev == EV_STICK_TO_SLIP and M[M_SR] > 1.0 and M[M_C] == 0.0 \
                 and not math.isinf(M[M_K]):
-            if not free:
-                smooth &= jump_saltation(M, ph1, theta, y, xd, e, J, G)
+            if not free:  # an elastic contact breaks loose: e jumps from s_r e to e
+                smooth &= saltation(M, ph, ph1, theta, y, xd, e, J, G, M[M_SR] * e)
         elif ev == EV_STICK_TO_SLIP or ev == EV_SLIP_TO_STICK or ev == EV_REVERSAL:
             if not free:
                 smooth &= saltation(M, ph, ph1, theta, y, xd, e, J, G)
