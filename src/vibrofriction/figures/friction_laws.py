@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -236,7 +237,7 @@ BUREAU_AMPLITUDE = 0.3
 BUREAU_LD = 0.2
 #: The rate-and-state law of the interface (SI: d_c in m, v_ref in m/s), mu_star = 0.5.
 _BUREAU_MU = 0.5
-_BUREAU_LAW = {"a": 0.01, "b": 0.014, "d_c": 0.5e-6, "v_ref": 10e-6}
+_BUREAU_LAW = RateAndState(a=0.01, b=0.014, d_c=0.5e-6, v_ref=10e-6)
 _BUREAU_F_RANGE = (0.3, 300.0)   # Hz, log-spaced
 #: The three models of Fig. 21: label, colour, Linker-Dieterich alpha (None: Coulomb).
 _BUREAU_MODELS: dict[str, tuple[str, str, float | None]] = {
@@ -257,7 +258,7 @@ def bureau_pin(model: str = "rs", frequency_hz: float = BUREAU_FREQUENCY_HZ,
     0.5``, aging law, with the Linker-Dieterich coefficient of ``model``.
     """
     alpha_ld = _BUREAU_MODELS[model][2]
-    friction = None if alpha_ld is None else RateAndState(**_BUREAU_LAW, alpha_ld=alpha_ld)
+    friction = None if alpha_ld is None else replace(_BUREAU_LAW, alpha_ld=alpha_ld)
     mass, f_n, F_N0, k_zc = 0.02, 1000.0, 10.0, 2.0e7
     u_z0 = F_N0 / k_zc
     pin = Physical(mass=mass, k_x=mass * (2 * math.pi * f_n) ** 2, k_xc=k_zc / 1.25,
@@ -290,8 +291,7 @@ def _bureau_series(quick: bool) -> tuple[Series, ...]:
 
 def _bureau_steady() -> float:
     """``mu_ss(v0)/mu_star`` of Fig. 21's interface (the same in SI and in the model)."""
-    law = RateAndState(**_BUREAU_LAW)
-    return law.steady_mu(BUREAU_V0, mu_star=_BUREAU_MU) / _BUREAU_MU
+    return _BUREAU_LAW.steady_mu(BUREAU_V0, mu_star=_BUREAU_MU) / _BUREAU_MU
 
 
 def _coulomb_frequency() -> float:
@@ -312,7 +312,7 @@ def _coulomb_frequency() -> float:
 
 def _ageing_frequency() -> float:
     """``v0/(2 pi d_c)`` in Hz: the drive frequency of one critical slip distance per second."""
-    return BUREAU_V0 / (2 * math.pi * _BUREAU_LAW["d_c"])
+    return BUREAU_V0 / (2 * math.pi * _BUREAU_LAW.d_c)
 
 
 def _bureau_pick(curves: Mapping[str, Curve], model: str, sweep: str
@@ -415,7 +415,8 @@ def load_modulation(quick: bool = False) -> Recipe:
         f"pin (SI): mass = {pin.mass:g} kg, k_x = {pin.k_x:.6g} N/m (1 kHz), c_x = "
         f"{pin.c_x:.6g} N s/m (Q = 20), k_xc = {pin.k_xc:.6g} N/m, k_zc = {pin.k_zc:.6g} N/m, "
         f"F_N0 = {pin.F_N0:g} N, mu0 = mu_star = {_BUREAU_MU:g}; v0 = {BUREAU_V0:g} m/s",
-        "rate-and-state (SI): " + ", ".join(f"{k} = {v:g}" for k, v in _BUREAU_LAW.items())
+        "rate-and-state (SI): " + ", ".join(f"{k} = {getattr(_BUREAU_LAW, k):g}"
+                                            for k in ("a", "b", "d_c", "v_ref"))
         + f", aging law; alpha_ld = 0 (model 'rs') or {BUREAU_LD:g} (model 'rs_ld'); model "
         "'coulomb': mu0 = mu_star, no rate-and-state",
         f"amplitude sweep at {BUREAU_FREQUENCY_HZ:g} Hz; frequency sweep at amplitude "
@@ -541,6 +542,7 @@ def _map_fields(curves: Mapping[str, Curve], quick: bool
 
 @style.styled
 def _draw_map(curves: Mapping[str, Curve], quick: bool):
+    from matplotlib.artist import Artist
     from matplotlib.patches import Patch
 
     V, amplitudes, verdict, mu, ss = _map_fields(curves, quick)
@@ -581,8 +583,8 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
     ax.set_title("(a) the response: locked to the drive or self-excited", fontsize=7)
     ax2.set_title(r"(b) mean friction over steady sliding, $\mu_{macro}/\mu_{ss}$", fontsize=7)
     from matplotlib.lines import Line2D
-    handles = [Patch(color=col, label=name)
-               for col, name in zip(_VERDICT_COLORS, _VERDICT_NAMES, strict=True)]
+    handles: list[Artist] = [Patch(color=col, label=name)
+                             for col, name in zip(_VERDICT_COLORS, _VERDICT_NAMES, strict=True)]
     handles += [Line2D([], [], color="#7b3294", lw=0.9,
                        label="onset of instability of steady sliding without oscillation"),
                 Line2D([], [], color="#1a9641", marker="s", ls="none", ms=2.5,

@@ -240,9 +240,9 @@ def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
         tagged = [replace(s, key=f"{i}\x1f{s.key}") for i in members
                   for s in recipes[i].series]
         for key, curve in solve(tagged, runner=runner, settings=chosen).items():
-            i, own = key.split("\x1f", 1)
+            index, own = key.split("\x1f", 1)
             s = curve.series
-            out[int(i)][own] = replace(curve, series=replace(s, key=own))
+            out[int(index)][own] = replace(curve, series=replace(s, key=own))
     return out
 
 
