@@ -82,9 +82,12 @@ def _status_names(c: Curve) -> NDArray[np.object_]:
     return np.array([STATUS_BY_CODE[int(t)].value for t in c.status], dtype=object)
 
 
-def _rs_text(s: Series) -> str:
-    return (f"rs_a = {s.rs_a:g}, rs_b = {s.rs_b:g}, rs_d_c = {s.rs_d_c:g}, "
-            f"rs_v_ref = {s.rs_v_ref:g}, rs_alpha_ld = {s.rs_alpha_ld:g}, {s.rs_law} law")
+def _finish(fig: Any, handles: list, ncol: int, title: str) -> Any:
+    """The figure's legend below its panels and its title: the figure."""
+    fig.legend(handles=handles, loc="outside lower center", ncol=ncol, fontsize=6,
+               handlelength=2.0)
+    fig.suptitle(title, fontsize=7)
+    return fig
 
 
 # --------------------------------------------------------------------------- Fig. 20
@@ -155,12 +158,9 @@ def _draw_laws(curves: Mapping[str, Curve]):
     handles, _ = ax.get_legend_handles_labels()
     handles.append(Line2D([], [], color="0.3", lw=0.6, ls=(0, (4, 2)),
                           label=r"steady sliding without oscillation, $\mu_{ss}(v_0)$"))
-    fig.legend(handles=handles, loc="outside lower center", ncol=3, fontsize=6,
-               handlelength=2.0)
-    fig.suptitle(rf"$\alpha = {p['alpha']:g}$, $\beta = {p['beta']:g}$, "
-                 rf"$\Delta F_N/F_{{N,0}} = {a:g}$; rate-and-state: $d_c = 1$, "
-                 r"$v_{ref} = 1$ (model units), aging law", fontsize=7)
-    return fig
+    return _finish(fig, handles, 3, rf"$\alpha = {p['alpha']:g}$, $\beta = {p['beta']:g}$, "
+                   rf"$\Delta F_N/F_{{N,0}} = {a:g}$; rate-and-state: $d_c = 1$, "
+                   r"$v_{ref} = 1$ (model units), aging law")
 
 
 def _laws_checks(curves: Mapping[str, Curve]) -> list[Check]:
@@ -371,12 +371,10 @@ def _draw_bureau(curves: Mapping[str, Curve]):
                                 r"$\mu_{ss}(v_0)/\mu_*$"))
     handles.append(Line2D([], [], color="0.45", lw=0.7, ls=":",
                           label=r"Coulomb static value $1 - \Delta F_N/F_{N,0}$ (eq. 2)"))
-    fig.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6,
-               handlelength=2.0)
-    fig.suptitle(rf"normal-load modulation at $v_0$ = {BUREAU_V0 * 1e6:g} $\mu$m/s: "
-                 r"$a$ = 0.01, $b$ = 0.014, $d_c$ = 0.5 $\mu$m, $v_{ref}$ = 10 $\mu$m/s, "
-                 r"$\mu_*$ = 0.5; pin 1 kHz, $Q$ = 20", fontsize=7)
-    return fig
+    return _finish(fig, handles, 2,
+                   rf"normal-load modulation at $v_0$ = {BUREAU_V0 * 1e6:g} $\mu$m/s: "
+                   r"$a$ = 0.01, $b$ = 0.014, $d_c$ = 0.5 $\mu$m, $v_{ref}$ = 10 $\mu$m/s, "
+                   r"$\mu_*$ = 0.5; pin 1 kHz, $Q$ = 20")
 
 
 def _bureau_checks(curves: Mapping[str, Curve]) -> list[Check]:
@@ -593,14 +591,12 @@ def _draw_map(curves: Mapping[str, Curve], quick: bool):
                        label="steady sliding unstable (amplitude 0, theory; below the axis)"),
                 Line2D([], [], color="black", lw=0.7, ls=(0, (3, 1.5)),
                        label=r"Coulomb $V_c(a)$: continuous sliding to its right")]
-    fig.legend(handles=handles, loc="outside lower center", ncol=2, fontsize=6,
-               handlelength=2.0)
     law = WEAKENING_LAW
-    fig.suptitle(rf"velocity weakening on a soft pin: $\alpha = {p['alpha']:g}$, "
-                 rf"$\beta = {p['beta']:g}$, $a = {law['rs_a']:g}$, $b = {law['rs_b']:g}$, "
-                 rf"$d_c = {law['rs_d_c']:g}$, $v_{{ref}} = {law['rs_v_ref']:g}$ (model units), "
-                 "aging law", fontsize=7)
-    return fig
+    return _finish(fig, handles, 2,
+                   rf"velocity weakening on a soft pin: $\alpha = {p['alpha']:g}$, "
+                   rf"$\beta = {p['beta']:g}$, $a = {law['rs_a']:g}$, $b = {law['rs_b']:g}$, "
+                   rf"$d_c = {law['rs_d_c']:g}$, $v_{{ref}} = {law['rs_v_ref']:g}$ "
+                   "(model units), aging law")
 
 
 def _map_checks(curves: Mapping[str, Curve], quick: bool) -> tuple[list[Check], str]:
