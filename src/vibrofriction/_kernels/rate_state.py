@@ -114,8 +114,8 @@ MAX_STEPS = 200_000  # steps per period before the integration is said to have f
 SAFETY = 0.9
 REFINE = 20.0  # the refinement's tolerance is rtol/REFINE
 ERROR_SAFETY = 2.0
-NEWTON_ITERATIONS = 10
-NEWTON_PROGRESS = 0.1  # after 4 iterations the residual must have fallen this much
+NEWTON_ITERATIONS = 16
+NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
 SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
 # steps are poor: the period map is far from linear)
@@ -203,22 +203,38 @@ def local_mu(P, w, L):
 
 @jit
 def _touchdown_mu(P, tau, v, L):
-    """The local coefficient on the slow manifold at the re-formed contact's tiny load:
-    ``m' = 0`` to leading order, ``k (x' - w'(m)) = m n'`` (Newton's method from the
-    coefficient at the slip rate ``x'``; the left side decreases in ``m``).
+    """The local coefficient on the slow manifold at the re-formed contact's tiny load.
+
+    ``m' = 0`` to leading order: the root of ``g(m) = k (x' - w'(m)) - m n'``, which
+    decreases in ``m`` and lies between 0 and the smaller in modulus of ``k x'/n'`` (the
+    spring stretched at the body's velocity while the contact creeps) and the coefficient
+    at the slip rate ``x'`` (the contact slipping with the body).  Newton's method kept in
+    that bracket (bisection where a step leaves it).
     """
     k = P[P_K]
     nd = -P[P_A] * math.sin(tau)
-    m = local_mu(P, v, L)
-    for _ in range(60):
+    if v == 0.0:
+        return 0.0
+    far = local_mu(P, v, L)
+    if nd > 0.0 and abs(k * v / nd) < abs(far):
+        far = k * v / nd
+    lo, hi = (0.0, far) if v > 0.0 else (far, 0.0)
+    m = 0.5 * (lo + hi)
+    for _ in range(200):
         w, dwdm, _ = _slip_rate(P, m, L)
         g = k * (v - w) - m * nd
+        if g > 0.0:
+            lo = m
+        else:
+            hi = m
         dg = -k * dwdm - nd
-        step = -g / dg
-        step = max(-P[P_RA], min(P[P_RA], step))  # w' is exponential in m/a
-        m += step
-        if abs(step) <= 1e-15 * (1.0 + abs(m)):
-            break
+        step = -g / dg if dg != 0.0 else 0.0
+        mn = m + step
+        if not (lo < mn < hi):
+            mn = 0.5 * (lo + hi)
+        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
+            return mn
+        m = mn
     return m
 
 
@@ -245,7 +261,7 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     dwdm = dwdL = dLdw = dLdL = 0.0
     if mode == FLIGHT:
         dz[Z_M] = 0.0
-        dz[Z_L] = 0.0 if slip_law else math.exp(-L)
+        dz[Z_L] = 0.0 if slip_law else _exp(-L)
     else:
         f = n * m
         w, dwdm, dwdL = _slip_rate(P, m, L)
@@ -257,9 +273,9 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
             dLdw = -(lg + L + 1.0) / dc  # times sign(w)
             dLdL = -g
         else:
-            dz[Z_L] = math.exp(-L) - g
+            dz[Z_L] = _exp(-L) - g
             dLdw = -1.0 / dc
-            dLdL = -math.exp(-L)
+            dLdL = -_exp(-L)
         if w < 0.0:
             dLdw = -dLdw
         if P[P_ALD] > 0.0:
@@ -279,7 +295,7 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     J[Z_G, Z_V] = 2.0 * gamma * (v - V)
     ft[Z_V] = P[P_HS] * ct - P[P_HC] * st
     if mode == FLIGHT:
-        J[Z_L, Z_L] = 0.0 if slip_law else -math.exp(-L)
+        J[Z_L, Z_L] = 0.0 if slip_law else -_exp(-L)
         return
     ndd = -A * ct
     J[Z_V, Z_M] = -n
@@ -449,7 +465,8 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
                 return False
             hh = log[lp[0]]
             lp[0] += 1
-            last = t + hh >= t1
+            last = hh < 0.0  # the segment's last step is recorded negative
+            hh = abs(hh)
             err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
             if not math.isfinite(err):
                 return False
@@ -474,7 +491,7 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
                 return False
             if lp[1] == RECORD:
                 if lp[0] < log.shape[0]:
-                    log[lp[0]] = hh
+                    log[lp[0]] = -hh if last else hh
                 lp[0] += 1
             fac = min(6.0, max(0.2, SAFETY * (max(err, 1e-10)) ** -0.25))
             if not (last and fac > 1.0):  # a clipped last step says little about the next
@@ -700,7 +717,7 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
         if it == 0:
             d_first = d
         if not math.isfinite(d) or (it > 0 and d > 100.0 * s) or \
-                (it >= 4 and d > NEWTON_PROGRESS * d_first):
+                (it >= 6 and d > NEWTON_PROGRESS * d_first):
             break  # diverged, or not converging: left to the motion
         if not have_jac or (d > 0.5 * d_old and d > tol * s):
             ok = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)

@@ -14,14 +14,15 @@ from numpy.typing import NDArray
 
 from ..._kernels import codes
 from ..._kernels.rate_state import rs_steady_state_many
-from ...capabilities import CAPABILITIES
+from ...capabilities import CAPABILITIES, Refusal
+from ...params import Dimensionless
 from ...schema import METHOD_NAMES
 from ..points import PointTable
 from ..settings import SolverSettings
 from .base import new_outputs
 from .event import contact_columns
 
-__all__ = ["RATE_STATE", "rate_state_arguments"]
+__all__ = ["RATE_STATE", "rate_state_arguments", "refuse_rate_state"]
 
 _CODE = METHOD_NAMES.index("rate_state")
 
@@ -57,6 +58,23 @@ def rate_state_arguments(settings: SolverSettings) -> tuple[float, int, float]:
     RATE_STATE.capabilities.check_settings(settings)
     r = settings.resolved(RATE_STATE.capabilities.settings)
     return float(r["rtol"]), int(r["max_periods"]), float(r["tol_mean"])
+
+
+def refuse_rate_state(system: Dimensionless, caller: str, what: str) -> None:
+    """Refuse a rate-and-state ``system`` where the solver does not declare ``what``.
+
+    ``caller`` (``"simulate"``, ``"friction_gradient"``) would otherwise run the Coulomb
+    kernels on it.
+
+    Raises
+    ------
+    Refusal
+        Naming ``rs_a``.
+    """
+    if system.rs_a > 0.0:
+        c = RATE_STATE.capabilities
+        raise Refusal(f"{caller} does not cover rate-and-state friction: {c.title} ({c.takes}) "
+                      f"has no {what}: got rs_a = {system.rs_a:g}", "rs_a")
 
 
 RATE_STATE = RateStateMethod()
