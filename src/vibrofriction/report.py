@@ -363,7 +363,7 @@ class Reproduction:
 
 
 #: The kernels the solving and rendering use (:data:`vibrofriction.warmup.PARTS`).
-_PARTS = ("flat", "plane", "curved", "histories")
+_PARTS = ("flat", "plane", "curved", "rate_state", "histories")
 
 
 def _load() -> None:
