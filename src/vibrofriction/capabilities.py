@@ -19,8 +19,9 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-__all__ = ["CAPABILITIES", "EVENT", "INITIAL_KINDS", "MDR", "PLANE", "RATE_STATE", "Capabilities",
-           "Limit", "Refusal", "capability_table", "refused_by"]
+__all__ = ["CAPABILITIES", "EVENT", "FRICTION_LAWS", "INITIAL_KINDS", "MDR", "PLANE",
+           "RATE_STATE", "Capabilities", "Limit", "Refusal", "capability_table", "friction_laws",
+           "refused_by"]
 
 #: The kinds of initial state, by the kernels' code: steady sliding, rest, a section state.
 INITIAL_KINDS = ("sliding", "rest", "section state")
@@ -176,14 +177,12 @@ PLANE = Capabilities(
     title="the 2-D solver",
     takes="a flat punch, profile_exponent = inf, with a transverse oscillation, a_y > 0",
     parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x", "a_y",
-                "phase_y", "alpha_y", "zeta_y", "v_inertial", "inplane_on"),
+                "phase_y", "alpha_y", "zeta_y", "static_ratio", "v_inertial", "inplane_on"),
     limits=(
         Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
               lambda p: p["beta"] == math.inf),
         Limit("amplitude", "grazing (amplitude = 1) with eta_c = 0",
               lambda p: (p["amplitude"] == 1.0) & (p["eta_c"] == 0.0)),
-        Limit("static_ratio", "a static coefficient above the kinetic one (static_ratio > 1)",
-              lambda p: p["static_ratio"] != 1.0, whole=True),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),
@@ -206,7 +205,7 @@ MDR = Capabilities(
     title="the MDR solver",
     takes="a curved tip, profile_exponent finite",
     parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x",
-                "profile_exponent", "v_inertial", "inplane_on"),
+                "profile_exponent", "static_ratio", "v_inertial", "inplane_on"),
     limits=(
         Limit("beta", "a rigid contact (beta = inf)", lambda p: p["beta"] == math.inf),
         Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
@@ -217,8 +216,9 @@ MDR = Capabilities(
               "that stick through whole cycles keep the elongation of the start, so "
               "the steady state depends on it; give a velocity != 0)",
               lambda p: (p["a_x"] > 0.0) & (p["v_inertial"] == 0.0)),
-        Limit("static_ratio", "a static coefficient above the kinetic one (static_ratio > 1)",
-              lambda p: p["static_ratio"] != 1.0, whole=True),
+        Limit("static_ratio", "a static coefficient above the kinetic one at v_inertial = 0 "
+              "(its static limit depends on the dynamics of the slips: give a velocity != 0)",
+              lambda p: (p["static_ratio"] != 1.0) & (p["v_inertial"] == 0.0)),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),
@@ -291,12 +291,26 @@ def capability_table() -> str:
                     for k, v in c.settings.items()) + ", `tol_trusted`"
           for c in caps]),
         ("outputs (the rest nan)", [_outputs(c) for c in caps]),
+        ("local friction laws", [", ".join(friction_laws(c)) for c in caps]),
         ("sensitivities", ["yes" if c.sensitivities else "no" for c in caps]),
         ("time histories", ["yes" if c.histories else "no" for c in caps]),
     ]
     head = "| | " + " | ".join(f"{c.title} (`{c.name}`)" for c in caps) + " |\n"
     head += "|---" * (len(caps) + 1) + "|\n"
     return head + "".join(f"| {k} | " + " | ".join(v) + " |\n" for k, v in rows)
+
+
+#: The local friction laws and the parameter that switches each on (Coulomb's always holds).
+FRICTION_LAWS = {"static above kinetic": "static_ratio", "rate-and-state": "rs_a"}
+
+
+def friction_laws(c: Capabilities) -> list[str]:
+    """The local friction laws ``c`` covers: Coulomb's, and each whose parameter it uses."""
+    refused = {lim.parameter for lim in c.limits if lim.whole}
+    # the rate-and-state solver is chosen for rs_a > 0 only (Coulomb goes to the others)
+    coulomb = [] if c.name == "rate_state" else ["Coulomb"]
+    return [*coulomb, *(law for law, p in FRICTION_LAWS.items()
+                        if p in c.parameters and p not in refused)]
 
 
 def _outputs(c: Capabilities) -> str:

@@ -20,6 +20,7 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
+from history_checks import period_balance, section_rows
 from vibrofriction.params import Dimensionless
 from vibrofriction_reference import inplane_run
 
@@ -49,13 +50,6 @@ def _mean_n(a: float) -> float:
     return (th + a * math.sin(th)) / math.pi
 
 
-def _section_rows(h: vf.History) -> list[int]:
-    """The last row at each ``tau = 2 pi k`` (the state after any event there)."""
-    k = int(round(h.tau[-1] / TWO_PI))
-    return [int(np.flatnonzero(np.isclose(h.tau, TWO_PI * j, rtol=0, atol=1e-12))[-1])
-            for j in range(k + 1)]
-
-
 @pytest.fixture(scope="module", params=POINTS, ids=IDS)
 def steady(request):
     label, d, V = request.param
@@ -67,7 +61,7 @@ def test_steady_means_are_the_solvers(steady) -> None:
     d, V, h = steady
     r = vf.friction_coefficient(d, v_inertial=V)
     assert r.trusted
-    rows = _section_rows(h)
+    rows = section_rows(h)
     span = TWO_PI * (len(rows) - 1)
     mean_n = _mean_n(d.amplitude) * span
     mu = (h.impulse[rows[-1], 0] - h.impulse[rows[0], 0]) / mean_n
@@ -132,7 +126,7 @@ def test_agrees_with_the_reference(label: str, d: Dimensionless, V: float) -> No
                       eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x, a_y=d.a_y,
                       phase_y=d.phase_y, alpha_y=d.alpha_y, zeta_y=d.zeta_y,
                       inplane_on=d.inplane_on)
-    rows = _section_rows(h)
+    rows = section_rows(h)
     per_fx = np.diff(h.impulse[rows, 0]) / TWO_PI
     per_fy = np.diff(h.impulse[rows, 1]) / TWO_PI
     print(label, np.max(np.abs(per_fx - ref.period_fx)), np.max(np.abs(per_fy - ref.period_fy)))
@@ -151,19 +145,10 @@ def test_agrees_with_the_reference(label: str, d: Dimensionless, V: float) -> No
     assert np.all(np.abs(diss - ref.period_dissipation) / scale < 1e-3)
 
 
-def _balance(h: vf.History) -> float:
-    """The largest energy residual per period, relative to the work per period."""
-    rows = _section_rows(h)
-    E = h.stored_energy()
-    d = (h.dissipated_pin + h.dissipated_contact + h.dissipated_friction)
-    res = np.diff(h.work_input[rows]) - np.diff(d[rows]) - np.diff(E[rows])
-    return float(np.max(np.abs(res) / np.maximum(np.abs(np.diff(h.work_input[rows])), 1e-3)))
-
-
 @pytest.mark.parametrize("label,d,V", POINTS, ids=IDS)
 def test_energy_balance_per_period(label: str, d: Dimensionless, V: float) -> None:
-    coarse = _balance(vf.simulate(d, v_inertial=V, periods=2, samples_per_period=200))
-    fine = _balance(vf.simulate(d, v_inertial=V, periods=2, samples_per_period=800))
+    coarse = period_balance(vf.simulate(d, v_inertial=V, periods=2, samples_per_period=200))
+    fine = period_balance(vf.simulate(d, v_inertial=V, periods=2, samples_per_period=800))
     print(label, coarse, fine)
     assert fine < 1e-4
     assert fine < coarse / 6.0  # second order: 16 times smaller, up to the events' kinks
@@ -197,7 +182,7 @@ def test_plane_state_continues_a_history() -> None:
     whole = vf.simulate(d, v_inertial=V, periods=2)
     first = vf.simulate(d, v_inertial=V, periods=1)
     second = vf.simulate(d, v_inertial=V, periods=1, initial=first.plane_state)
-    r = _section_rows(whole)[-1]
+    r = section_rows(whole)[-1]
     np.testing.assert_allclose(second.f_y[-1], whole.f_y[r], atol=1e-8)
     np.testing.assert_allclose(second.x[-1] + V * TWO_PI, whole.x[r], atol=1e-8)
 

@@ -240,7 +240,7 @@ def test_contact_force_stays_in_the_cone_along_the_orbit() -> None:
         P = np.array([al, 2 * 0.05 * math.sqrt(al), be - al, et * (be - al), a,
                       float(rng.uniform(0.05, 1.0)), float(rng.uniform(0, 1)),
                       float(rng.uniform(0, 6)), float(rng.uniform(0.1, 1.5)),
-                      float(rng.uniform(0, 6)), float(rng.integers(0, 2)), 0.0, 0.0])
+                      float(rng.uniform(0, 6)), float(rng.integers(0, 2)), 0.0, 0.0, 1.0])
         P[plane.P_ALPHA_Y] = float(rng.uniform(0.2, 3.0))  # a pin that is not axisymmetric
         P[plane.P_GAMMA_Y] = 2 * float(rng.uniform(0.0, 0.3)) * math.sqrt(P[plane.P_ALPHA_Y])
         worst = max(worst, plane.cone_excess(P, 4, 1e-10))

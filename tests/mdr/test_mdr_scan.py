@@ -67,7 +67,8 @@ def test_a_coarse_scan_finds_the_events_of_a_fine_one():
 
 def test_the_scan_bounds_hold_on_random_segments():
     """``|f'|`` and ``|f''|`` of the four group functions, sampled densely on random
-    segments, stay within the bounds the scan uses (:func:`_scan_bounds`)."""
+    segments, stay within the bounds the scan uses (:func:`_scan_bounds`); the margins'
+    weight ``sw = static_ratio w`` with a static ratio 1 or above."""
     rng = np.random.default_rng(5)
     for _ in range(40):
         alpha = float(10 ** rng.uniform(-1.5, 0.5))
@@ -75,6 +76,7 @@ def test_the_scan_bounds_hold_on_random_segments():
         gamma = 2.0 * float(rng.choice([0.0, 0.1, 1.5])) * math.sqrt(alpha + K)
         w, kk, a, V = 0.05, float(10 ** rng.uniform(-2, 0)), float(rng.uniform(0, 1.5)), \
             float(10 ** rng.uniform(-2, 0))
+        sw = w * float(rng.choice([1.0, rng.uniform(1.0, 3.0)]))
         y0, yd0 = float(rng.normal()), float(rng.normal())
         theta = float(rng.uniform(0, 2 * math.pi))
         Sw = w * float(rng.integers(-3, 4))
@@ -85,7 +87,7 @@ def test_the_scan_bounds_hold_on_random_segments():
         dddc = derivative(ddc, m)
         cs = c[6] != 0.0 or c[7] != 0.0
         T = float(rng.uniform(0.1, 2 * math.pi))
-        lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, kk, a, V)
+        lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, sw, kk, a, V)
         d1 = np.zeros(4)
         d2 = np.zeros(4)
         f_prev = None
@@ -94,14 +96,14 @@ def test_the_scan_bounds_hold_on_random_segments():
             ct = math.cos(theta) * b[2] - math.sin(theta) * b[3]
             st = math.sin(theta) * b[2] + math.cos(theta) * b[3]
             yd, ydd, yddd = dot(dc, b), dot(ddc, b), dot(dddc, b)
-            fv = [_group_value(j, 0.1, 0.2, w, kk, a, V, dot(c, b), yd, y0, t, ct, st)
+            fv = [_group_value(j, 0.1, 0.2, w, sw, kk, a, V, dot(c, b), yd, y0, t, ct, st)
                   for j in range(4)]
             for j in range(4):
-                d1[j] = max(d1[j], abs(_group_slope(j, w, kk, a, V, yd, ydd, ct, st)))
-            # f'' in closed form: margins -+(w a cos tau) -+ k y''; slip velocities
+                d1[j] = max(d1[j], abs(_group_slope(j, w, sw, kk, a, V, yd, ydd, ct, st)))
+            # f'' in closed form: margins -+(sw a cos tau) -+ k y''; slip velocities
             # +-y''' - (w a/k) sin tau
-            d2[0] = max(d2[0], abs(-w * a * ct - kk * ydd))
-            d2[1] = max(d2[1], abs(-w * a * ct + kk * ydd))
+            d2[0] = max(d2[0], abs(-sw * a * ct - kk * ydd))
+            d2[1] = max(d2[1], abs(-sw * a * ct + kk * ydd))
             d2[2] = max(d2[2], abs(yddd - (w * a / kk) * st))
             d2[3] = max(d2[3], abs(-yddd - (w * a / kk) * st))
             if f_prev is not None:  # the slopes are those of the values

@@ -96,6 +96,12 @@ def test_rigid_undamped_critical_stiffness_is_the_classical_one() -> None:
         for factor, unstable in ((0.99, True), (1.01, False)):
             s = theory.sliding_eigenvalues(factor * closed, math.inf, 0.0, V, a, b, d_c, 1.0)
             assert (np.max(s.real) > 0) == unstable
+        for gamma in (1e-3, 0.5 * (b - a) / V):  # damped: the closed form with gamma
+            damped = float(theory.critical_stiffness_rigid(V, a, b, d_c, 1.0, gamma))
+            assert 0.0 < damped < closed
+            assert theory.critical_stiffness(math.inf, gamma, V, a, b, d_c, 1.0) == \
+                pytest.approx(damped, rel=1e-10)
+        assert theory.critical_stiffness_rigid(V, a, b, d_c, 1.0, 1.01 * (b - a) / V) == 0.0
 
 
 def test_critical_stiffness_separates_stable_from_unstable_roots() -> None:

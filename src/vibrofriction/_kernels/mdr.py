@@ -17,15 +17,19 @@ contact point, sign ``s``) exerts ``s n_i(tau)``, one out of contact nothing::
 package's basis (:mod:`.basis`: free motion, periodic response or, near the resonance
 ``alpha + K = 1``, the responses from rest). Events:
 
-* stick -> slip where the margin ``n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``);
+* stick -> slip where the margin ``s_r n_i - |k e_i|`` reaches 0 (slip sign ``sign e_i``;
+  ``s_r = static_ratio >= 1``, the static limit over the kinetic one, ``sr`` in the code);
   the margins of all stuck springs are one function of time minus each spring's constant
-  ``w g_i +- k e_i``, so only the largest constant on each side is scanned, and the
-  springs sharing it (a cluster that stuck together) slip together;
+  ``s_r w g_i +- k e_i``, so only the largest constant on each side is scanned, and the
+  springs sharing it (a cluster that stuck together) slip together; a slipping spring
+  exerts the kinetic ``+-n_i``, so where ``s_r > 1`` its force drops at the switch (its
+  energy goes to friction's dissipation) and, where the slip velocity is not positive
+  there, it sticks again at once (:func:`_slip_jump`);
 * slip -> stick where the slip velocity ``s (y' + V) - n_i'/k`` reaches 0: the same for
   every spring slipping in direction ``s`` (``n_i' = -w a sin tau``), so the group sticks
   at once;
 * lift-off and touch-down at the known phases ``cos tau = (g_i - 1)/a``; a spring touching
-  down starts unloaded, stuck if ``k |x'| <= n_i'`` there, else slipping with ``sign x'``.
+  down starts unloaded, stuck if ``k |x'| <= s_r n_i'`` there, else slipping with ``sign x'``.
 
 A longitudinal in-plane oscillation ``X = a_x cos(tau + phase_x)`` (issue 20,
 docs/inplane.md) enters as in the single-spring kernels (:func:`.phases.inplane_forcing`):
@@ -168,37 +172,38 @@ def _segment(alpha, gamma, K, E0, y0, yd0, Sw, Swg, V, a, theta, hc, hs):
 
 
 @jit
-def _group_value(kind, cp, cm, w, k, a, V, y, yd, y0, t, ctau, stau):
+def _group_value(kind, cp, cm, w, sw, k, a, V, y, yd, y0, t, ctau, stau):
     """The event function of a group: ``kind`` 0 the stuck springs' margin towards positive
-    slip, ``w (1 + a cos tau) - k u - cp`` (``u = y - y0 + V t``, ``cp`` the largest
-    ``w g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
-    ``w g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
+    slip, ``sw (1 + a cos tau) - k u - cp`` (``sw = static_ratio w``: a stuck spring holds
+    while ``k |e_i| <= static_ratio n_i``; ``u = y - y0 + V t``, ``cp`` the largest
+    ``sw g_i + k e_i`` of the stuck springs), 1 towards negative slip (``cm`` the largest
+    ``sw g_i - k e_i``), 2 and 3 the slip velocity of the springs slipping forwards and
     backwards (the same for every spring of the group: ``n_i' = -w a sin tau``);
     ``ctau``, ``stau``: ``cos tau``, ``sin tau``.
     """
     if kind == 0:
-        return w * (1.0 + a * ctau) - k * (y - y0 + V * t) - cp
+        return sw * (1.0 + a * ctau) - k * (y - y0 + V * t) - cp
     if kind == 1:
-        return w * (1.0 + a * ctau) + k * (y - y0 + V * t) - cm
+        return sw * (1.0 + a * ctau) + k * (y - y0 + V * t) - cm
     if kind == 2:
         return (yd + V) + (w * a / k) * stau
     return -(yd + V) + (w * a / k) * stau
 
 
 @jit
-def _group_slope(kind, w, k, a, V, yd, ydd, ctau, stau):
+def _group_slope(kind, w, sw, k, a, V, yd, ydd, ctau, stau):
     """The derivative of :func:`_group_value` (``ydd`` = ``y''``)."""
     if kind == 0:
-        return -w * a * stau - k * (yd + V)
+        return -sw * a * stau - k * (yd + V)
     if kind == 1:
-        return -w * a * stau + k * (yd + V)
+        return -sw * a * stau + k * (yd + V)
     if kind == 2:
         return ydd + (w * a / k) * ctau
     return -ydd + (w * a / k) * ctau
 
 
 @jit
-def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, fa, fb):
+def _refine_group(c, dc, m, cs, kind, cp, cm, w, sw, k, a, V, y0, cth, sth, ta, tb, fa, fb):
     """The root of a group's event function on ``[ta, tb]`` (``fa > 0 >= fb``; ``cth``,
     ``sth`` the cosine and sine of the segment's start phase) to round-off: Newton steps
     (the slope in closed form) kept inside the bracket (else regula falsi, Illinois), a
@@ -219,7 +224,7 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
         ct = cth * b[2] - sth * b[3]
         st = sth * b[2] + cth * b[3]
         yd = dot(dc, b)
-        f = _group_value(kind, cp, cm, w, k, a, V, dot(c, b), yd, y0, t, ct, st)
+        f = _group_value(kind, cp, cm, w, sw, k, a, V, dot(c, b), yd, y0, t, ct, st)
         if f > 0.0:
             ta, fa = t, f
             if side == -1:
@@ -232,7 +237,7 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
             side = 1
             if f == 0.0:
                 break
-        d = _group_slope(kind, w, k, a, V, yd, dot(ddc, b), ct, st)
+        d = _group_slope(kind, w, sw, k, a, V, yd, dot(ddc, b), ct, st)
         dt = -f / d if d != 0.0 else np.inf
         res = 1e-16 * max(1.0, t)
         if abs(dt) <= res:  # converged: step just across the root to close the bracket
@@ -242,7 +247,7 @@ def _refine_group(c, dc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, tb, 
 
 
 @jit
-def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t):
+def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, sw, k, a, V, y0, cth, sth, t):
     """A group's event function and its derivative at ``t`` (:func:`_group_value`,
     :func:`_group_slope`).
     """
@@ -250,8 +255,8 @@ def _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t):
     ct = cth * b[2] - sth * b[3]
     st = sth * b[2] + cth * b[3]
     yd = dot(dc, b)
-    return (_group_value(kind, cp, cm, w, k, a, V, dot(c, b), yd, y0, t, ct, st),
-            _group_slope(kind, w, k, a, V, yd, dot(ddc, b), ct, st))
+    return (_group_value(kind, cp, cm, w, sw, k, a, V, dot(c, b), yd, y0, t, ct, st),
+            _group_slope(kind, w, sw, k, a, V, yd, dot(ddc, b), ct, st))
 
 
 @jit
@@ -275,23 +280,24 @@ def _sup(c, m, T, u):
 
 
 @jit
-def _scan_bounds(dc, ddc, m, T, w, k, a, V):
+def _scan_bounds(dc, ddc, m, T, w, sw, k, a, V):
     """``(L_m, L_v, M_m, M_v)``: bounds on ``[0, T]`` of the groups' first derivatives
-    (margins: ``|f'| <= w a + k (|y'| + |V|)``; slip velocities: ``|y''| + w a/k``), for the
-    scan's longer steps, and of their second derivatives (margins: ``|f''| <= w a +
-    k |y''|``; slip velocities: ``|y'''| + w a/k``), for :func:`_first_crossing`; ``dc``,
-    ``ddc`` the coefficients of ``y'``, ``y''`` (the bounds of :func:`.basis.sup_bound`).
+    (margins: ``|f'| <= sw a + k (|y'| + |V|)``, ``sw = static_ratio w``; slip velocities:
+    ``|y''| + w a/k``), for the scan's longer steps, and of their second derivatives
+    (margins: ``|f''| <= sw a + k |y''|``; slip velocities: ``|y'''| + w a/k``), for
+    :func:`_first_crossing`; ``dc``, ``ddc`` the coefficients of ``y'``, ``y''`` (the
+    bounds of :func:`.basis.sup_bound`).
     """
     u = 0.0
     if dc[6] != 0.0 or dc[7] != 0.0 or ddc[6] != 0.0 or ddc[7] != 0.0:
         u = _u_bound(m, T)
     s2 = _sup(ddc, m, T, u)
-    return (w * a + k * (_sup(dc, m, T, u) + abs(V)), s2 + w * a / k, w * a + k * s2,
+    return (sw * a + k * (_sup(dc, m, T, u) + abs(V)), s2 + w * a / k, sw * a + k * s2,
             _sup(derivative(ddc, m), m, T, u) + w * a / k)
 
 
 @jit
-def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, ta, fa, da,
+def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, sw, k, a, V, y0, cth, sth, ta, fa, da,
                     tb, fb, db, m2, tol, stk):
     """The earliest sign change of a group's event function ``f`` on ``[ta, tb]`` (values
     ``fa``, ``fb`` and slopes ``da``, ``db`` at the ends), never missed, as in
@@ -331,7 +337,7 @@ def _first_crossing(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t
                 top -= 1
                 continue
         t = 0.5 * (ta + b)
-        f, d = _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, k, a, V, y0, cth, sth, t)
+        f, d = _group_point(c, dc, ddc, m, cs, kind, cp, cm, w, sw, k, a, V, y0, cth, sth, t)
         top += 1
         stk[top, 0] = t
         stk[top, 1] = f
@@ -533,10 +539,10 @@ def _tree_collect(tree, P, thr, stack, out, n, skip):
 
 
 @jit
-def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, sw, k, area):
     """Move spring ``i`` to the state ``new`` (a stuck one with ``eh_i = eh_new``), keeping
     the members of each state, the running sums and the stuck springs' max-trees of
-    ``w g_i +- k eh_i`` up to date: O(log M).
+    ``sw g_i +- k eh_i`` (``sw = static_ratio w``) up to date: O(log M).
     """
     old = st[i]
     if old == STICK:
@@ -564,8 +570,8 @@ def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, ar
         eh[i] = eh_new
         sums[S_EH] += eh_new
         sums[S_AST] += area[i]
-        _tree_set(tp, P, i, w * g[i] + k * eh_new)
-        _tree_set(tm, P, i, w * g[i] - k * eh_new)
+        _tree_set(tp, P, i, sw * g[i] + k * eh_new)
+        _tree_set(tm, P, i, sw * g[i] - k * eh_new)
     elif new == SLIP_POS:
         sums[S_GP] += g[i]
         sums[S_ASL] += area[i]
@@ -575,7 +581,7 @@ def _switch(i, new, eh_new, st, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, ar
 
 
 @jit
-def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
+def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, sw, k, area):
     """The bookkeeping of :func:`_switch` from scratch (``U = 0``, ``eh = e``): at every
     section, so that the running sums carry no round-off from period to period.
     """
@@ -593,8 +599,8 @@ def _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area):
             eh[i] = e[i]
             sums[S_EH] += e[i]
             sums[S_AST] += area[i]
-            tp[P + i] = w * g[i] + k * e[i]
-            tm[P + i] = w * g[i] - k * e[i]
+            tp[P + i] = sw * g[i] + k * e[i]
+            tm[P + i] = sw * g[i] - k * e[i]
         elif s == SLIP_POS:
             sums[S_GP] += g[i]
             sums[S_ASL] += area[i]
@@ -660,8 +666,30 @@ def _scratch(M):
 
 
 @jit
+def _slip_jump(i, forward, e_i, xd, ctau, stau, a, w, k, g, acc, st, eh, memb, cnt, pos, sums,
+               tp, tm, P, sw, area, U):
+    """Stick to slip of spring ``i`` where ``static_ratio > 1`` (``forward``: towards
+    positive slip; ``e_i`` its elongation at the static limit, ``xd`` the body's velocity
+    relative to the substrate, ``ctau``, ``stau``: ``cos tau``, ``sin tau``). Its force drops
+    to the kinetic ``n_i`` (the massless contact point jumps): the spring's energy
+    ``(k^2 e_i^2 - n_i^2)/(2 k)`` goes to the friction's dissipation ``acc[4]``. Where the
+    slip velocity ``s x' - n_i'/k`` is not positive there the slip ends at once: the spring
+    sticks again at the kinetic force, ``e_i = s n_i/k``.
+    """
+    n = max(w * (1.0 + a * ctau - g[i]), 0.0)
+    acc[4] += 0.5 * (k * e_i * e_i - n * n / k)
+    sgn = 1.0 if forward else -1.0
+    if sgn * xd + (w * a / k) * stau > 0.0:  # :func:`_group_value` 2 or 3
+        _switch(i, SLIP_POS if forward else SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp,
+                tm, P, g, sw, k, area)
+    else:
+        _switch(i, STICK, sgn * n / k - U, st, eh, memb, cnt, pos, sums, tp, tm, P, g, sw, k,
+                area)
+
+
+@jit
 def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
-            frac, viol, rec, ri, acc):
+            frac, viol, rec, ri, acc, sr):
     """One period of the row from the section state ``(y, y', st, e)`` (``st``, ``e``
     modified in place; :func:`run_periods`). Returns ``(y, y', int y, events, no progress,
     ri, viol)``; ``frac`` gets the period's area fractions.
@@ -670,12 +698,13 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
     (P, stack, tp, tm, memb, cnt, pos, sums, eh, fl, buf, taken, e_cur, gprev, groot, gon,
      gfresh, gslope, stk) = scr
     k = (beta - alpha) * dxi
+    sw = sr * w  # the static limit's weight: a stuck spring holds while k |e_i| <= sr n_i
     tol_c = 1e-11 * w * (2.0 + a)
     tol_s = 1e-12 * w * (1.0 + a + abs(g[M - 1]))
     nev = ev_ph.size
     tol_ev = 1e-13 * TWO_PI
     stuck_loop = False
-    _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+    _rebuild(st, e, eh, memb, cnt, pos, sums, tp, tm, P, g, sw, k, area)
     U = 0.0
     nf = 0
     ptr = 0
@@ -712,9 +741,9 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             i = fl[q]
             s = st[i]
             if s == STICK:
-                if w * g[i] + k * eh[i] >= cph - tol_c:
+                if sw * g[i] + k * eh[i] >= cph - tol_c:
                     gfresh[0] = True
-                if w * g[i] - k * eh[i] >= cmh - tol_c:
+                if sw * g[i] - k * eh[i] >= cmh - tol_c:
                     gfresh[1] = True
             elif s == SLIP_POS:
                 gfresh[2] = True
@@ -748,8 +777,8 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             groot[j] = np.inf
             if not gon[j]:
                 continue
-            gprev[j] = _group_value(j, cp, cm, w, k, a, V, y, yd, y, 0.0, cth, sth)
-            gslope[j] = _group_slope(j, w, k, a, V, yd, ydd, cth, sth)
+            gprev[j] = _group_value(j, cp, cm, w, sw, k, a, V, y, yd, y, 0.0, cth, sth)
+            gslope[j] = _group_slope(j, w, sw, k, a, V, yd, ydd, cth, sth)
             tl = tol_s if j < 2 else tol_v
             if not gfresh[j] and gprev[j] < -tl:
                 groot[j] = 0.0
@@ -761,7 +790,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
             t_ev = 0.0
         else:
             h = min(TWO_PI / substeps, 0.5 / math.sqrt(alpha + K))
-            lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, k, a, V)
+            lb_m, lb_v, m2_m, m2_v = _scan_bounds(dc, ddc, m, T, w, sw, k, a, V)
             ta = 0.0
             while ta < T and not scanned:
                 step = h
@@ -789,8 +818,8 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                 for j in range(4):
                     if not gon[j]:
                         continue
-                    f = _group_value(j, cp, cm, w, k, a, V, yb, ydb, y, tb, ctau, stau)
-                    d = _group_slope(j, w, k, a, V, ydb, yddb, ctau, stau)
+                    f = _group_value(j, cp, cm, w, sw, k, a, V, yb, ydb, y, tb, ctau, stau)
+                    d = _group_slope(j, w, sw, k, a, V, ydb, yddb, ctau, stau)
                     if j < 2 and f > 0.0 and -f > viol:
                         viol = -f
                     fa = gprev[j]
@@ -812,7 +841,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                             continue
                         tl = tol_s if j < 2 else tol_v
                         tq, fq, dq, tr, fr, dr = _first_crossing(
-                            c, dc, ddc, m, cs, j, cp, cm, w, k, a, V, y, cth, sth, ta, fa,
+                            c, dc, ddc, m, cs, j, cp, cm, w, sw, k, a, V, y, cth, sth, ta, fa,
                             gslope[j], tb, f, d, m2, tl, stk)
                         if tr >= 0.0 and fq <= 0.0:
                             # a group at its root at the start (just switched) can rise
@@ -830,15 +859,15 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                                         continue
                                 else:
                                     tp_ = t0_ * 0.5 ** it
-                                fp, dp = _group_point(c, dc, ddc, m, cs, j, cp, cm, w, k,
+                                fp, dp = _group_point(c, dc, ddc, m, cs, j, cp, cm, w, sw, k,
                                                       a, V, y, cth, sth, tp_)
                                 if fp > tl:
                                     tq, fq, dq, tr, fr, dr = _first_crossing(
-                                        c, dc, ddc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                                        c, dc, ddc, m, cs, j, cp, cm, w, sw, k, a, V, y, cth,
                                         sth, tp_, fp, dp, t0_, f0_, d0_, m2, tl, stk)
                                     break
                         if tr >= 0.0:
-                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, k, a, V, y, cth,
+                            r = _refine_group(c, dc, m, cs, j, cp, cm, w, sw, k, a, V, y, cth,
                                               sth, tq, tr, fq, fr)
                             groot[j] = r
                             if r < best:
@@ -894,17 +923,21 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                     nb += 1
             for q in range(nb):
                 i = buf[q]
-                if q < n0:
+                if q < n1 and sr != 1.0:
+                    _slip_jump(i, q < n0, eh[i] + U, yd1 + V, cth * b[2] - sth * b[3],
+                               sth * b[2] + cth * b[3], a, w, k, g, acc, st, eh, memb, cnt,
+                               pos, sums, tp, tm, P, sw, area, U)
+                elif q < n0:
                     _switch(i, SLIP_POS, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                            g, w, k, area)
+                            g, sw, k, area)
                 elif q < n1:
                     _switch(i, SLIP_NEG, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                            g, w, k, area)
+                            g, sw, k, area)
                 else:
                     n = w * (1.0 + a * (cth * b[2] - sth * b[3]) - g[i])
                     sgn = 1.0 if q < n2 else -1.0
                     _switch(i, STICK, sgn * max(n, 0.0) / k - U, st, eh, memb, cnt,
-                            pos, sums, tp, tm, P, g, w, k, area)
+                            pos, sums, tp, tm, P, g, sw, k, area)
                 fl[nf] = i
                 nf += 1
                 events += 1
@@ -916,15 +949,15 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
                     if ev_on[q]:
                         rate = -w * a * (sth * b[2] + cth * b[3])
                         xd = yd1 + V
-                        if k * abs(xd) <= rate:
+                        if k * abs(xd) <= sr * rate:  # the static limit grows faster
                             _switch(i, STICK, -U, st, eh, memb, cnt, pos, sums, tp, tm,
-                                    P, g, w, k, area)
+                                    P, g, sw, k, area)
                         else:
                             _switch(i, SLIP_POS if xd > 0.0 else SLIP_NEG, 0.0, st, eh,
-                                    memb, cnt, pos, sums, tp, tm, P, g, w, k, area)
+                                    memb, cnt, pos, sums, tp, tm, P, g, sw, k, area)
                     else:
                         _switch(i, FLIGHT, 0.0, st, eh, memb, cnt, pos, sums, tp, tm, P,
-                                g, w, k, area)
+                                g, sw, k, area)
                     fl[nf] = i
                     nf += 1
                     events += 1
@@ -942,7 +975,7 @@ def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, 
 
 @jit
 def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_periods,
-                state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None):
+                state_tol, y, yd, st, e, hc=0.0, hs=0.0, rec=None, sr=1.0):
     """Integrate the row period by period from the section state ``(y, y', st, e)``
     (modified in place) until the section state repeats within ``state_tol`` (relative to
     its size) after at least ``min_periods``, or ``max_periods``. ``hc``, ``hs``: the
@@ -960,7 +993,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     integrals of ``sum f_i`` (``pf``, exact: ``-(alpha int y + gamma [y] + [y'])``, the
     in-plane force integrating to 0 over a period) and
     of ``sum n_i`` (``pn``), the time-averaged area fractions (stick, slip, out of
-    contact) of the last period, the largest ``|f_i| - n_i`` seen at the scan points, the
+    contact) of the last period, the largest ``|f_i| - sr n_i`` of the stuck springs seen at
+    the scan points, the
     number of events of the last period (``-1``: no progress) and the final body state.
 
     ``rec = (tau, body, f, state, ip)``, optional: record the samples at the sorted times
@@ -968,7 +1002,8 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
     every spring's tangential force ``f`` and state ``state`` (``T x M``), from the closed
     forms (:func:`_record_segment`; ``ip = (c, d, holder)`` the in-plane oscillation
     ``X = c cos tau - d sin tau`` of the substrate or, ``holder != 0``, of the holder, for
-    the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.
+    the energies: :func:`_accumulate`); pass ``min_periods = max_periods``.  ``sr``: the
+    static ratio ``mu_static/mu0 >= 1`` (module docstring).
     """
     geo = _row_setup(a, n_exp, M)
     scr = _scratch(M)
@@ -993,7 +1028,7 @@ def run_periods(alpha, beta, a, V, gamma, n_exp, M, substeps, min_periods, max_p
         st_old[:] = st
         y, yd, iy, events, stuck_loop, ri, viol = _period(
             alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
-            frac, viol, rec, ri, acc)
+            frac, viol, rec, ri, acc, sr)
         periods = period + 1
         if stuck_loop:
             break
@@ -1044,7 +1079,8 @@ def _anderson_step(xs, gs, nh, out):
 
 @jit
 def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_periods,
-               accelerate, anderson, accelerated_periods, y, yd, st, e, hc=0.0, hs=0.0):
+               accelerate, anderson, accelerated_periods, y, yd, st, e, hc=0.0, hs=0.0,
+               sr=1.0):
     """The row's steady state from the section state ``(y, y', st, e)`` (modified in
     place): the period map iterated until the section state repeats within ``state_tol``
     (relative), with ``accelerate`` first (for at most ``accelerated_periods``) with the
@@ -1052,11 +1088,12 @@ def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_peri
     Anderson mixing of the last ``anderson`` period maps once the springs' states at the
     section repeat (a change of them restarts the history), then plain iteration (at
     least 5 periods of it before convergence counts). The loop of
-    :func:`vibrofriction.solver.mdr.mdr_row`, compiled.
+    :func:`vibrofriction.solver.mdr.mdr_row`, compiled; ``sr`` the static ratio.
 
     Returns ``(periods, converged, pf, nint, frac, viol, events, y, yd)``: the per-period
     ``int sum f_i``, ``int sum n_i`` over a period, the last period's area fractions, the
-    largest ``|f_i| - n_i`` at the scan points, the last period's events (``-1``: no
+    largest ``|f_i| - sr n_i`` of the stuck springs at the scan points (``sr`` the static
+    ratio), the last period's events (``-1``: no
     progress) and the final body state.
     """
     geo = _row_setup(a, n_exp, M)
@@ -1090,7 +1127,7 @@ def steady_row(alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_peri
         yd_old = yd
         y, yd, iy, events, stuck_loop, _, viol = _period(
             alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, periods, y, yd, st, e,
-            frac, viol, None, 0, acc)
+            frac, viol, None, 0, acc, sr)
         periods += 1
         if stuck_loop:
             events = -1

@@ -16,7 +16,11 @@ the contact isotropic.  Stick: ``e' = v - v_s``,
 k e + c (v - v_s)``, ``e' = (f - k e)/c``.  Slip, Jenkins (``c = 0``): ``|e| = n/k``,
 ``d = e/|e|``, ``f = n d``, ``e' = w - lam d`` with ``w = v - v_s`` and the slip speed
 ``lam = d.w - n'/k`` (slip ends where it falls to 0).  Flight: ``f = 0``, ``e' = -k e/c``
-(``e = 0`` for Jenkins).
+(``e = 0`` for Jenkins).  A static coefficient above the kinetic one (``static_ratio = s >
+1``, ``P[P_SR]``): stick holds while ``|f| <= s n`` (the static circle), slip exerts ``n``
+(the kinetic one), so the force drops at each stick -> slip (a Jenkins contact's ``e``
+jumps to the kinetic cone) and the phase at a section is carried with the state
+(:func:`entry_hint`, ``W[W_MODE]``).
 
 Method: every phase (stick, slip, flight) is integrated by the Dormand-Prince 5(4)
 embedded Runge-Kutta pair (local extrapolation, error control on ``y, v, e`` and the
@@ -76,6 +80,7 @@ from .codes import (
     T_INPLANE_ON,
     T_PHASE_X,
     T_PHASE_Y,
+    T_STATIC_RATIO,
     T_V,
     T_ZETA,
     T_ZETA_Y,
@@ -95,7 +100,13 @@ N_S = 6  # the section state: y_x, y_y, v_x, v_y, e_x, e_y
 # parameter vector
 P_ALPHA, P_GAMMA, P_K, P_C, P_A, P_V, P_AX, P_PX, P_AY, P_PY, P_HOLDER = range(11)
 P_ALPHA_Y, P_GAMMA_Y = 11, 12  # the pin across the sliding
-N_P = 13
+P_SR = 13  # static_ratio: a stuck contact holds while |f| <= P[P_SR] n
+N_P = 14
+W_MODE = 14
+"""The row of the work array ``W`` that carries the phase across a section where the state
+does not fix it (``static_ratio > 1``): ``W[W_MODE, 0]`` the phase the period map starts
+from, ``W[W_MODE, 1]`` the phase it ended in (:func:`entry_hint`)."""
+N_W = 15
 # counters: events, steps, rejected steps, failures; then the step budget of a period
 # (0: MAX_STEPS_PER_PERIOD; Newton's trial states get a smaller one)
 C_EVENTS, C_STEPS, C_REJECT, C_FAIL, C_LIMIT = range(5)
@@ -207,7 +218,7 @@ def switch_function(mode, P, t, z):
     n, _ = normal_force(P[P_A], t)
     if mode == STICK:
         fx, fy, _, _, _ = contact(STICK, P, t, z)
-        return n - math.hypot(fx, fy)
+        return P[P_SR] * n - math.hypot(fx, fy)
     return contact(SLIP, P, t, z)[4]
 
 
@@ -339,10 +350,11 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
 @jit
 def _account(mode, P, t, dt, z0, z1, acc, ph):
     acc[ph] += dt
-    if acc.shape[0] > 4 and mode != FLIGHT:  # a check asked for: the largest |f| - n
+    if acc.shape[0] > 4 and mode != FLIGHT:  # a check asked for: the largest |f| - bound
         fx, fy, _, _, _ = contact(mode, P, t + dt, z1)
         n, _ = normal_force(P[P_A], t + dt)
-        acc[4] = max(acc[4], math.hypot(fx, fy) - n)
+        bound = P[P_SR] * n if mode == STICK else n  # static circle in stick, kinetic in slip
+        acc[4] = max(acc[4], math.hypot(fx, fy) - bound)
     if mode == SLIP:
         f0 = contact(SLIP, P, t, z0)[0]
         f1 = contact(SLIP, P, t + dt, z1)[0]
@@ -367,6 +379,15 @@ def entry(P, t, z):
     r = math.hypot(z[4], z[5])
     if k * r < n * (1.0 - 1e-9) or r == 0.0:
         return STICK
+    return _onto_cone(P, t, z, n, k, r)
+
+
+@jit
+def _onto_cone(P, t, z, n, k, r):
+    """A Jenkins contact's elongation ``e`` (of length ``r``) put on the kinetic cone ``|e| =
+    n/k``, its direction kept: slip where the slip speed there is positive, else stick a
+    relative :data:`MARGIN` inside.
+    """
     z[4] *= n / (k * r)
     z[5] *= n / (k * r)
     if contact(SLIP, P, t, z)[4] > 0.0:
@@ -377,8 +398,45 @@ def entry(P, t, z):
 
 
 @jit
+def entry_hint(P, t, z, hint):
+    """The phase of a contact state whose phase before was ``hint`` (``z`` adjusted in
+    place).  ``static_ratio = 1`` or a slipping ``hint``: :func:`entry` (slip where the
+    state is on or beyond the kinetic circle with a positive slip speed).  Above 1 a
+    stuck state holds up to the static circle ``static_ratio n`` (a force between the two
+    circles is held in stick and slides in slip: the state alone does not fix the phase,
+    which is therefore carried across the section): stick unless it lies at or beyond
+    the static circle with its margin falling; then it slips, the force dropping to ``n``
+    (a Jenkins contact's elongation jumps to the kinetic cone ``n/k``), and sticks again
+    at once where its slip speed there is not positive.
+    """
+    sr = P[P_SR]
+    if sr == 1.0 or hint == SLIP:
+        return entry(P, t, z)
+    k, c = P[P_K], P[P_C]
+    n, dn = normal_force(P[P_A], t)
+    if c > 0.0:
+        fx, fy, _, _, _ = contact(STICK, P, t, z)
+        return STICK if math.hypot(fx, fy) <= sr * n else SLIP
+    r = math.hypot(z[4], z[5])
+    if r == 0.0 or k * r < sr * n * (1.0 - 1e-9):
+        return STICK
+    _, _, _, _, vsx, vsy = drive(P, t)
+    rate = (z[4] * (z[2] - vsx) + z[5] * (z[3] - vsy)) / r  # d|e|/dt in stick
+    if k * rate <= sr * dn:  # the margin sr n - k |e| does not fall: still stuck
+        z[4] *= sr * n / (k * r) * (1.0 - MARGIN)
+        z[5] *= sr * n / (k * r) * (1.0 - MARGIN)
+        return STICK
+    return _onto_cone(P, t, z, n, k, r)  # from the static circle: the jump
+
+
+@jit
 def switch(mode, P, t, z):
-    """The phase after the switch of ``mode`` at ``t`` (``z`` adjusted in place)."""
+    """The phase after the switch of ``mode`` at ``t`` (``z`` adjusted in place).
+
+    Stick to slip of a Jenkins contact puts ``e`` on the kinetic cone ``|e| = n/k``: with
+    ``static_ratio > 1`` a jump from the static circle, after which the slip speed may be
+    negative at once (the contact sticks again, at ``n/k``: a slip of no duration).
+    """
     k, c = P[P_K], P[P_C]
     if c > 0.0:
         return SLIP if mode == STICK else STICK
@@ -388,6 +446,10 @@ def switch(mode, P, t, z):
         if r > 0.0:
             z[4] *= n / (k * r)
             z[5] *= n / (k * r)
+        if P[P_SR] != 1.0 and contact(SLIP, P, t, z)[4] <= 0.0:
+            z[4] *= 1.0 - MARGIN
+            z[5] *= 1.0 - MARGIN
+            return STICK
         return SLIP
     s = n / (k * r) * (1.0 - MARGIN)
     z[4] *= s
@@ -400,14 +462,14 @@ def touchdown(P, t, z):
     """Contact begins at ``t`` after a flight."""
     k = P[P_K]
     if P[P_C] > 0.0:
-        return entry(P, t, z)
+        return entry_hint(P, t, z, STICK)  # a re-formed contact starts stuck
     n, dn = normal_force(P[P_A], t)
     _, _, _, _, vsx, vsy = drive(P, t)
     wx, wy = z[2] - vsx, z[3] - vsy
     w = math.hypot(wx, wy)
     z[4] = 0.0
     z[5] = 0.0
-    if dn >= k * w or w == 0.0:
+    if P[P_SR] * dn >= k * w or w == 0.0:  # stuck while the static circle grows faster
         return STICK
     z[4] = n / k * wx / w
     z[5] = n / k * wy / w
@@ -473,12 +535,13 @@ def period_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events):
         z[i] = s[i]
     z[6] = 0.0
     z[7] = 0.0
-    mode = entry(P, 0.0, z)
+    mode = entry_hint(P, 0.0, z, int(W[W_MODE, 0]))
     mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events)
     for i in range(N_S):
         sout[i] = z[i]
     if ok and mode != FLIGHT:  # put the end state through the same entry rule
-        entry(P, TWO_PI, sout)
+        mode = entry_hint(P, TWO_PI, sout, mode)
+    W[W_MODE, 1] = mode
     return ok, z[6], z[7]
 
 
@@ -544,6 +607,9 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     if not ok:
         info[2] += periods
         return False
+    # static_ratio > 1: the phase at the section is part of the state (W[W_MODE, 0],
+    # kept through the search); an orbit must end in the phase it started from
+    same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
     cnt[C_LIMIT] = TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
     res = _dist(ph, s, k)
     it = 0
@@ -551,7 +617,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
         if res <= tol:
             info[0], info[1] = it, res
             info[2] += periods
-            return True
+            return same_phase
         it += 1
         for j in range(N_S):
             hj = 1e-7 * (1.0 + abs(s[j])) if j < 4 else 1e-7 * (1.0 / k + abs(s[j]))
@@ -595,6 +661,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
                         s[i] = sp[i]
                         ph[i] = pp[i]
                     res = rn
+                    same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
                     improved = True
                     break
             lam *= 0.5
@@ -603,7 +670,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     info[0], info[1] = it, res
     info[2] += periods
     cnt[C_LIMIT] = 0
-    return res <= tol or res <= floor
+    return (res <= tol or res <= floor) and same_phase
 
 
 ITER_RESERVE = 2000
@@ -645,6 +712,7 @@ def iterate(P, s, rtol, hmax, W, cnt, max_events, tol, floor, max_it, info):
         d = _dist(s2, s, k)
         for i in range(N_S):
             s[i] = s2[i]
+        W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
         ring[it % (2 * ITER_SPAN)] = d
         if it >= 2 * ITER_SPAN and d > floor:
             recent, before = 0.0, 0.0
@@ -685,9 +753,10 @@ def start_state(P, init_kind, y0, xd0, e0, s):
 
 @jit
 def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
-               on_substrate):
+               on_substrate, static_ratio=1.0):
     """The parameter vector ``P`` of a point (``alpha_y``, ``zeta_y``: the pin across the
-    sliding, resolved: ``alpha``, ``zeta`` for an axisymmetric one).
+    sliding, resolved: ``alpha``, ``zeta`` for an axisymmetric one; ``static_ratio`` the
+    static circle's radius over the kinetic one's).
     """
     P = np.empty(N_P)
     P[P_ALPHA] = alpha
@@ -699,24 +768,27 @@ def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y
     P[P_A], P[P_V] = a, V
     P[P_AX], P[P_PX], P[P_AY], P[P_PY] = a_x, phase_x, a_y, phase_y
     P[P_HOLDER] = 0.0 if on_substrate else 1.0
+    P[P_SR] = static_ratio
     return P
 
 
 @jit
 def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
                        zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
-                       max_events, out_f, out_i):
+                       max_events, out_f, out_i, static_ratio=1.0):
     """Steady state of the 2-D model at one point into the output rows (columns of
     ``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``); ``out_f[O_LAT]`` the lateral ratio.
 
     ``rtol`` the Runge-Kutta tolerance (``atol = rtol``); the error estimate adds the
     difference from a second solve at ``100 rtol`` to the section residual's effect.
     ``max_periods`` bounds the whole search (an orbit found later is not converged);
-    ``max_events`` the switches per period (chatter: status failed).
+    ``max_events`` the switches per period (chatter: status failed).  ``static_ratio``:
+    a stuck contact holds while ``|f| <= static_ratio n`` (the static circle), a
+    slipping one exerts ``n`` (the kinetic circle).
     """
     plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
                          zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
-                         max_events, out_f, out_i, np.empty(N_S))
+                         max_events, out_f, out_i, np.empty(N_S), static_ratio)
 
 
 @jit
@@ -737,6 +809,7 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
         d = _dist(s2, s, k)
         for i in range(N_S):
             s[i] = s2[i]
+        W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
         if d < 1e-4:
             break
     return periods
@@ -797,6 +870,7 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     periods += 1
     # the tolerance's effect: the same orbit at 100 rtol
     sl = s.copy()
+    hint = W[W_MODE, 0]
     info[:] = 0.0
     loose = np.zeros(7)
     if use_newton:
@@ -811,6 +885,7 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
         err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
     else:
         err = math.inf
+    W[W_MODE, 0] = hint  # the orbit's phase at its section
     periods += int(info[2]) + 1
     # the section residual: a state error res moves a mean by about res/(1 - mult)
     err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
@@ -837,9 +912,13 @@ def _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status, mean
         for i in range(N_S):
             s[i] = s0[i]
     sl = s.copy()
+    hint = W[W_MODE, 0]
     spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
+    hint_end = W[W_MODE, 0]
+    W[W_MODE, 0] = hint
     loose = np.zeros(7)
     average(P, sl, 100.0 * rtol, hmax, W, cnt, max_events, loose)
+    W[W_MODE, 0] = hint_end
     if cnt[C_FAIL] == 0:
         status = ST_AVERAGED
         out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
@@ -863,7 +942,7 @@ def _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
         z = W[13]
         for i in range(N_S):
             z[i] = s[i]
-        mode = entry(P, 0.0, z)
+        mode = entry_hint(P, 0.0, z, int(W[W_MODE, 0]))
         fx = contact(mode, P, 0.0, z)[0]
         out_f[O_Y] = z[0]
         out_f[O_XD] = z[2]
@@ -874,6 +953,8 @@ def _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
         out_f[O_ERR] = math.inf
     for i in range(N_S):
         s_out[i] = s[i]
+    if s_out.shape[0] > N_S:  # the phase at the section (static_ratio > 1: part of the state)
+        s_out[N_S] = W[W_MODE, 0]
     out_f[O_MULT] = mult
     out_f[O_WORK] = periods
     out_i[I_STATUS] = status
@@ -885,19 +966,23 @@ def _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
 @jit
 def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y,
                          zeta_y, on_substrate, init_kind, y0, xd0, e0, rtol, max_periods,
-                         max_events, out_f, out_i, s_out):
+                         max_events, out_f, out_i, s_out, static_ratio=1.0):
     """:func:`plane_steady_state`, and the full section state ``(y_x, y_y, v_x, v_y, e_x,
     e_y)`` it ends on into ``s_out`` (the periodic orbit's, or the averaging window's
-    end; the output rows keep only the x components).
+    end; the output rows keep only the x components); a seventh element of ``s_out``, if
+    given, gets the phase at that section (the hint of :func:`entry_hint`).
     """
     P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
-                   on_substrate)
+                   on_substrate, static_ratio)
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
     out_i[:] = 0
     out_i[I_PHASE] = -1
     hmax = max_step(P)
-    W = np.zeros((14, N_Z))
+    W = np.zeros((N_W, N_Z))
+    # the phase before the start: steady sliding slips (where the state allows it), a
+    # contact with no history (rest, an explicit state) is stuck
+    W[W_MODE, 0] = SLIP if init_kind == 0 else STICK
     cnt = np.zeros(N_C, np.int64)
     s = np.empty(N_S)
     J = np.zeros((N_S, N_S))
@@ -939,7 +1024,7 @@ def cone_excess(P, periods, rtol):
     from the sliding start of the parameter vector ``P`` (a check of the phase rules).
     """
     hmax = max_step(P)
-    W = np.zeros((14, N_Z))
+    W = np.zeros((N_W, N_Z))
     cnt = np.zeros(N_C, np.int64)
     acc = np.zeros(5)
     acc[4] = -math.inf
@@ -948,7 +1033,7 @@ def cone_excess(P, periods, rtol):
     z = W[13]
     for i in range(N_S):
         z[i] = s[i]
-    mode = entry(P, 0.0, z)
+    mode = entry_hint(P, 0.0, z, SLIP)  # the sliding start
     for j in range(periods):
         mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000)
         if not ok:
@@ -972,7 +1057,7 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
         z[i] = s[i]
     z[6] = 0.0
     z[7] = 0.0
-    mode = entry(P, 0.0, z)
+    mode = entry_hint(P, 0.0, z, int(W[W_MODE, 0]))
     pfx = np.zeros(N_AVG)
     pfy = np.zeros(N_AVG)
     acc = np.zeros(4)
@@ -994,6 +1079,7 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
         means[2 + i] = acc[i] / (TWO_PI * N_AVG)
     for i in range(N_S):
         s[i] = z[i]
+    W[W_MODE, 0] = mode
     h = N_AVG // 2
     e1 = abs(pfx[:h].sum() - pfx[h:].sum()) / (h * nbar)
     e2 = abs(pfy[:h].sum() - pfy[h:].sum()) / (h * nbar)
@@ -1012,7 +1098,7 @@ def plane_steady_state_many(points, init_kind, init, rtol, max_periods, max_even
                            p[T_ETA_C], p[T_A_X], p[T_PHASE_X], p[T_A_Y], p[T_PHASE_Y],
                            p[T_ALPHA_Y], p[T_ZETA_Y], p[T_INPLANE_ON] == 0.0, init_kind,
                            init[i, 0], init[i, 1], init[i, 2], rtol, max_periods,
-                           max_events, out_f[i], out_i[i])
+                           max_events, out_f[i], out_i[i], p[T_STATIC_RATIO])
 
 
 # columns of a 2-D history row (plane_history)
@@ -1045,7 +1131,7 @@ def _record(P, t, z, mode, event, out, row):
 
 
 @jit
-def plane_history(P, s, periods, grid, rtol, max_events, out):
+def plane_history(P, s, periods, grid, rtol, max_events, out, hint=STICK):
     """Integrate ``periods`` drive periods from the section state ``s`` (6) at ``tau =
     0``, recording a row (:data:`N_H` columns) at every time of the sorted ``grid`` and
     two at every event (the state before the switch, in the old phase, and after it, in
@@ -1053,18 +1139,19 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
     across the sections (as :func:`average` does).  Returns the number of rows (more
     than ``out`` holds: call again with a larger one), or -1 where the integration
     failed (chatter: more than ``max_events`` switches in a period, or a step that
-    could not be taken).
+    could not be taken).  ``hint``: the phase before the start (:func:`entry_hint`; a
+    slip of no duration, ``static_ratio > 1``, gives both events, four rows).
     """
     a = P[P_A]
     jenkins = P[P_C] == 0.0
     hmax = max_step(P)
-    W = np.zeros((14, N_Z))
+    W = np.zeros((N_W, N_Z))
     cnt = np.zeros(N_C, np.int64)
     acc = np.zeros(4)
     z = np.zeros(N_Z)
     for i in range(N_S):
         z[i] = s[i]
-    mode = entry(P, 0.0, z)
+    mode = entry_hint(P, 0.0, z, hint)
     ends = np.empty(3)
     contact_ = np.empty(3, np.bool_)
     th = math.acos(-1.0 / a) if a > 1.0 else 0.0
@@ -1113,7 +1200,12 @@ def plane_history(P, s, periods, grid, rtol, max_events, out):
                 if event:
                     code = EV_STICK_TO_SLIP if mode == STICK else EV_SLIP_TO_STICK
                     row = _record(P, t, z, mode, code, out, row)
-                    mode = switch(mode, P, t, z)
+                    new = switch(mode, P, t, z)
+                    if new == mode:  # stick, a jump to the kinetic cone and stick again
+                        row = _record(P, t, z, SLIP, code, out, row)
+                        row = _record(P, t, z, SLIP, EV_SLIP_TO_STICK, out, row)
+                        code = EV_SLIP_TO_STICK
+                    mode = new
                     row = _record(P, t, z, mode, code, out, row)
                     ev += 1
                     if ev > max_events:

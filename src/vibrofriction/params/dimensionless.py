@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from numpy.typing import ArrayLike
 
 from vibrofriction import theory
+from vibrofriction.schema import CHOICES, PARAMETER
 from vibrofriction.validation import as_float_or_array, checked_choice
 
 from .cases import Case, classify, critical_for_vbar, inertial_to_vbar
@@ -134,7 +135,9 @@ class Dimensionless:
     def with_friction(self, friction: RateAndState | None) -> Dimensionless:
         """A copy with the rate-and-state law ``friction`` (in the model's units; None: Coulomb)."""
         if friction is None:
-            return dataclasses.replace(self, rs_a=0.0, rs_b=0.0, rs_alpha_ld=0.0)
+            return dataclasses.replace(self, rs_law=CHOICES["rs_law"].default, **{  # type: ignore[arg-type]
+                n: PARAMETER[n].default for n in ("rs_a", "rs_b", "rs_d_c", "rs_v_ref",
+                                                  "rs_alpha_ld")})
         return dataclasses.replace(self, rs_a=friction.a, rs_b=friction.b, rs_d_c=friction.d_c,
                                    rs_v_ref=friction.v_ref, rs_alpha_ld=friction.alpha_ld,
                                    rs_law=friction.law)

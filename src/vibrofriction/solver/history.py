@@ -170,8 +170,8 @@ def simulate(
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
     refuse_rate_state(dim, "simulate", "time histories")
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
-    if settings is not None:  # refused as by solve_points, whatever the start
-        EVENT.capabilities.check_settings(settings)
+    # refused as by solve_points (the limits and the settings), whatever the start
+    EVENT.capabilities.check(table_of(dim, V), 0, settings or DEFAULT_SETTINGS)
     start = _start(dim, V, initial, settings)  # type: ignore[arg-type]
     seg = _segments(dim, V, start, int(math.ceil(periods)))
     m = seg.shape[0]
@@ -213,13 +213,20 @@ def simulate(
 def _plane_parameters(dim: Dimensionless, V: float) -> NDArray[np.float64]:
     return _plane.parameters(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                              dim.a_x, dim.phase_x, dim.a_y, dim.phase_y, *dim.pin_y,
-                             dim.inplane_on == "substrate")
+                             dim.inplane_on == "substrate", dim.static_ratio)
 
 
 def _plane_start(dim: Dimensionless, V: float, initial: object,
-                 settings: SolverSettings | None) -> NDArray[np.float64]:
-    """The 2-D start ``(y_x, y_y, v_x, v_y, e_x, e_y)`` at ``tau = 0``."""
-    s = np.zeros(_plane.N_S)
+                 settings: SolverSettings | None) -> tuple[NDArray[np.float64], int]:
+    """The 2-D start ``(y_x, y_y, v_x, v_y, e_x, e_y)`` at ``tau = 0`` and its phase.
+
+    The phase is the steady orbit's at its section for ``"steady"``, slip for
+    ``"sliding"`` (slipping where the state allows it, as the 2-D solver's start), else
+    stick (a contact with no history starts stuck); it matters only where ``static_ratio
+    > 1`` (:func:`vibrofriction._kernels.plane.entry_hint`).
+    """
+    s = np.zeros(_plane.N_S + 1)
+    s[_plane.N_S] = codes.STICK
     if isinstance(initial, str) and initial == "steady":
         settings = settings or DEFAULT_SETTINGS
         mirror = V < 0.0  # as solve_points: the point (-V, phase_x + pi), mirrored back
@@ -229,7 +236,7 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
         _plane.plane_steady_section(
             dim.alpha, dim.beta, dim.amplitude, abs(V), dim.zeta, dim.eta_c, dim.a_x, px,
             dim.a_y, dim.phase_y, *dim.pin_y, dim.inplane_on == "substrate", 0, 0.0, 0.0, 0.0,
-            *plane_arguments(settings), of, oi, s)
+            *plane_arguments(settings), of, oi, s, dim.static_ratio)
         status, error = int(oi[column_index("status")]), float(of[column_index("error")])
         if V == 0.0 and plane_held(
                 np.array([status]), np.array([of[column_index("stick_fraction")]]),
@@ -240,22 +247,22 @@ def _plane_start(dim: Dimensionless, V: float, initial: object,
                              f"(status {Status.from_code(status).value}, error {error:.3g})")
         if mirror:
             s[[0, 2, 4]] = -s[[0, 2, 4]]
-        return s
+        return s[:_plane.N_S], int(s[_plane.N_S])
     if isinstance(initial, str):
         kind = {"sliding": 0, "rest": 1}.get(initial)
         if kind is None:
             raise ValueError(f"initial must be 'sliding', 'rest', 'steady', a SectionState "
                              f"or a plane_state, got {initial!r}")
         _plane.start_state(_plane_parameters(dim, V), kind, 0.0, 0.0, 0.0, s)
-        return s
+        return s[:_plane.N_S], _plane.SLIP if kind == 0 else codes.STICK
     if isinstance(initial, SectionState):
         s[0], s[2], s[4] = initial.y, initial.x_dot, initial.elongation(dim)
-        return s
+        return s[:_plane.N_S], codes.STICK
     arr = np.asarray(initial, dtype=float)
     if arr.shape != (_plane.N_S,) or not np.all(np.isfinite(arr)):
         raise ValueError(f"a 2-D initial state is 6 finite numbers (y_x, y_y, v_x, v_y, "
                          f"e_x, e_y), got {initial!r}")
-    return arr.copy()
+    return arr.copy(), codes.STICK
 
 
 def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
@@ -263,7 +270,7 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
     """:func:`simulate` with a transverse oscillation: the 2-D kernel's history."""
     settings = settings or DEFAULT_SETTINGS
     PLANE.capabilities.check(table_of(dim, V), 1, settings)  # V = 0 is integrated
-    start = _plane_start(dim, V, initial, settings)
+    start, hint = _plane_start(dim, V, initial, settings)
     P = _plane_parameters(dim, V)
     whole = int(math.ceil(periods))
     tau_end = TWO_PI * periods
@@ -276,7 +283,7 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
     rtol, _, max_switches = plane_arguments(settings)
     while True:
         out = np.empty((cap, _plane.N_H))
-        m = _plane.plane_history(P, start, whole, grid, rtol, max_switches, out)
+        m = _plane.plane_history(P, start, whole, grid, rtol, max_switches, out, hint)
         if m < 0:
             raise RuntimeError("the 2-D history failed: a step could not be taken or the "
                                "contact chattered (more stick/slip switches per period than "
@@ -305,7 +312,7 @@ def _plane_history(dim: Dimensionless, V: float, periods: float, samples_per_per
     events = tuple(pairs)
     x, x_dot = y[:, 0] + V * tau, v[:, 0]
     slip = out[:, _plane.H_SLIP:_plane.H_SLIP + 2]
-    energy = _plane_energy(dim, V, tau, x, y[:, 1], v, e, f, slip)
+    energy = _plane_energy(dim, V, tau, x, y[:, 1], v, e, f, slip, ev)
     # the last section within the history (tau = 0, the start, for less than a period)
     r = np.flatnonzero((tau == TWO_PI * whole_done) & (ev < 0))[-1]
     plane_state = np.concatenate([y[r], v[r], e[r]])
@@ -326,10 +333,13 @@ def _cumulative(tau: NDArray[np.float64], p: NDArray[np.float64]) -> NDArray[np.
 def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
                   x: NDArray[np.float64], uy: NDArray[np.float64], v: NDArray[np.float64],
                   e: NDArray[np.float64], f: NDArray[np.float64],
-                  slip: NDArray[np.float64]) -> dict[str, Any]:
+                  slip: NDArray[np.float64], ev: NDArray[np.int64]) -> dict[str, Any]:
     """Work input and dissipation of a 2-D history, by the trapezoidal rule over the samples.
 
-    The reference's definitions (vibrofriction_reference.inplane).
+    The reference's definitions (vibrofriction_reference.inplane).  With ``static_ratio >
+    1`` a Jenkins contact's elongation jumps at each stick->slip (``ev``: the rows' event
+    codes) from the static circle to the kinetic one: the contact spring's energy lost
+    there, ``k (|e_before|^2 - |e_after|^2)/2``, is friction's too.
     """
     X, Xd = inplane_motion(dim, tau)
     Y, Yd = transverse_motion(dim, tau)
@@ -354,5 +364,24 @@ def _plane_energy(dim: Dimensionless, V: float, tau: NDArray[np.float64],
         "work_input": _cumulative(tau, p_in),
         "dissipated_pin": _cumulative(tau, np.sum(gamma * (hd - v) ** 2, axis=1)),
         "dissipated_contact": _cumulative(tau, c * np.sum(e_dot**2, axis=1)),
-        "dissipated_friction": _cumulative(tau, np.sum(f * slip, axis=1)),
+        "dissipated_friction": _cumulative(tau, np.sum(f * slip, axis=1))
+        + _jump_dissipation(dim, tau, e, ev),
     }
+
+
+def _jump_dissipation(dim: Dimensionless, tau: NDArray[np.float64], e: NDArray[np.float64],
+                      ev: NDArray[np.int64]) -> NDArray[np.float64] | float:
+    """The running sum of the contact spring's energy lost in the jumps of a 2-D history.
+
+    Each stick->slip of a Jenkins contact (``eta_c = 0``) with ``static_ratio > 1``: the
+    pair of rows at one time (before, after), ``k (|e_before|^2 - |e_after|^2)/2``.  0
+    otherwise (a Kelvin-Voigt contact's elongation does not jump).
+    """
+    if dim.static_ratio == 1.0 or dim.eta_c > 0.0:
+        return 0.0
+    k = dim.beta - dim.alpha
+    j = np.flatnonzero((ev[:-1] == codes.EV_STICK_TO_SLIP) & (ev[1:] == codes.EV_STICK_TO_SLIP)
+                       & (tau[:-1] == tau[1:]))
+    lost = np.zeros_like(tau)
+    lost[j + 1] = 0.5 * k * (np.sum(e[j] ** 2, axis=1) - np.sum(e[j + 1] ** 2, axis=1))
+    return np.cumsum(lost)

@@ -94,8 +94,13 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
             n_springs: int, zeta: float = 0.0, state_tol: float = STATE_TOL,
             substeps: int = SUBSTEPS, max_periods: int = MAX_PERIODS,
             warm: tuple | None = None, accelerate: bool = True, a_x: float = 0.0,
-            phase_x: float = 0.0, inplane_on: str = "substrate") -> dict:
+            phase_x: float = 0.0, inplane_on: str = "substrate",
+            static_ratio: float = 1.0) -> dict:
     """Steady state of one row of ``n_springs`` springs (no extrapolation in ``N``).
+
+    ``static_ratio = mu_static/mu0 >= 1``: each spring stuck while ``|f_i| <=
+    static_ratio n_i``; at that limit it slips and its force drops to the kinetic ``n_i``
+    (:mod:`vibrofriction._kernels.mdr`).
 
     ``a_x``, ``phase_x``, ``inplane_on``: the longitudinal in-plane oscillation
     ``X = a_x cos(tau + phase_x)`` of the substrate or of the holder (docs/inplane.md;
@@ -122,7 +127,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
                           frame_offset(float(a_x), float(phase_x), on_substrate))
     periods, conv, pf_a, nint, frac, viol, events, y, yd = steady_row(
         alpha, beta, a, V, gamma, n_exp, M, substeps, state_tol, max_periods, accelerate,
-        ANDERSON, ACCELERATED_PERIODS, y, yd, st, e, hc, hs)
+        ANDERSON, ACCELERATED_PERIODS, y, yd, st, e, hc, hs, float(static_ratio))
     if events < 0:  # the last period did not finish
         pf_a = pf_a[:-1]
     pn_a = np.full(pf_a.size, nint)
@@ -152,7 +157,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  profile_exponent: float, zeta: float = 0.0, n_springs: int | None = None,
                  tol: float = 1e-5, a_x: float = 0.0, phase_x: float = 0.0,
                  inplane_on: str = "substrate", state_tol: float = STATE_TOL,
-                 max_periods: int = MAX_PERIODS) -> dict:
+                 max_periods: int = MAX_PERIODS, static_ratio: float = 1.0) -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
     Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 640
@@ -175,7 +180,8 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     substrate or the holder (:func:`mdr_row`; ``V > 0`` only: ``V = 0`` with ``a_x > 0``
     is refused, as its steady state depends on the start).  ``state_tol`` and
     ``max_periods`` are each row's (:func:`mdr_row`; a row that may be passed over stops
-    after at most ``SKIP_PERIODS``). ``tol`` must be a finite number ``> 0`` and
+    after at most ``SKIP_PERIODS``); ``static_ratio >= 1`` too (each spring's static limit
+    over its kinetic one). ``tol`` must be a finite number ``> 0`` and
     ``n_springs`` a whole number ``>= 1`` (``3.0`` too): anything else is refused with a
     ValueError naming it.
     """
@@ -184,8 +190,11 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x = (float(x) for x in (
         alpha, beta, amplitude, V, profile_exponent, zeta, a_x, phase_x))
     _check(alpha, beta, amplitude, V, n_exp, zeta, a_x, phase_x, inplane_on)
+    static_ratio = float(static_ratio)
+    if not static_ratio >= 1.0 or math.isinf(static_ratio):
+        raise ValueError(f"static_ratio must be a finite number >= 1, got {static_ratio}")
     ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on,
-                              state_tol=state_tol)
+                              state_tol=state_tol, static_ratio=static_ratio)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
     if math.isinf(n_exp):
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)

@@ -83,7 +83,7 @@ def _initial_row(dim: Dimensionless, initial: object, Va: float, a_x: float, pha
         rs = settings.resolved(CAPABILITIES["mdr"].settings)
         r = mdr_row(alpha, beta, a, Va, n_exp, M, zeta, a_x=a_x, phase_x=phase_x,
                     inplane_on=dim.inplane_on, state_tol=float(rs["tol_state"]),
-                    max_periods=int(rs["max_periods"]))
+                    max_periods=int(rs["max_periods"]), static_ratio=dim.static_ratio)
         if r["status"] == "not converged":
             raise ValueError(f"initial='steady': the row of {M} springs did not converge "
                              f"at this point (after {r['periods']} periods)")
@@ -161,7 +161,7 @@ def mdr_history(dim: Dimensionless, V: float, periods: float, samples_per_period
     whole = int(math.ceil(periods - 1e-12))
     *_, events, _, _ = _mdr.run_periods(
         alpha, beta, a, Va, gamma, n_exp, M, SUBSTEPS, whole, whole, 0.0, float(y),
-        float(yd), st, e, hc, hs, (tau, body, fs, sts, ip))
+        float(yd), st, e, hc, hs, (tau, body, fs, sts, ip), dim.static_ratio)
     if events < 0:
         raise RuntimeError(f"the MDR row of {M} springs made no progress (more than "
                            f"{200 * M + 1000} segments in a period)")

@@ -119,7 +119,8 @@ def sliding_eigenvalues(alpha: float, beta: float, zeta: float, v: float, rs_a: 
     Per unit of the drive's time ``tau = omega t``; ``Im s`` is the angular frequency of
     the stick-slip that grows where ``Re s > 0``.
     """
-    return np.roots(sliding_polynomial(alpha, beta, zeta, v, rs_a, rs_b, rs_d_c, rs_v_ref))
+    return np.roots(sliding_polynomial(alpha, beta, zeta, v, rs_a, rs_b, rs_d_c,
+                                       rs_v_ref)).astype(complex)
 
 
 def _hurwitz_margin(c: NDArray[np.float64]) -> float:
@@ -192,15 +193,23 @@ def critical_stiffness(k_c: float, gamma: float, v: float, rs_a: float, rs_b: fl
 
 
 def critical_stiffness_rigid(v: ArrayLike, rs_a: ArrayLike, rs_b: ArrayLike,
-                             rs_d_c: ArrayLike, rs_v_ref: ArrayLike) -> FloatOrArray:
-    """``(b_e - a_e)/d_c (1 + V^2/(a_e d_c))``: the closed form of a rigid, undamped contact.
+                             rs_d_c: ArrayLike, rs_v_ref: ArrayLike,
+                             gamma: ArrayLike = 0.0) -> FloatOrArray:
+    """The critical stiffness of a rigid contact in closed form, with the pin dashpot ``gamma``.
 
-    The classical critical stiffness of a block on a spring with rate-and-state friction,
-    inertia included (Rice & Ruina 1983), here from the cubic's Hurwitz condition; ``0``
-    where sliding strengthens with velocity.
+    The cubic's Hurwitz condition ``c2 c1 > c3 c0`` is linear in ``alpha``::
+
+        alpha_cr = (V^2 + V d_c gamma + a_e d_c) (b_e - a_e - V gamma) / (d_c^2 (a_e + V gamma)),
+
+    undamped the classical ``(b_e - a_e)/d_c (1 + V^2/(a_e d_c))`` of a block on a spring with
+    rate-and-state friction, inertia included (Rice & Ruina 1983); ``0`` where sliding is
+    stable at every stiffness (``gamma >= (b_e - a_e)/V``: the dashpot outweighs the negative
+    damping of weakening friction).
     """
-    a_e, b_e = steady_slopes(v, rs_a, rs_b, rs_d_c, rs_v_ref)
+    a_e, b_e = (np.asarray(x) for x in steady_slopes(v, rs_a, rs_b, rs_d_c, rs_v_ref))
     d_c = np.asarray(rs_d_c, dtype=float)
     v = np.asarray(v, dtype=float)
-    return as_float_or_array(np.maximum(0.0, (np.asarray(b_e) - np.asarray(a_e)) / d_c
-                                        * (1.0 + v * v / (np.asarray(a_e) * d_c))))
+    g = np.asarray(gamma, dtype=float)
+    c2 = v * v + v * d_c * g + a_e * d_c
+    return as_float_or_array(np.maximum(0.0, c2 * (b_e - a_e - v * g)
+                                        / (d_c * d_c * (a_e + v * g))))

@@ -72,6 +72,7 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     the MDR solver does not take: ``du_x``, ``du_y``, ``goal="drive"`` and a contact
     dashpot (``c_xc > 0``).
     """
+    pin.check_coulomb("the design")
     if pin.curved:
         _refuse_for_mdr(pin, du_x=du_x, du_y=du_y, goal=goal)
         n_omega = CURVED_MAP[0] if n_omega is None else n_omega

@@ -89,6 +89,7 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     describes the data.
     """
     t0 = time.perf_counter()
+    guess.check_coulomb("the fit")
     data = read_measurements(data)
     free, tied = free_and_tied(tuple(free), natural_frequency, normal_load, quality_factor,
                                 len(data))

@@ -59,7 +59,7 @@ class MdrMethod:
             am, pe, V = (float(points[k][i]) for k in ("amplitude", "profile_exponent",
                                                         "v_inertial"))
             out_f[i, c("mean_normal_ratio")] = theory.profile_mean_normal_force(am, pe)
-            if V == 0.0:
+            if V == 0.0:  # static_ratio = 1 here (the declared limits)
                 out_f[i, c("mu_ratio")] = theory.profile_static_mu_ratio(am, pe)
                 out_f[i, c("error")] = 0.0
                 out_f[i, c("work")] = 0.0
@@ -70,7 +70,8 @@ class MdrMethod:
                              a_x=points["a_x"][i], phase_x=points["phase_x"][i],
                              inplane_on=points.choice("inplane_on", i),
                              state_tol=float(r["tol_state"]),
-                             max_periods=int(r["max_periods"]))
+                             max_periods=int(r["max_periods"]),
+                             static_ratio=float(points["static_ratio"][i]))
             status = _MDR_STATUS[m["status"]]
             mu, err = m["mu_ratio"], m["error"]
             if status is Status.NOT_CONVERGED:

@@ -64,11 +64,14 @@ def plane_held(status: NDArray[np.int64], stick_fraction: NDArray[np.float64],
     The region of mean forces a stuck contact can hold is not empty
     (:func:`theory.plane_static_region`: a motion from outside it approaches its edge with slips
     that die out, as in 1-D), or the motion stuck through its whole averaging window or orbit.
-    ``points`` all have ``inplane_on``.
+    ``points`` all have ``inplane_on``.  With ``static_ratio = s > 1`` the stick holds while
+    ``|F - q(tau)| <= s n(tau)``, i.e. ``|F/s - q(tau)/s| <= n(tau)``: the region at the
+    in-plane amplitudes divided by ``s``, scaled by ``s`` (empty where that one is).
     """
     p = points
-    region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"],
-                                        p["phase_x"], p["a_y"], p["phase_y"], p["zeta"],
+    s = p["static_ratio"]
+    region = theory.plane_static_region(p["alpha"], p["beta"], p["amplitude"], p["a_x"] / s,
+                                        p["phase_x"], p["a_y"] / s, p["phase_y"], p["zeta"],
                                         p["eta_c"], inplane_on, p["alpha_y"], p["zeta_y"])
     return holds(status, stick_fraction, np.isfinite(np.atleast_1d(region.x_upper)))
 
