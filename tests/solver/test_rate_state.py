@@ -225,5 +225,5 @@ def test_histories_and_gradients_are_refused_not_coulomb() -> None:
     assert not RATE_STATE.sensitivities
     with pytest.raises(ValueError, match="simulate .*rs_a = 0.01"):
         vf.simulate(_system(), v_inertial=0.5, periods=1)
-    with pytest.raises(ValueError, match="friction_gradient .*rs_a = 0.01"):
+    with pytest.raises(ValueError, match="friction_gradient .*rs_a"):
         friction_gradient(_system(), v_inertial=0.5)
