@@ -152,10 +152,11 @@ EVENT = Capabilities(
     title="the 1-D event-driven solver",
     takes="a flat punch, profile_exponent = inf, without a transverse oscillation, a_y = 0",
     parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x",
-                "v_inertial", "inplane_on"),
+                "v_inertial", "inplane_on", "static_ratio"),
     limits=(
-        Limit("static_ratio", "a static coefficient above the kinetic one (static_ratio > 1)",
-              lambda p: p["static_ratio"] != 1.0, whole=True),
+        Limit("static_ratio", "a static coefficient above the kinetic one at v_inertial = 0 "
+              "(its static limit depends on the dynamics of the slips: give a velocity != 0)",
+              lambda p: (p["static_ratio"] != 1.0) & (p["v_inertial"] == 0.0)),
         Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
               whole=True),
     ),

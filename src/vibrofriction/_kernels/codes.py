@@ -91,5 +91,6 @@ T_ALPHA_Y = point_index("alpha_y")
 T_ZETA_Y = point_index("zeta_y")
 T_PROFILE_EXPONENT = point_index("profile_exponent")
 T_V = point_index("v_inertial")
+T_STATIC_RATIO = point_index("static_ratio")
 T_INPLANE_ON = point_index("inplane_on")  # the index of "substrate" is 0
 I_METHOD = column_index("method")

@@ -71,6 +71,7 @@ from .phases import (
     M_ON,
     M_R,
     M_SLIP,
+    M_SR,
     M_STICK,
     M_V,
     ZERO9,
@@ -124,21 +125,21 @@ def stick_coefficients(M, theta, y, xd, e):
 
 
 @jit
-def stick_margin(fc, m, theta, s, a):
-    """The cone margin ``n - s f`` of stick (eq. 15), its round-off at the start removed.
+def stick_margin(fc, m, theta, s, a, sr):
+    """The cone margin ``s_r n - s f`` of stick (eq. 15), its round-off at the start removed.
 
-    Its value at the start is the difference of ``n`` and ``s f``, both about 1; the
-    round-off of that difference, ``REL_TOL (1 + |f_0|)``, is not seen by
+    Its value at the start is the difference of ``s_r n`` and ``s f``, both about 1; the
+    round-off of that difference, ``REL_TOL (s_r + |f_0|)``, is not seen by
     :func:`.roots.start_margin`, which scales it by the coefficients left after the
     cancellation (small where ``a cos theta`` and the free motion are, e.g. ``a = 0``).
     A value within it is zero, so that the derivatives decide.  Without this, a force
     projected onto the edge, ``k (1/k) = 1 - eps``, re-entered stick after every
     stick->slip event and left it ``eps/(k V)`` later: 2e7 events in one period.
     """
-    g = cone_margin(fc, theta, s, a)
+    g = cone_margin(fc, theta, s, a, sr)
     g0 = value_at_zero(g, m)
     tol = REL_TOL * magnitude(g)
-    if tol < abs(g0) <= tol + REL_TOL * (1.0 + abs(fc[0])):
+    if tol < abs(g0) <= tol + REL_TOL * (sr + abs(fc[0])):
         g = (g[0] - g0, g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8])
     return g
 
@@ -178,9 +179,9 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
     n = normal_force(theta, a)
     if avoid != STICK and (not rigid or xd == 0.0):
         fc, mst, _ = stick_coefficients(M, theta, y, xd, e)
-        ok1, _ = start_margin(stick_margin(fc, mst, theta, 1.0, a), mst, T)
+        ok1, _ = start_margin(stick_margin(fc, mst, theta, 1.0, a, M[M_SR]), mst, T)
         if ok1:
-            ok2, _ = start_margin(stick_margin(fc, mst, theta, -1.0, a), mst, T)
+            ok2, _ = start_margin(stick_margin(fc, mst, theta, -1.0, a, M[M_SR]), mst, T)
             if ok2:
                 return STICK, e, xd, evaluate(fc, mst, 0.0), True
     tol = 1e-12 * (1.0 + abs(n))
@@ -201,6 +202,56 @@ def enter(theta, y, xd, e, ed, f, s_pref, M, T, avoid):
         return (SLIP_POS if s_pref > 0 else SLIP_NEG), (e if free else s_pref * n / k), ed, \
             s_pref * n, False
     return STICK, e, xd, f, False
+
+
+@jit
+def enter_slipping(theta, y, xd, e, ed, f, s, M, T):
+    """Choose the phase of a contact that was slipping in direction ``s`` (``s_r > 1``).
+
+    Where the static coefficient is above the kinetic one a state with ``n < |f| <= s_r n``
+    may stick or slip: a slipping contact goes on slipping while its slip velocity stays
+    positive, a stuck one holds.  So slip ``s`` comes first, where it is consistent
+    (``f = s n`` for an elastic contact) and its slip velocity starts positive; else
+    :func:`enter` (stick first).  Used after a stick->slip event (the force has dropped to
+    ``s n``) and for the sliding start.  Returns as :func:`enter`.
+    """
+    k = M[M_K]
+    free = math.isinf(k) or M[M_C] > 0.0
+    n = normal_force(theta, M[M_A])
+    if free or abs(f - s * n) <= 1e-12 * (1.0 + abs(n)):
+        e1 = e if free else s * n / k
+        vr = slip_velocity(M, body(M, theta, y, xd - M[M_V], s), elongation(M, theta, e1, ed, s),
+                           s)
+        ok, _ = start_margin(vr, M[M_SLIP], T)
+        if ok:
+            return (SLIP_POS if s > 0 else SLIP_NEG), e1, ed, s * n, True
+    return enter(theta, y, xd, e, ed, f, s, M, T, NO_PHASE)
+
+
+@jit
+def _jump(M, theta1, y1, xd1, e1, es, Tn):
+    """Stick -> slip where ``s_r > 1``: the force drops at once from ``s s_r n`` to ``s n``.
+
+    An elastic contact's massless contact point jumps, ``e`` from ``s s_r n/k`` to
+    ``s n/k``; a viscoelastic one's elongation is continuous (its dashpot takes the drop:
+    the contact point starts with the velocity ``s (s_r - 1) n/c``, ``e' = x' - s (s_r - 1)
+    n/c``); a rigid contact's body, at rest, starts to slip (``s x'' = (s_r - 1) n``).  The
+    slip goes on where its velocity starts positive, else the contact sticks again at the
+    kinetic force (an elastic contact whose normal force falls fast: the jump was the
+    slip).  Returns ``(phase, e, e', f, ok)``.
+    """
+    n1 = normal_force(theta1, M[M_A])
+    f1 = es * n1
+    k, c = M[M_K], M[M_C]
+    ed1 = xd1
+    if math.isinf(k):
+        e1 = 0.0
+    elif c > 0.0:
+        e1 = (es * M[M_SR] * n1 - c * xd1) / k  # projected onto |f| = s_r n: e is continuous
+        ed1 = xd1 - es * (M[M_SR] - 1.0) * n1 / c
+    else:
+        e1 = f1 / k
+    return enter_slipping(theta1, y1, xd1, e1, ed1, f1, es, M, Tn)
 
 
 @jit
@@ -240,7 +291,7 @@ def _state_basis(M, phase, theta, y, xd, e, ed, t):
 
 
 @jit_inline
-def _stick_event(fc, mst, theta, a, T):
+def _stick_event(fc, mst, theta, a, sr, T):
     """The first stick->slip event within ``T``: ``(t or -1, direction s, immediate)``.
 
     Both cone margins ``n -+ f`` are searched; ``immediate`` when the event fires at the
@@ -251,7 +302,7 @@ def _stick_event(fc, mst, theta, a, T):
     immediate = False
     for i in range(2):
         s = 1.0 if i == 0 else -1.0
-        g = stick_margin(fc, mst, theta, s, a)
+        g = stick_margin(fc, mst, theta, s, a, sr)
         ok, ts = start_margin(g, mst, T)
         tlim = T if te < 0.0 else te
         r = first_root(g, mst, ts, tlim) if ok else 0.0
@@ -295,6 +346,9 @@ def _transition(M, phase, theta1, y1, xd1, e1, ed1, f1, es, Tn, avoid):
     :func:`enter` decides.  Returns ``(phase, x', e, e', f, ok, event)``.
     """
     rigid = math.isinf(M[M_K])
+    if phase == STICK and M[M_SR] > 1.0:
+        ph1, e1, ed1, f1, ok = _jump(M, theta1, y1, xd1, e1, es, Tn)
+        return ph1, xd1, e1, ed1, f1, ok, EV_STICK_TO_SLIP
     if phase == STICK:
         # stick -> slip in direction es: project onto |f| = n
         f1 = es * normal_force(theta1, M[M_A])
@@ -357,7 +411,7 @@ def segment(theta, y, xd, e, ed, phase, M):
     immediate = False  # the event fired at the start offset: a round-off tangency
     fc, mst, ec = stick_coefficients(M, theta, y, xd, e) if phase == STICK else (ZERO9, m, ZERO9)
     if phase == STICK and not zeno:
-        te, es, immediate = _stick_event(fc, mst, theta, a, T)
+        te, es, immediate = _stick_event(fc, mst, theta, a, M[M_SR], T)
     elif phase != FLIGHT and not zeno:
         s = slip_sign(phase)
         ec = elongation(M, theta, e, ed, s)
@@ -418,13 +472,20 @@ def initial_state(kind, M, offset=(0.0, 0.0)):
     else:
         y, xd, e, f, ed = 0.0, 0.0, 0.0, 0.0, 0.0
     y, xd = to_kernel_frame(offset, y, xd)
+    if kind == 0 and M[M_SR] > 1.0:
+        # a sliding contact goes on sliding where it can (f = n, slip velocity > 0); a
+        # viscoelastic one's rate follows from f = n(0) = 1 + a
+        if M[M_C] > 0.0:
+            ed = (normal_force(0.0, M[M_A]) - f) / M[M_C]
+        ph, e, ed, f, _ = enter_slipping(0.0, y, xd, e, ed, f, 1.0, M, TWO_PI)
+        return y, xd, e, ph, ed
     ph, e, ed, f, _ = enter(0.0, y, xd, e, ed, f, 1.0, M, TWO_PI, NO_PHASE)
     return y, xd, e, ph, ed
 
 
 @jit
 def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, a_x, phase_x,
-                on_substrate, periods, max_segments, seg):
+                on_substrate, sr, periods, max_segments, seg):
     """Integrate ``periods`` drive periods, recording every segment start in ``seg``.
 
     The state is in the kernels' frame (relative to an oscillating substrate,
@@ -436,7 +497,7 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, a_x, p
     where not known exactly, :func:`.phases.elongation`).  Returns the number of rows
     written (``-1`` if ``max_segments`` was too small).
     """
-    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr)
     k = 0
     m = 0
     cf = 0.0
@@ -469,12 +530,12 @@ def run_periods(theta, y, xd, e, ed, phase, alpha, beta, a, V, zeta, eta, a_x, p
 
 
 @jit
-def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, taus, out):
+def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, taus, out):
     """Evaluate the closed forms at sorted times ``taus`` into ``out`` (shape ``(len(taus),
     N_SMP_COLUMNS)``, columns ``codes.SMP_*``: y, x', f, n, phase, e; ``y``, ``x'`` in the
     kernels' frame).
     """
-    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr)
     j = 0
     for i in range(taus.shape[0]):
         tau = taus[i]
@@ -494,8 +555,8 @@ def sample(seg, nseg, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
 
 
 @jit
-def initial_point(kind, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
+def initial_point(kind, alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr):
     """:func:`initial_state` from the parameters: ``(y, x', e, phase, e')`` (kernels' frame)."""
     return initial_state(kind, make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x,
-                                          on_substrate),
+                                          on_substrate, sr),
                          frame_offset(a_x, phase_x, on_substrate))

@@ -22,6 +22,11 @@ contact point is at rest in stick) and the same equations hold with one more for
 the body in every phase, ``h(tau) = hc cos tau + hs sin tau`` (:func:`inplane_forcing`):
 ``y'' + gamma y' + alpha y = -f + h``.  ``h = 0`` without in-plane oscillation.
 
+With a static coefficient above the kinetic one (``s_r = mu_static/mu0 > 1``,
+docs/friction_laws.md) a stuck contact holds while ``|f| <= s_r n`` (the stick margin
+``s_r n - s f``, :func:`cone_margin`) and slips with the kinetic force ``f = s n``: every
+phase keeps its closed form, only the stick margin and the events change.
+
 The model tuple (:func:`make_model`) carries the parameters and the two modes
 (free motions) of slip and stick.  Each function returns coefficient tuples over
 :mod:`.basis`.
@@ -37,6 +42,8 @@ M_ALPHA, M_BETA, M_A, M_V, M_GAMMA, M_ETA, M_K, M_C, M_R = 0, 1, 2, 3, 4, 5, 6, 
 M_OFF, M_ON, M_SLIP, M_STICK = 9, 10, 11, 12
 # the in-plane forcing h = hc cos tau + hs sin tau
 M_HC, M_HS = 13, 14
+# the static coefficient over the kinetic one, s_r = mu_static/mu0 >= 1 (docs/friction_laws.md)
+M_SR = 15
 TWO_PI = 2.0 * math.pi
 # Loss factors below this are treated as an elastic contact: the relaxation time
 # eta_c/omega is then shorter than round-off can resolve in the contact-point velocity
@@ -81,8 +88,11 @@ def inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate):
 
 
 @jit
-def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
-    """The parameters of one point and the modes of slip and stick (see module doc)."""
+def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr=1.0):
+    """The parameters of one point and the modes of slip and stick (see module doc).
+
+    ``sr``: the static coefficient over the kinetic one, ``mu_static/mu0 >= 1``.
+    """
     rigid = math.isinf(beta)
     k = math.inf if rigid else beta - alpha
     gamma = 2.0 * zeta * math.sqrt(alpha)
@@ -94,7 +104,7 @@ def make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate):
     th_off, th_on = liftoff_phases(a)
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     return (alpha, beta, a, V, gamma, eta if viscous else 0.0, k, c, r, th_off, th_on,
-            slip, stick, hc, hs)
+            slip, stick, hc, hs, sr)
 
 
 @jit
@@ -247,11 +257,13 @@ def rigid_stick_force(M, theta, y0):
 
 
 @jit
-def cone_margin(fcoef, theta, s, a):
-    """``n(tau) - s f(tau)``: positive inside the friction cone (eq. 15)."""
-    ca = a * math.cos(theta)
-    sa = a * math.sin(theta)
-    return (1.0 - s * fcoef[0], -s * fcoef[1], ca - s * fcoef[2], -sa - s * fcoef[3],
+def cone_margin(fcoef, theta, s, a, sr):
+    """``s_r n(tau) - s f(tau)``: positive inside the static friction cone (eq. 15; ``s_r = 1``:
+    Coulomb's).
+    """
+    ca = sr * a * math.cos(theta)
+    sa = sr * a * math.sin(theta)
+    return (sr - s * fcoef[0], -s * fcoef[1], ca - s * fcoef[2], -sa - s * fcoef[3],
             -s * fcoef[4], -s * fcoef[5], -s * fcoef[6], -s * fcoef[7], -s * fcoef[8])
 
 

@@ -79,6 +79,7 @@ from .codes import (
     T_ETA_C,
     T_INPLANE_ON,
     T_PHASE_X,
+    T_STATIC_RATIO,
     T_V,
     T_ZETA,
 )
@@ -98,6 +99,7 @@ from .period import (
     N_ACC,
     advance_counted,
     advance_period,
+    pure_forward_slip,
 )
 from .phases import (
     ETA_ELASTIC,
@@ -203,13 +205,17 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 
 @jit
-def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f):
+def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f,
+         certify=False, ys=0.0, yds=0.0, es=0.0):
     """Advance period by period from ``z`` until an orbit or an average answers.
 
     Called where the sliding orbit's contact point stops, or there is no sliding orbit
     (:func:`.sliding.orbit_slides`): the certificate of continuous sliding cannot hold
     from any state then (its bound only adds the free motion's amplitude to the
-    orbit's own test), so it is not tried.
+    orbit's own test), so it is not tried.  With a static coefficient above the kinetic
+    one the sliding orbit ``(ys, yds, es)`` may slide and yet not attract every start
+    (:func:`_static_run`): ``certify`` then tries its certificate at every section in
+    forward slip, and a proof answers ``SLIDING``.
 
     Newton's method is not tried at ``V = 0`` (a held body's orbits form a continuum).
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
@@ -240,6 +246,11 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
         if not ok:
             return ST_FAILED, 0, k
         k += 1
+        if certify and int(z[3]) == SLIP_POS and sliding_certificate(
+                z[0], z[1], z[2], SLIP_POS, M, True, ys, yds, es):
+            out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, k
+            _sliding_window(M, win)
+            return ST_SLIDING, 0, k
         ring_z[k % nring, :] = z
         ring_c[k % nring, :] = acc
         p, d, rho = detect_period(ring_z, dprev, k, M, tol_state)
@@ -334,6 +345,38 @@ def _unmodulated(z, M, win, out_f):
 
 
 @jit
+def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win,
+                out_f):
+    """The steady state where the static coefficient is above the kinetic one (``s_r > 1``).
+
+    Continuous sliding carries the kinetic force, so the sliding orbit and the condition
+    that its contact point never stops are Coulomb's (docs/friction_laws.md); but the
+    energy argument of :func:`.sliding.orbit_slides` ("from any start") fails: a stuck
+    contact holds up to ``s_r n > n``, so a stick-slip motion can coexist with sliding.
+    The proof is therefore only from the motion's own state (the certificate, tried at the
+    start and at every section), otherwise the motion is followed as where no sliding orbit
+    slides.  Without oscillation (``a = 0``) the same: the proof of
+    :func:`.sliding.unmodulated_sliding` fails alike.
+    """
+    orbit_ok, ys, yds, es = sliding_orbit(M)
+    certify = orbit_slides(M, orbit_ok, ys, yds, es)
+    if certify and int(z[3]) == SLIP_POS and sliding_certificate(
+            z[0], z[1], z[2], SLIP_POS, M, True, ys, yds, es):
+        out_f[O_MU], out_f[O_ERR], out_f[O_SETTLE] = 1.0, 0.0, 0.0
+        _sliding_window(M, win)
+        return ST_SLIDING, 0, 0
+    status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
+                             count, win, out_f, certify, ys, yds, es)
+    if status == ST_PERIODIC and certify and pure_forward_slip(win) and sliding_certificate(
+            z[0], z[1], z[2], int(z[3]), M, True, ys, yds, es):
+        # the orbit found is the sliding one, and the motion from its state slides for ever
+        out_f[O_MU], out_f[O_ERR] = 1.0, 0.0
+        _sliding_window(M, win)
+        return ST_SLIDING, 0, k
+    return status, period, k
+
+
+@jit
 def _fractions(win, status, out_f):
     total = win[A_STICK] + win[A_SLIP] + win[A_FLIGHT]
     if total <= 0.0 or status == ST_FAILED:
@@ -367,23 +410,25 @@ def _finish(status, period, k, z, count, win, M, beta, eta, offset, out_f, out_i
 
 
 @jit
-def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_kind, y0,
+def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, init_kind, y0,
                  xd0, e0, ph0, max_periods, min_periods, tol_state, tol_mean, max_events,
                  out_f, out_i):
     """Long-time average from a given start, written into the rows ``out_f``, ``out_i``.
 
     ``a_x``, ``phase_x``, ``on_substrate``: the longitudinal in-plane oscillation
-    (:func:`.phases.inplane_forcing`; ``a_x = 0``: none).  ``init_kind``: 0 steady
-    sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)`` at ``tau = 0`` (laboratory
-    frame, as the final state written).  The columns are ``solver.FLOAT_COLUMNS`` and
-    ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and
-    the state is the final one on the section.  A failed or not converged run has
-    no value (``nan``) and no error estimate (``inf``).
+    (:func:`.phases.inplane_forcing`; ``a_x = 0``: none); ``sr``: the static coefficient
+    over the kinetic one (1: Coulomb friction; above 1: :func:`_static_run`). ``init_kind``:
+    0 steady sliding, 1 rest, 2 explicit state ``(y0, x0', e0, ph0)`` at ``tau = 0``
+    (laboratory frame, as the final state written). The columns are ``solver.FLOAT_COLUMNS``
+    and ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and the
+    state is the final one on the section. A failed or not converged run has no value
+    (``nan``) and no error estimate (``inf``).
     """
-    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr)
     offset = frame_offset(a_x, phase_x, on_substrate)
     z = _start(init_kind, y0, xd0, e0, ph0, M, offset)
-    unmodulated = a == 0.0 and not forced(M)
+    static = sr > 1.0
+    unmodulated = a == 0.0 and not forced(M) and not static
     count = np.zeros(3, np.int64)
     win = np.zeros(N_ACC)
     out_f[:] = math.nan
@@ -391,6 +436,9 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, init_
     out_f[O_LAT] = 0.0  # no transverse oscillation here (the 2-D solver: plane.py)
     if unmodulated:
         status, period, k = _unmodulated(z, M, win, out_f)
+    elif static:
+        status, period, k = _static_run(z, M, max_periods, min_periods, tol_state, tol_mean,
+                                        max_events, count, win, out_f)
     else:
         orbit_ok, ys, yds, es = sliding_orbit(M)
         if orbit_slides(M, orbit_ok, ys, yds, es):
@@ -415,6 +463,7 @@ def steady_state_many(points, init_kind, init, max_periods, min_periods, tol_sta
     for i in range(points.shape[0]):
         p = points[i]
         steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
-                     p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, init_kind, init[i, 0],
+                     p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_STATIC_RATIO],
+                     init_kind, init[i, 0],
                      init[i, 1], init[i, 2], int(init[i, 3]), max_periods, min_periods,
                      tol_state, tol_mean, max_events, out_f[i], out_i[i])

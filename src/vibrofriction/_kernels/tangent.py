@@ -53,6 +53,7 @@ from .phases import (
     M_ON,
     M_R,
     M_SLIP,
+    M_SR,
     M_STICK,
     M_V,
     forced,
@@ -163,7 +164,7 @@ def vector_field(M, phase, tau, y, xd, e):
 @jit
 def event_gradient(M, phase, tau, y, xd, e):
     """``(grad g, dg/dtau)`` of the event that ends ``phase`` at ``(tau, y, x', e)``:
-    the cone margin ``n - s f`` of stick (``s`` the sign of ``f`` there) or the
+    the cone margin ``s_r n - s f`` of stick (``s`` the sign of ``f`` there) or the
     contact point's slip velocity ``s (x' - e')`` of slip.  A rigid stick's force
     ``-alpha y + gamma V + h`` depends on ``tau`` through the in-plane force ``h``.
     """
@@ -172,7 +173,7 @@ def event_gradient(M, phase, tau, y, xd, e):
     if phase == STICK:
         f = contact_force(M, STICK, tau, y, xd, e)
         s = 1.0 if f >= 0.0 else -1.0
-        g_t = -a * math.sin(tau)
+        g_t = -M[M_SR] * a * math.sin(tau)
         if rigid:
             if forced(M):
                 g_t -= s * inplane_force(M, tau)[1]
@@ -209,6 +210,39 @@ def saltation(M, ph0, ph1, tau, y, xd, e, J, G):
 
 
 @jit
+def jump_saltation(M, ph1, tau, y, xd, e, J, G):
+    """The saltation of stick -> slip of an elastic contact where ``s_r > 1`` (the jump).
+
+    The event ``g = s_r n - s k e = 0`` resets the elongation, ``e_+ = R(tau) = s n(tau)/k``
+    (the contact point jumps; ``e_- = s_r e_+``), so the perturbation after it, at a fixed
+    time, is ``dz_+ = R_z dz_- + (R_z F_- + R_tau - F_+) dt`` with ``dt = -grad g . dz_-/g'``
+    and ``R_z = diag(1, 1, 0)``: ``y`` and ``x'`` get ``(F_- - F_+) dt`` as at any event, ``e``
+    forgets its perturbation and gets ``(R' - e'_+) dt`` (0 into slip, where ``e'_+ = R'``;
+    into stick, the jump that ends at once, ``R' - x'``).  ``f`` drops from ``s s_r n`` to
+    ``f_+``: ``G`` gets the jump times ``dt``.  ``(y, x', e)`` is the state after the jump.
+    Returns False where the event is tangential.
+    """
+    sr = M[M_SR]
+    eb = sr * e  # the elongation before the jump
+    g0, g1, g2, g_t = event_gradient(M, STICK, tau, y, xd, eb)
+    a0, a1, a2 = vector_field(M, STICK, tau, y, xd, eb)
+    b0, b1, b2 = vector_field(M, ph1, tau, y, xd, e)
+    rate = g0 * a0 + g1 * a1 + g2 * a2 + g_t
+    if rate == 0.0 or not math.isfinite(rate):
+        return False
+    s = 1.0 if e >= 0.0 else -1.0
+    r_t = -s * M[M_A] * math.sin(tau) / M[M_K]  # R'(tau)
+    jump = M[M_K] * eb - contact_force(M, ph1, tau, y, xd, e)
+    for j in range(J.shape[1]):
+        dt = -(g0 * J[0, j] + g1 * J[1, j] + g2 * J[2, j]) / rate
+        J[0, j] -= (b0 - a0) * dt
+        J[1, j] -= (b1 - a1) * dt
+        J[2, j] = (r_t - b2) * dt
+        G[j] += jump * dt
+    return True
+
+
+@jit
 def advance_period_tangent(z, acc, count, M, max_events, J, G):
     """:func:`.period.advance_period` carrying the Jacobian ``J`` of the state and the
     gradient ``G`` of the integral of ``f`` with respect to the start (multiplied onto
@@ -224,7 +258,11 @@ def advance_period_tangent(z, acc, count, M, max_events, J, G):
         free = free_approach(theta, ph, a, bkind)
         t, theta, y, xd, e, ed, f, ph1, ev, i_f, i_n, ok = segment(theta, y, xd, e, ed, ph, M)
         segment_flow(M, ph, free, t, J, G)
-        if ev == EV_STICK_TO_SLIP or ev == EV_SLIP_TO_STICK or ev == EV_REVERSAL:
+        if ev == EV_STICK_TO_SLIP and M[M_SR] > 1.0 and M[M_C] == 0.0 \
+                and not math.isinf(M[M_K]):
+            if not free:
+                smooth &= jump_saltation(M, ph1, theta, y, xd, e, J, G)
+        elif ev == EV_STICK_TO_SLIP or ev == EV_SLIP_TO_STICK or ev == EV_REVERSAL:
             if not free:
                 smooth &= saltation(M, ph, ph1, theta, y, xd, e, J, G)
         elif ev == EV_LIFTOFF and M[M_C] == 0.0:

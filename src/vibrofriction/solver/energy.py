@@ -16,6 +16,7 @@ from numpy.typing import NDArray
 
 from .._kernels import codes
 from .._kernels.integrate import sample
+from .._kernels.phases import ETA_ELASTIC
 from ..params import Dimensionless
 
 __all__ = ["ENERGY_NAMES", "dissipation", "inplane_motion", "kernel_point", "transverse_motion"]
@@ -27,13 +28,13 @@ _GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(6)
 
 
 def kernel_point(dim: Dimensionless, V: float
-                 ) -> tuple[float, float, float, float, float, float, float, float, bool]:
+                 ) -> tuple[float, float, float, float, float, float, float, float, bool, float]:
     """The kernels' point arguments of a system at velocity ``V``.
 
-    ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, on_substrate)``.
+    ``(alpha, beta, a, V, zeta, eta_c, a_x, phase_x, on_substrate, static_ratio)``.
     """
     return (dim.alpha, dim.beta, dim.amplitude, float(V), dim.zeta, dim.eta_c, dim.a_x,
-            dim.phase_x, dim.inplane_on == "substrate")
+            dim.phase_x, dim.inplane_on == "substrate", dim.static_ratio)
 
 
 def inplane_motion(dim: Dimensionless, tau: NDArray[np.float64]
@@ -138,4 +139,28 @@ def dissipation(seg: NDArray[np.float64], m: int, dim: Dimensionless, V: float,
     per_interval = np.stack([np.bincount(owner, p, minlength=n) for p in per_piece])
     cum = np.concatenate([np.zeros((len(ENERGY_NAMES), 1)), np.cumsum(per_interval, axis=1)],
                          axis=1)
+    cum[ENERGY_NAMES.index("dissipated_friction")] += _jumps(seg, m, dim, taus)
     return dict(zip(ENERGY_NAMES, cum, strict=True))
+
+
+def _jumps(seg: NDArray[np.float64], m: int, dim: Dimensionless,
+           taus: NDArray[np.float64]) -> NDArray[np.float64] | float:
+    """The energy friction dissipates in the jumps of an elastic contact, cumulative at ``taus``.
+
+    With a static coefficient above the kinetic one (docs/friction_laws.md) the massless
+    contact point of an elastic contact jumps where the contact breaks loose: ``e`` drops
+    from ``s s_r n/k`` to ``s n/k`` at once, and the spring's energy
+    ``(k/2)(e_before^2 - e_after^2) = k e_after^2 (s_r^2 - 1)/2`` goes into the slider.  A
+    rigid or viscoelastic contact does not jump (its dissipation is in the rates).  Each jump
+    counts from its event time on (the samples there are the state after it).
+    """
+    k = dim.beta - dim.alpha
+    if dim.static_ratio == 1.0 or math.isinf(k) or dim.eta_c >= ETA_ELASTIC:
+        return 0.0
+    rows = np.flatnonzero(seg[1:m, codes.SEG_EVENT] == codes.EV_STICK_TO_SLIP) + 1
+    if not rows.size:
+        return 0.0
+    e_after = seg[rows, codes.SEG_E]
+    energy = 0.5 * k * e_after**2 * (dim.static_ratio**2 - 1.0)
+    at = np.searchsorted(seg[rows, codes.SEG_TAU], taus, side="right")
+    return np.concatenate([[0.0], np.cumsum(energy)])[at]

@@ -294,7 +294,7 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     of = np.empty(_N_FLOAT)
     oi = np.empty(_N_INT, dtype=np.int64)
     steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
-                 dim.phase_x, dim.inplane_on == "substrate", *start,
+                 dim.phase_x, dim.inplane_on == "substrate", dim.static_ratio, *start,
                  *event_arguments(settings), of, oi)
     f = of.tolist()  # the contact's columns (as contact_columns), on Python floats
     f[_O_NORMAL] = theory.mean_normal_force_of(dim.amplitude)
@@ -377,7 +377,7 @@ def friction_coefficient(
     """
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
-    if V.__class__ is float and V > 0.0 and dim.static_ratio == 1.0 and dim.rs_a == 0.0 \
+    if V.__class__ is float and V > 0.0 and dim.rs_a == 0.0 \
             and method_of(dim.profile_exponent, dim.a_y) is EVENT:  # one moving point
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)

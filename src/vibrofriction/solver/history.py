@@ -52,7 +52,7 @@ def _start(dim: Dimensionless, V: float, initial: str | SectionState,
         initial = steady.final_state
     kind, init = initial_rows(initial, 1, lambda i: dim)
     if kind == 2:  # a laboratory state: into the kernels' frame (docs/inplane.md)
-        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:]), init[0, 0], init[0, 1])
+        y, xd = to_kernel_frame(frame_offset(*kernel_point(dim, V)[6:9]), init[0, 0], init[0, 1])
         return y, xd, init[0, 2], math.nan, int(init[0, 3])
     if kind == 0 and V == 0.0 and dim.a_x > 0.0:
         kind = 1  # "sliding" has no direction at V = 0: the rest, as in solve_points

@@ -224,7 +224,8 @@ def friction_gradient(
     Raises
     ------
     ValueError
-        A transverse oscillation (``a_y > 0``) or a curved tip, or the velocities as for
+        A transverse oscillation (``a_y > 0``), a curved tip, a static coefficient above
+        the kinetic one (``static_ratio > 1``), or the velocities as for
         :func:`friction_coefficient`.
     """
     dim: Dimensionless = dimensionless(system)

@@ -86,6 +86,12 @@ from .sliding import (
     static_mu_ratio,
     steady_sliding,
 )
+from .static_kinetic import (
+    QuasiStaticSlip,
+    static_kinetic_critical_velocity,
+    static_kinetic_slip,
+    static_kinetic_static_limit,
+)
 from .stiff import mu_ratio_stiff_exact
 
 __all__ = [
@@ -94,6 +100,7 @@ __all__ = [
     "InplaneStatic",
     "Liftoff",
     "PlaneStatic",
+    "QuasiStaticSlip",
     "SOFT_EXPONENT",
     "SteadySliding",
     "critical_inertial_velocity",
@@ -130,6 +137,9 @@ __all__ = [
     "sliding_eigenvalues",
     "sliding_is_stable",
     "sliding_polynomial",
+    "static_kinetic_critical_velocity",
+    "static_kinetic_slip",
+    "static_kinetic_static_limit",
     "static_mu_ratio",
     "steady_mu_ratio",
     "steady_sliding",

@@ -1,0 +1,367 @@
+"""A static coefficient above the kinetic one in the 1-D solver (docs/friction_laws.md)."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import vibrofriction as vf
+from vibrofriction import theory
+from vibrofriction._kernels.integrate import initial_state
+from vibrofriction._kernels.newton import _free_dimension
+from vibrofriction._kernels.period import N_ACC, advance_period
+from vibrofriction._kernels.phases import make_model
+from vibrofriction._kernels.tangent import period_map_tangent
+from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS
+from vibrofriction.solver import solve_points
+
+DATA = Path(__file__).parents[1] / "data"
+BASE = json.loads((DATA / "static_ratio_base.json").read_text())
+
+
+def _load_maker():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("make_static_ratio_base",
+                                                  DATA / "make_static_ratio_base.py")
+    mod = importlib.util.module_from_spec(spec)
+    assert spec.loader is not None
+    spec.loader.exec_module(mod)
+    return mod
+
+
+MAKER = _load_maker()
+
+
+# --------------------------------------------------------------------------- s_r = 1
+@pytest.mark.parametrize("i", range(len(BASE["points"])))
+def test_static_ratio_one_is_the_coulomb_solver_bit_for_bit(i):
+    """``static_ratio = 1`` reproduces the outputs of the solver before the law existed
+    (stored by tests/data/make_static_ratio_base.py on that code), bit for bit.
+    """
+    p, want = BASE["points"][i], BASE["results"][i]
+    # the stored point is unchanged by a fresh draw (the maker's list is the test's)
+    assert MAKER.points()[i] == p
+    got = MAKER.run_point(p)
+    assert got == want
+    # and 1.0 given explicitly is the default
+    kw = {k: v for k, v in p.items() if k not in ("initial", "inplane_on")}
+    cols = solve_points(**kw, static_ratio=1.0, inplane_on=p["inplane_on"],
+                        initial=p["initial"])
+    assert {k: float(cols[k]).hex() for k in FLOAT_COLUMNS} == \
+        {k: want["batch"][k] for k in FLOAT_COLUMNS}
+    assert {k: int(cols[k]) for k in INT_COLUMNS} == {k: want["batch"][k] for k in INT_COLUMNS}
+
+
+@pytest.mark.parametrize("i", range(len(BASE["histories"])))
+def test_static_ratio_one_histories_are_unchanged(i):
+    assert MAKER.history_digest(BASE["points"][i]) == BASE["histories"][i]
+
+
+def test_the_base_covers_every_regime():
+    pts = BASE["points"]
+    assert any(math.isinf(p["beta"]) for p in pts)
+    assert any(p["eta_c"] > 0 for p in pts)
+    assert any(p["amplitude"] > 1 for p in pts)
+    assert any(p["amplitude"] == 0 for p in pts)
+    assert any(p["zeta"] > 0 for p in pts)
+    assert any(p["a_x"] > 0 and p["inplane_on"] == "substrate" for p in pts)
+    assert any(p["a_x"] > 0 and p["inplane_on"] == "holder" for p in pts)
+    assert {p["initial"] for p in pts} == {"rest", "sliding"}
+    status = {r["scalar"]["status"] for r in BASE["results"]}
+    assert {"periodic", "continuous sliding"} <= status
+
+
+# --------------------------------------------------------------------------- s_r > 1
+def _random_points(n, seed):
+    """Random valid points of every regime with ``1 < s_r <= 2.5``: finite elastic,
+    viscoelastic and rigid contact, pin damping, jumping, an in-plane oscillation."""
+    rng = np.random.default_rng(seed)
+    out = []
+    for i in range(n):
+        contact = ("elastic", "viscous", "rigid")[i % 3]
+        alpha = float(rng.uniform(0.05, 2.5))
+        beta = math.inf if contact == "rigid" else alpha + float(rng.uniform(0.4, 15.0))
+        a = float(rng.uniform(1.05, 1.6)) if i % 4 == 1 else float(rng.uniform(0.0, 0.95))
+        dim = vf.Dimensionless(
+            alpha, beta, a, zeta=float(rng.uniform(0.01, 0.3)) if i % 2 == 0 else 0.0,
+            eta_c=float(rng.uniform(0.05, 0.6)) if contact == "viscous" else 0.0,
+            a_x=float(rng.uniform(0.05, 0.4)) if i % 5 == 3 else 0.0,
+            phase_x=float(rng.uniform(0.0, 2 * math.pi)),
+            static_ratio=float(rng.uniform(1.05, 2.5)))
+        out.append((dim, float(rng.uniform(0.02, 0.6)), ("sliding", "rest")[i % 2]))
+    return out
+
+
+POINTS = _random_points(24, 7)
+
+
+@pytest.mark.parametrize("dim, V, initial", POINTS)
+def test_force_within_the_static_cone_and_energy_balanced(dim, V, initial):
+    """Along a history ``|f| <= s_r n``; after every stick->slip event of a finite contact the
+    force is the kinetic ``s n``; work = stored energy + dissipation, the elastic contact's
+    jumps ``(k/2)(e_before^2 - e_after^2)`` counted in the friction's."""
+    h = vf.simulate(dim, v_inertial=V, periods=4.0, samples_per_period=200, initial=initial)
+    sr = dim.static_ratio
+    assert np.all(np.abs(h.f) <= sr * h.n + 1e-9)
+    slipping = np.isin(h.phase, ("slip+", "slip-"))
+    s = np.where(h.phase == "slip+", 1.0, -1.0)
+    np.testing.assert_allclose(h.f[slipping], s[slipping] * h.n[slipping], atol=1e-12)
+    breaks = [e for e in h.events if e.kind == "stick->slip"]
+    for ev in breaks:  # the force before the event is s_r n (the sample just before it)
+        j = int(np.searchsorted(h.tau, ev.tau)) - 1
+        assert abs(abs(h.f[j]) - sr * h.n[j]) <= 1e-8 * (1 + sr)
+    lhs = h.work_input - h.dissipated_pin - h.dissipated_contact - h.dissipated_friction
+    rhs = h.stored_energy() - h.stored_energy()[0]
+    scale = np.max(np.abs(h.work_input)) + np.max(np.abs(h.stored_energy())) + 1.0
+    assert np.max(np.abs(lhs - rhs)) <= 1e-7 * scale
+    assert h.dissipated_friction[-1] >= -1e-12 * scale
+
+
+def test_the_jump_is_in_the_energy_balance():
+    """Without the jump's dissipation the balance of an elastic contact fails by it."""
+    dim = vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.6)
+    h = vf.simulate(dim, v_inertial=0.3, periods=3.0, samples_per_period=200)
+    k = dim.beta - dim.alpha
+    jumps = [e for e in h.events if e.kind == "stick->slip"]
+    assert jumps
+    total = 0.0
+    for ev in jumps:
+        j = int(np.searchsorted(h.tau, ev.tau))  # the sample at the event: after the jump
+        assert h.tau[j] == ev.tau
+        e_after, e_before = h.e[j], h.e[j - 1]
+        assert e_before == pytest.approx(dim.static_ratio * e_after, rel=1e-8)
+        total += 0.5 * k * (e_before**2 - e_after**2)
+    lhs = h.work_input - h.dissipated_pin - h.dissipated_contact - h.dissipated_friction
+    rhs = h.stored_energy() - h.stored_energy()[0]
+    assert abs(lhs[-1] - rhs[-1]) <= 1e-9 * (1 + total)
+    # the jumps are no round-off: without them the balance would fail by far
+    assert total >= 1e-3 * (abs(h.work_input[-1]) + np.max(np.abs(h.stored_energy())))
+
+
+# --------------------------------------------------------------------------- the period map
+def _plain_map(z3, ph, M):
+    z = np.array([*z3, float(ph), math.nan])
+    acc = np.zeros(N_ACC)
+    count = np.zeros(3, np.int64)
+    assert advance_period(z, acc, count, M, 10**6)
+    return z[:3].copy(), int(z[3]), int(count[0]), float(acc[0])
+
+
+# (alpha, beta, a, V, zeta, eta_c, s_r, start): elastic (the jump), viscoelastic, rigid,
+# damped, jumping, a stiff system
+TANGENT_POINTS = [(0.5, 2.0, 0.5, 0.3, 0.0, 0.0, 1.4, 0),
+                  (0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 1.4, 1),
+                  (0.5, 2.0, 0.5, 0.3, 0.0, 0.2, 1.4, 0),
+                  (0.3, math.inf, 0.5, 0.2, 0.0, 0.0, 1.4, 0),
+                  (0.3, math.inf, 0.5, 0.2, 0.05, 0.0, 2.0, 0),
+                  (0.3, 5.0, 1.3, 0.4, 0.02, 0.0, 1.4, 0),
+                  (2.0, 10.0, 0.8, 0.6, 0.0, 0.0, 1.4, 0),
+                  (2.0, 10.0, 0.8, 0.6, 0.0, 0.0, 2.2, 1)]
+
+
+@pytest.mark.parametrize("pt", TANGENT_POINTS)
+def test_period_map_tangent_with_the_jump_against_differences(pt):
+    """The exact Jacobian of the period map and the gradient of ``int f`` (the jump's
+    saltation for an elastic contact, the force's drop for the others) against fourth-order
+    central differences of the plain map."""
+    *par, sr, start = pt
+    M = make_model(*par, 0.0, 0.0, True, sr)
+    z = np.array(list(initial_state(start, M)), dtype=float)
+    acc = np.zeros(N_ACC)
+    count = np.zeros(3, np.int64)
+    for _ in range(6):
+        assert advance_period(z, acc, count, M, 10**6)
+    z3, ph = z[:3].copy(), int(z[3])
+    J, G = np.zeros((3, 3)), np.zeros(3)
+    out = period_map_tangent(*z3, ph, 1, M, 10**6, J, G, np.zeros(N_ACC))
+    assert out[-1]  # smooth
+    base = _plain_map(z3, ph, M)
+    assert base[2] >= 1  # the period has an event
+    checked = 0
+    for j in range(_free_dimension(ph, M)):
+        for h in (1e-4, 1e-5, 1e-6):
+            step = h * (1.0 + abs(z3[j]))
+            imgs = []
+            for q in (-2, -1, 1, 2):
+                zq = z3.copy()
+                zq[j] += q * step
+                r = _plain_map(zq, ph, M)
+                if r[1:3] != base[1:3]:
+                    break
+                imgs.append(np.append(r[0], r[3]))
+            else:
+                d = (8 * (imgs[2] - imgs[1]) - (imgs[3] - imgs[0])) / (12 * step)
+                got = np.append(J[:, j], G[j])
+                assert np.max(np.abs(d - got)) <= 1e-7 * (1.0 + np.max(np.abs(d)))
+                checked += 1
+                break
+    assert checked == _free_dimension(ph, M)
+
+
+@pytest.mark.parametrize("dim, V, initial", POINTS[:12])
+def test_a_periodic_answer_is_an_orbit_of_the_history(dim, V, initial):
+    """Newton's orbit (found with the jump's Jacobian) is a periodic motion: the history from
+    its state returns to it after its period, and its mean is the answer."""
+    r = vf.friction_coefficient(dim, v_inertial=V, initial=initial)
+    assert r.status is not vf.Status.FAILED
+    assert abs(r.mu_ratio) <= dim.static_ratio * (1 + 1e-12) or math.isnan(r.mu_ratio)
+    if r.status is not vf.Status.PERIODIC or not r.trusted:
+        return
+    p = r.period
+    h = vf.simulate(dim, v_inertial=V, periods=float(p), samples_per_period=2000,
+                    initial=r.final_state)
+    mean = np.trapezoid(h.f, h.tau) / np.trapezoid(h.n, h.tau)
+    assert mean == pytest.approx(r.mu_ratio, abs=1e-5 + r.error)
+    end = h.final_state
+    assert end.phase == r.final_state.phase
+    assert end.y == pytest.approx(r.final_state.y, abs=1e-6 * (1 + abs(end.y)))
+    assert end.x_dot == pytest.approx(r.final_state.x_dot, abs=1e-6 * (1 + abs(end.x_dot)))
+
+
+# --------------------------------------------------------------------------- V_c
+VC_POINTS = [(0.5, 2.0, 0.5, 0.05, 0.0), (0.3, 4.0, 0.8, 0.02, 0.3), (2.0, 10.0, 0.6, 0.1, 0.1),
+             (0.5, math.inf, 0.5, 0.05, 0.0), (0.2, math.inf, 0.7, 0.0, 0.0),
+             (0.5, 2.0, 0.5, 0.0, 0.0)]
+
+
+@pytest.mark.parametrize("p", VC_POINTS)
+@pytest.mark.parametrize("sr", [1.2, 2.0])
+def test_critical_velocity_is_coulombs(p, sr):
+    """Continuous sliding carries the kinetic force: below Coulomb's ``V_c`` no start slides
+    (the contact sticks or slips back in the answering window); far above it the motion from
+    rest or steady sliding slides (proven, or a pure forward-slip orbit)."""
+    al, be, a, z, eta = p
+    vc = theory.static_kinetic_critical_velocity(al, be, a, sr, z, eta)
+    assert vc == theory.critical_inertial_velocity(al, be, a, z, eta)
+    dim = vf.Dimensionless(al, be, a, zeta=z, eta_c=eta, static_ratio=sr)
+    for initial in ("sliding", "rest"):
+        r = vf.friction_coefficient(dim, v_inertial=0.9 * vc, initial=initial)
+        assert r.trusted and r.status is not vf.Status.SLIDING
+        assert r.stick_fraction + r.reverse_slip_fraction > 1e-3
+        assert r.mu_ratio != 1.0
+        r = vf.friction_coefficient(dim, v_inertial=4.0 * vc, initial=initial)
+        assert r.trusted and r.mu_ratio == 1.0
+        assert r.stick_fraction == 0.0 and r.reverse_slip_fraction == 0.0
+
+
+def test_sliding_and_stick_slip_coexist_above_the_critical_velocity():
+    """Undamped, ``s_r = 1.5``, ``V = 1.2 V_c``: the sliding orbit slides for ever from its own
+    state (Coulomb's orbit, proven), while the steady-sliding start and the rest are caught
+    in a stick-slip orbit with ``mu > mu0``."""
+    al, be, a = 0.5, 2.0, 0.5
+    dim = vf.Dimensionless(al, be, a, static_ratio=1.5)
+    V = 1.2 * theory.critical_inertial_velocity(al, be, a)
+    orbit = theory.steady_sliding(0.0, al, be, a, V)
+    on_orbit = vf.SectionState(y=orbit.y, x_dot=orbit.velocity, f=1.0 + a, phase="slip+")
+    r = vf.friction_coefficient(dim, v_inertial=V, initial=on_orbit)
+    assert r.status is vf.Status.SLIDING and r.mu_ratio == 1.0 and r.error == 0.0
+    for initial in ("sliding", "rest"):
+        r = vf.friction_coefficient(dim, v_inertial=V, initial=initial)
+        assert r.status is vf.Status.PERIODIC and r.trusted
+        assert r.stick_fraction > 0.05 and r.mu_ratio > 1.0 + 10 * r.error
+    # with Coulomb friction the same starts slide
+    r = vf.friction_coefficient(vf.Dimensionless(al, be, a), v_inertial=V)
+    assert r.status is vf.Status.SLIDING
+
+
+def test_without_oscillation_the_sliding_start_slides_and_rest_sticks_and_slips():
+    """``a = 0``: steady sliding goes on (kinetic force, slip velocity ``V``); from rest the
+    classic stick-slip of a static coefficient, whose undamped rigid mean is exactly 1."""
+    dim = vf.Dimensionless(0.5, math.inf, 0.0, static_ratio=1.4)
+    r = vf.friction_coefficient(dim, v_inertial=0.3)
+    assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0
+    r = vf.friction_coefficient(dim, v_inertial=0.3, initial="rest")
+    assert r.trusted and r.stick_fraction > 0.3
+    assert r.mu_ratio == pytest.approx(1.0, abs=1e-9 + r.error)
+
+
+# --------------------------------------------------------------------------- V -> 0
+def _cycle_mean(dim, V, periods, samples=64):
+    """``int f / int n`` over the last whole stick-slip cycle of a history from rest (between
+    its last two stick->slip events) and the number of cycles seen."""
+    h = vf.simulate(dim, v_inertial=V, periods=periods, samples_per_period=samples,
+                    initial="rest")
+    starts = [e.tau for e in h.events if e.kind == "stick->slip"]
+    assert len(starts) >= 3
+    i0 = int(np.searchsorted(h.tau, starts[-2]))
+    i1 = int(np.searchsorted(h.tau, starts[-1]))
+    sl = slice(i0, i1 + 1)
+    return np.trapezoid(h.f[sl], h.tau[sl]) / np.trapezoid(h.n[sl], h.tau[sl]), len(starts)
+
+
+@pytest.mark.parametrize("beta, zeta", [(math.inf, 0.0), (math.inf, 0.05), (math.inf, 0.3),
+                                        (3.0, 0.05), (3.0, 0.3)])
+def test_static_limit_without_oscillation(beta, zeta):
+    """``a = 0``: the mean over a stick-slip cycle tends to the quasi-static cycle's as
+    ``V -> 0``, linearly (the slip's time against the stick's)."""
+    sr, al = 1.4, 0.5
+    dim = vf.Dimensionless(al, beta, 0.0, zeta=zeta, static_ratio=sr)
+    limit = theory.static_kinetic_static_limit(al, beta, 0.0, sr, zeta)
+    if math.isinf(beta) and zeta == 0.0:
+        assert limit == pytest.approx(1.0, abs=1e-12)  # the saw-tooth 2 - s_r ... s_r
+    gaps = []
+    for V in (1e-2, 1e-3):
+        # the stuck force rises at alpha V k/beta: from 0 to s_r, then cycles of at most
+        # 2 (s_r - 1) of it
+        rate = al * V * (1.0 if math.isinf(beta) else (beta - al) / beta)
+        mean, _ = _cycle_mean(dim, V, periods=(sr + 5.0 * (sr - 1.0)) / rate / (2 * math.pi)
+                              + 5)
+        gaps.append(abs(mean - limit))
+    assert gaps[1] <= 2e-3
+    assert gaps[1] <= 0.2 * gaps[0] + 1e-9
+
+
+@pytest.mark.parametrize("alpha, a, sr, zeta", [(0.5, 0.5, 1.4, 0.05), (0.5, 0.5, 1.4, 0.0),
+                                                (2.0, 0.3, 2.5, 0.1), (0.05, 0.7, 1.3, 0.02),
+                                                (0.5, 0.5, 1.0, 0.05)])
+def test_static_limit_slip_of_a_rigid_contact(alpha, a, sr, zeta):
+    """The slip of the static limit against the solver: a rigid contact held at rest whose
+    force reaches ``s_r (1 - a)`` at ``tau = pi`` (``V = 1e-9``) slips for the derived time
+    and sticks again with the derived force."""
+    slip = theory.static_kinetic_slip(alpha, a, sr, zeta)
+    V = 1e-9
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+    f_pi = slip.force_before
+    y0 = (alpha * V * math.pi + gamma * V - f_pi) / alpha  # f = -alpha y + gamma V, y = y0 - V tau
+    start = vf.SectionState(y=y0, x_dot=0.0, f=-alpha * y0 + gamma * V, phase="stick")
+    dim = vf.Dimensionless(alpha, math.inf, a, zeta=zeta, static_ratio=sr)
+    h = vf.simulate(dim, v_inertial=V, periods=2.0, samples_per_period=64, initial=start)
+    ev = [e for e in h.events if e.tau < 2 * math.pi + 1.5]
+    if sr == 1.0:
+        assert slip.duration == 0.0 and slip.force_after == slip.force_before
+        assert theory.static_kinetic_static_limit(alpha, math.inf, a, sr, zeta) == \
+            pytest.approx(theory.static_mu_ratio(a), abs=1e-15)
+        return
+    assert ev[0].kind == "stick->slip" and ev[0].tau == pytest.approx(math.pi, abs=1e-4)
+    assert ev[1].kind == "slip->stick" and ev[1].after == "stick"
+    assert ev[1].tau - ev[0].tau == pytest.approx(slip.duration, abs=1e-6)
+    j = int(np.searchsorted(h.tau, ev[1].tau))
+    assert h.f[j] == pytest.approx(slip.force_after, abs=1e-6)
+
+
+# --------------------------------------------------------------------------- properties
+@settings(max_examples=30, deadline=None)
+@given(alpha=st.floats(0.05, 3.0), k=st.floats(0.3, 20.0), rigid=st.booleans(),
+       a=st.floats(0.0, 1.5), V=st.floats(0.02, 2.0), zeta=st.sampled_from([0.0, 0.02, 0.2]),
+       eta=st.sampled_from([0.0, 0.1]), sr=st.floats(1.0, 3.0))
+def test_properties_over_random_parameters(alpha, k, rigid, a, V, zeta, eta, sr):
+    """Over random valid points: a result within the static cone, ``|mu| <= s_r``; never a
+    failed integration; ``s_r`` barely above 1 is Coulomb's answer to first order."""
+    beta = math.inf if rigid else alpha + k
+    dim = vf.Dimensionless(alpha, beta, a, zeta=zeta, eta_c=eta, static_ratio=sr)
+    r = vf.friction_coefficient(dim, v_inertial=V)
+    assert r.status is not vf.Status.FAILED
+    if math.isfinite(r.mu_ratio):
+        assert abs(r.mu_ratio) <= sr * (1 + 1e-12)
+    r1 = vf.friction_coefficient(replace(dim, static_ratio=1.0), v_inertial=V)
+    near = vf.friction_coefficient(replace(dim, static_ratio=1.0 + 1e-9), v_inertial=V)
+    if r1.trusted and near.trusted and r1.status is near.status:
+        assert abs(near.mu_ratio - r1.mu_ratio) <= 1e-5 + 10 * (r1.error + near.error)
