@@ -143,7 +143,7 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "critical_note": critical_note, "rest_note": rest_note,
         **{n: getattr(dim, n) for n in parameter_names("dimensionless", optional=False)},
         "closed_forms": [] if i else closed_forms(state, system, state.velocities(), case,
-                                                  scale, res.sliding_mu_ratio, x[solved]),
+                                                  scale),
         "x_label": ("vbar = v0/v0* (v0*: the curved tip's critical velocity)"
                     if curved and state.axis == "vbar" else AXES[state.axis][1]),
         "y_label": "COF = mu" if scale != 1.0 else "mu/mu0",
@@ -207,23 +207,23 @@ def _band(dim: vf.Dimensionless, scale: float) -> tuple[float, float, str] | Non
 
 
 def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
-                 scale: float, sliding: np.ndarray | None = None,
-                 x_sliding: np.ndarray | None = None) -> list[dict]:
+                 scale: float) -> list[dict]:
     """The closed forms that apply to this system, at the curve's velocities.
 
     The paper's closed forms (docs/theory.md) that apply to this system, each with its
     label and its points at the curve's velocities ``x``; none outside their regime. They
-    are Coulomb's: under another friction law, rate-and-state friction's steady sliding
-    without oscillation (``sliding``, the results' ``sliding_mu_ratio`` at ``x_sliding``).
+    are Coulomb's: under another friction law, only rate-and-state friction's steady
+    sliding without oscillation (``theory.steady_mu_ratio``, odd in ``V``).
     """
     dim = _dimensionless(system)
     V = _inertial(state, system, x)
     a = dim.amplitude
     out: list[dict] = []
     if state.friction != "coulomb":
-        if state.friction == "rate_state" and sliding is not None and x_sliding is not None:
+        if state.friction == "rate_state":
+            mu = theory.steady_mu_ratio(V, dim.rs_a, dim.rs_b, dim.rs_d_c, dim.rs_v_ref)
             out.append({"label": "steady sliding without oscillation, mu_ss(v0)",
-                        "x": x_sliding, "y": np.asarray(sliding, dtype=float) * scale})
+                        "x": x, "y": np.asarray(mu, dtype=float) * scale})
         return out
     if dim.curved:
         return _curved_closed_forms(dim, x, V, case, scale)

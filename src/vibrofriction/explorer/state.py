@@ -367,14 +367,16 @@ class State:
                 values[key] = _value(key, text)
             except ValueError as exc:
                 problems[key] = str(exc)
-        try:
-            return cls(**values), problems
-        except ValueError as exc:
-            bad = next((n for n in ("mode", "inplane_on", "rs_law", "friction")
-                        if str(exc).startswith(n)), "axis")
-            problems[bad] = str(exc)
-            values.pop(bad, None)
-            return cls(**values), problems
+        while True:  # each choice the state refuses by name keeps its default
+            try:
+                return cls(**values), problems
+            except ValueError as exc:
+                bad = next((n for n in ("mode", "inplane_on", "rs_law", "friction")
+                            if str(exc).startswith(n)), "axis")
+                if bad not in values:
+                    raise
+                problems[bad] = str(exc)
+                values.pop(bad)
 
     def with_(self, **changes: Any) -> State:
         """A copy with some inputs replaced."""
