@@ -171,3 +171,41 @@ def test_a_rate_and_state_point_says_it_has_no_history():
     assert h["t"] is None and "no time history" in h["message"] and "theta" in h["message"]
     r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, **RS), v_inertial=0.5)
     assert h["mu_ratio"] == r.mu_ratio
+
+
+@pytest.mark.slow
+def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuses(
+        monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    ex = page.Explorer(State(eta_c=0.1))
+    assert not ex.inputs["rs_a"].layout.visible and not ex.law_note.visible
+    ex.law.value = "rate_state"
+    assert ex.state.friction == "rate_state" and ex.state.eta_c == 0.0
+    assert ex.inputs["rs_a"].layout.visible and not ex.inputs["static_ratio"].layout.visible
+    assert ex.rs_law.visible
+    assert ex.inputs["eta_c"].text.disabled and ex.inputs["a_y"].text.disabled
+    eta = ex.inputs["eta_c"].message.object
+    assert "eta_c reset from 0.1 to 0: not taken with rate-and-state friction" in eta
+    assert "does not take contact damping (eta_c &gt; 0)" in eta  # the library's, escaped
+    assert "at most 40 points" in ex.law_note.object
+    ex.inputs["rs_d_c"].text.value = "0"
+    assert "rs_d_c must be finite and > 0" in ex.inputs["rs_d_c"].message.object
+    assert ex.state.rs_d_c == State().rs_d_c  # the last good state stays
+    ex.inputs["rs_d_c"].text.value = "0.05"
+    assert ex.state.rs_d_c == 0.05 and not ex.inputs["rs_d_c"].message.visible
+    ex.law.value = "static"
+    assert not ex.inputs["eta_c"].text.disabled and ex.inputs["static_ratio"].layout.visible
+    ex.profile.value = "sphere"  # the MDR solver takes Coulomb friction only (its declaration)
+    assert ex.law.value == "coulomb" and ex.state.friction == "coulomb"
+    assert "static above kinetic reset to Coulomb: the MDR solver does not take it yet" in \
+        ex.law_note.object
+    ex.profile.value = "flat"
+    ex.mode.value = "bench"
+    ex.law.value = "rate_state"
+    assert ex.inputs["friction_d_c_um"].layout.visible and not ex.inputs["rs_d_c"].layout.visible
+    assert ex.inputs["bench_eta_c"].text.disabled
+    ex.inputs["friction_v_ref_mm_s"].text.value = "2"
+    assert ex.state.system().friction.v_ref == 2e-3
