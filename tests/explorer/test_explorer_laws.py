@@ -85,6 +85,7 @@ def test_rate_and_state_curve_and_its_steady_sliding():
     np.testing.assert_array_equal(c["x"], V)
     np.testing.assert_array_equal(c["y"], vf.friction_coefficient(system, v_inertial=V).mu_ratio)
     assert set(c["method"]) == {"rate_state"}
+    assert compute.solver_text(c) == "rate-and-state solver"  # the plot's title
     (form,) = c["closed_forms"]
     np.testing.assert_allclose(form["y"], theory.steady_mu_ratio(V, 0.03, 0.01, 0.02, 0.2),
                                rtol=1e-14)

@@ -158,6 +158,13 @@ _SHORT = {"friction_a": "a", "friction_b": "b", "friction_d_c_um": "d_c",
 _UNITS = {"friction_d_c_um": " um", "friction_v_ref_mm_s": " mm/s"}
 
 
+def solver_text(curve: dict) -> str:
+    """The solver of a curve as its plot's title and legend name it."""
+    if curve.get("profile", "flat punch") != "flat punch":
+        return f"{curve['profile']}, MDR solver"
+    return "rate-and-state solver" if curve.get("law") == "rate_state" else "exact solver"
+
+
 def law_text(state: State) -> str:
     """The friction law as the page names it, with its parameters (``Coulomb`` alone)."""
     if state.friction == "coulomb":

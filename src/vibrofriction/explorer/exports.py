@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .compute import law_text, not_computed
+from .compute import law_text, not_computed, solver_text
 from .state import State
 
 __all__ = ["curve_csv", "curve_file", "figure_bytes", "snippet"]
@@ -112,8 +112,7 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     fig = Figure(figsize=(6.4, 4.2), layout="constrained")
     ax = fig.subplots()
     x, y, ok = curve["x"], curve["y"], curve["trusted"]
-    solver = "exact solver" if curve.get("profile", "flat punch") == "flat punch" else \
-        f"MDR solver, {curve['profile']}"
+    solver = solver_text(curve)
     line_x, line_y = x, np.where(ok, y, np.nan)
     k = int(np.searchsorted(x, 0.0))
     if curve.get("rest_note") and 0 < k < len(x):  # V = 0 left out: the line breaks

@@ -10,7 +10,7 @@ from bokeh.plotting import figure
 
 from ..figures.style import PHASE_COLORS
 from ..schema import PARTIAL, ContactState
-from .compute import CASE_COLORS, CONTACT_STATES, not_computed
+from .compute import CASE_COLORS, CONTACT_STATES, not_computed, solver_text
 
 __all__ = ["CurveView", "HistoryView", "MapView", "SpaceTimeView"]
 
@@ -164,8 +164,7 @@ class CurveView:
         for fig in self.figures.values():
             fig.yaxis.axis_label = curve["y_label"]
             fig.xaxis.axis_label = curve["x_label"]
-            solver = "exact solver" if curve["profile"] == "flat punch" else \
-                f"{curve['profile']}, MDR solver"
+            solver = solver_text(curve)
             fig.title.text = (f"{curve['y_label']} against velocity ({solver}): case "
                               f"{curve['case']}")
         self.picked.data = {"x": [], "y": []}
