@@ -61,6 +61,10 @@ def test_rest_and_points_under_a_law():
     assert State(friction="static").rest_refused and State(friction="rate_state").rest_refused
     assert State(friction="rate_state").curve_points == LAW_POINTS == 40
     assert State(friction="static").curve_points == 200
+    from vibrofriction.explorer.texts import status_text
+
+    assert status_text(State(friction="rate_state")).startswith(
+        "computing 40 points by the rate-and-state solver")
 
 
 def test_static_above_kinetic_changes_the_curve_as_the_library_does():

@@ -453,7 +453,8 @@ class Explorer:
         off = self._law_disabled(law)
         short = (f"{solver.title}; V = 0 left out of the curve"
                  + (f"; at most {LAW_POINTS} points" if law == "rate_state" else "")
-                 + (f"; disabled: {', '.join(off)}" if off else ""))
+                 + (f"; disabled: {', '.join(n.removeprefix('bench_') for n in off)}"
+                    if off else ""))
         return with_more(short, f"{solver.title} ({solver.takes}) takes {LAWS[law]} friction; "
                                 f"velocities: {solver.velocities}.")
 

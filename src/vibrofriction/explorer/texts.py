@@ -147,6 +147,10 @@ def status_text(state: State) -> str:
         return (f"computing {state.curve_points} points by the MDR solver "
                 f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
                 "a few tenths near the onset of sliding)...")
+    if state.friction == "rate_state" and not state.curved:
+        return (f"computing {state.curve_points} points by the rate-and-state solver (~0.1 s a "
+                "point; the first curve after an install compiles its kernels, about a "
+                "minute)...")
     return f"computing {state.curve_points} points..."
 
 
