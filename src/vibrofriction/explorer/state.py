@@ -68,7 +68,8 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
            "phase_y": (0.0, 6.283185307179586, False)}
 #: the tip's profile is offered by a selector of its own (:data:`PROFILES`, :data:`PROFILE`)
-#: over the MDR solver (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is
+#: over the MDR solver (docs/contact_geometry.md), the friction law's inputs by the law's
+#: selector (:data:`LAWS`, :data:`LAW_FIELDS`); the pin across (alpha_y, zeta_y) is
 #: axisymmetric here
 _NOT_OFFERED = ("profile_exponent", "static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref",
                 "rs_alpha_ld")
