@@ -18,11 +18,6 @@ from vibrofriction.capabilities import CAPABILITIES, Refusal, refused_by
 from vibrofriction.sweep import compute_block, make_plan, sweep
 from vibrofriction.sweep._compute import _physical_rows
 
-#: The solver of rate-and-state friction is written on another branch: until it is merged
-#: every solver refuses rs_a > 0 (a ValueError naming it).
-NO_RS_SOLVER = pytest.mark.xfail(raises=ValueError, strict=False,
-                                 reason="the solver of the law lands on another branch")
-
 BASE = dict(alpha=0.1, beta=2.0, amplitude=0.5)
 V = np.array([0.15, 0.2, 0.3])  # inertial velocities, all > 0
 LAW = dict(rs_a=0.02, rs_b=0.03, rs_d_c=0.05, rs_v_ref=0.2)  # velocity weakening, b > a
@@ -312,7 +307,6 @@ def test_a_resumed_store_with_another_rs_law_is_refused(tmp_path: Path) -> None:
         sweep(**grid, store=path)
 
 
-@NO_RS_SOLVER
 def test_an_atlas_over_rs_a_equals_friction_coefficient_bitwise() -> None:
     values = [0.01, 0.02, 0.04]
     for law in ("aging", "slip"):
@@ -328,7 +322,6 @@ def test_an_atlas_over_rs_a_equals_friction_coefficient_bitwise() -> None:
             assert np.all(np.isnan(row.critical_velocity.values))
 
 
-@NO_RS_SOLVER
 def test_a_physical_sweep_keeps_its_rate_and_state_law() -> None:
     system = pin(friction=rate_state(law="slip"))
     v0 = np.array([0.6, 1.2]) * pin().critical_velocity()
@@ -346,7 +339,6 @@ def test_a_physical_sweep_keeps_its_rate_and_state_law() -> None:
         assert row.mu_ratio.values.tobytes() == friction_coefficient(s, v0=v0).mu_ratio.tobytes()
 
 
-@NO_RS_SOLVER
 def test_a_rate_and_state_block_is_solved_with_the_plans_law() -> None:
     plan = make_plan(**BASE, **LAW, rs_law="slip", v_inertial=V)
     _, values = compute_block(plan, 0)
