@@ -381,3 +381,26 @@ def test_properties_over_random_parameters(alpha, k, rigid, a, V, zeta, eta, sr)
     near = vf.friction_coefficient(replace(dim, static_ratio=1.0 + 1e-9), v_inertial=V)
     if r1.trusted and near.trusted and r1.status is near.status:
         assert abs(near.mu_ratio - r1.mu_ratio) <= 1e-5 + 10 * (r1.error + near.error)
+
+
+# --------------------------------------------------------------------------- declarations
+def test_the_event_solver_declares_the_static_ratio_and_refuses_what_it_does_not_cover():
+    from vibrofriction.capabilities import CAPABILITIES, refused_by
+    from vibrofriction.solver import friction_gradient
+
+    event = CAPABILITIES["event"]
+    assert "static_ratio" in event.parameters
+    assert event not in refused_by("static_ratio")  # only at V = 0, not every value
+    dim = vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.5)
+    with pytest.raises(ValueError, match="static_ratio") as err:
+        vf.friction_coefficient(dim, v_inertial=0.0)
+    assert err.value.parameter == "static_ratio"
+    with pytest.raises(ValueError, match="static_ratio must be 1"):
+        friction_gradient(dim, v_inertial=0.3)
+    # the physical system's mu_static is the dimensionless ratio
+    p = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6, du_z=2e-6,
+                    omega=2 * math.pi * 1000, mu0=0.3, mu_static=0.45)
+    r = vf.friction_coefficient(p, v0=0.001)
+    d = vf.friction_coefficient(p.to_dimensionless(), v_inertial=r.v_inertial)
+    assert p.to_dimensionless().static_ratio == pytest.approx(1.5, rel=1e-15)
+    assert r.mu_ratio == d.mu_ratio and r.status is vf.Status.PERIODIC
