@@ -395,8 +395,7 @@ def test_the_event_solver_declares_the_static_ratio_and_refuses_what_it_does_not
     with pytest.raises(ValueError, match="static_ratio") as err:
         vf.friction_coefficient(dim, v_inertial=0.0)
     assert err.value.parameter == "static_ratio"
-    with pytest.raises(ValueError, match="static_ratio must be 1"):
-        friction_gradient(dim, v_inertial=0.3)
+    assert math.isfinite(friction_gradient(dim, v_inertial=0.3)[1]["alpha"])
     # the physical system's mu_static is the dimensionless ratio
     p = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6, du_z=2e-6,
                     omega=2 * math.pi * 1000, mu0=0.3, mu_static=0.45)
@@ -404,3 +403,36 @@ def test_the_event_solver_declares_the_static_ratio_and_refuses_what_it_does_not
     d = vf.friction_coefficient(p.to_dimensionless(), v_inertial=r.v_inertial)
     assert p.to_dimensionless().static_ratio == pytest.approx(1.5, rel=1e-15)
     assert r.mu_ratio == d.mu_ratio and r.status is vf.Status.PERIODIC
+
+
+@pytest.mark.parametrize("beta, zeta, eta, sr", [(2.0, 0.0, 0.0, 1.5), (2.0, 0.05, 0.2, 1.3),
+                                                 (math.inf, 0.05, 0.0, 1.8),
+                                                 (5.0, 0.02, 0.0, 2.2)])
+def test_gradient_with_the_jump_against_differences_of_the_solver(beta, zeta, eta, sr):
+    """``friction_gradient`` (the orbit's exact Jacobian with the break's saltation and the
+    parameters' explicit differences) against central differences of the whole solver."""
+    from vibrofriction.solver import friction_gradient
+
+    base = {"alpha": 0.5, "beta": beta, "amplitude": 0.6, "zeta": zeta, "eta_c": eta,
+            "static_ratio": sr}
+    V = 0.3
+    r, grad = friction_gradient(vf.Dimensionless(**base), v_inertial=V)
+    assert r.status is vf.Status.PERIODIC and r.trusted
+    names = ("alpha", "amplitude", "v_inertial") + (("zeta",) if zeta > 0 else ())
+    checked = 0
+    for name in names:
+        h = 1e-5
+        mus = []
+        for sign in (-1.0, 1.0):
+            kw, v = dict(base), V
+            if name == "v_inertial":
+                v = V + sign * h
+            else:
+                kw[name] = base[name] + sign * h
+            q = vf.friction_coefficient(vf.Dimensionless(**kw), v_inertial=v)
+            assert q.trusted and q.period == r.period
+            mus.append(q.mu_ratio)
+        fd = (mus[1] - mus[0]) / (2 * h)
+        assert grad[name] == pytest.approx(fd, abs=2e-5 * (1 + abs(fd))), name
+        checked += 1
+    assert checked == len(names)
