@@ -58,7 +58,8 @@ def _timer(args, kw):
     if KERNEL:
         of = np.empty(len(FLOAT_COLUMNS))
         oi = np.empty(len(INT_COLUMNS), dtype=np.int64)
-        inplane = (*(args[6:] or (0.0, 0.0)), kw.get("inplane_on", "substrate") == "substrate")
+        inplane = (*(args[6:] or (0.0, 0.0)), kw.get("inplane_on", "substrate") == "substrate",
+                   1.0)  # and static_ratio
         full = (*args[:6], *(inplane if INPLANE else ()), 0, 0.0, 0.0, 0.0, 0,
                 *event_arguments(DEFAULT_SETTINGS), of, oi)
 
@@ -108,8 +109,8 @@ def against(src: str) -> None:
     ratios = {}
     for label, *p in REGIMES:
         a_old = (*p, 0, 0.0, 0.0, 0.0, 0, *old_settings.kernel_arguments(), of, oi)
-        a_new = (*p, 0.0, 0.0, True, 0, 0.0, 0.0, 0.0, 0, *event_arguments(DEFAULT_SETTINGS),
-                 of, oi)
+        a_new = (*p, 0.0, 0.0, True, 1.0, 0, 0.0, 0.0, 0.0, 0,
+                 *event_arguments(DEFAULT_SETTINGS), of, oi)
         old(*a_old)
         steady_state(*a_new)
         r = []

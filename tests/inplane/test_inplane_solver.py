@@ -185,7 +185,7 @@ def test_contact_force_stays_in_the_cone_along_histories() -> None:
         a_x = rng.uniform(0.0, 2.0)
         phase = rng.uniform(0.0, 2.0 * math.pi)
         on = bool(rng.random() < 0.5)
-        args = (alpha, beta, a, V, zeta, eta, a_x, phase, on)
+        args = (alpha, beta, a, V, zeta, eta, a_x, phase, on, 1.0)  # static_ratio 1
         y, xd, e, ph, ed = initial_point(0, *args)
         seg = np.zeros((200_000, N_SEG_COLUMNS))
         m = run_periods(0.0, y, xd, e, ed, ph, *args, periods, seg.shape[0], seg)

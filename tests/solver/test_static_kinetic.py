@@ -158,12 +158,42 @@ def test_the_jump_is_in_the_energy_balance():
 
 
 # --------------------------------------------------------------------------- the period map
-def _plain_map(z3, ph, M):
+def _plain_map(z3, ph, M, p=1):
     z = np.array([*z3, float(ph), math.nan])
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
-    assert advance_period(z, acc, count, M, 10**6)
+    for _ in range(p):
+        assert advance_period(z, acc, count, M, 10**6)
     return z[:3].copy(), int(z[3]), int(count[0]), float(acc[0])
+
+
+def _check_tangent(z3, ph, M, p=1):
+    """``J`` and ``G`` of ``p`` periods from ``(z3, ph)`` against fourth-order differences of
+    the plain map; returns the number of its events."""
+    J, G = np.zeros((3, 3)), np.zeros(3)
+    out = period_map_tangent(*z3, ph, p, M, 10**6, J, G, np.zeros(N_ACC))
+    assert out[-1]  # smooth
+    base = _plain_map(z3, ph, M, p)
+    checked = 0
+    for j in range(_free_dimension(ph, M)):
+        for h in (1e-4, 1e-5, 1e-6):
+            step = h * (1.0 + abs(z3[j]))
+            imgs = []
+            for q in (-2, -1, 1, 2):
+                zq = z3.copy()
+                zq[j] += q * step
+                r = _plain_map(zq, ph, M, p)
+                if r[1:3] != base[1:3]:
+                    break
+                imgs.append(np.append(r[0], r[3]))
+            else:
+                d = (8 * (imgs[2] - imgs[1]) - (imgs[3] - imgs[0])) / (12 * step)
+                got = np.append(J[:, j], G[j])
+                assert np.max(np.abs(d - got)) <= 1e-7 * (1.0 + np.max(np.abs(d)))
+                checked += 1
+                break
+    assert checked == _free_dimension(ph, M)
+    return base[2]
 
 
 # (alpha, beta, a, V, zeta, eta_c, s_r, start): elastic (the jump), viscoelastic, rigid,
@@ -190,31 +220,33 @@ def test_period_map_tangent_with_the_jump_against_differences(pt):
     count = np.zeros(3, np.int64)
     for _ in range(6):
         assert advance_period(z, acc, count, M, 10**6)
-    z3, ph = z[:3].copy(), int(z[3])
-    J, G = np.zeros((3, 3)), np.zeros(3)
-    out = period_map_tangent(*z3, ph, 1, M, 10**6, J, G, np.zeros(N_ACC))
-    assert out[-1]  # smooth
-    base = _plain_map(z3, ph, M)
-    assert base[2] >= 1  # the period has an event
-    checked = 0
-    for j in range(_free_dimension(ph, M)):
-        for h in (1e-4, 1e-5, 1e-6):
-            step = h * (1.0 + abs(z3[j]))
-            imgs = []
-            for q in (-2, -1, 1, 2):
-                zq = z3.copy()
-                zq[j] += q * step
-                r = _plain_map(zq, ph, M)
-                if r[1:3] != base[1:3]:
-                    break
-                imgs.append(np.append(r[0], r[3]))
-            else:
-                d = (8 * (imgs[2] - imgs[1]) - (imgs[3] - imgs[0])) / (12 * step)
-                got = np.append(J[:, j], G[j])
-                assert np.max(np.abs(d - got)) <= 1e-7 * (1.0 + np.max(np.abs(d)))
-                checked += 1
-                break
-    assert checked == _free_dimension(ph, M)
+    assert _check_tangent(z[:3].copy(), int(z[3]), M) >= 1  # the period has an event
+
+
+def test_a_break_that_sticks_again_at_once():
+    """Where the normal force falls fast, an elastic contact's jump can be the whole slip: the
+    contact sticks again at the kinetic force.  A 10-period orbit with one such break: the
+    force is ``s n`` after it, the energy balance counts its jump, and the period map's
+    Jacobian (the reset's saltation into stick, ``(R' - x') dt``) matches differences."""
+    al, be, a, V, sr = 0.6361959374899742, 10.52813887612118, 1.015313892240192, \
+        0.10297979045742119, 2.894033682901804
+    dim = vf.Dimensionless(al, be, a, static_ratio=sr)
+    r = vf.friction_coefficient(dim, v_inertial=V)
+    assert r.status is vf.Status.PERIODIC and r.trusted and r.period == 10
+    h = vf.simulate(dim, v_inertial=V, periods=10.0, samples_per_period=200,
+                    initial=r.final_state)
+    again = [e for e in h.events if e.kind == "stick->slip" and e.after == "stick"]
+    assert len(again) == 1
+    j = int(np.searchsorted(h.tau, again[0].tau))
+    assert abs(h.f[j]) == pytest.approx(h.n[j], rel=1e-9)  # the kinetic force, stuck
+    assert abs(h.f[j - 1]) == pytest.approx(sr * h.n[j - 1], rel=1e-6)
+    lhs = h.work_input - h.dissipated_pin - h.dissipated_contact - h.dissipated_friction
+    rhs = h.stored_energy() - h.stored_energy()[0]
+    assert np.max(np.abs(lhs - rhs)) <= 1e-7 * (np.max(np.abs(h.work_input)) + 1.0)
+    M = make_model(al, be, a, V, 0.0, 0.0, 0.0, 0.0, True, sr)
+    s = r.final_state
+    z3 = np.array([s.y, s.x_dot, s.elongation(dim)])
+    assert _check_tangent(z3, 0, M, 10) == 40
 
 
 @pytest.mark.parametrize("dim, V, initial", POINTS[:12])
@@ -397,3 +429,58 @@ def test_properties_over_random_parameters(alpha, k, rigid, a, V, zeta, eta, sr)
     near = vf.friction_coefficient(replace(dim, static_ratio=1.0 + 1e-9), v_inertial=V)
     if r1.trusted and near.trusted and r1.status is near.status:
         assert abs(near.mu_ratio - r1.mu_ratio) <= 1e-5 + 10 * (r1.error + near.error)
+
+
+# --------------------------------------------------------------------------- declarations
+def test_the_event_solver_declares_the_static_ratio_and_refuses_what_it_does_not_cover():
+    from vibrofriction.capabilities import CAPABILITIES, refused_by
+    from vibrofriction.solver import friction_gradient
+
+    event = CAPABILITIES["event"]
+    assert "static_ratio" in event.parameters
+    assert event not in refused_by("static_ratio")  # only at V = 0, not every value
+    dim = vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.5)
+    with pytest.raises(ValueError, match="static_ratio") as err:
+        vf.friction_coefficient(dim, v_inertial=0.0)
+    assert err.value.parameter == "static_ratio"
+    assert math.isfinite(friction_gradient(dim, v_inertial=0.3)[1]["alpha"])
+    # the physical system's mu_static is the dimensionless ratio
+    p = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6, du_z=2e-6,
+                    omega=2 * math.pi * 1000, mu0=0.3, mu_static=0.45)
+    r = vf.friction_coefficient(p, v0=0.001)
+    d = vf.friction_coefficient(p.to_dimensionless(), v_inertial=r.v_inertial)
+    assert p.to_dimensionless().static_ratio == pytest.approx(1.5, rel=1e-15)
+    assert r.mu_ratio == d.mu_ratio and r.status is vf.Status.PERIODIC
+
+
+@pytest.mark.parametrize("beta, zeta, eta, sr", [(2.0, 0.0, 0.0, 1.5), (2.0, 0.05, 0.2, 1.3),
+                                                 (math.inf, 0.05, 0.0, 1.8),
+                                                 (5.0, 0.02, 0.0, 2.2)])
+def test_gradient_with_the_jump_against_differences_of_the_solver(beta, zeta, eta, sr):
+    """``friction_gradient`` (the orbit's exact Jacobian with the break's saltation and the
+    parameters' explicit differences) against central differences of the whole solver."""
+    from vibrofriction.solver import friction_gradient
+
+    base = {"alpha": 0.5, "beta": beta, "amplitude": 0.6, "zeta": zeta, "eta_c": eta,
+            "static_ratio": sr}
+    V = 0.3
+    r, grad = friction_gradient(vf.Dimensionless(**base), v_inertial=V)
+    assert r.status is vf.Status.PERIODIC and r.trusted
+    names = ("alpha", "amplitude", "v_inertial") + (("zeta",) if zeta > 0 else ())
+    checked = 0
+    for name in names:
+        h = 1e-5
+        mus = []
+        for sign in (-1.0, 1.0):
+            kw, v = dict(base), V
+            if name == "v_inertial":
+                v = V + sign * h
+            else:
+                kw[name] = base[name] + sign * h
+            q = vf.friction_coefficient(vf.Dimensionless(**kw), v_inertial=v)
+            assert q.trusted and q.period == r.period
+            mus.append(q.mu_ratio)
+        fd = (mus[1] - mus[0]) / (2 * h)
+        assert grad[name] == pytest.approx(fd, abs=2e-5 * (1 + abs(fd))), name
+        checked += 1
+    assert checked == len(names)

@@ -62,14 +62,14 @@ def _step(theta, j, rel):
 
 
 @jit
-def _map_at(theta, on_substrate, zf, ph, nd, p, max_events, acc):
+def _map_at(theta, on_substrate, sr, zf, ph, nd, p, max_events, acc):
     """The ``p``-period map at parameters ``theta`` from the free coordinates ``zf`` of
     phase ``ph``: ``(ok, start, image, phase, events)`` (``start``, ``image`` full
     ``(y, x', e)``; ``ok`` False where the integration stopped or a transition was
     degenerate), ``acc`` its accumulators.
     """
     M = make_model(theta[0], theta[1], theta[2], theta[3], theta[4], theta[5], theta[6],
-                   theta[7], on_substrate)
+                   theta[7], on_substrate, sr)
     y0, xd0, e0 = _unpack(zf, ph, M)
     z = np.array([y0, xd0, e0, float(ph), math.nan])
     acc[:] = 0.0
@@ -107,7 +107,7 @@ def _normal_rate(a, p):
 
 @jit
 def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, y, xd, e,
-                      ph, p, max_events, rel, order, want, dmu, dz):
+                      ph, p, max_events, rel, order, want, dmu, dz, sr=1.0):
     """Sensitivities of the ``p``-periodic orbit through the laboratory-frame section
     state ``(y, x', e, ph)`` (an answer of :func:`.steady.steady_state`, ``V > 0``).
 
@@ -116,14 +116,16 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
     returns the flags (:data:`SF_OK` ...).  Only the parameters ``want[j]`` are
     differentiated (the others stay ``nan``); ``order``: 4 (``+-h``, ``+-2h``) or 2
     (``+-h``, half the cost, an error up to ~1e-4 relative where the map bends).  A
-    rigid contact does not depend on ``beta`` (0); ``eta_c`` below
+    rigid contact does not depend on ``beta`` (0); ``sr``: the static coefficient over the
+    kinetic one (not differentiated; the jump of an elastic contact is in the exact
+    Jacobian, :func:`.tangent.saltation`); ``eta_c`` below
     :data:`.phases.ETA_ELASTIC` is solved as elastic and has no derivative here
     (``nan``, :data:`SF_KINK`).
     """
     dmu[:] = math.nan
     dz[:, :] = math.nan
     theta = np.array([alpha, beta, a, V, zeta, eta, a_x, phase_x])
-    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate)
+    M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr)
     offset = frame_offset(a_x, phase_x, on_substrate)
     y, xd = to_kernel_frame(offset, y, xd)
     nd = _free_dimension(ph, M)
@@ -172,7 +174,7 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
                 continue
             tq = theta.copy()
             tq[j] += STENCIL[q] * h
-            okq, sq, zq, phq, evq = _map_at(tq, on_substrate, zf, ph, nd, p, max_events,
+            okq, sq, zq, phq, evq = _map_at(tq, on_substrate, sr, zf, ph, nd, p, max_events,
                                             accq)
             if not okq or phq != ph or evq != ev:
                 kink = True
@@ -205,7 +207,7 @@ def orbit_sensitivity(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, 
 
 @jit
 def orbit_sensitivity_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, state,
-                           period, max_events, rel, order, want, dmu, dz, flags):
+                           period, max_events, rel, order, want, dmu, dz, flags, sr):
     """:func:`orbit_sensitivity` over arrays of points (``state`` rows ``(y, x', e, ph)``;
     rows with ``period[i] <= 0`` are skipped: flags ``SF_FAILED``, nan).
     """
@@ -218,7 +220,7 @@ def orbit_sensitivity_many(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substr
         flags[i] = orbit_sensitivity(alpha[i], beta[i], a[i], V[i], zeta[i], eta[i], a_x[i],
                                      phase_x[i], on_substrate[i], state[i, 0], state[i, 1],
                                      state[i, 2], int(state[i, 3]), period[i], max_events,
-                                     rel, order, want, dmu[i], dz[i])
+                                     rel, order, want, dmu[i], dz[i], sr[i])
 
 
 __all__ = ["N_THETA", "REL_STEP", "orbit_sensitivity", "orbit_sensitivity_many"]

@@ -73,6 +73,7 @@ def solve_gradients(
     rel_step: float = REL_STEP,
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
+    static_ratio: ArrayLike = 1.0,
 ) -> tuple[dict[str, NDArray], Sensitivities]:
     """:func:`solve_points` and the sensitivities of its answers to the parameters.
 
@@ -98,6 +99,9 @@ def solve_gradients(
         relative where the map at fixed ``z*`` bends).
     parameters : tuple of str, keyword-only
         Those differentiated (the others are ``nan``); names of :data:`SENSITIVE`.
+    static_ratio : array_like, keyword-only
+        ``mu_static/mu0 >= 1`` (docs/friction_laws.md), broadcast with the points; not
+        differentiated.
 
     Returns
     -------
@@ -114,10 +118,12 @@ def solve_gradients(
     """
     settings = settings or DEFAULT_SETTINGS
     cols = solve_points(alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x,
-                        inplane_on=inplane_on, initial=initial, settings=settings)
+                        static_ratio=static_ratio, inplane_on=inplane_on, initial=initial,
+                        settings=settings)
     return cols, sensitivities(cols, alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x,
                                phase_x, inplane_on=inplane_on, settings=settings,
-                               rel_step=rel_step, order=order, parameters=parameters)
+                               rel_step=rel_step, order=order, parameters=parameters,
+                               static_ratio=static_ratio)
 
 
 def sensitivities(
@@ -136,6 +142,7 @@ def sensitivities(
     rel_step: float = REL_STEP,
     order: int = 4,
     parameters: tuple[str, ...] = SENSITIVE,
+    static_ratio: ArrayLike = 1.0,
 ) -> Sensitivities:
     """The sensitivities of the answers ``cols`` of :func:`solve_points` at these points.
 
@@ -149,9 +156,9 @@ def sensitivities(
         raise ValueError(f"parameters must be among {SENSITIVE}, got {sorted(unknown)}")
     want = np.array([k in parameters for k in SENSITIVE])
     shape = cols["mu_ratio"].shape
-    al, be, am, V, ze, et, ax, px = (np.ascontiguousarray(np.broadcast_to(
+    al, be, am, V, ze, et, ax, px, sr = (np.ascontiguousarray(np.broadcast_to(
         np.asarray(x, dtype=float), shape).ravel())
-        for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x))
+        for x in (alpha, beta, amplitude, v_inertial, zeta, eta_c, a_x, phase_x, static_ratio))
     n = V.size
     status = cols["status"].ravel()
     periodic = (status == Status.PERIODIC.code) & (V != 0.0)
@@ -170,7 +177,7 @@ def sensitivities(
     if np.any(periodic):
         orbit_sensitivity_many(al, be, am, Vk, ze, et, ax, pxk, np.full(n, on_substrate),
                                np.ascontiguousarray(state), period, event_arguments(settings)[4],
-                               float(rel_step), order, want, dmu, dz, flags)
+                               float(rel_step), order, want, dmu, dz, flags, sr)
         if on_substrate:  # the laboratory frame: y + X, x' + X' with X = a_x cos(tau + px)
             dz[:, _AX, 0] += np.cos(pxk)
             dz[:, _AX, 1] -= np.sin(pxk)
@@ -225,9 +232,8 @@ def friction_gradient(
     Raises
     ------
     ValueError
-        A transverse oscillation (``a_y > 0``), a curved tip, a static coefficient above
-        the kinetic one (``static_ratio > 1``), rate-and-state friction (``rs_a > 0``), or
-        the velocities as for :func:`friction_coefficient`.
+        A transverse oscillation (``a_y > 0``), a curved tip, rate-and-state friction
+        (``rs_a > 0``), or the velocities as for :func:`friction_coefficient`.
     """
     dim: Dimensionless = dimensionless(system)
     if dim.a_y != 0.0:
@@ -236,14 +242,11 @@ def friction_gradient(
     if dim.profile_exponent != math.inf:
         raise ValueError(f"friction_gradient covers the flat punch only: profile_exponent "
                          f"must be inf, got {dim.profile_exponent!r}")
-    if dim.static_ratio != 1.0:
-        # the parameter differences of the period map (module doc) take Coulomb's law
-        raise ValueError(f"friction_gradient covers Coulomb friction only: static_ratio must "
-                         f"be 1, got {dim.static_ratio!r}")
     refuse_rate_state(dim, "friction_gradient", "sensitivities")
     V = float(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0))
     cols, sens = solve_gradients(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                                  dim.a_x, dim.phase_x, inplane_on=dim.inplane_on,
-                                 initial=initial, settings=settings)
+                                 initial=initial, settings=settings,
+                                 static_ratio=dim.static_ratio)
     result = result_from_columns({k: v[()].item() for k, v in cols.items()}, dim, V)
     return result, {k: float(v) for k, v in sens.mu.items()}
