@@ -262,9 +262,11 @@ def test_vanishing_transverse_amplitude_is_the_1d_solver_with_the_same_law() -> 
 def test_physical_mu_static_reaches_the_2d_solver_and_its_history() -> None:
     """``Physical(..., mu_static=...)`` is ``static_ratio = mu_static/mu0`` for the 2-D
     solver, declared among its parameters; ``simulate`` carries it."""
-    from vibrofriction.capabilities import CAPABILITIES
+    from vibrofriction.capabilities import CAPABILITIES, friction_laws
     assert "static_ratio" in CAPABILITIES["plane"].parameters
     assert not [lim for lim in CAPABILITIES["plane"].limits if lim.parameter == "static_ratio"]
+    for name in ("plane", "mdr"):  # the capability table says so
+        assert friction_laws(CAPABILITIES[name]) == ["Coulomb", "static above kinetic"]
     pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=1.5e7, k_zc=2e7, u_z0=1e-6, du_z=5e-7,
                       omega=TWO_PI * 1000, mu0=0.3, mu_static=0.39, du_y=1e-6, phase_y=1.0)
     d = pin.to_dimensionless()
