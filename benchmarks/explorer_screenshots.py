@@ -11,10 +11,14 @@ path in the plane, cropped to the history) and ``explorer_mdr.png`` (a sphere: e
 reset with the MDR solver's refusal beside it, its curve on the axis vbar and its critical
 velocity of continuous sliding, a point's history and its contact in space and time) and
 ``explorer_axis.png`` (a_x typed on the axis vbar: the axis switched to V, said beside a_x and
-the axis; the mount's note under its toggle).
+the axis; the mount's note under its toggle) and the friction laws: ``explorer_static.png``
+(static above kinetic, a point's history with the local coefficient f/n) and
+``explorer_rate_state.png`` (rate-and-state friction: eta_c reset and disabled with its
+solver's refusal, the curve with steady sliding without oscillation, the point without a
+history, said).
 
 Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
-      mdr axis]
+      mdr axis static rate_state]
 """
 
 from __future__ import annotations
@@ -118,6 +122,16 @@ def main(which: list[str]) -> None:
                 page.get_by_text(re.compile("history at V = ")).wait_for()
                 time.sleep(1.5)
                 shoot(page, "axis", 1000)
+            if "static" in which:
+                shoot(opened(browser, url + "?friction=static&static_ratio=1.6"), "static")
+            if "rate_state" in which:
+                page = browser.new_page(viewport={"width": WIDTH, "height": HEIGHT})
+                page.set_default_timeout(180_000)
+                page.goto(url + "?friction=rate_state&eta_c=0.1")
+                page.get_by_text(READOUT).wait_for()
+                page.get_by_text(re.compile("point at vbar = ")).wait_for()
+                time.sleep(1.5)
+                shoot(page, "rate_state")
             if "map" in which:
                 shoot(opened(browser, url + "?alpha=0.01&beta=400.01&amplitude=1"), "map", 760)
             if "error" in which:
@@ -144,4 +158,4 @@ def main(which: list[str]) -> None:
 
 if __name__ == "__main__":
     main(sys.argv[1:] or ["default", "inplane", "history", "map", "error", "fit",
-                             "path", "mdr", "axis"])
+                             "path", "mdr", "axis", "static", "rate_state"])

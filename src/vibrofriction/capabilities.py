@@ -1,10 +1,11 @@
 """What each solver covers, declared once (standard library and the schema only).
 
-Three solvers stand behind :func:`~vibrofriction.solver.solve_points`: the 1-D
-event-driven solver (``event``), the 2-D solver (``plane``) and the MDR solver of curved
-tips (``mdr``).  Each one's :class:`Capabilities` say which points it is chosen for, the
-parameters it uses, the points it refuses (:class:`Limit`), the initial states, settings
-(with its own defaults), outputs, sensitivities and histories it covers.  The solvers
+Four solvers stand behind :func:`~vibrofriction.solver.solve_points`: the 1-D
+event-driven solver (``event``), the 2-D solver (``plane``), the MDR solver of curved
+tips (``mdr``) and the rate-and-state solver of a flat punch (``rate_state``).  Each
+one's :class:`Capabilities` say which points it is chosen for, the parameters it uses, the
+points it refuses (:class:`Limit`), the initial states, settings (with its own defaults),
+outputs, sensitivities and histories it covers.  The solvers
 (:mod:`vibrofriction.solver.methods`) check points against them, and the refusal
 messages, the command line's help, the explorer's disabled controls and the table "what
 each solver covers" (docs/solver.md, :func:`capability_table`) are made from them.  This
@@ -19,7 +20,8 @@ from dataclasses import dataclass, field
 from typing import Any
 
 __all__ = ["CAPABILITIES", "EVENT", "FRICTION_LAWS", "INITIAL_KINDS", "MDR", "PLANE",
-           "Capabilities", "Limit", "Refusal", "capability_table", "friction_laws", "refused_by"]
+           "RATE_STATE", "Capabilities", "Limit", "Refusal", "capability_table", "friction_laws",
+           "refused_by"]
 
 #: The kinds of initial state, by the kernels' code: steady sliding, rest, a section state.
 INITIAL_KINDS = ("sliding", "rest", "section state")
@@ -143,8 +145,8 @@ def _number(x: float) -> str:
 _ALL_FLOAT = ("mu_ratio", "error", "work", "stick_fraction", "slip_fraction",
               "reverse_slip_fraction", "flight_fraction", "multiplier", "settling_periods",
               "window_min", "window_max", "drift_rate", "lateral_ratio", "mean_normal_ratio",
-              "stick_area_fraction", "slip_area_fraction", "open_area_fraction", "y", "x_dot",
-              "f", "e")
+              "stick_area_fraction", "slip_area_fraction", "open_area_fraction",
+              "sliding_mu_ratio", "y", "x_dot", "f", "e")
 
 
 EVENT = Capabilities(
@@ -157,8 +159,6 @@ EVENT = Capabilities(
         Limit("static_ratio", "a static coefficient above the kinetic one at v_inertial = 0 "
               "(its static limit depends on the dynamics of the slips: give a velocity != 0)",
               lambda p: (p["static_ratio"] != 1.0) & (p["v_inertial"] == 0.0)),
-        Limit("rs_a", "rate-and-state friction (rs_a > 0)", lambda p: p["rs_a"] > 0.0,
-              whole=True),
     ),
     initial=INITIAL_KINDS,
     settings={"max_periods": 20_000, "min_periods": 64, "tol_state": 1e-10,
@@ -192,8 +192,8 @@ PLANE = Capabilities(
              "reverse_slip_fraction", "flight_fraction", "multiplier",
              "settling_periods", "window_min", "window_max", "drift_rate",
              "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
-             "slip_area_fraction", "open_area_fraction", "y", "x_dot", "f", "e",
-             "status", "period", "periods", "events", "phase", "degenerate"),
+             "slip_area_fraction", "open_area_fraction", "sliding_mu_ratio", "y", "x_dot",
+             "f", "e", "status", "period", "periods", "events", "phase", "degenerate"),
     sensitivities=False,
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 by plain iteration of the "
@@ -226,7 +226,7 @@ MDR = Capabilities(
     settings={"max_periods": 4000, "tol_state": 1e-11},
     outputs=("mu_ratio", "error", "status", "period", "periods", "events",
              "lateral_ratio", "mean_normal_ratio", "stick_area_fraction",
-             "slip_area_fraction", "open_area_fraction", "phase"),
+             "slip_area_fraction", "open_area_fraction", "sliding_mu_ratio", "phase"),
     sensitivities=False,
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
@@ -234,8 +234,37 @@ MDR = Capabilities(
     notes=("tol_trusted is also the error the row of springs is refined to",),
 )
 
+RATE_STATE = Capabilities(
+    name="rate_state",
+    title="the rate-and-state solver",
+    takes="a flat punch, profile_exponent = inf, without a transverse oscillation, a_y = 0, "
+          "with rate-and-state friction, rs_a > 0",
+    parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x", "v_inertial",
+                "inplane_on", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld", "rs_law"),
+    limits=(
+        Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
+              lambda p: p["beta"] == math.inf),
+        Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
+              whole=True),
+        Limit("v_inertial", "zero velocity (v_inertial = 0: the contact creeps, there is no "
+              "static limit)", lambda p: p["v_inertial"] == 0.0),
+    ),
+    initial=("sliding",),
+    settings={"rtol": 1e-7, "max_periods": 4000, "tol_mean": 1e-6},
+    outputs=("mu_ratio", "error", "status", "period", "periods", "events", "work",
+             "flight_fraction", "multiplier", "settling_periods", "window_min", "window_max",
+             "lateral_ratio", "mean_normal_ratio", "open_area_fraction", "sliding_mu_ratio",
+             "y", "x_dot", "f", "e", "phase"),
+    sensitivities=False,
+    histories=False,
+    velocities="V > 0; V < 0 by the mirror x -> -x; V = 0 refused (the contact creeps)",
+    notes=("error: twice the change of the orbit's mean from rtol to rtol/20 plus the next "
+           "Newton step's; averaged results: the last two windows' disagreement",),
+)
+
 #: Every solver's declaration by name (:data:`vibrofriction.schema.METHOD_NAMES`, in order).
-CAPABILITIES: dict[str, Capabilities] = {"event": EVENT, "plane": PLANE, "mdr": MDR}
+CAPABILITIES: dict[str, Capabilities] = {"event": EVENT, "plane": PLANE, "mdr": MDR,
+                                         "rate_state": RATE_STATE}
 
 
 def refused_by(parameter: str) -> list[Capabilities]:
@@ -278,8 +307,10 @@ FRICTION_LAWS = {"static above kinetic": "static_ratio", "rate-and-state": "rs_a
 def friction_laws(c: Capabilities) -> list[str]:
     """The local friction laws ``c`` covers: Coulomb's, and each whose parameter it uses."""
     refused = {lim.parameter for lim in c.limits if lim.whole}
-    return ["Coulomb", *(law for law, p in FRICTION_LAWS.items()
-                         if p in c.parameters and p not in refused)]
+    # the rate-and-state solver is chosen for rs_a > 0 only (Coulomb goes to the others)
+    coulomb = [] if c.name == "rate_state" else ["Coulomb"]
+    return [*coulomb, *(law for law, p in FRICTION_LAWS.items()
+                        if p in c.parameters and p not in refused)]
 
 
 def _outputs(c: Capabilities) -> str:

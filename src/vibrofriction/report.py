@@ -162,9 +162,13 @@ def _recipes_by_name(quick: bool) -> dict[str, Recipe]:
     return {r.name: r for r in recipes(quick)}
 
 
-def _solve_chunk(*columns: np.ndarray) -> tuple[int, dict[str, np.ndarray]]:
-    """``(pid, solve_points_on(*columns))``: the pid says which process did the work."""
-    return os.getpid(), solve_points_on(*columns)
+def _solve_chunk(settings: SolverSettings | None, *columns: np.ndarray
+                 ) -> tuple[int, dict[str, np.ndarray]]:
+    """``(pid, solve_points_on(*columns, settings=settings))``: the pid says who worked.
+
+    ``settings`` are the recipe's (None: the defaults).
+    """
+    return os.getpid(), solve_points_on(*columns, settings=settings)
 
 
 @dataclass(frozen=True)
@@ -208,6 +212,10 @@ def _render(index: int, quick: bool, name: str, out: Path,
                 + (f"a_y={s.a_y!r}, phase_y={s.phase_y!r}, " if s.a_y else "")
                 + (f"profile_exponent={s.profile_exponent!r}, "
                    if s.profile_exponent != math.inf else "")
+                + (f"static_ratio={s.static_ratio!r}, " if s.static_ratio != 1.0 else "")
+                + (f"rs_a={s.rs_a!r}, rs_b={s.rs_b!r}, rs_d_c={s.rs_d_c!r}, "
+                   f"rs_v_ref={s.rs_v_ref!r}, rs_alpha_ld={s.rs_alpha_ld!r}, "
+                   f"rs_law={s.rs_law!r}, " if s.rs_a else "")
                 + f"v_inertial={float(s.v_inertial[i])!r}: mu_ratio={float(c.mu_ratio[i]):.6g}, "
                 f"status {STATUS_BY_CODE[int(c.status[i])].value}, error "
                 f"{float(c.error[i]):.3g}")
@@ -222,18 +230,19 @@ class _Batch:
     """The points of one recipe, split into strided chunks (expensive regions spread out)."""
 
     index: int
-    columns: list[np.ndarray]  # the POINT_ARGS arrays, then inplane_on (point_columns)
+    columns: list[np.ndarray]  # the POINT_ARGS, then the CHOICE_ARGS arrays (point_columns)
     chunks: list[np.ndarray]
     results: dict[str, np.ndarray] = field(default_factory=dict)
     remaining: int = 0
+    settings: SolverSettings | None = None  # the recipe's
 
     @classmethod
     def of(cls, index: int, recipe: Recipe, chunk: int) -> _Batch:
-        columns, on = point_columns(recipe.series)
+        columns = point_columns(recipe.series)
         n = columns[0].size
         k = max(1, math.ceil(n / chunk)) if n else 0
         chunks = [np.arange(j, n, k) for j in range(k)]
-        return cls(index, [*columns, on], chunks, {}, len(chunks))
+        return cls(index, columns, chunks, {}, len(chunks), recipe.settings)
 
     @property
     def size(self) -> int:
@@ -283,7 +292,7 @@ class _Schedule:
             return _render, args, self._rendered
         if self.compute:
             b, idx = self.compute.popleft()
-            args = tuple(c[idx] for c in b.columns)
+            args = (b.settings, *(c[idx] for c in b.columns))
             return _solve_chunk, args, functools.partial(self._solved, b, idx)
         return None
 
@@ -354,7 +363,7 @@ class Reproduction:
 
 
 #: The kernels the solving and rendering use (:data:`vibrofriction.warmup.PARTS`).
-_PARTS = ("flat", "plane", "curved", "histories")
+_PARTS = ("flat", "plane", "curved", "rate_state", "histories")
 
 
 def _load() -> None:
@@ -489,8 +498,10 @@ def _report_header(*, quick: bool, seconds: float, workers: int, points: int) ->
         f"{points} steady states, {seconds:.1f} s wall time on {workers} worker "
         f"process(es), {os.cpu_count()} CPU(s), Python {platform.python_version()}.",
         "",
-        "Every curve is computed by the exact event-driven solver from the initial state "
-        "'steady sliding before the oscillation is switched on' (docs/model.md). Data behind "
+        "Every curve is computed by the solver that covers its points (the exact "
+        "event-driven solver; the MDR, 2-D and rate-and-state solvers where a figure needs "
+        "them: docs/solver.md) from the initial state 'steady sliding before the oscillation "
+        "is switched on' (docs/model.md). Data behind "
         "each figure are in `data/` (CSV, parameters in the `#` header). Points whose "
         "steady state did not converge (or whose error estimate exceeds 1e-5) are drawn as "
         "open circles and are not joined into the curves. Corrections to the paper are "

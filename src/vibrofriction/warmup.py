@@ -10,8 +10,9 @@ and the commands that must not wait in the middle of their work (``reproduce``,
 
 The parts (:data:`PARTS`): ``flat`` (the flat punch's event-driven solver, every regime,
 damping and a longitudinal in-plane drive), ``plane`` (the 2-D solver of a transverse
-drive), ``curved`` (the MDR solver of a curved tip), ``histories`` (the time histories of
-the three) and ``gradients`` (the parameter sensitivities the bench's fit uses).
+drive), ``curved`` (the MDR solver of a curved tip), ``rate_state`` (the rate-and-state
+solver), ``histories`` (the time histories of the event-driven, 2-D and MDR solvers) and
+``gradients`` (the parameter sensitivities the bench's fit uses).
 """
 
 from __future__ import annotations
@@ -50,6 +51,12 @@ def _curved() -> None:
     solve_points(0.5, 2.0, 0.5, 0.3, profile_exponent=2.0)
 
 
+def _rate_state() -> None:
+    from .solver.engine import solve_points
+
+    solve_points(0.5, 2.0, 0.5, 0.3, rs_a=0.05, rs_b=0.03)
+
+
 def _histories() -> None:
     from .params import Dimensionless
     from .solver.history import simulate
@@ -69,12 +76,13 @@ def _gradients() -> None:
 
 #: The parts a warm-up can compile, by name, in the order :func:`warm_up` runs them.
 PARTS: dict[str, Callable[[], None]] = {
-    "flat": _flat, "plane": _plane, "curved": _curved, "histories": _histories,
-    "gradients": _gradients}
+    "flat": _flat, "plane": _plane, "curved": _curved, "rate_state": _rate_state,
+    "histories": _histories, "gradients": _gradients}
 #: A kernel of each part (module of ``_kernels``, name): found in a disk cache, the part is
 #: taken to be there (loaded here, no pool started)
 _MARKS = {"flat": ("steady", "steady_state_many"), "plane": ("plane", "plane_steady_state_many"),
-          "curved": ("mdr", "steady_row"), "histories": ("integrate", "run_periods"),
+          "curved": ("mdr", "steady_row"), "rate_state": ("rate_state", "rs_steady_state_many"),
+          "histories": ("integrate", "run_periods"),
           "gradients": ("sensitivity", "orbit_sensitivity_many")}
 
 

@@ -98,6 +98,6 @@ def test_parts_without_the_laws_refuse_them_by_name() -> None:
     with pytest.raises(ValueError, match="the design does not take a static coefficient"):
         vf.design(vf.Physical(**PIN, mu_static=0.4), v0=1e-3, omega=(1e3, 1e4),
                   du_z=(1e-7, 1e-6))
-    with pytest.raises(ValueError, match="friction_gradient covers Coulomb friction only"):
+    with pytest.raises(ValueError, match="friction_gradient does not cover rate-and-state"):
         friction_gradient(vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5, rs_a=0.03),
                           v_inertial=0.3)

@@ -464,7 +464,9 @@ def test_sweep_parameters_and_coordinates_are_the_schema() -> None:
     # that gives one is refused, not swept as if axisymmetric
     assert _grid.DIMENSIONLESS == parameter_names("dimensionless", optional=False)
     assert _grid.PHYSICAL == parameter_names("physical", optional=False)
-    assert set(parameter_names("physical")) - set(_grid.PHYSICAL) == {"k_y", "c_y"}
+    # mu_static (the twin of mu0): an axis of its own where given (docs/sweeps.md)
+    assert set(parameter_names("physical")) - set(_grid.PHYSICAL) == {"k_y", "c_y",
+                                                                     _grid.MU_STATIC}
     with pytest.raises(ValueError, match="not axisymmetric yet"):
         make_plan(system=vf.Physical(**BASES["physical"], k_y=1e5), v0=[0.01])
     with pytest.raises(ValueError, match=r"not axisymmetric yet \(zeta_y given\)"):

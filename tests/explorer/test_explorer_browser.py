@@ -440,3 +440,35 @@ def test_side_panel_details_open_with_more(page, server):
     assert not description.is_visible()
     case.get_by_text("more").click()
     description.wait_for(state="visible")
+
+
+def test_static_above_kinetic_and_its_ratio_change_the_curve(page, server):
+    """Pick "static above kinetic", type a ratio: the curve is the library's with that
+    ratio (V = 0 left out), the URL holds the law, and the history shows f/n."""
+    import numpy as np
+
+    import vibrofriction as vf
+
+    before = _open(page, server)
+    page.get_by_role("button", name="static above kinetic", exact=True).click()
+    ratio = page.locator(".vf-text-static_ratio input")
+    ratio.wait_for()
+    assert ratio.input_value() == "1.3"  # the selector's starting ratio
+    first = _changed(page, READOUT.pattern, before)
+    ratio.fill("1.6")
+    ratio.press("Enter")
+    after = _changed(page, READOUT.pattern, first)
+    shown = re.search(r"mean mu/mu0 = ([0-9.]+) over the (\d+) trusted of (\d+) points", after)
+    assert shown, after
+    vbar = np.linspace(0.0, 1.5, 200)[1:]  # V = 0 left out: no static limit at rest
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.6), vbar=vbar)
+    ok = np.asarray(r.trusted)
+    assert int(shown.group(3)) == 199 and int(shown.group(2)) == int(ok.sum())
+    assert float(shown.group(1)) == pytest.approx(np.mean(np.asarray(r.mu_ratio)[ok]), abs=1e-6)
+    assert float(shown.group(1)) != float(READOUT.search(before).group(2))
+    page.wait_for_function("() => window.location.search.includes('friction=static') && "
+                           "window.location.search.includes('static_ratio=1.6')")
+    page.get_by_text(re.compile(r"static above kinetic \(static_ratio = 1\.6\): no static "
+                                r"value")).wait_for()
+    page.get_by_text(re.compile(r"history at vbar = ")).wait_for()
+    page.locator(".vf-coefficient").first.wait_for()  # the local coefficient f/n

@@ -111,7 +111,7 @@ def test_curve_table_and_max_deviation() -> None:
 def test_recipe_names_are_unique_and_quick_grids_smaller() -> None:
     quick, full = all_recipes(True), all_recipes(False)
     names = [r.name for r in quick]
-    assert len(set(names)) == len(names) == 19
+    assert len(set(names)) == len(names) == 22
     assert [r.name for r in full] == names
     assert sum(r.points for r in quick) < sum(r.points for r in full) / 3
 

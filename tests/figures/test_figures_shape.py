@@ -28,13 +28,16 @@ def rendered(request, tmp_path_factory):
     return recipe, curves, result, png
 
 
-def test_shape_recipes_are_registered_last_with_smaller_quick_grids() -> None:
+def test_shape_recipes_follow_inplane_with_smaller_quick_grids() -> None:
     quick, full = all_recipes(True), all_recipes(False)
-    assert tuple(r.name for r in quick[-3:]) == (*NAMES, "fig19_sphere_contact")
-    assert tuple(r.name for r in full[-3:]) == (*NAMES, "fig19_sphere_contact")
-    for q, f in zip(quick[-3:-1], full[-3:-1], strict=True):
+    at = [r.name for r in quick].index(NAMES[0])
+    names = (*NAMES, "fig19_sphere_contact")
+    assert tuple(r.name for r in quick[at:at + 3]) == names
+    assert tuple(r.name for r in full[at:at + 3]) == names
+    assert quick[at - 1].name == "fig16_inplane_drive"
+    for q, f in zip(quick[at:at + 2], full[at:at + 2], strict=True):
         assert q.points <= f.points / 3
-    assert quick[-1].points == full[-1].points == 0  # Fig. 19 simulates its histories
+    assert quick[at + 2].points == full[at + 2].points == 0  # Fig. 19 simulates histories
 
 
 def test_fig19_sphere_contact_renders_with_its_checks(tmp_path) -> None:

@@ -16,7 +16,13 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction._kernels.steady import steady_state_many
 from vibrofriction.contact import Cone, FlatPunch, Material, PowerLaw, Sphere
-from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, POINT_COLUMNS, column_index
+from vibrofriction.schema import (
+    FLOAT_COLUMNS,
+    INT_COLUMNS,
+    PARAMETER,
+    POINT_COLUMNS,
+    column_index,
+)
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction
 
@@ -48,6 +54,9 @@ def test_the_flat_punch_is_the_kernels_output_unchanged():
     of = np.full((n, len(FLOAT_COLUMNS)), np.nan)
     oi = np.zeros((n, len(INT_COLUMNS)), dtype=np.int64)
     points = np.zeros((n, len(POINT_COLUMNS)))  # the kernel's packed rows, by hand
+    for j, name in enumerate(POINT_COLUMNS):  # the schema's defaults (static_ratio = 1, ...)
+        if name in PARAMETER and PARAMETER[name].default is not None:
+            points[:, j] = PARAMETER[name].default
     for name, x in (("alpha", al), ("beta", be), ("amplitude", am), ("v_inertial", V),
                     ("zeta", ze), ("profile_exponent", math.inf)):
         points[:, POINT_COLUMNS.index(name)] = x

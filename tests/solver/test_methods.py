@@ -28,14 +28,21 @@ POINTS = {
                   phase_y=1.0),
     "mdr": dict(alpha=0.5, beta=2.0, amplitude=0.5, v_inertial=0.3, zeta=0.05,
                 profile_exponent=2.0),
+    "rate_state": dict(alpha=0.5, beta=2.0, amplitude=0.5, v_inertial=0.3, rs_a=0.01,
+                       rs_b=0.005, rs_d_c=0.01, rs_v_ref=1.0),
 }
 #: where a point of POINTS does not show a setting: the averaging settings act only where
 #: the orbit takes long to find (near the contact resonance, docs/solver.md: 1280 periods
 #: of work by default), and ``min_periods`` only where an average is then accepted
 SLOW = dict(alpha=0.01, beta=1.01, amplitude=1.0,
             v_inertial=float(vf.Dimensionless(0.01, 1.01, 1.0).vbar_to_inertial(0.016)))
+#: the rate-and-state solver averages only a motion not locked to the drive: self-excited
+#: stick-slip of a weakening contact on a soft pin (0.7 times the critical stiffness)
+UNLOCKED = dict(alpha=1.478, beta=11.478, amplitude=0.0, v_inertial=0.01, rs_a=0.01,
+                rs_b=0.02, rs_d_c=0.01, rs_v_ref=1.0)
 OVERRIDES = {("event", "tol_mean"): (SLOW, {}),
-             ("event", "min_periods"): (SLOW, {"tol_mean": 0.5})}
+             ("event", "min_periods"): (SLOW, {"tol_mean": 0.5}),
+             ("rate_state", "tol_mean"): (UNLOCKED, {"max_periods": 4000})}
 #: settings at an extreme value each (a method that honours it must show an effect)
 EXTREME = {"max_periods": 1, "min_periods": 1, "tol_state": 0.5, "tol_mean": 0.5,
            "max_events": 1, "max_events_per_period": 1, "rtol": 0.5}
@@ -54,7 +61,7 @@ def test_declarations_name_real_parameters_settings_and_columns() -> None:
     table = capability_table()
     for method in METHODS.values():
         assert method.capabilities.title in table
-    assert table.count("\n") == 11  # head, rule and nine rows
+    assert table.count("\n") == 12  # head, rule and ten rows
 
 
 def test_choose_is_the_documented_rule() -> None:
@@ -64,6 +71,13 @@ def test_choose_is_the_documented_rule() -> None:
         "event", "plane", "mdr", "mdr", "mdr"]
     assert [method_of(n, y).capabilities.name for n, y in zip(exponent, a_y, strict=True)] \
         == ["event", "plane", "mdr", "mdr", "mdr"]
+    # rate-and-state friction on the flat punch without a transverse oscillation
+    rs_a = np.full(5, 0.01)
+    assert [METHOD_NAMES[k] for k in choose(exponent, a_y, rs_a)] == [
+        "rate_state", "plane", "mdr", "mdr", "mdr"]
+    assert [method_of(n, y, 0.01).capabilities.name
+            for n, y in zip(exponent, a_y, strict=True)] == [
+        "rate_state", "plane", "mdr", "mdr", "mdr"]
 
 
 def test_each_result_records_its_method() -> None:
@@ -85,6 +99,9 @@ def test_each_result_records_its_method() -> None:
     ("mdr", dict(beta=math.inf), "beta"),
     ("mdr", dict(eta_c=0.1), "eta_c"),
     ("mdr", dict(a_x=0.5, v_inertial=0.0), "a_x"),
+    ("rate_state", dict(beta=math.inf), "beta"),
+    ("rate_state", dict(eta_c=0.1), "eta_c"),
+    ("rate_state", dict(v_inertial=0.0), "v_inertial"),
 ])
 def test_a_point_a_method_does_not_cover_is_refused_by_name(method, change, parameter) -> None:
     point = {**POINTS[method], **change}
@@ -128,7 +145,7 @@ def test_every_setting_is_honoured_or_refused_by_name(method, setting) -> None:
 def test_the_extreme_budgets_make_points_fail_not_trusted() -> None:
     """The bounds that end a search end it: one period or one event is never a trusted
     result of a point that needs more (the flat punch and the curved tip alike)."""
-    for method in ("event", "plane", "mdr"):
+    for method in ("event", "plane", "mdr", "rate_state"):
         out = solve_points(**POINTS[method], settings=SolverSettings(max_periods=1))
         assert not out["trusted"], method
     out = solve_points(**POINTS["event"], settings=SolverSettings(max_events=1))

@@ -206,7 +206,7 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 @jit
 def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f,
-         certify=False, ys=0.0, yds=0.0, es=0.0):
+         certify=False, ys=0.0, yds=0.0, es=0.0, neutral_ok=True):
     """Advance period by period from ``z`` until an orbit or an average answers.
 
     Called where the sliding orbit's contact point stops, or there is no sliding orbit
@@ -215,7 +215,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     orbit's own test), so it is not tried.  With a static coefficient above the kinetic
     one the sliding orbit ``(ys, yds, es)`` may slide and yet not attract every start
     (:func:`_static_run`): ``certify`` then tries its certificate at every section in
-    forward slip, and a proof answers ``SLIDING``.
+    forward slip, and a proof answers ``SLIDING``.  ``neutral_ok`` False: a neutral orbit
+    found by Newton is no answer (there the motion near a neutral sliding orbit can go on
+    sticking now and then, its mean not the orbit's); the motion is followed on.
 
     Newton's method is not tried at ``V = 0`` (a held body's orbits form a continuum).
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
@@ -274,7 +276,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
             if pn > 0 and out_f[O_MULT] < NEUTRAL:
                 return ST_PERIODIC, pn, k
-            if pn > 0:
+            if pn > 0 and not neutral_ok:
+                out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
+            elif pn > 0:
                 neutral_out[:] = out_f
                 neutral_win[:] = win
                 neutral_period = pn
@@ -350,13 +354,15 @@ def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
     """The steady state where the static coefficient is above the kinetic one (``s_r > 1``).
 
     Continuous sliding carries the kinetic force, so the sliding orbit and the condition
-    that its contact point never stops are Coulomb's (docs/friction_laws.md); but the
-    energy argument of :func:`.sliding.orbit_slides` ("from any start") fails: a stuck
-    contact holds up to ``s_r n > n``, so a stick-slip motion can coexist with sliding.
-    The proof is therefore only from the motion's own state (the certificate, tried at the
-    start and at every section), otherwise the motion is followed as where no sliding orbit
-    slides.  Without oscillation (``a = 0``) the same: the proof of
-    :func:`.sliding.unmodulated_sliding` fails alike.
+    that its contact point never stops are Coulomb's (docs/friction_laws.md); but the energy
+    argument of :func:`.sliding.orbit_slides` ("from any start") fails: a stuck contact
+    holds up to ``s_r n > n``, so a stick-slip motion can coexist with sliding. The proof is
+    therefore only from the motion's own state (the certificate, tried at the start and at
+    every section), otherwise the motion is followed as where no sliding orbit slides,
+    except that a neutral orbit is no answer: undamped, the motion near the neutral sliding
+    orbit can stick every few periods for ever, its mean above the orbit's. Without
+    oscillation (``a = 0``) the same: the proof of :func:`.sliding.unmodulated_sliding`
+    fails alike.
     """
     orbit_ok, ys, yds, es = sliding_orbit(M)
     certify = orbit_slides(M, orbit_ok, ys, yds, es)
@@ -366,7 +372,7 @@ def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
         _sliding_window(M, win)
         return ST_SLIDING, 0, 0
     status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
-                             count, win, out_f, certify, ys, yds, es)
+                             count, win, out_f, certify, ys, yds, es, False)
     if status == ST_PERIODIC and certify and pure_forward_slip(win) and sliding_certificate(
             z[0], z[1], z[2], int(z[3]), M, True, ys, yds, es):
         # the orbit found is the sliding one, and the motion from its state slides for ever

@@ -13,6 +13,7 @@ from ..schema import parameter_names
 from ._app import Args, Command, Exit, check_axis
 from ._options import (
     FLOATS,
+    FRICTION_SI,
     INITIAL,
     INT,
     MAX_PERIODS,
@@ -35,6 +36,7 @@ OPTIONS: tuple[Opt, ...] = (
     Opt("out", "zarr store to write (resumed if it exists)", kind="text", metavar="STORE",
         required=True),
     *_AXIS_OPTIONS,
+    *(with_(o, kind="axis", metavar=FLOATS) for o in FRICTION_SI),
     Opt("scheduler", "Dask scheduler address (tcp://host:port): run on that cluster",
         kind="text", metavar="ADDRESS"),
     Opt("workers", "local worker processes (default: all cores)", kind="int", metavar=INT,
@@ -53,6 +55,10 @@ _PHYSICAL = tuple(n for n in parameter_names("physical", optional=False)
 #: The SI parameters a physical sweep needs, and those with a default.
 REQUIRED_SI = tuple(n for n in _PHYSICAL if _BY_NAME[n].default is None)
 OPTIONAL_SI = tuple(n for n in _PHYSICAL if _BY_NAME[n].default is not None)
+#: The friction law of a physical sweep: the static coefficient (an axis; default mu0) and
+#: the rate-and-state law's fixed values (SI).
+FRICTION = tuple(o.name for o in FRICTION_SI)
+LAW_SI = ("mu_static", *FRICTION)
 #: The parameters of both kinds of sweep (a phase, the tip's profile), and the choice.
 SHARED = ("phase_x", "phase_y", "profile_exponent")
 SCALED = tuple(n for n in parameter_names("dimensionless", optional=False)
@@ -69,6 +75,8 @@ def run(a: Args) -> None:
     if a.has("scheduler") and a.has("workers"):
         raise ValueError("give either --scheduler or --workers")
     grid = _grid(a)
+    if a.has("rs_law"):
+        grid["rs_law"] = a["rs_law"]
     options = dict(store=a["out"], chunk_size=a["chunk_size"], inplane_on=a["inplane_on"],
                    settings=SolverSettings(max_periods=a["max_periods"],
                                            tol_trusted=a["tol_trusted"]),
@@ -95,9 +103,14 @@ def _axis(a: Args, name: str) -> Any:
 
 def _grid(a: Args) -> dict:
     """The keyword arguments of :func:`vibrofriction.sweep.sweep` for the grid."""
-    if any(a.has(n) for n in (*REQUIRED_SI, *OPTIONAL_SI, "v0")):
-        if any(a.has(n) for n in SCALED):
-            raise ValueError("give either the dimensionless parameters or the physical ones")
+    si = [flag(n) for n in (*REQUIRED_SI, *OPTIONAL_SI, *LAW_SI, "v0") if a.has(n)]
+    if si:
+        scaled = [flag(n) for n in SCALED if a.has(n)]
+        if scaled:
+            raise ValueError(f"give either the dimensionless parameters ({', '.join(scaled)}) "
+                             f"or the physical ones ({', '.join(si)}); the friction law is "
+                             "--static-ratio, --rs-a ... in the first, --mu-static, "
+                             "--friction-a ... in the second")
         return _physical_grid(a)
     missing = [flag(n) for n in ("alpha", "beta", "amplitude") if not a.has(n)]
     if missing:
@@ -110,15 +123,24 @@ def _grid(a: Args) -> dict:
 def _physical_grid(a: Args) -> dict:
     import numpy as np
 
-    from ..params import Physical
+    from ..params import Physical, RateAndState
 
     missing = [flag(n) for n in (*REQUIRED_SI, "v0") if not a.has(n)]
     if missing:
         raise ValueError("a physical sweep needs every SI parameter and v0; missing "
                          + ", ".join(missing))
-    values = {n: _axis(a, n) for n in (*REQUIRED_SI, *OPTIONAL_SI, *SHARED) if a.has(n)}
+    values = {n: _axis(a, n) for n in (*REQUIRED_SI, *OPTIONAL_SI, *SHARED, *LAW_SI)
+              if a.has(n)}
     first: dict[str, Any] = {k: float(np.atleast_1d(v)[0]) for k, v in values.items()}
-    return dict(system=Physical(**first), v0=_axis(a, "v0"), **values)
+    law = {n.removeprefix("friction_"): first.pop(n) for n in FRICTION if n in first}
+    friction = None
+    if law:  # --friction-a is given (the others require it): the law of the first values
+        missing = [flag(n) for n in ("friction_d_c", "friction_v_ref") if not a.has(n)]
+        if missing:
+            raise ValueError("rate-and-state friction (--friction-a) needs "
+                             + ", ".join(missing))
+        friction = RateAndState(**law, law=a["rs_law"])
+    return dict(system=Physical(**first, friction=friction), v0=_axis(a, "v0"), **values)
 
 
 def _run(grid: dict, options: dict, *, scheduler: str | None, workers: int | None):
@@ -194,6 +216,10 @@ COMMAND = Command(
     Each parameter takes a value, a comma list (0.25,0.5,1; 0.5, for a one-value axis)
     or start:stop:num[:log] (0:1.2:121 is linspace, 1e-2:1e2:41:log geomspace). Give the
     dimensionless parameters with --vbar or --v-inertial, or the SI ones with --v0.
+    The friction law: --static-ratio and --rs-a ... --rs-alpha-ld are axes of a
+    dimensionless sweep, --mu-static and the rate-and-state law's --friction-a,
+    --friction-b, --friction-d-c, --friction-v-ref, --friction-alpha-ld axes of a physical
+    one; --rs-law is one for the grid.
 
     Exit status 0 if every point is trusted (converged status and error <= tol_trusted),
     3 if some are not (everything is still written), 2 for bad input.

@@ -15,11 +15,12 @@ import numpy as np
 
 import vibrofriction as vf
 from vibrofriction import theory
+from vibrofriction.capabilities import CAPABILITIES
 from vibrofriction.params import dimensionless as _dimensionless
 from vibrofriction.params import inertial_velocity
 from vibrofriction.schema import RESULT_FIELDS, ContactState, parameter_names
 
-from .state import AXES, State
+from .state import AXES, LAWS, State, law_solver
 
 __all__ = ["CONTACT_STATES", "case_map", "curve", "history", "measurement_curves",
            "not_computed", "parse_measurements", "profile_text", "run_fit"]
@@ -110,8 +111,10 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         critical = system.critical_velocity()
     if not (V_c > 0.0 and math.isfinite(V_c)):
         critical = math.nan
+    if state.friction == "rate_state":  # eq. (12) is Coulomb's: no critical velocity
+        critical = math.nan
     static = math.nan  # eq. (2) is the limit v0 -> 0+ of the normal oscillation alone
-    if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0:
+    if dim.a_x == 0.0 and dim.a_y == 0.0 and x[0] >= 0.0 and state.friction == "coulomb":
         static = float(theory.profile_static_mu_ratio(dim.amplitude, dim.profile_exponent)
                        if curved else theory.static_mu_ratio(dim.amplitude)) * scale
     case = vf.classify(dim.alpha, dim.beta)
@@ -130,7 +133,9 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "mean_normal": float(theory.profile_mean_normal_force(dim.amplitude,
                                                               dim.profile_exponent)),
         "profile": profile_text(dim.profile_exponent),
-        "band": _band(dim, scale), "critical": float(critical), "jumping": dim.jumping,
+        "band": _band(dim, scale) if state.friction == "coulomb" else None,
+        "critical": float(critical), "jumping": dim.jumping,
+        "law": state.friction, "law_text": law_text(state),
         "case": case.value,
         "case_text": _curved_case_text(case) if curved else case.description,
         "critical_label": ("critical velocity of continuous sliding (curved tip)" if curved
@@ -145,6 +150,29 @@ def curve(state: State, part: tuple[int, int] = (0, 1)) -> dict:
         "mu0": scale if scale != 1.0 else None,
         "seconds": time.perf_counter() - t0,
     }
+
+
+#: the bench's law inputs as the library names them (vf.RateAndState's fields) and their units
+_SHORT = {"friction_a": "a", "friction_b": "b", "friction_d_c_um": "d_c",
+          "friction_v_ref_mm_s": "v_ref", "friction_alpha_ld": "alpha_ld"}
+_UNITS = {"friction_d_c_um": " um", "friction_v_ref_mm_s": " mm/s"}
+
+
+def solver_text(curve: dict) -> str:
+    """The solver of a curve as its plot's title and legend name it."""
+    if curve.get("profile", "flat punch") != "flat punch":
+        return f"{curve['profile']}, MDR solver"
+    return "rate-and-state solver" if curve.get("law") == "rate_state" else "exact solver"
+
+
+def law_text(state: State) -> str:
+    """The friction law as the page names it, with its parameters (``Coulomb`` alone)."""
+    if state.friction == "coulomb":
+        return "Coulomb"
+    values = ", ".join(f"{_SHORT.get(f.name, f.name)} = {getattr(state, f.name):g}"
+                       f"{_UNITS.get(f.name, '')}" for f in state.law_fields())
+    law = f", {state.rs_law} law" if state.friction == "rate_state" else ""
+    return f"{LAWS[state.friction]} ({values}{law})"
 
 
 def _curved_case_text(case: vf.Case) -> str:
@@ -190,12 +218,20 @@ def closed_forms(state: State, system, x: np.ndarray, case: vf.Case,
     """The closed forms that apply to this system, at the curve's velocities.
 
     The paper's closed forms (docs/theory.md) that apply to this system, each with its
-    label and its points at the curve's velocities ``x``; none outside their regime.
+    label and its points at the curve's velocities ``x``; none outside their regime. They
+    are Coulomb's: under another friction law, only rate-and-state friction's steady
+    sliding without oscillation (``theory.steady_mu_ratio``, odd in ``V``).
     """
     dim = _dimensionless(system)
     V = _inertial(state, system, x)
     a = dim.amplitude
     out: list[dict] = []
+    if state.friction != "coulomb":
+        if state.friction == "rate_state":
+            mu = theory.steady_mu_ratio(V, dim.rs_a, dim.rs_b, dim.rs_d_c, dim.rs_v_ref)
+            out.append({"label": "steady sliding without oscillation, mu_ss(v0)",
+                        "x": x, "y": np.asarray(mu, dtype=float) * scale})
+        return out
     if dim.curved:
         return _curved_closed_forms(dim, x, V, case, scale)
     if dim.a_x > 0.0 or dim.a_y > 0.0:  # the laws below are the normal oscillation's only
@@ -262,6 +298,13 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
         return mdr_history(state, x)
     system = state.system()
     kw: dict[str, Any] = {state.velocity_keyword(): float(x)}
+    solver = CAPABILITIES[law_solver(state.friction)]
+    if not solver.histories:  # vf.simulate does not cover it (its declaration)
+        r = cast(vf.FrictionResult, vf.friction_coefficient(system, **kw))
+        return {"t": None, "x": float(x), "mu_ratio": float(r.mu_ratio),
+                "status": r.status.value, "trusted": bool(r.trusted),
+                "message": f"{solver.title} gives no time history yet (vf.simulate does not "
+                           "cover it): no forces, no local coefficient, no theta"}
     try:
         h = vf.simulate(system, **kw, periods=periods, initial="steady")
         steady = True
@@ -276,8 +319,12 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     inplane = h.system.a_x > 0.0 or h.system.a_y > 0.0
     xc, yc = h.contact_point() if inplane else (None, None)
     f_y = h.f_y if isinstance(h, vf.PlaneHistory) else None  # 2-D only, as yc
+    with np.errstate(divide="ignore", invalid="ignore"):  # no coefficient in flight
+        coefficient = np.where(h.n > 0.0, h.f / h.n, np.nan)
     return {
         "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": f_y,
+        "coefficient": coefficient,
+        "static_ratio": h.system.static_ratio,
         "phase": h.phase, "xc": xc, "yc": None if f_y is None else yc,
         "spans": [(float(t[i]), float(t[j]), str(h.phase[i])) for i, j in
                   zip(starts, ends, strict=True) if t[j] > t[i]],

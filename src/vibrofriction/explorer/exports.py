@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .compute import not_computed
+from .compute import law_text, not_computed, solver_text
 from .state import State
 
 __all__ = ["curve_csv", "curve_file", "figure_bytes", "snippet"]
@@ -38,8 +38,20 @@ def _system_text(state: State) -> str:
                 + (f", a_x = {state.a_x!r}, phase_x = {state.phase_x!r} on the "
                    f"{state.inplane_on}" if state.a_x else "")
                 + (f", profile_exponent = {state.profile_exponent!r}" if state.curved
-                   else ""))
-    return ", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
+                   else "") + f"; friction: {law_text(state)}")
+    return (", ".join(f"{k} = {v!r}" for k, v in state.bench_arguments().items())
+            + f"; friction: {law_text(state)}")
+
+
+def _law_code(state: State) -> str:
+    """The friction law as keyword arguments of the code (empty for Coulomb)."""
+    law = state.law_arguments()
+    rs = law.pop("friction", None)
+    if rs is not None:  # a bench's rate-and-state law, in SI
+        law["friction"] = (f"vf.RateAndState(a={rs.a!r}, b={rs.b!r}, d_c={rs.d_c!r}, "
+                           f"v_ref={rs.v_ref!r}, alpha_ld={rs.alpha_ld!r}, law={rs.law!r})")
+        return ", ".join(f"{k}={v}" for k, v in law.items())
+    return ", ".join(f"{k}={v!r}" for k, v in law.items())
 
 
 def snippet(state: State) -> str:
@@ -50,10 +62,12 @@ def snippet(state: State) -> str:
                 + (f", a_x={state.a_x!r}, phase_x={state.phase_x!r}, "
                    f"inplane_on={state.inplane_on!r}" if state.a_x else "")
                 + (f", profile_exponent={state.profile_exponent!r}" if state.curved else "")
-                + ")")
+                + (f",\n    {law}" if (law := _law_code(state)) else "") + ")")
     else:
         args = ",\n    ".join(f"{k}={_num(v)}" for k, v in state.bench_arguments().items())
         make = f"system = vf.from_bench(\n    {args})"
+        if law := _law_code(state):
+            make += f".with_(\n    {law})"
     space = "geomspace" if state.log_x else "linspace"
     scale = " * system.mu0" if state.mode == "bench" else ""
     return "\n".join([
@@ -66,11 +80,19 @@ def snippet(state: State) -> str:
         make,
         f"{state.axis} = np.{space}({state.v_min!r}, {state.v_max!r}, "
         f"{state.curve_points})",
-        *([f"{state.axis} = {state.axis}[{state.axis} != 0]  # the MDR solver refuses "
-           "V = 0 with a_x > 0"] if state.rest_refused else []),
+        *([f"{state.axis} = {state.axis}[{state.axis} != 0]  # {_rest_why(state)}"]
+          if state.rest_refused else []),
         f"r = vf.friction_coefficient(system, {state.velocity_keyword()}={state.axis})",
         f"y = r.mu_ratio{scale}  # {'COF' if scale else 'mu/mu0'}; r.trusted flags each point",
     ]) + "\n"
+
+
+def _rest_why(state: State) -> str:
+    """Why ``V = 0`` is no point of the curve (:attr:`State.rest_refused`), as a comment."""
+    if state.curved:
+        return "the MDR solver refuses V = 0 with a_x > 0"
+    return ("the 1-D solver has no static limit of a static coefficient" if
+            state.friction == "static" else "rate-and-state friction creeps: no V = 0")
 
 
 def _num(x: float) -> str:
@@ -90,8 +112,7 @@ def figure_bytes(curve: dict, fmt: str = "png") -> bytes:
     fig = Figure(figsize=(6.4, 4.2), layout="constrained")
     ax = fig.subplots()
     x, y, ok = curve["x"], curve["y"], curve["trusted"]
-    solver = "exact solver" if curve.get("profile", "flat punch") == "flat punch" else \
-        f"MDR solver, {curve['profile']}"
+    solver = solver_text(curve)
     line_x, line_y = x, np.where(ok, y, np.nan)
     k = int(np.searchsorted(x, 0.0))
     if curve.get("rest_note") and 0 < k < len(x):  # V = 0 left out: the line breaks

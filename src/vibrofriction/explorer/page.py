@@ -19,14 +19,27 @@ import panel as pn
 from bokeh.events import Tap
 
 from vibrofriction.bench import FITTABLE
+from vibrofriction.capabilities import CAPABILITIES, friction_laws
 from vibrofriction.schema import CHOICES
 
 from . import compute, exports, pool
-from .messages import GENERAL, curved_refusal, field_of, read_inputs
+from .messages import (
+    GENERAL,
+    LAW,
+    curved_refusal,
+    field_of,
+    law_refusal,
+    law_taken,
+    read_inputs,
+)
 from .state import (
     AXES,
     BENCH,
     DIMENSIONLESS,
+    LAW_DISABLED,
+    LAW_INPUTS,
+    LAW_POINTS,
+    LAWS,
     MDR_POINTS,
     MDR_REFUSED,
     PROFILE,
@@ -34,6 +47,7 @@ from .state import (
     VELOCITY,
     State,
     format_value,
+    law_solver,
     parse_number,
     profile_of,
 )
@@ -60,6 +74,8 @@ _POWER_DEFAULT = 3.0
 #: the inputs disabled with a curved tip: the refused ones and what only they act on (the
 #: longitudinal oscillation a_x, phase_x and its mount stay: the MDR solver takes them)
 _MDR_DISABLED = (*MDR_REFUSED, "phase_y")
+#: the friction-law selector's labels (the laws' names in the solvers' declarations)
+_LAW_LABELS = {label: law for law, label in LAWS.items()}
 
 
 class Explorer:
@@ -106,7 +122,14 @@ class Explorer:
         """The inputs, the switches and the text panes of the sidebar."""
         s = self.state
         self.inputs = {f.name: Input(f, getattr(s, f.name), self._changed)
-                       for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
+                       for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY, *LAW_INPUTS)}
+        self.law = pn.widgets.RadioButtonGroup(options=_LAW_LABELS, value=s.friction,
+                                               width=330, css_classes=["vf-law"])
+        self.rs_law = pn.widgets.RadioButtonGroup(
+            options={f"{v} law": v for v in CHOICES["rs_law"].values}, value=s.rs_law, width=200,
+            css_classes=["vf-rs-law"])
+        self.law_note = pn.pane.HTML("", styles=NOTE_STYLE, visible=False, width=310,
+                                     css_classes=["vf-law-note"])
         self.profile = pn.widgets.RadioButtonGroup(
             options=_PROFILE_LABELS, value=profile_of(s.profile_exponent), width=330,
             label="profile", css_classes=["vf-profile"])
@@ -128,7 +151,7 @@ class Explorer:
         self.inplane_note = pn.pane.HTML("", styles=NOTE_STYLE, visible=False, width=310,
                                          css_classes=["vf-inplane-note"])
         self.general = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
-        for w in (self.mode, self.axis, self.log_x, self.inplane_on):
+        for w in (self.mode, self.axis, self.log_x, self.inplane_on, self.law, self.rs_law):
             w.param.watch(lambda e: self._changed(), "value")
         self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
         self.status = pn.pane.Markdown("", width=330, css_classes=["vf-status"])
@@ -161,6 +184,9 @@ class Explorer:
         self.bench_file.param.watch(self._bench_file, "value")
         self.bench_box.append(pn.Column(pn.pane.Markdown("bench file (JSON, docs/bench.md):"),
                                         self.bench_file, margin=0))
+        self.law_box = pn.Column(pn.pane.Markdown("**local friction law**"), self.law,
+                                 *(self.inputs[f.name].layout for f in LAW_INPUTS),
+                                 self.rs_law, self.law_note, margin=0)
         self.bench_box.append(pn.pane.HTML(with_more(
             "The bench inputs are the linearised contact: a curved tip is chosen on the "
             "dimensionless inputs.",
@@ -173,7 +199,7 @@ class Explorer:
         return pn.Column(
             pn.pane.Markdown("## vibrofriction explorer\nFriction under normal oscillations "
                              "(Mao, Popov, Starcevic, Popov 2017), by the exact solver."),
-            self.mode, self.general, self.dim_box, self.bench_box,
+            self.mode, self.general, self.dim_box, self.bench_box, self.law_box,
             pn.pane.Markdown("**velocity**"), self.axis, self.axis_message,
             *(self.inputs[f.name].layout for f in VELOCITY), self.log_x,
             pn.Row(pn.pane.Markdown("**the curve**"), self.busy, margin=0), self.status,
@@ -187,6 +213,7 @@ class Explorer:
         """
         return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
+                                          self.history_view.coefficient_figure,
                                           self.history_view.path_figure,
                                           self.spacetime_view.figure, self.history_text,
                                           sizing_mode="stretch_width"),
@@ -234,11 +261,19 @@ class Explorer:
         bench = self.mode.value == "bench"
         self.dim_box.visible = not bench
         self.bench_box.visible = bench
+        shown = {f.name for f in self._law_fields()}
+        for f in LAW_INPUTS:
+            self.inputs[f.name].layout.visible = f.name in shown
+        self.rs_law.visible = self.law.value == "rate_state"
+
+    def _law_fields(self):
+        """The inputs of the chosen law in the chosen mode."""
+        return self.state.with_(mode=self.mode.value, friction=self.law.value).law_fields()
 
     # ------------------------------------------------------------------ inputs
     def _names(self) -> list[str]:
         fields = BENCH if self.mode.value == "bench" else (*DIMENSIONLESS, PROFILE)
-        return [f.name for f in (*fields, *VELOCITY)]
+        return [f.name for f in (*fields, *self._law_fields(), *VELOCITY)]
 
     def _profile_chosen(self, event) -> None:
         """The selector sets the exponent (the power law's box is the only one typed)."""
@@ -273,13 +308,28 @@ class Explorer:
         dimensionless = self.mode.value == "dimensionless"
         curved = dimensionless and n != math.inf
         self.inputs[PROFILE.name].enable(self.profile.value == "power")
-        for name in _MDR_DISABLED:
-            self.inputs[name].enable(not curved)
-        probe = self.state.with_(profile_exponent=n, mode="dimensionless")
+        probe = self.state.with_(profile_exponent=n, mode="dimensionless",
+                                 friction=self.law.value, rs_law=self.rs_law.value)
         self._adjusting = True
         try:
+            if curved and (why := law_taken(probe)):  # the law is reset, as eta_c is
+                self._notes[LAW] = with_more(f"{LAWS[probe.friction]} reset to Coulomb: the "
+                                             "MDR solver does not take it yet", why)
+                self.law.value = "coulomb"
+                probe = probe.with_(friction="coulomb")
+                self._show_mode()
+            law_off = self._law_disabled(probe.friction)
+            for name in {*_MDR_DISABLED, *(n for law in LAWS for n in self._law_disabled(law))}:
+                self.inputs[name].enable(not (curved and name in _MDR_DISABLED)
+                                         and name not in law_off)
             if curved:
-                self._reset_refused(probe)
+                self._reset(MDR_REFUSED, partial(curved_refusal, probe),
+                            "the MDR solver does not take it yet")
+            else:
+                self._reset([n for n in law_off if n not in ("phase_x", "phase_y")],
+                            lambda name, value: law_refusal(
+                                probe, "eta_c" if name == "bench_eta_c" else name, value),
+                            f"not taken with {LAWS[probe.friction]} friction yet")
             if dimensionless and self.axis.value == "vbar":
                 self._leave_vbar(probe)
         finally:
@@ -303,21 +353,30 @@ class Explorer:
         except ValueError:
             return None
 
-    def _reset_refused(self, probe: State) -> None:
-        """Reset to 0 the inputs the MDR solver refuses; the reason beside each."""
-        for name in MDR_REFUSED:
+    def _law_disabled(self, law: str) -> tuple[str, ...]:
+        """The inputs ``law`` disables in the chosen mode (:data:`LAW_DISABLED`)."""
+        if self.mode.value == "dimensionless":
+            return LAW_DISABLED[law]
+        return tuple(f"bench_{n}" for n in LAW_DISABLED[law] if f"bench_{n}" in self.inputs)
+
+    def _reset(self, names, refusal, reason: str) -> None:
+        """Reset ``names`` to 0, ``reason`` beside each.
+
+        With the library's ``refusal(name, value)`` behind "more" (a curved tip's MDR solver,
+        a friction law's solver).
+        """
+        for name in names:
             box = self.inputs[name].text
             value = self._typed(name)
-            why = curved_refusal(probe, name, 1.0 if value in (None, 0.0) else value)
+            why = refusal(name, 1.0 if value in (None, 0.0) else value)
             if value == 0.0:  # the library's refusal without its "got ..." of a probe value
-                self._notes[name] = with_more("disabled: the MDR solver does not take it yet",
-                                              why.split(": got ")[0])
+                self._notes[name] = with_more(f"disabled: {reason}", why.split(": got ")[0])
                 continue
             applied = value is not None and value == getattr(self.state, name)
             self._notes[name] = with_more(
-                f"{name} reset from {box.value} to 0: the MDR solver does not take it yet"
-                if applied else f"{name} = {box.value} (never applied) cleared to 0: the MDR "
-                "solver does not take it yet", why)
+                f"{name} reset from {box.value} to 0: {reason}"
+                if applied else f"{name} = {box.value} (never applied) cleared to 0: {reason}",
+                why)
             box.value = "0"
 
     def _leave_vbar(self, probe: State) -> None:
@@ -351,7 +410,8 @@ class Explorer:
         self._guard()
         base = self.state.with_(mode=self.mode.value, axis=self.axis.value,
                                 log_x=bool(self.log_x.value),
-                                inplane_on=self.inplane_on.value)
+                                inplane_on=self.inplane_on.value, friction=self.law.value,
+                                rs_law=self.rs_law.value)
         texts: dict[str, Any] = {n: self.inputs[n].text.value for n in self._names()}
         state, problems = read_inputs(texts, base)
         notes = self._notes
@@ -359,6 +419,10 @@ class Explorer:
             inp.show_message(problems.get(name, notes.get(name, "")), note=name not in problems)
         self.general.object = problems.get(GENERAL, "")
         self.general.visible = GENERAL in problems
+        law_text = problems.get(LAW, notes.get(LAW, "")) or self._law_standing()
+        self.law_note.object = law_text
+        self.law_note.styles = ERROR_STYLE if LAW in problems else NOTE_STYLE
+        self.law_note.visible = bool(law_text)
         axis_text = problems.get("axis", notes.get("axis", ""))
         self.axis_message.object = axis_text
         self.axis_message.styles = ERROR_STYLE if "axis" in problems else NOTE_STYLE
@@ -374,6 +438,25 @@ class Explorer:
         self._want = state
         if not self._busy:
             pn.state.execute(self._refresh)
+
+    def _law_standing(self) -> str:
+        """What holds under the chosen law: its solver, ``V = 0`` left out, what it disables."""
+        law = self.law.value
+        if self.mode.value == "dimensionless" and self.profile.value != "flat":
+            taken = ", ".join(friction_laws(CAPABILITIES["mdr"]))
+            return with_more(f"a curved tip (the MDR solver) takes: {taken}",
+                             "The other laws are taken by the flat punch's solvers "
+                             "(docs/friction_laws.md).")
+        if law == "coulomb":
+            return ""
+        solver = CAPABILITIES[law_solver(law)]
+        off = self._law_disabled(law)
+        short = (f"{solver.title}; V = 0 left out of the curve"
+                 + (f"; at most {LAW_POINTS} points" if law == "rate_state" else "")
+                 + (f"; disabled: {', '.join(n.removeprefix('bench_') for n in off)}"
+                    if off else ""))
+        return with_more(short, f"{solver.title} ({solver.takes}) takes {LAWS[law]} friction; "
+                                f"velocities: {solver.velocities}.")
 
     def _message(self, name: str, text: str) -> None:
         if name in self.inputs:
@@ -496,6 +579,14 @@ class Explorer:
         if h.get("curved"):
             self._show_mdr_history(where, h)
             return
+        if h["t"] is None:  # the law's solver gives no history: say so
+            self.history_view.hide()
+            self.spacetime_view.hide()
+            self.history_text.object = (
+                f"point at {where}: mu/mu0 = {h['mu_ratio']:.6g} ({h['status']}"
+                f"{'' if h['trusted'] else ', not trusted'}); {h['message']}; "
+                f"{self._point_text}")
+            return
         self.history_view.figure.visible = True
         self.spacetime_view.hide()
         self.history_view.show(h, where)
@@ -516,6 +607,7 @@ class Explorer:
         forces = h.get("t") is not None
         self.history_view.figure.visible = forces
         self.history_view.path_figure.visible = False
+        self.history_view.coefficient_figure.visible = False
         if forces:  # the curve's mu/mu0 at the point (the solver's, not the row's estimate)
             self.history_view.show({**h, "mu_ratio": self._point_y}, where)
         self.spacetime_view.show(h, where)

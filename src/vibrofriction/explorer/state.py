@@ -16,12 +16,13 @@ from typing import Any
 import numpy as np
 
 import vibrofriction as vf
-from vibrofriction.capabilities import CAPABILITIES
+from vibrofriction.capabilities import CAPABILITIES, FRICTION_LAWS, friction_laws
 from vibrofriction.schema import CHOICES, PARAMETER, parameter_names
 from vibrofriction.validation import checked, checked_choice
 
-__all__ = ["AXES", "DIMENSIONLESS", "BENCH", "FIELDS", "MDR_POINTS", "MDR_REFUSED", "PROFILE",
-           "PROFILES", "Field", "State", "parse_number", "profile_of"]
+__all__ = ["AXES", "BENCH", "BENCH_LAW", "DIMENSIONLESS", "FIELDS", "LAWS", "LAW_DISABLED",
+           "LAW_FIELDS", "LAW_POINTS", "MDR_POINTS", "MDR_REFUSED", "PROFILE", "PROFILES", "Field",
+           "State", "law_solver", "parse_number", "profile_of"]
 
 MODES = ("dimensionless", "bench")
 #: velocity axes: the keyword of ``friction_coefficient`` and the axis label
@@ -67,7 +68,8 @@ _SLIDERS = {"alpha": (1e-3, 1e2, True), "beta": (1e-3, 1e4, True),
            "phase_x": (0.0, 6.283185307179586, False), "a_y": (0.0, 5.0, False),
            "phase_y": (0.0, 6.283185307179586, False)}
 #: the tip's profile is offered by a selector of its own (:data:`PROFILES`, :data:`PROFILE`)
-#: over the MDR solver (docs/contact_geometry.md); the pin across (alpha_y, zeta_y) is
+#: over the MDR solver (docs/contact_geometry.md), the friction law's inputs by the law's
+#: selector (:data:`LAWS`, :data:`LAW_FIELDS`); the pin across (alpha_y, zeta_y) is
 #: axisymmetric here
 _NOT_OFFERED = ("profile_exponent", "static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref",
                 "rs_alpha_ld")
@@ -92,6 +94,60 @@ MDR_REFUSED = tuple(lim.parameter for lim in CAPABILITIES["mdr"].limits
 MDR_POINTS = 40
 
 
+#: the friction-law selector: its value (the URL's ``friction``) and the law's name in the
+#: solvers' declarations (:data:`vibrofriction.capabilities.FRICTION_LAWS`, the capability table)
+LAWS = {"coulomb": "Coulomb", "static": "static above kinetic", "rate_state": "rate-and-state"}
+assert set(LAWS.values()) == {"Coulomb", *FRICTION_LAWS}
+#: the inputs of each law (dimensionless, the model's units; docs/friction_laws.md), slider
+#: ranges a UI choice
+LAW_FIELDS = {
+    "static": (_model_field("static_ratio", 1.0, 3.0, log=False),),
+    "rate_state": (_model_field("rs_a", 1e-3, 0.5), _model_field("rs_b", 0.0, 0.5, log=False),
+                   _model_field("rs_d_c", 1e-4, 10.0), _model_field("rs_v_ref", 1e-4, 10.0),
+                   _model_field("rs_alpha_ld", 0.0, 0.5, log=False)),
+}
+#: the same laws on the bench, in SI (``vf.Physical(mu_static=..., friction=vf.RateAndState(
+#: a, b, d_c [m], v_ref [m/s], alpha_ld))``): d_c typed in um, v_ref in mm/s
+BENCH_LAW = {
+    "static": (Field("mu_static", "mu_static (static coefficient, >= mu0)", 0.01, 3.0),),
+    "rate_state": (Field("friction_a", "a (direct effect)", 1e-4, 0.2),
+                   Field("friction_b", "b (evolution effect)", 0.0, 0.2, log=False),
+                   Field("friction_d_c_um", "d_c (critical slip distance, um)", 1e-3, 1e3),
+                   Field("friction_v_ref_mm_s", "v_ref (reference velocity, mm/s)", 1e-4,
+                         1e4),
+                   Field("friction_alpha_ld", "alpha_ld (Linker-Dieterich)", 0.0, 0.2,
+                         log=False)),
+}
+#: the most points of a rate-and-state curve (~0.1 s a point, more near stick-slip)
+LAW_POINTS = 40
+
+
+def law_solver(law: str) -> str:
+    """The solver of a flat punch without a transverse oscillation under ``law``.
+
+    Its name in :data:`~vibrofriction.capabilities.CAPABILITIES`: the first, in their order,
+    whose declaration covers the law and is chosen for a flat punch sliding along x.
+    """
+    return "rate_state" if law == "rate_state" else "event"
+
+
+def _law_disabled(law: str) -> tuple[str, ...]:
+    """The offered inputs disabled under ``law``, from the declarations.
+
+    Those its solver refuses whatever their value (``whole``), and the transverse oscillation
+    (``a_y``, ``phase_y``) where the 2-D solver does not cover the law.
+    """
+    own = CAPABILITIES[law_solver(law)]
+    names = [lim.parameter for lim in own.limits if lim.whole]
+    if LAWS[law] not in friction_laws(CAPABILITIES["plane"]):
+        names += ["a_y", "phase_y"]
+    return tuple(n for n in names if n in _SLIDERS)
+
+
+#: the inputs each law disables (reset to 0, the reason beside them; docs/explorer.md)
+LAW_DISABLED = {law: _law_disabled(law) for law in LAWS}
+
+
 def profile_of(exponent: float) -> str:
     """The selector's name of a tip exponent: ``flat``, ``sphere``, ``cone`` or ``power``."""
     return next((k for k, n in PROFILES.items() if n == exponent), "power")
@@ -113,7 +169,9 @@ VELOCITY = (
     Field("v_min", "velocity from (V, v0: signed)", -1e3, 1e3, log=False, allow_inf=False),
     Field("v_max", "velocity to", 1e-6, 1e3),
 )
-FIELDS = {f.name: f for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY)}
+LAW_INPUTS = tuple(f for fields in (*LAW_FIELDS.values(), *BENCH_LAW.values())
+                   for f in fields)
+FIELDS = {f.name: f for f in (*DIMENSIONLESS, PROFILE, *BENCH, *VELOCITY, *LAW_INPUTS)}
 
 
 def parse_number(name: str, text: str | float) -> float:
@@ -139,6 +197,14 @@ class State:
     phase_y: float = _default("phase_y")
     profile_exponent: float = _default("profile_exponent")
     inplane_on: str = CHOICES["inplane_on"].default
+    friction: str = "coulomb"
+    static_ratio: float = 1.3
+    rs_a: float = 0.02
+    rs_b: float = 0.01
+    rs_d_c: float = 0.01
+    rs_v_ref: float = 0.1
+    rs_alpha_ld: float = 0.0
+    rs_law: str = CHOICES["rs_law"].default
     natural_frequency_hz: float = 800.0
     mass: float = 0.01
     quality_factor: float = 50.0
@@ -149,6 +215,12 @@ class State:
     du_z_um: float = 0.5
     mu0: float = 0.3
     bench_eta_c: float = 0.0
+    mu_static: float = 0.39
+    friction_a: float = 0.006
+    friction_b: float = 0.003
+    friction_d_c_um: float = 1.0
+    friction_v_ref_mm_s: float = 1.0
+    friction_alpha_ld: float = 0.0
     axis: str = "vbar"
     v_min: float = 0.0
     v_max: float = 1.5
@@ -162,6 +234,9 @@ class State:
         if self.axis not in AXES:
             raise ValueError(f"axis must be one of {list(AXES)}, got {self.axis!r}")
         checked_choice("inplane_on", self.inplane_on)
+        checked_choice("rs_law", self.rs_law)
+        if self.friction not in LAWS:
+            raise ValueError(f"friction must be one of {list(LAWS)}, got {self.friction!r}")
 
     # ------------------------------------------------------------------ system
     @property
@@ -174,16 +249,46 @@ class State:
 
     @property
     def curve_points(self) -> int:
-        """The points of the curve: ``points``, at most :data:`MDR_POINTS` for a curved tip."""
-        return min(self.points, MDR_POINTS) if self.curved else self.points
+        """The points of the curve.
+
+        ``points``, at most :data:`MDR_POINTS` for a curved tip and :data:`LAW_POINTS` for
+        rate-and-state friction.
+        """
+        if self.curved:
+            return min(self.points, MDR_POINTS)
+        return min(self.points, LAW_POINTS) if self.friction == "rate_state" else self.points
+
+    def law_fields(self) -> tuple[Field, ...]:
+        """The inputs of the chosen friction law in the state's mode (none for Coulomb)."""
+        return (BENCH_LAW if self.mode == "bench" else LAW_FIELDS).get(self.friction, ())
+
+    def law_arguments(self) -> dict[str, Any]:
+        """The chosen law as the library's keywords.
+
+        Dimensionless: ``static_ratio`` or the ``rs_*`` fields; bench: ``mu_static`` or
+        ``friction`` (a :class:`~vibrofriction.RateAndState` in SI); empty for Coulomb.
+        """
+        if self.friction == "coulomb":
+            return {}
+        if self.mode == "dimensionless":
+            law = {f.name: getattr(self, f.name) for f in LAW_FIELDS[self.friction]}
+            return law if self.friction == "static" else {**law, "rs_law": self.rs_law}
+        if self.friction == "static":
+            return {"mu_static": self.mu_static}
+        return {"friction": vf.RateAndState(
+            a=self.friction_a, b=self.friction_b, d_c=self.friction_d_c_um * 1e-6,
+            v_ref=self.friction_v_ref_mm_s * 1e-3, alpha_ld=self.friction_alpha_ld,
+            law=self.rs_law)}
 
     def system(self) -> vf.Dimensionless | vf.Physical:
         """The library's system for these inputs (its validators raise ValueError)."""
         if self.mode == "dimensionless":
             return vf.Dimensionless(**{f.name: getattr(self, f.name) for f in DIMENSIONLESS},
                                     profile_exponent=self.profile_exponent,
-                                    inplane_on=self.inplane_on)
-        return vf.from_bench(**self.bench_arguments())
+                                    inplane_on=self.inplane_on, **self.law_arguments())
+        bench = vf.from_bench(**self.bench_arguments())
+        law = self.law_arguments()
+        return bench.with_(**law) if law else bench
 
     def bench_arguments(self) -> dict[str, Any]:
         """The keyword arguments of :func:`vibrofriction.bench.from_bench` (bench file's keys)."""
@@ -198,9 +303,13 @@ class State:
         """Whether ``V = 0`` is no point of the curve.
 
         A curved tip with a longitudinal in-plane oscillation (``a_x > 0``), which the MDR solver
-        refuses at rest.
+        refuses at rest; a friction law other than Coulomb's on a flat punch (the 1-D solver
+        has no static limit of a static coefficient, the rate-and-state solver none at all:
+        the contact creeps).
         """
-        return self.curved and self.a_x > 0.0
+        if self.curved:
+            return self.a_x > 0.0
+        return self.friction != "coulomb"
 
     def grid(self) -> np.ndarray:
         """The velocities of the curve on the chosen axis.
@@ -259,13 +368,16 @@ class State:
                 values[key] = _value(key, text)
             except ValueError as exc:
                 problems[key] = str(exc)
-        try:
-            return cls(**values), problems
-        except ValueError as exc:
-            bad = next((n for n in ("mode", "inplane_on") if n in str(exc)), "axis")
-            problems[bad] = str(exc)
-            values.pop(bad, None)
-            return cls(**values), problems
+        while True:  # each choice the state refuses by name keeps its default
+            try:
+                return cls(**values), problems
+            except ValueError as exc:
+                bad = next((n for n in ("mode", "inplane_on", "rs_law", "friction")
+                            if str(exc).startswith(n)), "axis")
+                if bad not in values:
+                    raise
+                problems[bad] = str(exc)
+                values.pop(bad)
 
     def with_(self, **changes: Any) -> State:
         """A copy with some inputs replaced."""
@@ -285,7 +397,7 @@ def _text(value: object) -> str:
 
 
 def _value(name: str, text: str) -> object:
-    if name in ("mode", "axis", "inplane_on"):
+    if name in ("mode", "axis", "inplane_on", "friction", "rs_law"):
         return text
     if name == "log_x":
         return text.strip().lower() in ("1", "true", "yes", "on")

@@ -86,6 +86,18 @@ def flat_side_text(curve: dict, state: State) -> str:
     One short line; the case's description and the details behind "more".
     """
     crit, band = curve["critical"], curve["band"]
+    if curve.get("law", "coulomb") != "coulomb":
+        critical = (f"critical velocity ({state.axis}) {crit:.4g} (Coulomb's)"
+                    if math.isfinite(crit) else "no critical velocity")
+        short = f"case {curve['case']}; {curve['law_text']}: no static value; {critical}"
+        more = ("V = 0 is left out of the curve: the 1-D solver has no static limit of a "
+                "static coefficient (its value at rest depends on the slips), and "
+                "rate-and-state friction creeps at every force. " + (
+                    "The critical velocity of continuous sliding is Coulomb's (eq. 12): "
+                    "a sliding contact never sticks again. " if curve["law"] == "static" else
+                    "Eq. (12) is Coulomb's; the dashed line is steady sliding without "
+                    "oscillation, mu_ss(v0)/mu0 (docs/friction_laws.md). "))
+        return with_more(short, f"{more}{curve['case_text']}")
     if curve["a_y"] > 0:
         short = f"case {curve['case']}; no static value, no critical velocity"
         more = ("A transverse oscillation: no closed-form static value and no critical "
@@ -135,6 +147,10 @@ def status_text(state: State) -> str:
         return (f"computing {state.curve_points} points by the MDR solver "
                 f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
                 "a few tenths near the onset of sliding)...")
+    if state.friction == "rate_state" and not state.curved:
+        return (f"computing {state.curve_points} points by the rate-and-state solver (~0.1 s a "
+                "point; the first curve after an install compiles its kernels, about a "
+                "minute)...")
     return f"computing {state.curve_points} points..."
 
 

@@ -10,7 +10,7 @@ from bokeh.plotting import figure
 
 from ..figures.style import PHASE_COLORS
 from ..schema import PARTIAL, ContactState
-from .compute import CASE_COLORS, CONTACT_STATES, not_computed
+from .compute import CASE_COLORS, CONTACT_STATES, not_computed, solver_text
 
 __all__ = ["CurveView", "HistoryView", "MapView", "SpaceTimeView"]
 
@@ -164,8 +164,7 @@ class CurveView:
         for fig in self.figures.values():
             fig.yaxis.axis_label = curve["y_label"]
             fig.xaxis.axis_label = curve["x_label"]
-            solver = "exact solver" if curve["profile"] == "flat punch" else \
-                f"{curve['profile']}, MDR solver"
+            solver = solver_text(curve)
             fig.title.text = (f"{curve['y_label']} against velocity ({solver}): case "
                               f"{curve['case']}")
         self.picked.data = {"x": [], "y": []}
@@ -254,6 +253,22 @@ class HistoryView:
         _legend_outside(fig, "top_center")
         fig.legend.orientation = "horizontal"
         self.figure = fig
+        self.coefficient = _empty(t=1, mu=1)
+        self.levels = _empty(t=1, y=1, level=1)
+        local = figure(height=220, sizing_mode="stretch_width", tools=_TOOLS,
+                       title="local coefficient f/n", toolbar_location=TOOLBAR,
+                       x_axis_label="t/T (drive periods)", y_axis_label="f/n (over mu0)",
+                       x_range=fig.x_range, y_range=Range1d(-1.5, 1.5),
+                       css_classes=["vf-coefficient"])
+        local.line("t", "mu", source=self.coefficient, color="#1f77b4", line_width=2,
+                   legend_label="f/n (none in flight)")
+        local.multi_line("t", "y", source=self.levels, color="#d62728", line_dash="dashed",
+                         legend_field="level")
+        local.legend.location = "bottom_right"
+        local.legend.label_text_font_size = "8pt"
+        local.legend.background_fill_alpha = 0.7
+        local.visible = False
+        self.coefficient_figure = local
         path = figure(height=300, sizing_mode="stretch_width", tools=_TOOLS,
                       title="contact point on the substrate", toolbar_location=TOOLBAR,
                       x_axis_label="t/T (drive periods)", y_axis_label="x_c")
@@ -267,10 +282,43 @@ class HistoryView:
         path.visible = False
         self.path_figure = path
 
+    def hide(self) -> None:
+        """Hide the history's figures (a point without a history)."""
+        for fig in (self.figure, self.coefficient_figure, self.path_figure):
+            fig.visible = False
+
+    def _show_coefficient(self, h: dict, where: str) -> None:
+        """The local coefficient ``f/n`` against time, with the law's limits.
+
+        Kinetic ``+-1`` and, for a static coefficient above the kinetic one, ``+-static_ratio``;
+        hidden where the history has no coefficient (a curved tip's).
+        """
+        mu = h.get("coefficient")
+        fig = self.coefficient_figure
+        if mu is None:
+            self.coefficient.data = {"t": [], "mu": []}
+            self.levels.data = {"t": [], "y": [], "level": []}
+            fig.visible = False
+            return
+        t0, t1 = float(h["t"][0]), float(h["t"][-1])
+        s_r = float(h.get("static_ratio", 1.0))
+        levels = [("kinetic +-1", 1.0)] + ([(f"static +-{s_r:g}", s_r)] if s_r > 1.0 else [])
+        self.coefficient.data = {"t": h["t"], "mu": mu}
+        self.levels.data = {"t": [[t0, t1]] * 2 * len(levels),
+                            "y": [[sign * v] * 2 for _, v in levels for sign in (1, -1)],
+                            "level": [name for name, _ in levels for _ in (1, -1)]}
+        finite = np.asarray(mu, dtype=float)
+        finite = finite[np.isfinite(finite)]
+        top = max(s_r, float(np.max(np.abs(finite))) if finite.size else 1.0) * 1.1
+        _set_range(fig.y_range, -top, top)
+        fig.title.text = f"local coefficient f/n at {where} (over mu0)"
+        fig.visible = True
+
     def show(self, h: dict, where: str) -> None:
         """Draw the history ``h`` at the velocity ``where``."""
         t, f, n = h["t"], h["f"], h["n"]
         self.lines.data = {"t": t, "f": f, "n": n}
+        self._show_coefficient(h, where)
         f_y = h.get("f_y")
         self.lateral.data = {"t": t if f_y is not None else [],
                              "f_y": f_y if f_y is not None else []}

@@ -17,6 +17,10 @@ the solver series a figure needs and how to draw, table and check them.
   sphere and cone at equal normal-force amplitude; the linearised against the full sphere);
 * :mod:`.contact`: beyond the paper, stick, slip and lift-off across a sphere over one
   period (Fig. 19: the MDR time history's space-time picture);
+* :mod:`.friction_laws`: beyond the paper, local friction laws other than Coulomb's
+  (Figs. 20-22: a static coefficient above the kinetic one and rate-and-state friction
+  under a normal oscillation; a normal-load modulation as in Bureau et al. 2000; where the
+  oscillation suppresses or creates stick-slip on a velocity-weakening contact);
 * :mod:`.atlas`: quick looks at a sweep's atlas, curves or a map (:func:`plot_atlas`;
   imported on first use, with xarray and the sweep);
 * :mod:`.bench`: the bench's figures, a fit against its data (:func:`plot_fit`) and a
@@ -37,6 +41,7 @@ from . import (
     contact,
     damped,
     dimensional,
+    friction_laws,
     history,
     inplane,
     maps,
@@ -93,7 +98,7 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
     >>> from vibrofriction.figures import all_recipes
     >>> recipes = all_recipes(quick=True)
     >>> len(recipes), recipes[0].name
-    (19, 'fig02_history')
+    (22, 'fig02_history')
     """
     return [
         history.fig2(),
@@ -114,6 +119,9 @@ def all_recipes(quick: bool = False) -> list[Recipe]:
         shape.shape_dependence(quick),
         shape.sphere_linearised(quick),
         contact.fig19(),
+        friction_laws.friction_laws(quick),
+        friction_laws.load_modulation(quick),
+        friction_laws.weakening_map(quick),
     ]
 
 

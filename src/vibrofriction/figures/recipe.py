@@ -19,7 +19,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from numpy.typing import NDArray
 
-from ..solver import STATUS_BY_CODE
+from ..solver import STATUS_BY_CODE, SolverSettings
 from .series import Curve, Runner, Series, solve
 
 __all__ = ["Check", "Recipe", "Rendered", "Table", "curve_table", "solve_recipes",
@@ -175,6 +175,9 @@ class Recipe:
         ``render(curves)``: a :class:`Rendered` from the solved curves by series key.
     parameters : tuple of str, optional
         Lines that state the parameters.
+    settings : vibrofriction.SolverSettings, optional
+        The solver's settings for this figure's points (state them in ``parameters``);
+        None (default): the settings of the run (:func:`solve_recipes`), else the defaults.
 
     Examples
     --------
@@ -197,6 +200,7 @@ class Recipe:
     series: tuple[Series, ...]
     render: Callable[[Mapping[str, Curve]], Rendered]
     parameters: tuple[str, ...] = field(default_factory=tuple)
+    settings: SolverSettings | None = None
 
     @property
     def points(self) -> int:
@@ -205,8 +209,8 @@ class Recipe:
 
 
 def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
-                  settings=None) -> list[dict[str, Curve]]:
-    """Solve the series of all recipes in one batch.
+                  settings: SolverSettings | None = None) -> list[dict[str, Curve]]:
+    """Solve the series of all recipes in one batch per settings.
 
     Parameters
     ----------
@@ -216,7 +220,8 @@ def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
         Solves the points (a ``Runner`` of ``vibrofriction.figures.series``); default
         the exact solver in this process.
     settings : vibrofriction.SolverSettings, optional
-        The solver's settings.
+        The solver's settings of every recipe that has none of its own
+        (:attr:`Recipe.settings`).
 
     Returns
     -------
@@ -227,13 +232,17 @@ def solve_recipes(recipes: Sequence[Recipe], *, runner: Runner | None = None,
     --------
     See :class:`Recipe`.
     """
-    tagged = [replace(s, key=f"{i}\x1f{s.key}") for i, r in enumerate(recipes) for s in r.series]
-    solved = solve(tagged, runner=runner, settings=settings)
+    groups: dict[SolverSettings | None, list[int]] = {}
+    for i, r in enumerate(recipes):
+        groups.setdefault(r.settings or settings, []).append(i)
     out: list[dict[str, Curve]] = [{} for _ in recipes]
-    for key, curve in solved.items():
-        i, own = key.split("\x1f", 1)
-        s = curve.series
-        out[int(i)][own] = replace(curve, series=replace(s, key=own))
+    for chosen, members in groups.items():
+        tagged = [replace(s, key=f"{i}\x1f{s.key}") for i in members
+                  for s in recipes[i].series]
+        for key, curve in solve(tagged, runner=runner, settings=chosen).items():
+            index, own = key.split("\x1f", 1)
+            s = curve.series
+            out[int(index)][own] = replace(curve, series=replace(s, key=own))
     return out
 
 

@@ -3,7 +3,9 @@
 A :class:`Series` is one curve of a figure: a fixed system ``(alpha, beta, a)``
 (eq. 20; with ``zeta``, ``eta_c`` for a damped one, docs/damping.md; with ``a_x``,
 ``phase_x``, ``inplane_on`` for a longitudinal in-plane oscillation, docs/inplane.md; with
-``profile_exponent`` for a curved tip, docs/contact_geometry.md) and
+``profile_exponent`` for a curved tip, docs/contact_geometry.md; with ``static_ratio`` or the
+``rs_*`` parameters and ``rs_law`` for a local friction law other than Coulomb's,
+docs/friction_laws.md) and
 an array of inertial velocities ``V = v0 m omega/(mu0 F_N0)`` (signed: ``V < 0`` slides
 backward).
 :func:`solve` flattens any number of series into one batch for
@@ -29,18 +31,25 @@ from ..schema import FIELD, FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE
 from ..solver import SolverSettings, converged, solve_points
 from ..validation import checked, checked_choice
 
-__all__ = ["CURVE_COLUMNS", "POINT_ARGS", "Curve", "Runner", "Series", "point_columns",
+__all__ = ["CHOICE_ARGS", "CURVE_COLUMNS", "POINT_ARGS", "Curve", "Runner", "Series",
+           "point_columns",
            "series_at_vbar", "series_of_physical", "solve", "solve_points_on",
            "status_counts"]
 
-#: The solver's point arguments, in the order of :func:`~vibrofriction.solver.solve_points`
-#: (the :class:`Series` fields of the same names).
+#: The solver's numeric point arguments (the :class:`Series` fields and the keywords of
+#: :func:`~vibrofriction.solver.solve_points` of the same names).
 POINT_ARGS = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x",
-              "a_y", "phase_y", "profile_exponent")
-#: ``runner(*columns, inplane_on, settings=...) -> dict of arrays``: ``columns`` the
-#: :data:`POINT_ARGS` arrays of the points, ``inplane_on`` an array of ``"substrate"`` /
-#: ``"holder"``, one per point (:func:`point_columns`): :func:`solve_points_on` or one with
-#: its signature.
+              "a_y", "phase_y", "profile_exponent", "static_ratio", "rs_a", "rs_b", "rs_d_c",
+              "rs_v_ref", "rs_alpha_ld")
+#: The solver's choices per point (the :class:`Series` fields and the keywords of
+#: :func:`~vibrofriction.solver.solve_points` of the same names): arrays of names.
+CHOICE_ARGS = ("inplane_on", "rs_law")
+#: The fields of the local friction law (of :class:`Series` and of
+#: :class:`~vibrofriction.Dimensionless`).
+_FRICTION_ARGS = ("static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld", "rs_law")
+#: ``runner(*columns, settings=...) -> dict of arrays``: ``columns`` the :data:`POINT_ARGS`
+#: arrays of the points followed by the :data:`CHOICE_ARGS` arrays of names, one entry per
+#: point (:func:`point_columns`): :func:`solve_points_on` or one with its signature.
 Runner = Callable[..., dict[str, NDArray]]
 
 
@@ -65,6 +74,9 @@ class Series:
         Plotting information (labels, panel), written into the data tables.
     zeta, eta_c, a_x, phase_x, inplane_on, a_y, phase_y, profile_exponent : optional
         The rest of the system, as :class:`~vibrofriction.Dimensionless` names them.
+    static_ratio, rs_a, rs_b, rs_d_c, rs_v_ref, rs_alpha_ld, rs_law : optional
+        The local friction law, as :class:`~vibrofriction.Dimensionless` names them
+        (default Coulomb friction: ``static_ratio = 1``, ``rs_a = 0``).
 
     Examples
     --------
@@ -93,6 +105,13 @@ class Series:
     a_y: float = 0.0
     phase_y: float = 0.0
     profile_exponent: float = math.inf
+    static_ratio: float = 1.0
+    rs_a: float = 0.0
+    rs_b: float = 0.0
+    rs_d_c: float = 1.0
+    rs_v_ref: float = 1.0
+    rs_alpha_ld: float = 0.0
+    rs_law: str = "aging"
 
     def __post_init__(self) -> None:
         """Check the velocity grid and the system."""
@@ -103,7 +122,8 @@ class Series:
         if self.a_y > 0 and np.any(v == 0.0):
             raise ValueError(f"series {self.key!r}: v_inertial = 0 with a transverse "
                              "oscillation (a_y > 0) is not computed (docs/inplane.md)")
-        checked_choice("inplane_on", self.inplane_on)
+        for name in CHOICE_ARGS:
+            checked_choice(name, getattr(self, name))
         object.__setattr__(self, "v_inertial", v)
         vb = np.broadcast_to(np.asarray(self.vbar, dtype=float), v.shape).copy()
         object.__setattr__(self, "vbar", vb)
@@ -129,7 +149,9 @@ def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: obje
     """A series of a :class:`Physical` system on a grid of ``v0`` (m/s).
 
     Its dimensionless groups (damping included), ``V`` and ``vbar`` (nan where ``v0*`` is 0 or
-    infinite); ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``.
+    infinite); ``v0`` is kept in ``meta``; a curved tip keeps its ``profile_exponent``, the
+    friction law its ``static_ratio`` and ``rs_*`` (in the model's units at the pin's
+    ``omega``).
     """
     v0 = np.asarray(v0, dtype=float)
     dim = physical.to_dimensionless()
@@ -139,7 +161,9 @@ def series_of_physical(key: str, physical: Physical, v0: ArrayLike, **meta: obje
     except ValueError:
         vbar = np.full(v0.size, np.nan)
     return Series(key, dim.alpha, dim.beta, dim.amplitude, V, vbar, {"v0": v0, **meta},
-                  zeta=dim.zeta, eta_c=dim.eta_c, profile_exponent=dim.profile_exponent)
+                  zeta=dim.zeta, eta_c=dim.eta_c, profile_exponent=dim.profile_exponent,
+                  **{n: getattr(dim, n) for n in _FRICTION_ARGS})
+
 
 
 #: The columns of a :class:`Curve`: those of :func:`solve_points` (the schema's kernel
@@ -266,8 +290,7 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
         return {}
     run = runner or solve_points_on
     sizes = [s.size for s in series]
-    columns, on = point_columns(series)
-    out = run(*columns, on, settings=settings)
+    out = run(*point_columns(series), settings=settings)
     curves: dict[str, Curve] = {}
     start = 0
     for s, n in zip(series, sizes, strict=True):
@@ -277,47 +300,39 @@ def solve(series: Iterable[Series], *, runner: Runner | None = None,
     return curves
 
 
-def point_columns(series: Sequence[Series]) -> tuple[list[NDArray], NDArray[np.object_]]:
+def point_columns(series: Sequence[Series]) -> list[NDArray]:
     """The arguments of a :data:`Runner` for every point of ``series``.
 
-    The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order)
-    and their ``inplane_on``: the arguments of a :data:`Runner`.
+    The :data:`POINT_ARGS` arrays of every point of ``series`` (concatenated in order),
+    then the :data:`CHOICE_ARGS` arrays of names (``dtype=object``).
     """
+    if not series:
+        return ([np.empty(0) for _ in POINT_ARGS]
+                + [np.empty(0, dtype=object) for _ in CHOICE_ARGS])
     columns = [np.concatenate([s.v_inertial if n == "v_inertial" else
                                np.full(s.size, getattr(s, n)) for s in series])
-               if series else np.empty(0) for n in POINT_ARGS]
-    on = (np.concatenate([np.full(s.size, s.inplane_on, dtype=object) for s in series])
-          if series else np.empty(0, dtype=object))
-    return columns, on
+               for n in POINT_ARGS]
+    choices = [np.concatenate([np.full(s.size, getattr(s, n), dtype=object) for s in series])
+               for n in CHOICE_ARGS]
+    return columns + choices
 
 
 def solve_points_on(*columns: NDArray, settings: SolverSettings | None = None
                     ) -> dict[str, NDArray]:
     """The default :data:`Runner`: the exact solver on every point.
 
-    :func:`solve_points` on the :data:`POINT_ARGS` arrays followed by ``inplane_on``,
-    whose value differs from point to point (one call per value); the default
-    :data:`Runner`.
+    :func:`solve_points` on the :data:`POINT_ARGS` arrays followed by the
+    :data:`CHOICE_ARGS` arrays (:func:`point_columns`), every one by its keyword; the
+    solver takes a choice's value point by point.
     """
-    *point, exponent, inplane_on = columns
-    on = np.asarray(inplane_on, dtype=object)
-    values = sorted(set(on.tolist()))
-    if len(values) <= 1:
-        # point is the POINT_ARGS before profile_exponent: mypy cannot count a star
-        return solve_points(*point, profile_exponent=exponent,  # type: ignore[misc]
-                            inplane_on=values[0] if values else "substrate",
-                            settings=settings)
-    out: dict[str, NDArray] = {}
-    for value in values:
-        idx = np.flatnonzero(on == value)
-        part = solve_points(*(np.asarray(x)[idx] for x in point),  # type: ignore[misc]
-                            profile_exponent=np.asarray(exponent)[idx], inplane_on=value,
-                            settings=settings)
-        for k, col in part.items():
-            if k not in out:
-                out[k] = np.empty(on.size, dtype=col.dtype)
-            out[k][idx] = col
-    return out
+    n = len(POINT_ARGS)
+    if len(columns) != n + len(CHOICE_ARGS):
+        raise TypeError(f"a Runner takes {n + len(CHOICE_ARGS)} columns (POINT_ARGS, then "
+                        f"CHOICE_ARGS), got {len(columns)}")
+    numbers = dict(zip(POINT_ARGS, columns[:n], strict=True))
+    choices = {k: np.asarray(v, dtype=object)
+               for k, v in zip(CHOICE_ARGS, columns[n:], strict=True)}
+    return solve_points(**numbers, **choices, settings=settings)
 
 
 def status_counts(curves: Sequence[Curve] | Mapping[str, Curve]) -> dict[str, int]:

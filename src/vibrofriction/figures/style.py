@@ -170,13 +170,16 @@ def panel_label(ax, text: str, *, x: float = 0.02, y: float = 0.97, **kwargs) ->
 
 
 def mark_untrusted(ax: Any, x: Any, curve: Any, color: Any, scale: float = 1.0,
-                   ms: float = 2.0, where: Any = None) -> None:
+                   ms: float = 2.0, where: Any = None,
+                   clip: tuple[float, float] = (0.0, 1.0)) -> None:
     """Draw a curve's untrusted points as what they are, never as results.
 
     A converged status whose error is too large: an open circle at its value.  A
     motion that did not settle (no value): a thin vertical bar over the range of its
     last averaging windows' means.  ``scale`` multiplies ``mu/mu0`` (e.g. ``mu0``);
-    ``where`` (a mask over the curve) restricts the points, with ``x`` given for those.
+    ``where`` (a mask over the curve) restricts the points, with ``x`` given for those;
+    an open circle's value is clipped to ``clip`` (a law of friction other than Coulomb's
+    can exceed ``mu0``).
     """
     sel = np.ones(curve.mu_ratio.shape, bool) if where is None else np.asarray(where)
     x = np.asarray(x)
@@ -185,7 +188,7 @@ def mark_untrusted(ax: Any, x: Any, curve: Any, color: Any, scale: float = 1.0,
     bad = ~np.asarray(curve.trusted)[sel]
     valued = bad & np.isfinite(mu)
     if np.any(valued):
-        ax.plot(x[valued], scale * np.clip(mu[valued], 0, 1), "o", ms=ms, mfc="none",
+        ax.plot(x[valued], scale * np.clip(mu[valued], *clip), "o", ms=ms, mfc="none",
                 mec=color, mew=0.5)
     ranged = bad & ~np.isfinite(mu) & np.isfinite(lo)
     if np.any(ranged):  # a bar with end ticks (visible even where the range is tiny)

@@ -193,7 +193,8 @@ FIELDS: tuple[Field, ...] = (
           "touchdown)", column=("int", 3), dtype="i8"),
     Field("method", "str", "1", "the solver that computed the result (METHOD_NAMES: "
           "'event' the 1-D event-driven solver, 'plane' the 2-D solver, 'mdr' the curved "
-          "tip's solver; the kernels' rows hold its index)", column=("int", 6), dtype="i1"),
+          "tip's solver, 'rate_state' the rate-and-state solver; the kernels' rows hold its "
+          "index)", column=("int", 6), dtype="i1"),
     Field("work", "float", "drive periods", "drive periods integrated in all, Newton's period "
           "maps, verification and averaging included", column=("float", 15), dtype="f8"),
     _fraction(ContactState.STICK, 2),
@@ -232,6 +233,11 @@ FIELDS: tuple[Field, ...] = (
     Field("open_area_fraction", "float", "1", "time-averaged fraction of the contact disc "
           "out of contact (the flat punch: flight_fraction)", "docs/contact_geometry.md",
           column=("float", 20), dtype="f8"),
+    Field("sliding_mu_ratio", "float", "1", "the coefficient of steady sliding at the same "
+          "velocity without oscillation over the local one, mu_ss(v0)/mu0 (1 for Coulomb "
+          "friction; rate-and-state friction: docs/friction_laws.md), so that the reduction "
+          "by the oscillation is mu_ratio/sliding_mu_ratio", "docs/friction_laws.md",
+          "mu_ss(v0) / mu0", ("float", 21), dtype="f8"),
     Field("final_state", "object", "", "the last state on the Poincare section tau = 2 pi k "
           "(SectionState: y, x_dot, f, phase, e; None for the static limit)"),
     Field("system", "object", "", "the dimensionless system (Dimensionless: the parameters "

@@ -412,7 +412,7 @@ def parameter_names(model: str, *, optional: bool = True) -> tuple[str, ...]:
 
 #: The solvers, by the name a result records (``FrictionResult.method``); the kernels' rows
 #: hold the index (:mod:`vibrofriction.solver.methods` declares what each one covers).
-METHOD_NAMES: tuple[str, ...] = ("event", "plane", "mdr")
+METHOD_NAMES: tuple[str, ...] = ("event", "plane", "mdr", "rate_state")
 
 #: The columns of a table of points (:class:`vibrofriction.solver.points.PointTable`), in
 #: order: the dimensionless model's parameters (the order of :data:`PARAMETERS`), the

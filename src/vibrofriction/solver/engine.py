@@ -242,12 +242,13 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
     """
     n = len(points)
     kind, init = initial_rows(initial, n, points.system)
-    chosen = choose(points["profile_exponent"], points["a_y"])
+    chosen = choose(points["profile_exponent"], points["a_y"], points["rs_a"])
     parts = [(METHODS[name], np.flatnonzero(chosen == k))
              for k, name in enumerate(METHOD_NAMES)]
     for method, idx in parts:  # every refusal before any work
         if idx.size:
             method.capabilities.check(points.take(idx), kind, settings)
+    sliding = sliding_mu_ratio(points)  # of the given velocities, before the mirror
     backward = points["v_inertial"] < 0.0
     if np.any(backward):  # the mirror x -> -x
         points = points.with_column("v_inertial", np.abs(points["v_inertial"]))
@@ -267,6 +268,7 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
                                                   np.ascontiguousarray(init[idx]), settings)
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
+    out_f[:, _O_SLIDING] = sliding
     out = {k: out_f[:, j].reshape(points.shape) for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(points.shape) for j, k in enumerate(INT_COLUMNS)})
     out["trusted"] = settings.trusted(out["status"], out["error"])
@@ -279,6 +281,26 @@ _O_STICK, _O_SLIP, _O_REVERSE, _O_FLIGHT = (column_index(k) for k in (
 _O_NORMAL, _O_STICK_AREA, _O_SLIP_AREA, _O_OPEN_AREA = (column_index(k) for k in (
     "mean_normal_ratio", "stick_area_fraction", "slip_area_fraction", "open_area_fraction"))
 _I_METHOD = column_index("method")
+_O_SLIDING = column_index("sliding_mu_ratio")
+
+
+def sliding_mu_ratio(points: PointTable) -> NDArray[np.float64]:
+    """``mu_ss(V)/mu0`` of each point: steady sliding without oscillation at its velocity.
+
+    Signed as ``mu_ratio`` (odd in ``V``): ``sign(V)`` for Coulomb friction (``rs_a = 0``; 1 at
+    ``V = 0``); rate-and-state friction :func:`vibrofriction.theory.steady_mu_ratio` (nan at
+    ``V = 0``, where there is no steady sliding).
+    """
+    out = np.where(points["v_inertial"] < 0.0, -1.0, 1.0)
+    rs = np.flatnonzero(points["rs_a"] > 0.0)
+    if rs.size:
+        V = np.abs(points["v_inertial"][rs])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mu = theory.steady_mu_ratio(np.where(V > 0.0, V, 1.0), points["rs_a"][rs],
+                                        points["rs_b"][rs], points["rs_d_c"][rs],
+                                        points["rs_v_ref"][rs])
+        out[rs] = np.where(V > 0.0, np.sign(points["v_inertial"][rs]) * mu, np.nan)
+    return out
 
 #: Kernel start of the named initial states: ``(kind, y, x', e, phase)``.
 _NAMED_START = {"sliding": (0, 0.0, 0.0, 0.0, 0), "rest": (1, 0.0, 0.0, 0.0, 0)}
@@ -301,6 +323,7 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     f[_O_STICK_AREA] = f[_O_STICK]
     f[_O_SLIP_AREA] = f[_O_SLIP] + f[_O_REVERSE]
     f[_O_OPEN_AREA] = f[_O_FLIGHT]
+    f[_O_SLIDING] = 1.0  # Coulomb friction, V > 0
     ints = oi.tolist()
     ints[_I_METHOD] = 0  # the event method
     return result_from_rows(f, ints, dim, V, settings)
@@ -378,7 +401,7 @@ def friction_coefficient(
     dim = dimensionless(system)
     V = inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0)
     if V.__class__ is float and V > 0.0 and dim.rs_a == 0.0 \
-            and method_of(dim.profile_exponent, dim.a_y) is EVENT:  # one moving point
+            and method_of(dim.profile_exponent, dim.a_y, dim.rs_a) is EVENT:  # one moving point
         return _one_point(dim, V, initial, settings or DEFAULT_SETTINGS)
     V = np.asarray(V, dtype=float)
     cols = solve_table(table_of(dim, V), initial, settings or DEFAULT_SETTINGS)

@@ -22,6 +22,7 @@ from .mdr_history import SPRINGS, mdr_history
 from .methods.event import EVENT
 from .methods.mdr import MDR
 from .methods.plane import PLANE, plane_arguments, plane_held
+from .methods.rate_state import refuse_rate_state
 from .points import table_of
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
@@ -167,6 +168,7 @@ def simulate(
         return mdr_history(dim, V, periods, samples_per_period, initial, springs, settings)
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
+    refuse_rate_state(dim, "simulate", "time histories")
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
     # refused as by solve_points (the limits and the settings), whatever the start
     EVENT.capabilities.check(table_of(dim, V), 0, settings or DEFAULT_SETTINGS)

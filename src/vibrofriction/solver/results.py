@@ -193,6 +193,7 @@ class FrictionResult:  # noqa: D101 (the docstring is __doc__ below: it lists th
     stick_area_fraction: float
     slip_area_fraction: float
     open_area_fraction: float
+    sliding_mu_ratio: float
     final_state: SectionState | None
     system: Dimensionless
     v_inertial: float
@@ -315,6 +316,7 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
     stick_area_fraction: NDArray[np.float64]
     slip_area_fraction: NDArray[np.float64]
     open_area_fraction: NDArray[np.float64]
+    sliding_mu_ratio: NDArray[np.float64]
     final_state: NDArray[np.object_]
     system: Dimensionless
     v_inertial: NDArray[np.float64]

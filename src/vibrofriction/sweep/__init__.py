@@ -26,7 +26,7 @@ from numpy.typing import ArrayLike
 from ..parallel import available_cores
 from ..solver import SolverSettings
 from ._compute import compute_block, identity, warm_up
-from ._grid import Plan, auto_chunk_size, make_plan, parse_axis
+from ._grid import Plan, auto_chunk_size, check_methods, make_plan, parse_axis
 from ._run import check_executor, run_blocks
 from ._store import MemorySink, open_atlas, open_sink
 from ._variables import STATUS_PENDING
@@ -69,7 +69,14 @@ def sweep(
     a_y: ArrayLike | None = None,
     phase_y: ArrayLike | None = None,
     profile_exponent: ArrayLike | None = None,
+    static_ratio: ArrayLike | None = None,
+    rs_a: ArrayLike | None = None,
+    rs_b: ArrayLike | None = None,
+    rs_d_c: ArrayLike | None = None,
+    rs_v_ref: ArrayLike | None = None,
+    rs_alpha_ld: ArrayLike | None = None,
     inplane_on: str | None = None,
+    rs_law: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -97,8 +104,10 @@ def sweep(
         ``beta``, ``amplitude`` keywords override it) or a
         :class:`~vibrofriction.params.Physical` system, swept over any of its SI fields
         passed as keywords (``mass=..., k_x=..., k_xc=..., k_zc=..., u_z0=...,
-        du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...``) and
-        the velocity ``v0`` (m/s).
+        du_z=..., omega=..., mu0=..., c_x=..., c_xc=..., du_x=..., phase_x=...,
+        mu_static=...``, and of its rate-and-state law ``friction_a=...,
+        friction_b=..., friction_d_c=..., friction_v_ref=..., friction_alpha_ld=...``)
+        and the velocity ``v0`` (m/s).
     alpha, beta, amplitude : array_like, optional
         Eq. (20) and ``a = du_z/u_z0``; ``beta = inf`` is a rigid contact.
         ``beta > alpha`` must hold at every grid point.
@@ -119,14 +128,36 @@ def sweep(
         Points with a finite ``n`` are solved by the MDR solver, point by point (a
         tenth of a second to seconds each), from steady sliding (no continuation), on
         the ``v_inertial`` or ``v0`` axis (``vbar`` is not defined for them yet), and
-        not with ``eta_c``, ``a_x``, ``a_y`` > 0 or ``beta = inf`` (a ValueError when
-        solved); their ``critical_velocity`` is ``theory.profile_critical_velocity``
-        (nan with ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived). In a physical sweep
-        the other SI fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with
+        not with ``eta_c``, ``a_y`` > 0 (refused before any work), ``a_x > 0`` at
+        ``V = 0`` or ``beta = inf`` (a ValueError when solved); their
+        ``critical_velocity`` is ``theory.profile_critical_velocity`` (nan with
+        ``eta_c``, ``a_x`` or ``a_y`` > 0: not derived). In a physical sweep the other SI
+        fields are held, so ``F_N0 = k_zc u_z0 n/(n + 1)`` changes with
         ``n`` (:class:`~vibrofriction.params.Physical`): not the same tip seen flat.
+    static_ratio : array_like, optional
+        ``mu_static/mu0 >= 1``, the static coefficient of friction over the kinetic one
+        (docs/friction_laws.md); default the system's, or 1 (Coulomb friction). Physical
+        systems sweep ``mu_static`` (None: ``mu0``).
+    rs_a, rs_b, rs_d_c, rs_v_ref, rs_alpha_ld : array_like, optional
+        Rate-and-state friction in the model's units (docs/friction_laws.md); default the
+        system's, or ``rs_a = 0`` (Coulomb friction). The pairs the model refuses
+        (``rs_b > 0`` or ``rs_alpha_ld > 0`` with ``rs_a = 0``, ``rs_alpha_ld > 0`` with
+        ``rs_b = 0`` or ``amplitude >= 1``, ``static_ratio > 1`` with ``rs_a > 0``) are
+        refused anywhere in the grid, before any work; so are a law no solver of the
+        grid takes, ``vbar`` and continuation with ``rs_a > 0``. A rate-and-state
+        row's ``critical_velocity`` is nan (eq. 12 is Coulomb's); a static coefficient
+        keeps the Coulomb one (a sliding contact carries the kinetic force). Physical
+        systems sweep the SI parameters of their ``friction=RateAndState(...)`` as
+        ``friction_a`` ... ``friction_alpha_ld`` (held at the law's values unless given;
+        its ``law`` is the grid's ``rs_law``), and the scaled ``rs_*`` of each row
+        (:meth:`~vibrofriction.Physical.friction_fields`) are coordinates of the atlas.
     inplane_on : {"substrate", "holder"}, optional
         Where the in-plane oscillation is imposed (one for the whole grid); default the
         system's, or ``"substrate"``.
+    rs_law : {"aging", "slip"}, optional
+        The state's evolution law of rate-and-state friction (one for the whole grid);
+        default the system's (its ``friction.law`` for a Physical system, which needs
+        one), or ``"aging"``.
     vbar, v_inertial : array_like, optional
         The velocity axis, exactly one of: ``v0/v0*`` (eq. 16; does not exist where
         ``alpha == 1``, ``beta == 1`` or ``amplitude == 0``, nor with an in-plane
@@ -207,10 +238,13 @@ def sweep(
     version, fingerprint = identity()
     plan = make_plan(system=system, alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta,
                      eta_c=eta_c, a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y,
-                     profile_exponent=profile_exponent, inplane_on=inplane_on, vbar=vbar,
+                     profile_exponent=profile_exponent, static_ratio=static_ratio, rs_a=rs_a,
+                     rs_b=rs_b, rs_d_c=rs_d_c, rs_v_ref=rs_v_ref, rs_alpha_ld=rs_alpha_ld,
+                     inplane_on=inplane_on, rs_law=rs_law, vbar=vbar,
                      v_inertial=v_inertial, v0=v0, physical=physical, settings=settings,
                      initial=initial, continuation=continuation, chunk_size=chunk_size,
                      version=version, fingerprint=fingerprint)
+    check_methods(plan)
     check_executor(client, workers)
     if store is None:
         sink: Any = MemorySink(plan)

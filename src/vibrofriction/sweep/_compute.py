@@ -19,9 +19,9 @@ from pathlib import Path
 import numpy as np
 
 from .. import theory
-from ..params import Dimensionless, Physical, inertial_velocity
+from ..params import Dimensionless, inertial_velocity
 from ..solver import section_state, solve_points
-from ._grid import DIMENSIONLESS, Plan
+from ._grid import DIMENSIONLESS, Plan, physical_system
 from ._variables import point_variables, row_variables
 
 #: The parameters of the critical velocity of continuous sliding (the same for a static
@@ -32,7 +32,8 @@ __all__ = ["compute_block", "identity", "warm_up"]
 
 #: the source files that determine the values of a sweep (relative to the package)
 _VALUE_SOURCES = ("_kernels/*.py", "solver/*.py", "solver/methods/*.py", "schema/*.py",
-                  "capabilities.py", "params/*.py", "theory/*.py", "sweep/_compute.py")
+                  "capabilities.py", "params/*.py", "theory/*.py", "sweep/_compute.py",
+                  "sweep/_grid.py")  # _grid: a physical row's system (physical_system)
 
 
 @functools.cache
@@ -124,14 +125,24 @@ def _dimensionless_rows(plan: Plan, block: int, vel: np.ndarray):
                         dtype=float).reshape(shape)
     # a transverse oscillation: no continuous sliding at full friction (docs/inplane.md)
     critical = np.where(np.asarray(point["a_y"]).reshape(shape) > 0.0, np.inf, critical)
+    critical = _coulomb_only(critical, np.asarray(point["rs_a"]).reshape(shape) > 0.0)
     V = np.empty((*shape, vel.size))
     for i in np.ndindex(shape):
         system = Dimensionless(**{n: float(x[i]) for n, x in point.items()},  # type: ignore[arg-type]
-                               inplane_on=plan.inplane_on)
+                               inplane_on=plan.inplane_on, rs_law=plan.rs_law)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         if system.curved:
             critical[i] = _curved_critical(system.critical_inertial_velocity)
     return point, {"critical_velocity": critical}, V
+
+
+def _coulomb_only(critical: np.ndarray, rate_state: np.ndarray | bool) -> np.ndarray:
+    """The critical velocity, nan where the friction is rate-and-state (eq. 12 is Coulomb's).
+
+    A static coefficient above the kinetic one keeps it: a sliding contact carries the
+    kinetic force, so continuous sliding sets in where it does with Coulomb friction.
+    """
+    return np.where(rate_state, np.nan, critical)
 
 
 def _curved_critical(critical: Callable[[], float]) -> float:
@@ -154,14 +165,15 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
     V = np.empty((*shape, vel.size))
     vstar = np.empty(shape)
     for i in np.ndindex(shape):
-        system = Physical(**{name: float(arr[i]) for name, arr in p.items()},  # type: ignore[arg-type]
-                          inplane_on=plan.inplane_on)
+        system = physical_system({name: float(arr[i]) for name, arr in p.items()}
+                                 | {"inplane_on": plan.inplane_on}, plan.friction)
         dim = system.to_dimensionless()
         for n, x in point.items():
             x[i] = getattr(dim, n)
         V[i] = inertial_velocity(system, **{plan.velocity.name: vel})
         vstar[i] = _curved_critical(system.critical_velocity) if system.curved \
             else system.critical_velocity()
+    vstar = _coulomb_only(vstar, plan.friction is not None)
     return point, {"critical_velocity": vstar, **point}, V
 
 
@@ -174,7 +186,7 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
             cols = solve_points(**{n: x[i] for n, x in point.items()}, v_inertial=V[i][j],
-                                inplane_on=plan.inplane_on,
+                                inplane_on=plan.inplane_on, rs_law=plan.rs_law,
                                 initial=state if state is not None else plan.initial,
                                 settings=plan.settings)
             if out is None:
@@ -225,7 +237,7 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
         V = np.broadcast_to(V[..., None, :], shape)
     else:
         cols = solve_points(**{n: x[..., None] for n, x in point.items()}, v_inertial=V,
-                            inplane_on=plan.inplane_on,
+                            inplane_on=plan.inplane_on, rs_law=plan.rs_law,
                             initial=plan.initial, settings=plan.settings)
         shape = V.shape
     cols["v_inertial"] = V

@@ -34,6 +34,7 @@ def _attrs(plan: Plan) -> dict:
         "fixed": " ".join(sorted(plan.fixed)),
         "initial": plan.initial,
         "inplane_on": plan.inplane_on,
+        "rs_law": plan.rs_law,
         "continuation": int(plan.continuation),
         "solver_settings": json.dumps(s, sort_keys=True),
         # what each solver ran with: the settings resolved with its own defaults

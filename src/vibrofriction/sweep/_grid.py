@@ -24,7 +24,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ..params import Dimensionless, Physical
+from ..capabilities import CAPABILITIES, Refusal
+from ..params import Dimensionless, Physical, RateAndState
 from ..schema import CHOICES, PARAMETER, PARAMETERS, choice_names, parameter_names
 from ..solver import SolverSettings
 from ..validation import checked_choice, validated
@@ -36,13 +37,30 @@ __all__ = [
     "PHYSICAL",
     "Axis",
     "Plan",
+    "check_methods",
     "make_plan",
+    "physical_system",
     "parse_axis",
 ]
 
 # the optional parameters (the pin across the sliding, k_y, alpha_y, ...) are not swept
 DIMENSIONLESS = parameter_names("dimensionless", optional=False)
 PHYSICAL = parameter_names("physical", optional=False)
+#: The static coefficient of a physical sweep: an SI axis when given (None: ``mu0``).
+MU_STATIC = "mu_static"
+#: The local friction law's parameters of the dimensionless model (docs/friction_laws.md),
+#: and the one they are checked with at the grid's corners (``rs_alpha_ld`` needs
+#: ``amplitude < 1``).
+FRICTION_LAW = ("static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld")
+_LAW_CORNERS = ("amplitude", *FRICTION_LAW)
+#: The SI parameters of a physical sweep's rate-and-state law (the system's ``friction``):
+#: axes ``friction_a`` ... (held at the law's values unless swept) where it has one.
+_SI_LAW = ("a", "b", "d_c", "v_ref", "alpha_ld")
+FRICTION_SI = tuple(f"friction_{n}" for n in _SI_LAW)
+#: The parameters some solver refuses at every value but its default (a ``whole``
+#: :class:`~vibrofriction.capabilities.Limit`): checked before any work.
+_LIMITED = tuple(dict.fromkeys(lim.parameter for c in CAPABILITIES.values()
+                               for lim in c.limits if lim.whole))
 DIRECTIONS = ("up", "down")
 DEFAULT_CHUNK_SIZE = 1000
 #: The block size when none is given: about 1/AUTO_BLOCKS of the grid, between
@@ -91,6 +109,11 @@ class Plan:
         The hash of the solver's source (:func:`identity`).
     inplane_on : str, optional
         Where the in-plane oscillation is imposed.
+    rs_law : str, optional
+        The state's evolution law of rate-and-state friction, one for the grid.
+    friction : RateAndState, optional
+        A physical sweep's rate-and-state law in SI units (None: Coulomb friction): its
+        ``law``; its parameters are the axes ``friction_a`` ... of :attr:`params`.
 
     Examples
     --------
@@ -111,6 +134,8 @@ class Plan:
     version: str
     fingerprint: str = ""  # hash of the solver's source (see _compute.identity)
     inplane_on: str = "substrate"  # where the in-plane oscillation is imposed (schema.CHOICES)
+    rs_law: str = "aging"  # the state's law of rate-and-state friction (schema.CHOICES)
+    friction: RateAndState | None = None  # a physical sweep's rate-and-state law (SI)
 
     # ---- shape
     @property
@@ -184,6 +209,8 @@ class Plan:
             "settings": dataclasses.asdict(self.settings),
             "initial": self.initial,
             "inplane_on": self.inplane_on,
+            "rs_law": self.rs_law,
+            "friction": None if self.friction is None else "rate-and-state",
             "continuation": self.continuation,
             "version": self.version,
             "fingerprint": self.fingerprint,
@@ -236,7 +263,14 @@ def make_plan(
     a_y: ArrayLike | None = None,
     phase_y: ArrayLike | None = None,
     profile_exponent: ArrayLike | None = None,
+    static_ratio: ArrayLike | None = None,
+    rs_a: ArrayLike | None = None,
+    rs_b: ArrayLike | None = None,
+    rs_d_c: ArrayLike | None = None,
+    rs_v_ref: ArrayLike | None = None,
+    rs_alpha_ld: ArrayLike | None = None,
     inplane_on: str | None = None,
+    rs_law: str | None = None,
     vbar: ArrayLike | None = None,
     v_inertial: ArrayLike | None = None,
     v0: ArrayLike | None = None,
@@ -250,8 +284,12 @@ def make_plan(
 ) -> Plan:
     """Validate a grid and cut it into blocks; every check happens here, before any work.
 
+    (What the solvers chosen in the grid never take is checked by :func:`check_methods`,
+    which :func:`sweep` calls on the plan: a plan itself is only the grid.)
+
     The grid's parameters and options are those of :func:`sweep` (``system``,
-    ``alpha`` ... ``profile_exponent``, ``inplane_on``, the velocity axis, ``settings``,
+    ``alpha`` ... ``profile_exponent``, the friction law's ``static_ratio``, ``rs_a`` ...
+    ``rs_alpha_ld``, ``inplane_on``, ``rs_law``, the velocity axis, ``settings``,
     ``initial``, ``continuation``, ``chunk_size``); besides them:
 
     Parameters
@@ -287,8 +325,13 @@ def make_plan(
     _check_axisymmetric(system)
     on = getattr(system, "inplane_on", CHOICES["inplane_on"].default) if inplane_on is None \
         else checked_choice("inplane_on", inplane_on)
+    law = dict(static_ratio=static_ratio, rs_a=rs_a, rs_b=rs_b, rs_d_c=rs_d_c,
+               rs_v_ref=rs_v_ref, rs_alpha_ld=rs_alpha_ld)
+    friction = None
     if isinstance(system, Physical):
         kind = "physical"
+        friction = _physical_law(system, rs_law)
+        state_law = CHOICES["rs_law"].default if friction is None else friction.law
         physical = dict(physical or {})
         if phase_x is not None:
             physical["phase_x"] = phase_x
@@ -296,14 +339,17 @@ def make_plan(
             physical["phase_y"] = phase_y
         if profile_exponent is not None:
             physical["profile_exponent"] = profile_exponent
-        params, velocity = _physical_axes(system.with_(inplane_on=on), physical, v0, dict(
-            alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, a_x=a_x,
-            a_y=a_y, vbar=vbar, v_inertial=v_inertial))
+        params, velocity = _physical_axes(
+            system.with_(inplane_on=on, friction=friction), physical, v0, dict(
+                alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c, a_x=a_x,
+                a_y=a_y, vbar=vbar, v_inertial=v_inertial, **law))
     else:
         kind = "dimensionless"
+        state_law = getattr(system, "rs_law", CHOICES["rs_law"].default) if rs_law is None \
+            else checked_choice("rs_law", rs_law)
         values = dict(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
                       a_x=a_x, phase_x=phase_x, a_y=a_y, phase_y=phase_y,
-                      profile_exponent=profile_exponent)
+                      profile_exponent=profile_exponent, **law)
         params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
                                                dict(physical or {}), v0)
     if continuation:
@@ -314,13 +360,34 @@ def make_plan(
             raise ValueError("continuation is not available for a curved profile "
                              "(profile_exponent finite in the grid): the MDR solver starts "
                              "from steady sliding only")
+        if friction is not None or any(a.name == "rs_a" and np.any(a.values > 0.0)
+                                       for a in params):
+            raise ValueError("continuation is not available for rate-and-state friction "
+                             "(rs_a > 0 in the grid): the section state it passes on does "
+                             "not carry the friction's state theta")
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
                 initial=initial, continuation=bool(continuation), chunks=(),
-                version=version, fingerprint=fingerprint, inplane_on=on)
+                version=version, fingerprint=fingerprint, inplane_on=on, rs_law=state_law,
+                friction=friction)
     n_tail = int(continuation) + int(velocity.swept)
     if chunk_size is None:
         chunk_size = auto_chunk_size(int(np.prod(plan.shape)))
     return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
+
+
+def _physical_law(system: Physical, rs_law: str | None) -> RateAndState | None:
+    """The rate-and-state law of a physical sweep: the system's, with ``rs_law`` if given.
+
+    ValueError for ``rs_law`` without a law to take it (``friction=None``): never ignored.
+    """
+    friction = system.friction
+    if rs_law is None:
+        return friction
+    if friction is None:
+        raise ValueError(f"rs_law = {rs_law!r} needs rate-and-state friction: a Physical "
+                         "system takes it as friction=RateAndState(..., law=...), and this "
+                         "one has none (Coulomb friction)")
+    return dataclasses.replace(friction, law=checked_choice("rs_law", rs_law))
 
 
 def _check_axisymmetric(system: Any) -> None:
@@ -328,10 +395,10 @@ def _check_axisymmetric(system: Any) -> None:
 
     ValueError for a system whose pin is not axisymmetric (``k_y``, ``c_y``,
     ``alpha_y``, ``zeta_y`` given): the sweep does not carry them yet (refused, never
-    ignored).
+    ignored).  ``mu_static`` (the static coefficient, twin of ``mu0``) is an SI axis.
     """
-    names = [p.name for p in PARAMETERS if p.twin and getattr(system, p.name, None)
-             is not None]
+    names = [p.name for p in PARAMETERS if p.twin and p.name != MU_STATIC
+             and getattr(system, p.name, None) is not None]
     if names:
         raise ValueError(f"the sweep does not take a pin that is not axisymmetric yet "
                          f"({', '.join(names)} given): sweep with friction_coefficient over "
@@ -377,28 +444,79 @@ def _checked_options(settings: Any, initial: str, chunk_size: Any) -> SolverSett
 
 def _physical_axes(system: Physical, physical: dict[str, ArrayLike], v0: ArrayLike | None,
                    dimensionless: dict[str, ArrayLike | None]) -> tuple[tuple[Axis, ...], Axis]:
-    """The SI axes (canonical order) and ``v0`` of a sweep around ``system``."""
+    """The SI axes (canonical order) and ``v0`` of a sweep around ``system``.
+
+    ``mu_static`` is an axis where it is given (a keyword or the system's), else ``mu0``
+    holds for it; a rate-and-state law (``friction``) gives the axes ``friction_a``,
+    ``friction_b``, ``friction_d_c``, ``friction_v_ref``, ``friction_alpha_ld`` (its SI
+    parameters, held at the law's values unless given).
+    """
+    law = [n for n in FRICTION_LAW if dimensionless.get(n) is not None]
+    if law:
+        raise ValueError(f"{', '.join(law)}: a Physical system's friction law is its "
+                         "mu_static and its friction=RateAndState(...) in SI units: sweep "
+                         "mu_static=[...] or friction_a=[...], friction_b, friction_d_c, "
+                         "friction_v_ref, friction_alpha_ld")
     if any(v is not None for v in dimensionless.values()):
         raise ValueError("a Physical system is swept over its SI parameters and v0; "
                          "alpha, beta, amplitude, zeta, eta_c, a_x, vbar, v_inertial are not "
                          "allowed, nor a_y (sweep c_x, c_xc, du_x, du_y instead of zeta, "
                          "eta_c, a_x, a_y)")
-    unknown = sorted(set(physical) - set(PHYSICAL))
+    bare = sorted(n for n in physical if n in _SI_LAW)
+    if bare:
+        raise ValueError(f"{', '.join(bare)}: a physical sweep takes the parameters of its "
+                         f"rate-and-state law as {', '.join('friction_' + n for n in bare)}")
+    law = sorted(n for n in physical if n in FRICTION_SI)
+    if law and system.friction is None:
+        raise ValueError(f"{', '.join(law)} need{'s' if len(law) == 1 else ''} "
+                         "rate-and-state friction: a Physical system "
+                         "takes it as friction=RateAndState(a=..., b=..., d_c=..., v_ref=...), "
+                         "and this one has none (Coulomb friction)")
+    names = PHYSICAL + ((MU_STATIC,) if MU_STATIC in physical or system.mu_static is not None
+                        else ()) + (FRICTION_SI if system.friction is not None else ())
+    unknown = sorted(set(physical) - set(names) - {MU_STATIC})
     if unknown:
         raise ValueError(f"unknown physical parameter(s) {unknown}; "
-                         f"choose from {list(PHYSICAL)}")
+                         f"choose from {[*PHYSICAL, MU_STATIC, *FRICTION_SI]}")
     if v0 is None:
         raise ValueError("give the sliding velocity v0 (m/s) for a Physical system")
-    base = dataclasses.asdict(system)
-    params = tuple(make_axis(n, physical.get(n, base[n])) for n in PHYSICAL)
-    choices = {n: base[n] for n in choice_names("physical")}
+    base = _physical_fields(system)
+    params = tuple(make_axis(n, physical.get(n, base[n])) for n in names)
+    fixed = {n: base[n] for n in choice_names("physical")} | {"friction": system.friction}
     velocity = make_axis("v0", v0)
     validated({"v0": velocity.values})
     for a in params:  # each value of each axis, with the others at their base values
         for x in np.atleast_1d(a.values):
-            system.with_(**{a.name: float(x)})
-    _check_physical_corners(params, velocity, choices)
+            try:
+                physical_system(base | {a.name: float(x)}, system.friction)
+            except ValueError as exc:  # RateAndState names its own fields: a, b, ...
+                named = a.name in FRICTION_SI
+                raise ValueError(f"{a.name} = {float(x):g}: {exc}" if named else str(exc)) \
+                    from None
+    _check_physical_corners(params, velocity, fixed)
     return params, velocity
+
+
+def _physical_fields(system: Physical) -> dict[str, Any]:
+    """The fields of ``system``, its rate-and-state law as ``friction_a`` ... (if any)."""
+    fields = dataclasses.asdict(system)
+    law = fields.pop("friction")
+    return fields | ({} if law is None else {f"friction_{n}": law[n] for n in _SI_LAW})
+
+
+def physical_system(values: dict[str, Any], friction: RateAndState | None) -> Physical:
+    """The system of a physical grid's point: its SI fields and its law's ``friction_*``.
+
+    ``friction`` is the grid's law (its ``law``, and its parameters where ``values`` has
+    no ``friction_*``).
+    """
+    own = {n.removeprefix("friction_"): values[n] for n in FRICTION_SI if n in values}
+    if own:
+        if friction is None:
+            raise ValueError(f"{', '.join(own)} need a rate-and-state law (friction=None)")
+        friction = dataclasses.replace(friction, **own)
+    return Physical(**{n: v for n, v in values.items() if n not in FRICTION_SI and
+                       n != "friction"}, friction=friction)
 
 
 def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
@@ -436,12 +554,17 @@ def _dimensionless_axes(system: Any, values: dict[str, ArrayLike | None],
     for a in (*axes, velocity):  # each axis alone: the ranges, not the relations
         validated({a.name: a.values})
     _check_above(axes)
+    _check_law_corners(axes)
+    by_name = {a.name: a for a in axes}
     if velocity.name == "vbar":
-        by_name = {a.name: a for a in axes}
         if np.any(by_name["a_x"].values > 0.0) or np.any(by_name["a_y"].values > 0.0):
             raise ValueError("vbar (v0/v0* of eq. 16) is not defined with an in-plane "
                              "oscillation (a_x or a_y > 0 in the grid): sweep v_inertial (signed) "
                              "instead")
+        if np.any(by_name["rs_a"].values > 0.0):
+            raise ValueError("vbar (v0/v0* of eq. 16) is not defined for rate-and-state "
+                             "friction (rs_a > 0 in the grid: eq. 12 is Coulomb's): sweep "
+                             "v_inertial (signed) instead")
         _check_vbar_exists(*(by_name[n] for n in ("alpha", "beta", "amplitude", "zeta",
                                                   "eta_c")))
     return axes, velocity
@@ -465,6 +588,52 @@ def _check_above(axes: tuple[Axis, ...]) -> None:
                 f"{a.name} must be > {other} at every grid point: {a.name} = {lo!r} <= "
                 f"{other} = {hi!r} ({a.name} = {p.definition} exceeds {other} = "
                 f"{q.definition})")
+
+
+def _check_law_corners(axes: tuple[Axis, ...]) -> None:
+    """Refuse friction-law values that cannot go together anywhere in the grid.
+
+    The validator (:func:`~vibrofriction.validation.validated`) on every corner of the
+    outer product of the friction law's axes and ``amplitude`` (their ends): each pair it
+    refuses (``rs_b > 0`` with ``rs_a = 0``, ``rs_alpha_ld > 0`` with ``rs_b = 0`` or
+    ``amplitude >= 1``, ``static_ratio > 1`` with ``rs_a > 0``, ...) is refused at some
+    point of the grid exactly when it is at a corner, every condition being one-sided in
+    each parameter.
+    """
+    ends = {a.name: np.unique([np.min(a.values), np.max(a.values)]) for a in axes
+            if a.name in _LAW_CORNERS}
+    corners = np.meshgrid(*ends.values(), indexing="ij")
+    try:
+        validated({n: c.ravel() for n, c in zip(ends, corners, strict=True)})
+    except ValueError as exc:
+        raise ValueError(f"the grid's friction law: {exc}") from None
+
+
+def _check_methods(values: dict[str, NDArray[np.float64]]) -> None:
+    """Refuse, before any work, what a solver chosen somewhere in the grid never takes.
+
+    ``values``: the values each parameter takes in the grid (its axis, or a physical
+    grid's groups at its corners).  The solvers are those of the grid's
+    ``profile_exponent`` and ``a_y`` (:func:`~vibrofriction.solver.methods.choose`), and
+    each refuses every value but the default of a parameter it declares ``whole``
+    (:class:`~vibrofriction.capabilities.Limit`: a friction law it does not cover, contact
+    damping for the MDR solver): the outer product holds each such value with each solver.
+    The other limits depend on the point: refused when solved.
+    """
+    from ..solver.methods import METHODS, choose
+
+    n, y = np.meshgrid(np.unique(values["profile_exponent"]), np.unique(values["a_y"]))
+    for i in np.unique(choose(n, y)):
+        c = list(METHODS.values())[int(i)].capabilities
+        for limit in c.limits:
+            if not limit.whole or limit.parameter not in values:
+                continue
+            x = np.asarray(values[limit.parameter], dtype=float)
+            bad = np.asarray(limit.refuses({limit.parameter: x}), dtype=bool)
+            if bad.any():
+                raise Refusal(f"{c.title} ({c.takes}) does not take {limit.what}: got "
+                              f"{limit.parameter} = {float(x[bad.argmax()]):g} in the grid",
+                              limit.parameter)
 
 
 def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None:
@@ -495,23 +664,57 @@ def _check_continuation(velocity: Axis) -> None:
 
 
 def _check_physical_corners(params: tuple[Axis, ...], velocity: Axis,
-                            choices: dict[str, str]) -> None:
+                            fixed: dict[str, Any]) -> None:
     """The dimensionless groups are monotonic in each SI parameter: check the corners.
 
     Catches combinations that are valid one by one but not together (overflow of
-    ``m omega^2``, ``k_xc`` below the rounding of ``k_x`` so that ``beta == alpha``).
+    ``m omega^2``, ``k_xc`` below the rounding of ``k_x`` so that ``beta == alpha``,
+    ``mu_static`` below ``mu0``, a rate-and-state law's ``alpha_ld > 0`` with ``du_z >=
+    u_z0``).
     """
-    ends = [(float(np.min(a.values)), float(np.max(a.values))) for a in params]
     vmin, vmax = float(np.min(velocity.values)), float(np.max(velocity.values))
-    for corner in itertools.product(*ends):
-        values: dict[str, Any] = dict(zip(PHYSICAL, corner, strict=True)) | choices
-        p = Physical(**values)
+    for where, p in _physical_corners(params, fixed):
         try:
             p.to_dimensionless()
             V = max(abs(float(p.v0_to_inertial(v))) for v in (vmin, vmax))
         except ValueError as exc:
-            raise ValueError(f"the physical grid has an invalid corner "
-                             f"{dict(zip(PHYSICAL, corner, strict=True))}: {exc}") from None
+            raise ValueError(f"the physical grid has an invalid corner {where}: {exc}") from None
         if not math.isfinite(V):
             raise ValueError(f"v0 = {vmin!r}..{vmax!r} overflows the inertial velocity at "
-                             f"{dict(zip(PHYSICAL, corner, strict=True))}")
+                             f"{where}")
+
+
+def _physical_corners(params: tuple[Axis, ...], fixed: dict[str, Any]):
+    """``(values, Physical)`` at each corner of a physical grid (each axis's distinct ends).
+
+    ValueError naming the corner where the system itself is refused.
+    """
+    names = [a.name for a in params]
+    ends = [sorted({float(np.min(a.values)), float(np.max(a.values))}) for a in params]
+    for corner in itertools.product(*ends):
+        where = dict(zip(names, corner, strict=True))
+        try:
+            yield where, physical_system(where | fixed, fixed.get("friction"))
+        except ValueError as exc:
+            raise ValueError(f"the physical grid has an invalid corner {where}: {exc}") from None
+
+
+def check_methods(plan: Plan) -> None:
+    """Refuse, before any work, what a solver chosen somewhere in ``plan`` never takes.
+
+    :func:`sweep` calls it on its plan (a plan itself is only the grid: a friction law no
+    solver covers yet still makes one).  A physical grid is judged by the groups at its
+    corners (those that matter are one-sided in each SI parameter).
+
+    Raises
+    ------
+    vibrofriction.capabilities.Refusal
+        A ValueError naming the parameter, its value and the solver.
+    """
+    if plan.kind == "dimensionless":
+        _check_methods({a.name: np.atleast_1d(a.values) for a in plan.params})
+        return
+    fixed = {"inplane_on": plan.inplane_on, "friction": plan.friction}
+    dims = [p.to_dimensionless() for _, p in _physical_corners(plan.params, fixed)]
+    _check_methods({n: np.array([float(getattr(d, n)) for d in dims])
+                    for n in ("profile_exponent", "a_y", *_LIMITED)})

@@ -55,9 +55,24 @@ def _flag_words(text: str) -> str:
 _STATUS_CODES = sorted(STATUS_BY_CODE)
 
 
-#: Attributes of every coordinate: the schema's parameters, and ``direction``.
+#: The SI parameters of a physical sweep's rate-and-state law (``Physical.friction``).
+_FRICTION_SI_ATTRS = {
+    "friction_a": ("direct effect a of rate-and-state friction (mu_star = mu0)", "1", "a"),
+    "friction_b": ("evolution effect b of rate-and-state friction", "1", "b"),
+    "friction_d_c": ("critical slip distance of rate-and-state friction", "m", "d_c"),
+    "friction_v_ref": ("reference slip velocity of rate-and-state friction", "m s-1",
+                       "v_ref"),
+    "friction_alpha_ld": ("Linker-Dieterich coefficient of rate-and-state friction", "1",
+                          "alpha_LD"),
+}
+
+#: Attributes of every coordinate: the schema's parameters, a physical sweep's
+#: rate-and-state law, and ``direction``.
 COORD_ATTRS: dict[str, dict[str, Any]] = {
     **{p.name: p.attrs() for p in PARAMETERS},
+    **{name: {"long_name": words, "units": units, "symbol": symbol,
+              "equation": "docs/friction_laws.md"}
+       for name, (words, units, symbol) in _FRICTION_SI_ATTRS.items()},
     "direction": {"long_name": "direction of the velocity continuation: each point starts "
                                "from the final state of its predecessor in this direction",
                   "symbol": ""},
@@ -115,6 +130,13 @@ def point_variables(velocity: str) -> tuple[Variable, ...]:
     return tuple(out)
 
 
+#: The critical velocity under the friction laws (docs/friction_laws.md).
+_LAW_COMMENT = ("Coulomb friction's (eq. 12, mu0 the kinetic coefficient), also with a static "
+                "coefficient above the kinetic one (static_ratio > 1: a sliding contact "
+                "carries the kinetic force); nan for rate-and-state friction (rs_a > 0), "
+                "for which eq. 12 does not hold")
+
+
 def row_variables(kind: str) -> tuple[Variable, ...]:
     """Variables of the non-velocity parameters only (one value per curve)."""
     if kind == "dimensionless":
@@ -123,6 +145,7 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "units, damped (V at vbar = 1 without in-plane oscillation; with "
                          "one, the combined drive's, docs/inplane.md); undamped inf in case "
                          "IV (alpha = 1), 0 in case III (beta = 1); 0 at amplitude 0",
+            "comment": _LAW_COMMENT,
             "symbol": "v0* m omega / (mu0 F_N0)", "units": _VEL_UNIT,
             "equation": "(12)"}),)
     return (
@@ -131,6 +154,7 @@ def row_variables(kind: str) -> tuple[Variable, ...]:
                          "forward (with an in-plane oscillation, the combined drive's); inf "
                          "at k_x = m omega^2 (case IV), 0 at k_x + k_xc = m omega^2 (case "
                          "III)",
+            "comment": _LAW_COMMENT,
             "symbol": "v0*", "units": "m s-1", "equation": "(12)"}),
         *(Variable(n, "f8", np.nan, dict(COORD_ATTRS[n]))
           for n in parameter_names("dimensionless", optional=False)  # from the SI ones

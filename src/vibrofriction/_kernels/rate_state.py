@@ -1,0 +1,957 @@
+r"""Rate-and-state friction on the 1-D flat punch: a Rosenbrock integrator and the steady state.
+
+Scaled variables as everywhere (docs/model.md): ``tau = omega t``, forces in ``mu_star F_N0``,
+``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (finite: a rigid contact is
+refused by the method), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
+forcing (:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f +
+h`` with ``f = k e``; the massless contact point slips at the rate the law gives by
+inversion (docs/friction_laws.md)::
+
+    w' = 2 v_ref sinh(m/a) exp(-Q),  Q = (1 + b ln(theta v_ref/d_c))/a,  m = f/n.
+
+The contact's variable is the local coefficient ``m = k e/n`` rather than ``e`` (it stays
+finite as ``n -> 0``): ``m' = (k (x' - w') - m n')/n``.  The state is integrated as ``L = ln
+theta`` (theta spans decades): aging ``L' = e^-L - |w'|/d_c``, slip ``L' = -g (ln g + L)``
+with ``g = |w'|/d_c``, plus the Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight
+(``A > 1``) ``f = 0``, aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms
+unloaded (``e = n m/k = 0``) on the slow manifold of ``m`` (:func:`_touchdown_mu`).
+
+The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
+friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
+reset at each section, integrated by the same steps.  Integrator: RODAS4 (Hairer & Wanner,
+*Solving ODEs II*, IV.7; 6 stages, order 4 with an embedded order 3, L-stable, stiffly
+accurate), the analytic Jacobian and time derivative, step control on
+``max |err_i|/(rtol (1 + |z_i|))``.  Lift-off and touch-down are at the closed-form
+phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
+where ``|f| = n |m|`` is below round-off of the averages.
+
+The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
+method on the period map with a finite-difference Jacobian (the perturbed maps replay the
+base map's steps, so that the difference is one of a smooth map), Broyden updates between
+Jacobians, refreshed where the steps stall.  An attracting orbit found (the spectral radius
+of the Jacobian, the Floquet multiplier, below 1) is refined by one map at ``rtol/REFINE``
+and one chord step: the answer is the refined mean, its error twice the change of the mean
+between the two tolerances plus the next Newton step's change of the mean (the integration
+error propagated and the Newton residual).  Otherwise (a response not locked to the drive:
+self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response)
+the motion is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is
+said with the windows' disagreement as the error, never ``PERIODIC``.  Where the motion sits
+on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
+equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
+"""
+
+import math
+
+import numpy as np
+
+from .codes import (
+    I_EVENTS,
+    I_METHOD,
+    I_PERIOD,
+    I_PERIODS,
+    I_PHASE,
+    I_STATUS,
+    O_DRIFT,
+    O_E,
+    O_ERR,
+    O_F,
+    O_FLIGHT,
+    O_LAT,
+    O_MU,
+    O_MULT,
+    O_SETTLE,
+    O_WMAX,
+    O_WMIN,
+    O_WORK,
+    O_XD,
+    O_Y,
+    SLIP_NEG,
+    SLIP_POS,
+    ST_AVERAGED,
+    ST_FAILED,
+    ST_NOT_CONVERGED,
+    ST_PERIODIC,
+    T_A_X,
+    T_ALPHA,
+    T_AMPLITUDE,
+    T_BETA,
+    T_INPLANE_ON,
+    T_PHASE_X,
+    T_V,
+    T_ZETA,
+    point_index,
+)
+from .integrate import to_lab_frame
+from .jit import jit
+from .phases import frame_offset, inplane_forcing
+
+__all__ = ["rs_period", "rs_steady_state", "rs_steady_state_many", "steady_mu"]
+
+T_RS_A = point_index("rs_a")
+T_RS_B = point_index("rs_b")
+T_RS_DC = point_index("rs_d_c")
+T_RS_VREF = point_index("rs_v_ref")
+T_RS_ALD = point_index("rs_alpha_ld")
+T_RS_LAW = point_index("rs_law")  # the index of "aging" is 0, of "slip" 1
+
+TWO_PI = 2.0 * math.pi
+# fields of the parameter vector
+P_ALPHA, P_K, P_A, P_V, P_GAMMA, P_HC, P_HS, P_RA, P_RB, P_DC, P_VREF = range(11)
+P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR = range(11, 17)
+N_PAR = 17
+# the state: y, x', e, ln theta and the quadratures int f, int f w', int gamma y'^2
+Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
+NZ = 7
+NM = 4  # the components that feed back (the quadratures do not)
+CONTACT, FLIGHT = 0, 1
+RECORD, REPLAY = 1, 2  # modes of a period map's step log
+# a replayed step whose error estimate exceeds this many tolerances fails the replay (the
+# finite differences then take adaptive steps): in a stiff layer (the touch-down) a step
+# accepted for one motion can be far too long for a neighbouring one
+REPLAY_ERROR = 10.0
+LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
+CUT_DELTA = 1e-13  # contact segments end where n = CUT_DELTA before lift-off (see doc)
+EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
+H_MAX = 0.25 * math.pi  # the longest step
+H_MIN = 1e-14  # a step below this (relative to 2 pi) has failed
+MAX_STEPS = 200_000  # steps per period before the integration is said to have failed
+SAFETY = 0.9
+REFINE = 20.0  # the refinement's tolerance is rtol/REFINE
+ERROR_SAFETY = 2.0
+NEWTON_ITERATIONS = 16
+NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
+NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
+SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
+# steps are poor: the period map is far from linear)
+FIRST_CHECK = 16  # the first checkpoint of the running average, doubling
+KICK = 1e-3  # relative velocity kick off a repelling orbit the motion sits on
+ROUNDOFF_MU = 1e-13
+
+# RODAS4 (Hairer & Wanner, Solving ODEs II, Sect. IV.7; rodas.f, ROCOE with METH = 1)
+GAM = 0.25
+A21 = 1.544
+A31, A32 = 0.9466785280815826, 0.2557011698983284
+A41, A42, A43 = 3.314825187068521, 2.896124015972201, 0.9986419139977817
+A51, A52, A53, A54 = 1.221224509226641, 6.019134481288629, 12.53708332932087, -0.6878860361058950
+C21 = -5.6688
+C31, C32 = -2.430093356833875, -0.2063599157091915
+C41, C42, C43 = -0.1073529058151375, -9.594562251023355, -20.47028614809616
+C51, C52, C53, C54 = 7.496443313967647, -10.24680431464352, -33.99990352819905, 11.70890893206160
+C61, C62, C63 = 8.083246795921522, -7.981132988064893, -31.52159432874371
+C64, C65 = 16.31930543123136, -6.058818238834054
+CC2, CC3, CC4 = 0.386, 0.21, 0.63
+D1, D2, D3, D4 = 0.25, -0.1043, 0.1035, -0.0362
+
+
+@jit
+def _exp(x):
+    return math.exp(min(x, EXP_MAX))
+
+
+@jit
+def make_parameters(alpha, beta, A, V, zeta, a_x, phase_x, on_substrate, ra, rb, dc, vref,
+                    ald, slip_law):
+    """The parameter vector of one point (fields ``P_*``)."""
+    P = np.empty(N_PAR)
+    gamma = 2.0 * zeta * math.sqrt(alpha)
+    hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
+    P[P_ALPHA], P[P_K], P[P_A], P[P_V], P[P_GAMMA] = alpha, beta - alpha, A, V, gamma
+    P[P_HC], P[P_HS], P[P_RA], P[P_RB], P[P_DC], P[P_VREF] = hc, hs, ra, rb, dc, vref
+    P[P_ALD], P[P_SLIPLAW], P[P_LNR] = ald, slip_law, math.log(vref / dc)
+    if A >= 1.0:
+        th = math.acos(-1.0 / A)
+        P[P_OFF], P[P_ON] = th, TWO_PI - th
+        P[P_NBAR] = (th + A * math.sin(th)) / math.pi
+    else:
+        P[P_OFF], P[P_ON] = TWO_PI, TWO_PI
+        P[P_NBAR] = 1.0
+    return P
+
+
+@jit
+def steady_mu(V, a, b, dc, vref):
+    """``mu_ss(V) = a asinh(V/(2 v_ref) e^Q)``, ``Q = (1 + b ln(v_ref/V))/a``, without overflow."""
+    lnz = math.log(V / (2.0 * vref)) + (1.0 + b * math.log(vref / V)) / a
+    if lnz > 30.0:
+        return a * (lnz + math.log(2.0))
+    return a * math.asinh(math.exp(lnz))
+
+
+@jit
+def _slip_rate(P, m, L):
+    """``(w', dw'/dm, dw'/dL)`` at the local coefficient ``m = f/n`` and ``L = ln theta``."""
+    a = P[P_RA]
+    q = (1.0 + P[P_RB] * (L + P[P_LNR])) / a
+    u = m / a
+    au = abs(u)
+    ep = _exp(au - q)
+    em = _exp(-au - q)
+    w = P[P_VREF] * (ep - em)
+    if u < 0.0:
+        w = -w
+    return w, P[P_VREF] * (ep + em) / a, -w * P[P_RB] / a
+
+
+@jit
+def local_mu(P, w, L):
+    """The local coefficient ``a asinh(w'/(2 v_ref) e^Q)`` at the slip rate ``w'``, without
+    overflow.
+    """
+    if w == 0.0:
+        return 0.0
+    a = P[P_RA]
+    lnz = math.log(abs(w) / (2.0 * P[P_VREF])) + (1.0 + P[P_RB] * (L + P[P_LNR])) / a
+    mu = a * (lnz + math.log(2.0)) if lnz > 30.0 else a * math.asinh(math.exp(lnz))
+    return mu if w > 0.0 else -mu
+
+
+@jit
+def _touchdown_mu(P, tau, v, L):
+    """The local coefficient on the slow manifold at the re-formed contact's tiny load.
+
+    ``m' = 0`` to leading order: the root of ``g(m) = k (x' - w'(m)) - m n'``, which
+    decreases in ``m`` and lies between 0 and the smaller in modulus of ``k x'/n'`` (the
+    spring stretched at the body's velocity while the contact creeps) and the coefficient
+    at the slip rate ``x'`` (the contact slipping with the body).  Newton's method kept in
+    that bracket (bisection where a step leaves it).
+    """
+    k = P[P_K]
+    nd = -P[P_A] * math.sin(tau)
+    if v == 0.0:
+        return 0.0
+    far = local_mu(P, v, L)
+    if nd > 0.0 and abs(k * v / nd) < abs(far):
+        far = k * v / nd
+    lo, hi = (0.0, far) if v > 0.0 else (far, 0.0)
+    m = 0.5 * (lo + hi)
+    for _ in range(200):
+        w, dwdm, _ = _slip_rate(P, m, L)
+        g = k * (v - w) - m * nd
+        if g > 0.0:
+            lo = m
+        else:
+            hi = m
+        dg = -k * dwdm - nd
+        step = -g / dg if dg != 0.0 else 0.0
+        mn = m + step
+        if not (lo < mn < hi):
+            mn = 0.5 * (lo + hi)
+        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
+            return mn
+        m = mn
+    return m
+
+
+@jit
+def _evaluate(P, tau, z, mode, dz, J, ft, jac):
+    """The right-hand side into ``dz``; with ``jac`` the Jacobian ``J`` (rows of all
+    components, columns of the first ``NM``) and the time derivative ``ft``.
+
+    The contact's variable is the local coefficient ``m = f/n = k e/n`` (finite as
+    ``n -> 0``, where ``e`` is not): ``m' = (k (x' - w') - m n')/n``.
+    """
+    alpha, gamma, V = P[P_ALPHA], P[P_GAMMA], P[P_V]
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    h = P[P_HC] * ct + P[P_HS] * st
+    y, v, m, L = z[Z_Y], z[Z_V], z[Z_M], z[Z_L]
+    dc = P[P_DC]
+    k = P[P_K]
+    slip_law = P[P_SLIPLAW] != 0.0
+    f = 0.0
+    w = 0.0
+    dwdm = dwdL = dLdw = dLdL = 0.0
+    if mode == FLIGHT:
+        dz[Z_M] = 0.0
+        dz[Z_L] = 0.0 if slip_law else _exp(-L)
+    else:
+        f = n * m
+        w, dwdm, dwdL = _slip_rate(P, m, L)
+        dz[Z_M] = (k * (v - w) - m * nd) / n
+        g = abs(w) / dc
+        if slip_law:
+            lg = math.log(g) if g > 1e-300 else -690.0
+            dz[Z_L] = -g * (lg + L)
+            dLdw = -(lg + L + 1.0) / dc  # times sign(w)
+            dLdL = -g
+        else:
+            dz[Z_L] = _exp(-L) - g
+            dLdw = -1.0 / dc
+            dLdL = -_exp(-L)
+        if w < 0.0:
+            dLdw = -dLdw
+        if P[P_ALD] > 0.0:
+            dz[Z_L] -= P[P_ALD] / P[P_RB] * nd / n
+    dz[Z_Y] = v - V
+    dz[Z_V] = -gamma * (v - V) - alpha * y - f + h
+    dz[Z_F] = f
+    dz[Z_D] = f * w
+    dz[Z_G] = gamma * (v - V) * (v - V)
+    if not jac:
+        return
+    J[:, :] = 0.0
+    ft[:] = 0.0
+    J[Z_Y, Z_V] = 1.0
+    J[Z_V, Z_Y] = -alpha
+    J[Z_V, Z_V] = -gamma
+    J[Z_G, Z_V] = 2.0 * gamma * (v - V)
+    ft[Z_V] = P[P_HS] * ct - P[P_HC] * st
+    if mode == FLIGHT:
+        J[Z_L, Z_L] = 0.0 if slip_law else -_exp(-L)
+        return
+    ndd = -A * ct
+    J[Z_V, Z_M] = -n
+    J[Z_M, Z_V] = k / n
+    J[Z_M, Z_M] = -(k * dwdm + nd) / n
+    J[Z_M, Z_L] = -k * dwdL / n
+    J[Z_L, Z_M] = dLdw * dwdm
+    J[Z_L, Z_L] = dLdL + dLdw * dwdL
+    J[Z_F, Z_M] = n
+    J[Z_D, Z_M] = n * w + f * dwdm
+    J[Z_D, Z_L] = f * dwdL
+    ft[Z_V] -= nd * m
+    ft[Z_M] = -(dz[Z_M] * nd + m * ndd) / n
+    ft[Z_F] = nd * m
+    ft[Z_D] = nd * m * w
+    if P[P_ALD] > 0.0:
+        ft[Z_L] -= P[P_ALD] / P[P_RB] * (ndd / n - nd * nd / (n * n))
+
+
+@jit
+def _lu(M, piv):
+    """LU factorisation of the ``NM x NM`` matrix ``M`` in place, partial pivoting."""
+    for c in range(NM):
+        p = c
+        for i in range(c + 1, NM):
+            if abs(M[i, c]) > abs(M[p, c]):
+                p = i
+        piv[c] = p
+        if M[p, c] == 0.0:
+            return False
+        if p != c:
+            for j in range(NM):
+                M[c, j], M[p, j] = M[p, j], M[c, j]
+        for i in range(c + 1, NM):
+            M[i, c] /= M[c, c]
+            for j in range(c + 1, NM):
+                M[i, j] -= M[i, c] * M[c, j]
+    return True
+
+
+@jit
+def _lu_solve(M, piv, r):
+    """Solve ``M x = r`` in place with the factors of :func:`_lu`."""
+    for c in range(NM):
+        p = piv[c]
+        if p != c:
+            r[c], r[p] = r[p], r[c]
+    for i in range(NM):
+        for j in range(i):
+            r[i] -= M[i, j] * r[j]
+    for i in range(NM - 1, -1, -1):
+        for j in range(i + 1, NM):
+            r[i] -= M[i, j] * r[j]
+        r[i] /= M[i, i]
+
+
+@jit
+def _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i):
+    """Solve stage ``i``: ``K[i] = (I/(h gam) - J)^-1 rhs`` (the quadratures by the
+    block-triangular structure: ``k_q = h gam (rhs_q + J_q k_main)``).
+    """
+    for j in range(NM):
+        K[i, j] = rhs[j]
+    _lu_solve(M, piv, K[i, :NM])
+    for q in range(NM, NZ):
+        s = rhs[q]
+        for j in range(NM):
+            s += J[q, j] * K[i, j]
+        K[i, q] = hg * s
+
+
+@jit
+def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew):
+    """One RODAS4 step of length ``hh`` from ``(tau, z)`` into ``znew``; returns the error
+    norm (``inf`` where a stage is not finite or the matrix singular).
+    """
+    dz, ft, zs, rhs = ws[0], ws[1], ws[2], ws[3]
+    _evaluate(P, tau, z, mode, dz, J, ft, True)
+    hg = hh * GAM
+    for i in range(NM):
+        for j in range(NM):
+            M[i, j] = -J[i, j]
+        M[i, i] += 1.0 / hg
+    if not _lu(M, piv):
+        return math.inf
+    ih = 1.0 / hh
+    # stage 1
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D1 * ft[j]
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 0)
+    # stage 2
+    for j in range(NZ):
+        zs[j] = z[j] + A21 * K[0, j]
+    _evaluate(P, tau + CC2 * hh, zs, mode, dz, J, ft, False)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D2 * ft[j] + ih * C21 * K[0, j]
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 1)
+    # stage 3
+    for j in range(NZ):
+        zs[j] = z[j] + A31 * K[0, j] + A32 * K[1, j]
+    _evaluate(P, tau + CC3 * hh, zs, mode, dz, J, ft, False)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D3 * ft[j] + ih * (C31 * K[0, j] + C32 * K[1, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 2)
+    # stage 4
+    for j in range(NZ):
+        zs[j] = z[j] + A41 * K[0, j] + A42 * K[1, j] + A43 * K[2, j]
+    _evaluate(P, tau + CC4 * hh, zs, mode, dz, J, ft, False)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D4 * ft[j] + ih * (C41 * K[0, j] + C42 * K[1, j] + C43 * K[2, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 3)
+    # stage 5
+    for j in range(NZ):
+        zs[j] = z[j] + A51 * K[0, j] + A52 * K[1, j] + A53 * K[2, j] + A54 * K[3, j]
+    _evaluate(P, tau + hh, zs, mode, dz, J, ft, False)
+    for j in range(NZ):
+        rhs[j] = dz[j] + ih * (C51 * K[0, j] + C52 * K[1, j] + C53 * K[2, j] + C54 * K[3, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 4)
+    # stage 6 (the embedded solution is zs + K[4], the solution zs + K[4] + K[5])
+    for j in range(NZ):
+        zs[j] += K[4, j]
+    _evaluate(P, tau + hh, zs, mode, dz, J, ft, False)
+    for j in range(NZ):
+        rhs[j] = dz[j] + ih * (C61 * K[0, j] + C62 * K[1, j] + C63 * K[2, j]
+                               + C64 * K[3, j] + C65 * K[4, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 5)
+    err = 0.0
+    for j in range(NZ):
+        znew[j] = zs[j] + K[5, j]
+        if not math.isfinite(znew[j]):
+            return math.inf
+        sc = rtol * (scale[j] + max(abs(z[j]), abs(znew[j])))
+        err = max(err, abs(K[5, j]) / sc)
+    return err
+
+
+@jit
+def _workspace():
+    """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew)``."""
+    return (np.empty((4, NZ)), np.empty((6, NZ)), np.empty((NZ, NM)), np.empty((NM, NM)),
+            np.empty(NM, np.int64), np.empty(NZ))
+
+
+@jit
+def _scales(P):
+    """The absolute part of the error weights: 1 in the units of each component."""
+    return np.ones(NZ)
+
+
+@jit
+def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
+    """Integrate ``z`` from ``t0`` to ``t1`` in ``mode``; ``hbox[0]`` carries the step size.
+
+    ``count[0]`` counts the accepted steps, ``count[1]`` the rejected ones.  ``lp[1]``: 0
+    adaptive, ``RECORD`` adaptive with the accepted steps appended to ``log`` (at ``lp[0]``;
+    beyond its end nothing is recorded and ``lp[0]`` is set past it), ``REPLAY`` the steps of
+    ``log`` taken as they are (no error control: a finite difference of the period map is
+    then one of a smooth map).  Returns False where the step size fell below ``H_MIN``,
+    ``MAX_STEPS`` were taken, or a replayed step is not finite.
+    """
+    ws, K, J, M, piv, znew = work
+    t = t0
+    steps = 0
+    if lp[1] == REPLAY:
+        while t < t1:
+            if lp[0] >= log.shape[0]:
+                return False
+            hh = log[lp[0]]
+            lp[0] += 1
+            last = hh < 0.0  # the segment's last step is recorded negative
+            hh = abs(hh)
+            err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
+            if not err <= REPLAY_ERROR:  # the step does not suit the perturbed motion
+                return False
+            t = t1 if last else t + hh
+            z[:] = znew
+            count[0] += 1
+        return True
+    while t < t1:
+        hh = min(hbox[0], H_MAX)
+        last = t + hh >= t1 * (1.0 - 1e-15) or t + hh >= t1
+        if last:
+            hh = t1 - t
+        if hh < H_MIN:
+            return False
+        err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
+        if err <= 1.0:
+            t = t1 if last else t + hh
+            z[:] = znew
+            count[0] += 1
+            steps += 1
+            if steps > MAX_STEPS:
+                return False
+            if lp[1] == RECORD:
+                if lp[0] < log.shape[0]:
+                    log[lp[0]] = -hh if last else hh
+                lp[0] += 1
+            fac = min(6.0, max(0.2, SAFETY * (max(err, 1e-10)) ** -0.25))
+            if not (last and fac > 1.0):  # a clipped last step says little about the next
+                hbox[0] = hh * fac
+        else:
+            count[1] += 1
+            fac = 0.2 if not math.isfinite(err) else max(0.2, SAFETY * err ** -0.25)
+            hbox[0] = hh * fac
+    return True
+
+
+@jit
+def _cuts(P):
+    """``(end of contact, start of the next contact)`` within the period: the phases
+    where ``n`` is ``CUT_DELTA`` before lift-off and after touch-down (``A >= 1``).
+    """
+    A = P[P_A]
+    if A < 1.0:
+        return TWO_PI, TWO_PI
+    off, on = P[P_OFF], P[P_ON]
+    sl = A * math.sin(off)  # |n'| at lift-off (0 at grazing, A = 1)
+    if sl > 1e-6:
+        d = CUT_DELTA / sl
+    else:
+        d = math.sqrt(2.0 * CUT_DELTA)  # n ~ (tau - pi)^2/2 at grazing
+    return off - d, on + d
+
+
+@jit
+def rs_period(P, z, rtol, hbox, work, count):
+    """The period map: ``z`` at ``tau = 0`` to ``tau = 2 pi`` in place, its quadratures
+    ``F``, ``D``, ``G`` over the period (reset first).  ``count[2]`` counts lift-offs and
+    touch-downs.  Returns False where the integration failed.
+    """
+    return _period(P, z, rtol, hbox, work, count, np.empty(1), np.zeros(2, np.int64))
+
+
+@jit
+def _period(P, z, rtol, hbox, work, count, log, lp):
+    """:func:`rs_period`, its steps recorded or replayed (:func:`_segment`; ``lp[0]`` is
+    reset to the start of ``log``).
+    """
+    scale = _scales(P)
+    lp[0] = 0
+    z[Z_F] = z[Z_D] = z[Z_G] = 0.0
+    c_off, c_on = _cuts(P)
+    if c_off >= TWO_PI:
+        return _segment(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
+    if not _segment(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp):
+        return False
+    z[Z_M] = 0.0  # lift-off: the contact spring unloads
+    count[2] += 2
+    if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp):
+        return False
+    # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
+    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-16)
+    z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
+    return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
+
+
+@jit
+def contact_state(P, z):
+    """``(f, w')`` at ``tau = 0`` (in contact: ``n = 1 + A``)."""
+    w, _, _ = _slip_rate(P, z[Z_M], z[Z_L])
+    return (1.0 + P[P_A]) * z[Z_M], w
+
+
+@jit
+def sliding_start(P, offset):
+    """Steady sliding at ``V`` before the oscillation: ``theta = d_c/V``, ``f = mu_ss(V)``,
+    ``e = f/k``, ``x' = V``, ``y = -f/alpha`` (laboratory frame, then the kernels').
+    """
+    V = P[P_V]
+    f = steady_mu(V, P[P_RA], P[P_RB], P[P_DC], P[P_VREF])
+    z = np.zeros(NZ)
+    z[Z_Y] = -f / P[P_ALPHA] - offset[0]
+    z[Z_V] = V - offset[1]
+    z[Z_M] = f  # n = 1 before the oscillation
+    z[Z_L] = math.log(P[P_DC] / V)
+    return z
+
+
+@jit
+def _weights(P, z):
+    """Weights of the section distance (forces and velocities, as the event solver's) and
+    its relative scale.
+    """
+    wv = np.empty(NM)
+    wv[Z_Y] = P[P_ALPHA]
+    wv[Z_V] = 1.0
+    wv[Z_M] = 1.0 + P[P_A]  # the force at tau = 0
+    wv[Z_L] = 1.0
+    s = 1.0 + P[P_ALPHA] * abs(z[Z_Y]) + abs(z[Z_V]) + wv[Z_M] * abs(z[Z_M])
+    return wv, s
+
+
+@jit
+def _distance(wv, z1, z2):
+    d = 0.0
+    for j in range(NM):
+        d += wv[j] * abs(z1[j] - z2[j])
+    return d
+
+
+@jit
+def _map_mean(P, z, rtol, hbox, work, count, log, lp):
+    """``(ok, mu)``: the period map from ``z`` in place (:func:`_period`) and the period's
+    mean ``F/N``.
+    """
+    ok = _period(P, z, rtol, hbox, work, count, log, lp)
+    return ok, z[Z_F] / (TWO_PI * P[P_NBAR])
+
+
+@jit
+def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, log, lp, D, gmu):
+    """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
+    gradient ``gmu`` of the period's mean, by finite differences; returns ``ok``.
+
+    Each column first by forward differences that replay the steps of the map ``z0 -> z1``
+    (``log``, ``lp[0]`` steps; the difference is then one of a smooth map, its error the
+    truncation's), at ``dj`` and ``2 dj``: where the two agree (to ``1e-3``) the first is
+    taken.  Where they do not (a stiff layer, e.g. a touch-down, where the steps of one
+    motion do not suit its neighbour), where a replayed step's error estimate is too large,
+    or where the log overflowed, the column is a central difference of adaptive maps at
+    ``rtol/REFINE^2`` over ``1e-4`` of the state's scale.  Returns the maps integrated as
+    the second value (``-1``: failed).
+    """
+    zp = np.empty(NZ)
+    zq = np.empty(NZ)
+    col = np.empty(NM)
+    wv, s = _weights(P, z0)
+    steps = lp[0]
+    replay = steps <= log.shape[0]
+    maps = 0
+    for c in range(NM):
+        good = False
+        if replay:
+            dj = 1e-7 * s / wv[c]
+            zp[:] = z0
+            zp[c] += dj
+            lp[1] = REPLAY
+            ok1, mu = _map_mean(P, zp, rtol, hbox, work, count, log, lp)
+            zq[:] = z0
+            zq[c] += 2.0 * dj
+            ok2, mu2 = _map_mean(P, zq, rtol, hbox, work, count, log, lp)
+            lp[1] = 0
+            maps += 2
+            if ok1 and ok2:
+                good = True
+                big = 1.0
+                for r in range(NM):
+                    col[r] = (zp[r] - z1[r]) / dj
+                    big = max(big, abs(col[r]))
+                for r in range(NM):
+                    if abs((zq[r] - z1[r]) / (2.0 * dj) - col[r]) > 1e-3 * big:
+                        good = False
+                gm = (mu - mu1) / dj
+                if abs((mu2 - mu1) / (2.0 * dj) - gm) > 1e-3 * (1.0 + abs(gm)):
+                    good = False
+        if not good:
+            dj = 1e-4 * s / wv[c]
+            tight = rtol / (REFINE * REFINE)
+            zp[:] = z0
+            zp[c] += dj
+            ok1, mu = _map_mean(P, zp, tight, np.array([hbox[0]]), work, count, log, lp)
+            zq[:] = z0
+            zq[c] -= dj
+            ok2, mu2 = _map_mean(P, zq, tight, np.array([hbox[0]]), work, count, log, lp)
+            maps += 2
+            if not (ok1 and ok2):
+                return False, maps
+            for r in range(NM):
+                col[r] = (zp[r] - zq[r]) / (2.0 * dj)
+            gm = (mu - mu2) / (2.0 * dj)
+        for r in range(NM):
+            D[r, c] = col[r]
+        gmu[c] = gm
+    lp[0] = steps
+    return True, maps
+
+
+@jit
+def _solve(m, r):
+    """Solve ``m x = r`` in place (``x`` into ``r``) by Gaussian elimination with partial
+    pivoting; False where ``m`` is singular.
+    """
+    nd = r.shape[0]
+    for c in range(nd):
+        p = c
+        for i in range(c + 1, nd):
+            if abs(m[i, c]) > abs(m[p, c]):
+                p = i
+        if m[p, c] == 0.0:
+            return False
+        for j in range(nd):
+            m[c, j], m[p, j] = m[p, j], m[c, j]
+        r[c], r[p] = r[p], r[c]
+        for i in range(c + 1, nd):
+            g = m[i, c] / m[c, c]
+            for j in range(c, nd):
+                m[i, j] -= g * m[c, j]
+            r[i] -= g * r[c]
+    for i in range(nd - 1, -1, -1):
+        for j in range(i + 1, nd):
+            r[i] -= m[i, j] * r[j]
+        r[i] /= m[i, i]
+    return True
+
+
+@jit
+def _spectral_radius(D):
+    ev = np.linalg.eigvals(D.astype(np.complex128))
+    r = 0.0
+    for x in ev:
+        r = max(r, abs(x))
+    return r
+
+
+@jit
+def _newton_step(D, z0, z1, dz):
+    """The Newton step ``dz = -(D - I)^-1 (z1 - z0)``; False where singular."""
+    Mx = np.empty((NM, NM))
+    for r in range(NM):
+        for c in range(NM):
+            Mx[r, c] = D[r, c]
+        Mx[r, r] -= 1.0
+        dz[r] = -(z1[r] - z0[r])
+    return _solve(Mx, dz)
+
+
+@jit
+def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
+    """Newton's method on the period map from ``z``; on success ``z`` is the orbit's state.
+
+    ``D``, ``gmu`` receive the period map's Jacobian and the mean's gradient (finite
+    differences, :func:`_jacobian`; chord steps, refreshed where they stall).  ``res``
+    receives ``(mu, shift, multiplier, maps)``: the orbit's mean, the change of the mean the
+    next Newton step would make (``|gmu . dz|``), the spectral radius of ``D`` and the period
+    maps integrated.  Returns True where the residual fell to the integration's level
+    (``100 rtol`` relative, weighted as the section distance).
+    """
+    z0 = z.copy()
+    z1 = z.copy()
+    zp0 = z.copy()  # the previous iterate and its image (Broyden's update)
+    zp1 = z.copy()
+    dz = np.empty(NM)
+    maps = 0
+    d_old = math.inf
+    tol = 10.0 * rtol
+    res[3] = 0.0
+    have_jac = False
+    for it in range(NEWTON_ITERATIONS):
+        z1[:] = z0
+        lp[1] = RECORD
+        ok, mu = _map_mean(P, z1, rtol, hbox, work, count, log, lp)
+        lp[1] = 0
+        maps += 1
+        if not ok:
+            break
+        wv, s = _weights(P, z0)
+        d = _distance(wv, z0, z1)
+        if it == 0:
+            d_first = d
+        if not math.isfinite(d) or (it > 0 and d > 100.0 * s) or \
+                (it >= 6 and d > NEWTON_PROGRESS * d_first):
+            break  # diverged, or not converging: left to the motion
+        if not have_jac or (d > 0.5 * d_old and d > tol * s):
+            ok, m = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)
+            maps += m
+            if not ok:
+                break
+            have_jac = True
+        elif it > 0:
+            _broyden(D, zp0, zp1, z0, z1)
+        if not _newton_step(D, z0, z1, dz):
+            break  # singular: no orbit found here
+        if d <= tol * s:
+            shift = 0.0
+            for r in range(NM):
+                shift += gmu[r] * dz[r]
+            res[0], res[1] = mu, abs(shift)
+            res[2] = _spectral_radius(D)
+            res[3] = maps
+            z[:] = z0
+            return True
+        d_old = d
+        zp0[:] = z0
+        zp1[:] = z1
+        # a step longer than half the state's scale is cut
+        step = 0.0
+        for r in range(NM):
+            step += wv[r] * abs(dz[r])
+        cut = min(1.0, 0.5 * s / step) if step > 0.0 else 1.0
+        for r in range(NM):
+            z0[r] += cut * dz[r]
+    res[3] = maps
+    return False
+
+
+@jit
+def _broyden(D, a0, a1, b0, b1):
+    """Broyden's update of the period map's Jacobian ``D`` from the step ``a0 -> b0`` with
+    the images ``a1``, ``b1``: ``D += (dP - D dz) dz^T/|dz|^2``.
+    """
+    nz = 0.0
+    for c in range(NM):
+        nz += (b0[c] - a0[c]) ** 2
+    if nz == 0.0:
+        return
+    for r in range(NM):
+        u = b1[r] - a1[r]
+        for c in range(NM):
+            u -= D[r, c] * (b0[c] - a0[c])
+        for c in range(NM):
+            D[r, c] += u * (b0[c] - a0[c]) / nz
+
+
+@jit
+def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
+    """The steady state from the section state ``z`` (kernels' frame); see the module doc.
+
+    Writes the output rows (``solver.FLOAT_COLUMNS``, ``INT_COLUMNS``); ``z`` ends as the
+    last section state.
+    """
+    out_f[:] = math.nan
+    out_i[:] = 0
+    work = _workspace()
+    count = np.zeros(3, np.int64)
+    hbox = np.array([1e-3])
+    res = np.zeros(4)
+    log = np.empty(LOG_SIZE)
+    lp = np.zeros(2, np.int64)
+    dzf = np.empty(NM)
+    D = np.empty((NM, NM))
+    gmu = np.empty(NM)
+    periods = 0.0  # maps integrated, Newton's included
+    nbar = TWO_PI * P[P_NBAR]
+    status = ST_NOT_CONVERGED
+    k = 0
+    chk_k = FIRST_CHECK
+    acc = 0.0
+    accs = np.zeros(64)
+    kchk = np.zeros(64)
+    nchk = 0
+    next_newton = SETTLE
+    period = 0
+    settle = math.nan
+    failed = False
+    while True:
+        if k == next_newton:
+            zn = z.copy()
+            hn = np.array([hbox[0]])  # a failed map's step size is not the motion's
+            found = _newton(P, zn, rtol, hn, work, count, log, lp, D, gmu, res)
+            periods += res[3]
+            next_newton = 4 * k
+            if found and res[2] < NEUTRAL:
+                # the same orbit at rtol/REFINE: one map from it and one chord step; the
+                # change of the mean is the integration's error (a bound of the coarse
+                # value's, reported for the refined one)
+                zf = zn.copy()
+                ok, muf = _map_mean(P, zf, rtol / REFINE, hn, work, count, log, lp)
+                periods += 1.0
+                wv, s = _weights(P, zn)
+                if ok and _newton_step(D, zn, zf, dzf) and \
+                        _distance(wv, zn, zf) <= 1e3 * rtol * s:
+                    shift = 0.0
+                    for r in range(NM):
+                        shift += gmu[r] * dzf[r]
+                        z[r] = zn[r] + dzf[r]
+                    mu = muf + shift
+                    out_f[O_MU] = mu
+                    err = ERROR_SAFETY * (abs(mu - res[0]) + res[1])
+                    out_f[O_ERR] = max(err, ROUNDOFF_MU * (1.0 + abs(mu)))
+                    out_f[O_MULT] = res[2]
+                    status = ST_PERIODIC
+                    period = 1
+                    settle = float(k)
+                    break
+            elif found:
+                # a repelling (or neutral) orbit: where the motion sits on it (an unstable
+                # steady sliding without oscillation) a kick lets it leave; the averages
+                # are taken once a kick of KICK has grown to the state's size
+                wv, s = _weights(P, z)
+                if _distance(wv, z, zn) <= 1e3 * rtol * s:
+                    z[Z_V] += KICK * (abs(z[Z_V]) + P[P_V])
+                    grow = math.log(1.0 / KICK) / math.log(max(res[2], 1.0 + 1e-9))
+                    while chk_k < k + 2.0 * grow and chk_k <= max_periods:
+                        chk_k *= 2
+                    nchk = 0
+        if k >= max_periods:
+            break
+        ok, mu = _map_mean(P, z, rtol, hbox, work, count, log, lp)
+        periods += 1.0
+        if not ok:
+            failed = True
+            break
+        k += 1
+        acc += z[Z_F]
+        if k == chk_k or k >= max_periods:
+            accs[nchk] = acc
+            kchk[nchk] = k
+            nchk += 1
+            chk_k *= 2
+            if nchk >= 3:
+                i2, i1, i0 = nchk - 1, nchk - 2, nchk - 3
+                m1 = (accs[i2] - accs[i1]) / (nbar * (kchk[i2] - kchk[i1]))
+                m0 = (accs[i1] - accs[i0]) / (nbar * (kchk[i1] - kchk[i0]))
+                out_f[O_MU] = m1
+                out_f[O_ERR] = max(abs(m1 - m0), 10.0 * rtol, ROUNDOFF_MU)
+                out_f[O_WMIN] = min(m0, m1)
+                out_f[O_WMAX] = max(m0, m1)
+                if abs(m1 - m0) <= tol_mean:
+                    status = ST_AVERAGED
+                    settle = float(k)
+                    break
+            if k >= max_periods:
+                break
+    if failed:
+        status = ST_FAILED
+    if status == ST_FAILED or status == ST_NOT_CONVERGED:
+        out_f[O_MU] = math.nan
+        out_f[O_ERR] = math.inf
+    out_f[O_SETTLE] = settle
+    out_f[O_WORK] = periods
+    out_f[O_LAT] = 0.0
+    out_f[O_DRIFT] = math.nan
+    A = P[P_A]
+    out_f[O_FLIGHT] = (P[P_ON] - P[P_OFF]) / TWO_PI if A > 1.0 else 0.0
+    f, w = contact_state(P, z)
+    out_f[O_Y], out_f[O_XD] = to_lab_frame(offset, z[Z_Y], z[Z_V])
+    out_f[O_F] = f
+    out_f[O_E] = f / P[P_K]
+    out_i[I_STATUS] = status
+    out_i[I_PERIOD] = period
+    out_i[I_PERIODS] = int(periods)
+    out_i[I_EVENTS] = count[2]
+    out_i[I_PHASE] = SLIP_NEG if w < 0.0 else SLIP_POS
+
+
+@jit
+def point_parameters(p):
+    """The parameter vector of a row of the table of points."""
+    return make_parameters(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA],
+                           p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_RS_A],
+                           p[T_RS_B], p[T_RS_DC], p[T_RS_VREF], p[T_RS_ALD], p[T_RS_LAW])
+
+
+@jit
+def rs_steady_state_many(points, rtol, max_periods, tol_mean, out_f, out_i):
+    """:func:`rs_steady_state` from steady sliding over a table of points (``V > 0``;
+    one compiled loop); row ``i`` of ``out_f`` and ``out_i`` receives point ``i``.
+    """
+    for i in range(points.shape[0]):
+        p = points[i]
+        P = point_parameters(p)
+        offset = frame_offset(p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0)
+        z = sliding_start(P, offset)
+        rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f[i], out_i[i])
+        out_i[i, I_METHOD] = 0  # the caller writes the method's index

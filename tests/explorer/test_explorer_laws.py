@@ -1,0 +1,216 @@
+"""The explorer's friction-law selector: the State, the curve, the exports and the history.
+
+Every expected value is the library's own, called here on a system built by hand (not through
+the explorer), or a number written out (units, the law's limits).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import vibrofriction as vf
+from vibrofriction import theory
+from vibrofriction.explorer import compute, exports
+from vibrofriction.explorer.messages import LAW, law_refusal, law_taken, read_inputs
+from vibrofriction.explorer.state import LAW_DISABLED, LAW_POINTS, State
+
+RS = dict(rs_a=0.03, rs_b=0.01, rs_d_c=0.02, rs_v_ref=0.2, rs_alpha_ld=0.0)
+
+
+def test_the_state_carries_each_law_and_applies_only_the_chosen_one():
+    base = vf.Dimensionless(0.5, 2.0, 0.5)
+    assert State(static_ratio=2.0, rs_a=0.5).system() == base  # Coulomb: kept, not applied
+    assert State(friction="static", static_ratio=1.5).system() == \
+        vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.5)
+    assert State(friction="rate_state", rs_law="slip", **RS).system() == \
+        vf.Dimensionless(0.5, 2.0, 0.5, rs_law="slip", **RS)
+    bench = State(mode="bench", friction="static", mu_static=0.45).system()
+    assert isinstance(bench, vf.Physical) and bench.mu_static == 0.45 and bench.mu0 == 0.3
+    rs = State(mode="bench", friction="rate_state", friction_a=0.01, friction_b=0.02,
+               friction_d_c_um=2.0, friction_v_ref_mm_s=5.0, friction_alpha_ld=0.005,
+               rs_law="slip").system()
+    assert isinstance(rs, vf.Physical)  # d_c typed in um, v_ref in mm/s: SI by hand
+    assert rs.friction == vf.RateAndState(a=0.01, b=0.02, d_c=2e-6, v_ref=5e-3,
+                                          alpha_ld=0.005, law="slip")
+
+
+@pytest.mark.parametrize("state", [
+    State(friction="static", static_ratio=1.75),
+    State(friction="rate_state", rs_law="slip", **RS),
+    State(mode="bench", friction="rate_state", friction_d_c_um=0.25, axis="v0", v_min=1e-3,
+          v_max=0.05),
+])
+def test_a_law_round_trips_through_the_url(state):
+    back, problems = State.from_query(state.to_query())
+    assert problems == {} and back == state
+
+
+def test_the_url_refuses_an_unknown_law_by_name():
+    state, problems = State.from_query({"friction": "viscous", "rs_law": "aged"})
+    assert state.friction == "coulomb" and state.rs_law == "aging"
+    assert "friction must be one of" in problems["friction"]
+    state, problems = State.from_query({"rs_law": "aged"})
+    assert "rs_law must be one of" in problems["rs_law"]
+
+
+def test_rest_and_points_under_a_law():
+    assert not State().rest_refused
+    assert State(friction="static").rest_refused and State(friction="rate_state").rest_refused
+    assert State(friction="rate_state").curve_points == LAW_POINTS == 40
+    assert State(friction="static").curve_points == 200
+    from vibrofriction.explorer.texts import status_text
+
+    assert status_text(State(friction="rate_state")).startswith(
+        "computing 40 points by the rate-and-state solver")
+
+
+def test_static_above_kinetic_changes_the_curve_as_the_library_does():
+    state = State(friction="static", static_ratio=1.5, points=15)
+    c = compute.curve(state)
+    vbar = np.linspace(0.0, 1.5, 15)[1:]  # V = 0 left out: no static limit at rest
+    np.testing.assert_array_equal(c["x"], vbar)
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.5), vbar=vbar)
+    np.testing.assert_array_equal(c["y"], r.mu_ratio)
+    coulomb = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=vbar)
+    assert np.max(np.abs(c["y"] - coulomb.mu_ratio)) > 1e-3  # the law changes the curve
+    assert "static_ratio = 1.5" in c["rest_note"] and "v_inertial = 0" in c["rest_note"]
+    assert math.isnan(c["static"]) and c["closed_forms"] == []  # eq. (2) is Coulomb's
+    assert c["critical"] == 1.0  # continuous sliding sets in where Coulomb's does
+
+
+def test_rate_and_state_curve_and_its_steady_sliding():
+    state = State(friction="rate_state", axis="V", v_min=0.0, v_max=2.0, points=5, **RS)
+    c = compute.curve(state)
+    V = np.linspace(0.0, 2.0, 5)[1:]
+    system = vf.Dimensionless(0.5, 2.0, 0.5, **RS)
+    np.testing.assert_array_equal(c["x"], V)
+    np.testing.assert_array_equal(c["y"], vf.friction_coefficient(system, v_inertial=V).mu_ratio)
+    assert set(c["method"]) == {"rate_state"}
+    assert compute.solver_text(c) == "rate-and-state solver"  # the plot's title
+    (form,) = c["closed_forms"]
+    np.testing.assert_allclose(form["y"], theory.steady_mu_ratio(V, 0.03, 0.01, 0.02, 0.2),
+                               rtol=1e-14)
+    # velocity strengthening (b < a): mu_ss(v) ~ 1 + (a - b) ln(v/v_ref) rises with v
+    assert np.all(np.diff(form["y"]) > 0.0)
+    assert form["y"][-1] == pytest.approx(1.0 + 0.02 * math.log(2.0 / 0.2), abs=1e-3)
+    assert math.isnan(c["critical"])  # eq. (12) is Coulomb's
+
+
+@pytest.mark.parametrize("state", [
+    State(friction="static", static_ratio=1.4, points=12),
+    State(friction="rate_state", rs_law="slip", points=6, **RS),
+    State(mode="bench", friction="static", mu_static=0.42, points=10),
+    State(mode="bench", friction="rate_state", axis="v0", v_min=1e-3, v_max=0.05, points=5),
+])
+def test_the_snippet_reproduces_the_curve_with_the_law(state):
+    scope: dict = {}
+    exec(exports.snippet(state), scope)  # noqa: S102 - the snippet shown to the user
+    np.testing.assert_array_equal(np.asarray(scope["y"]), compute.curve(state)["y"])
+    csv = exports.curve_csv(state, compute.curve(state))
+    assert "friction: " + ("static above kinetic" if state.friction == "static"
+                           else "rate-and-state") in csv.splitlines()[0]
+
+
+@pytest.mark.parametrize("texts, base, field, words", [
+    ({"static_ratio": "0.5"}, State(friction="static"), "static_ratio",
+     "static_ratio must be finite and >= 1"),
+    ({"rs_d_c": "0"}, State(friction="rate_state"), "rs_d_c", "rs_d_c must be finite and > 0"),
+    ({"rs_alpha_ld": "0.1", "rs_b": "0"}, State(friction="rate_state"), "rs_alpha_ld",
+     "needs rs_b > 0"),
+    ({"amplitude": "1.5", "rs_alpha_ld": "0.1"}, State(friction="rate_state"), "rs_alpha_ld",
+     "needs amplitude < 1"),
+    ({"beta": "inf"}, State(friction="rate_state", axis="V"), "beta", "a rigid contact"),
+    ({"mu_static": "0.1"}, State(mode="bench", friction="static"), "mu_static",
+     "mu_static must be >= mu0 (= 0.3"),
+    ({"friction_a": "0"}, State(mode="bench", friction="rate_state"), "friction_a",
+     "a must be finite and > 0"),
+    ({"friction_d_c_um": "-1"}, State(mode="bench", friction="rate_state"), "friction_d_c_um",
+     "d_c must be finite and > 0"),
+])
+def test_bad_law_input_gives_the_library_message_next_to_it(texts, base, field, words):
+    state, problems = read_inputs(texts, base)
+    assert state is None and list(problems) == [field]
+    assert words in problems[field]
+
+
+def test_the_pairs_of_laws_are_refused_under_the_selector():
+    from vibrofriction.explorer.messages import field_of
+
+    with pytest.raises(ValueError) as info:
+        vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.2, rs_a=0.01)
+    assert field_of(str(info.value)) == LAW
+
+
+def test_what_a_law_disables_is_what_its_solvers_refuse():
+    """Each input a law disables is refused by the library under it; the others are taken."""
+    assert LAW_DISABLED["coulomb"] == ()
+    for law in ("static", "rate_state"):
+        state = State(friction=law)
+        for name in ("eta_c", "a_y", "a_x"):
+            why = law_refusal(state, name, 0.5)
+            assert (name in LAW_DISABLED[law]) == bool(why), (law, name, why)
+    assert "the rate-and-state solver" in law_refusal(State(friction="rate_state"), "eta_c", 0.1)
+    assert "MDR solver" in law_taken(State(friction="rate_state", profile_exponent=2.0))
+    assert law_taken(State(friction="rate_state")) == ""
+
+
+def test_the_history_shows_the_local_coefficient():
+    h = compute.history(State(friction="static", static_ratio=1.5), 0.3)
+    f, n, mu = h["f"], h["n"], h["coefficient"]
+    contact = n > 0.0
+    np.testing.assert_array_equal(mu[contact], f[contact] / n[contact])
+    assert np.all(np.isnan(mu[~contact]))
+    assert h["static_ratio"] == 1.5
+    assert np.nanmax(np.abs(mu)) <= 1.5 * (1 + 1e-9)  # a stuck contact holds up to 1.5
+    assert np.nanmax(np.abs(mu)) > 1.0 + 1e-3  # above the kinetic coefficient
+    slipping = np.isin(h["phase"], ["slip+", "slip-"]) & contact
+    np.testing.assert_allclose(np.abs(mu[slipping]), 1.0, rtol=1e-9)  # slips at mu0 n
+
+
+def test_a_rate_and_state_point_says_it_has_no_history():
+    state = State(friction="rate_state", axis="V", **RS)
+    h = compute.history(state, 0.5)
+    assert h["t"] is None and "no time history" in h["message"] and "theta" in h["message"]
+    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, **RS), v_inertial=0.5)
+    assert h["mu_ratio"] == r.mu_ratio
+
+
+@pytest.mark.slow
+def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuses(
+        monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    ex = page.Explorer(State(eta_c=0.1))
+    assert not ex.inputs["rs_a"].layout.visible and not ex.law_note.visible
+    ex.law.value = "rate_state"
+    assert ex.state.friction == "rate_state" and ex.state.eta_c == 0.0
+    assert ex.inputs["rs_a"].layout.visible and not ex.inputs["static_ratio"].layout.visible
+    assert ex.rs_law.visible
+    assert ex.inputs["eta_c"].text.disabled and ex.inputs["a_y"].text.disabled
+    eta = ex.inputs["eta_c"].message.object
+    assert "eta_c reset from 0.1 to 0: not taken with rate-and-state friction" in eta
+    assert "does not take contact damping (eta_c &gt; 0)" in eta  # the library's, escaped
+    assert "at most 40 points" in ex.law_note.object
+    ex.inputs["rs_d_c"].text.value = "0"
+    assert "rs_d_c must be finite and > 0" in ex.inputs["rs_d_c"].message.object
+    assert ex.state.rs_d_c == State().rs_d_c  # the last good state stays
+    ex.inputs["rs_d_c"].text.value = "0.05"
+    assert ex.state.rs_d_c == 0.05 and not ex.inputs["rs_d_c"].message.visible
+    ex.law.value = "static"
+    assert not ex.inputs["eta_c"].text.disabled and ex.inputs["static_ratio"].layout.visible
+    ex.profile.value = "sphere"  # the MDR solver takes Coulomb friction only (its declaration)
+    assert ex.law.value == "coulomb" and ex.state.friction == "coulomb"
+    assert "static above kinetic reset to Coulomb: the MDR solver does not take it yet" in \
+        ex.law_note.object
+    ex.profile.value = "flat"
+    ex.mode.value = "bench"
+    ex.law.value = "rate_state"
+    assert ex.inputs["friction_d_c_um"].layout.visible and not ex.inputs["rs_d_c"].layout.visible
+    assert ex.inputs["bench_eta_c"].text.disabled
+    ex.inputs["friction_v_ref_mm_s"].text.value = "2"
+    assert ex.state.system().friction.v_ref == 2e-3
