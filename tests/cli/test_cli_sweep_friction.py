@@ -149,7 +149,9 @@ def test_a_static_ratio_atlas_from_the_command_line(capsys, tmp_path, monkeypatc
                    v_inertial=[0.15, 0.3], workers=1, progress=False)
     assert stored.mu_ratio.values.tobytes() == ref.mu_ratio.values.tobytes()
     assert stored.attrs["rs_law"] == "aging"
+    # below V_c = 0.29 (above it, undamped, stick-slip and sliding coexist: not converged)
     one = vf.friction_coefficient(vf.Dimensionless(0.1, 2.0, 0.5, static_ratio=1.5),
-                                  v_inertial=0.3)
-    assert float(stored.mu_ratio.sel(static_ratio=1.5, v_inertial=0.3)) == one.mu_ratio
+                                  v_inertial=0.15)
+    assert math.isfinite(one.mu_ratio)
+    assert float(stored.mu_ratio.sel(static_ratio=1.5, v_inertial=0.15)) == one.mu_ratio
     assert not math.isnan(one.mu_ratio)

@@ -75,7 +75,7 @@ def test_static_above_kinetic_changes_the_curve_as_the_library_does():
     r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, static_ratio=1.5), vbar=vbar)
     np.testing.assert_array_equal(c["y"], r.mu_ratio)
     coulomb = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5), vbar=vbar)
-    assert np.max(np.abs(c["y"] - coulomb.mu_ratio)) > 1e-3  # the law changes the curve
+    assert np.nanmax(np.abs(c["y"] - coulomb.mu_ratio)) > 1e-3  # the law changes the curve
     assert "static_ratio = 1.5" in c["rest_note"] and "v_inertial = 0" in c["rest_note"]
     assert math.isnan(c["static"]) and c["closed_forms"] == []  # eq. (2) is Coulomb's
     assert c["critical"] == 1.0  # continuous sliding sets in where Coulomb's does
