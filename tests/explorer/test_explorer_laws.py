@@ -203,9 +203,11 @@ def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuse
     assert ex.state.rs_d_c == 0.05 and not ex.inputs["rs_d_c"].message.visible
     ex.law.value = "static"
     assert not ex.inputs["eta_c"].text.disabled and ex.inputs["static_ratio"].layout.visible
-    ex.profile.value = "sphere"  # the MDR solver takes Coulomb friction only (its declaration)
+    ex.profile.value = "sphere"  # the MDR solver takes the static coefficient (its declaration)
+    assert ex.law.value == "static" and ex.state.friction == "static"
+    ex.law.value = "rate_state"  # ... and not rate-and-state friction: back to Coulomb
     assert ex.law.value == "coulomb" and ex.state.friction == "coulomb"
-    assert "static above kinetic reset to Coulomb: the MDR solver does not take it yet" in \
+    assert "rate-and-state reset to Coulomb: the MDR solver does not take it yet" in \
         ex.law_note.object
     ex.profile.value = "flat"
     ex.mode.value = "bench"
