@@ -110,7 +110,7 @@ RECORD, REPLAY = 1, 2  # modes of a period map's step log
 # accepted for one motion can be far too long for a neighbouring one
 REPLAY_ERROR = 10.0
 LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
-CUT_DELTA = 1e-13  # contact segments end where n = CUT_DELTA before lift-off (see doc)
+CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
 EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
 H_MAX = 0.25 * math.pi  # the longest step
 H_MIN = 1e-14  # a step below this (relative to 2 pi) has failed
