@@ -551,7 +551,7 @@ def _period(P, z, rtol, hbox, work, count, log, lp):
     if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp):
         return False
     # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
-    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-16)
+    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-12)
     z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
     return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
 
