@@ -24,7 +24,6 @@ from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import Status
 from .engine import Initial, _mirror_rows, solve_points
 from .methods.event import event_arguments
-from .methods.rate_state import refuse_rate_state
 from .results import FrictionResult, result_from_columns
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
@@ -236,11 +235,11 @@ def friction_gradient(
     if dim.profile_exponent != math.inf:
         raise ValueError(f"friction_gradient covers the flat punch only: profile_exponent "
                          f"must be inf, got {dim.profile_exponent!r}")
-    if dim.static_ratio != 1.0:
+    for name, coulomb in (("static_ratio", 1.0), ("rs_a", 0.0)):
         # the parameter differences of the period map (module doc) take Coulomb's law
-        raise ValueError(f"friction_gradient covers Coulomb friction only: static_ratio must "
-                         f"be 1, got {dim.static_ratio!r}")
-    refuse_rate_state(dim, "friction_gradient", "sensitivities")
+        if getattr(dim, name) != coulomb:
+            raise ValueError(f"friction_gradient covers Coulomb friction only: {name} must be "
+                             f"{coulomb:g}, got {getattr(dim, name)!r}")
     V = float(inertial_velocity(system, vbar, v_inertial=v_inertial, v0=v0))
     cols, sens = solve_gradients(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c,
                                  dim.a_x, dim.phase_x, inplane_on=dim.inplane_on,
