@@ -431,7 +431,7 @@ class FrictionResults:  # noqa: D101 (the docstring is __doc__ below, as Frictio
         >>> table = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5),
         ...                                 vbar=[0.3]).to_dataframe()
         >>> table.shape, list(table.columns[:4]), str(table.status.dtype)
-        ((1, 30), ['v_inertial', 'vbar', 'mu_ratio', 'status'], 'category')
+        ((1, 31), ['v_inertial', 'vbar', 'mu_ratio', 'status'], 'category')
         """
         return dataframe(self._columns(), self._dims(), self._attrs())
 
