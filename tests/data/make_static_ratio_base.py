@@ -62,7 +62,8 @@ def _hex(x: float) -> str:
 def run_point(p: dict) -> dict:
     kw = {k: v for k, v in p.items() if k not in ("initial", "inplane_on")}
     cols = solve_points(**kw, inplane_on=p["inplane_on"], initial=p["initial"])
-    batch = {k: _hex(cols[k]) for k in FLOAT_COLUMNS}
+    # sliding_mu_ratio came later (mu_ss(V)/mu0 of the point, 1 for Coulomb): not stored
+    batch = {k: _hex(cols[k]) for k in FLOAT_COLUMNS if k != "sliding_mu_ratio"}
     batch.update({k: int(cols[k]) for k in INT_COLUMNS})
     dim = vf.Dimensionless(p["alpha"], p["beta"], p["amplitude"], zeta=p["zeta"],
                            eta_c=p["eta_c"], a_x=p["a_x"], phase_x=p["phase_x"],

@@ -68,7 +68,9 @@ def _free_dimension(ph, M):
 
 @jit
 def _solve_small(m, r, nd):
-    """Solve ``m x = r`` for ``nd <= 3`` by Gaussian elimination with pivoting."""
+    """Solve ``m x = r`` (``nd`` unknowns, ``m``, ``r`` kept) by Gaussian elimination with
+    pivoting.
+    """
     m = m.copy()
     r = r.copy()
     for c in range(nd):

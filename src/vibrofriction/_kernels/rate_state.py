@@ -83,6 +83,7 @@ from .codes import (
 )
 from .integrate import to_lab_frame
 from .jit import jit
+from .newton import _solve_small
 from .phases import frame_offset, inplane_forcing
 
 __all__ = ["rs_period", "rs_steady_state", "rs_steady_state_many", "steady_mu"]
@@ -110,7 +111,7 @@ RECORD, REPLAY = 1, 2  # modes of a period map's step log
 # accepted for one motion can be far too long for a neighbouring one
 REPLAY_ERROR = 10.0
 LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
-CUT_DELTA = 1e-13  # contact segments end where n = CUT_DELTA before lift-off (see doc)
+CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
 EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
 H_MAX = 0.25 * math.pi  # the longest step
 H_MIN = 1e-14  # a step below this (relative to 2 pi) has failed
@@ -551,7 +552,7 @@ def _period(P, z, rtol, hbox, work, count, log, lp):
     if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp):
         return False
     # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
-    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-16)
+    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-12)
     z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
     return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
 
@@ -678,34 +679,6 @@ def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, log, lp, D, gmu):
 
 
 @jit
-def _solve(m, r):
-    """Solve ``m x = r`` in place (``x`` into ``r``) by Gaussian elimination with partial
-    pivoting; False where ``m`` is singular.
-    """
-    nd = r.shape[0]
-    for c in range(nd):
-        p = c
-        for i in range(c + 1, nd):
-            if abs(m[i, c]) > abs(m[p, c]):
-                p = i
-        if m[p, c] == 0.0:
-            return False
-        for j in range(nd):
-            m[c, j], m[p, j] = m[p, j], m[c, j]
-        r[c], r[p] = r[p], r[c]
-        for i in range(c + 1, nd):
-            g = m[i, c] / m[c, c]
-            for j in range(c, nd):
-                m[i, j] -= g * m[c, j]
-            r[i] -= g * r[c]
-    for i in range(nd - 1, -1, -1):
-        for j in range(i + 1, nd):
-            r[i] -= m[i, j] * r[j]
-        r[i] /= m[i, i]
-    return True
-
-
-@jit
 def _spectral_radius(D):
     ev = np.linalg.eigvals(D.astype(np.complex128))
     r = 0.0
@@ -718,12 +691,15 @@ def _spectral_radius(D):
 def _newton_step(D, z0, z1, dz):
     """The Newton step ``dz = -(D - I)^-1 (z1 - z0)``; False where singular."""
     Mx = np.empty((NM, NM))
+    rhs = np.empty(NM)
     for r in range(NM):
         for c in range(NM):
             Mx[r, c] = D[r, c]
         Mx[r, r] -= 1.0
-        dz[r] = -(z1[r] - z0[r])
-    return _solve(Mx, dz)
+        rhs[r] = -(z1[r] - z0[r])
+    x, ok = _solve_small(Mx, rhs, NM)
+    dz[:] = x
+    return ok
 
 
 @jit
