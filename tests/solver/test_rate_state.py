@@ -227,3 +227,15 @@ def test_histories_and_gradients_are_refused_not_coulomb() -> None:
         vf.simulate(_system(), v_inertial=0.5, periods=1)
     with pytest.raises(ValueError, match="friction_gradient .*rs_a"):
         friction_gradient(_system(), v_inertial=0.5)
+
+
+def test_unstable_steady_sliding_without_oscillation_is_never_periodic() -> None:
+    """Without oscillation, a periodic answer is steady sliding: only where theory's Hurwitz
+    conditions make it stable (a slow growth the finite-difference multiplier missed,
+    0.968 against exp(2 pi Re s) = 1.033 at V = 0.79, is not converged, not periodic)."""
+    V = np.array([0.3, 0.45, 0.6, 0.7924465962305569])
+    out = solve_points(0.2, 10.0, 0.0, V, rs_a=0.03, rs_b=0.05, rs_d_c=1.0, rs_v_ref=1.0)
+    stable = [theory.sliding_is_stable(0.2, 10.0, 0.0, v, 0.03, 0.05, 1.0, 1.0) for v in V]
+    assert stable[0] and not stable[-1]
+    for v, s, status in zip(V, stable, out["status"], strict=True):
+        assert (status == Status.PERIODIC.code) <= s, v

@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import NDArray
 
+from ... import theory
 from ..._kernels import codes
 from ..._kernels.rate_state import rs_steady_state_many
 from ...capabilities import CAPABILITIES, Refusal
@@ -45,9 +46,33 @@ class RateStateMethod:
         """
         out_f, out_i = new_outputs(len(points))
         rs_steady_state_many(points.values, *rate_state_arguments(settings), out_f, out_i)
+        _unforced_unstable(points, out_f, out_i)
         contact_columns(out_f, points["amplitude"], slice(None))
         out_i[:, codes.I_METHOD] = _CODE
         return out_f, out_i
+
+
+def _unforced_unstable(points: PointTable, out_f: NDArray[np.float64],
+                       out_i: NDArray[np.int64]) -> None:
+    """Never a periodic answer where steady sliding without oscillation is unstable.
+
+    Without any oscillation (``amplitude = a_x = 0``) the orbit Newton's method finds is
+    steady sliding, whose stability is known exactly (the Hurwitz conditions of
+    :func:`vibrofriction.theory.sliding_is_stable`).  The kernel's multiplier, from
+    finite differences of the period map, can miss a slow growth (measured: 0.968 where the
+    growth per period is 1.033); such a row is not converged (its ``mu_ratio`` the steady
+    sliding it sits on, its error ``inf``), not periodic.
+    """
+    rows = np.flatnonzero((points["amplitude"] == 0.0) & (points["a_x"] == 0.0)
+                          & (out_i[:, codes.I_STATUS] == codes.ST_PERIODIC))
+    for i in rows:
+        p = {k: float(points[k][i]) for k in ("alpha", "beta", "zeta", "v_inertial", "rs_a",
+                                              "rs_b", "rs_d_c", "rs_v_ref")}
+        if not theory.sliding_is_stable(p["alpha"], p["beta"], p["zeta"], p["v_inertial"],
+                                        p["rs_a"], p["rs_b"], p["rs_d_c"], p["rs_v_ref"]):
+            out_i[i, codes.I_STATUS] = codes.ST_NOT_CONVERGED
+            out_f[i, codes.O_ERR] = np.inf
+            out_i[i, codes.I_PERIOD] = 0
 
 
 def rate_state_arguments(settings: SolverSettings) -> tuple[float, int, float]:
