@@ -57,7 +57,7 @@ def test_mu_static_is_the_static_ratio() -> None:
     (dict(a=0.01, b=0.01, d_c=0.0, v_ref=1e-3), "d_c must be finite and > 0"),
     (dict(a=0.01, b=0.01, d_c=1e-6, v_ref=math.inf), "v_ref must be finite and > 0"),
     (dict(a=0.01, b=0.01, d_c=1e-6, v_ref=1e-3, law="ageing"),
-     "rs_law must be one of 'aging', 'slip'"),
+     "law must be one of 'aging', 'slip', got 'ageing'"),
     (dict(a=0.01, b=0.0, d_c=1e-6, v_ref=1e-3, alpha_ld=0.2), "alpha_ld = 0.2 > 0 needs b > 0"),
 ])
 def test_a_bad_law_is_refused_by_name(kwargs, message) -> None:

@@ -20,7 +20,7 @@ import math
 from dataclasses import dataclass
 
 from vibrofriction.schema import CHOICES, PARAMETER, POSITIVE
-from vibrofriction.validation import checked_choice, checked_number
+from vibrofriction.validation import checked_number
 
 __all__ = ["RateAndState"]
 
@@ -84,7 +84,9 @@ class RateAndState:
             # a > 0 here: the model's rs_a = 0 is Coulomb friction, not a law
             allowed = POSITIVE if name == "a" else PARAMETER[key].range
             object.__setattr__(self, name, checked_number(name, getattr(self, name), allowed))
-        checked_choice("rs_law", self.law)
+        if self.law not in CHOICES["rs_law"].values:
+            raise ValueError(f"law must be one of {', '.join(map(repr, CHOICES['rs_law'].values))}"
+                             f", got {self.law!r}")
         if self.alpha_ld > 0.0 and self.b == 0.0:
             raise ValueError(f"alpha_ld = {self.alpha_ld:g} > 0 needs b > 0 (the state's "
                              "response to the normal force is alpha_ld/b), got b = 0")
