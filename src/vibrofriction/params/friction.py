@@ -16,9 +16,9 @@ aging or the slip law, plus the Linker-Dieterich response to the normal force,
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
+from vibrofriction import theory
 from vibrofriction.schema import CHOICES, PARAMETER, POSITIVE
 from vibrofriction.validation import checked_number
 
@@ -97,12 +97,9 @@ class RateAndState:
         The coefficient of steady sliding at the slip velocity ``v`` (``theta = d_c/v``), in
         the units of ``a``, ``b`` and ``mu_star`` (``mu_star = 1``: the model's units).
         """
-        x = (mu_star + self.b * math.log(self.v_ref / v)) / self.a
-        # asinh(z) = ln(z + sqrt(z^2 + 1)) with z = (v/2v_ref) e^x, without overflow
-        lnz = math.log(v / (2.0 * self.v_ref)) + x
-        if lnz > 30.0:
-            return self.a * (lnz + math.log(2.0))
-        return self.a * math.asinh(math.exp(lnz))
+        # the model's law (theory.steady_mu_ratio) with a, b over mu_star: the one formula
+        return mu_star * float(theory.steady_mu_ratio(v, self.a / mu_star, self.b / mu_star,
+                                                      self.d_c, self.v_ref))
 
     def scaled(self, mu_star: float, F_N0: float, mass: float, omega: float) -> RateAndState:
         """The same law in the model's units, from SI (the one conversion).
