@@ -256,7 +256,7 @@ RATE_STATE = Capabilities(
              "lateral_ratio", "mean_normal_ratio", "open_area_fraction", "sliding_mu_ratio",
              "y", "x_dot", "f", "e", "phase"),
     sensitivities=False,
-    histories=False,
+    histories=True,
     velocities="V > 0; V < 0 by the mirror x -> -x; V = 0 refused (the contact creeps)",
     notes=("error: twice the change of the orbit's mean from rtol to rtol/20 plus the next "
            "Newton step's; averaged results: the last two windows' disagreement",),

@@ -11,7 +11,7 @@ and the commands that must not wait in the middle of their work (``reproduce``,
 The parts (:data:`PARTS`): ``flat`` (the flat punch's event-driven solver, every regime,
 damping and a longitudinal in-plane drive), ``plane`` (the 2-D solver of a transverse
 drive), ``curved`` (the MDR solver of a curved tip), ``rate_state`` (the rate-and-state
-solver), ``histories`` (the time histories of the event-driven, 2-D and MDR solvers) and
+solver), ``histories`` (the time histories of the event-driven, 2-D, MDR and rate-and-state solvers) and
 ``gradients`` (the parameter sensitivities the bench's fit uses).
 """
 
@@ -66,6 +66,8 @@ def _histories() -> None:
              samples_per_period=8)
     simulate(Dimensionless(0.5, 2.0, 0.5, profile_exponent=2.0), v_inertial=0.3, periods=1,
              samples_per_period=8, springs=64)
+    simulate(Dimensionless(0.5, 2.0, 1.5, rs_a=0.05, rs_b=0.03), v_inertial=0.3, periods=1,
+             samples_per_period=8)
 
 
 def _gradients() -> None:

@@ -47,7 +47,8 @@ def _energy(name: str, long_name: str) -> Field:
 
 
 #: Every sampled quantity of a history, in the order of the classes' fields (:class:`History`,
-#: then :class:`PlaneHistory`'s, then :class:`CurvedHistory`'s own), then its events'.
+#: then :class:`PlaneHistory`'s, then :class:`CurvedHistory`'s own, then
+#: :class:`RateStateHistory`'s), then its events'.
 HISTORY_FIELDS: tuple[Field, ...] = (
     _h("tau", "float", "1", "drive time, omega t (sample times include every event's, on "
        "both sides)", "tau"),
@@ -89,6 +90,11 @@ HISTORY_FIELDS: tuple[Field, ...] = (
     _area("slip_area_fraction", "in slip, either way"),
     _area("open_area_fraction", "out of contact"),
     _h("normal_impulse", "float", FORCE_UNIT, "integral of n over tau since tau = 0"),
+    # rate-and-state friction's (RateStateHistory; slip_velocity and impulse above)
+    _h("theta", "float", "1 / omega", "state variable of rate-and-state friction (a time; "
+       "theta/omega in seconds)", "theta"),
+    _h("local_mu", "float", "1", "local coefficient of friction f/n, over mu0 = mu_star "
+       "(nan in flight)", "mu/mu_star"),
     # the transitions (History.events), one entry each
     _h("event_tau", "float", "1", "drive time of each transition, omega t", "tau"),
     _h("event_kind", "str", "1", "kind of each transition (stick, slip, lift-off, "

@@ -11,7 +11,7 @@ only one that exists in cases III and IV) or, for a :class:`Physical` system, as
 Modules: :mod:`.settings` (accuracy bounds, what is trusted), :mod:`.results` (what is
 returned; its fields are :mod:`vibrofriction.schema`'s), :mod:`.engine` (the batch
 engine), :mod:`.history` (time histories: :func:`simulate`; their types :class:`History`,
-:class:`PlaneHistory`, :class:`CurvedHistory` in :mod:`.history_types`), :mod:`.energy`
+:class:`PlaneHistory`, :class:`CurvedHistory`, :class:`RateStateHistory` in :mod:`.history_types`), :mod:`.energy`
 (their energy balance) and
 :mod:`.sensitivity` (``d mu_ratio / d theta`` of the steady state: :func:`friction_gradient`,
 :func:`solve_gradients`).
@@ -20,7 +20,7 @@ engine), :mod:`.history` (time histories: :func:`simulate`; their types :class:`
 from .._kernels.codes import NO_PHASE, PHASE_NAMES
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, STATUS_BY_CODE, Status
 from .engine import friction_coefficient, solve_points
-from .history import CurvedHistory, Event, History, PlaneHistory, simulate
+from .history import CurvedHistory, Event, History, PlaneHistory, RateStateHistory, simulate
 from .results import (
     SLOW_SETTLING,
     FrictionResult,
@@ -46,6 +46,7 @@ __all__ = [
     "FrictionResults",
     "History",
     "PlaneHistory",
+    "RateStateHistory",
     "SectionState",
     "Sensitivities",
     "SolverSettings",

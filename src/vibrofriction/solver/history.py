@@ -17,17 +17,17 @@ from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, Status, column_index
 from .energy import dissipation, inplane_motion, kernel_point, transverse_motion
 from .engine import _MIRROR_PHASE, friction_coefficient, initial_rows
-from .history_types import CurvedHistory, Event, History, PlaneHistory
+from .history_types import CurvedHistory, Event, History, PlaneHistory, RateStateHistory
 from .mdr_history import SPRINGS, mdr_history
 from .methods.event import EVENT
 from .methods.mdr import MDR
 from .methods.plane import PLANE, plane_arguments, plane_held
-from .methods.rate_state import refuse_rate_state
 from .points import table_of
+from .rate_state_history import rate_state_history
 from .results import SectionState, section_state
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
-__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory", "simulate"]
+__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory", "RateStateHistory", "simulate"]
 
 
 def _checked_run(periods: float, samples_per_period: int) -> None:
@@ -108,6 +108,13 @@ def simulate(
     is ``"sliding"`` (the MDR solver's start) or ``"steady"`` (the row's periodic orbit);
     the refusals of the MDR solver apply (docs/contact_geometry.md).
 
+    Rate-and-state friction (``rs_a > 0``) is the rate-and-state solver's Rosenbrock
+    integration, its steps ending at each sample time (docs/friction_laws.md, "Time
+    histories"): a :class:`RateStateHistory`, with the state ``theta``, the local
+    coefficient ``local_mu`` and the slip velocity; ``initial`` is ``"sliding"`` (the
+    solver's start) or ``"steady"`` (with the steady state's ``theta``); the refusals of the
+    rate-and-state solver apply.
+
     Parameters
     ----------
     system : Dimensionless or Physical
@@ -126,7 +133,8 @@ def simulate(
         oscillation also a 2-D history's ``plane_state``.
     settings : SolverSettings or None, keyword-only
         The settings of the steady state that ``initial="steady"`` solves (a curved tip:
-        its row's orbit) and of the 2-D integration; None the defaults. A setting the
+        its row's orbit) and of the 2-D and rate-and-state integrations (``rtol``); None
+        the defaults. A setting the
         point's solver does not honour is refused, as by :func:`solve_points`.
     springs : int, keyword-only
         The springs of a curved tip's MDR row (ignored otherwise).
@@ -135,7 +143,8 @@ def simulate(
     -------
     History
         The 1-D solver's :class:`History`, a :class:`PlaneHistory` with a transverse
-        oscillation, or a :class:`CurvedHistory` for a curved tip.
+        oscillation, a :class:`CurvedHistory` for a curved tip, or a
+        :class:`RateStateHistory` with rate-and-state friction.
 
     Raises
     ------
@@ -168,7 +177,8 @@ def simulate(
         return mdr_history(dim, V, periods, samples_per_period, initial, springs, settings)
     if dim.a_y > 0.0:
         return _plane_history(dim, V, periods, samples_per_period, initial, settings)
-    refuse_rate_state(dim, "simulate", "time histories")
+    if dim.rs_a > 0.0:
+        return rate_state_history(dim, V, periods, samples_per_period, initial, settings)
     # a plane_state array as initial is for the 2-D run; initial_rows refuses it here
     # refused as by solve_points (the limits and the settings), whatever the start
     EVENT.capabilities.check(table_of(dim, V), 0, settings or DEFAULT_SETTINGS)

@@ -3,7 +3,8 @@
 :class:`History` holds what every history has (the 1-D solver's history is one);
 :class:`PlaneHistory` adds the transverse components of the 2-D solver (``a_y > 0``),
 :class:`CurvedHistory` the spring row of a curved tip (the method of dimensionality
-reduction).  Each field is filled by the solver that returns the class.  This module
+reduction), :class:`RateStateHistory` the state and the local coefficient of rate-and-state
+friction.  Each field is filled by the solver that returns the class.  This module
 imports neither :mod:`.history` nor :mod:`.mdr_history`: both build on it.
 """
 
@@ -36,7 +37,7 @@ if TYPE_CHECKING:
     import pandas as pd
     import xarray as xr
 
-__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory"]
+__all__ = ["CurvedHistory", "Event", "History", "PlaneHistory", "RateStateHistory"]
 
 
 @dataclass(frozen=True)
@@ -98,7 +99,8 @@ class History:
     is its springs').
 
     The 1-D solver returns this class; the 2-D solver a :class:`PlaneHistory`, a curved
-    tip a :class:`CurvedHistory`, each with the fields of its solver.
+    tip a :class:`CurvedHistory`, rate-and-state friction a :class:`RateStateHistory`, each
+    with the fields of its solver.
     """
 
     tau: NDArray[np.float64]
@@ -121,6 +123,11 @@ class History:
     def is_curved(self) -> bool:
         """Whether this is a curved tip's history (a :class:`CurvedHistory`)."""
         return isinstance(self, CurvedHistory)
+
+    @property
+    def is_rate_state(self) -> bool:
+        """Whether this is a rate-and-state history (a :class:`RateStateHistory`)."""
+        return isinstance(self, RateStateHistory)
 
     @property
     def is_plane(self) -> bool:
@@ -394,3 +401,38 @@ class CurvedHistory(History):
         d = self.system
         k = (d.beta - d.alpha) * 2.0 * float(self.xi[0])  # the row: sum f_i^2/(2 k dxi)
         return self._pin_energy() + 0.5 * np.sum(self.spring_f**2, axis=1) / k
+
+
+@dataclass(frozen=True, kw_only=True, repr=False)
+class RateStateHistory(History):
+    """A history with rate-and-state friction (``rs_a > 0``, the rate-and-state solver).
+
+    :class:`History` and the friction law's fields (docs/friction_laws.md, "Time
+    histories").  Integrated by the solver's Rosenbrock method (RODAS4, error control at
+    ``settings.rtol``), each step ending at the next sample time where it would pass it:
+    every sample is an integrated state, to the integrator's tolerance, not an interpolation.
+
+    ``theta`` the state variable (a time, unit ``1/omega``: ``theta/omega`` in seconds for a
+    :class:`~vibrofriction.Physical` system); ``local_mu`` the local coefficient ``f/n`` as a
+    fraction of ``mu_star`` (``mu0``: ``f`` and ``n`` are in ``mu_star F_N0``), nan in flight;
+    ``slip_velocity`` (shape ``(N, 2)``, the y component 0) the slip velocity ``w'`` of the
+    contact point relative to the substrate, nan in flight; ``impulse`` (shape ``(N, 2)``)
+    ``(int f, 0)`` since ``tau = 0`` (the integrator's quadrature).  The contact always slips:
+    ``phase`` is ``"slip+"`` or ``"slip-"`` by the sign of ``w'``, ``"flight"`` out of
+    contact; ``events`` are the lift-offs and touch-downs, at the phases where the
+    integrator cuts the contact (``n = 1e-9``, within ``1e-9/|n'|`` of ``cos tau =
+    -1/amplitude``), each on both sides.  ``dissipated_friction`` is ``int f w'`` and, without
+    an in-plane oscillation, ``dissipated_pin`` and ``work_input`` are the integrator's
+    quadratures too (``work_input = V (x' - x'(0) + int f)``, from the body's equation of
+    motion), exact to the tolerance; with one (``a_x > 0``) the pin's dissipation and the
+    work are the trapezoidal rule over the samples (second order in the sample spacing).
+    ``dissipated_contact`` is 0 (the contact is elastic).
+    """
+
+    theta: NDArray[np.float64]
+    local_mu: NDArray[np.float64]
+    slip_velocity: NDArray[np.float64]
+    impulse: NDArray[np.float64]
+
+    def _kind(self) -> str:
+        return "the rate-and-state solver"

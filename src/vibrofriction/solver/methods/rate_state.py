@@ -88,8 +88,8 @@ def rate_state_arguments(settings: SolverSettings) -> tuple[float, int, float]:
 def refuse_rate_state(system: Dimensionless, caller: str, what: str) -> None:
     """Refuse a rate-and-state ``system`` where the solver does not declare ``what``.
 
-    ``caller`` (``"simulate"``, ``"friction_gradient"``) would otherwise run the Coulomb
-    kernels on it.
+    ``caller`` (``"friction_gradient"``: the solver has no sensitivities) would otherwise run
+    the Coulomb kernels on it.
 
     Raises
     ------
