@@ -125,16 +125,19 @@ def _fields(cls):
 def test_no_history_field_is_none_for_its_solver():
     base = _fields(vf.History)
     plane, curved = _fields(vf.PlaneHistory), _fields(vf.CurvedHistory)
-    assert set(base) < set(plane) and set(base) < set(curved)
+    rate_state = _fields(vf.RateStateHistory)
+    assert set(base) < set(plane) and set(base) < set(curved) and set(base) < set(rate_state)
     assert not (set(plane) - set(base)) & (set(curved) - set(base)) - {"impulse"}
     # the only optional field: a curved tip has no section state
-    for fields in (base, plane, curved):
+    for fields in (base, plane, curved, rate_state):
         assert [n for n, f in fields.items() if f.default is None] == ["final_state"]
     histories = {
         vf.History: vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5), v_inertial=0.3, periods=0.5),
         vf.PlaneHistory: vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5, a_y=0.3),
                                      v_inertial=0.3, periods=0.5),
         vf.CurvedHistory: _curved(),
+        vf.RateStateHistory: vf.simulate(vf.Dimensionless(0.5, 2.0, 0.5, rs_a=0.01),
+                                         v_inertial=0.3, periods=0.5),
     }
     for cls, h in histories.items():
         assert type(h) is cls

@@ -218,13 +218,13 @@ def test_unlocked_response_is_averaged_with_an_honest_error() -> None:
     assert abs(rs_[0].mu_ratio - rs_[1].mu_ratio) <= rs_[0].error + rs_[1].error
 
 
-def test_histories_and_gradients_are_refused_not_coulomb() -> None:
-    """The rate-and-state solver declares no histories and no sensitivities: simulate and
-    friction_gradient refuse such a point by name instead of running the Coulomb kernels."""
-    assert not RATE_STATE.histories
+def test_gradients_are_refused_not_coulomb() -> None:
+    """The rate-and-state solver declares histories (tests/solver/test_rate_state_history.py)
+    and no sensitivities: friction_gradient refuses such a point by name instead of running
+    the Coulomb kernels."""
+    assert RATE_STATE.histories
     assert not RATE_STATE.sensitivities
-    with pytest.raises(ValueError, match="simulate .*rs_a = 0.01"):
-        vf.simulate(_system(), v_inertial=0.5, periods=1)
+    assert isinstance(vf.simulate(_system(), v_inertial=0.5, periods=1), vf.RateStateHistory)
     with pytest.raises(ValueError, match="friction_gradient .*rs_a"):
         friction_gradient(_system(), v_inertial=0.5)
 

@@ -23,6 +23,7 @@ from .rate_state import (
     CONTACT,
     FLIGHT,
     NZ,
+    P_A,
     Z_D,
     Z_F,
     Z_G,
@@ -62,15 +63,20 @@ def rs_cuts(p):
 def rs_start(p, steady, rtol, max_periods, tol_mean, out_f, out_i):
     """The state ``z`` at ``tau = 0`` (kernels' frame) of the point row ``p``, quadratures 0.
 
-    Steady sliding before the oscillation (:func:`.rate_state.sliding_start`); with
-    ``steady`` the last section state of :func:`.rate_state.rs_steady_state` from it (its
-    output rows into ``out_f``, ``out_i``).
+    Steady sliding at ``V`` before the oscillation (:func:`.rate_state.sliding_start`),
+    the oscillation switched on at ``tau = 0``: the spring's force ``f = mu_ss(V)`` is
+    continuous there, so the local coefficient starts at ``m = f/n(0) = mu_ss/(1 + A)``
+    (``sliding_start`` leaves ``m = mu_ss``, the force ``(1 + A) mu_ss``).  With ``steady``
+    the last section state of :func:`.rate_state.rs_steady_state` from the solver's own
+    start (its output rows into ``out_f``, ``out_i``).
     """
     P = point_parameters(p)
     offset = frame_offset(p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0)
     z = sliding_start(P, offset)
     if steady:
         rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i)
+    else:
+        z[Z_M] /= 1.0 + P[P_A]
     z[Z_F] = 0.0
     z[Z_D] = 0.0
     z[Z_G] = 0.0
