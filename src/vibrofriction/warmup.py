@@ -11,8 +11,8 @@ and the commands that must not wait in the middle of their work (``reproduce``,
 The parts (:data:`PARTS`): ``flat`` (the flat punch's event-driven solver, every regime,
 damping and a longitudinal in-plane drive), ``plane`` (the 2-D solver of a transverse
 drive), ``curved`` (the MDR solver of a curved tip), ``rate_state`` (the rate-and-state
-solver), ``histories`` (the time histories of the event-driven, 2-D, MDR and rate-and-state solvers) and
-``gradients`` (the parameter sensitivities the bench's fit uses).
+solver), ``histories`` (the time histories of the event-driven, 2-D, MDR and
+rate-and-state solvers) and ``gradients`` (the parameter sensitivities the bench's fit uses).
 """
 
 from __future__ import annotations

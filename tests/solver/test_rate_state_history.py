@@ -14,9 +14,9 @@ import math
 
 import numpy as np
 import pytest
-from history_checks import period_balance, section_rows
 
 import vibrofriction as vf
+from history_checks import period_balance, section_rows
 from vibrofriction.schema import Status
 from vibrofriction.solver import friction_gradient
 from vibrofriction_reference.friction_laws import rate_state_history as reference_history

@@ -104,8 +104,8 @@ def rs_history(p, z, seg_t, seg_mode, grid, rtol, out):
     (``CONTACT`` or ``FLIGHT``); where the mode changes, the contact unloads (``m = 0``) or
     re-forms (:func:`.rate_state._touchdown_mu`).  A row at each segment's two ends (a
     change of mode gives two rows at one time: before and after) and at each time of the
-    sorted ``grid`` inside a segment (times within ``NEAR`` of the last row's: none).  Returns the rows written, ``-1`` where a step
-    failed (the integrator's limits).
+    sorted ``grid`` inside a segment (times within ``NEAR`` of the last row's: none).
+    Returns the rows written, ``-1`` where a step failed (the integrator's limits).
     """
     P = point_parameters(p)
     scale = _scales(P)

@@ -11,8 +11,8 @@ only one that exists in cases III and IV) or, for a :class:`Physical` system, as
 Modules: :mod:`.settings` (accuracy bounds, what is trusted), :mod:`.results` (what is
 returned; its fields are :mod:`vibrofriction.schema`'s), :mod:`.engine` (the batch
 engine), :mod:`.history` (time histories: :func:`simulate`; their types :class:`History`,
-:class:`PlaneHistory`, :class:`CurvedHistory`, :class:`RateStateHistory` in :mod:`.history_types`), :mod:`.energy`
-(their energy balance) and
+:class:`PlaneHistory`, :class:`CurvedHistory`, :class:`RateStateHistory` in
+:mod:`.history_types`), :mod:`.energy` (their energy balance) and
 :mod:`.sensitivity` (``d mu_ratio / d theta`` of the steady state: :func:`friction_gradient`,
 :func:`solve_gradients`).
 """
