@@ -170,12 +170,49 @@ def test_the_history_shows_the_local_coefficient():
     np.testing.assert_allclose(np.abs(mu[slipping]), 1.0, rtol=1e-9)  # slips at mu0 n
 
 
-def test_a_rate_and_state_point_says_it_has_no_history():
+def test_a_rate_and_state_point_has_theta_and_the_local_coefficient():
+    """The history of a rate-and-state point is the library's (its steady state): the state
+    theta, the integrator's local coefficient, steady sliding's theta d_c/V and mu_ss/mu_star."""
     state = State(friction="rate_state", axis="V", **RS)
     h = compute.history(state, 0.5)
-    assert h["t"] is None and "no time history" in h["message"] and "theta" in h["message"]
-    r = vf.friction_coefficient(vf.Dimensionless(0.5, 2.0, 0.5, **RS), v_inertial=0.5)
+    system = vf.Dimensionless(0.5, 2.0, 0.5, **RS)
+    lib = vf.simulate(system, v_inertial=0.5, periods=3.0, initial="steady")
+    assert isinstance(lib, vf.RateStateHistory) and h["steady"]
+    np.testing.assert_array_equal(h["theta"], lib.theta)
+    np.testing.assert_array_equal(h["coefficient"], lib.local_mu)
+    assert h["theta_sliding"] == RS["rs_d_c"] / 0.5
+    assert h["sliding_mu_ratio"] == pytest.approx(
+        float(theory.steady_mu_ratio(0.5, RS["rs_a"], RS["rs_b"], RS["rs_d_c"],
+                                     RS["rs_v_ref"])), rel=1e-14)
+    r = vf.friction_coefficient(system, v_inertial=0.5)
     assert h["mu_ratio"] == r.mu_ratio
+    assert compute.history(State(), 0.5)["theta"] is None  # Coulomb: no state
+
+
+def test_the_history_panel_shows_theta_or_the_local_coefficient():
+    """The figure below the forces: the local coefficient (with steady sliding's level) or,
+    chosen, theta on a log scale (with d_c/V); a Coulomb history keeps its coefficient."""
+    pytest.importorskip("bokeh")
+    from vibrofriction.explorer.views import HistoryView
+
+    h = compute.history(State(friction="rate_state", axis="V", **RS), 0.5)
+    view = HistoryView()
+    view.show(h, "V = 0.5")
+    assert view.coefficient_figure.visible and not view.theta_figure.visible
+    np.testing.assert_array_equal(view.coefficient.data["mu"], h["coefficient"])
+    mu_ss = abs(h["sliding_mu_ratio"])
+    assert view.levels.data["y"] == [[mu_ss, mu_ss], [-mu_ss, -mu_ss]]
+    view.choose("theta")
+    assert view.theta_figure.visible and not view.coefficient_figure.visible
+    np.testing.assert_array_equal(view.theta.data["theta"], h["theta"])
+    assert view.theta_level.data["y"] == [0.04, 0.04]  # d_c/V = 0.02/0.5
+    assert view.theta_figure.y_range.start <= np.min(h["theta"])
+    assert view.theta_figure.y_range.end >= np.max(h["theta"])
+    view.show(compute.history(State(), 0.5), "V = 0.5")  # Coulomb: theta has no meaning
+    assert view.coefficient_figure.visible and not view.theta_figure.visible
+    assert view.levels.data["level"][0] == "kinetic +-1"
+    with pytest.raises(ValueError, match="quantity must be one of coefficient, theta"):
+        view.choose("slip")
 
 
 @pytest.mark.slow
@@ -216,3 +253,21 @@ def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuse
     assert ex.inputs["bench_eta_c"].text.disabled
     ex.inputs["friction_v_ref_mm_s"].text.value = "2"
     assert ex.state.system().friction.v_ref == 2e-3
+
+
+@pytest.mark.slow
+def test_the_page_offers_theta_for_a_rate_and_state_history(monkeypatch):
+    pn = pytest.importorskip("panel")
+    from vibrofriction.explorer import page
+
+    monkeypatch.setattr(pn.state, "execute", lambda cb, *a, **k: None)
+    state = State(friction="rate_state", axis="V", **RS)
+    ex = page.Explorer(state)
+    assert not ex.history_quantity.visible
+    ex._show_history(state, compute.history(state, 0.5))
+    assert ex.history_quantity.visible and ex.history_view.coefficient_figure.visible
+    ex.history_quantity.value = "theta"
+    assert ex.history_view.theta_figure.visible
+    assert not ex.history_view.coefficient_figure.visible
+    ex._show_history(State(), compute.history(State(), 0.5))  # Coulomb: no choice
+    assert not ex.history_quantity.visible and not ex.history_view.theta_figure.visible

@@ -292,7 +292,10 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     Forces, phases, events; the steady state where the solver trusts it, else the motion from steady
     sliding. With an in-plane oscillation (``a_x > 0`` or ``a_y > 0``) also the contact point's
     position on the substrate (``History.contact_point``): ``xc`` and, in 2-D, ``yc`` and the
-    transverse force ``f_y`` (None otherwise). A curved tip: :func:`mdr_history`.
+    transverse force ``f_y`` (None otherwise). With rate-and-state friction also the state
+    ``theta`` (unit ``1/omega``), its steady-sliding value ``d_c/|V|`` and the local coefficient
+    of steady sliding ``mu_ss(V)/mu_star`` (``sliding_mu_ratio``); None otherwise. A curved tip:
+    :func:`mdr_history`.
     """
     if state.curved:
         return mdr_history(state, x)
@@ -304,7 +307,7 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
         return {"t": None, "x": float(x), "mu_ratio": float(r.mu_ratio),
                 "status": r.status.value, "trusted": bool(r.trusted),
                 "message": f"{solver.title} gives no time history yet (vf.simulate does not "
-                           "cover it): no forces, no local coefficient, no theta"}
+                           "cover it)"}
     try:
         h = vf.simulate(system, **kw, periods=periods, initial="steady")
         steady = True
@@ -321,7 +324,13 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     f_y = h.f_y if isinstance(h, vf.PlaneHistory) else None  # 2-D only, as yc
     with np.errstate(divide="ignore", invalid="ignore"):  # no coefficient in flight
         coefficient = np.where(h.n > 0.0, h.f / h.n, np.nan)
+    rs = isinstance(h, vf.RateStateHistory)
+    if rs:  # the integrator's own local coefficient (nan in flight)
+        coefficient = h.local_mu
     return {
+        "theta": h.theta if rs else None,
+        "theta_sliding": h.system.rs_d_c / abs(h.v_inertial) if rs else None,
+        "sliding_mu_ratio": float(r.sliding_mu_ratio),
         "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": f_y,
         "coefficient": coefficient,
         "static_ratio": h.system.static_ratio,

@@ -61,7 +61,7 @@ from .texts import (
     vbar_refusal,
     with_more,
 )
-from .views import CurveView, HistoryView, MapView, SpaceTimeView
+from .views import LOCAL_QUANTITIES, CurveView, HistoryView, MapView, SpaceTimeView
 from .widgets import ERROR_STYLE, NOTE_STYLE, Input
 
 __all__ = ["Explorer", "app", "curved_side_text", "point_text", "readout_text", "status_text"]
@@ -158,6 +158,12 @@ class Explorer:
         self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
         self.history_text = pn.pane.Markdown("click a point of the curve for its history",
                                              css_classes=["vf-history"])
+        # what the figure below the forces shows of a rate-and-state history
+        self.history_quantity = pn.widgets.RadioButtonGroup(
+            options={v: k for k, v in LOCAL_QUANTITIES.items()}, value="coefficient",
+            width=330, visible=False, css_classes=["vf-history-quantity"])
+        self.history_quantity.param.watch(
+            lambda e: self.history_view.choose(e.new), "value")
         self.case_text = pn.pane.HTML("", width=330, css_classes=["vf-case"])
 
     def _build_views(self) -> None:
@@ -213,7 +219,9 @@ class Explorer:
         """
         return pn.Column(self.curve_pane,
                          pn.Row(pn.Column(self.history_view.figure,
+                                          self.history_quantity,
                                           self.history_view.coefficient_figure,
+                                          self.history_view.theta_figure,
                                           self.history_view.path_figure,
                                           self.spacetime_view.figure, self.history_text,
                                           sizing_mode="stretch_width"),
@@ -576,6 +584,7 @@ class Explorer:
 
     def _show_history(self, state: State, h: dict) -> None:
         where = f"{state.axis} = {h['x']:.4g}"
+        self.history_quantity.visible = h.get("theta") is not None  # rate-and-state's
         if h.get("curved"):
             self._show_mdr_history(where, h)
             return
@@ -608,6 +617,7 @@ class Explorer:
         self.history_view.figure.visible = forces
         self.history_view.path_figure.visible = False
         self.history_view.coefficient_figure.visible = False
+        self.history_view.theta_figure.visible = False
         if forces:  # the curve's mu/mu0 at the point (the solver's, not the row's estimate)
             self.history_view.show({**h, "mu_ratio": self._point_y}, where)
         self.spacetime_view.show(h, where)

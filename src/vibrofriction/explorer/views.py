@@ -218,12 +218,19 @@ _PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
 _HISTORY_COLORS = {**PHASE_COLORS, PARTIAL: "#dadaeb"}
 
 
+#: What the second figure of a rate-and-state history shows (:meth:`HistoryView.choose`).
+LOCAL_QUANTITIES = {"coefficient": "local coefficient f/n", "theta": "state theta"}
+
+
 class HistoryView:
     """A point's time history.
 
-    Forces, the phases shaded, the events marked; with an in-plane oscillation a second figure
-    (``path_figure``, hidden otherwise) shows the contact point on the substrate: ``x_c`` against
-    time (1-D) or its path ``(x_c, y_c)`` in the plane (2-D), coloured by phase.
+    Forces, the phases shaded, the events marked; the local coefficient ``f/n`` below
+    (``coefficient_figure``), or with rate-and-state friction the state ``theta`` instead
+    (``theta_figure``, log scale) where :meth:`choose` says so; with an in-plane oscillation
+    a further figure (``path_figure``, hidden otherwise) shows the contact point on the
+    substrate: ``x_c`` against time (1-D) or its path ``(x_c, y_c)`` in the plane (2-D),
+    coloured by phase.
     """
 
     def __init__(self) -> None:
@@ -269,6 +276,24 @@ class HistoryView:
         local.legend.background_fill_alpha = 0.7
         local.visible = False
         self.coefficient_figure = local
+        self.theta = _empty(t=1, theta=1)
+        self.theta_level = _empty(t=1, y=1)
+        state = figure(height=220, sizing_mode="stretch_width", tools=_TOOLS,
+                       title="state theta", toolbar_location=TOOLBAR, y_axis_type="log",
+                       x_axis_label="t/T (drive periods)", y_axis_label="theta (1/omega)",
+                       x_range=fig.x_range, y_range=Range1d(1e-3, 1.0),
+                       css_classes=["vf-theta"])
+        state.line("t", "theta", source=self.theta, color="#6a3d9a", line_width=2,
+                   legend_label="theta (ages in flight)")
+        state.line("t", "y", source=self.theta_level, color="#d62728", line_dash="dashed",
+                   legend_label="steady sliding d_c/V")
+        state.legend.location = "bottom_right"
+        state.legend.label_text_font_size = "8pt"
+        state.legend.background_fill_alpha = 0.7
+        state.visible = False
+        self.theta_figure = state
+        self.quantity = "coefficient"
+        self._last: tuple[dict, str] | None = None
         path = figure(height=300, sizing_mode="stretch_width", tools=_TOOLS,
                       title="contact point on the substrate", toolbar_location=TOOLBAR,
                       x_axis_label="t/T (drive periods)", y_axis_label="x_c")
@@ -284,14 +309,57 @@ class HistoryView:
 
     def hide(self) -> None:
         """Hide the history's figures (a point without a history)."""
-        for fig in (self.figure, self.coefficient_figure, self.path_figure):
+        for fig in (self.figure, self.coefficient_figure, self.theta_figure, self.path_figure):
             fig.visible = False
+
+    def choose(self, quantity: str) -> None:
+        """Show ``quantity`` (a key of :data:`LOCAL_QUANTITIES`) below the forces.
+
+        ``"theta"`` applies to a rate-and-state history (the others have no state: their
+        coefficient stays); the history shown is redrawn.
+        """
+        if quantity not in LOCAL_QUANTITIES:
+            raise ValueError(f"quantity must be one of {', '.join(LOCAL_QUANTITIES)}, "
+                             f"got {quantity!r}")
+        self.quantity = quantity
+        if self._last is not None:
+            self._show_local(*self._last)
+
+    def _show_local(self, h: dict, where: str) -> None:
+        """The local coefficient or, chosen and given, the state theta."""
+        theta = h.get("theta")
+        if theta is not None and self.quantity == "theta":
+            self._show_coefficient({"coefficient": None}, where)
+            self._show_theta(h, where)
+        else:
+            self._show_theta({"theta": None}, where)
+            self._show_coefficient(h, where)
+
+    def _show_theta(self, h: dict, where: str) -> None:
+        """The state ``theta`` against time (log scale), with its steady-sliding value."""
+        theta = h.get("theta")
+        fig = self.theta_figure
+        if theta is None:
+            self.theta.data = {"t": [], "theta": []}
+            self.theta_level.data = {"t": [], "y": []}
+            fig.visible = False
+            return
+        t0, t1 = float(h["t"][0]), float(h["t"][-1])
+        level = float(h["theta_sliding"])
+        self.theta.data = {"t": h["t"], "theta": theta}
+        self.theta_level.data = {"t": [t0, t1], "y": [level, level]}
+        lo = min(float(np.min(theta)), level)
+        hi = max(float(np.max(theta)), level)
+        _set_range(fig.y_range, lo / 1.5, hi * 1.5)
+        fig.title.text = f"state theta at {where} (unit 1/omega)"
+        fig.visible = True
 
     def _show_coefficient(self, h: dict, where: str) -> None:
         """The local coefficient ``f/n`` against time, with the law's limits.
 
         Kinetic ``+-1`` and, for a static coefficient above the kinetic one, ``+-static_ratio``;
-        hidden where the history has no coefficient (a curved tip's).
+        with rate-and-state friction the coefficient of steady sliding at the velocity,
+        ``+-mu_ss(V)/mu_star``; hidden where the history has no coefficient (a curved tip's).
         """
         mu = h.get("coefficient")
         fig = self.coefficient_figure
@@ -303,6 +371,9 @@ class HistoryView:
         t0, t1 = float(h["t"][0]), float(h["t"][-1])
         s_r = float(h.get("static_ratio", 1.0))
         levels = [("kinetic +-1", 1.0)] + ([(f"static +-{s_r:g}", s_r)] if s_r > 1.0 else [])
+        if h.get("theta") is not None:  # rate-and-state: steady sliding's at this velocity
+            mu_ss = abs(float(h["sliding_mu_ratio"]))
+            levels = [(f"steady sliding +-{mu_ss:.4g}", mu_ss)]
         self.coefficient.data = {"t": h["t"], "mu": mu}
         self.levels.data = {"t": [[t0, t1]] * 2 * len(levels),
                             "y": [[sign * v] * 2 for _, v in levels for sign in (1, -1)],
@@ -318,7 +389,8 @@ class HistoryView:
         """Draw the history ``h`` at the velocity ``where``."""
         t, f, n = h["t"], h["f"], h["n"]
         self.lines.data = {"t": t, "f": f, "n": n}
-        self._show_coefficient(h, where)
+        self._last = (h, where)
+        self._show_local(h, where)
         f_y = h.get("f_y")
         self.lateral.data = {"t": t if f_y is not None else [],
                              "f_y": f_y if f_y is not None else []}
