@@ -324,12 +324,12 @@ def history(state: State, x: float, periods: float = 3.0) -> dict:
     f_y = h.f_y if isinstance(h, vf.PlaneHistory) else None  # 2-D only, as yc
     with np.errstate(divide="ignore", invalid="ignore"):  # no coefficient in flight
         coefficient = np.where(h.n > 0.0, h.f / h.n, np.nan)
-    rs = isinstance(h, vf.RateStateHistory)
-    if rs:  # the integrator's own local coefficient (nan in flight)
-        coefficient = h.local_mu
+    rs = h if isinstance(h, vf.RateStateHistory) else None
+    if rs is not None:  # the integrator's own local coefficient (nan in flight)
+        coefficient = rs.local_mu
     return {
-        "theta": h.theta if rs else None,
-        "theta_sliding": h.system.rs_d_c / abs(h.v_inertial) if rs else None,
+        "theta": None if rs is None else rs.theta,
+        "theta_sliding": None if rs is None else rs.system.rs_d_c / abs(rs.v_inertial),
         "sliding_mu_ratio": float(r.sliding_mu_ratio),
         "t": t, "f": h.f, "n": h.n, "x_dot": h.x_dot, "f_y": f_y,
         "coefficient": coefficient,
