@@ -14,8 +14,8 @@ velocity of continuous sliding, a point's history and its contact in space and t
 the axis; the mount's note under its toggle) and the friction laws: ``explorer_static.png``
 (static above kinetic, a point's history with the local coefficient f/n) and
 ``explorer_rate_state.png`` (rate-and-state friction: eta_c reset and disabled with its
-solver's refusal, the curve with steady sliding without oscillation, the point without a
-history, said).
+solver's refusal, the curve with steady sliding without oscillation, a point's history with
+the state theta chosen under the forces).
 
 Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
       mdr axis static rate_state]
@@ -129,7 +129,8 @@ def main(which: list[str]) -> None:
                 page.set_default_timeout(180_000)
                 page.goto(url + "?friction=rate_state&eta_c=0.1")
                 page.get_by_text(READOUT).wait_for()
-                page.get_by_text(re.compile("point at vbar = ")).wait_for()
+                page.get_by_text(re.compile("history at vbar = ")).wait_for()
+                page.get_by_role("button", name="state theta").click()
                 time.sleep(1.5)
                 shoot(page, "rate_state")
             if "map" in which:

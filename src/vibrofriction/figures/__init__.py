@@ -3,7 +3,8 @@
 One module per figure family; each exposes *recipes* (:class:`~.recipe.Recipe`):
 the solver series a figure needs and how to draw, table and check them.
 
-* :mod:`.history`: Fig. 2, forces over time in a stick-slip steady state;
+* :mod:`.history`: Fig. 2, forces over time in a stick-slip steady state, and any
+  history's forces, local coefficient and rate-and-state state (:func:`plot_history`);
 * :mod:`.velocity`: Figs. 3, 4, 5, 7, ``mu/mu0`` against ``vbar``;
 * :mod:`.resonant`: Fig. 6 (case IV) and the prediction for Figs. 8-9;
 * :mod:`.dimensional`: Fig. 10, COF against ``v0`` in m/s;
@@ -59,6 +60,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..bench import DesignResult, FitResult
+    from ..solver import History
 
 __all__ = [
     "Check",
@@ -73,6 +75,7 @@ __all__ = [
     "plot_atlas",
     "plot_design",
     "plot_fit",
+    "plot_history",
     "plot_profiles",
     "solve",
     "solve_recipes",
@@ -162,6 +165,37 @@ def plot_atlas(source: xr.Dataset | str | os.PathLike, **kwargs: Any):
     from .atlas import plot_atlas as _plot
 
     return _plot(source, **kwargs)
+
+
+def plot_history(h: History) -> Figure:
+    """A time history of :func:`vibrofriction.simulate`: forces, local coefficient, theta.
+
+    The normal and tangential forces with the contact's phases shaded and its events
+    marked, the local coefficient ``f/n`` below with the law's levels and, for
+    rate-and-state friction (a :class:`~vibrofriction.RateStateHistory`), the state
+    ``theta`` on a log scale with its steady-sliding value ``d_c/|V|``.
+
+    Parameters
+    ----------
+    h : vibrofriction.History
+        What :func:`vibrofriction.simulate` returned.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+
+    Examples
+    --------
+    >>> import vibrofriction as vf
+    >>> from vibrofriction.figures import plot_history
+    >>> system = vf.Dimensionless(0.5, 2.0, 1.3, rs_a=0.03, rs_b=0.01, rs_d_c=0.02,
+    ...                           rs_v_ref=0.2)
+    >>> h = vf.simulate(system, v_inertial=0.5, periods=2, initial="steady")
+    >>> len(plot_history(h).axes)
+    3
+    """
+    return history.plot_history(h)
 
 
 def plot_fit(result: FitResult) -> Figure:

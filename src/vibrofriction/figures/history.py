@@ -3,6 +3,9 @@
 During slip the tangential force equals ``mu0 F_N``; during stick it is smaller.
 Stick begins when the velocity of the contact point vanishes (``t1``) and ends
 when the tangential force reaches ``mu0 F_N`` (``t2``) (paper, Section 3).
+
+:func:`plot_history` draws any :func:`~vibrofriction.simulate` history the same way, with
+the local coefficient below and, for rate-and-state friction, the state ``theta``.
 """
 
 from __future__ import annotations
@@ -14,13 +17,13 @@ import numpy as np
 
 from ..params import Dimensionless
 from ..schema import ContactState
-from ..solver import simulate
+from ..solver import History, RateStateHistory, simulate
 from . import style
 from .checks import history_mu_ratio, history_note, history_transitions
 from .recipe import Recipe, Rendered, Table
 from .series import Curve
 
-__all__ = ["FIG2_POINT", "fig2"]
+__all__ = ["FIG2_POINT", "fig2", "plot_history"]
 
 #: The stick-slip point shown: ``(alpha, beta, a, vbar)`` -- a general (not limiting)
 #: system whose steady state has one stick and one slip phase per period.
@@ -112,3 +115,66 @@ def fig2() -> Recipe:
         series=(),
         render=_render,
     )
+
+
+def plot_history(h: History):
+    """A history's forces, its local coefficient and, with rate-and-state friction, ``theta``.
+
+    Top: ``n`` and ``f`` (units ``mu0 F_N0``), stick, reverse slip and flight shaded, the
+    events marked. Below: the local coefficient ``f/n`` (over ``mu0``; none in flight), with
+    the kinetic ``+-1`` (and ``+-static_ratio``) or, for rate-and-state friction, steady
+    sliding's ``+-mu_ss(V)/mu_star`` dashed. A :class:`~vibrofriction.RateStateHistory` adds
+    ``theta`` on a log scale, with steady sliding's ``d_c/|V|`` dashed.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from ..theory import steady_mu_ratio
+
+    rs = h if isinstance(h, RateStateHistory) else None
+    d = h.system
+    t = h.tau / (2.0 * math.pi)
+    panels = 3 if rs is not None else 2
+    fig = style.figure(style.COLUMN, 1.25 * panels + 0.6)
+    axes = fig.subplots(panels, 1, sharex=True)
+    ax = axes[0]
+    _shade_phases(ax, t, h.phase)
+    ax.axhline(0.0, color="0.5", lw=0.4)
+    ax.plot(t, h.n, color="#1f77b4", lw=1.2, label=r"$n = F_N/F_{N,0}$")
+    ax.plot(t, h.f, color="#2ca02c", lw=1.1, label=r"$f = F_x/(\mu_0 F_{N,0})$")
+    for e in h.events:
+        ax.axvline(e.tau / (2.0 * math.pi), color="0.3", lw=0.4, ls=":")
+    ax.set_ylabel(r"force / $\mu_0 F_{N,0}$")
+    ax.legend(fontsize=6, loc="upper right", ncol=2)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        mu = rs.local_mu if rs is not None else np.where(h.n > 0.0, h.f / h.n, np.nan)
+    ax = axes[1]
+    ax.plot(t, mu, color="#1f77b4", lw=1.1)
+    if rs is not None:
+        level = abs(float(steady_mu_ratio(abs(h.v_inertial), d.rs_a, d.rs_b, d.rs_d_c,
+                                          d.rs_v_ref)))
+        label = rf"steady sliding $\pm{level:.4g}$"
+    else:
+        level, label = d.static_ratio, r"$\pm\mu_s/\mu_0$" if d.static_ratio > 1.0 \
+            else r"kinetic $\pm 1$"
+    for sign in (1.0, -1.0):
+        ax.axhline(sign * level, color="#d62728", lw=0.8, ls="--",
+                   label=label if sign > 0 else None)
+    ax.set_ylabel(r"$f/n$ (over $\mu_0$)")
+    ax.legend(fontsize=6, loc="lower right")
+    if rs is not None:
+        ax = axes[2]
+        ax.semilogy(t, rs.theta, color="#6a3d9a", lw=1.1)
+        ax.axhline(d.rs_d_c / abs(h.v_inertial), color="#d62728", lw=0.8, ls="--",
+                   label=r"steady sliding $d_c/V$")
+        ax.set_ylabel(r"$\theta$ ($1/\omega$)")
+        ax.legend(fontsize=6, loc="lower right")
+    axes[-1].set_xlabel(r"time $\omega t/2\pi$ (drive periods)")
+    axes[-1].set_xlim(float(t[0]), float(t[-1]))
+    law = (f"\nrate-and-state ({d.rs_law} law): a={d.rs_a:g}, b={d.rs_b:g}, d_c={d.rs_d_c:g}, "
+           f"v_ref={d.rs_v_ref:g}" if rs is not None else
+           f", static_ratio={d.static_ratio:g}" if d.static_ratio > 1.0 else "")
+    axes[0].set_title(f"alpha={d.alpha:g}, beta={d.beta:g}, amplitude={d.amplitude:g}, "
+                      f"V={h.v_inertial:g}{law}", fontsize=6, pad=3)
+    return fig
