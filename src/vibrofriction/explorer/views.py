@@ -218,6 +218,24 @@ _PATH_COLORS = {"stick": "#2171b5", "slip+": "#e6550d", "slip-": "#a50f15",
 _HISTORY_COLORS = {**PHASE_COLORS, PARTIAL: "#dadaeb"}
 
 
+def _below(fig, title: str, y_label: str, y_range: tuple[float, float], css: str, **kw):
+    """A hidden figure under the history's ``fig``, on its time axis."""
+    out = figure(height=220, sizing_mode="stretch_width", tools=_TOOLS, title=title,
+                 toolbar_location=TOOLBAR, x_axis_label="t/T (drive periods)",
+                 y_axis_label=y_label, x_range=fig.x_range, y_range=Range1d(*y_range),
+                 css_classes=[css], **kw)
+    out.visible = False
+    return out
+
+
+def _legend_small(fig):
+    """``fig`` with its legend small, bottom right, see-through; returned."""
+    fig.legend.location = "bottom_right"
+    fig.legend.label_text_font_size = "8pt"
+    fig.legend.background_fill_alpha = 0.7
+    return fig
+
+
 #: What the second figure of a rate-and-state history shows (:meth:`HistoryView.choose`).
 LOCAL_QUANTITIES = {"coefficient": "local coefficient f/n", "theta": "state theta"}
 
@@ -262,36 +280,22 @@ class HistoryView:
         self.figure = fig
         self.coefficient = _empty(t=1, mu=1)
         self.levels = _empty(t=1, y=1, level=1)
-        local = figure(height=220, sizing_mode="stretch_width", tools=_TOOLS,
-                       title="local coefficient f/n", toolbar_location=TOOLBAR,
-                       x_axis_label="t/T (drive periods)", y_axis_label="f/n (over mu0)",
-                       x_range=fig.x_range, y_range=Range1d(-1.5, 1.5),
-                       css_classes=["vf-coefficient"])
+        local = _below(fig, "local coefficient f/n", "f/n (over mu0)", (-1.5, 1.5),
+                       "vf-coefficient")
         local.line("t", "mu", source=self.coefficient, color="#1f77b4", line_width=2,
                    legend_label="f/n (none in flight)")
         local.multi_line("t", "y", source=self.levels, color="#d62728", line_dash="dashed",
                          legend_field="level")
-        local.legend.location = "bottom_right"
-        local.legend.label_text_font_size = "8pt"
-        local.legend.background_fill_alpha = 0.7
-        local.visible = False
-        self.coefficient_figure = local
+        self.coefficient_figure = _legend_small(local)
         self.theta = _empty(t=1, theta=1)
         self.theta_level = _empty(t=1, y=1)
-        state = figure(height=220, sizing_mode="stretch_width", tools=_TOOLS,
-                       title="state theta", toolbar_location=TOOLBAR, y_axis_type="log",
-                       x_axis_label="t/T (drive periods)", y_axis_label="theta (1/omega)",
-                       x_range=fig.x_range, y_range=Range1d(1e-3, 1.0),
-                       css_classes=["vf-theta"])
+        state = _below(fig, "state theta", "theta (1/omega)", (1e-3, 1.0), "vf-theta",
+                       y_axis_type="log")
         state.line("t", "theta", source=self.theta, color="#6a3d9a", line_width=2,
                    legend_label="theta (ages in flight)")
         state.line("t", "y", source=self.theta_level, color="#d62728", line_dash="dashed",
                    legend_label="steady sliding d_c/V")
-        state.legend.location = "bottom_right"
-        state.legend.label_text_font_size = "8pt"
-        state.legend.background_fill_alpha = 0.7
-        state.visible = False
-        self.theta_figure = state
+        self.theta_figure = _legend_small(state)
         self.quantity = "coefficient"
         self._last: tuple[dict, str] | None = None
         path = figure(height=300, sizing_mode="stretch_width", tools=_TOOLS,
