@@ -472,3 +472,15 @@ def test_static_above_kinetic_and_its_ratio_change_the_curve(page, server):
                                 r"value")).wait_for()
     page.get_by_text(re.compile(r"history at vbar = ")).wait_for()
     page.locator(".vf-coefficient").first.wait_for()  # the local coefficient f/n
+
+
+def test_rate_and_state_history_shows_theta_when_chosen(page, server):
+    """Under rate-and-state friction a point's history has a choice: the local coefficient
+    (shown first) or the state theta; choosing theta shows its figure and hides f/n."""
+    _open(page, server + "?friction=rate_state")
+    page.get_by_text(re.compile(r"history at vbar = ")).wait_for()
+    page.locator(".vf-coefficient").first.wait_for()
+    assert page.locator(".vf-theta").first.is_hidden()
+    page.get_by_role("button", name="state theta").click()
+    page.locator(".vf-theta").first.wait_for()
+    page.locator(".vf-coefficient").first.wait_for(state="hidden")
