@@ -149,13 +149,12 @@ C61, C62, C63 = 8.083246795921522, -7.981132988064893, -31.52159432874371
 C64, C65 = 16.31930543123136, -6.058818238834054
 CC2, CC3, CC4 = 0.386, 0.21, 0.63
 D1, D2, D3, D4 = 0.25, -0.1043, 0.1035, -0.0362
-# the tableau as the steps use it: stage i's point z + sum_l RA[i, l] K[l], its time
-# tau + RC[i] h, its right-hand side f + h RD[i] f_t + sum_l RCC[i, l] K[l]/h (the last
-# stage's point is the embedded solution, the solution that plus K[5])
+# the tableau as the tangent's stages use it (:func:`_tangent_stage`): stage i's point
+# T + sum_l RA[i, l] KT[l], its right-hand side f + h RD[i] f_t + sum_l RCC[i, l] KT[l]/h
+# (the last stage's point is the embedded solution, the solution that plus KT[5])
 RA = np.array([[0.0, 0.0, 0.0, 0.0, 0.0], [A21, 0.0, 0.0, 0.0, 0.0],
                [A31, A32, 0.0, 0.0, 0.0], [A41, A42, A43, 0.0, 0.0],
                [A51, A52, A53, A54, 0.0], [A51, A52, A53, A54, 1.0]])
-RC = np.array([0.0, CC2, CC3, CC4, 1.0, 1.0])
 RD = np.array([D1, D2, D3, D4, 0.0, 0.0])
 RCC = np.array([[0.0, 0.0, 0.0, 0.0, 0.0], [C21, 0.0, 0.0, 0.0, 0.0],
                 [C31, C32, 0.0, 0.0, 0.0], [C41, C42, C43, 0.0, 0.0],
@@ -391,19 +390,22 @@ def _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i):
 
 
 @jit
-def _curvature(P, tau, z, mode, cv, Jt):
+def _curvature(P, tau, z, mode, tw):
     """What the tangent's stages need at the step's start ``(tau, z)``: the coefficients
-    ``cv`` of the second derivatives of the right-hand side (:func:`_hessian`) and the
-    time derivative ``Jt`` of the Jacobian at fixed ``z`` (rows ``Z_Y .. Z_F``).
+    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian`) and
+    ``tw[5] = J_t T``, the time derivative of the Jacobian at fixed ``z`` applied to the
+    tangent ``T = tw[0]`` (the augmented system's ``f_t``).
 
-    Only ``m' `` and ``L'`` are nonlinear.  With ``w'(m, L) = 2 v_ref sinh(m/a) e^-Q``:
+    Only ``m'`` and ``L'`` are nonlinear.  With ``w'(m, L) = 2 v_ref sinh(m/a) e^-Q``:
     ``w_mm = w'/a^2``, ``w_mL = -(b/a) w_m``, ``w_LL = (b/a)^2 w'``; ``m'`` has
     ``-(k/n) d2w``; ``L' = l(w', L)`` has ``l_ww dw dw + l_w d2w + l_wL (dw dL + dL dw)
     + l_LL dL dL`` (aging: ``l_w = -sgn/d_c``, ``l_LL = e^-L``; slip: ``l_w = -sgn (ln g
-    + L + 1)/d_c``, ``l_ww = -1/(d_c |w'|)``, ``l_wL = -sgn/d_c``).
+    + L + 1)/d_c``, ``l_ww = -1/(d_c |w'|)``, ``l_wL = -sgn/d_c``).  ``J`` depends on
+    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.
     """
+    T, JtT, cv = tw[0], tw[5], tw[6]
     cv[:] = 0.0
-    Jt[:, :] = 0.0
+    JtT[:, :] = 0.0
     slip_law = P[P_SLIPLAW] != 0.0
     L = z[Z_L]
     if mode == FLIGHT:
@@ -429,11 +431,13 @@ def _curvature(P, tau, z, mode, cv, Jt):
         cv[CV_LW] = -sg / dc
         cv[CV_LLL] = _exp(-L)
     n2 = n * n
-    Jt[Z_V, Z_M] = -nd
-    Jt[Z_M, Z_V] = -k * nd / n2
-    Jt[Z_M, Z_M] = -ndd / n + (k * wm + nd) * nd / n2
-    Jt[Z_M, Z_L] = k * wL * nd / n2
-    Jt[Z_F, Z_M] = nd
+    jmv = -k * nd / n2
+    jmm = -ndd / n + (k * wm + nd) * nd / n2
+    jml = k * wL * nd / n2
+    for c in range(NM):
+        JtT[Z_V, c] = -nd * T[Z_M, c]
+        JtT[Z_M, c] = jmv * T[Z_V, c] + jmm * T[Z_M, c] + jml * T[Z_L, c]
+        JtT[Z_F, c] = nd * T[Z_M, c]
 
 
 @jit
@@ -459,7 +463,7 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
     the same factors as the state's stage, the quadrature ``F`` by the triangular structure.
     ``Js`` is the Jacobian at the stage's point (``J`` itself at stage 0).
     """
-    T, KT, Ts, rT, Jt, cv, col = tw[0], tw[2], tw[3], tw[4], tw[5], tw[6], tw[7]
+    T, KT, Ts, rT, JtT, cv, col = tw[0], tw[2], tw[3], tw[4], tw[5], tw[6], tw[7]
     ih = 1.0 / hh
     for r in range(NT):
         for c in range(NM):
@@ -469,12 +473,9 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
             Ts[r, c] = s
     for r in range(NT):
         for c in range(NM):
-            s = 0.0
-            u = 0.0
+            s = hh * RD[i] * JtT[r, c]
             for j in range(NM):
                 s += Js[r, j] * Ts[j, c]
-                u += Jt[r, j] * T[j, c]
-            s += hh * RD[i] * u
             for l in range(i):
                 s += ih * RCC[i, l] * KT[l, r, c]
             rT[r, c] = s
@@ -510,24 +511,60 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
     if not _lu(M, piv):
         return math.inf
     if tangent:
-        _curvature(P, tau, z, mode, tw[6], tw[5])
+        _curvature(P, tau, z, mode, tw)
     ih = 1.0 / hh
-    for i in range(6):
-        if i > 0:
-            for j in range(NZ):
-                s = z[j]
-                for l in range(i):
-                    s += RA[i, l] * K[l, j]
-                zs[j] = s
-            _evaluate(P, tau + RC[i] * hh, zs, mode, dz, Js, fts, tangent)
-        for j in range(NZ):
-            s = dz[j] + hh * RD[i] * ft[j]
-            for l in range(i):
-                s += ih * RCC[i, l] * K[l, j]
-            rhs[j] = s
-        _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i)
-        if tangent:
-            _tangent_stage(i, J, J if i == 0 else Js, M, piv, K, hh, hg, tw)
+    # stage 1
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D1 * ft[j]
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 0)
+    if tangent:
+        _tangent_stage(0, J, J, M, piv, K, hh, hg, tw)
+    # stage 2
+    for j in range(NZ):
+        zs[j] = z[j] + A21 * K[0, j]
+    _evaluate(P, tau + CC2 * hh, zs, mode, dz, Js, fts, tangent)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D2 * ft[j] + ih * C21 * K[0, j]
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 1)
+    if tangent:
+        _tangent_stage(1, J, Js, M, piv, K, hh, hg, tw)
+    # stage 3
+    for j in range(NZ):
+        zs[j] = z[j] + A31 * K[0, j] + A32 * K[1, j]
+    _evaluate(P, tau + CC3 * hh, zs, mode, dz, Js, fts, tangent)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D3 * ft[j] + ih * (C31 * K[0, j] + C32 * K[1, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 2)
+    if tangent:
+        _tangent_stage(2, J, Js, M, piv, K, hh, hg, tw)
+    # stage 4
+    for j in range(NZ):
+        zs[j] = z[j] + A41 * K[0, j] + A42 * K[1, j] + A43 * K[2, j]
+    _evaluate(P, tau + CC4 * hh, zs, mode, dz, Js, fts, tangent)
+    for j in range(NZ):
+        rhs[j] = dz[j] + hh * D4 * ft[j] + ih * (C41 * K[0, j] + C42 * K[1, j] + C43 * K[2, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 3)
+    if tangent:
+        _tangent_stage(3, J, Js, M, piv, K, hh, hg, tw)
+    # stage 5
+    for j in range(NZ):
+        zs[j] = z[j] + A51 * K[0, j] + A52 * K[1, j] + A53 * K[2, j] + A54 * K[3, j]
+    _evaluate(P, tau + hh, zs, mode, dz, Js, fts, tangent)
+    for j in range(NZ):
+        rhs[j] = dz[j] + ih * (C51 * K[0, j] + C52 * K[1, j] + C53 * K[2, j] + C54 * K[3, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 4)
+    if tangent:
+        _tangent_stage(4, J, Js, M, piv, K, hh, hg, tw)
+    # stage 6 (the embedded solution is zs + K[4], the solution zs + K[4] + K[5])
+    for j in range(NZ):
+        zs[j] += K[4, j]
+    _evaluate(P, tau + hh, zs, mode, dz, Js, fts, tangent)
+    for j in range(NZ):
+        rhs[j] = dz[j] + ih * (C61 * K[0, j] + C62 * K[1, j] + C63 * K[2, j]
+                               + C64 * K[3, j] + C65 * K[4, j])
+    _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 5)
+    if tangent:
+        _tangent_stage(5, J, Js, M, piv, K, hh, hg, tw)
     err = 0.0
     for j in range(NZ):
         znew[j] = zs[j] + K[5, j]
@@ -547,6 +584,7 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
     return err
 
 
+
 @jit
 def _workspace():
     """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew)``."""
@@ -556,7 +594,7 @@ def _workspace():
 
 @jit
 def _tangent_workspace():
-    """Scratch arrays of the variational equations: ``(T, T_new, KT, T_stage, rhs, J_t,
+    """Scratch arrays of the variational equations: ``(T, T_new, KT, T_stage, rhs, J_t T,
     curvature, column, J_stage, f_t stage)``; ``T`` (rows ``Z_Y .. Z_F``, columns the
     section state) is the tangent carried along.
     """

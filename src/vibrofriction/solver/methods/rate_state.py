@@ -38,8 +38,9 @@ class RateStateMethod:
         """Output rows of ``points`` (``V > 0``, from steady sliding); see :class:`~.base.Method`.
 
         Status :attr:`~vibrofriction.Status.PERIODIC` where Newton's method found an
-        attracting orbit of the period map (its multiplier from the exact monodromy; its error: the integration's, measured by the
-        change of the orbit's mean from ``rtol`` to ``rtol/20``, plus the next Newton step's),
+        attracting orbit of the period map (its multiplier from the exact monodromy; its
+        error: the integration's, measured by the change of the orbit's mean from ``rtol``
+        to ``rtol/20``, plus the next Newton step's),
         :attr:`~vibrofriction.Status.AVERAGED` where the motion is not locked to the drive
         and the last two doubling windows' means agree within ``tol_mean`` (the error their
         difference), else not converged or failed (``nan``, ``inf``).
