@@ -26,16 +26,22 @@ phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_
 where ``|f| = n |m|`` is below round-off of the averages.
 
 The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
-method on the period map with a finite-difference Jacobian (the perturbed maps replay the
-base map's steps, so that the difference is one of a smooth map), Broyden updates between
-Jacobians, refreshed where the steps stall.  An attracting orbit found (the spectral radius
-of the Jacobian, the Floquet multiplier, below 1) is refined by one map at ``rtol/REFINE``
-and one chord step: the answer is the refined mean, its error twice the change of the mean
-between the two tolerances plus the next Newton step's change of the mean (the integration
-error propagated and the Newton residual).  Otherwise (a response not locked to the drive:
-self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response)
-the motion is averaged over doubling windows, as the event solver does, and ``AVERAGED`` is
-said with the windows' disagreement as the error, never ``PERIODIC``.  Where the motion sits
+method on the period map with its exact Jacobian: the variational equations ``T' = J T``
+ride along the state in the same Rosenbrock steps (:func:`_tangent_stage`: the augmented
+system is block-triangular, so its stages are linear solves with the state's factors), the
+cuts' saltation matrices are the Jacobians of their resets (the cuts are at fixed phases),
+and the tangent's error is part of the step control at ``TANGENT_RTOL`` times the state's
+tolerance.  The monodromy matrix and the gradient of the period's mean so come from one
+integration per Newton step, and the multiplier (the spectral radius of the monodromy at
+the converged orbit) is exact to the integration's tolerance.  An attracting orbit found
+(the multiplier below 1) is refined by one map at ``rtol/REFINE`` and one chord step: the
+answer is the refined mean, its error twice the change of the mean between the two
+tolerances plus the next Newton step's change of the mean (the integration error
+propagated and the Newton residual).  Otherwise (a response not locked to the drive:
+self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response, an
+orbit that grows however slowly) the motion is averaged over doubling windows, as the event
+solver does, and ``AVERAGED`` is said with the windows' disagreement as the error, never
+``PERIODIC``.  Where the motion sits
 on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
 equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
 """
@@ -100,17 +106,18 @@ TWO_PI = 2.0 * math.pi
 P_ALPHA, P_K, P_A, P_V, P_GAMMA, P_HC, P_HS, P_RA, P_RB, P_DC, P_VREF = range(11)
 P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR = range(11, 17)
 N_PAR = 17
-# the state: y, x', e, ln theta and the quadratures int f, int f w', int gamma y'^2
+# the state: y, x', m = f/n, ln theta and the quadratures int f, int f w', int gamma y'^2
 Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
 NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
 CONTACT, FLIGHT = 0, 1
-RECORD, REPLAY = 1, 2  # modes of a period map's step log
-# a replayed step whose error estimate exceeds this many tolerances fails the replay (the
-# finite differences then take adaptive steps): in a stiff layer (the touch-down) a step
-# accepted for one motion can be far too long for a neighbouring one
-REPLAY_ERROR = 10.0
-LOG_SIZE = 1 << 15  # steps a period map records for the finite differences
+RECORD = 1  # lp[1] of a segment that records its steps (:func:`_segment`)
+NT = 5  # rows of the tangent: the section state and the quadrature F (Z_F == NM)
+# the coefficients of the second derivatives (:func:`_curvature`)
+CV_KN, CV_W, CV_WM, CV_WL, CV_BA, CV_IA2, CV_LW, CV_LWW, CV_LWL, CV_LLL = range(10)
+N_CV = 10
+TANGENT_RTOL = 100.0  # the variational equations' tolerance is this many rtol (their
+# error is part of the step control: the multiplier to ~1e-6 where the state is to rtol)
 CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
 EXP_MAX = 700.0  # exponents are clipped here: an overflowing stage is rejected
 H_MAX = 0.25 * math.pi  # the longest step
@@ -142,6 +149,16 @@ C61, C62, C63 = 8.083246795921522, -7.981132988064893, -31.52159432874371
 C64, C65 = 16.31930543123136, -6.058818238834054
 CC2, CC3, CC4 = 0.386, 0.21, 0.63
 D1, D2, D3, D4 = 0.25, -0.1043, 0.1035, -0.0362
+# the tableau as the tangent's stages use it (:func:`_tangent_stage`): stage i's point
+# T + sum_l RA[i, l] KT[l], its right-hand side f + h RD[i] f_t + sum_l RCC[i, l] KT[l]/h
+# (the last stage's point is the embedded solution, the solution that plus KT[5])
+RA = np.array([[0.0, 0.0, 0.0, 0.0, 0.0], [A21, 0.0, 0.0, 0.0, 0.0],
+               [A31, A32, 0.0, 0.0, 0.0], [A41, A42, A43, 0.0, 0.0],
+               [A51, A52, A53, A54, 0.0], [A51, A52, A53, A54, 1.0]])
+RD = np.array([D1, D2, D3, D4, 0.0, 0.0])
+RCC = np.array([[0.0, 0.0, 0.0, 0.0, 0.0], [C21, 0.0, 0.0, 0.0, 0.0],
+                [C31, C32, 0.0, 0.0, 0.0], [C41, C42, C43, 0.0, 0.0],
+                [C51, C52, C53, C54, 0.0], [C61, C62, C63, C64, C65]])
 
 
 @jit
@@ -373,11 +390,118 @@ def _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i):
 
 
 @jit
-def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew):
+def _curvature(P, tau, z, mode, tw):
+    """What the tangent's stages need at the step's start ``(tau, z)``: the coefficients
+    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian`) and
+    ``tw[5] = J_t T``, the time derivative of the Jacobian at fixed ``z`` applied to the
+    tangent ``T = tw[0]`` (the augmented system's ``f_t``).
+
+    Only ``m'`` and ``L'`` are nonlinear.  With ``w'(m, L) = 2 v_ref sinh(m/a) e^-Q``:
+    ``w_mm = w'/a^2``, ``w_mL = -(b/a) w_m``, ``w_LL = (b/a)^2 w'``; ``m'`` has
+    ``-(k/n) d2w``; ``L' = l(w', L)`` has ``l_ww dw dw + l_w d2w + l_wL (dw dL + dL dw)
+    + l_LL dL dL`` (aging: ``l_w = -sgn/d_c``, ``l_LL = e^-L``; slip: ``l_w = -sgn (ln g
+    + L + 1)/d_c``, ``l_ww = -1/(d_c |w'|)``, ``l_wL = -sgn/d_c``).  ``J`` depends on
+    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.
+    """
+    T, JtT, cv = tw[0], tw[5], tw[6]
+    cv[:] = 0.0
+    JtT[:, :] = 0.0
+    slip_law = P[P_SLIPLAW] != 0.0
+    L = z[Z_L]
+    if mode == FLIGHT:
+        cv[CV_LLL] = 0.0 if slip_law else _exp(-L)
+        return
+    A, k, a, dc = P[P_A], P[P_K], P[P_RA], P[P_DC]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    ndd = -A * ct
+    w, wm, wL = _slip_rate(P, z[Z_M], L)
+    sg = -1.0 if w < 0.0 else 1.0
+    cv[CV_KN] = -k / n
+    cv[CV_W], cv[CV_WM], cv[CV_WL] = w, wm, wL
+    cv[CV_BA], cv[CV_IA2] = P[P_RB] / a, 1.0 / (a * a)
+    if slip_law:
+        g = abs(w) / dc
+        lg = math.log(g) if g > 1e-300 else -690.0
+        cv[CV_LW] = -sg * (lg + L + 1.0) / dc
+        cv[CV_LWW] = -1.0 / (dc * max(abs(w), 1e-30))
+        cv[CV_LWL] = -sg / dc
+    else:
+        cv[CV_LW] = -sg / dc
+        cv[CV_LLL] = _exp(-L)
+    n2 = n * n
+    jmv = -k * nd / n2
+    jmm = -ndd / n + (k * wm + nd) * nd / n2
+    jml = k * wL * nd / n2
+    for c in range(NM):
+        JtT[Z_V, c] = -nd * T[Z_M, c]
+        JtT[Z_M, c] = jmv * T[Z_V, c] + jmm * T[Z_M, c] + jml * T[Z_L, c]
+        JtT[Z_F, c] = nd * T[Z_M, c]
+
+
+@jit
+def _hessian(cv, p, q, c):
+    """The second derivatives of ``(m', L')`` along the directions ``p`` (a vector) and
+    column ``c`` of ``q`` (:func:`_curvature`).
+    """
+    pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
+    w, wm, ba = cv[CV_W], cv[CV_WM], cv[CV_BA]
+    d2w = cv[CV_IA2] * w * pm * qm - ba * wm * (pm * qL + pL * qm) + ba * ba * w * pL * qL
+    dwp = wm * pm + cv[CV_WL] * pL
+    dwq = wm * qm + cv[CV_WL] * qL
+    hl = (cv[CV_LWW] * dwp * dwq + cv[CV_LW] * d2w + cv[CV_LWL] * (dwp * qL + pL * dwq)
+          + cv[CV_LLL] * pL * qL)
+    return cv[CV_KN] * d2w, hl
+
+
+@jit
+def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
+    """Stage ``i`` of the variational equations ``T' = J T`` (rows ``Z_Y .. Z_F``): the
+    RODAS4 stage of the augmented system ``(z, T)``, whose Jacobian is block-triangular,
+    ``[[J, 0], [H(., T), J]]``: ``KT_c = (I/(h gam) - J)^-1 (rhs_c + H(K_i, T_c))`` with
+    the same factors as the state's stage, the quadrature ``F`` by the triangular structure.
+    ``Js`` is the Jacobian at the stage's point (``J`` itself at stage 0).
+    """
+    T, KT, Ts, rT, JtT, cv, col = tw[0], tw[2], tw[3], tw[4], tw[5], tw[6], tw[7]
+    ih = 1.0 / hh
+    for r in range(NT):
+        for c in range(NM):
+            s = T[r, c]
+            for l in range(i):
+                s += RA[i, l] * KT[l, r, c]
+            Ts[r, c] = s
+    for r in range(NT):
+        for c in range(NM):
+            s = hh * RD[i] * JtT[r, c]
+            for j in range(NM):
+                s += Js[r, j] * Ts[j, c]
+            for l in range(i):
+                s += ih * RCC[i, l] * KT[l, r, c]
+            rT[r, c] = s
+    for c in range(NM):
+        hm, hl = _hessian(cv, K[i], T, c)
+        for j in range(NM):
+            col[j] = rT[j, c]
+        col[Z_M] += hm
+        col[Z_L] += hl
+        _lu_solve(M, piv, col)
+        s = rT[Z_F, c]
+        for j in range(NM):
+            KT[i, j, c] = col[j]
+            s += J[Z_F, j] * col[j]
+        KT[i, Z_F, c] = hg * s
+
+
+@jit
+def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw):
     """One RODAS4 step of length ``hh`` from ``(tau, z)`` into ``znew``; returns the error
-    norm (``inf`` where a stage is not finite or the matrix singular).
+    norm (``inf`` where a stage is not finite or the matrix singular).  With ``tangent``
+    the variational equations ride along (``tw[0]`` into ``tw[1]``, :func:`_tangent_stage`)
+    and their error is part of the norm.
     """
     dz, ft, zs, rhs = ws[0], ws[1], ws[2], ws[3]
+    Js, fts = tw[8], tw[9]
     _evaluate(P, tau, z, mode, dz, J, ft, True)
     hg = hh * GAM
     for i in range(NM):
@@ -386,47 +510,61 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew):
         M[i, i] += 1.0 / hg
     if not _lu(M, piv):
         return math.inf
+    if tangent:
+        _curvature(P, tau, z, mode, tw)
     ih = 1.0 / hh
     # stage 1
     for j in range(NZ):
         rhs[j] = dz[j] + hh * D1 * ft[j]
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 0)
+    if tangent:
+        _tangent_stage(0, J, J, M, piv, K, hh, hg, tw)
     # stage 2
     for j in range(NZ):
         zs[j] = z[j] + A21 * K[0, j]
-    _evaluate(P, tau + CC2 * hh, zs, mode, dz, J, ft, False)
+    _evaluate(P, tau + CC2 * hh, zs, mode, dz, Js, fts, tangent)
     for j in range(NZ):
         rhs[j] = dz[j] + hh * D2 * ft[j] + ih * C21 * K[0, j]
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 1)
+    if tangent:
+        _tangent_stage(1, J, Js, M, piv, K, hh, hg, tw)
     # stage 3
     for j in range(NZ):
         zs[j] = z[j] + A31 * K[0, j] + A32 * K[1, j]
-    _evaluate(P, tau + CC3 * hh, zs, mode, dz, J, ft, False)
+    _evaluate(P, tau + CC3 * hh, zs, mode, dz, Js, fts, tangent)
     for j in range(NZ):
         rhs[j] = dz[j] + hh * D3 * ft[j] + ih * (C31 * K[0, j] + C32 * K[1, j])
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 2)
+    if tangent:
+        _tangent_stage(2, J, Js, M, piv, K, hh, hg, tw)
     # stage 4
     for j in range(NZ):
         zs[j] = z[j] + A41 * K[0, j] + A42 * K[1, j] + A43 * K[2, j]
-    _evaluate(P, tau + CC4 * hh, zs, mode, dz, J, ft, False)
+    _evaluate(P, tau + CC4 * hh, zs, mode, dz, Js, fts, tangent)
     for j in range(NZ):
         rhs[j] = dz[j] + hh * D4 * ft[j] + ih * (C41 * K[0, j] + C42 * K[1, j] + C43 * K[2, j])
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 3)
+    if tangent:
+        _tangent_stage(3, J, Js, M, piv, K, hh, hg, tw)
     # stage 5
     for j in range(NZ):
         zs[j] = z[j] + A51 * K[0, j] + A52 * K[1, j] + A53 * K[2, j] + A54 * K[3, j]
-    _evaluate(P, tau + hh, zs, mode, dz, J, ft, False)
+    _evaluate(P, tau + hh, zs, mode, dz, Js, fts, tangent)
     for j in range(NZ):
         rhs[j] = dz[j] + ih * (C51 * K[0, j] + C52 * K[1, j] + C53 * K[2, j] + C54 * K[3, j])
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 4)
+    if tangent:
+        _tangent_stage(4, J, Js, M, piv, K, hh, hg, tw)
     # stage 6 (the embedded solution is zs + K[4], the solution zs + K[4] + K[5])
     for j in range(NZ):
         zs[j] += K[4, j]
-    _evaluate(P, tau + hh, zs, mode, dz, J, ft, False)
+    _evaluate(P, tau + hh, zs, mode, dz, Js, fts, tangent)
     for j in range(NZ):
         rhs[j] = dz[j] + ih * (C61 * K[0, j] + C62 * K[1, j] + C63 * K[2, j]
                                + C64 * K[3, j] + C65 * K[4, j])
     _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, 5)
+    if tangent:
+        _tangent_stage(5, J, Js, M, piv, K, hh, hg, tw)
     err = 0.0
     for j in range(NZ):
         znew[j] = zs[j] + K[5, j]
@@ -434,7 +572,17 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew):
             return math.inf
         sc = rtol * (scale[j] + max(abs(z[j]), abs(znew[j])))
         err = max(err, abs(K[5, j]) / sc)
+    if tangent:
+        T, Tnew, KT, Ts = tw[0], tw[1], tw[2], tw[3]
+        for r in range(NT):
+            for c in range(NM):
+                Tnew[r, c] = Ts[r, c] + KT[5, r, c]
+                if not math.isfinite(Tnew[r, c]):
+                    return math.inf
+                sc = rtol * (1.0 + max(abs(T[r, c]), abs(Tnew[r, c])))
+                err = max(err, abs(KT[5, r, c]) / (TANGENT_RTOL * sc))
     return err
+
 
 
 @jit
@@ -442,6 +590,17 @@ def _workspace():
     """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew)``."""
     return (np.empty((4, NZ)), np.empty((6, NZ)), np.empty((NZ, NM)), np.empty((NM, NM)),
             np.empty(NM, np.int64), np.empty(NZ))
+
+
+@jit
+def _tangent_workspace():
+    """Scratch arrays of the variational equations: ``(T, T_new, KT, T_stage, rhs, J_t T,
+    curvature, column, J_stage, f_t stage)``; ``T`` (rows ``Z_Y .. Z_F``, columns the
+    section state) is the tangent carried along.
+    """
+    return (np.zeros((NT, NM)), np.empty((NT, NM)), np.empty((6, NT, NM)),
+            np.empty((NT, NM)), np.empty((NT, NM)), np.zeros((NT, NM)), np.zeros(N_CV),
+            np.empty(NM), np.empty((NZ, NM)), np.empty(NZ))
 
 
 @jit
@@ -455,30 +614,22 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
     """Integrate ``z`` from ``t0`` to ``t1`` in ``mode``; ``hbox[0]`` carries the step size.
 
     ``count[0]`` counts the accepted steps, ``count[1]`` the rejected ones.  ``lp[1]``: 0
-    adaptive, ``RECORD`` adaptive with the accepted steps appended to ``log`` (at ``lp[0]``;
-    beyond its end nothing is recorded and ``lp[0]`` is set past it), ``REPLAY`` the steps of
-    ``log`` taken as they are (no error control: a finite difference of the period map is
-    then one of a smooth map).  Returns False where the step size fell below ``H_MIN``,
-    ``MAX_STEPS`` were taken, or a replayed step is not finite.
+    adaptive, ``RECORD`` with the accepted steps appended to ``log`` (at ``lp[0]``;
+    beyond its end nothing is recorded and ``lp[0]`` is set past it; the segment's last
+    step is recorded negative).  Returns False where the step size fell below ``H_MIN`` or
+    ``MAX_STEPS`` were taken.
     """
+    return _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, False,
+                    _tangent_workspace())
+
+
+@jit
+def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangent, tw):
+    """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``)."""
     ws, K, J, M, piv, znew = work
+    T, Tnew = tw[0], tw[1]
     t = t0
     steps = 0
-    if lp[1] == REPLAY:
-        while t < t1:
-            if lp[0] >= log.shape[0]:
-                return False
-            hh = log[lp[0]]
-            lp[0] += 1
-            last = hh < 0.0  # the segment's last step is recorded negative
-            hh = abs(hh)
-            err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
-            if not err <= REPLAY_ERROR:  # the step does not suit the perturbed motion
-                return False
-            t = t1 if last else t + hh
-            z[:] = znew
-            count[0] += 1
-        return True
     while t < t1:
         hh = min(hbox[0], H_MAX)
         last = t + hh >= t1 * (1.0 - 1e-15) or t + hh >= t1
@@ -486,10 +637,12 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
             hh = t1 - t
         if hh < H_MIN:
             return False
-        err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew)
+        err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
         if err <= 1.0:
             t = t1 if last else t + hh
             z[:] = znew
+            if tangent:
+                T[:, :] = Tnew
             count[0] += 1
             steps += 1
             if steps > MAX_STEPS:
@@ -536,25 +689,50 @@ def rs_period(P, z, rtol, hbox, work, count):
 
 @jit
 def _period(P, z, rtol, hbox, work, count, log, lp):
-    """:func:`rs_period`, its steps recorded or replayed (:func:`_segment`; ``lp[0]`` is
-    reset to the start of ``log``).
+    """:func:`rs_period`, its steps recorded where ``lp[1]`` says so (:func:`_segment`;
+    ``lp[0]`` is reset to the start of ``log``).
+    """
+    return _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, _tangent_workspace())
+
+
+@jit
+def _period_tangent(P, z, rtol, hbox, work, count, log, lp, tangent, tw):
+    """:func:`_period`; with ``tangent`` the variational equations from ``tw[0]`` along.
+
+    The cuts are at fixed phases (``n = CUT_DELTA``), not at states, so the saltation
+    matrix of each is the Jacobian of its reset: at lift-off ``m = 0`` (the row of ``m``
+    zeroed); at touch-down ``m = m_td(x', L)``, the root of ``g = k (x' - w'(m, L)) - m n'``
+    (:func:`_touchdown_mu`), whose derivatives are ``dm/dx' = k/(k w_m + n')`` and
+    ``dm/dL = -k w_L/(k w_m + n')``.
     """
     scale = _scales(P)
     lp[0] = 0
     z[Z_F] = z[Z_D] = z[Z_G] = 0.0
+    T = tw[0]
     c_off, c_on = _cuts(P)
     if c_off >= TWO_PI:
-        return _segment(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
-    if not _segment(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp):
+        return _advance(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
+                        tangent, tw)
+    if not _advance(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp,
+                    tangent, tw):
         return False
     z[Z_M] = 0.0  # lift-off: the contact spring unloads
+    T[Z_M, :] = 0.0
     count[2] += 2
-    if not _segment(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp):
+    if not _advance(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp,
+                    tangent, tw):
         return False
     # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
     # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-12)
     z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
-    return _segment(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp)
+    if tangent:
+        k = P[P_K]
+        _, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+        den = k * wm - P[P_A] * math.sin(c_on)
+        for c in range(NM):
+            T[Z_M, c] = k * (T[Z_V, c] - wL * T[Z_L, c]) / den
+    return _advance(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
+                    tangent, tw)
 
 
 @jit
@@ -602,80 +780,31 @@ def _distance(wv, z1, z2):
 
 
 @jit
-def _map_mean(P, z, rtol, hbox, work, count, log, lp):
+def _map_mean(P, z, rtol, hbox, work, count, tw, log, lp):
     """``(ok, mu)``: the period map from ``z`` in place (:func:`_period`) and the period's
     mean ``F/N``.
     """
-    ok = _period(P, z, rtol, hbox, work, count, log, lp)
+    ok = _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, tw)
     return ok, z[Z_F] / (TWO_PI * P[P_NBAR])
 
 
 @jit
-def _jacobian(P, z0, z1, mu1, rtol, hbox, work, count, log, lp, D, gmu):
-    """The Jacobian ``D`` of the period map at ``z0`` (image ``z1``, mean ``mu1``) and the
-    gradient ``gmu`` of the period's mean, by finite differences; returns ``ok``.
-
-    Each column first by forward differences that replay the steps of the map ``z0 -> z1``
-    (``log``, ``lp[0]`` steps; the difference is then one of a smooth map, its error the
-    truncation's), at ``dj`` and ``2 dj``: where the two agree (to ``1e-3``) the first is
-    taken.  Where they do not (a stiff layer, e.g. a touch-down, where the steps of one
-    motion do not suit its neighbour), where a replayed step's error estimate is too large,
-    or where the log overflowed, the column is a central difference of adaptive maps at
-    ``rtol/REFINE^2`` over ``1e-4`` of the state's scale.  Returns the maps integrated as
-    the second value (``-1``: failed).
+def _tangent_map(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu):
+    """:func:`_map_mean` with the variational equations along: ``D`` receives the period
+    map's Jacobian (the monodromy matrix on the section) and ``gmu`` the gradient of the
+    period's mean, both from the same integration.
     """
-    zp = np.empty(NZ)
-    zq = np.empty(NZ)
-    col = np.empty(NM)
-    wv, s = _weights(P, z0)
-    steps = lp[0]
-    replay = steps <= log.shape[0]
-    maps = 0
+    T = tw[0]
+    T[:, :] = 0.0
     for c in range(NM):
-        good = False
-        if replay:
-            dj = 1e-7 * s / wv[c]
-            zp[:] = z0
-            zp[c] += dj
-            lp[1] = REPLAY
-            ok1, mu = _map_mean(P, zp, rtol, hbox, work, count, log, lp)
-            zq[:] = z0
-            zq[c] += 2.0 * dj
-            ok2, mu2 = _map_mean(P, zq, rtol, hbox, work, count, log, lp)
-            lp[1] = 0
-            maps += 2
-            if ok1 and ok2:
-                good = True
-                big = 1.0
-                for r in range(NM):
-                    col[r] = (zp[r] - z1[r]) / dj
-                    big = max(big, abs(col[r]))
-                for r in range(NM):
-                    if abs((zq[r] - z1[r]) / (2.0 * dj) - col[r]) > 1e-3 * big:
-                        good = False
-                gm = (mu - mu1) / dj
-                if abs((mu2 - mu1) / (2.0 * dj) - gm) > 1e-3 * (1.0 + abs(gm)):
-                    good = False
-        if not good:
-            dj = 1e-4 * s / wv[c]
-            tight = rtol / (REFINE * REFINE)
-            zp[:] = z0
-            zp[c] += dj
-            ok1, mu = _map_mean(P, zp, tight, np.array([hbox[0]]), work, count, log, lp)
-            zq[:] = z0
-            zq[c] -= dj
-            ok2, mu2 = _map_mean(P, zq, tight, np.array([hbox[0]]), work, count, log, lp)
-            maps += 2
-            if not (ok1 and ok2):
-                return False, maps
-            for r in range(NM):
-                col[r] = (zp[r] - zq[r]) / (2.0 * dj)
-            gm = (mu - mu2) / (2.0 * dj)
+        T[c, c] = 1.0
+    ok = _period_tangent(P, z, rtol, hbox, work, count, log, lp, True, tw)
+    nbar = TWO_PI * P[P_NBAR]
+    for c in range(NM):
         for r in range(NM):
-            D[r, c] = col[r]
-        gmu[c] = gm
-    lp[0] = steps
-    return True, maps
+            D[r, c] = T[r, c]
+        gmu[c] = T[Z_F, c] / nbar
+    return ok, z[Z_F] / nbar
 
 
 @jit
@@ -703,31 +832,27 @@ def _newton_step(D, z0, z1, dz):
 
 
 @jit
-def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
+def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     """Newton's method on the period map from ``z``; on success ``z`` is the orbit's state.
 
-    ``D``, ``gmu`` receive the period map's Jacobian and the mean's gradient (finite
-    differences, :func:`_jacobian`; chord steps, refreshed where they stall).  ``res``
-    receives ``(mu, shift, multiplier, maps)``: the orbit's mean, the change of the mean the
-    next Newton step would make (``|gmu . dz|``), the spectral radius of ``D`` and the period
+    Every iterate's map carries the variational equations (:func:`_tangent_map`), so
+    ``D`` and ``gmu`` are the exact Jacobian of the period map and the mean's gradient at
+    the last iterate (to the integration's tolerance), not a secant's.  ``res`` receives
+    ``(mu, shift, multiplier, maps)``: the orbit's mean, the change of the mean the next
+    Newton step would make (``|gmu . dz|``), the spectral radius of ``D`` and the period
     maps integrated.  Returns True where the residual fell to the integration's level
-    (``100 rtol`` relative, weighted as the section distance).
+    (``10 rtol`` relative, weighted as the section distance).
     """
     z0 = z.copy()
     z1 = z.copy()
-    zp0 = z.copy()  # the previous iterate and its image (Broyden's update)
-    zp1 = z.copy()
     dz = np.empty(NM)
     maps = 0
-    d_old = math.inf
     tol = 10.0 * rtol
     res[3] = 0.0
-    have_jac = False
+    d_first = math.inf
     for it in range(NEWTON_ITERATIONS):
         z1[:] = z0
-        lp[1] = RECORD
-        ok, mu = _map_mean(P, z1, rtol, hbox, work, count, log, lp)
-        lp[1] = 0
+        ok, mu = _tangent_map(P, z1, rtol, hbox, work, count, tw, log, lp, D, gmu)
         maps += 1
         if not ok:
             break
@@ -738,14 +863,6 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
         if not math.isfinite(d) or (it > 0 and d > 100.0 * s) or \
                 (it >= 6 and d > NEWTON_PROGRESS * d_first):
             break  # diverged, or not converging: left to the motion
-        if not have_jac or (d > 0.5 * d_old and d > tol * s):
-            ok, m = _jacobian(P, z0, z1, mu, rtol, hbox, work, count, log, lp, D, gmu)
-            maps += m
-            if not ok:
-                break
-            have_jac = True
-        elif it > 0:
-            _broyden(D, zp0, zp1, z0, z1)
         if not _newton_step(D, z0, z1, dz):
             break  # singular: no orbit found here
         if d <= tol * s:
@@ -757,9 +874,6 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
             res[3] = maps
             z[:] = z0
             return True
-        d_old = d
-        zp0[:] = z0
-        zp1[:] = z1
         # a step longer than half the state's scale is cut
         step = 0.0
         for r in range(NM):
@@ -769,24 +883,6 @@ def _newton(P, z, rtol, hbox, work, count, log, lp, D, gmu, res):
             z0[r] += cut * dz[r]
     res[3] = maps
     return False
-
-
-@jit
-def _broyden(D, a0, a1, b0, b1):
-    """Broyden's update of the period map's Jacobian ``D`` from the step ``a0 -> b0`` with
-    the images ``a1``, ``b1``: ``D += (dP - D dz) dz^T/|dz|^2``.
-    """
-    nz = 0.0
-    for c in range(NM):
-        nz += (b0[c] - a0[c]) ** 2
-    if nz == 0.0:
-        return
-    for r in range(NM):
-        u = b1[r] - a1[r]
-        for c in range(NM):
-            u -= D[r, c] * (b0[c] - a0[c])
-        for c in range(NM):
-            D[r, c] += u * (b0[c] - a0[c]) / nz
 
 
 @jit
@@ -802,7 +898,8 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
     res = np.zeros(4)
-    log = np.empty(LOG_SIZE)
+    tw = _tangent_workspace()
+    log = np.empty(1)  # no step log
     lp = np.zeros(2, np.int64)
     dzf = np.empty(NM)
     D = np.empty((NM, NM))
@@ -824,7 +921,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
         if k == next_newton:
             zn = z.copy()
             hn = np.array([hbox[0]])  # a failed map's step size is not the motion's
-            found = _newton(P, zn, rtol, hn, work, count, log, lp, D, gmu, res)
+            found = _newton(P, zn, rtol, hn, work, count, tw, log, lp, D, gmu, res)
             periods += res[3]
             next_newton = 4 * k
             if found and res[2] < NEUTRAL:
@@ -832,7 +929,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 # change of the mean is the integration's error (a bound of the coarse
                 # value's, reported for the refined one)
                 zf = zn.copy()
-                ok, muf = _map_mean(P, zf, rtol / REFINE, hn, work, count, log, lp)
+                ok, muf = _map_mean(P, zf, rtol / REFINE, hn, work, count, tw, log, lp)
                 periods += 1.0
                 wv, s = _weights(P, zn)
                 if ok and _newton_step(D, zn, zf, dzf) and \
@@ -863,7 +960,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                     nchk = 0
         if k >= max_periods:
             break
-        ok, mu = _map_mean(P, z, rtol, hbox, work, count, log, lp)
+        ok, mu = _map_mean(P, z, rtol, hbox, work, count, tw, log, lp)
         periods += 1.0
         if not ok:
             failed = True

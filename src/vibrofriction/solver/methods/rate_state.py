@@ -38,8 +38,9 @@ class RateStateMethod:
         """Output rows of ``points`` (``V > 0``, from steady sliding); see :class:`~.base.Method`.
 
         Status :attr:`~vibrofriction.Status.PERIODIC` where Newton's method found an
-        attracting orbit of the period map (its error: the integration's, measured by the
-        change of the orbit's mean from ``rtol`` to ``rtol/20``, plus the next Newton step's),
+        attracting orbit of the period map (its multiplier from the exact monodromy; its
+        error: the integration's, measured by the change of the orbit's mean from ``rtol``
+        to ``rtol/20``, plus the next Newton step's),
         :attr:`~vibrofriction.Status.AVERAGED` where the motion is not locked to the drive
         and the last two doubling windows' means agree within ``tol_mean`` (the error their
         difference), else not converged or failed (``nan``, ``inf``).
@@ -58,10 +59,11 @@ def _unforced_unstable(points: PointTable, out_f: NDArray[np.float64],
 
     Without any oscillation (``amplitude = a_x = 0``) the orbit Newton's method finds is
     steady sliding, whose stability is known exactly (the Hurwitz conditions of
-    :func:`vibrofriction.theory.sliding_is_stable`).  The kernel's multiplier, from
-    finite differences of the period map, can miss a slow growth (measured: 0.968 where the
-    growth per period is 1.033); such a row is not converged (its ``mu_ratio`` the steady
-    sliding it sits on, its error ``inf``), not periodic.
+    :func:`vibrofriction.theory.sliding_is_stable`).  The kernel's multiplier is the exact
+    monodromy's (the variational equations along the period map) and decides this on its
+    own (tests/solver/test_rate_state_multiplier.py runs the kernel without this guard);
+    the guard stays as an independent cross-check: a row it contradicts is not converged
+    (its ``mu_ratio`` the steady sliding it sits on, its error ``inf``), not periodic.
     """
     rows = np.flatnonzero((points["amplitude"] == 0.0) & (points["a_x"] == 0.0)
                           & (out_i[:, codes.I_STATUS] == codes.ST_PERIODIC))
