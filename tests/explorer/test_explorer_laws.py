@@ -13,7 +13,7 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction import theory
-from vibrofriction.explorer import compute, exports
+from vibrofriction.explorer import compute, exports, texts
 from vibrofriction.explorer.messages import LAW, law_refusal, law_taken, read_inputs
 from vibrofriction.explorer.state import LAW_DISABLED, LAW_POINTS, State
 
@@ -97,6 +97,9 @@ def test_rate_and_state_curve_and_its_steady_sliding():
     assert np.all(np.diff(form["y"]) > 0.0)
     assert form["y"][-1] == pytest.approx(1.0 + 0.02 * math.log(2.0 / 0.2), abs=1e-3)
     assert math.isnan(c["critical"])  # eq. (12) is Coulomb's
+    # the contact creeps: the point's text gives no stick or slip fractions, and says so
+    said = texts.point_text(c, 1)
+    assert "stick and slip not separated" in said and "none" not in said
 
 
 @pytest.mark.parametrize("state", [

@@ -159,19 +159,21 @@ def point_text(curve: dict, i: int) -> str:
 
     ``mu/mu0`` (or the COF), its status, the mean normal force ``<F_N>/F_N0`` and the fractions
     of the contact disc in stick, slip and out of contact over the period (the flat punch: its
-    time fractions).
+    time fractions; a solver without stick and slip phases, rate-and-state friction whose
+    contact creeps, says so).
     """
     def value(name: str, fmt: str) -> str:
         v = float(np.asarray(curve[name], dtype=float)[i])
         return format(v, fmt) if math.isfinite(v) else "none"  # e.g. the static limit
 
     trusted = bool(np.asarray(curve["trusted"])[i])
+    stick, slip = value('stick_area_fraction', '.3f'), value('slip_area_fraction', '.3f')
+    phases = (f"stick {stick}, slip {slip}" if "none" not in (stick, slip) else
+              "stick and slip not separated by this solver")  # rate-and-state: it creeps
     return (f"{curve['y_label']} = {value('y', '.6g')} ({curve['status'][i]}"
             f"{'' if trusted else ', not trusted'}), <F_N>/F_N0 = "
-            f"{value('mean_normal_ratio', '.5g')}, contact over the period: stick "
-            f"{value('stick_area_fraction', '.3f')}, slip "
-            f"{value('slip_area_fraction', '.3f')}, out of contact "
-            f"{value('open_area_fraction', '.3f')}")
+            f"{value('mean_normal_ratio', '.5g')}, contact over the period: {phases}, "
+            f"out of contact {value('open_area_fraction', '.3f')}")
 
 
 def readout_text(curve: dict) -> str:
