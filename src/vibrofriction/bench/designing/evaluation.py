@@ -174,10 +174,10 @@ def sensitivity_table(chosen: Physical, v0: float, settings: SolverSettings | No
 
 
 def _law_cases(chosen: Physical) -> list[tuple[str, Physical, float]]:
-    """The sensitivity table's rows of the friction law: each parameter off by ``PARAMETER_CHANGE``.
+    """The sensitivity table's rows of the friction law, each parameter off by ``PARAMETER_CHANGE``.
 
-    ``mu_static`` (where it stays ``>= mu0``) of a static coefficient; ``a``, ``b``, ``d_c``, ``v_ref``
-    (where not 0) of rate-and-state friction.
+    ``mu_static`` (where it stays ``>= mu0``) of a static coefficient; ``a``, ``b``, ``d_c``,
+    ``v_ref`` (where not 0) of rate-and-state friction.
     """
     out = []
     for sign in (-1, 1):
@@ -187,7 +187,9 @@ def _law_cases(chosen: Physical) -> list[tuple[str, Physical, float]]:
             out.append((f"mu_static {label}", chosen.with_(mu_static=chosen.mu_static * factor),
                         chosen.omega))
         law = chosen.friction
-        for name in ("a", "b", "d_c", "v_ref") if law is not None else ():
+        if law is None:
+            continue
+        for name in ("a", "b", "d_c", "v_ref"):
             base = getattr(law, name)
             if base > 0.0:
                 p = chosen.with_(friction=dataclasses.replace(law, **{name: base * factor}))

@@ -110,7 +110,7 @@ LAW_START = 13
 
 
 def law_name(system: Physical) -> str:
-    """The rate-and-state evolution law of ``system`` (``"aging"``, the solver's default, without)."""
+    """The rate-and-state evolution law of ``system`` (without one ``"aging"``, the default)."""
     return "aging" if system.friction is None else system.friction.law
 
 
@@ -345,8 +345,10 @@ class Problem:
         if "mu_static" in law:
             values["mu_static"] = values["mu0"] * law.pop("mu_static")
         if law:
+            assert self.guess.friction is not None  # a, b, d_c need the law (check_law)
             try:
-                values["friction"] = dataclasses.replace(self.guess.friction, **law)
+                values["friction"] = RateAndState(**{**dataclasses.asdict(self.guess.friction),
+                                                     **law})
             except (ValueError, OverflowError):
                 values["friction"] = _OUTSIDE
         g = self.guess

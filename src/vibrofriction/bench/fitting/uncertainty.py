@@ -520,7 +520,8 @@ def law_warnings(problem: Problem, ln: NDArray, jac: NDArray | None
         return [], {}
     norms = np.linalg.norm(jac, axis=0)
     top = float(norms.max())
-    out, combos = [], {}
+    out: list[str] = []
+    combos: dict[str, str] = {}
     for n in law:
         flat_rel = len(free) > 1 and norms[free.index(n)] < WEAK * top
         flat_abs = problem.weighted and norms[free.index(n)] < 1.0
