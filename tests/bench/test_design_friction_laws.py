@@ -12,6 +12,7 @@ import pytest
 
 import vibrofriction as vf
 from vibrofriction.bench.designing.choosing import RATE_STATE_MAP
+from vibrofriction.bench.designing.space import BLOCKING_V
 from vibrofriction_reference.friction_laws import static_kinetic_run
 
 PIN = vf.from_bench(natural_frequency_hz=800.0, mass=0.01, quality_factor=50.0,
@@ -89,3 +90,23 @@ def test_what_the_rate_and_state_design_does_not_take_is_refused_by_name(kwargs,
     with pytest.raises(ValueError, match=rf"rate-and-state friction .*normal oscillation only, "
                                          rf"not {name}"):
         vf.design(pin, v0=0.005, omega=OMEGA, du_z=DU_Z, **kwargs)
+
+
+def test_the_in_plane_drive_of_a_static_pin_carries_the_law_to_its_characteristic() -> None:
+    """``goal="drive"`` with a static coefficient: the chosen oscillation's value and its
+    blocking force are the solver's with ``static_ratio`` (and not Coulomb's)."""
+    pin = PIN.with_(mu_static=1.3 * PIN.mu0)
+    res = vf.design(pin, v0=0.002, omega=(2 * math.pi * 200, 2 * math.pi * 5000),
+                    du_z=(0.0, 0.9e-6), du_x=(0.0, 5e-6), goal="drive",
+                    max_velocity_amplitude=0.03, n_omega=7, n_du_z=3, n_du_x=3, n_phase=4,
+                    starts=2)
+    s = res.system
+    d = s.to_dimensionless()
+    assert d.static_ratio == pytest.approx(1.3)
+    r = vf.friction_coefficient(d, v_inertial=float(s.v0_to_inertial(res.v0)))
+    assert res.cof == pytest.approx(pin.mu0 * r.mu_ratio, abs=1e-12)
+    block = vf.friction_coefficient(d, v_inertial=BLOCKING_V)
+    coulomb = vf.friction_coefficient(s.with_(mu_static=None).to_dimensionless(),
+                                      v_inertial=BLOCKING_V)
+    assert res.blocking[0] == pytest.approx(block.mu_ratio, abs=1e-12)
+    assert abs(block.mu_ratio - coulomb.mu_ratio) > 1e-6
