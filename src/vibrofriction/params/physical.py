@@ -225,6 +225,14 @@ class Physical:
         of the shape of ``omega`` (rad/s; the scaled ``rs_d_c``, ``rs_v_ref`` change with it) and
         ``rs_law``: :meth:`friction_fields` at each drive frequency (the one conversion), Coulomb
         friction's defaults of ``solve_points`` without a rate-and-state law.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6,
+        ...                   du_z=2e-6, omega=6283.0, mu0=0.3, mu_static=0.39)
+        >>> pin.law_arguments([6283.0, 12566.0])["static_ratio"]
+        array([1.3, 1.3])
         """
         omega = np.asarray(omega, dtype=float)
         shape = np.shape(omega)
