@@ -162,6 +162,21 @@ def test_steady_data_hold_a_minus_b_only_and_the_check_names_it():
     assert combos == {} and notes == []
 
 
+def test_rows_that_never_stick_leave_mu_static_open_and_the_check_says_so():
+    """The fast rows of the static table slide through the whole cycle (``mu_ratio = 1``):
+    ``mu_static`` cannot act there, and the check names it with what it needs; the slow
+    rows move it."""
+    fast = STATIC_DATA[STATIC_DATA.cof >= STATIC.mu0 - 0.01].reset_index(drop=True)
+    slow = STATIC_DATA[STATIC_DATA.v0 < 3e-3].reset_index(drop=True)
+    ln = np.array([math.log(0.3), math.log(1.3)])
+    for data, named in ((fast, True), (slow, False)):
+        p = Problem(STATIC, ("mu0", "mu_static"), True, True, True, data)
+        notes, combos = law_warnings(p, ln, jacobian_at(p, ln))
+        said = any(n.startswith("mu_static does not move the model") and "sticks" in n
+                   for n in notes)
+        assert said == named and combos == {}, (len(data), notes)
+
+
 def test_a_fit_result_with_a_law_is_saved_and_loaded(tmp_path):
     res = vf.fit(STEADY_DATA, _law(RSF, a=0.007), free=["a"], global_stage=False,
                  progress=False)

@@ -330,8 +330,8 @@ class Problem:
 
         ``mu_static`` free is ``mu0 exp(ln)`` (its ``ln`` is that of ``mu_static/mu0``); a held
         ``mu_static`` keeps the guess's value (outside the domain where ``mu0`` passes it); free
-        ``a``, ``b``, ``d_c`` replace those of the guess's law (``friction`` is None where they
-        leave its range: outside the domain).
+        ``a``, ``b``, ``d_c`` replace those of the guess's law (``friction`` is ``_OUTSIDE`` where
+        they leave its range: outside the domain, :func:`_in_domain`).
         """
         values = {f.name: getattr(self.guess, f.name) for f in dataclasses.fields(self.guess)}
         geo, law = {}, {}

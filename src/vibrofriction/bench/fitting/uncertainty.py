@@ -506,8 +506,9 @@ def law_warnings(problem: Problem, ln: NDArray, jac: NDArray | None
     """What the data cannot tell of a local friction law: sentences, and combinations held.
 
     From the Jacobian in ``ln`` at ``ln`` (``jac``, :func:`jacobian_at`): a free law parameter
-    (``mu_static``, ``a``, ``b``, ``d_c``) whose column is flat (below :data:`WEAK` of the
-    largest column, or, weighted, moving the chi-square by less than 1 over a factor ``e``)
+    (``mu_static``, ``a``, ``b``, ``d_c``) whose column is flat (weighted: moving the
+    chi-square by less than 1 over a factor ``e``; unweighted: below :data:`WEAK` of the
+    largest column)
     gets a sentence saying what the data would need (:data:`LAW_NEEDS`); free ``a`` and ``b``
     whose only combination the data see is ``a - b`` (their derivative along ``da = db``,
     ``J_a/a + J_b/b``, below :data:`WEAK` of each alone: at constant load and steady
@@ -523,9 +524,11 @@ def law_warnings(problem: Problem, ln: NDArray, jac: NDArray | None
     out: list[str] = []
     combos: dict[str, str] = {}
     for n in law:
-        flat_rel = len(free) > 1 and norms[free.index(n)] < WEAK * top
-        flat_abs = problem.weighted and norms[free.index(n)] < 1.0
-        if top == 0.0 or flat_rel or flat_abs:
+        # weighted: the chi-square's own scale (a jump of another column, where a row changes
+        # its stick-slip pattern within the step, does not make this one look flat)
+        flat = (norms[free.index(n)] < 1.0 if problem.weighted else
+                top == 0.0 or (len(free) > 1 and norms[free.index(n)] < WEAK * top))
+        if flat:
             out.append(f"{n} does not move the model at these rows (its chi-square changes by "
                        f"{norms[free.index(n)] ** 2:.2g} over a factor e): {LAW_NEEDS[n]}")
     if "a" in free and "b" in free:
