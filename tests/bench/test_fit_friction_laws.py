@@ -193,7 +193,7 @@ def test_a_fit_result_with_a_law_is_saved_and_loaded(tmp_path):
 def test_fit_of_the_static_coefficient_to_reference_data_holds_the_truth():
     """``mu0`` and ``mu_static`` off by 1.1 and 1.18; the slow rows stick (they carry
     ``mu_static``), the fast ones slide (``mu0``).  The model jumps between stick-slip patterns
-    (the static law's hysteresis), so the global search runs (a short one).  About 25 s."""
+    (the static law's hysteresis), so the global search runs (a short one).  15-25 s."""
     res = vf.fit(STATIC_DATA, STATIC.with_(mu0=0.33, mu_static=0.46), free=["mu0", "mu_static"],
                  screen=16, starts=2, progress=False, workers=1)
     assert _holds_or_not_good(res, STATIC) == [], res.report()
@@ -205,7 +205,7 @@ def test_fit_of_the_static_coefficient_to_reference_data_holds_the_truth():
 def test_fit_of_rate_and_state_to_reference_data_holds_the_truth():
     """``a`` and ``b`` off by 1.33 and 0.73, ``d_c`` known: the oscillation makes the slip rate
     vary within the cycle, which separates them (correlated, r ~ 0.95; noise 0.001: with
-    0.002 ``b`` is bounded above only).  About 40 s."""
+    0.002 ``b`` is bounded above only).  30-50 s."""
     res = vf.fit(RSF_DATA, _law(RSF, a=0.008, b=0.0022), free=["a", "b"], global_stage=False,
                  progress=False, workers=1)
     assert _holds_or_not_good(res, RSF) == [], res.report()
@@ -216,7 +216,7 @@ def test_fit_of_rate_and_state_to_reference_data_holds_the_truth():
 @pytest.mark.slow
 def test_fit_of_a_and_b_to_steady_data_says_only_a_minus_b_is_held():
     """Steady sliding at constant load (no oscillation): ``b`` is not determined, ``a - b`` is
-    what the data hold, said in the report; the intervals hold the truth.  About 20 s."""
+    what the data hold, said in the report; the intervals hold the truth.  6-20 s."""
     res = vf.fit(STEADY_DATA, _law(RSF, a=0.008, b=0.004), free=["a", "b"], global_stage=False,
                  progress=False, workers=1)
     _holds_or_not_good(res, RSF)
