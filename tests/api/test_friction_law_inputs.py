@@ -91,13 +91,8 @@ def test_physical_refusals() -> None:
 
 
 def test_parts_without_the_laws_refuse_them_by_name() -> None:
-    """Nothing drops a law silently: the fit, the design and the gradients refuse it."""
-    law = vf.RateAndState(a=0.01, b=0.01, d_c=1e-6, v_ref=1e-3)
-    with pytest.raises(ValueError, match="the fit does not take rate-and-state friction"):
-        vf.fit("unused.csv", vf.Physical(**PIN, friction=law))
-    with pytest.raises(ValueError, match="the design does not take a static coefficient"):
-        vf.design(vf.Physical(**PIN, mu_static=0.4), v0=1e-3, omega=(1e3, 1e4),
-                  du_z=(1e-7, 1e-6))
+    """Nothing drops a law silently: the gradients refuse it (the fit and the design carry both
+    laws: tests/bench/test_fit_friction_laws.py, test_design_friction_laws.py)."""
     with pytest.raises(ValueError, match="friction_gradient does not cover rate-and-state"):
         friction_gradient(vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5, rs_a=0.03),
                           v_inertial=0.3)

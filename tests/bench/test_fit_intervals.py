@@ -33,6 +33,7 @@ class TwoValleys:
     free: tuple[str, ...] = ("x0", "x1")
     weighted: bool = True
     curved: bool = False
+    differenced: bool = False  # curved or rate-and-state: the solver's differences
     jacobian_kind: str = "differences"
 
     def residual(self, x):
@@ -124,6 +125,7 @@ class RatioOnly:
     free: tuple[str, ...] = ("a", "b", "c")
     weighted: bool = True
     curved: bool = False
+    differenced: bool = False  # curved or rate-and-state: the solver's differences
     jacobian_kind: str = "differences"
 
     def residual(self, x):

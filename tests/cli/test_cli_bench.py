@@ -147,3 +147,36 @@ def test_fit_command_passes_a_curved_contact_to_the_fit(tmp_path, monkeypatch, c
     kind = Sphere if contact["type"] == "sphere" else Cone
     assert isinstance(seen["contact"], kind)
     assert seen["guess"] == vf.from_bench(**{**spec, "contact": seen["contact"]})
+
+
+FLAT = {"natural_frequency_hz": 800, "mass": 0.01, "quality_factor": 50, "normal_load": 20,
+        "k_zc": 2e7, "k_xc": 1.5e7, "drive_frequency_hz": 1000, "du_z": 5e-7, "mu0": 0.3}
+
+
+@pytest.mark.slow
+def test_fit_of_a_friction_law_from_the_command_line(tmp_path):
+    """The guess's law from the flags (``--friction-*``, ``--mu-static``), its parameters in
+    ``--free``; on the steady rate-and-state table made by the reference
+    (tests/data/make_friction_law_bench.py), ``a`` with ``b`` known; a law parameter without
+    its law in the guess is refused by name."""
+    from pathlib import Path
+
+    bench = tmp_path / "flat.json"
+    bench.write_text(json.dumps(FLAT))
+    data = Path(__file__).resolve().parents[1] / "data" / "rate_state_steady.csv"
+    law = ["--friction-a", "0.008", "--friction-b", "0.003", "--friction-d-c", "2e-6",
+           "--friction-v-ref", "0.01"]
+    out = _cli("fit", str(data), "--bench", str(bench), *law, "--free", "a", "--workers", "1",
+               "--out", str(tmp_path / "fit"), "--no-progress")
+    assert out.returncode == 0, out.stderr
+    saved = json.loads((tmp_path / "fit" / "fit.json").read_text())
+    lo, hi = saved["intervals"]["a"]
+    assert lo <= 0.006 <= hi and hi - lo < 2e-3
+    assert saved["system"]["friction"]["b"] == 0.003
+    for free, message in (("mu0,mu_static", "free names mu_static, the static coefficient"),
+                          ("a", "parameters of rate-and-state friction, but the guess has none")):
+        bad = _cli("fit", str(data), "--bench", str(bench), "--free", free)
+        assert bad.returncode == 2 and message in bad.stderr, bad.stderr
+    bad = _cli("fit", str(data), "--bench", str(bench), "--mu-static", "0.2", "--free",
+               "mu_static")
+    assert bad.returncode == 2 and "mu_static must be >= mu0" in bad.stderr, bad.stderr

@@ -10,7 +10,7 @@ import math
 import re
 
 from ._app import Args, Command, parse_float
-from ._options import FLOAT, INT, Opt, parameter_option, with_
+from ._options import FLOAT, FRICTION_SI, INT, Opt, choice_option, parameter_option, with_
 
 
 def _fixes(text: str | None) -> dict[str, float]:
@@ -40,6 +40,7 @@ def run_fit(a: Args) -> None:
     from ..bench import fit, from_bench_file, read_bench_file
     from ..contact import FlatPunch, Sphere
     from ..figures import plot_fit, plot_profiles
+    from .mu import _friction
 
     bench, free = a["bench"], a["free"]
     guess = from_bench_file(bench)
@@ -52,6 +53,8 @@ def run_fit(a: Args) -> None:
                                     else "E_star"))
     if a["fix"]:
         guess = guess.with_(**_fixes(a["fix"]))
+    if a.has("mu_static") or a.has("friction_a"):  # the guess's local friction law
+        guess = guess.with_(mu_static=a["mu_static"], friction=_friction(a))
     try:
         res = fit(a["data"], guess, free=[f.strip() for f in free.split(",") if f.strip()],
                   natural_frequency=a["natural_frequency"], normal_load=a["normal_load"],
@@ -114,6 +117,11 @@ FIT = Command(
          "law)", kind="text", metavar="NAMES"),
      Opt("fix", "fields of the guess to set first: name=value,...", kind="text",
          metavar="NAME=FLOAT[,...]"),
+     with_(parameter_option("mu_static"), help="the guess's static coefficient of friction "
+           "(> mu0 to fit it: --free mu_static; docs/bench.md, 'Fitting a friction law')"),
+     *(with_(o, help=o.help.replace("of a physical set-up", "of the guess")
+             + " (--free a,b,d_c fits them)") for o in FRICTION_SI),
+     choice_option("rs_law", requires=("friction_a",)),
      Opt("natural_frequency", "keep k_x/m (the measured natural frequency)", kind="flag",
          default=True),
      Opt("normal_load", "keep k_zc u_z0 = F_N0", kind="flag", default=True),

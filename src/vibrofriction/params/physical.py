@@ -218,6 +218,38 @@ class Physical:
                                                ).scaled_fields())
         return fields
 
+    def law_arguments(self, omega: ArrayLike) -> dict[str, Any]:
+        """The friction law's arguments of :func:`~vibrofriction.solver.solve_points`, elementwise.
+
+        ``static_ratio``, ``rs_a``, ``rs_b``, ``rs_d_c``, ``rs_v_ref``, ``rs_alpha_ld`` as arrays
+        of the shape of ``omega`` (rad/s; the scaled ``rs_d_c``, ``rs_v_ref`` change with it) and
+        ``rs_law``: :meth:`friction_fields` at each drive frequency (the one conversion), Coulomb
+        friction's defaults of ``solve_points`` without a rate-and-state law.
+
+        Examples
+        --------
+        >>> import vibrofriction as vf
+        >>> pin = vf.Physical(mass=0.01, k_x=2.5e5, k_xc=2e5, k_zc=2.5e5, u_z0=4e-6,
+        ...                   du_z=2e-6, omega=6283.0, mu0=0.3, mu_static=0.39)
+        >>> pin.law_arguments([6283.0, 12566.0])["static_ratio"]
+        array([1.3, 1.3])
+        """
+        omega = np.asarray(omega, dtype=float)
+        shape = np.shape(omega)
+        names = ("rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld")
+        out: dict[str, Any] = {"static_ratio": np.full(shape, self.static_ratio),
+                               **{n: np.full(shape, 1.0 if n in ("rs_d_c", "rs_v_ref") else 0.0)
+                                  for n in names}, "rs_law": "aging"}
+        if self.friction is None:
+            return out
+        out["rs_law"] = self.friction.law
+        for w in np.unique(omega):  # a measured table holds few drive frequencies
+            fields = self.friction_fields(float(w))
+            where = omega == w
+            for n in names:
+                out[n] = np.where(where, float(fields[n]), out[n])
+        return out
+
     @property
     def pin_y(self) -> tuple[float, float]:
         """``(k_y, c_y)`` with None resolved to ``k_x``, ``c_x``: the pin across the sliding."""

@@ -17,6 +17,11 @@ CURVED_MAP = (25, 9)
 
 
 CURVED_STARTS = 3
+#: A pin with rate-and-state friction (the rate-and-state solver, ~10 ms a point, ~100 times
+#: the event solver): the curved pin's smaller map and refinements (:data:`CURVED_MAP`,
+#: :data:`CURVED_STARTS`), the normal oscillation only.
+RATE_STATE_MAP = CURVED_MAP
+RATE_STATE_STARTS = CURVED_STARTS
 
 
 def design(pin: Physical, *, v0: float, omega: tuple[float, float],
@@ -71,8 +76,19 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
     otherwise); ``du_z`` is the amplitude of the imposed indentation.  Refused by name what
     the MDR solver does not take: ``du_x``, ``du_y``, ``goal="drive"`` and a contact
     dashpot (``c_xc > 0``).
+
+    **A local friction law** (docs/bench.md, "Fitting a friction law") is carried to every
+    evaluation: a static coefficient (``mu_static``) everywhere the solvers take it (the
+    normal, in-plane and transverse designs and the drive); rate-and-state friction
+    (``friction=``) in the normal design only, on the smaller map of a curved pin
+    (:data:`RATE_STATE_MAP`, :data:`RATE_STATE_STARTS`: the rate-and-state solver is ~100
+    times slower a point): ``du_x``, ``du_y`` and ``goal="drive"`` are refused by name.
     """
-    pin.check_coulomb("the design")
+    if pin.friction is not None:
+        _refuse_for_rate_state(pin, du_x=du_x, du_y=du_y, goal=goal)
+        n_omega = RATE_STATE_MAP[0] if n_omega is None else n_omega
+        n_du_z = RATE_STATE_MAP[1] if n_du_z is None else n_du_z
+        starts = RATE_STATE_STARTS if starts is None else starts
     if pin.curved:
         _refuse_for_mdr(pin, du_x=du_x, du_y=du_y, goal=goal)
         n_omega = CURVED_MAP[0] if n_omega is None else n_omega
@@ -95,6 +111,18 @@ def design(pin: Physical, *, v0: float, omega: tuple[float, float],
                           n_omega=161 if n_omega is None else n_omega,
                           n_du_z=41 if n_du_z is None else n_du_z, starts=starts,
                           settings=settings)
+
+
+def _refuse_for_rate_state(pin: Physical, *, du_x, du_y, goal) -> None:
+    """ValueError naming what the design of a rate-and-state pin does not take."""
+    for name, given in (("du_x", du_x is not None), ("du_y", du_y is not None),
+                        ("goal='drive'", goal != "friction")):
+        if given:
+            raise ValueError(f"a pin with rate-and-state friction (friction = {pin.friction!r}) "
+                             f"is designed for the normal oscillation only, not {name}: the "
+                             "rate-and-state solver costs ~100 times the event solver a point "
+                             "(an in-plane map of ~50 000 points) and does not take the "
+                             "transverse oscillation nor a negative velocity")
 
 
 def _refuse_for_mdr(pin: Physical, *, du_x, du_y, goal) -> None:

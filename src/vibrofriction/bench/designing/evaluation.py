@@ -6,6 +6,7 @@ the chosen oscillation.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from typing import Any
 
@@ -58,14 +59,15 @@ def solve_design(pin: Physical, v0: float, omega, du_z, settings: SolverSettings
     driven at ``omega`` (rad/s) with ``du_z`` (m) and the in-plane ``du_x``, ``du_y`` (m),
     ``phase_x``, ``phase_y`` on ``inplane_on``, at the sliding velocity ``v0`` (m/s)
     (:meth:`Physical.point_arguments`, the fit's conversion too; ``du_y > 0``: the 2-D
-    solver, with the pin's ``k_y``, ``c_y``).
+    solver, with the pin's ``k_y``, ``c_y``), with the pin's friction law at each ``omega``
+    (:meth:`Physical.law_arguments`).
     """
     omega, du_z, du_x, phase_x, du_y, phase_y = np.broadcast_arrays(
         *(np.asarray(x, float) for x in (omega, du_z, du_x, phase_x, du_y, phase_y)))
     args: tuple[Any, ...] = pin.point_arguments(v0, du_z, omega, du_x, phase_x, du_y, phase_y)
     out = solve_points(*args, profile_exponent=pin.profile_exponent,  # type: ignore[misc]
                        inplane_on=inplane_on,  # args: the 12 groups before profile_exponent
-                       settings=settings)
+                       settings=settings, **pin.law_arguments(omega))
     trusted = out["trusted"]
     return {"cof": np.where(trusted, pin.mu0 * out["mu_ratio"], np.nan),
             "mu_ratio": out["mu_ratio"], "error": out["error"], "trusted": out["trusted"]}
@@ -140,7 +142,8 @@ def sensitivity_table(chosen: Physical, v0: float, settings: SolverSettings | No
 
     The COF at the optimum, with the frequency off by ``FREQUENCY_CHANGES`` and each
     pin parameter off by ``PARAMETER_CHANGE`` (nan and ``trusted`` False where the
-    solver does not trust its value).
+    solver does not trust its value), and so each parameter of its friction law
+    (:func:`_law_cases`; ``mu0`` of a pin with a static coefficient moves ``mu_static`` with it).
     """
     cases = [("optimum", chosen, chosen.omega)]
     cases += [(f"frequency {100 * c:+.0f} %", chosen, chosen.omega * (1 + c))
@@ -156,11 +159,39 @@ def sensitivity_table(chosen: Physical, v0: float, settings: SolverSettings | No
         if base == 0.0 or not math.isfinite(base):
             continue
         for sign in (-1, 1):
-            p = chosen.with_(**{name: base * (1 + sign * PARAMETER_CHANGE)})
+            change = {name: base * (1 + sign * PARAMETER_CHANGE)}
+            if name == "mu0" and chosen.mu_static is not None:  # the ratio kept: mu_static >= mu0
+                change["mu_static"] = chosen.static_ratio * change["mu0"]
+            p = chosen.with_(**change)
             cases.append((f"{name} {sign * 100 * PARAMETER_CHANGE:+.0f} %", p, p.omega))
+    cases += _law_cases(chosen)
     rows = []
     for label, pin, w in cases:
         sol = solve_design(pin, v0, w, pin.du_z, settings, pin.du_x, pin.phase_x, pin.inplane_on,
                      pin.du_y, pin.phase_y)
         rows.append((label, float(sol["cof"]), bool(sol["trusted"])))
     return pd.DataFrame(rows, columns=["change", "cof", "trusted"])
+
+
+def _law_cases(chosen: Physical) -> list[tuple[str, Physical, float]]:
+    """The sensitivity table's rows of the friction law, each parameter off by ``PARAMETER_CHANGE``.
+
+    ``mu_static`` (where it stays ``>= mu0``) of a static coefficient; ``a``, ``b``, ``d_c``,
+    ``v_ref`` (where not 0) of rate-and-state friction.
+    """
+    out = []
+    for sign in (-1, 1):
+        factor = 1 + sign * PARAMETER_CHANGE
+        label = f"{sign * 100 * PARAMETER_CHANGE:+.0f} %"
+        if chosen.mu_static is not None and chosen.mu_static * factor >= chosen.mu0:
+            out.append((f"mu_static {label}", chosen.with_(mu_static=chosen.mu_static * factor),
+                        chosen.omega))
+        law = chosen.friction
+        if law is None:
+            continue
+        for name in ("a", "b", "d_c", "v_ref"):
+            base = getattr(law, name)
+            if base > 0.0:
+                p = chosen.with_(friction=dataclasses.replace(law, **{name: base * factor}))
+                out.append((f"{name} {label}", p, chosen.omega))
+    return out

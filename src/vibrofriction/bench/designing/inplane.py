@@ -242,7 +242,8 @@ def _drive_characteristic(result: DesignResult, settings: SolverSettings | None)
     d = s.to_dimensionless()
     args = (d.alpha, d.beta, d.amplitude)
     tail: dict[str, Any] = dict(zeta=d.zeta, eta_c=d.eta_c, a_x=d.a_x, phase_x=d.phase_x,
-                                inplane_on=d.inplane_on, settings=settings)
+                                inplane_on=d.inplane_on, settings=settings,
+                                static_ratio=d.static_ratio)
     block = solve_points(*args, np.array([BLOCKING_V, -BLOCKING_V]), **tail)
     result.blocking = (float(block["mu_ratio"][0]), float(block["mu_ratio"][1]))
     result.blocking_trusted = bool(block["trusted"].all())

@@ -54,6 +54,12 @@ first, and the intervals are the whole search range (the profile intervals, scal
 ``s^2``, are kept in ``res.extra["profile_intervals"]``).  An unweighted fit cannot be
 judged.
 
+A guess with a local friction law (``mu_static``, or ``friction=RateAndState(...)``) carries it
+through every evaluation, and ``free`` may name the law's ``mu_static``, ``a``, ``b``, ``d_c``
+(:data:`~.problem.LAW_FITTABLE`; :func:`.procedure.fit`, docs/bench.md "Fitting a friction
+law"): their Jacobian columns are the solver's differences, and what the data cannot tell of
+them is said by name (:func:`.uncertainty.law_warnings`: ``a - b`` from steady sliding).
+
 The parts, each in its module, in the order :func:`fit` (:mod:`.procedure`) runs them: the problem
 (:mod:`.problem`: the parameters in ``ln``, the constraints, the residuals and their
 penalty, :func:`predict_cof`), the search (:mod:`.search`: the global stage and the

@@ -17,11 +17,12 @@ import pandas as pd
 from numpy.typing import ArrayLike, NDArray
 
 from ...contact import Cone, FlatPunch, Material, PowerLaw, Sphere
-from ...params import Physical
+from ...params import Physical, RateAndState
 from ...solver import SolverSettings, solve_points
 from ...solver.sensitivity import SENSITIVE, sensitivities
 
-__all__ = ["CONTACT_FITTABLE", "FITTABLE", "predict_cof", "synthetic_measurements"]
+__all__ = ["CONTACT_FITTABLE", "FITTABLE", "LAW_FITTABLE", "predict_cof",
+           "synthetic_measurements"]
 
 #: The step in ``ln`` of the central differences of the map ``ln -> points`` (cheap, no
 #: solver) in :meth:`Problem.jacobian`, and of the solver's own where it has no sensitivity.
@@ -32,8 +33,23 @@ SOLVER_STEP = 1e-5
 #: the rows of springs it extrapolates from change, so the step is large enough that
 #: ``d mu`` over it (~2e-3 for a slope of 0.2) is a hundred times such a step.
 MDR_STEP = 1e-2
+#: The step in ``ln`` of the solver's central differences under rate-and-state friction
+#: (no sensitivities): its stated error is ~1e-7 of ``mu_ratio`` (``rtol = 1e-7``), so
+#: the change over the step (~1e-4 for a slope of 0.1) is a thousand times that error.
+RATE_STATE_STEP = 1e-3
 #: The fields of :class:`Physical` that can be fitted.
 FITTABLE = ("mu0", "mass", "k_x", "k_xc", "k_zc", "u_z0", "c_x", "c_xc")
+#: The parameters of a local friction law that can be fitted: the static coefficient
+#: ``mu_static`` (a guess with ``mu_static > mu0``; searched as ``ln(mu_static/mu0) >= 0``,
+#: so that it never falls below the kinetic ``mu0``) and the rate-and-state ``a``, ``b``
+#: and ``d_c`` (m) of a guess with ``friction=RateAndState(...)`` (SI, as it holds them).
+LAW_FITTABLE = ("mu_static", "a", "b", "d_c")
+#: The rate-and-state parameters among them.
+RATE_STATE_FITTABLE = ("a", "b", "d_c")
+#: The largest ``|mu_ratio|`` a rate-and-state row is taken to reach in :meth:`Problem.penalty`
+#: (the law has no bound: ``mu_ss`` grows like ``(a - b) ln v``; a fit whose model reaches
+#: twice ``mu_star`` is far from any data set of a tribometer).
+RATE_STATE_BOUND = 2.0
 #: The parameters of a contact geometry (``fit(..., contact=...)``) that can be fitted:
 #: the radius of a :class:`~vibrofriction.contact.Sphere` or
 #: :class:`~vibrofriction.contact.FlatPunch`, and the effective modulus ``E*`` of the pair
@@ -62,21 +78,40 @@ def predict_cof(system: Physical, v0: NDArray, du_z: NDArray, omega: NDArray,
     untrusted points is ``np.isnan(...).sum()``.
     """
     groups = _groups(system, v0, du_z, omega, du_x, phase_x, du_y, phase_y)
-    return _cof(system.mu0, _solve_points((*groups, system.inplane_on, settings)))
+    return _cof(system.mu0, _solve_points((*groups, system.inplane_on, law_name(system),
+                                           settings)))
 
 
 def _groups(system: Physical, *point) -> tuple[NDArray[np.float64], ...]:
-    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape.
+    """:meth:`Physical.point_arguments` of ``point`` as arrays of one shape, and the law's.
 
     An axisymmetric pin's ``alpha_y``, ``zeta_y`` (None) are ``alpha``, ``zeta`` (the rows of
-    several systems are concatenated, :meth:`Problem.costs`).
+    several systems are concatenated, :meth:`Problem.costs`).  Then ``profile_exponent`` and
+    the friction law's :data:`LAW_GROUPS` at each row's drive frequency
+    (:meth:`Physical.law_arguments`): the 13th to 19th positional arguments of
+    :func:`~vibrofriction.solver.solve_points` (its ``rs_law``: :func:`law_name`).
     """
     groups = list(system.point_arguments(*point))
     for i, twin in ((10, 0), (11, 4)):  # alpha_y -> alpha, zeta_y -> zeta
         if groups[i] is None:
             groups[i] = groups[twin]
     groups.append(system.profile_exponent)  # the 13th argument of solve_points
+    law = system.law_arguments(np.asarray(point[2], dtype=float))  # at each row's omega
+    groups += [law[n] for n in LAW_GROUPS]
     return tuple(np.broadcast_arrays(*(np.asarray(g, dtype=float) for g in groups)))
+
+
+#: The friction law's positional arguments of :func:`~vibrofriction.solver.solve_points`
+#: after ``profile_exponent`` (the groups 14 to 19 of :func:`_groups`).
+LAW_GROUPS = ("static_ratio", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld")
+#: Where they start among the groups of :func:`_groups` (after the 12 of
+#: :meth:`Physical.point_arguments` and ``profile_exponent``).
+LAW_START = 13
+
+
+def law_name(system: Physical) -> str:
+    """The rate-and-state evolution law of ``system`` (without one ``"aging"``, the default)."""
+    return "aging" if system.friction is None else system.friction.law
 
 
 def _rate(up: ArrayLike, down: ArrayLike) -> NDArray[np.float64]:
@@ -193,6 +228,30 @@ def contact_exponents(contact: Contact, name: str, load: float, curved: bool
     return {k: math.log(b[k] / a[k]) / math.log(2.0) for k in CONTACT_FIELDS}
 
 
+def check_law(guess: Physical, free: tuple[str, ...]) -> None:
+    """ValueError, naming the parameter, for a law's parameter the guess does not carry.
+
+    ``mu_static`` needs a guess with ``mu_static > mu0`` (its search, ``ln(mu_static/mu0)``
+    from 0 up, must start inside); ``a``, ``b``, ``d_c`` a guess with ``friction=``
+    :class:`~vibrofriction.RateAndState`.
+    """
+    if "mu_static" in free:
+        if guess.mu_static is None:
+            raise ValueError("free names mu_static, the static coefficient of friction, but the "
+                             "guess has none (Coulomb friction): give the guess mu_static = a "
+                             "value above mu0 to fit it")
+        if not guess.static_ratio > 1.0:
+            raise ValueError(f"free names mu_static, but the guess's mu_static = "
+                             f"{guess.mu_static!r} is mu0: it is searched as ln(mu_static/mu0) "
+                             "> 0 (never below the kinetic mu0) and must start above mu0: give "
+                             "a guess with mu_static > mu0")
+    rs = [n for n in free if n in RATE_STATE_FITTABLE]
+    if rs and guess.friction is None:
+        raise ValueError(f"free names {rs}, parameters of rate-and-state friction, but the guess "
+                         "has none: give the guess friction=vf.RateAndState(a=..., b=..., "
+                         "d_c=..., v_ref=...) to fit them")
+
+
 def check_contact(guess: Physical, contact: Contact | None, free: tuple[str, ...]) -> None:
     """ValueError, naming the parameters, for a fit of a contact geometry it cannot make.
 
@@ -259,19 +318,39 @@ class Problem:
     jacobian_kind: str = "exact"
     #: the contact geometry the guess was built from (its parameters may be free)
     contact: Any = None
+    #: the largest ``|mu_ratio|`` of the search (:meth:`penalty`): 1 for Coulomb friction, the
+    #: largest ``mu_static/mu0`` with a static coefficient, :data:`RATE_STATE_BOUND`
+    ratio_max: float = 1.0
     #: the last solve of :meth:`evaluate` (``ln`` as bytes, the columns): lmfit asks for the
     #: Jacobian where it has just evaluated the residuals
     _last: tuple | None = field(default=None, init=False, repr=False, compare=False)
 
     def values(self, ln: NDArray[np.float64]) -> dict[str, Any]:
-        """The fields of the system at ``ln`` of the free parameters, constraints applied."""
-        values = dataclasses.asdict(self.guess)
-        geo = {}
+        """The fields of the system at ``ln`` of the free parameters, constraints applied.
+
+        ``mu_static`` free is ``mu0 exp(ln)`` (its ``ln`` is that of ``mu_static/mu0``); a held
+        ``mu_static`` keeps the guess's value (outside the domain where ``mu0`` passes it); free
+        ``a``, ``b``, ``d_c`` replace those of the guess's law (``friction`` is ``_OUTSIDE`` where
+        they leave its range: outside the domain, :func:`_in_domain`).
+        """
+        values = {f.name: getattr(self.guess, f.name) for f in dataclasses.fields(self.guess)}
+        geo, law = {}, {}
         for n, x in zip(self.free, ln, strict=True):
             if n in CONTACT_FITTABLE:
                 geo[n] = math.exp(x)
+            elif n in LAW_FITTABLE:
+                law[n] = math.exp(x)
             else:
                 values[n] = math.exp(x)
+        if "mu_static" in law:
+            values["mu_static"] = values["mu0"] * law.pop("mu_static")
+        if law:
+            assert self.guess.friction is not None  # a, b, d_c need the law (check_law)
+            try:
+                values["friction"] = RateAndState(**{**dataclasses.asdict(self.guess.friction),
+                                                     **law})
+            except (ValueError, OverflowError):
+                values["friction"] = _OUTSIDE
         g = self.guess
         if geo:
             try:
@@ -297,20 +376,46 @@ class Problem:
         return Physical(**self.values(ln))
 
     def start(self, name: str) -> float:
-        """The guess's value of the free parameter ``name``.
+        """The guess's value of the free parameter ``name`` (``exp`` of its ``ln`` coordinate).
 
-        A field of the guess or a parameter of the contact.
+        A field of the guess, a parameter of the contact, ``mu_static/mu0`` for ``mu_static`` or a
+        parameter of the guess's rate-and-state law.
         """
         if name in CONTACT_FITTABLE:
             return contact_value(self.contact, name)
+        if name == "mu_static":
+            return self.guess.static_ratio
+        if name in RATE_STATE_FITTABLE:
+            return float(getattr(self.guess.friction, name))
         return float(getattr(self.guess, name))
 
     def named(self, ln: NDArray[np.float64]) -> dict[str, float]:
-        """The fields of the system at ``ln`` and the free contact parameters' values."""
+        """The fields of the system at ``ln`` and the free contact and law parameters' values.
+
+        ``mu_static`` as the field (``mu0`` times the ratio), ``a``, ``b``, ``d_c`` of its law.
+        """
         values = self.values(ln)
         values.update({n: math.exp(x) for n, x in zip(self.free, ln, strict=True)
                        if n in CONTACT_FITTABLE})
+        law = values["friction"]
+        values.update({n: float(getattr(law, n)) for n in self.free
+                       if n in RATE_STATE_FITTABLE and isinstance(law, RateAndState)})
         return values
+
+    @property
+    def rate_state(self) -> bool:
+        """Rate-and-state friction: the rate-and-state solver, differenced (no sensitivities)."""
+        return self.guess.friction is not None
+
+    @property
+    def differenced(self) -> bool:
+        """No sensitivities (a curved contact or rate-and-state friction): solver differences."""
+        return self.curved or self.rate_state
+
+    @property
+    def step(self) -> float:
+        """The step in ``ln`` of the solver's central differences (:meth:`_row_differences`)."""
+        return MDR_STEP if self.curved else RATE_STATE_STEP if self.rate_state else SOLVER_STEP
 
     @property
     def curved(self) -> bool:
@@ -320,11 +425,14 @@ class Problem:
     def penalty(self) -> NDArray[np.float64]:
         """The residual of a row the model cannot evaluate.
 
-        Twice the largest honest one, ``(mu0_max + |cof|) / sigma`` (``|mu_ratio| <= 1``,
-        eq. 25), so that a failed row always costs more than any misfit of it.
+        Twice the largest honest one, ``(mu0_max ratio_max + |cof|) / sigma`` (``|mu_ratio| <=
+        1`` with Coulomb friction, eq. 25; ``<= mu_static/mu0`` with a static coefficient, the
+        largest of the search: :attr:`ratio_max`; :data:`RATE_STATE_BOUND` with rate-and-state
+        friction), so that a failed row always costs more than any misfit of it.
         """
         mu0_max = self.guess.mu0 if self.mu0_max is None else self.mu0_max
-        return 2.0 * (mu0_max + np.abs(self.data["cof"].to_numpy())) / self._scale()
+        return 2.0 * (mu0_max * self.ratio_max + np.abs(self.data["cof"].to_numpy())) \
+            / self._scale()
 
     def _scale(self) -> NDArray[np.float64] | float:
         return self.data["sigma"].to_numpy() if self.weighted else 1.0
@@ -347,7 +455,7 @@ class Problem:
         if self._last is not None and self._last[0] == key:
             return self._last[1]
         solved = solve_points(*points[1:], inplane_on=self.guess.inplane_on,
-                              settings=self.settings)
+                              rs_law=law_name(self.guess), settings=self.settings)
         self._last = (key, solved)
         return solved
 
@@ -355,7 +463,8 @@ class Problem:
         """The solver's arguments of every row at ``ln`` (eq. 20).
 
         ``(mu0, alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y, alpha_y,
-        zeta_y)`` of every row at ``ln`` (eq. 20), or None where the parameters leave the
+        zeta_y, profile_exponent, static_ratio, rs_a, rs_b, rs_d_c, rs_v_ref, rs_alpha_ld)`` of
+        every row at ``ln`` (eq. 20, :func:`_groups`), or None where the parameters leave the
         model's domain.
         """
         values = self.values(ln)
@@ -392,7 +501,7 @@ class Problem:
         points = self.points(ln)
         if points is None:
             return out
-        if self.curved:  # the MDR solver has no sensitivities: its differences, every row
+        if self.differenced:  # no sensitivities (MDR, rate-and-state): differences, every row
             rows = np.flatnonzero(self._solve(ln, points)["trusted"])
             if rows.size:
                 for c, j in enumerate(cols_j):
@@ -415,13 +524,20 @@ class Problem:
         solved = self._solve(ln, points)
         n_sens = len(SENSITIVE)  # points: mu0, SENSITIVE, a_y, phase_y, alpha_y, zeta_y
         sens = sensitivities(solved, *points[1:1 + n_sens], inplane_on=self.guess.inplane_on,
-                             settings=self.settings, order=2, parameters=moving)
+                             settings=self.settings, order=2, parameters=moving,
+                             static_ratio=points[1 + LAW_START])
         trusted, mu = solved["trusted"], solved["mu_ratio"]
         scale = self._scale()
         missing = np.zeros(len(self.data), dtype=bool)
+        # a column that moves the static coefficient (mu_static, or mu0 under a held mu_static):
+        # the sensitivities do not differentiate static_ratio, so the solver's differences
+        law_columns = []
         for c, rate in enumerate(rates):
             if rate is None:
                 missing[:] = True
+                continue
+            if np.any(rate[1 + LAW_START] != 0.0):
+                law_columns.append(c)
                 continue
             dmu = np.zeros(len(self.data))
             for name, dtheta in zip(SENSITIVE, rate[1:1 + n_sens], strict=True):
@@ -437,6 +553,10 @@ class Problem:
             rows = np.flatnonzero(missing)
             for c, j in enumerate(cols_j):
                 out[rows, c] = self._row_differences(ln, int(j), rows)
+        rows = np.flatnonzero(trusted & ~missing)
+        for c in law_columns:
+            if rows.size:
+                out[rows, c] = self._row_differences(ln, int(cols_j[c]), rows)
         return out
 
     def _row_differences(self, ln: NDArray[np.float64], j: int, rows: NDArray[np.intp]
@@ -444,11 +564,11 @@ class Problem:
         """Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver.
 
         Central differences of the residuals of ``rows`` in ``ln[j]`` through the solver
-        (:data:`SOLVER_STEP`; :data:`MDR_STEP` for a curved contact); 0 where a side is
-        penalised.
+        (:attr:`step`: :data:`SOLVER_STEP`; :data:`MDR_STEP` for a curved contact,
+        :data:`RATE_STATE_STEP` under rate-and-state friction); 0 where a side is penalised.
         """
         sides = []
-        step = MDR_STEP if self.curved else SOLVER_STEP
+        step = self.step
         for sign in (1.0, -1.0):
             x = ln.copy()
             x[j] += sign * step
@@ -456,7 +576,8 @@ class Problem:
             if p is None:
                 return np.zeros(rows.size)
             mu, trusted = _solve_points(tuple(g[rows] for g in p[1:])
-                                        + (self.guess.inplane_on, self.settings))
+                                        + (self.guess.inplane_on, law_name(self.guess),
+                                           self.settings))
             cof = p[0] * np.where(trusted, mu, np.nan)
             sides.append(cof)
         scale = self._scale()
@@ -485,7 +606,8 @@ class Problem:
             size = columns[0].size
             parts = [np.arange(i, size, chunks) for i in range(min(chunks, size))]
             mu_ratio, trusted = np.empty(size), np.zeros(size, dtype=bool)
-            tasks = [tuple(c[idx] for c in columns) + (self.guess.inplane_on, self.settings)
+            tasks = [tuple(c[idx] for c in columns)
+                     + (self.guess.inplane_on, law_name(self.guess), self.settings)
                      for idx in parts]
             for idx, (m, t) in zip(parts, map_(_solve_points, tasks), strict=True):
                 mu_ratio[idx], trusted[idx] = m, t
@@ -520,15 +642,19 @@ def _solve_points(task) -> tuple[NDArray[np.float64], NDArray[np.bool_]]:
     """``mu_ratio`` and ``trusted`` at the points of ``task``: a pool task.
 
     ``mu_ratio`` and ``trusted`` at the points of ``task`` (the twelve group arrays of
-    :meth:`Physical.point_arguments`, ``inplane_on`` and the settings): a pool task of
-    :meth:`Problem.costs`.
+    :meth:`Physical.point_arguments`, ``profile_exponent`` and the law's :data:`LAW_GROUPS`,
+    ``inplane_on``, ``rs_law`` and the settings): a pool task of :meth:`Problem.costs`.
     """
-    *groups, inplane_on, settings = task
-    out = solve_points(*groups, inplane_on=inplane_on, settings=settings)
+    *groups, inplane_on, rs_law, settings = task
+    out = solve_points(*groups, inplane_on=inplane_on, rs_law=rs_law, settings=settings)
     return out["mu_ratio"], out["trusted"]
 
 
-def _in_domain(values: dict[str, float]) -> bool:
+#: :meth:`Problem.values`' ``friction`` where the free law parameters leave its range.
+_OUTSIDE = "outside the law's range"
+
+
+def _in_domain(values: dict[str, Any]) -> bool:
     """Whether ``values`` make a valid :class:`Physical`.
 
     Whether ``values`` make a valid :class:`Physical` whose every point has
@@ -539,19 +665,27 @@ def _in_domain(values: dict[str, float]) -> bool:
         return False
     if not values["k_xc"] > 0.0:  # math.inf: a rigid contact
         return False
+    if values["friction"] is _OUTSIDE or (values["mu_static"] is not None and not (
+            values["mu_static"] >= values["mu0"] and math.isfinite(values["mu_static"]))):
+        return False
     if not all(math.isfinite(values[n]) and values[n] >= 0.0 for n in ("c_x", "c_xc", "du_z")):
         return False
     return values["k_x"] + values["k_xc"] > values["k_x"]
 
 
 def search_bounds(problem: Problem, span: float) -> list[tuple[float, float]]:
+    """The search range of each free parameter in ``ln``: a factor ``span`` about the guess.
+
+    ``mu_static``'s coordinate ``ln(mu_static/mu0)`` is cut at 0 (``mu_static >= mu0``).
+    """
     out = []
     for n in problem.free:
         x = math.log(problem.start(n)) if problem.start(n) > 0 else None
         if x is None:
             raise ValueError(f"{n} of the guess must be > 0 to be fitted, got "
                              f"{problem.start(n)!r}")
-        out.append((x - math.log(span), x + math.log(span)))
+        lo = x - math.log(span)
+        out.append((max(lo, 0.0) if n == "mu_static" else lo, x + math.log(span)))
     return out
 
 
@@ -570,11 +704,11 @@ def free_and_tied(free: tuple[str, ...], natural_frequency: bool, normal_load: b
     releases it), and the fields that follow a free one by a constraint (``name:
     (source, +-1)``, ``ln name = +-ln source + const``).
     """
-    unknown = [n for n in free if n not in FITTABLE + CONTACT_FITTABLE]
+    unknown = [n for n in free if n not in FITTABLE + CONTACT_FITTABLE + LAW_FITTABLE]
     if unknown or not free:
-        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)} or "
-                         f"parameters of the contact among {list(CONTACT_FITTABLE)}, "
-                         f"got {list(free)}")
+        raise ValueError(f"free must name fields of Physical among {list(FITTABLE)}, "
+                         f"parameters of the contact among {list(CONTACT_FITTABLE)} or of "
+                         f"the friction law among {list(LAW_FITTABLE)}, got {list(free)}")
     if len(set(free)) != len(free):
         raise ValueError(f"free names a parameter twice: {list(free)}")
     on = {"natural_frequency": natural_frequency, "normal_load": normal_load}

@@ -21,9 +21,11 @@ from ..measurements import read_measurements
 from .problem import (
     CONTACT_FIELDS,
     CONTACT_FITTABLE,
+    RATE_STATE_BOUND,
     Contact,
     Problem,
     check_contact,
+    check_law,
     contact_exponents,
     free_and_tied,
     search_bounds,
@@ -35,6 +37,7 @@ from .uncertainty import (
     estimate_uncertainties,
     identifiability,
     jacobian_at,
+    law_warnings,
     physical_params,
     profile_warnings,
 )
@@ -44,7 +47,8 @@ from .uncertainty import (
 #: a hundredth of a bench's noise (docs/bench.md, "A curved contact").
 CURVED_TOL = 1e-4
 #: The global search's local starts and screened points without ``starts``, ``screen``: a
-#: flat punch's, and a curved contact's (the MDR solver is ~30 times slower a point).
+#: flat punch's, and a curved contact's or rate-and-state friction's (the MDR solver is ~30
+#: times slower a point, the rate-and-state solver ~100 times).
 SEARCH = (12, 512)
 CURVED_SEARCH = (3, 32)
 
@@ -85,18 +89,34 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     (MDR) guess is solved by the MDR solver (``tol_trusted`` :data:`CURVED_TOL` unless
     ``settings`` say otherwise) and differenced (``jacobian="exact"`` takes the solver's
     differences at every row).
+    **A local friction law** (docs/bench.md, "Fitting a friction law") is carried by the
+    guess through every evaluation (and into ``res.system``): ``mu_static`` (a guess with
+    ``mu_static > mu0``) may then be free, searched as ``ln(mu_static/mu0)`` within
+    ``[max(0, ln(r/span)), ln(r span)]`` (``r`` the guess's ratio: never below the kinetic
+    ``mu0``; its interval is the ratio's times the fitted ``mu0``; a held ``mu_static``
+    keeps its value while ``mu0`` moves), and so may the rate-and-state ``a``, ``b``,
+    ``d_c`` (m) of a guess with ``friction=RateAndState(...)``; each refused by name
+    without its law in the guess.  The Jacobian of a column that moves the law (``mu_static``,
+    or ``mu0`` under a held ``mu_static``) is the solver's central differences (the
+    sensitivities do not differentiate the static coefficient); under rate-and-state
+    friction every column is (the rate-and-state solver has no sensitivities; step
+    :data:`~.problem.RATE_STATE_STEP` in ``ln``), and the search is the short one of a
+    curved contact (:data:`CURVED_SEARCH`).  What the data determine of each law's
+    parameters is checked (:func:`.uncertainty.law_warnings`): ``a`` and ``b`` apart only
+    where the data hold more than steady sliding (``a - b`` otherwise, named), ``d_c`` only
+    through the dynamics, ``mu_static`` only at rows where the contact sticks.
     ``res.extra["stages"]`` says where the time went; ``res.quality`` whether the fit
     describes the data.
     """
     t0 = time.perf_counter()
-    guess.check_coulomb("the fit")
     data = read_measurements(data)
     free, tied = free_and_tied(tuple(free), natural_frequency, normal_load, quality_factor,
                                 len(data))
     check_contact(guess, contact, free)
+    check_law(guess, free)
     if guess.curved and settings is None:
         settings = SolverSettings(tol_trusted=CURVED_TOL)
-    search = CURVED_SEARCH if guess.curved else SEARCH
+    search = CURVED_SEARCH if guess.curved or guess.friction is not None else SEARCH
     starts = search[0] if starts is None else _count("starts", starts)
     screen = search[1] if screen is None else _count("screen", screen)
     for n in free:
@@ -112,6 +132,9 @@ def fit(data: pd.DataFrame | str | Path, guess: Physical, free: list[str] | tupl
     bounds = search_bounds(problem, span)
     if "mu0" in free:
         problem.mu0_max = math.exp(bounds[free.index("mu0")][1])
+    problem.ratio_max = (RATE_STATE_BOUND if guess.friction is not None else
+                         math.exp(bounds[free.index("mu_static")][1]) if "mu_static" in free
+                         else guess.static_ratio)
     x0 = np.array([math.log(problem.start(n)) for n in free])
     workers = workers if workers >= 1 else available_cores()
     stages = Stages()
@@ -160,12 +183,17 @@ def _result(problem: Problem, out, bounds, tied, dists, lower) -> FitResult:
         result_params, intervals = physical_params(out, free, named, tied, search)
     jac = jacobian_at(problem, ln)  # one Jacobian for what the data hold and the warnings
     status, combos = determination(out, problem, ln, bounds, dists, jac)
+    law_notes, law_combos = law_warnings(problem, ln, jac)
     if quality == "poor":  # a model that does not fit the data determines nothing of them
         status, combos = dict.fromkeys(free, "not determined"), {}
+    else:  # a and b apart are not what the data hold, whatever the profiles
+        combos.update(law_combos)
+        status.update(dict.fromkeys(law_combos, "not determined"))
     for n, st in status.items():  # no standard error from the covariance of a loose parameter
         if st == "not determined" and n in result_params:
             result_params[n].stderr = None
     warnings = identifiability(out, problem, ln, bounds, jac)
+    warnings += law_notes
     warnings += profile_warnings(free, dists, tied, lower)
     return FitResult(params=result_params, system=system, data=problem.data, free=free,
                      constraints={"natural_frequency": problem.natural_frequency,

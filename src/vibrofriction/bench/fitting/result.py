@@ -17,7 +17,7 @@ import numpy as np
 import pandas as pd
 from numpy.typing import NDArray
 
-from ...params import Physical
+from ...params import Physical, RateAndState
 from .problem import Problem, predict_cof
 
 __all__ = ["DOUBTFUL_P", "POOR_P", "FitResult"]
@@ -164,12 +164,12 @@ class FitResult:
             params.add(n, value=p["value"])
             params[n].stderr = p["stderr"]
             params[n].correl = p["correl"]
-        return cls(params=params, system=Physical(**doc["system"]),
+        return cls(params=params, system=_physical(doc["system"]),
                    data=pd.DataFrame(doc["data"]), free=tuple(doc["free"]),
                    constraints=doc["constraints"], warnings=doc["warnings"],
                    chisqr=doc["chisqr"], redchi=doc["redchi"], nfev=doc["nfev"],
                    seconds=doc["seconds"], weighted=doc["weighted"],
-                   guess=Physical(**doc["guess"]) if doc["guess"] else None,
+                   guess=_physical(doc["guess"]) if doc["guess"] else None,
                    intervals=_intervals(doc.get("intervals", {})),
                    extra={"at_lowest_minimum": doc.get("at_lowest_minimum", True),
                           "profile_intervals": _intervals(doc.get("profile_intervals", {}))},
@@ -178,6 +178,12 @@ class FitResult:
                    penalised=doc.get("penalised", {}),
                    determination=doc.get("determination", {}),
                    combinations=doc.get("combinations", {}))
+
+
+def _physical(saved: dict) -> Physical:
+    """A :class:`Physical` as saved: its rate-and-state law (a dict in the JSON) rebuilt."""
+    law = saved.get("friction")
+    return Physical(**{**saved, "friction": None if law is None else RateAndState(**law)})
 
 
 def _intervals(saved: dict) -> dict[str, tuple[float, float]]:

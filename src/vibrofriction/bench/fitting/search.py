@@ -82,7 +82,7 @@ def run_search(problem: Problem, bounds, x0: NDArray, map_, stages: Stages, scre
             out = found
         with stages.timed("hops") as row:
             out, more, row["evaluations"] = _hop(problem, out, bounds, map_, rng, cores,
-                                                 calm=1 if problem.curved else CALM)
+                                                 calm=1 if problem.differenced else CALM)
         minima = sorted(minima + more, key=lambda r: r[0])
         if not _poor(problem, out.chisqr):
             break
@@ -197,8 +197,8 @@ def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None
         return problem.residual(np.array([p[n].value for n in problem.free]))
 
     loose = {"ftol": 1e-6, "xtol": 1e-6} if hold is not None else {}  # chi^2 to ~1e-4
-    if hold is not None and problem.curved:  # the MDR's value is only within 1e-4 anyway
-        loose = {"ftol": 1e-4, "xtol": 1e-4}
+    if hold is not None and problem.differenced:  # the MDR's value is only within 1e-4
+        loose = {"ftol": 1e-4, "xtol": 1e-4}  # anyway; a rate-and-state evaluation is dear
     nvary = len(problem.free) - (hold is not None)
     # a start that crawls along a kinked valley for thousands of evaluations does not win:
     # the budget is LOCAL_BUDGET evaluations per varied parameter
@@ -229,8 +229,13 @@ def least_squares(problem: Problem, x0: NDArray, bounds, hold: int | None = None
         return it + nvary * spent["jacobians"] > budget
 
     fast = leastsq(params, budget, Dfun=jacobian, col_deriv=0, iter_cb=over_budget)
-    if problem.curved:  # its Jacobian is already the solver's differences (MDR_STEP)
+    if problem.differenced:  # its Jacobian is already the solver's differences
         fast.nfev = int(fast.nfev) + 2 * nvary * spent["jacobians"]
+        if not hasattr(fast, "chisqr"):  # stopped by the budget: lmfit leaves no statistics
+            r = problem.residual(ln_of(fast, problem.free))
+            fast.chisqr = float(r @ r)
+            fast.redchi = fast.chisqr / max(r.size - nvary, 1)
+            fast.covar = None
         return fast
     # then lmfit's differences from there: the model bends on scales below their step
     # (stick-slip patterns that change), where the exact local slope can stop at a

@@ -13,7 +13,7 @@ import lmfit
 import numpy as np
 from numpy.typing import NDArray
 
-from .problem import Problem
+from .problem import LAW_FITTABLE, Problem
 from .search import Stages, least_squares, ln_of, local_fit
 
 #: Correlations beyond this in modulus are reported as a warning.
@@ -384,7 +384,8 @@ def identifiability(out, problem: Problem, ln: NDArray, bounds,
     free = problem.free
     for n in pinned(free, ln, bounds):
         lo, hi = bounds[free.index(n)]
-        warnings.append(f"{n} is at the bound of its search range ({math.exp(lo):.3g} .. "
+        what = "mu_static/mu0 " if n == "mu_static" else ""  # its coordinate is the ratio's
+        warnings.append(f"{n} is at the bound of its search range ({what}{math.exp(lo):.3g} .. "
                         f"{math.exp(hi):.3g}): the data push it out; widen span or fix it")
     jac = jacobian_at(problem, ln) if jac is None else jac
     if jac is not None and len(free) > 1:
@@ -411,10 +412,11 @@ def identifiability(out, problem: Problem, ln: NDArray, bounds,
 def jacobian_at(problem: Problem, ln: NDArray, step: float = 1e-4) -> NDArray | None:
     """Central differences of the residuals in ``ln`` (columns: free parameters).
 
-    A curved contact's are :meth:`Problem.jacobian`'s (the MDR solver's value moves in steps of
-    its error bar: a step of 1e-4 would difference those).
+    A curved contact's and rate-and-state friction's are :meth:`Problem.jacobian`'s (the MDR
+    solver's value moves in steps of its error bar: a step of 1e-4 would difference those; the
+    rate-and-state solver's error, ~1e-7, wants a longer step than 1e-4 too).
     """
-    if problem.curved:
+    if problem.differenced:
         jac = problem.jacobian(ln)
         return jac if np.all(np.isfinite(jac)) else None
     cols = []
@@ -486,3 +488,60 @@ def _combination(a: str, b: str, power: float) -> str:
     if p == 1.0:
         return f"{a}*{b}"
     return f"{a}*{b}^{p:g}"
+
+
+#: What a law's parameter needs of the data, said where its column of the Jacobian is flat.
+LAW_NEEDS = {
+    "mu_static": "the static coefficient acts only where the contact sticks: rows of slower "
+                 "sliding or larger amplitude, where it sticks for part of the cycle",
+    "d_c": "steady sliding does not depend on d_c: it needs rows where the state cannot follow "
+           "the slip rate, the oscillation's period comparable to d_c/v0 (omega d_c/v0 near 1)",
+    "a": "a moves the model only through the slip rate's response",
+    "b": "b moves the model only through the state",
+}
+
+
+def law_warnings(problem: Problem, ln: NDArray, jac: NDArray | None
+                 ) -> tuple[list[str], dict[str, str]]:
+    """What the data cannot tell of a local friction law: sentences, and combinations held.
+
+    From the Jacobian in ``ln`` at ``ln`` (``jac``, :func:`jacobian_at`): a free law parameter
+    (``mu_static``, ``a``, ``b``, ``d_c``) whose column is flat (weighted: moving the
+    chi-square by less than 1 over a factor ``e``; unweighted: below :data:`WEAK` of the
+    largest column)
+    gets a sentence saying what the data would need (:data:`LAW_NEEDS`); free ``a`` and ``b``
+    whose only combination the data see is ``a - b`` (their derivative along ``da = db``,
+    ``J_a/a + J_b/b``, below :data:`WEAK` of each alone: at constant load and steady
+    sliding ``mu_ss = mu_star + (a - b) ln(v/v_ref)`` to within ``exp(-2 mu_star/a)``) get a
+    sentence naming it and the combination ``"a - b"`` for both.
+    """
+    free = problem.free
+    law = [n for n in free if n in LAW_FITTABLE]
+    if jac is None or not law:
+        return [], {}
+    norms = np.linalg.norm(jac, axis=0)
+    top = float(norms.max())
+    out: list[str] = []
+    combos: dict[str, str] = {}
+    for n in law:
+        # weighted: the chi-square's own scale (a jump of another column, where a row changes
+        # its stick-slip pattern within the step, does not make this one look flat)
+        flat = (norms[free.index(n)] < 1.0 if problem.weighted else
+                top == 0.0 or (len(free) > 1 and norms[free.index(n)] < WEAK * top))
+        if flat:
+            out.append(f"{n} does not move the model at these rows (its chi-square changes by "
+                       f"{norms[free.index(n)] ** 2:.2g} over a factor e): {LAW_NEEDS[n]}")
+    if "a" in free and "b" in free:
+        ja, jb = jac[:, free.index("a")], jac[:, free.index("b")]
+        named = problem.named(ln)
+        a, b = named["a"], named["b"]
+        along = np.linalg.norm(ja / a + jb / b)
+        alone = min(np.linalg.norm(ja / a), np.linalg.norm(jb / b))
+        if alone > 0.0 and along < WEAK * alone:
+            out.append(f"a and b are not separated by these data: they determine a - b only "
+                       f"(a change of both by the same amount moves the model by "
+                       f"{along / alone:.1e} of a change of one; steady sliding at constant "
+                       "load gives mu_ss(v) = mu_star + (a - b) ln(v/v_ref)): fix one, or add "
+                       "rows where the oscillation makes the slip rate vary within the cycle")
+            combos.update(a="a - b", b="a - b")
+    return out, combos
