@@ -193,19 +193,6 @@ class Physical:
         """``mu_static / mu0`` (1 for Coulomb friction)."""
         return 1.0 if self.mu_static is None else self.mu_static / self.mu0
 
-    def check_coulomb(self, what: str) -> None:
-        """Refuse, naming ``what`` (``"the fit"``), a local law other than Coulomb's.
-
-        For the parts of the package that carry only Coulomb friction so far.
-        """
-        if self.friction is not None:
-            raise ValueError(f"{what} does not take rate-and-state friction yet (friction = "
-                             f"{self.friction!r}): leave friction=None")
-        if self.static_ratio != 1.0:
-            raise ValueError(f"{what} does not take a static coefficient above the kinetic "
-                             f"one yet (mu_static = {self.mu_static!r}, mu0 = {self.mu0!r}): "
-                             "leave mu_static=None")
-
     def friction_fields(self, omega: float | None = None) -> dict[str, float | str]:
         """The friction law's fields of :class:`Dimensionless` at ``omega`` (this pin's if None).
 
