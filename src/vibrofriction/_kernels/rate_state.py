@@ -129,6 +129,8 @@ ERROR_SAFETY = 2.0
 NEWTON_ITERATIONS = 16
 NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
+LOOSE_RTOL = 1e-4  # the tolerance of the settling periods and of Newton's first maps
+FORCING = 0.001  # an inexact Newton map's tolerance: FORCING times the squared residual
 SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
 # steps are poor: the period map is far from linear)
 FIRST_CHECK = 16  # the first checkpoint of the running average, doubling
@@ -850,9 +852,10 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     tol = 10.0 * rtol
     res[3] = 0.0
     d_first = math.inf
+    rt = max(rtol, LOOSE_RTOL)
     for it in range(NEWTON_ITERATIONS):
         z1[:] = z0
-        ok, mu = _tangent_map(P, z1, rtol, hbox, work, count, tw, log, lp, D, gmu)
+        ok, mu = _tangent_map(P, z1, rt, hbox, work, count, tw, log, lp, D, gmu)
         maps += 1
         if not ok:
             break
@@ -865,7 +868,7 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
             break  # diverged, or not converging: left to the motion
         if not _newton_step(D, z0, z1, dz):
             break  # singular: no orbit found here
-        if d <= tol * s:
+        if d <= tol * s and rt == rtol:
             shift = 0.0
             for r in range(NM):
                 shift += gmu[r] * dz[r]
@@ -881,6 +884,9 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
         cut = min(1.0, 0.5 * s / step) if step > 0.0 else 1.0
         for r in range(NM):
             z0[r] += cut * dz[r]
+        # inexact Newton: the next map's tolerance well below the residual it should show
+        # (about the square of this one), the last ones' at rtol
+        rt = max(rtol, min(LOOSE_RTOL, FORCING * (d / s) ** 2))
     res[3] = maps
     return False
 
@@ -960,7 +966,9 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                     nchk = 0
         if k >= max_periods:
             break
-        ok, mu = _map_mean(P, z, rtol, hbox, work, count, tw, log, lp)
+        # the settling periods only approach the orbit (Newton's method corrects): loose
+        rt = max(rtol, LOOSE_RTOL) if k < SETTLE else rtol
+        ok, mu = _map_mean(P, z, rt, hbox, work, count, tw, log, lp)
         periods += 1.0
         if not ok:
             failed = True
