@@ -25,8 +25,11 @@ accurate), the analytic Jacobian and time derivative, step control on
 phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
 where ``|f| = n |m|`` is below round-off of the averages.
 
-The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
-method on the period map with its exact Jacobian: the variational equations ``T' = J T``
+The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start (at the loose
+tolerance ``LOOSE_RTOL``: they only approach the orbit), then Newton's method on the period
+map (inexact: a map's tolerance ``FORCING`` times the squared residual of the iterate before,
+at most ``LOOSE_RTOL``; convergence is only declared on a map at ``rtol``) with its exact
+Jacobian: the variational equations ``T' = J T``
 ride along the state in the same Rosenbrock steps (:func:`_tangent_stage`: the augmented
 system is block-triangular, so its stages are linear solves with the state's factors), the
 cuts' saltation matrices are the Jacobians of their resets (the cuts are at fixed phases),
