@@ -592,9 +592,12 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
 
 @jit
 def _workspace():
-    """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew)``."""
+    """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew, tw)``, ``tw`` those of
+    the variational equations (:func:`_tangent_workspace`), which a segment without them
+    passes along unused (allocated once, not per segment).
+    """
     return (np.empty((4, NZ)), np.empty((6, NZ)), np.empty((NZ, NM)), np.empty((NM, NM)),
-            np.empty(NM, np.int64), np.empty(NZ))
+            np.empty(NM, np.int64), np.empty(NZ), _tangent_workspace())
 
 
 @jit
@@ -625,13 +628,13 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
     ``MAX_STEPS`` were taken.
     """
     return _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, False,
-                    _tangent_workspace())
+                    work[6])
 
 
 @jit
 def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangent, tw):
     """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``)."""
-    ws, K, J, M, piv, znew = work
+    ws, K, J, M, piv, znew = work[0], work[1], work[2], work[3], work[4], work[5]
     T, Tnew = tw[0], tw[1]
     t = t0
     steps = 0
@@ -697,7 +700,7 @@ def _period(P, z, rtol, hbox, work, count, log, lp):
     """:func:`rs_period`, its steps recorded where ``lp[1]`` says so (:func:`_segment`;
     ``lp[0]`` is reset to the start of ``log``).
     """
-    return _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, _tangent_workspace())
+    return _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, work[6])
 
 
 @jit
@@ -907,7 +910,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
     res = np.zeros(4)
-    tw = _tangent_workspace()
+    tw = work[6]
     log = np.empty(1)  # no step log
     lp = np.zeros(2, np.int64)
     dzf = np.empty(NM)
