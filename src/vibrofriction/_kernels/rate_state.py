@@ -25,8 +25,11 @@ accurate), the analytic Jacobian and time derivative, step control on
 phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
 where ``|f| = n |m|`` is below round-off of the averages.
 
-The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start, then Newton's
-method on the period map with its exact Jacobian: the variational equations ``T' = J T``
+The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start (at the loose
+tolerance ``LOOSE_RTOL``: they only approach the orbit), then Newton's method on the period
+map (inexact: a map's tolerance ``FORCING`` times the squared residual of the iterate before,
+at most ``LOOSE_RTOL``; convergence is only declared on a map at ``rtol``) with its exact
+Jacobian: the variational equations ``T' = J T``
 ride along the state in the same Rosenbrock steps (:func:`_tangent_stage`: the augmented
 system is block-triangular, so its stages are linear solves with the state's factors), the
 cuts' saltation matrices are the Jacobians of their resets (the cuts are at fixed phases),
@@ -129,6 +132,8 @@ ERROR_SAFETY = 2.0
 NEWTON_ITERATIONS = 16
 NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
+LOOSE_RTOL = 1e-4  # the tolerance of the settling periods and of Newton's first maps
+FORCING = 0.001  # an inexact Newton map's tolerance: FORCING times the squared residual
 SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
 # steps are poor: the period map is far from linear)
 FIRST_CHECK = 16  # the first checkpoint of the running average, doubling
@@ -587,9 +592,12 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
 
 @jit
 def _workspace():
-    """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew)``."""
+    """Scratch arrays of the integrator: ``(ws, K, J, M, piv, znew, tw)``, ``tw`` those of
+    the variational equations (:func:`_tangent_workspace`), which a segment without them
+    passes along unused (allocated once, not per segment).
+    """
     return (np.empty((4, NZ)), np.empty((6, NZ)), np.empty((NZ, NM)), np.empty((NM, NM)),
-            np.empty(NM, np.int64), np.empty(NZ))
+            np.empty(NM, np.int64), np.empty(NZ), _tangent_workspace())
 
 
 @jit
@@ -620,13 +628,13 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
     ``MAX_STEPS`` were taken.
     """
     return _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, False,
-                    _tangent_workspace())
+                    work[6])
 
 
 @jit
 def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangent, tw):
     """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``)."""
-    ws, K, J, M, piv, znew = work
+    ws, K, J, M, piv, znew = work[0], work[1], work[2], work[3], work[4], work[5]
     T, Tnew = tw[0], tw[1]
     t = t0
     steps = 0
@@ -692,7 +700,7 @@ def _period(P, z, rtol, hbox, work, count, log, lp):
     """:func:`rs_period`, its steps recorded where ``lp[1]`` says so (:func:`_segment`;
     ``lp[0]`` is reset to the start of ``log``).
     """
-    return _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, _tangent_workspace())
+    return _period_tangent(P, z, rtol, hbox, work, count, log, lp, False, work[6])
 
 
 @jit
@@ -850,9 +858,10 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     tol = 10.0 * rtol
     res[3] = 0.0
     d_first = math.inf
+    rt = max(rtol, LOOSE_RTOL)
     for it in range(NEWTON_ITERATIONS):
         z1[:] = z0
-        ok, mu = _tangent_map(P, z1, rtol, hbox, work, count, tw, log, lp, D, gmu)
+        ok, mu = _tangent_map(P, z1, rt, hbox, work, count, tw, log, lp, D, gmu)
         maps += 1
         if not ok:
             break
@@ -865,7 +874,7 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
             break  # diverged, or not converging: left to the motion
         if not _newton_step(D, z0, z1, dz):
             break  # singular: no orbit found here
-        if d <= tol * s:
+        if d <= tol * s and rt == rtol:
             shift = 0.0
             for r in range(NM):
                 shift += gmu[r] * dz[r]
@@ -881,6 +890,9 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
         cut = min(1.0, 0.5 * s / step) if step > 0.0 else 1.0
         for r in range(NM):
             z0[r] += cut * dz[r]
+        # inexact Newton: the next map's tolerance well below the residual it should show
+        # (about the square of this one), the last ones' at rtol
+        rt = max(rtol, min(LOOSE_RTOL, FORCING * (d / s) ** 2))
     res[3] = maps
     return False
 
@@ -898,7 +910,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
     res = np.zeros(4)
-    tw = _tangent_workspace()
+    tw = work[6]
     log = np.empty(1)  # no step log
     lp = np.zeros(2, np.int64)
     dzf = np.empty(NM)
@@ -960,7 +972,9 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                     nchk = 0
         if k >= max_periods:
             break
-        ok, mu = _map_mean(P, z, rtol, hbox, work, count, tw, log, lp)
+        # the settling periods only approach the orbit (Newton's method corrects): loose
+        rt = max(rtol, LOOSE_RTOL) if k < SETTLE else rtol
+        ok, mu = _map_mean(P, z, rt, hbox, work, count, tw, log, lp)
         periods += 1.0
         if not ok:
             failed = True
