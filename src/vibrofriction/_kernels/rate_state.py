@@ -754,13 +754,16 @@ def contact_state(P, z):
 def sliding_start(P, offset):
     """Steady sliding at ``V`` before the oscillation: ``theta = d_c/V``, ``f = mu_ss(V)``,
     ``e = f/k``, ``x' = V``, ``y = -f/alpha`` (laboratory frame, then the kernels').
+
+    The oscillation starts at ``tau = 0``, where ``n = 1 + A``: the spring's force ``f`` is
+    continuous there, so the local coefficient starts at ``m = f/n = mu_ss/(1 + A)``.
     """
     V = P[P_V]
     f = steady_mu(V, P[P_RA], P[P_RB], P[P_DC], P[P_VREF])
     z = np.zeros(NZ)
     z[Z_Y] = -f / P[P_ALPHA] - offset[0]
     z[Z_V] = V - offset[1]
-    z[Z_M] = f  # n = 1 before the oscillation
+    z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
     z[Z_L] = math.log(P[P_DC] / V)
     return z
 

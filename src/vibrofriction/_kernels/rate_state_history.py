@@ -63,10 +63,8 @@ def rs_cuts(p):
 def rs_start(p, steady, rtol, max_periods, tol_mean, out_f, out_i):
     """The state ``z`` at ``tau = 0`` (kernels' frame) of the point row ``p``, quadratures 0.
 
-    Steady sliding at ``V`` before the oscillation (:func:`.rate_state.sliding_start`),
-    the oscillation switched on at ``tau = 0``: the spring's force ``f = mu_ss(V)`` is
-    continuous there, so the local coefficient starts at ``m = f/n(0) = mu_ss/(1 + A)``
-    (``sliding_start`` leaves ``m = mu_ss``, the force ``(1 + A) mu_ss``).  With ``steady``
+    Steady sliding at ``V`` before the oscillation (:func:`.rate_state.sliding_start`: the
+    spring's force ``f = mu_ss(V)`` continuous at ``tau = 0``).  With ``steady``
     the last section state of :func:`.rate_state.rs_steady_state` from the solver's own
     start (its output rows into ``out_f``, ``out_i``).
     """
@@ -75,8 +73,6 @@ def rs_start(p, steady, rtol, max_periods, tol_mean, out_f, out_i):
     z = sliding_start(P, offset)
     if steady:
         rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i)
-    else:
-        z[Z_M] /= 1.0 + P[P_A]
     z[Z_F] = 0.0
     z[Z_D] = 0.0
     z[Z_G] = 0.0
