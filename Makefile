@@ -6,8 +6,9 @@ OUT    ?= reproduction
 # tests of a module run on one worker (--dist loadfile), so that a module-scoped fixture (a
 # wheel, a reproduction, a sweep, the site) is computed once; the modules go out in the
 # order of tests/conftest.py (the longest first), not by their number of tests as xdist's
-# default would (--no-loadscope-reorder). The 25 slowest tests are listed at the end. Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest
-# caches its rewritten test modules there (about 20 s of collection per worker otherwise)
+# default would (--no-loadscope-reorder). The 25 slowest tests are listed at the end.
+# Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest caches its
+# rewritten test modules there (about 20 s of collection per worker otherwise)
 PYTEST_WORKERS ?= auto
 PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) \
          --dist loadfile --no-loadscope-reorder --durations=25
