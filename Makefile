@@ -4,14 +4,16 @@ BIN     = $(VENV)/bin
 OUT    ?= reproduction
 # pytest-xdist: one test process per core (-n auto; PYTEST_WORKERS=0 for one process); the
 # tests of a module run on one worker (--dist loadfile), so that a module-scoped fixture (a
-# wheel, a reproduction, a sweep, the site) is computed once. The 25 slowest tests are
-# listed at the end. Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest
-# caches its rewritten test modules there (about 20 s of collection per worker otherwise)
+# wheel, a reproduction, a sweep, the site) is computed once; the modules go out in the
+# order of tests/conftest.py (the longest first), not by their number of tests as xdist's
+# default would (--no-loadscope-reorder). The 25 slowest tests are listed at the end.
+# Bytecode is written even where PYTHONDONTWRITEBYTECODE is set: pytest caches its
+# rewritten test modules there (about 20 s of collection per worker otherwise)
 PYTEST_WORKERS ?= auto
 PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) \
-         --dist loadfile --durations=25
+         --dist loadfile --no-loadscope-reorder --durations=25
 
-.PHONY: demo test fast lint typecheck dist bench clean clean-cache browser docs
+.PHONY: demo warmup test fast lint typecheck dist bench clean clean-cache browser docs
 
 # The package and what it needs to run (make demo); the tools of the tests on top (make test)
 $(BIN)/vibrofriction: pyproject.toml
@@ -28,6 +30,11 @@ demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 	$(BIN)/vibrofriction reproduce --out $(OUT)
 	@echo "the command line: .venv/bin/vibrofriction --help (or 'source .venv/bin/activate' first)"
 
+# numba's cache filled on both cores before the site's examples and the tests run (else the
+# site compiles on one core, and both test workers compile the kernels they start with)
+warmup: $(BIN)/vibrofriction  ## compile the solver's kernels now (a load where they are cached)
+	$(BIN)/vibrofriction warmup --no-progress
+
 browser:  ## the distribution's headless Chromium for the explorer's browser tests
 	command -v chromium >/dev/null || (apt-get update && apt-get install -y --no-install-recommends chromium)
 
@@ -42,7 +49,7 @@ docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as err
 # The test lanes (docs/packaging.md, "Test lanes"):
 # * make test: every test (fast, slow and browser), the site built first; CI runs it
 # * make fast: the tests not marked slow or browser, stopping at the first failure
-test: $(VENV)/.dev browser docs  ## the whole test suite, site, slow and browser tests included
+test: $(VENV)/.dev browser warmup docs  ## the whole test suite, site, slow and browser tests included
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/mypy

@@ -30,3 +30,18 @@ def test_test_modules_have_unique_names_and_sit_in_a_layer_folder():
     assert not twice, twice
     assert all(p.parent.parent == TESTS for p in modules), \
         [str(p.relative_to(TESTS)) for p in modules if p.parent.parent != TESTS]
+
+
+def test_the_longest_modules_are_named_as_they_are_and_collected_first(request):
+    """Every module of conftest's HEAVY_FIRST exists (a renamed one would lose its place
+    silently), and in this session's collection the listed modules come first, in their
+    order (the order xdist hands out with --no-loadscope-reorder)."""
+    from conftest import HEAVY_FIRST
+
+    missing = [name for name in HEAVY_FIRST if not (TESTS / name).is_file()]
+    assert not missing, missing
+    assert len(set(HEAVY_FIRST)) == len(HEAVY_FIRST)
+    seen = list(dict.fromkeys(Path(item.path).relative_to(TESTS).as_posix()
+                              for item in request.session.items))
+    rank = [HEAVY_FIRST.index(m) if m in HEAVY_FIRST else len(HEAVY_FIRST) for m in seen]
+    assert rank == sorted(rank), seen
