@@ -23,7 +23,6 @@ from .rate_state import (
     CONTACT,
     FLIGHT,
     NZ,
-    P_A,
     Z_D,
     Z_F,
     Z_G,
