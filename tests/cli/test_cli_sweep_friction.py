@@ -124,15 +124,12 @@ def test_a_physical_sweep_takes_mu_static_and_holds_the_rate_and_state_law(capsy
      "alpha_ld = 0.001 > 0 needs b > 0"),
     ((*PHYS, "--v0", "0.01", *LAW_SI, "--mu-static", "0.4"),
      "mu_static is a law of Coulomb friction"),
-    ((*PHYS, "--v0", "0.01", "--mu-static", "0.45", "--profile-exponent", "2"),
-     "got static_ratio = 1.5 in the grid"),
+    ((*PHYS, "--v0", "0.01", *LAW_SI, "--profile-exponent", "2"),
+     "does not take rate-and-state friction (rs_a > 0): got rs_a = 0.02 in the grid"),
 ])
 def test_friction_options_are_refused_rather_than_ignored(capsys, tmp_path, monkeypatch,
                                                           args, words) -> None:
     monkeypatch.chdir(tmp_path)
-    if "--profile-exponent" in args and "mdr" not in {
-            c.name for c in vf.capabilities.refused_by("static_ratio")}:
-        pytest.skip("the MDR solver takes a static coefficient")
     line = _refused(capsys, *args)
     assert words in line, line
     assert not (tmp_path / "x.zarr").exists()
