@@ -180,3 +180,27 @@ def test_fit_of_a_friction_law_from_the_command_line(tmp_path):
     bad = _cli("fit", str(data), "--bench", str(bench), "--mu-static", "0.2", "--free",
                "mu_static")
     assert bad.returncode == 2 and "mu_static must be >= mu0" in bad.stderr, bad.stderr
+
+
+@pytest.mark.slow
+def test_design_of_a_pin_with_a_friction_law_from_the_command_line(tmp_path):
+    """``--mu-static`` reaches the design: its map is the library's for that pin, and the
+    report names the law; a rate-and-state pin's in-plane design is refused by name."""
+    bench = tmp_path / "flat.json"
+    bench.write_text(json.dumps(FLAT))
+    ranges = ("--v0", "0.01", "--frequency-hz", "300:3000", "--du-z", "0:5e-7")
+    out = _cli("design", "--bench", str(bench), *ranges, "--mu-static", "0.4", "--out",
+               str(tmp_path / "design"))
+    assert out.returncode == 0, out.stderr
+    assert "local friction: static above kinetic, mu_static = 0.4, mu0 = 0.3" in out.stdout
+    table = out.stdout.split("sensitivity (COF):")[1].splitlines()
+    assert any(line.strip().startswith("mu_static +") for line in table), out.stdout
+    saved = xr.open_zarr(tmp_path / "design" / "map.zarr", consolidated=False)
+    pin = vf.from_bench_file(bench).with_(mu_static=0.4)
+    ref = vf.bench.design(pin, v0=0.01, omega=(2 * np.pi * 300, 2 * np.pi * 3000),
+                          du_z=(0.0, 5e-7))
+    np.testing.assert_array_equal(saved.mu_ratio.values, ref.map.mu_ratio.values)
+    bad = _cli("design", "--bench", str(bench), *ranges, "--du-x", "0:1e-6", "--friction-a",
+               "0.008", "--friction-b", "0.003", "--friction-d-c", "2e-6", "--friction-v-ref",
+               "0.01")
+    assert bad.returncode == 2 and "rate-and-state friction" in bad.stderr, bad.stderr

@@ -8,9 +8,13 @@ from __future__ import annotations
 
 import math
 import re
+from typing import TYPE_CHECKING
 
 from ._app import Args, Command, parse_float
 from ._options import FLOAT, FRICTION_SI, INT, Opt, choice_option, parameter_option, with_
+
+if TYPE_CHECKING:
+    from ..params import Physical
 
 
 def _fixes(text: str | None) -> dict[str, float]:
@@ -33,6 +37,15 @@ def _range(text: str, name: str, scale: float = 1.0) -> tuple[float, float]:
     return parse_float(lo, name) * scale, parse_float(hi, name) * scale
 
 
+def _with_law(a: Args, pin: Physical) -> Physical:
+    """``pin`` with the local friction law of the options (``--mu-static``, ``--friction-*``)."""
+    from .mu import _friction
+
+    if a.has("mu_static") or a.has("friction_a"):
+        return pin.with_(mu_static=a["mu_static"], friction=_friction(a))
+    return pin
+
+
 def run_fit(a: Args) -> None:
     """Fit (lmfit, the figures are imported here)."""
     from pathlib import Path
@@ -40,7 +53,6 @@ def run_fit(a: Args) -> None:
     from ..bench import fit, from_bench_file, read_bench_file
     from ..contact import FlatPunch, Sphere
     from ..figures import plot_fit, plot_profiles
-    from .mu import _friction
 
     bench, free = a["bench"], a["free"]
     guess = from_bench_file(bench)
@@ -53,8 +65,7 @@ def run_fit(a: Args) -> None:
                                     else "E_star"))
     if a["fix"]:
         guess = guess.with_(**_fixes(a["fix"]))
-    if a.has("mu_static") or a.has("friction_a"):  # the guess's local friction law
-        guess = guess.with_(mu_static=a["mu_static"], friction=_friction(a))
+    guess = _with_law(a, guess)
     try:
         res = fit(a["data"], guess, free=[f.strip() for f in free.split(",") if f.strip()],
                   natural_frequency=a["natural_frequency"], normal_load=a["normal_load"],
@@ -84,7 +95,7 @@ def run_design(a: Args) -> None:
     def maybe_range(name: str) -> tuple[float, float] | None:
         return None if a[name] is None else _range(a[name], name)
 
-    pin = from_bench_file(a["bench"])
+    pin = _with_law(a, from_bench_file(a["bench"]))
     res = design(pin, v0=a["v0"], omega=_range(a["frequency_hz"], "frequency_hz",
                                                 2.0 * math.pi),
                  du_z=_range(a["du_z"], "du_z"),
@@ -161,6 +172,11 @@ DESIGN = Command(
          choices=("friction", "drive"), default="friction", metavar="{friction,drive}"),
      Opt("velocity_rule", "combined (omega sqrt(du_z^2 + du_x^2)) or each", kind="choice",
          choices=("combined", "each"), default="combined", metavar="{combined,each}"),
+     with_(parameter_option("mu_static"), help="the pin's static coefficient of friction "
+           "(docs/friction_laws.md)"),
+     *(with_(o, help=o.help.replace("of a physical set-up", "of the pin")) for o in
+       FRICTION_SI),
+     choice_option("rs_law", requires=("friction_a",)),
      Opt("out", "folder for report.txt, map.png, map.zarr", kind="text", default="design",
          metavar="DIR")),
     run_design)

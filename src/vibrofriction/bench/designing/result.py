@@ -106,6 +106,12 @@ class DesignResult:
                     lines.append(f"blocking force: mu/mu0 = {self.blocking[0]:+.5g} at V -> 0+, "
                                  f"{self.blocking[1]:+.5g} at V -> 0-{flag}")
                 lines.append(f"idle velocity: {self.idle_message}")
+        if s.friction is not None:
+            lines.append(f"local friction: rate-and-state, {s.friction!r}, mu_star = mu0 = "
+                         f"{s.mu0:g}")
+        elif s.static_ratio != 1.0:
+            lines.append(f"local friction: static above kinetic, mu_static = {s.mu_static:g}, "
+                         f"mu0 = {s.mu0:g}")
         lines += [f"status: {self.status}: {self.message}"]
         if self.directions is not None:
             lines.append("which direction (best within the same limits):")
