@@ -118,7 +118,7 @@ BENCH_LAW = {
                    Field("friction_alpha_ld", "alpha_ld (Linker-Dieterich)", 0.0, 0.2,
                          log=False)),
 }
-#: the most points of a rate-and-state curve (~0.1 s a point, more near stick-slip)
+#: the most points of a rate-and-state curve (~5-10 ms a point, more near stick-slip)
 LAW_POINTS = 40
 
 

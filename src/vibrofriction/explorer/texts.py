@@ -148,7 +148,7 @@ def status_text(state: State) -> str:
                 f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
                 "a few tenths near the onset of sliding)...")
     if state.friction == "rate_state" and not state.curved:
-        return (f"computing {state.curve_points} points by the rate-and-state solver (~0.1 s a "
+        return (f"computing {state.curve_points} points by the rate-and-state solver (~10 ms a "
                 "point; the first curve after an install compiles its kernels, about a "
                 "minute)...")
     return f"computing {state.curve_points} points..."

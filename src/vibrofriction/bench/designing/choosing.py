@@ -17,7 +17,7 @@ CURVED_MAP = (25, 9)
 
 
 CURVED_STARTS = 3
-#: A pin with rate-and-state friction (the rate-and-state solver, ~10 ms a point, ~100 times
+#: A pin with rate-and-state friction (the rate-and-state solver, ~5 ms a point, ~60 times
 #: the event solver): the curved pin's smaller map and refinements (:data:`CURVED_MAP`,
 #: :data:`CURVED_STARTS`), the normal oscillation only.
 RATE_STATE_MAP = CURVED_MAP
@@ -120,7 +120,7 @@ def _refuse_for_rate_state(pin: Physical, *, du_x, du_y, goal) -> None:
         if given:
             raise ValueError(f"a pin with rate-and-state friction (friction = {pin.friction!r}) "
                              f"is designed for the normal oscillation only, not {name}: the "
-                             "rate-and-state solver costs ~100 times the event solver a point "
+                             "rate-and-state solver costs ~60 times the event solver a point "
                              "(an in-plane map of ~50 000 points) and does not take the "
                              "transverse oscillation nor a negative velocity")
 

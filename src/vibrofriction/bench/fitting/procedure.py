@@ -48,7 +48,7 @@ from .uncertainty import (
 CURVED_TOL = 1e-4
 #: The global search's local starts and screened points without ``starts``, ``screen``: a
 #: flat punch's, and a curved contact's or rate-and-state friction's (the MDR solver is ~30
-#: times slower a point, the rate-and-state solver ~100 times).
+#: times slower a point, the rate-and-state solver ~60 times).
 SEARCH = (12, 512)
 CURVED_SEARCH = (3, 32)
 
