@@ -168,8 +168,9 @@ def point_text(curve: dict, i: int) -> str:
 
     trusted = bool(np.asarray(curve["trusted"])[i])
     stick, slip = value('stick_area_fraction', '.3f'), value('slip_area_fraction', '.3f')
-    phases = (f"stick {stick}, slip {slip}" if "none" not in (stick, slip) else
-              "stick and slip not separated by this solver")  # rate-and-state: it creeps
+    creeps = "method" in curve and curve["method"][i] == "rate_state"  # never sticks
+    phases = ("stick and slip not separated by this solver" if creeps else
+              f"stick {stick}, slip {slip}")
     return (f"{curve['y_label']} = {value('y', '.6g')} ({curve['status'][i]}"
             f"{'' if trusted else ', not trusted'}), <F_N>/F_N0 = "
             f"{value('mean_normal_ratio', '.5g')}, contact over the period: {phases}, "
