@@ -21,7 +21,9 @@ friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadr
 reset at each section, integrated by the same steps.  Integrator: RODAS4 (Hairer & Wanner,
 *Solving ODEs II*, IV.7; 6 stages, order 4 with an embedded order 3, L-stable, stiffly
 accurate), the analytic Jacobian and time derivative, step control on
-``max |err_i|/(rtol (1 + |z_i|))``.  Lift-off and touch-down are at the closed-form
+``max |err_i|/(rtol (s_i + |z_i|))`` with ``s_i = 1`` but for ``L``, whose error counts by
+its effect on the friction, ``b dL`` (:func:`_scales`; the section distance weighs it the
+same way).  Lift-off and touch-down are at the closed-form
 phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
 where ``|f| = n |m|`` is below round-off of the averages.
 
@@ -37,7 +39,9 @@ and the tangent's error is part of the step control at ``TANGENT_RTOL`` times th
 tolerance.  The monodromy matrix and the gradient of the period's mean so come from one
 integration per Newton step, and the multiplier (the spectral radius of the monodromy at
 the converged orbit) is exact to the integration's tolerance.  An attracting orbit found
-(the multiplier below 1) is refined by one map at ``rtol/REFINE`` and one chord step: the
+(the multiplier below 1) is refined by one map at ``rtol/REFINE`` and one chord step
+(:func:`_refine`; close to an orbit that attracts well, that map also confirms Newton's
+convergence in place of a second map at ``rtol``): the
 answer is the refined mean, its error twice the change of the mean between the two
 tolerances plus the next Newton step's change of the mean (the integration error
 propagated and the Newton residual).  Otherwise (a response not locked to the drive:
@@ -133,12 +137,15 @@ NEWTON_ITERATIONS = 16
 NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
 LOOSE_RTOL = 1e-4  # the tolerance of the settling periods and of Newton's first maps
+SHORTCUT = 1e-3  # a residual below which a map at rtol is not repeated (:func:`_newton`)
+NEAR_NEUTRAL = 1e-3  # ... unless the multiplier is within this of 1
 FORCING = 0.001  # an inexact Newton map's tolerance: FORCING times the squared residual
 SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
 # steps are poor: the period map is far from linear)
 FIRST_CHECK = 16  # the first checkpoint of the running average, doubling
 KICK = 1e-3  # relative velocity kick off a repelling orbit the motion sits on
 ROUNDOFF_MU = 1e-13
+L_WEIGHT_FLOOR = 0.01  # the least weight of ln theta's error, in units of a (:func:`_scales`)
 
 # RODAS4 (Hairer & Wanner, Solving ODEs II, Sect. IV.7; rodas.f, ROCOE with METH = 1)
 GAM = 0.25
@@ -584,8 +591,10 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
                 Tnew[r, c] = Ts[r, c] + KT[5, r, c]
                 if not math.isfinite(Tnew[r, c]):
                     return math.inf
-                sc = rtol * (1.0 + max(abs(T[r, c]), abs(Tnew[r, c])))
-                err = max(err, abs(KT[5, r, c]) / (TANGENT_RTOL * sc))
+                # in the components' weighted units (:func:`_scales`): T[r, c] w_r/w_c
+                wrc = scale[c] / scale[r]
+                sc = rtol * (1.0 + wrc * max(abs(T[r, c]), abs(Tnew[r, c])))
+                err = max(err, wrc * abs(KT[5, r, c]) / (TANGENT_RTOL * sc))
     return err
 
 
@@ -613,8 +622,23 @@ def _tangent_workspace():
 
 @jit
 def _scales(P):
-    """The absolute part of the error weights: 1 in the units of each component."""
-    return np.ones(NZ)
+    """The absolute part of the error weights: 1 in the units of each component but
+    ``L = ln theta``, whose error counts by its effect on the friction.
+
+    The law sees ``L`` only as ``b L`` beside ``m`` (``w' ~ exp((m - b L)/a)``): an error
+    ``dL`` acts as an error ``b dL`` of the local coefficient, so ``L``'s absolute
+    tolerance is ``rtol/b`` (``b`` floored at ``L_WEIGHT_FLOOR a``: without ``b`` the state
+    does not act back, and is still integrated to ``rtol/(L_WEIGHT_FLOOR a)``).
+    """
+    scale = np.ones(NZ)
+    scale[Z_L] = 1.0 / _l_weight(P)
+    return scale
+
+
+@jit
+def _l_weight(P):
+    """The weight of ``L = ln theta`` beside ``m``: ``b``, at least ``L_WEIGHT_FLOOR a``."""
+    return max(P[P_RB], L_WEIGHT_FLOOR * P[P_RA])
 
 
 @jit
@@ -777,7 +801,7 @@ def _weights(P, z):
     wv[Z_Y] = P[P_ALPHA]
     wv[Z_V] = 1.0
     wv[Z_M] = 1.0 + P[P_A]  # the force at tau = 0
-    wv[Z_L] = 1.0
+    wv[Z_L] = _l_weight(P)  # by its effect on the friction, as in the step control
     s = 1.0 + P[P_ALPHA] * abs(z[Z_Y]) + abs(z[Z_V]) + wv[Z_M] * abs(z[Z_M])
     return wv, s
 
@@ -849,10 +873,19 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     Every iterate's map carries the variational equations (:func:`_tangent_map`), so
     ``D`` and ``gmu`` are the exact Jacobian of the period map and the mean's gradient at
     the last iterate (to the integration's tolerance), not a secant's.  ``res`` receives
-    ``(mu, shift, multiplier, maps)``: the orbit's mean, the change of the mean the next
-    Newton step would make (``|gmu . dz|``), the spectral radius of ``D`` and the period
-    maps integrated.  Returns True where the residual fell to the integration's level
-    (``10 rtol`` relative, weighted as the section distance).
+    ``(mu, shift, multiplier, maps, refined, mu_refined, error)``: the orbit's mean, the
+    change of the mean the next Newton step would make (``|gmu . dz|``), the spectral
+    radius of ``D``, the period maps integrated, and whether the orbit is already refined
+    (:func:`_refine`; then its mean and error).  Returns True where the residual fell to
+    the integration's level (``10 rtol`` relative, weighted as the section distance), or
+    where the refinement confirmed it.
+
+    The first map at ``rtol`` close to an attracting orbit (its residual below
+    ``SHORTCUT`` relative, its multiplier below ``1 - NEAR_NEUTRAL``) is not repeated to
+    confirm the convergence: its Newton step is taken and the refinement's map, from the
+    new iterate, is that confirmation (Newton's quadratic convergence leaves a residual of
+    about the square of the step; the refinement checks it).  Near a neutral multiplier the
+    convergence is confirmed at ``rtol`` first, so that the multiplier is the orbit's.
     """
     z0 = z.copy()
     z1 = z.copy()
@@ -860,6 +893,7 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     maps = 0
     tol = 10.0 * rtol
     res[3] = 0.0
+    res[4] = 0.0
     d_first = math.inf
     rt = max(rtol, LOOSE_RTOL)
     for it in range(NEWTON_ITERATIONS):
@@ -877,15 +911,29 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
             break  # diverged, or not converging: left to the motion
         if not _newton_step(D, z0, z1, dz):
             break  # singular: no orbit found here
-        if d <= tol * s and rt == rtol:
-            shift = 0.0
-            for r in range(NM):
-                shift += gmu[r] * dz[r]
+        shift = 0.0
+        for r in range(NM):
+            shift += gmu[r] * dz[r]
+        if rt == rtol and d <= tol * s:
             res[0], res[1] = mu, abs(shift)
             res[2] = _spectral_radius(D)
             res[3] = maps
             z[:] = z0
             return True
+        if rt == rtol and d <= SHORTCUT * s:
+            radius = _spectral_radius(D)
+            if radius < 1.0 - NEAR_NEUTRAL:
+                for r in range(NM):
+                    z0[r] += dz[r]
+                maps += 1
+                if _refine(P, z0, mu + shift, rtol, hbox, work, count, tw, log, lp, D, gmu,
+                           res):
+                    res[2] = radius
+                    res[3] = maps
+                    res[4] = 1.0
+                    z[:] = z0
+                    return True
+                continue  # not converged yet: on from the refined map's start, at rtol
         # a step longer than half the state's scale is cut
         step = 0.0
         for r in range(NM):
@@ -901,6 +949,39 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
 
 
 @jit
+def _refine(P, z, mu_coarse, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
+    """The orbit through (close to) ``z`` at ``rtol/REFINE``: one map and one chord step.
+
+    ``mu_coarse`` is the mean at ``rtol`` carried to ``z`` (the map's mean plus the
+    gradient times the step to ``z``).  Where the refined map's residual is within
+    ``1e3 rtol`` (the integration's difference between the tolerances, which the chord
+    step removes), ``res[5]`` receives the refined mean (the chord step's change
+    included) and ``res[6]`` its error: twice the change of the mean between the two
+    tolerances plus the chord step's change of the mean (the integration error propagated
+    and the Newton residual), and ``z`` the state after the chord step.  Returns whether
+    it was within.
+    """
+    zf = z.copy()
+    ok, muf = _map_mean(P, zf, rtol / REFINE, hbox, work, count, tw, log, lp)
+    if not ok:
+        return False
+    wv, s = _weights(P, z)
+    dzf = np.empty(NM)
+    if not (_newton_step(D, z, zf, dzf) and _distance(wv, z, zf) <= 1e3 * rtol * s):
+        return False
+    shift = 0.0
+    for r in range(NM):
+        shift += gmu[r] * dzf[r]
+    mu = muf + shift
+    res[5] = mu
+    res[6] = max(ERROR_SAFETY * (abs(mu - mu_coarse) + abs(shift)),
+                 ROUNDOFF_MU * (1.0 + abs(mu)))
+    for r in range(NM):
+        z[r] += dzf[r]
+    return True
+
+
+@jit
 def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     """The steady state from the section state ``z`` (kernels' frame); see the module doc.
 
@@ -912,11 +993,10 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     work = _workspace()
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
-    res = np.zeros(4)
+    res = np.zeros(7)
     tw = work[6]
     log = np.empty(1)  # no step log
     lp = np.zeros(2, np.int64)
-    dzf = np.empty(NM)
     D = np.empty((NM, NM))
     gmu = np.empty(NM)
     periods = 0.0  # maps integrated, Newton's included
@@ -940,23 +1020,20 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
             periods += res[3]
             next_newton = 4 * k
             if found and res[2] < NEUTRAL:
-                # the same orbit at rtol/REFINE: one map from it and one chord step; the
-                # change of the mean is the integration's error (a bound of the coarse
-                # value's, reported for the refined one)
-                zf = zn.copy()
-                ok, muf = _map_mean(P, zf, rtol / REFINE, hn, work, count, tw, log, lp)
-                periods += 1.0
-                wv, s = _weights(P, zn)
-                if ok and _newton_step(D, zn, zf, dzf) and \
-                        _distance(wv, zn, zf) <= 1e3 * rtol * s:
-                    shift = 0.0
-                    for r in range(NM):
-                        shift += gmu[r] * dzf[r]
-                        z[r] = zn[r] + dzf[r]
-                    mu = muf + shift
-                    out_f[O_MU] = mu
-                    err = ERROR_SAFETY * (abs(mu - res[0]) + res[1])
-                    out_f[O_ERR] = max(err, ROUNDOFF_MU * (1.0 + abs(mu)))
+                # the same orbit at rtol/REFINE (:func:`_refine`; Newton's method may have
+                # done it already): the change of the mean is the integration's error (a
+                # bound of the coarse value's, reported for the refined one)
+                refined = res[4] == 1.0
+                if not refined:
+                    periods += 1.0
+                    refined = _refine(P, zn, res[0], rtol, hn, work, count, tw, log, lp, D,
+                                      gmu, res)
+                    if refined:  # the last Newton step's change too (the coarse residual)
+                        res[6] += ERROR_SAFETY * res[1]
+                if refined:
+                    z[:NM] = zn[:NM]
+                    out_f[O_MU] = res[5]
+                    out_f[O_ERR] = res[6]
                     out_f[O_MULT] = res[2]
                     status = ST_PERIODIC
                     period = 1
