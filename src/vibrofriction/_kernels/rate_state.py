@@ -404,7 +404,7 @@ def _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i):
 @jit
 def _curvature(P, tau, z, mode, tw):
     """What the tangent's stages need at the step's start ``(tau, z)``: the coefficients
-    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian`) and
+    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian_add`) and
     ``tw[5] = J_t T``, the time derivative of the Jacobian at fixed ``z`` applied to the
     tangent ``T = tw[0]`` (the augmented system's ``f_t``).
 
@@ -453,18 +453,24 @@ def _curvature(P, tau, z, mode, tw):
 
 
 @jit
-def _hessian(cv, p, q, c):
-    """The second derivatives of ``(m', L')`` along the directions ``p`` (a vector) and
-    column ``c`` of ``q`` (:func:`_curvature`).
+def _hessian_add(cv, p, q, out):
+    """Add the second derivatives of ``(m', L')`` along the direction ``p`` (a vector)
+    and each column of ``q`` (:func:`_curvature`) to the rows ``Z_M``, ``Z_L`` of ``out``.
     """
-    pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
-    w, wm, ba = cv[CV_W], cv[CV_WM], cv[CV_BA]
-    d2w = cv[CV_IA2] * w * pm * qm - ba * wm * (pm * qL + pL * qm) + ba * ba * w * pL * qL
-    dwp = wm * pm + cv[CV_WL] * pL
-    dwq = wm * qm + cv[CV_WL] * qL
-    hl = (cv[CV_LWW] * dwp * dwq + cv[CV_LW] * d2w + cv[CV_LWL] * (dwp * qL + pL * dwq)
-          + cv[CV_LLL] * pL * qL)
-    return cv[CV_KN] * d2w, hl
+    pm, pL = p[Z_M], p[Z_L]
+    w, wm, wl, ba = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA]
+    dwp = wm * pm + wl * pL
+    # d2w = cv[CV_IA2] w pm qm - ba wm (pm qL + pL qm) + ba^2 w pL qL, by column
+    c_mm = cv[CV_IA2] * w * pm - ba * wm * pL
+    c_mL = -ba * wm * pm + ba * ba * w * pL
+    lw, lww, lwl, lll = cv[CV_LW], cv[CV_LWW], cv[CV_LWL], cv[CV_LLL]
+    kn = cv[CV_KN]
+    for c in range(NM):
+        qm, qL = q[Z_M, c], q[Z_L, c]
+        d2w = c_mm * qm + c_mL * qL
+        dwq = wm * qm + wl * qL
+        out[Z_M, c] += kn * d2w
+        out[Z_L, c] += lww * dwp * dwq + lw * d2w + lwl * (dwp * qL + pL * dwq) + lll * pL * qL
 
 
 @jit
@@ -473,35 +479,56 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
     RODAS4 stage of the augmented system ``(z, T)``, whose Jacobian is block-triangular,
     ``[[J, 0], [H(., T), J]]``: ``KT_c = (I/(h gam) - J)^-1 (rhs_c + H(K_i, T_c))`` with
     the same factors as the state's stage, the quadrature ``F`` by the triangular structure.
-    ``Js`` is the Jacobian at the stage's point (``J`` itself at stage 0).
+    ``Js`` is the Jacobian at the stage's point (``J`` itself at stage 0).  The columns are
+    the innermost loops (four contiguous numbers: one vector operation each).
     """
-    T, KT, Ts, rT, JtT, cv, col = tw[0], tw[2], tw[3], tw[4], tw[5], tw[6], tw[7]
+    T, KT, Ts, rT, JtT, cv = tw[0], tw[2], tw[3], tw[4], tw[5], tw[6]
     ih = 1.0 / hh
+    hd = hh * RD[i]
     for r in range(NT):
         for c in range(NM):
-            s = T[r, c]
-            for l in range(i):
-                s += RA[i, l] * KT[l, r, c]
-            Ts[r, c] = s
+            Ts[r, c] = T[r, c]
+        for l in range(i):
+            a = RA[i, l]
+            for c in range(NM):
+                Ts[r, c] += a * KT[l, r, c]
     for r in range(NT):
         for c in range(NM):
-            s = hh * RD[i] * JtT[r, c]
-            for j in range(NM):
-                s += Js[r, j] * Ts[j, c]
-            for l in range(i):
-                s += ih * RCC[i, l] * KT[l, r, c]
-            rT[r, c] = s
-    for c in range(NM):
-        hm, hl = _hessian(cv, K[i], T, c)
+            rT[r, c] = hd * JtT[r, c]
         for j in range(NM):
-            col[j] = rT[j, c]
-        col[Z_M] += hm
-        col[Z_L] += hl
-        _lu_solve(M, piv, col)
+            a = Js[r, j]
+            if a != 0.0:
+                for c in range(NM):
+                    rT[r, c] += a * Ts[j, c]
+        for l in range(i):
+            b = ih * RCC[i, l]
+            for c in range(NM):
+                rT[r, c] += b * KT[l, r, c]
+    _hessian_add(cv, K[i], T, rT)
+    # (I/(h gam) - J) KT = rT for the four columns at once, with the state's factors
+    for c in range(NM):
+        p = piv[c]
+        if p != c:
+            for q in range(NM):
+                rT[c, q], rT[p, q] = rT[p, q], rT[c, q]
+    for r in range(NM):
+        for j in range(r):
+            a = M[r, j]
+            for q in range(NM):
+                rT[r, q] -= a * rT[j, q]
+    for r in range(NM - 1, -1, -1):
+        for j in range(r + 1, NM):
+            a = M[r, j]
+            for q in range(NM):
+                rT[r, q] -= a * rT[j, q]
+        a = 1.0 / M[r, r]
+        for q in range(NM):
+            rT[r, q] *= a
+    for c in range(NM):
         s = rT[Z_F, c]
         for j in range(NM):
-            KT[i, j, c] = col[j]
-            s += J[Z_F, j] * col[j]
+            KT[i, j, c] = rT[j, c]
+            s += J[Z_F, j] * rT[j, c]
         KT[i, Z_F, c] = hg * s
 
 
