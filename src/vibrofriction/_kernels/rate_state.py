@@ -113,12 +113,14 @@ N_PAR = 17
 Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
 NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
-CONTACT, FLIGHT = 0, 1
+CONTACT, FLIGHT, RIGID = 0, 1, 2  # RIGID: a rigid contact's segments (k = inf)
 RECORD = 1  # lp[1] of a segment that records its steps (:func:`_segment`)
 NT = 5  # rows of the tangent: the section state and the quadrature F (Z_F == NM)
 # the coefficients of the second derivatives (:func:`_curvature`)
 CV_KN, CV_W, CV_WM, CV_WL, CV_BA, CV_IA2, CV_LW, CV_LWW, CV_LWL, CV_LLL = range(10)
-N_CV = 10
+# and those of a rigid contact (:func:`_curvature_rigid`)
+CV_RIGID, CV_IW, CV_R, CV_TH, CV_IA, CV_LR, CV_LL, CV_GAM, CV_ALPHA, CV_N = range(10, 20)
+N_CV = 20
 TANGENT_RTOL = 100.0  # the variational equations' tolerance is this many rtol (their
 # error is part of the step control: the multiplier to ~1e-6 where the state is to rtol)
 CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
@@ -266,6 +268,132 @@ def _touchdown_mu(P, tau, v, L):
 
 
 @jit
+def _contact_mode(P):
+    """The mode of the contact segments: ``RIGID`` for a rigid contact (``k = inf``)."""
+    return RIGID if math.isinf(P[P_K]) else CONTACT
+
+
+@jit
+def _inverse_slope(P, m, L):
+    """``1/w_m = a e^(Q - |m|/a) / (v_ref (1 + e^(-2|m|/a)))`` without overflow: the
+    stiffness of a rigid contact (``e^(1/a)`` at rest).
+    """
+    a = P[P_RA]
+    q = (1.0 + P[P_RB] * (L + P[P_LNR])) / a
+    au = abs(m) / a
+    return a * _exp(q - au) / (P[P_VREF] * (1.0 + math.exp(-2.0 * au)))
+
+
+@jit
+def _state_rate(P, w, L, n, nd):
+    """``(L', dL'/dw', dL'/dL)`` in contact at the slip rate ``w'`` (the partial derivatives;
+    the Linker-Dieterich term ``-(alpha_ld/b) n'/n`` in ``L'``, independent of the state).
+    """
+    dc = P[P_DC]
+    g = abs(w) / dc
+    if P[P_SLIPLAW] != 0.0:
+        lg = math.log(g) if g > 1e-300 else -690.0
+        rate = -g * (lg + L)
+        dLdw = -(lg + L + 1.0) / dc  # times sign(w)
+        dLdL = -g
+    else:
+        rate = _exp(-L) - g
+        dLdw = -1.0 / dc
+        dLdL = -_exp(-L)
+    if w < 0.0:
+        dLdw = -dLdw
+    if P[P_ALD] > 0.0:
+        rate -= P[P_ALD] / P[P_RB] * nd / n
+    return rate, dLdw, dLdL
+
+
+@jit
+def _rigid_terms(P, tau, z):
+    """What a rigid contact's right-hand side, Jacobian and curvature share at ``(tau, z)``:
+    ``(n, n', w', w_m, w_L, 1/w_m, L', dL'/dw', dL'/dL, R, h)`` with ``R = x'' - w_L L'``
+    (so that ``m' = R/w_m``) and ``h`` the in-plane forcing.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    h = P[P_HC] * ct + P[P_HS] * st
+    y, m, L = z[Z_Y], z[Z_M], z[Z_L]
+    w, wm, wL = _slip_rate(P, m, L)
+    iw = _inverse_slope(P, m, L)
+    lr, lw, ll = _state_rate(P, w, L, n, nd)
+    R = -P[P_GAMMA] * (w - P[P_V]) - P[P_ALPHA] * y - n * m + h - wL * lr
+    return n, nd, w, wm, wL, iw, lr, lw, ll, R, h
+
+
+@jit
+def _evaluate_rigid(P, tau, z, dz, J, ft, jac):
+    """:func:`_evaluate` of a rigid contact (``w = x``, ``f = n mu(x', theta)``).
+
+    The state is the local coefficient ``m = f/n`` with the body's velocity slaved to it,
+    ``x' = w'(m, L)``; the body's equation ``x'' = -gamma (x' - V) - alpha y - n m + h``
+    differentiated, ``x'' = w_m m' + w_L L'``, gives ``m' = R/w_m``, ``R = x'' - w_L L'``
+    (a stiff relaxation of the friction towards the force that holds the body where it
+    sticks, ``1/w_m ~ e^(1/a)`` at rest).  The component ``x'`` of ``z`` is not used (its
+    rate 0): :func:`_rigid_end` sets it to ``w'`` where a segment ends.
+    """
+    n, nd, w, wm, wL, iw, lr, lw, ll, R, _ = _rigid_terms(P, tau, z)
+    gamma, V, a = P[P_GAMMA], P[P_V], P[P_RA]
+    m = z[Z_M]
+    f = n * m
+    md = iw * R
+    dz[Z_Y] = w - V
+    dz[Z_V] = 0.0
+    dz[Z_M] = md
+    dz[Z_L] = lr
+    dz[Z_F] = f
+    dz[Z_D] = f * w
+    dz[Z_G] = gamma * (w - V) * (w - V)
+    if not jac:
+        return
+    J[:, :] = 0.0
+    ft[:] = 0.0
+    ba = P[P_RB] / a
+    lm = lw * wm  # the total derivatives of L' by m and L
+    lL = lw * wL + ll
+    # DR[p] = -alpha p_y + Rm p_m + RL p_L;  m' = R/w_m, d(1/w_m) = (1/w_m) c[p] with
+    # c[p] = -(tanh(m/a)/a) p_m + (b/a) p_L
+    Rm = -n + (ba * lr - gamma) * wm + ba * w * lm
+    RL = (ba * lr - gamma) * wL + ba * w * lL
+    th = math.tanh(m / a)
+    J[Z_Y, Z_M] = wm
+    J[Z_Y, Z_L] = wL
+    J[Z_M, Z_Y] = -P[P_ALPHA] * iw
+    J[Z_M, Z_M] = iw * Rm - md * th / a
+    J[Z_M, Z_L] = iw * RL + md * ba
+    J[Z_L, Z_M] = lm
+    J[Z_L, Z_L] = lL
+    J[Z_F, Z_M] = n
+    J[Z_D, Z_M] = n * w + f * wm
+    J[Z_D, Z_L] = f * wL
+    J[Z_G, Z_M] = 2.0 * gamma * (w - V) * wm
+    J[Z_G, Z_L] = 2.0 * gamma * (w - V) * wL
+    lt = _coupling_rate(P, tau)
+    ct, st = math.cos(tau), math.sin(tau)
+    ft[Z_M] = iw * (-nd * m + P[P_HS] * ct - P[P_HC] * st + ba * w * lt)
+    ft[Z_L] = lt
+    ft[Z_F] = nd * m
+    ft[Z_D] = nd * m * w
+
+
+@jit
+def _coupling_rate(P, tau):
+    """The time derivative of the Linker-Dieterich term ``-(alpha_ld/b) n'/n`` of ``L'``."""
+    if P[P_ALD] <= 0.0:
+        return 0.0
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    return -P[P_ALD] / P[P_RB] * (-A * ct / n - nd * nd / (n * n))
+
+
+@jit
 def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     """The right-hand side into ``dz``; with ``jac`` the Jacobian ``J`` (rows of all
     components, columns of the first ``NM``) and the time derivative ``ft``.
@@ -280,9 +408,11 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     nd = -A * st
     h = P[P_HC] * ct + P[P_HS] * st
     y, v, m, L = z[Z_Y], z[Z_V], z[Z_M], z[Z_L]
-    dc = P[P_DC]
     k = P[P_K]
     slip_law = P[P_SLIPLAW] != 0.0
+    if mode == RIGID:
+        _evaluate_rigid(P, tau, z, dz, J, ft, jac)
+        return
     f = 0.0
     w = 0.0
     dwdm = dwdL = dLdw = dLdL = 0.0
@@ -293,20 +423,7 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
         f = n * m
         w, dwdm, dwdL = _slip_rate(P, m, L)
         dz[Z_M] = (k * (v - w) - m * nd) / n
-        g = abs(w) / dc
-        if slip_law:
-            lg = math.log(g) if g > 1e-300 else -690.0
-            dz[Z_L] = -g * (lg + L)
-            dLdw = -(lg + L + 1.0) / dc  # times sign(w)
-            dLdL = -g
-        else:
-            dz[Z_L] = _exp(-L) - g
-            dLdw = -1.0 / dc
-            dLdL = -_exp(-L)
-        if w < 0.0:
-            dLdw = -dLdw
-        if P[P_ALD] > 0.0:
-            dz[Z_L] -= P[P_ALD] / P[P_RB] * nd / n
+        dz[Z_L], dLdw, dLdL = _state_rate(P, w, L, n, nd)
     dz[Z_Y] = v - V
     dz[Z_V] = -gamma * (v - V) - alpha * y - f + h
     dz[Z_F] = f
@@ -338,8 +455,7 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     ft[Z_M] = -(dz[Z_M] * nd + m * ndd) / n
     ft[Z_F] = nd * m
     ft[Z_D] = nd * m * w
-    if P[P_ALD] > 0.0:
-        ft[Z_L] -= P[P_ALD] / P[P_RB] * (ndd / n - nd * nd / (n * n))
+    ft[Z_L] = _coupling_rate(P, tau)
 
 
 @jit
@@ -416,25 +532,17 @@ def _curvature(P, tau, z, mode, tw):
     if mode == FLIGHT:
         cv[CV_LLL] = 0.0 if slip_law else _exp(-L)
         return
-    A, k, a, dc = P[P_A], P[P_K], P[P_RA], P[P_DC]
+    _law_curvature(P, z, cv)
+    if mode == RIGID:
+        _curvature_rigid(P, tau, z, T, JtT, cv)
+        return
+    A, k = P[P_A], P[P_K]
     ct, st = math.cos(tau), math.sin(tau)
     n = 1.0 + A * ct
     nd = -A * st
     ndd = -A * ct
-    w, wm, wL = _slip_rate(P, z[Z_M], L)
-    sg = -1.0 if w < 0.0 else 1.0
+    wm, wL = cv[CV_WM], cv[CV_WL]
     cv[CV_KN] = -k / n
-    cv[CV_W], cv[CV_WM], cv[CV_WL] = w, wm, wL
-    cv[CV_BA], cv[CV_IA2] = P[P_RB] / a, 1.0 / (a * a)
-    if slip_law:
-        g = abs(w) / dc
-        lg = math.log(g) if g > 1e-300 else -690.0
-        cv[CV_LW] = -sg * (lg + L + 1.0) / dc
-        cv[CV_LWW] = -1.0 / (dc * max(abs(w), 1e-30))
-        cv[CV_LWL] = -sg / dc
-    else:
-        cv[CV_LW] = -sg / dc
-        cv[CV_LLL] = _exp(-L)
     n2 = n * n
     jmv = -k * nd / n2
     jmm = -ndd / n + (k * wm + nd) * nd / n2
@@ -446,18 +554,108 @@ def _curvature(P, tau, z, mode, tw):
 
 
 @jit
-def _hessian(cv, p, q, c):
-    """The second derivatives of ``(m', L')`` along the directions ``p`` (a vector) and
-    column ``c`` of ``q`` (:func:`_curvature`).
+def _law_curvature(P, z, cv):
+    """The law's coefficients of the curvature in contact (finite or rigid): ``w'`` and its
+    first derivatives, ``b/a``, ``1/a^2`` and the derivatives of ``L' = l(w', L)``.
     """
+    a, dc, L = P[P_RA], P[P_DC], z[Z_L]
+    w, wm, wL = _slip_rate(P, z[Z_M], L)
+    sg = -1.0 if w < 0.0 else 1.0
+    cv[CV_W], cv[CV_WM], cv[CV_WL] = w, wm, wL
+    cv[CV_BA], cv[CV_IA2] = P[P_RB] / a, 1.0 / (a * a)
+    if P[P_SLIPLAW] != 0.0:
+        g = abs(w) / dc
+        lg = math.log(g) if g > 1e-300 else -690.0
+        cv[CV_LW] = -sg * (lg + L + 1.0) / dc
+        cv[CV_LWW] = -1.0 / (dc * max(abs(w), 1e-30))
+        cv[CV_LWL] = -sg / dc
+    else:
+        cv[CV_LW] = -sg / dc
+        cv[CV_LLL] = _exp(-L)
+
+
+@jit
+def _curvature_rigid(P, tau, z, T, JtT, cv):
+    """:func:`_curvature` of a rigid contact (:func:`_evaluate_rigid`): the coefficients of
+    :func:`_hessian_rigid` and ``J_t T``.  ``J`` depends on ``tau`` only in the rows of ``m``
+    (through ``n``, ``h`` and the coupling's term of ``L'``) and of ``F``:
+    ``d/dtau (dm'/dz) p = (1/w_m) (R_t c[p] + dR_t[p])`` with ``R_t = -n' m + h' + (b/a) w'
+    l_t``, ``dR_t[p] = -n' p_m + (b/a) l_t dw[p]`` (``l_t`` the coupling term's rate).
+    """
+    n, nd, w, wm, wL, iw, lr, _, ll, R, _ = _rigid_terms(P, tau, z)
+    a = P[P_RA]
+    m = z[Z_M]
+    ba = cv[CV_BA]
+    th = math.tanh(m / a)
+    cv[CV_RIGID] = 1.0
+    cv[CV_IW], cv[CV_R], cv[CV_TH], cv[CV_IA] = iw, R, th, 1.0 / a
+    cv[CV_LR], cv[CV_LL] = lr, ll
+    cv[CV_GAM], cv[CV_ALPHA], cv[CV_N] = P[P_GAMMA], P[P_ALPHA], n
+    lt = _coupling_rate(P, tau)
+    ct, st = math.cos(tau), math.sin(tau)
+    Rt = -nd * m + P[P_HS] * ct - P[P_HC] * st + ba * w * lt
+    for c in range(NM):
+        pm, pL = T[Z_M, c], T[Z_L, c]
+        cp = -th / a * pm + ba * pL
+        JtT[Z_M, c] = iw * (Rt * cp - nd * pm + ba * lt * (wm * pm + wL * pL))
+        JtT[Z_F, c] = nd * pm
+
+
+@jit
+def _hessian(cv, p, q, c):
+    """The second derivatives of ``(y', m', L')`` along the directions ``p`` (a vector)
+    and column ``c`` of ``q`` (:func:`_curvature`; ``y'`` is linear but for a rigid
+    contact, :func:`_hessian_rigid`).
+    """
+    if cv[CV_RIGID] != 0.0:
+        return _hessian_rigid(cv, p, q, c)
     pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
+    d2w, hl = _law_hessian(cv, pm, pL, qm, qL)
+    return 0.0, cv[CV_KN] * d2w, hl
+
+
+@jit
+def _law_hessian(cv, pm, pL, qm, qL):
+    """``(d2w, d2l)``: the second derivatives of ``w'(m, L)`` and of ``L' = l(w', L)``
+    along ``(pm, pL)`` and ``(qm, qL)``.
+    """
     w, wm, ba = cv[CV_W], cv[CV_WM], cv[CV_BA]
     d2w = cv[CV_IA2] * w * pm * qm - ba * wm * (pm * qL + pL * qm) + ba * ba * w * pL * qL
     dwp = wm * pm + cv[CV_WL] * pL
     dwq = wm * qm + cv[CV_WL] * qL
     hl = (cv[CV_LWW] * dwp * dwq + cv[CV_LW] * d2w + cv[CV_LWL] * (dwp * qL + pL * dwq)
           + cv[CV_LLL] * pL * qL)
-    return cv[CV_KN] * d2w, hl
+    return d2w, hl
+
+
+@jit
+def _hessian_rigid(cv, p, q, c):
+    """:func:`_hessian` of a rigid contact: ``y' = w' - V``, ``L' = l(w', L)`` and
+    ``m' = R/w_m`` (:func:`_evaluate_rigid`), whose second derivative is ``(1/w_m) (d2R +
+    dR[p] c[q] + dR[q] c[p] + R (c[p] c[q] - (1 - tanh^2(m/a))/a^2 p_m q_m))`` with
+    ``d(1/w_m) = (1/w_m) c``, ``c[p] = -(tanh(m/a)/a) p_m + (b/a) p_L``, ``R = -gamma (w' -
+    V) - alpha y - n m + h + (b/a) w' L'``.
+    """
+    py, pm, pL = p[Z_Y], p[Z_M], p[Z_L]
+    qy, qm, qL = q[Z_Y, c], q[Z_M, c], q[Z_L, c]
+    d2w, d2l = _law_hessian(cv, pm, pL, qm, qL)
+    w, wm, wL, ba = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA]
+    lw, ll = cv[CV_LW], cv[CV_LL]
+    gamma, alpha, n, th, ia = cv[CV_GAM], cv[CV_ALPHA], cv[CV_N], cv[CV_TH], cv[CV_IA]
+    R, lr = cv[CV_R], cv[CV_LR]
+    dwp = wm * pm + wL * pL
+    dwq = wm * qm + wL * qL
+    dlp = lw * dwp + ll * pL
+    dlq = lw * dwq + ll * qL
+    g = ba * lr - gamma
+    drp = -alpha * py - n * pm + g * dwp + ba * w * dlp
+    drq = -alpha * qy - n * qm + g * dwq + ba * w * dlq
+    d2r = g * d2w + ba * (dwp * dlq + dwq * dlp) + ba * w * d2l
+    cp = -th * ia * pm + ba * pL
+    cq = -th * ia * qm + ba * qL
+    hm = cv[CV_IW] * (d2r + drp * cq + drq * cp
+                      + R * (cp * cq - (1.0 - th * th) * ia * ia * pm * qm))
+    return d2w, hm, d2l
 
 
 @jit
@@ -485,9 +683,10 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
                 s += ih * RCC[i, l] * KT[l, r, c]
             rT[r, c] = s
     for c in range(NM):
-        hm, hl = _hessian(cv, K[i], T, c)
+        hy, hm, hl = _hessian(cv, K[i], T, c)
         for j in range(NM):
             col[j] = rT[j, c]
+        col[Z_Y] += hy
         col[Z_M] += hm
         col[Z_L] += hl
         _lu_solve(M, piv, col)
@@ -718,29 +917,69 @@ def _period_tangent(P, z, rtol, hbox, work, count, log, lp, tangent, tw):
     z[Z_F] = z[Z_D] = z[Z_G] = 0.0
     T = tw[0]
     c_off, c_on = _cuts(P)
+    mode = _contact_mode(P)
     if c_off >= TWO_PI:
-        return _advance(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
-                        tangent, tw)
-    if not _advance(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp,
+        ok = _advance(P, z, 0.0, TWO_PI, mode, rtol, hbox, scale, work, count, log, lp,
+                      tangent, tw)
+        _rigid_end(P, z, T, mode, tangent)
+        return ok
+    if not _advance(P, z, 0.0, c_off, mode, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
         return False
+    _rigid_end(P, z, T, mode, tangent)
     z[Z_M] = 0.0  # lift-off: the contact spring unloads
     T[Z_M, :] = 0.0
     count[2] += 2
     if not _advance(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
         return False
-    # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
-    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-12)
-    z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
+    _touchdown(P, c_on, z, T, mode, tangent)
+    ok = _advance(P, z, c_on, TWO_PI, mode, rtol, hbox, scale, work, count, log, lp,
+                  tangent, tw)
+    _rigid_end(P, z, T, mode, tangent)
+    return ok
+
+
+@jit
+def _touchdown(P, tau, z, T, mode, tangent):
+    """The contact re-forms at ``tau``: ``m`` in place, with ``tangent`` its row of ``T``
+    (the reset's Jacobian).
+
+    Finite contact: unloaded (``e = n m/k = 0`` to round-off), on the slow manifold of ``m``
+    (its layer lasts ``~ a n/(k x') ~ 1e-12``), :func:`_touchdown_mu`.  Rigid: the contact
+    point moves with the body at once, ``m = mu(x', theta)`` (the reference's), whose
+    derivatives are ``dm/dx' = 1/w_m`` and ``dm/dL = -w_L/w_m``.
+    """
+    if mode == RIGID:
+        z[Z_M] = local_mu(P, z[Z_V], z[Z_L])
+        if tangent:
+            _, _, wL = _slip_rate(P, z[Z_M], z[Z_L])
+            iw = _inverse_slope(P, z[Z_M], z[Z_L])
+            for c in range(NM):
+                T[Z_M, c] = iw * (T[Z_V, c] - wL * T[Z_L, c])
+        return
+    z[Z_M] = _touchdown_mu(P, tau, z[Z_V], z[Z_L])
     if tangent:
         k = P[P_K]
         _, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
-        den = k * wm - P[P_A] * math.sin(c_on)
+        den = k * wm - P[P_A] * math.sin(tau)
         for c in range(NM):
             T[Z_M, c] = k * (T[Z_V, c] - wL * T[Z_L, c]) / den
-    return _advance(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
-                    tangent, tw)
+
+
+@jit
+def _rigid_end(P, z, T, mode, tangent):
+    """At the end of a rigid contact's segment the body's velocity ``x' = w'(m, L)`` into
+    ``z`` (the segment leaves it untouched), with ``tangent`` its row of ``T``.  Nothing for
+    a finite contact.
+    """
+    if mode != RIGID:
+        return
+    w, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+    z[Z_V] = w
+    if tangent:
+        for c in range(NM):
+            T[Z_V, c] = wm * T[Z_M, c] + wL * T[Z_L, c]
 
 
 @jit
@@ -763,9 +1002,22 @@ def sliding_start(P, offset):
     z = np.zeros(NZ)
     z[Z_Y] = -f / P[P_ALPHA] - offset[0]
     z[Z_V] = V - offset[1]
-    z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
+    if _contact_mode(P) == RIGID:  # the body's velocity continuous: m = mu(x', theta)
+        z[Z_M] = local_mu(P, z[Z_V], math.log(P[P_DC] / V))
+    else:
+        z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
     z[Z_L] = math.log(P[P_DC] / V)
     return z
+
+
+@jit
+def _kick(P, z):
+    """The velocity kicked by ``KICK`` off a repelling orbit (a rigid contact's through
+    ``m``, its velocity being slaved to it).
+    """
+    z[Z_V] += KICK * (abs(z[Z_V]) + P[P_V])
+    if _contact_mode(P) == RIGID:
+        z[Z_M] = local_mu(P, z[Z_V], z[Z_L])
 
 
 @jit
@@ -968,7 +1220,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 # are taken once a kick of KICK has grown to the state's size
                 wv, s = _weights(P, z)
                 if _distance(wv, z, zn) <= 1e3 * rtol * s:
-                    z[Z_V] += KICK * (abs(z[Z_V]) + P[P_V])
+                    _kick(P, z)
                     grow = math.log(1.0 / KICK) / math.log(max(res[2], 1.0 + 1e-9))
                     while chk_k < k + 2.0 * grow and chk_k <= max_periods:
                         chk_k *= 2
