@@ -155,11 +155,18 @@ def _central_jacobian(P: np.ndarray, z0: np.ndarray) -> np.ndarray:
     (0.5, 2.0, 1.5, 0.5, 0.0, 0.01, 0.005, 0.01, 1.0, 0.0, 0.0),  # jumping
     (0.5, 2.0, 1.3, 0.8, 0.1, 0.02, 0.01, 0.02, 1.0, 0.0, 1.0),  # jumping, slip law
     (0.2, 3.0, 0.6, 1.0, 0.0, 0.01, 0.008, 0.01, 1.0, 0.3, 0.0),  # Linker-Dieterich
+    # a rigid contact (its own mode: x' slaved to m; measured 1.7e-8 to 1.9e-7 relative)
+    (0.5, math.inf, 0.5, 0.5, 0.0, 0.05, 0.03, 0.05, 1.0, 0.0, 0.0),
+    (0.5, math.inf, 0.7, 0.3, 0.1, 0.05, 0.06, 0.05, 0.5, 0.0, 1.0),  # weakening, damped
+    (0.5, math.inf, 1.3, 0.8, 0.1, 0.05, 0.03, 0.05, 1.0, 0.0, 1.0),  # jumping, slip law
+    (0.2, math.inf, 0.6, 1.0, 0.0, 0.05, 0.04, 0.05, 1.0, 0.3, 0.0),  # Linker-Dieterich
 ])
 def test_monodromy_against_central_differences(point: tuple) -> None:
-    """With an oscillation (contact, lift-off and touch-down, the coupling): the tangent's
-    Jacobian of the period map at the orbit is the central differences' of tight maps, and
-    so are the multipliers (Newton's method after the solver's settling periods)."""
+    """With an oscillation (contact, lift-off and touch-down, the coupling), finite and
+    rigid contact: the tangent's Jacobian of the period map at the orbit is the central
+    differences' of tight maps, and so are the multipliers (Newton's method after the
+    solver's settling periods).  A rigid contact's section velocity is slaved to ``m``:
+    its column is zero in both."""
     P = _params(*point)
     z = rs.sliding_start(P, np.zeros(2))
     for _ in range(rs.SETTLE):
@@ -171,6 +178,8 @@ def test_monodromy_against_central_differences(point: tuple) -> None:
                       res)
     Dc = _central_jacobian(P, z)
     assert np.abs(D - Dc).max() <= 1e-5 * np.abs(Dc).max()
+    if math.isinf(point[1]):
+        assert np.all(D[:, rs.Z_V] == 0.0) and np.all(Dc[:, rs.Z_V] == 0.0)
     rho = float(np.max(np.abs(np.linalg.eigvals(Dc))))
     assert res[2] == pytest.approx(rho, abs=1e-6)
 

@@ -1,8 +1,8 @@
 r"""Rate-and-state friction on the 1-D flat punch: a Rosenbrock integrator and the steady state.
 
 Scaled variables as everywhere (docs/model.md): ``tau = omega t``, forces in ``mu_star F_N0``,
-``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (finite: a rigid contact is
-refused by the method), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
+``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (``inf``: a rigid contact,
+below), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
 forcing (:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f +
 h`` with ``f = k e``; the massless contact point slips at the rate the law gives by
 inversion (docs/friction_laws.md)::
@@ -15,6 +15,23 @@ theta`` (theta spans decades): aging ``L' = e^-L - |w'|/d_c``, slip ``L' = -g (l
 with ``g = |w'|/d_c``, plus the Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight
 (``A > 1``) ``f = 0``, aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms
 unloaded (``e = n m/k = 0``) on the slow manifold of ``m`` (:func:`_touchdown_mu`).
+
+A rigid contact (``k = inf``, the mode ``RIGID`` of its contact segments): the contact point
+moves with the body, ``w' = x'``, and ``f = n mu(x', theta)``.  The variable stays the local
+coefficient ``m = f/n``, the body's velocity slaved to it, ``x' = w'(m, L)``; the body's
+equation differentiated, ``x'' = w_m m' + w_L L'``, gives ``m' = (x'' - w_L L')/w_m``
+(:func:`_evaluate_rigid`).  Why ``m`` and not ``x'``: near rest ``f`` depends on ``x'``
+through ``e^(1/a)``, so ``x'`` as the variable would carry the force with an error ``~a``
+at the tolerance, whereas ``m`` carries it directly (``x'`` follows it, exponentially
+compressed); and ``m`` does not see ``1/n`` (``f`` would: ``f' = ... + f n'/n``).  The
+stiffness ``1/w_m ~ e^(1/a)`` of the relaxation to the holding force where the body
+sticks is the L-stable integrator's to take.  The component ``x'`` of ``z`` is left
+untouched in contact and set to ``w'(m, L)`` where a contact segment ends
+(:func:`_rigid_end`: the section state's ``x'`` is slaved, the monodromy's column of it
+zero); in flight the body moves freely; at touch-down ``m = mu(x', theta)`` (the body's
+velocity continuous, as the reference's rigid contact); the start is steady sliding with
+``x' = V`` continuous at ``tau = 0`` (``m = mu_ss(V)``, the force jumping to ``n(0) mu_ss``,
+the reference's).
 
 The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
 friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
@@ -522,7 +539,8 @@ def _curvature(P, tau, z, mode, tw):
     ``-(k/n) d2w``; ``L' = l(w', L)`` has ``l_ww dw dw + l_w d2w + l_wL (dw dL + dL dw)
     + l_LL dL dL`` (aging: ``l_w = -sgn/d_c``, ``l_LL = e^-L``; slip: ``l_w = -sgn (ln g
     + L + 1)/d_c``, ``l_ww = -1/(d_c |w'|)``, ``l_wL = -sgn/d_c``).  ``J`` depends on
-    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.
+    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.  A rigid contact:
+    :func:`_curvature_rigid`.
     """
     T, JtT, cv = tw[0], tw[5], tw[6]
     cv[:] = 0.0
