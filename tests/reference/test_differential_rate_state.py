@@ -33,10 +33,11 @@ MAX_TRANSIENT = 300
 WINDOW = 10
 
 
-def _points(n: int, seed: int, rigid: bool = False) -> list[dict]:
+def _points(n: int, seed: int, rigid: bool = False, damped: bool = False) -> list[dict]:
     rng = np.random.default_rng(seed)
     out = []
     for _ in range(n):
+        eta_c = float(10 ** rng.uniform(-1.7, -0.4)) if damped else 0.0
         alpha = 10 ** rng.uniform(-0.7, 0.5)
         beta = math.inf if rigid else alpha + 10 ** rng.uniform(0, 1)
         amplitude = rng.uniform(0.2, 1.5)
@@ -50,23 +51,26 @@ def _points(n: int, seed: int, rigid: bool = False) -> list[dict]:
         ld = float(rng.choice([0.0, 0.3])) if amplitude < 1 else 0.0
         out.append(dict(alpha=float(alpha), beta=float(beta), amplitude=float(amplitude),
                         V=float(V), zeta=zeta, a=float(a), b=float(b), d_c=float(d_c),
-                        v_ref=float(v_ref), law=law, alpha_ld=ld))
+                        v_ref=float(v_ref), law=law, alpha_ld=ld, eta_c=eta_c))
     return out
 
 
 POINTS = _points(14, 34)
 RIGID_POINTS = _points(14, 34, rigid=True)
+DAMPED_POINTS = _points(12, 35, damped=True)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("points", [POINTS, RIGID_POINTS], ids=["finite", "rigid"])
+@pytest.mark.parametrize("points", [POINTS, RIGID_POINTS, DAMPED_POINTS],
+                         ids=["finite", "rigid", "damped"])
 def test_rate_state_agrees_with_the_reference(points: list[dict]) -> None:
     compared, worst = 0, 0.0
     regimes = set()
     for p in points:
         s = vf.Dimensionless(alpha=p["alpha"], beta=p["beta"], amplitude=p["amplitude"],
                              zeta=p["zeta"], rs_a=p["a"], rs_b=p["b"], rs_d_c=p["d_c"],
-                             rs_v_ref=p["v_ref"], rs_alpha_ld=p["alpha_ld"], rs_law=p["law"])
+                             rs_v_ref=p["v_ref"], rs_alpha_ld=p["alpha_ld"], rs_law=p["law"],
+                             eta_c=p["eta_c"])
         r = vf.friction_coefficient(s, v_inertial=p["V"])
         if r.status is not vf.Status.PERIODIC:
             continue
@@ -74,7 +78,7 @@ def test_rate_state_agrees_with_the_reference(points: list[dict]) -> None:
             MAX_TRANSIENT, math.ceil(math.log(1e-9) / math.log(r.multiplier)))
         ref = rate_state_run(p["alpha"], p["beta"], p["amplitude"], p["V"], p["a"], p["b"],
                              p["d_c"], p["v_ref"], alpha_ld=p["alpha_ld"], law=p["law"],
-                             zeta=p["zeta"], transient_periods=transient,
+                             zeta=p["zeta"], eta_c=p["eta_c"], transient_periods=transient,
                              average_periods=WINDOW)
         means = ref.period_f / ref.period_n
         bar = r.error + ref.error + float(means.max() - means.min())

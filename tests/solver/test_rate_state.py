@@ -55,10 +55,19 @@ def test_mirror_and_sliding_value() -> None:
     assert solve_points(v_inertial=-0.5, **BASE)["sliding_mu_ratio"] == -1.0
 
 
-@pytest.mark.parametrize(("kw", "name"), [({"eta_c": 0.1}, "eta_c")])
-def test_refusals(kw: dict[str, float], name: str) -> None:
-    with pytest.raises(ValueError, match=name):
-        vf.friction_coefficient(_system(**kw), v_inertial=0.5)
+def test_rigid_and_damped_contacts_are_taken() -> None:
+    """A rigid contact and contact damping are the solver's (no refusal): periodic here.
+
+    A rigid contact that sticks at a small ``a`` (here 0.01) fails honestly (``nan``, error
+    ``inf``): the force drops to the holding force within a time ``~ x'/x''`` where the
+    body's velocity reaches ``exp(-(mu_ss - m)/a)`` (1e-14 here), below the integrator's
+    smallest step; measured periodic from ``a = 0.03`` (0.04 jumping) at this point.
+    """
+    for kw in ({"beta": math.inf, "rs_a": 0.05, "rs_b": 0.025}, {"eta_c": 0.1}):
+        r = vf.friction_coefficient(_system(**kw), v_inertial=0.5)
+        assert r.method == "rate_state" and r.status is Status.PERIODIC
+    r = vf.friction_coefficient(_system(beta=math.inf), v_inertial=0.5)
+    assert r.status is Status.FAILED and math.isnan(r.mu_ratio) and r.error == math.inf
 
 
 def test_refuses_zero_velocity_and_other_starts() -> None:

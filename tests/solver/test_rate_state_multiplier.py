@@ -30,9 +30,10 @@ STATUS, MULT = column_index("status"), column_index("multiplier")
 
 
 def _params(alpha: float, beta: float, A: float, V: float, zeta: float, a: float, b: float,
-            dc: float, vref: float, ald: float = 0.0, law: float = 0.0) -> np.ndarray:
+            dc: float, vref: float, ald: float = 0.0, law: float = 0.0,
+            eta_c: float = 0.0) -> np.ndarray:
     return rs.make_parameters(alpha, beta, A, V, zeta, 0.0, 0.0, True, a, b, dc, vref, ald,
-                              law)
+                              law, eta_c)
 
 
 def _kernel(P: np.ndarray, rtol: float = 1e-8, max_periods: int = 300) -> tuple[int, float]:
@@ -160,13 +161,18 @@ def _central_jacobian(P: np.ndarray, z0: np.ndarray) -> np.ndarray:
     (0.5, math.inf, 0.7, 0.3, 0.1, 0.05, 0.06, 0.05, 0.5, 0.0, 1.0),  # weakening, damped
     (0.5, math.inf, 1.3, 0.8, 0.1, 0.05, 0.03, 0.05, 1.0, 0.0, 1.0),  # jumping, slip law
     (0.2, math.inf, 0.6, 1.0, 0.0, 0.05, 0.04, 0.05, 1.0, 0.3, 0.0),  # Linker-Dieterich
+    # contact damping (eta_c, the last; measured 2.6e-9 to 3.2e-9 relative)
+    (0.5, 2.0, 0.5, 0.5, 0.0, 0.02, 0.01, 0.02, 1.0, 0.0, 0.0, 0.1),
+    (0.5, 2.0, 1.3, 0.5, 0.1, 0.02, 0.01, 0.02, 1.0, 0.0, 1.0, 0.3),  # jumping, slip law
+    (0.2, 3.0, 0.6, 1.0, 0.0, 0.02, 0.015, 0.02, 1.0, 0.3, 0.0, 0.05),  # Linker-Dieterich
 ])
 def test_monodromy_against_central_differences(point: tuple) -> None:
     """With an oscillation (contact, lift-off and touch-down, the coupling), finite and
     rigid contact: the tangent's Jacobian of the period map at the orbit is the central
     differences' of tight maps, and so are the multipliers (Newton's method after the
     solver's settling periods).  A rigid contact's section velocity is slaved to ``m``:
-    its column is zero in both."""
+    its column is zero in both.  With contact damping, the flight's elongation and the
+    resets of lift-off and touch-down (the scalar equation of ``m``) included."""
     P = _params(*point)
     z = rs.sliding_start(P, np.zeros(2))
     for _ in range(rs.SETTLE):

@@ -31,7 +31,16 @@ untouched in contact and set to ``w'(m, L)`` where a contact segment ends
 zero); in flight the body moves freely; at touch-down ``m = mu(x', theta)`` (the body's
 velocity continuous, as the reference's rigid contact); the start is steady sliding with
 ``x' = V`` continuous at ``tau = 0`` (``m = mu_ss(V)``, the force jumping to ``n(0) mu_ss``,
-the reference's).
+the reference's).  Where the body comes to (almost) rest the force drops to the holding
+force within ``~ x'/|x''|`` at the tiny ``x'`` it sticks at: for a small ``a`` below
+``H_MIN``, and the integration fails there (said, never a wrong number).
+
+Contact damping (``eta_c > 0``, the mode ``DAMPED``): the dashpot ``c = eta_c k`` in
+parallel with the spring, ``f = k e + c (x' - w') = n m``; ``m`` stays the variable (``w'``
+explicit in it) and ``m' = (k (x' - w') - n' m + c (x'' - w_L L'))/(n + c w_m)``
+(:func:`_evaluate_damped`).  In flight ``z[Z_M]`` holds the elongation, ``k e + c e' = 0``;
+at touch-down and at the start ``m`` is the root of ``n m + c w'(m, L) = k e + c x'``
+(:func:`_damped_mu`; the start keeps ``e = mu_ss/k`` and ``x' = V``).
 
 The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
 friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
@@ -101,6 +110,7 @@ from .codes import (
     T_ALPHA,
     T_AMPLITUDE,
     T_BETA,
+    T_ETA_C,
     T_INPLANE_ON,
     T_PHASE_X,
     T_V,
@@ -124,20 +134,23 @@ T_RS_LAW = point_index("rs_law")  # the index of "aging" is 0, of "slip" 1
 TWO_PI = 2.0 * math.pi
 # fields of the parameter vector
 P_ALPHA, P_K, P_A, P_V, P_GAMMA, P_HC, P_HS, P_RA, P_RB, P_DC, P_VREF = range(11)
-P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR = range(11, 17)
-N_PAR = 17
+P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR, P_ETA = range(11, 18)
+N_PAR = 18
 # the state: y, x', m = f/n, ln theta and the quadratures int f, int f w', int gamma y'^2
 Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
 NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
-CONTACT, FLIGHT, RIGID = 0, 1, 2  # RIGID: a rigid contact's segments (k = inf)
+# RIGID: a rigid contact's segments (k = inf); DAMPED: a contact with its dashpot (eta_c > 0)
+CONTACT, FLIGHT, RIGID, DAMPED = 0, 1, 2, 3
 RECORD = 1  # lp[1] of a segment that records its steps (:func:`_segment`)
 NT = 5  # rows of the tangent: the section state and the quadrature F (Z_F == NM)
 # the coefficients of the second derivatives (:func:`_curvature`)
 CV_KN, CV_W, CV_WM, CV_WL, CV_BA, CV_IA2, CV_LW, CV_LWW, CV_LWL, CV_LLL = range(10)
 # and those of a rigid contact (:func:`_curvature_rigid`)
 CV_RIGID, CV_IW, CV_R, CV_TH, CV_IA, CV_LR, CV_LL, CV_GAM, CV_ALPHA, CV_N = range(10, 20)
-N_CV = 20
+# and a damped contact's (:func:`_curvature_damped`; CV_IW is 1/(n + c w_m), CV_R m')
+CV_DAMPED, CV_K, CV_C, CV_ND = range(20, 24)
+N_CV = 24
 TANGENT_RTOL = 100.0  # the variational equations' tolerance is this many rtol (their
 # error is part of the step control: the multiplier to ~1e-6 where the state is to rtol)
 CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
@@ -192,9 +205,12 @@ def _exp(x):
 
 @jit
 def make_parameters(alpha, beta, A, V, zeta, a_x, phase_x, on_substrate, ra, rb, dc, vref,
-                    ald, slip_law):
-    """The parameter vector of one point (fields ``P_*``)."""
+                    ald, slip_law, eta_c=0.0):
+    """The parameter vector of one point (fields ``P_*``; a rigid contact ignores
+    ``eta_c``).
+    """
     P = np.empty(N_PAR)
+    P[P_ETA] = 0.0 if math.isinf(beta) else eta_c
     gamma = 2.0 * zeta * math.sqrt(alpha)
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     P[P_ALPHA], P[P_K], P[P_A], P[P_V], P[P_GAMMA] = alpha, beta - alpha, A, V, gamma
@@ -264,30 +280,17 @@ def _touchdown_mu(P, tau, v, L):
     far = local_mu(P, v, L)
     if nd > 0.0 and abs(k * v / nd) < abs(far):
         far = k * v / nd
-    lo, hi = (0.0, far) if v > 0.0 else (far, 0.0)
-    m = 0.5 * (lo + hi)
-    for _ in range(200):
-        w, dwdm, _ = _slip_rate(P, m, L)
-        g = k * (v - w) - m * nd
-        if g > 0.0:
-            lo = m
-        else:
-            hi = m
-        dg = -k * dwdm - nd
-        step = -g / dg if dg != 0.0 else 0.0
-        mn = m + step
-        if not (lo < mn < hi):
-            mn = 0.5 * (lo + hi)
-        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
-            return mn
-        m = mn
-    return m
+    return _root_m(P, L, k * v, -nd, -k, far)
 
 
 @jit
 def _contact_mode(P):
-    """The mode of the contact segments: ``RIGID`` for a rigid contact (``k = inf``)."""
-    return RIGID if math.isinf(P[P_K]) else CONTACT
+    """The mode of the contact segments: ``RIGID`` for a rigid contact (``k = inf``),
+    ``DAMPED`` with the contact's dashpot (``eta_c > 0``), else ``CONTACT``.
+    """
+    if math.isinf(P[P_K]):
+        return RIGID
+    return DAMPED if P[P_ETA] > 0.0 else CONTACT
 
 
 @jit
@@ -359,17 +362,8 @@ def _evaluate_rigid(P, tau, z, dz, J, ft, jac):
     m = z[Z_M]
     f = n * m
     md = iw * R
-    dz[Z_Y] = w - V
-    dz[Z_V] = 0.0
-    dz[Z_M] = md
-    dz[Z_L] = lr
-    dz[Z_F] = f
-    dz[Z_D] = f * w
-    dz[Z_G] = gamma * (w - V) * (w - V)
-    if not jac:
+    if not _contact_rates(dz, w - V, 0.0, md, lr, f, w, gamma, J, ft, jac):
         return
-    J[:, :] = 0.0
-    ft[:] = 0.0
     ba = P[P_RB] / a
     lm = lw * wm  # the total derivatives of L' by m and L
     lL = lw * wL + ll
@@ -396,6 +390,122 @@ def _evaluate_rigid(P, tau, z, dz, J, ft, jac):
     ft[Z_L] = lt
     ft[Z_F] = nd * m
     ft[Z_D] = nd * m * w
+
+
+@jit
+def _damped_terms(P, tau, z):
+    """What a damped contact's right-hand side, Jacobian and curvature share at ``(tau,
+    z)``: ``(n, n', w', w_m, w_L, L', dL'/dw', dL'/dL, x'', m', 1/(n + c w_m), k, c)``.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    y, v, m, L = z[Z_Y], z[Z_V], z[Z_M], z[Z_L]
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    w, wm, wL = _slip_rate(P, m, L)
+    lr, lw, ll = _state_rate(P, w, L, n, nd)
+    xdd = -P[P_GAMMA] * (v - P[P_V]) - P[P_ALPHA] * y - n * m + P[P_HC] * ct + P[P_HS] * st
+    iD = 1.0 / (n + cd * wm)
+    md = (k * (v - w) - nd * m + cd * (xdd - wL * lr)) * iD
+    return n, nd, w, wm, wL, lr, lw, ll, xdd, md, iD, k, cd
+
+
+@jit
+def _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd):
+    """The derivatives of the numerator ``N = k (x' - w') - n' m + c (x'' - w_L L')`` of a
+    damped contact's ``m' = N/(n + c w_m)`` by ``(y, x', m, L)``, and of its denominator
+    by ``(m, L)``.
+    """
+    ba = P[P_RB] / P[P_RA]
+    lm = lw * wm
+    lL = lw * wL + ll
+    Ny = -cd * P[P_ALPHA]
+    Nv = k - cd * P[P_GAMMA]
+    Nm = -k * wm - nd + cd * (-n + ba * (wm * lr + w * lm))
+    NL = -k * wL + cd * ba * (wL * lr + w * lL)
+    Dm = cd * w / (P[P_RA] * P[P_RA])
+    DL = -cd * ba * wm
+    return Ny, Nv, Nm, NL, Dm, DL
+
+
+@jit
+def _evaluate_damped(P, tau, z, dz, J, ft, jac):
+    """:func:`_evaluate` of a contact with its dashpot ``c = eta_c k`` in parallel with the
+    spring: ``f = k e + c (x' - w') = n m``.
+
+    The variable stays ``m = f/n`` (``w' = w'(m, L)`` explicit); differentiating
+    ``n m = k e + c (x' - w')``: ``m' = (k (x' - w') - n' m + c (x'' - w_L L'))/(n + c w_m)``,
+    no ``1/n`` (``e = (n m - c (x' - w'))/k`` is not needed as a variable).
+    """
+    n, nd, w, wm, wL, lr, lw, ll, xdd, md, iD, k, cd = _damped_terms(P, tau, z)
+    gamma, V = P[P_GAMMA], P[P_V]
+    v, m = z[Z_V], z[Z_M]
+    f = n * m
+    if not _contact_rates(dz, v - V, xdd, md, lr, f, w, gamma, J, ft, jac):
+        return
+    Ny, Nv, Nm, NL, Dm, DL = _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd)
+    J[Z_Y, Z_V] = 1.0
+    J[Z_V, Z_Y] = -P[P_ALPHA]
+    J[Z_V, Z_V] = -gamma
+    J[Z_V, Z_M] = -n
+    J[Z_M, Z_Y] = Ny * iD
+    J[Z_M, Z_V] = Nv * iD
+    J[Z_M, Z_M] = (Nm - md * Dm) * iD
+    J[Z_M, Z_L] = (NL - md * DL) * iD
+    J[Z_L, Z_M] = lw * wm
+    J[Z_L, Z_L] = lw * wL + ll
+    J[Z_F, Z_M] = n
+    J[Z_D, Z_M] = n * w + f * wm
+    J[Z_D, Z_L] = f * wL
+    J[Z_G, Z_V] = 2.0 * gamma * (v - V)
+    Nt, ht, _ = _damped_time(P, tau, z, md, nd, w, cd)
+    ft[Z_V] = -nd * m + ht
+    ft[Z_M] = (Nt - md * nd) * iD
+    ft[Z_L] = _coupling_rate(P, tau)
+    ft[Z_F] = nd * m
+    ft[Z_D] = nd * m * w
+
+
+@jit
+def _damped_time(P, tau, z, md, nd, w, cd):
+    """``(N_t, h', l_t)``: the time derivatives of a damped contact's numerator at fixed
+    ``z``, of the in-plane forcing and of the coupling's term of ``L'``.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    ndd = -A * ct
+    ht = P[P_HS] * ct - P[P_HC] * st
+    lt = _coupling_rate(P, tau)
+    m = z[Z_M]
+    Nt = -ndd * m + cd * (-nd * m + ht + P[P_RB] / P[P_RA] * w * lt)
+    return Nt, ht, lt
+
+
+@jit
+def _contact_rates(dz, yd, vd, md, lr, f, w, gamma, J, ft, jac):
+    """The rates in contact into ``dz`` (``y' = yd``, ``x'' = vd``, ``m'``, ``L'`` and the
+    quadratures); with ``jac`` ``J`` and ``ft`` zeroed for the caller to fill.  Returns
+    ``jac``.
+    """
+    dz[Z_Y] = yd
+    dz[Z_V] = vd
+    dz[Z_M] = md
+    dz[Z_L] = lr
+    _quadrature_rates(dz, f, w, gamma * yd * yd)
+    if jac:
+        J[:, :] = 0.0
+        ft[:] = 0.0
+    return jac
+
+
+@jit
+def _quadrature_rates(dz, f, w, dissipation):
+    """The quadratures' rates: ``f``, ``f w'`` and the pin dashpot's ``gamma y'^2``."""
+    dz[Z_F] = f
+    dz[Z_D] = f * w
+    dz[Z_G] = dissipation
 
 
 @jit
@@ -430,11 +540,15 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     if mode == RIGID:
         _evaluate_rigid(P, tau, z, dz, J, ft, jac)
         return
+    if mode == DAMPED:
+        _evaluate_damped(P, tau, z, dz, J, ft, jac)
+        return
+    eta = P[P_ETA]
     f = 0.0
     w = 0.0
     dwdm = dwdL = dLdw = dLdL = 0.0
-    if mode == FLIGHT:
-        dz[Z_M] = 0.0
+    if mode == FLIGHT:  # with the dashpot z[Z_M] holds e: k e + c e' = 0
+        dz[Z_M] = -m / eta if eta > 0.0 else 0.0
         dz[Z_L] = 0.0 if slip_law else _exp(-L)
     else:
         f = n * m
@@ -443,9 +557,7 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
         dz[Z_L], dLdw, dLdL = _state_rate(P, w, L, n, nd)
     dz[Z_Y] = v - V
     dz[Z_V] = -gamma * (v - V) - alpha * y - f + h
-    dz[Z_F] = f
-    dz[Z_D] = f * w
-    dz[Z_G] = gamma * (v - V) * (v - V)
+    _quadrature_rates(dz, f, w, gamma * (v - V) * (v - V))
     if not jac:
         return
     J[:, :] = 0.0
@@ -457,6 +569,8 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     ft[Z_V] = P[P_HS] * ct - P[P_HC] * st
     if mode == FLIGHT:
         J[Z_L, Z_L] = 0.0 if slip_law else -_exp(-L)
+        if eta > 0.0:
+            J[Z_M, Z_M] = -1.0 / eta
         return
     ndd = -A * ct
     J[Z_V, Z_M] = -n
@@ -554,6 +668,9 @@ def _curvature(P, tau, z, mode, tw):
     if mode == RIGID:
         _curvature_rigid(P, tau, z, T, JtT, cv)
         return
+    if mode == DAMPED:
+        _curvature_damped(P, tau, z, T, JtT, cv)
+        return
     A, k = P[P_A], P[P_K]
     ct, st = math.cos(tau), math.sin(tau)
     n = 1.0 + A * ct
@@ -620,6 +737,66 @@ def _curvature_rigid(P, tau, z, T, JtT, cv):
 
 
 @jit
+def _curvature_damped(P, tau, z, T, JtT, cv):
+    """:func:`_curvature` of a damped contact (:func:`_evaluate_damped`): the coefficients
+    of :func:`_hessian_damped` and ``J_t T``.  With ``m' = N/D``, ``D = n + c w_m``: ``d/dtau
+    (dm'/dz) p = (dN_t[p] - m'_t dD[p] - n' dm'[p])/D``, ``m'_t = (N_t - m' n')/D``,
+    ``dN_t[p] = -n'' p_m + c (-n' p_m + (b/a) l_t dw[p])``; the rows of ``x'`` and ``F``
+    through ``n``.
+    """
+    n, nd, w, wm, wL, lr, lw, ll, _, md, iD, k, cd = _damped_terms(P, tau, z)
+    cv[CV_DAMPED] = 1.0
+    cv[CV_IW], cv[CV_R], cv[CV_LR], cv[CV_LL] = iD, md, lr, ll
+    cv[CV_GAM], cv[CV_ALPHA], cv[CV_N] = P[P_GAMMA], P[P_ALPHA], n
+    cv[CV_K], cv[CV_C], cv[CV_ND] = k, cd, nd
+    Ny, Nv, Nm, NL, Dm, DL = _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd)
+    Nt, _, lt = _damped_time(P, tau, z, md, nd, w, cd)
+    mdt = (Nt - md * nd) * iD
+    ndd = -P[P_A] * math.cos(tau)
+    ba = cv[CV_BA]
+    for c in range(NM):
+        py, pv, pm, pL = T[Z_Y, c], T[Z_V, c], T[Z_M, c], T[Z_L, c]
+        dD = Dm * pm + DL * pL
+        dmd = (Ny * py + Nv * pv + Nm * pm + NL * pL - md * dD) * iD
+        dNt = -ndd * pm + cd * (-nd * pm + ba * lt * (wm * pm + wL * pL))
+        JtT[Z_V, c] = -nd * pm
+        JtT[Z_M, c] = (dNt - mdt * dD - nd * dmd) * iD
+        JtT[Z_F, c] = nd * pm
+
+
+@jit
+def _hessian_damped(cv, p, q, c):
+    """:func:`_hessian` of a damped contact: ``L' = l(w', L)`` and ``m' = N/D``
+    (:func:`_evaluate_damped`), ``d2m' = (d2N - dm'[p] dD[q] - dm'[q] dD[p] - m' d2D)/D``
+    with ``d2N = -k d2w + c (b/a) (d2w L' + dw[p] dL'[q] + dw[q] dL'[p] + w' d2L')`` (``N``
+    is linear in ``y`` and ``x'``) and ``d2D = c (w_m/a^2 p_m q_m - (b/a) w'/a^2 (p_m q_L +
+    p_L q_m) + (b/a)^2 w_m p_L q_L)``.
+    """
+    py, pv, pm, pL = p[Z_Y], p[Z_V], p[Z_M], p[Z_L]
+    qy, qv, qm, qL = q[Z_Y, c], q[Z_V, c], q[Z_M, c], q[Z_L, c]
+    d2w, d2l = _law_hessian(cv, pm, pL, qm, qL)
+    w, wm, wL, ba, ia2 = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA], cv[CV_IA2]
+    lw, ll, lr = cv[CV_LW], cv[CV_LL], cv[CV_LR]
+    k, cd, n, nd, md, iD = cv[CV_K], cv[CV_C], cv[CV_N], cv[CV_ND], cv[CV_R], cv[CV_IW]
+    alpha, gamma = cv[CV_ALPHA], cv[CV_GAM]
+    dwp = wm * pm + wL * pL
+    dwq = wm * qm + wL * qL
+    dlp = lw * dwp + ll * pL
+    dlq = lw * dwq + ll * qL
+    dNp = k * (pv - dwp) - nd * pm + cd * (-alpha * py - gamma * pv - n * pm
+                                           + ba * (dwp * lr + w * dlp))
+    dNq = k * (qv - dwq) - nd * qm + cd * (-alpha * qy - gamma * qv - n * qm
+                                           + ba * (dwq * lr + w * dlq))
+    dDp = cd * (w * ia2 * pm - ba * wm * pL)
+    dDq = cd * (w * ia2 * qm - ba * wm * qL)
+    dmp = (dNp - md * dDp) * iD
+    dmq = (dNq - md * dDq) * iD
+    d2N = -k * d2w + cd * ba * (d2w * lr + dwp * dlq + dwq * dlp + w * d2l)
+    d2D = cd * (wm * ia2 * pm * qm - ba * w * ia2 * (pm * qL + pL * qm) + ba * ba * wm * pL * qL)
+    return 0.0, (d2N - dmp * dDq - dmq * dDp - md * d2D) * iD, d2l
+
+
+@jit
 def _hessian(cv, p, q, c):
     """The second derivatives of ``(y', m', L')`` along the directions ``p`` (a vector)
     and column ``c`` of ``q`` (:func:`_curvature`; ``y'`` is linear but for a rigid
@@ -627,6 +804,8 @@ def _hessian(cv, p, q, c):
     """
     if cv[CV_RIGID] != 0.0:
         return _hessian_rigid(cv, p, q, c)
+    if cv[CV_DAMPED] != 0.0:
+        return _hessian_damped(cv, p, q, c)
     pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
     d2w, hl = _law_hessian(cv, pm, pL, qm, qL)
     return 0.0, cv[CV_KN] * d2w, hl
@@ -944,9 +1123,7 @@ def _period_tangent(P, z, rtol, hbox, work, count, log, lp, tangent, tw):
     if not _advance(P, z, 0.0, c_off, mode, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
         return False
-    _rigid_end(P, z, T, mode, tangent)
-    z[Z_M] = 0.0  # lift-off: the contact spring unloads
-    T[Z_M, :] = 0.0
+    _liftoff(P, c_off, z, T, mode, tangent)
     count[2] += 2
     if not _advance(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
@@ -976,6 +1153,18 @@ def _touchdown(P, tau, z, T, mode, tangent):
             for c in range(NM):
                 T[Z_M, c] = iw * (T[Z_V, c] - wL * T[Z_L, c])
         return
+    if mode == DAMPED:  # z[Z_M] held e through the flight
+        k = P[P_K]
+        cd = P[P_ETA] * k
+        n = 1.0 + P[P_A] * math.cos(tau)
+        e = z[Z_M]
+        z[Z_M] = _damped_mu(P, n, z[Z_V], e, z[Z_L])
+        if tangent:
+            _, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+            iD = 1.0 / (n + cd * wm)
+            for c in range(NM):
+                T[Z_M, c] = (k * T[Z_M, c] + cd * T[Z_V, c] - cd * wL * T[Z_L, c]) * iD
+        return
     z[Z_M] = _touchdown_mu(P, tau, z[Z_V], z[Z_L])
     if tangent:
         k = P[P_K]
@@ -983,6 +1172,75 @@ def _touchdown(P, tau, z, T, mode, tangent):
         den = k * wm - P[P_A] * math.sin(tau)
         for c in range(NM):
             T[Z_M, c] = k * (T[Z_V, c] - wL * T[Z_L, c]) / den
+
+
+@jit
+def _liftoff(P, tau, z, T, mode, tangent):
+    """The contact ends at ``tau`` (where ``n = CUT_DELTA``): the spring unloads (``m = 0``;
+    a rigid contact's ``x' = w'`` first, :func:`_rigid_end`), or, with the dashpot, ``z[Z_M]``
+    holds the elongation ``e = (n m - c (x' - w'))/k`` through the flight (``f = k e + c e'
+    = 0``); with ``tangent`` the row of ``T`` (the reset's Jacobian).
+    """
+    _rigid_end(P, z, T, mode, tangent)
+    if mode != DAMPED:
+        z[Z_M] = 0.0
+        T[Z_M, :] = 0.0
+        return
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    n = 1.0 + P[P_A] * math.cos(tau)
+    w, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+    z[Z_M] = (n * z[Z_M] - cd * (z[Z_V] - w)) / k
+    if tangent:
+        for c in range(NM):
+            T[Z_M, c] = ((n + cd * wm) * T[Z_M, c] - cd * T[Z_V, c] + cd * wL * T[Z_L, c]) / k
+
+
+@jit
+def _damped_mu(P, n, v, e, L):
+    """The local coefficient ``m`` of a damped contact with the elongation ``e`` and the
+    body's velocity ``x' = v`` under the load ``n``: the root of ``g(m) = n m + c w'(m, L) -
+    (k e + c x')``, increasing in ``m``, between 0 and the smaller in modulus of ``(k e + c
+    x')/n`` and ``mu((k e + c x')/c)`` (:func:`_root_m`).
+    """
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    F0 = k * e + cd * v
+    if F0 == 0.0:
+        return 0.0
+    far = local_mu(P, F0 / cd, L)
+    if n > 0.0 and abs(F0 / n) < abs(far):
+        far = F0 / n
+    return _root_m(P, L, -F0, n, cd, far)
+
+
+@jit
+def _root_m(P, L, s0, s1, s2, far):
+    """The root ``m`` of the monotone ``g(m) = s0 + s1 m + s2 w'(m, L)`` between 0 and
+    ``far`` (``g`` changes sign there): Newton's method kept in the bracket (bisection
+    where a step leaves it).
+    """
+    lo, hi = (0.0, far) if far > 0.0 else (far, 0.0)
+    up = s0 < 0.0  # g(0) = s0: g increases through the root where g(0) < 0 and far > 0
+    if far < 0.0:
+        up = not up
+    m = 0.5 * (lo + hi)
+    for _ in range(200):
+        w, dwdm, _ = _slip_rate(P, m, L)
+        g = s0 + s1 * m + s2 * w
+        if (g < 0.0) == up:
+            lo = m
+        else:
+            hi = m
+        dg = s1 + s2 * dwdm
+        step = -g / dg if dg != 0.0 else 0.0
+        mn = m + step
+        if not (lo < mn < hi):
+            mn = 0.5 * (lo + hi)
+        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
+            return mn
+        m = mn
+    return m
 
 
 @jit
@@ -998,6 +1256,12 @@ def _rigid_end(P, z, T, mode, tangent):
     if tangent:
         for c in range(NM):
             T[Z_V, c] = wm * T[Z_M, c] + wL * T[Z_L, c]
+
+
+@jit
+def _elongation(P, z, f, w):
+    """The contact spring's elongation ``e = (f - c (x' - w'))/k`` in contact (0 rigid)."""
+    return (f - P[P_ETA] * P[P_K] * (z[Z_V] - w)) / P[P_K] if P[P_ETA] > 0.0 else f / P[P_K]
 
 
 @jit
@@ -1020,8 +1284,11 @@ def sliding_start(P, offset):
     z = np.zeros(NZ)
     z[Z_Y] = -f / P[P_ALPHA] - offset[0]
     z[Z_V] = V - offset[1]
-    if _contact_mode(P) == RIGID:  # the body's velocity continuous: m = mu(x', theta)
+    mode = _contact_mode(P)
+    if mode == RIGID:  # the body's velocity continuous: m = mu(x', theta)
         z[Z_M] = local_mu(P, z[Z_V], math.log(P[P_DC] / V))
+    elif mode == DAMPED:  # the elongation e = f/k and x' continuous: the force jumps
+        z[Z_M] = _damped_mu(P, 1.0 + P[P_A], z[Z_V], f / P[P_K], math.log(P[P_DC] / V))
     else:
         z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
     z[Z_L] = math.log(P[P_DC] / V)
@@ -1287,7 +1554,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     f, w = contact_state(P, z)
     out_f[O_Y], out_f[O_XD] = to_lab_frame(offset, z[Z_Y], z[Z_V])
     out_f[O_F] = f
-    out_f[O_E] = f / P[P_K]
+    out_f[O_E] = _elongation(P, z, f, w)
     out_i[I_STATUS] = status
     out_i[I_PERIOD] = period
     out_i[I_PERIODS] = int(periods)
@@ -1300,7 +1567,8 @@ def point_parameters(p):
     """The parameter vector of a row of the table of points."""
     return make_parameters(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA],
                            p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_RS_A],
-                           p[T_RS_B], p[T_RS_DC], p[T_RS_VREF], p[T_RS_ALD], p[T_RS_LAW])
+                           p[T_RS_B], p[T_RS_DC], p[T_RS_VREF], p[T_RS_ALD], p[T_RS_LAW],
+                           p[T_ETA_C])
 
 
 @jit

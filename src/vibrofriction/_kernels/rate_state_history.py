@@ -9,7 +9,8 @@ from the start (not reset at the sections).  Lift-off and touch-down are the int
 (:func:`.rate_state._cuts`): the contact ends where ``n = CUT_DELTA`` before lift-off, the
 local coefficient is 0 in flight, and the contact re-forms on the slow manifold of ``m``
 (:func:`.rate_state._touchdown`); a rigid contact's ``x'`` is slaved to ``m`` in contact
-(:func:`.rate_state._evaluate_rigid`) and recorded as the slip rate.  This module adds to
+(:func:`.rate_state._evaluate_rigid`) and recorded as the slip rate; with contact damping
+``z[Z_M]`` holds the elongation in flight (:func:`.rate_state._liftoff`).  This module adds to
 :mod:`.rate_state` and changes none of it.
 """
 
@@ -33,7 +34,7 @@ from .rate_state import (
     Z_V,
     _contact_mode,
     _cuts,
-    _rigid_end,
+    _liftoff,
     _scales,
     _segment,
     _slip_rate,
@@ -126,9 +127,8 @@ def rs_history(p, z, seg_t, seg_mode, grid, rtol, out):
         t0, t1 = seg_t[i], seg_t[i + 1]
         mode = FLIGHT if seg_mode[i] == FLIGHT else contact
         if i > 0 and seg_mode[i] != seg_mode[i - 1]:
-            if mode == FLIGHT:
-                _rigid_end(P, z, T, contact, False)
-                z[Z_M] = 0.0  # lift-off: the contact spring unloads
+            if mode == FLIGHT:  # lift-off: the spring unloads (or e kept, damped)
+                _liftoff(P, t0, z, T, contact, False)
             else:
                 _touchdown(P, t0, z, T, mode, False)
         _record(P, t0, z, mode, out, r)
