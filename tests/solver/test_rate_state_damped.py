@@ -85,3 +85,15 @@ def test_damped_start_solves_the_scalar_equation() -> None:
     assert z[rs.Z_V] == V and z[rs.Z_Y] == pytest.approx(-mu_ss / 0.5, rel=1e-14)
     assert mu_ss < (1.0 + A) * z[rs.Z_M] < (1.0 + A) * mu_ss
     assert w < V
+
+
+def test_damped_steady_sliding_at_zero_amplitude() -> None:
+    """``A = 0``, stable sliding: ``mu_ss(V)`` within the stated error, periodic (the
+    solver's Hurwitz guard, whose polynomial has no contact dashpot, stays out of it)."""
+    s = vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.0, eta_c=0.1, rs_a=0.02,
+                         rs_b=0.01, rs_d_c=0.02, rs_v_ref=1.0)
+    r = vf.friction_coefficient(s, v_inertial=0.5)
+    assert r.status is Status.PERIODIC
+    assert abs(r.mu_ratio - float(theory.steady_mu_ratio(0.5, 0.02, 0.01, 0.02, 1.0))) \
+        <= r.error
+    assert 0.0 < r.multiplier < 1.0
