@@ -16,7 +16,9 @@ within the combined bars.
 A rigid contact (``beta = inf``) likewise, at its own random points (``a`` from 0.03 to
 0.08, where the reference's rigid contact is well behaved): when written (seed 34) 14 of 14
 periodic, all within the combined bars (the largest difference 0.19 of its bar); and its
-time history from the start against the reference's at a tight tolerance.
+time history from the start against the reference's at a tight tolerance.  Contact damping
+(``eta_c`` from 0.02 to 0.4, seed 35): 12 of 12 periodic, all within the combined bars (the
+largest difference 0.58 of its bar).
 """
 
 from __future__ import annotations

@@ -60,7 +60,8 @@ def test_damped_history_energy_balance(point: dict) -> None:
     balance = (h.work_input - (energy - energy[0]) - h.dissipated_pin - h.dissipated_contact
                - h.dissipated_friction)
     assert h.dissipated_contact[-1] > 0.01 * h.work_input[-1]
-    assert np.abs(balance).max() <= 1e-5 * h.work_input[-1]  # measured 2e-7 and 1.8e-6
+    # measured 2.2e-7 and 1.8e-6 (the work 5.3 and 3.3): the trapezoidal rule's error
+    assert np.abs(balance).max() <= 1e-5 * h.work_input[-1]
     twins = np.flatnonzero(np.diff(h.tau) == 0.0)
     assert len(twins) == len(h.events)  # each event: the rows before and after
     for j in twins:
