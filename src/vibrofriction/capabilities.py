@@ -239,13 +239,9 @@ RATE_STATE = Capabilities(
     title="the rate-and-state solver",
     takes="a flat punch, profile_exponent = inf, without a transverse oscillation, a_y = 0, "
           "with rate-and-state friction, rs_a > 0",
-    parameters=("alpha", "beta", "amplitude", "zeta", "a_x", "phase_x", "v_inertial",
+    parameters=("alpha", "beta", "amplitude", "zeta", "eta_c", "a_x", "phase_x", "v_inertial",
                 "inplane_on", "rs_a", "rs_b", "rs_d_c", "rs_v_ref", "rs_alpha_ld", "rs_law"),
     limits=(
-        Limit("beta", "a rigid contact (beta = inf; use a large finite beta)",
-              lambda p: p["beta"] == math.inf),
-        Limit("eta_c", "contact damping (eta_c > 0)", lambda p: p["eta_c"] > 0.0,
-              whole=True),
         Limit("v_inertial", "zero velocity (v_inertial = 0: the contact creeps, there is no "
               "static limit)", lambda p: p["v_inertial"] == 0.0),
     ),

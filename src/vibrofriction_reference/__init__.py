@@ -73,7 +73,8 @@ no contact dashpot), each with an error bar from two runs:
   time-stepping (rigid), the drop of the force placed inside its step.  ``sigma = 1`` is
   Coulomb's law, the model of the two peers above;
 * rate-and-state friction (``a, b, d_c, v_ref``, the aging or the slip law, the
-  Linker-Dieterich coupling ``alpha_ld``): :func:`rate_state_run` (the mean over a window
+  Linker-Dieterich coupling ``alpha_ld``; an elastic or rigid contact, the contact's
+  dashpot ``eta_c``): :func:`rate_state_run` (the mean over a window
   after a transient, the error bar from two tolerances, the per-period means),
   :func:`rate_state_history` and :func:`mu_steady_state`.  ``solve_ivp`` (LSODA with an
   analytic Jacobian, Radau where LSODA fails) arc by arc, cut near lift-off and touch-down,

@@ -125,7 +125,6 @@ def test_the_snippet_reproduces_the_curve_with_the_law(state):
      "needs rs_b > 0"),
     ({"amplitude": "1.5", "rs_alpha_ld": "0.1"}, State(friction="rate_state"), "rs_alpha_ld",
      "needs amplitude < 1"),
-    ({"beta": "inf"}, State(friction="rate_state", axis="V"), "beta", "a rigid contact"),
     ({"mu_static": "0.1"}, State(mode="bench", friction="static"), "mu_static",
      "mu_static must be >= mu0 (= 0.3"),
     ({"friction_a": "0"}, State(mode="bench", friction="rate_state"), "friction_a",
@@ -137,6 +136,14 @@ def test_bad_law_input_gives_the_library_message_next_to_it(texts, base, field, 
     state, problems = read_inputs(texts, base)
     assert state is None and list(problems) == [field]
     assert words in problems[field]
+
+
+def test_a_rigid_contact_and_contact_damping_are_taken_with_rate_and_state():
+    """The rate-and-state solver takes beta = inf and eta_c > 0: no message, the state."""
+    state, problems = read_inputs({"beta": "inf", "eta_c": "0.1"},
+                                  State(friction="rate_state", axis="V"))
+    assert not problems and state is not None
+    assert state.beta == math.inf and state.eta_c == 0.1
 
 
 def test_the_pairs_of_laws_are_refused_under_the_selector():
@@ -155,7 +162,7 @@ def test_what_a_law_disables_is_what_its_solvers_refuse():
         for name in ("eta_c", "a_y", "a_x"):
             why = law_refusal(state, name, 0.5)
             assert (name in LAW_DISABLED[law]) == bool(why), (law, name, why)
-    assert "the rate-and-state solver" in law_refusal(State(friction="rate_state"), "eta_c", 0.1)
+    assert law_refusal(State(friction="rate_state"), "eta_c", 0.1) == ""  # taken
     assert "MDR solver" in law_taken(State(friction="rate_state", profile_exponent=2.0))
     assert law_taken(State(friction="rate_state")) == ""
 
@@ -228,13 +235,11 @@ def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuse
     ex = page.Explorer(State(eta_c=0.1))
     assert not ex.inputs["rs_a"].layout.visible and not ex.law_note.visible
     ex.law.value = "rate_state"
-    assert ex.state.friction == "rate_state" and ex.state.eta_c == 0.0
+    # the rate-and-state solver takes contact damping: eta_c stays
+    assert ex.state.friction == "rate_state" and ex.state.eta_c == 0.1
     assert ex.inputs["rs_a"].layout.visible and not ex.inputs["static_ratio"].layout.visible
     assert ex.rs_law.visible
-    assert ex.inputs["eta_c"].text.disabled and ex.inputs["a_y"].text.disabled
-    eta = ex.inputs["eta_c"].message.object
-    assert "eta_c reset from 0.1 to 0: not taken with rate-and-state friction" in eta
-    assert "does not take contact damping (eta_c &gt; 0)" in eta  # the library's, escaped
+    assert not ex.inputs["eta_c"].text.disabled and ex.inputs["a_y"].text.disabled
     assert "at most 40 points" in ex.law_note.object
     ex.inputs["rs_d_c"].text.value = "0"
     assert "rs_d_c must be finite and > 0" in ex.inputs["rs_d_c"].message.object
@@ -253,7 +258,7 @@ def test_the_selector_shows_the_law_s_inputs_and_disables_what_its_solver_refuse
     ex.mode.value = "bench"
     ex.law.value = "rate_state"
     assert ex.inputs["friction_d_c_um"].layout.visible and not ex.inputs["rs_d_c"].layout.visible
-    assert ex.inputs["bench_eta_c"].text.disabled
+    assert not ex.inputs["bench_eta_c"].text.disabled
     ex.inputs["friction_v_ref_mm_s"].text.value = "2"
     assert ex.state.system().friction.v_ref == 2e-3
 

@@ -99,8 +99,6 @@ def test_each_result_records_its_method() -> None:
     ("mdr", dict(beta=math.inf), "beta"),
     ("mdr", dict(eta_c=0.1), "eta_c"),
     ("mdr", dict(a_x=0.5, v_inertial=0.0), "a_x"),
-    ("rate_state", dict(beta=math.inf), "beta"),
-    ("rate_state", dict(eta_c=0.1), "eta_c"),
     ("rate_state", dict(v_inertial=0.0), "v_inertial"),
 ])
 def test_a_point_a_method_does_not_cover_is_refused_by_name(method, change, parameter) -> None:

@@ -55,11 +55,19 @@ def test_mirror_and_sliding_value() -> None:
     assert solve_points(v_inertial=-0.5, **BASE)["sliding_mu_ratio"] == -1.0
 
 
-@pytest.mark.parametrize(("kw", "name"), [
-    ({"beta": math.inf}, "beta"), ({"eta_c": 0.1}, "eta_c")])
-def test_refusals(kw: dict[str, float], name: str) -> None:
-    with pytest.raises(ValueError, match=name):
-        vf.friction_coefficient(_system(**kw), v_inertial=0.5)
+def test_rigid_and_damped_contacts_are_taken() -> None:
+    """A rigid contact and contact damping are the solver's (no refusal): periodic here.
+
+    A rigid contact that sticks at a small ``a`` (here 0.01) fails honestly (``nan``, error
+    ``inf``): the force drops to the holding force within a time ``~ x'/x''`` where the
+    body's velocity reaches ``exp(-(mu_ss - m)/a)`` (1e-14 here), below the integrator's
+    smallest step; measured periodic from ``a = 0.03`` (0.04 jumping) at this point.
+    """
+    for kw in ({"beta": math.inf, "rs_a": 0.05, "rs_b": 0.025}, {"eta_c": 0.1}):
+        r = vf.friction_coefficient(_system(**kw), v_inertial=0.5)
+        assert r.method == "rate_state" and r.status is Status.PERIODIC
+    r = vf.friction_coefficient(_system(beta=math.inf), v_inertial=0.5)
+    assert r.status is Status.FAILED and math.isnan(r.mu_ratio) and r.error == math.inf
 
 
 def test_refuses_zero_velocity_and_other_starts() -> None:
@@ -239,3 +247,31 @@ def test_unstable_steady_sliding_without_oscillation_is_never_periodic() -> None
     assert stable[0] and not stable[-1]
     for v, s, status in zip(V, stable, out["status"], strict=True):
         assert (status == Status.PERIODIC.code) <= s, v
+
+
+@pytest.mark.parametrize("law", [0.0, 1.0])
+@pytest.mark.parametrize("ald", [0.0, 0.3])
+def test_the_finite_contacts_written_out_law_is_the_state_rate(law: float, ald: float) -> None:
+    """The finite contact's right-hand side writes the state's law out (for speed); the
+    rigid and damped contacts call :func:`_state_rate`.  At random states both give the
+    same ``L'`` and the same derivatives in the Jacobian."""
+    rng = np.random.default_rng(11)
+    for _ in range(20):
+        a = 10 ** rng.uniform(-2.3, -1.3)
+        P = rs.make_parameters(0.5, 2.0, rng.uniform(0, 0.9), 0.5, 0.0, 0.0, 0.0, True, a,
+                               a * rng.uniform(0.2, 1.6), 10 ** rng.uniform(-2.5, -0.5),
+                               10 ** rng.uniform(-1, 0.5), ald, law)
+        tau = rng.uniform(0, 2 * math.pi)
+        z = np.zeros(rs.NZ)
+        z[rs.Z_Y], z[rs.Z_V] = rng.normal(), rng.uniform(-1, 2)
+        z[rs.Z_M], z[rs.Z_L] = rng.uniform(-1.2, 1.2), rng.uniform(-6, 2)
+        dz, J, ft = np.empty(rs.NZ), np.empty((rs.NZ, rs.NM)), np.empty(rs.NZ)
+        rs._evaluate(P, tau, z, rs.CONTACT, dz, J, ft, True)
+        n = 1.0 + P[rs.P_A] * math.cos(tau)
+        nd = -P[rs.P_A] * math.sin(tau)
+        w, wm, wL = rs._slip_rate(P, z[rs.Z_M], z[rs.Z_L])
+        rate, dw, dL = rs._state_rate(P, w, z[rs.Z_L], n, nd)
+        assert dz[rs.Z_L] == pytest.approx(rate, rel=1e-13, abs=1e-13)
+        assert J[rs.Z_L, rs.Z_M] == pytest.approx(dw * wm, rel=1e-13, abs=1e-13)
+        assert J[rs.Z_L, rs.Z_L] == pytest.approx(dL + dw * wL, rel=1e-13, abs=1e-13)
+        assert ft[rs.Z_L] == pytest.approx(rs._coupling_rate(P, tau), rel=1e-13, abs=1e-13)

@@ -195,8 +195,6 @@ def test_starts_and_refusals() -> None:
         assert getattr(err.value, "parameter", None) == "initial"
     with pytest.raises(ValueError, match="v_inertial = 0"):
         vf.simulate(system, v_inertial=0.0, periods=1)
-    with pytest.raises(ValueError, match="eta_c"):
-        vf.simulate(_system(eta_c=0.1), v_inertial=0.5, periods=1)
     with pytest.raises(ValueError, match="rs_a"):
         vf.simulate(_system(a_y=0.3), v_inertial=0.5, periods=1)
     with pytest.raises(ValueError, match="friction_gradient .*rs_a"):

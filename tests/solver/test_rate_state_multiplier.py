@@ -30,9 +30,10 @@ STATUS, MULT = column_index("status"), column_index("multiplier")
 
 
 def _params(alpha: float, beta: float, A: float, V: float, zeta: float, a: float, b: float,
-            dc: float, vref: float, ald: float = 0.0, law: float = 0.0) -> np.ndarray:
+            dc: float, vref: float, ald: float = 0.0, law: float = 0.0,
+            eta_c: float = 0.0) -> np.ndarray:
     return rs.make_parameters(alpha, beta, A, V, zeta, 0.0, 0.0, True, a, b, dc, vref, ald,
-                              law)
+                              law, eta_c)
 
 
 def _kernel(P: np.ndarray, rtol: float = 1e-8, max_periods: int = 300) -> tuple[int, float]:
@@ -82,7 +83,7 @@ def test_defect_point_is_not_periodic_without_the_guard() -> None:
     assert status != Status.PERIODIC.code
     # Newton's method from the start (which is the orbit): the exact multiplier
     z = rs.sliding_start(P, np.zeros(2))
-    res = np.zeros(4)
+    res = np.zeros(rs.N_RES)
     found = rs._newton(P, z, 1e-7, np.array([1e-3]), rs._workspace(), np.zeros(3, np.int64),
                        rs._tangent_workspace(), np.empty(1), np.zeros(2, np.int64),
                        np.empty((4, 4)), np.empty(4), res)
@@ -121,7 +122,7 @@ def test_small_amplitude_at_the_defect_point_is_never_periodic(amplitude: float)
     P = _params(d["alpha"], d["beta"], amplitude, d["v"], d["zeta"], d["a"], d["b"],
                 d["d_c"], d["v_ref"])
     z = rs.sliding_start(P, np.zeros(2))
-    res = np.zeros(4)
+    res = np.zeros(rs.N_RES)
     assert rs._newton(P, z, 1e-8, np.array([1e-3]), rs._workspace(), np.zeros(3, np.int64),
                       rs._tangent_workspace(), np.empty(1), np.zeros(2, np.int64),
                       np.empty((4, 4)), np.empty(4), res)
@@ -155,22 +156,36 @@ def _central_jacobian(P: np.ndarray, z0: np.ndarray) -> np.ndarray:
     (0.5, 2.0, 1.5, 0.5, 0.0, 0.01, 0.005, 0.01, 1.0, 0.0, 0.0),  # jumping
     (0.5, 2.0, 1.3, 0.8, 0.1, 0.02, 0.01, 0.02, 1.0, 0.0, 1.0),  # jumping, slip law
     (0.2, 3.0, 0.6, 1.0, 0.0, 0.01, 0.008, 0.01, 1.0, 0.3, 0.0),  # Linker-Dieterich
+    # a rigid contact (its own mode: x' slaved to m; measured 1.7e-8 to 1.9e-7 relative)
+    (0.5, math.inf, 0.5, 0.5, 0.0, 0.05, 0.03, 0.05, 1.0, 0.0, 0.0),
+    (0.5, math.inf, 0.7, 0.3, 0.1, 0.05, 0.06, 0.05, 0.5, 0.0, 1.0),  # weakening, damped
+    (0.5, math.inf, 1.3, 0.8, 0.1, 0.05, 0.03, 0.05, 1.0, 0.0, 1.0),  # jumping, slip law
+    (0.2, math.inf, 0.6, 1.0, 0.0, 0.05, 0.04, 0.05, 1.0, 0.3, 0.0),  # Linker-Dieterich
+    # contact damping (eta_c, the last; measured 2.6e-9 to 3.2e-9 relative)
+    (0.5, 2.0, 0.5, 0.5, 0.0, 0.02, 0.01, 0.02, 1.0, 0.0, 0.0, 0.1),
+    (0.5, 2.0, 1.3, 0.5, 0.1, 0.02, 0.01, 0.02, 1.0, 0.0, 1.0, 0.3),  # jumping, slip law
+    (0.2, 3.0, 0.6, 1.0, 0.0, 0.02, 0.015, 0.02, 1.0, 0.3, 0.0, 0.05),  # Linker-Dieterich
 ])
 def test_monodromy_against_central_differences(point: tuple) -> None:
-    """With an oscillation (contact, lift-off and touch-down, the coupling): the tangent's
-    Jacobian of the period map at the orbit is the central differences' of tight maps, and
-    so are the multipliers (Newton's method after the solver's settling periods)."""
+    """With an oscillation (contact, lift-off and touch-down, the coupling), finite and
+    rigid contact: the tangent's Jacobian of the period map at the orbit is the central
+    differences' of tight maps, and so are the multipliers (Newton's method after the
+    solver's settling periods).  A rigid contact's section velocity is slaved to ``m``:
+    its column is zero in both.  With contact damping, the flight's elongation and the
+    resets of lift-off and touch-down (the scalar equation of ``m``) included."""
     P = _params(*point)
     z = rs.sliding_start(P, np.zeros(2))
     for _ in range(rs.SETTLE):
         assert rs.rs_period(P, z, 1e-9, np.array([1e-3]), rs._workspace(),
                             np.zeros(3, np.int64))
-    D, gmu, res = np.empty((4, 4)), np.empty(4), np.zeros(4)
+    D, gmu, res = np.empty((4, 4)), np.empty(4), np.zeros(rs.N_RES)
     assert rs._newton(P, z, 1e-9, np.array([1e-3]), rs._workspace(), np.zeros(3, np.int64),
                       rs._tangent_workspace(), np.empty(1), np.zeros(2, np.int64), D, gmu,
                       res)
     Dc = _central_jacobian(P, z)
     assert np.abs(D - Dc).max() <= 1e-5 * np.abs(Dc).max()
+    if math.isinf(point[1]):
+        assert np.all(D[:, rs.Z_V] == 0.0) and np.all(Dc[:, rs.Z_V] == 0.0)
     rho = float(np.max(np.abs(np.linalg.eigvals(Dc))))
     assert res[2] == pytest.approx(rho, abs=1e-6)
 
@@ -182,7 +197,7 @@ def test_linker_dieterich_orbit_grows() -> None:
     multiplier says, and the solver does not call the point periodic."""
     P = _params(0.2, 3.0, 0.6, 1.0, 0.0, 0.01, 0.008, 0.01, 1.0, 0.3, 0.0)
     z = rs.sliding_start(P, np.zeros(2))
-    res = np.zeros(4)
+    res = np.zeros(rs.N_RES)
     assert rs._newton(P, z, 1e-9, np.array([1e-3]), rs._workspace(), np.zeros(3, np.int64),
                       rs._tangent_workspace(), np.empty(1), np.zeros(2, np.int64),
                       np.empty((4, 4)), np.empty(4), res)

@@ -1,8 +1,8 @@
 r"""Rate-and-state friction on the 1-D flat punch: a Rosenbrock integrator and the steady state.
 
 Scaled variables as everywhere (docs/model.md): ``tau = omega t``, forces in ``mu_star F_N0``,
-``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (finite: a rigid contact is
-refused by the method), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
+``n = 1 + A cos tau``, ``y = x - V tau``, ``k = beta - alpha`` (``inf``: a rigid contact,
+below), ``gamma = 2 zeta sqrt(alpha)``, ``h`` the longitudinal in-plane
 forcing (:func:`.phases.inplane_forcing`).  The body obeys ``y'' + gamma y' + alpha y = -f +
 h`` with ``f = k e``; the massless contact point slips at the rate the law gives by
 inversion (docs/friction_laws.md)::
@@ -15,6 +15,32 @@ theta`` (theta spans decades): aging ``L' = e^-L - |w'|/d_c``, slip ``L' = -g (l
 with ``g = |w'|/d_c``, plus the Linker-Dieterich term ``-(alpha_ld/b) n'/n``.  In flight
 (``A > 1``) ``f = 0``, aging ``L' = e^-L``, slip ``L' = 0``, and the contact re-forms
 unloaded (``e = n m/k = 0``) on the slow manifold of ``m`` (:func:`_touchdown_mu`).
+
+A rigid contact (``k = inf``, the mode ``RIGID`` of its contact segments): the contact point
+moves with the body, ``w' = x'``, and ``f = n mu(x', theta)``.  The variable stays the local
+coefficient ``m = f/n``, the body's velocity slaved to it, ``x' = w'(m, L)``; the body's
+equation differentiated, ``x'' = w_m m' + w_L L'``, gives ``m' = (x'' - w_L L')/w_m``
+(:func:`_evaluate_rigid`).  Why ``m`` and not ``x'``: near rest ``f`` depends on ``x'``
+through ``e^(1/a)``, so ``x'`` as the variable would carry the force with an error ``~a``
+at the tolerance, whereas ``m`` carries it directly (``x'`` follows it, exponentially
+compressed); and ``m`` does not see ``1/n`` (``f`` would: ``f' = ... + f n'/n``).  The
+stiffness ``1/w_m ~ e^(1/a)`` of the relaxation to the holding force where the body
+sticks is the L-stable integrator's to take.  The component ``x'`` of ``z`` is left
+untouched in contact and set to ``w'(m, L)`` where a contact segment ends
+(:func:`_rigid_end`: the section state's ``x'`` is slaved, the monodromy's column of it
+zero); in flight the body moves freely; at touch-down ``m = mu(x', theta)`` (the body's
+velocity continuous, as the reference's rigid contact); the start is steady sliding with
+``x' = V`` continuous at ``tau = 0`` (``m = mu_ss(V)``, the force jumping to ``n(0) mu_ss``,
+the reference's).  Where the body comes to (almost) rest the force drops to the holding
+force within ``~ x'/|x''|`` at the tiny ``x'`` it sticks at: for a small ``a`` below
+``H_MIN``, and the integration fails there (said, never a wrong number).
+
+Contact damping (``eta_c > 0``, the mode ``DAMPED``): the dashpot ``c = eta_c k`` in
+parallel with the spring, ``f = k e + c (x' - w') = n m``; ``m`` stays the variable (``w'``
+explicit in it) and ``m' = (k (x' - w') - n' m + c (x'' - w_L L'))/(n + c w_m)``
+(:func:`_evaluate_damped`).  In flight ``z[Z_M]`` holds the elongation, ``k e + c e' = 0``;
+at touch-down and at the start ``m`` is the root of ``n m + c w'(m, L) = k e + c x'``
+(:func:`_damped_mu`; the start keeps ``e = mu_ss/k`` and ``x' = V``).
 
 The state vector is ``z = (y, x', m, L, F, D, G)``: ``F = int f``, ``D = int f w'`` (the
 friction's dissipation) and ``G = int gamma y'^2`` (the pin dashpot's) are quadratures
@@ -88,6 +114,7 @@ from .codes import (
     T_ALPHA,
     T_AMPLITUDE,
     T_BETA,
+    T_ETA_C,
     T_INPLANE_ON,
     T_PHASE_X,
     T_V,
@@ -111,18 +138,23 @@ T_RS_LAW = point_index("rs_law")  # the index of "aging" is 0, of "slip" 1
 TWO_PI = 2.0 * math.pi
 # fields of the parameter vector
 P_ALPHA, P_K, P_A, P_V, P_GAMMA, P_HC, P_HS, P_RA, P_RB, P_DC, P_VREF = range(11)
-P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR = range(11, 17)
-N_PAR = 17
+P_ALD, P_SLIPLAW, P_LNR, P_OFF, P_ON, P_NBAR, P_ETA = range(11, 18)
+N_PAR = 18
 # the state: y, x', m = f/n, ln theta and the quadratures int f, int f w', int gamma y'^2
 Z_Y, Z_V, Z_M, Z_L, Z_F, Z_D, Z_G = range(7)
 NZ = 7
 NM = 4  # the components that feed back (the quadratures do not)
-CONTACT, FLIGHT = 0, 1
+# RIGID: a rigid contact's segments (k = inf); DAMPED: a contact with its dashpot (eta_c > 0)
+CONTACT, FLIGHT, RIGID, DAMPED = 0, 1, 2, 3
 RECORD = 1  # lp[1] of a segment that records its steps (:func:`_segment`)
 NT = 5  # rows of the tangent: the section state and the quadrature F (Z_F == NM)
 # the coefficients of the second derivatives (:func:`_curvature`)
 CV_KN, CV_W, CV_WM, CV_WL, CV_BA, CV_IA2, CV_LW, CV_LWW, CV_LWL, CV_LLL = range(10)
-N_CV = 10
+# and those of a rigid contact (:func:`_curvature_rigid`)
+CV_RIGID, CV_IW, CV_R, CV_TH, CV_IA, CV_LR, CV_LL, CV_GAM, CV_ALPHA, CV_N = range(10, 20)
+# and a damped contact's (:func:`_curvature_damped`; CV_IW is 1/(n + c w_m), CV_R m')
+CV_DAMPED, CV_K, CV_C, CV_ND = range(20, 24)
+N_CV = 24
 TANGENT_RTOL = 100.0  # the variational equations' tolerance is this many rtol (their
 # error is part of the step control: the multiplier to ~1e-6 where the state is to rtol)
 CUT_DELTA = 1e-9  # contact segments end where n = CUT_DELTA before lift-off (see doc)
@@ -137,7 +169,8 @@ NEWTON_ITERATIONS = 16
 NEWTON_PROGRESS = 0.1  # after 6 iterations the residual must have fallen this much
 NEUTRAL = 1.0 - 1e-6  # a multiplier modulus above this does not attract
 LOOSE_RTOL = 1e-4  # the tolerance of the settling periods and of Newton's first maps
-SHORTCUT = 1e-3  # a residual below which a map at rtol is not repeated (:func:`_newton`)
+N_RES = 7  # the length of :func:`_newton`'s ``res``
+SHORTCUT = 1e-5  # a residual below which a map at rtol is not repeated (:func:`_newton`)
 NEAR_NEUTRAL = 1e-3  # ... unless the multiplier is within this of 1
 FORCING = 0.001  # an inexact Newton map's tolerance: FORCING times the squared residual
 SETTLE = 4  # plain periods from the start before Newton's method (far from the orbit its
@@ -180,9 +213,12 @@ def _exp(x):
 
 @jit
 def make_parameters(alpha, beta, A, V, zeta, a_x, phase_x, on_substrate, ra, rb, dc, vref,
-                    ald, slip_law):
-    """The parameter vector of one point (fields ``P_*``)."""
+                    ald, slip_law, eta_c=0.0):
+    """The parameter vector of one point (fields ``P_*``; a rigid contact ignores
+    ``eta_c``).
+    """
     P = np.empty(N_PAR)
+    P[P_ETA] = 0.0 if math.isinf(beta) else eta_c
     gamma = 2.0 * zeta * math.sqrt(alpha)
     hc, hs = inplane_forcing(alpha, gamma, a_x, phase_x, on_substrate)
     P[P_ALPHA], P[P_K], P[P_A], P[P_V], P[P_GAMMA] = alpha, beta - alpha, A, V, gamma
@@ -252,24 +288,244 @@ def _touchdown_mu(P, tau, v, L):
     far = local_mu(P, v, L)
     if nd > 0.0 and abs(k * v / nd) < abs(far):
         far = k * v / nd
-    lo, hi = (0.0, far) if v > 0.0 else (far, 0.0)
-    m = 0.5 * (lo + hi)
-    for _ in range(200):
-        w, dwdm, _ = _slip_rate(P, m, L)
-        g = k * (v - w) - m * nd
-        if g > 0.0:
-            lo = m
-        else:
-            hi = m
-        dg = -k * dwdm - nd
-        step = -g / dg if dg != 0.0 else 0.0
-        mn = m + step
-        if not (lo < mn < hi):
-            mn = 0.5 * (lo + hi)
-        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
-            return mn
-        m = mn
-    return m
+    return _root_m(P, L, k * v, -nd, -k, far)
+
+
+@jit
+def _contact_mode(P):
+    """The mode of the contact segments: ``RIGID`` for a rigid contact (``k = inf``),
+    ``DAMPED`` with the contact's dashpot (``eta_c > 0``), else ``CONTACT``.
+    """
+    if math.isinf(P[P_K]):
+        return RIGID
+    return DAMPED if P[P_ETA] > 0.0 else CONTACT
+
+
+@jit
+def _inverse_slope(P, m, L):
+    """``1/w_m = a e^(Q - |m|/a) / (v_ref (1 + e^(-2|m|/a)))`` without overflow: the
+    stiffness of a rigid contact (``e^(1/a)`` at rest).
+    """
+    a = P[P_RA]
+    q = (1.0 + P[P_RB] * (L + P[P_LNR])) / a
+    au = abs(m) / a
+    return a * _exp(q - au) / (P[P_VREF] * (1.0 + math.exp(-2.0 * au)))
+
+
+@jit
+def _state_rate(P, w, L, n, nd):
+    """``(L', dL'/dw', dL'/dL)`` in contact at the slip rate ``w'`` (the partial derivatives;
+    the Linker-Dieterich term ``-(alpha_ld/b) n'/n`` in ``L'``, independent of the state).
+    """
+    dc = P[P_DC]
+    g = abs(w) / dc
+    if P[P_SLIPLAW] != 0.0:
+        lg = math.log(g) if g > 1e-300 else -690.0
+        rate = -g * (lg + L)
+        dLdw = -(lg + L + 1.0) / dc  # times sign(w)
+        dLdL = -g
+    else:
+        rate = _exp(-L) - g
+        dLdw = -1.0 / dc
+        dLdL = -_exp(-L)
+    if w < 0.0:
+        dLdw = -dLdw
+    if P[P_ALD] > 0.0:
+        rate -= P[P_ALD] / P[P_RB] * nd / n
+    return rate, dLdw, dLdL
+
+
+@jit
+def _rigid_terms(P, tau, z):
+    """What a rigid contact's right-hand side, Jacobian and curvature share at ``(tau, z)``:
+    ``(n, n', w', w_m, w_L, 1/w_m, L', dL'/dw', dL'/dL, R, h)`` with ``R = x'' - w_L L'``
+    (so that ``m' = R/w_m``) and ``h`` the in-plane forcing.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    h = P[P_HC] * ct + P[P_HS] * st
+    y, m, L = z[Z_Y], z[Z_M], z[Z_L]
+    w, wm, wL = _slip_rate(P, m, L)
+    iw = _inverse_slope(P, m, L)
+    lr, lw, ll = _state_rate(P, w, L, n, nd)
+    R = -P[P_GAMMA] * (w - P[P_V]) - P[P_ALPHA] * y - n * m + h - wL * lr
+    return n, nd, w, wm, wL, iw, lr, lw, ll, R, h
+
+
+@jit
+def _evaluate_rigid(P, tau, z, dz, J, ft, jac):
+    """:func:`_evaluate` of a rigid contact (``w = x``, ``f = n mu(x', theta)``).
+
+    The state is the local coefficient ``m = f/n`` with the body's velocity slaved to it,
+    ``x' = w'(m, L)``; the body's equation ``x'' = -gamma (x' - V) - alpha y - n m + h``
+    differentiated, ``x'' = w_m m' + w_L L'``, gives ``m' = R/w_m``, ``R = x'' - w_L L'``
+    (a stiff relaxation of the friction towards the force that holds the body where it
+    sticks, ``1/w_m ~ e^(1/a)`` at rest).  The component ``x'`` of ``z`` is not used (its
+    rate 0): :func:`_rigid_end` sets it to ``w'`` where a segment ends.
+    """
+    n, nd, w, wm, wL, iw, lr, lw, ll, R, _ = _rigid_terms(P, tau, z)
+    gamma, V, a = P[P_GAMMA], P[P_V], P[P_RA]
+    m = z[Z_M]
+    f = n * m
+    md = iw * R
+    if not _contact_rates(dz, w - V, 0.0, md, lr, f, w, gamma, J, ft, jac):
+        return
+    ba = P[P_RB] / a
+    lm = lw * wm  # the total derivatives of L' by m and L
+    lL = lw * wL + ll
+    # DR[p] = -alpha p_y + Rm p_m + RL p_L;  m' = R/w_m, d(1/w_m) = (1/w_m) c[p] with
+    # c[p] = -(tanh(m/a)/a) p_m + (b/a) p_L
+    Rm = -n + (ba * lr - gamma) * wm + ba * w * lm
+    RL = (ba * lr - gamma) * wL + ba * w * lL
+    th = math.tanh(m / a)
+    J[Z_Y, Z_M] = wm
+    J[Z_Y, Z_L] = wL
+    J[Z_M, Z_Y] = -P[P_ALPHA] * iw
+    J[Z_M, Z_M] = iw * Rm - md * th / a
+    J[Z_M, Z_L] = iw * RL + md * ba
+    J[Z_L, Z_M] = lm
+    J[Z_L, Z_L] = lL
+    J[Z_F, Z_M] = n
+    J[Z_D, Z_M] = n * w + f * wm
+    J[Z_D, Z_L] = f * wL
+    J[Z_G, Z_M] = 2.0 * gamma * (w - V) * wm
+    J[Z_G, Z_L] = 2.0 * gamma * (w - V) * wL
+    lt = _coupling_rate(P, tau)
+    ct, st = math.cos(tau), math.sin(tau)
+    ft[Z_M] = iw * (-nd * m + P[P_HS] * ct - P[P_HC] * st + ba * w * lt)
+    ft[Z_L] = lt
+    ft[Z_F] = nd * m
+    ft[Z_D] = nd * m * w
+
+
+@jit
+def _damped_terms(P, tau, z):
+    """What a damped contact's right-hand side, Jacobian and curvature share at ``(tau,
+    z)``: ``(n, n', w', w_m, w_L, L', dL'/dw', dL'/dL, x'', m', 1/(n + c w_m), k, c)``.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    y, v, m, L = z[Z_Y], z[Z_V], z[Z_M], z[Z_L]
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    w, wm, wL = _slip_rate(P, m, L)
+    lr, lw, ll = _state_rate(P, w, L, n, nd)
+    xdd = -P[P_GAMMA] * (v - P[P_V]) - P[P_ALPHA] * y - n * m + P[P_HC] * ct + P[P_HS] * st
+    iD = 1.0 / (n + cd * wm)
+    md = (k * (v - w) - nd * m + cd * (xdd - wL * lr)) * iD
+    return n, nd, w, wm, wL, lr, lw, ll, xdd, md, iD, k, cd
+
+
+@jit
+def _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd):
+    """The derivatives of the numerator ``N = k (x' - w') - n' m + c (x'' - w_L L')`` of a
+    damped contact's ``m' = N/(n + c w_m)`` by ``(y, x', m, L)``, and of its denominator
+    by ``(m, L)``.
+    """
+    ba = P[P_RB] / P[P_RA]
+    lm = lw * wm
+    lL = lw * wL + ll
+    Ny = -cd * P[P_ALPHA]
+    Nv = k - cd * P[P_GAMMA]
+    Nm = -k * wm - nd + cd * (-n + ba * (wm * lr + w * lm))
+    NL = -k * wL + cd * ba * (wL * lr + w * lL)
+    Dm = cd * w / (P[P_RA] * P[P_RA])
+    DL = -cd * ba * wm
+    return Ny, Nv, Nm, NL, Dm, DL
+
+
+@jit
+def _evaluate_damped(P, tau, z, dz, J, ft, jac):
+    """:func:`_evaluate` of a contact with its dashpot ``c = eta_c k`` in parallel with the
+    spring: ``f = k e + c (x' - w') = n m``.
+
+    The variable stays ``m = f/n`` (``w' = w'(m, L)`` explicit); differentiating
+    ``n m = k e + c (x' - w')``: ``m' = (k (x' - w') - n' m + c (x'' - w_L L'))/(n + c w_m)``,
+    no ``1/n`` (``e = (n m - c (x' - w'))/k`` is not needed as a variable).
+    """
+    n, nd, w, wm, wL, lr, lw, ll, xdd, md, iD, k, cd = _damped_terms(P, tau, z)
+    gamma, V = P[P_GAMMA], P[P_V]
+    v, m = z[Z_V], z[Z_M]
+    f = n * m
+    if not _contact_rates(dz, v - V, xdd, md, lr, f, w, gamma, J, ft, jac):
+        return
+    Ny, Nv, Nm, NL, Dm, DL = _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd)
+    J[Z_Y, Z_V] = 1.0
+    J[Z_V, Z_Y] = -P[P_ALPHA]
+    J[Z_V, Z_V] = -gamma
+    J[Z_V, Z_M] = -n
+    J[Z_M, Z_Y] = Ny * iD
+    J[Z_M, Z_V] = Nv * iD
+    J[Z_M, Z_M] = (Nm - md * Dm) * iD
+    J[Z_M, Z_L] = (NL - md * DL) * iD
+    J[Z_L, Z_M] = lw * wm
+    J[Z_L, Z_L] = lw * wL + ll
+    J[Z_F, Z_M] = n
+    J[Z_D, Z_M] = n * w + f * wm
+    J[Z_D, Z_L] = f * wL
+    J[Z_G, Z_V] = 2.0 * gamma * (v - V)
+    Nt, ht, _ = _damped_time(P, tau, z, md, nd, w, cd)
+    ft[Z_V] = -nd * m + ht
+    ft[Z_M] = (Nt - md * nd) * iD
+    ft[Z_L] = _coupling_rate(P, tau)
+    ft[Z_F] = nd * m
+    ft[Z_D] = nd * m * w
+
+
+@jit
+def _damped_time(P, tau, z, md, nd, w, cd):
+    """``(N_t, h', l_t)``: the time derivatives of a damped contact's numerator at fixed
+    ``z``, of the in-plane forcing and of the coupling's term of ``L'``.
+    """
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    ndd = -A * ct
+    ht = P[P_HS] * ct - P[P_HC] * st
+    lt = _coupling_rate(P, tau)
+    m = z[Z_M]
+    Nt = -ndd * m + cd * (-nd * m + ht + P[P_RB] / P[P_RA] * w * lt)
+    return Nt, ht, lt
+
+
+@jit
+def _contact_rates(dz, yd, vd, md, lr, f, w, gamma, J, ft, jac):
+    """The rates in contact into ``dz`` (``y' = yd``, ``x'' = vd``, ``m'``, ``L'`` and the
+    quadratures); with ``jac`` ``J`` and ``ft`` zeroed for the caller to fill.  Returns
+    ``jac``.
+    """
+    dz[Z_Y] = yd
+    dz[Z_V] = vd
+    dz[Z_M] = md
+    dz[Z_L] = lr
+    _quadrature_rates(dz, f, w, gamma * yd * yd)
+    if jac:
+        J[:, :] = 0.0
+        ft[:] = 0.0
+    return jac
+
+
+@jit
+def _quadrature_rates(dz, f, w, dissipation):
+    """The quadratures' rates: ``f``, ``f w'`` and the pin dashpot's ``gamma y'^2``."""
+    dz[Z_F] = f
+    dz[Z_D] = f * w
+    dz[Z_G] = dissipation
+
+
+@jit
+def _coupling_rate(P, tau):
+    """The time derivative of the Linker-Dieterich term ``-(alpha_ld/b) n'/n`` of ``L'``."""
+    if P[P_ALD] <= 0.0:
+        return 0.0
+    A = P[P_A]
+    ct, st = math.cos(tau), math.sin(tau)
+    n = 1.0 + A * ct
+    nd = -A * st
+    return -P[P_ALD] / P[P_RB] * (-A * ct / n - nd * nd / (n * n))
 
 
 @jit
@@ -278,7 +534,10 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     components, columns of the first ``NM``) and the time derivative ``ft``.
 
     The contact's variable is the local coefficient ``m = f/n = k e/n`` (finite as
-    ``n -> 0``, where ``e`` is not): ``m' = (k (x' - w') - m n')/n``.
+    ``n -> 0``, where ``e`` is not): ``m' = (k (x' - w') - m n')/n``.  The state's law
+    is written out here rather than called (:func:`_state_rate`, the other modes'): the
+    call made this, the finite contact's every stage, twice as long (29 against 55 ns,
+    measured); tests/solver/test_rate_state.py checks that the two agree.
     """
     alpha, gamma, V = P[P_ALPHA], P[P_GAMMA], P[P_V]
     A = P[P_A]
@@ -290,11 +549,18 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     dc = P[P_DC]
     k = P[P_K]
     slip_law = P[P_SLIPLAW] != 0.0
+    if mode == RIGID:
+        _evaluate_rigid(P, tau, z, dz, J, ft, jac)
+        return
+    if mode == DAMPED:
+        _evaluate_damped(P, tau, z, dz, J, ft, jac)
+        return
+    eta = P[P_ETA]
     f = 0.0
     w = 0.0
     dwdm = dwdL = dLdw = dLdL = 0.0
-    if mode == FLIGHT:
-        dz[Z_M] = 0.0
+    if mode == FLIGHT:  # with the dashpot z[Z_M] holds e: k e + c e' = 0
+        dz[Z_M] = -m / eta if eta > 0.0 else 0.0
         dz[Z_L] = 0.0 if slip_law else _exp(-L)
     else:
         f = n * m
@@ -330,6 +596,8 @@ def _evaluate(P, tau, z, mode, dz, J, ft, jac):
     ft[Z_V] = P[P_HS] * ct - P[P_HC] * st
     if mode == FLIGHT:
         J[Z_L, Z_L] = 0.0 if slip_law else -_exp(-L)
+        if eta > 0.0:
+            J[Z_M, Z_M] = -1.0 / eta
         return
     ndd = -A * ct
     J[Z_V, Z_M] = -n
@@ -404,7 +672,7 @@ def _stage(P, tau, zs, mode, dz, J, M, piv, rhs, hg, K, i):
 @jit
 def _curvature(P, tau, z, mode, tw):
     """What the tangent's stages need at the step's start ``(tau, z)``: the coefficients
-    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian_add`) and
+    ``tw[6]`` of the second derivatives of the right-hand side (:func:`_hessian`) and
     ``tw[5] = J_t T``, the time derivative of the Jacobian at fixed ``z`` applied to the
     tangent ``T = tw[0]`` (the augmented system's ``f_t``).
 
@@ -413,7 +681,8 @@ def _curvature(P, tau, z, mode, tw):
     ``-(k/n) d2w``; ``L' = l(w', L)`` has ``l_ww dw dw + l_w d2w + l_wL (dw dL + dL dw)
     + l_LL dL dL`` (aging: ``l_w = -sgn/d_c``, ``l_LL = e^-L``; slip: ``l_w = -sgn (ln g
     + L + 1)/d_c``, ``l_ww = -1/(d_c |w'|)``, ``l_wL = -sgn/d_c``).  ``J`` depends on
-    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.
+    ``tau`` through ``n`` in the rows of ``x'``, ``m`` and ``F``.  A rigid contact:
+    :func:`_curvature_rigid`.
     """
     T, JtT, cv = tw[0], tw[5], tw[6]
     cv[:] = 0.0
@@ -423,25 +692,20 @@ def _curvature(P, tau, z, mode, tw):
     if mode == FLIGHT:
         cv[CV_LLL] = 0.0 if slip_law else _exp(-L)
         return
-    A, k, a, dc = P[P_A], P[P_K], P[P_RA], P[P_DC]
+    _law_curvature(P, z, cv)
+    if mode == RIGID:
+        _curvature_rigid(P, tau, z, T, JtT, cv)
+        return
+    if mode == DAMPED:
+        _curvature_damped(P, tau, z, T, JtT, cv)
+        return
+    A, k = P[P_A], P[P_K]
     ct, st = math.cos(tau), math.sin(tau)
     n = 1.0 + A * ct
     nd = -A * st
     ndd = -A * ct
-    w, wm, wL = _slip_rate(P, z[Z_M], L)
-    sg = -1.0 if w < 0.0 else 1.0
+    wm, wL = cv[CV_WM], cv[CV_WL]
     cv[CV_KN] = -k / n
-    cv[CV_W], cv[CV_WM], cv[CV_WL] = w, wm, wL
-    cv[CV_BA], cv[CV_IA2] = P[P_RB] / a, 1.0 / (a * a)
-    if slip_law:
-        g = abs(w) / dc
-        lg = math.log(g) if g > 1e-300 else -690.0
-        cv[CV_LW] = -sg * (lg + L + 1.0) / dc
-        cv[CV_LWW] = -1.0 / (dc * max(abs(w), 1e-30))
-        cv[CV_LWL] = -sg / dc
-    else:
-        cv[CV_LW] = -sg / dc
-        cv[CV_LLL] = _exp(-L)
     n2 = n * n
     jmv = -k * nd / n2
     jmm = -ndd / n + (k * wm + nd) * nd / n2
@@ -453,9 +717,132 @@ def _curvature(P, tau, z, mode, tw):
 
 
 @jit
+def _law_curvature(P, z, cv):
+    """The law's coefficients of the curvature in contact (finite or rigid): ``w'`` and its
+    first derivatives, ``b/a``, ``1/a^2`` and the derivatives of ``L' = l(w', L)``.
+    """
+    a, dc, L = P[P_RA], P[P_DC], z[Z_L]
+    w, wm, wL = _slip_rate(P, z[Z_M], L)
+    sg = -1.0 if w < 0.0 else 1.0
+    cv[CV_W], cv[CV_WM], cv[CV_WL] = w, wm, wL
+    cv[CV_BA], cv[CV_IA2] = P[P_RB] / a, 1.0 / (a * a)
+    if P[P_SLIPLAW] != 0.0:
+        g = abs(w) / dc
+        lg = math.log(g) if g > 1e-300 else -690.0
+        cv[CV_LW] = -sg * (lg + L + 1.0) / dc
+        cv[CV_LWW] = -1.0 / (dc * max(abs(w), 1e-30))
+        cv[CV_LWL] = -sg / dc
+    else:
+        cv[CV_LW] = -sg / dc
+        cv[CV_LLL] = _exp(-L)
+
+
+@jit
+def _curvature_rigid(P, tau, z, T, JtT, cv):
+    """:func:`_curvature` of a rigid contact (:func:`_evaluate_rigid`): the coefficients of
+    :func:`_hessian_rigid` and ``J_t T``.  ``J`` depends on ``tau`` only in the rows of ``m``
+    (through ``n``, ``h`` and the coupling's term of ``L'``) and of ``F``:
+    ``d/dtau (dm'/dz) p = (1/w_m) (R_t c[p] + dR_t[p])`` with ``R_t = -n' m + h' + (b/a) w'
+    l_t``, ``dR_t[p] = -n' p_m + (b/a) l_t dw[p]`` (``l_t`` the coupling term's rate).
+    """
+    n, nd, w, wm, wL, iw, lr, _, ll, R, _ = _rigid_terms(P, tau, z)
+    a = P[P_RA]
+    m = z[Z_M]
+    ba = cv[CV_BA]
+    th = math.tanh(m / a)
+    cv[CV_RIGID] = 1.0
+    cv[CV_IW], cv[CV_R], cv[CV_TH], cv[CV_IA] = iw, R, th, 1.0 / a
+    cv[CV_LR], cv[CV_LL] = lr, ll
+    cv[CV_GAM], cv[CV_ALPHA], cv[CV_N] = P[P_GAMMA], P[P_ALPHA], n
+    lt = _coupling_rate(P, tau)
+    ct, st = math.cos(tau), math.sin(tau)
+    Rt = -nd * m + P[P_HS] * ct - P[P_HC] * st + ba * w * lt
+    for c in range(NM):
+        pm, pL = T[Z_M, c], T[Z_L, c]
+        cp = -th / a * pm + ba * pL
+        JtT[Z_M, c] = iw * (Rt * cp - nd * pm + ba * lt * (wm * pm + wL * pL))
+        JtT[Z_F, c] = nd * pm
+
+
+@jit
+def _curvature_damped(P, tau, z, T, JtT, cv):
+    """:func:`_curvature` of a damped contact (:func:`_evaluate_damped`): the coefficients
+    of :func:`_hessian_damped` and ``J_t T``.  With ``m' = N/D``, ``D = n + c w_m``: ``d/dtau
+    (dm'/dz) p = (dN_t[p] - m'_t dD[p] - n' dm'[p])/D``, ``m'_t = (N_t - m' n')/D``,
+    ``dN_t[p] = -n'' p_m + c (-n' p_m + (b/a) l_t dw[p])``; the rows of ``x'`` and ``F``
+    through ``n``.
+    """
+    n, nd, w, wm, wL, lr, lw, ll, _, md, iD, k, cd = _damped_terms(P, tau, z)
+    cv[CV_DAMPED] = 1.0
+    cv[CV_IW], cv[CV_R], cv[CV_LR], cv[CV_LL] = iD, md, lr, ll
+    cv[CV_GAM], cv[CV_ALPHA], cv[CV_N] = P[P_GAMMA], P[P_ALPHA], n
+    cv[CV_K], cv[CV_C], cv[CV_ND] = k, cd, nd
+    Ny, Nv, Nm, NL, Dm, DL = _damped_slopes(P, n, nd, w, wm, wL, lr, lw, ll, k, cd)
+    Nt, _, lt = _damped_time(P, tau, z, md, nd, w, cd)
+    mdt = (Nt - md * nd) * iD
+    ndd = -P[P_A] * math.cos(tau)
+    ba = cv[CV_BA]
+    for c in range(NM):
+        py, pv, pm, pL = T[Z_Y, c], T[Z_V, c], T[Z_M, c], T[Z_L, c]
+        dD = Dm * pm + DL * pL
+        dmd = (Ny * py + Nv * pv + Nm * pm + NL * pL - md * dD) * iD
+        dNt = -ndd * pm + cd * (-nd * pm + ba * lt * (wm * pm + wL * pL))
+        JtT[Z_V, c] = -nd * pm
+        JtT[Z_M, c] = (dNt - mdt * dD - nd * dmd) * iD
+        JtT[Z_F, c] = nd * pm
+
+
+@jit
+def _hessian_damped(cv, p, q, c):
+    """:func:`_hessian` of a damped contact: ``L' = l(w', L)`` and ``m' = N/D``
+    (:func:`_evaluate_damped`), ``d2m' = (d2N - dm'[p] dD[q] - dm'[q] dD[p] - m' d2D)/D``
+    with ``d2N = -k d2w + c (b/a) (d2w L' + dw[p] dL'[q] + dw[q] dL'[p] + w' d2L')`` (``N``
+    is linear in ``y`` and ``x'``) and ``d2D = c (w_m/a^2 p_m q_m - (b/a) w'/a^2 (p_m q_L +
+    p_L q_m) + (b/a)^2 w_m p_L q_L)``.
+    """
+    py, pv, pm, pL = p[Z_Y], p[Z_V], p[Z_M], p[Z_L]
+    qy, qv, qm, qL = q[Z_Y, c], q[Z_V, c], q[Z_M, c], q[Z_L, c]
+    d2w, d2l = _law_hessian(cv, pm, pL, qm, qL)
+    w, wm, wL, ba, ia2 = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA], cv[CV_IA2]
+    lw, ll, lr = cv[CV_LW], cv[CV_LL], cv[CV_LR]
+    k, cd, n, nd, md, iD = cv[CV_K], cv[CV_C], cv[CV_N], cv[CV_ND], cv[CV_R], cv[CV_IW]
+    alpha, gamma = cv[CV_ALPHA], cv[CV_GAM]
+    dwp = wm * pm + wL * pL
+    dwq = wm * qm + wL * qL
+    dlp = lw * dwp + ll * pL
+    dlq = lw * dwq + ll * qL
+    dNp = k * (pv - dwp) - nd * pm + cd * (-alpha * py - gamma * pv - n * pm
+                                           + ba * (dwp * lr + w * dlp))
+    dNq = k * (qv - dwq) - nd * qm + cd * (-alpha * qy - gamma * qv - n * qm
+                                           + ba * (dwq * lr + w * dlq))
+    dDp = cd * (w * ia2 * pm - ba * wm * pL)
+    dDq = cd * (w * ia2 * qm - ba * wm * qL)
+    dmp = (dNp - md * dDp) * iD
+    dmq = (dNq - md * dDq) * iD
+    d2N = -k * d2w + cd * ba * (d2w * lr + dwp * dlq + dwq * dlp + w * d2l)
+    d2D = cd * (wm * ia2 * pm * qm - ba * w * ia2 * (pm * qL + pL * qm) + ba * ba * wm * pL * qL)
+    return 0.0, (d2N - dmp * dDq - dmq * dDp - md * d2D) * iD, d2l
+
+
+@jit
+def _hessian(cv, p, q, c):
+    """The second derivatives of ``(y', m', L')`` along the directions ``p`` (a vector)
+    and column ``c`` of ``q`` (:func:`_curvature`; ``y'`` is linear but for a rigid
+    contact, :func:`_hessian_rigid`).
+    """
+    if cv[CV_RIGID] != 0.0:
+        return _hessian_rigid(cv, p, q, c)
+    if cv[CV_DAMPED] != 0.0:
+        return _hessian_damped(cv, p, q, c)
+    pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
+    d2w, hl = _law_hessian(cv, pm, pL, qm, qL)
+    return 0.0, cv[CV_KN] * d2w, hl
+
+
+@jit
 def _hessian_add(cv, p, q, out):
-    """Add the second derivatives of ``(m', L')`` along the direction ``p`` (a vector)
-    and each column of ``q`` (:func:`_curvature`) to the rows ``Z_M``, ``Z_L`` of ``out``.
+    """:func:`_hessian` of a finite contact without its dashpot for every column of ``q``
+    at once, added to the rows ``Z_M``, ``Z_L`` of ``out`` (the columns the inner loop).
     """
     pm, pL = p[Z_M], p[Z_L]
     w, wm, wl, ba = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA]
@@ -471,6 +858,50 @@ def _hessian_add(cv, p, q, out):
         dwq = wm * qm + wl * qL
         out[Z_M, c] += kn * d2w
         out[Z_L, c] += lww * dwp * dwq + lw * d2w + lwl * (dwp * qL + pL * dwq) + lll * pL * qL
+
+
+@jit
+def _law_hessian(cv, pm, pL, qm, qL):
+    """``(d2w, d2l)``: the second derivatives of ``w'(m, L)`` and of ``L' = l(w', L)``
+    along ``(pm, pL)`` and ``(qm, qL)``.
+    """
+    w, wm, ba = cv[CV_W], cv[CV_WM], cv[CV_BA]
+    d2w = cv[CV_IA2] * w * pm * qm - ba * wm * (pm * qL + pL * qm) + ba * ba * w * pL * qL
+    dwp = wm * pm + cv[CV_WL] * pL
+    dwq = wm * qm + cv[CV_WL] * qL
+    hl = (cv[CV_LWW] * dwp * dwq + cv[CV_LW] * d2w + cv[CV_LWL] * (dwp * qL + pL * dwq)
+          + cv[CV_LLL] * pL * qL)
+    return d2w, hl
+
+
+@jit
+def _hessian_rigid(cv, p, q, c):
+    """:func:`_hessian` of a rigid contact: ``y' = w' - V``, ``L' = l(w', L)`` and
+    ``m' = R/w_m`` (:func:`_evaluate_rigid`), whose second derivative is ``(1/w_m) (d2R +
+    dR[p] c[q] + dR[q] c[p] + R (c[p] c[q] - (1 - tanh^2(m/a))/a^2 p_m q_m))`` with
+    ``d(1/w_m) = (1/w_m) c``, ``c[p] = -(tanh(m/a)/a) p_m + (b/a) p_L``, ``R = -gamma (w' -
+    V) - alpha y - n m + h + (b/a) w' L'``.
+    """
+    py, pm, pL = p[Z_Y], p[Z_M], p[Z_L]
+    qy, qm, qL = q[Z_Y, c], q[Z_M, c], q[Z_L, c]
+    d2w, d2l = _law_hessian(cv, pm, pL, qm, qL)
+    w, wm, wL, ba = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA]
+    lw, ll = cv[CV_LW], cv[CV_LL]
+    gamma, alpha, n, th, ia = cv[CV_GAM], cv[CV_ALPHA], cv[CV_N], cv[CV_TH], cv[CV_IA]
+    R, lr = cv[CV_R], cv[CV_LR]
+    dwp = wm * pm + wL * pL
+    dwq = wm * qm + wL * qL
+    dlp = lw * dwp + ll * pL
+    dlq = lw * dwq + ll * qL
+    g = ba * lr - gamma
+    drp = -alpha * py - n * pm + g * dwp + ba * w * dlp
+    drq = -alpha * qy - n * qm + g * dwq + ba * w * dlq
+    d2r = g * d2w + ba * (dwp * dlq + dwq * dlp) + ba * w * d2l
+    cp = -th * ia * pm + ba * pL
+    cq = -th * ia * qm + ba * qL
+    hm = cv[CV_IW] * (d2r + drp * cq + drq * cp
+                      + R * (cp * cq - (1.0 - th * th) * ia * ia * pm * qm))
+    return d2w, hm, d2l
 
 
 @jit
@@ -504,7 +935,14 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
             b = ih * RCC[i, l]
             for c in range(NM):
                 rT[r, c] += b * KT[l, r, c]
-    _hessian_add(cv, K[i], T, rT)
+    if cv[CV_RIGID] == 0.0 and cv[CV_DAMPED] == 0.0:
+        _hessian_add(cv, K[i], T, rT)
+    else:
+        for c in range(NM):
+            hy, hm, hl = _hessian(cv, K[i], T, c)
+            rT[Z_Y, c] += hy
+            rT[Z_M, c] += hm
+            rT[Z_L, c] += hl
     # (I/(h gam) - J) KT = rT for the four columns at once, with the state's factors
     for c in range(NM):
         p = piv[c]
@@ -769,29 +1207,154 @@ def _period_tangent(P, z, rtol, hbox, work, count, log, lp, tangent, tw):
     z[Z_F] = z[Z_D] = z[Z_G] = 0.0
     T = tw[0]
     c_off, c_on = _cuts(P)
+    mode = _contact_mode(P)
     if c_off >= TWO_PI:
-        return _advance(P, z, 0.0, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
-                        tangent, tw)
-    if not _advance(P, z, 0.0, c_off, CONTACT, rtol, hbox, scale, work, count, log, lp,
+        ok = _advance(P, z, 0.0, TWO_PI, mode, rtol, hbox, scale, work, count, log, lp,
+                      tangent, tw)
+        _rigid_end(P, z, T, mode, tangent)
+        return ok
+    if not _advance(P, z, 0.0, c_off, mode, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
         return False
-    z[Z_M] = 0.0  # lift-off: the contact spring unloads
-    T[Z_M, :] = 0.0
+    _liftoff(P, c_off, z, T, mode, tangent)
     count[2] += 2
     if not _advance(P, z, c_off, c_on, FLIGHT, rtol, hbox, scale, work, count, log, lp,
                     tangent, tw):
         return False
-    # touch-down: the contact re-forms unloaded (e = n m/k = 0 to round-off), on the slow
-    # manifold of m (its layer lasts ~ a n/(k x') ~ 1e-12)
-    z[Z_M] = _touchdown_mu(P, c_on, z[Z_V], z[Z_L])
+    _touchdown(P, c_on, z, T, mode, tangent)
+    ok = _advance(P, z, c_on, TWO_PI, mode, rtol, hbox, scale, work, count, log, lp,
+                  tangent, tw)
+    _rigid_end(P, z, T, mode, tangent)
+    return ok
+
+
+@jit
+def _touchdown(P, tau, z, T, mode, tangent):
+    """The contact re-forms at ``tau``: ``m`` in place, with ``tangent`` its row of ``T``
+    (the reset's Jacobian).
+
+    Finite contact: unloaded (``e = n m/k = 0`` to round-off), on the slow manifold of ``m``
+    (its layer lasts ``~ a n/(k x') ~ 1e-12``), :func:`_touchdown_mu`.  Rigid: the contact
+    point moves with the body at once, ``m = mu(x', theta)`` (the reference's), whose
+    derivatives are ``dm/dx' = 1/w_m`` and ``dm/dL = -w_L/w_m``.
+    """
+    if mode == RIGID:
+        z[Z_M] = local_mu(P, z[Z_V], z[Z_L])
+        if tangent:
+            _, _, wL = _slip_rate(P, z[Z_M], z[Z_L])
+            iw = _inverse_slope(P, z[Z_M], z[Z_L])
+            for c in range(NM):
+                T[Z_M, c] = iw * (T[Z_V, c] - wL * T[Z_L, c])
+        return
+    if mode == DAMPED:  # z[Z_M] held e through the flight
+        k = P[P_K]
+        cd = P[P_ETA] * k
+        n = 1.0 + P[P_A] * math.cos(tau)
+        e = z[Z_M]
+        z[Z_M] = _damped_mu(P, n, z[Z_V], e, z[Z_L])
+        if tangent:
+            _, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+            iD = 1.0 / (n + cd * wm)
+            for c in range(NM):
+                T[Z_M, c] = (k * T[Z_M, c] + cd * T[Z_V, c] - cd * wL * T[Z_L, c]) * iD
+        return
+    z[Z_M] = _touchdown_mu(P, tau, z[Z_V], z[Z_L])
     if tangent:
         k = P[P_K]
         _, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
-        den = k * wm - P[P_A] * math.sin(c_on)
+        den = k * wm - P[P_A] * math.sin(tau)
         for c in range(NM):
             T[Z_M, c] = k * (T[Z_V, c] - wL * T[Z_L, c]) / den
-    return _advance(P, z, c_on, TWO_PI, CONTACT, rtol, hbox, scale, work, count, log, lp,
-                    tangent, tw)
+
+
+@jit
+def _liftoff(P, tau, z, T, mode, tangent):
+    """The contact ends at ``tau`` (where ``n = CUT_DELTA``): the spring unloads (``m = 0``;
+    a rigid contact's ``x' = w'`` first, :func:`_rigid_end`), or, with the dashpot, ``z[Z_M]``
+    holds the elongation ``e = (n m - c (x' - w'))/k`` through the flight (``f = k e + c e'
+    = 0``); with ``tangent`` the row of ``T`` (the reset's Jacobian).
+    """
+    _rigid_end(P, z, T, mode, tangent)
+    if mode != DAMPED:
+        z[Z_M] = 0.0
+        T[Z_M, :] = 0.0
+        return
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    n = 1.0 + P[P_A] * math.cos(tau)
+    w, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+    z[Z_M] = (n * z[Z_M] - cd * (z[Z_V] - w)) / k
+    if tangent:
+        for c in range(NM):
+            T[Z_M, c] = ((n + cd * wm) * T[Z_M, c] - cd * T[Z_V, c] + cd * wL * T[Z_L, c]) / k
+
+
+@jit
+def _damped_mu(P, n, v, e, L):
+    """The local coefficient ``m`` of a damped contact with the elongation ``e`` and the
+    body's velocity ``x' = v`` under the load ``n``: the root of ``g(m) = n m + c w'(m, L) -
+    (k e + c x')``, increasing in ``m``, between 0 and the smaller in modulus of ``(k e + c
+    x')/n`` and ``mu((k e + c x')/c)`` (:func:`_root_m`).
+    """
+    k = P[P_K]
+    cd = P[P_ETA] * k
+    F0 = k * e + cd * v
+    if F0 == 0.0:
+        return 0.0
+    far = local_mu(P, F0 / cd, L)
+    if n > 0.0 and abs(F0 / n) < abs(far):
+        far = F0 / n
+    return _root_m(P, L, -F0, n, cd, far)
+
+
+@jit
+def _root_m(P, L, s0, s1, s2, far):
+    """The root ``m`` of the monotone ``g(m) = s0 + s1 m + s2 w'(m, L)`` between 0 and
+    ``far`` (``g`` changes sign there): Newton's method kept in the bracket (bisection
+    where a step leaves it).
+    """
+    lo, hi = (0.0, far) if far > 0.0 else (far, 0.0)
+    up = s0 < 0.0  # g(0) = s0: g increases through the root where g(0) < 0 and far > 0
+    if far < 0.0:
+        up = not up
+    m = 0.5 * (lo + hi)
+    for _ in range(200):
+        w, dwdm, _ = _slip_rate(P, m, L)
+        g = s0 + s1 * m + s2 * w
+        if (g < 0.0) == up:
+            lo = m
+        else:
+            hi = m
+        dg = s1 + s2 * dwdm
+        step = -g / dg if dg != 0.0 else 0.0
+        mn = m + step
+        if not (lo < mn < hi):
+            mn = 0.5 * (lo + hi)
+        if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
+            return mn
+        m = mn
+    return m
+
+
+@jit
+def _rigid_end(P, z, T, mode, tangent):
+    """At the end of a rigid contact's segment the body's velocity ``x' = w'(m, L)`` into
+    ``z`` (the segment leaves it untouched), with ``tangent`` its row of ``T``.  Nothing for
+    a finite contact.
+    """
+    if mode != RIGID:
+        return
+    w, wm, wL = _slip_rate(P, z[Z_M], z[Z_L])
+    z[Z_V] = w
+    if tangent:
+        for c in range(NM):
+            T[Z_V, c] = wm * T[Z_M, c] + wL * T[Z_L, c]
+
+
+@jit
+def _elongation(P, z, f, w):
+    """The contact spring's elongation ``e = (f - c (x' - w'))/k`` in contact (0 rigid)."""
+    return (f - P[P_ETA] * P[P_K] * (z[Z_V] - w)) / P[P_K] if P[P_ETA] > 0.0 else f / P[P_K]
 
 
 @jit
@@ -814,9 +1377,25 @@ def sliding_start(P, offset):
     z = np.zeros(NZ)
     z[Z_Y] = -f / P[P_ALPHA] - offset[0]
     z[Z_V] = V - offset[1]
-    z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
+    mode = _contact_mode(P)
+    if mode == RIGID:  # the body's velocity continuous: m = mu(x', theta)
+        z[Z_M] = local_mu(P, z[Z_V], math.log(P[P_DC] / V))
+    elif mode == DAMPED:  # the elongation e = f/k and x' continuous: the force jumps
+        z[Z_M] = _damped_mu(P, 1.0 + P[P_A], z[Z_V], f / P[P_K], math.log(P[P_DC] / V))
+    else:
+        z[Z_M] = f / (1.0 + P[P_A])  # the spring's force continuous: n(0) = 1 + A
     z[Z_L] = math.log(P[P_DC] / V)
     return z
+
+
+@jit
+def _kick(P, z):
+    """The velocity kicked by ``KICK`` off a repelling orbit (a rigid contact's through
+    ``m``, its velocity being slaved to it).
+    """
+    z[Z_V] += KICK * (abs(z[Z_V]) + P[P_V])
+    if _contact_mode(P) == RIGID:
+        z[Z_M] = local_mu(P, z[Z_V], z[Z_L])
 
 
 @jit
@@ -914,6 +1493,8 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
     about the square of the step; the refinement checks it).  Near a neutral multiplier the
     convergence is confirmed at ``rtol`` first, so that the multiplier is the orbit's.
     """
+    if res.shape[0] < N_RES:
+        raise ValueError("_newton: res needs N_RES entries")
     z0 = z.copy()
     z1 = z.copy()
     dz = np.empty(NM)
@@ -1020,7 +1601,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     work = _workspace()
     count = np.zeros(3, np.int64)
     hbox = np.array([1e-3])
-    res = np.zeros(7)
+    res = np.zeros(N_RES)
     tw = work[6]
     log = np.empty(1)  # no step log
     lp = np.zeros(2, np.int64)
@@ -1072,7 +1653,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 # are taken once a kick of KICK has grown to the state's size
                 wv, s = _weights(P, z)
                 if _distance(wv, z, zn) <= 1e3 * rtol * s:
-                    z[Z_V] += KICK * (abs(z[Z_V]) + P[P_V])
+                    _kick(P, z)
                     grow = math.log(1.0 / KICK) / math.log(max(res[2], 1.0 + 1e-9))
                     while chk_k < k + 2.0 * grow and chk_k <= max_periods:
                         chk_k *= 2
@@ -1121,7 +1702,7 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     f, w = contact_state(P, z)
     out_f[O_Y], out_f[O_XD] = to_lab_frame(offset, z[Z_Y], z[Z_V])
     out_f[O_F] = f
-    out_f[O_E] = f / P[P_K]
+    out_f[O_E] = _elongation(P, z, f, w)
     out_i[I_STATUS] = status
     out_i[I_PERIOD] = period
     out_i[I_PERIODS] = int(periods)
@@ -1134,7 +1715,8 @@ def point_parameters(p):
     """The parameter vector of a row of the table of points."""
     return make_parameters(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA],
                            p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_RS_A],
-                           p[T_RS_B], p[T_RS_DC], p[T_RS_VREF], p[T_RS_ALD], p[T_RS_LAW])
+                           p[T_RS_B], p[T_RS_DC], p[T_RS_VREF], p[T_RS_ALD], p[T_RS_LAW],
+                           p[T_ETA_C])
 
 
 @jit

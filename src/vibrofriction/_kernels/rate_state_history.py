@@ -8,8 +8,10 @@ interpolation.  The quadratures ``F = int f``, ``D = int f w'`` and ``G = int ga
 from the start (not reset at the sections).  Lift-off and touch-down are the integrator's
 (:func:`.rate_state._cuts`): the contact ends where ``n = CUT_DELTA`` before lift-off, the
 local coefficient is 0 in flight, and the contact re-forms on the slow manifold of ``m``
-(:func:`.rate_state._touchdown_mu`).  This module adds to :mod:`.rate_state` and changes
-none of it.
+(:func:`.rate_state._touchdown`); a rigid contact's ``x'`` is slaved to ``m`` in contact
+(:func:`.rate_state._evaluate_rigid`) and recorded as the slip rate; with contact damping
+``z[Z_M]`` holds the elongation in flight (:func:`.rate_state._liftoff`).  This module adds to
+:mod:`.rate_state` and changes none of it.
 """
 
 import math
@@ -23,17 +25,20 @@ from .rate_state import (
     CONTACT,
     FLIGHT,
     NZ,
+    RIGID,
     Z_D,
     Z_F,
     Z_G,
     Z_L,
     Z_M,
     Z_V,
+    _contact_mode,
     _cuts,
+    _liftoff,
     _scales,
     _segment,
     _slip_rate,
-    _touchdown_mu,
+    _touchdown,
     _workspace,
     point_parameters,
     rs_steady_state,
@@ -80,15 +85,20 @@ def rs_start(p, steady, rtol, max_periods, tol_mean, out_f, out_i):
 
 @jit
 def _record(P, t, z, mode, out, r):
-    """Row ``r`` of ``out``: ``tau``, ``z``, the slip rate (nan in flight), the mode."""
+    """Row ``r`` of ``out``: ``tau``, ``z``, the slip rate (nan in flight), the mode
+    (``CONTACT`` or ``FLIGHT``; a rigid contact's velocity ``x' = w'`` into ``z`` first).
+    """
     out[r, R_TAU] = t
-    for j in range(NZ):
-        out[r, R_Z + j] = z[j]
-    if mode == CONTACT:
-        out[r, R_W] = _slip_rate(P, z[Z_M], z[Z_L])[0]
+    if mode != FLIGHT:
+        w = _slip_rate(P, z[Z_M], z[Z_L])[0]
+        if mode == RIGID:
+            z[Z_V] = w
+        out[r, R_W] = w
     else:
         out[r, R_W] = math.nan
-    out[r, R_MODE] = mode
+    for j in range(NZ):
+        out[r, R_Z + j] = z[j]
+    out[r, R_MODE] = FLIGHT if mode == FLIGHT else CONTACT
 
 
 @jit
@@ -97,7 +107,7 @@ def rs_history(p, z, seg_t, seg_mode, grid, rtol, out):
 
     Segment ``i`` runs from ``seg_t[i]`` to ``seg_t[i + 1]`` in ``seg_mode[i]``
     (``CONTACT`` or ``FLIGHT``); where the mode changes, the contact unloads (``m = 0``) or
-    re-forms (:func:`.rate_state._touchdown_mu`).  A row at each segment's two ends (a
+    re-forms (:func:`.rate_state._touchdown`).  A row at each segment's two ends (a
     change of mode gives two rows at one time: before and after) and at each time of the
     sorted ``grid`` inside a segment (times within ``NEAR`` of the last row's: none).
     Returns the rows written, ``-1`` where a step failed (the integrator's limits).
@@ -111,13 +121,16 @@ def rs_history(p, z, seg_t, seg_mode, grid, rtol, out):
     lp = np.zeros(2, np.int64)
     r = 0
     g = 0
+    contact = _contact_mode(P)
+    T = work[6][0]  # no tangent: the resets' rows of it are not used
     for i in range(seg_mode.size):
-        t0, t1, mode = seg_t[i], seg_t[i + 1], seg_mode[i]
-        if i > 0 and mode != seg_mode[i - 1]:
-            if mode == FLIGHT:
-                z[Z_M] = 0.0  # lift-off: the contact spring unloads
+        t0, t1 = seg_t[i], seg_t[i + 1]
+        mode = FLIGHT if seg_mode[i] == FLIGHT else contact
+        if i > 0 and seg_mode[i] != seg_mode[i - 1]:
+            if mode == FLIGHT:  # lift-off: the spring unloads (or e kept, damped)
+                _liftoff(P, t0, z, T, contact, False)
             else:
-                z[Z_M] = _touchdown_mu(P, t0, z[Z_V], z[Z_L])
+                _touchdown(P, t0, z, T, mode, False)
         _record(P, t0, z, mode, out, r)
         r += 1
         while g < grid.size and grid[g] <= t0 + NEAR:

@@ -101,6 +101,27 @@ def _energies(dim: Dimensionless, V: float, tau: NDArray[np.float64],
     return _cumulative(tau, p_in), _cumulative(tau, gamma * rel**2)
 
 
+def _elongation(dim: Dimensionless, tau: NDArray[np.float64], z: NDArray[np.float64],
+                w: NDArray[np.float64], n: NDArray[np.float64], contact: NDArray[np.bool_]
+                ) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """``(e, dissipated_contact)`` of the mirrored point's rows (kernels' variables).
+
+    ``e = f/k`` (0 for a rigid contact); with the contact's dashpot ``c = eta_c k``, ``e =
+    (f - c (x' - w'))/k`` in contact and the kernels' ``z[Z_M]`` in flight (``k e + c e' =
+    0``), and its dissipation ``int c e'^2`` by the trapezoidal rule over the samples
+    (``e' = x' - w'`` in contact, ``-e/eta_c`` in flight).
+    """
+    k = dim.beta - dim.alpha
+    m, v = z[:, _rs.Z_M], z[:, _rs.Z_V]
+    if not (dim.eta_c > 0.0 and math.isfinite(k)):
+        return np.where(contact, n * m / k, 0.0), np.zeros_like(tau)
+    c = dim.eta_c * k
+    slip = np.where(contact, v - np.where(contact, w, 0.0), 0.0)
+    e = np.where(contact, (n * m - c * slip) / k, m)
+    e_dot = np.where(contact, slip, -m / dim.eta_c)
+    return e, _cumulative(tau, c * e_dot**2)
+
+
 def rate_state_history(dim: Dimensionless, V: float, periods: float, samples_per_period: int,
                        initial: object = "sliding",
                        settings: SolverSettings | None = None) -> RateStateHistory:
@@ -147,17 +168,19 @@ def rate_state_history(dim: Dimensionless, V: float, periods: float, samples_per
         codes.EV_LIFTOFF if contact[j] else codes.EV_TOUCHDOWN],
         str(names[ph[j]]), str(names[ph[j + 1]])) for j in changes)
     work, pin = _energies(mirror, Va, tau, z, sign * f)
+    e_k, contact_loss = _elongation(dim, tau, z, out[:, _rh.R_W], n, contact)
+    e = sign * e_k
     y, v = sign * z[:, _rs.Z_Y], sign * z[:, _rs.Z_V]
     if dim.a_x > 0.0 and dim.inplane_on == "substrate":  # back to the laboratory frame
         X, Xd = inplane_motion(dim, tau)
         y, v = y + X, v + Xd
     zeros = np.zeros_like(tau)
     r = int(np.flatnonzero(np.isclose(tau, TWO_PI * whole_done, rtol=0.0, atol=1e-12))[-1])
-    final = section_state(y[r], v[r], f[r], int(ph[r]), f[r] / (dim.beta - dim.alpha))
+    final = section_state(y[r], v[r], f[r], int(ph[r]), float(e[r]))
     return RateStateHistory(
         tau=tau, x=y + V * tau, x_dot=v, f=f, n=n, phase=names[ph], events=events,
-        system=dim, v_inertial=float(V), e=f / (dim.beta - dim.alpha), work_input=work,
-        dissipated_pin=pin, dissipated_contact=zeros,
+        system=dim, v_inertial=float(V), e=e, work_input=work,
+        dissipated_pin=pin, dissipated_contact=contact_loss,
         dissipated_friction=z[:, _rs.Z_D].copy(), final_state=final,
         theta=np.exp(z[:, _rs.Z_L]), local_mu=mu,
         slip_velocity=np.stack([w, zeros], axis=1),

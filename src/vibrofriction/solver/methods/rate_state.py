@@ -64,8 +64,11 @@ def _unforced_unstable(points: PointTable, out_f: NDArray[np.float64],
     own (tests/solver/test_rate_state_multiplier.py runs the kernel without this guard);
     the guard stays as an independent cross-check: a row it contradicts is not converged
     (its ``mu_ratio`` the steady sliding it sits on, its error ``inf``), not periodic.
+    Not with contact damping (``eta_c > 0``): the theory's polynomial has no contact
+    dashpot, which damps, so there the kernel's multiplier decides alone.
     """
     rows = np.flatnonzero((points["amplitude"] == 0.0) & (points["a_x"] == 0.0)
+                          & (points["eta_c"] == 0.0)
                           & (out_i[:, codes.I_STATUS] == codes.ST_PERIODIC))
     for i in rows:
         p = {k: float(points[k][i]) for k in ("alpha", "beta", "zeta", "v_inertial", "rs_a",
