@@ -5,13 +5,18 @@ once, as ``python -W error examples/NAME.py OUTPUT_DIR`` (a warning is an error,
 every test), and the tests read what it wrote and the variables it left behind: a
 ``sitecustomize`` on the script's path (:data:`_KEEP_GLOBALS`) writes the script's globals
 (those that pickle) to a file at its exit. One run serves the test that it runs as a
-script and the test that pins its numbers (each example used to run twice).
+script and the test that pins its numbers (each example used to run twice). Where the
+script tests are not selected (``make fast``: they are ``slow``), the numbers' tests run
+the example in the test process instead (:func:`runpy.run_path` with that ``sys.argv``).
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
 import os
+import runpy
 import subprocess
 import sys
 from dataclasses import dataclass
@@ -75,33 +80,63 @@ class Run:
         return {name: cloudpickle.loads(value) for name, value in kept.items()}
 
 
-@pytest.fixture(scope="module")
-def example(tmp_path_factory):
-    """``example(name)``: the run of ``examples/<name>.py``, made on the first call."""
-    hook = tmp_path_factory.mktemp("keep_globals")
-    (hook / "sitecustomize.py").write_text(_KEEP_GLOBALS)
-    runs: dict[str, Run] = {}
+class Examples:
+    """The runs of the examples, each made once, on first use (the module's fixture)."""
 
-    def run(name: str) -> Run:
-        if name not in runs:
-            folder = tmp_path_factory.mktemp(name)
-            kept = hook / f"{name}.pickle"
+    def __init__(self, tmp_path_factory: pytest.TempPathFactory, scripted: set[str]) -> None:
+        self.tmp = tmp_path_factory
+        self.scripted = scripted  # the examples whose script test runs in this session
+        self.hook = tmp_path_factory.mktemp("keep_globals")
+        (self.hook / "sitecustomize.py").write_text(_KEEP_GLOBALS)
+        self.runs: dict[str, Run] = {}
+
+    def script(self, name: str) -> Run:
+        """``python -W error examples/<name>.py OUT``, its globals kept."""
+        if name not in self.runs:
+            folder = self.tmp.mktemp(name)
+            kept = self.hook / f"{name}.pickle"
             script = (EXAMPLES / f"{name}.py").resolve()
             env = dict(os.environ, VIBROFRICTION_EXAMPLE_GLOBALS=f"{script}{os.pathsep}{kept}",
                        PYTHONPATH=os.pathsep.join(
-                           [str(hook), *filter(None, [os.environ.get("PYTHONPATH")])]))
+                           [str(self.hook), *filter(None, [os.environ.get("PYTHONPATH")])]))
             out = subprocess.run([sys.executable, "-W", "error", str(script), str(folder)],
                                  capture_output=True, text=True, timeout=300, cwd=folder,
                                  env=env)
-            runs[name] = Run(out, folder, kept)
-        return runs[name]
+            self.runs[name] = Run(out, folder, kept)
+        return self.runs[name]
 
-    return run
+    def namespace(self, name: str) -> dict:
+        """The globals of the example: from its script run where this session runs its
+        script test (``make test``), else from a run in this process (``make fast``, where
+        the script tests are deselected as slow: no process to start), as
+        ``python examples/NAME.py OUT`` would run it (:func:`runpy.run_path`, that
+        ``sys.argv``); either way it printed no absolute path."""
+        if name in self.scripted:
+            return self.script(name).namespace()
+        folder = self.tmp.mktemp(name)
+        script = EXAMPLES / f"{name}.py"
+        argv, sys.argv = sys.argv, [str(script), str(folder)]
+        printed = io.StringIO()
+        try:
+            with contextlib.redirect_stdout(printed):
+                namespace = runpy.run_path(str(script), run_name="__main__")
+        finally:
+            sys.argv = argv
+        for path in (folder, EXAMPLES):
+            assert str(path) not in printed.getvalue(), printed.getvalue()
+        return namespace
 
 
-def _run(name: str, example) -> dict:
+@pytest.fixture(scope="module")
+def example(request, tmp_path_factory) -> Examples:
+    scripted = {item.callspec.params["name"] for item in request.session.items
+                if getattr(item, "originalname", "") == "test_example_runs_as_a_script"}
+    return Examples(tmp_path_factory, scripted)
+
+
+def _run(name: str, example: Examples) -> dict:
     """The globals of ``examples/<name>.py``'s run."""
-    return example(name).namespace()
+    return example.namespace(name)
 
 
 @pytest.mark.parametrize("name,pngs", [
@@ -117,7 +152,7 @@ def _run(name: str, example) -> dict:
 ])
 @pytest.mark.slow
 def test_example_runs_as_a_script(name, pngs, example):
-    run = example(name)
+    run = example.script(name)
     run.namespace()  # it ran, printed no absolute path, and left its globals
     for png in pngs:
         assert (run.folder / png).stat().st_size > 20_000, png  # a real figure, not a blank
