@@ -13,7 +13,7 @@ PYTEST_WORKERS ?= auto
 PYTEST = PYTHONDONTWRITEBYTECODE= $(BIN)/python -m pytest -q -n $(PYTEST_WORKERS) \
          --dist loadfile --no-loadscope-reorder --durations=25
 
-.PHONY: demo warmup test fast lint typecheck dist bench clean clean-cache browser docs
+.PHONY: demo warmup test fast checks lint typecheck dist bench clean clean-cache browser docs
 
 # The package and what it needs to run (make demo); the tools of the tests on top (make test)
 $(BIN)/vibrofriction: pyproject.toml
@@ -47,13 +47,18 @@ docs: $(VENV)/.docs  ## the site into docs/_build/html, offline, warnings as err
 	@echo "site: docs/_build/html/index.html"
 
 # The test lanes (docs/packaging.md, "Test lanes"):
-# * make test: every test (fast, slow and browser), the site built first; CI runs it
+# * make test: every test (fast, slow and browser), the site built first; CI runs it. The
+#   site's build runs on one core: the checks (mypy, about 40 s of one core from a clean
+#   clone) run beside it, on the other (make -j2), and pytest starts when both are done
 # * make fast: the tests not marked slow or browser, stopping at the first failure
-test: $(VENV)/.dev browser warmup docs  ## the whole test suite, site, slow and browser tests included
+test: $(VENV)/.dev browser warmup  ## the whole test suite, site, slow and browser tests included
+	$(MAKE) --no-print-directory -j2 docs checks
+	VIBROFRICTION_BROWSER_TESTS=required $(PYTEST)
+
+checks: $(VENV)/.dev  ## ruff, the import contracts and mypy (make test runs them beside the site)
 	$(BIN)/ruff check src tests benchmarks examples
 	$(BIN)/lint-imports
 	$(BIN)/mypy
-	VIBROFRICTION_BROWSER_TESTS=required $(PYTEST)
 
 fast:  ## the development loop, installs nothing: lint, contracts, tests not slow or browser
 	@test -x $(BIN)/vibrofriction || (echo "make fast installs nothing: run 'make test' once first" >&2; exit 2)

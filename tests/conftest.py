@@ -7,10 +7,12 @@ per worker. (``--dist loadgroup`` with an ``xdist_group`` per module would balan
 better, but pytest-xdist 3.8 on pytest 9.2 ignores the groups: pytest-xdist issue 1386.)
 
 The modules are handed to the workers in the order of :data:`HEAVY_FIRST`, then the rest
-by their number of tests (the Makefile passes ``--no-loadscope-reorder``: xdist's own order
-is by number of tests alone, which sent the wheel's module, 4 tests and minutes of
-set-up, last, with the other worker idle meanwhile). Longest first: the long modules
-overlap the many short ones, and the run ends on short ones.
+by their estimated time, :data:`SLOW_TEST_SECONDS` a ``slow`` test and
+:data:`FAST_TEST_SECONDS` another (the Makefile passes ``--no-loadscope-reorder``: xdist's
+own order is by number of tests alone, which sent the wheel's module, 4 tests and minutes
+of set-up, last, with the other worker idle meanwhile; and by number of tests alone a
+module of a few slow tests, 20 to 40 s, came among the last). Longest first: the long
+modules overlap the many short ones, and the run ends on modules of fast tests only.
 """
 
 import os
@@ -36,20 +38,29 @@ HEAVY_FIRST = (
     "inplane/test_inplane_api.py", "figures/test_reproduce.py")
 
 
+#: The mean time of a test, slow and not (seconds of a worker), that orders the modules not
+#: in HEAVY_FIRST: the fast lane took 165 s on 2 workers for 2210 tests (0.15 s a test),
+#: the clean-clone run 890 s on 2 workers for 2660 tests, so about 4 s a slow test
+#: (2026-11-29, benchmarks/results/test_loop.md and docs/packaging.md)
+SLOW_TEST_SECONDS, FAST_TEST_SECONDS = 4.0, 0.15
+
+
 def pytest_collection_modifyitems(config, items):
-    """The modules of :data:`HEAVY_FIRST` first, then the others by number of tests (the
-    tests of a module keep their order)."""
+    """The modules of :data:`HEAVY_FIRST` first, then the others by their estimated time,
+    longest first (the tests of a module keep their order)."""
     rank = {name: i for i, name in enumerate(HEAVY_FIRST)}
-    counts: dict[str, int] = {}
+    cost: dict[str, float] = {}
     for item in items:
         module = item.nodeid.split("::")[0]
-        counts[module] = counts.get(module, 0) + 1
+        slow = item.get_closest_marker("slow") is not None
+        cost[module] = cost.get(module, 0.0) + (SLOW_TEST_SECONDS if slow
+                                                else FAST_TEST_SECONDS)
 
-    def key(module: str) -> tuple[int, int]:
+    def key(module: str) -> tuple[int, float]:
         name = module.removeprefix("tests/")
-        return (rank[name], 0) if name in rank else (len(rank), -counts[module])
+        return (rank[name], 0.0) if name in rank else (len(rank), -cost[module])
 
-    order = {m: i for i, m in enumerate(sorted(counts, key=key))}
+    order = {m: i for i, m in enumerate(sorted(cost, key=key))}
     items.sort(key=lambda item: order[item.nodeid.split("::")[0]])
 
 

@@ -1,18 +1,28 @@
 """Every example runs as a user would run it, and pins a number it computes.
 
 The examples are sphinx-gallery scripts (``# %%`` cells, no ``main()``): each is run
-here as ``python examples/NAME.py OUTPUT_DIR`` would run it (:func:`runpy.run_path`
-with that ``sys.argv``), and the test reads the variables it left behind.
+once, as ``python -W error examples/NAME.py OUTPUT_DIR`` (a warning is an error, as in
+every test), and the tests read what it wrote and the variables it left behind: a
+``sitecustomize`` on the script's path (:data:`_KEEP_GLOBALS`) writes the script's globals
+(those that pickle) to a file at its exit. One run serves the test that it runs as a
+script and the test that pins its numbers (each example used to run twice). Where the
+script tests are not selected (``make fast``: they are ``slow``), the numbers' tests run
+the example in the test process instead (:func:`runpy.run_path` with that ``sys.argv``).
 """
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
+import os
 import runpy
 import subprocess
 import sys
+from dataclasses import dataclass
 from pathlib import Path
 
+import cloudpickle
 import numpy as np
 import pytest
 
@@ -21,17 +31,112 @@ from vibrofriction import theory
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
+#: The ``sitecustomize`` of an example's run: at exit, the globals of ``__main__`` that
+#: pickle (cloudpickle: functions of the script by value) into the file the environment
+#: names, in the script's own process only (not in a process it starts, which imports this
+#: too). Nothing else changes: the script runs as ``python examples/NAME.py`` runs it.
+_KEEP_GLOBALS = """
+import atexit
+import os
+import sys
 
-def _run(name: str, out: Path, monkeypatch: pytest.MonkeyPatch,
-         capsys: pytest.CaptureFixture[str]) -> dict:
-    """Run ``examples/<name>.py out`` in this process; its globals. What it printed
-    names no absolute path (the output directory is given, not printed)."""
-    script = EXAMPLES / f"{name}.py"
-    monkeypatch.setattr(sys, "argv", [str(script), str(out)])
-    namespace = runpy.run_path(str(script), run_name="__main__")
-    printed = capsys.readouterr().out
-    assert str(out) not in printed and str(EXAMPLES) not in printed, printed
-    return namespace
+
+def _keep_globals():
+    import cloudpickle
+
+    script, path = os.environ["VIBROFRICTION_EXAMPLE_GLOBALS"].split(os.pathsep)
+    if os.path.realpath(sys.argv[0]) != script:  # a process the script started
+        return
+    kept = {}
+    for name, value in vars(sys.modules["__main__"]).items():
+        if name.startswith("__"):
+            continue
+        try:
+            kept[name] = cloudpickle.dumps(value)
+        except Exception:
+            pass
+    with open(path, "wb") as f:
+        f.write(cloudpickle.dumps(kept))
+
+
+atexit.register(_keep_globals)
+"""
+
+
+@dataclass
+class Run:
+    """One example run: the process, its output folder, and its globals."""
+
+    out: subprocess.CompletedProcess
+    folder: Path
+    globals_file: Path
+
+    def namespace(self) -> dict:
+        """The script's globals (those that pickled), for the tests that pin its numbers."""
+        assert self.out.returncode == 0, self.out.stderr
+        for path in (self.folder, EXAMPLES):  # no absolute paths printed
+            assert str(path) not in self.out.stdout, self.out.stdout
+        kept = cloudpickle.loads(self.globals_file.read_bytes())
+        return {name: cloudpickle.loads(value) for name, value in kept.items()}
+
+
+class Examples:
+    """The runs of the examples, each made once, on first use (the module's fixture)."""
+
+    def __init__(self, tmp_path_factory: pytest.TempPathFactory, scripted: set[str]) -> None:
+        self.tmp = tmp_path_factory
+        self.scripted = scripted  # the examples whose script test runs in this session
+        self.hook = tmp_path_factory.mktemp("keep_globals")
+        (self.hook / "sitecustomize.py").write_text(_KEEP_GLOBALS)
+        self.runs: dict[str, Run] = {}
+
+    def script(self, name: str) -> Run:
+        """``python -W error examples/<name>.py OUT``, its globals kept."""
+        if name not in self.runs:
+            folder = self.tmp.mktemp(name)
+            kept = self.hook / f"{name}.pickle"
+            script = (EXAMPLES / f"{name}.py").resolve()
+            env = dict(os.environ, VIBROFRICTION_EXAMPLE_GLOBALS=f"{script}{os.pathsep}{kept}",
+                       PYTHONPATH=os.pathsep.join(
+                           [str(self.hook), *filter(None, [os.environ.get("PYTHONPATH")])]))
+            out = subprocess.run([sys.executable, "-W", "error", str(script), str(folder)],
+                                 capture_output=True, text=True, timeout=300, cwd=folder,
+                                 env=env)
+            self.runs[name] = Run(out, folder, kept)
+        return self.runs[name]
+
+    def namespace(self, name: str) -> dict:
+        """The globals of the example: from its script run where this session runs its
+        script test (``make test``), else from a run in this process (``make fast``, where
+        the script tests are deselected as slow: no process to start), as
+        ``python examples/NAME.py OUT`` would run it (:func:`runpy.run_path`, that
+        ``sys.argv``); either way it printed no absolute path."""
+        if name in self.scripted:
+            return self.script(name).namespace()
+        folder = self.tmp.mktemp(name)
+        script = EXAMPLES / f"{name}.py"
+        argv, sys.argv = sys.argv, [str(script), str(folder)]
+        printed = io.StringIO()
+        try:
+            with contextlib.redirect_stdout(printed):
+                namespace = runpy.run_path(str(script), run_name="__main__")
+        finally:
+            sys.argv = argv
+        for path in (folder, EXAMPLES):
+            assert str(path) not in printed.getvalue(), printed.getvalue()
+        return namespace
+
+
+@pytest.fixture(scope="module")
+def example(request, tmp_path_factory) -> Examples:
+    scripted = {item.callspec.params["name"] for item in request.session.items
+                if getattr(item, "originalname", "") == "test_example_runs_as_a_script"}
+    return Examples(tmp_path_factory, scripted)
+
+
+def _run(name: str, example: Examples) -> dict:
+    """The globals of ``examples/<name>.py``'s run."""
+    return example.namespace(name)
 
 
 @pytest.mark.parametrize("name,pngs", [
@@ -46,13 +151,11 @@ def _run(name: str, out: Path, monkeypatch: pytest.MonkeyPatch,
     ("sphere_stick_slip", ["sphere_stick_slip.png"]),
 ])
 @pytest.mark.slow
-def test_example_runs_as_a_script(name, pngs, tmp_path):
-    out = subprocess.run([sys.executable, str(EXAMPLES / f"{name}.py"), str(tmp_path)],
-                         capture_output=True, text=True, timeout=300, cwd=tmp_path)
-    assert out.returncode == 0, out.stderr
-    assert str(tmp_path) not in out.stdout, out.stdout  # no absolute paths printed
+def test_example_runs_as_a_script(name, pngs, example):
+    run = example.script(name)
+    run.namespace()  # it ran, printed no absolute path, and left its globals
     for png in pngs:
-        assert (tmp_path / png).stat().st_size > 20_000, png  # a real figure, not a blank
+        assert (run.folder / png).stat().st_size > 20_000, png  # a real figure, not a blank
 
 
 def test_examples_are_gallery_scripts_with_text_between_steps():
@@ -68,8 +171,8 @@ def test_examples_are_gallery_scripts_with_text_between_steps():
         assert "def main(" not in text, script.name
 
 
-def test_pin_example_numbers(tmp_path, monkeypatch, capsys):
-    ns = _run("pin_si_units", tmp_path, monkeypatch, capsys)
+def test_pin_example_numbers(example):
+    ns = _run("pin_si_units", example)
     p, cof = ns["PIN"], ns["cof"]
     # eq. (2): at rest the friction is mu0 (1 - a); eq. (12) written out here
     assert cof[0] == pytest.approx(p.mu0 * (1 - p.du_z / p.u_z0), rel=1e-12)
@@ -80,15 +183,15 @@ def test_pin_example_numbers(tmp_path, monkeypatch, capsys):
     assert cof[0] < cof[1] < p.mu0
 
 
-def test_resonant_example_reaches_the_energy_balance_plateau(tmp_path, monkeypatch, capsys):
-    ns = _run("resonant_case_iv", tmp_path, monkeypatch, capsys)
+def test_resonant_example_reaches_the_energy_balance_plateau(example):
+    ns = _run("resonant_case_iv", example)
     assert ns["mu_at_largest_V"][0.5] == pytest.approx(
         float(theory.resonant_plateau_exact(0.5)), abs=1e-3)
 
 
 @pytest.mark.slow
-def test_dask_example_equals_a_serial_sweep(tmp_path, monkeypatch, capsys):
-    ns = _run("atlas_on_dask", tmp_path, monkeypatch, capsys)
+def test_dask_example_equals_a_serial_sweep(example):
+    ns = _run("atlas_on_dask", example)
     serial = vf.sweep(alpha=0.5, beta=np.geomspace(0.6, 20.0, 12), amplitude=0.5,
                       vbar=np.linspace(0.05, 1.2, 24), workers=1, progress=False)
     assert math.isclose(float(ns["ds"]["mu_ratio"].sum()), float(serial["mu_ratio"].sum()),
@@ -96,23 +199,22 @@ def test_dask_example_equals_a_serial_sweep(tmp_path, monkeypatch, capsys):
 
 
 @pytest.mark.slow
-def test_fit_example_recovers_the_pin(tmp_path, monkeypatch, capsys):
-    ns = _run("fit_pin_on_disk", tmp_path, monkeypatch, capsys)
+def test_fit_example_recovers_the_pin(example):
+    ns = _run("fit_pin_on_disk", example)
     for name, (value, stderr) in ns["fitted"].items():
         assert abs(value - getattr(ns["TRUE"], name)) <= 3 * stderr, name
 
 
-def test_design_example_respects_the_limits(tmp_path, monkeypatch, capsys):
-    ns = _run("design_oscillation", tmp_path, monkeypatch, capsys)
+def test_design_example_respects_the_limits(example):
+    ns = _run("design_oscillation", example)
     system = ns["res"].system
     assert 200 <= ns["frequency_hz"] <= 5000 and 0.05e-6 <= system.du_z <= 0.5e-6
     assert system.omega * system.du_z <= 0.01 * (1 + 1e-9)
     assert ns["res"].cof < 0.3
 
 
-def test_paper_experiment_prediction_ends_at_the_damped_critical_velocity(
-        tmp_path, monkeypatch, capsys):
-    ns = _run("paper_experiment", tmp_path, monkeypatch, capsys)
+def test_paper_experiment_prediction_ends_at_the_damped_critical_velocity(example):
+    ns = _run("paper_experiment", example)
     for du in ns["AMPLITUDES_UM"]:
         p = ns["pin"](du * 1e-6)
         # rigid contact, alpha = 1: V_c = a/(2 zeta) in units of mu0 F_N0/(m omega)
@@ -121,8 +223,8 @@ def test_paper_experiment_prediction_ends_at_the_damped_critical_velocity(
         assert ns["cof_at_1cm_s"][du] < p.mu0
 
 
-def test_frictional_drive_example(tmp_path, monkeypatch, capsys):
-    ns = _run("frictional_drive", tmp_path, monkeypatch, capsys)
+def test_frictional_drive_example(example):
+    ns = _run("frictional_drive", example)
     # the solver creeping at V = -+1e-4 settles at the closed form's band edges
     assert np.max(abs(ns["creep"] - np.column_stack([ns["closed"].lower,
                                                      ns["closed"].upper]))) < 5e-3
@@ -143,8 +245,8 @@ def test_frictional_drive_example(tmp_path, monkeypatch, capsys):
     assert np.all(at_0.mu_ratio[below] < 1)
 
 
-def test_sphere_example(tmp_path, monkeypatch, capsys):
-    ns = _run("sphere_stick_slip", tmp_path, monkeypatch, capsys)
+def test_sphere_example(example):
+    ns = _run("sphere_stick_slip", example)
     sphere, at, h = ns["sphere"], ns["at"], ns["h"]
     assert sphere.trusted.all()
     # one steady period of the 160-spring history against the converged solver
