@@ -13,9 +13,9 @@ velocity of continuous sliding, a point's history and its contact in space and t
 ``explorer_axis.png`` (a_x typed on the axis vbar: the axis switched to V, said beside a_x and
 the axis; the mount's note under its toggle) and the friction laws: ``explorer_static.png``
 (static above kinetic, a point's history with the local coefficient f/n) and
-``explorer_rate_state.png`` (rate-and-state friction: eta_c reset and disabled with its
-solver's refusal, the curve with steady sliding without oscillation, a point's history with
-the state theta chosen under the forces).
+``explorer_rate_state.png`` (rate-and-state friction with contact damping eta_c = 0.1, the
+curve with steady sliding without oscillation, a point's history with the state theta
+chosen under the forces).
 
 Run:  python benchmarks/explorer_screenshots.py [default inplane history map error fit path
       mdr axis static rate_state]
