@@ -825,39 +825,26 @@ def _hessian_damped(cv, p, q, c):
 
 
 @jit
-def _hessian(cv, p, q, c):
-    """The second derivatives of ``(y', m', L')`` along the directions ``p`` (a vector)
-    and column ``c`` of ``q`` (:func:`_curvature`; ``y'`` is linear but for a rigid
-    contact, :func:`_hessian_rigid`).
+def _hessian(cv, p, q, out):
+    """Add the second derivatives of ``(y', m', L')`` along the direction ``p`` (a vector)
+    and each column of ``q`` (:func:`_curvature`) to the rows ``Z_Y``, ``Z_M``, ``Z_L`` of
+    ``out`` (``y'`` is linear but for a rigid contact, :func:`_hessian_rigid`; a damped
+    contact's :func:`_hessian_damped`).
     """
-    if cv[CV_RIGID] != 0.0:
-        return _hessian_rigid(cv, p, q, c)
-    if cv[CV_DAMPED] != 0.0:
-        return _hessian_damped(cv, p, q, c)
-    pm, pL, qm, qL = p[Z_M], p[Z_L], q[Z_M, c], q[Z_L, c]
-    d2w, hl = _law_hessian(cv, pm, pL, qm, qL)
-    return 0.0, cv[CV_KN] * d2w, hl
-
-
-@jit
-def _hessian_add(cv, p, q, out):
-    """:func:`_hessian` of a finite contact without its dashpot for every column of ``q``
-    at once, added to the rows ``Z_M``, ``Z_L`` of ``out`` (the columns the inner loop).
-    """
-    pm, pL = p[Z_M], p[Z_L]
-    w, wm, wl, ba = cv[CV_W], cv[CV_WM], cv[CV_WL], cv[CV_BA]
-    dwp = wm * pm + wl * pL
-    # d2w = cv[CV_IA2] w pm qm - ba wm (pm qL + pL qm) + ba^2 w pL qL, by column
-    c_mm = cv[CV_IA2] * w * pm - ba * wm * pL
-    c_mL = -ba * wm * pm + ba * ba * w * pL
-    lw, lww, lwl, lll = cv[CV_LW], cv[CV_LWW], cv[CV_LWL], cv[CV_LLL]
+    rigid, damped = cv[CV_RIGID] != 0.0, cv[CV_DAMPED] != 0.0
     kn = cv[CV_KN]
+    pm, pL = p[Z_M], p[Z_L]
     for c in range(NM):
-        qm, qL = q[Z_M, c], q[Z_L, c]
-        d2w = c_mm * qm + c_mL * qL
-        dwq = wm * qm + wl * qL
-        out[Z_M, c] += kn * d2w
-        out[Z_L, c] += lww * dwp * dwq + lw * d2w + lwl * (dwp * qL + pL * dwq) + lll * pL * qL
+        if rigid:
+            hy, hm, hl = _hessian_rigid(cv, p, q, c)
+            out[Z_Y, c] += hy
+        elif damped:
+            _, hm, hl = _hessian_damped(cv, p, q, c)
+        else:
+            d2w, hl = _law_hessian(cv, pm, pL, q[Z_M, c], q[Z_L, c])
+            hm = kn * d2w
+        out[Z_M, c] += hm
+        out[Z_L, c] += hl
 
 
 @jit
@@ -935,14 +922,7 @@ def _tangent_stage(i, J, Js, M, piv, K, hh, hg, tw):
             b = ih * RCC[i, l]
             for c in range(NM):
                 rT[r, c] += b * KT[l, r, c]
-    if cv[CV_RIGID] == 0.0 and cv[CV_DAMPED] == 0.0:
-        _hessian_add(cv, K[i], T, rT)
-    else:
-        for c in range(NM):
-            hy, hm, hl = _hessian(cv, K[i], T, c)
-            rT[Z_Y, c] += hy
-            rT[Z_M, c] += hm
-            rT[Z_L, c] += hl
+    _hessian(cv, K[i], T, rT)
     # (I/(h gam) - J) KT = rT for the four columns at once, with the state's factors
     for c in range(NM):
         p = piv[c]
