@@ -18,7 +18,7 @@ import vibrofriction as vf
 from vibrofriction.schema import FLOAT_COLUMNS, INT_COLUMNS, METHOD_NAMES, POINT_COLUMNS
 from vibrofriction.solver import SectionState, SolverSettings, solve_points
 from vibrofriction.solver.methods import METHODS, capability_table, choose, method_of
-from vibrofriction.solver.points import point_table
+from vibrofriction.solver.points import point_table, table_of
 
 SETTING_NAMES = tuple(f.name for f in dataclasses.fields(SolverSettings))
 #: a point of each method that converges quickly with the defaults
@@ -189,6 +189,23 @@ def test_a_point_table_is_validated_once_by_name() -> None:
     with pytest.raises(TypeError, match="unknown parameter"):
         point_table({"alpha": 0.5, "beta": 2.0, "amplitude": 0.5, "v_inertial": 0.3,
                      "gamma": 1.0})
+
+
+@pytest.mark.parametrize("system", [
+    vf.Dimensionless(0.5, 2.0, 0.5, rs_a=0.01, rs_b=0.005, rs_law="slip"),
+    vf.Dimensionless(0.7, math.inf, 1.3, a_y=0.3, alpha_y=0.9, zeta=0.1,
+                     inplane_on="holder", profile_exponent=2.0),
+])
+@pytest.mark.parametrize("v", [0.5, [0.1, -0.2], np.ones((2, 3))])
+def test_the_table_of_a_system_is_its_point_table(system, v) -> None:
+    """A system's table (its fields checked when it was made, the velocities here) is the
+    table of its values, row for row (twins and choices resolved the same way)."""
+    fields = {n: getattr(system, n) for n in POINT_COLUMNS if n != "v_inertial"}
+    mine, full = table_of(system, v), point_table({**fields, "v_inertial": v})
+    assert mine.shape == full.shape
+    np.testing.assert_array_equal(mine.values, full.values)
+    with pytest.raises(ValueError, match="v_inertial"):
+        table_of(system, [0.1, math.nan])
 
 
 def test_no_points_is_no_work_and_keeps_the_shape() -> None:

@@ -146,7 +146,21 @@ def _choice_codes(name: str, value: Any) -> NDArray[np.float64]:
 
 
 def table_of(system: Dimensionless, v_inertial: ArrayLike) -> PointTable:
-    """The points of ``system`` at the inertial velocities ``v_inertial``."""
-    values: dict[str, Any] = {n: getattr(system, n) for n in POINT_COLUMNS
-                              if n != "v_inertial"}
-    return point_table({**values, "v_inertial": v_inertial})
+    """The points of ``system`` at the inertial velocities ``v_inertial``.
+
+    The system was validated when it was made (it is frozen): only the velocities are
+    checked here, the rest of each row is the system's.
+    """
+    V = validated({"v_inertial": v_inertial})["v_inertial"]
+    row = np.empty(len(POINT_COLUMNS))
+    for name in _NUMBERS:
+        value = getattr(system, name) if name != "v_inertial" else math.nan
+        if value is None:  # an optional parameter: its twin's value
+            value = getattr(system, PARAMETER[name].twin)
+        row[point_index(name)] = value
+    for name in _CHOICE_NAMES:
+        row[point_index(name)] = CHOICES[name].values.index(getattr(system, name))
+    values = np.empty((V.size, len(POINT_COLUMNS)))
+    values[:] = row
+    values[:, point_index("v_inertial")] = V.ravel()
+    return PointTable(values, V.shape)
