@@ -32,7 +32,8 @@ demo: $(BIN)/vibrofriction  ## reproduce every figure of the paper into $(OUT)/
 
 # numba's cache filled on both cores before the site's examples and the tests run (else the
 # site compiles on one core, and both test workers compile the kernels they start with)
-warmup: $(BIN)/vibrofriction  ## compile the solver's kernels now (a load where they are cached)
+warmup: $(BIN)/vibrofriction  ## the shipped kernels built (once, where they run), then loaded or compiled
+	$(BIN)/python -c "from vibrofriction.warmup import refresh_shipped; refresh_shipped()"
 	$(BIN)/vibrofriction warmup --no-progress
 
 browser:  ## the distribution's headless Chromium for the explorer's browser tests

@@ -6,7 +6,9 @@ kernel on one core) unless the kernels come precompiled (a wheel built by ``make
 ships them, :mod:`vibrofriction._kernels.jit`). :func:`warm_up` compiles (or loads) the
 kernels of the parts named, with a progress bar, on several cores at once: for images, CI
 and the commands that must not wait in the middle of their work (``reproduce``,
-``explore``). :func:`build_shipped` makes the shipped cache.
+``explore``). :func:`build_shipped` makes the shipped cache; :func:`refresh_shipped` makes it
+only where it is missing or older than the sources (``make warmup``: built once, then loaded
+by the warm-up, the tests and the wheel's test).
 
 The parts (:data:`PARTS`): ``flat`` (the flat punch's event-driven solver, every regime,
 damping and a longitudinal in-plane drive), ``plane`` (the 2-D solver of a transverse
@@ -28,7 +30,7 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["PARTS", "WarmUp", "build_shipped", "warm_up"]
+__all__ = ["PARTS", "WarmUp", "build_shipped", "refresh_shipped", "shipped_is_fresh", "warm_up"]
 
 
 def _flat() -> None:
@@ -251,4 +253,40 @@ def build_shipped(dest: Path | str | None = None, *, workers: int | None = None)
         for path in Path(tmp).rglob("*.nb[ic]"):
             shutil.copy2(path, dest / path.name)
             n += 1
+    (dest / _COMPLETE).write_text(f"{n} files\n")
     return n
+
+
+#: The file :func:`build_shipped` writes last: the cache is whole, and as old as this file.
+_COMPLETE = ".complete"
+
+
+def shipped_is_fresh(dest: Path | str | None = None) -> bool:
+    """Whether the shipped cache in ``dest`` (default the package's) is whole and fresh.
+
+    Fresh: newer than every source file of the package (kernels read constants from other
+    modules, so any change may make an entry stale; numba itself checks only the kernel's
+    own file).
+    """
+    from ._kernels.jit import SHIPPED
+
+    stamp = (SHIPPED if dest is None else Path(dest)) / _COMPLETE
+    if not stamp.is_file():
+        return False
+    newest = max(p.stat().st_mtime for p in Path(__file__).resolve().parent.rglob("*.py"))
+    return stamp.stat().st_mtime >= newest
+
+
+def refresh_shipped(*, workers: int | None = None) -> bool:
+    """:func:`build_shipped` into the package's folder, unless it is fresh there.
+
+    Only on a machine that runs its code; where it is fresh (:func:`shipped_is_fresh`),
+    nothing. Returns whether the shipped cache serves this machine.
+    """
+    from ._kernels.jit import runs_shipped
+
+    if not runs_shipped():
+        return False
+    if not shipped_is_fresh():
+        build_shipped(workers=workers)
+    return True

@@ -8,13 +8,15 @@ import os
 import platform
 import subprocess
 import sys
+from pathlib import Path
 
 import numba
 import pytest
 
+import vibrofriction as vf
 from vibrofriction._kernels import jit, notice, steady
 from vibrofriction.cli import run
-from vibrofriction.warmup import PARTS, warm_up
+from vibrofriction.warmup import PARTS, shipped_is_fresh, warm_up
 
 
 def _fresh_function():
@@ -102,3 +104,15 @@ def test_the_kernels_run_as_plain_python_without_the_compiler():
                          timeout=300, env={**os.environ, "NUMBA_DISABLE_JIT": "1"})
     assert got.returncode == 0, got.stderr[-2000:]
     assert got.stdout.strip() == "0.597601"  # the README's value, 0.5976005546
+
+
+def test_the_shipped_cache_is_fresh_only_whole_and_newer_than_every_source(tmp_path):
+    """``make warmup`` rebuilds the shipped cache unless it is whole (the stamp
+    build_shipped writes last) and newer than every source file of the package."""
+    assert not shipped_is_fresh(tmp_path)  # no stamp: not whole
+    stamp = tmp_path / ".complete"
+    stamp.write_text("540 files\n")
+    assert shipped_is_fresh(tmp_path)
+    newest = max(p.stat().st_mtime for p in Path(vf.__file__).parent.rglob("*.py"))
+    os.utime(stamp, (newest - 10.0, newest - 10.0))  # a source changed after the build
+    assert not shipped_is_fresh(tmp_path)

@@ -43,6 +43,11 @@ _V3 = ("avx", "avx2", "bmi", "bmi2", "f16c", "fma", "lzcnt", "movbe", "xsave", "
        "popcnt", "sahf", "sse3", "sse4.1", "sse4.2", "ssse3")
 
 
+def runs_shipped() -> bool:
+    """Whether this machine runs the shipped cache's code (and it is not switched off)."""
+    return _runs_shipped()
+
+
 @functools.cache
 def _runs_shipped() -> bool:
     """Whether this machine runs the shipped cache's code (x86-64 with every v3 feature)."""
