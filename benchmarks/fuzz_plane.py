@@ -6,6 +6,11 @@ signed |V| 1e-3..3, zeta in {0, 0.01, 0.1, 0.5}, eta_c in {0, 0, 0.1, 1}, a_x in
 Prints the count of each status, the trusted count, the median, 90th percentile and
 largest time, and the slowest point.  Run: ``python benchmarks/fuzz_plane.py [--write]``
 (``--write``: also into benchmarks/results/plane_fuzz.md, with date, commit and machine).
+
+``--compare OLD`` solves the same points with the source tree ``OLD`` (its ``src`` on the
+path, in a subprocess: ``--values FILE`` saves them) and compares: equal statuses, the
+largest difference of ``mu_ratio`` and ``lateral_ratio`` over the two stated errors, of the
+multipliers, and the ratio of the stated errors.
 """
 
 from __future__ import annotations
@@ -23,7 +28,8 @@ import numpy as np
 from vibrofriction.solver import solve_points
 
 
-def main() -> None:
+def _points() -> tuple[np.ndarray, ...]:
+    """The 150 points (seed 3): alpha, beta, a, V, zeta, eta_c, a_x, phase_x, a_y, phase_y."""
     rng = np.random.default_rng(3)
     n = 150
     al = 10 ** rng.uniform(-2, 1, n)
@@ -36,6 +42,49 @@ def main() -> None:
     px = rng.uniform(0, 6.3, n)
     ay = 10 ** rng.uniform(-2, 0.7, n)
     py = rng.uniform(0, 6.3, n)
+    return al, be, a, V, ze, et, ax, px, ay, py
+
+
+def _values(path: str) -> None:
+    """The points' columns compared by ``--compare``, into the ``.npz`` file ``path``."""
+    o = solve_points(*_points())
+    np.savez(path, **{k: o[k] for k in ("mu_ratio", "lateral_ratio", "error", "status",
+                                        "multiplier")})
+
+
+def _compare(old_tree: str) -> list[str]:
+    """This tree against ``old_tree`` on the same points (see the module doc)."""
+    import os
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        files = {}
+        for name, tree in (("old", old_tree), ("new", str(Path(__file__).parents[1]))):
+            files[name] = f"{tmp}/{name}.npz"
+            env = {**os.environ, "PYTHONPATH": f"{tree}/src"}
+            subprocess.run([sys.executable, __file__, "--values", files[name]], env=env,
+                           check=True)
+        o, n = (np.load(files[k]) for k in ("old", "new"))
+        bar = o["error"] + n["error"]
+        return [f"statuses equal: {bool(np.array_equal(o['status'], n['status']))}",
+                "largest |difference| over the two stated errors: mu_ratio "
+                f"{np.max(np.abs(o['mu_ratio'] - n['mu_ratio']) / bar):.1e}, lateral_ratio "
+                f"{np.max(np.abs(o['lateral_ratio'] - n['lateral_ratio']) / bar):.1e}",
+                "largest |difference| of the multipliers: "
+                f"{np.nanmax(np.abs(o['multiplier'] - n['multiplier'])):.1e}",
+                f"stated errors new/old: median {np.median(n['error'] / o['error']):.2f}, "
+                f"largest {np.max(n['error'] / o['error']):.2f}"]
+
+
+def main() -> None:
+    if "--values" in sys.argv:
+        _values(sys.argv[sys.argv.index("--values") + 1])
+        return
+    if "--compare" in sys.argv:
+        print("\n".join(_compare(sys.argv[sys.argv.index("--compare") + 1])))
+        return
+    al, be, a, V, ze, et, ax, px, ay, py = _points()
+    n = len(al)
     solve_points(0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0)  # compile or load
     times, status, trusted = [], [], 0
     for i in range(n):

@@ -1,9 +1,15 @@
 """A static coefficient above the kinetic one in the 2-D solver (``static_ratio = s > 1``;
 docs/inplane.md, "A static coefficient above the kinetic one").
 
-* ``s = 1`` is the solver before the law bit for bit: every output column of 20 random
-  points and the arrays of two histories (tests/data/static_ratio_baseline.json, made on
-  the code before by tests/data/make_static_ratio_baseline.py);
+* ``s = 1`` is the solver before the law: every output column of 20 random points and
+  the arrays of a history (tests/data/static_ratio_baseline.json, made on the code before
+  by tests/data/make_static_ratio_baseline.py). Bit for bit until the steady search's
+  Newton changed (2026-11-29: chord steps, a looser transient); since then its answers
+  agree with the baseline to round-off, its multiplier (a difference Jacobian at another
+  iterate) to ``1e-4``, its stated error (the orbit at ``100 rtol``, reached by other
+  steps) to a quarter, and its effort (periods, events, settling) is not compared; so a
+  history from ``initial="steady"`` (that search's section state) is no longer compared
+  bit for bit, the one from the sliding start still is;
 * along histories ``|f| <= s n`` (the static circle) in stick and ``|f| = n`` (the kinetic
   circle) along the contact point's slip velocity in slip; at each stick->slip ``|f|``
   reaches ``s n`` and drops to ``n`` in the direction of ``f`` (a Jenkins contact's
@@ -68,7 +74,13 @@ def _equal(a: list, b: list) -> bool:
 
 
 # --------------------------------------------------------------------------- s = 1
-def test_static_ratio_one_is_the_solver_before_bit_for_bit() -> None:
+#: The steady search's effort, which its Newton's chord steps changed (not compared), and
+#: its multiplier, a difference Jacobian's at the last fresh iterate (to 1e-4)
+EFFORT = ("work", "periods", "events", "settling_periods")
+ROUNDOFF, MULTIPLIER = 1e-12, 1e-4
+
+
+def test_static_ratio_one_is_the_solver_before() -> None:
     pts = BASELINE["plane_points"]
     expected = BASELINE["plane_outputs"]
     for on in ("substrate", "holder"):
@@ -76,10 +88,21 @@ def test_static_ratio_one_is_the_solver_before_bit_for_bit() -> None:
         cols = {k: np.array([pts[i][k] for i in idx]) for k in pts[0] if k != "inplane_on"}
         got = solve_points(**cols, inplane_on=on, static_ratio=1.0)
         for k in expected:  # every column there was (later ones are not the 2-D solver's)
-            assert _equal(np.asarray(got[k]).tolist(), [expected[k][i] for i in idx]), (on, k)
+            if k in EFFORT:
+                continue
+            want = np.array([expected[k][i] for i in idx], dtype=float)
+            have = np.asarray(got[k], dtype=float)
+            if k == "multiplier":
+                assert np.allclose(have, want, rtol=0.0, atol=MULTIPLIER, equal_nan=True), on
+            elif k == "error":  # an estimate: the same orbit at 100 rtol, reached otherwise
+                assert np.allclose(have, want, rtol=0.25, atol=0.0, equal_nan=True), on
+            elif np.issubdtype(np.asarray(got[k]).dtype, np.floating):
+                assert np.allclose(have, want, rtol=0.0, atol=ROUNDOFF, equal_nan=True), (on, k)
+            else:  # status, period, phase, degenerate, method, trusted: equal
+                assert _equal(have.tolist(), want.tolist()), (on, k)
 
 
-@pytest.mark.parametrize("j", [0, 1])
+@pytest.mark.parametrize("j", [0])  # 1, a steady start: that search's state, see above
 def test_static_ratio_one_history_is_the_history_before_bit_for_bit(j: int) -> None:
     h = BASELINE["histories"][j]
     sim = vf.simulate(Dimensionless(**h["system"], static_ratio=1.0), v_inertial=h["v_inertial"],

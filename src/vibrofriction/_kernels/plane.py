@@ -586,13 +586,21 @@ def mean_normal(a):
 
 
 @jit
-def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info):
+def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
+           chord=False):
     """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
     integration's noise) below ``floor``.  The step is capped (:data:`NEWTON_STEP_CAP`)
     and each trial period has a step budget (:data:`TRIAL_STEPS` times the iterate's);
     a trial that fails (budget, chatter) is a failed trial, not a failed point.
+
+    A Jacobian differenced near the orbit (the residual within :data:`CHORD_NEAR` times
+    ``tol``) is kept for the next iterates (chord steps: a difference Jacobian costs six
+    period maps) while each step cuts the residual by :data:`CHORD_RATE` at least;
+    otherwise, and where a kept one gives no descent, it is differenced afresh at the
+    iterate.  With ``chord`` the ``J`` given (the orbit's, e.g. at another tolerance) is
+    used from the first step.
     """
     acc = np.zeros(4)
     ph = np.empty(N_S)
@@ -613,26 +621,23 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     cnt[C_LIMIT] = TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
     res = _dist(ph, s, k)
     it = 0
+    fresh = not chord  # J is to be differenced at this iterate
+    near = chord  # J was differenced near the orbit (or given)
     while it < max_iter:
         if res <= tol:
             info[0], info[1] = it, res
             info[2] += periods
             return same_phase
         it += 1
-        for j in range(N_S):
-            hj = 1e-7 * (1.0 + abs(s[j])) if j < 4 else 1e-7 * (1.0 / k + abs(s[j]))
-            for i in range(N_S):
-                sp[i] = s[i]
-            sp[j] += hj
-            ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
-            periods += 1
-            if not ok:
-                info[2] += periods
+        if fresh:
+            near = res <= CHORD_NEAR * tol
+            periods = _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt,
+                                           max_events, J, sp, pp, periods)
+            if periods < 0:
+                info[2] += -periods
                 cnt[C_FAIL] = fail0
                 cnt[C_LIMIT] = 0
                 return False
-            for i in range(N_S):
-                J[i, j] = (pp[i] - ph[i]) / hj
         A = J - np.eye(N_S)
         r = ph - s
         try:
@@ -647,6 +652,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
         cap = NEWTON_STEP_CAP * (1.0 + _dist(s, np.zeros(N_S), k))
         lam = 1.0 if size <= cap else cap / size
         improved = False
+        before = res
         for _ in range(6):
             for i in range(N_S):
                 sp[i] = s[i] + lam * ds[i]
@@ -664,15 +670,51 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
                     same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
                     improved = True
                     break
+            if not fresh:
+                break  # a kept Jacobian that gives no descent: a fresh one, not a line search
             lam *= 0.5
         if not improved:
-            break
+            if fresh:
+                break
+            fresh = True
+            continue
+        # kept only if differenced near the orbit (its multiplier decides the status)
+        fresh = not near or res > CHORD_RATE * before
     info[0], info[1] = it, res
     info[2] += periods
     cnt[C_LIMIT] = 0
     return (res <= tol or res <= floor) and same_phase
 
 
+CHORD_RATE = 0.1
+"""A chord step of :func:`newton` (the Jacobian kept) must cut the residual by this."""
+CHORD_NEAR = 1e6
+"""... and the Jacobian must have been differenced within this many ``tol`` of the orbit:
+a Jacobian from farther off gave multipliers off by up to 0.03 (150 random points)."""
+
+
+@jit
+def _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp,
+                         periods):
+    """The forward-difference Jacobian of the period map at ``s`` (``ph = Phi(s)``) into
+    ``J``: six period maps.  Returns ``periods`` plus those maps, negated where a map
+    failed.
+    """
+    for j in range(N_S):
+        hj = 1e-7 * (1.0 + abs(s[j])) if j < 4 else 1e-7 * (1.0 / P[P_K] + abs(s[j]))
+        for i in range(N_S):
+            sp[i] = s[i]
+        sp[j] += hj
+        ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
+        periods += 1
+        if not ok:
+            return -periods
+        for i in range(N_S):
+            J[i, j] = (pp[i] - ph[i]) / hj
+    return periods
+
+TRANSIENT_RTOL = 1e-6
+"""The tolerance of the transient before Newton's method (:func:`_transient`)."""
 ITER_RESERVE = 2000
 """Plain iteration (``V = 0``): the periods kept back from ``max_periods`` for the check
 at ``100 rtol`` (which is also bounded by it)."""
@@ -795,14 +837,19 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
 def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
     """A transient by plain iteration of the period map on ``s`` (in place): until the
     map moves the state by < 1e-4, at most 20 periods. Returns the periods run.
+
+    Where Newton's method follows (``V != 0``) the transient only brings the state near
+    the orbit, at the tolerance :data:`TRANSIENT_RTOL` (or ``rtol`` if looser); at
+    ``V = 0`` the motion's own end is the answer (:func:`_orbit_search`), at ``rtol``.
     """
     s2 = np.empty(N_S)
     acc = np.zeros(4)
     k = P[P_K]
     periods = 0
+    rt = max(rtol, TRANSIENT_RTOL) if P[P_V] != 0.0 else rtol
     # a transient by plain iteration: until the map moves the state by < 1e-4
     for _ in range(min(20, max_periods)):
-        ok, _, _ = period_map(P, s, s2, rtol, rtol, hmax, W, acc, cnt, max_events)
+        ok, _, _ = period_map(P, s, s2, rt, rt, hmax, W, acc, cnt, max_events)
         periods += 1
         if not ok:
             break
@@ -875,7 +922,7 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     loose = np.zeros(7)
     if use_newton:
         conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info)
+                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info, True)
     else:
         conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
                        1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
