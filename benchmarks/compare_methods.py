@@ -131,6 +131,33 @@ def compare(old: dict, new: dict) -> list[dict]:
     return rows
 
 
+def against_errors(old: dict, new: dict) -> list[str]:
+    """For each family whose ``mu_ratio`` differs: the differences against the stated errors.
+
+    The statuses equal or not, the largest ``|difference|`` of ``mu_ratio`` and
+    ``lateral_ratio`` over the sum of the two stated errors, of the multipliers, the ratio
+    of the stated errors and the median periods integrated, old and new.
+    """
+    out = []
+    for family in FAMILIES:
+        o = {k.split("/")[1]: v for k, v in old.items() if k.startswith(family + "/")}
+        n = {k.split("/")[1]: v for k, v in new.items() if k.startswith(family + "/")}
+        if np.array_equal(o["mu_ratio"], n["mu_ratio"], equal_nan=True):
+            continue
+        bar = o["error"] + n["error"]
+        ratio = {c: float(np.nanmax(np.abs(o[c] - n[c]) / bar)) for c in
+                 ("mu_ratio", "lateral_ratio")}
+        out.append(
+            f"{family}: statuses equal {bool(np.array_equal(o['status'], n['status']))}; "
+            f"largest |difference| over the two stated errors: mu_ratio "
+            f"{ratio['mu_ratio']:.2g}, lateral_ratio {ratio['lateral_ratio']:.2g}; "
+            f"multipliers within {np.nanmax(np.abs(o['multiplier'] - n['multiplier'])):.2g}; "
+            f"stated errors new/old at most {np.nanmax(n['error'] / o['error']):.3g}; median "
+            f"periods integrated {np.median(o['periods']):g} (old), "
+            f"{np.median(n['periods']):g} (new)")
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tree", action="append", type=Path, default=[])
@@ -147,6 +174,7 @@ def main() -> None:
         t_new = _run(new_tree, args.n, Path(tmp) / "new.npz")
         old, new = np.load(Path(tmp) / "old.npz"), np.load(Path(tmp) / "new.npz")
         rows = compare(dict(old), dict(new))
+        notes = against_errors(dict(old), dict(new))
     lines = [f"| {r['family']} | {r['points']} | {r['trusted']} | {r['columns']} | "
              f"{', '.join(r['differ']) or 'none'} | "
              f"{r['largest']:.3g} ({r['column'] or '-'}) | {t_old[r['family']]:.2f} | "
@@ -157,7 +185,8 @@ def main() -> None:
             f"--n {args.n}`\n\n"
             "| family | points | trusted (new) | columns compared | columns that differ | "
             "largest difference (column) | old s | new s |\n"
-            "|---|---|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n")
+            "|---|---|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n"
+            + "".join(f"\n{x}\n" for x in notes))
     print(text)
     if args.write:
         head = "" if REPORT.exists() else (
