@@ -713,6 +713,7 @@ def _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J,
             J[i, j] = (pp[i] - ph[i]) / hj
     return periods
 
+
 TRANSIENT_RTOL = 1e-6
 """The tolerance of the transient before Newton's method (:func:`_transient`)."""
 ITER_RESERVE = 2000
