@@ -6,9 +6,9 @@ kernel on one core) unless the kernels come precompiled (a wheel built by ``make
 ships them, :mod:`vibrofriction._kernels.jit`). :func:`warm_up` compiles (or loads) the
 kernels of the parts named, with a progress bar, on several cores at once: for images, CI
 and the commands that must not wait in the middle of their work (``reproduce``,
-``explore``). :func:`build_shipped` makes the shipped cache; :func:`refresh_shipped` makes it
-only where it is missing or older than the sources (``make warmup``: built once, then loaded
-by the warm-up, the tests and the wheel's test).
+``explore``). :func:`build_shipped` makes the shipped cache; :func:`refresh_shipped` makes
+it only where it is missing or older than the kernels' sources (``make warmup``: built once,
+then loaded by the warm-up, the tests and the wheel's test).
 
 The parts (:data:`PARTS`): ``flat`` (the flat punch's event-driven solver, every regime,
 damping and a longitudinal in-plane drive), ``plane`` (the 2-D solver of a transverse
@@ -264,17 +264,24 @@ _COMPLETE = ".complete"
 def shipped_is_fresh(dest: Path | str | None = None) -> bool:
     """Whether the shipped cache in ``dest`` (default the package's) is whole and fresh.
 
-    Fresh: newer than every source file of the package (kernels read constants from other
-    modules, so any change may make an entry stale; numba itself checks only the kernel's
-    own file).
+    Fresh: newer than every source file the compiled code comes from, the kernels'
+    (``_kernels``) and the schema's, whose column indices they read as constants (numba
+    itself checks only each kernel's own file).
     """
     from ._kernels.jit import SHIPPED
 
     stamp = (SHIPPED if dest is None else Path(dest)) / _COMPLETE
     if not stamp.is_file():
         return False
-    newest = max(p.stat().st_mtime for p in Path(__file__).resolve().parent.rglob("*.py"))
+    package = Path(__file__).resolve().parent
+    newest = max(p.stat().st_mtime for folder in _COMPILED_FROM
+                 for p in (package / folder).rglob("*.py"))
     return stamp.stat().st_mtime >= newest
+
+
+#: The package's folders the compiled kernels are made from (their imports: ``_kernels``
+#: imports nothing of the package but the schema)
+_COMPILED_FROM = ("_kernels", "schema")
 
 
 def refresh_shipped(*, workers: int | None = None) -> bool:
