@@ -958,7 +958,7 @@ def _step(P, tau, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
     and their error is part of the norm.
     """
     dz, ft, zs, rhs = ws[0], ws[1], ws[2], ws[3]
-    Js, fts = tw[8], tw[9]
+    Js, fts = tw[7], tw[8]
     _evaluate(P, tau, z, mode, dz, J, ft, True)
     hg = hh * GAM
     for i in range(NM):
@@ -1057,12 +1057,12 @@ def _workspace():
 @jit
 def _tangent_workspace():
     """Scratch arrays of the variational equations: ``(T, T_new, KT, T_stage, rhs, J_t T,
-    curvature, column, J_stage, f_t stage)``; ``T`` (rows ``Z_Y .. Z_F``, columns the
-    section state) is the tangent carried along.
+    curvature, J_stage, f_t stage)``; ``T`` (rows ``Z_Y .. Z_F``, columns the section
+    state) is the tangent carried along.
     """
     return (np.zeros((NT, NM)), np.empty((NT, NM)), np.empty((6, NT, NM)),
             np.empty((NT, NM)), np.empty((NT, NM)), np.zeros((NT, NM)), np.zeros(N_CV),
-            np.empty(NM), np.empty((NZ, NM)), np.empty(NZ))
+            np.empty((NZ, NM)), np.empty(NZ))
 
 
 @jit
