@@ -8,6 +8,10 @@
 
 Run:  python benchmarks/bench_explorer.py [--moves 30] [--updates 1000]
 Writes benchmarks/results/explorer.md.
+
+``--curves``: instead, the redraw of the curves of the slower solvers (a transverse
+oscillation, the 2-D solver; a curved tip, the MDR solver), 40 points each, ``--moves`` moves
+on the alpha slider each; appended to benchmarks/results/explorer.md.
 """
 
 from __future__ import annotations
@@ -115,11 +119,78 @@ CSV = """v0 [mm/s],cof,du_z [um],omega [Hz],sigma
 """
 
 
+#: the curves of the slower solvers (URL query of the page), 40 points each
+CURVES = {
+    "transverse, `a_y = 0.5`, `V` in [0, 1.5]": "a_y=0.5&axis=V&points=40",
+    "transverse, jumping: `a = 1.5`, `a_y = 0.5`": "a_y=0.5&amplitude=1.5&axis=V&points=40",
+    "transverse and longitudinal, `a_x = 0.3`, `a_y = 0.5`":
+        "a_x=0.3&a_y=0.5&axis=V&points=40",
+    "sphere (`n = 2`), `vbar` in [0, 1.5]": "profile_exponent=2&points=40",
+    "cone (`n = 1`), jumping: `a = 1.5`": "profile_exponent=1&amplitude=1.5&points=40",
+    "sphere, stiff contact: `beta = 20`": "profile_exponent=2&beta=20&points=40",
+}
+
+
+def curves(n_moves: int) -> None:
+    """The redraw of the curves of :data:`CURVES`, appended to the results."""
+    port = free_port()
+    server = start_server(port)
+    url = f"http://127.0.0.1:{port}/"
+    rows = []
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=shutil.which("chromium"), headless=True)
+            for label, query in CURVES.items():
+                page = open_page(browser, url + "?" + query)
+                moves(page, 5)  # warm
+                times = moves(page, n_moves)
+                print(f"{label}: {summary(times)}", flush=True)
+                rows.append((label, query, times))
+                page.close()
+            browser.close()
+    finally:
+        server.send_signal(signal.SIGINT)
+        try:
+            server.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            server.kill()
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True, cwd=HERE.parent).stdout.strip()
+    cpu = platform.processor() or platform.machine()
+    lines = [
+        "",
+        "## The curves of the 2-D and MDR solvers (40 points)",
+        "",
+        f"Measured {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC at commit {commit} "
+        f"on {cpu}, {psutil.cpu_count()} cores, by `python benchmarks/bench_explorer.py "
+        f"--curves --moves {n_moves}`. A move is a key press on the alpha slider, timed "
+        "until the redrawn curve's readout changed in the page (the solver's time, the round "
+        "trip and the browser's drawing); the page opened with the query given.",
+        "",
+        "| curve | query | median redraw (ms) | 10-90 % (ms) | max (ms) |",
+        "| --- | --- | ---: | ---: | ---: |",
+    ]
+    for label, query, times in rows:
+        ms = sorted(1e3 * t for t in times)
+        q = statistics.quantiles(ms, n=10) if len(ms) >= 10 else [ms[0]] * 9
+        lines.append(f"| {label} | `{query}` | {statistics.median(ms):.0f} | "
+                     f"{q[0]:.0f}-{q[-1]:.0f} | {ms[-1]:.0f} |")
+    out = HERE / "results" / "explorer.md"
+    with out.open("a") as fh:
+        fh.write("\n".join(lines) + "\n")
+    print(f"-> {out}")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--moves", type=int, default=30)
     ap.add_argument("--updates", type=int, default=1000)
+    ap.add_argument("--curves", action="store_true",
+                    help="measure the curves of the 2-D and MDR solvers instead")
     args = ap.parse_args()
+    if args.curves:
+        curves(args.moves)
+        return
     port = free_port()
     server = start_server(port)
     url = f"http://127.0.0.1:{port}/"
