@@ -59,6 +59,35 @@ def test_the_model_at_the_truth_scatters_as_sigma() -> None:
     assert axisymmetric > at_truth + 5.0
 
 
+def test_transverse_rows_are_fitted_at_a_looser_rtol_within_their_stated_errors() -> None:
+    """A table whose every row is transverse is fitted at TRANSVERSE_RTOL (a mixed one, or a
+    curved contact, is not); at the truth its rows agree with the default rtol's within the
+    two stated errors, every row trusted, each error far below the noise."""
+    from vibrofriction.bench.fitting import CURVED_TOL, TRANSVERSE_RTOL
+    from vibrofriction.bench.fitting.procedure import fit_settings
+
+    data = _data()
+    assert fit_settings(TRUTH, data) == vf.SolverSettings(rtol=TRANSVERSE_RTOL)
+    mixed = data.assign(du_y=np.where(np.arange(len(data)) < 2, 0.0, data["du_y"]))
+    assert fit_settings(TRUTH, mixed) is None
+    sphere = TRUTH.with_(profile_exponent=2.0, du_y=0.0)
+    assert fit_settings(sphere, data) == vf.SolverSettings(tol_trusted=CURVED_TOL)
+    cols = {}
+    for rtol in (None, TRANSVERSE_RTOL):
+        settings = None if rtol is None else vf.SolverSettings(rtol=rtol)
+        rows = [TRUTH.with_(du_z=r.du_z, omega=r.omega, du_y=r.du_y, phase_y=r.phase_y)
+                for r in data.itertuples()]
+        res = [vf.friction_coefficient(s, v0=r.v0, settings=settings)
+               for s, r in zip(rows, data.itertuples(), strict=True)]
+        cols[rtol] = (np.array([x.mu_ratio for x in res]), np.array([x.error for x in res]),
+                      np.array([x.trusted for x in res]))
+    (mu0, err0, ok0), (mu1, err1, ok1) = cols[None], cols[TRANSVERSE_RTOL]
+    assert ok0.all() and ok1.all()
+    assert np.all(np.abs(mu1 - mu0) <= err0 + err1), (np.abs(mu1 - mu0), err0 + err1)
+    assert np.all(err1 <= 1e-5) and np.all(err0 < err1)  # the default is the finer
+    assert np.all(data["sigma"] / TRUTH.mu0 > 100 * err1)  # far below the noise
+
+
 @pytest.mark.slow
 def test_fit_to_transverse_reference_data_holds_the_truth() -> None:
     """mu0 and k_xc fitted (local stage and profiles; the global stage works too but

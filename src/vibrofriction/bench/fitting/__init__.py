@@ -69,8 +69,9 @@ verdict).
 """
 
 from .problem import CONTACT_FITTABLE, FITTABLE, predict_cof, synthetic_measurements
-from .procedure import CURVED_TOL, fit
+from .procedure import CURVED_TOL, TRANSVERSE_RTOL, fit
 from .result import FitResult
 
-__all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "fit", "predict_cof",
+__all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "TRANSVERSE_RTOL", "fit",
+           "predict_cof",
            "synthetic_measurements"]

@@ -523,9 +523,15 @@ class Problem:
                        if any(r is not None and np.any(r[i + 1] != 0.0) for r in rates))
         solved = self._solve(ln, points)
         n_sens = len(SENSITIVE)  # points: mu0, SENSITIVE, a_y, phase_y, alpha_y, zeta_y
-        sens = sensitivities(solved, *points[1:1 + n_sens], inplane_on=self.guess.inplane_on,
-                             settings=self.settings, order=2, parameters=moving,
-                             static_ratio=points[1 + LAW_START])
+        # a transverse row is a 2-D point: the sensitivities are the 1-D solver's only
+        transverse = np.asarray(points[1 + n_sens], dtype=float) > 0.0
+        if np.all(transverse):  # every row differenced below
+            sens_mu = {k: np.full(len(self.data), np.nan) for k in SENSITIVE}
+        else:
+            sens_mu = sensitivities(solved, *points[1:1 + n_sens],
+                                    inplane_on=self.guess.inplane_on, settings=self.settings,
+                                    order=2, parameters=moving,
+                                    static_ratio=points[1 + LAW_START]).mu
         trusted, mu = solved["trusted"], solved["mu_ratio"]
         scale = self._scale()
         missing = np.zeros(len(self.data), dtype=bool)
@@ -542,11 +548,10 @@ class Problem:
             dmu = np.zeros(len(self.data))
             for name, dtheta in zip(SENSITIVE, rate[1:1 + n_sens], strict=True):
                 moves = dtheta != 0.0
-                dmu = dmu + np.where(moves, sens.mu[name] * np.where(moves, dtheta, 0.0), 0.0)
+                dmu = dmu + np.where(moves, sens_mu[name] * np.where(moves, dtheta, 0.0), 0.0)
             out[:, c] = (rate[0] * mu + mu0 * dmu) / scale
             missing |= ~np.isfinite(out[:, c])
-        # a transverse row is a 2-D point: the sensitivities are the 1-D solver's only
-        missing |= np.asarray(points[1 + n_sens], dtype=float) > 0.0
+        missing |= transverse
         missing &= trusted
         out[~trusted] = 0.0
         if np.any(missing):
