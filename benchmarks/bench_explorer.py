@@ -17,6 +17,7 @@ on the alpha slider each; appended to benchmarks/results/explorer.md.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import datetime
 import math
 import platform
@@ -58,6 +59,25 @@ def start_server(port: int) -> subprocess.Popen:
             time.sleep(0.3)
     proc.kill()
     raise RuntimeError("the explorer did not start")
+
+
+@contextlib.contextmanager
+def served():
+    """``(server, url, browser)``: the explorer served on a free port, a headless Chromium;
+    both stopped on the way out."""
+    port = free_port()
+    server = start_server(port)
+    try:
+        with sync_playwright() as p:
+            browser = p.chromium.launch(executable_path=shutil.which("chromium"), headless=True)
+            yield server, f"http://127.0.0.1:{port}/", browser
+            browser.close()
+    finally:
+        server.send_signal(signal.SIGINT)
+        try:
+            server.wait(timeout=15)
+        except subprocess.TimeoutExpired:
+            server.kill()
 
 
 def rss_mb(proc: subprocess.Popen) -> tuple[float, float]:
@@ -133,27 +153,15 @@ CURVES = {
 
 def curves(n_moves: int) -> None:
     """The redraw of the curves of :data:`CURVES`, appended to the results."""
-    port = free_port()
-    server = start_server(port)
-    url = f"http://127.0.0.1:{port}/"
     rows = []
-    try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=shutil.which("chromium"), headless=True)
-            for label, query in CURVES.items():
-                page = open_page(browser, url + "?" + query)
-                moves(page, 5)  # warm
-                times = moves(page, n_moves)
-                print(f"{label}: {summary(times)}", flush=True)
-                rows.append((label, query, times))
-                page.close()
-            browser.close()
-    finally:
-        server.send_signal(signal.SIGINT)
-        try:
-            server.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            server.kill()
+    with served() as (_, url, browser):
+        for label, query in CURVES.items():
+            page = open_page(browser, url + "?" + query)
+            moves(page, 5)  # warm
+            times = moves(page, n_moves)
+            print(f"{label}: {summary(times)}", flush=True)
+            rows.append((label, query, times))
+            page.close()
     commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                             text=True, cwd=HERE.parent).stdout.strip()
     cpu = platform.processor() or platform.machine()
@@ -191,55 +199,43 @@ def main() -> None:
     if args.curves:
         curves(args.moves)
         return
-    port = free_port()
-    server = start_server(port)
-    url = f"http://127.0.0.1:{port}/"
     lines = []
-    try:
-        with sync_playwright() as p:
-            browser = p.chromium.launch(executable_path=shutil.which("chromium"), headless=True)
-            page = open_page(browser, url)
-            moves(page, 5)  # warm
-            redraw = moves(page, args.moves)
-            print("redraw:", summary(redraw), flush=True)
+    with served() as (server, url, browser):
+        page = open_page(browser, url)
+        moves(page, 5)  # warm
+        redraw = moves(page, args.moves)
+        print("redraw:", summary(redraw), flush=True)
 
-            memory = [(0, *rss_mb(server), math.nan, math.nan)]
-            done = 0
-            while done < args.updates:
-                step = min(100, args.updates - done)
-                t0 = time.perf_counter()
-                block = moves(page, step)
-                done += step
-                memory.append((done, *rss_mb(server), 1e3 * statistics.median(block),
-                               (time.perf_counter() - t0) / step * 1e3))
-                print(f"  {done} updates: server {memory[-1][1]:.0f} MB, "
-                      f"workers {memory[-1][2]:.0f} MB, median redraw {memory[-1][3]:.0f} ms, "
-                      f"{memory[-1][4]:.0f} ms per update", flush=True)
+        memory = [(0, *rss_mb(server), math.nan, math.nan)]
+        done = 0
+        while done < args.updates:
+            step = min(100, args.updates - done)
+            t0 = time.perf_counter()
+            block = moves(page, step)
+            done += step
+            memory.append((done, *rss_mb(server), 1e3 * statistics.median(block),
+                           (time.perf_counter() - t0) / step * 1e3))
+            print(f"  {done} updates: server {memory[-1][1]:.0f} MB, "
+                  f"workers {memory[-1][2]:.0f} MB, median redraw {memory[-1][3]:.0f} ms, "
+                  f"{memory[-1][4]:.0f} ms per update", flush=True)
 
-            # two tabs: a fit in the first while the second redraws
-            fit_page = open_page(browser, url + "?mode=bench&axis=v0&v_min=0.0001&v_max=0.2"
-                                                "&log_x=1")
-            with tempfile.TemporaryDirectory() as tmp:
-                csv = Path(tmp) / "bench.csv"
-                csv.write_text(CSV)
-                fit_page.locator("input[type=file][accept='.csv']").set_input_files(str(csv))
-                fit_page.get_by_text(re.compile("overlaid 8 measured points")).wait_for()
-            fit_page.get_by_role("button", name="fit").click()
-            fit_page.get_by_text(re.compile("fitting")).wait_for()
-            t_fit = time.perf_counter()
-            during = []
-            while not fit_page.get_by_text(re.compile(r"fit of \d+ points|fit failed")).count():
-                during.append(move(page, "ArrowRight" if len(during) % 10 < 5
-                                   else "ArrowLeft"))
-            fit_seconds = time.perf_counter() - t_fit
-            print("during the fit:", summary(during), f"(fit {fit_seconds:.0f} s)", flush=True)
-            browser.close()
-    finally:
-        server.send_signal(signal.SIGINT)
-        try:
-            server.wait(timeout=15)
-        except subprocess.TimeoutExpired:
-            server.kill()
+        # two tabs: a fit in the first while the second redraws
+        fit_page = open_page(browser, url + "?mode=bench&axis=v0&v_min=0.0001&v_max=0.2"
+                                            "&log_x=1")
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = Path(tmp) / "bench.csv"
+            csv.write_text(CSV)
+            fit_page.locator("input[type=file][accept='.csv']").set_input_files(str(csv))
+            fit_page.get_by_text(re.compile("overlaid 8 measured points")).wait_for()
+        fit_page.get_by_role("button", name="fit").click()
+        fit_page.get_by_text(re.compile("fitting")).wait_for()
+        t_fit = time.perf_counter()
+        during = []
+        while not fit_page.get_by_text(re.compile(r"fit of \d+ points|fit failed")).count():
+            during.append(move(page, "ArrowRight" if len(during) % 10 < 5
+                               else "ArrowLeft"))
+        fit_seconds = time.perf_counter() - t_fit
+        print("during the fit:", summary(during), f"(fit {fit_seconds:.0f} s)", flush=True)
 
     cpu = platform.processor() or platform.machine()
     lines += [
