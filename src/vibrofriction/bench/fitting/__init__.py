@@ -73,5 +73,4 @@ from .procedure import CURVED_TOL, TRANSVERSE_RTOL, fit
 from .result import FitResult
 
 __all__ = ["CONTACT_FITTABLE", "CURVED_TOL", "FITTABLE", "FitResult", "TRANSVERSE_RTOL", "fit",
-           "predict_cof",
-           "synthetic_measurements"]
+           "predict_cof", "synthetic_measurements"]

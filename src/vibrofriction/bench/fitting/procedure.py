@@ -48,8 +48,8 @@ from .uncertainty import (
 CURVED_TOL = 1e-4
 #: The 2-D solver's ``rtol`` in a fit whose every row has a transverse oscillation
 #: (``du_y > 0``), without ``settings``: about twice as fast as its default 1e-10, with stated
-#: errors of a few 1e-6 in ``mu/mu0``, a thousandth of a bench's noise (docs/bench.md, "A
-#: transverse oscillation").
+#: errors of a few 1e-6 in ``mu/mu0``, a thousandth of a bench's noise (docs/bench.md,
+#: "Measured friction curves: the table", across the sliding).
 TRANSVERSE_RTOL = 1e-8
 #: The global search's local starts and screened points without ``starts``, ``screen``: a
 #: flat punch's, and a curved contact's or rate-and-state friction's (the MDR solver is ~30
