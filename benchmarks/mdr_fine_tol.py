@@ -10,9 +10,12 @@ row; the check is ``|mu(1e-7) - mu(fine)| <= error(1e-7) + error(fine)``. This i
 solver's own convergence, not the independent reference (whose fine cache has bars of
 about 1e-6: ``tests/data/mdr_fine_reference.json``).
 
-    PYTHONPATH=src python benchmarks/mdr_fine_tol.py [--write]
+    PYTHONPATH=src python benchmarks/mdr_fine_tol.py [--write] [--cusp]
 
-``--write`` appends to benchmarks/results/mdr_fine_tol.md.
+``--write`` appends to benchmarks/results/mdr_fine_tol.md. ``--cusp``: instead, the
+explorer's 40-point curves of tips with a cusp (``n < 1``, whose rows converge slowly) at
+the default ``tol_trusted``, with the rows capped at 640 springs (the cap before 5120) and
+at 5120: the time of ``explorer.compute.curve`` in one process and the points trusted.
 """
 
 from __future__ import annotations
@@ -86,11 +89,45 @@ def table() -> list[str]:
     return lines
 
 
+CUSPS = ({"profile_exponent": 0.7}, {"profile_exponent": 0.7, "amplitude": 1.5},
+         {"profile_exponent": 0.5, "zeta": 0.1})
+
+
+def cusp() -> list[str]:
+    import dataclasses
+
+    import numpy as np
+
+    from vibrofriction.explorer.compute import curve
+    from vibrofriction.explorer.state import State
+
+    lines = ["| tip (explorer state) | springs at most | s a curve | points trusted |",
+             "|---|---|---|---|"]
+    cap = mdr.MAX_SPRINGS
+    try:
+        for kw in CUSPS:
+            state = dataclasses.replace(State(), **kw)
+            for springs in (640, cap):
+                mdr.MAX_SPRINGS = springs
+                curve(state)
+                t0 = time.perf_counter()
+                c = curve(state)
+                seconds = time.perf_counter() - t0
+                trusted = int(np.sum(np.asarray(c["trusted"]) == True))  # noqa: E712
+                line = (f"| {kw} | {springs} | {seconds:.2f} | {trusted} of {len(c['x'])} |")
+                print(line, flush=True)
+                lines.append(line)
+    finally:
+        mdr.MAX_SPRINGS = cap
+    return lines
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
+    ap.add_argument("--cusp", action="store_true", help="the explorer's curves of cusps")
     args = ap.parse_args()
-    lines = table()
+    lines = cusp() if args.cusp else table()
     if args.write:
         commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                                 text=True, cwd=Path(__file__).parent).stdout.strip()
@@ -99,7 +136,8 @@ def main() -> None:
             if first:
                 fh.write("# The MDR solver asked for a stated error of 1e-7\n")
             fh.write(f"\n## {commit}, {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC\n\n"
-                     f"`PYTHONPATH=src python benchmarks/mdr_fine_tol.py --write` on "
+                     f"`PYTHONPATH=src python benchmarks/mdr_fine_tol.py --write"
+                     f"{' --cusp' if args.cusp else ''}` on "
                      f"{platform.machine()}, {os.cpu_count()} cores; times the median of 3 "
                      "calls of `solve_points` on the point.\n\n" + "\n".join(lines) + "\n")
 
