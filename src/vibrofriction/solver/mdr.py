@@ -34,6 +34,9 @@ AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
 ACCELERATED_PERIODS = 200  # then plain iteration
 MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows to 2560, 5120)
+# beyond this row only a periodic one is refined: a row that averages runs up to max_periods,
+# and one of thousands of springs would take minutes
+AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
 
 
@@ -160,11 +163,11 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  max_periods: int = MAX_PERIODS, static_ratio: float = 1.0) -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
-    Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 5120
-    until the error is ``<= tol``; each row starts from the previous row's final section
-    state); the result is the Richardson extrapolation with order 2,
-    ``mu_2N + (mu_2N - mu_N)/3``, and its ``error`` is ``|mu_2N - mu_N|`` (three times the
-    Richardson estimate: the convergence is irregular) plus the previous pair's difference
+    Rows of ``N`` and ``2N`` springs (``N = n_springs``, or doubled from 20 up to 5120 until the
+    error is ``<= tol``, beyond 640 only while the finer row is periodic; each row starts from
+    the previous row's final section state); the result is the Richardson extrapolation with
+    order 2, ``mu_2N + (mu_2N - mu_N)/3``, and its ``error`` is ``|mu_2N - mu_N|`` (three times
+    the Richardson estimate: the convergence is irregular) plus the previous pair's difference
     ``|mu_N - mu_N/2|`` (at least three rows, 20, 40 and 80 springs, so there is one),
     plus both orbits' errors. A row
     that finds no periodic orbit within ``SKIP_PERIODS`` after a periodic one is passed
@@ -230,7 +233,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         # agree by chance (measured: 0.73019032 +- 1.3e-6 at (1, 3, 0.6, 0.4, zeta 0.02,
         # n = 2, holder a_x 0.5, phase_x 0.5) where the converged rows give 0.73019536)
         if n_springs is not None or (err <= tol and not math.isnan(d_prev)) \
-                or M >= MAX_SPRINGS:
+                or M >= MAX_SPRINGS or (M >= AVERAGED_SPRINGS and fine["status"] != "periodic"):
             break
         d_prev = d
         N = M
