@@ -102,3 +102,30 @@ def test_the_calibration_claim_against_the_independent_reference():
     assert len(ratios) == 24
     assert max(ratios) == pytest.approx(0.40, abs=0.005)
     assert statistics.median(ratios) == pytest.approx(0.049, abs=0.0005)
+
+
+def test_a_stated_error_of_1e_7_where_asked():
+    """``tol_trusted = 1e-7`` takes rows beyond 640 springs and is reached at a sphere in
+    stick-slip; the answer lies within its stated error (plus the finer one's) of the same
+    solver's on rows to 20480 springs (benchmarks/mdr_fine_tol.py, at 30 points)."""
+    import vibrofriction.solver.mdr as mdr
+
+    kw = {"alpha": 0.5, "beta": 2.0, "amplitude": 0.5, "v_inertial": 0.3,
+          "profile_exponent": 2.0}
+    out = solve_points(**kw, settings=SolverSettings(tol_trusted=1e-7))
+    mu, err = float(out["mu_ratio"]), float(out["error"])
+    assert bool(out["trusted"]) and err <= 1e-7
+    r = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-7)
+    assert r["rows"][1] > 640 and r["mu_ratio"] == mu
+    cap = mdr.MAX_SPRINGS
+    mdr.MAX_SPRINGS = 20480
+    try:
+        fine = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-9)
+    finally:
+        mdr.MAX_SPRINGS = cap
+    assert fine["rows"][1] > r["rows"][1] and fine["error"] < err
+    assert abs(fine["mu_ratio"] - mu) <= err + fine["error"], (mu, err, fine["mu_ratio"])
+    # the default stops far coarser, its error ~100 times larger, and the two agree
+    coarse = solve_points(**kw)
+    assert float(coarse["error"]) > 10 * err
+    assert abs(float(coarse["mu_ratio"]) - mu) <= float(coarse["error"]) + err
