@@ -22,15 +22,12 @@ benchmarks/results/atlas_work.md.
 from __future__ import annotations
 
 import argparse
-import datetime
-import os
-import platform
-import subprocess
 import time
 from pathlib import Path
 
 import numpy as np
 
+from sections import append_run
 from vibrofriction.params.cases import vbar_to_inertial
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
@@ -86,16 +83,9 @@ def main() -> None:
     lines = table(args.n)
     print("\n".join(lines))
     if args.write:
-        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                                text=True, cwd=Path(__file__).parent).stdout.strip()
-        first = not RESULTS.exists()
-        with RESULTS.open("a") as fh:
-            if first:
-                fh.write("# Where the work of a flat-punch atlas goes\n")
-            fh.write(f"\n## {commit}, {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC\n\n"
-                     f"`PYTHONPATH=src python benchmarks/atlas_work.py --n {args.n} --write` on "
-                     f"{platform.machine()}, {os.cpu_count()} cores.\n\n" + "\n".join(lines)
-                     + "\n")
+        append_run(RESULTS, "Where the work of a flat-punch atlas goes",
+                   f"PYTHONPATH=src python benchmarks/atlas_work.py --n {args.n} --write",
+                   "one process.", lines)
 
 
 if __name__ == "__main__":

@@ -25,16 +25,14 @@ benchmarks/results/ratios.md (the earlier runs stay above).
 from __future__ import annotations
 
 import argparse
-import datetime
 import os
-import platform
 import statistics
-import subprocess
 import time
 from pathlib import Path
 
 import numpy as np
 
+from sections import append_run
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
 
@@ -114,22 +112,14 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
     args = ap.parse_args()
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True, cwd=Path(__file__).parent).stdout.strip()
     lines = bench()
     if args.write:
-        first = not RESULTS.exists()
-        with RESULTS.open("a") as fh:
-            if first:
-                fh.write("# The cost of curved tips and of the 2-D solver against a flat point\n")
-            fh.write(
-                f"\n## {commit}, {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC\n\n"
-                f"`PYTHONPATH=src python benchmarks/bench_ratios.py --write` on "
-                f"{platform.machine()}, {os.cpu_count()} cores, load average "
-                f"{os.getloadavg()[0]:.1f} at the end; each time per point, the median of "
-                f"{REPEATS} calls of `solve_points` on {COPIES} copies of the point, the "
-                "kernels warm; the stated error and status after each time.\n\n"
-                + "\n".join(lines) + "\n")
+        append_run(RESULTS, "The cost of curved tips and of the 2-D solver against a flat point",
+                   "PYTHONPATH=src python benchmarks/bench_ratios.py --write",
+                   f"load average {os.getloadavg()[0]:.1f} at the end; each time per point, the "
+                   f"median of {REPEATS} calls of `solve_points` on {COPIES} copies of the "
+                   "point, the kernels warm; the stated error and status after each time.",
+                   lines)
 
 
 if __name__ == "__main__":

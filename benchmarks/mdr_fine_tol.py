@@ -21,16 +21,13 @@ at 5120: the time of ``explorer.compute.curve`` in one process and the points tr
 from __future__ import annotations
 
 import argparse
-import datetime
-import os
-import platform
 import statistics
-import subprocess
 import time
 from pathlib import Path
 
 import vibrofriction.solver.mdr as mdr
 from bench_ratios import EXPONENTS, REGIMES
+from sections import append_run
 from vibrofriction import SolverSettings
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
@@ -129,17 +126,10 @@ def main() -> None:
     args = ap.parse_args()
     lines = cusp() if args.cusp else table()
     if args.write:
-        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                                text=True, cwd=Path(__file__).parent).stdout.strip()
-        first = not RESULTS.exists()
-        with RESULTS.open("a") as fh:
-            if first:
-                fh.write("# The MDR solver asked for a stated error of 1e-7\n")
-            fh.write(f"\n## {commit}, {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC\n\n"
-                     f"`PYTHONPATH=src python benchmarks/mdr_fine_tol.py --write"
-                     f"{' --cusp' if args.cusp else ''}` on "
-                     f"{platform.machine()}, {os.cpu_count()} cores; times the median of 3 "
-                     "calls of `solve_points` on the point.\n\n" + "\n".join(lines) + "\n")
+        append_run(RESULTS, "The MDR solver asked for a stated error of 1e-7",
+                   "PYTHONPATH=src python benchmarks/mdr_fine_tol.py --write"
+                   f"{' --cusp' if args.cusp else ''}",
+                   "times the median of 3 calls of `solve_points` on the point.", lines)
 
 
 if __name__ == "__main__":

@@ -11,7 +11,11 @@ that quote it.
 
 from __future__ import annotations
 
+import datetime
+import os
+import platform
 import re
+import subprocess
 from pathlib import Path
 
 Rows = list[tuple[str, str]]
@@ -27,6 +31,21 @@ def section(name: str, doc: str, rows: Rows, seconds: float) -> str:
     table = "\n".join(row_line(q, v) for q, v in rows)
     return (f"## `{name}` ({seconds:.1f} s)\n\n{doc}\n\n| quantity | value |\n|---|---|\n"
             f"{table}\n")
+
+
+def append_run(path: Path, title: str, command: str, how: str, lines: list[str]) -> None:
+    """Append one run to the results file ``path`` (titled ``title`` when it is new): a
+    section headed by the commit and the time, the ``command``, the machine and ``how``
+    the numbers were taken, then ``lines``; the earlier runs stay above."""
+    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                            text=True, cwd=path.parent).stdout.strip()
+    first = not path.exists()
+    with path.open("a") as fh:
+        if first:
+            fh.write(f"# {title}\n")
+        fh.write(f"\n## {commit}, {datetime.datetime.now(datetime.UTC):%Y-%m-%d %H:%M} UTC\n\n"
+                 f"`{command}` on {platform.machine()}, {os.cpu_count()} cores; {how}\n\n"
+                 + "\n".join(lines) + "\n")
 
 
 def row_line(quantity: str, value: str) -> str:
