@@ -12,22 +12,22 @@ point: the mean's error against the number of steps per period as the tolerance 
 
     PYTHONPATH=src python benchmarks/bench_plane.py [--order] [--write]
 
-``--write`` writes benchmarks/results/plane.md.  The issue's target: a 2-D point with
-``error <= 1e-6`` in a median of at most 20 ms over the regimes.
+``--write`` appends the run to benchmarks/results/plane.md (the earlier runs stay above).
+The issue's target: a 2-D point with ``error <= 1e-6`` in a median of at most 20 ms over
+the regimes.
 """
 
 from __future__ import annotations
 
 import math
-import platform
 import statistics
-import subprocess
 import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
+from sections import append_run
 from vibrofriction._kernels import plane
 from vibrofriction.schema import Status
 from vibrofriction.solver import solve_points
@@ -135,27 +135,18 @@ def main() -> None:
     table = bench()
     if "--write" not in sys.argv:
         return
-    commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                            text=True).stdout.strip()
-    head = [
-        "# The 2-D (transverse) in-plane solver: speed and accuracy",
-        "",
-        f"`PYTHONPATH=src python benchmarks/bench_plane.py --order --write`, "
-        f"{time.strftime('%Y-%m-%d')}, commit {commit}, {platform.platform()}, "
-        f"{platform.processor() or platform.machine()}; a machine of 2 cores shared with "
-        "other sessions (timings are noisy: medians of "
-        f"{REPEATS} calls of `solve_points` on one point, the reference once, in the same "
-        "run).",
-        "",
-    ]
+    lines = []
     if rows:
-        head += ["## Order of the method", "",
-                 "Normal + transverse, Kelvin-Voigt contact, `(alpha, beta, a, V, zeta, "
-                 "eta_c, a_y, phase_y) = (0.5, 2, 0.5, 0.3, 0.05, 0.1, 0.5, 1.0)`: the "
-                 "periodic orbit and its mean at each tolerance against `rtol = 1e-14`, "
-                 "the step not capped; "
-                 "local order = -d log(error) / d log(steps).", "", *rows, ""]
-    RESULTS.write_text("\n".join(head + ["## Regimes", "", *table]) + "\n")
+        lines += ["### Order of the method", "",
+                  "Normal + transverse, Kelvin-Voigt contact, `(alpha, beta, a, V, zeta, "
+                  "eta_c, a_y, phase_y) = (0.5, 2, 0.5, 0.3, 0.05, 0.1, 0.5, 1.0)`: the "
+                  "periodic orbit and its mean at each tolerance against `rtol = 1e-14`, "
+                  "the step not capped; "
+                  "local order = -d log(error) / d log(steps).", "", *rows, ""]
+    command = " ".join(["PYTHONPATH=src python benchmarks/bench_plane.py", *sys.argv[1:]])
+    append_run(RESULTS, "The 2-D (transverse) in-plane solver: speed and accuracy", command,
+               f"medians of {REPEATS} calls of `solve_points` on one point, the reference "
+               "once, in the same run.", lines + ["### Regimes", "", *table])
 
 
 if __name__ == "__main__":

@@ -5,7 +5,9 @@ signed |V| 1e-3..3, zeta in {0, 0.01, 0.1, 0.5}, eta_c in {0, 0, 0.1, 1}, a_x in
 {0, 0, 0.5, 2} and a_y 0.01..5 (random phases), each solved alone by ``solve_points``.
 Prints the count of each status, the trusted count, the median, 90th percentile and
 largest time, and the slowest point.  Run: ``python benchmarks/fuzz_plane.py [--write]``
-(``--write``: also into benchmarks/results/plane_fuzz.md, with date, commit and machine).
+(``--write``, also with ``--compare``: the run appended to
+benchmarks/results/plane_fuzz.md with the commit, date and machine; the earlier runs stay
+above).
 
 ``--compare OLD`` solves the same points with the source tree ``OLD`` (its ``src`` on the
 path, in a subprocess: ``--values FILE`` saves them) and compares: equal statuses, the
@@ -15,17 +17,25 @@ multipliers, and the ratio of the stated errors.
 
 from __future__ import annotations
 
-import platform
 import subprocess
 import sys
 import time
 from collections import Counter
-from datetime import UTC, datetime
 from pathlib import Path
 
 import numpy as np
 
+from sections import append_run
 from vibrofriction.solver import solve_points
+
+RESULTS = Path(__file__).parent / "results" / "plane_fuzz.md"
+TITLE = "150 random 2-D points"
+
+
+def _commit(tree: str) -> str:
+    """The short commit of the checkout ``tree``."""
+    return subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
+                          text=True, cwd=tree).stdout.strip() or "not a git checkout"
 
 
 def _points() -> tuple[np.ndarray, ...]:
@@ -81,7 +91,13 @@ def main() -> None:
         _values(sys.argv[sys.argv.index("--values") + 1])
         return
     if "--compare" in sys.argv:
-        print("\n".join(_compare(sys.argv[sys.argv.index("--compare") + 1])))
+        old = sys.argv[sys.argv.index("--compare") + 1]
+        lines = _compare(old)
+        print("\n".join(lines))
+        if "--write" in sys.argv:
+            append_run(RESULTS, TITLE, f"python benchmarks/fuzz_plane.py --compare {old} --write",
+                       f"this tree against the source tree `{old}` (commit {_commit(old)}), "
+                       "each in its own process.", [f"* {x}" for x in lines])
         return
     al, be, a, V, ze, et, ax, px, ay, py = _points()
     n = len(al)
@@ -103,14 +119,9 @@ def main() -> None:
              f"points over 0.1 s: {int(np.sum(t > 0.1))}; total {t.sum():.2f} s"]
     print("\n".join(lines))
     if "--write" in sys.argv:
-        commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
-                                text=True).stdout.strip()
-        head = [f"# 150 random 2-D points (`python benchmarks/fuzz_plane.py --write`, "
-                f"{datetime.now(UTC):%Y-%m-%d}, commit {commit}, {platform.platform()}; a "
-                "2-core machine shared with other sessions)", "",
-                "Status codes: 0 periodic, 1 averaged, 2 not converged, 3 failed.", ""]
-        (Path(__file__).parent / "results" / "plane_fuzz.md").write_text(
-            "\n".join(head + [f"* {x}" for x in lines]) + "\n")
+        append_run(RESULTS, TITLE, "python benchmarks/fuzz_plane.py --write",
+                   "each point solved alone by `solve_points`. Status codes: 0 periodic, "
+                   "1 averaged, 2 not converged, 3 failed.", [f"* {x}" for x in lines])
 
 
 if __name__ == "__main__":

@@ -367,10 +367,10 @@ QUOTES: list[Quote] = [
       for text, a in (("(sphere $a = 0.5$: #, #, # at $V", "0.5"),
                       ("jumping: #, #, # towards 0)", "1.5"))),
     # docs/contact_geometry.md, "The history"
-    Quote(_CG, n("dissipation to # of it (the jumping cone"), _HIST,
-          "## Energy balance\n"
+    Quote(_CG, n("dissipation within # of it, round-off (at every point, the jumping cone"),
+          _HIST, "## Energy balance\n"
           "| (1.0, 3.0, 1.3, 0.5, 1.0, 0.0, 'a_x 0.8, phase_x 2.5, substrate') | ",
-          r"\| -?(\S+) \|$"),
+          r"\| < (\S+) \|$"),
     Quote(_CG, n("$\\zeta = 0.1$: # = # + #;"), _HIST,
           "## Energy balance\n| (0.5, 2.0, 1.5, 0.3, 2.0, 0.1) | ",
           r"^\S+ \| \S+ \| (\S+) \| (\S+) \| (\S+) \|"),

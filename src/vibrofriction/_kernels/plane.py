@@ -120,6 +120,20 @@ current iterate (a state far off the orbit can be very costly: a bound on the wo
 NEWTON_STEP_CAP = 4.0
 """Newton's step is scaled down to at most this times ``1 + |s|`` (a near-singular
 ``J - I`` gives absurd steps)."""
+DIFF_STEP = 1e-7
+"""The relative step of Newton's difference Jacobian at the solve's own tolerance."""
+ROUGH_RTOL = 1e-8
+"""Newton first converges at this tolerance where the solve's is tighter (its Jacobians,
+six period maps each, cost a third of those at ``1e-10``), then at the solve's tolerance by
+chord steps on the Jacobian of the rough orbit (:func:`_orbit_search`)."""
+ROUGH_SKIPPED, ROUGH_FOUND, ROUGH_FAILED = 0, 1, 2  # :func:`_rough_orbit`'s outcomes
+POLISH = 0.01
+"""After the rough orbit the chord steps at ``rtol`` go on to this times Newton's ``tol``
+(where each cuts the residual tenfold): a chord step converges linearly, Newton's step
+from the rough orbit's distance would have overshot ``tol`` by as much."""
+ROUGH_STEP = 1e3
+"""... whose difference step is this times ``ROUGH_RTOL`` (at the default ``rtol = 1e-10``,
+:data:`DIFF_STEP` is the same multiple: the map's noise over the step alike)."""
 
 # Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, table 5.2)
 _C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
@@ -587,7 +601,7 @@ def mean_normal(a):
 
 @jit
 def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
-           chord=False):
+           chord=False, hrel=DIFF_STEP, polish=0.0):
     """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
@@ -600,7 +614,11 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     period maps) while each step cuts the residual by :data:`CHORD_RATE` at least;
     otherwise, and where a kept one gives no descent, it is differenced afresh at the
     iterate.  With ``chord`` the ``J`` given (the orbit's, e.g. at another tolerance) is
-    used from the first step.
+    used from the first step.  ``hrel``: the relative difference step of ``J``;
+    ``info[3]`` gets the residual at the iterate where ``J`` was last differenced.
+    ``polish > 0``: once below ``tol`` with a kept Jacobian, chord steps go on while each
+    cuts the residual by :data:`CHORD_RATE`, down to ``polish * tol`` (a map each; the
+    section residual enters the stated error).
     """
     acc = np.zeros(4)
     ph = np.empty(N_S)
@@ -623,16 +641,22 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     it = 0
     fresh = not chord  # J is to be differenced at this iterate
     near = chord  # J was differenced near the orbit (or given)
+    polishing = False
     while it < max_iter:
-        if res <= tol:
-            info[0], info[1] = it, res
-            info[2] += periods
-            return same_phase
+        if res <= tol and not polishing:
+            if fresh or res <= polish * tol or polish == 0.0:
+                info[0], info[1] = it, res
+                info[2] += periods
+                return same_phase
+            polishing = True
+        if polishing and res <= polish * tol:
+            break
         it += 1
         if fresh:
             near = res <= CHORD_NEAR * tol
+            info[3] = res
             periods = _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt,
-                                           max_events, J, sp, pp, periods)
+                                           max_events, J, sp, pp, periods, hrel)
             if periods < 0:
                 info[2] += -periods
                 cnt[C_FAIL] = fail0
@@ -674,10 +698,12 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
                 break  # a kept Jacobian that gives no descent: a fresh one, not a line search
             lam *= 0.5
         if not improved:
-            if fresh:
+            if fresh or polishing:
                 break
             fresh = True
             continue
+        if polishing and res > CHORD_RATE * before:
+            break
         # kept only if differenced near the orbit (its multiplier decides the status)
         fresh = not near or res > CHORD_RATE * before
     info[0], info[1] = it, res
@@ -695,13 +721,13 @@ a Jacobian from farther off gave multipliers off by up to 0.03 (150 random point
 
 @jit
 def _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp,
-                         periods):
+                         periods, hrel):
     """The forward-difference Jacobian of the period map at ``s`` (``ph = Phi(s)``) into
-    ``J``: six period maps.  Returns ``periods`` plus those maps, negated where a map
-    failed.
+    ``J``, the relative step ``hrel``: six period maps.  Returns ``periods`` plus those
+    maps, negated where a map failed.
     """
     for j in range(N_S):
-        hj = 1e-7 * (1.0 + abs(s[j])) if j < 4 else 1e-7 * (1.0 / P[P_K] + abs(s[j]))
+        hj = hrel * (1.0 + abs(s[j])) if j < 4 else hrel * (1.0 / P[P_K] + abs(s[j]))
         for i in range(N_S):
             sp[i] = s[i]
         sp[j] += hj
@@ -864,6 +890,50 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
 
 
 @jit
+def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
+    """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
+
+    Returns ``ROUGH_FOUND``: ``s`` is the rough orbit, ``J`` its Jacobian (the solve at
+    ``rtol`` starts with chord steps on it); ``ROUGH_FAILED``: Newton found no orbit (nor
+    will it at ``rtol``: the plain iteration follows), or ``ROUGH_SKIPPED`` (``rtol`` not
+    tighter, or a period map failed at the rough orbit): Newton at ``rtol`` as it would
+    without this stage.  Unless found, ``s``, the phase hint and the failure count are as
+    they were.  ``info[2]`` counts the periods (each a period at ``ROUGH_RTOL``).
+    """
+    info[:] = 0.0
+    if rtol >= ROUGH_RTOL:
+        return ROUGH_SKIPPED
+    sr = s.copy()
+    hint = W[W_MODE, 0]
+    fail0 = cnt[C_FAIL]
+    floor = 100.0 * ROUGH_RTOL * scale
+    hrel = ROUGH_STEP * ROUGH_RTOL
+    if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, 12, J,
+              info, False, hrel):
+        if info[0] == 0 or info[3] > CHORD_NEAR * 1e-12 * scale:
+            # no J yet (the start was the rough orbit), or one differenced farther off
+            # than the solve at rtol would keep (:func:`newton`'s rule): afresh here
+            acc = np.zeros(4)
+            ph = np.empty(N_S)
+            ok, _, _ = period_map(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc, cnt,
+                                  max_events)
+            periods = _difference_jacobian(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc,
+                                           cnt, max_events, J, np.empty(N_S), np.empty(N_S),
+                                           1, hrel) if ok else -1
+            info[2] += abs(periods)
+            if periods < 0:
+                W[W_MODE, 0] = hint
+                cnt[C_FAIL] = fail0
+                return ROUGH_SKIPPED
+        for i in range(N_S):
+            s[i] = sr[i]
+        return ROUGH_FOUND
+    W[W_MODE, 0] = hint
+    cnt[C_FAIL] = fail0
+    return ROUGH_FAILED
+
+
+@jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
@@ -877,9 +947,16 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
     # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
     use_newton = P[P_V] != 0.0
     if use_newton:
-        conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                      100.0 * rtol * scale, 12, J, info)
+        rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info)
         periods += int(info[2])
+        info[:] = 0.0
+        conv = False
+        if rough != ROUGH_FAILED:
+            chord = rough == ROUGH_FOUND
+            conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+                          100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
+                          POLISH if chord else 0.0)
+            periods += int(info[2])
         if conv:
             ev = np.linalg.eigvals(J.astype(np.complex128))
             mult = 0.0
