@@ -103,14 +103,15 @@ def order() -> list[str]:
     hmax = 1.0  # the solver caps the step at 2 pi/(8 w); here the tolerance decides
 
     def orbit(rtol):
-        W = np.zeros((14, plane.N_Z))
+        W = np.zeros((plane.N_W, plane.N_Z))
         cnt = np.zeros(plane.N_C, np.int64)
         s = np.empty(plane.N_S)
         plane.start_state(P, 0, 0.0, 0.0, 0.0, s)
         J = np.zeros((plane.N_S, plane.N_S))
         info = np.zeros(4)
         assert plane.newton(P, s, rtol, rtol, hmax, W, cnt, 10000, 1e-13,
-                            max(1e-12, 100 * rtol), 30, J, info)
+                            max(1e-12, 100 * rtol), 30, J, info, False, plane.DIFF_STEP, 0.0,
+                            np.zeros(7))
         out = np.zeros(7)
         before = cnt[plane.C_STEPS]
         plane.orbit_mean(P, s, rtol, rtol, hmax, W, cnt, 10000, out)

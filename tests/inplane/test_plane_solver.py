@@ -237,12 +237,12 @@ def test_contact_force_stays_in_the_cone_along_the_orbit() -> None:
         be = al + float(rng.uniform(0.5, 10.0))
         a = float(rng.choice([0.0, rng.uniform(0.1, 0.9), rng.uniform(1.1, 2.0)]))
         et = float(rng.choice([0.0, rng.uniform(0.01, 0.5)]))
-        P = np.array([al, 2 * 0.05 * math.sqrt(al), be - al, et * (be - al), a,
-                      float(rng.uniform(0.05, 1.0)), float(rng.uniform(0, 1)),
-                      float(rng.uniform(0, 6)), float(rng.uniform(0.1, 1.5)),
-                      float(rng.uniform(0, 6)), float(rng.integers(0, 2)), 0.0, 0.0, 1.0])
-        P[plane.P_ALPHA_Y] = float(rng.uniform(0.2, 3.0))  # a pin that is not axisymmetric
-        P[plane.P_GAMMA_Y] = 2 * float(rng.uniform(0.0, 0.3)) * math.sqrt(P[plane.P_ALPHA_Y])
+        V, a_x, phase_x, a_y, phase_y = (float(rng.uniform(lo, hi)) for lo, hi in
+                                         ((0.05, 1.0), (0, 1), (0, 6), (0.1, 1.5), (0, 6)))
+        on_substrate = rng.integers(0, 2) == 0
+        al_y = float(rng.uniform(0.2, 3.0))  # a pin that is not axisymmetric
+        P = plane.parameters(al, be, a, V, 0.05, et, a_x, phase_x, a_y, phase_y, al_y,
+                             float(rng.uniform(0.0, 0.3)), on_substrate)
         worst = max(worst, plane.cone_excess(P, 4, 1e-10))
     print(f"largest |f| - n: {worst:.2e}")
     assert worst <= 1e-12

@@ -101,7 +101,9 @@ N_S = 6  # the section state: y_x, y_y, v_x, v_y, e_x, e_y
 P_ALPHA, P_GAMMA, P_K, P_C, P_A, P_V, P_AX, P_PX, P_AY, P_PY, P_HOLDER = range(11)
 P_ALPHA_Y, P_GAMMA_Y = 11, 12  # the pin across the sliding
 P_SR = 13  # static_ratio: a stuck contact holds while |f| <= P[P_SR] n
-N_P = 14
+# cos and sin of the in-plane phases: the drive at t from cos t and sin t (one pair a stage)
+P_CPX, P_SPX, P_CPY, P_SPY = 14, 15, 16, 17
+N_P = 18
 W_MODE = 14
 """The row of the work array ``W`` that carries the phase across a section where the state
 does not fix it (``static_ratio > 1``): ``W[W_MODE, 0]`` the phase the period map starts
@@ -151,12 +153,31 @@ _E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
 
 
 @jit
-def normal_force(a, t):
-    """``n = max(0, 1 + a cos t)`` and ``n'``."""
-    n = 1.0 + a * math.cos(t)
+def _normal(a, ct, st):
+    """``n = max(0, 1 + a cos t)`` and ``n'`` from ``ct = cos t``, ``st = sin t``."""
+    n = 1.0 + a * ct
     if n < 0.0:
         return 0.0, 0.0
-    return n, -a * math.sin(t)
+    return n, -a * st
+
+
+@jit
+def normal_force(a, t):
+    """``n = max(0, 1 + a cos t)`` and ``n'``."""
+    return _normal(a, math.cos(t), math.sin(t))
+
+
+@jit
+def _drive(P, ct, st):
+    """:func:`drive` from ``ct = cos t``, ``st = sin t`` (the phases' by the addition
+    theorem: the stages of a step cost one cosine and one sine).
+    """
+    ax, ay = P[P_AX], P[P_AY]
+    cx, sx = ct * P[P_CPX] - st * P[P_SPX], st * P[P_CPX] + ct * P[P_SPX]
+    cy, sy = ct * P[P_CPY] - st * P[P_SPY], st * P[P_CPY] + ct * P[P_SPY]
+    if P[P_HOLDER] > 0.0:
+        return ax * cx, ay * cy, P[P_V] - ax * sx, -ay * sy, 0.0, 0.0
+    return 0.0, 0.0, P[P_V], 0.0, -ax * sx, -ay * sy
 
 
 @jit
@@ -164,19 +185,21 @@ def drive(P, t):
     """``(D_x, D_y, h_x', h_y', v_sx, v_sy)``: the holder's offset from ``(V tau, 0)``, its
     velocity, and the substrate velocity at ``t``.
     """
-    ax, ay = P[P_AX], P[P_AY]
-    cx, sx = math.cos(t + P[P_PX]), math.sin(t + P[P_PX])
-    cy, sy = math.cos(t + P[P_PY]), math.sin(t + P[P_PY])
-    if P[P_HOLDER] > 0.0:
-        return ax * cx, ay * cy, P[P_V] - ax * sx, -ay * sy, 0.0, 0.0
-    return 0.0, 0.0, P[P_V], 0.0, -ax * sx, -ay * sy
+    return _drive(P, math.cos(t), math.sin(t))
 
 
 @jit
 def contact(mode, P, t, z):
     """``(f_x, f_y, e'_x, e'_y, lam)`` of the state ``z`` in ``mode``."""
+    ct, st = math.cos(t), math.sin(t)
+    _, _, _, _, vsx, vsy = _drive(P, ct, st)
+    return _contact(mode, P, ct, st, z, vsx, vsy)
+
+
+@jit
+def _contact(mode, P, ct, st, z, vsx, vsy):
+    """:func:`contact` from ``cos t``, ``sin t`` and the substrate's velocity."""
     k, c = P[P_K], P[P_C]
-    _, _, _, _, vsx, vsy = drive(P, t)
     wx, wy = z[2] - vsx, z[3] - vsy
     if mode == FLIGHT:
         if c > 0.0:
@@ -184,7 +207,7 @@ def contact(mode, P, t, z):
         return 0.0, 0.0, 0.0, 0.0, 0.0
     if mode == STICK:
         return k * z[4] + c * wx, k * z[5] + c * wy, wx, wy, 0.0
-    n, dn = normal_force(P[P_A], t)
+    n, dn = _normal(P[P_A], ct, st)
     if c > 0.0:
         Fx, Fy = k * z[4] + c * wx, k * z[5] + c * wy
         F = math.hypot(Fx, Fy)
@@ -212,8 +235,9 @@ def max_step(P):
 def rhs(mode, P, t, z, dz):
     """The right-hand side of the phase ``mode`` into ``dz``."""
     al, g, aly, gy = P[P_ALPHA], P[P_GAMMA], P[P_ALPHA_Y], P[P_GAMMA_Y]
-    Dx, Dy, hdx, hdy, _, _ = drive(P, t)
-    fx, fy, ex, ey, _ = contact(mode, P, t, z)
+    ct, st = math.cos(t), math.sin(t)
+    Dx, Dy, hdx, hdy, vsx, vsy = _drive(P, ct, st)
+    fx, fy, ex, ey, _ = _contact(mode, P, ct, st, z, vsx, vsy)
     dz[0] = z[2] - P[P_V]
     dz[1] = z[3]
     dz[2] = al * (Dx - z[0]) + g * (hdx - z[2]) - fx
@@ -229,11 +253,13 @@ def switch_function(mode, P, t, z):
     """Positive inside the phase, falling through 0 where it ends (flight: 1)."""
     if mode == FLIGHT:
         return 1.0
-    n, _ = normal_force(P[P_A], t)
+    ct, st = math.cos(t), math.sin(t)
+    _, _, _, _, vsx, vsy = _drive(P, ct, st)
     if mode == STICK:
-        fx, fy, _, _, _ = contact(STICK, P, t, z)
+        n, _ = _normal(P[P_A], ct, st)
+        fx, fy, _, _, _ = _contact(STICK, P, ct, st, z, vsx, vsy)
         return P[P_SR] * n - math.hypot(fx, fy)
-    return contact(SLIP, P, t, z)[4]
+    return _contact(SLIP, P, ct, st, z, vsx, vsy)[4]
 
 
 @jit
@@ -370,14 +396,25 @@ def _account(mode, P, t, dt, z0, z1, acc, ph):
         bound = P[P_SR] * n if mode == STICK else n  # static circle in stick, kinetic in slip
         acc[4] = max(acc[4], math.hypot(fx, fy) - bound)
     if mode == SLIP:
-        f0 = contact(SLIP, P, t, z0)[0]
-        f1 = contact(SLIP, P, t + dt, z1)[0]
+        f0 = _slip_fx(P, t, z0)
+        f1 = _slip_fx(P, t + dt, z1)
         if f0 < 0.0 and f1 < 0.0:
             acc[3] += dt
         elif f0 < 0.0 <= f1:
             acc[3] += dt * f0 / (f0 - f1)
         elif f1 < 0.0 <= f0:
             acc[3] += dt * f1 / (f1 - f0)
+
+
+@jit
+def _slip_fx(P, t, z):
+    """``f_x`` in slip (:func:`_account` needs its sign): a Jenkins contact's ``n e_x/|e|``
+    without the drive, else :func:`contact`'s.
+    """
+    if P[P_C] == 0.0:  # Jenkins: f = n e/|e|
+        n, _ = normal_force(P[P_A], t)
+        return n * z[4] / math.hypot(z[4], z[5])
+    return contact(SLIP, P, t, z)[0]
 
 
 @jit
@@ -582,6 +619,14 @@ def orbit_mean(P, s, rtol, atol, hmax, W, cnt, max_events, out):
     """
     acc = np.zeros(4)
     ok, ifx, ify = period_map(P, s, W[13], rtol, atol, hmax, W, acc, cnt, max_events)
+    _means(P, ok, ifx, ify, acc, out)
+
+
+@jit
+def _means(P, ok, ifx, ify, acc, out):
+    """The means of one period map (its force integrals ``ifx, ify`` and phase times
+    ``acc``) into ``out`` as :func:`orbit_mean` gives them.
+    """
     nbar = mean_normal(P[P_A])
     out[0] = ifx / (TWO_PI * nbar)
     out[1] = ify / (TWO_PI * nbar)
@@ -601,7 +646,7 @@ def mean_normal(a):
 
 @jit
 def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
-           chord=False, hrel=DIFF_STEP, polish=0.0):
+           chord, hrel, polish, means):
     """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
@@ -618,7 +663,8 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     ``info[3]`` gets the residual at the iterate where ``J`` was last differenced.
     ``polish > 0``: once below ``tol`` with a kept Jacobian, chord steps go on while each
     cuts the residual by :data:`CHORD_RATE`, down to ``polish * tol`` (a map each; the
-    section residual enters the stated error).
+    section residual enters the stated error).  ``means`` gets the means of the period
+    map from the last iterate (:func:`orbit_mean`'s, computed on the way).
     """
     acc = np.zeros(4)
     ph = np.empty(N_S)
@@ -628,7 +674,8 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     periods = 0
     fail0 = cnt[C_FAIL]
     steps0 = cnt[C_STEPS]
-    ok, _, _ = period_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events)
+    ok, ifx, ify = period_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events)
+    _means(P, ok, ifx, ify, acc, means)
     periods += 1
     if not ok:
         info[2] += periods
@@ -680,13 +727,15 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
         for _ in range(6):
             for i in range(N_S):
                 sp[i] = s[i] + lam * ds[i]
-            ok, _, _ = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
+            acc[:] = 0.0
+            ok, ifx, ify = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
             periods += 1
             if not ok:
                 cnt[C_FAIL] = fail0
             else:
                 rn = _dist(pp, sp, k)
                 if rn < res:
+                    _means(P, ok, ifx, ify, acc, means)
                     for i in range(N_S):
                         s[i] = sp[i]
                         ph[i] = pp[i]
@@ -838,6 +887,8 @@ def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y
     P[P_AX], P[P_PX], P[P_AY], P[P_PY] = a_x, phase_x, a_y, phase_y
     P[P_HOLDER] = 0.0 if on_substrate else 1.0
     P[P_SR] = static_ratio
+    P[P_CPX], P[P_SPX] = math.cos(phase_x), math.sin(phase_x)
+    P[P_CPY], P[P_SPY] = math.cos(phase_y), math.sin(phase_y)
     return P
 
 
@@ -909,7 +960,7 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
     floor = 100.0 * ROUGH_RTOL * scale
     hrel = ROUGH_STEP * ROUGH_RTOL
     if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, 12, J,
-              info, False, hrel):
+              info, False, hrel, 0.0, np.zeros(7)):
         if info[0] == 0 or info[3] > CHORD_NEAR * 1e-12 * scale:
             # no J yet (the start was the rough orbit), or one differenced farther off
             # than the solve at rtol would keep (:func:`newton`'s rule): afresh here
@@ -934,10 +985,12 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
 
 
 @jit
-def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info):
+def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
+                  means):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
-    mult, use_newton, periods)``, ``s`` the orbit's section state.
+    mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
+    it, ``means`` its means).
     """
     status = ST_FAILED
     mult = math.nan
@@ -955,7 +1008,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
             chord = rough == ROUGH_FOUND
             conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
                           100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
-                          POLISH if chord else 0.0)
+                          POLISH if chord else 0.0, means)
             periods += int(info[2])
         if conv:
             ev = np.linalg.eigvals(J.astype(np.complex128))
@@ -986,13 +1039,14 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
 @jit
 def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newton, J, info,
                  mult, res, periods, periods_to_orbit, means, out_f):
-    """The periodic orbit's means into ``means``, their error (the same orbit at ``100
-    rtol``, and the section residual ``res``) and the settling into ``out_f``. Returns
-    the periods run.
+    """The periodic orbit's means into ``means`` (where Newton found it, they are already
+    there: its last map's), their error (the same orbit at ``100 rtol``, and the section
+    residual ``res``) and the settling into ``out_f``. Returns the periods run.
     """
     k = P[P_K]
-    orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
-    periods += 1
+    if not use_newton:  # else Newton's last map gave them
+        orbit_mean(P, s, rtol, rtol, hmax, W, cnt, max_events, means)
+        periods += 1
     # the tolerance's effect: the same orbit at 100 rtol
     sl = s.copy()
     hint = W[W_MODE, 0]
@@ -1000,18 +1054,21 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     loose = np.zeros(7)
     if use_newton:
         conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info, True)
+                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info, True, DIFF_STEP,
+                      0.0, loose)
     else:
         conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
                        1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
     if conv:
-        orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                   loose)
+        if not use_newton:  # Newton's last map gave them
+            orbit_mean(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                       loose)
+            periods += 1
         err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
     else:
         err = math.inf
     W[W_MODE, 0] = hint  # the orbit's phase at its section
-    periods += int(info[2]) + 1
+    periods += int(info[2])
     # the section residual: a state error res moves a mean by about res/(1 - mult)
     err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
     out_f[O_ERR] = err
@@ -1124,7 +1181,7 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
         status, mult, use_newton, periods = _orbit_search(
-            P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info)
+            P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
