@@ -39,6 +39,14 @@ __all__ = ["friction_coefficient", "solve_points", "solve_table"]
 Initial = str | SectionState
 
 
+def _elongation(state: SectionState, systems: Callable[[int], Dimensionless], i: int) -> float:
+    """The state's ``e``: given, or the one its force implies for point ``i``'s system.
+
+    The system is built only then: it is validated anew, the slowest part of a call.
+    """
+    return state.e if math.isfinite(state.e) else state.elongation(systems(i))
+
+
 def initial_rows(initial: Initial | NDArray[np.object_], n: int,
                  systems: Callable[[int], Dimensionless]) -> tuple[int, NDArray[np.float64]]:
     """Kernel start ``(kind, rows (y, x', e, phase))``; ``systems(i)`` is point i's system.
@@ -66,12 +74,12 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
     """
     init = np.zeros((n, 4))
     if isinstance(initial, SectionState):
-        init[:] = (initial.y, initial.x_dot, initial.elongation(systems(0)),
+        init[:] = (initial.y, initial.x_dot, _elongation(initial, systems, 0),
                    PHASE_CODE[initial.phase])
         return 2, init
     if isinstance(initial, np.ndarray) and initial.dtype == object:
         for i, s in enumerate(initial.ravel()):
-            init[i] = (s.y, s.x_dot, s.elongation(systems(i)), PHASE_CODE[s.phase])
+            init[i] = (s.y, s.x_dot, _elongation(s, systems, i), PHASE_CODE[s.phase])
         return 2, init
     if initial == "sliding":
         return 0, init
