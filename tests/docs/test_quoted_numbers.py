@@ -54,9 +54,12 @@ PRINTED: dict[str, tuple[str, str, str | None, tuple[str, ...]]] = {
                               r"^(\| [-+][\d.e-]+ \| [-+][\d.]+ \| )(\d\.\de-1\d)( \| True \|)$",
                               ("--print",)),
     "plane_vzero_numbers": ("benchmarks/results/plane_vzero.md",
-                            # the date and commit, the number of repeats; the median times
+                            # the date and commit, the number of repeats; the median times,
+                            # and the slow points' periods before them (effort, whose last
+                            # digits move with round-off from one processor to another)
                             r"^# 2-D solver at and near v0 = 0 \(|^Made by ",
-                            r"^(\| .* \| )(\d[\d.]* m?s)( \|)$", ("--print", "--repeats", "1")),
+                            r"^(\| .* \| )(\d+ \| \d[\d.]* m?s|\d[\d.]* m?s)( \|)$",
+                            ("--print", "--repeats", "1")),
     "mdr_history_numbers": ("benchmarks/results/mdr_history.md", _DATED,
                             # the time table: ms a history, two columns
                             r"^(\| \([^|]*\) \| \d+ \| )(\d+ ms \| \d+ ms)( \|)$", ()),

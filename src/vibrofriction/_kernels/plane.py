@@ -350,12 +350,18 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
         if g1 < 0.0:  # a switch inside the step: Illinois on the step length
             sl, gl, sr, gr = 0.0, g0, hh, g1
             side = 0
+            width = 4e-16 * (abs(t) + hh)
             for _ in range(80):
-                if sr - sl <= 4e-16 * (abs(t) + hh):
+                if sr - sl <= width:
                     break
-                s = (sl * gr - sr * gl) / (gr - gl)
-                if not (sl < s < sr):
-                    s = 0.5 * (sl + sr)
+                if gl == 0.0:
+                    # the left end is the root itself (its value rounds to 0): the next
+                    # trial just past it, not a bisection towards it from the right
+                    s = min(sl + width, 0.5 * (sl + sr))
+                else:
+                    s = (sl * gr - sr * gl) / (gr - gl)
+                    if not (sl < s < sr):
+                        s = 0.5 * (sl + sr)
                 rk_step(mode, P, t, z, k1, s, zb, kb, K)
                 project(mode, P, t + s, zb)
                 gs = switch_function(mode, P, t + s, zb)
