@@ -23,7 +23,6 @@ from ..params import Dimensionless, inertial_velocity
 from ..solver import section_state, solve_points
 from ..solver.engine import solve_table
 from ..solver.points import point_table
-from ..solver.settings import DEFAULT_SETTINGS
 from ._grid import DIMENSIONLESS, Plan, physical_system
 from ._variables import point_variables, row_variables
 
@@ -188,7 +187,6 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
     its predecessor's state gives, without validating the row again at every point.
     """
     rshape, nv = V.shape[:-1], V.shape[-1]
-    settings = plan.settings or DEFAULT_SETTINGS
     out: dict[str, np.ndarray] | None = None
     for i in np.ndindex(rshape):
         table = point_table({**{n: x[i] for n, x in point.items()}, "v_inertial": V[i],
@@ -197,7 +195,7 @@ def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
         order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
         for d, j in order:
             cols = solve_table(table.take(np.array([j])),
-                               state if state is not None else plan.initial, settings)
+                               state if state is not None else plan.initial, plan.settings)
             if out is None:
                 out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
             for k, v in cols.items():
