@@ -1,10 +1,12 @@
 """Shared checks of time histories (tests/inplane, tests/mdr): section rows, the energy
-balance per period, and a digest of a history's arrays."""
+balance per period, a digest of a history's arrays, and a history against stored ones."""
 
 from __future__ import annotations
 
 import hashlib
 import math
+from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 
@@ -39,3 +41,22 @@ def history_digest(h: vf.History) -> str:
     for name in HISTORY_FIELDS:
         d.update(np.ascontiguousarray(getattr(h, name), dtype=float).tobytes())
     return d.hexdigest()
+
+
+#: Round-off of a history's arrays, relative to each array's largest value
+ROUNDOFF = 1e-12
+
+
+def assert_history_is_stored(h: vf.History, path: Path, digest: str) -> None:
+    """``h`` against the arrays stored at ``path`` (:data:`HISTORY_FIELDS`): the time grid
+    bit for bit, the rest to :data:`ROUNDOFF`; the stored arrays must hash to ``digest``
+    (:func:`history_digest`: they are the baseline's own)."""
+    with np.load(path) as stored:
+        want = {name: stored[name] for name in HISTORY_FIELDS}
+    assert history_digest(SimpleNamespace(**want)) == digest
+    assert np.array_equal(h.tau, want["tau"])
+    for name in HISTORY_FIELDS:
+        have = np.asarray(getattr(h, name), dtype=float)
+        np.testing.assert_allclose(have, want[name], rtol=0.0,
+                                   atol=ROUNDOFF * (1.0 + np.max(np.abs(want[name]))),
+                                   err_msg=name)

@@ -363,7 +363,7 @@ def test_titles_are_whole_and_clear_of_the_toolbars(page, server):
     page.goto(server + "?profile_exponent=2&axis=V&v_max=1.2")
     page.get_by_text(re.compile(r"point at V = ")).wait_for()
     page.wait_for_function(
-        f"() => ({_TITLES})().seen.some(t => t.startsWith('contact in space and time at'))")
+        f"() => ({_TITLES})().seen.some(t => t.startsWith('contact at'))")
     titles = page.evaluate(_TITLES)
     assert titles["bad"] == [], titles
 

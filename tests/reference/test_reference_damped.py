@@ -38,20 +38,32 @@ UNDAMPED = [
 ]
 
 
+#: The stored numbers were measured on one processor; another rounds a few of their last
+#: digits differently (solve_ivp's: 1e-14 apart on an AMD EPYC, 2026-11-29), so they are
+#: compared to round-off, and zero damping against no damping bit for bit in the same run
+ROUNDOFF = 1e-12
+
+
 @pytest.mark.parametrize("p, initial, mu_b, mu_a", UNDAMPED)
 def test_zero_damping_gives_the_undamped_numbers_bit_for_bit(p, initial, mu_b, mu_a):
-    for kwargs in ({}, {"zeta": 0.0, "eta_c": 0.0}):
-        assert return_mapping_mu(*p, 200, 20, 10, initial=initial, **kwargs) == mu_b
-        assert solve_ivp_mu(*p, 10, 5, initial=initial, **kwargs) == mu_a
+    b = [return_mapping_mu(*p, 200, 20, 10, initial=initial, **kwargs)
+         for kwargs in ({}, {"zeta": 0.0, "eta_c": 0.0})]
+    a = [solve_ivp_mu(*p, 10, 5, initial=initial, **kwargs)
+         for kwargs in ({}, {"zeta": 0.0, "eta_c": 0.0})]
+    assert b[0] == b[1] and a[0] == a[1]
+    assert b[0] == pytest.approx(mu_b, rel=ROUNDOFF)
+    assert a[0] == pytest.approx(mu_a, rel=ROUNDOFF)
 
 
 def test_zero_damping_history_and_final_state_unchanged():
     h = return_mapping_history(0.5, 2.0, 1.5, 1.0, 2, 100, zeta=0.0, eta_c=0.0)
-    assert (float(h.x[-1]), float(h.f[-1])) == (13.765039057326586, 2.058139431919158)
+    assert (float(h.x[-1]), float(h.f[-1])) == pytest.approx(
+        (13.765039057326586, 2.058139431919158), rel=ROUNDOFF)
     np.testing.assert_array_equal(h.e, h.f / 1.5)  # the Jenkins element: e = f / k
     run = solve_ivp_run(0.5, 2.0, 0.5, 0.3, 10, 5, zeta=0.0, eta_c=0.0)
-    assert run.final_state == (94.24777960769379, 27.03243758754468, -0.5588720379075608,
-                               0.558405567134259)
+    assert run.final_state == pytest.approx(
+        (94.24777960769379, 27.03243758754468, -0.5588720379075608, 0.558405567134259),
+        rel=ROUNDOFF)
     assert run.n_events == 30
 
 

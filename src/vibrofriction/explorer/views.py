@@ -469,7 +469,7 @@ class MapView:
         fig = figure(height=330, width=500, x_axis_type="log", y_axis_type="log",
                      x_range=Range1d(a0, a1), y_range=Range1d(b0, b1),
                      tools="tap,pan,wheel_zoom,reset,save", toolbar_location=TOOLBAR,
-                     title="cases I-IV: click to move there",
+                     title="cases I-IV, click to move",
                      x_axis_label="alpha", y_axis_label="beta")
         fig.image_rgba(image=[img], x=a0, y=b0, dw=a1 - a0, dh=b1 - b0)
         # the resonance bands are thinner than a pixel of the grid: draw them as lines
@@ -564,7 +564,7 @@ class SpaceTimeView:
             self.image.data = {"image": [], "x": [], "y": [], "dw": [], "dh": []}
             self.radii.data = {"t": [], "stick": [], "contact": []}
             self.note.text = "needs the MDR history"
-            fig.title.text = f"contact in space and time at {where}: {h['message']}"
+            fig.title.text = f"contact at {where}: {h['message']}"
             return
         t, xi, codes = (np.asarray(st[k], dtype=float) for k in ("t", "xi", "state"))
         t0, t1 = float(t[0]), float(t[-1])
@@ -577,5 +577,4 @@ class SpaceTimeView:
         self.note.text = ""
         _set_range(fig.x_range, t0, t1)
         _set_range(fig.y_range, 0.0, top)
-        fig.title.text = (f"contact in space and time at {where} ({st['springs']} MDR "
-                          "springs, one period)")
+        fig.title.text = f"contact at {where}: {st['springs']} springs, one period"
