@@ -126,8 +126,8 @@ DIFF_STEP = 1e-7
 """The relative step of Newton's difference Jacobian at the solve's own tolerance."""
 ROUGH_RTOL = 1e-8
 """Newton first converges at this tolerance where the solve's is tighter (its Jacobians,
-six period maps each, cost a third of those at ``1e-10``), then at the solve's tolerance by
-chord steps on the Jacobian of the rough orbit (:func:`_orbit_search`)."""
+six period maps each, cost about 40 % of those at ``1e-10``), then at the solve's tolerance
+by chord steps on the Jacobian of the rough orbit (:func:`_orbit_search`)."""
 ROUGH_SKIPPED, ROUGH_FOUND, ROUGH_FAILED = 0, 1, 2  # :func:`_rough_orbit`'s outcomes
 POLISH = 0.01
 """After the rough orbit the chord steps at ``rtol`` go on to this times Newton's ``tol``
