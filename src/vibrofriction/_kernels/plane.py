@@ -402,25 +402,14 @@ def _account(mode, P, t, dt, z0, z1, acc, ph):
         bound = P[P_SR] * n if mode == STICK else n  # static circle in stick, kinetic in slip
         acc[4] = max(acc[4], math.hypot(fx, fy) - bound)
     if mode == SLIP:
-        f0 = _slip_fx(P, t, z0)
-        f1 = _slip_fx(P, t + dt, z1)
+        f0 = contact(SLIP, P, t, z0)[0]
+        f1 = contact(SLIP, P, t + dt, z1)[0]
         if f0 < 0.0 and f1 < 0.0:
             acc[3] += dt
         elif f0 < 0.0 <= f1:
             acc[3] += dt * f0 / (f0 - f1)
         elif f1 < 0.0 <= f0:
             acc[3] += dt * f1 / (f1 - f0)
-
-
-@jit
-def _slip_fx(P, t, z):
-    """``f_x`` in slip (:func:`_account` needs its sign): a Jenkins contact's ``n e_x/|e|``
-    without the drive, else :func:`contact`'s.
-    """
-    if P[P_C] == 0.0:  # Jenkins: f = n e/|e|
-        n, _ = normal_force(P[P_A], t)
-        return n * z[4] / math.hypot(z[4], z[5])
-    return contact(SLIP, P, t, z)[0]
 
 
 @jit
