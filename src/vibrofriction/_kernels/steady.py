@@ -66,12 +66,14 @@ from .codes import (
     O_WORK,
     O_XD,
     O_Y,
+    SLIP_NEG,
     SLIP_POS,
     ST_AVERAGED,
     ST_FAILED,
     ST_NOT_CONVERGED,
     ST_PERIODIC,
     ST_SLIDING,
+    STICK,
     T_A_X,
     T_ALPHA,
     T_AMPLITUDE,
@@ -458,18 +460,46 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, i
 
 
 @jit
-def steady_state_many(points, init_kind, init, max_periods, min_periods, tol_state, tol_mean,
-                      max_events, out_f, out_i):
+def _chained(out_f, out_i):
+    """The start a row's final state gives the next point of a chain: ``(kind, y, x', e,
+    phase)``, kind 2 (that state), -1 (none: not finite, or a phase without a section state,
+    so the chain's own start) or -2 (a state whose ``e`` is not known: the caller derives it).
+    """
+    ph = out_i[I_PHASE]
+    y, xd, f, e = out_f[O_Y], out_f[O_XD], out_f[O_F], out_f[O_E]
+    if not (ph == STICK or ph == SLIP_POS or ph == SLIP_NEG) or not (
+            math.isfinite(y) and math.isfinite(xd) and math.isfinite(f)):
+        return -1, 0.0, 0.0, 0.0, 0
+    if not math.isfinite(e):
+        return -2, 0.0, 0.0, 0.0, 0
+    return 2, y, xd, e, ph
+
+
+@jit
+def steady_state_many(points, init_kind, init, chain, max_periods, min_periods, tol_state,
+                      tol_mean, max_events, out_f, out_i):
     """:func:`steady_state` over a table of points (one compiled loop, no Python calls).
 
     ``points`` has shape ``(n, len(POINT_COLUMNS))`` (columns by the schema's indices,
     ``codes.T_*``); ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row
     ``i`` of ``out_f`` and ``out_i`` receives point ``i``.
+
+    ``chain``: each point after the first starts from the final section state of the one
+    before it (a continuation), where that has one; else from its own start (``init_kind``,
+    ``init[i]``).  Returns the number of points solved: ``n``, or fewer where a final state
+    lacks its elongation (the caller derives it and goes on from there).
     """
     for i in range(points.shape[0]):
         p = points[i]
+        kind, y0, xd0, e0, ph0 = init_kind, init[i, 0], init[i, 1], init[i, 2], int(init[i, 3])
+        if chain and i > 0:
+            k, y, xd, e, ph = _chained(out_f[i - 1], out_i[i - 1])
+            if k == -2:
+                return i
+            if k == 2:
+                kind, y0, xd0, e0, ph0 = k, y, xd, e, ph
         steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
                      p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_STATIC_RATIO],
-                     init_kind, init[i, 0],
-                     init[i, 1], init[i, 2], int(init[i, 3]), max_periods, min_periods,
+                     kind, y0, xd0, e0, ph0, max_periods, min_periods,
                      tol_state, tol_mean, max_events, out_f[i], out_i[i])
+    return points.shape[0]

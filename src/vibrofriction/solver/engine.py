@@ -31,10 +31,11 @@ from .results import (
     result_from_columns,
     result_from_rows,
     results_from_columns,
+    section_state,
 )
 from .settings import DEFAULT_SETTINGS, SolverSettings
 
-__all__ = ["friction_coefficient", "solve_points", "solve_table"]
+__all__ = ["friction_coefficient", "solve_chain", "solve_points", "solve_table"]
 
 Initial = str | SectionState
 
@@ -276,11 +277,76 @@ def solve_table(points: PointTable, initial: Initial | NDArray[np.object_],
                                                   np.ascontiguousarray(init[idx]), settings)
     if np.any(backward):
         _mirror_outputs(out_f, out_i, backward)
+    return _columns(points, out_f, out_i, sliding, settings)
+
+
+def _columns(points: PointTable, out_f: NDArray[np.float64], out_i: NDArray[np.int64],
+             sliding: NDArray[np.float64], settings: SolverSettings) -> dict[str, NDArray]:
+    """The named output columns of the rows ``out_f``, ``out_i``, shaped as ``points``.
+
+    ``sliding`` is their ``sliding_mu_ratio``; ``trusted`` is added from ``settings``.
+    """
     out_f[:, _O_SLIDING] = sliding
-    out = {k: out_f[:, j].reshape(points.shape) for j, k in enumerate(FLOAT_COLUMNS)}
+    out: dict[str, NDArray] = {k: out_f[:, j].reshape(points.shape)
+                               for j, k in enumerate(FLOAT_COLUMNS)}
     out.update({k: out_i[:, j].reshape(points.shape) for j, k in enumerate(INT_COLUMNS)})
     out["trusted"] = settings.trusted(out["status"], out["error"])
     return out
+
+
+def solve_chain(points: PointTable, initial: Initial,
+                settings: SolverSettings) -> dict[str, NDArray]:
+    """A continuation: the points of a 1-D table solved in turn, each from the one before.
+
+    Point ``i > 0`` starts from the final section state of point ``i - 1``
+    (:func:`~.results.section_state`), or from ``initial`` where that has none (a static
+    point, a failed one): the columns of :func:`solve_table` of each point with that start.
+    Where every point is the event-driven solver's with ``V > 0`` the chain runs in one
+    compiled loop; else point by point.
+
+    Parameters
+    ----------
+    points : PointTable
+        The points, validated, one-dimensional, in the order of the continuation.
+    initial : str or SectionState
+        The start of the first point (and of any point whose predecessor has no state).
+    settings : SolverSettings
+        Accuracy and effort bounds.
+
+    Returns
+    -------
+    dict of str to ndarray
+        The named output columns, as in :func:`solve_points`.
+    """
+    n = len(points)
+    start = 0
+    cols: dict[str, NDArray] | None = None
+    if n and np.all(choose(points["profile_exponent"], points["a_y"], points["rs_a"]) == 0) \
+            and np.all(points["v_inertial"] > 0.0):
+        kind, init = initial_rows(initial, n, points.system)
+        for start_kind in {kind, 2}:  # the first point's start, and its successors'
+            EVENT.capabilities.check(points, start_kind, settings)
+        out_f, out_i, start = EVENT.solve_chain(points, kind, init, settings)
+        cols = _columns(points, out_f, out_i, sliding_mu_ratio(points), settings)
+        if start == n:
+            return cols
+    state: Initial | None = None if cols is None or start == 0 else _final_state(cols, start - 1)
+    for j in range(start, n):  # point by point from ``start`` on
+        one = solve_table(points.take(np.array([j])), state if state is not None else initial,
+                          settings)
+        if cols is None:
+            cols = {k: np.empty(n, dtype=v.dtype) for k, v in one.items()}
+        for k, v in one.items():
+            cols[k][j] = v[0]
+        state = _final_state(one, 0)
+    assert cols is not None
+    return cols
+
+
+def _final_state(cols: dict[str, NDArray], j: int) -> SectionState | None:
+    """The final section state of row ``j`` of the columns ``cols`` (None: none)."""
+    y, x_dot, f, e = (float(cols[k][j]) for k in ("y", "x_dot", "f", "e"))
+    return section_state(y, x_dot, f, int(cols["phase"][j]), e)
 
 
 _N_FLOAT, _N_INT = len(FLOAT_COLUMNS), len(INT_COLUMNS)

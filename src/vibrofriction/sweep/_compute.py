@@ -20,8 +20,8 @@ import numpy as np
 
 from .. import theory
 from ..params import Dimensionless, inertial_velocity
-from ..solver import section_state, solve_points
-from ..solver.engine import solve_table
+from ..solver import solve_points
+from ..solver.engine import solve_chain
 from ..solver.points import point_table
 from ._grid import DIMENSIONLESS, Plan, physical_system
 from ._variables import point_variables, row_variables
@@ -182,26 +182,21 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
 def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
     """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``.
 
-    A row is validated once (:func:`~vibrofriction.solver.points.point_table`), its points
-    solved one by one from the validated table: what ``solve_points`` of each point with
-    its predecessor's state gives, without validating the row again at every point.
+    A row is validated once (:func:`~vibrofriction.solver.points.point_table`) and its
+    ``2 n_velocity`` solves run as one chain (:func:`~vibrofriction.solver.engine.solve_chain`):
+    each from the final state of the one before, the first from ``plan.initial``.
     """
     rshape, nv = V.shape[:-1], V.shape[-1]
+    order = np.concatenate([np.arange(nv), np.arange(nv - 1, -1, -1)])
     out: dict[str, np.ndarray] | None = None
     for i in np.ndindex(rshape):
         table = point_table({**{n: x[i] for n, x in point.items()}, "v_inertial": V[i],
                              "inplane_on": plan.inplane_on, "rs_law": plan.rs_law})
-        state = None
-        order = [(0, j) for j in range(nv)] + [(1, j) for j in range(nv - 1, -1, -1)]
-        for d, j in order:
-            cols = solve_table(table.take(np.array([j])),
-                               state if state is not None else plan.initial, plan.settings)
-            if out is None:
-                out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
-            for k, v in cols.items():
-                out[k][(*i, d, j)] = v[0]
-            y, x_dot, f, e = (float(cols[k][0]) for k in ("y", "x_dot", "f", "e"))
-            state = section_state(y, x_dot, f, int(cols["phase"][0]), e)
+        cols = solve_chain(table.take(order), plan.initial, plan.settings)
+        if out is None:
+            out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
+        for k, v in cols.items():
+            out[k][i] = np.stack([v[:nv], v[nv:][::-1]])
     assert out is not None
     return out
 

@@ -52,11 +52,11 @@ class EventMethod:
                            (at_zero, 1 if init_kind == 0 else init_kind)):
             idx = np.flatnonzero(rows)
             if idx.size == len(points):  # every point: the rows written in place
-                steady_state_many(points.values, kind, init, *args, out_f, out_i)
+                steady_state_many(points.values, kind, init, False, *args, out_f, out_i)
             elif idx.size:
                 of, oi = new_outputs(idx.size)
                 steady_state_many(points.take(idx).values, kind,
-                                  np.ascontiguousarray(init[idx]), *args, of, oi)
+                                  np.ascontiguousarray(init[idx]), False, *args, of, oi)
                 out_f[idx], out_i[idx] = of, oi
         am = points["amplitude"]
         contact_columns(out_f, am, slice(None))
@@ -64,6 +64,26 @@ class EventMethod:
         _static_limit(am, out_f, out_i, (V == 0.0) & ~at_zero)
         out_i[:, codes.I_METHOD] = _CODE
         return out_f, out_i
+
+    def solve_chain(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
+                    settings: SolverSettings
+                    ) -> tuple[NDArray[np.float64], NDArray[np.int64], int]:
+        """:meth:`solve` of points in turn, each from its predecessor's final state.
+
+        A continuation in one compiled loop: point ``i > 0`` starts from the final section
+        state of point ``i - 1`` where that has one, else from ``init_kind`` and
+        ``init[i]``.  Every ``V`` must be positive.  Returns ``(out_f, out_i, m)``: the
+        first ``m`` rows are solved (``m < n`` where a final state lacks its elongation,
+        which the caller derives from its system to go on).
+        """
+        if not np.all(points["v_inertial"] > 0.0):
+            raise ValueError("a chain of points needs every v_inertial > 0")
+        out_f, out_i = new_outputs(len(points))
+        m = steady_state_many(points.values, init_kind, np.ascontiguousarray(init), True,
+                              *event_arguments(settings), out_f, out_i)
+        contact_columns(out_f, points["amplitude"], slice(None))
+        out_i[:, codes.I_METHOD] = _CODE
+        return out_f, out_i, int(m)
 
 
 def event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:

@@ -1,0 +1,94 @@
+"""A continuation in one compiled loop is the point-by-point continuation, bit for bit.
+
+:func:`vibrofriction.solver.engine.solve_chain` runs a row of flat-punch points with
+``V > 0`` as one kernel call, each point started from its predecessor's final section
+state; anything else goes point by point.  Here every chain is compared with the same
+continuation written out with the public API: :func:`solve_points` of one point at a
+time, started from :func:`section_state` of the row before (or the chain's own start
+where that row has none).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from vibrofriction.schema import Status
+from vibrofriction.solver import SectionState, SolverSettings, section_state, solve_points
+from vibrofriction.solver.engine import solve_chain
+from vibrofriction.solver.points import point_table
+
+NAMES = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "phase_x", "a_y",
+         "static_ratio")
+
+
+def _by_hand(points: dict[str, np.ndarray], initial, settings=None) -> dict[str, np.ndarray]:
+    rows = []
+    state = None
+    for j in range(len(points["alpha"])):
+        one = solve_points(**{k: v[j:j + 1] for k, v in points.items()},
+                           initial=state if state is not None else initial, settings=settings)
+        rows.append(one)
+        state = section_state(float(one["y"][0]), float(one["x_dot"][0]), float(one["f"][0]),
+                              int(one["phase"][0]), float(one["e"][0]))
+    return {k: np.concatenate([r[k] for r in rows]) for k in rows[0]}
+
+
+def _assert_same(a: dict[str, np.ndarray], b: dict[str, np.ndarray]) -> None:
+    assert a.keys() == b.keys()
+    for k in a:
+        np.testing.assert_array_equal(a[k], b[k], err_msg=k)
+
+
+def _row(n: int, **fixed) -> dict[str, np.ndarray]:
+    v = np.concatenate([np.linspace(0.02, 1.1, n), np.linspace(1.1, 0.02, n)])
+    base = dict(alpha=0.3, beta=2.0, amplitude=0.6, zeta=0.0, eta_c=0.0, a_x=0.0,
+                phase_x=0.0, a_y=0.0, static_ratio=1.0) | fixed
+    return {"v_inertial": v, **{k: np.full(v.size, float(x)) for k, x in base.items()}}
+
+
+@pytest.mark.parametrize("fixed", [
+    {},  # stick-slip and sliding, up and down
+    {"amplitude": 1.5, "beta": 20.0},  # jumping: sections in flight restart the chain
+    {"zeta": 0.05, "eta_c": 0.2, "a_x": 0.4, "phase_x": 1.0},  # damped, in-plane drive
+    {"static_ratio": 1.4},  # static above kinetic
+    {"beta": math.inf},  # rigid contact
+])
+def test_compiled_chain_is_the_continuation(fixed):
+    points = _row(12, **fixed)
+    chain = solve_chain(point_table(points), "sliding", SolverSettings())
+    _assert_same(chain, _by_hand(points, "sliding"))
+    # the chain starts from the predecessor where one exists: not the same as fresh starts
+    assert np.all(chain["status"] != Status.FAILED.code)
+
+
+def test_chain_through_rows_it_cannot_compile():
+    """``V = 0``, ``V < 0`` and a transverse point go point by point, the chain intact."""
+    points = _row(5)
+    points["v_inertial"][[0, 3]] = [0.0, -0.4]
+    points["a_y"][6] = 0.3
+    chain = solve_chain(point_table(points), "rest", SolverSettings())
+    _assert_same(chain, _by_hand(points, "rest"))
+    assert chain["status"][0] == Status.STATIC.code
+
+
+def test_chain_from_a_state_and_with_settings():
+    points = _row(6)
+    start = SectionState(y=-1.0, x_dot=0.2, f=0.5, phase="stick")  # e from the system
+    settings = SolverSettings(tol_state=1e-9, max_periods=3000)
+    chain = solve_chain(point_table(points), start, settings)
+    _assert_same(chain, _by_hand(points, start, settings))
+
+
+def test_chain_needs_fewer_periods_than_fresh_starts():
+    """What the chain is for: each point starts near its orbit."""
+    points = _row(20, alpha=0.05, beta=20.0)
+    chain = solve_chain(point_table(points), "sliding", SolverSettings())
+    fresh = solve_points(**points)
+    periodic = (chain["status"] == Status.PERIODIC.code) & (fresh["status"] == chain["status"])
+    assert periodic.sum() > 15
+    assert np.mean(chain["work"][periodic]) < 0.7 * np.mean(fresh["work"][periodic])
+    same = np.abs(chain["mu_ratio"] - fresh["mu_ratio"]) <= chain["error"] + fresh["error"]
+    assert same[periodic].mean() > 0.9  # one attractor at most of these points
