@@ -3,7 +3,8 @@ LocalCluster, Dask overhead for 1000-point blocks, peak memory of a 10^6-point s
 into a store.  Results are written (markdown) to benchmarks/results/sweep.md.
 
     .venv/bin/python benchmarks/bench_sweep.py throughput   # ~2 min
-    .venv/bin/python benchmarks/bench_sweep.py memory       # ~7 min: 10^6 points
+    .venv/bin/python benchmarks/bench_sweep.py memory       # ~1 min: 10^6 points
+    .venv/bin/python benchmarks/bench_sweep.py memory --continuation up  # or both
     .venv/bin/python benchmarks/bench_sweep.py atlas --store /tmp/atlas.zarr  # 10^5 points
     .venv/bin/python benchmarks/bench_sweep.py all
 
@@ -243,7 +244,8 @@ from vibrofriction.sweep import sweep
 if __name__ == "__main__":
     # the package's default block size (auto_chunk_size)
     sweep(alpha=np.geomspace(0.01, 0.5, 100), beta=np.geomspace(2.0, 200.0, 100),
-          amplitude=0.5, vbar=np.linspace(0.0, 1.2, 100), store=sys.argv[1], progress=False)
+          amplitude=0.5, vbar=np.linspace(0.0, 1.2, 100), store=sys.argv[1], progress=False,
+          continuation=sys.argv[2] or False)
 """
 
 
@@ -273,15 +275,18 @@ def _tree_memory(pid: int) -> tuple[float, float, float]:
     return own, rss, pss
 
 
-def memory(seconds: float | None) -> list[str]:
+def memory(seconds: float | None, continuation: str = "") -> list[str]:
     """The 10^6-point sweep into a store (to the end, or killed after `seconds`),
-    its resident memory sampled every second."""
+    its resident memory sampled every second; ``continuation``: each velocity curve walked
+    up (``"up"``, each point from its neighbour's final state) or up and down
+    (``"both"``, 2 x 10^6 solves)."""
     tmp = Path(tempfile.mkdtemp(prefix="bench-sweep-"))
     store = tmp / "atlas.zarr"
     script = tmp / "run.py"
     script.write_text(textwrap.dedent(MEMORY_SCRIPT))
     marks = store / "_sweep" / "done" / "c"
-    proc = subprocess.Popen([sys.executable, str(script), str(store)], start_new_session=True)
+    proc = subprocess.Popen([sys.executable, str(script), str(store), continuation],
+                            start_new_session=True)
     samples = []
     t0 = time.perf_counter()
     try:
@@ -301,7 +306,8 @@ def memory(seconds: float | None) -> list[str]:
     import zarr
 
     blocks = zarr.open_array(str(store / "_sweep" / "done"), mode="r").shape[0]
-    per_block = 10**6 // blocks
+    solves = (2 if continuation == "both" else 1) * 10**6
+    per_block = solves // blocks
     shutil.rmtree(tmp, ignore_errors=True)
     arr = np.array(samples)
     mib = 2.0**20
@@ -315,7 +321,9 @@ def memory(seconds: float | None) -> list[str]:
            if finished else f"killed after {wall:.0f} s with {done} of {blocks} blocks done")
     return [
         f"10^6-point grid (alpha 100 x beta 100 x vbar 100, the default blocks of {per_block} "
-        f"points, 2 local processes, into a zarr store): {how}.",
+        f"points, 2 local processes, into a zarr store"
+        + (f"; continuation {continuation!r}: {solves:.0e} solves, each velocity curve walked "
+           f"from its first point" if continuation else "") + f"): {how}.",
         "",
         "| quantity | value |",
         "|---|---:|",
@@ -363,6 +371,8 @@ def main() -> None:
     parser.add_argument("what", choices=["throughput", "memory", "atlas", "all"])
     parser.add_argument("--store", default="atlas.zarr", help="store of the atlas run")
     parser.add_argument("--repeat", type=int, default=2)
+    parser.add_argument("--continuation", choices=["up", "both"], default="",
+                        help="memory: the continuation sweep of the same grid")
     parser.add_argument("--seconds", type=float, default=None,
                         help="memory: kill the sweep after this long (default: run to the end)")
     args = parser.parse_args()
@@ -373,7 +383,7 @@ def main() -> None:
     if args.what in ("throughput", "all"):
         print("\n".join(throughput(args.repeat)), flush=True)
     if args.what in ("memory", "all"):
-        print("\n".join(memory(args.seconds)), flush=True)
+        print("\n".join(memory(args.seconds, args.continuation)), flush=True)
     if args.what in ("atlas", "all"):
         print("\n".join(atlas(args.store)))
     identity.cache_clear()

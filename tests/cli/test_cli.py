@@ -343,6 +343,10 @@ def test_python_dash_m_vibrofriction_runs_the_command_line():
       "--out", "o.zarr", "--continuation", "--chunk-size", "100"],
      {"out": "o.zarr", "alpha": "0.1", "beta": "2", "amplitude": "0.5", "vbar": "0.5,",
       "chunk_size": 100, "continuation": True}),
+    (["sweep", "--alpha", "0.1", "--beta", "2", "--amplitude", "0.5", "--vbar", "0.5,",
+      "--out", "o.zarr", "--continuation", "--up-only"],
+     {"out": "o.zarr", "alpha": "0.1", "beta": "2", "amplitude": "0.5", "vbar": "0.5,",
+      "continuation": True, "up_only": True}),
     (["mu", "--alpha=0.5", "--beta", "inf", "--amplitude", "0.5", "--v-inertial", "-1e-3,2"],
      {"alpha": 0.5, "beta": math.inf, "amplitude": 0.5, "v_inertial": [-1e-3, 2.0]}),
 ])

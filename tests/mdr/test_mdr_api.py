@@ -60,8 +60,8 @@ def test_the_flat_punch_is_the_kernels_output_unchanged():
     for name, x in (("alpha", al), ("beta", be), ("amplitude", am), ("v_inertial", V),
                     ("zeta", ze), ("profile_exponent", math.inf)):
         points[:, POINT_COLUMNS.index(name)] = x
-    steady_state_many(points, 0, np.zeros((n, 4)), False, 20000, 64, 1e-10, 1e-7, 20_000_000,
-                      of, oi)
+    steady_state_many(points, 0, np.zeros((n, 4)), np.zeros(n, np.int8), 20000, 64, 1e-10,
+                      1e-7, 20_000_000, of, oi)
     for k in KERNEL_FLOATS:
         np.testing.assert_array_equal(default[k], of[:, column_index(k)], err_msg=k)
     for k in INT_COLUMNS:

@@ -24,10 +24,13 @@ NAMES = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "eta_c", "a_x", "ph
          "static_ratio")
 
 
-def _by_hand(points: dict[str, np.ndarray], initial, settings=None) -> dict[str, np.ndarray]:
+def _by_hand(points: dict[str, np.ndarray], initial, settings=None,
+             restart=()) -> dict[str, np.ndarray]:
     rows = []
     state = None
     for j in range(len(points["alpha"])):
+        if j in restart:
+            state = None
         one = solve_points(**{k: v[j:j + 1] for k, v in points.items()},
                            initial=state if state is not None else initial, settings=settings)
         rows.append(one)
@@ -67,11 +70,24 @@ def test_compiled_chain_is_the_continuation(fixed):
 def test_chain_through_rows_it_cannot_compile():
     """``V = 0``, ``V < 0`` and a transverse point go point by point, the chain intact."""
     points = _row(5)
-    points["v_inertial"][[0, 3]] = [0.0, -0.4]
+    points["v_inertial"][[0, 3, 8]] = [0.0, -0.4, 0.0]
     points["a_y"][6] = 0.3
     chain = solve_chain(point_table(points), "rest", SolverSettings())
     _assert_same(chain, _by_hand(points, "rest"))
-    assert chain["status"][0] == Status.STATIC.code
+    assert chain["status"][0] == chain["status"][8] == Status.STATIC.code
+
+
+def test_chain_restarts_where_told():
+    """Several curves in one table: each restarts from the chain's own start."""
+    a, b = _row(6), _row(6, alpha=0.1, zeta=0.02)
+    points = {k: np.concatenate([a[k], b[k]]) for k in a}
+    restart = np.zeros(24, dtype=bool)
+    restart[[0, 12]] = True
+    chain = solve_chain(point_table(points), "sliding", SolverSettings(), restart)
+    _assert_same(chain, _by_hand(points, "sliding", restart=(0, 12)))
+    # and the second curve is the one solved alone
+    alone = solve_chain(point_table(b), "sliding", SolverSettings())
+    _assert_same({k: v[12:] for k, v in chain.items()}, alone)
 
 
 def test_chain_from_a_state_and_with_settings():

@@ -328,6 +328,25 @@ def _walk_by_hand(alpha: float, beta: float, amplitude: float, V: np.ndarray,
     return up, down[::-1]
 
 
+def test_continuation_up_only_is_the_upward_half() -> None:
+    """``continuation="up"``: one solve a point, the ``up`` branch of the full walk."""
+    grid = dict(alpha=[0.01, 0.3], beta=2.0, amplitude=[0.5, 1.5],
+                vbar=np.linspace(0.05, 1.2, 9), workers=1, progress=False)
+    up = sweep(**grid, continuation="up")
+    both = sweep(**grid, continuation="both")
+    assert up.mu_ratio.dims == ("alpha", "amplitude", "direction", "vbar")
+    assert list(up.direction.values) == ["up"] and up.attrs["continuation"] == "up"
+    assert both.attrs["continuation"] == "both"
+    assert_bitwise(up, both.sel(direction=["up"]).assign_attrs(up.attrs))
+
+
+@pytest.mark.parametrize("bad", ["down", "yes", 1])
+def test_continuation_names_its_values(bad) -> None:
+    with pytest.raises(ValueError, match=r"continuation must be False, True, 'up' or 'both'"):
+        sweep(alpha=0.1, beta=2.0, amplitude=0.5, vbar=[0.1, 0.2], continuation=bad,
+              workers=1, progress=False)
+
+
 @pytest.mark.slow
 def test_continuation_over_v_inertial() -> None:
     V = np.array([0.0, 0.05, 0.1, 0.2, 0.4, 0.8])  # starts at the static limit (no state)

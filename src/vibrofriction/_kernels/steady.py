@@ -50,6 +50,7 @@ from .codes import (
     I_PERIODS,
     I_PHASE,
     I_STATUS,
+    NO_PHASE,
     O_E,
     O_ERR,
     O_F,
@@ -475,24 +476,36 @@ def _chained(out_f, out_i):
     return 2, y, xd, e, ph
 
 
+#: How a point of :func:`steady_state_many` starts: from its own start (``init_kind``,
+#: ``init[i]``), from the final section state of the point before it where that has one (a
+#: continuation; else its own start), or from the explicit state ``init[i]``.
+LINK_OWN, LINK_PREVIOUS, LINK_GIVEN = 0, 1, 2
+
+
 @jit
-def steady_state_many(points, init_kind, init, chain, max_periods, min_periods, tol_state,
+def steady_state_many(points, init_kind, init, link, max_periods, min_periods, tol_state,
                       tol_mean, max_events, out_f, out_i):
     """:func:`steady_state` over a table of points (one compiled loop, no Python calls).
 
     ``points`` has shape ``(n, len(POINT_COLUMNS))`` (columns by the schema's indices,
     ``codes.T_*``); ``init`` has shape ``(n, 4)`` (used when ``init_kind == 2``); row
-    ``i`` of ``out_f`` and ``out_i`` receives point ``i``.
+    ``i`` of ``out_f`` and ``out_i`` receives point ``i``; ``link[i]`` says where point
+    ``i`` starts (:data:`LINK_OWN`, ...; all ``LINK_OWN``: independent points).
 
-    ``chain``: each point after the first starts from the final section state of the one
-    before it (a continuation), where that has one; else from its own start (``init_kind``,
-    ``init[i]``).  Returns the number of points solved: ``n``, or fewer where a final state
-    lacks its elongation (the caller derives it and goes on from there).
+    A point at ``V = 0`` without an in-plane oscillation (the static limit, whose rows the
+    caller fills) is skipped: its phase is ``NO_PHASE``, so a successor linked to it
+    starts from its own start.  Returns the number of points solved: ``n``, or fewer
+    where a final state lacks its elongation (the caller derives it and goes on).
     """
     for i in range(points.shape[0]):
         p = points[i]
+        if p[T_V] == 0.0 and p[T_A_X] == 0.0:
+            out_i[i, I_PHASE] = NO_PHASE
+            continue
         kind, y0, xd0, e0, ph0 = init_kind, init[i, 0], init[i, 1], init[i, 2], int(init[i, 3])
-        if chain and i > 0:
+        if link[i] == LINK_GIVEN:
+            kind = 2
+        elif link[i] == LINK_PREVIOUS and i > 0:
             k, y, xd, e, ph = _chained(out_f[i - 1], out_i[i - 1])
             if k == -2:
                 return i

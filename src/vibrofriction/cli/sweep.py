@@ -45,6 +45,8 @@ OPTIONS: tuple[Opt, ...] = (
         "10000)", kind="int", metavar=INT, range=Range(1.0)),
     Opt("continuation", "walk each velocity curve up then down from the previous final "
         "state", kind="flag", default=False),
+    Opt("up_only", "with --continuation: walk each velocity curve up only (one solve a "
+        "point)", kind="flag", default=False, requires=("continuation",)),
     INITIAL, MAX_PERIODS, TOL_TRUSTED,
     Opt("overwrite", "replace the store, do not resume", kind="flag", default=False),
     Opt("progress", "progress bar on stderr", kind="flag", default=True),
@@ -80,7 +82,8 @@ def run(a: Args) -> None:
     options = dict(store=a["out"], chunk_size=a["chunk_size"], inplane_on=a["inplane_on"],
                    settings=SolverSettings(max_periods=a["max_periods"],
                                            tol_trusted=a["tol_trusted"]),
-                   initial=a["initial"], continuation=a["continuation"],
+                   initial=a["initial"],
+                   continuation="up" if a["up_only"] and a["continuation"] else a["continuation"],
                    progress=a["progress"], overwrite=a["overwrite"])
     start = time.perf_counter()
     ds = _run(grid, options, scheduler=a["scheduler"], workers=a["workers"])

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import theory
 from .._kernels import codes
-from .._kernels.steady import steady_state
+from .._kernels.steady import LINK_GIVEN, LINK_OWN, LINK_PREVIOUS, steady_state
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, METHOD_NAMES, column_index
 from .methods import METHODS, choose, method_of
@@ -294,15 +294,16 @@ def _columns(points: PointTable, out_f: NDArray[np.float64], out_i: NDArray[np.i
     return out
 
 
-def solve_chain(points: PointTable, initial: Initial,
-                settings: SolverSettings) -> dict[str, NDArray]:
+def solve_chain(points: PointTable, initial: Initial, settings: SolverSettings,
+                restart: NDArray[np.bool_] | None = None) -> dict[str, NDArray]:
     """A continuation: the points of a 1-D table solved in turn, each from the one before.
 
     Point ``i > 0`` starts from the final section state of point ``i - 1``
     (:func:`~.results.section_state`), or from ``initial`` where that has none (a static
-    point, a failed one): the columns of :func:`solve_table` of each point with that start.
-    Where every point is the event-driven solver's with ``V > 0`` the chain runs in one
-    compiled loop; else point by point.
+    point, a failed one) or where ``restart[i]`` (a new curve): the columns of
+    :func:`solve_table` of each point with that start.  The event-driven solver's points
+    with ``V > 0`` (or static: ``V = 0`` without an in-plane oscillation) run in one
+    compiled loop; the others are solved one by one in between.
 
     Parameters
     ----------
@@ -312,6 +313,9 @@ def solve_chain(points: PointTable, initial: Initial,
         The start of the first point (and of any point whose predecessor has no state).
     settings : SolverSettings
         Accuracy and effort bounds.
+    restart : ndarray of bool, optional
+        The points that start from ``initial`` whatever precedes them (several curves in
+        one table).
 
     Returns
     -------
@@ -319,28 +323,63 @@ def solve_chain(points: PointTable, initial: Initial,
         The named output columns, as in :func:`solve_points`.
     """
     n = len(points)
-    start = 0
-    cols: dict[str, NDArray] | None = None
-    if n and np.all(choose(points["profile_exponent"], points["a_y"], points["rs_a"]) == 0) \
-            and np.all(points["v_inertial"] > 0.0):
-        kind, init = initial_rows(initial, n, points.system)
-        for start_kind in {kind, 2}:  # the first point's start, and its successors'
-            EVENT.capabilities.check(points, start_kind, settings)
-        out_f, out_i, start = EVENT.solve_chain(points, kind, init, settings)
-        cols = _columns(points, out_f, out_i, sliding_mu_ratio(points), settings)
-        if start == n:
-            return cols
-    state: Initial | None = None if cols is None or start == 0 else _final_state(cols, start - 1)
-    for j in range(start, n):  # point by point from ``start`` on
-        one = solve_table(points.take(np.array([j])), state if state is not None else initial,
-                          settings)
-        if cols is None:
-            cols = {k: np.empty(n, dtype=v.dtype) for k, v in one.items()}
-        for k, v in one.items():
-            cols[k][j] = v[0]
-        state = _final_state(one, 0)
-    assert cols is not None
+    restart = np.zeros(n, dtype=bool) if restart is None else np.asarray(restart, dtype=bool)
+    V = points["v_inertial"]
+    fast = (choose(points["profile_exponent"], points["a_y"], points["rs_a"]) == 0) \
+        & ((V > 0.0) | ((V == 0.0) & (points["a_x"] == 0.0)))
+    cols = {k: np.empty(n, dtype=np.float64) for k in FLOAT_COLUMNS} \
+        | {k: np.empty(n, dtype=np.int64) for k in INT_COLUMNS} \
+        | {"trusted": np.empty(n, dtype=bool)}
+    state: SectionState | None = None  # the last point's final state
+    j = 0
+    one_by_one = False  # the next point's start needs its system (an elongation to derive)
+    while j < n:
+        if restart[j]:
+            state = None
+        if fast[j] and not one_by_one:
+            stop = j + 1
+            while stop < n and fast[stop]:
+                stop += 1
+            part, done = _chain_run(points.take(np.arange(j, stop)), initial, state,
+                                    restart[j:stop], settings)
+            one_by_one = done < stop - j
+            if done == 0:
+                continue
+        else:
+            part, done = solve_table(points.take(np.array([j])),
+                                     state if state is not None else initial, settings), 1
+            one_by_one = False
+        for k, v in part.items():
+            cols[k][j:j + done] = v[:done]
+        state = _final_state(part, done - 1)
+        j += done
     return cols
+
+
+def _chain_run(run: PointTable, initial: Initial, state: SectionState | None,
+               restart: NDArray[np.bool_], settings: SolverSettings
+               ) -> tuple[dict[str, NDArray], int]:
+    """:func:`solve_chain` of ``run`` (the event solver's points) in one compiled loop.
+
+    The first point starts from ``state`` (the final state before the run), or where
+    there is none from ``initial``, as does any point whose predecessor has no state or
+    that restarts.  Returns the columns and how many points were solved (fewer than all
+    where a final state lacks its elongation: the caller derives it from the next
+    point's system).
+    """
+    kind, init = initial_rows(initial, len(run), run.system)
+    link = np.where(restart, LINK_OWN, LINK_PREVIOUS).astype(np.int8)
+    if state is not None and not math.isfinite(state.e):
+        return {}, 0  # its elongation from the first point's system: one by one
+    if state is not None:
+        init[0] = (state.y, state.x_dot, state.e, PHASE_CODE[state.phase])
+        link[0] = LINK_GIVEN
+    else:
+        link[0] = LINK_OWN
+    for start_kind in {kind, 2}:  # the own start, and a predecessor's state
+        EVENT.capabilities.check(run, start_kind, settings)
+    out_f, out_i, done = EVENT.solve_chain(run, kind, init, link, settings)
+    return _columns(run, out_f, out_i, sliding_mu_ratio(run), settings), done
 
 
 def _final_state(cols: dict[str, NDArray], j: int) -> SectionState | None:

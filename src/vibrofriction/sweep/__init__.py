@@ -86,7 +86,7 @@ def sweep(
     chunk_size: int | None = None,
     settings: SolverSettings | None = None,
     initial: str = "sliding",
-    continuation: bool = False,
+    continuation: bool | str = False,
     progress: bool = True,
     overwrite: bool = False,
     **physical: ArrayLike,
@@ -187,11 +187,14 @@ def sweep(
     initial : {"sliding", "rest"}, optional
         The start of every point (docs/model.md), or with continuation of the first
         point of each upward sweep.
-    continuation : bool, optional
-        Walk each velocity curve up and then down, every point starting from the final
-        state of the previous one (hysteresis, coexisting steady states); adds a
-        ``direction`` dimension (``up``, ``down``). The velocity axis must be swept and
-        increasing.
+    continuation : bool or {"up", "both"}, optional
+        Walk each velocity curve up and then down (True or ``"both"``), or only up
+        (``"up"``), every point starting from the final state of the previous one
+        (hysteresis, coexisting steady states: the branch a slow sweep of the speed
+        follows); adds a ``direction`` dimension (``up``, ``down``, or ``up`` alone).
+        The velocity axis must be swept and increasing. Each point starts near its
+        orbit, so a continuation costs less a solve than independent starts
+        (docs/sweeps.md).
     progress : bool, optional
         Show a progress bar (points done, rate, time left) on stderr.
     overwrite : bool, optional

@@ -180,24 +180,27 @@ def _physical_rows(plan: Plan, block: int, vel: np.ndarray):
 
 
 def _continuation(point, V, plan: Plan) -> dict[str, np.ndarray]:
-    """Solve each row up then down in velocity; shape ``(*rows, 2, n_velocity)``.
+    """Solve each row up (then down) in velocity; shape ``(*rows, directions, n_velocity)``.
 
-    A row is validated once (:func:`~vibrofriction.solver.points.point_table`) and its
-    ``2 n_velocity`` solves run as one chain (:func:`~vibrofriction.solver.engine.solve_chain`):
-    each from the final state of the one before, the first from ``plan.initial``.
+    The block is validated once (:func:`~vibrofriction.solver.points.point_table`) and
+    its rows' solves run as one chain (:func:`~vibrofriction.solver.engine.solve_chain`):
+    each from the final state of the one before, each row's first from ``plan.initial``.
     """
     rshape, nv = V.shape[:-1], V.shape[-1]
-    order = np.concatenate([np.arange(nv), np.arange(nv - 1, -1, -1)])
-    out: dict[str, np.ndarray] | None = None
-    for i in np.ndindex(rshape):
-        table = point_table({**{n: x[i] for n, x in point.items()}, "v_inertial": V[i],
-                             "inplane_on": plan.inplane_on, "rs_law": plan.rs_law})
-        cols = solve_chain(table.take(order), plan.initial, plan.settings)
-        if out is None:
-            out = {k: np.empty((*rshape, 2, nv), dtype=v.dtype) for k, v in cols.items()}
-        for k, v in cols.items():
-            out[k][i] = np.stack([v[:nv], v[nv:][::-1]])
-    assert out is not None
+    nd = len(plan.directions)
+    order = np.concatenate([np.arange(nv), np.arange(nv - 1, -1, -1)][:nd])
+    table = point_table({**{n: np.broadcast_to(x[..., None], V.shape).ravel()
+                            for n, x in point.items()}, "v_inertial": V.ravel(),
+                         "inplane_on": plan.inplane_on, "rs_law": plan.rs_law})
+    rows = int(np.prod(rshape))
+    restart = np.zeros((rows, nd * nv), dtype=bool)
+    restart[:, 0] = True  # each row from plan.initial
+    cols = solve_chain(table.take((np.arange(rows)[:, None] * nv + order).ravel()),
+                       plan.initial, plan.settings, restart.ravel())
+    out: dict[str, np.ndarray] = {}
+    for k, v in cols.items():
+        w = v.reshape(*rshape, nd * nv)
+        out[k] = np.stack([w[..., :nv], w[..., nv:][..., ::-1]][:nd], axis=-2)
     return out
 
 
@@ -235,7 +238,7 @@ def compute_block(plan: Plan, block: int) -> tuple[int, dict[str, np.ndarray]]:
         point, rows, V = _dimensionless_rows(plan, block, vel)
     if plan.continuation:
         cols = _continuation(point, V, plan)
-        shape = V.shape[:-1] + (2, V.shape[-1])
+        shape = V.shape[:-1] + (len(plan.directions), V.shape[-1])
         V = np.broadcast_to(V[..., None, :], shape)
     else:
         cols = solve_points(**{n: x[..., None] for n, x in point.items()}, v_inertial=V,

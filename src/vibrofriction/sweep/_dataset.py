@@ -9,7 +9,7 @@ import numpy as np
 import xarray as xr
 
 from ..capabilities import CAPABILITIES
-from ._grid import DIMENSIONLESS, DIRECTIONS, Plan
+from ._grid import DIMENSIONLESS, Plan
 from ._variables import COORD_ATTRS, point_variables, row_variables
 
 __all__ = ["template"]
@@ -35,7 +35,7 @@ def _attrs(plan: Plan) -> dict:
         "initial": plan.initial,
         "inplane_on": plan.inplane_on,
         "rs_law": plan.rs_law,
-        "continuation": int(plan.continuation),
+        "continuation": plan.continuation or "none",
         "solver_settings": json.dumps(s, sort_keys=True),
         # what each solver ran with: the settings resolved with its own defaults
         "solver_methods": json.dumps({name: plan.settings.resolved(c.settings)
@@ -56,7 +56,7 @@ def template(plan: Plan, values: dict[str, np.ndarray] | None) -> xr.Dataset:
         else:
             coords[a.name] = ((), float(a.values), attrs)
     if plan.continuation:
-        coords["direction"] = ("direction", np.array(DIRECTIONS, dtype=object),
+        coords["direction"] = ("direction", np.array(plan.directions, dtype=object),
                                COORD_ATTRS["direction"])
 
     def data(var, shape, chunks):

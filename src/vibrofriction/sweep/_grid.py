@@ -5,7 +5,8 @@ list); parameters given as scalars are held fixed.  The velocity axis (``vbar``,
 ``v_inertial`` or, for a :class:`~vibrofriction.params.Physical` system, ``v0``)
 always comes last, so that a block holds whole velocity curves whenever it can
 (and always does with continuation).  With continuation a ``direction``
-dimension (``up``, ``down``) sits just before the velocity.
+dimension (``up``, ``down``; ``up`` alone for the upward sweep) sits just before the
+velocity.
 
 A :class:`Plan` is everything that defines the result (grid, solver settings,
 initial state, continuation) plus the block shape; :meth:`Plan.signature` is
@@ -62,6 +63,8 @@ FRICTION_SI = tuple(f"friction_{n}" for n in _SI_LAW)
 _LIMITED = tuple(dict.fromkeys(lim.parameter for c in CAPABILITIES.values()
                                for lim in c.limits if lim.whole))
 DIRECTIONS = ("up", "down")
+#: The continuations a sweep can walk, by name: the directions of each velocity curve.
+CONTINUATIONS = {"": (), "up": ("up",), "both": DIRECTIONS}
 DEFAULT_CHUNK_SIZE = 1000
 #: The block size when none is given: about 1/AUTO_BLOCKS of the grid, between
 #: DEFAULT_CHUNK_SIZE and AUTO_MAX_CHUNK points.  Writing a block costs the sweep process
@@ -99,8 +102,9 @@ class Plan:
         The solver's settings.
     initial : str
         ``"sliding"`` or ``"rest"``.
-    continuation : bool
-        Whether each velocity curve is walked up and down.
+    continuation : str
+        How each velocity curve is walked (:data:`CONTINUATIONS`): ``""`` not at all
+        (independent starts), ``"up"`` up, ``"both"`` up and then down.
     chunks : tuple of int
         The block shape over :attr:`dims`.
     version : str
@@ -129,7 +133,7 @@ class Plan:
     velocity: Axis
     settings: SolverSettings
     initial: str
-    continuation: bool
+    continuation: str
     chunks: tuple[int, ...]  # block shape over `dims`
     version: str
     fingerprint: str = ""  # hash of the solver's source (see _compute.identity)
@@ -138,6 +142,11 @@ class Plan:
     friction: RateAndState | None = None  # a physical sweep's rate-and-state law (SI)
 
     # ---- shape
+    @property
+    def directions(self) -> tuple[str, ...]:
+        """The directions each velocity curve is walked in (none: independent starts)."""
+        return CONTINUATIONS[self.continuation]
+
     @property
     def row_dims(self) -> tuple[str, ...]:
         return tuple(a.name for a in self.params if a.swept)
@@ -154,7 +163,7 @@ class Plan:
 
     @property
     def shape(self) -> tuple[int, ...]:
-        extra = ((2,) if self.continuation else ()) + (
+        extra = ((len(self.directions),) if self.continuation else ()) + (
             (len(self.velocity),) if self.velocity.swept else ())
         return self.row_shape + extra
 
@@ -277,7 +286,7 @@ def make_plan(
     physical: dict[str, ArrayLike] | None = None,
     settings: SolverSettings | None = None,
     initial: str = "sliding",
-    continuation: bool = False,
+    continuation: bool | str = False,
     chunk_size: int | None = None,
     version: str = "",
     fingerprint: str = "",
@@ -352,6 +361,7 @@ def make_plan(
                       profile_exponent=profile_exponent, **law)
         params, velocity = _dimensionless_axes(system, values, vbar, v_inertial,
                                                dict(physical or {}), v0)
+    continuation = continuation_name(continuation)
     if continuation:
         _check_continuation(velocity)
         curved = [a for a in params if a.name == "profile_exponent"
@@ -366,10 +376,10 @@ def make_plan(
                              "(rs_a > 0 in the grid): the section state it passes on does "
                              "not carry the friction's state theta")
     plan = Plan(kind=kind, params=params, velocity=velocity, settings=settings,
-                initial=initial, continuation=bool(continuation), chunks=(),
+                initial=initial, continuation=continuation, chunks=(),
                 version=version, fingerprint=fingerprint, inplane_on=on, rs_law=state_law,
                 friction=friction)
-    n_tail = int(continuation) + int(velocity.swept)
+    n_tail = int(bool(continuation)) + int(velocity.swept)
     if chunk_size is None:
         chunk_size = auto_chunk_size(int(np.prod(plan.shape)))
     return plan.with_chunks(_chunks(plan.shape, n_tail, int(chunk_size), bool(continuation)))
@@ -653,6 +663,15 @@ def _check_vbar_exists(al: Axis, be: Axis, am: Axis, ze: Axis, et: Axis) -> None
         raise ValueError("vbar does not exist where alpha == 1 and zeta == 0 (case IV: "
                          "v0* is infinite), and both are in the grid: sweep v_inertial "
                          "instead")
+
+
+def continuation_name(continuation: bool | str) -> str:
+    """The key of :data:`CONTINUATIONS` that ``continuation`` names (True: ``"both"``)."""
+    if isinstance(continuation, bool | np.bool_):
+        return "both" if continuation else ""
+    if continuation in CONTINUATIONS and continuation:
+        return continuation
+    raise ValueError(f"continuation must be False, True, 'up' or 'both', got {continuation!r}")
 
 
 def _check_continuation(velocity: Axis) -> None:

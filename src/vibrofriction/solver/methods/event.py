@@ -14,7 +14,7 @@ from numpy.typing import NDArray
 
 from ... import theory
 from ..._kernels import codes
-from ..._kernels.steady import steady_state_many
+from ..._kernels.steady import LINK_OWN, steady_state_many
 from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable
@@ -52,11 +52,12 @@ class EventMethod:
                            (at_zero, 1 if init_kind == 0 else init_kind)):
             idx = np.flatnonzero(rows)
             if idx.size == len(points):  # every point: the rows written in place
-                steady_state_many(points.values, kind, init, False, *args, out_f, out_i)
+                steady_state_many(points.values, kind, init, _own(len(points)), *args,
+                                  out_f, out_i)
             elif idx.size:
                 of, oi = new_outputs(idx.size)
                 steady_state_many(points.take(idx).values, kind,
-                                  np.ascontiguousarray(init[idx]), False, *args, of, oi)
+                                  np.ascontiguousarray(init[idx]), _own(idx.size), *args, of, oi)
                 out_f[idx], out_i[idx] = of, oi
         am = points["amplitude"]
         contact_columns(out_f, am, slice(None))
@@ -66,24 +67,35 @@ class EventMethod:
         return out_f, out_i
 
     def solve_chain(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
-                    settings: SolverSettings
+                    link: NDArray[np.int8], settings: SolverSettings
                     ) -> tuple[NDArray[np.float64], NDArray[np.int64], int]:
-        """:meth:`solve` of points in turn, each from its predecessor's final state.
+        """:meth:`solve` of points in turn, each started as ``link`` says.
 
-        A continuation in one compiled loop: point ``i > 0`` starts from the final section
-        state of point ``i - 1`` where that has one, else from ``init_kind`` and
-        ``init[i]``.  Every ``V`` must be positive.  Returns ``(out_f, out_i, m)``: the
-        first ``m`` rows are solved (``m < n`` where a final state lacks its elongation,
-        which the caller derives from its system to go on).
+        A continuation in one compiled loop (``link[i]``: ``LINK_OWN`` from ``init_kind``
+        and ``init[i]``, ``LINK_PREVIOUS`` from the final section state of point ``i - 1``
+        where that has one, ``LINK_GIVEN`` from the state ``init[i]``).  Every point has
+        ``V > 0``, or ``V = 0`` without an in-plane oscillation (the static limit).
+        Returns ``(out_f, out_i, m)``: the first ``m`` rows are solved (``m < n`` where a
+        final state lacks its elongation, which the caller derives to go on).
         """
-        if not np.all(points["v_inertial"] > 0.0):
-            raise ValueError("a chain of points needs every v_inertial > 0")
+        V = points["v_inertial"]
+        static = V == 0.0
+        if not np.all((V > 0.0) | (static & (points["a_x"] == 0.0))):
+            raise ValueError("a chain of points needs every v_inertial > 0, or 0 without "
+                             "an in-plane oscillation")
         out_f, out_i = new_outputs(len(points))
-        m = steady_state_many(points.values, init_kind, np.ascontiguousarray(init), True,
+        m = steady_state_many(points.values, init_kind, np.ascontiguousarray(init), link,
                               *event_arguments(settings), out_f, out_i)
-        contact_columns(out_f, points["amplitude"], slice(None))
+        am = points["amplitude"]
+        contact_columns(out_f, am, slice(None))
+        _static_limit(am, out_f, out_i, static)
         out_i[:, codes.I_METHOD] = _CODE
         return out_f, out_i, int(m)
+
+
+def _own(n: int) -> NDArray[np.int8]:
+    """``link`` of ``n`` independent points: each from its own start."""
+    return np.full(n, LINK_OWN, dtype=np.int8)
 
 
 def event_arguments(settings: SolverSettings) -> tuple[int, int, float, float, int]:
