@@ -209,7 +209,7 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 @jit
 def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f,
-         certify=False, ys=0.0, yds=0.0, es=0.0, neutral_ok=True):
+         certify=False, ys=0.0, yds=0.0, es=0.0, neutral_ok=True, warm=False):
     """Advance period by period from ``z`` until an orbit or an average answers.
 
     Called where the sliding orbit's contact point stops, or there is no sliding orbit
@@ -220,7 +220,9 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     (:func:`_static_run`): ``certify`` then tries its certificate at every section in
     forward slip, and a proof answers ``SLIDING``.  ``neutral_ok`` False: a neutral orbit
     found by Newton is no answer (there the motion near a neutral sliding orbit can go on
-    sticking now and then, its mean not the orbit's); the motion is followed on.
+    sticking now and then, its mean not the orbit's); the motion is followed on.  ``warm``:
+    ``z`` is (near) an orbit of one period, a neighbour's in a continuation, and Newton is
+    tried from it at once (its first map is the motion's first period), not after a period.
 
     Newton's method is not tried at ``V = 0`` (a held body's orbits form a continuum).
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
@@ -245,6 +247,16 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     nchk, next_chk = 0, min_periods
     next_newton = FIRST_NEWTON if M[M_V] != 0.0 else -1
     k = 0
+    if warm and next_newton > 0:
+        # the start is a neighbour's orbit of one period: Newton's first map is the motion's
+        # own first period, so it is tried at once; an orbit that is not found (or neutral)
+        # leaves the schedule as it was
+        pn = _newton_jump(z, dprev, 0, M, tol_state, max_events, count, win, out_f)
+        if pn > 0 and out_f[O_MULT] < NEUTRAL:
+            return ST_PERIODIC, pn, 0
+        if pn < 0:
+            return ST_FAILED, 0, 0
+        out_f[O_MU] = out_f[O_ERR] = out_f[O_MULT] = out_f[O_SETTLE] = math.nan
     while True:
         ok, w = advance_counted(z, acc, count, M, max_events)
         out_f[O_WORK] += w
@@ -421,7 +433,7 @@ def _finish(status, period, k, z, count, win, M, beta, eta, offset, out_f, out_i
 @jit
 def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, init_kind, y0,
                  xd0, e0, ph0, max_periods, min_periods, tol_state, tol_mean, max_events,
-                 out_f, out_i):
+                 out_f, out_i, warm=False):
     """Long-time average from a given start, written into the rows ``out_f``, ``out_i``.
 
     ``a_x``, ``phase_x``, ``on_substrate``: the longitudinal in-plane oscillation
@@ -431,7 +443,8 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, i
     (laboratory frame, as the final state written). The columns are ``solver.FLOAT_COLUMNS``
     and ``solver.INT_COLUMNS``; the fractions are of time in the averaging window and the
     state is the final one on the section. A failed or not converged run has no value
-    (``nan``) and no error estimate (``inf``).
+    (``nan``) and no error estimate (``inf``).  ``warm``: the explicit start is a
+    neighbour's orbit of one period (a continuation; :func:`_run`).
     """
     M = make_model(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr)
     offset = frame_offset(a_x, phase_x, on_substrate)
@@ -454,7 +467,7 @@ def steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, on_substrate, sr, i
             status, period, k = _orbit_proof(z, M, ys, yds, es, max_events, count, win, out_f)
         else:
             status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean,
-                                     max_events, count, win, out_f)
+                                     max_events, count, win, out_f, warm=warm)
     # eta_c below ETA_ELASTIC was solved as elastic; the a = 0 proof holds for any eta_c
     _finish(status, period, k, z, count, win, M, beta, 0.0 if unmodulated else eta, offset,
             out_f, out_i)
@@ -476,6 +489,36 @@ def _chained(out_f, out_i):
     return 2, y, xd, e, ph
 
 
+@jit
+def _one_period(row_i):
+    """The row's result is an orbit of one period (its final state on it)."""
+    return row_i[I_STATUS] == ST_PERIODIC and row_i[I_PERIOD] == 1
+
+
+@jit
+def _along_v(points, i):
+    """Points ``i - 2``, ``i - 1`` and ``i`` differ in ``V`` alone, ``V`` at ``i - 2`` and
+    ``i - 1`` distinct: a velocity curve.
+    """
+    if points[i - 1, T_V] == points[i - 2, T_V]:
+        return False
+    for j in range(points.shape[1]):
+        if j != T_V and not (points[i, j] == points[i - 1, j] == points[i - 2, j]):
+            return False
+    return True
+
+
+@jit
+def _secant(points, out_f, i):
+    """The orbit's state at point ``i`` extrapolated along ``V`` from those of ``i - 2`` and
+    ``i - 1`` (a predictor: Newton corrects it).
+    """
+    s = (points[i, T_V] - points[i - 1, T_V]) / (points[i - 1, T_V] - points[i - 2, T_V])
+    a, b = out_f[i - 2], out_f[i - 1]
+    return (b[O_Y] + s * (b[O_Y] - a[O_Y]), b[O_XD] + s * (b[O_XD] - a[O_XD]),
+            b[O_E] + s * (b[O_E] - a[O_E]))
+
+
 #: How a point of :func:`steady_state_many` starts: from its own start (``init_kind``,
 #: ``init[i]``), from the final section state of the point before it where that has one (a
 #: continuation; else its own start), or from the explicit state ``init[i]``.
@@ -492,10 +535,14 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
     ``i`` of ``out_f`` and ``out_i`` receives point ``i``; ``link[i]`` says where point
     ``i`` starts (:data:`LINK_OWN`, ...; all ``LINK_OWN``: independent points).
 
-    A point at ``V = 0`` without an in-plane oscillation (the static limit, whose rows the
-    caller fills) is skipped: its phase is ``NO_PHASE``, so a successor linked to it
-    starts from its own start.  Returns the number of points solved: ``n``, or fewer
-    where a final state lacks its elongation (the caller derives it and goes on).
+    A point linked to an orbit of one period (Coulomb friction) starts Newton's method from
+    it at once; where the two points before it are both such orbits on one velocity curve,
+    from the orbit extrapolated along ``V`` (:func:`_secant`): the continuation's
+    predictor, which Newton corrects.  A point at ``V = 0`` without an in-plane
+    oscillation (the static limit, whose rows the caller fills) is skipped: its phase is
+    ``NO_PHASE``, so a successor linked to it starts from its own start.  Returns the
+    number of points solved: ``n``, or fewer where a final state lacks its elongation (the
+    caller derives it and goes on).
     """
     for i in range(points.shape[0]):
         p = points[i]
@@ -503,6 +550,7 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
             out_i[i, I_PHASE] = NO_PHASE
             continue
         kind, y0, xd0, e0, ph0 = init_kind, init[i, 0], init[i, 1], init[i, 2], int(init[i, 3])
+        warm = False
         if link[i] == LINK_GIVEN:
             kind = 2
         elif link[i] == LINK_PREVIOUS and i > 0:
@@ -511,8 +559,15 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
                 return i
             if k == 2:
                 kind, y0, xd0, e0, ph0 = k, y, xd, e, ph
+                # Coulomb friction: Newton from a neighbour's orbit at once (a static
+                # coefficient above the kinetic one starts from the state as it is: sliding
+                # and stick-slip coexist there, and its proof of sliding is the motion's own)
+                warm = p[T_STATIC_RATIO] == 1.0 and _one_period(out_i[i - 1])
+                if warm and i > 1 and link[i - 1] == LINK_PREVIOUS and _one_period(
+                        out_i[i - 2]) and out_i[i - 2, I_PHASE] == ph and _along_v(points, i):
+                    y0, xd0, e0 = _secant(points, out_f, i)
         steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
                      p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_STATIC_RATIO],
                      kind, y0, xd0, e0, ph0, max_periods, min_periods,
-                     tol_state, tol_mean, max_events, out_f[i], out_i[i])
+                     tol_state, tol_mean, max_events, out_f[i], out_i[i], warm)
     return points.shape[0]
