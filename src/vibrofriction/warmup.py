@@ -30,7 +30,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["PARTS", "WarmUp", "build_shipped", "refresh_shipped", "shipped_is_fresh", "warm_up"]
+__all__ = ["PARTS", "WarmUp", "build_shipped", "in_cache", "refresh_shipped", "shipped_is_fresh",
+           "warm_up"]
 
 
 def _flat() -> None:
@@ -88,6 +89,20 @@ _MARKS = {"flat": ("steady", "steady_state_many"), "plane": ("plane", "plane_ste
           "curved": ("mdr", "steady_row"), "rate_state": ("rate_state", "rs_steady_state_many"),
           "histories": ("integrate", "run_periods"),
           "gradients": ("sensitivity", "orbit_sensitivity_many")}
+
+
+def in_cache(parts: Sequence[str] | None = None) -> bool:
+    """Whether a disk cache holds every part of ``parts`` (default all).
+
+    A process that needs them then loads them: nothing is compiled.
+
+    Examples
+    --------
+    >>> from vibrofriction.warmup import in_cache
+    >>> in_cache(["flat"]) in (True, False)
+    True
+    """
+    return all(_cached(name) for name in _checked(parts))
 
 
 def _cached(name: str) -> bool:

@@ -116,11 +116,11 @@ def test_chain_from_a_state_and_with_settings():
     _assert_same_orbits(chain, _by_hand(points, start, settings))
 
 
-@pytest.mark.parametrize(("fixed", "predicted_helps"), [
+@pytest.mark.parametrize(("fixed", "smooth"), [
     ({}, True),  # a smooth branch: the predicted start saves Newton's maps
-    ({"alpha": 0.05, "beta": 20.0}, False),  # long stick phases: no better than the state
+    ({"alpha": 0.05, "beta": 20.0}, False),  # long stick phases
 ])
-def test_chain_needs_fewer_periods_than_fresh_starts(fixed, predicted_helps):
+def test_chain_needs_fewer_periods_than_fresh_starts(fixed, smooth):
     """What the chain is for: each point starts near its orbit, and Newton at once."""
     points = _row(20, **fixed)
     chain = solve_chain(point_table(points), "sliding", SolverSettings())
@@ -130,7 +130,7 @@ def test_chain_needs_fewer_periods_than_fresh_starts(fixed, predicted_helps):
     assert periodic.sum() > 15
     work = chain["work"][periodic]
     assert np.median(work) < 0.6 * np.median(fresh["work"][periodic])
-    # against the walk that integrates a period from each neighbour's state first
-    assert (work.sum() < 0.9 * hand["work"][periodic].sum()) == predicted_helps
+    if smooth:  # and than the walk that integrates a period from each state first
+        assert work.sum() < 0.9 * hand["work"][periodic].sum()
     same = np.abs(chain["mu_ratio"] - fresh["mu_ratio"]) <= chain["error"] + fresh["error"]
     assert same[periodic].all()  # one attractor at these points

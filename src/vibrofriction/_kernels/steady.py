@@ -495,28 +495,50 @@ def _one_period(row_i):
     return row_i[I_STATUS] == ST_PERIODIC and row_i[I_PERIOD] == 1
 
 
-@jit
-def _along_v(points, i):
-    """Points ``i - 2``, ``i - 1`` and ``i`` differ in ``V`` alone, ``V`` at ``i - 2`` and
-    ``i - 1`` distinct: a velocity curve.
-    """
-    if points[i - 1, T_V] == points[i - 2, T_V]:
-        return False
-    for j in range(points.shape[1]):
-        if j != T_V and not (points[i, j] == points[i - 1, j] == points[i - 2, j]):
-            return False
-    return True
+PREDICTOR_POINTS = 3
+"""The most orbits before a point of a continuation its start is extrapolated from."""
 
 
 @jit
-def _secant(points, out_f, i):
-    """The orbit's state at point ``i`` extrapolated along ``V`` from those of ``i - 2`` and
-    ``i - 1`` (a predictor: Newton corrects it).
+def _history(points, out_i, link, i, ph):
+    """How many points before ``i`` (up to :data:`PREDICTOR_POINTS`) are orbits of one period
+    with the section phase ``ph``, linked one to the next, on one velocity curve with
+    ``i`` (the other parameters equal, ``V`` distinct).
     """
-    s = (points[i, T_V] - points[i - 1, T_V]) / (points[i - 1, T_V] - points[i - 2, T_V])
-    a, b = out_f[i - 2], out_f[i - 1]
-    return (b[O_Y] + s * (b[O_Y] - a[O_Y]), b[O_XD] + s * (b[O_XD] - a[O_XD]),
-            b[O_E] + s * (b[O_E] - a[O_E]))
+    m = 0
+    while m < PREDICTOR_POINTS and i - m - 1 >= 0:
+        j = i - m - 1
+        if not (_one_period(out_i[j]) and out_i[j, I_PHASE] == ph):
+            break
+        for q in range(points.shape[1]):
+            if q != T_V and points[j, q] != points[i, q]:
+                return m
+        for q in range(j + 1, i):
+            if points[q, T_V] == points[j, T_V]:
+                return m
+        m += 1
+        if link[j] != LINK_PREVIOUS:
+            break
+    return m
+
+
+@jit
+def _predicted(points, out_f, i, m):
+    """The orbit's state at point ``i`` extrapolated along ``V`` through the orbits of the
+    ``m`` points before it (the polynomial of degree ``m - 1``; a predictor that Newton
+    corrects).
+    """
+    y = xd = e = 0.0
+    v = points[i, T_V]
+    for a in range(i - m, i):
+        w = 1.0  # Lagrange's weight of point a at v
+        for b in range(i - m, i):
+            if b != a:
+                w *= (v - points[b, T_V]) / (points[a, T_V] - points[b, T_V])
+        y += w * out_f[a, O_Y]
+        xd += w * out_f[a, O_XD]
+        e += w * out_f[a, O_E]
+    return y, xd, e
 
 
 #: How a point of :func:`steady_state_many` starts: from its own start (``init_kind``,
@@ -537,7 +559,7 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
 
     A point linked to an orbit of one period (Coulomb friction) starts Newton's method from
     it at once; where the two points before it are both such orbits on one velocity curve,
-    from the orbit extrapolated along ``V`` (:func:`_secant`): the continuation's
+    from the orbit extrapolated along ``V`` (:func:`_predicted`): the continuation's
     predictor, which Newton corrects.  A point at ``V = 0`` without an in-plane
     oscillation (the static limit, whose rows the caller fills) is skipped: its phase is
     ``NO_PHASE``, so a successor linked to it starts from its own start.  Returns the
@@ -563,9 +585,9 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
                 # coefficient above the kinetic one starts from the state as it is: sliding
                 # and stick-slip coexist there, and its proof of sliding is the motion's own)
                 warm = p[T_STATIC_RATIO] == 1.0 and _one_period(out_i[i - 1])
-                if warm and i > 1 and link[i - 1] == LINK_PREVIOUS and _one_period(
-                        out_i[i - 2]) and out_i[i - 2, I_PHASE] == ph and _along_v(points, i):
-                    y0, xd0, e0 = _secant(points, out_f, i)
+                m = _history(points, out_i, link, i, ph) if warm else 0
+                if m > 1:
+                    y0, xd0, e0 = _predicted(points, out_f, i, m)
         steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
                      p[T_A_X], p[T_PHASE_X], p[T_INPLANE_ON] == 0.0, p[T_STATIC_RATIO],
                      kind, y0, xd0, e0, ph0, max_periods, min_periods,

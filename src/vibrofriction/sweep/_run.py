@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..parallel import available_cores, check_workers, run_tasks
+from ..warmup import in_cache
 from ._compute import compute_block, identity, warm_up
 from ._grid import Plan
 
@@ -110,7 +111,8 @@ def run_blocks(plan: Plan, todo: list[int], write: Deliver, *, client: Any = Non
             _dask(plan, todo, client, deliver)
         else:
             n = min(workers or available_cores(), len(todo))
-            warm_up()  # compile (or load) once here, so that workers load from disk cache
+            if n <= 1 or not in_cache(["flat"]):
+                warm_up()  # compile once here (or load to solve here): workers load them
             if n <= 1:
                 _serial(plan, todo, deliver)
             else:
