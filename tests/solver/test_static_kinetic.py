@@ -66,14 +66,33 @@ def test_static_ratio_one_is_the_coulomb_solver_bit_for_bit(i):
     # the stored point is unchanged by a fresh draw (the maker's list is the test's)
     assert MAKER.points()[i] == p
     got = _without_new(MAKER.run_point(p))
-    assert got == want
+    _assert_base(got, want)
     # and 1.0 given explicitly is the default
     kw = {k: v for k, v in p.items() if k not in ("initial", "inplane_on")}
     cols = solve_points(**kw, static_ratio=1.0, inplane_on=p["inplane_on"],
                         initial=p["initial"])
-    assert {k: float(cols[k]).hex() for k in FLOAT_COLUMNS if k not in NEW_COLUMNS} == \
-        {k: want["batch"][k] for k in FLOAT_COLUMNS if k not in NEW_COLUMNS}
+    _assert_base({k: float(cols[k]).hex() for k in FLOAT_COLUMNS if k not in NEW_COLUMNS},
+                 {k: want["batch"][k] for k in FLOAT_COLUMNS if k not in NEW_COLUMNS})
     assert {k: int(cols[k]) for k in INT_COLUMNS} == {k: want["batch"][k] for k in INT_COLUMNS}
+
+
+#: Columns computed since the baseline in another way, equal to round-off: the Floquet
+#: multiplier in closed form (LAPACK's QR iterations before), and the settling time
+#: estimated from it.
+ROUND_OFF = {"multiplier": 1e-12, "settling_periods": 1e-12}
+
+
+def _assert_base(got, want, key=""):
+    """``got == want`` (nested dicts of hexadecimal floats, integers and names), the
+    columns of :data:`ROUND_OFF` to their relative tolerance."""
+    if isinstance(want, dict):
+        assert isinstance(got, dict) and got.keys() == want.keys(), key
+        for k in want:
+            _assert_base(got[k], want[k], k)
+    elif key in ROUND_OFF and isinstance(want, str) and want != got:
+        assert float.fromhex(got) == pytest.approx(float.fromhex(want), rel=ROUND_OFF[key]), key
+    else:
+        assert got == want, key
 
 
 @pytest.mark.parametrize("i", range(len(BASE["histories"])))
