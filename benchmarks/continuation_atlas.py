@@ -10,7 +10,9 @@ solve and the mean drive periods integrated (``work``).  Then the values:
 
 * up against independent: the points where both are trusted and differ by more than the
   sum of their stated errors (another steady state reached: several coexist there);
-* up against down: the same test, the hysteresis the continuation finds.
+* up against down: the same test, where the start matters: hysteresis (coexisting
+  steady states), or a nearly neutral orbit (a multiplier within about 1e-6 of 1, an
+  undamped system) near which the motion's mean depends on where it started.
 
     PYTHONPATH=src python benchmarks/continuation_atlas.py [--every 5] [--write]
 
@@ -65,7 +67,8 @@ def main() -> None:
     ratio = float(indep.work.mean() / up.work.mean())
     lines += ["", f"Up against independent starts: {int(other.sum())} of {n} points differ by "
               f"more than the two stated errors (both trusted); mean work {ratio:.2f} times "
-              f"smaller.  Up against down: {int(hyst.sum())} points differ (hysteresis)."]
+              f"smaller.  Up against down: {int(hyst.sum())} points differ (the start matters: "
+              f"hysteresis, or a nearly neutral orbit)."]
     for name, mask, a_run, b_run, labels in (
             ("up against independent", other, indep, up, ("independent", "up")),
             ("up against down", hyst, both.sel(direction="up"), both.sel(direction="down"),
