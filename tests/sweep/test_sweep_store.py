@@ -134,6 +134,29 @@ def test_store_of_another_version_or_solver_is_an_error(tmp_path: Path, monkeypa
         sweep(**GRID, store=path, workers=1, progress=False)
 
 
+def test_a_store_that_cannot_be_made_is_refused_before_any_work(tmp_path: Path,
+                                                               monkeypatch) -> None:
+    """A new store is created while the first blocks are solved; a path under a file is
+    refused before that."""
+    blocks = Counter(monkeypatch)
+    (tmp_path / "afile").write_text("not a folder")
+    with pytest.raises(ValueError, match="is not a writable folder"):
+        sweep(**GRID, store=tmp_path / "afile" / "atlas.zarr", workers=1, progress=False)
+    assert blocks.blocks == []
+
+
+def test_an_error_creating_the_store_is_raised(tmp_path: Path, monkeypatch) -> None:
+    """The creation runs in the background: its error reaches the caller all the same,
+    and no block is written."""
+    def fail(path, plan):
+        raise OSError("disk full")
+
+    monkeypatch.setattr(vsweep._store, "_create", fail)
+    with pytest.raises(OSError, match="disk full"):
+        sweep(**GRID, store=tmp_path / "atlas.zarr", workers=1, progress=False)
+    assert not (tmp_path / "atlas.zarr").exists()
+
+
 def test_other_paths_are_refused_and_overwrite_replaces(tmp_path: Path,
                                                          reference: xr.Dataset) -> None:
     other = tmp_path / "photos"

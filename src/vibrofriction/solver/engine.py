@@ -430,7 +430,7 @@ def _one_point(dim: Dimensionless, V: float, initial: Initial,
     oi = np.empty(_N_INT, dtype=np.int64)
     steady_state(dim.alpha, dim.beta, dim.amplitude, V, dim.zeta, dim.eta_c, dim.a_x,
                  dim.phase_x, dim.inplane_on == "substrate", dim.static_ratio, *start,
-                 *event_arguments(settings), of, oi)
+                 *event_arguments(settings), of, oi, False)  # warm: the signature in the cache
     f = of.tolist()  # the contact's columns (as contact_columns), on Python floats
     f[_O_NORMAL] = theory.mean_normal_force_of(dim.amplitude)
     f[_O_STICK_AREA] = f[_O_STICK]

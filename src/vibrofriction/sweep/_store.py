@@ -26,6 +26,7 @@ import asyncio
 import json
 import os
 import shutil
+import threading
 import uuid
 from pathlib import Path
 from typing import Any
@@ -154,6 +155,62 @@ class ZarrSink:
             self._loop.close()
 
 
+class NewZarrSink:
+    """A store being created in a background thread: a :class:`ZarrSink` once it exists.
+
+    Creating a store (its 30-odd arrays, through xarray) takes most of a second; the
+    workers start and solve the first blocks meanwhile. Writing a block, reading the
+    dataset or closing waits for it; an error of the creation is raised there.
+    """
+
+    def __init__(self, path: Path, plan: Plan) -> None:
+        self.plan = plan
+        self.done = np.zeros(plan.n_blocks, dtype=bool)
+        self._sink: ZarrSink | None = None
+        self._error: BaseException | None = None
+        self._thread = threading.Thread(target=self._create, args=(path,), daemon=True,
+                                        name="vibrofriction-store")
+        self._thread.start()
+
+    def _create(self, path: Path) -> None:
+        try:
+            _create(path, self.plan)
+            self._sink = ZarrSink(path, self.plan, self.done)
+        except BaseException as exc:  # noqa: BLE001 - raised in the caller's thread
+            self._error = exc
+
+    def _ready(self) -> ZarrSink:
+        self._thread.join()
+        if self._error is not None:
+            raise self._error
+        assert self._sink is not None
+        return self._sink
+
+    def write(self, block: int, values: dict[str, np.ndarray]) -> None:
+        self._ready().write(block, values)
+
+    def dataset(self) -> xr.Dataset:
+        return self._ready().dataset()
+
+    def close(self) -> None:
+        self._thread.join()
+        if self._sink is not None:
+            self._sink.close()
+
+
+def _check_writable(path: Path) -> None:
+    """Before any work: the store can be made at ``path``.
+
+    Its nearest existing folder must be a writable folder.
+    """
+    parent = path.absolute().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        raise ValueError(f"cannot create the store {str(path)!r}: {str(parent)!r} is not a "
+                         "writable folder")
+
+
 # --------------------------------------------------------------------------- create / open
 def _signature_json(plan: Plan) -> str:
     return json.dumps(plan.signature(), sort_keys=True)
@@ -237,13 +294,14 @@ def _clean_partials(path: Path) -> None:
 
 
 def open_sink(store: str | os.PathLike, plan: Plan, *, overwrite: bool = False,
-              verify: bool = True) -> tuple[ZarrSink, list[int]]:
+              verify: bool = True) -> tuple[ZarrSink | NewZarrSink, list[int]]:
     """Create the store for ``plan``, or open an existing one to resume it.
 
-    Returns the sink and the blocks found bad by :meth:`ZarrSink.verify`.  The
-    existing store's block shape wins over ``plan``'s (chunking does not change
-    results).  Raises ``ValueError`` if the store was made for another grid,
-    other solver settings, another initial state or package version.
+    A new store is created in the background (:class:`NewZarrSink`).  Returns the sink
+    and the blocks found bad by :meth:`ZarrSink.verify`.  The existing store's block
+    shape wins over ``plan``'s (chunking does not change results).  Raises ``ValueError``
+    if the store was made for another grid, other solver settings, another initial state
+    or package version, or if it cannot be created there.
     """
     import zarr
 
@@ -254,8 +312,8 @@ def open_sink(store: str | os.PathLike, plan: Plan, *, overwrite: bool = False,
         _check_is_sweep_store(path)
         shutil.rmtree(path)
     if not path.exists():
-        _create(path, plan)
-        return ZarrSink(path, plan, np.zeros(plan.n_blocks, dtype=bool)), []
+        _check_writable(path)
+        return NewZarrSink(path, plan), []
 
     meta = _check_is_sweep_store(path)
     stored = json.loads(meta.attrs["signature"])
