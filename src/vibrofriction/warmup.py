@@ -98,8 +98,10 @@ def in_cache(parts: Sequence[str] | None = None) -> bool:
 
     Examples
     --------
-    >>> from vibrofriction.warmup import in_cache
-    >>> in_cache(["flat"]) in (True, False)
+    >>> from vibrofriction._kernels.jit import caching
+    >>> from vibrofriction.warmup import in_cache, warm_up
+    >>> _ = warm_up(["flat"], workers=1, progress=False)
+    >>> in_cache(["flat"]) == caching()  # once compiled, cached wherever caching is on
     True
     """
     return all(_cached(name) for name in _checked(parts))
@@ -217,7 +219,7 @@ def warm_up(parts: Sequence[str] | None = None, *, workers: int | None = None,
     names = _checked(parts)
     workers = min(2, available_cores()) if workers is None else check_workers(workers)
     workers = min(workers, len(names)) if caching() else 1
-    if workers > 1 and all(_cached(name) for name in names):
+    if workers > 1 and in_cache(names):
         workers = 1  # a load: a pool would only cost its start
     compiled = 0
 
