@@ -43,9 +43,15 @@ def _flat() -> None:
 
 
 def _plane() -> None:
-    from .solver.engine import solve_points
+    from .params import Dimensionless
+    from .solver.engine import solve_chain, solve_points
+    from .solver.points import table_of
+    from .solver.settings import DEFAULT_SETTINGS
 
     solve_points(0.5, 2.0, 0.5, 0.3, 0.05, 0.0, 0.0, 0.0, 0.5, 1.0)
+    # a continuation's compiled loop (its points from whole 2-D orbits)
+    solve_chain(table_of(Dimensionless(0.5, 2.0, 0.5, a_y=0.5), [0.3, 0.35]), "sliding",
+                DEFAULT_SETTINGS)
 
 
 def _curved() -> None:

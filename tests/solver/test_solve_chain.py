@@ -134,3 +134,53 @@ def test_chain_needs_fewer_periods_than_fresh_starts(fixed, smooth):
         assert work.sum() < 0.9 * hand["work"][periodic].sum()
     same = np.abs(chain["mu_ratio"] - fresh["mu_ratio"]) <= chain["error"] + fresh["error"]
     assert same[periodic].all()  # one attractor at these points
+
+
+def _transverse(n: int, **fixed) -> dict[str, np.ndarray]:
+    return _row(n, **({"alpha": 0.5, "a_y": 0.5, "zeta": 0.02} | fixed))
+
+
+@pytest.mark.parametrize("fixed", [
+    {},  # stick-slip
+    {"amplitude": 1.5, "beta": 4.0, "zeta": 0.1},  # jumping, damped
+    {"a_x": 0.3, "phase_x": 1.0, "eta_c": 0.2},  # a longitudinal drive too, Kelvin-Voigt
+])
+def test_a_transverse_curve_chains_its_whole_orbits(fixed):
+    """The 2-D solver's points start from the whole orbit before them (its transverse
+    components and Jacobian too), Newton's method at once: the orbits of fresh starts, each
+    multiplier from its own Jacobian, in about half the periods."""
+    points = _transverse(10, **fixed)
+    chain = solve_chain(point_table(points), "sliding", SolverSettings())
+    fresh = solve_points(**points)
+    _assert_same_orbits(chain, fresh)
+    assert np.all(chain["status"] == Status.PERIODIC.code)
+    assert np.all(chain["method"] == fresh["method"])
+    gap = np.abs(chain["lateral_ratio"] - fresh["lateral_ratio"])
+    assert np.all(gap <= chain["error"] + fresh["error"] + 1e-15), gap.max()
+    np.testing.assert_allclose(chain["multiplier"], fresh["multiplier"], atol=1e-4)
+    assert np.median(chain["work"][1:]) < 0.7 * np.median(fresh["work"][1:])
+    # the first point has no neighbour: its own start, as a fresh one
+    assert chain["work"][0] == fresh["work"][0]
+
+
+def test_a_transverse_chain_restarts_where_told():
+    a, b = _transverse(5), _transverse(5, alpha=0.3, zeta=0.05)
+    points = {k: np.concatenate([a[k], b[k]]) for k in a}
+    restart = np.zeros(20, dtype=bool)
+    restart[[0, 10]] = True
+    chain = solve_chain(point_table(points), "sliding", SolverSettings(), restart)
+    _assert_same({k: v[10:] for k, v in chain.items()},
+                 solve_chain(point_table(b), "sliding", SolverSettings()))
+    _assert_same({k: v[:10] for k, v in chain.items()},
+                 solve_chain(point_table(a), "sliding", SolverSettings()))
+
+
+def test_a_chain_from_the_flat_punch_into_a_transverse_drive():
+    """A row over ``a_y`` from 0: the first 2-D point starts from the 1-D orbit before it
+    (its ``x`` components), the next ones from whole 2-D orbits."""
+    points = _row(8)
+    points["v_inertial"] = np.full(16, 0.3)
+    points["a_y"] = np.linspace(0.0, 0.6, 16)
+    chain = solve_chain(point_table(points), "sliding", SolverSettings())
+    _assert_same_orbits(chain, _by_hand(points, "sliding"))
+    assert chain["method"][0] != chain["method"][1]

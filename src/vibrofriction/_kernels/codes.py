@@ -94,3 +94,9 @@ T_V = point_index("v_inertial")
 T_STATIC_RATIO = point_index("static_ratio")
 T_INPLANE_ON = point_index("inplane_on")  # the index of "substrate" is 0
 I_METHOD = column_index("method")
+
+#: How a point of a chain kernel (``steady_state_many``, ``plane_steady_chain``) starts: from
+#: its own start (``init_kind``, ``init[i]``), from the final section state of the point
+#: before it where that has one (a continuation; else its own start), or from the explicit
+#: state ``init[i]``.
+LINK_OWN, LINK_PREVIOUS, LINK_GIVEN = 0, 1, 2

@@ -49,6 +49,8 @@ from .codes import (
     I_PERIODS,
     I_PHASE,
     I_STATUS,
+    LINK_GIVEN,
+    LINK_PREVIOUS,
     O_E,
     O_ERR,
     O_F,
@@ -936,8 +938,11 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
 
 
 @jit
-def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
+def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=False):
     """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
+
+    ``given``: ``J`` holds a neighbour's Jacobian (a continuation), for chord steps from
+    the start; the rough orbit's own is differenced at it all the same (its multiplier).
 
     Returns ``ROUGH_FOUND``: ``s`` is the rough orbit, ``J`` its Jacobian (the solve at
     ``rtol`` starts with chord steps on it); ``ROUGH_FAILED``: Newton found no orbit (nor
@@ -954,8 +959,10 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
     fail0 = cnt[C_FAIL]
     floor = 100.0 * ROUGH_RTOL * scale
     hrel = ROUGH_STEP * ROUGH_RTOL
+    if given:
+        info[3] = math.inf  # no J differenced at this point yet
     if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, 12, J,
-              info, False, hrel, 0.0, np.zeros(7)):
+              info, given, hrel, 0.0, np.zeros(7)):
         if info[0] == 0 or info[3] > CHORD_NEAR * 1e-12 * scale:
             # no J yet (the start was the rough orbit), or one differenced farther off
             # than the solve at rtol would keep (:func:`newton`'s rule): afresh here
@@ -981,11 +988,12 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info):
 
 @jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
-                  means):
+                  means, given=False):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
     mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
-    it, ``means`` its means).
+    it, ``means`` its means, ``J`` its Jacobian).  ``given``: ``J`` holds a neighbour's
+    Jacobian (:func:`_rough_orbit`).
     """
     status = ST_FAILED
     mult = math.nan
@@ -995,7 +1003,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
     # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
     use_newton = P[P_V] != 0.0
     if use_newton:
-        rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info)
+        rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given)
         periods += int(info[2])
         info[:] = 0.0
         conv = False
@@ -1151,32 +1159,48 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
     """
     P = parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y, zeta_y,
                    on_substrate, static_ratio)
+    s = np.empty(N_S)
+    start_state(P, init_kind, y0, xd0, e0, s)
+    # the phase before the start: steady sliding slips (where the state allows it), a
+    # contact with no history (rest, an explicit state) is stuck
+    _steady(P, s, SLIP if init_kind == 0 else STICK, False, np.zeros((N_S, N_S)), False, rtol,
+            max_periods, max_events, out_f, out_i, s_out)
+
+
+@jit
+def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, out_i, s_out):
+    """The steady state of the point ``P`` from the section state ``s`` at ``tau = 0`` and
+    the phase ``hint`` before it (:func:`plane_steady_section`).  ``warm``: ``s`` is a
+    neighbour's periodic orbit (a continuation, :func:`plane_steady_chain`), and Newton's
+    method starts from it at once, without the transient (where it finds no orbit, the plain
+    iteration follows the motion from ``s``, as from a transient's end); ``given``: ``J``
+    holds that neighbour's Jacobian, for Newton's first steps.  Returns True where Newton
+    found the orbit, ``J`` then its Jacobian.
+    """
     out_f[:] = math.nan
     out_f[O_WORK] = 0.0
     out_i[:] = 0
     out_i[I_PHASE] = -1
     hmax = max_step(P)
     W = np.zeros((N_W, N_Z))
-    # the phase before the start: steady sliding slips (where the state allows it), a
-    # contact with no history (rest, an explicit state) is stuck
-    W[W_MODE, 0] = SLIP if init_kind == 0 else STICK
+    W[W_MODE, 0] = hint
     cnt = np.zeros(N_C, np.int64)
-    s = np.empty(N_S)
-    J = np.zeros((N_S, N_S))
     info = np.zeros(4)
-    start_state(P, init_kind, y0, xd0, e0, s)
     s_start = s.copy()
     k = P[P_K]
-    periods = _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods)
+    warm = warm and P[P_V] != 0.0
+    periods = 0 if warm else _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods)
     status = ST_FAILED
     mult = math.nan
+    use_newton = False
     means = np.zeros(7)
     s0 = s.copy()
     budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
         status, mult, use_newton, periods = _orbit_search(
-            P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means)
+            P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means,
+            warm and given)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
@@ -1193,6 +1217,41 @@ def plane_steady_section(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_
         elif cnt[C_FAIL] == 0:
             status = ST_NOT_CONVERGED
     _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
+    return status == ST_PERIODIC and use_newton
+
+
+@jit
+def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_events, out_f,
+                       out_i):
+    """:func:`plane_steady_state_many` as a continuation: ``link[i]`` says where point ``i``
+    starts (``codes.LINK_OWN``: its own start, ``init_kind`` and ``init[i]``;
+    ``LINK_GIVEN``: the state ``init[i]``; ``LINK_PREVIOUS``: the final section state of
+    point ``i - 1``, all six components and its phase, where that point found a periodic
+    orbit, Newton's method from it at once (:func:`_steady`); else its own start).
+    """
+    s_prev = np.zeros(N_S + 1)
+    orbit = False  # point i - 1 ended on a periodic orbit, in s_prev
+    J = np.zeros((N_S, N_S))
+    newton_j = False  # ... found by Newton: J is its Jacobian
+    for i in range(points.shape[0]):
+        p = points[i]
+        P = parameters(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
+                       p[T_A_X], p[T_PHASE_X], p[T_A_Y], p[T_PHASE_Y], p[T_ALPHA_Y],
+                       p[T_ZETA_Y], p[T_INPLANE_ON] == 0.0, p[T_STATIC_RATIO])
+        s = np.empty(N_S)
+        s_out = np.zeros(N_S + 1)
+        if link[i] == LINK_PREVIOUS and orbit:
+            for j in range(N_S):
+                s[j] = s_prev[j]
+            newton_j = _steady(P, s, int(s_prev[N_S]), True, J, newton_j, rtol, max_periods,
+                               max_events, out_f[i], out_i[i], s_out)
+        else:
+            kind = 2 if link[i] == LINK_GIVEN else init_kind
+            start_state(P, kind, init[i, 0], init[i, 1], init[i, 2], s)
+            newton_j = _steady(P, s, SLIP if kind == 0 else STICK, False, J, False, rtol,
+                               max_periods, max_events, out_f[i], out_i[i], s_out)
+        orbit = out_i[i, I_STATUS] == ST_PERIODIC
+        s_prev[:] = s_out
 
 
 @jit

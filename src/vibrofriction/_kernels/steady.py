@@ -50,6 +50,8 @@ from .codes import (
     I_PERIODS,
     I_PHASE,
     I_STATUS,
+    LINK_GIVEN,
+    LINK_PREVIOUS,
     NO_PHASE,
     O_E,
     O_ERR,
@@ -539,12 +541,6 @@ def _predicted(points, out_f, i, m):
         xd += w * out_f[a, O_XD]
         e += w * out_f[a, O_E]
     return y, xd, e
-
-
-#: How a point of :func:`steady_state_many` starts: from its own start (``init_kind``,
-#: ``init[i]``), from the final section state of the point before it where that has one (a
-#: continuation; else its own start), or from the explicit state ``init[i]``.
-LINK_OWN, LINK_PREVIOUS, LINK_GIVEN = 0, 1, 2
 
 
 @jit

@@ -17,11 +17,13 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import theory
 from .._kernels import codes
-from .._kernels.steady import LINK_GIVEN, LINK_OWN, LINK_PREVIOUS, steady_state
+from .._kernels.codes import LINK_GIVEN, LINK_OWN, LINK_PREVIOUS
+from .._kernels.steady import steady_state
 from ..params import Dimensionless, System, dimensionless, inertial_velocity
 from ..schema import FLOAT_COLUMNS, INT_COLUMNS, METHOD_NAMES, column_index
 from .methods import METHODS, choose, method_of
 from .methods.event import EVENT, event_arguments
+from .methods.plane import PLANE
 from .points import PointTable, point_table, table_of
 from .results import (
     PHASE_CODE,
@@ -325,8 +327,9 @@ def solve_chain(points: PointTable, initial: Initial, settings: SolverSettings,
     n = len(points)
     restart = np.zeros(n, dtype=bool) if restart is None else np.asarray(restart, dtype=bool)
     V = points["v_inertial"]
-    fast = (choose(points["profile_exponent"], points["a_y"], points["rs_a"]) == 0) \
-        & ((V > 0.0) | ((V == 0.0) & (points["a_x"] == 0.0)))
+    method = choose(points["profile_exponent"], points["a_y"], points["rs_a"])
+    fast = (method == _EVENT) & ((V > 0.0) | ((V == 0.0) & (points["a_x"] == 0.0)))
+    plane = (method == _PLANE) & (V > 0.0)
     cols = {k: np.empty(n, dtype=np.float64) for k in FLOAT_COLUMNS} \
         | {k: np.empty(n, dtype=np.int64) for k in INT_COLUMNS} \
         | {"trusted": np.empty(n, dtype=bool)}
@@ -345,6 +348,13 @@ def solve_chain(points: PointTable, initial: Initial, settings: SolverSettings,
             one_by_one = done < stop - j
             if done == 0:
                 continue
+        elif plane[j]:
+            stop = j + 1
+            while stop < n and plane[stop]:
+                stop += 1
+            part = _plane_run(points.take(np.arange(j, stop)), initial, state,
+                              restart[j:stop], settings)
+            done, one_by_one = stop - j, False
         else:
             part, done = solve_table(points.take(np.array([j])),
                                      state if state is not None else initial, settings), 1
@@ -382,6 +392,27 @@ def _chain_run(run: PointTable, initial: Initial, state: SectionState | None,
     return _columns(run, out_f, out_i, sliding_mu_ratio(run), settings), done
 
 
+def _plane_run(run: PointTable, initial: Initial, state: SectionState | None,
+               restart: NDArray[np.bool_], settings: SolverSettings) -> dict[str, NDArray]:
+    """:func:`solve_chain` of ``run``, the 2-D solver's points (``V > 0``), in one loop.
+
+    Each point starts from the whole final section state of the one before (its transverse
+    components too) where that is a periodic orbit.  The first point starts from ``state``
+    (the final state of another method's point before the run: its ``x`` components), or
+    where there is none from ``initial``.
+    """
+    kind, init = initial_rows(initial, len(run), run.system)
+    link = np.where(restart, LINK_OWN, LINK_PREVIOUS).astype(np.int8)
+    link[0] = LINK_OWN
+    if state is not None:
+        init[0] = initial_rows(state, 1, run.system)[1][0]
+        link[0] = LINK_GIVEN
+    for start_kind in {kind, 2}:  # the own start, and a predecessor's state
+        PLANE.capabilities.check(run, start_kind, settings)
+    out_f, out_i = PLANE.solve_chain(run, kind, init, link, settings)
+    return _columns(run, out_f, out_i, sliding_mu_ratio(run), settings)
+
+
 def _final_state(cols: dict[str, NDArray], j: int) -> SectionState | None:
     """The final section state of row ``j`` of the columns ``cols`` (None: none)."""
     y, x_dot, f, e = (float(cols[k][j]) for k in ("y", "x_dot", "f", "e"))
@@ -394,6 +425,7 @@ _O_STICK, _O_SLIP, _O_REVERSE, _O_FLIGHT = (column_index(k) for k in (
 _O_NORMAL, _O_STICK_AREA, _O_SLIP_AREA, _O_OPEN_AREA = (column_index(k) for k in (
     "mean_normal_ratio", "stick_area_fraction", "slip_area_fraction", "open_area_fraction"))
 _I_METHOD = column_index("method")
+_EVENT, _PLANE = METHOD_NAMES.index("event"), METHOD_NAMES.index("plane")
 _O_SLIDING = column_index("sliding_mu_ratio")
 
 

@@ -14,7 +14,8 @@ from numpy.typing import NDArray
 
 from ... import theory
 from ..._kernels import codes
-from ..._kernels.steady import LINK_OWN, steady_state_many
+from ..._kernels.codes import LINK_OWN
+from ..._kernels.steady import steady_state_many
 from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable

@@ -12,7 +12,7 @@ from numpy.typing import NDArray
 
 from ... import theory
 from ..._kernels import codes
-from ..._kernels.plane import plane_steady_state_many
+from ..._kernels.plane import plane_steady_chain, plane_steady_state_many
 from ...capabilities import CAPABILITIES
 from ...schema import METHOD_NAMES, Status, column_index
 from ..points import PointTable
@@ -43,6 +43,26 @@ class PlaneMethod:
             mark = plane_held(out_i[rows, codes.I_STATUS],
                               out_f[rows, column_index("stick_fraction")], p, on)
             out_i[rows[mark], codes.I_STATUS] = Status.HELD.code
+        out_i[:, codes.I_METHOD] = _CODE
+        return out_f, out_i
+
+    def solve_chain(self, points: PointTable, init_kind: int, init: NDArray[np.float64],
+                    link: NDArray[np.int8], settings: SolverSettings
+                    ) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
+        """:meth:`solve` of points in turn, each started as ``link`` says.
+
+        A continuation in one compiled loop (``link[i]``: ``LINK_OWN`` from ``init_kind``
+        and ``init[i]``, ``LINK_PREVIOUS`` from the whole final section state of point
+        ``i - 1`` where that is a periodic orbit, its transverse components and phase too,
+        Newton's method from it at once; ``LINK_GIVEN`` from the state ``init[i]``).  Every
+        point has ``V > 0``.
+        """
+        if not np.all(points["v_inertial"] > 0.0):
+            raise ValueError("a chain of 2-D points needs every v_inertial > 0")
+        out_f, out_i = new_outputs(len(points))
+        plane_steady_chain(points.values, init_kind, np.ascontiguousarray(init), link,
+                           *plane_arguments(settings), out_f, out_i)
+        contact_columns(out_f, points["amplitude"], slice(None))
         out_i[:, codes.I_METHOD] = _CODE
         return out_f, out_i
 
