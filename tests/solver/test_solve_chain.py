@@ -184,3 +184,12 @@ def test_a_chain_from_the_flat_punch_into_a_transverse_drive():
     chain = solve_chain(point_table(points), "sliding", SolverSettings())
     _assert_same_orbits(chain, _by_hand(points, "sliding"))
     assert chain["method"][0] != chain["method"][1]
+
+
+def test_a_transverse_chain_with_static_above_kinetic_runs_its_transients():
+    """No Newton start from the neighbour there (sliding and stick-slip coexist): each point
+    runs the transient from the whole state before it, and reaches the orbits of fresh
+    starts."""
+    points = _transverse(6, static_ratio=1.3)
+    chain = solve_chain(point_table(points), "sliding", SolverSettings())
+    _assert_same_orbits(chain, solve_points(**points))

@@ -1227,7 +1227,8 @@ def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_eve
     starts (``codes.LINK_OWN``: its own start, ``init_kind`` and ``init[i]``;
     ``LINK_GIVEN``: the state ``init[i]``; ``LINK_PREVIOUS``: the final section state of
     point ``i - 1``, all six components and its phase, where that point found a periodic
-    orbit, Newton's method from it at once (:func:`_steady`); else its own start).
+    orbit, with Coulomb friction Newton's method from it at once (:func:`_steady`); else
+    its own start).
     """
     s_prev = np.zeros(N_S + 1)
     orbit = False  # point i - 1 ended on a periodic orbit, in s_prev
@@ -1243,8 +1244,12 @@ def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_eve
         if link[i] == LINK_PREVIOUS and orbit:
             for j in range(N_S):
                 s[j] = s_prev[j]
-            newton_j = _steady(P, s, int(s_prev[N_S]), True, J, newton_j, rtol, max_periods,
-                               max_events, out_f[i], out_i[i], s_out)
+            # Coulomb friction: Newton from the neighbour's orbit at once (a static circle
+            # above the kinetic one runs the transient from it: sliding and stick-slip
+            # coexist there, as in the 1-D chain)
+            warm = p[T_STATIC_RATIO] == 1.0
+            newton_j = _steady(P, s, int(s_prev[N_S]), warm, J, newton_j and warm, rtol,
+                               max_periods, max_events, out_f[i], out_i[i], s_out)
         else:
             kind = 2 if link[i] == LINK_GIVEN else init_kind
             start_state(P, kind, init[i, 0], init[i, 1], init[i, 2], s)
