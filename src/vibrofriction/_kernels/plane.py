@@ -30,7 +30,8 @@ round-off of the 5th-order solution), the axis cut at every drive period and, fo
 ``a > 1``, at lift-off and touch-down (Jenkins contact: the contact arcs shortened by
 ``DELTA`` at both ends, where the slip direction's equation is singular).  The steady
 state is a fixed point of the period map on the section ``tau = 2 pi k`` (6 states),
-found by plain iteration and then Newton's method with a forward-difference Jacobian;
+found by plain iteration and then Newton's method with the period map's exact Jacobian
+(the tangent carried along the integration, :func:`period_map_tangent`);
 the means are integrated over one period of the orbit.  Where Newton fails or the
 orbit is unstable the long-time average over a window answers (status averaged).
 """
@@ -307,6 +308,141 @@ def error_norm(z, znew, err, rtol, atol):
 
 
 @jit
+def rhs_jacobian(mode, P, t, z, D):
+    """The Jacobian of :func:`rhs`'s first six components by the section state ``z[:6]``
+    into ``D`` (6 x 6), in closed form: the body's springs and dashpots, and the contact's
+    force and elongation rate of the phase ``mode`` (stick: ``f = k e + c w``; slip of a
+    Kelvin-Voigt contact: ``f = n F/|F|``, ``F = k e + c w``, ``e' = (f - k e)/c``; of a
+    Jenkins one: ``f = n d``, ``d = e/|e|``, ``e' = w - lam d``, ``lam = d.w - n'/k``;
+    flight: ``f = 0``), ``w`` the contact point's velocity over the substrate's.
+    """
+    D[:] = 0.0
+    D[0, 2] = 1.0
+    D[1, 3] = 1.0
+    D[2, 0], D[2, 2] = -P[P_ALPHA], -P[P_GAMMA]
+    D[3, 1], D[3, 3] = -P[P_ALPHA_Y], -P[P_GAMMA_Y]
+    k, c = P[P_K], P[P_C]
+    if mode == FLIGHT:
+        if c > 0.0:
+            D[4, 4] = D[5, 5] = -k / c
+        return
+    if mode == STICK:
+        D[2, 4] -= k
+        D[3, 5] -= k
+        D[2, 2] -= c
+        D[3, 3] -= c
+        D[4, 2] = D[5, 3] = 1.0
+        return
+    ct, st = math.cos(t), math.sin(t)
+    _, _, _, _, vsx, vsy = _drive(P, ct, st)
+    n, dn = _normal(P[P_A], ct, st)
+    w0, w1 = z[2] - vsx, z[3] - vsy
+    if c > 0.0:
+        Fx, Fy = k * z[4] + c * w0, k * z[5] + c * w1
+        F = math.hypot(Fx, Fy)
+        ux, uy = Fx / F, Fy / F
+        q = n / F  # df/dF = q (I - u u^T)
+        a00, a01, a11 = q * (1.0 - ux * ux), -q * ux * uy, q * (1.0 - uy * uy)
+        for i in range(2):
+            for j in range(2):
+                aij = a00 if i + j == 0 else (a11 if i + j == 2 else a01)
+                D[2 + i, 4 + j] -= k * aij
+                D[2 + i, 2 + j] -= c * aij
+                D[4 + i, 4 + j] = k * aij / c - (k / c if i == j else 0.0)
+                D[4 + i, 2 + j] = aij
+        return
+    r = math.hypot(z[4], z[5])
+    dx, dy = z[4] / r, z[5] / r
+    b00, b01, b11 = (1.0 - dx * dx) / r, -dx * dy / r, (1.0 - dy * dy) / r  # dd/de
+    lam = dx * w0 + dy * w1 - dn / k
+    bw0, bw1 = b00 * w0 + b01 * w1, b01 * w0 + b11 * w1  # dlam/de
+    d0, d1 = dx, dy
+    for i in range(2):
+        di = d0 if i == 0 else d1
+        for j in range(2):
+            dj = d0 if j == 0 else d1
+            bij = b00 if i + j == 0 else (b11 if i + j == 2 else b01)
+            D[2 + i, 4 + j] -= n * bij
+            D[4 + i, 2 + j] = (1.0 if i == j else 0.0) - di * dj
+            D[4 + i, 4 + j] = -(di * (bw0 if j == 0 else bw1) + lam * bij)
+
+
+# Dormand-Prince stages: nodes and coefficients by row (the first six stages; b the weights)
+_DP_C = np.array([0.0, _C2, _C3, _C4, _C5, 1.0])
+_DP_A = np.array([[0.0, 0.0, 0.0, 0.0, 0.0],
+                  [_A21, 0.0, 0.0, 0.0, 0.0],
+                  [_A31, _A32, 0.0, 0.0, 0.0],
+                  [_A41, _A42, _A43, 0.0, 0.0],
+                  [_A51, _A52, _A53, _A54, 0.0],
+                  [_A61, _A62, _A63, _A64, _A65]])
+_DP_B = np.array([_B1, 0.0, _B3, _B4, _B5, _B6])
+N_T = 10
+"""The tangent's work array ``T`` (``N_T`` x 6 x 6): ``T[0]`` the tangent ``Y`` carried
+along (``dz/ds``, the section state's six components), ``T[1]`` scratch, ``T[2]`` the
+Jacobian of the right-hand side, ``T[3]`` a stage's argument, ``T[4:10]`` the six stages;
+``T`` of length 0: no tangent (the plain integration)."""
+
+
+@jit
+def tangent_step(mode, P, t, z, k1, K, h, znew, T):
+    """Carry the tangent ``T[0]`` over the Dormand-Prince step of length ``h`` from ``(t,
+    z)`` that :func:`rk_step` just took (its stages ``k1``, ``K[1:6]``) to ``znew``: the
+    same stages applied to ``Y' = Df Y`` (the exact derivative of the step), then, for a
+    Jenkins slip, the derivative of :func:`project` (``I - d d^T`` on ``e``).  Stick and
+    flight are linear with constant coefficients: their ``Df`` is taken once a step.
+    """
+    Y, st, D, arg = T[0], T[1, 0], T[2], T[3]
+    linear = mode != SLIP
+    if linear:
+        rhs_jacobian(mode, P, t, z, D)
+    for i in range(6):
+        if not linear:
+            for m in range(2, N_S):  # the stage's state (Df reads y', e)
+                acc = _DP_A[i, 0] * k1[m]
+                for j in range(1, i):
+                    acc += _DP_A[i, j] * K[j, m]
+                st[m] = z[m] + h * acc
+            rhs_jacobian(mode, P, t + _DP_C[i] * h, st, D)
+        for r in range(N_S):
+            for q in range(N_S):
+                acc = Y[r, q]
+                for j in range(i):
+                    acc += h * _DP_A[i, j] * T[4 + j, r, q]
+                arg[r, q] = acc
+        KY = T[4 + i]
+        for q in range(N_S):
+            KY[0, q] = arg[2, q]  # y' = v
+            KY[1, q] = arg[3, q]
+            for r in range(2, N_S):
+                acc = 0.0
+                for m in range(N_S):
+                    acc += D[r, m] * arg[m, q]
+                KY[r, q] = acc
+    for r in range(N_S):
+        for q in range(N_S):
+            acc = Y[r, q]
+            for i in range(6):
+                acc += h * _DP_B[i] * T[4 + i, r, q]
+            Y[r, q] = acc
+    if mode == SLIP and P[P_C] == 0.0:
+        _cone_tangent(znew, Y, 1.0)
+
+
+@jit
+def _cone_tangent(z, Y, scale):
+    """``Y``'s rows of ``e`` times ``scale (I - d d^T)``, ``d = e/|e|``: the derivative of a
+    map that puts ``e`` at a given length, its direction kept.
+    """
+    r = math.hypot(z[4], z[5])
+    dx, dy = z[4] / r, z[5] / r
+    for q in range(N_S):
+        y4, y5 = Y[4, q], Y[5, q]
+        dot = dx * y4 + dy * y5
+        Y[4, q] = scale * (y4 - dx * dot)
+        Y[5, q] = scale * (y5 - dy * dot)
+
+
+@jit
 def project(mode, P, t, z):
     """Jenkins slip: put ``e`` back on the cone ``|e| = n/k`` (its direction kept)."""
     if mode == SLIP and P[P_C] == 0.0:
@@ -318,11 +454,12 @@ def project(mode, P, t, z):
 
 
 @jit
-def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
+def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     """Integrate ``mode`` from ``t`` towards ``t1`` until its switch function falls
     through 0 (located to round-off) or ``t1``.  ``z`` is updated in place.  Returns
     ``(t_end, event, h)``.  ``acc`` accumulates the time in stick, slip, flight and in
     slip with ``f_x < 0`` (from step ends, linearly interpolated at a sign change).
+    ``T``: the tangent carried along (:data:`N_T`; length 0: none).
     """
     k1, k7, znew, zb, kb, K = W[0], W[1], W[2], W[3], W[4], W[5:12]
     g0 = switch_function(mode, P, t, z)
@@ -379,11 +516,15 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt):
                     side = 1
             rk_step(mode, P, t, z, k1, sr, zb, kb, K)
             project(mode, P, t + sr, zb)
+            if T.shape[0] > 0:
+                tangent_step(mode, P, t, z, k1, K, sr, zb, T)
             _account(mode, P, t, sr, z, zb, acc, ph)
             for i in range(N_Z):
                 z[i] = zb[i]
             cnt[C_EVENTS] += 1
             return t + sr, True, h
+        if T.shape[0] > 0:
+            tangent_step(mode, P, t, z, k1, K, hh, znew, T)
         _account(mode, P, t, tn - t, z, znew, acc, ph)
         for i in range(N_Z):
             z[i] = znew[i]
@@ -525,9 +666,11 @@ def touchdown(P, t, z):
 
 
 @jit
-def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
+def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events, T):
     """Integrate one drive period from ``t0 = 2 pi j`` (``z`` in place, the integrals
     ``z[6:8]`` accumulated); ``mode`` the phase at ``t0``.  Returns ``(mode, ok)``.
+    ``T``: the tangent carried along (:func:`segment`; through each switch by
+    :func:`_switch_tangent`, through lift-off and touch-down by their maps' derivatives).
     """
     a = P[P_A]
     jenkins = P[P_C] == 0.0
@@ -553,23 +696,134 @@ def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events):
             if jenkins:
                 z[4] = 0.0
                 z[5] = 0.0
+                if T.shape[0] > 0:  # at a fixed time: the reset's derivative
+                    T[0, 4, :] = 0.0
+                    T[0, 5, :] = 0.0
             mode = FLIGHT
         elif mode == FLIGHT:
             mode = touchdown(P, t, z)
+            if T.shape[0] > 0 and jenkins:
+                _touchdown_tangent(P, t, z, mode, T[0])
         while t < t1:
-            t, event, h = segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt)
+            t, event, h = segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T)
             if cnt[C_FAIL] > 0:
                 return mode, False
             if cnt[C_STEPS] > limit:
                 cnt[C_FAIL] += 1
                 return mode, False
-            if event:
+            if event and T.shape[0] > 0:
+                mode = _switch_tangent(mode, P, t, z, T)
+            elif event:
                 mode = switch(mode, P, t, z)
                 ev += 1
                 if ev > max_events:
                     cnt[C_FAIL] += 1
                     return mode, False
     return mode, True
+
+
+@jit
+def _touchdown_tangent(P, t, z, mode, Y):
+    """The derivative of a Jenkins contact's touch-down (:func:`touchdown`, at a fixed
+    time) on the tangent ``Y``: ``e = 0`` where it sticks, ``e = (n/k) w/|w|`` where it
+    slips (``w`` the contact point's velocity over the substrate's).
+    """
+    for q in range(N_S):
+        Y[4, q] = Y[5, q] = 0.0
+    if mode != SLIP:
+        return
+    n, _ = normal_force(P[P_A], t)
+    _, _, _, _, vsx, vsy = drive(P, t)
+    w0, w1 = z[2] - vsx, z[3] - vsy
+    w = math.hypot(w0, w1)
+    u0, u1 = w0 / w, w1 / w
+    sc = n / (P[P_K] * w)
+    for q in range(N_S):
+        dot = u0 * Y[2, q] + u1 * Y[3, q]
+        Y[4, q] = sc * (Y[2, q] - u0 * dot)
+        Y[5, q] = sc * (Y[3, q] - u1 * dot)
+
+
+SALTATION_STEP = 1e-7
+"""The relative step of the central differences of a switch function and a switch's map
+(:func:`_switch_tangent`): their second-order error and the round-off over the step are
+both about ``1e-14`` of their scale."""
+
+
+@jit
+def _switch_tangent(mode, P, t, z, T):
+    """:func:`switch` of ``mode`` at its event ``(t, z)``, the tangent ``T[0]`` carried
+    through it: ``Y+ = DR Y- + (DR f- + dR/dt - f+) dt*/ds``, ``dt*/ds = -(dg Y-)/(dg/dt +
+    dg f-)`` (``g`` the switch function, ``R`` the switch's map of the state, ``f-`` and
+    ``f+`` the fields of the phases before and after it), ``dg``, ``DR`` and the time
+    derivatives by central differences.  A graze (the switch function's rate 0), or a
+    difference that changes the phase after the switch, leaves ``nan`` in the tangent (the
+    caller differences the map instead).  Returns the phase after the switch.
+    """
+    Y = T[0]
+    zp, zm = np.empty(N_Z), np.empty(N_Z)
+    fa, fb = np.empty(N_Z), np.empty(N_Z)
+    rhs(mode, P, t, z, fa)
+    dg = np.empty(N_S)
+    for j in range(N_S):
+        d = SALTATION_STEP * (1.0 + abs(z[j]))
+        zp[:] = z
+        zm[:] = z
+        zp[j] += d
+        zm[j] -= d
+        dg[j] = (switch_function(mode, P, t, zp) - switch_function(mode, P, t, zm)) / (2 * d)
+    dt = SALTATION_STEP * (1.0 + abs(t))
+    gt = (switch_function(mode, P, t + dt, z) - switch_function(mode, P, t - dt, z)) / (2 * dt)
+    rate = gt
+    for j in range(N_S):
+        rate += dg[j] * fa[j]
+    # the map of the state: the elongation of a Jenkins contact rescaled (else none)
+    DR = np.eye(N_S)
+    rt = np.zeros(N_S)
+    zb = z.copy()
+    new = switch(mode, P, t, z)
+    bad = rate == 0.0 or not math.isfinite(rate)
+    if P[P_C] == 0.0:
+        for j in range(N_S + 1):
+            d = SALTATION_STEP * (1.0 + abs(zb[j] if j < N_S else t))
+            zp[:] = zb
+            zm[:] = zb
+            tp = tm = t
+            if j < N_S:
+                zp[j] += d
+                zm[j] -= d
+            else:
+                tp, tm = t + d, t - d
+            mp = switch(mode, P, tp, zp)
+            mm = switch(mode, P, tm, zm)
+            bad = bad or mp != new or mm != new
+            for i in range(N_S):
+                v = (zp[i] - zm[i]) / (2 * d)
+                if j < N_S:
+                    DR[i, j] = v
+                else:
+                    rt[i] = v
+    rhs(new, P, t, z, fb)
+    jump = np.empty(N_S)  # DR f- + dR/dt - f+
+    for i in range(N_S):
+        acc = rt[i] - fb[i]
+        for j in range(N_S):
+            acc += DR[i, j] * fa[j]
+        jump[i] = acc
+    for q in range(N_S):
+        dts = 0.0
+        for j in range(N_S):
+            dts -= dg[j] * Y[j, q]
+        dts /= rate
+        col = np.empty(N_S)
+        for i in range(N_S):
+            acc = jump[i] * dts
+            for j in range(N_S):
+                acc += DR[i, j] * Y[j, q]
+            col[i] = acc
+        for i in range(N_S):
+            Y[i, q] = math.nan if bad else col[i]
+    return new
 
 
 @jit
@@ -584,13 +838,69 @@ def period_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events):
     z[6] = 0.0
     z[7] = 0.0
     mode = entry_hint(P, 0.0, z, int(W[W_MODE, 0]))
-    mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events)
+    mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events,
+                          np.empty((0, N_S, N_S)))
     for i in range(N_S):
         sout[i] = z[i]
     if ok and mode != FLIGHT:  # put the end state through the same entry rule
         mode = entry_hint(P, TWO_PI, sout, mode)
     W[W_MODE, 1] = mode
     return ok, z[6], z[7]
+
+
+@jit
+def _entry_jacobian(P, t, z, hint, E):
+    """The derivative of the section's entry rule (:func:`entry_hint` at ``t`` from the phase
+    ``hint``) at the state ``z`` into ``E`` (6 x 6): where the rule keeps the state (every
+    Kelvin-Voigt contact, a Jenkins one inside its cone) the identity; where it puts a
+    Jenkins contact's elongation at a length ``rho`` of its own (on a cone, its direction
+    kept) ``rho/|e| (I - d d^T)`` on ``e``, the side of the rule the state is on.  Returns
+    True (the rule's derivative always exists on that side).
+    """
+    E[:] = np.eye(N_S)
+    if P[P_C] > 0.0:
+        return True
+    zb = np.empty(N_S)
+    for i in range(N_S):
+        zb[i] = z[i]
+    entry_hint(P, t, zb, hint)
+    if zb[4] == z[4] and zb[5] == z[5]:
+        return True
+    r = math.hypot(z[4], z[5])
+    d0, d1 = z[4] / r, z[5] / r
+    sc = math.hypot(zb[4], zb[5]) / r
+    E[4, 4], E[4, 5] = sc * (1.0 - d0 * d0), -sc * d0 * d1
+    E[5, 4], E[5, 5] = -sc * d0 * d1, sc * (1.0 - d1 * d1)
+    return True
+
+
+@jit
+def period_map_tangent(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events, J):
+    """:func:`period_map` and its Jacobian ``J`` (6 x 6) from one integration: the tangent
+    carried along (:func:`tangent_step`, :func:`_switch_tangent`), the section's entry rule
+    at both ends through its derivative (:func:`_entry_jacobian`).  Returns ``(ok, exact)``:
+    ``exact`` False where the tangent does not hold (a graze, a phase that a difference
+    changes: the caller differences the map instead).
+    """
+    T = np.zeros((N_T, N_S, N_S))
+    z = W[12]
+    for i in range(N_S):
+        z[i] = s[i]
+    z[6] = 0.0
+    z[7] = 0.0
+    hint = int(W[W_MODE, 0])
+    exact = _entry_jacobian(P, 0.0, z, hint, T[0])
+    mode = entry_hint(P, 0.0, z, hint)
+    mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events, T)
+    for i in range(N_S):
+        sout[i] = z[i]
+    E = np.eye(N_S)
+    if ok and mode != FLIGHT:  # the end state through the same entry rule
+        exact = _entry_jacobian(P, TWO_PI, sout, mode, E) and exact
+        mode = entry_hint(P, TWO_PI, sout, mode)
+    W[W_MODE, 1] = mode
+    J[:] = E @ T[0]
+    return ok, exact and np.all(np.isfinite(J))
 
 
 @jit
@@ -644,20 +954,20 @@ def mean_normal(a):
 @jit
 def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
            chord, hrel, polish, means):
-    """Newton's method on ``Phi(s) - s`` (forward-difference Jacobian ``J`` of
+    """Newton's method on ``Phi(s) - s`` (the Jacobian ``J`` of :func:`_jacobian`, of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
     integration's noise) below ``floor``.  The step is capped (:data:`NEWTON_STEP_CAP`)
     and each trial period has a step budget (:data:`TRIAL_STEPS` times the iterate's);
     a trial that fails (budget, chatter) is a failed trial, not a failed point.
 
-    A Jacobian differenced near the orbit (the residual within :data:`CHORD_NEAR` times
-    ``tol``) is kept for the next iterates (chord steps: a difference Jacobian costs six
+    A Jacobian taken near the orbit (the residual within :data:`CHORD_NEAR` times
+    ``tol``) is kept for the next iterates (chord steps: a Jacobian costs about two
     period maps) while each step cuts the residual by :data:`CHORD_RATE` at least;
-    otherwise, and where a kept one gives no descent, it is differenced afresh at the
+    otherwise, and where a kept one gives no descent, it is taken afresh at the
     iterate.  With ``chord`` the ``J`` given (the orbit's, e.g. at another tolerance) is
-    used from the first step.  ``hrel``: the relative difference step of ``J``;
-    ``info[3]`` gets the residual at the iterate where ``J`` was last differenced.
+    used from the first step.  ``hrel``: the relative step of ``J`` where it is differenced;
+    ``info[3]`` gets the residual at the iterate where ``J`` was last taken.
     ``polish > 0``: once below ``tol`` with a kept Jacobian, chord steps go on while each
     cuts the residual by :data:`CHORD_RATE`, down to ``polish * tol`` (a map each; the
     section residual enters the stated error).  ``means`` gets the means of the period
@@ -699,8 +1009,8 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
         if fresh:
             near = res <= CHORD_NEAR * tol
             info[3] = res
-            periods = _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt,
-                                           max_events, J, sp, pp, periods, hrel)
+            periods = _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
+                                pp, periods, hrel)
             if periods < 0:
                 info[2] += -periods
                 cnt[C_FAIL] = fail0
@@ -763,6 +1073,23 @@ CHORD_RATE = 0.1
 CHORD_NEAR = 1e6
 """... and the Jacobian must have been differenced within this many ``tol`` of the orbit:
 a Jacobian from farther off gave multipliers off by up to 0.03 (150 random points)."""
+
+
+@jit
+def _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel):
+    """Newton's Jacobian of the period map at ``s`` (``ph = Phi(s)``) into ``J``: the
+    tangent's, from one period map (:func:`period_map_tangent`), where it holds; else by
+    forward differences (:func:`_difference_jacobian`, six more).  Returns ``periods`` plus
+    the maps integrated, negated where a map failed.
+    """
+    ok, exact = period_map_tangent(P, s, pp, rtol, atol, hmax, W, acc, cnt, max_events, J)
+    periods += 1
+    if not ok:
+        return -periods
+    if exact:
+        return periods
+    return _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
+                                pp, periods, hrel)
 
 
 @jit
@@ -942,7 +1269,7 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
 
     ``given``: ``J`` holds a neighbour's Jacobian (a continuation), for chord steps from
-    the start; the rough orbit's own is differenced at it all the same (its multiplier).
+    the start; the rough orbit's own is taken at it all the same (its multiplier).
 
     Returns ``ROUGH_FOUND``: ``s`` is the rough orbit, ``J`` its Jacobian (the solve at
     ``rtol`` starts with chord steps on it); ``ROUGH_FAILED``: Newton found no orbit (nor
@@ -970,9 +1297,9 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
             ph = np.empty(N_S)
             ok, _, _ = period_map(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc, cnt,
                                   max_events)
-            periods = _difference_jacobian(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc,
-                                           cnt, max_events, J, np.empty(N_S), np.empty(N_S),
-                                           1, hrel) if ok else -1
+            periods = _jacobian(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc, cnt,
+                                max_events, J, np.empty(N_S), np.empty(N_S), 1,
+                                hrel) if ok else -1
             info[2] += abs(periods)
             if periods < 0:
                 W[W_MODE, 0] = hint
@@ -1276,7 +1603,8 @@ def cone_excess(P, periods, rtol):
         z[i] = s[i]
     mode = entry_hint(P, 0.0, z, SLIP)  # the sliding start
     for j in range(periods):
-        mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000)
+        mode, ok = one_period(P, TWO_PI * j, z, mode, rtol, rtol, hmax, W, acc, cnt, 10000,
+                              np.empty((0, N_S, N_S)))
         if not ok:
             return math.inf
     return acc[4]
@@ -1307,7 +1635,8 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
         z[7] = 0.0
         if j == N_AVG:
             acc[:] = 0.0
-        mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events)
+        mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events,
+                              np.empty((0, N_S, N_S)))
         if not ok:
             return math.inf
         if j >= N_AVG:
@@ -1398,6 +1727,7 @@ def plane_history(P, s, periods, grid, rtol, max_events, out, hint=STICK):
     th = math.acos(-1.0 / a) if a > 1.0 else 0.0
     d = DELTA if jenkins else 0.0
     ng = grid.shape[0]
+    no_tangent = np.empty((0, N_S, N_S))
     gi = 0
     row = 0
     t = 0.0
@@ -1435,7 +1765,7 @@ def plane_history(P, s, periods, grid, rtol, max_events, out, hint=STICK):
                 if gi < ng and grid[gi] < t1:
                     target = grid[gi]
                 t, event, h = segment(mode, P, t, target, z, h, rtol, rtol, hmax, W, acc,
-                                      cnt)
+                                      cnt, no_tangent)
                 if cnt[C_FAIL] > 0:
                     return -1
                 if event:
