@@ -16,10 +16,11 @@ From these, three floors of a 2-D answer in units of the flat point:
 
 * **orbit given**: its orbit known exactly, a 2-D answer still integrates one period at
   ``rtol`` (its means) and one at ``100 rtol`` (its stated error);
-* **+ multiplier**: and six more periods at ``1e-8`` for the forward-difference Jacobian
-  whose spectral radius is the orbit's multiplier (the status, the settling);
+* **+ multiplier**: and the Jacobian whose spectral radius is the orbit's multiplier (the
+  status, the settling): by forward differences, six more periods at ``1e-8``; by the
+  tangent carried along (``plane.period_map_tangent``), one period at ``1e-8`` with it;
 * **+ transient**: and, for an isolated point started from steady sliding, the transient
-  that brings the state to where Newton's method converges.
+  that brings the state to where Newton's method converges (with the tangent's Jacobian).
 
     PYTHONPATH=src python benchmarks/plane_floor.py [--write]
 
@@ -55,17 +56,22 @@ def _orbit(alpha, beta, a, V, zeta, a_x):
     return P, s_out
 
 
-def _period_time(P, s_out, tol: float) -> float:
-    """Seconds of one period map at ``tol`` from the orbit (median of :data:`REPEATS`)."""
+def _period_time(P, s_out, tol: float, tangent: bool = False) -> float:
+    """Seconds of one period map at ``tol`` from the orbit (median of :data:`REPEATS`),
+    with the tangent carried along where ``tangent``."""
     hmax = pl.max_step(P)
     s, s1, acc = s_out[:pl.N_S].copy(), np.empty(pl.N_S), np.zeros(4)
+    J = np.zeros((pl.N_S, pl.N_S))
     times = []
     for _ in range(REPEATS):
         W = np.zeros((pl.N_W, pl.N_Z))
         W[pl.W_MODE, 0] = s_out[pl.N_S]
         cnt = np.zeros(pl.N_C, np.int64)
         t0 = time.perf_counter()
-        ok, _, _ = pl.period_map(P, s, s1, tol, tol, hmax, W, acc, cnt, 1000)
+        if tangent:
+            ok, _ = pl.period_map_tangent(P, s, s1, tol, tol, hmax, W, acc, cnt, 1000, J)
+        else:
+            ok, _, _ = pl.period_map(P, s, s1, tol, tol, hmax, W, acc, cnt, 1000)
         times.append(time.perf_counter() - t0)
         assert ok
     return statistics.median(times)
@@ -82,10 +88,12 @@ def _transient_periods(P) -> int:
 
 
 def bench() -> list[str]:
-    lines = ["| regime | flat ms | 2-D ms, ratio | period at 1e-10, 1e-8, 1e-6 (us) | "
-             "transient periods | orbit given | + multiplier | + transient |",
-             "|---|---|---|---|---|---|---|---|"]
-    floors: dict[str, list[float]] = {"orbit": [], "mult": [], "trans": [], "ratio": []}
+    lines = ["| regime | flat ms | 2-D ms, ratio | period at 1e-10, 1e-8, 1e-6; with the "
+             "tangent at 1e-8 (us) | transient periods | orbit given | + multiplier by "
+             "differences | + multiplier by the tangent | + transient |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    floors: dict[str, list[float]] = {"orbit": [], "diff": [], "mult": [], "trans": [],
+                                      "ratio": []}
     for label, alpha, beta, a, V, zeta, a_x in REGIMES:
         base = {"alpha": alpha, "beta": beta, "amplitude": a, "v_inertial": V, "zeta": zeta,
                 "a_x": a_x}
@@ -93,22 +101,24 @@ def bench() -> list[str]:
         t_2d, _ = _timed(**base, a_y=A_Y)
         P, s_out = _orbit(alpha, beta, a, V, zeta, a_x)
         t10, t8, t6 = (_period_time(P, s_out, tol) for tol in TOLERANCES)
+        t8_tangent = _period_time(P, s_out, 1e-8, tangent=True)
         n_tr = _transient_periods(P)
         orbit = (t10 + t8) / t_flat
-        mult = orbit + 6 * t8 / t_flat
+        diff = orbit + 6 * t8 / t_flat
+        mult = orbit + t8_tangent / t_flat
         trans = mult + n_tr * t6 / t_flat
-        for k, v in zip(floors, (orbit, mult, trans, t_2d / t_flat), strict=True):
+        for k, v in zip(floors, (orbit, diff, mult, trans, t_2d / t_flat), strict=True):
             floors[k].append(v)
         line = (f"| {label} | {1e3 * t_flat:.3f} | {1e3 * t_2d:.2f}, {t_2d / t_flat:.0f}x | "
-                f"{1e6 * t10:.0f}, {1e6 * t8:.0f}, {1e6 * t6:.0f} | {n_tr} | {orbit:.1f}x | "
-                f"{mult:.1f}x | {trans:.1f}x |")
+                f"{1e6 * t10:.0f}, {1e6 * t8:.0f}, {1e6 * t6:.0f}; {1e6 * t8_tangent:.0f} | "
+                f"{n_tr} | {orbit:.1f}x | {diff:.1f}x | {mult:.1f}x | {trans:.1f}x |")
         print(line, flush=True)
         lines.append(line)
     med = {k: statistics.median(v) for k, v in floors.items()}
     lines += ["", f"Medians over the {len(REGIMES)} regimes: the 2-D point as solved "
               f"**{med['ratio']:.0f}x** the flat point; its floors: orbit given "
-              f"**{med['orbit']:.1f}x**, + multiplier by differences **{med['mult']:.1f}x**, "
-              f"+ transient **{med['trans']:.1f}x**."]
+              f"**{med['orbit']:.1f}x**, + multiplier by differences **{med['diff']:.1f}x** "
+              f"or by the tangent **{med['mult']:.1f}x**, + transient **{med['trans']:.1f}x**."]
     print(lines[-1])
     return lines
 
