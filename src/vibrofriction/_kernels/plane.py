@@ -89,6 +89,7 @@ from .codes import (
     T_ZETA_Y,
 )
 from .jit import jit
+from .steady import history
 
 TWO_PI = 2.0 * math.pi
 # one slip mode in 2-D (its direction is part of the state): it carries the code of forward
@@ -1113,6 +1114,9 @@ def _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J,
     return periods
 
 
+TRANSIENT_PERIODS, TRANSIENT_EXIT = 20, 1e-4
+"""The transient before Newton's method: at most this many periods, until the map moves the
+state by less than this (:func:`_transient`)."""
 TRANSIENT_RTOL = 1e-6
 """The tolerance of the transient before Newton's method (:func:`_transient`)."""
 ITER_RESERVE = 2000
@@ -1250,7 +1254,7 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
     periods = 0
     rt = max(rtol, TRANSIENT_RTOL) if P[P_V] != 0.0 else rtol
     # a transient by plain iteration: until the map moves the state by < 1e-4
-    for _ in range(min(20, max_periods)):
+    for _ in range(min(TRANSIENT_PERIODS, max_periods)):
         ok, _, _ = period_map(P, s, s2, rt, rt, hmax, W, acc, cnt, max_events)
         periods += 1
         if not ok:
@@ -1259,7 +1263,7 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
         for i in range(N_S):
             s[i] = s2[i]
         W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
-        if d < 1e-4:
+        if d < TRANSIENT_EXIT:
             break
     return periods
 
@@ -1555,10 +1559,12 @@ def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_eve
     ``LINK_GIVEN``: the state ``init[i]``; ``LINK_PREVIOUS``: the final section state of
     point ``i - 1``, all six components and its phase, where that point found a periodic
     orbit, with Coulomb friction Newton's method from it at once (:func:`_steady`); else
-    its own start).
+    its own start).  Where up to three points before it are such orbits on one velocity
+    curve with it (:func:`.steady.history`), Newton starts from the orbit extrapolated along
+    ``V`` through them (:func:`_extrapolated`), as the 1-D chain does.
     """
-    s_prev = np.zeros(N_S + 1)
-    orbit = False  # point i - 1 ended on a periodic orbit, in s_prev
+    S = np.zeros((points.shape[0], N_S + 1))  # each point's final section state and phase
+    orbit = False  # point i - 1 ended on a periodic orbit, in S[i - 1]
     J = np.zeros((N_S, N_S))
     newton_j = False  # ... found by Newton: J is its Jacobian
     for i in range(points.shape[0]):
@@ -1570,12 +1576,15 @@ def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_eve
         s_out = np.zeros(N_S + 1)
         if link[i] == LINK_PREVIOUS and orbit:
             for j in range(N_S):
-                s[j] = s_prev[j]
+                s[j] = S[i - 1, j]
             # Coulomb friction: Newton from the neighbour's orbit at once (a static circle
             # above the kinetic one runs the transient from it: sliding and stick-slip
             # coexist there, as in the 1-D chain)
             warm = p[T_STATIC_RATIO] == 1.0
-            newton_j = _steady(P, s, int(s_prev[N_S]), warm, J, newton_j and warm, rtol,
+            m = history(points, out_i, link, i, out_i[i - 1, I_PHASE]) if warm else 0
+            if m > 1:
+                _extrapolated(points, S, i, m, s)
+            newton_j = _steady(P, s, int(S[i - 1, N_S]), warm, J, newton_j and warm, rtol,
                                max_periods, max_events, out_f[i], out_i[i], s_out)
         else:
             kind = 2 if link[i] == LINK_GIVEN else init_kind
@@ -1583,7 +1592,24 @@ def plane_steady_chain(points, init_kind, init, link, rtol, max_periods, max_eve
             newton_j = _steady(P, s, SLIP if kind == 0 else STICK, False, J, False, rtol,
                                max_periods, max_events, out_f[i], out_i[i], s_out)
         orbit = out_i[i, I_STATUS] == ST_PERIODIC
-        s_prev[:] = s_out
+        S[i, :] = s_out
+
+
+@jit
+def _extrapolated(points, S, i, m, s):
+    """The orbit's section state at point ``i`` extrapolated along ``V`` through the final
+    states ``S`` of the ``m`` points before it (Lagrange's polynomial of degree ``m - 1``;
+    a predictor that Newton corrects) into ``s``.
+    """
+    v = points[i, T_V]
+    s[:] = 0.0
+    for a in range(i - m, i):
+        w = 1.0  # Lagrange's weight of point a at v
+        for b in range(i - m, i):
+            if b != a:
+                w *= (v - points[b, T_V]) / (points[a, T_V] - points[b, T_V])
+        for j in range(N_S):
+            s[j] += w * S[a, j]
 
 
 @jit

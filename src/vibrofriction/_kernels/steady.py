@@ -502,7 +502,7 @@ PREDICTOR_POINTS = 3
 
 
 @jit
-def _history(points, out_i, link, i, ph):
+def history(points, out_i, link, i, ph):
     """How many points before ``i`` (up to :data:`PREDICTOR_POINTS`) are orbits of one period
     with the section phase ``ph``, linked one to the next, on one velocity curve with
     ``i`` (the other parameters equal, ``V`` distinct).
@@ -581,7 +581,7 @@ def steady_state_many(points, init_kind, init, link, max_periods, min_periods, t
                 # coefficient above the kinetic one starts from the state as it is: sliding
                 # and stick-slip coexist there, and its proof of sliding is the motion's own)
                 warm = p[T_STATIC_RATIO] == 1.0 and _one_period(out_i[i - 1])
-                m = _history(points, out_i, link, i, ph) if warm else 0
+                m = history(points, out_i, link, i, ph) if warm else 0
                 if m > 1:
                     y0, xd0, e0 = _predicted(points, out_f, i, m)
         steady_state(p[T_ALPHA], p[T_BETA], p[T_AMPLITUDE], p[T_V], p[T_ZETA], p[T_ETA_C],
