@@ -855,24 +855,22 @@ def _entry_jacobian(P, t, z, hint, E):
     ``hint``) at the state ``z`` into ``E`` (6 x 6): where the rule keeps the state (every
     Kelvin-Voigt contact, a Jenkins one inside its cone) the identity; where it puts a
     Jenkins contact's elongation at a length ``rho`` of its own (on a cone, its direction
-    kept) ``rho/|e| (I - d d^T)`` on ``e``, the side of the rule the state is on.  Returns
-    True (the rule's derivative always exists on that side).
+    kept) ``rho/|e| (I - d d^T)`` on ``e``, the side of the rule the state is on.
     """
     E[:] = np.eye(N_S)
     if P[P_C] > 0.0:
-        return True
+        return
     zb = np.empty(N_S)
     for i in range(N_S):
         zb[i] = z[i]
     entry_hint(P, t, zb, hint)
     if zb[4] == z[4] and zb[5] == z[5]:
-        return True
+        return
     r = math.hypot(z[4], z[5])
     d0, d1 = z[4] / r, z[5] / r
     sc = math.hypot(zb[4], zb[5]) / r
     E[4, 4], E[4, 5] = sc * (1.0 - d0 * d0), -sc * d0 * d1
     E[5, 4], E[5, 5] = -sc * d0 * d1, sc * (1.0 - d1 * d1)
-    return True
 
 
 @jit
@@ -880,8 +878,8 @@ def period_map_tangent(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events, J)
     """:func:`period_map` and its Jacobian ``J`` (6 x 6) from one integration: the tangent
     carried along (:func:`tangent_step`, :func:`_switch_tangent`), the section's entry rule
     at both ends through its derivative (:func:`_entry_jacobian`).  Returns ``(ok, exact)``:
-    ``exact`` False where the tangent does not hold (a graze, a phase that a difference
-    changes: the caller differences the map instead).
+    ``exact`` False where the tangent does not hold (a graze, or a switch whose phase a
+    difference changes: :func:`_switch_tangent`; the caller differences the map instead).
     """
     T = np.zeros((N_T, N_S, N_S))
     z = W[12]
@@ -890,18 +888,18 @@ def period_map_tangent(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events, J)
     z[6] = 0.0
     z[7] = 0.0
     hint = int(W[W_MODE, 0])
-    exact = _entry_jacobian(P, 0.0, z, hint, T[0])
+    _entry_jacobian(P, 0.0, z, hint, T[0])
     mode = entry_hint(P, 0.0, z, hint)
     mode, ok = one_period(P, 0.0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events, T)
     for i in range(N_S):
         sout[i] = z[i]
     E = np.eye(N_S)
     if ok and mode != FLIGHT:  # the end state through the same entry rule
-        exact = _entry_jacobian(P, TWO_PI, sout, mode, E) and exact
+        _entry_jacobian(P, TWO_PI, sout, mode, E)
         mode = entry_hint(P, TWO_PI, sout, mode)
     W[W_MODE, 1] = mode
     J[:] = E @ T[0]
-    return ok, exact and np.all(np.isfinite(J))
+    return ok, np.all(np.isfinite(J))
 
 
 @jit
