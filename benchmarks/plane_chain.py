@@ -18,14 +18,15 @@ benchmarks/results/plane_chain.md.
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import statistics
-import time
 from pathlib import Path
 
 import numpy as np
 
 import vibrofriction as vf
+from bench_solver import _median_time
 from sections import append_run
 from vibrofriction.solver.engine import solve_chain, solve_table
 from vibrofriction.solver.points import table_of
@@ -41,13 +42,9 @@ REPEATS = 3
 
 
 def _timed(f):
-    out = f()
-    times = []
-    for _ in range(REPEATS):
-        t0 = time.perf_counter()
-        out = f()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), out
+    """The median of :data:`REPEATS` calls of ``f``, warm, and its result."""
+    f()
+    return _median_time(f, REPEATS, math.inf)
 
 
 def bench() -> list[str]:

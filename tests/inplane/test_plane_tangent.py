@@ -142,3 +142,22 @@ def test_the_multiplier_at_the_solvers_tolerance_is_the_difference_jacobians(p):
     plane.period_map_tangent(P, s, np.empty(6), 1e-10, 1e-10, hmax, W, acc, cnt, 1000, J)
     assert abs(np.abs(np.linalg.eigvals(J)).max()
                - np.abs(np.linalg.eigvals(Jd)).max()) <= 1e-4
+
+
+def test_the_tangent_keeps_the_event_budget():
+    """A period with more switches than ``max_events`` fails with the tangent as without it
+    (chatter is a failed period, whichever map integrates it)."""
+    P, s_out = _orbit(REGIMES[0])
+    hmax = plane.max_step(P)
+    s = s_out[:plane.N_S]
+    W, cnt, acc = _work(s_out)
+    ok, _, _ = plane.period_map(P, s, np.empty(6), 1e-10, 1e-10, hmax, W, acc, cnt, 1000)
+    assert ok and cnt[plane.C_EVENTS] >= 2  # a stick-slip orbit: two switches at least
+    for tangent in (False, True):
+        W, cnt, acc = _work(s_out)
+        if tangent:
+            ok, _ = plane.period_map_tangent(P, s, np.empty(6), 1e-10, 1e-10, hmax, W, acc,
+                                             cnt, 1, np.zeros((6, 6)))
+        else:
+            ok, _, _ = plane.period_map(P, s, np.empty(6), 1e-10, 1e-10, hmax, W, acc, cnt, 1)
+        assert not ok and cnt[plane.C_FAIL] > 0, tangent

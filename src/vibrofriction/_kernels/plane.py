@@ -89,7 +89,7 @@ from .codes import (
     T_ZETA_Y,
 )
 from .jit import jit
-from .steady import history
+from .steady import history, lagrange_weight
 
 TWO_PI = 2.0 * math.pi
 # one slip mode in 2-D (its direction is part of the state): it carries the code of forward
@@ -712,10 +712,11 @@ def one_period(P, t0, z, mode, rtol, atol, hmax, W, acc, cnt, max_events, T):
             if cnt[C_STEPS] > limit:
                 cnt[C_FAIL] += 1
                 return mode, False
-            if event and T.shape[0] > 0:
-                mode = _switch_tangent(mode, P, t, z, T)
-            elif event:
-                mode = switch(mode, P, t, z)
+            if event:
+                if T.shape[0] > 0:
+                    mode = _switch_tangent(mode, P, t, z, T)
+                else:
+                    mode = switch(mode, P, t, z)
                 ev += 1
                 if ev > max_events:
                     cnt[C_FAIL] += 1
@@ -866,11 +867,7 @@ def _entry_jacobian(P, t, z, hint, E):
     entry_hint(P, t, zb, hint)
     if zb[4] == z[4] and zb[5] == z[5]:
         return
-    r = math.hypot(z[4], z[5])
-    d0, d1 = z[4] / r, z[5] / r
-    sc = math.hypot(zb[4], zb[5]) / r
-    E[4, 4], E[4, 5] = sc * (1.0 - d0 * d0), -sc * d0 * d1
-    E[5, 4], E[5, 5] = -sc * d0 * d1, sc * (1.0 - d1 * d1)
+    _cone_tangent(z, E, math.hypot(zb[4], zb[5]) / math.hypot(z[4], z[5]))
 
 
 @jit
@@ -1599,13 +1596,9 @@ def _extrapolated(points, S, i, m, s):
     states ``S`` of the ``m`` points before it (Lagrange's polynomial of degree ``m - 1``;
     a predictor that Newton corrects) into ``s``.
     """
-    v = points[i, T_V]
     s[:] = 0.0
     for a in range(i - m, i):
-        w = 1.0  # Lagrange's weight of point a at v
-        for b in range(i - m, i):
-            if b != a:
-                w *= (v - points[b, T_V]) / (points[a, T_V] - points[b, T_V])
+        w = lagrange_weight(points, i, m, a)
         for j in range(N_S):
             s[j] += w * S[a, j]
 
@@ -1654,13 +1647,14 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
     pfx = np.zeros(N_AVG)
     pfy = np.zeros(N_AVG)
     acc = np.zeros(4)
+    no_tangent = np.empty((0, N_S, N_S))
     for j in range(2 * N_AVG):
         z[6] = 0.0
         z[7] = 0.0
         if j == N_AVG:
             acc[:] = 0.0
         mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events,
-                              np.empty((0, N_S, N_S)))
+                              no_tangent)
         if not ok:
             return math.inf
         if j >= N_AVG:

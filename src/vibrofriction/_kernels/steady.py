@@ -525,18 +525,27 @@ def history(points, out_i, link, i, ph):
 
 
 @jit
+def lagrange_weight(points, i, m, a):
+    """Lagrange's weight of point ``a`` at point ``i``'s ``V``, through the ``m`` points before
+    ``i`` (the extrapolation of a continuation's start along ``V``).
+    """
+    v = points[i, T_V]
+    w = 1.0
+    for b in range(i - m, i):
+        if b != a:
+            w *= (v - points[b, T_V]) / (points[a, T_V] - points[b, T_V])
+    return w
+
+
+@jit
 def _predicted(points, out_f, i, m):
     """The orbit's state at point ``i`` extrapolated along ``V`` through the orbits of the
     ``m`` points before it (the polynomial of degree ``m - 1``; a predictor that Newton
     corrects).
     """
     y = xd = e = 0.0
-    v = points[i, T_V]
     for a in range(i - m, i):
-        w = 1.0  # Lagrange's weight of point a at v
-        for b in range(i - m, i):
-            if b != a:
-                w *= (v - points[b, T_V]) / (points[a, T_V] - points[b, T_V])
+        w = lagrange_weight(points, i, m, a)
         y += w * out_f[a, O_Y]
         xd += w * out_f[a, O_XD]
         e += w * out_f[a, O_E]
