@@ -10,7 +10,13 @@ docs/inplane.md, "A static coefficient above the kinetic one").
   steps) to a quarter, and its effort (periods, events, settling) is not compared; so a
   history from ``initial="steady"`` (that search's section state) is no longer compared,
   the one from the sliding start is, to round-off since the Runge-Kutta stages' drive
-  changed in the last digits (tests/data/static_ratio_history.npz: its arrays);
+  changed in the last digits (tests/data/static_ratio_history.npz: its arrays).  Since
+  stick and flight go by their exact flows (2026-11-30) the answers agree with the
+  baseline within the two stated errors (the baseline's Runge-Kutta error in those phases
+  is gone), the final section state to ``1e-8``, the time fractions to ``1e-5`` (a
+  reverse slip's share is interpolated linearly between step ends, which moved) and the
+  stated error at most 4 times the baseline's (an estimate from steps that moved; it
+  is smaller at most points);
 * along histories ``|f| <= s n`` (the static circle) in stick and ``|f| = n`` (the kinetic
   circle) along the contact point's slip velocity in slip; at each stick->slip ``|f|``
   reaches ``s n`` and drops to ``n`` in the direction of ``f`` (a Jenkins contact's
@@ -76,9 +82,11 @@ def _equal(a: list, b: list) -> bool:
 
 # --------------------------------------------------------------------------- s = 1
 #: The steady search's effort, which its Newton's chord steps changed (not compared), and
-#: its multiplier, a difference Jacobian's at the last fresh iterate (to 1e-4)
+#: its multiplier, a difference Jacobian's at the last fresh iterate (to 1e-4); the answers
+#: within the two stated errors, the section state and the fractions to these (see above)
 EFFORT = ("work", "periods", "events", "settling_periods")
-ROUNDOFF, MULTIPLIER = 1e-12, 1e-4
+ANSWERS = ("mu_ratio", "lateral_ratio")
+MULTIPLIER, STATE, FRACTIONS, ERROR_FACTOR = 1e-4, 1e-8, 1e-5, 4.0
 
 
 def test_static_ratio_one_is_the_solver_before() -> None:
@@ -88,6 +96,7 @@ def test_static_ratio_one_is_the_solver_before() -> None:
         idx = [i for i, p in enumerate(pts) if p["inplane_on"] == on]
         cols = {k: np.array([pts[i][k] for i in idx]) for k in pts[0] if k != "inplane_on"}
         got = solve_points(**cols, inplane_on=on, static_ratio=1.0)
+        bars = np.array([expected["error"][i] for i in idx]) + np.asarray(got["error"])
         for k in expected:  # every column there was (later ones are not the 2-D solver's)
             if k in EFFORT:
                 continue
@@ -96,9 +105,13 @@ def test_static_ratio_one_is_the_solver_before() -> None:
             if k == "multiplier":
                 assert np.allclose(have, want, rtol=0.0, atol=MULTIPLIER, equal_nan=True), on
             elif k == "error":  # an estimate: the same orbit at 100 rtol, reached otherwise
-                assert np.allclose(have, want, rtol=0.25, atol=0.0, equal_nan=True), on
+                ratio = have / want  # smaller where the exact flows removed an error
+                assert np.all((ratio <= ERROR_FACTOR) & (ratio > 0.0)), on
+            elif k in ANSWERS:
+                assert np.all(np.abs(have - want) <= bars), (on, k)
             elif np.issubdtype(np.asarray(got[k]).dtype, np.floating):
-                assert np.allclose(have, want, rtol=0.0, atol=ROUNDOFF, equal_nan=True), (on, k)
+                tol = FRACTIONS if k.endswith("fraction") else STATE
+                assert np.allclose(have, want, rtol=0.0, atol=tol, equal_nan=True), (on, k)
             else:  # status, period, phase, degenerate, method, trusted: equal
                 assert _equal(have.tolist(), want.tolist()), (on, k)
 

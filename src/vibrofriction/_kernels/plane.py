@@ -107,7 +107,17 @@ P_ALPHA_Y, P_GAMMA_Y = 11, 12  # the pin across the sliding
 P_SR = 13  # static_ratio: a stuck contact holds while |f| <= P[P_SR] n
 # cos and sin of the in-plane phases: the drive at t from cos t and sin t (one pair a stage)
 P_CPX, P_SPX, P_CPY, P_SPY = 14, 15, 16, 17
-N_P = 18
+# the exact flow of the linear phases (stick, flight) over a step of P[P_H]
+# (:func:`linear_flows`): the augmented state w = (z, cos t, sin t, 1) (N_L) moves as
+# w' = A w, so w(t + H) = Phi w(t); each flow's Phi, and for stick the rows F of the
+# contact force f = F w and their rates F A
+P_H = 18
+N_L = N_Z + 3
+P_PHI_STICK = 19
+P_F_STICK = P_PHI_STICK + N_L * N_L
+P_FA_STICK = P_F_STICK + 2 * N_L
+P_PHI_FLIGHT = P_FA_STICK + 2 * N_L
+N_P = P_PHI_FLIGHT + N_L * N_L
 W_MODE = 14
 """The row of the work array ``W`` that carries the phase across a section where the state
 does not fix it (``static_ratio > 1``): ``W[W_MODE, 0]`` the phase the period map starts
@@ -455,13 +465,226 @@ def project(mode, P, t, z):
 
 
 @jit
+def _linear_rows(mode, P, t, z, out):
+    """The right-hand side (:func:`rhs`) into ``out[:N_Z]`` and the contact force into
+    ``out[N_Z:N_Z + 2]``: for stick and flight both linear in ``(z, cos t, sin t, 1)``.
+    """
+    rhs(mode, P, t, z, out)
+    fx, fy, _, _, _ = contact(mode, P, t, z)
+    out[N_Z], out[N_Z + 1] = fx, fy
+
+
+@jit
+def _linear_system(mode, P, A, F):
+    """The constant matrix ``A`` (N_L x N_L) of ``w' = A w``, ``w = (z, cos t, sin t, 1)``,
+    of the linear phase ``mode`` (stick or flight), and the rows ``F`` (2 x N_L) of its
+    contact force ``f = F w``, read off :func:`rhs` and :func:`contact` themselves: a
+    column of ``z`` from a unit state (the response to ``z = 0`` taken off), those of the
+    drive from ``z = 0`` at ``t = 0, pi/2, pi`` (``cos t``, ``sin t``, 1 there).
+    """
+    zero, unit = np.zeros(N_Z), np.zeros(N_Z)
+    r0, r1, rq, rp = np.empty(N_Z + 2), np.empty(N_Z + 2), np.empty(N_Z + 2), np.empty(N_Z + 2)
+    _linear_rows(mode, P, 0.0, zero, r0)
+    _linear_rows(mode, P, 0.5 * math.pi, zero, rq)
+    _linear_rows(mode, P, math.pi, zero, rp)
+    A[:] = 0.0
+    for j in range(N_Z):
+        unit[:] = 0.0
+        unit[j] = 1.0
+        _linear_rows(mode, P, 0.0, unit, r1)
+        for i in range(N_Z + 2):
+            v = r1[i] - r0[i]
+            if i < N_Z:
+                A[i, j] = v
+            else:
+                F[i - N_Z, j] = v
+    for i in range(N_Z + 2):
+        cos_, one = 0.5 * (r0[i] - rp[i]), 0.5 * (r0[i] + rp[i])
+        sin_ = rq[i] - one
+        if i < N_Z:
+            A[i, N_Z], A[i, N_Z + 1], A[i, N_Z + 2] = cos_, sin_, one
+        else:
+            F[i - N_Z, N_Z], F[i - N_Z, N_Z + 1], F[i - N_Z, N_Z + 2] = cos_, sin_, one
+    A[N_Z, N_Z + 1] = -1.0  # (cos t)' = -sin t
+    A[N_Z + 1, N_Z] = 1.0  # (sin t)' = cos t
+
+
+EXPM_TERMS = 30
+"""Taylor terms of :func:`_expm` at most (its argument scaled to a norm of 1/2: the terms
+fall below round-off after about 18)."""
+
+
+@jit
+def _expm(A, h):
+    """``exp(A h)`` by scaling and squaring: Taylor's series of ``A h / 2^q``, whose norm
+    is at most 1/2, summed to round-off, then squared ``q`` times.
+    """
+    n = A.shape[0]
+    norm = 0.0
+    for i in range(n):
+        row = 0.0
+        for j in range(n):
+            row += abs(A[i, j])
+        norm = max(norm, row * abs(h))
+    q = max(0, int(math.ceil(math.log2(norm / 0.5)))) if norm > 0.5 else 0
+    X = A * (h / 2.0 ** q)
+    E = np.eye(n)
+    term = np.eye(n)
+    for m in range(1, EXPM_TERMS + 1):
+        term = term @ X / m
+        E += term
+        if np.max(np.abs(term)) <= 1e-17 * np.max(np.abs(E)):
+            break
+    for _ in range(q):
+        E = E @ E
+    return E
+
+
+@jit
+def linear_flows(P):
+    """Fill ``P``'s exact flows of the linear phases over the step ``P[P_H]`` (half the
+    longest Runge-Kutta step): stick's ``Phi``, ``F`` and ``F A``, flight's ``Phi``
+    (:func:`_exact_steps`).
+    """
+    H = 0.5 * max_step(P)
+    P[P_H] = H
+    A, F = np.zeros((N_L, N_L)), np.zeros((2, N_L))
+    _linear_system(STICK, P, A, F)
+    P[P_PHI_STICK:P_F_STICK] = _expm(A, H).ravel()
+    P[P_F_STICK:P_FA_STICK] = F.ravel()
+    P[P_FA_STICK:P_PHI_FLIGHT] = (F @ A).ravel()
+    _linear_system(FLIGHT, P, A, F)
+    P[P_PHI_FLIGHT:N_P] = _expm(A, H).ravel()
+
+
+@jit
+def _cubic_dips(g0, d0, g1, d1):
+    """Does the cubic of Hermite with values ``g0, g1 > 0`` and slopes ``d0, d1`` (over a
+    unit interval) fall to 0 or below inside it?
+    """
+    # p(s) = g0 + d0 s + b s^2 + c s^3
+    b = 3.0 * (g1 - g0) - 2.0 * d0 - d1
+    c = 2.0 * (g0 - g1) + d0 + d1
+    # p'(s) = d0 + 2 b s + 3 c s^2 = 0
+    qa, qb, qc = 3.0 * c, 2.0 * b, d0
+    roots = np.empty(2)
+    nr = 0
+    if qa == 0.0:
+        if qb != 0.0:
+            roots[0] = -qc / qb
+            nr = 1
+    else:
+        disc = qb * qb - 4.0 * qa * qc
+        if disc >= 0.0:
+            sq = math.sqrt(disc)
+            roots[0], roots[1] = (-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)
+            nr = 2
+    for i in range(nr):
+        x = roots[i]
+        if 0.0 < x < 1.0 and g0 + x * (d0 + x * (b + x * c)) <= 0.0:
+            return True
+    return False
+
+
+@jit
+def _stick_margin(P, t, w):
+    """The stick's switch function ``s n - |f|`` at the augmented state ``w`` and its rate
+    (``f = F w``, ``f' = F A w``).
+    """
+    F, FA = P[P_F_STICK:P_FA_STICK], P[P_FA_STICK:P_PHI_FLIGHT]
+    fx, fy, dfx, dfy = 0.0, 0.0, 0.0, 0.0
+    for j in range(N_L):
+        fx += F[j] * w[j]
+        fy += F[N_L + j] * w[j]
+        dfx += FA[j] * w[j]
+        dfy += FA[N_L + j] * w[j]
+    n, dn = normal_force(P[P_A], t)
+    f = math.hypot(fx, fy)
+    rate = P[P_SR] * dn - ((fx * dfx + fy * dfy) / f if f > 0.0 else math.hypot(dfx, dfy))
+    return P[P_SR] * n - f, rate
+
+
+@jit
+def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
+    """Advance the linear phase ``mode`` (stick or flight) from ``t`` by its exact flow
+    (:func:`linear_flows`) in whole steps ``H`` while they end before ``t1`` and, in
+    stick, its switch function stays positive at the step's end and on the cubic of
+    Hermite through both ends (a step that may hold the switch is left to the
+    Runge-Kutta steps, which locate it).  Returns the time reached.
+    """
+    H = P[P_H]
+    if mode == STICK:
+        Phi = P[P_PHI_STICK:P_F_STICK].reshape((N_L, N_L))
+    else:
+        Phi = P[P_PHI_FLIGHT:N_P].reshape((N_L, N_L))
+    w, wn = np.empty(N_L), np.empty(N_L)
+    tangent = T.shape[0] > 0
+    ph = mode if mode != FLIGHT else 2
+    g0, d0 = 0.0, 0.0
+    first = True
+    while t + H <= t1:
+        for i in range(N_Z):
+            w[i] = z[i]
+        w[N_Z], w[N_Z + 1], w[N_Z + 2] = math.cos(t), math.sin(t), 1.0
+        for i in range(N_L):
+            v = 0.0
+            for j in range(N_L):
+                v += Phi[i, j] * w[j]
+            wn[i] = v
+        tn = t + H
+        wn[N_Z], wn[N_Z + 1] = math.cos(tn), math.sin(tn)
+        if mode == STICK:
+            if first:
+                g0, d0 = _stick_margin(P, t, w)
+                first = False
+            g1, d1 = _stick_margin(P, tn, wn)
+            if g1 <= 0.0 or _cubic_dips(g0, H * d0, g1, H * d1):
+                break
+            g0, d0 = g1, d1
+        if tangent:
+            Y, arg = T[0], T[3]
+            for r in range(N_S):
+                for q in range(N_S):
+                    v = 0.0
+                    for m in range(N_S):
+                        v += Phi[r, m] * Y[m, q]
+                    arg[r, q] = v
+            Y[:] = arg
+        _account(mode, P, t, H, z, wn, acc, ph)
+        for i in range(N_Z):
+            z[i] = wn[i]
+        cnt[C_STEPS] += 1
+        t = tn
+    return t
+
+
+@jit
 def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     """Integrate ``mode`` from ``t`` towards ``t1`` until its switch function falls
     through 0 (located to round-off) or ``t1``.  ``z`` is updated in place.  Returns
     ``(t_end, event, h)``.  ``acc`` accumulates the time in stick, slip, flight and in
     slip with ``f_x < 0`` (from step ends, linearly interpolated at a sign change).
     ``T``: the tangent carried along (:data:`N_T`; length 0: none).
+
+    Stick and flight go by their exact flows (:func:`_exact_steps`) where a whole step of
+    it is safe; the rest (a step that may hold the switch, the piece before ``t1``) by the
+    Runge-Kutta steps of :func:`_rk_segment`.
     """
+    if switch_function(mode, P, t, z) < 0.0:
+        return t, True, h
+    if mode == SLIP:
+        return _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T)
+    while True:
+        t = _exact_steps(mode, P, t, t1, z, acc, cnt, T)
+        tb = min(t + P[P_H], t1)
+        t, event, h = _rk_segment(mode, P, t, tb, z, h, rtol, atol, hmax, W, acc, cnt, T)
+        if event or t >= t1 or cnt[C_FAIL] > 0:
+            return t, event, h
+
+
+@jit
+def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
+    """:func:`segment` by Dormand-Prince steps alone."""
     k1, k7, znew, zb, kb, K = W[0], W[1], W[2], W[3], W[4], W[5:12]
     g0 = switch_function(mode, P, t, z)
     if g0 < 0.0:
@@ -1212,6 +1435,7 @@ def parameters(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y, alpha_y
     P[P_SR] = static_ratio
     P[P_CPX], P[P_SPX] = math.cos(phase_x), math.sin(phase_x)
     P[P_CPY], P[P_SPY] = math.cos(phase_y), math.sin(phase_y)
+    linear_flows(P)
     return P
 
 
