@@ -340,9 +340,13 @@ QUOTES: list[Quote] = [
           r"^\w+ \| \S+ \| \S+ \| \S+ \| (\S+) \|"),
     *(Quote(_IP, n(before) + r"(\w+)" + n(", #, "), _VZERO, f"| {point} | ",
             r"^\S+ \| (\w+) \| \S+ \| \S+ \| (\S+) \|")
-      for before, point in (("error 1.8e-3, 37.6 s | ", "transverse bench, v0 = -1.4e-4 m/s"),
-                            ("error 3.4e-4, 288 s | ", "transverse bench, phase_y = pi/2"),
-                            ("error 2.7e-4, 39.2 s | ", "fuzz_plane slowest (undamped)"))),
+      # the "now" column (the "after" one is the record of 2026-11-28)
+      for before, point in (("error 1.8e-3, 37.6 s | periodic, 7.2e-8, 0.15 s | ",
+                             "transverse bench, v0 = -1.4e-4 m/s"),
+                            ("error 3.4e-4, 288 s | periodic, 7.5e-8, 0.10 s | ",
+                             "transverse bench, phase_y = pi/2"),
+                            ("error 2.7e-4, 39.2 s | periodic, 3.8e-8, 0.16 s | ",
+                             "fuzz_plane slowest (undamped)"))),
     # docs/contact_geometry.md, the closed forms and the spring-row reference
     *(_closed_forms(a) for a in ("0.2", "0.5", "0.8", "1.0", "1.5", "3.0")),
     Quote(_CG, n("(sphere # against flat # at $a = 0.5, \\bar v = 0.3$)"), _CONV,
