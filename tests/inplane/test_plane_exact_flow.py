@@ -17,8 +17,8 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
-from test_plane_tangent import REGIMES
 
+from plane_regimes import REGIMES
 from vibrofriction._kernels import plane
 
 
