@@ -199,6 +199,21 @@ def test_creeping_point_is_periodic_and_bounded(p: dict) -> None:
     assert 0.5 < float(o["multiplier"]) < 1.0
 
 
+@pytest.mark.parametrize("p", CREEPING, ids=[p["label"] for p in CREEPING])
+def test_creeping_orbit_found_before_the_transient_sticks_through(p: dict) -> None:
+    """At these points the transient's 20th period sticks throughout (its period map has two
+    unit multipliers there, ``J - I`` is singular and Newton failed: plain iteration took
+    1457 and 1911 periods); the rough orbit tried after 8 periods finds the orbit, in under
+    100 periods in all, and it is the reference's (the test above)."""
+    d = _system(p)
+    o = solve_points(d.alpha, d.beta, d.amplitude, p["v_inertial"], d.zeta, d.eta_c, d.a_x,
+                     d.phase_x, d.a_y, d.phase_y, *d.pin_y)
+    assert int(o["status"]) == Status.PERIODIC.code
+    assert float(o["work"]) < 100
+    err = float(o["error"])
+    assert abs(float(o["mu_ratio"]) - p["mu_ref"]) <= err + p["err_ref"]
+
+
 def test_zero_velocity_arrays() -> None:
     """A mixed batch: 2-D points at ``V = 0`` and not, 1-D at ``V = 0``: each row is the
     one computed alone (the engine's row routing)."""

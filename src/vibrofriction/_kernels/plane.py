@@ -1335,6 +1335,9 @@ def _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J,
 TRANSIENT_PERIODS, TRANSIENT_EXIT = 20, 1e-4
 """The transient before Newton's method: at most this many periods, until the map moves the
 state by less than this (:func:`_transient`)."""
+TRANSIENT_EARLY, EARLY_ITERATIONS = 8, 6
+"""... where it has not settled after this many, Newton's rough orbit is tried from there
+with at most this many steps (:func:`_start_transient`)."""
 TRANSIENT_RTOL = 1e-6
 """The tolerance of the transient before Newton's method (:func:`_transient`)."""
 ITER_RESERVE = 2000
@@ -1461,7 +1464,8 @@ def plane_steady_state(alpha, beta, a, V, zeta, eta, a_x, phase_x, a_y, phase_y,
 @jit
 def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
     """A transient by plain iteration of the period map on ``s`` (in place): until the
-    map moves the state by < 1e-4, at most 20 periods. Returns the periods run.
+    map moves the state by < 1e-4, at most ``max_periods``. Returns ``(periods,
+    settled)``, ``settled`` where it stopped on that test.
 
     Where Newton's method follows (``V != 0``) the transient only brings the state near
     the orbit, at the tolerance :data:`TRANSIENT_RTOL` (or ``rtol`` if looser); at
@@ -1473,7 +1477,7 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
     periods = 0
     rt = max(rtol, TRANSIENT_RTOL) if P[P_V] != 0.0 else rtol
     # a transient by plain iteration: until the map moves the state by < 1e-4
-    for _ in range(min(TRANSIENT_PERIODS, max_periods)):
+    for _ in range(max_periods):
         ok, _, _ = period_map(P, s, s2, rt, rt, hmax, W, acc, cnt, max_events)
         periods += 1
         if not ok:
@@ -1483,12 +1487,44 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
             s[i] = s2[i]
         W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
         if d < TRANSIENT_EXIT:
-            break
-    return periods
+            return periods, True
+    return periods, False
 
 
 @jit
-def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=False):
+def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info):
+    """The transient before the orbit's search (:func:`_transient`), with an early attempt:
+    after :data:`TRANSIENT_EARLY` periods that have not settled, the rough orbit
+    (:func:`_rough_orbit`, at most :data:`EARLY_ITERATIONS` Newton steps); where it is
+    found ``s`` is that orbit and ``J`` its Jacobian, else ``s``, the phase and the failure
+    count are as the transient left them and it goes on, to :data:`TRANSIENT_PERIODS` in
+    all.  Returns ``(periods, found)``.
+    """
+    first = min(TRANSIENT_EARLY, max_periods)
+    periods, settled = _transient(P, s, rtol, hmax, W, cnt, max_events, first)
+    if settled or periods < TRANSIENT_EARLY or P[P_V] == 0.0 or cnt[C_FAIL] > 0 \
+            or rtol >= ROUGH_RTOL:
+        if not settled and cnt[C_FAIL] == 0 and periods == first:
+            more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
+                                 min(TRANSIENT_PERIODS, max_periods) - first)
+            periods += more
+        return periods, False
+    scale = 1.0 + _dist(s, np.zeros(N_S), P[P_K])
+    found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, False,
+                         EARLY_ITERATIONS) == ROUGH_FOUND
+    periods += int(info[2])
+    info[:] = 0.0
+    cnt[C_LIMIT] = 0  # the transient's periods have the whole step budget
+    if not found:
+        more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
+                             min(TRANSIENT_PERIODS, max_periods) - first)
+        periods += more
+    return periods, found
+
+
+@jit
+def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=False,
+                 max_iter=12):
     """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
 
     ``given``: ``J`` holds a neighbour's Jacobian (a continuation), for chord steps from
@@ -1511,8 +1547,8 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     hrel = ROUGH_STEP * ROUGH_RTOL
     if given:
         info[3] = math.inf  # no J differenced at this point yet
-    if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, 12, J,
-              info, given, hrel, 0.0, np.zeros(7)):
+    if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, max_iter,
+              J, info, given, hrel, 0.0, np.zeros(7)):
         if info[0] == 0 or info[3] > CHORD_NEAR * 1e-12 * scale:
             # no J yet (the start was the rough orbit), or one differenced farther off
             # than the solve at rtol would keep (:func:`newton`'s rule): afresh here
@@ -1538,7 +1574,7 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
 
 @jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
-                  means, given=False):
+                  means, given=False, rough_found=False):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
     mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
@@ -1553,7 +1589,10 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
     # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
     use_newton = P[P_V] != 0.0
     if use_newton:
-        rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given)
+        if rough_found:  # ``s`` is the rough orbit already, ``J`` its Jacobian
+            rough = ROUGH_FOUND
+        else:
+            rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given)
         periods += int(info[2])
         info[:] = 0.0
         conv = False
@@ -1739,7 +1778,11 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
     s_start = s.copy()
     k = P[P_K]
     warm = warm and P[P_V] != 0.0
-    periods = 0 if warm else _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods)
+    found = False
+    periods = 0
+    if not warm:
+        periods, found = _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods,
+                                          J, info)
     status = ST_FAILED
     mult = math.nan
     use_newton = False
@@ -1750,7 +1793,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
         status, mult, use_newton, periods = _orbit_search(
             P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means,
-            warm and given)
+            warm and given, found)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
