@@ -10,7 +10,8 @@ At each regime of ``bench_ratios.REGIMES`` this script times, side by side in on
   ``1e-10`` (``rtol``, the answer), ``1e-8`` (``100 rtol``: the error estimate, and the
   rough Newton stage with its difference Jacobian) and ``1e-6`` (the transient);
 * the transient's length from the sliding start (periods until the map moves the state by
-  less than ``1e-4``, at most 20), as the solver runs it.
+  less than ``1e-4``, at most 8, where the solver first tries Newton's method; 20 before
+  2026-11-30), as the solver runs it.
 
 From these, three floors of a 2-D answer in units of the flat point:
 
@@ -78,13 +79,15 @@ def _period_time(P, s_out, tol: float, tangent: bool = False) -> float:
 
 
 def _transient_periods(P) -> int:
-    """The periods of the 2-D solver's transient from the sliding start."""
+    """The periods of the 2-D solver's transient from the sliding start before Newton's
+    method is first tried (at most ``plane.TRANSIENT_EARLY``)."""
     W = np.zeros((pl.N_W, pl.N_Z))
     W[pl.W_MODE, 0] = pl.SLIP
     s = np.empty(pl.N_S)
     pl.start_state(P, 0, 0.0, 0.0, 0.0, s)
-    return int(pl._transient(P, s, 1e-10, pl.max_step(P), W, np.zeros(pl.N_C, np.int64),
-                             1000, 100_000))
+    periods, _ = pl._transient(P, s, 1e-10, pl.max_step(P), W, np.zeros(pl.N_C, np.int64),
+                               1000, pl.TRANSIENT_EARLY)
+    return int(periods)
 
 
 def bench() -> list[str]:
