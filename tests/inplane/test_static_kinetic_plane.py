@@ -229,13 +229,46 @@ def test_steady_history_carries_the_phase_at_the_section(label: str, d: Dimensio
 def test_a_motion_that_never_sticks_does_not_see_the_static_ratio(eta_c: float) -> None:
     """Constant load, fast sliding across a transverse oscillation: the contact slips from
     the sliding start on and never sticks, so ``s`` plays no part: the results of ``s =
-    1.7`` are those of ``s = 1`` bit for bit."""
+    1.7`` are those of ``s = 1``: bit for bit until 2026-11-30; since, ``s = 1`` tries
+    Newton's rough orbit after 8 periods of the transient and ``s > 1`` runs the 20, so the
+    answers agree to round-off, the multiplier (a Jacobian at another iterate) to ``1e-4``,
+    the stated error (an estimate) within a factor of 4, the effort not at all."""
     args = dict(zeta=0.1, eta_c=eta_c, a_y=0.3, phase_y=0.4)
     one = solve_points(0.5, 2.0, 0.0, 1.5, **args)
     more = solve_points(0.5, 2.0, 0.0, 1.5, **args, static_ratio=1.7)
     assert float(one["stick_fraction"]) == 0.0
     for k in one:
-        assert _equal(np.atleast_1d(one[k]).tolist(), np.atleast_1d(more[k]).tolist()), k
+        if k in EFFORT:
+            continue
+        a, b = np.atleast_1d(one[k]), np.atleast_1d(more[k])
+        if k == "static_ratio":
+            continue
+        if k == "multiplier":
+            assert np.allclose(a, b, rtol=0.0, atol=MULTIPLIER), k
+        elif k == "error":
+            assert 1 / ERROR_FACTOR <= float(b[0] / a[0]) <= ERROR_FACTOR, k
+        elif np.issubdtype(a.dtype, np.floating):
+            assert np.allclose(a, b, rtol=1e-12, atol=1e-14, equal_nan=True), k
+        else:
+            assert _equal(a.tolist(), b.tolist()), k
+
+
+def test_above_the_kinetic_circle_the_motion_picks_the_attractor() -> None:
+    """A jumping point where two orbits coexist above the kinetic circle (``s = 1.4``): the
+    solver's is the one the motion from the sliding start reaches (its mean over periods
+    100 to 150 of the history), not the other, 0.03 lower, that Newton's method tried after
+    8 periods of the transient found (the early attempt is therefore made at ``s = 1``
+    only)."""
+    d = Dimensionless(0.35678, 24.4559, 1.85623, a_y=0.0392208, phase_y=3.6367,
+                      static_ratio=1.4)
+    V = 0.123153
+    r = vf.friction_coefficient(d, v_inertial=V)
+    h = vf.simulate(d, v_inertial=V, periods=150)
+    tau, f, n = (np.asarray(x) for x in (h.tau, h.f, h.n))
+    late = tau >= 100 * TWO_PI
+    motion = np.trapezoid(f[late], tau[late]) / np.trapezoid(n[late], tau[late])
+    assert r.status is Status.PERIODIC
+    assert abs(r.mu_ratio - motion) < 1e-4, (r.mu_ratio, motion)
 
 
 def test_zero_velocity_is_held_where_the_static_circle_holds_a_region() -> None:

@@ -1498,12 +1498,14 @@ def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info)
     (:func:`_rough_orbit`, at most :data:`EARLY_ITERATIONS` Newton steps); where it is
     found ``s`` is that orbit and ``J`` its Jacobian, else ``s``, the phase and the failure
     count are as the transient left them and it goes on, to :data:`TRANSIENT_PERIODS` in
-    all.  Returns ``(periods, found)``.
+    all.  Not with a static circle above the kinetic one, where sliding and stick-slip
+    coexist: there the motion's own transient picks the attractor, as in a continuation.
+    Returns ``(periods, found)``.
     """
     first = min(TRANSIENT_EARLY, max_periods)
     periods, settled = _transient(P, s, rtol, hmax, W, cnt, max_events, first)
     if settled or periods < TRANSIENT_EARLY or P[P_V] == 0.0 or cnt[C_FAIL] > 0 \
-            or rtol >= ROUGH_RTOL:
+            or rtol >= ROUGH_RTOL or P[P_SR] != 1.0:
         if not settled and cnt[C_FAIL] == 0 and periods == first:
             more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
                                  min(TRANSIENT_PERIODS, max_periods) - first)
