@@ -565,31 +565,27 @@ def _cubic_dips(g0, d0, g1, d1):
     # p(s) = g0 + d0 s + b s^2 + c s^3
     b = 3.0 * (g1 - g0) - 2.0 * d0 - d1
     c = 2.0 * (g0 - g1) + d0 + d1
-    # p'(s) = d0 + 2 b s + 3 c s^2 = 0
+    # p'(s) = d0 + 2 b s + 3 c s^2 = 0 at the extrema (nan: none)
     qa, qb, qc = 3.0 * c, 2.0 * b, d0
-    roots = np.empty(2)
-    nr = 0
+    x1 = x2 = math.nan
     if qa == 0.0:
         if qb != 0.0:
-            roots[0] = -qc / qb
-            nr = 1
+            x1 = -qc / qb
     else:
         disc = qb * qb - 4.0 * qa * qc
         if disc >= 0.0:
             sq = math.sqrt(disc)
-            roots[0], roots[1] = (-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)
-            nr = 2
-    for i in range(nr):
-        x = roots[i]
+            x1, x2 = (-qb - sq) / (2.0 * qa), (-qb + sq) / (2.0 * qa)
+    for x in (x1, x2):
         if 0.0 < x < 1.0 and g0 + x * (d0 + x * (b + x * c)) <= 0.0:
             return True
     return False
 
 
 @jit
-def _stick_margin(P, t, w):
-    """The stick's switch function ``s n - |f|`` at the augmented state ``w`` and its rate
-    (``f = F w``, ``f' = F A w``).
+def _stick_margin(P, w):
+    """The stick's switch function ``s_r n - |f|`` at the augmented state ``w`` and its rate
+    (``f = F w``, ``f' = F A w``; ``n`` from the ``cos t``, ``sin t`` that ``w`` carries).
     """
     F, FA = P[P_F_STICK:P_FA_STICK], P[P_FA_STICK:P_PHI_FLIGHT]
     fx, fy, dfx, dfy = 0.0, 0.0, 0.0, 0.0
@@ -598,7 +594,7 @@ def _stick_margin(P, t, w):
         fy += F[N_L + j] * w[j]
         dfx += FA[j] * w[j]
         dfy += FA[N_L + j] * w[j]
-    n, dn = normal_force(P[P_A], t)
+    n, dn = _normal(P[P_A], w[N_Z], w[N_Z + 1])
     f = math.hypot(fx, fy)
     rate = P[P_SR] * dn - ((fx * dfx + fy * dfy) / f if f > 0.0 else math.hypot(dfx, dfy))
     return P[P_SR] * n - f, rate
@@ -617,27 +613,25 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
         Phi = P[P_PHI_STICK:P_F_STICK].reshape((N_L, N_L))
     else:
         Phi = P[P_PHI_FLIGHT:N_P].reshape((N_L, N_L))
+    if t + H > t1:
+        return t
     w, wn = np.empty(N_L), np.empty(N_L)
+    for i in range(N_Z):
+        w[i] = z[i]
+    w[N_Z], w[N_Z + 1], w[N_Z + 2] = math.cos(t), math.sin(t), 1.0
     tangent = T.shape[0] > 0
     ph = mode if mode != FLIGHT else 2
-    g0, d0 = 0.0, 0.0
-    first = True
+    g0, d0 = _stick_margin(P, w) if mode == STICK else (0.0, 0.0)
     while t + H <= t1:
-        for i in range(N_Z):
-            w[i] = z[i]
-        w[N_Z], w[N_Z + 1], w[N_Z + 2] = math.cos(t), math.sin(t), 1.0
         for i in range(N_L):
             v = 0.0
             for j in range(N_L):
                 v += Phi[i, j] * w[j]
             wn[i] = v
         tn = t + H
-        wn[N_Z], wn[N_Z + 1] = math.cos(tn), math.sin(tn)
+        wn[N_Z], wn[N_Z + 1], wn[N_Z + 2] = math.cos(tn), math.sin(tn), 1.0  # not propagated
         if mode == STICK:
-            if first:
-                g0, d0 = _stick_margin(P, t, w)
-                first = False
-            g1, d1 = _stick_margin(P, tn, wn)
+            g1, d1 = _stick_margin(P, wn)
             if g1 <= 0.0 or _cubic_dips(g0, H * d0, g1, H * d1):
                 break
             g0, d0 = g1, d1
@@ -653,6 +647,7 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
         _account(mode, P, t, H, z, wn, acc, ph)
         for i in range(N_Z):
             z[i] = wn[i]
+        w, wn = wn, w
         cnt[C_STEPS] += 1
         t = tn
     return t
@@ -670,10 +665,10 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     it is safe; the rest (a step that may hold the switch, the piece before ``t1``) by the
     Runge-Kutta steps of :func:`_rk_segment`.
     """
-    if switch_function(mode, P, t, z) < 0.0:
-        return t, True, h
     if mode == SLIP:
         return _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T)
+    if switch_function(mode, P, t, z) < 0.0:
+        return t, True, h
     while True:
         t = _exact_steps(mode, P, t, t1, z, acc, cnt, T)
         tb = min(t + P[P_H], t1)
@@ -1504,24 +1499,21 @@ def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info)
     """
     first = min(TRANSIENT_EARLY, max_periods)
     periods, settled = _transient(P, s, rtol, hmax, W, cnt, max_events, first)
-    if settled or periods < TRANSIENT_EARLY or P[P_V] == 0.0 or cnt[C_FAIL] > 0 \
-            or rtol >= ROUGH_RTOL or P[P_SR] != 1.0:
-        if not settled and cnt[C_FAIL] == 0 and periods == first:
-            more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
-                                 min(TRANSIENT_PERIODS, max_periods) - first)
-            periods += more
+    if settled or periods < first or cnt[C_FAIL] > 0:
         return periods, False
-    scale = 1.0 + _dist(s, np.zeros(N_S), P[P_K])
-    found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, False,
-                         EARLY_ITERATIONS) == ROUGH_FOUND
-    periods += int(info[2])
-    info[:] = 0.0
-    cnt[C_LIMIT] = 0  # the transient's periods have the whole step budget
-    if not found:
-        more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
-                             min(TRANSIENT_PERIODS, max_periods) - first)
-        periods += more
-    return periods, found
+    if periods == TRANSIENT_EARLY and P[P_V] != 0.0 and rtol < ROUGH_RTOL \
+            and P[P_SR] == 1.0:
+        scale = 1.0 + _dist(s, np.zeros(N_S), P[P_K])
+        found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, False,
+                             EARLY_ITERATIONS) == ROUGH_FOUND
+        periods += int(info[2])
+        info[:] = 0.0
+        cnt[C_LIMIT] = 0  # the transient's periods have the whole step budget
+        if found:
+            return periods, True
+    more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
+                         min(TRANSIENT_PERIODS, max_periods) - first)
+    return periods + more, False
 
 
 @jit
