@@ -1167,7 +1167,7 @@ def mean_normal(a):
 
 @jit
 def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
-           chord, hrel, polish, means):
+           chord, hrel, polish, means, near_tol):
     """Newton's method on ``Phi(s) - s`` (the Jacobian ``J`` of :func:`_jacobian`, of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
@@ -1175,13 +1175,16 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     and each trial period has a step budget (:data:`TRIAL_STEPS` times the iterate's);
     a trial that fails (budget, chatter) is a failed trial, not a failed point.
 
-    A Jacobian taken near the orbit (the residual within :data:`CHORD_NEAR` times
-    ``tol``) is kept for the next iterates (chord steps: a Jacobian costs about two
-    period maps) while each step cuts the residual by :data:`CHORD_RATE` at least;
-    otherwise, and where a kept one gives no descent, it is taken afresh at the
-    iterate.  With ``chord`` the ``J`` given (the orbit's, e.g. at another tolerance) is
-    used from the first step.  ``hrel``: the relative step of ``J`` where it is differenced;
-    ``info[3]`` gets the residual at the iterate where ``J`` was last taken.
+    A Jacobian taken near the orbit (the residual within ``near_tol``) is kept for the
+    next iterates (chord steps: a Jacobian costs about two period maps) while each step
+    cuts the residual by :data:`CHORD_RATE` at least; otherwise, and where a kept one
+    gives no descent, it is taken afresh at the iterate.  Until one is near, each full
+    step's map carries the tangent (:func:`period_map_tangent`), so that the iterate it
+    accepts has its Jacobian from the same integration.  With ``chord`` the ``J`` given (the
+    orbit's, e.g. at another tolerance) is used from the first step, else the first map
+    carries the tangent.  ``hrel``: the relative step of ``J`` where it is differenced;
+    ``info[3]`` gets the residual at the iterate where ``J`` was last taken (inf: none
+    taken); where the last iterate's tangent is at hand, ``J`` is that.
     ``polish > 0``: once below ``tol`` with a kept Jacobian, chord steps go on while each
     cuts the residual by :data:`CHORD_RATE`, down to ``polish * tol`` (a map each; the
     section residual enters the stated error).  ``means`` gets the means of the period
@@ -1191,11 +1194,15 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     ph = np.empty(N_S)
     pp = np.empty(N_S)
     sp = np.empty(N_S)
+    Jt = np.empty((N_S, N_S))
     k = P[P_K]
     periods = 0
     fail0 = cnt[C_FAIL]
     steps0 = cnt[C_STEPS]
-    ok, ifx, ify = period_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events)
+    if not chord:
+        info[3] = math.inf
+    ok, ifx, ify, have_tan = _trial_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events,
+                                        not chord, Jt)
     _means(P, ok, ifx, ify, acc, means)
     periods += 1
     if not ok:
@@ -1213,6 +1220,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     while it < max_iter:
         if res <= tol and not polishing:
             if fresh or res <= polish * tol or polish == 0.0:
+                _take_tangent(have_tan, Jt, J, res, info)
                 info[0], info[1] = it, res
                 info[2] += periods
                 return same_phase
@@ -1221,15 +1229,17 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
             break
         it += 1
         if fresh:
-            near = res <= CHORD_NEAR * tol
-            info[3] = res
-            periods = _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
-                                pp, periods, hrel)
-            if periods < 0:
-                info[2] += -periods
-                cnt[C_FAIL] = fail0
-                cnt[C_LIMIT] = 0
-                return False
+            near = res <= near_tol
+            if not _take_tangent(have_tan, Jt, J, res, info):
+                info[3] = res
+                periods = _jacobian(P, s, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
+                                    pp, periods, hrel)
+                if periods < 0:
+                    info[2] += -periods
+                    cnt[C_FAIL] = fail0
+                    cnt[C_LIMIT] = 0
+                    return False
+            have_tan = False
         A = J - np.eye(N_S)
         r = ph - s
         try:
@@ -1245,11 +1255,15 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
         lam = 1.0 if size <= cap else cap / size
         improved = False
         before = res
-        for _ in range(6):
+        for trial in range(6):
             for i in range(N_S):
                 sp[i] = s[i] + lam * ds[i]
             acc[:] = 0.0
-            ok, ifx, ify = period_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt, max_events)
+            # the full step carries the tangent until a Jacobian is near (a halved one,
+            # where the full step failed, need not: the iteration is off its quadratic
+            # course, and the tangent doubles a map's cost)
+            ok, ifx, ify, tan = _trial_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt,
+                                           max_events, not near and trial == 0, Jt)
             periods += 1
             if not ok:
                 cnt[C_FAIL] = fail0
@@ -1261,6 +1275,7 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
                         s[i] = sp[i]
                         ph[i] = pp[i]
                     res = rn
+                    have_tan = tan
                     same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
                     improved = True
                     break
@@ -1276,10 +1291,32 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
             break
         # kept only if differenced near the orbit (its multiplier decides the status)
         fresh = not near or res > CHORD_RATE * before
+    _take_tangent(have_tan, Jt, J, res, info)
     info[0], info[1] = it, res
     info[2] += periods
     cnt[C_LIMIT] = 0
     return (res <= tol or res <= floor) and same_phase
+
+
+@jit
+def _trial_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events, tangent, Jt):
+    """A period map of :func:`newton`: plain, or with ``tangent`` carrying its Jacobian into
+    ``Jt``.  Returns ``(ok, int f_x, int f_y, exact)``, ``exact`` where ``Jt`` holds.
+    """
+    if not tangent:
+        ok, ifx, ify = period_map(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events)
+        return ok, ifx, ify, False
+    ok, exact = period_map_tangent(P, s, sout, rtol, atol, hmax, W, acc, cnt, max_events, Jt)
+    return ok, W[12, 6], W[12, 7], ok and exact
+
+
+@jit
+def _take_tangent(have_tan, Jt, J, res, info):
+    """Where the iterate's tangent is at hand, ``J`` is it (taken at the residual ``res``)."""
+    if have_tan:
+        J[:] = Jt
+        info[3] = res
+    return have_tan
 
 
 CHORD_RATE = 0.1
@@ -1290,13 +1327,14 @@ a Jacobian from farther off gave multipliers off by up to 0.03 (150 random point
 
 
 @jit
-def _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel):
-    """Newton's Jacobian of the period map at ``s`` (``ph = Phi(s)``) into ``J``: the
-    tangent's, from one period map (:func:`period_map_tangent`), where it holds; else by
-    forward differences (:func:`_difference_jacobian`, six more).  Returns ``periods`` plus
-    the maps integrated, negated where a map failed.
+def _jacobian(P, s, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel):
+    """Newton's Jacobian of the period map at ``s`` into ``J``: the tangent's, from one
+    period map (:func:`period_map_tangent`), where it holds; else by forward differences
+    (:func:`_difference_jacobian`, six more, about that map's ``Phi(s)``).  Returns
+    ``periods`` plus the maps integrated, negated where a map failed.
     """
-    ok, exact = period_map_tangent(P, s, pp, rtol, atol, hmax, W, acc, cnt, max_events, J)
+    ph = np.empty(N_S)
+    ok, exact = period_map_tangent(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J)
     periods += 1
     if not ok:
         return -periods
@@ -1541,18 +1579,14 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     hrel = ROUGH_STEP * ROUGH_RTOL
     if given:
         info[3] = math.inf  # no J differenced at this point yet
+    near = CHORD_NEAR * 1e-12 * scale  # the solve at rtol's rule (:func:`_orbit_search`)
     if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, max_iter,
-              J, info, given, hrel, 0.0, np.zeros(7)):
-        if info[0] == 0 or info[3] > CHORD_NEAR * 1e-12 * scale:
-            # no J yet (the start was the rough orbit), or one differenced farther off
-            # than the solve at rtol would keep (:func:`newton`'s rule): afresh here
-            acc = np.zeros(4)
-            ph = np.empty(N_S)
-            ok, _, _ = period_map(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc, cnt,
-                                  max_events)
-            periods = _jacobian(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, acc, cnt,
-                                max_events, J, np.empty(N_S), np.empty(N_S), 1,
-                                hrel) if ok else -1
+              J, info, given, hrel, 0.0, np.zeros(7), near):
+        if info[3] > near:
+            # no J taken at the rough orbit (the neighbour's only), or one taken farther
+            # off than the solve at rtol would keep: afresh here
+            periods = _jacobian(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, np.zeros(4), cnt,
+                                max_events, J, np.empty(N_S), np.empty(N_S), 0, hrel)
             info[2] += abs(periods)
             if periods < 0:
                 W[W_MODE, 0] = hint
@@ -1594,7 +1628,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
             chord = rough == ROUGH_FOUND
             conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
                           100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
-                          POLISH if chord else 0.0, means)
+                          POLISH if chord else 0.0, means, CHORD_NEAR * 1e-12 * scale)
             periods += int(info[2])
         if conv:
             ev = np.linalg.eigvals(J.astype(np.complex128))
@@ -1641,7 +1675,7 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     if use_newton:
         conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
                       1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info, True, DIFF_STEP,
-                      0.0, loose)
+                      0.0, loose, CHORD_NEAR * 1e-12 * scale)
     else:
         conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
                        1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
