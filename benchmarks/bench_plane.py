@@ -109,9 +109,9 @@ def order() -> list[str]:
         plane.start_state(P, 0, 0.0, 0.0, 0.0, s)
         J = np.zeros((plane.N_S, plane.N_S))
         info = np.zeros(4)
-        assert plane.newton(P, s, rtol, rtol, hmax, W, cnt, 10000, 1e-13,
-                            max(1e-12, 100 * rtol), 30, J, info, False, plane.DIFF_STEP, 0.0,
-                            np.zeros(7))
+        assert plane.newton(P, s, np.empty(plane.N_S), False, rtol, rtol, hmax, W, cnt, 10000,
+                            1e-13, max(1e-12, 100 * rtol), 30, J, info, False, plane.DIFF_STEP,
+                            0.0, np.zeros(7), plane.CHORD_NEAR * 1e-13)
         out = np.zeros(7)
         before = cnt[plane.C_STEPS]
         plane.orbit_mean(P, s, rtol, rtol, hmax, W, cnt, 10000, out)

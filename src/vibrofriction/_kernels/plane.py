@@ -1166,8 +1166,8 @@ def mean_normal(a):
 
 
 @jit
-def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, info,
-           chord, hrel, polish, means, near_tol):
+def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J,
+           info, chord, hrel, polish, means, near_tol):
     """Newton's method on ``Phi(s) - s`` (the Jacobian ``J`` of :func:`_jacobian`, of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
@@ -1188,10 +1188,11 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     ``polish > 0``: once below ``tol`` with a kept Jacobian, chord steps go on while each
     cuts the residual by :data:`CHORD_RATE`, down to ``polish * tol`` (a map each; the
     section residual enters the stated error).  ``means`` gets the means of the period
-    map from the last iterate (:func:`orbit_mean`'s, computed on the way).
+    map from the last iterate (:func:`orbit_mean`'s, computed on the way), ``ph`` that
+    map's end, ``Phi(s)``; ``have_map``: they hold those of ``s`` already (that map is not
+    integrated again; Coulomb friction only, where the state fixes the phase).
     """
     acc = np.zeros(4)
-    ph = np.empty(N_S)
     pp = np.empty(N_S)
     sp = np.empty(N_S)
     Jt = np.empty((N_S, N_S))
@@ -1201,17 +1202,20 @@ def newton(P, s, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J, 
     steps0 = cnt[C_STEPS]
     if not chord:
         info[3] = math.inf
-    ok, ifx, ify, have_tan = _trial_map(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events,
-                                        not chord, Jt)
-    _means(P, ok, ifx, ify, acc, means)
-    periods += 1
-    if not ok:
-        info[2] += periods
-        return False
+    have_tan = False
+    if not have_map:
+        ok, ifx, ify, have_tan = _trial_map(P, s, ph, rtol, atol, hmax, W, acc, cnt,
+                                            max_events, not chord, Jt)
+        _means(P, ok, ifx, ify, acc, means)
+        periods += 1
+        if not ok:
+            info[2] += periods
+            return False
     # static_ratio > 1: the phase at the section is part of the state (W[W_MODE, 0],
     # kept through the search); an orbit must end in the phase it started from
     same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
-    cnt[C_LIMIT] = TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
+    # a given map's trials have the whole step budget (``s`` is an orbit already)
+    cnt[C_LIMIT] = 0 if have_map else TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
     res = _dist(ph, s, k)
     it = 0
     fresh = not chord  # J is to be differenced at this iterate
@@ -1525,14 +1529,15 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
 
 
 @jit
-def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info):
+def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info, R):
     """The transient before the orbit's search (:func:`_transient`), with an early attempt:
     after :data:`TRANSIENT_EARLY` periods that have not settled, the rough orbit
     (:func:`_rough_orbit`, at most :data:`EARLY_ITERATIONS` Newton steps); where it is
-    found ``s`` is that orbit and ``J`` its Jacobian, else ``s``, the phase and the failure
-    count are as the transient left them and it goes on, to :data:`TRANSIENT_PERIODS` in
-    all.  Not with a static circle above the kinetic one, where sliding and stick-slip
-    coexist: there the motion's own transient picks the attractor, as in a continuation.
+    found ``s`` is that orbit, ``J`` its Jacobian and ``R`` its record, else ``s``, the
+    phase and the failure count are as the transient left them and it goes on, to
+    :data:`TRANSIENT_PERIODS` in all.  Not with a static circle above the kinetic one,
+    where sliding and stick-slip coexist: there the motion's own transient picks the
+    attractor, as in a continuation.
     Returns ``(periods, found)``.
     """
     first = min(TRANSIENT_EARLY, max_periods)
@@ -1542,7 +1547,7 @@ def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info)
     if periods == TRANSIENT_EARLY and P[P_V] != 0.0 and rtol < ROUGH_RTOL \
             and P[P_SR] == 1.0:
         scale = 1.0 + _dist(s, np.zeros(N_S), P[P_K])
-        found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, False,
+        found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, False,
                              EARLY_ITERATIONS) == ROUGH_FOUND
         periods += int(info[2])
         info[:] = 0.0
@@ -1555,7 +1560,7 @@ def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info)
 
 
 @jit
-def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=False,
+def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=False,
                  max_iter=12):
     """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
 
@@ -1568,11 +1573,16 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     tighter, or a period map failed at the rough orbit): Newton at ``rtol`` as it would
     without this stage.  Unless found, ``s``, the phase hint and the failure count are as
     they were.  ``info[2]`` counts the periods (each a period at ``ROUGH_RTOL``).
+    ``R`` (:data:`N_R`) gets the rough orbit's record where its last map is at hand (its
+    Jacobian from that map's tangent): ``R[R_OK] = 1``, else 0.
     """
     info[:] = 0.0
+    R[R_OK] = 0.0
     if rtol >= ROUGH_RTOL:
         return ROUGH_SKIPPED
     sr = s.copy()
+    ph = np.empty(N_S)
+    means = np.zeros(7)
     hint = W[W_MODE, 0]
     fail0 = cnt[C_FAIL]
     floor = 100.0 * ROUGH_RTOL * scale
@@ -1580,9 +1590,11 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     if given:
         info[3] = math.inf  # no J differenced at this point yet
     near = CHORD_NEAR * 1e-12 * scale  # the solve at rtol's rule (:func:`_orbit_search`)
-    if newton(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor, max_iter,
-              J, info, given, hrel, 0.0, np.zeros(7), near):
-        if info[3] > near:
+    if newton(P, sr, ph, False, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor,
+              max_iter, J, info, given, hrel, 0.0, means, near):
+        if info[3] <= near:
+            _record_rough(sr, ph, means, J, R)
+        else:
             # no J taken at the rough orbit (the neighbour's only), or one taken farther
             # off than the solve at rtol would keep: afresh here
             periods = _jacobian(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, np.zeros(4), cnt,
@@ -1600,14 +1612,32 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given=Fal
     return ROUGH_FAILED
 
 
+R_S, R_PH, R_MEANS, R_OK, R_J = 0, N_S, 2 * N_S, 2 * N_S + 7, 2 * N_S + 8
+N_R = R_J + N_S * N_S
+"""The rough orbit's record (:func:`_rough_orbit`): its state, its map's end ``Phi(s)``
+and means (at :data:`ROUGH_RTOL`), 1 where the record holds, the Jacobian there (by
+rows).  The error's solve at ``100 rtol`` starts from it where that is ``ROUGH_RTOL``
+(:func:`_orbit_error`): the orbit's map there is integrated already."""
+
+
+@jit
+def _record_rough(s, ph, means, J, R):
+    R[R_S:R_S + N_S] = s
+    R[R_PH:R_PH + N_S] = ph
+    R[R_MEANS:R_MEANS + 7] = means
+    R[R_J:] = J.ravel()
+    R[R_OK] = 1.0
+
+
 @jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
-                  means, given=False, rough_found=False):
+                  means, R, given=False, rough_found=False):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
     mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
     it, ``means`` its means, ``J`` its Jacobian).  ``given``: ``J`` holds a neighbour's
-    Jacobian (:func:`_rough_orbit`).
+    Jacobian (:func:`_rough_orbit`); ``R`` the rough orbit's record (given where
+    ``rough_found``).
     """
     status = ST_FAILED
     mult = math.nan
@@ -1620,14 +1650,15 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
         if rough_found:  # ``s`` is the rough orbit already, ``J`` its Jacobian
             rough = ROUGH_FOUND
         else:
-            rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, given)
+            rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R,
+                                 given)
         periods += int(info[2])
         info[:] = 0.0
         conv = False
         if rough != ROUGH_FAILED:
             chord = rough == ROUGH_FOUND
-            conv = newton(P, s, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
-                          100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
+            conv = newton(P, s, np.empty(N_S), False, rtol, rtol, hmax, W, cnt, max_events,
+                          1e-12 * scale, 100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
                           POLISH if chord else 0.0, means, CHORD_NEAR * 1e-12 * scale)
             periods += int(info[2])
         if conv:
@@ -1658,10 +1689,15 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
 
 @jit
 def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newton, J, info,
-                 mult, res, periods, periods_to_orbit, means, out_f):
+                 mult, res, periods, periods_to_orbit, means, out_f, R):
     """The periodic orbit's means into ``means`` (where Newton found it, they are already
     there: its last map's), their error (the same orbit at ``100 rtol``, and the section
     residual ``res``) and the settling into ``out_f``. Returns the periods run.
+
+    Where the rough orbit's record ``R`` holds and ``100 rtol`` is :data:`ROUGH_RTOL`, the
+    solve at ``100 rtol`` is Newton's from the rough orbit, whose map is at hand, with its
+    Jacobian (Coulomb friction: the state fixes the phase); else, or where that ends above
+    the residual's tolerance, from the orbit at ``rtol`` with its Jacobian.
     """
     k = P[P_K]
     if not use_newton:  # else Newton's last map gave them
@@ -1673,9 +1709,26 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     info[:] = 0.0
     loose = np.zeros(7)
     if use_newton:
-        conv = newton(P, sl, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info, True, DIFF_STEP,
+        Jl = J.copy()
+        phl = np.empty(N_S)
+        given = R[R_OK] == 1.0 and 100.0 * rtol == ROUGH_RTOL and P[P_SR] == 1.0
+        if given:
+            sl[:] = R[R_S:R_S + N_S]
+            phl[:] = R[R_PH:R_PH + N_S]
+            loose[:] = R[R_MEANS:R_MEANS + 7]
+            Jl[:] = R[R_J:].reshape((N_S, N_S))
+        conv = newton(P, sl, phl, given, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                      1e-12 * scale, 1e4 * rtol * scale, 6, Jl, info, True, DIFF_STEP,
                       0.0, loose, CHORD_NEAR * 1e-12 * scale)
+        if given and not (conv and info[1] <= 1e-12 * scale):
+            # not to the residual's tolerance (the map's noise: its orbit is as uncertain,
+            # and the one nearest the orbit at rtol tells the tolerance's effect): from there
+            periods += int(info[2])
+            info[:] = 0.0
+            sl[:] = s
+            conv = newton(P, sl, phl, False, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt,
+                          max_events, 1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info,
+                          True, DIFF_STEP, 0.0, loose, CHORD_NEAR * 1e-12 * scale)
     else:
         conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
                        1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
@@ -1808,9 +1861,10 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
     warm = warm and P[P_V] != 0.0
     found = False
     periods = 0
+    R = np.zeros(N_R)  # the rough orbit's record
     if not warm:
         periods, found = _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods,
-                                          J, info)
+                                          J, info, R)
     status = ST_FAILED
     mult = math.nan
     use_newton = False
@@ -1821,7 +1875,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
         status, mult, use_newton, periods = _orbit_search(
             P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means,
-            warm and given, found)
+            R, warm and given, found)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
@@ -1830,7 +1884,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
             out_i[I_PERIOD] = 1
             periods = _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale,
                                    use_newton, J, info, mult, res, periods,
-                                   periods_to_orbit, means, out_f)
+                                   periods_to_orbit, means, out_f, R)
         elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
             status = _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status,
                                means, out_f)
