@@ -644,7 +644,7 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
                         v += Phi[r, m] * Y[m, q]
                     arg[r, q] = v
             Y[:] = arg
-        _account(mode, P, t, H, z, wn, acc, ph)
+        _account(mode, P, t, H, z, wn, acc, ph, 0.0, 0.0)
         for i in range(N_Z):
             z[i] = wn[i]
         w, wn = wn, w
@@ -737,14 +737,14 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             project(mode, P, t + sr, zb)
             if T.shape[0] > 0:
                 tangent_step(mode, P, t, z, k1, K, sr, zb, T)
-            _account(mode, P, t, sr, z, zb, acc, ph)
+            _account(mode, P, t, sr, z, zb, acc, ph, k1[6], kb[6])
             for i in range(N_Z):
                 z[i] = zb[i]
             cnt[C_EVENTS] += 1
             return t + sr, True, h
         if T.shape[0] > 0:
             tangent_step(mode, P, t, z, k1, K, hh, znew, T)
-        _account(mode, P, t, tn - t, z, znew, acc, ph)
+        _account(mode, P, t, tn - t, z, znew, acc, ph, k1[6], k7[6])
         for i in range(N_Z):
             z[i] = znew[i]
             k1[i] = k7[i]
@@ -756,7 +756,12 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
 
 
 @jit
-def _account(mode, P, t, dt, z0, z1, acc, ph):
+def _account(mode, P, t, dt, z0, z1, acc, ph, f0, f1):
+    """Add a step of ``dt`` from ``(t, z0)`` to ``z1`` to the phases' times ``acc``; in slip
+    the time with ``f_x < 0`` from ``f_x`` at its ends, ``f0`` and ``f1`` (the step's first
+    and last stages' rates of ``int f_x``: the direction a Jenkins contact's return to its
+    cone keeps).
+    """
     acc[ph] += dt
     if acc.shape[0] > 4 and mode != FLIGHT:  # a check asked for: the largest |f| - bound
         fx, fy, _, _, _ = contact(mode, P, t + dt, z1)
@@ -764,8 +769,6 @@ def _account(mode, P, t, dt, z0, z1, acc, ph):
         bound = P[P_SR] * n if mode == STICK else n  # static circle in stick, kinetic in slip
         acc[4] = max(acc[4], math.hypot(fx, fy) - bound)
     if mode == SLIP:
-        f0 = contact(SLIP, P, t, z0)[0]
-        f1 = contact(SLIP, P, t + dt, z1)[0]
         if f0 < 0.0 and f1 < 0.0:
             acc[3] += dt
         elif f0 < 0.0 <= f1:
