@@ -390,8 +390,8 @@ _DP_B = np.array([_B1, 0.0, _B3, _B4, _B5, _B6])
 N_T = 10
 """The tangent's work array ``T`` (``N_T`` x 6 x 6): ``T[0]`` the tangent ``Y`` carried
 along (``dz/ds``, the section state's six components), ``T[1]`` scratch, ``T[2]`` the
-Jacobian of the right-hand side, ``T[3]`` a stage's argument, ``T[4:10]`` the six stages;
-``T`` of length 0: no tangent (the plain integration)."""
+Jacobian of the right-hand side, ``T[3]`` scratch (an exact step's product), ``T[4:10]``
+the six stages; ``T`` of length 0: no tangent (the plain integration)."""
 
 
 @jit
@@ -402,7 +402,7 @@ def tangent_step(mode, P, t, z, k1, K, h, znew, T):
     Jenkins slip, the derivative of :func:`project` (``I - d d^T`` on ``e``).  Stick and
     flight are linear with constant coefficients: their ``Df`` is taken once a step.
     """
-    Y, st, D, arg = T[0], T[1, 0], T[2], T[3]
+    Y, st, D = T[0], T[1, 0], T[2]
     linear = mode != SLIP
     if linear:
         rhs_jacobian(mode, P, t, z, D)
@@ -414,21 +414,23 @@ def tangent_step(mode, P, t, z, k1, K, h, znew, T):
                     acc += _DP_A[i, j] * K[j, m]
                 st[m] = z[m] + h * acc
             rhs_jacobian(mode, P, t + _DP_C[i] * h, st, D)
-        for r in range(N_S):
-            for q in range(N_S):
-                acc = Y[r, q]
-                for j in range(i):
-                    acc += h * _DP_A[i, j] * T[4 + j, r, q]
-                arg[r, q] = acc
         KY = T[4 + i]
-        for q in range(N_S):
-            KY[0, q] = arg[2, q]  # y' = v
-            KY[1, q] = arg[3, q]
+        for q in range(N_S):  # a column at a time, its stage argument in scalars
+            a0, a1, a2, a3, a4, a5 = Y[0, q], Y[1, q], Y[2, q], Y[3, q], Y[4, q], Y[5, q]
+            for j in range(i):
+                c = h * _DP_A[i, j]
+                Kj = T[4 + j]
+                a0 += c * Kj[0, q]
+                a1 += c * Kj[1, q]
+                a2 += c * Kj[2, q]
+                a3 += c * Kj[3, q]
+                a4 += c * Kj[4, q]
+                a5 += c * Kj[5, q]
+            KY[0, q] = a2  # y' = v
+            KY[1, q] = a3
             for r in range(2, N_S):
-                acc = 0.0
-                for m in range(N_S):
-                    acc += D[r, m] * arg[m, q]
-                KY[r, q] = acc
+                KY[r, q] = (((((0.0 + D[r, 0] * a0) + D[r, 1] * a1) + D[r, 2] * a2)
+                              + D[r, 3] * a3) + D[r, 4] * a4) + D[r, 5] * a5
     for r in range(N_S):
         for q in range(N_S):
             acc = Y[r, q]
