@@ -668,7 +668,9 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     Runge-Kutta steps of :func:`_rk_segment`.
     """
     # the phase a constant at each call: the compiled steps specialise to it (a third
-    # faster than steps that test a variable phase)
+    # faster than steps that test a variable phase).  That rests on LLVM inlining the steps
+    # here; benchmarks/plane_floor.py's period costs show it (an edit of the steps that
+    # cost a third more per period had lost it)
     if mode == SLIP:
         return _rk_segment(SLIP, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T)
     if mode == STICK:
