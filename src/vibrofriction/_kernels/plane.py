@@ -1253,8 +1253,8 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
             near = res <= near_tol
             if not _take_tangent(have_tan, Jt, J, res, info):
                 info[3] = res
-                periods = _jacobian(P, s, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
-                                    pp, periods, hrel)
+                periods = _jacobian(P, s, np.empty(N_S), rtol, atol, hmax, W, acc, cnt,
+                                    max_events, J, sp, pp, periods, hrel, np.zeros(7))
                 if periods < 0:
                     info[2] += -periods
                     cnt[C_FAIL] = fail0
@@ -1348,17 +1348,20 @@ a Jacobian from farther off gave multipliers off by up to 0.03 (150 random point
 
 
 @jit
-def _jacobian(P, s, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel):
+def _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel,
+              means):
     """Newton's Jacobian of the period map at ``s`` into ``J``: the tangent's, from one
     period map (:func:`period_map_tangent`), where it holds; else by forward differences
-    (:func:`_difference_jacobian`, six more, about that map's ``Phi(s)``).  Returns
-    ``periods`` plus the maps integrated, negated where a map failed.
+    (:func:`_difference_jacobian`, six more, about that map's ``Phi(s)``).  That map's end
+    goes into ``ph``, its means into ``means``.  Returns ``periods`` plus the maps
+    integrated, negated where a map failed.
     """
-    ph = np.empty(N_S)
+    acc[:] = 0.0
     ok, exact = period_map_tangent(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J)
     periods += 1
     if not ok:
         return -periods
+    _means(P, ok, W[12, 6], W[12, 7], acc, means)
     if exact:
         return periods
     return _difference_jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp,
@@ -1590,8 +1593,8 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
     tighter, or a period map failed at the rough orbit): Newton at ``rtol`` as it would
     without this stage.  Unless found, ``s``, the phase hint and the failure count are as
     they were.  ``info[2]`` counts the periods (each a period at ``ROUGH_RTOL``).
-    ``R`` (:data:`N_R`) gets the rough orbit's record where its last map is at hand (its
-    Jacobian from that map's tangent): ``R[R_OK] = 1``, else 0.
+    ``R`` (:data:`N_R`) gets the rough orbit's record (its last map, and the Jacobian
+    there): ``R[R_OK] = 1``, else 0.
     """
     info[:] = 0.0
     R[R_OK] = 0.0
@@ -1614,13 +1617,14 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
         else:
             # no J taken at the rough orbit (the neighbour's only), or one taken farther
             # off than the solve at rtol would keep: afresh here
-            periods = _jacobian(P, sr, ROUGH_RTOL, ROUGH_RTOL, hmax, W, np.zeros(4), cnt,
-                                max_events, J, np.empty(N_S), np.empty(N_S), 0, hrel)
+            periods = _jacobian(P, sr, ph, ROUGH_RTOL, ROUGH_RTOL, hmax, W, np.zeros(4), cnt,
+                                max_events, J, np.empty(N_S), np.empty(N_S), 0, hrel, means)
             info[2] += abs(periods)
             if periods < 0:
                 W[W_MODE, 0] = hint
                 cnt[C_FAIL] = fail0
                 return ROUGH_SKIPPED
+            _record_rough(sr, ph, means, J, R)
         for i in range(N_S):
             s[i] = sr[i]
         return ROUGH_FOUND
