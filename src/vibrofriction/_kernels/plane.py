@@ -1193,7 +1193,7 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
     a trial that fails (budget, chatter) is a failed trial, not a failed point.
 
     A Jacobian taken near the orbit (the residual within ``near_tol``) is kept for the
-    next iterates (chord steps: a Jacobian costs about two period maps) while each step
+    next iterates (chord steps: a tangent map costs about 2.5 plain ones) while each step
     cuts the residual by :data:`CHORD_RATE` at least; otherwise, and where a kept one
     gives no descent, it is taken afresh at the iterate.  Until one is near, each full
     step's map carries the tangent (:func:`period_map_tangent`), so that the iterate it
@@ -1282,7 +1282,7 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
             acc[:] = 0.0
             # the full step carries the tangent until a Jacobian is near (a halved one,
             # where the full step failed, need not: the iteration is off its quadratic
-            # course, and the tangent doubles a map's cost)
+            # course, and a map with the tangent costs about 2.5 plain ones)
             ok, ifx, ify, tan = _trial_map(P, sp, pp, rtol, atol, hmax, W, acc, cnt,
                                            max_events, not near and trial == 0, Jt)
             periods += 1
