@@ -80,11 +80,11 @@ def test_newton_returns_the_tangent_of_the_iterate_it_was_taken_at(regime):
     info = np.zeros(4)
     ok = plane.newton(P, s, np.empty(plane.N_S), False, 1e-10, 1e-10, hmax, W, cnt, 1000,
                       1e-12 * scale, 1e-8 * scale, 12, J, info, False, plane.DIFF_STEP, 0.0,
-                      np.zeros(7), plane.CHORD_NEAR * 1e-12 * scale)
+                      np.zeros(7), plane._near(scale))
     assert ok and math.isfinite(info[3])
     _, _, Jf = _fresh(P, s, hmax, 1e-10)
     if info[3] == info[1]:
         assert np.array_equal(J, Jf)
     else:  # taken near the orbit (the chord rule), so near the tangent at it
-        assert info[3] <= plane.CHORD_NEAR * 1e-12 * scale
+        assert info[3] <= plane._near(scale)
         assert np.max(np.abs(J - Jf)) <= 1e-3 * (1.0 + np.max(np.abs(Jf)))

@@ -646,7 +646,7 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
                         v += Phi[r, m] * Y[m, q]
                     arg[r, q] = v
             Y[:] = arg
-        _account(mode, P, t, H, z, wn, acc, ph, 0.0, 0.0)
+        _account(mode, P, t, H, wn, acc, ph, 0.0, 0.0)
         for i in range(N_Z):
             z[i] = wn[i]
         w, wn = wn, w
@@ -751,14 +751,14 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             project(mode, P, t + sr, zb)
             if T.shape[0] > 0:
                 tangent_step(mode, P, t, z, k1, K, sr, zb, T)
-            _account(mode, P, t, sr, z, zb, acc, ph, k1[6], kb[6])
+            _account(mode, P, t, sr, zb, acc, ph, k1[6], kb[6])
             for i in range(N_Z):
                 z[i] = zb[i]
             cnt[C_EVENTS] += 1
             return t + sr, True, h
         if T.shape[0] > 0:
             tangent_step(mode, P, t, z, k1, K, hh, znew, T)
-        _account(mode, P, t, tn - t, z, znew, acc, ph, k1[6], k7[6])
+        _account(mode, P, t, tn - t, znew, acc, ph, k1[6], k7[6])
         for i in range(N_Z):
             z[i] = znew[i]
             k1[i] = k7[i]
@@ -770,8 +770,8 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
 
 
 @jit
-def _account(mode, P, t, dt, z0, z1, acc, ph, f0, f1):
-    """Add a step of ``dt`` from ``(t, z0)`` to ``z1`` to the phases' times ``acc``; in slip
+def _account(mode, P, t, dt, z1, acc, ph, f0, f1):
+    """Add a step of ``dt`` from ``t`` to the state ``z1`` to the phases' times ``acc``; in slip
     the time with ``f_x < 0`` from ``f_x`` at its ends, ``f0`` and ``f1`` (the step's first
     and last stages' rates of ``int f_x``: the direction a Jenkins contact's return to its
     cone keeps).
@@ -1348,6 +1348,14 @@ a Jacobian from farther off gave multipliers off by up to 0.03 (150 random point
 
 
 @jit
+def _near(scale):
+    """The residual within which a Jacobian is near the orbit of the solve at ``rtol``
+    (:data:`CHORD_NEAR` times its tolerance, ``1e-12 scale``).
+    """
+    return CHORD_NEAR * 1e-12 * scale
+
+
+@jit
 def _jacobian(P, s, ph, rtol, atol, hmax, W, acc, cnt, max_events, J, sp, pp, periods, hrel,
               means):
     """Newton's Jacobian of the period map at ``s`` into ``J``: the tangent's, from one
@@ -1609,7 +1617,7 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
     hrel = ROUGH_STEP * ROUGH_RTOL
     if given:
         info[3] = math.inf  # no J differenced at this point yet
-    near = CHORD_NEAR * 1e-12 * scale  # the solve at rtol's rule (:func:`_orbit_search`)
+    near = _near(scale)  # the solve at rtol's rule (:func:`_orbit_search`)
     if newton(P, sr, ph, False, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor,
               max_iter, J, info, given, hrel, 0.0, means, near):
         if info[3] <= near:
@@ -1680,7 +1688,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
             chord = rough == ROUGH_FOUND
             conv = newton(P, s, np.empty(N_S), False, rtol, rtol, hmax, W, cnt, max_events,
                           1e-12 * scale, 100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
-                          POLISH if chord else 0.0, means, CHORD_NEAR * 1e-12 * scale)
+                          POLISH if chord else 0.0, means, _near(scale))
             periods += int(info[2])
         if conv:
             ev = np.linalg.eigvals(J.astype(np.complex128))
@@ -1738,18 +1746,16 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
             phl[:] = R[R_PH:R_PH + N_S]
             loose[:] = R[R_MEANS:R_MEANS + 7]
             Jl[:] = R[R_J:].reshape((N_S, N_S))
-        conv = newton(P, sl, phl, given, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
-                      1e-12 * scale, 1e4 * rtol * scale, 6, Jl, info, True, DIFF_STEP,
-                      0.0, loose, CHORD_NEAR * 1e-12 * scale)
+        conv = _loose_orbit(P, sl, phl, given, rtol, hmax, W, cnt, max_events, scale, Jl,
+                            info, loose)
         if given and not (conv and info[1] <= 1e-12 * scale):
             # not to the residual's tolerance (the map's noise: its orbit is as uncertain,
             # and the one nearest the orbit at rtol tells the tolerance's effect): from there
             periods += int(info[2])
             info[:] = 0.0
             sl[:] = s
-            conv = newton(P, sl, phl, False, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt,
-                          max_events, 1e-12 * scale, 1e4 * rtol * scale, 6, J.copy(), info,
-                          True, DIFF_STEP, 0.0, loose, CHORD_NEAR * 1e-12 * scale)
+            conv = _loose_orbit(P, sl, phl, False, rtol, hmax, W, cnt, max_events, scale,
+                                J.copy(), info, loose)
     else:
         conv = iterate(P, sl, 100.0 * rtol, hmax, W, cnt, max_events,
                        1e-12 * scale, 1e4 * rtol * scale, ITER_RESERVE, info)
@@ -1776,6 +1782,16 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     elif mult < 1.0 - 1e-6:
         out_f[O_SETTLE] = math.log(d0 / max(err, 1e-300)) / -math.log(mult)
     return periods
+
+
+@jit
+def _loose_orbit(P, s, ph, have_map, rtol, hmax, W, cnt, max_events, scale, J, info, means):
+    """:func:`_orbit_error`'s solve at ``100 rtol``: chord steps on ``J`` from ``s`` (its map
+    ``ph`` and ``means`` given where ``have_map``) to ``1e-12 scale``.
+    """
+    return newton(P, s, ph, have_map, 100.0 * rtol, 100.0 * rtol, hmax, W, cnt, max_events,
+                  1e-12 * scale, 1e4 * rtol * scale, 6, J, info, True, DIFF_STEP, 0.0, means,
+                  _near(scale))
 
 
 @jit
