@@ -519,7 +519,8 @@ fall below round-off after about 18)."""
 @jit
 def _expm(A, h):
     """``exp(A h)`` by scaling and squaring: Taylor's series of ``A h / 2^q``, whose norm
-    is at most 1/2, summed to round-off, then squared ``q`` times.
+    is at most 1/2, summed to round-off, then squared ``q`` times.  ``A`` is sparse (each
+    axis couples to a few others), so each term multiplies the last by its nonzeros only.
     """
     n = A.shape[0]
     norm = 0.0
@@ -529,13 +530,31 @@ def _expm(A, h):
             row += abs(A[i, j])
         norm = max(norm, row * abs(h))
     q = max(0, int(math.ceil(math.log2(norm / 0.5)))) if norm > 0.5 else 0
-    X = A * (h / 2.0 ** q)
+    c = h / 2.0 ** q
+    rows, cols, vals = np.empty(n * n, np.int64), np.empty(n * n, np.int64), np.empty(n * n)
+    nnz = 0
+    for i in range(n):
+        for j in range(n):
+            if A[i, j] != 0.0:
+                rows[nnz], cols[nnz], vals[nnz] = i, j, A[i, j] * c
+                nnz += 1
     E = np.eye(n)
     term = np.eye(n)
+    nxt = np.empty((n, n))
     for m in range(1, EXPM_TERMS + 1):
-        term = term @ X / m
-        E += term
-        if np.max(np.abs(term)) <= 1e-17 * np.max(np.abs(E)):
+        nxt[:] = 0.0
+        for p in range(nnz):  # term @ X, X's nonzeros only
+            kk, j, v = rows[p], cols[p], vals[p] / m
+            for i in range(n):
+                nxt[i, j] += term[i, kk] * v
+        big, small = 0.0, 0.0
+        for i in range(n):
+            for j in range(n):
+                term[i, j] = nxt[i, j]
+                E[i, j] += nxt[i, j]
+                small = max(small, abs(nxt[i, j]))
+                big = max(big, abs(E[i, j]))
+        if small <= 1e-17 * big:
             break
     for _ in range(q):
         E = E @ E
@@ -1184,7 +1203,7 @@ def mean_normal(a):
 
 @jit
 def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor, max_iter, J,
-           info, chord, hrel, polish, means, near_tol):
+           info, chord, hrel, polish, means, near_tol, map_steps=0):
     """Newton's method on ``Phi(s) - s`` (the Jacobian ``J`` of :func:`_jacobian`, of
     ``Phi``), ``s`` in place.  ``info = (iterations, residual, periods integrated)``;
     returns True where the residual fell below ``tol``, or stopped falling (the
@@ -1207,7 +1226,10 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
     section residual enters the stated error).  ``means`` gets the means of the period
     map from the last iterate (:func:`orbit_mean`'s, computed on the way), ``ph`` that
     map's end, ``Phi(s)``; ``have_map``: they hold those of ``s`` already (that map is not
-    integrated again; Coulomb friction only, where the state fixes the phase).
+    integrated again; Coulomb friction only, where the state fixes the phase); with
+    ``have_map`` and not ``chord``, ``J`` is that map's tangent (taken at ``s``, perhaps
+    at another tolerance: the transient's last period, :func:`_start_transient`) and
+    ``map_steps`` its steps (the trials' budget).
     """
     acc = np.zeros(4)
     pp = np.empty(N_S)
@@ -1228,11 +1250,15 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
         if not ok:
             info[2] += periods
             return False
+    elif not chord:  # the given map's tangent, J
+        Jt[:] = J
+        have_tan = True
     # static_ratio > 1: the phase at the section is part of the state (W[W_MODE, 0],
     # kept through the search); an orbit must end in the phase it started from
     same_phase = P[P_SR] == 1.0 or W[W_MODE, 1] == W[W_MODE, 0]
-    # a given map's trials have the whole step budget (``s`` is an orbit already)
-    cnt[C_LIMIT] = 0 if have_map else TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0)
+    # a given orbit's trials have the whole step budget (``s`` is an orbit already)
+    cnt[C_LIMIT] = 0 if have_map and chord \
+        else TRIAL_STEPS * max(100, cnt[C_STEPS] - steps0 + map_steps)
     res = _dist(ph, s, k)
     it = 0
     fresh = not chord  # J is to be differenced at this iterate
@@ -1569,27 +1595,64 @@ def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info,
     Returns ``(periods, found)``.
     """
     first = min(TRANSIENT_EARLY, max_periods)
-    periods, settled = _transient(P, s, rtol, hmax, W, cnt, max_events, first)
-    if settled or periods < first or cnt[C_FAIL] > 0:
+    attempt = first == TRANSIENT_EARLY and P[P_V] != 0.0 and rtol < ROUGH_RTOL \
+        and P[P_SR] == 1.0
+    # where the attempt follows, the transient's last period carries the tangent
+    plain = first - 1 if attempt else first
+    periods, settled = _transient(P, s, rtol, hmax, W, cnt, max_events, plain)
+    if settled or periods < plain or cnt[C_FAIL] > 0:
         return periods, False
-    if periods == TRANSIENT_EARLY and P[P_V] != 0.0 and rtol < ROUGH_RTOL \
-            and P[P_SR] == 1.0:
-        scale = 1.0 + _dist(s, np.zeros(N_S), P[P_K])
-        found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, False,
-                             EARLY_ITERATIONS) == ROUGH_FOUND
-        periods += int(info[2])
-        info[:] = 0.0
-        cnt[C_LIMIT] = 0  # the transient's periods have the whole step budget
-        if found:
-            return periods, True
+    if attempt:
+        periods, found, stop = _attempt(P, s, rtol, hmax, W, cnt, max_events, J, info, R,
+                                        periods)
+        if stop:
+            return periods, found
     more, _ = _transient(P, s, rtol, hmax, W, cnt, max_events,
                          min(TRANSIENT_PERIODS, max_periods) - first)
     return periods + more, False
 
 
 @jit
-def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=False,
-                 max_iter=12):
+def _attempt(P, s, rtol, hmax, W, cnt, max_events, J, info, R, periods):
+    """:func:`_start_transient`'s early attempt: the transient's last period (with the
+    tangent, at its tolerance), then the rough orbit from there, Newton's first step on
+    that tangent.  Returns ``(periods, found, stop)``, ``stop`` where the transient stops
+    (found, settled or failed); unless found, ``s`` and the phase are that period's end's.
+    """
+    rt = max(rtol, TRANSIENT_RTOL)
+    ph = np.empty(N_S)
+    means = np.zeros(7)
+    acc = np.zeros(4)
+    steps0 = cnt[C_STEPS]
+    ok, ifx, ify, tan = _trial_map(P, s, ph, rt, rt, hmax, W, acc, cnt, max_events, True, J)
+    periods += 1
+    if not ok:
+        return periods, False, True
+    end_phase = W[W_MODE, 1]
+    d = _dist(ph, s, P[P_K])
+    if d >= TRANSIENT_EXIT:  # not settled: the attempt
+        _means(P, ok, ifx, ify, acc, means)
+        scale = 1.0 + _dist(ph, np.zeros(N_S), P[P_K])
+        # the map is Newton's first where its residual lies above the rough orbit's
+        # tolerance (so that orbit is one at that tolerance)
+        mapped = tan and d > 100.0 * ROUGH_RTOL * scale
+        found = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, False,
+                             EARLY_ITERATIONS, mapped, ph, means,
+                             int(cnt[C_STEPS] - steps0)) == ROUGH_FOUND
+        periods += int(info[2])
+        info[:] = 0.0
+        cnt[C_LIMIT] = 0  # the transient's periods have the whole step budget
+        if found:
+            return periods, True, True
+    # settled, or not found: the transient goes on from that period's end
+    s[:] = ph
+    W[W_MODE, 0] = end_phase
+    return periods, False, d < TRANSIENT_EXIT or cnt[C_FAIL] > 0
+
+
+@jit
+def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given, max_iter,
+                 mapped, ph0, means0, map_steps):
     """Newton's method at :data:`ROUGH_RTOL` from ``s``, where ``rtol`` is tighter.
 
     ``given``: ``J`` holds a neighbour's Jacobian (a continuation), for chord steps from
@@ -1602,7 +1665,9 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
     without this stage.  Unless found, ``s``, the phase hint and the failure count are as
     they were.  ``info[2]`` counts the periods (each a period at ``ROUGH_RTOL``).
     ``R`` (:data:`N_R`) gets the rough orbit's record (its last map, and the Jacobian
-    there): ``R[R_OK] = 1``, else 0.
+    there): ``R[R_OK] = 1``, else 0.  ``mapped``: ``s``'s period map is given (its end
+    ``ph0``, means ``means0``, ``map_steps`` steps, and its tangent in ``J``), perhaps at
+    another tolerance, for Newton's first step (:func:`newton`).
     """
     info[:] = 0.0
     R[R_OK] = 0.0
@@ -1611,6 +1676,9 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
     sr = s.copy()
     ph = np.empty(N_S)
     means = np.zeros(7)
+    if mapped:
+        ph[:] = ph0
+        means[:] = means0
     hint = W[W_MODE, 0]
     fail0 = cnt[C_FAIL]
     floor = 100.0 * ROUGH_RTOL * scale
@@ -1618,8 +1686,9 @@ def _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R, given=
     if given:
         info[3] = math.inf  # no J differenced at this point yet
     near = _near(scale)  # the solve at rtol's rule (:func:`_orbit_search`)
-    if newton(P, sr, ph, False, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor, floor,
-              max_iter, J, info, given, hrel, 0.0, means, near):
+    if newton(P, sr, ph, mapped, ROUGH_RTOL, ROUGH_RTOL, hmax, W, cnt, max_events, floor,
+              floor, max_iter, J, info, given and not mapped, hrel, 0.0, means, near,
+              map_steps):
         if info[3] <= near:
             _record_rough(sr, ph, means, J, R)
         else:
@@ -1680,7 +1749,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
             rough = ROUGH_FOUND
         else:
             rough = _rough_orbit(P, s, rtol, hmax, W, cnt, max_events, scale, J, info, R,
-                                 given)
+                                 given, 12, False, s, means, 0)
         periods += int(info[2])
         info[:] = 0.0
         conv = False
