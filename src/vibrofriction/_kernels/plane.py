@@ -1228,7 +1228,7 @@ def newton(P, s, ph, have_map, rtol, atol, hmax, W, cnt, max_events, tol, floor,
     map's end, ``Phi(s)``; ``have_map``: they hold those of ``s`` already (that map is not
     integrated again; Coulomb friction only, where the state fixes the phase); with
     ``have_map`` and not ``chord``, ``J`` is that map's tangent (taken at ``s``, perhaps
-    at another tolerance: the transient's last period, :func:`_start_transient`) and
+    at another tolerance: the transient's last period, :func:`_attempt`) and
     ``map_steps`` its steps (the trials' budget).
     """
     acc = np.zeros(4)
@@ -1585,8 +1585,9 @@ def _transient(P, s, rtol, hmax, W, cnt, max_events, max_periods):
 @jit
 def _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods, J, info, R):
     """The transient before the orbit's search (:func:`_transient`), with an early attempt:
-    after :data:`TRANSIENT_EARLY` periods that have not settled, the rough orbit
-    (:func:`_rough_orbit`, at most :data:`EARLY_ITERATIONS` Newton steps); where it is
+    after :data:`TRANSIENT_EARLY` periods that have not settled (the last carries the
+    tangent, :func:`_attempt`), the rough orbit (:func:`_rough_orbit`, at most
+    :data:`EARLY_ITERATIONS` Newton steps, the first on that tangent); where it is
     found ``s`` is that orbit, ``J`` its Jacobian and ``R`` its record, else ``s``, the
     phase and the failure count are as the transient left them and it goes on, to
     :data:`TRANSIENT_PERIODS` in all.  Not with a static circle above the kinetic one,
