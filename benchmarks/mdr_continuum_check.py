@@ -24,7 +24,12 @@ the cells' midpoints) stepped by the same rule on the same time steps must conve
 as ``M`` grows, so this isolates the discretisation in ``xi``; the largest number of pieces
 says what a continuum solver would carry.
 
-    PYTHONPATH=src python benchmarks/mdr_continuum_check.py [--write]
+``--dynamics`` also couples the row to the body (:func:`coupled`: ``y'' + gamma y' + alpha y
+= -F``, ``u = y + V tau``, velocity Verlet with the damping by the trapezoidal rule, from
+steady sliding, 80 periods, the mean over the last) at a few points and compares
+``mu_ratio`` with the MDR solver's answer and stated error (a few minutes: plain Python).
+
+    PYTHONPATH=src python benchmarks/mdr_continuum_check.py [--dynamics] [--write]
 
 ``--write`` appends the run to benchmarks/results/mdr_continuum.md.
 """
@@ -32,6 +37,7 @@ says what a continuum solver would carry.
 from __future__ import annotations
 
 import argparse
+import bisect
 import math
 from pathlib import Path
 
@@ -204,6 +210,97 @@ def spring_row(m: Motion, M: int) -> np.ndarray:
     return np.array(forces)
 
 
+class Coupled(Motion):
+    """The body's own motion as ``u``: cubic Hermite between the step ends kept, linear
+    inside the step being taken (the points touching down in it)."""
+
+    def __init__(self, n: float, a: float, k: float) -> None:
+        super().__init__(n, a, 0.0, 0.0)
+        self.c = (n + 1.0) / n / k
+        self.ts: list[float] = []
+        self.us: list[float] = []
+        self.ds: list[float] = []
+        self.step = (math.inf, 0.0, 0.0, 0.0)  # (t0, u0, t1, u1) of the step being taken
+
+    def keep(self, t: float, u: float, du: float) -> None:
+        self.ts.append(t)
+        self.us.append(u)
+        self.ds.append(du)
+
+    def u(self, t: float) -> float:
+        t0, u0, t1, u1 = self.step
+        if t >= t0:
+            return u0 + (u1 - u0) * (t - t0) / (t1 - t0)
+        i = min(max(bisect.bisect_left(self.ts, t) - 1, 0), len(self.ts) - 2)
+        h = self.ts[i + 1] - self.ts[i]
+        s = (t - self.ts[i]) / h
+        return ((2 * s**3 - 3 * s**2 + 1) * self.us[i] + (s**3 - 2 * s**2 + s) * h * self.ds[i]
+                + (3 * s**2 - 2 * s**3) * self.us[i + 1] + (s**3 - s**2) * h * self.ds[i + 1])
+
+
+def coupled(alpha: float, beta: float, a: float, V: float, zeta: float, n: float,
+            steps: int, periods: int = 80) -> float:
+    """``mu_ratio`` of the row without springs driving the body (the scaled model of
+    ``_kernels/mdr.py``), from steady sliding, over the last of ``periods`` periods of
+    ``steps`` steps each (the force at the step ends over the normal force there)."""
+    k, gamma = beta - alpha, 2.0 * zeta * math.sqrt(alpha)
+    m = Coupled(n, a, k)
+    h = 2.0 * math.pi / steps
+    pieces = [[0.0, m.radius(0.0), "AFF", m.c * m.delta(0.0), -m.c]]  # all slipping on
+    F = k * _force(m, pieces, 0.0)
+    y, v = -F / alpha, 0.0  # the spring balances the sliding force
+    m.keep(0.0, y, V)
+    acc = -(alpha * y + F)
+    sum_f = sum_n = 0.0
+    for j in range(periods * steps):
+        t0, t1 = j * h, (j + 1) * h
+        vh = v + 0.5 * h * acc
+        y1 = y + h * vh
+        u0, u1 = y + V * t0, y1 + V * t1
+        m.step = (t0, u0, t1, u1)
+        moved = [[p[0], p[1], "AFF", p[3] + u1 - u0, p[4]] if p[2] == "AFF" else list(p)
+                 for p in pieces]
+        r0, r1 = m.radius(t0), m.radius(t1)
+        if r1 < r0:
+            moved = [[p[0], min(p[1], r1), *p[2:]] for p in moved if p[0] < r1]
+        elif r1 > r0:
+            moved.append([r0, r1, "HIST", math.ceil(t1 / (2.0 * math.pi))])
+        pieces = _merge([q for p in moved for q in _clamp(m, p, m.delta(t1), u1)])
+        F = k * _force(m, pieces, u1)
+        v = (vh - 0.5 * h * (alpha * y1 + F)) / (1.0 + 0.5 * h * gamma)
+        acc = -(alpha * y1 + gamma * v + F)
+        y = y1
+        m.keep(t1, u1, v + V)
+        if j >= (periods - 1) * steps:
+            sum_f += F
+            sum_n += max(m.delta(t1), 0.0) ** (1.0 + 1.0 / n)
+    return sum_f / sum_n
+
+
+#: (alpha, beta, a, V, zeta, n) coupled to the body (--dynamics)
+DYNAMICS = [(0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 0.5, 0.3, 0.1, 2.0),
+            (1.0, 3.0, 0.7, 0.5, 0.1, 1.0), (0.5, 4.0, 1.5, 0.3, 0.0, 2.0)]
+
+
+def dynamics() -> list[str]:
+    from vibrofriction.solver import solve_points
+
+    lines = ["| alpha, beta, a, V, zeta, n | MDR solver mu +- error | continuum mu, 1000 "
+             "steps | 2000 steps | extrapolated (order 2) | difference / solver's error |",
+             "|---|---|---|---|---|---|"]
+    for case in DYNAMICS:
+        keys = ("alpha", "beta", "amplitude", "v_inertial", "zeta", "profile_exponent")
+        out = solve_points(**{key: np.array([v]) for key, v in zip(keys, case, strict=True)})
+        mu, err = float(out["mu_ratio"][0]), float(out["error"][0])
+        m1, m2 = coupled(*case, 1000), coupled(*case, 2000)
+        ext = m2 + (m2 - m1) / 3.0
+        line = (f"| {', '.join(f'{v:g}' for v in case)} | {mu:.8f} +- {err:.1e} | "
+                f"{m1:.8f} | {m2:.8f} | {ext:.8f} | {abs(ext - mu) / err:.2f} |")
+        print(line, flush=True)
+        lines.append(line)
+    return lines
+
+
 def run() -> list[str]:
     head = " | ".join(f"M = {M}" for M in SPRINGS)
     lines = [f"| n, a, V, A | pieces at most | largest force | {head} |",
@@ -226,14 +323,19 @@ def run() -> list[str]:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
+    ap.add_argument("--dynamics", action="store_true", help="also coupled to the body")
     args = ap.parse_args()
     lines = run()
+    if args.dynamics:
+        lines += ["", *dynamics(), "", "The row coupled to the body: velocity Verlet (the "
+                  "damping by the trapezoidal rule) from steady sliding, 80 periods, mu over "
+                  "the last; extrapolated from the two step sizes as second order."]
     if args.write:
+        flag = " --dynamics" if args.dynamics else ""
         append_run(RESULTS, "The MDR row without springs against the spring row",
-                   "PYTHONPATH=src python benchmarks/mdr_continuum_check.py --write",
+                   f"PYTHONPATH=src python benchmarks/mdr_continuum_check.py{flag} --write",
                    f"{CYCLES} drive cycles of {STEPS} time steps each, a prescribed motion "
                    "(no body dynamics); deterministic.", lines)
-
 
 if __name__ == "__main__":
     main()
