@@ -279,7 +279,9 @@ def coupled(alpha: float, beta: float, a: float, V: float, zeta: float, n: float
 
 #: (alpha, beta, a, V, zeta, n) coupled to the body (--dynamics)
 DYNAMICS = [(0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 0.5, 0.3, 0.1, 2.0),
-            (1.0, 3.0, 0.7, 0.5, 0.1, 1.0), (0.5, 4.0, 1.5, 0.3, 0.0, 2.0)]
+            (1.0, 3.0, 0.7, 0.5, 0.1, 1.0), (0.5, 4.0, 1.5, 0.3, 0.1, 2.0)]
+# (the undamped jumping point (0.5, 4, 1.5, 0.3, 0, 2) settles over hundreds of periods: mu
+# 0.197, 0.212, 0.2078, 0.20801 after 40, 80, 160, 240 at 500 steps, the solver's 0.20798)
 
 
 def dynamics() -> list[str]:
