@@ -336,8 +336,9 @@ def main() -> None:
         flag = " --dynamics" if args.dynamics else ""
         append_run(RESULTS, "The MDR row without springs against the spring row",
                    f"PYTHONPATH=src python benchmarks/mdr_continuum_check.py{flag} --write",
-                   f"{CYCLES} drive cycles of {STEPS} time steps each, a prescribed motion "
-                   "(no body dynamics); deterministic.", lines)
+                   f"{CYCLES} drive cycles of {STEPS} time steps each, a prescribed motion"
+                   + ("; below it the row driving the body" if args.dynamics else "")
+                   + "; deterministic.", lines)
 
 if __name__ == "__main__":
     main()
