@@ -163,6 +163,20 @@ def _force(m: Motion, pieces: list[list], u1: float) -> float:
     return F
 
 
+def _advance(m: Motion, pieces: list[list], t0: float, t1: float, u0: float,
+             u1: float) -> list[list]:
+    """The profile after a step from ``t0`` to ``t1`` that moves ``u`` from ``u0`` to
+    ``u1``: the stuck points shift, the contact's edge moves, then the clamp."""
+    moved = [[p[0], p[1], "AFF", p[3] + u1 - u0, p[4]] if p[2] == "AFF" else list(p)
+             for p in pieces]
+    r0, r1 = m.radius(t0), m.radius(t1)
+    if r1 < r0:  # unloading: the points beyond r1 leave
+        moved = [[p[0], min(p[1], r1), *p[2:]] for p in moved if p[0] < r1]
+    elif r1 > r0:  # loading: the points that touched down in the step
+        moved.append([r0, r1, "HIST", math.ceil(t1 / (2.0 * math.pi))])
+    return _merge([q for p in moved for q in _clamp(m, p, m.delta(t1), u1)])
+
+
 def continuum(m: Motion) -> tuple[np.ndarray, int]:
     """The force at every step's end, and the most pieces held."""
     dt = 2.0 * math.pi / STEPS
@@ -170,15 +184,8 @@ def continuum(m: Motion) -> tuple[np.ndarray, int]:
     t, u0, forces, most = 0.0, m.u(0.0), [], 1
     for k in range(CYCLES * STEPS):
         t1 = (k + 1) * dt
-        u1, d1 = m.u(t1), m.delta(t1)
-        moved = [[p[0], p[1], "AFF", p[3] + u1 - u0, p[4]] if p[2] == "AFF" else list(p)
-                 for p in pieces]  # stuck points shift with u
-        r0, r1 = m.radius(t), m.radius(t1)
-        if r1 < r0:  # unloading: the points beyond r1 leave
-            moved = [[p[0], min(p[1], r1), *p[2:]] for p in moved if p[0] < r1]
-        elif r1 > r0:  # loading: the points that touched down in the step
-            moved.append([r0, r1, "HIST", math.ceil(t1 / (2.0 * math.pi))])
-        pieces = _merge([q for p in moved for q in _clamp(m, p, d1, u1)])
+        u1 = m.u(t1)
+        pieces = _advance(m, pieces, t, t1, u0, u1)
         most = max(most, len(pieces))
         forces.append(_force(m, pieces, u1))
         t, u0 = t1, u1
@@ -258,14 +265,7 @@ def coupled(alpha: float, beta: float, a: float, V: float, zeta: float, n: float
         y1 = y + h * vh
         u0, u1 = y + V * t0, y1 + V * t1
         m.step = (t0, u0, t1, u1)
-        moved = [[p[0], p[1], "AFF", p[3] + u1 - u0, p[4]] if p[2] == "AFF" else list(p)
-                 for p in pieces]
-        r0, r1 = m.radius(t0), m.radius(t1)
-        if r1 < r0:
-            moved = [[p[0], min(p[1], r1), *p[2:]] for p in moved if p[0] < r1]
-        elif r1 > r0:
-            moved.append([r0, r1, "HIST", math.ceil(t1 / (2.0 * math.pi))])
-        pieces = _merge([q for p in moved for q in _clamp(m, p, m.delta(t1), u1)])
+        pieces = _advance(m, pieces, t0, t1, u0, u1)
         F = k * _force(m, pieces, u1)
         v = (vh - 0.5 * h * (alpha * y1 + F)) / (1.0 + 0.5 * h * gamma)
         acc = -(alpha * y1 + gamma * v + F)
