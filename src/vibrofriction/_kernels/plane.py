@@ -88,6 +88,38 @@ from .codes import (
     T_ZETA,
     T_ZETA_Y,
 )
+from .dopri import (
+    _A21,
+    _A31,
+    _A32,
+    _A41,
+    _A42,
+    _A43,
+    _A51,
+    _A52,
+    _A53,
+    _A54,
+    _A61,
+    _A62,
+    _A63,
+    _A64,
+    _A65,
+    _B1,
+    _B3,
+    _B4,
+    _B5,
+    _B6,
+    _C2,
+    _C3,
+    _C4,
+    _C5,
+    _E1,
+    _E3,
+    _E4,
+    _E5,
+    _E6,
+    _E7,
+)
 from .jit import jit
 from .steady import history, lagrange_weight
 
@@ -151,19 +183,6 @@ ROUGH_STEP = 1e3
 """... whose difference step is this times ``ROUGH_RTOL`` (at the default ``rtol = 1e-10``,
 :data:`DIFF_STEP` is the same multiple: the map's noise over the step alike)."""
 
-# Dormand-Prince 5(4) (Hairer, Norsett & Wanner, Solving ODEs I, table 5.2)
-_C2, _C3, _C4, _C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0
-_A21 = 1.0 / 5.0
-_A31, _A32 = 3.0 / 40.0, 9.0 / 40.0
-_A41, _A42, _A43 = 44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0
-_A51, _A52, _A53, _A54 = 19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0
-_A61, _A62, _A63, _A64, _A65 = (9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0,
-                                49.0 / 176.0, -5103.0 / 18656.0)
-_B1, _B3, _B4, _B5, _B6 = (35.0 / 384.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0,
-                           11.0 / 84.0)
-# error coefficients: b - b_hat (b_hat the 4th-order weights, the 7th stage FSAL)
-_E1, _E3, _E4, _E5, _E6, _E7 = (71.0 / 57600.0, -71.0 / 16695.0, 71.0 / 1920.0,
-                                -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0)
 
 
 @jit

@@ -20,7 +20,9 @@ from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 from ..capabilities import CAPABILITIES
 from ..schema import POSITIVE
+from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
+from .mdr_continuum import continuum_covers, mdr_continuum
 
 __all__ = ["mdr_friction", "mdr_row"]
 
@@ -38,6 +40,9 @@ MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows t
 # and one of thousands of springs would take minutes
 AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
+# below this tolerance a point the continuum covers is solved by it (exact in xi; rows of
+# thousands of springs otherwise); above it the rows are as fast (benchmarks/bench_mdr_tol.py)
+CONTINUUM_TOL = 1e-6
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
@@ -199,6 +204,17 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on,
                               state_tol=state_tol, static_ratio=static_ratio)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
+    if n_given is None and tol < CONTINUUM_TOL and not math.isinf(n_exp) \
+            and continuum_covers(amplitude, V, static_ratio):
+        on_substrate = inplane_on == "substrate"
+        hc, hs = inplane_forcing(alpha, 2.0 * zeta * math.sqrt(alpha), a_x, phase_x,
+                                 on_substrate)
+        r = mdr_continuum(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
+                          frame_offset(a_x, phase_x, on_substrate), max_periods=max_periods)
+        if r["status"] == "periodic" and r["error"] <= tol:
+            r.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(),
+                     mean_normal_ratio=float(theory_mean_normal(amplitude, n_exp)))
+            return r
     if math.isinf(n_exp):
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)
         r.update(order=math.inf, rows=(1,))

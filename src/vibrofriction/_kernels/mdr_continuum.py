@@ -1,0 +1,717 @@
+r"""The MDR row without springs: the continuum limit of :mod:`.mdr` (docs/contact_geometry.md).
+
+Scaled as in :mod:`.mdr`: the points of the row are labelled by ``xi >= 0``, their gap is
+``g = xi^n``, the indentation ``delta = 1 + a cos tau``, the normal force per unit ``xi``
+``w (delta - g)^+`` (``w = (n + 1)/n``), the tangential stiffness per unit ``xi``
+``k = beta - alpha``; ``c = w/k``.  The body (drift removed, in the substrate's frame):
+``y'' + gamma y' + alpha y = -F + h(tau)``, ``u = y + V tau`` its displacement relative to the
+substrate, ``F = k int e dxi`` the row's force.
+
+**Each point is a play operator.**  A point's contact spot ``q`` (so ``e = u - q``) stays
+put while ``|k e| <= w (delta - g)``; in terms of ``P = u - c delta`` and ``N = u + c delta``
+that is ``P + c g <= q <= N - c g``: the band's edges push ``q`` and never pull it.  A point
+touches down (``delta`` rising through ``g``) with ``q = u`` and forgets on leaving.  So,
+where neither ``P`` nor ``N`` changes direction over a time step, the new profile is exactly
+``q = clamp(q_0, P + c g, N - c g)``; the steps end where ``P' = u' - c delta'`` or
+``N' = u' + c delta'`` changes sign (a slipping zone sticks as a whole: the group events of
+the spring row).
+
+**The profile is a few pieces.**  A pushed point lies on ``q = P_j + c g`` (pushed from below
+at the step that ended with ``P = P_j``; kind ``AFP``) or ``q = N_j - c g`` (``AFN``): pieces
+affine in ``g``, so their fronts (where this step's edge reaches them) are closed forms.  A
+point stuck since it touched down keeps ``q = u(tau_on)`` (kind ``HIS``): ``P(tau_on) = u -
+c g`` decreases and ``N`` increases along such a piece (it touched down with the band growing
+faster than ``u`` moved), so each edge reaches it in one front, found by a root on the stored
+history of ``u`` (quintic Hermite interpolation of ``u, u', u''`` at the step ends).  The
+row's force is exact per piece: ``int (A + B g) dxi`` in closed form, and over a stuck
+``HIS`` range ``u (xi_b - xi_a) - (Q(tau_b) - Q(tau_a))`` with ``Q = int u rho' dtau``
+(``rho = delta^(1/n)`` the contact radius) integrated with the body.  The points touching
+down within a step enter stuck (``HIS``, through ``Q``) or on the band (``P' > 0`` or ``N' < 0``
+at the edge), by closed forms.
+
+**Kinks are step ends.**  Besides the group events the force's derivative jumps where an edge
+reaches a whole ``AFP``/``AFN`` piece (``P`` crosses ``P_j``) and its second derivative where
+a front crosses a piece's end: every such time is where the monotone ``P`` (or ``N``) of the
+step crosses a level known at the step's start (:func:`_levels`), located on the dense output
+and made a step end, as are ``tau = m pi`` (loading and unloading).  Between them the body's
+equation has a smooth right-hand side and Dormand-Prince 5(4) integrates it at its order.
+
+This first version covers Coulomb friction (``static_ratio = 1``), ``a < 1`` (the core of the
+contact never opens) and ``V > 0``.
+"""
+
+import math
+
+import numpy as np
+
+from .dopri import (
+    _A21,
+    _A31,
+    _A32,
+    _A41,
+    _A42,
+    _A43,
+    _A51,
+    _A52,
+    _A53,
+    _A54,
+    _A61,
+    _A62,
+    _A63,
+    _A64,
+    _A65,
+    _B1,
+    _B3,
+    _B4,
+    _B5,
+    _B6,
+    _C2,
+    _C3,
+    _C4,
+    _C5,
+    _D1,
+    _D3,
+    _D4,
+    _D5,
+    _D6,
+    _D7,
+    _E1,
+    _E3,
+    _E4,
+    _E5,
+    _E6,
+    _E7,
+)
+from .jit import jit
+
+TWO_PI = 2.0 * math.pi
+AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
+# piece table columns: xi range, kind, P_j / N_j (affine) or Q(tau_a) (history), the
+# history's tau range, xi_a^(n+1), xi_b^(n+1)
+X0, X1, KIND, VAL, TA, TB, X0P, X1P = range(8)
+N_PC = 8
+# history table columns: tau, u, u', u'', Q = int u rho' dtau
+HT, HU, HD, HDD, HQ = range(5)
+N_HS = 5
+# parameter vector
+P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
+N_PRM = 9
+# edge modes of a step: new points enter stuck, pushed from below, from above; none enter
+EDGE_STUCK, EDGE_POS, EDGE_NEG, EDGE_NONE = 0, 1, 2, 3
+N_Z = 6  # y, y', int u rho' over the step, int F, int stick area, int slip area
+N_ERR = 3  # the components the step's error control sees
+MAX_PIECES = 64
+GL_X = np.array([-0.9324695142031521, -0.6612093864662645, -0.2386191860831969,
+                 0.2386191860831969, 0.6612093864662645, 0.9324695142031521])
+GL_W = np.array([0.1713244923791704, 0.3607615730481386, 0.4679139345726910,
+                 0.4679139345726910, 0.3607615730481386, 0.1713244923791704])
+FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
+MAX_STEPS_HALF = 20000  # steps in a half period before giving up
+
+
+@jit
+def _hindex(HS, nh, t):
+    """The history interval ``i`` with ``HS[i, HT] <= t <= HS[i + 1, HT]``."""
+    lo = 0
+    hi = nh - 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        if HS[mid, HT] <= t:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+@jit
+def _hermite(HS, i, t):
+    """``u`` and ``u'`` at ``t`` on history interval ``i`` (quintic Hermite)."""
+    t0 = HS[i, HT]
+    h = HS[i + 1, HT] - t0
+    s = (t - t0) / h
+    s2 = s * s
+    s3 = s2 * s
+    s4 = s3 * s
+    s5 = s4 * s
+    u0, d0, dd0 = HS[i, HU], HS[i, HD] * h, HS[i, HDD] * h * h
+    u1, d1, dd1 = HS[i + 1, HU], HS[i + 1, HD] * h, HS[i + 1, HDD] * h * h
+    u = (u0 * (1.0 - 10.0 * s3 + 15.0 * s4 - 6.0 * s5)
+         + d0 * (s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5)
+         + dd0 * 0.5 * (s2 - 3.0 * s3 + 3.0 * s4 - s5)
+         + dd1 * 0.5 * (s3 - 2.0 * s4 + s5)
+         + d1 * (-4.0 * s3 + 7.0 * s4 - 3.0 * s5)
+         + u1 * (10.0 * s3 - 15.0 * s4 + 6.0 * s5))
+    du = (u0 * (-30.0 * s2 + 60.0 * s3 - 30.0 * s4)
+          + d0 * (1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4)
+          + dd0 * 0.5 * (2.0 * s - 9.0 * s2 + 12.0 * s3 - 5.0 * s4)
+          + dd1 * 0.5 * (3.0 * s2 - 8.0 * s3 + 5.0 * s4)
+          + d1 * (-12.0 * s2 + 28.0 * s3 - 15.0 * s4)
+          + u1 * (30.0 * s2 - 60.0 * s3 + 30.0 * s4))
+    return u, du / h
+
+
+@jit
+def _rho_rate(a, n, t):
+    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)``."""
+    d = 1.0 + a * math.cos(t)
+    return d ** (1.0 / n - 1.0) / n * (-a * math.sin(t))
+
+
+@jit
+def _hq(HS, nh, t, a, n):
+    """``Q(t) = int u rho' dtau`` on the history (Gauss-Legendre on its interval)."""
+    i = _hindex(HS, nh, t)
+    t0 = HS[i, HT]
+    if t <= t0:
+        return HS[i, HQ]
+    hw = 0.5 * (t - t0)
+    tm = t0 + hw
+    s = 0.0
+    for j in range(GL_X.size):
+        tj = tm + hw * GL_X[j]
+        uj, _ = _hermite(HS, i, tj)
+        s += GL_W[j] * uj * _rho_rate(a, n, tj)
+    return HS[i, HQ] + hw * s
+
+
+@jit
+def _hfront(HS, nh, ta, tb, target, sgn, c, a):
+    """``t`` in ``[ta, tb]`` where ``u(t) + sgn c delta(t) = target`` (``sgn = -1``: ``P``,
+    decreasing on a history piece; ``+1``: ``N``, increasing); the bracket holds it.
+    """
+    # bracket on the stored step ends
+    i0 = _hindex(HS, nh, ta)
+    i1 = _hindex(HS, nh, tb)
+    lo, hi = i0, i1 + 1
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        tm = HS[mid, HT]
+        f = HS[mid, HU] + sgn * c * (1.0 + a * math.cos(tm)) - target
+        if (f > 0.0) == (sgn < 0.0):  # P above the target: before the front
+            lo = mid
+        else:
+            hi = mid
+    i = lo
+    x0 = max(ta, HS[i, HT])
+    x1 = min(tb, HS[i + 1, HT]) if i + 1 < nh else tb
+    # safeguarded Newton in [x0, x1]
+    t = 0.5 * (x0 + x1)
+    for _ in range(60):
+        u, du = _hermite(HS, i, t)
+        f = u + sgn * c * (1.0 + a * math.cos(t)) - target
+        df = du - sgn * c * a * math.sin(t)
+        if (f > 0.0) == (sgn < 0.0):
+            x0 = t
+        else:
+            x1 = t
+        tn = t - f / df if df != 0.0 else 0.5 * (x0 + x1)
+        if not (x0 < tn < x1):
+            tn = 0.5 * (x0 + x1)
+        if abs(tn - t) <= 1e-15 * (1.0 + abs(t)) or x1 - x0 <= 1e-15 * (1.0 + abs(t)):
+            return tn
+        t = tn
+    return t
+
+
+@jit
+def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
+    """Append a piece to ``out`` (``m`` pieces so far), merged with the last where it
+    continues it; returns the new count (``MAX_PIECES + 1`` on overflow).
+    """
+    if x1 <= x0:
+        return m
+    if m > 0:
+        last = out[m - 1]
+        if kind != HIS and last[KIND] == kind and last[VAL] == val:
+            last[X1] = x1
+            last[X1P] = x1p
+            return m
+        if kind == HIS and last[KIND] == HIS and last[TB] == ta:
+            last[X1] = x1
+            last[X1P] = x1p
+            last[TB] = tb
+            return m
+    if m >= MAX_PIECES:
+        return MAX_PIECES + 1
+    r = out[m]
+    r[X0] = x0
+    r[X1] = x1
+    r[KIND] = kind
+    r[VAL] = val
+    r[TA] = ta
+    r[TB] = tb
+    r[X0P] = x0p
+    r[X1P] = x1p
+    return m + 1
+
+
+@jit
+def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
+    """The old points at ``(t, u)``, clamped to the band of the step's monotone edges:
+    ``(int e dxi, stick area, slip area, m)`` (areas as ``int 2 xi dxi``); where ``write``,
+    the clamped profile is written to ``out`` (``m`` pieces).
+    """
+    c, n, a = prm[P_C], prm[P_N], prm[P_A]
+    n1 = n + 1.0
+    d = 1.0 + a * math.cos(t)
+    rho = d ** (1.0 / n)
+    P = u - c * d
+    N = u + c * d
+    E = 0.0
+    ast = 0.0
+    asl = 0.0
+    m = 0
+    for j in range(npc):
+        pc = PC[j]
+        xa = pc[X0]
+        if xa >= rho:
+            break
+        xb = pc[X1]
+        xap = pc[X0P]
+        xbp = pc[X1P]
+        cut = xb > rho
+        if cut:
+            xb = rho
+            xbp = rho * d  # rho^(n+1)
+        kind = int(pc[KIND])
+        v = pc[VAL]
+        # the sub-ranges: stuck [xa, xs], pushed from below / above [xs, xb] (affine: one
+        # of the two), or all pushed
+        if kind == AFP:
+            if v <= P:  # the lower edge reaches the whole piece
+                E += c * (d * (xb - xa) - (xbp - xap) / n1)
+                asl += xb * xb - xa * xa
+                if write:
+                    m = _add(out, m, xa, xb, AFP, P, 0.0, 0.0, xap, xbp)
+                continue
+            gs = 0.5 * (N - v) / c  # beyond: above the upper edge
+            sgn = -1.0
+        elif kind == AFN:
+            if v >= N:
+                E -= c * (d * (xb - xa) - (xbp - xap) / n1)
+                asl += xb * xb - xa * xa
+                if write:
+                    m = _add(out, m, xa, xb, AFN, N, 0.0, 0.0, xap, xbp)
+                continue
+            gs = 0.5 * (v - P) / c  # beyond: below the lower edge
+            sgn = 1.0
+        else:
+            ta = pc[TA]
+            tb = pc[TB]
+            gb = xb ** n if not cut else d
+            if cut:  # the newest points have left: the loading time of delta = d
+                ml = math.ceil(ta / TWO_PI)
+                tb = min(tb, TWO_PI * ml - math.acos(min(1.0, max(-1.0, (d - 1.0) / a))))
+            ib = _hindex(HS, nh, tb)
+            ub, _ = _hermite(HS, ib, tb)
+            sgn = 0.0
+            if ub - c * gb < P:  # the newest points below the lower edge
+                sgn = 1.0
+                ga = pc[X0P] / xa if xa > 0.0 else 0.0
+                ia = _hindex(HS, nh, pc[TA])
+                ua, _ = _hermite(HS, ia, pc[TA])
+                if ua - c * ga <= P:
+                    ts = pc[TA]
+                else:
+                    ts = _hfront(HS, nh, pc[TA], tb, P, -1.0, c, a)
+            elif ub + c * gb > N:
+                sgn = -1.0
+                ga = pc[X0P] / xa if xa > 0.0 else 0.0
+                ia = _hindex(HS, nh, pc[TA])
+                ua, _ = _hermite(HS, ia, pc[TA])
+                if ua + c * ga >= N:
+                    ts = pc[TA]
+                else:
+                    ts = _hfront(HS, nh, pc[TA], tb, N, 1.0, c, a)
+            else:
+                ts = tb
+            if ts > pc[TA]:
+                ds = 1.0 + a * math.cos(ts)
+                xs = ds ** (1.0 / n) if ts < tb else xb
+                xsp = xs * ds if ts < tb else xbp
+                Qs = _hq(HS, nh, ts, a, n)
+                E += u * (xs - xa) - (Qs - v)
+                ast += xs * xs - xa * xa
+                if write:
+                    m = _add(out, m, xa, xs, HIS, v, pc[TA], ts, xap, xsp)
+            else:
+                xs = xa
+                xsp = xap
+            if sgn != 0.0 and xs < xb:
+                E += sgn * c * (d * (xb - xs) - (xbp - xsp) / n1)
+                asl += xb * xb - xs * xs
+                if write:
+                    if sgn > 0.0:
+                        m = _add(out, m, xs, xb, AFP, P, 0.0, 0.0, xsp, xbp)
+                    else:
+                        m = _add(out, m, xs, xb, AFN, N, 0.0, 0.0, xsp, xbp)
+            continue
+        # affine piece, not wholly pushed: e = u - v -+ c g up to the front gs
+        if gs <= 0.0:
+            xs = xa
+            xsp = xap
+        else:
+            xs = gs ** (1.0 / n)
+            xsp = xs * gs
+            if xs > xb:
+                xs = xb
+                xsp = xbp
+            elif xs < xa:
+                xs = xa
+                xsp = xap
+        kc = c if kind == AFP else -c  # q = v + kc g
+        if xs > xa:
+            E += (u - v) * (xs - xa) - kc * (xsp - xap) / n1
+            ast += xs * xs - xa * xa
+            if write:
+                m = _add(out, m, xa, xs, kind, v, 0.0, 0.0, xap, xsp)
+        if xs < xb:
+            E += sgn * c * (d * (xb - xs) - (xbp - xsp) / n1)
+            asl += xb * xb - xs * xs
+            if write:
+                if sgn > 0.0:
+                    m = _add(out, m, xs, xb, AFP, P, 0.0, 0.0, xsp, xbp)
+                else:
+                    m = _add(out, m, xs, xb, AFN, N, 0.0, 0.0, xsp, xbp)
+    return E, ast, asl, m
+
+
+@jit
+def rhs(t, z, dz, prm, PC, npc, HS, nh, rho0, edge):
+    """The body's equation, ``Q``'s rate and the integrands of the period's means."""
+    y, v, qi = z[0], z[1], z[2]
+    V = prm[P_V]
+    u = y + V * t
+    E, ast, asl, _ = _sweep(t, u, prm, PC, npc, HS, nh, PC, False)
+    a, n, c = prm[P_A], prm[P_N], prm[P_C]
+    ct = math.cos(t)
+    st = math.sin(t)
+    d = 1.0 + a * ct
+    rho = d ** (1.0 / n)
+    if edge != EDGE_NONE and rho > rho0:
+        if edge == EDGE_STUCK:
+            E += u * (rho - rho0) - qi
+            ast += rho * rho - rho0 * rho0
+        else:
+            s = 1.0 if edge == EDGE_POS else -1.0
+            n1 = n + 1.0
+            E += s * c * (d * (rho - rho0) - (rho * d - rho0 ** n1) / n1)
+            asl += rho * rho - rho0 * rho0
+    F = prm[P_K] * E
+    dz[0] = v
+    dz[1] = -prm[P_ALPHA] * y - prm[P_GAMMA] * v - F + prm[P_HC] * ct + prm[P_HS] * st
+    dz[2] = u * rho / d / n * (-a * st)
+    dz[3] = F
+    dz[4] = ast
+    dz[5] = asl
+
+
+@jit
+def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, rho0, edge):
+    """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``);
+    returns the error norm's square sum over the controlled components (unscaled).
+    """
+    tmp = np.empty(N_Z)
+    for i in range(N_Z):
+        K[0, i] = k1[i]
+        tmp[i] = z[i] + h * _A21 * k1[i]
+    rhs(t + _C2 * h, tmp, K[1], prm, PC, npc, HS, nh, rho0, edge)
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A31 * k1[i] + _A32 * K[1, i])
+    rhs(t + _C3 * h, tmp, K[2], prm, PC, npc, HS, nh, rho0, edge)
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A41 * k1[i] + _A42 * K[1, i] + _A43 * K[2, i])
+    rhs(t + _C4 * h, tmp, K[3], prm, PC, npc, HS, nh, rho0, edge)
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A51 * k1[i] + _A52 * K[1, i] + _A53 * K[2, i] + _A54 * K[3, i])
+    rhs(t + _C5 * h, tmp, K[4], prm, PC, npc, HS, nh, rho0, edge)
+    for i in range(N_Z):
+        tmp[i] = z[i] + h * (_A61 * k1[i] + _A62 * K[1, i] + _A63 * K[2, i]
+                             + _A64 * K[3, i] + _A65 * K[4, i])
+    rhs(t + h, tmp, K[5], prm, PC, npc, HS, nh, rho0, edge)
+    for i in range(N_Z):
+        znew[i] = z[i] + h * (_B1 * k1[i] + _B3 * K[2, i] + _B4 * K[3, i]
+                              + _B5 * K[4, i] + _B6 * K[5, i])
+    rhs(t + h, znew, K[6], prm, PC, npc, HS, nh, rho0, edge)
+
+
+@jit
+def _err(z, znew, K, h, rtol, atol):
+    s = 0.0
+    for i in range(N_ERR):
+        e = h * (_E1 * K[0, i] + _E3 * K[2, i] + _E4 * K[3, i] + _E5 * K[4, i]
+                 + _E6 * K[5, i] + _E7 * K[6, i])
+        sc = atol + rtol * max(abs(z[i]), abs(znew[i]))
+        s += (e / sc) ** 2
+    return math.sqrt(s / N_ERR)
+
+
+@jit
+def _dense(z, znew, K, h, i, th):
+    """Component ``i`` at ``t + th h`` (Hairer's CONTD5)."""
+    ydiff = znew[i] - z[i]
+    bspl = h * K[0, i] - ydiff
+    r4 = ydiff - h * K[6, i] - bspl
+    r5 = h * (_D1 * K[0, i] + _D3 * K[2, i] + _D4 * K[3, i] + _D5 * K[4, i]
+              + _D6 * K[5, i] + _D7 * K[6, i])
+    th1 = 1.0 - th
+    return z[i] + th * (ydiff + th1 * (bspl + th * (r4 + th1 * r5)))
+
+
+@jit
+def _event_value(kind, lev, z, znew, K, h, t, th, prm):
+    """The event functions on the dense output: 0 ``P' = u' - c delta'``, 1 ``N'``,
+    2 ``P - lev``, 3 ``N - lev``.
+    """
+    tt = t + th * h
+    c, a, V = prm[P_C], prm[P_A], prm[P_V]
+    if kind <= 1:
+        ud = _dense(z, znew, K, h, 1, th) + V
+        dd = -a * math.sin(tt)
+        return ud - c * dd if kind == 0 else ud + c * dd
+    u = _dense(z, znew, K, h, 0, th) + V * tt
+    d = 1.0 + a * math.cos(tt)
+    return (u - c * d - lev) if kind == 2 else (u + c * d - lev)
+
+
+@jit
+def _event_root(kind, lev, z, znew, K, h, t, prm, th0, f0, th1, f1):
+    """The root of event ``kind`` in ``[th0, th1]`` (values of opposite signs), Illinois."""
+    side = 0
+    for _ in range(80):
+        th = (th0 * f1 - th1 * f0) / (f1 - f0)
+        if not (th0 < th < th1):
+            th = 0.5 * (th0 + th1)
+        f = _event_value(kind, lev, z, znew, K, h, t, th, prm)
+        if (f > 0.0) == (f0 > 0.0):
+            th0, f0 = th, f
+            if side == 1:
+                f1 *= 0.5
+            side = 1
+        else:
+            th1, f1 = th, f
+            if side == -1:
+                f0 *= 0.5
+            side = -1
+        if th1 - th0 <= 1e-14:
+            break
+    return th1
+
+
+@jit
+def _levels(PC, npc, P0, N0, up, down):
+    """The nearest level above ``P0`` that a rising ``P`` reaches (``up``), and the
+    nearest below ``N0`` that a falling ``N`` reaches (``down``), where an edge reaches a
+    whole affine piece: the force's derivative jumps there.  (A front crossing a piece's
+    end only bends it: the step control sees to those.)
+    """
+    lp = math.inf
+    ln = -math.inf
+    tiny = 1e-10 * (1.0 + abs(P0) + abs(N0))  # a level just passed (an event step)
+    for j in range(npc):
+        kind = int(PC[j, KIND])
+        v = PC[j, VAL]
+        if up and kind == AFP and P0 + tiny < v < lp:
+            lp = v
+        if down and kind == AFN and ln < v < N0 - tiny:
+            ln = v
+    return lp, ln
+
+
+@jit
+def _direction(g, gd, tol):
+    """The sign of an event function just after the step's start: its slope's where it is
+    within ``tol`` of 0 (the step after an event).
+    """
+    if g > tol:
+        return 1.0
+    if g < -tol:
+        return -1.0
+    return 1.0 if gd >= 0.0 else -1.0
+
+
+@jit
+def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
+    """One period from ``t0 = m pi`` (``z[0:2]`` the body; ``PC[:npc]`` the profile,
+    ``HS[:nh]`` the history, its last entry at ``t0``): ``(npc, nh, h)`` at its end (``npc``
+    < 0: failed), ``z[3:6]`` the period's integrals; ``cnt`` counts steps, rejections and
+    events.
+    """
+    c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
+    z[2] = 0.0
+    z[3] = 0.0
+    z[4] = 0.0
+    z[5] = 0.0
+    znew = np.empty(N_Z)
+    k1 = np.empty(N_Z)
+    t = t0
+    fresh = True
+    for half in range(halves):
+        t_end = t0 + (half + 1) * math.pi
+        loading = math.sin(t0 + (half + 0.5) * math.pi) < 0.0
+        steps = 0
+        while t < t_end - 1e-14 * (1.0 + t_end):
+            steps += 1
+            if steps > MAX_STEPS_HALF:
+                return FAIL_STEPS, nh, h
+            d0 = 1.0 + a * math.cos(t)
+            rho0 = d0 ** (1.0 / n)
+            u0 = z[0] + V * t
+            P0 = u0 - c * d0
+            N0 = u0 + c * d0
+            # the edges' directions over the step (from the step's start; at a group event
+            # from the slope: the step after the event)
+            z[2] = 0.0
+            if fresh:  # else k1 is the last step's last stage (the force is continuous)
+                rhs(t, z, k1, prm, PC, npc, HS, nh, rho0, EDGE_NONE)
+                HS[nh - 1, HDD] = k1[1]
+                fresh = False
+            ud = z[1] + V
+            dd = -a * math.sin(t)
+            ddd = -a * math.cos(t)
+            tol = 1e-9 * (abs(ud) + c * a)
+            dirp = _direction(ud - c * dd, k1[1] - c * ddd, tol)
+            dirn = _direction(ud + c * dd, k1[1] + c * ddd, tol)
+            if not loading:
+                edge = EDGE_NONE
+            elif dirp > 0.0:
+                edge = EDGE_POS
+            elif dirn < 0.0:
+                edge = EDGE_NEG
+            else:
+                edge = EDGE_STUCK
+            lp, ln = _levels(PC, npc, P0, N0, dirp > 0.0, dirn < 0.0)
+            while True:
+                hh = min(h, t_end - t, hmax)
+                _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, rho0, edge)
+                en = _err(z, znew, K, hh, rtol, atol)
+                if en > 1.0 or not math.isfinite(en):
+                    cnt[1] += 1
+                    h = hh * max(0.1, 0.9 * en ** -0.2) if math.isfinite(en) else 0.1 * hh
+                    if h < 1e-13:
+                        return FAIL_STEPS, nh, h
+                    continue
+                # the earliest event in the step
+                th_ev = 2.0
+                for kind in range(4):
+                    if kind == 0:
+                        sg = dirp
+                        lev = 0.0
+                    elif kind == 1:
+                        sg = dirn
+                        lev = 0.0
+                    elif kind == 2:
+                        if lp == math.inf:
+                            continue
+                        sg = -1.0
+                        lev = lp
+                    else:
+                        if ln == -math.inf:
+                            continue
+                        sg = 1.0
+                        lev = ln
+                    thp = 0.0
+                    fp = sg
+                    for q in range(1, 5):
+                        th = 0.25 * q
+                        if th >= th_ev:
+                            break
+                        f = _event_value(kind, lev, z, znew, K, hh, t, th, prm)
+                        if (f > 0.0) != (sg > 0.0) and f != 0.0:
+                            f0 = fp if thp > 0.0 else sg * 1e-300
+                            th = _event_root(kind, lev, z, znew, K, hh, t, prm, thp, f0, th, f)
+                            if th < th_ev:
+                                th_ev = th
+                            break
+                        thp = th
+                        fp = f
+                if th_ev < 1.0 and th_ev * hh > 1e-12:
+                    cnt[2] += 1
+                    hh = th_ev * hh
+                    _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, rho0, edge)
+                else:
+                    h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
+                break
+            cnt[0] += 1
+            t1 = t + hh
+            if t_end - t1 < 1e-12 * (1.0 + t_end):
+                t1 = t_end
+            u1 = znew[0] + V * t1
+            # the history entry at the step's end
+            if nh >= HS.shape[0]:
+                return FAIL_HISTORY, nh, h
+            HS[nh, HT] = t1
+            HS[nh, HU] = u1
+            HS[nh, HD] = znew[1] + V
+            HS[nh, HDD] = K[6, 1]
+            HS[nh, HQ] = HS[nh - 1, HQ] + znew[2]
+            nh += 1
+            # the profile at the step's end: the old points clamped, the new ones appended
+            _, _, _, m = _sweep(t1, u1, prm, PC, npc, HS, nh, out, True)
+            if m > MAX_PIECES:
+                return FAIL_PIECES, nh, h
+            d1 = 1.0 + a * math.cos(t1)
+            rho1 = d1 ** (1.0 / n)
+            if edge != EDGE_NONE and rho1 > rho0:
+                r0p = rho0 ** (n + 1.0)
+                if edge == EDGE_STUCK:
+                    m = _add(out, m, rho0, rho1, HIS, HS[nh - 2, HQ], t, t1, r0p, rho1 * d1)
+                elif edge == EDGE_POS:
+                    m = _add(out, m, rho0, rho1, AFP, u1 - c * d1, 0.0, 0.0, r0p, rho1 * d1)
+                else:
+                    m = _add(out, m, rho0, rho1, AFN, u1 + c * d1, 0.0, 0.0, r0p, rho1 * d1)
+                if m > MAX_PIECES:
+                    return FAIL_PIECES, nh, h
+            for j in range(m):
+                for q in range(N_PC):
+                    PC[j, q] = out[j, q]
+            npc = m
+            for i in range(N_Z):
+                z[i] = znew[i]
+                k1[i] = K[6, i]
+            z[2] = 0.0
+            t = t1
+    return npc, nh, h
+
+
+@jit
+def compact(HS, nh, PC, npc):
+    """Drop the history before the oldest history piece (keeping its interval); returns
+    the new count.  The last entry is always kept.
+    """
+    t_keep = HS[nh - 1, HT]
+    for j in range(npc):
+        if int(PC[j, KIND]) == HIS and PC[j, TA] < t_keep:
+            t_keep = PC[j, TA]
+    i0 = _hindex(HS, nh, t_keep)
+    if i0 == 0:
+        return nh
+    m = nh - i0
+    for i in range(m):
+        for q in range(N_HS):
+            HS[i, q] = HS[i0 + i, q]
+    return m
+
+
+@jit
+def start(prm, y0, v0, PC, HS):
+    """Steady sliding at ``tau = 0``: every point on the lower edge (slipping forwards);
+    returns ``(npc, nh)``.
+    """
+    c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
+    d = 1.0 + a
+    rho = d ** (1.0 / n)
+    PC[0, X0] = 0.0
+    PC[0, X1] = rho
+    PC[0, KIND] = AFP
+    PC[0, VAL] = y0 - c * d
+    PC[0, TA] = 0.0
+    PC[0, TB] = 0.0
+    PC[0, X0P] = 0.0
+    PC[0, X1P] = rho * d
+    HS[0, HT] = 0.0
+    HS[0, HU] = y0
+    HS[0, HD] = v0 + V
+    HS[0, HDD] = 0.0
+    HS[0, HQ] = 0.0
+    return 1, 1

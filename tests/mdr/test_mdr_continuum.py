@@ -1,0 +1,89 @@
+"""The MDR row without springs (:mod:`vibrofriction._kernels.mdr_continuum`) against the
+spring rows it is the limit of, and its own pieces."""
+
+import math
+
+import numpy as np
+import pytest
+
+from vibrofriction._kernels import mdr_continuum as mc
+from vibrofriction.solver.mdr import mdr_friction, mdr_row
+from vibrofriction.solver.mdr_continuum import continuum_covers, mdr_continuum
+
+
+def test_hermite_is_exact_for_quintics():
+    """The history's interpolant reproduces a quintic and its derivative from the values,
+    first and second derivatives at the ends (it is the quintic Hermite basis)."""
+    rng = np.random.default_rng(3)
+    p = np.polynomial.Polynomial(rng.normal(size=6))
+    dp, ddp = p.deriv(), p.deriv(2)
+    HS = np.zeros((2, mc.N_HS))
+    for i, t in enumerate((0.3, 0.9)):
+        HS[i, mc.HT], HS[i, mc.HU], HS[i, mc.HD], HS[i, mc.HDD] = t, p(t), dp(t), ddp(t)
+    for t in np.linspace(0.3, 0.9, 7):
+        u, du = mc._hermite(HS, 0, t)
+        assert u == pytest.approx(p(t), abs=1e-12)
+        assert du == pytest.approx(dp(t), abs=1e-11)
+
+
+def test_covers():
+    assert continuum_covers(0.5, 0.3, 1.0)
+    assert not continuum_covers(1.2, 0.3, 1.0)  # jumping: the rows
+    assert not continuum_covers(0.5, 0.0, 1.0)
+    assert not continuum_covers(0.5, 0.3, 1.5)  # a static limit above the kinetic one
+
+
+# (alpha, beta, a, V, n, zeta): stick-slip, undamped, a cone, soft pin, slow and lightly
+# damped, n = 4, a stiff pin, fast with a = 0.9
+POINTS = [(0.5, 2.0, 0.5, 0.3, 2.0, 0.1), (0.5, 2.0, 0.5, 0.3, 2.0, 0.0),
+          (1.0, 3.0, 0.7, 0.5, 1.0, 0.1), (0.05, 0.1, 0.5, 0.3, 2.0, 0.5),
+          (0.3, 3.0, 0.8, 0.05, 2.0, 0.02), (0.5, 2.0, 0.5, 0.3, 4.0, 0.1),
+          (2.0, 2.5, 0.6, 0.2, 1.5, 0.05), (0.5, 1.0, 0.9, 1.0, 2.0, 0.3)]
+
+
+@pytest.mark.parametrize("point", POINTS)
+def test_continuum_is_the_rows_limit(point):
+    """The continuum's ``mu_ratio`` lies within the refined rows' error (rows of up to
+    thousands of springs, extrapolated, a different kernel: closed forms per spring), and
+    states an error a hundred times smaller."""
+    alpha, beta, a, V, n, zeta = point
+    c = mdr_continuum(alpha, beta, a, V, n, zeta)
+    r = mdr_friction(alpha, beta, a, V, n, zeta=zeta, tol=1e-6)
+    assert c["status"] == "periodic" and r["status"] == "periodic"
+    assert c["error"] < 3e-8
+    assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
+    # the time-averaged areas: the finest row's within its cells' share
+    for key in ("stick_area_fraction", "slip_area_fraction", "open_area_fraction"):
+        assert abs(c[key] - r[key]) < 2e-3
+    assert c["stick_area_fraction"] + c["slip_area_fraction"] <= 1.0 + 1e-12
+
+
+def test_rows_approach_the_continuum():
+    """Single rows (no extrapolation) of 40 to 1280 springs approach the continuum: their
+    distance falls from about 2e-5 to below 1e-7 (irregularly: the contact's edge moves
+    across the springs, so not by a fixed factor a doubling)."""
+    point = (0.5, 2.0, 0.5, 0.3, 2.0, 0.1)
+    mu = mdr_continuum(*point[:5], zeta=point[5])["mu_ratio"]
+    errs = [abs(mdr_row(*point[:5], N, zeta=point[5])["mu_ratio"] - mu) for N in (40, 1280)]
+    assert errs[0] > 1e-6
+    assert errs[1] < 1e-7
+
+
+def test_drive_matches_the_rows():
+    """A longitudinal drive of the substrate: the continuum within the rows' error."""
+    from vibrofriction._kernels.phases import frame_offset, inplane_forcing
+
+    alpha, beta, a, V, n, zeta, ax, ph = 0.5, 2.0, 0.5, 0.3, 2.0, 0.1, 0.4, 0.7
+    hc, hs = inplane_forcing(alpha, 2 * zeta * math.sqrt(alpha), ax, ph, True)
+    c = mdr_continuum(alpha, beta, a, V, n, zeta, hc, hs, frame_offset(ax, ph, True))
+    r = mdr_friction(alpha, beta, a, V, n, zeta=zeta, tol=1e-6, a_x=ax, phase_x=ph)
+    assert c["status"] == "periodic"
+    assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
+
+
+def test_tight_tolerance_routes_to_the_continuum():
+    """``mdr_friction`` below ``CONTINUUM_TOL`` answers with the continuum (no rows)."""
+    r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)
+    assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
+    r5 = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-5)
+    assert r5["rows"] != ()
