@@ -56,8 +56,10 @@ def _plane() -> None:
 
 def _curved() -> None:
     from .solver.engine import solve_points
+    from .solver.mdr_continuum import mdr_continuum
 
     solve_points(0.5, 2.0, 0.5, 0.3, profile_exponent=2.0)
+    mdr_continuum(0.5, 2.0, 0.5, 0.3, 2.0)  # the row without springs (tight tolerances)
 
 
 def _rate_state() -> None:
