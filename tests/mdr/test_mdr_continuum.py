@@ -1,7 +1,9 @@
 """The MDR row without springs (:mod:`vibrofriction._kernels.mdr_continuum`) against the
 spring rows it is the limit of, and its own pieces."""
 
+import json
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -87,3 +89,34 @@ def test_tight_tolerance_routes_to_the_continuum():
     assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
     r5 = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-5)
     assert r5["rows"] != ()
+
+
+FINE = json.loads((Path(__file__).parents[1] / "data" / "mdr_fine_reference.json")
+                  .read_text())["points"]
+COVERED = [p for p in FINE if continuum_covers(p["amplitude"], p["v_inertial"], 1.0)]
+
+
+def test_the_fine_reference_covers_the_continuum():
+    """Most of the independent reference's points are the continuum's (a < 1), with
+    drives of the substrate and the holder among them."""
+    assert len(COVERED) >= 20
+    assert {p["inplane_on"] for p in COVERED if p["a_x"] > 0} == {"substrate", "holder"}
+
+
+@pytest.mark.parametrize("p", COVERED, ids=lambda p: p["label"])
+def test_continuum_agrees_with_the_independent_reference(p):
+    """Against the independent spring row refined to a bar of at most 2e-6
+    (tests/data/make_mdr_fine_reference.py; shares no code with the continuum): within the
+    bar plus the continuum's stated error, which is at most 1e-7."""
+    from vibrofriction._kernels.phases import frame_offset, inplane_forcing
+
+    alpha, zeta = p["alpha"], p["zeta"]
+    on = p["inplane_on"] == "substrate"
+    hc, hs = inplane_forcing(alpha, 2 * zeta * math.sqrt(alpha), p["a_x"], p["phase_x"], on)
+    c = mdr_continuum(alpha, p["beta"], p["amplitude"], p["v_inertial"],
+                      p["profile_exponent"], zeta, hc, hs,
+                      frame_offset(p["a_x"], p["phase_x"], on))
+    assert c["status"] == "periodic", c["reason"]
+    assert c["error"] <= 1e-7
+    assert abs(c["mu_ratio"] - p["mu_ref"]) <= c["error"] + p["err_ref"], (
+        c["mu_ratio"], p["mu_ref"], p["err_ref"])

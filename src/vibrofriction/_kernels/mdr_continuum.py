@@ -29,12 +29,14 @@ row's force is exact per piece: ``int (A + B g) dxi`` in closed form, and over a
 down within a step enter stuck (``HIS``, through ``Q``) or on the band (``P' > 0`` or ``N' < 0``
 at the edge), by closed forms.
 
-**Kinks are step ends.**  Besides the group events the force's derivative jumps where an edge
-reaches a whole ``AFP``/``AFN`` piece (``P`` crosses ``P_j``) and its second derivative where
-a front crosses a piece's end: every such time is where the monotone ``P`` (or ``N``) of the
-step crosses a level known at the step's start (:func:`_levels`), located on the dense output
-and made a step end, as are ``tau = m pi`` (loading and unloading).  Between them the body's
-equation has a smooth right-hand side and Dormand-Prince 5(4) integrates it at its order.
+**Segments and kinks.**  A segment runs until ``P'`` or ``N'`` changes sign (or the
+indentation turns, at ``tau = m pi``); within it the clamp of its starting profile is exact,
+so the profile is updated at its end only (:func:`period`).  Within a segment the force's
+slope jumps where a monotone edge reaches a whole affine piece and its curvature where a
+front crosses a piece's end or the contact's edge passes one: levels of ``P`` or ``N`` and
+times known at the segment's start (:func:`_levels`), each passed once, located on the
+dense output and made step ends.  Between them the body's equation has a smooth right-hand
+side and Dormand-Prince 5(4) integrates it at its order.
 
 This first version covers Coulomb friction (``static_ratio = 1``), ``a < 1`` (the core of the
 contact never opens) and ``V > 0``.
@@ -98,8 +100,8 @@ P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
 N_PRM = 9
 # edge modes of a step: new points enter stuck, pushed from below, from above; none enter
 EDGE_STUCK, EDGE_POS, EDGE_NEG, EDGE_NONE = 0, 1, 2, 3
-N_Z = 6  # y, y', int u rho' over the step, int F, int stick area, int slip area
-N_ERR = 3  # the components the step's error control sees
+N_Z = 6  # y, y', Q = int u rho' (from the start), int F, int stick area, int slip area
+N_ERR = 2  # the components the step's error control sees (the body)
 MAX_PIECES = 64
 GL_X = np.array([-0.9324695142031521, -0.6612093864662645, -0.2386191860831969,
                  0.2386191860831969, 0.6612093864662645, 0.9324695142031521])
@@ -377,9 +379,12 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
 
 
 @jit
-def rhs(t, z, dz, prm, PC, npc, HS, nh, rho0, edge):
-    """The body's equation, ``Q``'s rate and the integrands of the period's means."""
-    y, v, qi = z[0], z[1], z[2]
+def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
+    """The body's equation, ``Q``'s rate and the integrands of the period's means, with
+    the profile of the segment's start clamped (:func:`_sweep`) and the points touched
+    down since (``seg = (rho, Q, edge mode)`` at the segment's start).
+    """
+    y, v = z[0], z[1]
     V = prm[P_V]
     u = y + V * t
     E, ast, asl, _ = _sweep(t, u, prm, PC, npc, HS, nh, PC, False)
@@ -388,9 +393,11 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, rho0, edge):
     st = math.sin(t)
     d = 1.0 + a * ct
     rho = d ** (1.0 / n)
+    rho0 = seg[0]
+    edge = int(seg[2])
     if edge != EDGE_NONE and rho > rho0:
         if edge == EDGE_STUCK:
-            E += u * (rho - rho0) - qi
+            E += u * (rho - rho0) - (z[2] - seg[1])
             ast += rho * rho - rho0 * rho0
         else:
             s = 1.0 if edge == EDGE_POS else -1.0
@@ -407,7 +414,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, rho0, edge):
 
 
 @jit
-def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, rho0, edge):
+def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg):
     """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``);
     returns the error norm's square sum over the controlled components (unscaled).
     """
@@ -415,24 +422,24 @@ def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, rho0, edge):
     for i in range(N_Z):
         K[0, i] = k1[i]
         tmp[i] = z[i] + h * _A21 * k1[i]
-    rhs(t + _C2 * h, tmp, K[1], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + _C2 * h, tmp, K[1], prm, PC, npc, HS, nh, seg)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A31 * k1[i] + _A32 * K[1, i])
-    rhs(t + _C3 * h, tmp, K[2], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + _C3 * h, tmp, K[2], prm, PC, npc, HS, nh, seg)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A41 * k1[i] + _A42 * K[1, i] + _A43 * K[2, i])
-    rhs(t + _C4 * h, tmp, K[3], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + _C4 * h, tmp, K[3], prm, PC, npc, HS, nh, seg)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A51 * k1[i] + _A52 * K[1, i] + _A53 * K[2, i] + _A54 * K[3, i])
-    rhs(t + _C5 * h, tmp, K[4], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + _C5 * h, tmp, K[4], prm, PC, npc, HS, nh, seg)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A61 * k1[i] + _A62 * K[1, i] + _A63 * K[2, i]
                              + _A64 * K[3, i] + _A65 * K[4, i])
-    rhs(t + h, tmp, K[5], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + h, tmp, K[5], prm, PC, npc, HS, nh, seg)
     for i in range(N_Z):
         znew[i] = z[i] + h * (_B1 * k1[i] + _B3 * K[2, i] + _B4 * K[3, i]
                               + _B5 * K[4, i] + _B6 * K[5, i])
-    rhs(t + h, znew, K[6], prm, PC, npc, HS, nh, rho0, edge)
+    rhs(t + h, znew, K[6], prm, PC, npc, HS, nh, seg)
 
 
 @jit
@@ -499,23 +506,73 @@ def _event_root(kind, lev, z, znew, K, h, t, prm, th0, f0, th1, f1):
 
 
 @jit
-def _levels(PC, npc, P0, N0, up, down):
-    """The nearest level above ``P0`` that a rising ``P`` reaches (``up``), and the
-    nearest below ``N0`` that a falling ``N`` reaches (``down``), where an edge reaches a
-    whole affine piece: the force's derivative jumps there.  (A front crossing a piece's
-    end only bends it: the step control sees to those.)
+def _levels(prm, PC, npc, HS, nh, t0, P0, N0, up, down, unloading, LP, LN, LT):
+    """The levels of a segment from ``t0`` where the force bends: the values of a rising
+    ``P`` (``up``) at which its front reaches a whole affine piece (``AFP``: the force's
+    slope jumps) or a piece's end (its curvature jumps), ascending in ``LP``; those of a
+    falling ``N`` (``down``), descending in ``LN``; and, ``unloading``, the times at which
+    the contact's edge passes a piece's end, ascending in ``LT``.  Returns the counts.
+    (The profile does not change within a segment, so each level is passed once.)
     """
-    lp = math.inf
-    ln = -math.inf
+    c, a = prm[P_C], prm[P_A]
     tiny = 1e-10 * (1.0 + abs(P0) + abs(N0))  # a level just passed (an event step)
+    mp = 0
+    mn = 0
+    mt = 0
+    base = TWO_PI * math.floor(t0 / TWO_PI + 1e-12)
     for j in range(npc):
-        kind = int(PC[j, KIND])
-        v = PC[j, VAL]
-        if up and kind == AFP and P0 + tiny < v < lp:
-            lp = v
-        if down and kind == AFN and ln < v < N0 - tiny:
-            ln = v
-    return lp, ln
+        pc = PC[j]
+        kind = int(pc[KIND])
+        v = pc[VAL]
+        ga = pc[X0P] / pc[X0] if pc[X0] > 0.0 else 0.0
+        last = j == npc - 1  # its far end is the contact's edge: the band has no width
+        gb = pc[X1P] / pc[X1]
+        for q in range(3):
+            lv = math.nan
+            if kind == AFP:
+                if q == 0:
+                    lv = v
+                elif not (up and v <= P0 + tiny):  # (a piece pushed from below meets
+                    lv = v + 2.0 * c * (ga if q == 1 else gb)  # the upper edge at the edge)
+            elif kind == AFN:
+                if q == 0:
+                    lv = v
+                elif not (down and v >= N0 - tiny):
+                    lv = v - 2.0 * c * (ga if q == 1 else gb)
+            elif q > 0:
+                tq = pc[TA] if q == 1 else pc[TB]
+                uq, _ = _hermite(HS, _hindex(HS, nh, tq), tq)
+                gq = ga if q == 1 else gb
+                lv = uq - c * gq  # P(tau_on): the lower edge's level; N's is 2 c g above
+            if math.isnan(lv) or (q == 2 and last):
+                continue
+            if kind == AFP:
+                lp = lv if q == 0 else math.nan
+                ln = lv if q > 0 else math.nan
+            elif kind == AFN:
+                ln = lv if q == 0 else math.nan
+                lp = lv if q > 0 else math.nan
+            else:
+                lp = lv
+                ln = lv + 2.0 * c * (ga if q == 1 else gb)
+            if up and lp > P0 + tiny and mp < LP.size:
+                LP[mp] = lp
+                mp += 1
+            if down and ln < N0 - tiny and mn < LN.size:
+                LN[mn] = ln
+                mn += 1
+        if unloading and not last and a > 0.0:
+            x = (gb - 1.0) / a
+            if -1.0 < x < 1.0:
+                te = base + math.acos(x)
+                if te > t0 + 1e-12 and mt < LT.size:
+                    LT[mt] = te
+                    mt += 1
+    LP[:mp].sort()
+    LN[:mn].sort()
+    LN[:mn] = LN[:mn][::-1].copy()
+    LT[:mt].sort()
+    return mp, mn, mt
 
 
 @jit
@@ -531,48 +588,94 @@ def _direction(g, gd, tol):
 
 
 @jit
+def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
+    """The earliest event of the step on its dense output, as a fraction of it (2 if
+    none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
+    and its kind.
+    """
+    th_ev = 2.0
+    k_ev = -1
+    for kind in range(4):
+        if kind == 0:
+            sg = dirp
+            lev = 0.0
+        elif kind == 1:
+            sg = dirn
+            lev = 0.0
+        elif kind == 2:
+            if lp == math.inf:
+                continue
+            sg = -1.0
+            lev = lp
+        else:
+            if ln == -math.inf:
+                continue
+            sg = 1.0
+            lev = ln
+        thp = 0.0
+        fp = sg * 1e-300
+        for q in range(1, 5):  # four samples: a sign change and back within a step is rare
+            th = 0.25 * q
+            if th >= th_ev:
+                break
+            f = _event_value(kind, lev, z, znew, K, hh, t, th, prm)
+            if (f > 0.0) != (sg > 0.0) and f != 0.0:
+                th = _event_root(kind, lev, z, znew, K, hh, t, prm, thp, fp, th, f)
+                if th < th_ev:
+                    th_ev = th
+                    k_ev = kind
+                break
+            thp = th
+            fp = f
+    return th_ev, k_ev
+
+
+@jit
 def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
-    """One period from ``t0 = m pi`` (``z[0:2]`` the body; ``PC[:npc]`` the profile,
-    ``HS[:nh]`` the history, its last entry at ``t0``): ``(npc, nh, h)`` at its end (``npc``
-    < 0: failed), ``z[3:6]`` the period's integrals; ``cnt`` counts steps, rejections and
-    events.
+    """``halves`` half periods from ``t0 = m pi`` (``z[0:3]`` the body and ``Q``;
+    ``PC[:npc]`` the profile, ``HS[:nh]`` the history, its last entry at ``t0``):
+    ``(npc, nh, h)`` at the end (``npc`` < 0: failed), ``z[3:6]`` the integrals over the
+    run; ``cnt`` counts steps, rejections, events and segments.
+
+    A segment runs until ``P'`` or ``N'`` changes sign or the half ends; within it the
+    profile of its start, clamped, is exact, so it is updated at the segment's end only
+    (and the points touched down in it appended).  Steps also end at the segment's levels
+    (:func:`_levels`).
     """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
-    z[2] = 0.0
     z[3] = 0.0
     z[4] = 0.0
     z[5] = 0.0
     znew = np.empty(N_Z)
     k1 = np.empty(N_Z)
+    seg = np.empty(3)
+    LP = np.empty(4 * MAX_PIECES)
+    LN = np.empty(4 * MAX_PIECES)
+    LT = np.empty(2 * MAX_PIECES)
     t = t0
-    fresh = True
+    seg[0] = 0.0
+    seg[1] = 0.0
+    seg[2] = EDGE_NONE
+    rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
+    HS[nh - 1, HDD] = k1[1]
+    HS[nh - 1, HQ] = z[2]
     for half in range(halves):
         t_end = t0 + (half + 1) * math.pi
-        loading = math.sin(t0 + (half + 0.5) * math.pi) < 0.0
+        unloading = math.sin(t0 + (half + 0.5) * math.pi) > 0.0
         steps = 0
-        while t < t_end - 1e-14 * (1.0 + t_end):
-            steps += 1
-            if steps > MAX_STEPS_HALF:
-                return FAIL_STEPS, nh, h
+        while t < t_end - 1e-14 * (1.0 + t_end):  # segments
+            cnt[3] += 1
             d0 = 1.0 + a * math.cos(t)
-            rho0 = d0 ** (1.0 / n)
             u0 = z[0] + V * t
             P0 = u0 - c * d0
             N0 = u0 + c * d0
-            # the edges' directions over the step (from the step's start; at a group event
-            # from the slope: the step after the event)
-            z[2] = 0.0
-            if fresh:  # else k1 is the last step's last stage (the force is continuous)
-                rhs(t, z, k1, prm, PC, npc, HS, nh, rho0, EDGE_NONE)
-                HS[nh - 1, HDD] = k1[1]
-                fresh = False
             ud = z[1] + V
             dd = -a * math.sin(t)
             ddd = -a * math.cos(t)
             tol = 1e-9 * (abs(ud) + c * a)
             dirp = _direction(ud - c * dd, k1[1] - c * ddd, tol)
             dirn = _direction(ud + c * dd, k1[1] + c * ddd, tol)
-            if not loading:
+            if unloading:
                 edge = EDGE_NONE
             elif dirp > 0.0:
                 edge = EDGE_POS
@@ -580,97 +683,89 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 edge = EDGE_NEG
             else:
                 edge = EDGE_STUCK
-            lp, ln = _levels(PC, npc, P0, N0, dirp > 0.0, dirn < 0.0)
-            while True:
-                hh = min(h, t_end - t, hmax)
-                _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, rho0, edge)
-                en = _err(z, znew, K, hh, rtol, atol)
-                if en > 1.0 or not math.isfinite(en):
-                    cnt[1] += 1
-                    h = hh * max(0.1, 0.9 * en ** -0.2) if math.isfinite(en) else 0.1 * hh
-                    if h < 1e-13:
-                        return FAIL_STEPS, nh, h
-                    continue
-                # the earliest event in the step
-                th_ev = 2.0
-                for kind in range(4):
-                    if kind == 0:
-                        sg = dirp
-                        lev = 0.0
-                    elif kind == 1:
-                        sg = dirn
-                        lev = 0.0
-                    elif kind == 2:
-                        if lp == math.inf:
-                            continue
-                        sg = -1.0
-                        lev = lp
+            rho_s = d0 ** (1.0 / n)
+            seg[0] = rho_s
+            seg[1] = z[2]
+            seg[2] = edge
+            t_s = t
+            ih_s = nh - 1
+            mp, mn, mt = _levels(prm, PC, npc, HS, nh, t, P0, N0, dirp > 0.0, dirn < 0.0,
+                                 unloading, LP, LN, LT)
+            ip = 0
+            jn = 0
+            it = 0
+            while True:  # steps of the segment
+                steps += 1
+                if steps > MAX_STEPS_HALF:
+                    return FAIL_STEPS, nh, h
+                while it < mt and LT[it] <= t + 1e-12:
+                    it += 1
+                t_stop = LT[it] if it < mt and LT[it] < t_end else t_end
+                lp = LP[ip] if ip < mp else math.inf
+                ln = LN[jn] if jn < mn else -math.inf
+                while True:  # attempts
+                    hh = min(h, t_stop - t, hmax)
+                    _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg)
+                    en = _err(z, znew, K, hh, rtol, atol)
+                    if en > 1.0 or not math.isfinite(en):
+                        cnt[1] += 1
+                        h = hh * max(0.1, 0.9 * en ** -0.2) if math.isfinite(en) else 0.1 * hh
+                        if h < 1e-13:
+                            return FAIL_STEPS, nh, h
+                        continue
+                    th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln)
+                    if th_ev < 1.0 and th_ev * hh > 1e-12:
+                        cnt[2] += 1
+                        hh = th_ev * hh
+                        _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg)
                     else:
-                        if ln == -math.inf:
-                            continue
-                        sg = 1.0
-                        lev = ln
-                    thp = 0.0
-                    fp = sg
-                    for q in range(1, 5):
-                        th = 0.25 * q
-                        if th >= th_ev:
-                            break
-                        f = _event_value(kind, lev, z, znew, K, hh, t, th, prm)
-                        if (f > 0.0) != (sg > 0.0) and f != 0.0:
-                            f0 = fp if thp > 0.0 else sg * 1e-300
-                            th = _event_root(kind, lev, z, znew, K, hh, t, prm, thp, f0, th, f)
-                            if th < th_ev:
-                                th_ev = th
-                            break
-                        thp = th
-                        fp = f
-                if th_ev < 1.0 and th_ev * hh > 1e-12:
-                    cnt[2] += 1
-                    hh = th_ev * hh
-                    _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, rho0, edge)
-                else:
-                    h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
-                break
-            cnt[0] += 1
-            t1 = t + hh
-            if t_end - t1 < 1e-12 * (1.0 + t_end):
-                t1 = t_end
-            u1 = znew[0] + V * t1
-            # the history entry at the step's end
-            if nh >= HS.shape[0]:
-                return FAIL_HISTORY, nh, h
-            HS[nh, HT] = t1
-            HS[nh, HU] = u1
-            HS[nh, HD] = znew[1] + V
-            HS[nh, HDD] = K[6, 1]
-            HS[nh, HQ] = HS[nh - 1, HQ] + znew[2]
-            nh += 1
-            # the profile at the step's end: the old points clamped, the new ones appended
-            _, _, _, m = _sweep(t1, u1, prm, PC, npc, HS, nh, out, True)
+                        k_ev = -1
+                        h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
+                    break
+                cnt[0] += 1
+                t1 = t + hh
+                if t_stop - t1 < 1e-12 * (1.0 + t_stop):
+                    t1 = t_stop
+                if nh >= HS.shape[0]:
+                    return FAIL_HISTORY, nh, h
+                HS[nh, HT] = t1
+                HS[nh, HU] = znew[0] + V * t1
+                HS[nh, HD] = znew[1] + V
+                HS[nh, HDD] = K[6, 1]
+                HS[nh, HQ] = znew[2]
+                nh += 1
+                for i in range(N_Z):
+                    z[i] = znew[i]
+                    k1[i] = K[6, i]
+                t = t1
+                u1 = z[0] + V * t
+                while ip < mp and u1 - c * (1.0 + a * math.cos(t)) >= LP[ip] - 1e-12:
+                    ip += 1
+                while jn < mn and u1 + c * (1.0 + a * math.cos(t)) <= LN[jn] + 1e-12:
+                    jn += 1
+                if k_ev == 0 or k_ev == 1 or t >= t_end:
+                    break
+            # the segment's end: the old points clamped, the new ones appended
+            u1 = z[0] + V * t
+            _, _, _, m = _sweep(t, u1, prm, PC, npc, HS, nh, out, True)
             if m > MAX_PIECES:
                 return FAIL_PIECES, nh, h
-            d1 = 1.0 + a * math.cos(t1)
+            d1 = 1.0 + a * math.cos(t)
             rho1 = d1 ** (1.0 / n)
-            if edge != EDGE_NONE and rho1 > rho0:
-                r0p = rho0 ** (n + 1.0)
+            if edge != EDGE_NONE and rho1 > rho_s:
+                r0p = rho_s ** (n + 1.0)
                 if edge == EDGE_STUCK:
-                    m = _add(out, m, rho0, rho1, HIS, HS[nh - 2, HQ], t, t1, r0p, rho1 * d1)
+                    m = _add(out, m, rho_s, rho1, HIS, HS[ih_s, HQ], t_s, t, r0p, rho1 * d1)
                 elif edge == EDGE_POS:
-                    m = _add(out, m, rho0, rho1, AFP, u1 - c * d1, 0.0, 0.0, r0p, rho1 * d1)
+                    m = _add(out, m, rho_s, rho1, AFP, u1 - c * d1, 0.0, 0.0, r0p, rho1 * d1)
                 else:
-                    m = _add(out, m, rho0, rho1, AFN, u1 + c * d1, 0.0, 0.0, r0p, rho1 * d1)
+                    m = _add(out, m, rho_s, rho1, AFN, u1 + c * d1, 0.0, 0.0, r0p, rho1 * d1)
                 if m > MAX_PIECES:
                     return FAIL_PIECES, nh, h
             for j in range(m):
                 for q in range(N_PC):
                     PC[j, q] = out[j, q]
             npc = m
-            for i in range(N_Z):
-                z[i] = znew[i]
-                k1[i] = K[6, i]
-            z[2] = 0.0
-            t = t1
     return npc, nh, h
 
 
@@ -712,6 +807,6 @@ def start(prm, y0, v0, PC, HS):
     HS[0, HT] = 0.0
     HS[0, HU] = y0
     HS[0, HD] = v0 + V
-    HS[0, HDD] = 0.0
+    HS[0, HDD] = 0.0  # (set by the first period)
     HS[0, HQ] = 0.0
     return 1, 1

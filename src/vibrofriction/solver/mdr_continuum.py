@@ -6,10 +6,11 @@ periodic orbit.  Its section is ``tau = pi`` (mod ``2 pi``), the smallest indent
 point that touched down in the last loading has left there (``a < 1``), so the profile is a
 few affine pieces over the core ``xi <= (1 - a)^(1/n)`` and the section state is the vector
 ``(y, y', the pieces' ends, their levels relative to u)``.  Anderson's mixing of the last
-``DEPTH`` period maps of that vector (restarted when the pieces' kinds change) finds the
-orbit in 10-25 periods where the plain iteration takes hundreds; a last period at a
-hundredth of the tolerance gives ``mu_ratio``, and its difference from the period before
-is the stated error.
+``DEPTH`` period maps of that vector (restarted when the pieces' kinds change, or where a
+mixed step's residual grows) finds the orbit in about ten to twenty-five periods where the
+plain iteration takes hundreds (``tests/mdr/test_mdr_continuum.py``'s points); a last
+period at a hundredth of the tolerance gives ``mu_ratio``, and its difference from the
+period before, plus the section state's tolerance, is the stated error.
 """
 
 from __future__ import annotations
@@ -23,10 +24,11 @@ from .._kernels import mdr_continuum as mc
 
 __all__ = ["continuum_covers", "mdr_continuum"]
 
-RTOL = 1e-7  # the period maps' tolerance (Dormand-Prince, relative)
+RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative)
 FINE = 1e-2  # the last period's tolerance: this times RTOL
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
+GROWTH = 2.0  # a mixed step whose residual grows by this restarts the mixing
 HISTORY = 20000  # rows of the history of u
 
 
@@ -76,7 +78,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     out = np.zeros_like(PC)
     HS = np.zeros((HISTORY, mc.N_HS))
     K = np.zeros((7, mc.N_Z))
-    cnt = np.zeros(3, dtype=np.int64)
+    cnt = np.zeros(4, dtype=np.int64)
     y0 = -(1.0 + a) ** (1.0 + 1.0 / n) / alpha - offset[0]
     z = np.zeros(mc.N_Z)
     z[0], z[1] = y0, -offset[1]
@@ -93,6 +95,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     xs: list[np.ndarray] = []
     gs: list[np.ndarray] = []
     W = math.nan
+    last = math.inf
     for m in range(max_periods):
         u = z[0] + V * t
         x = _vector(z, PC, npc, u)
@@ -109,14 +112,21 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
         npc, nh = npc2, nh2
         if npc2 != kinds.size or np.any(PC[:npc2, mc.KIND] != kinds):
             xs, gs = [], []  # the pieces' kinds changed: a new start
+            last = math.inf
             continue
         f = g - x
-        if np.max(np.abs(f) / (1.0 + np.abs(x))) < STATE_TOL:
+        res = float(np.max(np.abs(f) / (1.0 + np.abs(x))))
+        if res < STATE_TOL:
             W = z2[3]
             break
+        if res > GROWTH * last:  # the mixing went astray: start again from here
+            xs, gs = [], []
+        last = res
         xs.append(x)
         gs.append(g)
-        xs, gs = xs[-DEPTH:], gs[-DEPTH:]
+        # at most as many differences as the vector has components
+        keep = min(DEPTH, x.size + 1)
+        xs, gs = xs[-keep:], gs[-keep:]
         if len(xs) >= 2:
             F = np.array([gg - xx for gg, xx in zip(gs, xs, strict=True)]).T
             G = np.array(gs).T
