@@ -89,12 +89,13 @@ from .jit import jit
 TWO_PI = 2.0 * math.pi
 AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
 # piece table columns: xi range, kind, P_j / N_j (affine) or Q(tau_a) (history), the
-# history's tau range, xi_a^(n+1), xi_b^(n+1)
-X0, X1, KIND, VAL, TA, TB, X0P, X1P = range(8)
-N_PC = 8
-# history table columns: tau, u, u', u'', Q = int u rho' dtau
-HT, HU, HD, HDD, HQ = range(5)
-N_HS = 5
+# history's tau range, xi_a^(n+1), xi_b^(n+1); a history piece's u(tau_a), u(tau_b) (set at
+# the segment's start) and its last front and that front's history interval (a cache)
+X0, X1, KIND, VAL, TA, TB, X0P, X1P, UA, UB, TF, IF = range(12)
+N_PC = 12
+# history table columns: tau, u, u', u'', Q = int u rho' dtau, P = u - c delta, N
+HT, HU, HD, HDD, HQ, HP, HN = range(7)
+N_HS = 7
 # parameter vector
 P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
 N_PRM = 9
@@ -103,12 +104,22 @@ EDGE_STUCK, EDGE_POS, EDGE_NEG, EDGE_NONE = 0, 1, 2, 3
 N_Z = 6  # y, y', Q = int u rho' (from the start), int F, int stick area, int slip area
 N_ERR = 2  # the components the step's error control sees (the body)
 MAX_PIECES = 64
-GL_X = np.array([-0.9324695142031521, -0.6612093864662645, -0.2386191860831969,
-                 0.2386191860831969, 0.6612093864662645, 0.9324695142031521])
-GL_W = np.array([0.1713244923791704, 0.3607615730481386, 0.4679139345726910,
-                 0.4679139345726910, 0.3607615730481386, 0.1713244923791704])
+# Gauss-Legendre, 3 nodes (exact to degree 5; over a history interval of the steps'
+# length its error is far below the steps' own)
+GL_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
+GL_W = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
 MAX_STEPS_HALF = 20000  # steps in a half period before giving up
+
+
+@jit
+def _root(x, n):
+    """``x^(1/n)`` (``x >= 0``): the gap's inverse, a square root for the sphere."""
+    if n == 2.0:
+        return math.sqrt(x)
+    if n == 1.0:
+        return x
+    return x ** (1.0 / n)
 
 
 @jit
@@ -156,13 +167,12 @@ def _hermite(HS, i, t):
 def _rho_rate(a, n, t):
     """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)``."""
     d = 1.0 + a * math.cos(t)
-    return d ** (1.0 / n - 1.0) / n * (-a * math.sin(t))
+    return _root(d, n) / (d * n) * (-a * math.sin(t))
 
 
 @jit
-def _hq(HS, nh, t, a, n):
-    """``Q(t) = int u rho' dtau`` on the history (Gauss-Legendre on its interval)."""
-    i = _hindex(HS, nh, t)
+def _hq(HS, i, t, a, n):
+    """``Q(t) = int u rho' dtau`` on history interval ``i`` (Gauss-Legendre)."""
     t0 = HS[i, HT]
     if t <= t0:
         return HS[i, HQ]
@@ -177,27 +187,34 @@ def _hq(HS, nh, t, a, n):
 
 
 @jit
-def _hfront(HS, nh, ta, tb, target, sgn, c, a):
-    """``t`` in ``[ta, tb]`` where ``u(t) + sgn c delta(t) = target`` (``sgn = -1``: ``P``,
-    decreasing on a history piece; ``+1``: ``N``, increasing); the bracket holds it.
+def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig):
+    """``(t, i)``: ``t`` in ``[ta, tb]`` where ``u(t) + sgn c delta(t) = target``
+    (``sgn = -1``: ``P``, decreasing on a history piece; ``+1``: ``N``, increasing; the
+    caller has checked that it lies there) and its history interval; ``tg``, ``ig`` a
+    guess (the last front).
     """
-    # bracket on the stored step ends
-    i0 = _hindex(HS, nh, ta)
-    i1 = _hindex(HS, nh, tb)
-    lo, hi = i0, i1 + 1
-    while hi - lo > 1:
-        mid = (lo + hi) // 2
-        tm = HS[mid, HT]
-        f = HS[mid, HU] + sgn * c * (1.0 + a * math.cos(tm)) - target
-        if (f > 0.0) == (sgn < 0.0):  # P above the target: before the front
-            lo = mid
-        else:
-            hi = mid
-    i = lo
+    col = HP if sgn < 0.0 else HN
+    i = -1
+    if 0 <= ig < nh - 1 and HS[ig + 1, HT] > ta and HS[ig, HT] < tb:
+        # the guess's interval, if it holds the root (beyond [ta, tb] the sides are known)
+        f0 = HS[ig, col] - target if HS[ig, HT] > ta else -sgn
+        f1 = HS[ig + 1, col] - target if HS[ig + 1, HT] < tb else sgn
+        if (f0 > 0.0) == (sgn < 0.0) and (f1 > 0.0) != (sgn < 0.0):
+            i = ig
+    if i < 0:  # bracket on the stored step ends
+        lo = _hindex(HS, nh, ta)
+        hi = _hindex(HS, nh, tb) + 1
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if (HS[mid, col] > target) == (sgn < 0.0):  # before the front
+                lo = mid
+            else:
+                hi = mid
+        i = lo
     x0 = max(ta, HS[i, HT])
-    x1 = min(tb, HS[i + 1, HT]) if i + 1 < nh else tb
-    # safeguarded Newton in [x0, x1]
-    t = 0.5 * (x0 + x1)
+    x1 = min(tb, HS[i + 1, HT])
+    # safeguarded Newton in [x0, x1], from the guess where it lies there
+    t = tg if x0 < tg < x1 else 0.5 * (x0 + x1)
     for _ in range(60):
         u, du = _hermite(HS, i, t)
         f = u + sgn * c * (1.0 + a * math.cos(t)) - target
@@ -209,10 +226,11 @@ def _hfront(HS, nh, ta, tb, target, sgn, c, a):
         tn = t - f / df if df != 0.0 else 0.5 * (x0 + x1)
         if not (x0 < tn < x1):
             tn = 0.5 * (x0 + x1)
-        if abs(tn - t) <= 1e-15 * (1.0 + abs(t)) or x1 - x0 <= 1e-15 * (1.0 + abs(t)):
-            return tn
+        # (the force is smooth across the front: its error is second order in the front's)
+        if abs(tn - t) <= 1e-12 * (1.0 + abs(t)) or x1 - x0 <= 1e-12 * (1.0 + abs(t)):
+            return tn, i
         t = tn
-    return t
+    return t, i
 
 
 @jit
@@ -223,32 +241,30 @@ def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
     if x1 <= x0:
         return m
     if m > 0:
-        last = out[m - 1]
-        if kind != HIS and last[KIND] == kind and last[VAL] == val:
-            last[X1] = x1
-            last[X1P] = x1p
+        if kind != HIS and out[m - 1, KIND] == kind and out[m - 1, VAL] == val:
+            out[m - 1, X1] = x1
+            out[m - 1, X1P] = x1p
             return m
-        if kind == HIS and last[KIND] == HIS and last[TB] == ta:
-            last[X1] = x1
-            last[X1P] = x1p
-            last[TB] = tb
+        if kind == HIS and out[m - 1, KIND] == HIS and out[m - 1, TB] == ta:
+            out[m - 1, X1] = x1
+            out[m - 1, X1P] = x1p
+            out[m - 1, TB] = tb
             return m
     if m >= MAX_PIECES:
         return MAX_PIECES + 1
-    r = out[m]
-    r[X0] = x0
-    r[X1] = x1
-    r[KIND] = kind
-    r[VAL] = val
-    r[TA] = ta
-    r[TB] = tb
-    r[X0P] = x0p
-    r[X1P] = x1p
+    out[m, X0] = x0
+    out[m, X1] = x1
+    out[m, KIND] = kind
+    out[m, VAL] = val
+    out[m, TA] = ta
+    out[m, TB] = tb
+    out[m, X0P] = x0p
+    out[m, X1P] = x1p
     return m + 1
 
 
 @jit
-def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
+def _sweep(t, u, prm, PC, npc, HS, nh, out, write, rho):
     """The old points at ``(t, u)``, clamped to the band of the step's monotone edges:
     ``(int e dxi, stick area, slip area, m)`` (areas as ``int 2 xi dxi``); where ``write``,
     the clamped profile is written to ``out`` (``m`` pieces).
@@ -256,7 +272,6 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
     c, n, a = prm[P_C], prm[P_N], prm[P_A]
     n1 = n + 1.0
     d = 1.0 + a * math.cos(t)
-    rho = d ** (1.0 / n)
     P = u - c * d
     N = u + c * d
     E = 0.0
@@ -264,19 +279,18 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
     asl = 0.0
     m = 0
     for j in range(npc):
-        pc = PC[j]
-        xa = pc[X0]
+        xa = PC[j, X0]
         if xa >= rho:
             break
-        xb = pc[X1]
-        xap = pc[X0P]
-        xbp = pc[X1P]
+        xb = PC[j, X1]
+        xap = PC[j, X0P]
+        xbp = PC[j, X1P]
         cut = xb > rho
         if cut:
             xb = rho
             xbp = rho * d  # rho^(n+1)
-        kind = int(pc[KIND])
-        v = pc[VAL]
+        kind = int(PC[j, KIND])
+        v = PC[j, VAL]
         # the sub-ranges: stuck [xa, xs], pushed from below / above [xs, xb] (affine: one
         # of the two), or all pushed
         if kind == AFP:
@@ -298,44 +312,45 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
             gs = 0.5 * (v - P) / c  # beyond: below the lower edge
             sgn = 1.0
         else:
-            ta = pc[TA]
-            tb = pc[TB]
-            gb = xb ** n if not cut else d
+            ta = PC[j, TA]
+            tb = PC[j, TB]
+            gb = PC[j, X1P] / PC[j, X1] if not cut else d
             if cut:  # the newest points have left: the loading time of delta = d
                 ml = math.ceil(ta / TWO_PI)
                 tb = min(tb, TWO_PI * ml - math.acos(min(1.0, max(-1.0, (d - 1.0) / a))))
-            ib = _hindex(HS, nh, tb)
-            ub, _ = _hermite(HS, ib, tb)
+                ub, _ = _hermite(HS, _hindex(HS, nh, tb), tb)
+            else:
+                ub = PC[j, UB]
+            ga = PC[j, X0P] / xa if xa > 0.0 else 0.0
             sgn = 0.0
+            ts = tb
+            its = -1
             if ub - c * gb < P:  # the newest points below the lower edge
                 sgn = 1.0
-                ga = pc[X0P] / xa if xa > 0.0 else 0.0
-                ia = _hindex(HS, nh, pc[TA])
-                ua, _ = _hermite(HS, ia, pc[TA])
-                if ua - c * ga <= P:
-                    ts = pc[TA]
+                if PC[j, UA] - c * ga <= P:
+                    ts = ta
                 else:
-                    ts = _hfront(HS, nh, pc[TA], tb, P, -1.0, c, a)
+                    ts, its = _hfront(HS, nh, ta, tb, P, -1.0, c, a, PC[j, TF], int(PC[j, IF]))
             elif ub + c * gb > N:
                 sgn = -1.0
-                ga = pc[X0P] / xa if xa > 0.0 else 0.0
-                ia = _hindex(HS, nh, pc[TA])
-                ua, _ = _hermite(HS, ia, pc[TA])
-                if ua + c * ga >= N:
-                    ts = pc[TA]
+                if PC[j, UA] + c * ga >= N:
+                    ts = ta
                 else:
-                    ts = _hfront(HS, nh, pc[TA], tb, N, 1.0, c, a)
+                    ts, its = _hfront(HS, nh, ta, tb, N, 1.0, c, a, PC[j, TF], int(PC[j, IF]))
+            if its >= 0:
+                PC[j, TF] = ts
+                PC[j, IF] = its
             else:
-                ts = tb
-            if ts > pc[TA]:
+                its = _hindex(HS, nh, ts)
+            if ts > PC[j, TA]:
                 ds = 1.0 + a * math.cos(ts)
-                xs = ds ** (1.0 / n) if ts < tb else xb
+                xs = _root(ds, n) if ts < tb else xb
                 xsp = xs * ds if ts < tb else xbp
-                Qs = _hq(HS, nh, ts, a, n)
+                Qs = _hq(HS, its, ts, a, n)
                 E += u * (xs - xa) - (Qs - v)
                 ast += xs * xs - xa * xa
                 if write:
-                    m = _add(out, m, xa, xs, HIS, v, pc[TA], ts, xap, xsp)
+                    m = _add(out, m, xa, xs, HIS, v, PC[j, TA], ts, xap, xsp)
             else:
                 xs = xa
                 xsp = xap
@@ -353,7 +368,7 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
             xs = xa
             xsp = xap
         else:
-            xs = gs ** (1.0 / n)
+            xs = _root(gs, n)
             xsp = xs * gs
             if xs > xb:
                 xs = xb
@@ -382,17 +397,17 @@ def _sweep(t, u, prm, PC, npc, HS, nh, out, write):
 def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     """The body's equation, ``Q``'s rate and the integrands of the period's means, with
     the profile of the segment's start clamped (:func:`_sweep`) and the points touched
-    down since (``seg = (rho, Q, edge mode)`` at the segment's start).
+    down since (``seg = (rho, Q, edge mode, rho^n)`` at the segment's start).
     """
     y, v = z[0], z[1]
     V = prm[P_V]
     u = y + V * t
-    E, ast, asl, _ = _sweep(t, u, prm, PC, npc, HS, nh, PC, False)
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
     ct = math.cos(t)
     st = math.sin(t)
     d = 1.0 + a * ct
-    rho = d ** (1.0 / n)
+    rho = _root(d, n)
+    E, ast, asl, _ = _sweep(t, u, prm, PC, npc, HS, nh, PC, False, rho)
     rho0 = seg[0]
     edge = int(seg[2])
     if edge != EDGE_NONE and rho > rho0:
@@ -402,7 +417,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
         else:
             s = 1.0 if edge == EDGE_POS else -1.0
             n1 = n + 1.0
-            E += s * c * (d * (rho - rho0) - (rho * d - rho0 ** n1) / n1)
+            E += s * c * (d * (rho - rho0) - (rho * d - rho0 * seg[3]) / n1)
             asl += rho * rho - rho0 * rho0
     F = prm[P_K] * E
     dz[0] = v
@@ -415,10 +430,10 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
 
 @jit
 def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg):
-    """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``);
-    returns the error norm's square sum over the controlled components (unscaled).
+    """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``,
+    ``K[7]`` scratch).
     """
-    tmp = np.empty(N_Z)
+    tmp = K[7]
     for i in range(N_Z):
         K[0, i] = k1[i]
         tmp[i] = z[i] + h * _A21 * k1[i]
@@ -521,12 +536,11 @@ def _levels(prm, PC, npc, HS, nh, t0, P0, N0, up, down, unloading, LP, LN, LT):
     mt = 0
     base = TWO_PI * math.floor(t0 / TWO_PI + 1e-12)
     for j in range(npc):
-        pc = PC[j]
-        kind = int(pc[KIND])
-        v = pc[VAL]
-        ga = pc[X0P] / pc[X0] if pc[X0] > 0.0 else 0.0
+        kind = int(PC[j, KIND])
+        v = PC[j, VAL]
+        ga = PC[j, X0P] / PC[j, X0] if PC[j, X0] > 0.0 else 0.0
         last = j == npc - 1  # its far end is the contact's edge: the band has no width
-        gb = pc[X1P] / pc[X1]
+        gb = PC[j, X1P] / PC[j, X1]
         for q in range(3):
             lv = math.nan
             if kind == AFP:
@@ -540,8 +554,7 @@ def _levels(prm, PC, npc, HS, nh, t0, P0, N0, up, down, unloading, LP, LN, LT):
                 elif not (down and v >= N0 - tiny):
                     lv = v - 2.0 * c * (ga if q == 1 else gb)
             elif q > 0:
-                tq = pc[TA] if q == 1 else pc[TB]
-                uq, _ = _hermite(HS, _hindex(HS, nh, tq), tq)
+                uq = PC[j, UA] if q == 1 else PC[j, UB]
                 gq = ga if q == 1 else gb
                 lv = uq - c * gq  # P(tau_on): the lower edge's level; N's is 2 c g above
             if math.isnan(lv) or (q == 2 and last):
@@ -588,46 +601,60 @@ def _direction(g, gd, tol):
 
 
 @jit
+def _crossed(f, sg):
+    """Whether ``f`` has left the sign ``sg`` it had at the step's start."""
+    return f != 0.0 and (f > 0.0) != (sg > 0.0)
+
+
+@jit
 def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
     none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
-    and its kind.
+    and its kind.  Each is sampled at four points of the step (a sign change and back
+    within a quarter step is passed over).
     """
-    th_ev = 2.0
-    k_ev = -1
-    for kind in range(4):
-        if kind == 0:
-            sg = dirp
-            lev = 0.0
-        elif kind == 1:
-            sg = dirn
-            lev = 0.0
-        elif kind == 2:
-            if lp == math.inf:
-                continue
-            sg = -1.0
-            lev = lp
-        else:
-            if ln == -math.inf:
-                continue
-            sg = 1.0
-            lev = ln
-        thp = 0.0
-        fp = sg * 1e-300
-        for q in range(1, 5):  # four samples: a sign change and back within a step is rare
-            th = 0.25 * q
-            if th >= th_ev:
-                break
-            f = _event_value(kind, lev, z, znew, K, hh, t, th, prm)
-            if (f > 0.0) != (sg > 0.0) and f != 0.0:
-                th = _event_root(kind, lev, z, znew, K, hh, t, prm, thp, fp, th, f)
-                if th < th_ev:
-                    th_ev = th
-                    k_ev = kind
-                break
-            thp = th
-            fp = f
-    return th_ev, k_ev
+    c, a, V = prm[P_C], prm[P_A], prm[P_V]
+    p0 = dirp * 1e-300
+    p1 = dirn * 1e-300
+    p2 = -1e-300
+    p3 = 1e-300
+    thp = 0.0
+    for q in range(1, 5):
+        th = 0.25 * q
+        tt = t + th * hh
+        ud = _dense(z, znew, K, hh, 1, th) + V
+        u = _dense(z, znew, K, hh, 0, th) + V * tt
+        cd = c * (1.0 + a * math.cos(tt))
+        cdd = -c * a * math.sin(tt)
+        f0 = ud - cdd
+        f1 = ud + cdd
+        f2 = u - cd - lp
+        f3 = u + cd - ln
+        th_ev = 2.0
+        k_ev = -1
+        if _crossed(f0, dirp):
+            th_ev = _event_root(0, 0.0, z, znew, K, hh, t, prm, thp, p0, th, f0)
+            k_ev = 0
+        if _crossed(f1, dirn):
+            r = _event_root(1, 0.0, z, znew, K, hh, t, prm, thp, p1, th, f1)
+            if r < th_ev:
+                th_ev = r
+                k_ev = 1
+        if lp != math.inf and _crossed(f2, -1.0):
+            r = _event_root(2, lp, z, znew, K, hh, t, prm, thp, p2, th, f2)
+            if r < th_ev:
+                th_ev = r
+                k_ev = 2
+        if ln != -math.inf and _crossed(f3, 1.0):
+            r = _event_root(3, ln, z, znew, K, hh, t, prm, thp, p3, th, f3)
+            if r < th_ev:
+                th_ev = r
+                k_ev = 3
+        if k_ev >= 0:
+            return th_ev, k_ev
+        p0, p1, p2, p3 = f0, f1, f2, f3
+        thp = th
+    return 2.0, -1
 
 
 @jit
@@ -648,7 +675,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     z[5] = 0.0
     znew = np.empty(N_Z)
     k1 = np.empty(N_Z)
-    seg = np.empty(3)
+    seg = np.empty(4)
     LP = np.empty(4 * MAX_PIECES)
     LN = np.empty(4 * MAX_PIECES)
     LT = np.empty(2 * MAX_PIECES)
@@ -656,9 +683,12 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     seg[0] = 0.0
     seg[1] = 0.0
     seg[2] = EDGE_NONE
+    seg[3] = 0.0
     rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
     HS[nh - 1, HDD] = k1[1]
     HS[nh - 1, HQ] = z[2]
+    HS[nh - 1, HP] = HS[nh - 1, HU] - c * (1.0 + a * math.cos(t))
+    HS[nh - 1, HN] = HS[nh - 1, HU] + c * (1.0 + a * math.cos(t))
     for half in range(halves):
         t_end = t0 + (half + 1) * math.pi
         unloading = math.sin(t0 + (half + 0.5) * math.pi) > 0.0
@@ -683,10 +713,11 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 edge = EDGE_NEG
             else:
                 edge = EDGE_STUCK
-            rho_s = d0 ** (1.0 / n)
+            rho_s = _root(d0, n)
             seg[0] = rho_s
             seg[1] = z[2]
             seg[2] = edge
+            seg[3] = d0  # rho_s^n
             t_s = t
             ih_s = nh - 1
             mp, mn, mt = _levels(prm, PC, npc, HS, nh, t, P0, N0, dirp > 0.0, dirn < 0.0,
@@ -733,6 +764,9 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 HS[nh, HD] = znew[1] + V
                 HS[nh, HDD] = K[6, 1]
                 HS[nh, HQ] = znew[2]
+                d1 = 1.0 + a * math.cos(t1)
+                HS[nh, HP] = HS[nh, HU] - c * d1
+                HS[nh, HN] = HS[nh, HU] + c * d1
                 nh += 1
                 for i in range(N_Z):
                     z[i] = znew[i]
@@ -747,13 +781,13 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                     break
             # the segment's end: the old points clamped, the new ones appended
             u1 = z[0] + V * t
-            _, _, _, m = _sweep(t, u1, prm, PC, npc, HS, nh, out, True)
+            d1 = 1.0 + a * math.cos(t)
+            rho1 = _root(d1, n)
+            _, _, _, m = _sweep(t, u1, prm, PC, npc, HS, nh, out, True, rho1)
             if m > MAX_PIECES:
                 return FAIL_PIECES, nh, h
-            d1 = 1.0 + a * math.cos(t)
-            rho1 = d1 ** (1.0 / n)
             if edge != EDGE_NONE and rho1 > rho_s:
-                r0p = rho_s ** (n + 1.0)
+                r0p = rho_s * d0
                 if edge == EDGE_STUCK:
                     m = _add(out, m, rho_s, rho1, HIS, HS[ih_s, HQ], t_s, t, r0p, rho1 * d1)
                 elif edge == EDGE_POS:
@@ -763,8 +797,13 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 if m > MAX_PIECES:
                     return FAIL_PIECES, nh, h
             for j in range(m):
-                for q in range(N_PC):
+                for q in range(X1P + 1):
                     PC[j, q] = out[j, q]
+                if PC[j, KIND] == HIS:  # the ends' u for the next segment's stages
+                    PC[j, UA], _ = _hermite(HS, _hindex(HS, nh, PC[j, TA]), PC[j, TA])
+                    PC[j, UB], _ = _hermite(HS, _hindex(HS, nh, PC[j, TB]), PC[j, TB])
+                    PC[j, TF] = math.nan
+                    PC[j, IF] = -1.0
             npc = m
     return npc, nh, h
 
@@ -795,7 +834,7 @@ def start(prm, y0, v0, PC, HS):
     """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
     d = 1.0 + a
-    rho = d ** (1.0 / n)
+    rho = _root(d, n)
     PC[0, X0] = 0.0
     PC[0, X1] = rho
     PC[0, KIND] = AFP
@@ -809,4 +848,157 @@ def start(prm, y0, v0, PC, HS):
     HS[0, HD] = v0 + V
     HS[0, HDD] = 0.0  # (set by the first period)
     HS[0, HQ] = 0.0
+    HS[0, HP] = y0 - c * d
+    HS[0, HN] = y0 + c * d
     return 1, 1
+
+
+@jit
+def _section(z, PC, npc, u, x):
+    """The section state ``(y, y', the pieces' ends, their levels relative to u)`` into
+    ``x``; returns its length.
+    """
+    x[0] = z[0]
+    x[1] = z[1]
+    for j in range(npc):
+        x[2 + 2 * j] = PC[j, X1]
+        x[3 + 2 * j] = PC[j, VAL] - u
+    return 2 + 2 * npc
+
+
+@jit
+def _set_section(x, z, PC, npc, u, n):
+    """The inverse of :func:`_section` (the ends kept in order, the last, the contact's
+    edge, fixed).
+    """
+    z[0] = x[0]
+    z[1] = x[1]
+    lo = 0.0
+    for j in range(npc):
+        e = PC[j, X1] if j == npc - 1 else min(max(x[2 + 2 * j], lo), PC[npc - 1, X1])
+        PC[j, X0] = lo
+        PC[j, X0P] = PC[j - 1, X1P] if j > 0 else 0.0
+        PC[j, X1] = e
+        PC[j, X1P] = e ** (n + 1.0)
+        PC[j, VAL] = x[3 + 2 * j] + u
+        lo = e
+
+
+SECTION_OK, SECTION_NO_ORBIT = 0, 1
+
+
+@jit
+def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_periods,
+           cnt, res):
+    """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
+    then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
+    restarted where the pieces' kinds change or a mixed step's residual grows by
+    ``growth``) until the state's relative change is below ``state_tol``; then a period
+    at ``fine * rtol``.  Writes ``res = (int F over the last coarse period, over the one
+    before, over the fine one, stick area, slip area)`` (integrals over a period; the
+    areas of the fine one).  Returns ``(code, periods, events of the fine period)``:
+    ``code`` 0, :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
+    """
+    V, n = prm[P_V], prm[P_N]
+    K = np.zeros((8, N_Z))
+    out = np.zeros_like(PC)
+    nmax = 2 + 2 * MAX_PIECES
+    X = np.zeros((depth, nmax))
+    G = np.zeros((depth, nmax))
+    x = np.zeros(nmax)
+    g = np.zeros(nmax)
+    kinds = np.zeros(MAX_PIECES + 1)
+    z2 = np.zeros(N_Z)
+    npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, rtol, 0.01 * rtol, 0.5, 0.1, K, out,
+                        cnt, 1)
+    if npc < 0:
+        return npc, 0, 0
+    nh = compact(HS, nh, PC, npc)
+    t = math.pi
+    nhist = 0
+    last = math.inf
+    w_prev = math.nan
+    w_last = math.nan
+    periods = 0
+    found = False
+    for m in range(max_periods):
+        periods = m + 1
+        nx = _section(z, PC, npc, z[0] + V * t, x)
+        for j in range(npc):
+            kinds[j] = PC[j, KIND]
+        npc0 = npc
+        for i in range(N_Z):
+            z2[i] = z[i]
+        npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, rtol, 0.01 * rtol, 0.5, h, K, out,
+                            cnt, 2)
+        if npc < 0:
+            return npc, periods, 0
+        nh = compact(HS, nh, PC, npc)
+        t += 2.0 * math.pi
+        for i in range(N_Z):
+            z[i] = z2[i]
+        w_prev = w_last
+        w_last = z2[3]
+        same = npc == npc0
+        if same:
+            for j in range(npc):
+                if PC[j, KIND] != kinds[j]:
+                    same = False
+        if not same:  # the pieces' kinds changed: a new start
+            nhist = 0
+            last = math.inf
+            continue
+        _section(z, PC, npc, z[0] + V * t, g)
+        r = 0.0
+        for i in range(nx):
+            r = max(r, abs(g[i] - x[i]) / (1.0 + abs(x[i])))
+        if r < state_tol:
+            found = True
+            break
+        if r > growth * last:  # the mixing went astray: start again from here
+            nhist = 0
+        last = r
+        keep = min(depth, nx + 1)
+        if nhist == keep:  # drop the oldest
+            for q in range(keep - 1):
+                X[q, :nx] = X[q + 1, :nx]
+                G[q, :nx] = G[q + 1, :nx]
+            nhist -= 1
+        X[nhist, :nx] = x[:nx]
+        G[nhist, :nx] = g[:nx]
+        nhist += 1
+        if nhist >= 2:
+            dF = np.empty((nx, nhist - 1))
+            for q in range(nhist - 1):
+                for i in range(nx):
+                    dF[i, q] = (G[q + 1, i] - X[q + 1, i]) - (G[q, i] - X[q, i])
+            f = g[:nx] - x[:nx]
+            gam = np.linalg.lstsq(dF, f)[0]
+            ok = True
+            for i in range(nx):
+                s = g[i]
+                for q in range(nhist - 1):
+                    s -= (G[q + 1, i] - G[q, i]) * gam[q]
+                x[i] = s
+                if not math.isfinite(s):
+                    ok = False
+            if ok:
+                u = x[0] + V * t
+                _set_section(x, z, PC, npc, u, n)
+                HS[nh - 1, HU] = u
+                HS[nh - 1, HD] = x[1] + V
+    if not found:
+        return SECTION_NO_ORBIT, periods, 0
+    for i in range(N_Z):
+        z2[i] = z[i]
+    ev0 = cnt[2]
+    npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, fine * rtol, 0.01 * fine * rtol, 0.5,
+                        h, K, out, cnt, 2)
+    if npc < 0:
+        return npc, periods + 1, 0
+    res[0] = w_last
+    res[1] = w_prev
+    res[2] = z2[3]
+    res[3] = z2[4]
+    res[4] = z2[5]
+    return 0, periods + 1, cnt[2] - ev0

@@ -1,0 +1,108 @@
+"""Random points of the row without springs against the spring rows.
+
+80 points drawn with a fixed seed over what the continuum covers: alpha 1e-2..10,
+beta - alpha 0.03..100, a 0.05..0.95, V 1e-2..3, zeta in {0, 0.01, 0.1, 0.5}, n in
+{0.7, 1, 1.5, 2, 3, 5}, a longitudinal drive a_x in {0, 0, 0.5} (random phase, substrate or
+holder). Each is solved by the continuum (:func:`vibrofriction.solver.mdr_continuum.
+mdr_continuum`) and by the spring rows (:func:`vibrofriction.solver.mdr.mdr_friction` at
+``tol = 1e-6``, rows doubled and extrapolated). Prints and records the statuses, how many
+agree within the two stated errors (and the largest difference over them), the stated
+errors and periods of the continuum, and the time per point of both (medians).
+
+    PYTHONPATH=src python benchmarks/mdr_continuum_fuzz.py [--write]
+
+``--write`` appends the run to benchmarks/results/mdr_continuum_fuzz.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import time
+from collections import Counter
+from pathlib import Path
+
+import numpy as np
+
+from sections import append_run
+from vibrofriction._kernels.phases import frame_offset, inplane_forcing
+from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction.solver.mdr_continuum import mdr_continuum
+
+RESULTS = Path(__file__).parent / "results" / "mdr_continuum_fuzz.md"
+N = 80
+
+
+def _points() -> list[tuple]:
+    rng = np.random.default_rng(11)
+    pts = []
+    for _ in range(N):
+        al = 10 ** rng.uniform(-2, 1)
+        be = al + 10 ** rng.uniform(-1.5, 2)
+        pts.append((al, be, rng.uniform(0.05, 0.95), 10 ** rng.uniform(-2, 0.5),
+                    float(rng.choice([0, 0.01, 0.1, 0.5])),
+                    float(rng.choice([0.7, 1, 1.5, 2, 3, 5])),
+                    float(rng.choice([0, 0, 0.5])), rng.uniform(0, 6.3),
+                    str(rng.choice(["substrate", "holder"]))))
+    return pts
+
+
+def run() -> list[str]:
+    statuses: Counter = Counter()
+    agree, ratios, errs, periods, t_c, t_r, worst = 0, [], [], [], [], [], ""
+    for al, be, a, V, ze, n, ax, px, on in _points():
+        sub = on == "substrate"
+        hc, hs = inplane_forcing(al, 2 * ze * np.sqrt(al), ax, px, sub)
+        t0 = time.perf_counter()
+        c = mdr_continuum(al, be, a, V, n, ze, hc, hs, frame_offset(ax, px, sub))
+        t1 = time.perf_counter()
+        r = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-6, a_x=ax, phase_x=px,
+                         inplane_on=on)
+        t2 = time.perf_counter()
+        statuses[(c["status"], r["status"])] += 1
+        t_c.append(t1 - t0)
+        t_r.append(t2 - t1)
+        if c["status"] != "periodic" or r["status"] != "periodic":
+            continue
+        q = abs(c["mu_ratio"] - r["mu_ratio"]) / (c["error"] + r["error"])
+        agree += q <= 1.0
+        if not ratios or q > max(ratios):
+            worst = (f"alpha {al:.3g}, beta {be:.3g}, a {a:.3g}, V {V:.3g}, zeta {ze:g}, "
+                     f"n {n:g}, a_x {ax:g} ({on})")
+        ratios.append(q)
+        errs.append(c["error"])
+        periods.append(c["periods"])
+    both = sum(v for k, v in statuses.items() if k == ("periodic", "periodic"))
+    lines = [
+        "| statuses (continuum, rows): count | " + ", ".join(
+            f"{k[0]}/{k[1]}: {v}" for k, v in sorted(statuses.items())) + " |",
+        "|---|---|",
+        f"| within the two stated errors | {agree} of {both} (largest difference over them "
+        f"{max(ratios):.2f}, median {statistics.median(ratios):.3f}) |",
+        f"| the worst point | {worst} |",
+        f"| continuum: stated error, median and largest | {statistics.median(errs):.1e}, "
+        f"{max(errs):.1e} |",
+        f"| continuum: periods, median and largest | {statistics.median(periods):.0f}, "
+        f"{max(periods)} |",
+        f"| time per point, median (continuum, rows at tol 1e-6) | "
+        f"{1e3 * statistics.median(t_c):.1f} ms, {1e3 * statistics.median(t_r):.1f} ms |",
+    ]
+    for line in lines:
+        print(line)
+    return lines
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
+    args = ap.parse_args()
+    lines = run()
+    if args.write:
+        append_run(RESULTS, f"{N} random points: the row without springs against the rows",
+                   "PYTHONPATH=src python benchmarks/mdr_continuum_fuzz.py --write",
+                   "seed 11; each point solved alone, once (the medians: the first point's "
+                   "times also load or compile the kernels).", lines)
+
+
+if __name__ == "__main__":
+    main()
