@@ -22,7 +22,7 @@ from ..capabilities import CAPABILITIES
 from ..schema import POSITIVE
 from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
-from .mdr_continuum import continuum_covers, mdr_continuum
+from .mdr_continuum import continuum_covers, continuum_friction
 
 __all__ = ["mdr_friction", "mdr_row"]
 
@@ -209,8 +209,9 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         on_substrate = inplane_on == "substrate"
         hc, hs = inplane_forcing(alpha, 2.0 * zeta * math.sqrt(alpha), a_x, phase_x,
                                  on_substrate)
-        r = mdr_continuum(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
-                          frame_offset(a_x, phase_x, on_substrate), max_periods=max_periods)
+        r = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
+                               frame_offset(a_x, phase_x, on_substrate), tol,
+                               max_periods=max_periods)
         if r["status"] == "periodic" and r["error"] <= tol:
             r.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(),
                      mean_normal_ratio=float(theory_mean_normal(amplitude, n_exp)))

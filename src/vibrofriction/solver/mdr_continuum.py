@@ -22,9 +22,10 @@ import numpy as np
 from .. import theory
 from .._kernels import mdr_continuum as mc
 
-__all__ = ["continuum_covers", "mdr_continuum"]
+__all__ = ["continuum_covers", "continuum_friction", "mdr_continuum"]
 
-RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative)
+RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
+LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
 FINE = 0.1  # the last period's tolerance: this times RTOL
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
@@ -81,3 +82,21 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                 stick_area_fraction=float(stick), slip_area_fraction=float(slip),
                 open_area_fraction=float(1.0 - stick - slip),
                 events_per_period=int(events), reason="")
+
+
+def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
+                       profile_exponent: float, zeta: float, hc: float, hs: float,
+                       offset: tuple[float, float], tol: float,
+                       max_periods: int = 200) -> dict:
+    """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
+
+    A tenth of ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the stated
+    error exceeds ``tol`` (down to ``TIGHTEST``).
+    """
+    rtol = min(LOOSEST, max(TIGHTEST, 0.1 * tol))
+    while True:
+        r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
+                          max_periods=max_periods, rtol=rtol)
+        if r["status"] != "periodic" or r["error"] <= tol or rtol <= TIGHTEST:
+            return r
+        rtol = max(TIGHTEST, 0.1 * rtol)
