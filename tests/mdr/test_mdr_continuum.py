@@ -10,7 +10,11 @@ import pytest
 
 from vibrofriction._kernels import mdr_continuum as mc
 from vibrofriction.solver.mdr import mdr_friction, mdr_row
-from vibrofriction.solver.mdr_continuum import continuum_covers, mdr_continuum
+from vibrofriction.solver.mdr_continuum import (
+    continuum_covers,
+    mdr_continuum,
+    slides_continuously,
+)
 
 
 def test_hermite_is_exact_for_quintics():
@@ -83,12 +87,19 @@ def test_drive_matches_the_rows():
     assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
 
 
-def test_tight_tolerance_routes_to_the_continuum():
-    """``mdr_friction`` below ``CONTINUUM_TOL`` answers with the continuum (no rows)."""
+def test_tight_tolerance_routes_to_the_continuum(monkeypatch):
+    """``mdr_friction`` below ``CONTINUUM_TOL`` answers with the continuum (no rows);
+    above it, with ``n_springs`` or with ``CONTINUUM_TOL = 0`` with the rows."""
+    import vibrofriction.solver.mdr as mdr
+
     r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)
     assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
-    r5 = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-5)
-    assert r5["rows"] != ()
+    assert r["max_excess"] == 0.0
+    assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-5)["rows"] != ()
+    assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8,
+                        n_springs=40)["rows"] == (40, 80)
+    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
+    assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)["rows"] != ()
 
 
 FINE = json.loads((Path(__file__).parents[1] / "data" / "mdr_fine_reference.json")
@@ -120,3 +131,37 @@ def test_continuum_agrees_with_the_independent_reference(p):
     assert c["error"] <= 1e-7
     assert abs(c["mu_ratio"] - p["mu_ref"]) <= c["error"] + p["err_ref"], (
         c["mu_ratio"], p["mu_ref"], p["err_ref"])
+
+
+def test_continuous_sliding_is_claimed_only_above_the_critical_velocity():
+    """:func:`slides_continuously` (a coarse grid with the grid's error bound) against
+    ``theory.profile_critical_velocity`` (2^15 points refined by Brent's method): never
+    claimed below it, always claimed from 0.2 % above it, at random points."""
+    from vibrofriction.theory import profile_critical_velocity
+
+    rng = np.random.default_rng(5)
+    for _ in range(60):
+        al = 10 ** rng.uniform(-2, 1)
+        be = al + 10 ** rng.uniform(-1.5, 2)
+        a, n = rng.uniform(0.05, 0.95), float(rng.choice([0.7, 1, 1.5, 2, 3, 5]))
+        ze = float(rng.choice([0, 0.01, 0.1, 0.5]))
+        vc = float(profile_critical_velocity(al, be, a, n, ze))
+        assert not slides_continuously(al, be, a, vc * (1 - 1e-9), n, ze)
+        assert slides_continuously(al, be, a, vc * 1.002 + 1e-9, n, ze)
+
+
+def test_continuous_sliding_matches_the_rows():
+    """Above the critical velocity the MDR solver (at a tolerance the continuum answers)
+    returns ``mu_ratio = 1`` exactly with the status of continuous sliding, as the rows find
+    (their orbit slips throughout)."""
+    from vibrofriction.schema import Status
+    from vibrofriction.solver import SolverSettings, solve_points
+
+    tight = SolverSettings(tol_trusted=1e-9)
+    out = solve_points(5.0, 50.0, 0.6, 0.5, profile_exponent=2.0, settings=tight)
+    assert int(out["status"]) == Status.SLIDING.code and float(out["mu_ratio"]) == 1.0
+    r = mdr_friction(5.0, 50.0, 0.6, 0.5, 2.0, n_springs=80)  # the rows alone
+    assert r["mu_ratio"] == pytest.approx(1.0, abs=1e-10) and r["stick_area_fraction"] == 0
+    assert float(out["slip_area_fraction"]) == pytest.approx(r["slip_area_fraction"],
+                                                             abs=2e-3)
+    assert float(out["error"]) == 0.0

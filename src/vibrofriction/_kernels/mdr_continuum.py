@@ -84,7 +84,7 @@ from .dopri import (
     _E6,
     _E7,
 )
-from .jit import jit
+from .jit import jit, jit_inline
 
 TWO_PI = 2.0 * math.pi
 AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
@@ -101,7 +101,8 @@ P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
 N_PRM = 9
 # edge modes of a step: new points enter stuck, pushed from below, from above; none enter
 EDGE_STUCK, EDGE_POS, EDGE_NEG, EDGE_NONE = 0, 1, 2, 3
-N_Z = 6  # y, y', Q = int u rho' (from the start), int F, int stick area, int slip area
+N_Z = 7  # y, y', Q = int u rho' (from the start), int F, int stick area, int slip area,
+# int y
 N_ERR = 2  # the components the step's error control sees (the body)
 MAX_PIECES = 64
 # Gauss-Legendre, 3 nodes (exact to degree 5; over a history interval of the steps'
@@ -263,15 +264,15 @@ def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
     return m + 1
 
 
-@jit
-def _sweep(t, u, prm, PC, npc, HS, nh, out, write, rho):
-    """The old points at ``(t, u)``, clamped to the band of the step's monotone edges:
-    ``(int e dxi, stick area, slip area, m)`` (areas as ``int 2 xi dxi``); where ``write``,
-    the clamped profile is written to ``out`` (``m`` pieces).
+@jit_inline
+def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
+    """The old points at ``u`` and ``delta = d`` (``rho = d^(1/n)``), clamped to the band of
+    the step's monotone edges: ``(int e dxi, stick area, slip area, m)`` (areas as
+    ``int 2 xi dxi``); where ``write``, the clamped profile is written to ``out`` (``m``
+    pieces).
     """
     c, n, a = prm[P_C], prm[P_N], prm[P_A]
     n1 = n + 1.0
-    d = 1.0 + a * math.cos(t)
     P = u - c * d
     N = u + c * d
     E = 0.0
@@ -407,7 +408,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     st = math.sin(t)
     d = 1.0 + a * ct
     rho = _root(d, n)
-    E, ast, asl, _ = _sweep(t, u, prm, PC, npc, HS, nh, PC, False, rho)
+    E, ast, asl, _ = _sweep(u, prm, PC, npc, HS, nh, PC, False, rho, d)
     rho0 = seg[0]
     edge = int(seg[2])
     if edge != EDGE_NONE and rho > rho0:
@@ -426,6 +427,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     dz[3] = F
     dz[4] = ast
     dz[5] = asl
+    dz[6] = y
 
 
 @jit
@@ -673,6 +675,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     z[3] = 0.0
     z[4] = 0.0
     z[5] = 0.0
+    z[6] = 0.0
     znew = np.empty(N_Z)
     k1 = np.empty(N_Z)
     seg = np.empty(4)
@@ -783,7 +786,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             u1 = z[0] + V * t
             d1 = 1.0 + a * math.cos(t)
             rho1 = _root(d1, n)
-            _, _, _, m = _sweep(t, u1, prm, PC, npc, HS, nh, out, True, rho1)
+            _, _, _, m = _sweep(u1, prm, PC, npc, HS, nh, out, True, rho1, d1)
             if m > MAX_PIECES:
                 return FAIL_PIECES, nh, h
             if edge != EDGE_NONE and rho1 > rho_s:
@@ -885,6 +888,23 @@ def _set_section(x, z, PC, npc, u, n):
 
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
+BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
+
+
+@jit
+def _balance(prm, z, PC, npc, HS, nh):
+    """Shift the section state (the body and the profile with it) by the mismatch of the
+    last period's mean force balance.
+
+    On the orbit ``alpha <y> + <F> = 0`` (the damping and the drive average out), so a
+    body whose mean ``<y>`` misses ``-<F>/alpha`` is in the slow swing of its spring (the
+    soft pin's transient), which plain periods damp only slowly.
+    """
+    dy = -z[3] / (TWO_PI * prm[P_ALPHA]) - z[6] / TWO_PI
+    z[0] += dy
+    HS[nh - 1, HU] += dy
+    for j in range(npc):
+        PC[j, VAL] += dy
 
 
 @jit
@@ -893,11 +913,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change or a mixed step's residual grows by
-    ``growth``) until the state's relative change is below ``state_tol``; then a period
-    at ``fine * rtol``.  Writes ``res = (int F over the last coarse period, over the one
-    before, over the fine one, stick area, slip area)`` (integrals over a period; the
-    areas of the fine one).  Returns ``(code, periods, events of the fine period)``:
-    ``code`` 0, :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
+    ``growth``) until the state's relative change is below ``state_tol``; then on from
+    there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
+    its error, by more where the orbit attracts slowly, so the fine orbit is sought anew,
+    not one fine period taken from the coarse orbit).  Writes ``res = (int F over the
+    coarse orbit's period, -, over the fine orbit's, its stick area, its slip area)``.
+    Returns ``(code, periods, events of the last period)``: ``code`` 0,
+    :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
     """
     V, n = prm[P_V], prm[P_N]
     K = np.zeros((8, N_Z))
@@ -921,6 +943,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     w_last = math.nan
     periods = 0
     found = False
+    stage = 0  # 0: maps at rtol, 1: at fine * rtol
+    tol_m = rtol
+    w_coarse = math.nan
+    ev = 0
     for m in range(max_periods):
         periods = m + 1
         nx = _section(z, PC, npc, z[0] + V * t, x)
@@ -929,10 +955,12 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         npc0 = npc
         for i in range(N_Z):
             z2[i] = z[i]
-        npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, rtol, 0.01 * rtol, 0.5, h, K, out,
-                            cnt, 2)
+        ev0 = cnt[2]
+        npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, h, K,
+                            out, cnt, 2)
         if npc < 0:
             return npc, periods, 0
+        ev = cnt[2] - ev0
         nh = compact(HS, nh, PC, npc)
         t += 2.0 * math.pi
         for i in range(N_Z):
@@ -947,14 +975,23 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         if not same:  # the pieces' kinds changed: a new start
             nhist = 0
             last = math.inf
+            if m < BALANCED:
+                _balance(prm, z, PC, npc, HS, nh)
             continue
         _section(z, PC, npc, z[0] + V * t, g)
         r = 0.0
         for i in range(nx):
             r = max(r, abs(g[i] - x[i]) / (1.0 + abs(x[i])))
         if r < state_tol:
-            found = True
-            break
+            if stage == 1:
+                found = True
+                break
+            stage = 1  # on to the fine map's orbit
+            w_coarse = w_last
+            tol_m = fine * rtol
+            nhist = 0
+            last = math.inf
+            continue
         if r > growth * last:  # the mixing went astray: start again from here
             nhist = 0
         last = r
@@ -989,16 +1026,9 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
                 HS[nh - 1, HD] = x[1] + V
     if not found:
         return SECTION_NO_ORBIT, periods, 0
-    for i in range(N_Z):
-        z2[i] = z[i]
-    ev0 = cnt[2]
-    npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, fine * rtol, 0.01 * fine * rtol, 0.5,
-                        h, K, out, cnt, 2)
-    if npc < 0:
-        return npc, periods + 1, 0
-    res[0] = w_last
+    res[0] = w_coarse
     res[1] = w_prev
-    res[2] = z2[3]
-    res[3] = z2[4]
-    res[4] = z2[5]
-    return 0, periods + 1, cnt[2] - ev0
+    res[2] = w_last
+    res[3] = z[4]
+    res[4] = z[5]
+    return 0, periods, ev

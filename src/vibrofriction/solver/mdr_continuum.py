@@ -22,14 +22,14 @@ import numpy as np
 from .. import theory
 from .._kernels import mdr_continuum as mc
 
-__all__ = ["continuum_covers", "continuum_friction", "mdr_continuum"]
+__all__ = ["continuum_covers", "continuum_friction", "mdr_continuum", "slides_continuously"]
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
 FINE = 0.1  # the last period's tolerance: this times RTOL
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
-GROWTH = 2.0  # a mixed step whose residual grows by this restarts the mixing
+GROWTH = 10.0  # a mixed step whose residual grows by this restarts the mixing
 HISTORY = 20000  # rows of the history of u
 
 
@@ -84,6 +84,38 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                 events_per_period=int(events), reason="")
 
 
+SLIDING_SAMPLES = 256  # the grid of the sliding orbit's check
+
+
+def slides_continuously(alpha: float, beta: float, amplitude: float, V: float,
+                        profile_exponent: float, zeta: float) -> bool:
+    """Whether continuous forward sliding is proven at ``V`` (``0 < a < 1``, no drive).
+
+    The check of ``theory.profile_critical_velocity`` (docs/contact_geometry.md,
+    "Continuous sliding") on a coarse grid: the sliding orbit's slip velocity
+    ``V - f(tau)``, ``f = -y_p' - (p a/(beta - alpha)) sin tau``, from the Fourier series
+    of the normal force (an FFT of :data:`SLIDING_SAMPLES` points), must stay positive.
+    Proven where ``V`` exceeds the grid's largest ``f`` by more than the grid can miss
+    (``h^2/8`` times a bound of ``|f''|`` from the series, plus its last coefficient's
+    size); anything closer is left to the solver (``False``).
+    """
+    a, n = amplitude, profile_exponent
+    p = 1.0 + 1.0 / n
+    N = SLIDING_SAMPLES
+    tau = 2.0 * math.pi * np.arange(N) / N
+    M = np.fft.rfft((1.0 + a * np.cos(tau)) ** p) / N  # m = sum_k M_k e^{ik tau} + c.c.
+    k = np.arange(M.size)
+    den = alpha - k ** 2 + 2j * zeta * math.sqrt(alpha) * k
+    if np.any(den == 0.0):  # undamped resonance of a harmonic of the force
+        return False
+    Yd = -1j * k * M / den  # y_p' = sum_k Yd_k e^{ik tau} + c.c. (k > 0)
+    yd = np.fft.irfft(Yd * N, N)
+    f = -yd - p * a / (beta - alpha) * np.sin(tau)
+    bound = 2.0 * float(np.sum(k ** 2 * np.abs(Yd))) + p * a / (beta - alpha)
+    miss = (2.0 * math.pi / N) ** 2 / 8.0 * bound + 100.0 * float(np.abs(Yd[-1]))
+    return bool(V > float(np.max(f)) + miss + 1e-12 * (1.0 + abs(V)))
+
+
 def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        profile_exponent: float, zeta: float, hc: float, hs: float,
                        offset: tuple[float, float], tol: float,
@@ -91,8 +123,19 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
     """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
 
     A tenth of ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the stated
-    error exceeds ``tol`` (down to ``TIGHTEST``).
+    error exceeds ``tol`` (down to ``TIGHTEST``).  Without a drive, a point that
+    :func:`slides_continuously` is answered at once: ``mu_ratio = 1`` exactly, status
+    ``"continuous sliding"``.
     """
+    if hc == 0.0 and hs == 0.0 and slides_continuously(alpha, beta, amplitude, V,
+                                                         profile_exponent, zeta):
+        # every point slips forwards at its limit all the time: F = F_N, mu = mu0 exactly
+        p = 2.0 / profile_exponent
+        tau = 2.0 * math.pi * np.arange(SLIDING_SAMPLES) / SLIDING_SAMPLES
+        slip = float(np.mean(((1.0 + amplitude * np.cos(tau)) / (1.0 + amplitude)) ** p))
+        return dict(mu_ratio=1.0, error=0.0, status="continuous sliding", periods=0,
+                    stick_area_fraction=0.0, slip_area_fraction=slip,
+                    open_area_fraction=1.0 - slip, events_per_period=0, reason="")
     rtol = min(LOOSEST, max(TIGHTEST, 0.1 * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,

@@ -27,7 +27,7 @@ __all__ = ["MDR"]
 _CODE = METHOD_NAMES.index("mdr")
 #: The package's status of each status of :func:`~vibrofriction.solver.mdr.mdr_friction`.
 _MDR_STATUS = {"periodic": Status.PERIODIC, "averaged": Status.AVERAGED,
-               "not converged": Status.NOT_CONVERGED}
+               "not converged": Status.NOT_CONVERGED, "continuous sliding": Status.SLIDING}
 
 
 class MdrMethod:
