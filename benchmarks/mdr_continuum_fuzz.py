@@ -50,6 +50,7 @@ def _points() -> list[tuple]:
 def run() -> list[str]:
     statuses: Counter = Counter()
     agree, ratios, errs, periods, t_c, t_r, worst = 0, [], [], [], [], [], ""
+    failed: list[str] = []
     for al, be, a, V, ze, n, ax, px, on in _points():
         sub = on == "substrate"
         hc, hs = inplane_forcing(al, 2 * ze * np.sqrt(al), ax, px, sub)
@@ -60,6 +61,10 @@ def run() -> list[str]:
                          inplane_on=on)
         t2 = time.perf_counter()
         statuses[(c["status"], r["status"])] += 1
+        if c["status"] != "periodic":
+            failed.append(f"alpha {al:.3g}, beta {be:.3g}, a {a:.3g}, V {V:.3g}, zeta {ze:g}, "
+                          f"n {n:g}, a_x {ax:g} ({on}): {c['reason']} after {c['periods']} "
+                          "periods")
         t_c.append(t1 - t0)
         t_r.append(t2 - t1)
         if c["status"] != "periodic" or r["status"] != "periodic":
@@ -86,6 +91,7 @@ def run() -> list[str]:
         f"{max(periods)} |",
         f"| time per point, median (continuum, rows at tol 1e-6) | "
         f"{1e3 * statistics.median(t_c):.1f} ms, {1e3 * statistics.median(t_r):.1f} ms |",
+        *(f"| not periodic (continuum) | {f} |" for f in failed),
     ]
     for line in lines:
         print(line)

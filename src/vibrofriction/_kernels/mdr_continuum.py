@@ -105,6 +105,7 @@ N_Z = 7  # y, y', Q = int u rho' (from the start), int F, int stick area, int sl
 # int y
 N_ERR = 2  # the components the step's error control sees (the body)
 MAX_PIECES = 64
+SLIVER = 1e-12  # a piece narrower than this times its end is dropped
 # Gauss-Legendre, 3 nodes (exact to degree 5; over a history interval of the steps'
 # length its error is far below the steps' own)
 GL_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
@@ -239,7 +240,7 @@ def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
     """Append a piece to ``out`` (``m`` pieces so far), merged with the last where it
     continues it; returns the new count (``MAX_PIECES + 1`` on overflow).
     """
-    if x1 <= x0:
+    if x1 - x0 <= SLIVER * x1:  # (the contact's edge a rounding away from a piece's end)
         return m
     if m > 0:
         if kind != HIS and out[m - 1, KIND] == kind and out[m - 1, VAL] == val:
@@ -760,8 +761,14 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 t1 = t + hh
                 if t_stop - t1 < 1e-12 * (1.0 + t_stop):
                     t1 = t_stop
-                if nh >= HS.shape[0]:
-                    return FAIL_HISTORY, nh, h
+                if nh >= HS.shape[0]:  # full: what the profile and the segment no longer need
+                    n0 = nh
+                    nh = compact(HS, nh, PC, npc, t_s)
+                    ih_s -= n0 - nh
+                    for j in range(npc):
+                        PC[j, IF] = -1.0  # (the cached intervals moved)
+                    if nh >= HS.shape[0]:
+                        return FAIL_HISTORY, nh, h
                 HS[nh, HT] = t1
                 HS[nh, HU] = znew[0] + V * t1
                 HS[nh, HD] = znew[1] + V
@@ -812,11 +819,11 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
 
 
 @jit
-def compact(HS, nh, PC, npc):
-    """Drop the history before the oldest history piece (keeping its interval); returns
-    the new count.  The last entry is always kept.
+def compact(HS, nh, PC, npc, t_keep=math.inf):
+    """Drop the history before the oldest history piece and ``t_keep`` (keeping their
+    intervals); returns the new count.  The last entry is always kept.
     """
-    t_keep = HS[nh - 1, HT]
+    t_keep = min(t_keep, HS[nh - 1, HT])
     for j in range(npc):
         if int(PC[j, KIND]) == HIS and PC[j, TA] < t_keep:
             t_keep = PC[j, TA]
@@ -888,6 +895,7 @@ def _set_section(x, z, PC, npc, u, n):
 
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
+LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
 
@@ -1012,13 +1020,18 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             f = g[:nx] - x[:nx]
             gam = np.linalg.lstsq(dF, f)[0]
             ok = True
+            jump = 0.0
             for i in range(nx):
                 s = g[i]
                 for q in range(nhist - 1):
                     s -= (G[q + 1, i] - G[q, i]) * gam[q]
+                jump = max(jump, abs(s - g[i]) / (1.0 + abs(g[i])))
                 x[i] = s
                 if not math.isfinite(s):
                     ok = False
+            if not ok or jump > LEAP * r:  # an ill-conditioned mix: the plain map instead
+                nhist = 0
+                ok = False
             if ok:
                 u = x[0] + V * t
                 _set_section(x, z, PC, npc, u, n)

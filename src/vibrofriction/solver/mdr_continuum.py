@@ -8,9 +8,13 @@ few affine pieces over the core ``xi <= (1 - a)^(1/n)`` and the section state is
 ``(y, y', the pieces' ends, their levels relative to u)``.  Anderson's mixing of the last
 ``DEPTH`` period maps of that vector (restarted when the pieces' kinds change, or where a
 mixed step's residual grows) finds the orbit in about ten to twenty-five periods where the
-plain iteration takes hundreds (``tests/mdr/test_mdr_continuum.py``'s points); a last
-period at a tenth of the tolerance gives ``mu_ratio``, and its difference from the
-period before, plus the section state's tolerance, is the stated error.
+plain iteration takes hundreds (``tests/mdr/test_mdr_continuum.py``'s points).  From that
+orbit the search goes on with maps at a tenth of the tolerance to their own orbit, which
+gives ``mu_ratio``; the difference of the two orbits' ``mu``, plus the section state's
+tolerance, is the stated error.  (One fine period from the coarse orbit is not enough:
+the orbit of a map moves with the map's error, by more where it attracts slowly, and the
+error so estimated held half the true one at such points.)  The first periods, where the
+pieces still change, have their mean force balance restored (the kernel's ``_balance``).
 """
 
 from __future__ import annotations
@@ -26,7 +30,7 @@ __all__ = ["continuum_covers", "continuum_friction", "mdr_continuum", "slides_co
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
-FINE = 0.1  # the last period's tolerance: this times RTOL
+FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
 GROWTH = 10.0  # a mixed step whose residual grows by this restarts the mixing
@@ -73,8 +77,8 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                     open_area_fraction=math.nan, events_per_period=0, reason=reason)
     nint = 2.0 * math.pi * float(theory.profile_mean_normal_force(a, n))
     mu = res[2] / nint
-    # the fine period's difference from the last coarse one (the maps' error), and the
-    # section state's tolerance (the orbit's)
+    # the fine orbit's difference from the coarse one (the maps' error), and the section
+    # state's tolerance (the orbit's)
     err = abs(res[2] - res[0]) / nint + STATE_TOL
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
