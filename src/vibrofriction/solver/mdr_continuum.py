@@ -30,6 +30,7 @@ __all__ = ["continuum_covers", "continuum_friction", "mdr_continuum", "slides_co
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
+FACTOR = 0.3  # ... this times tol_trusted (the stated errors at tol 1e-7: at most 1.8e-8)
 FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
@@ -126,8 +127,8 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        max_periods: int = 200) -> dict:
     """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
 
-    A tenth of ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the stated
-    error exceeds ``tol`` (down to ``TIGHTEST``).  Without a drive, a point that
+    ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the
+    stated error exceeds ``tol`` (down to ``TIGHTEST``).  Without a drive, a point that
     :func:`slides_continuously` is answered at once: ``mu_ratio = 1`` exactly, status
     ``"continuous sliding"``.
     """
@@ -140,7 +141,7 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
         return dict(mu_ratio=1.0, error=0.0, status="continuous sliding", periods=0,
                     stick_area_fraction=0.0, slip_area_fraction=slip,
                     open_area_fraction=1.0 - slip, events_per_period=0, reason="")
-    rtol = min(LOOSEST, max(TIGHTEST, 0.1 * tol))
+    rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
                           max_periods=max_periods, rtol=rtol)
