@@ -165,3 +165,22 @@ def test_continuous_sliding_matches_the_rows():
     assert float(out["slip_area_fraction"]) == pytest.approx(r["slip_area_fraction"],
                                                              abs=2e-3)
     assert float(out["error"]) == 0.0
+
+
+def test_stated_error_holds_against_a_tighter_run_and_friction_stays_below_normal():
+    """At random points the default run's ``mu_ratio`` lies within its stated error of a
+    run with maps a hundred times tighter, and ``0 < mu_ratio <= 1`` within it (each point's
+    force is clamped to its normal force, so the mean friction cannot exceed the mean
+    normal force).
+    """
+    rng = np.random.default_rng(8)
+    for _ in range(12):
+        al = 10 ** rng.uniform(-1.5, 1)
+        be = al + 10 ** rng.uniform(-1, 1.5)
+        a, V = rng.uniform(0.1, 0.9), 10 ** rng.uniform(-1.5, 0.3)
+        n, ze = float(rng.choice([1, 1.5, 2, 3])), float(rng.choice([0, 0.05, 0.3]))
+        r = mdr_continuum(al, be, a, V, n, ze)
+        fine = mdr_continuum(al, be, a, V, n, ze, rtol=1e-10)
+        assert r["status"] == fine["status"] == "periodic"
+        assert abs(r["mu_ratio"] - fine["mu_ratio"]) <= r["error"], (al, be, a, V, n, ze)
+        assert 0.0 < r["mu_ratio"] <= 1.0 + r["error"]  # (the mean force integrated)

@@ -524,7 +524,7 @@ def _event_root(kind, lev, z, znew, K, h, t, prm, th0, f0, th1, f1):
 
 
 @jit
-def _levels(prm, PC, npc, HS, nh, t0, P0, N0, up, down, unloading, LP, LN, LT):
+def _levels(prm, PC, npc, t0, P0, N0, up, down, unloading, LP, LN, LT):
     """The levels of a segment from ``t0`` where the force bends: the values of a rising
     ``P`` (``up``) at which its front reaches a whole affine piece (``AFP``: the force's
     slope jumps) or a piece's end (its curvature jumps), ascending in ``LP``; those of a
@@ -724,7 +724,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             seg[3] = d0  # rho_s^n
             t_s = t
             ih_s = nh - 1
-            mp, mn, mt = _levels(prm, PC, npc, HS, nh, t, P0, N0, dirp > 0.0, dirn < 0.0,
+            mp, mn, mt = _levels(prm, PC, npc, t, P0, N0, dirp > 0.0, dirn < 0.0,
                                  unloading, LP, LN, LT)
             ip = 0
             jn = 0
