@@ -994,10 +994,9 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             if stage == 1:
                 found = True
                 break
-            stage = 1  # on to the fine map's orbit
-            w_coarse = w_last
+            stage = 1  # on to the fine map's orbit (the mixing's differences kept: the maps
+            w_coarse = w_last  # differ by their errors only)
             tol_m = fine * rtol
-            nhist = 0
             last = math.inf
             continue
         if r > growth * last:  # the mixing went astray: start again from here
