@@ -896,6 +896,7 @@ def _set_section(x, z, PC, npc, u, n):
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
 LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
+ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
 
@@ -921,7 +922,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change or a mixed step's residual grows by
-    ``growth``) until the state's relative change is below ``state_tol``; then on from
+    ``growth``; the maps at ``ROUGH`` until the state's relative change is below
+    ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol``; then on from
     there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
     its error, by more where the orbit attracts slowly, so the fine orbit is sought anew,
     not one fine period taken from the coarse orbit).  Writes ``res = (int F over the
@@ -939,7 +941,9 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     g = np.zeros(nmax)
     kinds = np.zeros(MAX_PIECES + 1)
     z2 = np.zeros(N_Z)
-    npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, rtol, 0.01 * rtol, 0.5, 0.1, K, out,
+    stage = 0  # the maps at 0: max(rtol, ROUGH) (the transient), 1: rtol, 2: fine * rtol
+    tol_m = max(rtol, ROUGH)
+    npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
                         cnt, 1)
     if npc < 0:
         return npc, 0, 0
@@ -951,8 +955,6 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     w_last = math.nan
     periods = 0
     found = False
-    stage = 0  # 0: maps at rtol, 1: at fine * rtol
-    tol_m = rtol
     w_coarse = math.nan
     ev = 0
     for m in range(max_periods):
@@ -990,12 +992,15 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         r = 0.0
         for i in range(nx):
             r = max(r, abs(g[i] - x[i]) / (1.0 + abs(x[i])))
-        if r < state_tol:
-            if stage == 1:
+        if stage == 0 and r < ROUGH_UNTIL:
+            stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
+            tol_m = rtol  # maps differ by their errors only)
+        elif r < state_tol and stage >= 1:
+            if stage == 2:
                 found = True
                 break
-            stage = 1  # on to the fine map's orbit (the mixing's differences kept: the maps
-            w_coarse = w_last  # differ by their errors only)
+            stage = 2  # on to the fine map's orbit
+            w_coarse = w_last
             tol_m = fine * rtol
             last = math.inf
             continue
