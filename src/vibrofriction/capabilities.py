@@ -231,7 +231,10 @@ MDR = Capabilities(
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
                "tip (theory.profile_static_mu_ratio)",
-    notes=("tol_trusted is also the error the row of springs is refined to",),
+    notes=("tol_trusted is also the error the row of springs is refined to",
+           "below tol_trusted = 1e-6 a point with 0 < amplitude < 1, v_inertial != 0 and "
+           "static_ratio = 1 is solved by the row without springs (no discretisation of "
+           "the contact), the rows where it fails"),
 )
 
 RATE_STATE = Capabilities(

@@ -212,7 +212,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                                  on_substrate)
         r = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
                                frame_offset(a_x, phase_x, on_substrate), tol,
-                               max_periods=max_periods)
+                               max_periods=min(max_periods, SKIP_PERIODS))
         if r["status"] in ("periodic", "continuous sliding") and r["error"] <= tol:
             # (each point's force is clamped to its limit exactly: no excess to report)
             r.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(), max_excess=0.0,

@@ -3,7 +3,9 @@
 The method of dimensionality reduction maps an axisymmetric tip ``z = c r^n`` onto a row of
 independent springs, each with its own stick, slip and loss of contact; rows of ``N`` and
 ``2N`` springs are solved exactly and extrapolated in ``N``
-(:func:`vibrofriction.solver.mdr.mdr_friction`).
+(:func:`vibrofriction.solver.mdr.mdr_friction`), or, below ``tol_trusted = 1e-6`` where it
+covers the point, the row's continuum limit is solved directly
+(:mod:`vibrofriction.solver.mdr_continuum`).
 """
 
 from __future__ import annotations
@@ -41,7 +43,8 @@ class MdrMethod:
 
         Status: MDR ``"periodic"`` (the section state of the finer row repeats after one
         period) is :attr:`Status.PERIODIC` (period 1), ``"averaged"``
-        :attr:`Status.AVERAGED`, ``"not converged"`` :attr:`Status.NOT_CONVERGED`
+        :attr:`Status.AVERAGED`, ``"continuous sliding"`` (the row without springs, proven)
+        :attr:`Status.SLIDING`, ``"not converged"`` :attr:`Status.NOT_CONVERGED`
         (``mu_ratio`` nan, ``error`` inf) or, where a row made no progress (infinite
         error), :attr:`Status.FAILED`.  ``error`` is the solver's: the difference of the
         rows of ``N`` and ``2N`` springs (the contact's discretisation) plus the orbits'
