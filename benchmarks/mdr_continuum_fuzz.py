@@ -7,7 +7,9 @@ holder). Each is solved by the continuum (:func:`vibrofriction.solver.mdr_contin
 mdr_continuum`) and by the spring rows (:func:`vibrofriction.solver.mdr.mdr_friction` at
 ``tol = 1e-6``, rows doubled and extrapolated). Prints and records the statuses, how many
 agree within the two stated errors (and the largest difference over them), the stated
-errors and periods of the continuum, and the time per point of both (medians).
+errors and periods of the continuum, and the time per point of both (medians); then the
+continuum against the independent reference refined to bars of at most 2e-6
+(tests/data/mdr_fine_reference.json, the points it covers).
 
     PYTHONPATH=src python benchmarks/mdr_continuum_fuzz.py [--write]
 
@@ -98,11 +100,39 @@ def run() -> list[str]:
     return lines
 
 
+def against_reference() -> list[str]:
+    """The continuum at the independent fine reference's points it covers."""
+    import json
+
+    path = Path(__file__).parents[1] / "tests" / "data" / "mdr_fine_reference.json"
+    pts = [p for p in json.loads(path.read_text())["points"]
+           if 0.0 < p["amplitude"] < 1.0 and p["v_inertial"] > 0.0]
+    q, errs = [], []
+    for p in pts:
+        sub = p["inplane_on"] == "substrate"
+        al, ze = p["alpha"], p["zeta"]
+        hc, hs = inplane_forcing(al, 2 * ze * np.sqrt(al), p["a_x"], p["phase_x"], sub)
+        c = mdr_continuum(al, p["beta"], p["amplitude"], p["v_inertial"],
+                          p["profile_exponent"], ze, hc, hs,
+                          frame_offset(p["a_x"], p["phase_x"], sub))
+        q.append(abs(c["mu_ratio"] - p["mu_ref"]) / (p["err_ref"] + c["error"]))
+        errs.append(c["error"])
+    lines = ["", "| against the independent fine reference | |", "|---|---|",
+             f"| points covered | {len(pts)} |",
+             f"| within the reference's bar plus the stated error | "
+             f"{sum(x <= 1.0 for x in q)} of {len(q)} (largest difference over them "
+             f"{max(q):.2f}, median {statistics.median(q):.2f}) |",
+             f"| stated error, largest | {max(errs):.1e} |"]
+    for line in lines:
+        print(line)
+    return lines
+
+
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
     args = ap.parse_args()
-    lines = run()
+    lines = run() + against_reference()
     if args.write:
         append_run(RESULTS, f"{N} random points: the row without springs against the rows",
                    "PYTHONPATH=src python benchmarks/mdr_continuum_fuzz.py --write",
