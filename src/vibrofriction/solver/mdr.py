@@ -22,7 +22,12 @@ from ..capabilities import CAPABILITIES
 from ..schema import POSITIVE
 from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
-from .mdr_continuum import continuum_covers, continuum_friction
+from .mdr_continuum import (
+    continuous_sliding,
+    continuum_covers,
+    continuum_friction,
+    slides_continuously,
+)
 
 __all__ = ["mdr_friction", "mdr_row"]
 
@@ -205,19 +210,25 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on,
                               state_tol=state_tol, static_ratio=static_ratio)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
-    if n_given is None and tol < CONTINUUM_TOL and not math.isinf(n_exp) \
+    if n_given is None and not math.isinf(n_exp) \
             and continuum_covers(amplitude, V, static_ratio):
         on_substrate = inplane_on == "substrate"
         hc, hs = inplane_forcing(alpha, 2.0 * zeta * math.sqrt(alpha), a_x, phase_x,
                                  on_substrate)
-        r = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
-                               frame_offset(a_x, phase_x, on_substrate), tol,
-                               max_periods=min(max_periods, SKIP_PERIODS))
-        if r["status"] in ("periodic", "continuous sliding") and r["error"] <= tol:
+        c: dict[str, Any] | None = None
+        if hc == 0.0 and hs == 0.0 and slides_continuously(alpha, beta, amplitude, V,
+                                                             n_exp, zeta):
+            c = continuous_sliding(amplitude, n_exp)  # proven: at every tolerance
+        elif tol < CONTINUUM_TOL:
+            c = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
+                                   frame_offset(a_x, phase_x, on_substrate), tol,
+                                   max_periods=min(max_periods, SKIP_PERIODS))
+        if c is not None and c["status"] in ("periodic", "continuous sliding") \
+                and c["error"] <= tol:
             # (each point's force is clamped to its limit exactly: no excess to report)
-            r.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(), max_excess=0.0,
+            c.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(), max_excess=0.0,
                      mean_normal_ratio=float(theory_mean_normal(amplitude, n_exp)))
-            return r
+            return c
     if math.isinf(n_exp):
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)
         r.update(order=math.inf, rows=(1,))

@@ -26,7 +26,8 @@ import numpy as np
 from .. import theory
 from .._kernels import mdr_continuum as mc
 
-__all__ = ["continuum_covers", "continuum_friction", "mdr_continuum", "slides_continuously"]
+__all__ = ["continuous_sliding", "continuum_covers", "continuum_friction", "mdr_continuum",
+           "slides_continuously"]
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
@@ -121,6 +122,20 @@ def slides_continuously(alpha: float, beta: float, amplitude: float, V: float,
     return bool(V > float(np.max(f)) + miss + 1e-12 * (1.0 + abs(V)))
 
 
+def continuous_sliding(amplitude: float, profile_exponent: float) -> dict:
+    """The answer where every point slips forwards at its limit all the time.
+
+    Where :func:`slides_continuously` holds, ``F = F_N``, so ``mu_ratio = 1`` exactly; the
+    contact slips wherever it touches (its time-averaged area on the grid of the check).
+    """
+    tau = 2.0 * math.pi * np.arange(SLIDING_SAMPLES) / SLIDING_SAMPLES
+    slip = float(np.mean(((1.0 + amplitude * np.cos(tau)) / (1.0 + amplitude))
+                         ** (2.0 / profile_exponent)))
+    return dict(mu_ratio=1.0, error=0.0, status="continuous sliding", periods=0,
+                stick_area_fraction=0.0, slip_area_fraction=slip,
+                open_area_fraction=1.0 - slip, events_per_period=0, reason="")
+
+
 def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        profile_exponent: float, zeta: float, hc: float, hs: float,
                        offset: tuple[float, float], tol: float,
@@ -128,19 +143,8 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
     """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
 
     ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the
-    stated error exceeds ``tol`` (down to ``TIGHTEST``).  Without a drive, a point that
-    :func:`slides_continuously` is answered at once: ``mu_ratio = 1`` exactly, status
-    ``"continuous sliding"``.
+    stated error exceeds ``tol`` (down to ``TIGHTEST``).
     """
-    if hc == 0.0 and hs == 0.0 and slides_continuously(alpha, beta, amplitude, V,
-                                                         profile_exponent, zeta):
-        # every point slips forwards at its limit all the time: F = F_N, mu = mu0 exactly
-        p = 2.0 / profile_exponent
-        tau = 2.0 * math.pi * np.arange(SLIDING_SAMPLES) / SLIDING_SAMPLES
-        slip = float(np.mean(((1.0 + amplitude * np.cos(tau)) / (1.0 + amplitude)) ** p))
-        return dict(mu_ratio=1.0, error=0.0, status="continuous sliding", periods=0,
-                    stick_area_fraction=0.0, slip_area_fraction=slip,
-                    open_area_fraction=1.0 - slip, events_per_period=0, reason="")
     rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
