@@ -11,14 +11,15 @@ substrate, ``F = k int e dxi`` the row's force.
 put while ``|k e| <= w (delta - g)``; in terms of ``P = u - c delta`` and ``N = u + c delta``
 that is ``P + c g <= q <= N - c g``: the band's edges push ``q`` and never pull it.  A point
 touches down (``delta`` rising through ``g``) with ``q = u`` and forgets on leaving.  So,
-where neither ``P`` nor ``N`` changes direction over a time step, the new profile is exactly
-``q = clamp(q_0, P + c g, N - c g)``; the steps end where ``P' = u' - c delta'`` or
-``N' = u' + c delta'`` changes sign (a slipping zone sticks as a whole: the group events of
-the spring row).
+where neither ``P`` nor ``N`` changes direction over a stretch of time, the profile at its
+end is exactly ``q = clamp(q_0, P + c g, N - c g)`` of the profile at its start; such a
+stretch (a segment) ends where ``P' = u' - c delta'`` or ``N' = u' + c delta'`` changes sign
+(a slipping zone sticks as a whole: the group events of the spring row).
 
-**The profile is a few pieces.**  A pushed point lies on ``q = P_j + c g`` (pushed from below
-at the step that ended with ``P = P_j``; kind ``AFP``) or ``q = N_j - c g`` (``AFN``): pieces
-affine in ``g``, so their fronts (where this step's edge reaches them) are closed forms.  A
+**The profile is a few pieces.**  A pushed point lies on ``q = P_j + c g`` (pushed from below,
+``P_j`` the lower edge's level at the end of the segment that pushed it; kind ``AFP``) or
+``q = N_j - c g`` (``AFN``): pieces affine in ``g``, so their fronts (where a segment's edge
+reaches them) are closed forms.  A
 point stuck since it touched down keeps ``q = u(tau_on)`` (kind ``HIS``): ``P(tau_on) = u -
 c g`` decreases and ``N`` increases along such a piece (it touched down with the band growing
 faster than ``u`` moved), so each edge reaches it in one front, found by a root on the stored
@@ -26,7 +27,7 @@ history of ``u`` (quintic Hermite interpolation of ``u, u', u''`` at the step en
 row's force is exact per piece: ``int (A + B g) dxi`` in closed form, and over a stuck
 ``HIS`` range ``u (xi_b - xi_a) - (Q(tau_b) - Q(tau_a))`` with ``Q = int u rho' dtau``
 (``rho = delta^(1/n)`` the contact radius) integrated with the body.  The points touching
-down within a step enter stuck (``HIS``, through ``Q``) or on the band (``P' > 0`` or ``N' < 0``
+down within a segment enter stuck (``HIS``, through ``Q``) or on the band (``P' > 0`` or ``N' < 0``
 at the edge), by closed forms.
 
 **Segments and kinks.**  A segment runs until ``P'`` or ``N'`` changes sign (or the
