@@ -269,7 +269,7 @@ def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
 @jit_inline
 def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
     """The old points at ``u`` and ``delta = d`` (``rho = d^(1/n)``), clamped to the band of
-    the step's monotone edges: ``(int e dxi, stick area, slip area, m)`` (areas as
+    the segment's monotone edges: ``(int e dxi, stick area, slip area, m)`` (areas as
     ``int 2 xi dxi``); where ``write``, the clamped profile is written to ``out`` (``m``
     pieces).
     """
