@@ -234,7 +234,8 @@ MDR = Capabilities(
     notes=("tol_trusted is also the error the row of springs is refined to",
            "below tol_trusted = 1e-6 a point with 0 < amplitude < 1, v_inertial != 0 and "
            "static_ratio = 1 is solved by the row without springs (no discretisation of "
-           "the contact), the rows where it fails"),
+           "the contact), the rows where it fails; it ends its search at tol_state, at "
+           "the tightest 1e-9 of its section state"),
 )
 
 RATE_STATE = Capabilities(

@@ -185,3 +185,14 @@ def test_stated_error_holds_against_a_tighter_run_and_friction_stays_below_norma
         assert r["status"] == fine["status"] == "periodic"
         assert abs(r["mu_ratio"] - fine["mu_ratio"]) <= r["error"], (al, be, a, V, n, ze)
         assert 0.0 < r["mu_ratio"] <= 1.0 + r["error"]  # (the mean force integrated)
+
+
+def test_tol_state_acts_on_the_continuum():
+    """The MDR setting ``tol_state`` ends the continuum's search too (floored at 1e-9) and
+    adds to its stated error: a loose one leaves ``tol`` to the rows."""
+    tight = mdr_continuum(0.5, 2.0, 0.5, 0.3, 2.0, 0.1, state_tol=1e-9)
+    loose = mdr_continuum(0.5, 2.0, 0.5, 0.3, 2.0, 0.1, state_tol=1e-5)
+    assert loose["periods"] < tight["periods"] and loose["error"] > 1e-5
+    assert abs(loose["mu_ratio"] - tight["mu_ratio"]) <= loose["error"]
+    r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-7, state_tol=1e-5)
+    assert r["rows"] != ()  # the continuum's error is above tol: the rows answer

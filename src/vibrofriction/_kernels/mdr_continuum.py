@@ -266,6 +266,22 @@ def _add(out, m, x0, x1, kind, val, ta, tb, x0p, x1p):
     return m + 1
 
 
+@jit
+def _on_edge(xa, xb, xap, xbp, sgn, c, d, n1):
+    """A range ``[xa, xb]`` of the profile on the band's lower (``sgn = 1``) or upper
+    (``-1``) edge, ``e = sgn c (d - g)``: ``(int e dxi, its area)``.
+    """
+    return sgn * c * (d * (xb - xa) - (xbp - xap) / n1), xb * xb - xa * xa
+
+
+@jit
+def _add_edge(out, m, xa, xb, xap, xbp, sgn, P, N):
+    """:func:`_add` of a range on the lower (``sgn = 1``, level ``P``) or upper edge."""
+    if sgn > 0.0:
+        return _add(out, m, xa, xb, AFP, P, 0.0, 0.0, xap, xbp)
+    return _add(out, m, xa, xb, AFN, N, 0.0, 0.0, xap, xbp)
+
+
 @jit_inline
 def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
     """The old points at ``u`` and ``delta = d`` (``rho = d^(1/n)``), clamped to the band of
@@ -298,19 +314,21 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
         # of the two), or all pushed
         if kind == AFP:
             if v <= P:  # the lower edge reaches the whole piece
-                E += c * (d * (xb - xa) - (xbp - xap) / n1)
-                asl += xb * xb - xa * xa
+                dE, da = _on_edge(xa, xb, xap, xbp, 1.0, c, d, n1)
+                E += dE
+                asl += da
                 if write:
-                    m = _add(out, m, xa, xb, AFP, P, 0.0, 0.0, xap, xbp)
+                    m = _add_edge(out, m, xa, xb, xap, xbp, 1.0, P, N)
                 continue
             gs = 0.5 * (N - v) / c  # beyond: above the upper edge
             sgn = -1.0
         elif kind == AFN:
-            if v >= N:
-                E -= c * (d * (xb - xa) - (xbp - xap) / n1)
-                asl += xb * xb - xa * xa
+            if v >= N:  # the upper edge reaches the whole piece
+                dE, da = _on_edge(xa, xb, xap, xbp, -1.0, c, d, n1)
+                E += dE
+                asl += da
                 if write:
-                    m = _add(out, m, xa, xb, AFN, N, 0.0, 0.0, xap, xbp)
+                    m = _add_edge(out, m, xa, xb, xap, xbp, -1.0, P, N)
                 continue
             gs = 0.5 * (v - P) / c  # beyond: below the lower edge
             sgn = 1.0
@@ -358,13 +376,11 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
                 xs = xa
                 xsp = xap
             if sgn != 0.0 and xs < xb:
-                E += sgn * c * (d * (xb - xs) - (xbp - xsp) / n1)
-                asl += xb * xb - xs * xs
+                dE, da = _on_edge(xs, xb, xsp, xbp, sgn, c, d, n1)
+                E += dE
+                asl += da
                 if write:
-                    if sgn > 0.0:
-                        m = _add(out, m, xs, xb, AFP, P, 0.0, 0.0, xsp, xbp)
-                    else:
-                        m = _add(out, m, xs, xb, AFN, N, 0.0, 0.0, xsp, xbp)
+                    m = _add_edge(out, m, xs, xb, xsp, xbp, sgn, P, N)
             continue
         # affine piece, not wholly pushed: e = u - v -+ c g up to the front gs
         if gs <= 0.0:
@@ -386,13 +402,11 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
             if write:
                 m = _add(out, m, xa, xs, kind, v, 0.0, 0.0, xap, xsp)
         if xs < xb:
-            E += sgn * c * (d * (xb - xs) - (xbp - xsp) / n1)
-            asl += xb * xb - xs * xs
+            dE, da = _on_edge(xs, xb, xsp, xbp, sgn, c, d, n1)
+            E += dE
+            asl += da
             if write:
-                if sgn > 0.0:
-                    m = _add(out, m, xs, xb, AFP, P, 0.0, 0.0, xsp, xbp)
-                else:
-                    m = _add(out, m, xs, xb, AFN, N, 0.0, 0.0, xsp, xbp)
+                m = _add_edge(out, m, xs, xb, xsp, xbp, sgn, P, N)
     return E, ast, asl, m
 
 
@@ -417,11 +431,11 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
         if edge == EDGE_STUCK:
             E += u * (rho - rho0) - (z[2] - seg[1])
             ast += rho * rho - rho0 * rho0
-        else:
-            s = 1.0 if edge == EDGE_POS else -1.0
-            n1 = n + 1.0
-            E += s * c * (d * (rho - rho0) - (rho * d - rho0 * seg[3]) / n1)
-            asl += rho * rho - rho0 * rho0
+        else:  # the new points on the edge they entered at
+            dE, da = _on_edge(rho0, rho, rho0 * seg[3], rho * d,
+                              1.0 if edge == EDGE_POS else -1.0, c, d, n + 1.0)
+            E += dE
+            asl += da
     F = prm[P_K] * E
     dz[0] = v
     dz[1] = -prm[P_ALPHA] * y - prm[P_GAMMA] * v - F + prm[P_HC] * ct + prm[P_HS] * st
@@ -801,10 +815,9 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 r0p = rho_s * d0
                 if edge == EDGE_STUCK:
                     m = _add(out, m, rho_s, rho1, HIS, HS[ih_s, HQ], t_s, t, r0p, rho1 * d1)
-                elif edge == EDGE_POS:
-                    m = _add(out, m, rho_s, rho1, AFP, u1 - c * d1, 0.0, 0.0, r0p, rho1 * d1)
                 else:
-                    m = _add(out, m, rho_s, rho1, AFN, u1 + c * d1, 0.0, 0.0, r0p, rho1 * d1)
+                    m = _add_edge(out, m, rho_s, rho1, r0p, rho1 * d1,
+                                  1.0 if edge == EDGE_POS else -1.0, u1 - c * d1, u1 + c * d1)
                 if m > MAX_PIECES:
                     return FAIL_PIECES, nh, h
             for j in range(m):

@@ -49,6 +49,7 @@ SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up aft
 # where the rows need thousands of springs: benchmarks/bench_mdr_tol.py); above it the rows
 # (the MDR histories and the tests' references are theirs; 0: the rows alone)
 CONTINUUM_TOL = 1e-6
+CONTINUUM_STATE_TOL = 1e-9  # its tol_state at the tightest (the maps' noise below)
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
@@ -222,7 +223,10 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         elif tol < CONTINUUM_TOL:
             c = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
                                    frame_offset(a_x, phase_x, on_substrate), tol,
-                                   max_periods=min(max_periods, SKIP_PERIODS))
+                                   max_periods=min(max_periods, SKIP_PERIODS),
+                                   # (its state is a few numbers of order 1: its search
+                                   # ends at 1e-9 of them at the tightest)
+                                   state_tol=max(float(state_tol), CONTINUUM_STATE_TOL))
         if c is not None and c["status"] in ("periodic", "continuous sliding") \
                 and c["error"] <= tol:
             # (each point's force is clamped to its limit exactly: no excess to report)

@@ -47,12 +47,15 @@ def continuum_covers(amplitude: float, V: float, static_ratio: float) -> bool:
 def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                   profile_exponent: float, zeta: float = 0.0, hc: float = 0.0,
                   hs: float = 0.0, offset: tuple[float, float] = (0.0, 0.0),
-                  max_periods: int = 200, rtol: float = RTOL) -> dict:
+                  max_periods: int = 200, rtol: float = RTOL,
+                  state_tol: float = STATE_TOL) -> dict:
     """The periodic orbit of the continuum MDR row (``0 < a < 1``, ``V > 0``, Coulomb).
 
     ``hc``, ``hs``: the in-plane force ``hc cos tau + hs sin tau`` on the body, ``offset``
     the start's frame offset (:func:`vibrofriction._kernels.phases.frame_offset`), as for
-    :func:`vibrofriction.solver.mdr.mdr_row`.  Returns ``mu_ratio``, ``error``, ``status``
+    :func:`vibrofriction.solver.mdr.mdr_row`.  ``state_tol``: the section state's relative
+    change that ends each stage of the search (it adds to the stated error).  Returns
+    ``mu_ratio``, ``error``, ``status``
     (``"periodic"``, or ``"failed"`` with the reason in ``reason``), ``periods`` and the
     time-averaged area fractions in stick, slip and out of contact.
     """
@@ -69,7 +72,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     z[0], z[1] = y0, -offset[1]
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
     res = np.zeros(5)
-    code, periods, events = mc.steady(prm, z, PC, npc, HS, nh, rtol, FINE, DEPTH, STATE_TOL,
+    code, periods, events = mc.steady(prm, z, PC, npc, HS, nh, rtol, FINE, DEPTH, state_tol,
                                       GROWTH, max_periods, cnt, res)
     if code != 0:
         reason = ("no periodic orbit within max_periods" if code == mc.SECTION_NO_ORBIT
@@ -81,7 +84,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     mu = res[2] / nint
     # the fine orbit's difference from the coarse one (the maps' error), and the section
     # state's tolerance (the orbit's)
-    err = abs(res[2] - res[0]) / nint + STATE_TOL
+    err = abs(res[2] - res[0]) / nint + state_tol
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
@@ -139,7 +142,7 @@ def continuous_sliding(amplitude: float, profile_exponent: float) -> dict:
 def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        profile_exponent: float, zeta: float, hc: float, hs: float,
                        offset: tuple[float, float], tol: float,
-                       max_periods: int = 200) -> dict:
+                       max_periods: int = 200, state_tol: float = STATE_TOL) -> dict:
     """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
 
     ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the
@@ -148,7 +151,8 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
     rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
-                          max_periods=max_periods, rtol=rtol)
-        if r["status"] != "periodic" or r["error"] <= tol or rtol <= TIGHTEST:
+                          max_periods=max_periods, rtol=rtol, state_tol=state_tol)
+        if r["status"] != "periodic" or r["error"] <= tol or rtol <= TIGHTEST \
+                or state_tol >= tol:  # (tighter maps cannot help that)
             return r
         rtol = max(TIGHTEST, 0.1 * rtol)
