@@ -99,10 +99,16 @@ HT, HU, HD, HDD, HQ, HP, HN = range(7)
 N_HS = 7
 # parameter vector
 P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
-N_PRM = 9
+# ... then Gauss-Jacobi's nodes on [0, 1] and weights for the weight s^(1/n)
+# (:func:`_touchdown_integral`), GJ_N each
+GJ_N = 8
+P_GJX = 9
+P_GJW = P_GJX + GJ_N
+N_PRM = P_GJW + GJ_N
 # edge modes of a step: new points enter stuck, pushed from below, from above; none enter
 EDGE_STUCK, EDGE_POS, EDGE_NEG, EDGE_NONE = 0, 1, 2, 3
-N_Z = 7  # y, y', Q = int u rho' (from the start), int F, int stick area, int slip area,
+N_Z = 7  # y, y', Q = int u rho' (jumping: W = int rho u', Q = u rho - W), int F, int stick
+# area, int slip area,
 # int y
 N_ERR = 2  # the components the step's error control sees (the body)
 MAX_PIECES = 64
@@ -111,6 +117,8 @@ SLIVER = 1e-12  # a piece narrower than this times its end is dropped
 # length its error is far below the steps' own)
 GL_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 GL_W = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
+SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is integrated
+# with its singular factor apart (:func:`_wint`)
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
 MAX_STEPS_HALF = 20000  # steps in a half period before giving up
 
@@ -167,15 +175,90 @@ def _hermite(HS, i, t):
 
 
 @jit
+def _rho(a, n, t):
+    """The contact radius ``rho = delta^(1/n)``, ``delta = 1 + a cos tau`` (0 out of contact)."""
+    return _root(max(0.0, 1.0 + a * math.cos(t)), n)
+
+
+@jit
+def _touchdown(a, t):
+    """The last touch-down at or before ``t`` of a jumping indenter (``a > 1``) in the
+    contact that holds ``t`` (``t`` past the lift-off: the next one, after ``t``).
+    """
+    return TWO_PI * math.ceil(t / TWO_PI) - math.acos(-1.0 / a)
+
+
+@jit
+def _touchdown_integral(HS, i, ttd, L, a, n, prm):
+    """``int_0^L rho u' ds`` from the touch-down ``ttd`` (``s = tau - ttd``), ``u'`` the
+    quintic of history interval ``i`` (continued beyond it where ``L`` ends before it:
+    differences of these integrals are exact for it).
+
+    ``rho = delta^(1/n) = s^(1/n) phi(s)`` with ``phi = (delta/s)^(1/n)`` smooth, and
+    ``delta = 1 + a cos(ttd + s) = -2 a sin(ttd + s/2) sin(s/2)`` (no cancellation near
+    ``s = 0``): Gauss-Jacobi for the weight ``s^(1/n)`` (``prm``'s nodes), exact where
+    ``phi u'`` is a polynomial of degree ``2 GJ_N - 1``.
+    """
+    if L <= 0.0:
+        return 0.0
+    s = 0.0
+    for j in range(GJ_N):
+        sj = L * prm[P_GJX + j]
+        ratio = -2.0 * a * math.sin(ttd + 0.5 * sj) * math.sin(0.5 * sj) / sj
+        _, duj = _hermite(HS, i, ttd + sj)
+        s += prm[P_GJW + j] * _root(max(0.0, ratio), n) * duj
+    return L * _root(L, n) * s
+
+
+@jit
+def _wint(HS, i, t0, t1, a, n, prm):
+    """``int rho u' dtau`` over ``[t0, t1]`` within history interval ``i``.
+
+    Gauss-Legendre in ``tau``; in the contact of a jumping indenter (``a > 1``) within
+    ``SINGULAR_NEAR`` interval lengths of the touch-down ``tau_td``, where
+    ``rho ~ (tau - tau_td)^(1/n)`` (in ``tau`` the quadrature errs by ``O(h^(1 + 1/n))``
+    there), as the difference of two :func:`_touchdown_integral`.
+    """
+    if a > 1.0:
+        ttd = _touchdown(a, t0)
+        if ttd <= t0 + 1e-12 and t0 - ttd < SINGULAR_NEAR * (t1 - t0):
+            return (_touchdown_integral(HS, i, ttd, t1 - ttd, a, n, prm)
+                    - _touchdown_integral(HS, i, ttd, t0 - ttd, a, n, prm))
+    hw = 0.5 * (t1 - t0)
+    tm = t0 + hw
+    s = 0.0
+    for j in range(GL_X.size):
+        tj = tm + hw * GL_X[j]
+        _, duj = _hermite(HS, i, tj)
+        s += GL_W[j] * duj * _rho(a, n, tj)
+    return hw * s
+
+
+@jit
 def _rho_rate(a, n, t):
-    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)``."""
+    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)`` (``a < 1``: never 0)."""
     d = 1.0 + a * math.cos(t)
     return _root(d, n) / (d * n) * (-a * math.sin(t))
 
 
 @jit
+def _hq_jumping(HS, i, t, a, n, prm):
+    """:func:`_hq` of a jumping indenter: ``Q_i + [u rho] - int rho u'``, whose integrand
+    stays bounded after a touch-down (:func:`_wint`).
+    """
+    t0 = HS[i, HT]
+    if t <= t0:
+        return HS[i, HQ]
+    u, _ = _hermite(HS, i, t)
+    return (HS[i, HQ] + u * _rho(a, n, t) - HS[i, HU] * _rho(a, n, t0)
+            - _wint(HS, i, t0, t, a, n, prm))
+
+
+@jit
 def _hq(HS, i, t, a, n):
-    """``Q(t) = int u rho' dtau`` on history interval ``i`` (Gauss-Legendre)."""
+    """``Q(t) = int u rho' dtau`` on history interval ``i`` by Gauss-Legendre, where the
+    contact never opens (``a <= 1``; else :func:`_hq_jumping`).
+    """
     t0 = HS[i, HT]
     if t <= t0:
         return HS[i, HQ]
@@ -364,10 +447,10 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
             else:
                 its = _hindex(HS, nh, ts)
             if ts > PC[j, TA]:
-                ds = 1.0 + a * math.cos(ts)
+                ds = max(0.0, 1.0 + a * math.cos(ts))  # (a touch-down: 0, not its rounding)
                 xs = _root(ds, n) if ts < tb else xb
                 xsp = xs * ds if ts < tb else xbp
-                Qs = _hq(HS, its, ts, a, n)
+                Qs = _hq_jumping(HS, its, ts, a, n, prm) if a > 1.0 else _hq(HS, its, ts, a, n)
                 E += u * (xs - xa) - (Qs - v)
                 ast += xs * xs - xa * xa
                 if write:
@@ -422,14 +505,15 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
     ct = math.cos(t)
     st = math.sin(t)
-    d = 1.0 + a * ct
+    d = max(0.0, 1.0 + a * ct)  # (0 in flight: a jumping indenter)
     rho = _root(d, n)
     E, ast, asl, _ = _sweep(u, prm, PC, npc, HS, nh, PC, False, rho, d)
     rho0 = seg[0]
     edge = int(seg[2])
     if edge != EDGE_NONE and rho > rho0:
         if edge == EDGE_STUCK:
-            E += u * (rho - rho0) - (z[2] - seg[1])
+            Q = z[2] if not a > 1.0 else u * rho - z[2]  # (jumping: z[2] is W, Q = u rho - W)
+            E += u * (rho - rho0) - (Q - seg[1])
             ast += rho * rho - rho0 * rho0
         else:  # the new points on the edge they entered at
             dE, da = _on_edge(rho0, rho, rho0 * seg[3], rho * d,
@@ -439,7 +523,10 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     F = prm[P_K] * E
     dz[0] = v
     dz[1] = -prm[P_ALPHA] * y - prm[P_GAMMA] * v - F + prm[P_HC] * ct + prm[P_HS] * st
-    dz[2] = u * rho / d / n * (-a * st)
+    if not a > 1.0:
+        dz[2] = u * rho / d / n * (-a * st)  # Q' = u rho' (smooth: the contact never opens)
+    else:
+        dz[2] = rho * (v + V)  # W' = rho u' (bounded where rho' is not, at a touch-down)
     dz[3] = F
     dz[4] = ast
     dz[5] = asl
@@ -688,6 +775,8 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     (:func:`_levels`).
     """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
+    jump = a > 1.0
+    t_open = math.acos(-1.0 / a) if jump else 0.0  # the lift-off's phase
     z[3] = 0.0
     z[4] = 0.0
     z[5] = 0.0
@@ -705,16 +794,33 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     seg[3] = 0.0
     rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
     HS[nh - 1, HDD] = k1[1]
-    HS[nh - 1, HQ] = z[2]
+    HS[nh - 1, HQ] = z[2] if not jump else HS[nh - 1, HU] * _rho(a, n, t) - z[2]
     HS[nh - 1, HP] = HS[nh - 1, HU] - c * (1.0 + a * math.cos(t))
     HS[nh - 1, HN] = HS[nh - 1, HU] + c * (1.0 + a * math.cos(t))
     for half in range(halves):
         t_end = t0 + (half + 1) * math.pi
         unloading = math.sin(t0 + (half + 0.5) * math.pi) > 0.0
+        # a jumping indenter's flight [t_fl0, t_fl1] in this half: after the lift-off
+        # (unloading) or before the touch-down (loading); none: both at the half's end
+        t_fl0 = t_fl1 = t_end
+        if jump and unloading:
+            t_fl0 = t_end - math.pi + t_open
+        elif jump:
+            t_fl0, t_fl1 = t_end - math.pi, t_end - t_open
         steps = 0
         while t < t_end - 1e-14 * (1.0 + t_end):  # segments
             cnt[3] += 1
-            d0 = 1.0 + a * math.cos(t)
+            eps = 1e-12 * (1.0 + abs(t))
+            flight = t_fl0 - eps <= t < t_fl1 - eps  # (no contact: F = 0, no profile)
+            if flight:
+                t_seg = t_fl1
+            elif t < t_fl0 - eps:
+                t_seg = t_fl0  # the contact up to the lift-off
+            else:
+                t_seg = t_end
+            d0 = max(0.0, 1.0 + a * math.cos(t))
+            if jump and not unloading and abs(t - t_fl1) <= eps:
+                d0 = 0.0  # the touch-down (not a rounding of it)
             u0 = z[0] + V * t
             P0 = u0 - c * d0
             N0 = u0 + c * d0
@@ -724,7 +830,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             tol = 1e-9 * (abs(ud) + c * a)
             dirp = _direction(ud - c * dd, k1[1] - c * ddd, tol)
             dirn = _direction(ud + c * dd, k1[1] + c * ddd, tol)
-            if unloading:
+            if unloading or flight:
                 edge = EDGE_NONE
             elif dirp > 0.0:
                 edge = EDGE_POS
@@ -734,13 +840,15 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 edge = EDGE_STUCK
             rho_s = _root(d0, n)
             seg[0] = rho_s
-            seg[1] = z[2]
+            seg[1] = z[2] if not jump else u0 * rho_s - z[2]  # Q at the segment's start
             seg[2] = edge
             seg[3] = d0  # rho_s^n
             t_s = t
             ih_s = nh - 1
-            mp, mn, mt = _levels(prm, PC, npc, t, P0, N0, dirp > 0.0, dirn < 0.0,
-                                 unloading, LP, LN, LT)
+            mp = mn = mt = 0
+            if not flight:
+                mp, mn, mt = _levels(prm, PC, npc, t, P0, N0, dirp > 0.0, dirn < 0.0,
+                                     unloading, LP, LN, LT)
             ip = 0
             jn = 0
             it = 0
@@ -750,7 +858,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                     return FAIL_STEPS, nh, h
                 while it < mt and LT[it] <= t + 1e-12:
                     it += 1
-                t_stop = LT[it] if it < mt and LT[it] < t_end else t_end
+                t_stop = LT[it] if it < mt and LT[it] < t_seg else t_seg
                 lp = LP[ip] if ip < mp else math.inf
                 ln = LN[jn] if jn < mn else -math.inf
                 while True:  # attempts
@@ -763,7 +871,9 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                         if h < 1e-13:
                             return FAIL_STEPS, nh, h
                         continue
-                    th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln)
+                    th_ev, k_ev = 2.0, -1
+                    if not flight:
+                        th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln)
                     if th_ev < 1.0 and th_ev * hh > 1e-12:
                         cnt[2] += 1
                         hh = th_ev * hh
@@ -788,25 +898,38 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 HS[nh, HU] = znew[0] + V * t1
                 HS[nh, HD] = znew[1] + V
                 HS[nh, HDD] = K[6, 1]
-                HS[nh, HQ] = znew[2]
+                HS[nh, HQ] = znew[2] if not jump else HS[nh, HU] * _rho(a, n, t1) - znew[2]
                 d1 = 1.0 + a * math.cos(t1)
                 HS[nh, HP] = HS[nh, HU] - c * d1
                 HS[nh, HN] = HS[nh, HU] + c * d1
                 nh += 1
+                w0 = z[2]
                 for i in range(N_Z):
                     z[i] = znew[i]
                     k1[i] = K[6, i]
                 t = t1
+                if jump and not (unloading or flight):
+                    # W after a touch-down: the steps' quadrature of rho u' errs by
+                    # O(h^(1 + 1/n)) there; the stored history's, weighted, does not
+                    z[2] = w0 + _wint(HS, nh - 2, HS[nh - 2, HT], t1, a, n, prm)
+                    rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
+                    HS[nh - 1, HDD] = k1[1]
+                    HS[nh - 1, HQ] = HS[nh - 1, HU] * _rho(a, n, t1) - z[2]
                 u1 = z[0] + V * t
                 while ip < mp and u1 - c * (1.0 + a * math.cos(t)) >= LP[ip] - 1e-12:
                     ip += 1
                 while jn < mn and u1 + c * (1.0 + a * math.cos(t)) <= LN[jn] + 1e-12:
                     jn += 1
-                if k_ev == 0 or k_ev == 1 or t >= t_end:
+                if k_ev == 0 or k_ev == 1 or t >= t_seg:
                     break
-            # the segment's end: the old points clamped, the new ones appended
+            if flight:
+                continue
+            # the segment's end: the old points clamped, the new ones appended (at a
+            # lift-off none is left)
             u1 = z[0] + V * t
-            d1 = 1.0 + a * math.cos(t)
+            d1 = max(0.0, 1.0 + a * math.cos(t))
+            if jump and unloading and abs(t - t_fl0) <= 1e-12 * (1.0 + abs(t)):
+                d1 = 0.0  # the lift-off: no point is left
             rho1 = _root(d1, n)
             _, _, _, m = _sweep(u1, prm, PC, npc, HS, nh, out, True, rho1, d1)
             if m > MAX_PIECES:
