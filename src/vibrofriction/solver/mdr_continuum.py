@@ -46,7 +46,7 @@ def continuum_covers(amplitude: float, V: float, static_ratio: float) -> bool:
     ``0 < a < 1``, ``V > 0``, Coulomb friction.
     (:func:`mdr_continuum` also solves a jumping indenter, ``a > 1``, and agrees there with
     the rows and the independent reference; it is not asked there yet, as its stated error
-    fell short of the true one at 4 of 78 random points, by up to 3x:
+    fell short at 8 of 78 random points against tighter runs, by up to 39x:
     docs/contact_geometry.md.)
     """
     return 0.0 < amplitude < 1.0 and V > 0.0 and static_ratio == 1.0
