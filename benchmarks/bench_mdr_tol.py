@@ -1,7 +1,7 @@
 """Curved tips at a stated error of at most 1e-7: the row without springs against the rows.
 
-At the regimes of ``bench_ratios.py`` the continuum covers (``a < 1``; jumping is left to
-the rows), for a cone, a sphere and ``n = 4``: the time per point of ``solve_points`` with
+At the ten regimes of ``bench_ratios.py`` (the two jumping ones since the continuum covers
+``a > 1``), for a cone, a sphere and ``n = 4``: the time per point of ``solve_points`` with
 ``tol_trusted = 1e-7`` (the MDR solver then answers with the row without springs,
 :mod:`vibrofriction.solver.mdr_continuum`) against the flat point at the same
 ``(alpha, beta, a, V, zeta, a_x)``, and the spring rows asked for the same tolerance
@@ -61,8 +61,6 @@ def bench() -> list[str]:
              + " |", "|" + "---|" * (2 + 2 * len(EXPONENTS))]
     ratios, row_ratios, errors = [], [], []
     for label, alpha, beta, a, V, zeta, a_x in REGIMES:
-        if a >= 1.0:
-            continue
         base = {"alpha": alpha, "beta": beta, "amplitude": a, "v_inertial": V, "zeta": zeta,
                 "a_x": a_x}
         t_flat, _ = _timed(copies=FLAT_COPIES, **base)

@@ -5,7 +5,8 @@ alpha 10^-1.5..10, beta - alpha 0.1..30, V 10^-1.5..2, n in {1, 1.5, 2, 3, 5}, z
 {0, 0.05, 0.3}, no drive. Each is solved as the MDR solver asks the continuum at
 ``tol_trusted`` 1e-7 and 1e-8 (:func:`vibrofriction.solver.mdr_continuum.continuum_friction`)
 and once with maps at ``1e-11`` (:func:`~vibrofriction.solver.mdr_continuum.mdr_continuum`);
-a calibration failure is a difference from the latter above the stated error.
+a calibration failure is a difference from the latter above the two stated errors (the
+tight run's is mostly its search's: at a slowly attracting orbit it can be the larger).
 
     PYTHONPATH=src python benchmarks/mdr_continuum_calibration.py [--write]
 
@@ -42,16 +43,16 @@ def run(seed: int, a_range: tuple[float, float], title: str) -> list[str]:
                 failed += 1
                 continue
             diff = abs(r["mu_ratio"] - ref["mu_ratio"])
-            ratios.append(diff / r["error"])
+            ratios.append(diff / (r["error"] + ref["error"]))
             errors.append(diff)
-            if diff > r["error"]:
-                bad.append(f"alpha {al:.3g}, beta {be:.3g}, a {a:.3g}, V {V:.3g}, n {n:g}, "
-                           f"zeta {ze:g}, tol {tol:g}: stated {r['error']:.1e}, off by "
-                           f"{diff:.1e}")
+            if diff > r["error"] + ref["error"]:
+                bad.append(f"alpha {al!r}, beta {be!r}, a {a!r}, V {V!r}, n {n:g}, "
+                           f"zeta {ze:g}, tol {tol:g}: stated {r['error']:.1e} (tight run "
+                           f"{ref['error']:.1e}), off by {diff:.1e}")
     lines = ["", f"| {title} | |", "|---|---|",
              f"| solved (both runs periodic) | {len(ratios)} of {len(ratios) + failed} |",
-             f"| within the stated error | {len(ratios) - len(bad)} of {len(ratios)} "
-             f"(largest difference over it {max(ratios):.2f}, median "
+             f"| within the two stated errors | {len(ratios) - len(bad)} of {len(ratios)} "
+             f"(largest difference over them {max(ratios):.2f}, median "
              f"{float(np.median(ratios)):.3f}) |",
              f"| difference from the tight run, largest | {max(errors):.1e} |",
              *(f"| short | {b} |" for b in bad)]

@@ -35,8 +35,8 @@ def test_hermite_is_exact_for_quintics():
 
 def test_covers():
     assert continuum_covers(0.5, 0.3, 1.0)
-    assert not continuum_covers(1.2, 0.3, 1.0)  # jumping: solved, not yet asked (the rows)
-    assert not continuum_covers(1.0, 0.3, 1.0)
+    assert continuum_covers(1.2, 0.3, 1.0)  # jumping
+    assert not continuum_covers(1.0, 0.3, 1.0)  # the contact closes to a point: the rows
     assert not continuum_covers(0.5, 0.0, 1.0)
     assert not continuum_covers(0.5, 0.3, 1.5)  # a static limit above the kinetic one
 
@@ -107,7 +107,7 @@ def test_tight_tolerance_routes_to_the_continuum(monkeypatch):
 
 FINE = json.loads((Path(__file__).parents[1] / "data" / "mdr_fine_reference.json")
                   .read_text())["points"]
-COVERED = [p for p in FINE if p["v_inertial"] > 0.0 and p["amplitude"] != 1.0]  # (jumping too)
+COVERED = [p for p in FINE if continuum_covers(p["amplitude"], p["v_inertial"], 1.0)]
 
 
 def test_the_fine_reference_covers_the_continuum():
@@ -276,8 +276,24 @@ def test_touchdown_quadrature(n):
     assert abs(0.5 * h * gl3 - ref) > 1e-6 * abs(ref)
 
 
-def test_jumping_is_not_routed_to_the_continuum_yet():
-    """``mdr_friction`` answers a jumping point with the rows even below ``CONTINUUM_TOL``
-    (the continuum's stated error is not calibrated there yet)."""
-    r = mdr_friction(0.5, 4.0, 1.5, 0.3, 2.0, zeta=0.1, tol=1e-7)
-    assert r["rows"] != () and r["status"] == "periodic"
+def test_jumping_routes_to_the_continuum():
+    """``mdr_friction`` below ``CONTINUUM_TOL`` answers a jumping point with the continuum."""
+    r = mdr_friction(0.5, 4.0, 1.5, 0.3, 2.0, zeta=0.1, tol=1e-8)
+    assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
+
+
+def test_search_error_sees_a_slowly_attracting_orbit():
+    """Jumping, nearly undamped and slowly attracting: stopped at a section residual of
+    ``1e-9`` the search can sit farther from the orbit than the two orbits' difference
+    shows; Newton's step from the last map (``J`` by differences) bounds how far. The
+    stated error then covers the runs with maps from ``3e-8`` to ``1e-11``, whose values
+    agree to within their errors (one, at ``1e-11``, stopped 4e-8 off and says so)."""
+    p = (1.7671644370099864, 2.1254155670211805, 1.4103048778977594, 1.649995113054008,
+         1.5, 0.05)
+    runs = [mdr_continuum(*p, rtol=rt) for rt in (3e-8, 1e-9, 1e-11)]
+    for r in runs:
+        assert r["status"] == "periodic"
+    for r in runs:
+        for q in runs:
+            assert abs(r["mu_ratio"] - q["mu_ratio"]) <= r["error"] + q["error"]
+    assert max(r["error"] for r in runs) > 1e-8  # (the slow one says so)

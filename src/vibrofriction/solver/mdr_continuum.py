@@ -41,15 +41,11 @@ HISTORY = 20000  # rows of the history of u
 
 
 def continuum_covers(amplitude: float, V: float, static_ratio: float) -> bool:
-    """Whether the MDR solver asks the continuum at a point.
+    """Whether the continuum covers a point.
 
-    ``0 < a < 1``, ``V > 0``, Coulomb friction.
-    (:func:`mdr_continuum` also solves a jumping indenter, ``a > 1``, and agrees there with
-    the rows and the independent reference; it is not asked there yet, as its stated error
-    fell short at 8 of 78 random points against tighter runs, by up to 39x:
-    docs/contact_geometry.md.)
+    ``0 < a < 1`` or a jumping indenter (``a > 1``), ``V > 0``, Coulomb friction.
     """
-    return 0.0 < amplitude < 1.0 and V > 0.0 and static_ratio == 1.0
+    return (0.0 < amplitude < 1.0 or amplitude > 1.0) and V > 0.0 and static_ratio == 1.0
 
 
 @functools.lru_cache(maxsize=64)
@@ -67,12 +63,60 @@ def _jacobi(n: float) -> np.ndarray:
     return out
 
 
+def _flight_map(prm: np.ndarray, t: float, y: float, v: float, rtol: float) -> np.ndarray:
+    """One period map of a jumping indenter from ``(y, y')`` at ``t`` in the flight.
+
+    Nothing else is left there. Returns ``(y, y', int F)`` at ``t + 2 pi``, at the given
+    tolerance and always from the same first step (so its differences are smooth).
+    """
+    PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
+    HS = np.zeros((HISTORY, mc.N_HS))
+    HS[0, mc.HT], HS[0, mc.HU], HS[0, mc.HD] = t, y + prm[mc.P_V] * t, v + prm[mc.P_V]
+    z = np.zeros(mc.N_Z)
+    z[0], z[1] = y, v
+    npc, _, _ = mc.period(prm, t, z, PC, 0, HS, 1, rtol, 0.01 * rtol, 0.5, 0.1,
+                          np.zeros((8, mc.N_Z)), np.zeros_like(PC), np.zeros(4, np.int64), 2)
+    if npc != 0:
+        return np.full(3, np.nan)
+    return np.array([z[0], z[1], z[3]])
+
+
+def _search_error(prm: np.ndarray, t: float, g: np.ndarray, w_last: float,
+                  rtol: float) -> float:
+    """How far the search's ``int F`` can be from the orbit's, a jumping indenter's.
+
+    The search stops where the section state changes by less than ``state_tol`` over a
+    period; on a slowly attracting orbit it is farther from the orbit than that. From the
+    last map's end ``g``, Newton's step to the orbit, ``dx = -(J - I)^-1 (P(g) - g)``
+    (``J`` by differences of two more maps), moves ``int F`` by ``G . dx`` to first
+    order (``G`` likewise); so the last map's ``int F`` is within about
+    ``|w_last - w(g)| + |G . dx|`` of the orbit's.  ``inf`` where ``J - I`` is singular or
+    a map fails.
+    """
+    base = _flight_map(prm, t, g[0], g[1], rtol)
+    J = np.empty((2, 2))
+    G = np.empty(2)
+    for j in range(2):
+        step = 1e-5 * (1.0 + abs(g[j]))
+        x = g.copy()
+        x[j] += step
+        m = _flight_map(prm, t, x[0], x[1], rtol)
+        J[:, j] = (m[:2] - base[:2]) / step
+        G[j] = (m[2] - base[2]) / step
+    try:
+        dx = -np.linalg.solve(J - np.eye(2), base[:2] - g)
+    except np.linalg.LinAlgError:
+        return math.inf
+    err = abs(w_last - base[2]) + abs(float(G @ dx))
+    return err if math.isfinite(err) else math.inf
+
+
 def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                   profile_exponent: float, zeta: float = 0.0, hc: float = 0.0,
                   hs: float = 0.0, offset: tuple[float, float] = (0.0, 0.0),
                   max_periods: int = 200, rtol: float = RTOL,
                   state_tol: float = STATE_TOL) -> dict:
-    """The periodic orbit of the continuum MDR row (``0 < a < 1``, ``V > 0``, Coulomb).
+    """The periodic orbit of the continuum MDR row (:func:`continuum_covers`).
 
     ``hc``, ``hs``: the in-plane force ``hc cos tau + hs sin tau`` on the body, ``offset``
     the start's frame offset (:func:`vibrofriction._kernels.phases.frame_offset`), as for
@@ -108,6 +152,9 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     # the fine orbit's difference from the coarse one (the maps' error), and the section
     # state's tolerance (the orbit's)
     err = abs(res[2] - res[0]) / nint + state_tol
+    if a > 1.0:  # and how far the search stopped from a slowly attracting orbit
+        t_end = math.pi + 2.0 * math.pi * periods  # (the section after the last map)
+        err += _search_error(prm, t_end, z[:2].copy(), res[2], FINE * rtol) / nint
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
