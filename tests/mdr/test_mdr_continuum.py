@@ -282,18 +282,22 @@ def test_jumping_routes_to_the_continuum():
     assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
 
 
-def test_search_error_sees_a_slowly_attracting_orbit():
-    """Jumping, nearly undamped and slowly attracting: stopped at a section residual of
-    ``1e-9`` the search can sit farther from the orbit than the two orbits' difference
-    shows; Newton's step from the last map (``J`` by differences) bounds how far. The
-    stated error then covers the runs with maps from ``3e-8`` to ``1e-11``, whose values
-    agree to within their errors (one, at ``1e-11``, stopped 4e-8 off and says so)."""
-    p = (1.7671644370099864, 2.1254155670211805, 1.4103048778977594, 1.649995113054008,
-         1.5, 0.05)
-    runs = [mdr_continuum(*p, rtol=rt) for rt in (3e-8, 1e-9, 1e-11)]
-    for r in runs:
-        assert r["status"] == "periodic"
-    for r in runs:
-        for q in runs:
-            assert abs(r["mu_ratio"] - q["mu_ratio"]) <= r["error"] + q["error"]
-    assert max(r["error"] for r in runs) > 1e-8  # (the slow one says so)
+def test_search_error_bounds_the_distance_to_the_orbit():
+    """A jumping point's search-error term (Newton's step from the last map, by differences):
+    from states off the orbit ``x*`` (found by 80 plain periods of a damped point), the
+    last map's ``int F`` lies within the term of the orbit's, and the term is not ten times
+    more (to first order it is the triangle inequality over the step)."""
+    from vibrofriction.solver.mdr_continuum import _flight_map, _parameters, _search_error
+
+    prm = _parameters(0.5, 4.0, 1.5, 0.3, 2.0, 0.3, 0.0, 0.0)
+    t, rtol = math.pi, 1e-10
+    x = np.array([-0.8, 0.3])
+    for _ in range(80):
+        x = _flight_map(prm, t, x[0], x[1], rtol)[:2]
+    w_orbit = _flight_map(prm, t, x[0], x[1], rtol)[2]
+    for e in ([1e-5, 0.0], [0.0, 1e-5], [-1e-5, 2e-5]):
+        m = _flight_map(prm, t, x[0] + e[0], x[1] + e[1], rtol)
+        bound = _search_error(prm, t, m[:2], m[2], rtol)
+        true = abs(m[2] - w_orbit)
+        assert true > 1e-8  # (well above the maps' noise)
+        assert true <= bound <= 10.0 * true

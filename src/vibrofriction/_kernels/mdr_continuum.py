@@ -117,6 +117,9 @@ SLIVER = 1e-12  # a piece narrower than this times its end is dropped
 # length its error is far below the steps' own)
 GL_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 GL_W = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
+# a jumping contact's force is C^1 only at the touch-down and the lift-off: steps there at
+# most EDGE_RAMP times the time from (to) it, and at least EDGE_STEP
+EDGE_STEP, EDGE_RAMP = 1e-3, 0.5
 SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is integrated
 # with its singular factor apart (:func:`_wint`)
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
@@ -863,6 +866,9 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 ln = LN[jn] if jn < mn else -math.inf
                 while True:  # attempts
                     hh = min(h, t_stop - t, hmax)
+                    if jump and not flight:  # (the force is C^1 only at both: steps shrink)
+                        edge_dist = t - t_fl1 if not unloading else t_fl0 - t
+                        hh = min(hh, max(EDGE_STEP, EDGE_RAMP * edge_dist))
                     _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg)
                     en = _err(z, znew, K, hh, rtol, atol)
                     if en > 1.0 or not math.isfinite(en):

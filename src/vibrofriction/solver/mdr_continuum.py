@@ -63,6 +63,14 @@ def _jacobi(n: float) -> np.ndarray:
     return out
 
 
+def _parameters(alpha: float, beta: float, a: float, V: float, n: float, zeta: float,
+                hc: float, hs: float) -> np.ndarray:
+    """The kernel's parameter vector (``mc.P_*``)."""
+    k = beta - alpha
+    return np.concatenate(([alpha, 2.0 * zeta * math.sqrt(alpha), k, (n + 1.0) / n / k, n, a,
+                            V, hc, hs], _jacobi(n)))
+
+
 def _flight_map(prm: np.ndarray, t: float, y: float, v: float, rtol: float) -> np.ndarray:
     """One period map of a jumping indenter from ``(y, y')`` at ``t`` in the flight.
 
@@ -127,10 +135,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     time-averaged area fractions in stick, slip and out of contact.
     """
     a, n = float(amplitude), float(profile_exponent)
-    k = beta - alpha
-    c = (n + 1.0) / n / k
-    gamma = 2.0 * zeta * math.sqrt(alpha)
-    prm = np.concatenate(([alpha, gamma, k, c, n, a, V, hc, hs], _jacobi(n)))
+    prm = _parameters(alpha, beta, a, V, n, zeta, hc, hs)
     PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
     HS = np.zeros((HISTORY, mc.N_HS))
     cnt = np.zeros(4, dtype=np.int64)
