@@ -192,6 +192,25 @@ def _touchdown(a, t):
 
 
 @jit
+def _liftoff(a, t):
+    """The lift-off of a jumping indenter after the maximum at or before ``t``."""
+    return TWO_PI * math.floor(t / TWO_PI) + math.acos(-1.0 / a)
+
+
+@jit
+def _delta(a, t, tc):
+    """The indentation ``delta = 1 + a cos tau``, ``0`` out of contact; given a jumping
+    indenter's touch-down or lift-off ``tc`` (``nan``: none), as
+    ``-2 a sin((t + tc)/2) sin((t - tc)/2)``, which is 0 at ``tc`` exactly and free of
+    cancellation near it: ``rho = delta^(1/n)`` there would take the rounding of
+    ``1 + a cos tau`` (about 1e-14 at ``tau ~ 50``) to its ``1/n``-th power (2e-3 at ``n = 5``).
+    """
+    if math.isnan(tc):
+        return max(0.0, 1.0 + a * math.cos(t))
+    return max(0.0, -2.0 * a * math.sin(0.5 * (t + tc)) * math.sin(0.5 * (t - tc)))
+
+
+@jit
 def _touchdown_integral(HS, i, ttd, L, a, n, prm):
     """``int_0^L rho u' ds`` from the touch-down ``ttd`` (``s = tau - ttd``), ``u'`` the
     quintic of history interval ``i`` (continued beyond it where ``L`` ends before it:
@@ -253,8 +272,9 @@ def _hq_jumping(HS, i, t, a, n, prm):
     if t <= t0:
         return HS[i, HQ]
     u, _ = _hermite(HS, i, t)
-    return (HS[i, HQ] + u * _rho(a, n, t) - HS[i, HU] * _rho(a, n, t0)
-            - _wint(HS, i, t0, t, a, n, prm))
+    ttd = _touchdown(a, t0)
+    return (HS[i, HQ] + u * _root(_delta(a, t, ttd), n)
+            - HS[i, HU] * _root(_delta(a, t0, ttd), n) - _wint(HS, i, t0, t, a, n, prm))
 
 
 @jit
@@ -450,7 +470,7 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
             else:
                 its = _hindex(HS, nh, ts)
             if ts > PC[j, TA]:
-                ds = max(0.0, 1.0 + a * math.cos(ts))  # (a touch-down: 0, not its rounding)
+                ds = _delta(a, ts, _touchdown(a, ts) if a > 1.0 else math.nan)
                 xs = _root(ds, n) if ts < tb else xb
                 xsp = xs * ds if ts < tb else xbp
                 Qs = _hq_jumping(HS, its, ts, a, n, prm) if a > 1.0 else _hq(HS, its, ts, a, n)
@@ -508,7 +528,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
     ct = math.cos(t)
     st = math.sin(t)
-    d = max(0.0, 1.0 + a * ct)  # (0 in flight: a jumping indenter)
+    d = max(0.0, 1.0 + a * ct) if math.isnan(seg[4]) else _delta(a, t, seg[4])
     rho = _root(d, n)
     E, ast, asl, _ = _sweep(u, prm, PC, npc, HS, nh, PC, False, rho, d)
     rho0 = seg[0]
@@ -779,14 +799,13 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
     jump = a > 1.0
-    t_open = math.acos(-1.0 / a) if jump else 0.0  # the lift-off's phase
     z[3] = 0.0
     z[4] = 0.0
     z[5] = 0.0
     z[6] = 0.0
     znew = np.empty(N_Z)
     k1 = np.empty(N_Z)
-    seg = np.empty(4)
+    seg = np.empty(5)
     LP = np.empty(4 * MAX_PIECES)
     LN = np.empty(4 * MAX_PIECES)
     LT = np.empty(2 * MAX_PIECES)
@@ -795,6 +814,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     seg[1] = 0.0
     seg[2] = EDGE_NONE
     seg[3] = 0.0
+    seg[4] = math.nan
     rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
     HS[nh - 1, HDD] = k1[1]
     HS[nh - 1, HQ] = z[2] if not jump else HS[nh - 1, HU] * _rho(a, n, t) - z[2]
@@ -807,9 +827,11 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
         # (unloading) or before the touch-down (loading); none: both at the half's end
         t_fl0 = t_fl1 = t_end
         if jump and unloading:
-            t_fl0 = t_end - math.pi + t_open
+            t_fl0 = _liftoff(a, t_end - 0.5 * math.pi)
         elif jump:
-            t_fl0, t_fl1 = t_end - math.pi, t_end - t_open
+            t_fl0, t_fl1 = t_end - math.pi, _touchdown(a, t_end - 0.5 * math.pi)
+        # the contact's boundary in this half (delta's zero: _delta)
+        tc = math.nan if not jump else (t_fl0 if unloading else t_fl1)
         steps = 0
         while t < t_end - 1e-14 * (1.0 + t_end):  # segments
             cnt[3] += 1
@@ -817,13 +839,13 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             flight = t_fl0 - eps <= t < t_fl1 - eps  # (no contact: F = 0, no profile)
             if flight:
                 t_seg = t_fl1
+                npc = 0  # every point has left (also where an event ended the contact a
+                # rounding before the lift-off)
             elif t < t_fl0 - eps:
                 t_seg = t_fl0  # the contact up to the lift-off
             else:
                 t_seg = t_end
-            d0 = max(0.0, 1.0 + a * math.cos(t))
-            if jump and not unloading and abs(t - t_fl1) <= eps:
-                d0 = 0.0  # the touch-down (not a rounding of it)
+            d0 = _delta(a, t, tc)
             u0 = z[0] + V * t
             P0 = u0 - c * d0
             N0 = u0 + c * d0
@@ -846,6 +868,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             seg[1] = z[2] if not jump else u0 * rho_s - z[2]  # Q at the segment's start
             seg[2] = edge
             seg[3] = d0  # rho_s^n
+            seg[4] = tc
             t_s = t
             ih_s = nh - 1
             mp = mn = mt = 0
@@ -904,7 +927,8 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                 HS[nh, HU] = znew[0] + V * t1
                 HS[nh, HD] = znew[1] + V
                 HS[nh, HDD] = K[6, 1]
-                HS[nh, HQ] = znew[2] if not jump else HS[nh, HU] * _rho(a, n, t1) - znew[2]
+                HS[nh, HQ] = (znew[2] if not jump
+                              else HS[nh, HU] * _root(_delta(a, t1, tc), n) - znew[2])
                 d1 = 1.0 + a * math.cos(t1)
                 HS[nh, HP] = HS[nh, HU] - c * d1
                 HS[nh, HN] = HS[nh, HU] + c * d1
@@ -920,7 +944,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
                     z[2] = w0 + _wint(HS, nh - 2, HS[nh - 2, HT], t1, a, n, prm)
                     rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
                     HS[nh - 1, HDD] = k1[1]
-                    HS[nh - 1, HQ] = HS[nh - 1, HU] * _rho(a, n, t1) - z[2]
+                    HS[nh - 1, HQ] = HS[nh - 1, HU] * _root(_delta(a, t1, tc), n) - z[2]
                 u1 = z[0] + V * t
                 while ip < mp and u1 - c * (1.0 + a * math.cos(t)) >= LP[ip] - 1e-12:
                     ip += 1
@@ -933,9 +957,7 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
             # the segment's end: the old points clamped, the new ones appended (at a
             # lift-off none is left)
             u1 = z[0] + V * t
-            d1 = max(0.0, 1.0 + a * math.cos(t))
-            if jump and unloading and abs(t - t_fl0) <= 1e-12 * (1.0 + abs(t)):
-                d1 = 0.0  # the lift-off: no point is left
+            d1 = _delta(a, t, tc)
             rho1 = _root(d1, n)
             _, _, _, m = _sweep(u1, prm, PC, npc, HS, nh, out, True, rho1, d1)
             if m > MAX_PIECES:
