@@ -119,7 +119,8 @@ GL_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 GL_W = np.array([5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0])
 # a jumping contact's force is C^1 only at the touch-down and the lift-off: steps there at
 # most EDGE_RAMP times the time from (to) it, and at least EDGE_STEP
-EDGE_STEP, EDGE_RAMP = 1e-3, 0.5
+EDGE_STEP, EDGE_RAMP = 1e-2, 0.5
+DELTA_NEAR = 0.5  # within this of a contact boundary rhs takes delta from it (_delta)
 SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is integrated
 # with its singular factor apart (:func:`_wint`)
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
@@ -528,7 +529,9 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
     ct = math.cos(t)
     st = math.sin(t)
-    d = max(0.0, 1.0 + a * ct) if math.isnan(seg[4]) else _delta(a, t, seg[4])
+    d = max(0.0, 1.0 + a * ct)
+    if abs(t - seg[4]) < DELTA_NEAR:  # (nan: no boundary)
+        d = _delta(a, t, seg[4])
     rho = _root(d, n)
     E, ast, asl, _ = _sweep(u, prm, PC, npc, HS, nh, PC, False, rho, d)
     rho0 = seg[0]
