@@ -1,16 +1,17 @@
 """Random points of the row without springs against the spring rows.
 
-80 points drawn with a fixed seed over what the continuum covers: alpha 1e-2..10,
-beta - alpha 0.03..100, a 0.05..0.95, V 1e-2..3, zeta in {0, 0.01, 0.1, 0.5}, n in
-{0.7, 1, 1.5, 2, 3, 5}, a longitudinal drive a_x in {0, 0, 0.5} (random phase, substrate or
-holder); then 40 jumping points (``a`` 1.05..3, seed 12, the rest alike), which the
-continuum solves but the MDR solver does not ask it yet (the rows at ``tol = 1e-6`` answer
-there). Each is solved by the continuum (:func:`vibrofriction.solver.mdr_continuum.
-mdr_continuum`) and by the spring rows (:func:`vibrofriction.solver.mdr.mdr_friction` at
-``tol = 1e-6``, rows doubled and extrapolated). Prints and records the statuses, how many
-agree within the two stated errors (and the largest difference over them), the stated
-errors and periods of the continuum, and the time per point of both (medians); then the
-continuum against the independent reference refined to bars of at most 2e-6
+80 points drawn with a fixed seed (11) over ``0 < a < 1``: alpha 1e-2..10, beta - alpha
+0.03..100, a 0.05..0.95, V 1e-2..3, zeta in {0, 0.01, 0.1, 0.5}, n in {0.7, 1, 1.5, 2, 3,
+5}, a longitudinal drive a_x in {0, 0, 0.5} (random phase, substrate or holder); then 40
+jumping points (``a`` 1.05..3, seed 12, the rest alike). Each is solved by the continuum
+(:func:`vibrofriction.solver.mdr_continuum.mdr_continuum`) and by the spring rows
+(:func:`vibrofriction.solver.mdr.mdr_friction` at ``tol = 1e-6``, rows doubled and
+extrapolated). Prints and records the statuses, how many agree within the two stated
+errors (and the largest difference over them), the stated errors and periods of the
+continuum, and the time per point of both (medians). Then the MDR solver at
+``tol = 1e-7`` (which asks the continuum) against the rows at ``1e-7``, at 60 jumping
+points (``a`` 1.02..3.5, seed 41) and 30 barely jumping ones (``a`` 1.0005..1.05, seed
+42); then the continuum against the independent reference refined to bars of at most 2e-6
 (tests/data/mdr_fine_reference.json, the points it covers).
 
     PYTHONPATH=src python benchmarks/mdr_continuum_fuzz.py [--write]
@@ -105,6 +106,32 @@ def run(points: list[tuple], title: str) -> list[str]:
     return lines
 
 
+def routed(seed: int, count: int, a_range: tuple[float, float], title: str) -> list[str]:
+    """``mdr_friction`` at ``tol = 1e-7`` (the continuum) against the rows at ``1e-7``."""
+    import vibrofriction.solver.mdr as mdr
+
+    q, by_rows = [], 0
+    for al, be, a, V, ze, n, ax, px, on in _points(seed, count, a_range):
+        c = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-7, a_x=ax, phase_x=px, inplane_on=on)
+        saved, mdr.CONTINUUM_TOL = mdr.CONTINUUM_TOL, 0.0
+        try:
+            r = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-7, a_x=ax, phase_x=px,
+                             inplane_on=on)
+        finally:
+            mdr.CONTINUUM_TOL = saved
+        by_rows += c["rows"] != ()
+        if c["status"] == r["status"] == "periodic":
+            q.append(abs(c["mu_ratio"] - r["mu_ratio"]) / (c["error"] + r["error"]))
+    lines = ["", f"| {title} | |", "|---|---|",
+             f"| within the two stated errors | {sum(x <= 1.0 for x in q)} of {len(q)} "
+             f"(largest difference over them {max(q):.2f}, median "
+             f"{statistics.median(q):.3f}) |",
+             f"| answered by the rows (the continuum failed) | {by_rows} of {count} |"]
+    for line in lines:
+        print(line)
+    return lines
+
+
 def against_reference() -> list[str]:
     """The continuum at the independent fine reference's points it covers (``a < 1`` and
     jumping apart).
@@ -151,6 +178,10 @@ def main() -> None:
     args = ap.parse_args()
     lines = (run(_points(), f"{N} points, 0 < a < 1")
              + run(_points(12, N_JUMPING, (1.05, 3.0)), f"{N_JUMPING} jumping points, a > 1")
+             + routed(41, 60, (1.02, 3.5), "the MDR solver at tol 1e-7 against the rows at "
+                      "1e-7: 60 jumping points, a 1.02..3.5")
+             + routed(42, 30, (1.0005, 1.05), "the same: 30 barely jumping points, a "
+                      "1.0005..1.05")
              + against_reference())
     if args.write:
         append_run(RESULTS, f"{N} + {N_JUMPING} random points: the row without springs "
