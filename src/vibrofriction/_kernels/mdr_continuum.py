@@ -39,8 +39,11 @@ times known at the segment's start (:func:`_levels`), each passed once, located 
 dense output and made step ends.  Between them the body's equation has a smooth right-hand
 side and Dormand-Prince 5(4) integrates it at its order.
 
-This first version covers Coulomb friction (``static_ratio = 1``), ``a < 1`` (the core of the
-contact never opens) and ``V > 0``.
+It covers Coulomb friction (``static_ratio = 1``) and ``V > 0``, with ``a < 1`` (the core of
+the contact never opens) or ``a > 1`` (a jumping indenter: the lift-off and the touch-down
+are step ends, the flight has no contact; where the contact opens ``W = int rho u'`` is
+carried instead of ``Q``, recomputed after a touch-down with the singular factor apart,
+:func:`_wint`, and the indentation near the boundary is taken from its time, :func:`_delta`).
 """
 
 import math

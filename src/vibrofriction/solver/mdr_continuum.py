@@ -15,6 +15,9 @@ tolerance, is the stated error.  (One fine period from the coarse orbit is not e
 the orbit of a map moves with the map's error, by more where it attracts slowly, and the
 error so estimated held half the true one at such points.)  The first periods, where the
 pieces still change, have their mean force balance restored (the kernel's ``_balance``).
+A jumping indenter (``a > 1``) is in its flight at the section: the state is ``(y, y')``,
+and the stated error also holds how far the search may have stopped from the orbit
+(:func:`_search_error`).
 """
 
 from __future__ import annotations
