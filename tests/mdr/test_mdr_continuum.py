@@ -276,6 +276,18 @@ def test_touchdown_quadrature(n):
     assert abs(0.5 * h * gl3 - ref) > 1e-6 * abs(ref)
 
 
+def test_a_step_misses_the_touchdown_integrand():
+    """Why the touch-down's integral is taken apart: Dormand-Prince's own weights give
+    0.655 for ``int_0^1 s^(1/2) ds = 2/3`` (docs/contact_geometry.md)."""
+    from vibrofriction._kernels import dopri as d
+
+    weights = (d._B1, 0.0, d._B3, d._B4, d._B5, d._B6)
+    nodes = (0.0, d._C2, d._C3, d._C4, d._C5, 1.0)
+    got = sum(b * c ** 0.5 for b, c in zip(weights, nodes, strict=True))
+    assert got == pytest.approx(0.655, abs=5e-4)
+    assert abs(got - 2.0 / 3.0) > 0.01
+
+
 def test_jumping_routes_to_the_continuum():
     """``mdr_friction`` below ``CONTINUUM_TOL`` answers a jumping point with the continuum."""
     r = mdr_friction(0.5, 4.0, 1.5, 0.3, 2.0, zeta=0.1, tol=1e-8)

@@ -182,12 +182,6 @@ def _hermite(HS, i, t):
 
 
 @jit
-def _rho(a, n, t):
-    """The contact radius ``rho = delta^(1/n)``, ``delta = 1 + a cos tau`` (0 out of contact)."""
-    return _root(max(0.0, 1.0 + a * math.cos(t)), n)
-
-
-@jit
 def _touchdown(a, t):
     """The last touch-down at or before ``t`` of a jumping indenter (``a > 1``) in the
     contact that holds ``t`` (``t`` past the lift-off: the next one, after ``t``).
@@ -212,6 +206,37 @@ def _delta(a, t, tc):
     if math.isnan(tc):
         return max(0.0, 1.0 + a * math.cos(t))
     return max(0.0, -2.0 * a * math.sin(0.5 * (t + tc)) * math.sin(0.5 * (t - tc)))
+
+
+@jit
+def _rho(a, n, t):
+    """The contact radius ``rho = delta^(1/n)``, ``delta = 1 + a cos tau`` (0 out of contact)."""
+    return _root(_delta(a, t, math.nan), n)
+
+
+@jit
+def _rho_rate(a, n, t):
+    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)`` (``a < 1``: never 0)."""
+    d = 1.0 + a * math.cos(t)
+    return _root(d, n) / (d * n) * (-a * math.sin(t))
+
+
+@jit
+def _gauss(HS, i, t0, t1, a, n, rho_du):
+    """Gauss-Legendre (3 nodes) over ``[t0, t1]`` within history interval ``i``:
+    ``int rho u' dtau`` (``rho_du``) or ``int u rho' dtau`` (the contact never opens).
+    """
+    hw = 0.5 * (t1 - t0)
+    tm = t0 + hw
+    s = 0.0
+    for j in range(GL_X.size):
+        tj = tm + hw * GL_X[j]
+        uj, duj = _hermite(HS, i, tj)
+        if rho_du:
+            s += GL_W[j] * duj * _rho(a, n, tj)
+        else:
+            s += GL_W[j] * uj * _rho_rate(a, n, tj)
+    return hw * s
 
 
 @jit
@@ -250,21 +275,7 @@ def _wint(HS, i, t0, t1, a, n, prm):
         if ttd <= t0 + 1e-12 and t0 - ttd < SINGULAR_NEAR * (t1 - t0):
             return (_touchdown_integral(HS, i, ttd, t1 - ttd, a, n, prm)
                     - _touchdown_integral(HS, i, ttd, t0 - ttd, a, n, prm))
-    hw = 0.5 * (t1 - t0)
-    tm = t0 + hw
-    s = 0.0
-    for j in range(GL_X.size):
-        tj = tm + hw * GL_X[j]
-        _, duj = _hermite(HS, i, tj)
-        s += GL_W[j] * duj * _rho(a, n, tj)
-    return hw * s
-
-
-@jit
-def _rho_rate(a, n, t):
-    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)`` (``a < 1``: never 0)."""
-    d = 1.0 + a * math.cos(t)
-    return _root(d, n) / (d * n) * (-a * math.sin(t))
+    return _gauss(HS, i, t0, t1, a, n, True)
 
 
 @jit
@@ -289,14 +300,7 @@ def _hq(HS, i, t, a, n):
     t0 = HS[i, HT]
     if t <= t0:
         return HS[i, HQ]
-    hw = 0.5 * (t - t0)
-    tm = t0 + hw
-    s = 0.0
-    for j in range(GL_X.size):
-        tj = tm + hw * GL_X[j]
-        uj, _ = _hermite(HS, i, tj)
-        s += GL_W[j] * uj * _rho_rate(a, n, tj)
-    return HS[i, HQ] + hw * s
+    return HS[i, HQ] + _gauss(HS, i, t0, t, a, n, False)
 
 
 @jit
