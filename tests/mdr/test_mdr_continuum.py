@@ -49,15 +49,23 @@ POINTS = [(0.5, 2.0, 0.5, 0.3, 2.0, 0.1), (0.5, 2.0, 0.5, 0.3, 2.0, 0.0),
           (2.0, 2.5, 0.6, 0.2, 1.5, 0.05), (0.5, 1.0, 0.9, 1.0, 2.0, 0.3)]
 
 
+@pytest.fixture
+def rows_alone(monkeypatch):
+    """``mdr_friction`` with the rows of springs alone (``CONTINUUM_TOL = 0``)."""
+    import vibrofriction.solver.mdr as mdr
+
+    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
+
+
 @pytest.mark.parametrize("point", POINTS)
-def test_continuum_is_the_rows_limit(point):
+def test_continuum_is_the_rows_limit(point, rows_alone):
     """The continuum's ``mu_ratio`` lies within the refined rows' error (rows of up to
     thousands of springs, extrapolated, a different kernel: closed forms per spring), and
     states an error a hundred times smaller."""
     alpha, beta, a, V, n, zeta = point
     c = mdr_continuum(alpha, beta, a, V, n, zeta)
     r = mdr_friction(alpha, beta, a, V, n, zeta=zeta, tol=1e-6)
-    assert r["rows"] != ()  # the rows answered (tol = 1e-6 is not below CONTINUUM_TOL)
+    assert r["rows"] != ()  # the rows answered
     assert c["status"] == "periodic" and r["status"] == "periodic"
     assert c["error"] < 3e-8
     assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
@@ -78,7 +86,7 @@ def test_rows_approach_the_continuum():
     assert errs[1] < 1e-7
 
 
-def test_drive_matches_the_rows():
+def test_drive_matches_the_rows(rows_alone):
     """A longitudinal drive of the substrate: the continuum within the rows' error."""
     from vibrofriction._kernels.phases import frame_offset, inplane_forcing
 
@@ -90,19 +98,36 @@ def test_drive_matches_the_rows():
     assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
 
 
-def test_tight_tolerance_routes_to_the_continuum(monkeypatch):
-    """``mdr_friction`` below ``CONTINUUM_TOL`` answers with the continuum (no rows);
-    above it, with ``n_springs`` or with ``CONTINUUM_TOL = 0`` with the rows."""
+def test_the_continuum_answers_where_it_covers(monkeypatch):
+    """``mdr_friction`` answers a point the continuum covers with it (no rows) at every
+    tolerance, the default ``1e-5`` too (there with a stated error ten times below
+    it); with ``n_springs`` or with ``CONTINUUM_TOL = 0`` the rows answer."""
     import vibrofriction.solver.mdr as mdr
 
-    r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)
-    assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
-    assert r["max_excess"] == 0.0
-    assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-5)["rows"] != ()
+    for tol, bound in ((1e-8, 1e-8), (1e-5, 1e-6)):
+        r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=tol)
+        assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= bound
+        assert r["max_excess"] == 0.0
     assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8,
                         n_springs=40)["rows"] == (40, 80)
     monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
     assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)["rows"] != ()
+
+
+def test_search_tolerance_follows_tol():
+    """Not given, the search's tolerance is ``FACTOR tol`` within its bounds, as the maps'
+    are: at ``1e-5`` looser than at ``1e-8`` (a larger stated error), in as many periods
+    (measured: 10 and 10 here). A ``state_tol`` given is kept: ``1e-9`` at ``1e-5`` takes
+    more periods (the maps' noise at their tolerance, ``1e-7``, slows the search down)."""
+    point = (0.5, 2.0, 0.5, 0.3, 2.0, 0.0, 0.0, 0.0, (0.0, 0.0))
+    loose = continuum_friction(*point, 1e-5)
+    tight = continuum_friction(*point, 1e-8)
+    given = continuum_friction(*point, 1e-5, state_tol=1e-9)
+    assert 1e-8 < loose["error"] <= 1e-6 and tight["error"] <= 1e-8
+    assert abs(loose["periods"] - tight["periods"]) <= 2
+    assert given["periods"] > loose["periods"]
+    for r in (loose, given):
+        assert abs(r["mu_ratio"] - tight["mu_ratio"]) <= r["error"] + tight["error"]
 
 
 FINE = json.loads((Path(__file__).parents[1] / "data" / "mdr_fine_reference.json")
@@ -118,12 +143,13 @@ def test_the_fine_reference_covers_the_continuum():
     assert {p["inplane_on"] for p in COVERED if p["a_x"] > 0} == {"substrate", "holder"}
 
 
+@pytest.mark.parametrize("tol", [1e-5, 1e-7])
 @pytest.mark.parametrize("p", COVERED, ids=lambda p: p["label"])
-def test_continuum_agrees_with_the_independent_reference(p):
+def test_continuum_agrees_with_the_independent_reference(p, tol):
     """Against the independent spring row refined to a bar of at most 2e-6
     (tests/data/make_mdr_fine_reference.py; shares no code with the continuum): within the
-    bar plus the continuum's stated error, which is at most 1e-7 (asked for as the MDR
-    solver asks at ``tol = 1e-7``: jumping, the default maps may state more)."""
+    bar plus the continuum's stated error, which is at most ``tol`` (asked for as the MDR
+    solver asks, at the default ``tol_trusted`` and at ``1e-7``)."""
     from vibrofriction._kernels.phases import frame_offset, inplane_forcing
 
     alpha, zeta = p["alpha"], p["zeta"]
@@ -131,9 +157,9 @@ def test_continuum_agrees_with_the_independent_reference(p):
     hc, hs = inplane_forcing(alpha, 2 * zeta * math.sqrt(alpha), p["a_x"], p["phase_x"], on)
     c = continuum_friction(alpha, p["beta"], p["amplitude"], p["v_inertial"],
                            p["profile_exponent"], zeta, hc, hs,
-                           frame_offset(p["a_x"], p["phase_x"], on), 1e-7)
+                           frame_offset(p["a_x"], p["phase_x"], on), tol)
     assert c["status"] == "periodic", c["reason"]
-    assert c["error"] <= 1e-7
+    assert c["error"] <= tol
     assert abs(c["mu_ratio"] - p["mu_ref"]) <= c["error"] + p["err_ref"], (
         c["mu_ratio"], p["mu_ref"], p["err_ref"])
 

@@ -1166,19 +1166,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         _section(z, PC, npc, z[0] + V * t, g)
         r = 0.0
         for i in range(nx):
-            r = max(r, abs(g[i] - x[i]) / (1.0 + abs(x[i])))
+            r = max(r, abs(g[i] - x[i]) / (1.0 + (abs(x[i]) if i > 0 else 0.0)))
         if stage == 0 and r < ROUGH_UNTIL:
             stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
             tol_m = rtol  # maps differ by their errors only)
-        elif r < state_tol and stage >= 1:
-            if stage == 2:
-                found = True
-                break
-            stage = 2  # on to the fine map's orbit
-            w_coarse = w_last
-            tol_m = fine * rtol
-            last = math.inf
-            continue
         if r > growth * last:  # the mixing went astray: start again from here
             nhist = 0
         last = r
@@ -1191,6 +1182,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         X[nhist, :nx] = x[:nx]
         G[nhist, :nx] = g[:nx]
         nhist += 1
+        ok = False
+        jump = 0.0
         if nhist >= 2:
             dF = np.empty((nx, nhist - 1))
             for q in range(nhist - 1):
@@ -1199,23 +1192,34 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             f = g[:nx] - x[:nx]
             gam = np.linalg.lstsq(dF, f)[0]
             ok = True
-            jump = 0.0
             for i in range(nx):
                 s = g[i]
                 for q in range(nhist - 1):
                     s -= (G[q + 1, i] - G[q, i]) * gam[q]
-                jump = max(jump, abs(s - g[i]) / (1.0 + abs(g[i])))
+                jump = max(jump, abs(s - g[i]) / (1.0 + (abs(g[i]) if i > 0 else 0.0)))
                 x[i] = s
                 if not math.isfinite(s):
                     ok = False
             if not ok or jump > LEAP * r:  # an ill-conditioned mix: the plain map instead
                 nhist = 0
                 ok = False
-            if ok:
-                u = x[0] + V * t
-                _set_section(x, z, PC, npc, u, n)
-                HS[nh - 1, HU] = u
-                HS[nh - 1, HD] = x[1] + V
+                jump = 0.0
+        # converged where the map moved the state by less than state_tol and the mixing
+        # would move it by less (it estimates the orbit: where that attracts slowly, the
+        # map's own move understates the distance)
+        if stage >= 1 and r < state_tol and jump < state_tol:
+            if stage == 2:
+                found = True
+                break
+            stage = 2  # on to the fine map's orbit
+            w_coarse = w_last
+            tol_m = fine * rtol
+            last = math.inf
+        if ok:
+            u = x[0] + V * t
+            _set_section(x, z, PC, npc, u, n)
+            HS[nh - 1, HU] = u
+            HS[nh - 1, HD] = x[1] + V
     if not found:
         return SECTION_NO_ORBIT, periods, 0
     res[0] = w_coarse

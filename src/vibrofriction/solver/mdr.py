@@ -46,10 +46,10 @@ MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows t
 AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
 # below this tolerance a point the row without springs covers is solved by it (exact in xi,
-# where the rows need thousands of springs: benchmarks/bench_mdr_tol.py); above it the rows
-# (the MDR histories and the tests' references are theirs; 0: the rows alone)
-CONTINUUM_TOL = 1e-6
-CONTINUUM_STATE_TOL = 1e-9  # its tol_state at the tightest (the maps' noise below)
+# where the rows need thousands of springs, and at the default tolerance quicker too:
+# benchmarks/bench_mdr_tol.py, bench_ratios.py); 0: the rows alone (the MDR histories and
+# the tests' references are theirs)
+CONTINUUM_TOL = math.inf
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
@@ -171,7 +171,7 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
                  profile_exponent: float, zeta: float = 0.0, n_springs: int | None = None,
                  tol: float = 1e-5, a_x: float = 0.0, phase_x: float = 0.0,
-                 inplane_on: str = "substrate", state_tol: float = STATE_TOL,
+                 inplane_on: str = "substrate", state_tol: float | None = None,
                  max_periods: int = MAX_PERIODS, static_ratio: float = 1.0) -> dict:
     """``mu_ratio = <F_x>/(mu0 <F_N>)`` of the scaled MDR model (docs/contact_geometry.md).
 
@@ -194,8 +194,10 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     ``a_x``, ``phase_x``, ``inplane_on``: a longitudinal in-plane oscillation of the
     substrate or the holder (:func:`mdr_row`; ``V > 0`` only: ``V = 0`` with ``a_x > 0``
     is refused, as its steady state depends on the start).  ``state_tol`` and
-    ``max_periods`` are each row's (:func:`mdr_row`; a row that may be passed over stops
-    after at most ``SKIP_PERIODS``); ``static_ratio >= 1`` too (each spring's static limit
+    ``max_periods`` are each row's (:func:`mdr_row`; ``state_tol`` None: ``STATE_TOL``; a
+    row that may be passed over stops after at most ``SKIP_PERIODS``), and the row without
+    springs' (``state_tol`` None: chosen for ``tol``, :func:`continuum_friction`);
+    ``static_ratio >= 1`` too (each spring's static limit
     over its kinetic one). ``tol`` must be a finite number ``> 0`` and
     ``n_springs`` a whole number ``>= 1`` (``3.0`` too): anything else is refused with a
     ValueError naming it.
@@ -209,7 +211,8 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
     if not static_ratio >= 1.0 or math.isinf(static_ratio):
         raise ValueError(f"static_ratio must be a finite number >= 1, got {static_ratio}")
     ip: dict[str, Any] = dict(a_x=a_x, phase_x=phase_x, inplane_on=inplane_on,
-                              state_tol=state_tol, static_ratio=static_ratio)
+                              state_tol=STATE_TOL if state_tol is None else float(state_tol),
+                              static_ratio=static_ratio)
     rank = {"periodic": 0, "averaged": 1, "not converged": 2}
     if n_given is None and not math.isinf(n_exp) \
             and continuum_covers(amplitude, V, static_ratio):
@@ -224,9 +227,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
             c = continuum_friction(alpha, beta, amplitude, V, n_exp, zeta, hc, hs,
                                    frame_offset(a_x, phase_x, on_substrate), tol,
                                    max_periods=min(max_periods, SKIP_PERIODS),
-                                   # (its state is a few numbers of order 1: its search
-                                   # ends at 1e-9 of them at the tightest)
-                                   state_tol=max(float(state_tol), CONTINUUM_STATE_TOL))
+                                   state_tol=state_tol)
         if c is not None and c["status"] in ("periodic", "continuous sliding") \
                 and c["error"] <= tol:
             # (each point's force is clamped to its limit exactly: no excess to report)

@@ -35,7 +35,8 @@ __all__ = ["continuous_sliding", "continuum_covers", "continuum_friction", "mdr_
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
-FACTOR = 0.3  # ... this times tol_trusted (the stated errors at tol 1e-7: at most 1.8e-8)
+STATE_LOOSEST, STATE_TIGHTEST = 1e-7, 1e-9  # ... and the search's (the maps' noise below)
+FACTOR = 0.3  # ... each this times tol_trusted (benchmarks/mdr_continuum_calibration.py)
 FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
@@ -223,17 +224,25 @@ def continuous_sliding(amplitude: float, profile_exponent: float) -> dict:
 def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        profile_exponent: float, zeta: float, hc: float, hs: float,
                        offset: tuple[float, float], tol: float,
-                       max_periods: int = 200, state_tol: float = STATE_TOL) -> dict:
-    """:func:`mdr_continuum` with its maps' tolerance chosen for ``tol``.
+                       max_periods: int = 200, state_tol: float | None = None) -> dict:
+    """:func:`mdr_continuum` with its maps' and its search's tolerances chosen for ``tol``.
 
-    ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``, tightened tenfold while the
-    stated error exceeds ``tol`` (down to ``TIGHTEST``).
+    The maps' ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``; the search's
+    ``state_tol``, where not given, likewise within ``[STATE_TIGHTEST, STATE_LOOSEST]`` (a
+    given one at least ``STATE_TIGHTEST``). Both tightened tenfold while the stated error
+    exceeds ``tol``, down to their tightest (a given ``state_tol`` stays).
     """
     rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
+    chosen = state_tol is not None
+    stol = max(STATE_TIGHTEST, float(state_tol)) if state_tol is not None \
+        else min(STATE_LOOSEST, max(STATE_TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
-                          max_periods=max_periods, rtol=rtol, state_tol=state_tol)
-        if r["status"] != "periodic" or r["error"] <= tol or rtol <= TIGHTEST \
-                or state_tol >= tol:  # (tighter maps cannot help that)
+                          max_periods=max_periods, rtol=rtol, state_tol=stol)
+        if r["status"] != "periodic" or r["error"] <= tol \
+                or (rtol <= TIGHTEST and (chosen or stol <= STATE_TIGHTEST)) \
+                or (chosen and stol >= tol):  # (tighter maps cannot help that)
             return r
         rtol = max(TIGHTEST, 0.1 * rtol)
+        if not chosen:
+            stol = max(STATE_TIGHTEST, 0.1 * stol)

@@ -1,11 +1,10 @@
 """The MDR solver: a curved tip as a row of springs (docs/contact_geometry.md).
 
 The method of dimensionality reduction maps an axisymmetric tip ``z = c r^n`` onto a row of
-independent springs, each with its own stick, slip and loss of contact; rows of ``N`` and
-``2N`` springs are solved exactly and extrapolated in ``N``
-(:func:`vibrofriction.solver.mdr.mdr_friction`), or, below ``tol_trusted = 1e-6`` where it
-covers the point, the row's continuum limit is solved directly
-(:mod:`vibrofriction.solver.mdr_continuum`).
+independent springs, each with its own stick, slip and loss of contact.  Where it covers the
+point, the row's continuum limit is solved directly
+(:mod:`vibrofriction.solver.mdr_continuum`); elsewhere rows of ``N`` and ``2N`` springs are
+solved exactly and extrapolated in ``N`` (:func:`vibrofriction.solver.mdr.mdr_friction`).
 """
 
 from __future__ import annotations
@@ -41,16 +40,18 @@ class MdrMethod:
               settings: SolverSettings) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
         """Output rows of ``points`` (``V >= 0``), point by point; see :class:`~.base.Method`.
 
-        Status: MDR ``"periodic"`` (the section state of the finer row repeats after one
-        period) is :attr:`Status.PERIODIC` (period 1), ``"averaged"``
-        :attr:`Status.AVERAGED`, ``"continuous sliding"`` (the row without springs, proven)
-        :attr:`Status.SLIDING`, ``"not converged"`` :attr:`Status.NOT_CONVERGED`
-        (``mu_ratio`` nan, ``error`` inf) or, where a row made no progress (infinite
-        error), :attr:`Status.FAILED`.  ``error`` is the solver's: the difference of the
-        rows of ``N`` and ``2N`` springs (the contact's discretisation) plus the orbits'
-        errors.  ``periods`` and ``events`` are the finer row's (its periods, the events of
-        its last period); ``work``, the time fractions of the single contact point, the
-        Floquet and window columns and the final section state are nan.
+        Status: MDR ``"periodic"`` (the section state of the row without springs, or of
+        the finer row, repeats after one period) is :attr:`Status.PERIODIC` (period 1),
+        ``"averaged"`` :attr:`Status.AVERAGED`, ``"continuous sliding"`` (the row without
+        springs, proven) :attr:`Status.SLIDING`, ``"not converged"``
+        :attr:`Status.NOT_CONVERGED` (``mu_ratio`` nan, ``error`` inf) or, where a row made
+        no progress (infinite error), :attr:`Status.FAILED`.  ``error`` is the solver's:
+        the row without springs' (its orbits' difference at two tolerances plus its
+        search's tolerance), or the difference of the rows of ``N`` and ``2N`` springs
+        (the contact's discretisation) plus the orbits' errors.  ``periods`` and
+        ``events`` are the solving row's (its periods, the events of its last period);
+        ``work``, the time fractions of the single contact point, the Floquet and window
+        columns and the final section state are nan.
         """
         r = settings.resolved(self.capabilities.settings)
         out_f, out_i = new_outputs(len(points))
@@ -72,7 +73,9 @@ class MdrMethod:
                              zeta=points["zeta"][i], tol=settings.tol_trusted,
                              a_x=points["a_x"][i], phase_x=points["phase_x"][i],
                              inplane_on=points.choice("inplane_on", i),
-                             state_tol=float(r["tol_state"]),
+                             # (None: the rows' default, the row without springs' for
+                             # tol_trusted)
+                             state_tol=settings.tol_state,
                              max_periods=int(r["max_periods"]),
                              static_ratio=float(points["static_ratio"][i]))
             status = _MDR_STATUS[m["status"]]
