@@ -25,6 +25,7 @@ import time
 import numpy as np
 
 import vibrofriction as vf
+import vibrofriction.solver.mdr as mdr_module
 from vibrofriction import theory
 from vibrofriction.contact import Material, Sphere
 from vibrofriction.solver import solve_points
@@ -190,8 +191,9 @@ def dead_weight() -> None:
                  mu0=0.3, contact=Sphere(3e-3, steel, steel), contact_model="mdr")
     print("\nThe bench's sphere of docs/contact_geometry.md (`R = 3 mm`, steel, 20 N, "
           "`v0 = 1.5 mm/s`), both normal controls: `<F_N>` from the closed form "
-          "(`Physical.mean_normal_force`) and from the MDR row (`mdr_friction`'s "
-          "`mean_normal_ratio` times `F_N0`, rows as in its result); `mu/mu0` by "
+          "(`Physical.mean_normal_force`) and from the MDR rows of springs (`mdr_friction`'s "
+          "`mean_normal_ratio` times `F_N0`, the row without springs off, rows as in its "
+          "result); `mu/mu0` by "
           "`friction_coefficient`.\n")
     print("| du_z (um) | control | d0 (um) | a | F_N0 (N) | <F_N> (N) | row <F_N> - <F_N> (N) | "
           "V_c (m/s) | mu/mu0 |")
@@ -201,7 +203,11 @@ def dead_weight() -> None:
             pin = vf.from_bench(**bench, du_z=du, normal_control=control)
             d = pin.to_dimensionless()
             r = vf.friction_coefficient(pin, v0=0.0015)
-            row = mdr_friction(d.alpha, d.beta, d.amplitude, float(r.v_inertial), 2.0)
+            saved, mdr_module.CONTINUUM_TOL = mdr_module.CONTINUUM_TOL, 0.0  # the rows'
+            try:
+                row = mdr_friction(d.alpha, d.beta, d.amplitude, float(r.v_inertial), 2.0)
+            finally:
+                mdr_module.CONTINUUM_TOL = saved
             print(f"| {du * 1e6:g} | {control} | {pin.u_z0 * 1e6:.5f} | {d.amplitude:.4f} | "
                   f"{pin.F_N0:.4f} | {pin.mean_normal_force:.10g} | "
                   f"{row['mean_normal_ratio'] * pin.F_N0 - pin.mean_normal_force:+.1e} "

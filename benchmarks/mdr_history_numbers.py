@@ -31,6 +31,7 @@ import time
 import numpy as np
 
 import vibrofriction as vf
+import vibrofriction.solver.mdr as mdr_module
 from vibrofriction import theory
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction
@@ -94,17 +95,24 @@ def energy() -> None:
 
 def steady() -> None:
     print("\n## One period of the periodic orbit against the solver and the closed form\n")
-    print("`springs` = the finer row of `mdr_friction` at `tol = 1e-5`; 400 samples. "
+    print("`springs` = the finer row of `mdr_friction`'s rows of springs at `tol = 1e-5` "
+          "(the row without springs off), `rows +- error` their extrapolation; 400 samples. "
           "`mu` = `int f / int n` over the period (the exact impulses), `mu (samples)` the "
-          "samples' means; `solve_points` the extrapolated solver with its `error`; "
+          "samples' means; `solve_points` the MDR solver (the row without springs) with its "
+          "`error`; "
           "`<n>` the exact mean of `n` against `theory.profile_mean_normal_force`; the largest "
           "`|f_i| - n_i` relative to the largest `n_i`.\n")
-    print("| point | springs | mu | mu (samples) | solve_points +- error | <n> - closed form "
-          "| max(abs(f_i) - n_i) |")
-    print("| --- | --- | --- | --- | --- | --- | --- |")
+    print("| point | springs | mu | mu (samples) | rows +- error | solve_points +- error "
+          "| <n> - closed form | max(abs(f_i) - n_i) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     for p in POINTS:
         alpha, beta, a, V, n, zeta = p
-        M = mdr_friction(alpha, beta, a, V, n, zeta=zeta)["rows"][1]
+        saved, mdr_module.CONTINUUM_TOL = mdr_module.CONTINUUM_TOL, 0.0
+        try:
+            rows = mdr_friction(alpha, beta, a, V, n, zeta=zeta)
+        finally:
+            mdr_module.CONTINUUM_TOL = saved
+        M = rows["rows"][1]
         h = vf.simulate(dim(alpha, beta, a, n, zeta), v_inertial=V, periods=1,
                         samples_per_period=400, initial="steady", springs=M)
         mu = h.impulse[-1, 0] / h.normal_impulse[-1]
@@ -113,7 +121,8 @@ def steady() -> None:
         dn = h.normal_impulse[-1] / (2 * math.pi) - float(theory.profile_mean_normal_force(a, n))
         nn = h.spring_normal()
         ex = float(np.max(np.abs(h.spring_f) - nn)) / float(np.max(nn))
-        print(f"| {p} | {M} | {mu:.7f} | {mu_s:.7f} | {float(pt['mu_ratio']):.7f} +- "
+        print(f"| {p} | {M} | {mu:.7f} | {mu_s:.7f} | {rows['mu_ratio']:.7f} +- "
+              f"{rows['error']:.1e} | {float(pt['mu_ratio']):.7f} +- "
               f"{float(pt['error']):.1e} | {dn:+.1e} | {ex:.1e} |")
 
 

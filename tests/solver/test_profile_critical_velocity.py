@@ -110,14 +110,15 @@ def test_mdr_solver_slides_continuously_just_above_v_c_only(alpha, beta, a, n, z
     vc = theory.profile_critical_velocity(alpha, beta, a, n, zeta)
     above = mdr_friction(alpha, beta, a, 1.001 * vc, n, zeta)
     below = mdr_friction(alpha, beta, a, 0.999 * vc, n, zeta)
-    # without jumping the solver proves continuous sliding before any row; the rows find it
+    # without jumping the solver proves continuous sliding before any row; jumping, the
+    # row without springs finds it within its error, a row of springs to round-off
     assert above["status"] == ("continuous sliding" if a < 1.0 else "periodic")
     assert below["status"] == "periodic"
     rows = mdr_friction(alpha, beta, a, 1.001 * vc, n, zeta, n_springs=40)
     for r in (above, rows):
         # continuous sliding: f_i = n_i, so <F_x> = mu0 <F_N>
         assert r["stick_area_fraction"] == 0.0
-        assert r["mu_ratio"] == pytest.approx(1.0, abs=1e-12)
+        assert r["mu_ratio"] == pytest.approx(1.0, abs=max(1e-12, r["error"]))
     # just below, springs stick; the deficit 1 - mu (~ (V_c - V)^2) can be inside the bar
     assert below["stick_area_fraction"] > 1e-3 and below["mu_ratio"] < 1.0 + below["error"]
     further = mdr_friction(alpha, beta, a, 0.99 * vc, n, zeta)  # 1 - mu grows ~ (V_c - V)^2
