@@ -50,6 +50,7 @@ _FLAT1 = "(0.5, 2, 0.5, 0.3, zeta 0, a_x 0.5, 1, substrate)"
 _FLAT2 = "(1.3, 4, 1.4, 0.8, zeta 0.05, a_x 1.2, 2.5, holder)"
 _FIRST = r"^([^ ,]+)"  # the first word of a row's value
 _STIFF = "stiff contact (mass 0.01): mu_ratio, error, rows, skipped"
+_STIFF_ROWS = "stiff contact, the rows alone: mu_ratio, error, rows, skipped"
 _SLOPE = "slope at (0.01, 1e6), a = {}, vbar 1e-3 (sqrt(4 pi/9) = 1.1816)"
 
 
@@ -147,8 +148,11 @@ QUOTES: list[Quote] = [
           _DN + "contact_geometry_using_it", "linearised: mu_ratio, error", r"^(\S+),.*()$"),
     Quote("docs/contact_geometry.md", n("at the same $V = #$"), _DN + "contact_geometry_using_it",
           "V (both)"),
-    Quote("docs/contact_geometry.md", n("it is now periodic, $# \\pm #$ (rows #, #)"),
-          _DN + "contact_geometry_using_it", _STIFF, r"^(\S+), (\S+), \((\d+), (\d+)\)"),
+    Quote("docs/contact_geometry.md", n("the rows of springs now find it periodic, $# \\pm #$ "
+                                        "(rows #, #;"),
+          _DN + "contact_geometry_using_it", _STIFF_ROWS, r"^(\S+), (\S+), \((\d+), (\d+)\)"),
+    Quote("docs/contact_geometry.md", n("row without springs gives $# \\pm #$, both"),
+          _DN + "contact_geometry_using_it", _STIFF, r"^(\S+), (\S+), \(\)"),
     # docs/contact_geometry.md, "In-plane oscillation along the sliding"
     Quote("docs/contact_geometry.md", n("`solve_points` with `a_x` within # at seven points"),
           _MI + "flat_punch", "largest |diff|"),
@@ -158,7 +162,7 @@ QUOTES: list[Quote] = [
     Quote("docs/contact_geometry.md", n("**# of # within the combined bars**"),
           _MI + "against_reference", "within the combined bars", r"^(\d+) of (\d+)$"),
     *_each("docs/contact_geometry.md", n("`|diff|/(error + bar)` at most # (# to # apart; the "
-                                         "solver's errors # to #)"),
+                                         "solver's errors # to #:"),
            _MI + "against_reference", ("largest ratio", "(.*)"),
            ("|diff|, smallest to largest", r"^(\S+) to"),
            ("|diff|, smallest to largest", r"to (\S+)$"),
@@ -169,9 +173,18 @@ QUOTES: list[Quote] = [
           _MI + "against_reference", "their steps", r"^([^,]+), ([^,]+),"),
     Quote("docs/contact_geometry.md", n("(bars median #, largest #;"), _MI + "calibration",
           "reference bars: median, largest", r"^(\S+), (\S+)$"),
-    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (its errors # to #)"),
+    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (their errors # to "
+                                        "#)"),
           _MI + "calibration", "|diff|/error: median, largest", r"^(\S+), (\S+)$()()"),
-    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (its errors # to #)"),
+    Quote("docs/contact_geometry.md", n("`|diff|/error` median #, largest # (their errors # to "
+                                        "#)"),
+          _MI + "calibration", "the rows' errors, smallest to largest", r"()()^(\S+) to (\S+)$"),
+    Quote("docs/contact_geometry.md", n("answers all 24, `|diff|/(error + bar)` median #, "
+                                        "largest # (its errors # to #, the"),
+          _MI + "calibration", "the solver: |diff|/(error + bar): median, largest",
+          r"^(\S+), (\S+)$()()"),
+    Quote("docs/contact_geometry.md", n("answers all 24, `|diff|/(error + bar)` median #, "
+                                        "largest # (its errors # to #, the"),
           _MI + "calibration", "the solver's errors, smallest to largest", r"()()^(\S+) to (\S+)$"),
     *_each("docs/contact_geometry.md", n("agree by chance (#, #; 80 springs: #), and a bar of "
                                          "their one difference, #, is # short of the "

@@ -55,8 +55,14 @@ POINTS = [  # (alpha, beta, a, V, zeta, n): sphere, cone, n = 3; stiff, soft, ge
 # where the reference's default rows (100 springs, 200 steps; 200, 400) understate its own
 # error: there it moves 3.3e-6 from 400 to 1600 steps a period against a bar of 3.4e-7;
 # rows (200, 800) and (400, 1600) bound it (6.6e-7, and (400, 1600), (800, 3200) move it
-# by 8e-8 more)
-FINER = {(0.7, 1.5, 0.9, 0.1, 0.0, 2.0): {"resolutions": ((200, 800), (400, 1600))}}
+# by 8e-8 more); and where the row without springs (errors ~1e-7) found the default bar
+# short: the cone (1, 3, 0.7, 0.5, zeta 0.1) 1.5e-6 from it against a bar of 9.7e-7, the
+# stiff damped sphere 5.6e-6 against 1.3e-6; rows (200, 400), (400, 800) leave them 2.8e-7
+# and 1.3e-6 off with bars 1.2e-6 and 4.3e-6, and (400, 800), (800, 1600) 7.6e-8 and 4.2e-7
+# (measured on 2026-11-30 against the row without springs at tol 1e-9)
+FINER = {(0.7, 1.5, 0.9, 0.1, 0.0, 2.0): {"resolutions": ((200, 800), (400, 1600))},
+         (1.0, 3.0, 0.7, 0.5, 0.1, 1.0): {"resolutions": ((200, 400), (400, 800))},
+         (0.05, 0.1, 0.5, 2.0, 0.5, 2.0): {"resolutions": ((200, 400), (400, 800))}}
 
 
 @pytest.mark.parametrize("alpha, beta, a, V, zeta, n", POINTS)
