@@ -56,10 +56,10 @@ def _plane() -> None:
 
 def _curved() -> None:
     from .solver.engine import solve_points
-    from .solver.mdr_continuum import mdr_continuum
+    from .solver.mdr import mdr_row
 
-    solve_points(0.5, 2.0, 0.5, 0.3, profile_exponent=2.0)
-    mdr_continuum(0.5, 2.0, 0.5, 0.3, 2.0)  # the row without springs (tight tolerances)
+    solve_points(0.5, 2.0, 0.5, 0.3, profile_exponent=2.0)  # the row without springs
+    mdr_row(0.5, 2.0, 0.5, 0.3, 2.0, 20)  # a row of springs (histories, n_springs)
 
 
 def _rate_state() -> None:
