@@ -1098,7 +1098,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change or a mixed step's residual grows by
     ``growth``; the maps at ``ROUGH`` until the state's relative change is below
-    ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol``; then on from
+    ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol`` and so is the
+    mixing's step (``y`` measured absolutely, the rest relative to ``1 + |x|``); then on from
     there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
     its error, by more where the orbit attracts slowly, so the fine orbit is sought anew,
     not one fine period taken from the coarse orbit).  Writes ``res = (int F over the

@@ -132,8 +132,9 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
 
     ``hc``, ``hs``: the in-plane force ``hc cos tau + hs sin tau`` on the body, ``offset``
     the start's frame offset (:func:`vibrofriction._kernels.phases.frame_offset`), as for
-    :func:`vibrofriction.solver.mdr.mdr_row`.  ``state_tol``: the section state's relative
-    change that ends each stage of the search (it adds to the stated error).  Returns
+    :func:`vibrofriction.solver.mdr.mdr_row`.  ``state_tol``: the section state's change
+    (``y`` absolute, the rest relative) that ends each stage of the search, by the map and
+    by the mixing's step (it adds to the stated error).  Returns
     ``mu_ratio``, ``error``, ``status``
     (``"periodic"``, or ``"failed"`` with the reason in ``reason``), ``periods`` and the
     time-averaged area fractions in stick, slip and out of contact.
