@@ -16,7 +16,7 @@ import subprocess
 import time
 from pathlib import Path
 
-from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction.solver.mdr import mdr_friction, rows_alone
 from vibrofriction_reference.mdr import mdr_reference
 
 POINTS = [  # (alpha, beta, a, V, zeta, n)
@@ -35,7 +35,9 @@ def main() -> None:
         s_t, r_t = [], []
         for _ in range(REPEATS):
             t0 = time.perf_counter()
-            r = mdr_friction(al, be, a, V, n, zeta=z, tol=1e-5)
+            # the rows of springs (the row without springs: bench_mdr_tol.py)
+            with rows_alone():
+                r = mdr_friction(al, be, a, V, n, zeta=z, tol=1e-5)
             t1 = time.perf_counter()
             ref = mdr_reference(al, be, a, V, n, transient_periods=300, average_periods=20,
                                 zeta=z)

@@ -5,7 +5,7 @@ At the ten regimes of ``bench_ratios.py`` (the two jumping ones since the contin
 ``tol_trusted = 1e-7`` (the MDR solver then answers with the row without springs,
 :mod:`vibrofriction.solver.mdr_continuum`) against the flat point at the same
 ``(alpha, beta, a, V, zeta, a_x)``, and the spring rows asked for the same tolerance
-(``CONTINUUM_TOL`` set to 0 for that call: rows doubled up to 5120 springs); the
+(within ``rows_alone()``: rows doubled up to 5120 springs); the
 stated errors and statuses after the times; medians of the ratios at the end.
 
     PYTHONPATH=src python benchmarks/bench_mdr_tol.py [--tol TOL] [--write]
@@ -29,7 +29,7 @@ from bench_ratios import REGIMES
 from sections import append_run
 from vibrofriction.schema import Status
 from vibrofriction.solver import SolverSettings, solve_points
-from vibrofriction.solver import mdr as mdr_module
+from vibrofriction.solver.mdr import rows_alone
 
 TOL = 1e-7
 EXPONENTS = (1.0, 2.0, 4.0)
@@ -72,14 +72,11 @@ def bench(tol: float = TOL) -> list[str]:
             ratios.append(t / t_flat)
             errors.append(float(out["error"]))
             cells.append(f"{1e3 * t:.2f}, {t / t_flat:.0f}x, {_answer(out)}")
-        saved, mdr_module.CONTINUUM_TOL = mdr_module.CONTINUUM_TOL, 0.0
-        try:
+        with rows_alone():
             for n in EXPONENTS:
                 t, out = _timed(tight, **base, profile_exponent=n)
                 row_ratios.append(t / t_flat)
                 cells.append(f"{1e3 * t:.1f}, {t / t_flat:.0f}x, {_answer(out)}")
-        finally:
-            mdr_module.CONTINUUM_TOL = saved
         line = "| " + " | ".join(cells) + " |"
         print(line, flush=True)
         lines.append(line)

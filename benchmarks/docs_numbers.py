@@ -288,13 +288,10 @@ def contact_geometry_using_it() -> Rows:
     t0 = time.perf_counter()
     stiff = mdr.mdr_friction(*point)
     t_stiff = time.perf_counter() - t0
-    saved, mdr.CONTINUUM_TOL = mdr.CONTINUUM_TOL, 0.0
-    try:
+    with mdr.rows_alone():
         t0 = time.perf_counter()
         rows = mdr.mdr_friction(*point)
         t_rows = time.perf_counter() - t0
-    finally:
-        mdr.CONTINUUM_TOL = saved
     return [("sphere (mdr): mu_ratio, error, status", f"{r.mu_ratio:.5f}, {r.error:.2g}, "
              f"{r.status.value}"),
             ("sphere (mdr): mean_normal_ratio", f"{r.mean_normal_ratio:.4f}"),

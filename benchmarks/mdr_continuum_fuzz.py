@@ -31,7 +31,7 @@ import numpy as np
 
 from sections import append_run
 from vibrofriction._kernels.phases import frame_offset, inplane_forcing
-from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction.solver.mdr import mdr_friction, rows_alone
 from vibrofriction.solver.mdr_continuum import mdr_continuum
 
 RESULTS = Path(__file__).parent / "results" / "mdr_continuum_fuzz.md"
@@ -65,8 +65,9 @@ def run(points: list[tuple], title: str) -> list[str]:
         t0 = time.perf_counter()
         c = mdr_continuum(al, be, a, V, n, ze, hc, hs, frame_offset(ax, px, sub))
         t1 = time.perf_counter()
-        r = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-6, a_x=ax, phase_x=px,
-                         inplane_on=on)
+        with rows_alone():  # (the default is the continuum)
+            r = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-6, a_x=ax, phase_x=px,
+                             inplane_on=on)
         t2 = time.perf_counter()
         statuses[(c["status"], r["status"])] += 1
         if c["status"] != "periodic":
@@ -108,17 +109,12 @@ def run(points: list[tuple], title: str) -> list[str]:
 
 def routed(seed: int, count: int, a_range: tuple[float, float], title: str) -> list[str]:
     """``mdr_friction`` at ``tol = 1e-7`` (the continuum) against the rows at ``1e-7``."""
-    import vibrofriction.solver.mdr as mdr
-
     q, by_rows = [], 0
     for al, be, a, V, ze, n, ax, px, on in _points(seed, count, a_range):
         c = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-7, a_x=ax, phase_x=px, inplane_on=on)
-        saved, mdr.CONTINUUM_TOL = mdr.CONTINUUM_TOL, 0.0
-        try:
+        with rows_alone():
             r = mdr_friction(al, be, a, V, n, zeta=ze, tol=1e-7, a_x=ax, phase_x=px,
                              inplane_on=on)
-        finally:
-            mdr.CONTINUUM_TOL = saved
         by_rows += c["rows"] != ()
         if c["status"] == r["status"] == "periodic":
             q.append(abs(c["mu_ratio"] - r["mu_ratio"]) / (c["error"] + r["error"]))

@@ -25,11 +25,10 @@ import time
 import numpy as np
 
 import vibrofriction as vf
-import vibrofriction.solver.mdr as mdr_module
 from vibrofriction import theory
 from vibrofriction.contact import Material, Sphere
 from vibrofriction.solver import solve_points
-from vibrofriction.solver.mdr import mdr_friction, mdr_row
+from vibrofriction.solver.mdr import mdr_friction, mdr_row, rows_alone
 from vibrofriction.theory.profile import _SLIDING_GRID, _sliding_rate
 
 SYSTEMS = (("stiff", 0.01, 0.02, 0.0), ("soft", 0.01, 40.0, 0.0),
@@ -203,11 +202,8 @@ def dead_weight() -> None:
             pin = vf.from_bench(**bench, du_z=du, normal_control=control)
             d = pin.to_dimensionless()
             r = vf.friction_coefficient(pin, v0=0.0015)
-            saved, mdr_module.CONTINUUM_TOL = mdr_module.CONTINUUM_TOL, 0.0  # the rows'
-            try:
+            with rows_alone():
                 row = mdr_friction(d.alpha, d.beta, d.amplitude, float(r.v_inertial), 2.0)
-            finally:
-                mdr_module.CONTINUUM_TOL = saved
             print(f"| {du * 1e6:g} | {control} | {pin.u_z0 * 1e6:.5f} | {d.amplitude:.4f} | "
                   f"{pin.F_N0:.4f} | {pin.mean_normal_force:.10g} | "
                   f"{row['mean_normal_ratio'] * pin.F_N0 - pin.mean_normal_force:+.1e} "

@@ -31,10 +31,9 @@ import time
 import numpy as np
 
 import vibrofriction as vf
-import vibrofriction.solver.mdr as mdr_module
 from vibrofriction import theory
 from vibrofriction.solver import solve_points
-from vibrofriction.solver.mdr import mdr_friction
+from vibrofriction.solver.mdr import mdr_friction, rows_alone
 from vibrofriction_reference.mdr import mdr_mean
 
 #: (alpha, beta, a, V, n, zeta): sphere, jumping sphere (damped), cone, soft n = 3
@@ -107,11 +106,8 @@ def steady() -> None:
     print("| --- | --- | --- | --- | --- | --- | --- | --- |")
     for p in POINTS:
         alpha, beta, a, V, n, zeta = p
-        saved, mdr_module.CONTINUUM_TOL = mdr_module.CONTINUUM_TOL, 0.0
-        try:
+        with rows_alone():
             rows = mdr_friction(alpha, beta, a, V, n, zeta=zeta)
-        finally:
-            mdr_module.CONTINUUM_TOL = saved
         M = rows["rows"][1]
         h = vf.simulate(dim(alpha, beta, a, n, zeta), v_inertial=V, periods=1,
                         samples_per_period=400, initial="steady", springs=M)

@@ -70,16 +70,10 @@ BITWISE = [(0.5, 2.0, 0.5, 0.3, 0.0, 2.0), (0.5, 2.0, 1.5, 0.3, 0.0, 2.0),
            (1.3, 4.0, 1.4, 0.8, 0.0, math.inf)]
 
 
-@contextlib.contextmanager
-def _rows_alone():
-    """``mdr_friction`` with the rows of springs alone (the row without springs off; a
-    revision without it is unchanged)."""
-    saved = getattr(mdr_module, "CONTINUUM_TOL", None)
-    mdr_module.CONTINUUM_TOL = 0.0
-    try:
-        yield
-    finally:
-        mdr_module.CONTINUUM_TOL = saved
+def _rows_alone() -> contextlib.AbstractContextManager:
+    """``mdr_friction`` with the rows of springs alone (a revision without the row without
+    springs has no switch and needs none)."""
+    return getattr(mdr_module, "rows_alone", contextlib.nullcontext)()
 
 
 def _bits() -> list:

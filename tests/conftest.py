@@ -66,6 +66,15 @@ def pytest_collection_modifyitems(config, items):
     items.sort(key=lambda item: order[item.nodeid.split("::")[0]])
 
 
+@pytest.fixture
+def rows_alone():
+    """The MDR solver's rows of springs alone for the test (``solver.mdr.rows_alone``)."""
+    from vibrofriction.solver.mdr import rows_alone
+
+    with rows_alone():
+        yield
+
+
 @pytest.fixture(scope="session")
 def general_system():
     return vf.Dimensionless(alpha=0.5, beta=2.0, amplitude=0.5)

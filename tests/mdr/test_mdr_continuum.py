@@ -49,14 +49,6 @@ POINTS = [(0.5, 2.0, 0.5, 0.3, 2.0, 0.1), (0.5, 2.0, 0.5, 0.3, 2.0, 0.0),
           (2.0, 2.5, 0.6, 0.2, 1.5, 0.05), (0.5, 1.0, 0.9, 1.0, 2.0, 0.3)]
 
 
-@pytest.fixture
-def rows_alone(monkeypatch):
-    """``mdr_friction`` with the rows of springs alone (``CONTINUUM_TOL = 0``)."""
-    import vibrofriction.solver.mdr as mdr
-
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
-
-
 @pytest.mark.parametrize("point", POINTS)
 def test_continuum_is_the_rows_limit(point, rows_alone):
     """The continuum's ``mu_ratio`` lies within the refined rows' error (rows of up to
@@ -98,10 +90,10 @@ def test_drive_matches_the_rows(rows_alone):
     assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
 
 
-def test_the_continuum_answers_where_it_covers(monkeypatch):
+def test_the_continuum_answers_where_it_covers():
     """``mdr_friction`` answers a point the continuum covers with it (no rows) at every
     tolerance, the default ``1e-5`` too (there with a stated error ten times below
-    it); with ``n_springs`` or with ``CONTINUUM_TOL = 0`` the rows answer."""
+    it); with ``n_springs`` or within ``rows_alone()`` the rows answer."""
     import vibrofriction.solver.mdr as mdr
 
     for tol, bound in ((1e-8, 1e-8), (1e-5, 1e-6)):
@@ -110,8 +102,8 @@ def test_the_continuum_answers_where_it_covers(monkeypatch):
         assert r["max_excess"] == 0.0
     assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8,
                         n_springs=40)["rows"] == (40, 80)
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
-    assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)["rows"] != ()
+    with mdr.rows_alone():
+        assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8)["rows"] != ()
 
 
 def test_search_tolerance_follows_tol():
@@ -236,7 +228,7 @@ JUMPING = [(0.5, 4.0, 1.5, 0.3, 2.0, 0.0), (0.5, 4.0, 1.5, 0.3, 2.0, 0.1),
 
 
 @pytest.mark.parametrize("point", JUMPING)
-def test_jumping_is_the_rows_limit(point, monkeypatch):
+def test_jumping_is_the_rows_limit(point):
     """Where the contact opens every period, the continuum asked for ``1e-7`` lies within
     the rows' error at ``1e-7`` (rows of thousands of springs, extrapolated), and so do the
     time-averaged areas within the finest row's share of a cell."""
@@ -244,8 +236,8 @@ def test_jumping_is_the_rows_limit(point, monkeypatch):
 
     alpha, beta, a, V, n, zeta = point
     c = continuum_friction(alpha, beta, a, V, n, zeta, 0.0, 0.0, (0.0, 0.0), 1e-7)
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
-    r = mdr_friction(alpha, beta, a, V, n, zeta=zeta, tol=1e-7)
+    with mdr.rows_alone():
+        r = mdr_friction(alpha, beta, a, V, n, zeta=zeta, tol=1e-7)
     assert r["rows"] != () and r["status"] == "periodic"
     assert c["status"] == "periodic" and c["error"] <= 1e-7
     assert abs(c["mu_ratio"] - r["mu_ratio"]) <= r["error"] + c["error"]
@@ -315,7 +307,7 @@ def test_a_step_misses_the_touchdown_integrand():
 
 
 def test_jumping_routes_to_the_continuum():
-    """``mdr_friction`` below ``CONTINUUM_TOL`` answers a jumping point with the continuum."""
+    """``mdr_friction`` answers a jumping point with the continuum."""
     r = mdr_friction(0.5, 4.0, 1.5, 0.3, 2.0, zeta=0.1, tol=1e-8)
     assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= 1e-8
 

@@ -37,20 +37,12 @@ def _solve(p: dict) -> tuple[int, float, float, bool]:
 
 
 def _rows(p: dict) -> dict:
-    """The rows of springs alone at ``p`` (call with ``CONTINUUM_TOL = 0``)."""
+    """The rows of springs at ``p`` (call within ``rows_alone``)."""
     from vibrofriction.solver.mdr import mdr_friction
 
     return mdr_friction(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
                         p["profile_exponent"], zeta=p["zeta"], a_x=p["a_x"],
                         phase_x=p["phase_x"], inplane_on=p["inplane_on"], tol=TOL_TRUSTED)
-
-
-@pytest.fixture
-def rows_alone(monkeypatch):
-    """``mdr_friction`` with the rows of springs alone (``CONTINUUM_TOL = 0``)."""
-    import vibrofriction.solver.mdr as mdr
-
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
 
 
 def test_the_fine_bars_are_well_below_the_solvers_tolerance():
@@ -141,17 +133,17 @@ def test_a_stated_error_of_1e_7_where_asked(monkeypatch):
     mu_c, err_c = float(out["mu_ratio"]), float(out["error"])
     assert bool(out["trusted"]) and err_c <= 1e-7
     assert mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-7)["rows"] == ()
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)  # the rows alone from here
-    r = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-7)
-    mu, err = r["mu_ratio"], r["error"]
-    assert r["rows"][1] > 640 and err <= 1e-7
-    monkeypatch.setattr(mdr, "MAX_SPRINGS", 20480)
-    fine = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-9)
+    with mdr.rows_alone():  # the rows from here
+        r = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-7)
+        mu, err = r["mu_ratio"], r["error"]
+        assert r["rows"][1] > 640 and err <= 1e-7
+        monkeypatch.setattr(mdr, "MAX_SPRINGS", 20480)
+        fine = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=1e-9)
+        coarse = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=TOL_TRUSTED)
     assert fine["rows"][1] > r["rows"][1] and fine["error"] < err
     assert abs(fine["mu_ratio"] - mu) <= err + fine["error"], (mu, err, fine["mu_ratio"])
     assert abs(fine["mu_ratio"] - mu_c) <= err_c + fine["error"], (mu_c, fine["mu_ratio"])
     # the rows at the default stop far coarser, their error ~100 times larger, and the
     # two agree
-    coarse = mdr.mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, tol=TOL_TRUSTED)
     assert coarse["error"] > 10 * err
     assert abs(coarse["mu_ratio"] - mu) <= coarse["error"] + err

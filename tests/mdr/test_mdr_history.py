@@ -12,7 +12,7 @@ import vibrofriction as vf
 from vibrofriction import theory
 from vibrofriction.schema import ContactState
 from vibrofriction.solver import solve_points
-from vibrofriction.solver.mdr import mdr_friction, mdr_row
+from vibrofriction.solver.mdr import mdr_friction, mdr_row, rows_alone
 from vibrofriction.solver.mdr_history import mdr_history
 from vibrofriction.solver.results import SectionState
 from vibrofriction_reference.mdr import mdr_mean
@@ -39,18 +39,15 @@ def _balance(h):
 
 
 @pytest.mark.parametrize("alpha, beta, a, V, n, zeta", POINTS)
-def test_steady_history_has_the_solvers_friction_and_normal_force(alpha, beta, a, V, n, zeta,
-                                                                   monkeypatch):
+def test_steady_history_has_the_solvers_friction_and_normal_force(alpha, beta, a, V, n, zeta):
     """Over one period of the periodic orbit: the exact impulses' ratio is the row's own
     ``mu_ratio`` (the same springs) to round-off and the extrapolated solver's within its
     error; the samples' mean within the error too; the mean normal force is
     ``profile_mean_normal_force`` within the row's discretisation (1e-6; measured 5.7e-8
     to 5.8e-7 at these rows of 160 to 640 springs)."""
-    import vibrofriction.solver.mdr as mdr
-
     point = solve_points(alpha, beta, a, V, zeta, profile_exponent=n)  # (no springs)
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)
-    r = mdr_friction(alpha, beta, a, V, n, zeta=zeta)  # the rows alone
+    with rows_alone():
+        r = mdr_friction(alpha, beta, a, V, n, zeta=zeta)
     M = r["rows"][1]
     d = _dim(alpha, beta, a, n, zeta)
     h = vf.simulate(d, v_inertial=V, periods=1, samples_per_period=400, initial="steady",
@@ -70,20 +67,18 @@ def test_steady_history_has_the_solvers_friction_and_normal_force(alpha, beta, a
 
 
 @pytest.mark.parametrize("p, a_x, phase_x, on", INPLANE)
-def test_with_an_inplane_oscillation(p, a_x, phase_x, on, monkeypatch):
+def test_with_an_inplane_oscillation(p, a_x, phase_x, on):
     """Substrate and holder, forwards and backwards: the orbit's period = solve_points
     within its error and the rows' (the history's row is one of them), the energy balances
     (the laboratory's work input, the substrate's work on the contact included) and every
     spring within its friction limit."""
-    import vibrofriction.solver.mdr as mdr
-
     alpha, beta, a, V, n, zeta = p
     d = _dim(alpha, beta, a, n, zeta, a_x=a_x, phase_x=phase_x, inplane_on=on)
     point = solve_points(alpha, beta, a, V, zeta, a_x=a_x, phase_x=phase_x, inplane_on=on,
                          profile_exponent=n)
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)  # the rows alone
-    r = mdr_friction(alpha, beta, a, abs(V), n, zeta=zeta, a_x=a_x,
-                     phase_x=phase_x + (math.pi if V < 0 else 0.0), inplane_on=on)
+    with rows_alone():
+        r = mdr_friction(alpha, beta, a, abs(V), n, zeta=zeta, a_x=a_x,
+                         phase_x=phase_x + (math.pi if V < 0 else 0.0), inplane_on=on)
     s = vf.simulate(d, v_inertial=V, periods=1, samples_per_period=200, initial="steady",
                     springs=r["rows"][1])
     mu = s.impulse[-1, 0] / s.normal_impulse[-1]

@@ -90,10 +90,8 @@ def _assert_same(got: dict, expected: dict) -> None:
             assert np.allclose(have, want, rtol=ROUNDOFF, atol=ROUNDOFF, equal_nan=True), k
 
 
-def test_static_ratio_one_is_the_solver_and_history_before(monkeypatch):
-    import vibrofriction.solver.mdr as mdr
-
-    monkeypatch.setattr(mdr, "CONTINUUM_TOL", 0.0)  # the baseline is the rows' (in-process)
+def test_static_ratio_one_is_the_solver_and_history_before(rows_alone):
+    # (the baseline is the rows'; solve_points of one point runs in this process)
     for p, expected in zip(BASELINE["mdr_solver_points"], BASELINE["mdr_solver_outputs"],
                            strict=True):
         got = {k: np.asarray(v).item() for k, v in solve_points(**p, static_ratio=1.0).items()}

@@ -1092,6 +1092,16 @@ def _balance(prm, z, PC, npc, HS, nh):
 
 
 @jit
+def _change(new, old, i):
+    """How far a section state's component ``i`` moved from ``old`` to ``new``.
+
+    ``y`` (``i = 0``) absolutely (it sits near ``-(1 + a)^(1 + 1/n)/alpha``, far from 0
+    where ``alpha`` is small), the rest relative to ``1 + |old|``.
+    """
+    return abs(new - old) / (1.0 + (abs(old) if i > 0 else 0.0))
+
+
+@jit
 def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_periods,
            cnt, res):
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
@@ -1099,7 +1109,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     restarted where the pieces' kinds change or a mixed step's residual grows by
     ``growth``; the maps at ``ROUGH`` until the state's relative change is below
     ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol`` and so is the
-    mixing's step (``y`` measured absolutely, the rest relative to ``1 + |x|``); then on from
+    mixing's step (:func:`_change`); then on from
     there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
     its error, by more where the orbit attracts slowly, so the fine orbit is sought anew,
     not one fine period taken from the coarse orbit).  Writes ``res = (int F over the
@@ -1167,7 +1177,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         _section(z, PC, npc, z[0] + V * t, g)
         r = 0.0
         for i in range(nx):
-            r = max(r, abs(g[i] - x[i]) / (1.0 + (abs(x[i]) if i > 0 else 0.0)))
+            r = max(r, _change(g[i], x[i], i))
         if stage == 0 and r < ROUGH_UNTIL:
             stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
             tol_m = rtol  # maps differ by their errors only)
@@ -1197,7 +1207,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
                 s = g[i]
                 for q in range(nhist - 1):
                     s -= (G[q + 1, i] - G[q, i]) * gam[q]
-                jump = max(jump, abs(s - g[i]) / (1.0 + (abs(g[i]) if i > 0 else 0.0)))
+                jump = max(jump, _change(s, g[i], i))
                 x[i] = s
                 if not math.isfinite(s):
                     ok = False

@@ -10,7 +10,9 @@ later step; :func:`mdr_friction` is the entry point for now.
 
 from __future__ import annotations
 
+import contextlib
 import math
+from collections.abc import Iterator
 from typing import Any
 
 import numpy as np
@@ -29,7 +31,7 @@ from .mdr_continuum import (
     slides_continuously,
 )
 
-__all__ = ["mdr_friction", "mdr_row"]
+__all__ = ["mdr_friction", "mdr_row", "rows_alone"]
 
 ORDER = 2.0  # the observed order of the row's convergence in N (irregular: see docs)
 SUBSTEPS = 64  # the scan's sub-steps a period: a cost, not a resolution (no root is missed)
@@ -50,6 +52,21 @@ SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up aft
 # benchmarks/bench_mdr_tol.py, bench_ratios.py); 0: the rows alone (the MDR histories and
 # the tests' references are theirs)
 CONTINUUM_TOL = math.inf
+
+
+@contextlib.contextmanager
+def rows_alone() -> Iterator[None]:
+    """Within it, :func:`mdr_friction` answers with the rows of springs, in this process.
+
+    The row without springs is off (``CONTINUUM_TOL = 0``); a proven continuous sliding is
+    still answered at once. For the rows' tests, references and benchmarks.
+    """
+    global CONTINUUM_TOL
+    saved, CONTINUUM_TOL = CONTINUUM_TOL, 0.0
+    try:
+        yield
+    finally:
+        CONTINUUM_TOL = saved
 
 
 def _check(alpha: float, beta: float, amplitude: float, V: float, n_exp: float,
