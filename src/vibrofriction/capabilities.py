@@ -231,12 +231,14 @@ MDR = Capabilities(
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
                "tip (theory.profile_static_mu_ratio)",
-    notes=("a point with 0 < amplitude < 1 or amplitude > 1, v_inertial != 0 and "
+    notes=("at tol_trusted < 5e-5 (the default 1e-5 included), a point with 0 < "
+           "amplitude < 1 or amplitude > 1, v_inertial != 0 and "
            "static_ratio = 1 is solved by the row without springs (no discretisation of "
            "the contact); it ends its search at tol_state where given (at the tightest "
            "1e-9 of its section state), else at 0.3 tol_trusted within [1e-9, 1e-7]",
-           "elsewhere, or where the row without springs fails, rows of springs are "
-           "refined until their error is at most tol_trusted"),
+           "elsewhere (looser tolerances too, where they are cheaper), or where the "
+           "row without springs fails, rows of springs are refined until their error "
+           "is at most tol_trusted"),
 )
 
 RATE_STATE = Capabilities(
