@@ -9,6 +9,7 @@ allowed range and the first offending value.  The model's parameters are checked
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -47,6 +48,17 @@ def range_text(minimum: float | None = None, strict: bool = False,
     'finite and in [0, 1]'
     """
     return Range(minimum, strict, maximum, allow_inf).text()
+
+
+def _plain(value: object) -> float | None:
+    """``value`` as a float where it is one plain number, else None: the validator's shortcut.
+
+    A plain number is a ``float`` or an ``int``, not a bool nor a numpy scalar (those take
+    the array path).
+    """
+    if isinstance(value, float | int) and type(value) in (float, int):
+        return float(value)
+    return None
 
 
 def _floats(name: str, value: ArrayLike) -> NDArray[np.float64]:
@@ -161,7 +173,13 @@ def checked(name: str, value: ArrayLike, *, minimum: float | None = None,
     ...
     ValueError: alpha must be finite and > 0, got -2.0
     """
-    arr = _floats(name, value)
+    x = _plain(value)
+    if x is not None:  # one plain number: at once
+        if not (math.isnan(x) or (math.isinf(x) and not allow_inf)
+                or (minimum is not None and (x <= minimum if strict else x < minimum))
+                or (maximum is not None and x > maximum)):
+            return np.asarray(x)
+    arr = _floats(name, value)  # (a bad plain number too: the message below)
     bad = np.isnan(arr)
     if not allow_inf:
         bad |= np.isinf(arr)
@@ -190,6 +208,9 @@ def _checked_above(name: str, value: ArrayLike, other: str,
     ``value`` as a float array, or ValueError unless ``value > other_value`` (``inf``
     allowed; ``nan`` never), elementwise.
     """
+    x = _plain(value)
+    if x is not None and np.ndim(other_value) == 0 and x > float(np.asarray(other_value)):
+        return np.asarray(x)  # one plain number above a number: at once
     low = np.asarray(other_value, dtype=float)
     arr = _floats(name, value)
     with np.errstate(invalid="ignore"):
@@ -320,6 +341,9 @@ def _check_friction_law(out: Mapping[str, NDArray[np.float64]]) -> None:
     """Refuse the friction law's parameters that cannot go together (both given)."""
     for name, other, bad, why in _FRICTION_PAIRS:
         if name in out and other in out:
+            if out[name].ndim == 0 and out[other].ndim == 0 \
+                    and not bad(float(out[name]), float(out[other])):
+                continue  # two numbers that go together: at once
             x, y = np.broadcast_arrays(out[name], out[other])
             hit = bad(x, y)
             if np.any(hit):

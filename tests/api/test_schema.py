@@ -408,6 +408,40 @@ def test_validator_refuses_every_out_of_range_value(margin: float, index: int) -
                                                                  bad])})
 
 
+@given(index=st.integers(0, len(PARAMETERS) - 1),
+       value=st.one_of(st.floats(-1e3, 1e3), st.sampled_from([0.0, 1.0, -1.0, 0.5, 2.0, 5.0,
+                                                              math.inf, -math.inf, math.nan]),
+                       st.integers(-3, 3)),
+       other=st.sampled_from([0.5, 2.0, math.inf, math.nan]))
+@hypothesis_settings(max_examples=300, deadline=None)
+def test_plain_numbers_are_checked_as_arrays_are(index: int, value: float,
+                                                 other: float) -> None:
+    """``validated`` takes one plain number (``float``, ``int``) by a shortcut; the answer
+    is the array path's (``np.float64``, a 1-element array): the same value, or the same
+    refusal, alone, above the parameter it must exceed, and with a friction-law partner."""
+    from vibrofriction.validation import validated
+
+    p = PARAMETERS[index]
+    partners = [{}]
+    if p.range.above:
+        partners.append({p.range.above: other})
+    partners += [{q: other} for q in ("rs_a", "rs_b", "amplitude") if q != p.name]
+
+    def outcome(values: dict) -> tuple:
+        try:
+            return ("ok", {k: np.asarray(v).ravel().tolist()
+                           for k, v in validated(values).items()})
+        except ValueError as exc:
+            return ("refused", str(exc))
+
+    for partner in partners:
+        plain = outcome({**partner, p.name: value})
+        for wrapped in (np.float64(value), np.array([value], dtype=float)):
+            assert outcome({**partner, p.name: wrapped}) == plain
+        if plain[0] == "ok":
+            assert validated({**partner, p.name: value})[p.name].shape == ()
+
+
 def test_optional_parameters_default_to_their_twin() -> None:
     """``k_y``, ``c_y``, ``alpha_y``, ``zeta_y`` (``Parameter.twin``): None is the twin's
     value in the validator; the dataclasses keep the None, so that a copy with another
