@@ -1,4 +1,4 @@
-"""Python overhead of one call of ``friction_coefficient``, and a 200-point curve.
+"""Python overhead of one call of ``friction_coefficient``, a 200-point curve, and a system built.
 
 Each case is timed three ways, the repeats interleaved so that a busy machine slows
 all three alike:
@@ -11,6 +11,9 @@ all three alike:
   replaced by a function that writes the rows the real kernel wrote for that point,
   which measures the Python around the kernel without the kernel's noise (numba's
   argument dispatch is not in it; the stub's own call, about 0.5 us, is).
+
+The system's construction (``Dimensionless(0.5, 2, 0.5)``, its parameters validated) is
+timed as a whole, as a script that builds one system a point pays it.
 
 Medians of 7 repeats of 200 calls (single points) or 1 call (the curve), warm, in a
 fresh process; each number is the median of ``--rounds`` (3) such processes.  With
@@ -42,6 +45,7 @@ RESULTS = Path(__file__).resolve().parent / "results" / "overhead.md"
 ROOT = Path(__file__).resolve().parent.parent
 CASES = {"stick-slip orbit, vbar = 0.3": 0.3, "above v0*, vbar = 1.5": 1.5}
 CURVE = "200-point curve, vbar 0.01-1.2"
+BUILD = "the system built, Dimensionless(0.5, 2, 0.5)"
 REPEATS = 7
 
 
@@ -68,11 +72,11 @@ def _loop(call):
 
 def _stub(real):
     """A stand-in for the kernel entry ``real`` that writes the rows ``real`` wrote at its
-    first call (its last two arguments are the output rows)."""
+    first call (its last two array arguments are the output rows: a flag may follow)."""
     rows: dict[str, np.ndarray] = {}
 
     def stub(*args):
-        of, oi = args[-2], args[-1]
+        of, oi = [a for a in args if isinstance(a, np.ndarray)][-2:]
         if not rows:
             real(*args)
             rows["f"], rows["i"] = of.copy(), oi.copy()
@@ -132,6 +136,9 @@ def measure() -> dict[str, dict[str, float]]:
         "python": stubbed(lambda: vf.friction_coefficient(system, vbar=grid)),
     }, inner=1)
     out[CURVE] = {k: v * 1e6 for k, v in t.items()}
+    t = _interleaved_medians({"whole": _loop(lambda: vf.Dimensionless(0.5, 2.0, 0.5))},
+                             inner=200)
+    out[BUILD] = {k: v * 1e6 for k, v in t.items()}
     return out
 
 
@@ -155,6 +162,8 @@ def _rows(label: str, t: dict[str, dict[str, float]]) -> list[str]:
         rows.append(f"| {label} | {name} | {w:.1f} | {k:.1f} | {w - k:.1f} | {p:.1f} |")
     w, p = t[CURVE]["whole"], t[CURVE]["python"]
     rows.append(f"| {label} | {CURVE} | {w:.0f} | | | {p:.0f} |")
+    if BUILD in t:
+        rows.append(f"| {label} | {BUILD} | {t[BUILD]['whole']:.1f} | | | |")
     return rows
 
 
