@@ -200,6 +200,11 @@ PLANE = Capabilities(
                "period map (HELD where a stuck contact can hold a region of mean forces)",
 )
 
+CONTINUUM_BELOW = 5e-5
+"""The MDR solver answers with the row without springs below this ``tol_trusted`` (where
+it covers the point); at and above it the rows of springs cost less
+(``benchmarks/bench_mdr_tol.py --tol``, ``results/mdr_tol.md``)."""
+
 MDR = Capabilities(
     name="mdr",
     title="the MDR solver",
@@ -231,7 +236,8 @@ MDR = Capabilities(
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
                "tip (theory.profile_static_mu_ratio)",
-    notes=("at tol_trusted < 5e-5 (the default 1e-5 included), a point with 0 < "
+    notes=(f"at tol_trusted < {CONTINUUM_BELOW:g} (the default 1e-5 included), a point "
+           "with 0 < "
            "amplitude < 1 or amplitude > 1, v_inertial != 0 and "
            "static_ratio = 1 is solved by the row without springs (no discretisation of "
            "the contact); it ends its search at tol_state where given (at the tightest "
