@@ -11,9 +11,11 @@ disagree beyond the bars; it shares no code with the solver).  For ``mu_ratio`` 
 reference's bar (at most 1 where both hold), and the solver's
 stated error over its actual distance to the reference where that bar is the smaller.
 
-    PYTHONPATH=src python benchmarks/plane_calibration.py [--write]
+    PYTHONPATH=src python benchmarks/plane_calibration.py [--seed S] [--count N] [--write]
 
-``--write`` appends the run to benchmarks/results/plane_calibration.md.
+``--write`` appends the run to benchmarks/results/plane_calibration.md; ``--seed`` and
+``--count`` draw another set of points (a fresh differential campaign; default seed 35, 24
+points).
 """
 
 from __future__ import annotations
@@ -31,6 +33,10 @@ from vibrofriction_reference import inplane_mean
 
 RESULTS = Path(__file__).parent / "results" / "plane_calibration.md"
 N, SEED = 24, 35
+if "--seed" in sys.argv:
+    SEED = int(sys.argv[sys.argv.index("--seed") + 1])
+if "--count" in sys.argv:
+    N = int(sys.argv[sys.argv.index("--count") + 1])
 #: the reference's transients: 150 periods, and where the two disagree beyond the bars,
 #: 1000 (a slowly contracting motion may not have settled in 150: the reference's bar, the
 #: spread of its window, does not see a drift that slow)
@@ -84,6 +90,7 @@ def main() -> None:
         lines.append(f"| {label} | {Status.from_code(int(out['status'])).value} | {mu:.10f} | "
                      f"{err:.1e} | {ref.mu_ratio:.10f} +- {ref.mu_error:.1e}{longer} | "
                      f"{r:.2f}, {rl:.2f} | {ts:.3f} | {tr:.1f} |")
+        print(f"{len(ratios)}/{N}", lines[-1], file=sys.stderr, flush=True)  # progress
     lines += ["", f"Largest difference over the combined bars: mu_ratio {max(ratios):.2f}, "
               f"lateral_ratio {max(ratios_lat):.2f} (median {np.median(ratios):.3f}, "
               f"{np.median(ratios_lat):.3f}); {sum(r <= 1 for r in ratios)} of {N} within "
@@ -94,7 +101,8 @@ def main() -> None:
     print("\n".join(lines))
     if "--write" in sys.argv:
         append_run(RESULTS, "The 2-D solver's stated error against the independent reference",
-                   "PYTHONPATH=src python benchmarks/plane_calibration.py --write",
+                   "PYTHONPATH=src python benchmarks/plane_calibration.py --write"
+                   + (f" --seed {SEED} --count {N}" if (SEED, N) != (35, 24) else ""),
                    f"{N} random points (seed {SEED}), each solved once by each.", lines)
 
 
