@@ -1,0 +1,223 @@
+"""Fresh random points of every regime against the independent references: how a false
+result is found.
+
+The tests compare the solvers with the references at fixed seeds; this script draws new
+points from ``--seed`` and does the same, then looks again at every disagreement with a
+reference run longer or finer than the tests can afford:
+
+* **flat punch, Coulomb**: ``tests/reference_points.random_points(seed, per_regime, regime)``
+  over its ``REGIMES``; ``vf.friction_coefficient`` against ``reference_mu`` with the
+  criterion of tests/reference/test_differential.py (trusted, and ``|mu - mu_ref| <=
+  max(error, 1e-9) + err_ref``; a point the solver does not trust is a failure);
+* **flat punch, damped**: the same regimes (their own stream) with a pin dashpot ``zeta``
+  (log-uniform 0.005..2; 0 for a fifth of the points) and a contact loss factor ``eta_c``
+  in {0, 0, 0.05, 0.3, 1} (finite ``beta`` only);
+* **curved tips**: ``--mdr`` points, alpha 0.1..3.2, beta - alpha 0.2..10, a 0.05..0.95 (a
+  third jumping, 1.05..2.2), V 0.03..2, n in {1, 1.5, 2, 3, 4}, zeta in {0, 0.05, 0.2};
+  ``solve_points(..., profile_exponent=n)`` at the default settings against the spring-row
+  reference ``mdr_reference`` (100 springs and 200 steps a period, then 200 and 400; its
+  bar the difference), the criterion ``|mu - mu_ref| <= error + bar``.
+
+A disagreement is looked at again:
+
+* flat: the reference at its middle resolution after :data:`LONG` periods of transient (the
+  tests' 120 cannot see an orbit whose multiplier is within 1e-4 of 1, or an undamped
+  motion that sticks for the last time after thousands of periods). It **moves to the
+  solver** where it then lies within the same allowance of the solver's value;
+* curved tips: the reference refined to :data:`MDR_FINER` (springs, steps) with a
+  transient of :data:`MDR_LONG` periods where undamped. It **moves to the solver** where
+  the finest run lies within the solver's error plus the last refinement's change (and,
+  undamped, plus the finest run's change from a transient of 200 periods to
+  :data:`MDR_LONG`: the drift it may still have).
+
+Anything else is an open disagreement: a false result until shown otherwise.
+
+    PYTHONPATH=src python benchmarks/differential_campaign.py [--seed S] [--per-regime N]
+        [--mdr N] [--write]
+
+``--write`` appends the run to benchmarks/results/differential_campaign.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent / "tests"))
+
+import vibrofriction as vf  # noqa: E402
+from reference_points import (  # noqa: E402
+    AVERAGE_PERIODS,
+    REGIMES,
+    STEPS,
+    random_points,
+    reference_mu,
+)
+from sections import append_run  # noqa: E402
+from vibrofriction.schema import Status  # noqa: E402
+from vibrofriction.solver import solve_points  # noqa: E402
+from vibrofriction_reference import return_mapping_periods  # noqa: E402
+from vibrofriction_reference.mdr import mdr_mean, mdr_reference  # noqa: E402
+
+RESULTS = HERE / "results" / "differential_campaign.md"
+LONG = 100_000
+"""Periods of transient of the flat reference's second look."""
+MDR_FINER = ((400, 800), (800, 1600), (1600, 3200))
+"""(springs, steps a period) of the curved-tip reference's second look."""
+MDR_LONG = 5000
+"""... and its transient where the pin is undamped (200 where damped)."""
+
+
+def _settling(r: vf.FrictionResult) -> str:
+    return "nan" if math.isnan(r.settling_periods) else f"{r.settling_periods:.3g}"
+
+
+def flat(seed: int, per: int, damped: bool) -> tuple[list[str], list[str]]:
+    """The flat punch's campaign: its summary line and the rows of the points looked at
+    again."""
+    rng = np.random.default_rng([seed, 99])  # the dashpots' own stream
+    counts = dict(points=0, agree=0, untrusted=0, unbounded=0, moved=0, open=0)
+    rows = []
+    for regime in REGIMES:
+        for alpha, beta, a, V in random_points(seed, per, regime):
+            zeta = eta = 0.0
+            if damped:
+                zeta = float(10 ** rng.uniform(-2.3, 0.3)) if rng.uniform() < 0.8 else 0.0
+                eta = float(rng.choice([0.0, 0.0, 0.05, 0.3, 1.0])) \
+                    if math.isfinite(beta) else 0.0
+            counts["points"] += 1
+            r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a, zeta, eta),
+                                        v_inertial=V)
+            label = f"{regime}: ({alpha:.4g}, {beta:.4g}, {a:.4g}, {V:.4g}, {zeta:.3g}, {eta:g})"
+            if not r.trusted:
+                counts["untrusted"] += 1
+                rows.append(f"| {label} | {r.status.value}, not trusted | | | | open |")
+                continue
+            ref, err = reference_mu(alpha, beta, a, V, zeta=zeta, eta_c=eta)
+            if math.isinf(err):
+                counts["unbounded"] += 1
+                continue
+            allowed = max(r.error, 1e-9) + err
+            if abs(r.mu_ratio - ref) <= allowed:
+                counts["agree"] += 1
+                continue
+            steps = STEPS["rigid" if math.isinf(beta) else "finite"][1]
+            damping = {"zeta": zeta, "eta_c": eta} if (zeta or eta) else {}
+            long = return_mapping_periods(alpha, beta, a, V, steps, LONG, AVERAGE_PERIODS,
+                                          "sliding", **damping).mu_ratio(0, AVERAGE_PERIODS)
+            moved = abs(r.mu_ratio - long) <= allowed
+            counts["moved" if moved else "open"] += 1
+            rows.append(f"| {label} | {r.status.value}, multiplier {r.multiplier:.6g}, "
+                        f"settling {_settling(r)} | {r.mu_ratio:.10f} +- {r.error:.1e} | "
+                        f"{ref:.10f} +- {err:.1e} | {long:.10f} | "
+                        f"{'moves to the solver' if moved else 'OPEN'} |")
+    kind = "damped" if damped else "Coulomb"
+    summary = (f"Flat punch, {kind}: {counts['points']} points; {counts['agree']} agree, "
+               f"{counts['unbounded']} the reference cannot bound, {counts['untrusted']} not "
+               f"trusted; of the disagreements, {counts['moved']} move to the solver after "
+               f"{LONG} periods, {counts['open']} open.")
+    return [summary], rows
+
+
+def _mdr_points(seed: int, count: int) -> list[tuple[float, ...]]:
+    rng = np.random.default_rng([seed, 77])
+    out = []
+    for i in range(count):
+        alpha = float(10 ** rng.uniform(-1, 0.5))
+        beta = alpha + float(10 ** rng.uniform(-0.7, 1.0))
+        a = float(rng.uniform(1.05, 2.2) if i % 3 == 0 else rng.uniform(0.05, 0.95))
+        V = float(10 ** rng.uniform(-1.5, 0.3))
+        n = float(rng.choice([1, 1.5, 2, 3, 4]))
+        zeta = float(rng.choice([0.0, 0.05, 0.2]))
+        out.append((alpha, beta, a, V, n, zeta))
+    return out
+
+
+def curved(seed: int, count: int) -> tuple[list[str], list[str]]:
+    """The curved tips' campaign: its summary line and the rows of the points looked at
+    again."""
+    counts = dict(agree=0, untrusted=0, moved=0, open=0)
+    rows, ratios = [], []
+    for alpha, beta, a, V, n, zeta in _mdr_points(seed, count):
+        out = solve_points(alpha=alpha, beta=beta, amplitude=a, v_inertial=V, zeta=zeta,
+                           profile_exponent=n)
+        mu, err = float(out["mu_ratio"]), float(out["error"])
+        status = Status.from_code(int(out["status"]))
+        label = f"({alpha:.4g}, {beta:.4g}, {a:.4g}, {V:.4g}, {n:g}, {zeta:g})"
+        if not bool(out["trusted"]):
+            counts["untrusted"] += 1
+            rows.append(f"| {label} | {status.value}, not trusted | | | | open |")
+            continue
+        ref = mdr_reference(alpha, beta, a, V, n, zeta=zeta)
+        diff = abs(mu - ref.mu_ratio)
+        ratios.append(diff / (err + ref.mu_error) if diff > 0.0 else 0.0)
+        if diff <= err + ref.mu_error:
+            counts["agree"] += 1
+            continue
+        transient = 200 if zeta > 0.0 else MDR_LONG
+        finer = [mdr_mean(alpha, beta, a, V, n, springs=m, steps_per_period=s,
+                          transient_periods=transient, average_periods=50,
+                          zeta=zeta).mu_ratio for m, s in MDR_FINER]
+        bar = abs(finer[-1] - finer[-2])
+        if zeta == 0.0:  # and what the finest run still drifts between the transients
+            m, s = MDR_FINER[-1]
+            bar += abs(finer[-1] - mdr_mean(alpha, beta, a, V, n, springs=m, steps_per_period=s,
+                                            transient_periods=200, average_periods=50).mu_ratio)
+        moved = abs(mu - finer[-1]) <= err + bar
+        counts["moved" if moved else "open"] += 1
+        rows.append(f"| {label} | {status.value} | {mu:.10f} +- {err:.1e} | "
+                    f"{ref.mu_ratio:.10f} +- {ref.mu_error:.1e} | "
+                    + ", ".join(f"{v:.10f}" for v in finer) + f" (transient {transient}) | "
+                    f"{'moves to the solver' if moved else 'OPEN'} |")
+    summary = (f"Curved tips: {count} points; {counts['agree']} agree (|difference| over "
+               f"error + bar: median {np.median(ratios):.2f}), {counts['untrusted']} not "
+               f"trusted; of the disagreements, {counts['moved']} move to the solver when "
+               f"refined to {MDR_FINER[-1][0]} springs, {counts['open']} open.")
+    return [summary], rows
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seed", type=int, default=1130)
+    parser.add_argument("--per-regime", type=int, default=24)
+    parser.add_argument("--mdr", type=int, default=150)
+    parser.add_argument("--write", action="store_true")
+    args = parser.parse_args()
+    start = time.perf_counter()
+    lines, flat_rows, mdr_rows = [], [], []
+    for damped in (False, True):
+        summary, rows = flat(args.seed, args.per_regime, damped)
+        print(*summary, *rows, sep="\n", flush=True)
+        lines += summary
+        flat_rows += rows
+    summary, mdr_rows = curved(args.seed, args.mdr)
+    print(*summary, *mdr_rows, sep="\n", flush=True)
+    lines += summary
+    lines = [f"- {line}" for line in lines]
+    if flat_rows:
+        lines += ["", "The flat punch's disagreements, looked at again:", "",
+                  "| regime: (alpha, beta, a, V, zeta, eta_c) | solver | mu_ratio | "
+                  f"reference (120 periods) | reference ({LONG} periods) | verdict |",
+                  "|---|---|---|---|---|---|", *flat_rows]
+    if mdr_rows:
+        lines += ["", "The curved tips' disagreements, looked at again:", "",
+                  "| (alpha, beta, a, V, n, zeta) | solver | mu_ratio | reference "
+                  "(200 springs) | refined: " + ", ".join(f"{m}" for m, _ in MDR_FINER)
+                  + " springs | verdict |", "|---|---|---|---|---|---|", *mdr_rows]
+    took = time.perf_counter() - start
+    print(f"{took:.0f} s")
+    if args.write:
+        append_run(RESULTS, "Fresh random points against the independent references",
+                   "PYTHONPATH=src python benchmarks/differential_campaign.py --seed "
+                   f"{args.seed} --per-regime {args.per_regime} --mdr {args.mdr} --write",
+                   f"{took:.0f} s in all; the solvers at their default settings.", lines)
+
+
+if __name__ == "__main__":
+    main()
