@@ -24,6 +24,7 @@ import pytest
 
 import vibrofriction as vf
 from reference_points import REGIMES, random_points, reference_mu, v_star
+from vibrofriction_reference import return_mapping_periods
 
 SEED = 2017
 POINTS_PER_REGIME = 6
@@ -87,3 +88,33 @@ def test_a_point_the_solver_gives_up_on_is_a_disagreement(monkeypatch):
     monkeypatch.setattr(vf, "friction_coefficient", lambda *args, **kwargs: failed)
     line = disagreement((0.5, 2.0, 0.5, 0.3))
     assert line is not None and "does not trust" in line and "failed" in line
+
+
+# Found by benchmarks/differential_campaign.py (seed 1130, 2026-11-30): the reference's
+# 120-period transient cannot see these motions settle; only a long run reaches the solver.
+# (alpha, beta, a, V)
+SLOWLY_SETTLING = {
+    # a jumping stiff system, multiplier 0.99994: settling about 3.3e5 periods
+    "stiff-jumping-multiplier-0.99994": (0.10710443345081616, 0.12366064238182972,
+                                         2.0297666103650145, 120.63419976140544),
+    # undamped, proven continuous sliding: the motion from sliding sticks now and then for
+    # tens of thousands of periods (no settling time within 16 periods)
+    "stiff-undamped-sliding": (1.7857137377385939, 1.8010834151061843, 0.7418086373325677,
+                               49.35420142482988),
+}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("point", list(SLOWLY_SETTLING.values()), ids=list(SLOWLY_SETTLING))
+def test_the_reference_reaches_the_solver_after_a_long_transient(point):
+    """The tests' reference disagrees at these points (its transient is too short); run
+    from the same start for 1e5 periods it approaches the solver's long-time value, 100
+    times closer than after 120 periods, and ends within 1e-7 of it. A wrong orbit or a
+    wrong proof of sliding would leave the long run where it is."""
+    alpha, beta, a, V = point
+    r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a), v_inertial=V)
+    assert r.trusted
+    runs = [return_mapping_periods(alpha, beta, a, V, 1131, transient, 240, "sliding")
+            .mu_ratio(0, 240) for transient in (120, 100_000)]
+    short, long = (abs(mu - r.mu_ratio) for mu in runs)
+    assert short > 1e-6 and long < 1e-7 and long < 0.01 * short, (r.mu_ratio, runs)
