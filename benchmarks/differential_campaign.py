@@ -35,7 +35,8 @@ Anything else is an open disagreement: a false result until shown otherwise.
     PYTHONPATH=src python benchmarks/differential_campaign.py [--seed S] [--per-regime N]
         [--mdr N] [--write]
 
-``--write`` appends the run to benchmarks/results/differential_campaign.md.
+``--mdr 0`` leaves the curved tips out; ``--write`` appends the run to
+benchmarks/results/differential_campaign.md.
 """
 
 from __future__ import annotations
@@ -196,9 +197,10 @@ def main() -> None:
         print(*summary, *rows, sep="\n", flush=True)
         lines += summary
         flat_rows += rows
-    summary, mdr_rows = curved(args.seed, args.mdr)
-    print(*summary, *mdr_rows, sep="\n", flush=True)
-    lines += summary
+    if args.mdr > 0:
+        summary, mdr_rows = curved(args.seed, args.mdr)
+        print(*summary, *mdr_rows, sep="\n", flush=True)
+        lines += summary
     lines = [f"- {line}" for line in lines]
     if flat_rows:
         lines += ["", "The flat punch's disagreements, looked at again:", "",
