@@ -375,6 +375,17 @@ def _initial(initial, model: _Model) -> np.ndarray:
     return z
 
 
+def _period_end(t: float) -> bool:
+    """Whether the cut end ``t`` is a drive period's end (``2 pi k``, as :func:`_cuts` forms it).
+
+    Relative to ``k``: ``2 pi k`` formed in floats is ``k`` times ``2 pi`` only to about ``k``
+    roundings (from about 8000 periods on beyond 1e-12; the other cut ends, a lift-off
+    or a touch-down, lie at least ``delta`` inside a period).
+    """
+    k = t / TWO_PI
+    return abs(k - round(k)) < 1e-12 * max(1.0, k)
+
+
 def _cuts(a: float, periods: int, delta: float) -> list[tuple[float, float, bool]]:
     """Segments ``(t0, t1, in_contact)`` cut at every period, lift-off and touch-down."""
     out = []
@@ -521,7 +532,7 @@ def inplane_run(
                         f"chattering: more than {max_events_per_period} stick/slip events "
                         f"in the drive period at tau={t:.9g}")
                 phase, z = model.switch(phase, t, z)
-        if abs(t1 / TWO_PI - round(t1 / TWO_PI)) < 1e-12:
+        if _period_end(t1):
             period_marks.append((z[6:11].copy(), model.energy(phase, t1, z)))
 
     ints = np.array([m[0] for m in period_marks])

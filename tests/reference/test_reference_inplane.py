@@ -216,3 +216,19 @@ def test_refused(kw, match):
     args = {"alpha": 0.5, "beta": 2.0, "amplitude": 0.5, "V": 0.3, **kw}
     with pytest.raises(ValueError, match=match):
         inplane_run(**args)
+
+
+def test_period_ends_are_found_after_many_periods():
+    """A cut ending at ``2 pi (j + 1)``, formed as the integrator forms it, is a period end up
+    to a million periods; its lift-offs and touch-downs are not.  (At a fixed 1e-12 the ends
+    were missed from about 8000 periods on, and a run of 20000 periods gave nan means.)"""
+    from vibrofriction_reference.inplane import TWO_PI, _cuts, _period_end
+
+    missed_before = 0
+    for j in [0, 1, 10, 999, *range(8180, 8240), 123_456, 999_999]:
+        t1 = TWO_PI * j + TWO_PI
+        assert _period_end(t1), j
+        missed_before += abs(t1 / TWO_PI - round(t1 / TWO_PI)) >= 1e-12
+        for _, t_end, _ in _cuts(1.5, 1, 1e-7)[:2]:  # the lift-off and the touch-down
+            assert not _period_end(TWO_PI * j + t_end), j
+    assert missed_before > 0  # the fixed threshold misses some of these
