@@ -90,7 +90,7 @@ def test_a_point_the_solver_gives_up_on_is_a_disagreement(monkeypatch):
     assert line is not None and "does not trust" in line and "failed" in line
 
 
-# Found by benchmarks/differential_campaign.py (seed 1130, 2026-11-30): the reference's
+# Found by benchmarks/differential_campaign.py (seeds 1131 and 1135, 2026-11-30): the reference's
 # 120-period transient cannot see these motions settle; only a long run reaches the solver.
 # (alpha, beta, a, V)
 SLOWLY_SETTLING = {
