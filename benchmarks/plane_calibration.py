@@ -6,7 +6,8 @@ zeta in {0, 0.01, 0.1}, eta_c in {0, 0.1, 1}, a_x in {0, 0.5}, a_y 0.05..2, rand
 substrate or holder), each solved by ``solve_points`` and by the reference
 ``vibrofriction_reference.inplane_mean`` (solve_ivp DOP853 at rtol 1e-10, 150 + 40
 periods from the sliding start, its tolerance check included, and 1000 + 40 where the two
-disagree beyond the bars; it shares no code with the solver).  For ``mu_ratio`` and
+disagree beyond the bars, 20000 + 40 where they still do and the solver's settling time is
+longer than 1000 periods; it shares no code with the solver).  For ``mu_ratio`` and
 ``lateral_ratio``: the difference over the sum of the solver's stated error and the
 reference's bar (at most 1 where both hold), and the solver's
 stated error over its actual distance to the reference where that bar is the smaller.
@@ -41,6 +42,9 @@ if "--count" in sys.argv:
 #: 1000 (a slowly contracting motion may not have settled in 150: the reference's bar, the
 #: spread of its window, does not see a drift that slow)
 TRANSIENTS = (150, 1000)
+#: ... and then this many where the solver states a settling time beyond the last (an orbit
+#: whose multiplier is within about 1e-3 of 1)
+LONGEST = 20_000
 
 
 def points() -> list[dict]:
@@ -69,7 +73,8 @@ def main() -> None:
         out = solve_points(**p)
         ts = time.perf_counter() - t
         mu, err, lat = float(out["mu_ratio"]), float(out["error"]), float(out["lateral_ratio"])
-        for transient in TRANSIENTS:
+        slow = float(out["settling_periods"]) > TRANSIENTS[-1]
+        for transient in TRANSIENTS + ((LONGEST,) if slow else ()):
             t = time.perf_counter()
             ref = inplane_mean(p["alpha"], p["beta"], p["amplitude"], p["v_inertial"],
                                transient, 40, **{k: v for k, v in p.items() if k not in (
