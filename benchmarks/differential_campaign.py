@@ -16,7 +16,10 @@ reference run longer or finer than the tests can afford:
   third jumping, 1.05..2.2), V 0.03..2, n in {1, 1.5, 2, 3, 4}, zeta in {0, 0.05, 0.2};
   ``solve_points(..., profile_exponent=n)`` at the default settings against the spring-row
   reference ``mdr_reference`` (100 springs and 200 steps a period, then 200 and 400; its
-  bar the difference), the criterion ``|mu - mu_ref| <= error + bar``.
+  bar the difference), the criterion ``|mu - mu_ref| <= error + bar``;
+* **curved tips with a longitudinal drive**: ``--mdr-driven`` points drawn alike from their
+  own stream, each with ``a_x`` log-uniform 0.05..1.6, ``phase_x`` uniform, of the substrate
+  or the holder (``inplane_on``), passed to the solver and to the reference alike.
 
 A disagreement is looked at again:
 
@@ -33,10 +36,11 @@ A disagreement is looked at again:
 Anything else is an open disagreement: a false result until shown otherwise.
 
     PYTHONPATH=src python benchmarks/differential_campaign.py [--seed S] [--per-regime N]
-        [--mdr N] [--write]
+        [--mdr N] [--mdr-driven N] [--write]
 
-``--mdr 0`` leaves the curved tips out, ``--per-regime 0`` the flat punch; ``--write``
-appends the run to benchmarks/results/differential_campaign.md.
+``--mdr 0`` (``--mdr-driven 0``) leaves the undriven (driven) curved tips out,
+``--per-regime 0`` the flat punch; ``--write`` appends the run to
+benchmarks/results/differential_campaign.md.
 """
 
 from __future__ import annotations
@@ -126,8 +130,11 @@ def flat(seed: int, per: int, damped: bool) -> tuple[list[str], list[str]]:
     return [summary], rows
 
 
-def _mdr_points(seed: int, count: int) -> list[tuple[float, ...]]:
-    rng = np.random.default_rng([seed, 77])
+def _mdr_points(seed: int, count: int, driven: bool = False) -> list[dict]:
+    """The curved tips' points: undriven from the stream ``[seed, 77]``; ``driven``, with a
+    longitudinal drive, from their own stream ``[seed, 78]`` (so that adding them changes
+    no undriven point of a seed)."""
+    rng = np.random.default_rng([seed, 78 if driven else 77])
     out = []
     for i in range(count):
         alpha = float(10 ** rng.uniform(-1, 0.5))
@@ -136,26 +143,41 @@ def _mdr_points(seed: int, count: int) -> list[tuple[float, ...]]:
         V = float(10 ** rng.uniform(-1.5, 0.3))
         n = float(rng.choice([1, 1.5, 2, 3, 4]))
         zeta = float(rng.choice([0.0, 0.05, 0.2]))
-        out.append((alpha, beta, a, V, n, zeta))
+        drive = dict(a_x=0.0, phase_x=0.0, inplane_on="substrate")
+        if driven:
+            drive = dict(a_x=float(10 ** rng.uniform(-1.3, 0.2)),
+                         phase_x=float(rng.uniform(0.0, 2.0 * math.pi)),
+                         inplane_on=str(rng.choice(["substrate", "holder"])))
+        out.append(dict(alpha=alpha, beta=beta, a=a, V=V, n=n, zeta=zeta, **drive))
     return out
 
 
-def curved(seed: int, count: int) -> tuple[list[str], list[str]]:
-    """The curved tips' campaign: its summary line and the rows of the points looked at
-    again."""
+def _label(p: dict) -> str:
+    label = f"({p['alpha']:.4g}, {p['beta']:.4g}, {p['a']:.4g}, {p['V']:.4g}, {p['n']:g}, " \
+            f"{p['zeta']:g}"
+    if p["a_x"] > 0.0:
+        label += f"; a_x {p['a_x']:.4g}, phase_x {p['phase_x']:.4g}, {p['inplane_on']}"
+    return label + ")"
+
+
+def curved(seed: int, count: int, driven: bool = False) -> tuple[list[str], list[str]]:
+    """The curved tips' campaign (``driven``: with a longitudinal drive): its summary line
+    and the rows of the points looked at again."""
     counts = dict(agree=0, untrusted=0, moved=0, open=0)
     rows, ratios = [], []
-    for alpha, beta, a, V, n, zeta in _mdr_points(seed, count):
+    for p in _mdr_points(seed, count, driven):
+        alpha, beta, a, V, n, zeta = p["alpha"], p["beta"], p["a"], p["V"], p["n"], p["zeta"]
+        drive = dict(a_x=p["a_x"], phase_x=p["phase_x"], inplane_on=p["inplane_on"])
         out = solve_points(alpha=alpha, beta=beta, amplitude=a, v_inertial=V, zeta=zeta,
-                           profile_exponent=n)
+                           profile_exponent=n, **drive)
         mu, err = float(out["mu_ratio"]), float(out["error"])
         status = Status.from_code(int(out["status"]))
-        label = f"({alpha:.4g}, {beta:.4g}, {a:.4g}, {V:.4g}, {n:g}, {zeta:g})"
+        label = _label(p)
         if not bool(out["trusted"]):
             counts["untrusted"] += 1
             rows.append(f"| {label} | {status.value}, not trusted | | | | open |")
             continue
-        ref = mdr_reference(alpha, beta, a, V, n, zeta=zeta)
+        ref = mdr_reference(alpha, beta, a, V, n, zeta=zeta, **drive)
         diff = abs(mu - ref.mu_ratio)
         ratios.append(diff / (err + ref.mu_error) if diff > 0.0 else 0.0)
         if diff <= err + ref.mu_error:
@@ -164,19 +186,21 @@ def curved(seed: int, count: int) -> tuple[list[str], list[str]]:
         transient = 200 if zeta > 0.0 else MDR_LONG
         finer = [mdr_mean(alpha, beta, a, V, n, springs=m, steps_per_period=s,
                           transient_periods=transient, average_periods=50,
-                          zeta=zeta).mu_ratio for m, s in MDR_FINER]
+                          zeta=zeta, **drive).mu_ratio for m, s in MDR_FINER]
         bar = abs(finer[-1] - finer[-2])
         if zeta == 0.0:  # and what the finest run still drifts between the transients
             m, s = MDR_FINER[-1]
             bar += abs(finer[-1] - mdr_mean(alpha, beta, a, V, n, springs=m, steps_per_period=s,
-                                            transient_periods=200, average_periods=50).mu_ratio)
+                                            transient_periods=200, average_periods=50,
+                                            **drive).mu_ratio)
         moved = abs(mu - finer[-1]) <= err + bar
         counts["moved" if moved else "open"] += 1
         rows.append(f"| {label} | {status.value} | {mu:.10f} +- {err:.1e} | "
                     f"{ref.mu_ratio:.10f} +- {ref.mu_error:.1e} | "
                     + ", ".join(f"{v:.10f}" for v in finer) + f" (transient {transient}) | "
                     f"{'moves to the solver' if moved else 'OPEN'} |")
-    summary = (f"Curved tips: {count} points; {counts['agree']} agree (|difference| over "
+    kind = "Curved tips, longitudinal drive" if driven else "Curved tips"
+    summary = (f"{kind}: {count} points; {counts['agree']} agree (|difference| over "
                f"error + bar: median {np.median(ratios):.2f}), {counts['untrusted']} not "
                f"trusted; of the disagreements, {counts['moved']} move to the solver when "
                f"refined to {MDR_FINER[-1][0]} springs, {counts['open']} open.")
@@ -188,6 +212,7 @@ def main() -> None:
     parser.add_argument("--seed", type=int, default=1130)
     parser.add_argument("--per-regime", type=int, default=24)
     parser.add_argument("--mdr", type=int, default=150)
+    parser.add_argument("--mdr-driven", type=int, default=150)
     parser.add_argument("--write", action="store_true")
     args = parser.parse_args()
     start = time.perf_counter()
@@ -197,10 +222,12 @@ def main() -> None:
         print(*summary, *rows, sep="\n", flush=True)
         lines += summary
         flat_rows += rows
-    if args.mdr > 0:
-        summary, mdr_rows = curved(args.seed, args.mdr)
-        print(*summary, *mdr_rows, sep="\n", flush=True)
-        lines += summary
+    for count, driven in ((args.mdr, False), (args.mdr_driven, True)):
+        if count > 0:
+            summary, rows = curved(args.seed, count, driven)
+            print(*summary, *rows, sep="\n", flush=True)
+            lines += summary
+            mdr_rows += rows
     lines = [f"- {line}" for line in lines]
     if flat_rows:
         lines += ["", "The flat punch's disagreements, looked at again:", "",
@@ -209,7 +236,7 @@ def main() -> None:
                   "|---|---|---|---|---|---|", *flat_rows]
     if mdr_rows:
         lines += ["", "The curved tips' disagreements, looked at again:", "",
-                  "| (alpha, beta, a, V, n, zeta) | solver | mu_ratio | reference "
+                  "| (alpha, beta, a, V, n, zeta[; drive]) | solver | mu_ratio | reference "
                   "(200 springs) | refined: " + ", ".join(f"{m}" for m, _ in MDR_FINER)
                   + " springs | verdict |", "|---|---|---|---|---|---|", *mdr_rows]
     took = time.perf_counter() - start
@@ -217,7 +244,8 @@ def main() -> None:
     if args.write:
         append_run(RESULTS, "Fresh random points against the independent references",
                    "PYTHONPATH=src python benchmarks/differential_campaign.py --seed "
-                   f"{args.seed} --per-regime {args.per_regime} --mdr {args.mdr} --write",
+                   f"{args.seed} --per-regime {args.per_regime} --mdr {args.mdr} --mdr-driven "
+                   f"{args.mdr_driven} --write",
                    f"{took:.0f} s in all; the solvers at their default settings.", lines)
 
 
