@@ -12,11 +12,14 @@ longer than 1000 periods; it shares no code with the solver).  For ``mu_ratio`` 
 reference's bar (at most 1 where both hold), and the solver's
 stated error over its actual distance to the reference where that bar is the smaller.
 
-    PYTHONPATH=src python benchmarks/plane_calibration.py [--seed S] [--count N] [--write]
+    PYTHONPATH=src python benchmarks/plane_calibration.py [--seed S] [--count N]
+        [--anisotropic] [--write]
 
 ``--write`` appends the run to benchmarks/results/plane_calibration.md; ``--seed`` and
 ``--count`` draw another set of points (a fresh differential campaign; default seed 35, 24
-points).
+points); ``--anisotropic`` gives every point a pin of its own across the sliding,
+``alpha_y = alpha 10^u`` (``u`` uniform in -1..1) and ``zeta_y`` in {0, 0.01, 0.1}, drawn
+from a stream of their own (the other parameters are the seed's as without it).
 """
 
 from __future__ import annotations
@@ -38,6 +41,7 @@ if "--seed" in sys.argv:
     SEED = int(sys.argv[sys.argv.index("--seed") + 1])
 if "--count" in sys.argv:
     N = int(sys.argv[sys.argv.index("--count") + 1])
+ANISOTROPIC = "--anisotropic" in sys.argv
 #: the reference's transients: 150 periods, and where the two disagree beyond the bars,
 #: 1000 (a slowly contracting motion may not have settled in 150: the reference's bar, the
 #: spread of its window, does not see a drift that slow)
@@ -60,11 +64,17 @@ def points() -> list[dict]:
             a_x=float(rng.choice([0.0, 0.5])), phase_x=float(rng.uniform(0, 6.3)),
             a_y=float(10 ** rng.uniform(-1.3, 0.3)), phase_y=float(rng.uniform(0, 6.3)),
             inplane_on=str(rng.choice(["substrate", "holder"]))))
+    if ANISOTROPIC:  # the pin across the sliding: its own stream, the rest unchanged
+        pin = np.random.default_rng([SEED, 1])
+        for p in out:
+            p["alpha_y"] = p["alpha"] * float(10 ** pin.uniform(-1, 1))
+            p["zeta_y"] = float(pin.choice([0.0, 0.01, 0.1]))
     return out
 
 
 def main() -> None:
-    lines = ["| point (alpha, beta, a, V, zeta, eta_c, a_x, a_y, on) | status | mu_ratio | "
+    pin = "; alpha_y, zeta_y" if ANISOTROPIC else ""
+    lines = [f"| point (alpha, beta, a, V, zeta, eta_c, a_x, a_y, on{pin}) | status | mu_ratio | "
              "error | reference +- bar | diff/(error + bar) mu, lateral | solver s | "
              "reference s |", "|---|---|---|---|---|---|---|---|"]
     ratios, ratios_lat, over = [], [], []
@@ -90,7 +100,8 @@ def main() -> None:
             over.append(err / max(abs(mu - ref.mu_ratio), 1e-16))
         label = (f"({p['alpha']:.3g}, {p['beta']:.3g}, {p['amplitude']:.2f}, "
                  f"{p['v_inertial']:.3g}, {p['zeta']:g}, {p['eta_c']:g}, {p['a_x']:g}, "
-                 f"{p['a_y']:.3g}, {p['inplane_on']})")
+                 f"{p['a_y']:.3g}, {p['inplane_on']}"
+                 + (f"; {p['alpha_y']:.3g}, {p['zeta_y']:g}" if ANISOTROPIC else "") + ")")
         longer = f" ({transient} periods)" if transient != TRANSIENTS[0] else ""
         lines.append(f"| {label} | {Status.from_code(int(out['status'])).value} | {mu:.10f} | "
                      f"{err:.1e} | {ref.mu_ratio:.10f} +- {ref.mu_error:.1e}{longer} | "
@@ -107,8 +118,10 @@ def main() -> None:
     if "--write" in sys.argv:
         append_run(RESULTS, "The 2-D solver's stated error against the independent reference",
                    "PYTHONPATH=src python benchmarks/plane_calibration.py --write"
-                   + (f" --seed {SEED} --count {N}" if (SEED, N) != (35, 24) else ""),
-                   f"{N} random points (seed {SEED}), each solved once by each.", lines)
+                   + (f" --seed {SEED} --count {N}" if (SEED, N) != (35, 24) else "")
+                   + (" --anisotropic" if ANISOTROPIC else ""),
+                   f"{N} random points (seed {SEED}{', anisotropic pins' if ANISOTROPIC else ''}),"
+                   " each solved once by each.", lines)
 
 
 if __name__ == "__main__":
