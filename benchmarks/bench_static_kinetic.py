@@ -6,8 +6,8 @@ points, each solved with Coulomb friction (``static_ratio = 1``) and with
 (``friction_coefficient``, the scalar path): median wall time per point and the ratio per
 regime; the target is a median ratio of at most 1.5.
 
-Run: ``.venv/bin/python benchmarks/bench_static_kinetic.py`` (writes
-benchmarks/results/static_kinetic.md).  ``--quick``: fewer repeats.
+Run: ``.venv/bin/python benchmarks/bench_static_kinetic.py`` (appends its run to
+benchmarks/results/static_kinetic.md, the earlier runs kept).  ``--quick``: fewer repeats.
 """
 
 from __future__ import annotations
@@ -108,8 +108,12 @@ def report(table: list[dict]) -> str:
 def main() -> None:
     table = rows()
     text = report(table)
-    if not QUICK:
-        (HERE / "results" / "static_kinetic.md").write_text(text)
+    if not QUICK:  # a new section below the earlier runs (the file's title once)
+        path = HERE / "results" / "static_kinetic.md"
+        if path.exists():
+            _, body = text.split("\n", 1)
+            text = path.read_text().rstrip("\n") + "\n\n## A later run\n" + body
+        path.write_text(text)
     print(text)
 
 

@@ -20,6 +20,14 @@ reference run longer or finer than the tests can afford:
 * **curved tips with a longitudinal drive**: ``--mdr-driven`` points drawn alike from their
   own stream, each with ``a_x`` log-uniform 0.05..1.6, ``phase_x`` uniform, of the substrate
   or the holder (``inplane_on``), passed to the solver and to the reference alike.
+* **static above kinetic** (the flat punch): ``--static`` points, alpha 0.1..2, a finite
+  contact (``beta - alpha`` 0.5..8) or a rigid one, a 0.1..0.95 or jumping 1.05..1.5, V
+  0.05..0.6, a pin dashpot or none, ``s_r`` 1.1..2.2, from steady sliding or from rest
+  (where sliding and stick-slip coexist, the start picks the attractor);
+  ``vf.friction_coefficient(..., initial=...)`` against ``static_kinetic_run`` from the same
+  start with the criterion of tests/reference/test_differential_static_kinetic.py (whole
+  orbits averaged after twice the settling the solver states, at least 200 periods; the bar
+  by three resolutions; an answer not trusted is counted apart, not compared).
 
 A disagreement is looked at again:
 
@@ -27,6 +35,9 @@ A disagreement is looked at again:
   tests' 120 cannot see an orbit whose multiplier is within 1e-4 of 1, or an undamped
   motion that sticks for the last time after thousands of periods). It **moves to the
   solver** where it then lies within the same allowance of the solver's value;
+* static above kinetic: the reference at twice its steps (and its bar from there), after
+  :data:`STATIC_LONG` periods of transient; it moves to the solver where it then lies
+  within the solver's error plus that bar;
 * curved tips: the reference refined to :data:`MDR_FINER` (springs, steps) with a
   transient of :data:`MDR_LONG` periods where undamped. It **moves to the solver** where
   the finest run lies within the solver's error plus the last refinement's change (and,
@@ -36,11 +47,11 @@ A disagreement is looked at again:
 Anything else is an open disagreement: a false result until shown otherwise.
 
     PYTHONPATH=src python benchmarks/differential_campaign.py [--seed S] [--per-regime N]
-        [--mdr N] [--mdr-driven N] [--write]
+        [--mdr N] [--mdr-driven N] [--static N] [--write]
 
 ``--mdr 0`` (``--mdr-driven 0``) leaves the undriven (driven) curved tips out,
-``--per-regime 0`` the flat punch; ``--write`` appends the run to
-benchmarks/results/differential_campaign.md.
+``--per-regime 0`` the flat punch, ``--static 0`` static above kinetic; ``--write`` appends
+the run to benchmarks/results/differential_campaign.md.
 """
 
 from __future__ import annotations
@@ -63,11 +74,12 @@ from reference_points import (  # noqa: E402
     STEPS,
     random_points,
     reference_mu,
+    static_kinetic_points,
 )
 from sections import append_run  # noqa: E402
 from vibrofriction.schema import Status  # noqa: E402
 from vibrofriction.solver import solve_points  # noqa: E402
-from vibrofriction_reference import return_mapping_periods  # noqa: E402
+from vibrofriction_reference import return_mapping_periods, static_kinetic_run  # noqa: E402
 from vibrofriction_reference.mdr import mdr_mean, mdr_reference  # noqa: E402
 
 RESULTS = HERE / "results" / "differential_campaign.md"
@@ -77,6 +89,9 @@ MDR_FINER = ((400, 800), (800, 1600), (1600, 3200))
 """(springs, steps a period) of the curved-tip reference's second look."""
 MDR_LONG = 5000
 """... and its transient where the pin is undamped (200 where damped)."""
+STATIC_STEPS, STATIC_WINDOW, STATIC_LONG = 800, 50, 5000
+"""Static above kinetic: the reference's steps a period of the fastest motion, the drive
+periods it averages (rounded up to whole orbits) and the transient of its second look."""
 
 
 def _settling(r: vf.FrictionResult) -> str:
@@ -207,12 +222,60 @@ def curved(seed: int, count: int, driven: bool = False) -> tuple[list[str], list
     return [summary], rows
 
 
+def _static_reference(alpha, beta, a, V, zeta, sr, initial, period, transient, steps):
+    """The reference's mean and its bar by three resolutions (``steps`` and half of it)."""
+    kw = {"zeta": zeta, "initial": initial, "transient_periods": transient,
+          "average_periods": period * math.ceil(STATIC_WINDOW / period)}
+    fine = static_kinetic_run(alpha, beta, a, V, sr, steps_per_period=steps, **kw)
+    coarse = static_kinetic_run(alpha, beta, a, V, sr, steps_per_period=steps // 2, **kw)
+    return fine.mu_ratio, fine.error + coarse.error
+
+
+def static(seed: int, count: int) -> tuple[list[str], list[str]]:
+    """Static above kinetic: its summary line and the rows of the points looked at again."""
+    counts = dict(agree=0, untrusted=0, moved=0, open=0)
+    rows = []
+    for alpha, beta, a, V, zeta, sr, initial in static_kinetic_points(count, [seed, 55]):
+        r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a, zeta=zeta,
+                                                     static_ratio=sr),
+                                    v_inertial=V, initial=initial)
+        label = f"({alpha:.4g}, {beta:.4g}, {a:.4g}, {V:.4g}, {zeta:.3g}, {sr:.3g}, {initial})"
+        if not r.trusted or r.status not in (vf.Status.PERIODIC, vf.Status.SLIDING):
+            counts["untrusted"] += 1
+            trust = "trusted" if r.trusted else "not trusted"
+            rows.append(f"| {label} | {r.status.value}, {trust} | | | | not compared |")
+            continue
+        period = max(1, r.period)
+        settle = r.settling_periods
+        transient = max(200, math.ceil(2 * settle)) if math.isfinite(settle) else 2000
+        mu, bar = _static_reference(alpha, beta, a, V, zeta, sr, initial, period, transient,
+                                    STATIC_STEPS)
+        if abs(r.mu_ratio - mu) <= r.error + bar:
+            counts["agree"] += 1
+            continue
+        mu2, bar2 = _static_reference(alpha, beta, a, V, zeta, sr, initial, period,
+                                      max(transient, STATIC_LONG), 2 * STATIC_STEPS)
+        moved = abs(r.mu_ratio - mu2) <= r.error + bar2
+        counts["moved" if moved else "open"] += 1
+        rows.append(f"| {label} | {r.status.value}, multiplier {r.multiplier:.6g}, "
+                    f"settling {_settling(r)} | {r.mu_ratio:.10f} +- {r.error:.1e} | "
+                    f"{mu:.10f} +- {bar:.1e} | {mu2:.10f} +- {bar2:.1e} | "
+                    f"{'moves to the solver' if moved else 'OPEN'} |")
+    summary = (f"Static above kinetic: {count} points; {counts['agree']} agree, "
+               f"{counts['untrusted']} with no trusted orbit or proof (averaged or not "
+               f"converged: not compared); of the disagreements, {counts['moved']} move to "
+               f"the solver at {2 * STATIC_STEPS} steps after {STATIC_LONG} periods, "
+               f"{counts['open']} open.")
+    return [summary], rows
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seed", type=int, default=1130)
     parser.add_argument("--per-regime", type=int, default=24)
     parser.add_argument("--mdr", type=int, default=150)
     parser.add_argument("--mdr-driven", type=int, default=150)
+    parser.add_argument("--static", type=int, default=96)
     parser.add_argument("--write", action="store_true")
     args = parser.parse_args()
     start = time.perf_counter()
@@ -228,12 +291,23 @@ def main() -> None:
             print(*summary, *rows, sep="\n", flush=True)
             lines += summary
             mdr_rows += rows
+    static_rows = []
+    if args.static > 0:
+        summary, static_rows = static(args.seed, args.static)
+        print(*summary, *static_rows, sep="\n", flush=True)
+        lines += summary
     lines = [f"- {line}" for line in lines]
     if flat_rows:
         lines += ["", "The flat punch's disagreements, looked at again:", "",
                   "| regime: (alpha, beta, a, V, zeta, eta_c) | solver | mu_ratio | "
                   f"reference (120 periods) | reference ({LONG} periods) | verdict |",
                   "|---|---|---|---|---|---|", *flat_rows]
+    if static_rows:
+        lines += ["", "Static above kinetic, the disagreements looked at again:", "",
+                  "| (alpha, beta, a, V, zeta, s_r, start) | solver | mu_ratio | reference "
+                  f"({STATIC_STEPS} steps) | reference ({2 * STATIC_STEPS} steps, "
+                  f"{STATIC_LONG} periods) | verdict |", "|---|---|---|---|---|---|",
+                  *static_rows]
     if mdr_rows:
         lines += ["", "The curved tips' disagreements, looked at again:", "",
                   "| (alpha, beta, a, V, n, zeta[; drive]) | solver | mu_ratio | reference "
@@ -245,7 +319,7 @@ def main() -> None:
         append_run(RESULTS, "Fresh random points against the independent references",
                    "PYTHONPATH=src python benchmarks/differential_campaign.py --seed "
                    f"{args.seed} --per-regime {args.per_regime} --mdr {args.mdr} --mdr-driven "
-                   f"{args.mdr_driven} --write",
+                   f"{args.mdr_driven} --static {args.static} --write",
                    f"{took:.0f} s in all; the solvers at their default settings.", lines)
 
 

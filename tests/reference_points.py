@@ -166,6 +166,24 @@ def random_points(seed: int, n: int, regime: str) -> list[tuple[float, float, fl
     return points
 
 
+def static_kinetic_points(n: int, seed) -> list[tuple]:
+    """``n`` random points of every regime the static-above-kinetic reference covers: ``(alpha,
+    beta, a, V, zeta, s_r, start)``, a finite elastic contact and a rigid one in turn,
+    jumping every fourth, undamped every third, ``1.1 <= s_r <= 2.2``, from steady sliding
+    and from rest in turn (``seed``: anything ``numpy.random.default_rng`` takes).
+    """
+    rng = np.random.default_rng(seed)
+    out = []
+    for i in range(n):
+        alpha = float(rng.uniform(0.1, 2.0))
+        beta = math.inf if i % 2 else alpha + float(rng.uniform(0.5, 8.0))
+        a = float(rng.uniform(1.05, 1.5)) if i % 4 == 1 else float(rng.uniform(0.1, 0.95))
+        zeta = float(rng.uniform(0.02, 0.2)) if i % 3 != 2 else 0.0
+        out.append((alpha, beta, a, float(rng.uniform(0.05, 0.6)), zeta,
+                    float(rng.uniform(1.1, 2.2)), ("sliding", "rest")[i % 2]))
+    return out
+
+
 def reference_mu(
     alpha: float,
     beta: float,

@@ -338,6 +338,29 @@ def test_sliding_and_stick_slip_coexist_above_the_critical_velocity():
     assert r.status is vf.Status.SLIDING
 
 
+# A point of a fresh random campaign (differential_campaign.py --static, seed 1130) where
+# Newton's iterate, early in the transient, converged to the sliding orbit, whose own state
+# the certificate proves: the solver answered "continuous sliding, mu = 1, error 0", while
+# the motion from the sliding start goes on to stick-slip with mu/mu0 about 1.12
+FALSE_PROOF = (0.15875851859066223, 5.704098921487698, 0.2293556494950217,
+               0.23131915240059525, 0.16649457906772397, 1.9790117995694856)
+
+
+def test_an_orbit_the_motion_does_not_reach_is_no_answer():
+    """Sliding and stick-slip coexist: Newton's orbit answers only once the motion itself
+    comes to it.  Whatever the solver answers agrees with the mean of its own motion from
+    the same start (periods 100 to 300 of the history); it is no proof of sliding."""
+    al, be, a, V, z, sr = FALSE_PROOF
+    dim = vf.Dimensionless(al, be, a, zeta=z, static_ratio=sr)
+    h = vf.simulate(dim, v_inertial=V, periods=300, samples_per_period=100)
+    late = h.tau >= 2 * math.pi * 100
+    motion = np.trapezoid(h.f[late], h.tau[late]) / np.trapezoid(h.n[late], h.tau[late])
+    assert motion > 1.1  # the motion sticks: its mean is above the kinetic force's
+    r = vf.friction_coefficient(dim, v_inertial=V)
+    assert r.status is not vf.Status.SLIDING
+    assert not r.trusted or abs(r.mu_ratio - motion) <= 1e-2
+
+
 def test_without_oscillation_the_sliding_start_slides_and_rest_sticks_and_slips():
     """``a = 0``: steady sliding goes on (kinetic force, slip velocity ``V``); from rest the
     classic stick-slip of a static coefficient, whose undamped rigid mean is exactly 1."""

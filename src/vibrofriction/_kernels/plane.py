@@ -1749,13 +1749,13 @@ def _record_rough(s, ph, means, J, R):
 
 @jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
-                  means, R, given=False, rough_found=False):
+                  means, R, given=False, rough_found=False, newton_ok=True):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
     mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
     it, ``means`` its means, ``J`` its Jacobian).  ``given``: ``J`` holds a neighbour's
     Jacobian (:func:`_rough_orbit`); ``R`` the rough orbit's record (given where
-    ``rough_found``).
+    ``rough_found``); ``newton_ok`` False: plain iteration only.
     """
     status = ST_FAILED
     mult = math.nan
@@ -1763,7 +1763,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
     # orbits form a continuum (any preload in the stuck region), along which the period
     # map is singular; plain iteration follows the motion from the given start and keeps
     # the symmetries of that start exactly (docs/inplane.md, "v0 = 0")
-    use_newton = P[P_V] != 0.0
+    use_newton = P[P_V] != 0.0 and newton_ok
     if use_newton:
         if rough_found:  # ``s`` is the rough orbit already, ``J`` its Jacobian
             rough = ROUGH_FOUND
@@ -1803,6 +1803,49 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
             mult = info[3]
             status = ST_PERIODIC
     return status, mult, use_newton, periods
+
+
+FOLLOW_DISTANCE = 1e-5
+"""A static circle above the kinetic one (sliding and stick-slip coexist): Newton's orbit
+answers only once the motion from the transient's end comes within this distance of it,
+relative to the state's size (:func:`_follow`); Newton's iterate may converge to an orbit
+the motion does not approach."""
+LINEAR_DISTANCE, LINEAR_SLACK, LINEAR_PERIODS = 1e-3, 0.05, 3
+"""... or once within ``LINEAR_DISTANCE`` the motion's distance to it has shrunk at least as
+fast as its multiplier says (times ``1 + LINEAR_SLACK``) in ``LINEAR_PERIODS`` periods
+running: the motion is in the orbit's linear neighbourhood, on its way in."""
+
+
+@jit
+def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
+    """The motion from ``sm`` (in place; its phase hint in ``W[W_MODE, 0]``) by plain periods
+    at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until its section state comes within
+    :data:`FOLLOW_DISTANCE` of the orbit ``s`` (multiplier ``mult``) in the orbit's phase
+    ``phase``, or contracts towards it in its linear neighbourhood (:data:`LINEAR_DISTANCE`),
+    at most ``max_it`` periods.  Returns ``(reached, periods)``.
+    """
+    s2 = np.empty(N_S)
+    acc = np.zeros(4)
+    k = P[P_K]
+    rt = max(rtol, ROUGH_RTOL)
+    scale = 1.0 + _dist(s, np.zeros(N_S), k)
+    last, run = math.inf, 0
+    for it in range(max_it):
+        ok, _, _ = period_map(P, sm, s2, rt, rt, hmax, W, acc, cnt, max_events)
+        if not ok:
+            return False, it + 1
+        for i in range(N_S):
+            sm[i] = s2[i]
+        W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
+        d = _dist(sm, s, k) / scale if W[W_MODE, 0] == phase else math.inf
+        if d <= LINEAR_DISTANCE and d <= mult * (1.0 + LINEAR_SLACK) * last:
+            run += 1
+        else:
+            run = 0
+        last = d
+        if d <= FOLLOW_DISTANCE or run >= LINEAR_PERIODS:
+            return True, it + 1
+    return False, max_it
 
 
 @jit
@@ -1999,9 +2042,28 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
     budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
+        hint0 = W[W_MODE, 0]
         status, mult, use_newton, periods = _orbit_search(
             P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means,
             R, warm and given, found)
+        if status == ST_PERIODIC and use_newton and P[P_SR] != 1.0:
+            # sliding and stick-slip coexist: the motion from the transient's end must come
+            # to Newton's orbit; where it does not, its own orbit by plain iteration
+            phase = W[W_MODE, 0]
+            sm = s0.copy()
+            W[W_MODE, 0] = hint0
+            reached, more = _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events,
+                                    max(0, min(FALLBACK_ITER, budget - periods)))
+            periods += more
+            if reached:
+                W[W_MODE, 0] = phase
+            elif cnt[C_FAIL] == 0:
+                s[:] = sm
+                s0[:] = sm
+                info[:] = 0.0
+                status, mult, use_newton, periods = _orbit_search(
+                    P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget - periods, periods,
+                    J, info, means, R, False, False, False)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed

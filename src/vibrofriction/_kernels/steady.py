@@ -37,6 +37,7 @@ import math
 import numpy as np
 
 from .average import (
+    _distance,
     check_average,
     detect_period,
     last_window,
@@ -105,11 +106,13 @@ from .period import (
     advance_counted,
     advance_period,
     pure_forward_slip,
+    spring,
 )
 from .phases import (
     ETA_ELASTIC,
     ETA_SLOPE,
     M_A,
+    M_ALPHA,
     M_OFF,
     M_ON,
     M_V,
@@ -128,6 +131,17 @@ MAX_CHECKPOINTS = 64  # doubling checkpoints of the running average
 RUNNING = -2  # not a status: the run goes on
 NEUTRAL_WINDOW = 512  # the motion near a neutral orbit is measured over periods (N, 2N]
 SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stick
+# static above kinetic: an orbit found by Newton answers only once the motion's own section
+# state comes within this distance of it (relative to the state's size, as tol_state):
+# sliding and stick-slip coexist there, and Newton's iterate may converge to an attractor
+# that the motion does not approach (seed 1130's campaign, benchmarks/results)
+FOLLOW_DISTANCE = 1e-5
+# ... or, for an orbit of one period, once within LINEAR_DISTANCE the motion's distance to it
+# has shrunk at least as fast as the orbit's multiplier says (its modulus times
+# 1 + LINEAR_SLACK) in LINEAR_PERIODS periods running: the motion is then in the orbit's
+# linear neighbourhood, on its way in (a slowly attracting orbit would otherwise take
+# thousands of periods to come within FOLLOW_DISTANCE)
+LINEAR_DISTANCE, LINEAR_SLACK, LINEAR_PERIODS = 1e-3, 0.05, 3
 
 
 @jit
@@ -145,6 +159,22 @@ def _start(init_kind, y0, xd0, e0, ph0, M, offset):
 
 
 @jit
+def _newton_from(z, dprev, k, M, tol_state, max_events, count, win, out_f):
+    """:func:`.newton.try_newton` from a copy of ``z``, its events counted and its drive
+    periods added to ``out_f[O_WORK]``: ``(zn, p, lam, shift, mu_first, mu)``, ``zn`` the
+    iterate, ``p = -1`` where the event budget is spent.
+    """
+    zn = z.copy()
+    pn, ev, work, lam, shift, mu_first, mu = try_newton(zn, dprev, k, M, tol_state,
+                                                        max_events - count[C_EVENTS], win)
+    count[C_EVENTS] += ev
+    out_f[O_WORK] += work
+    if count[C_EVENTS] > max_events:
+        pn = -1
+    return zn, pn, lam, shift, mu_first, mu
+
+
+@jit
 def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     """Newton on the period map (:func:`.newton.try_newton`) at period ``k``.
 
@@ -155,19 +185,49 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     the event budget is spent.  The drive periods integrated are added to
     ``out_f[O_WORK]``.
     """
-    zn = z.copy()
-    pn, ev, work, lam, shift, mu_first, mu = try_newton(zn, dprev, k, M, tol_state,
-                                                        max_events - count[C_EVENTS], win)
-    count[C_EVENTS] += ev
-    out_f[O_WORK] += work
-    if count[C_EVENTS] > max_events:
-        return -1
+    zn, pn, lam, shift, mu_first, mu = _newton_from(z, dprev, k, M, tol_state, max_events,
+                                                    count, win, out_f)
     if pn > 0:
         # the first map from z is the motion's own next pn periods
         newton_result(mu, k + pn, lam, shift, mu_first, out_f)
         if lam < NEUTRAL:
             z[:] = zn
     return pn
+
+
+@jit
+def _newton_candidate(z, dprev, k, M, tol_state, max_events, count, cand_z, cand_win,
+                      cand_out, out_f):
+    """Newton on the period map at period ``k`` (:func:`.newton.try_newton`) without moving
+    the motion: an attracting orbit found is kept as the candidate (its section state
+    ``cand_z``, window ``cand_win`` and result ``cand_out``) that :func:`_run` returns once
+    the motion itself comes within :data:`FOLLOW_DISTANCE` of it.  Returns its period
+    (0: none kept, -1: the event budget is spent); ``out_f`` keeps only the work added.
+    """
+    win = np.zeros(N_ACC)
+    zn, pn, lam, shift, mu_first, mu = _newton_from(z, dprev, k, M, tol_state, max_events,
+                                                    count, win, out_f)
+    if pn < 0:
+        return -1
+    if pn == 0 or not lam < NEUTRAL:
+        return 0
+    cand_out[:] = out_f
+    newton_result(mu, k + pn, lam, shift, mu_first, cand_out)
+    cand_z[:] = zn
+    cand_win[:] = win
+    return pn
+
+
+@jit
+def _to_candidate(z, cand_z, M):
+    """The motion's section state ``z``'s distance from the candidate orbit's ``cand_z``
+    relative to its size (that of :func:`.average.detect_period`); inf in another phase.
+    """
+    if z[3] != cand_z[3]:
+        return math.inf
+    alpha, kk = M[M_ALPHA], spring(M)
+    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + kk * abs(z[2])
+    return _distance(alpha, kk, z, cand_z) / scale
 
 
 @jit
@@ -211,7 +271,7 @@ def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
 
 @jit
 def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count, win, out_f,
-         certify=False, ys=0.0, yds=0.0, es=0.0, neutral_ok=True, warm=False):
+         certify=False, ys=0.0, yds=0.0, es=0.0, neutral_ok=True, warm=False, follow=False):
     """Advance period by period from ``z`` until an orbit or an average answers.
 
     Called where the sliding orbit's contact point stops, or there is no sliding orbit
@@ -225,6 +285,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     sticking now and then, its mean not the orbit's); the motion is followed on.  ``warm``:
     ``z`` is (near) an orbit of one period, a neighbour's in a continuation, and Newton is
     tried from it at once (its first map is the motion's first period), not after a period.
+    ``follow``: where attractors coexist (a static coefficient above the kinetic one), an
+    orbit found by Newton is only a candidate, and answers once the motion's own section
+    state comes within :data:`FOLLOW_DISTANCE` of it (:func:`_newton_candidate`); Newton's
+    iterate can converge to an orbit that the motion from ``z`` does not approach.
 
     Newton's method is not tried at ``V = 0`` (a held body's orbits form a continuum).
     Returns ``(status, period, periods)``; ``z`` ends as the last section state,
@@ -242,6 +306,12 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     neutral_from = np.zeros(N_ACC)  # the accumulators where the motion's window starts
     neutral_out = np.zeros(out_f.shape[0])
     neutral_period, neutral_end = 0, 0
+    cand_z = np.zeros(5)  # follow: the candidate orbit found by Newton, and its result
+    cand_win = np.zeros(N_ACC)
+    cand_out = np.zeros(out_f.shape[0])
+    cand_p = 0
+    cand_d = math.inf  # the motion's distance to it at the last attempt
+    cand_last, cand_run = math.inf, 0  # ... at the last period; periods contracting running
     ring_z[0, :] = z
     # V = 0: no Newton.  A held body has a continuum of stuck orbits (any preload in the
     # band); Newton's period map is singular along it and walks to the band's edge, an
@@ -279,7 +349,40 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             count[C_EVENTS] += ev
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
-        if neutral_end > 0:
+        reached = _to_candidate(z, cand_z, M) if cand_p > 0 else math.inf
+        if cand_p == 1 and reached <= LINEAR_DISTANCE \
+                and reached <= cand_out[O_MULT] * (1.0 + LINEAR_SLACK) * cand_last:
+            cand_run += 1
+        else:
+            cand_run = 0
+        cand_last = reached
+        if reached <= FOLLOW_DISTANCE or cand_run >= LINEAR_PERIODS:
+            # the motion has come to the candidate orbit: its answer; the settling time
+            # from here at the orbit's contraction, the relative distance to the error
+            work = out_f[O_WORK]
+            out_f[:] = cand_out
+            out_f[O_WORK] = work
+            err, lam = out_f[O_ERR], out_f[O_MULT]
+            out_f[O_SETTLE] = k + (math.log(err / reached) / math.log(lam)
+                                   if reached > err and 0.0 < lam < 1.0 else 0.0)
+            win[:] = cand_win
+            z[:] = cand_z
+            return ST_PERIODIC, cand_p, k
+        if follow and k == next_newton and k < max_periods:
+            next_newton = k + max(1, k // 2)
+            # Newton again only where there is no candidate, or the motion has moved away
+            # from it since the last attempt (it may be heading elsewhere)
+            if cand_p == 0 or reached > cand_d:
+                pn = _newton_candidate(z, dprev, k, M, tol_state, max_events, count, cand_z,
+                                       cand_win, cand_out, out_f)
+                if pn < 0:
+                    return ST_FAILED, 0, k
+                if pn > 0:
+                    cand_p = pn
+                    reached = _to_candidate(z, cand_z, M)
+                    cand_last, cand_run = reached, 0
+            cand_d = reached
+        elif neutral_end > 0:
             # near a neutral orbit found by Newton the motion runs on: the running
             # average may still answer; otherwise the orbit does, with the motion's mean
             # over the last window
@@ -376,8 +479,11 @@ def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
     holds up to ``s_r n > n``, so a stick-slip motion can coexist with sliding. The proof is
     therefore only from the motion's own state (the certificate, tried at the start and at
     every section), otherwise the motion is followed as where no sliding orbit slides,
-    except that a neutral orbit is no answer: undamped, the motion near the neutral sliding
-    orbit can stick every few periods for ever, its mean above the orbit's. Without
+    except that an orbit found by Newton answers only once the motion itself comes to it
+    (``follow`` of :func:`_run`: Newton's iterate may converge to the attractor the motion
+    does not take, the sliding orbit where the motion goes on to stick-slip), and a neutral
+    orbit is no answer: undamped, the motion near the neutral sliding orbit can stick every
+    few periods for ever, its mean above the orbit's. Without
     oscillation (``a = 0``) the same: the proof of :func:`.sliding.unmodulated_sliding`
     fails alike.
     """
@@ -389,7 +495,7 @@ def _static_run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
         _sliding_window(M, win)
         return ST_SLIDING, 0, 0
     status, period, k = _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events,
-                             count, win, out_f, certify, ys, yds, es, False)
+                             count, win, out_f, certify, ys, yds, es, False, follow=True)
     if status == ST_PERIODIC and certify and pure_forward_slip(win) and sliding_certificate(
             z[0], z[1], z[2], int(z[3]), M, True, ys, yds, es):
         # the orbit found is the sliding one, and the motion from its state slides for ever
