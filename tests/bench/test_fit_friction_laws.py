@@ -15,7 +15,7 @@ from scipy.stats import chi2
 import vibrofriction as vf
 from vibrofriction.bench.fitting import FitResult, predict_cof, synthetic_measurements
 from vibrofriction.bench.fitting.problem import Problem, search_bounds
-from vibrofriction.bench.fitting.uncertainty import jacobian_at, law_warnings
+from vibrofriction.bench.fitting.uncertainty import PROFILE_LEVEL, jacobian_at, law_warnings
 from vibrofriction.solver import solve_points
 
 DATA = Path(__file__).resolve().parents[1] / "data"
@@ -198,10 +198,27 @@ def test_a_fit_result_with_a_law_is_saved_and_loaded(tmp_path):
 def test_fit_of_the_static_coefficient_to_reference_data_holds_the_truth():
     """``mu0`` and ``mu_static`` off by 1.1 and 1.18; the slow rows stick (they carry
     ``mu_static``), the fast ones slide (``mu0``).  The model jumps between stick-slip patterns
-    (the static law's hysteresis), so the global search runs (a short one).  15-25 s."""
+    (the static law's hysteresis), so the global search runs (a short one).  15-25 s.
+
+    The search finds a valley at least as low as the truth's.  With this noise draw it is
+    another stick-slip pattern's, lower than the truth's by 5.3 (chi-square 7.1 against
+    12.4): beyond the profile level of 4, so the 95 % intervals leave the truth out, as
+    such intervals do for about one draw in twenty.  What must hold is that an interval
+    misses the truth only where the data, not the search, put it beyond the level (before the
+    static solver followed the motion to its attractor, the model's value at one row of the
+    other valley was a wrong attractor's, 0.787 for 0.807, and the truth's valley was the
+    lowest)."""
     res = vf.fit(STATIC_DATA, STATIC.with_(mu0=0.33, mu_static=0.46), free=["mu0", "mu_static"],
                  screen=16, starts=2, progress=False, workers=1)
-    assert _holds_or_not_good(res, STATIC) == [], res.report()
+    v0, du, om = _columns(STATIC_DATA)
+    chi_truth = float(np.sum(((predict_cof(STATIC, v0, du, om) - STATIC_DATA.cof.to_numpy())
+                              / STATIC_DATA.sigma.to_numpy()) ** 2))
+    assert res.chisqr <= chi_truth + 1e-9, res.report()
+    missed = [n for n in res.free if not (res.intervals[n][0] <= _truth_value(STATIC, n)
+                                          <= res.intervals[n][1])]
+    if missed:
+        assert chi_truth - res.chisqr > PROFILE_LEVEL * max(res.redchi, 1.0), (missed,
+                                                                                res.report())
     lo, hi = res.intervals["mu_static"]
     assert lo >= res.params["mu0"].value and hi / lo < 1.3  # held above mu0, and tight
 
