@@ -13,7 +13,7 @@ the row of 2560 springs.
 
     PYTHONPATH=src python benchmarks/bench_static_kinetic_plane_mdr.py [--write]
 
-``--write`` writes benchmarks/results/static_kinetic_plane_mdr.md.
+``--write`` appends its run to benchmarks/results/static_kinetic_plane_mdr.md.
 """
 
 from __future__ import annotations
@@ -125,9 +125,11 @@ def main() -> None:
     if "--write" in sys.argv:
         rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True,
                              text=True, check=False).stdout.strip()
+        head = "# A static coefficient above the kinetic one: 2-D solver and MDR row\n\n"
+        if RESULTS.exists():  # a new section below the earlier runs
+            head = RESULTS.read_text().rstrip("\n") + "\n\n## A later run\n\n"
         RESULTS.write_text(
-            "# A static coefficient above the kinetic one: 2-D solver and MDR row\n\n"
-            f"`python benchmarks/bench_static_kinetic_plane_mdr.py --write`, "
+            head + f"`python benchmarks/bench_static_kinetic_plane_mdr.py --write`, "
             f"{time.strftime('%Y-%m-%d')}, commit {rev}, Python {platform.python_version()}, "
             f"numpy {np.__version__}; wall times, medians of {REPEATS} calls of "
             "`solve_points` on one point, the two laws alternately in the same run, on a "

@@ -261,3 +261,23 @@ def test_random_rows_keep_every_spring_within_its_static_limit(al, dk, a, V, n, 
     assert r["max_excess"] <= 1e-10
     if r["status"] != "not converged":
         assert abs(r["mu_ratio"]) <= s + r["error"]
+
+
+# A point of a random self-consistency check (a cone, undamped, s = 1.87): Anderson's step
+# landed on the sliding orbit, and the rows answered "periodic, 1.000000 +- 2e-12", while
+# the row's own motion from the sliding start sticks, its mean about 1.06
+ACCELERATED = (0.20632261832867776, 0.7830788798614823, 0.20540461732229198,
+               0.5567409796149243, 1.865082630754237, 3.0)
+
+
+def test_the_rows_follow_the_motion_above_the_kinetic_limit():
+    """Sliding and stick-slip coexist: the rows follow the motion, not Anderson's step, and
+    the answer is within its error of the mean of the row's history (periods 150 to 300)."""
+    al, be, a, V, sr, n = ACCELERATED
+    d = vf.Dimensionless(al, be, a, static_ratio=sr, profile_exponent=n)
+    h = vf.simulate(d, v_inertial=V, periods=300, samples_per_period=200)
+    late = h.tau >= 2 * math.pi * 150
+    motion = np.trapezoid(h.f[late], h.tau[late]) / np.trapezoid(h.n[late], h.tau[late])
+    assert motion > 1.05
+    r = vf.friction_coefficient(d, v_inertial=V)
+    assert math.isnan(r.mu_ratio) or abs(r.mu_ratio - motion) <= r.error + 2e-3
