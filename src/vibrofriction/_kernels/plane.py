@@ -1838,7 +1838,8 @@ def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
             sm[i] = s2[i]
         W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
         d = _dist(sm, s, k) / scale if W[W_MODE, 0] == phase else math.inf
-        if d <= LINEAR_DISTANCE and d <= mult * (1.0 + LINEAR_SLACK) * last:
+        if d <= LINEAR_DISTANCE and last <= LINEAR_DISTANCE \
+                and d <= mult * (1.0 + LINEAR_SLACK) * last:
             run += 1
         else:
             run = 0

@@ -350,7 +350,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
         reached = _to_candidate(z, cand_z, M) if cand_p > 0 else math.inf
-        if cand_p == 1 and reached <= LINEAR_DISTANCE \
+        if cand_p == 1 and reached <= LINEAR_DISTANCE and cand_last <= LINEAR_DISTANCE \
                 and reached <= cand_out[O_MULT] * (1.0 + LINEAR_SLACK) * cand_last:
             cand_run += 1
         else:
