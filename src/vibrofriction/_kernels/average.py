@@ -36,6 +36,12 @@ def _distance(alpha, kk, z1, z2):
 
 
 @jit
+def section_scale(alpha, kk, z):
+    """The size of a section state, against which its distances are measured."""
+    return 1.0 + alpha * abs(z[0]) + abs(z[1]) + kk * abs(z[2])
+
+
+@jit
 def detect_period(ring_z, dprev, k, M, tol_state):
     """The shortest ``p`` with ``z_k`` within ``tol_state`` of ``z_{k-p}`` (same phase).
 
@@ -48,7 +54,7 @@ def detect_period(ring_z, dprev, k, M, tol_state):
     z = ring_z[slot]
     alpha = M[M_ALPHA]
     kk = spring(M)
-    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + kk * abs(z[2])
+    scale = section_scale(alpha, kk, z)
     for p in range(1, MAX_PERIOD + 1):
         if p > k:
             break

@@ -121,7 +121,7 @@ from .dopri import (
     _E7,
 )
 from .jit import jit
-from .steady import history, lagrange_weight
+from .steady import closing_in, history, lagrange_weight
 
 TWO_PI = 2.0 * math.pi
 # one slip mode in 2-D (its direction is part of the state): it carries the code of forward
@@ -1805,24 +1805,14 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
     return status, mult, use_newton, periods
 
 
-FOLLOW_DISTANCE = 1e-5
-"""A static circle above the kinetic one (sliding and stick-slip coexist): Newton's orbit
-answers only once the motion from the transient's end comes within this distance of it,
-relative to the state's size (:func:`_follow`); Newton's iterate may converge to an orbit
-the motion does not approach."""
-LINEAR_DISTANCE, LINEAR_SLACK, LINEAR_PERIODS = 1e-3, 0.05, 3
-"""... or once within ``LINEAR_DISTANCE`` the motion's distance to it has shrunk at least as
-fast as its multiplier says (times ``1 + LINEAR_SLACK``) in ``LINEAR_PERIODS`` periods
-running: the motion is in the orbit's linear neighbourhood, on its way in."""
-
-
 @jit
 def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
     """The motion from ``sm`` (in place; its phase hint in ``W[W_MODE, 0]``) by plain periods
-    at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until its section state comes within
-    :data:`FOLLOW_DISTANCE` of the orbit ``s`` (multiplier ``mult``) in the orbit's phase
-    ``phase``, or contracts towards it in its linear neighbourhood (:data:`LINEAR_DISTANCE`),
-    at most ``max_it`` periods.  Returns ``(reached, periods)``.
+    at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until it comes to the orbit ``s``
+    (multiplier ``mult``) in the orbit's phase ``phase`` as the 1-D solver's motion comes to
+    Newton's orbit (:func:`.steady.closing_in`), at most ``max_it`` periods.  Where sliding
+    and stick-slip coexist (a static circle above the kinetic one), Newton's iterate may
+    converge to an orbit the motion does not approach.  Returns ``(reached, periods)``.
     """
     s2 = np.empty(N_S)
     acc = np.zeros(4)
@@ -1838,13 +1828,9 @@ def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
             sm[i] = s2[i]
         W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
         d = _dist(sm, s, k) / scale if W[W_MODE, 0] == phase else math.inf
-        if d <= LINEAR_DISTANCE and last <= LINEAR_DISTANCE \
-                and d <= mult * (1.0 + LINEAR_SLACK) * last:
-            run += 1
-        else:
-            run = 0
+        run, arrived = closing_in(d, last, run, mult)
         last = d
-        if d <= FOLLOW_DISTANCE or run >= LINEAR_PERIODS:
+        if arrived:
             return True, it + 1
     return False, max_it
 

@@ -43,6 +43,7 @@ from .average import (
     last_window,
     newton_result,
     periodic_result,
+    section_scale,
 )
 from .codes import (
     I_DEGENERATE,
@@ -226,8 +227,23 @@ def _to_candidate(z, cand_z, M):
     if z[3] != cand_z[3]:
         return math.inf
     alpha, kk = M[M_ALPHA], spring(M)
-    scale = 1.0 + alpha * abs(z[0]) + abs(z[1]) + kk * abs(z[2])
-    return _distance(alpha, kk, z, cand_z) / scale
+    return _distance(alpha, kk, z, cand_z) / section_scale(alpha, kk, z)
+
+
+@jit
+def closing_in(d, last, run, mult):
+    """One period of a motion followed to an orbit (multiplier modulus ``mult``; 0 where the
+    contraction test does not apply): its relative distance ``d`` now and ``last`` a period
+    before, and ``run`` the periods it has closed in at the multiplier's rate within
+    :data:`LINEAR_DISTANCE`.  Returns ``(run, reached)``: reached within
+    :data:`FOLLOW_DISTANCE`, or after :data:`LINEAR_PERIODS` such periods running.
+    """
+    if d <= LINEAR_DISTANCE and last <= LINEAR_DISTANCE \
+            and d <= mult * (1.0 + LINEAR_SLACK) * last:
+        run += 1
+    else:
+        run = 0
+    return run, d <= FOLLOW_DISTANCE or run >= LINEAR_PERIODS
 
 
 @jit
@@ -350,13 +366,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
         reached = _to_candidate(z, cand_z, M) if cand_p > 0 else math.inf
-        if cand_p == 1 and reached <= LINEAR_DISTANCE and cand_last <= LINEAR_DISTANCE \
-                and reached <= cand_out[O_MULT] * (1.0 + LINEAR_SLACK) * cand_last:
-            cand_run += 1
-        else:
-            cand_run = 0
+        cand_run, arrived = closing_in(reached, cand_last, cand_run,
+                                       cand_out[O_MULT] if cand_p == 1 else 0.0)
         cand_last = reached
-        if reached <= FOLLOW_DISTANCE or cand_run >= LINEAR_PERIODS:
+        if arrived:
             # the motion has come to the candidate orbit: its answer; the settling time
             # from here at the orbit's contraction, the relative distance to the error
             work = out_f[O_WORK]
