@@ -28,6 +28,21 @@ reference run longer or finer than the tests can afford:
   start with the criterion of tests/reference/test_differential_static_kinetic.py (whole
   orbits averaged after twice the settling the solver states, at least 200 periods; the bar
   by three resolutions; an answer not trusted is counted apart, not compared).
+* **rate-and-state friction** (the flat punch): ``--rate-state`` points of
+  ``tests/reference_points.rate_state_points`` (stream ``[seed, 91]``): velocity weakening
+  and strengthening, the aging and the slip law, the Linker-Dieterich coupling on and off,
+  a pin dashpot or none, jumping a third, a rigid contact a quarter (``a`` 0.032..0.079,
+  where the reference's rigid contact is well behaved), a contact dashpot a quarter;
+  ``vf.friction_coefficient`` against ``rate_state_run`` with the criterion of
+  tests/reference/test_differential_rate_state.py (the transient the solver's multiplier
+  needs to come within 1e-9, at most :data:`RS_MAX_TRANSIENT` periods; the bar the two
+  stated errors plus the spread of the reference's per-period means over its window of
+  :data:`RS_WINDOW`); an answer not periodic and trusted is counted apart, not compared
+  (nor is a point the reference fails on: counted, with its message).  Both start from
+  steady sliding at ``V`` (the solver's only start with this law; the reference could
+  only perturb ``theta`` there): where velocity weakening lets stick-slip and sliding
+  coexist, both go from the same start, and an orbit the solver answers that the motion
+  from there does not reach shows as a disagreement.
 
 A disagreement is looked at again:
 
@@ -37,7 +52,13 @@ A disagreement is looked at again:
   solver** where it then lies within the same allowance of the solver's value;
 * static above kinetic: the reference at twice its steps (and its bar from there), after
   :data:`STATIC_LONG` periods of transient; it moves to the solver where it then lies
-  within the solver's error plus that bar;
+  within the solver's error plus that bar; where not, the same law with every switch an
+  event (``static_kinetic_events_run``: the fixed steps' error does not fall smoothly
+  where a switch grazes or a rigid contact touches down), and it moves to the solver
+  where that lies within the two stated errors;
+* rate-and-state: the reference after ``max(RS_LONG, 5 x)`` the first transient at ``rtol``
+  :data:`RS_TIGHT` (10 times tighter), its bar from there; it moves to the solver where it
+  then lies within the solver's error plus that bar;
 * curved tips: the reference refined to :data:`MDR_FINER` (springs, steps) with a
   transient of :data:`MDR_LONG` periods where undamped. It **moves to the solver** where
   the finest run lies within the solver's error plus the last refinement's change (and,
@@ -47,10 +68,11 @@ A disagreement is looked at again:
 Anything else is an open disagreement: a false result until shown otherwise.
 
     PYTHONPATH=src python benchmarks/differential_campaign.py [--seed S] [--per-regime N]
-        [--mdr N] [--mdr-driven N] [--static N] [--write]
+        [--mdr N] [--mdr-driven N] [--static N] [--rate-state N] [--write]
 
 ``--mdr 0`` (``--mdr-driven 0``) leaves the undriven (driven) curved tips out,
-``--per-regime 0`` the flat punch, ``--static 0`` static above kinetic; ``--write`` appends
+``--per-regime 0`` the flat punch, ``--static 0`` static above kinetic, ``--rate-state 0``
+rate-and-state friction; ``--write`` appends
 the run to benchmarks/results/differential_campaign.md.
 """
 
@@ -73,13 +95,19 @@ from reference_points import (  # noqa: E402
     REGIMES,
     STEPS,
     random_points,
+    rate_state_points,
     reference_mu,
     static_kinetic_points,
 )
 from sections import append_run  # noqa: E402
 from vibrofriction.schema import Status  # noqa: E402
 from vibrofriction.solver import solve_points  # noqa: E402
-from vibrofriction_reference import return_mapping_periods, static_kinetic_run  # noqa: E402
+from vibrofriction_reference import (  # noqa: E402
+    return_mapping_periods,
+    static_kinetic_events_run,
+    static_kinetic_run,
+)
+from vibrofriction_reference.friction_laws import rate_state_run  # noqa: E402
 from vibrofriction_reference.mdr import mdr_mean, mdr_reference  # noqa: E402
 
 RESULTS = HERE / "results" / "differential_campaign.md"
@@ -92,6 +120,12 @@ MDR_LONG = 5000
 STATIC_STEPS, STATIC_WINDOW, STATIC_LONG = 800, 50, 5000
 """Static above kinetic: the reference's steps a period of the fastest motion, the drive
 periods it averages (rounded up to whole orbits) and the transient of its second look."""
+RS_MAX_TRANSIENT, RS_WINDOW = 300, 10
+"""Rate-and-state: the reference's longest transient and its window (those of
+tests/reference/test_differential_rate_state.py)."""
+RS_LONG, RS_LONGER, RS_TIGHT = 1000, 5, 1e-9
+"""... and its second look: a transient of at least RS_LONG periods and RS_LONGER times the
+first, at rtol RS_TIGHT (atol 100 times below it; the first look at 1e-8, 1e-10)."""
 
 
 def _settling(r: vf.FrictionResult) -> str:
@@ -233,7 +267,7 @@ def _static_reference(alpha, beta, a, V, zeta, sr, initial, period, transient, s
 
 def static(seed: int, count: int) -> tuple[list[str], list[str]]:
     """Static above kinetic: its summary line and the rows of the points looked at again."""
-    counts = dict(agree=0, untrusted=0, moved=0, open=0)
+    counts = dict(agree=0, untrusted=0, moved=0, events=0, open=0)
     rows = []
     for alpha, beta, a, V, zeta, sr, initial in static_kinetic_points(count, [seed, 55]):
         r = vf.friction_coefficient(vf.Dimensionless(alpha, beta, a, zeta=zeta,
@@ -243,7 +277,7 @@ def static(seed: int, count: int) -> tuple[list[str], list[str]]:
         if not r.trusted or r.status not in (vf.Status.PERIODIC, vf.Status.SLIDING):
             counts["untrusted"] += 1
             trust = "trusted" if r.trusted else "not trusted"
-            rows.append(f"| {label} | {r.status.value}, {trust} | | | | not compared |")
+            rows.append(f"| {label} | {r.status.value}, {trust} | | | | | not compared |")
             continue
         period = max(1, r.period)
         settle = r.settling_periods
@@ -256,16 +290,103 @@ def static(seed: int, count: int) -> tuple[list[str], list[str]]:
         mu2, bar2 = _static_reference(alpha, beta, a, V, zeta, sr, initial, period,
                                       max(transient, STATIC_LONG), 2 * STATIC_STEPS)
         moved = abs(r.mu_ratio - mu2) <= r.error + bar2
-        counts["moved" if moved else "open"] += 1
+        events = ""
+        if not moved:
+            # the switches as events: no step for a grazing switch or a touch-down to miss
+            ev = static_kinetic_events_run(
+                alpha, beta, a, V, sr, zeta=zeta, initial=initial,
+                transient_periods=max(transient, 300),
+                average_periods=period * math.ceil(STATIC_WINDOW / period))
+            moved = abs(r.mu_ratio - ev.mu_ratio) <= r.error + ev.error
+            counts["events" if moved else "open"] += 1
+            events = f"{ev.mu_ratio:.12f} +- {ev.error:.1e}"
+        else:
+            counts["moved"] += 1
         rows.append(f"| {label} | {r.status.value}, multiplier {r.multiplier:.6g}, "
-                    f"settling {_settling(r)} | {r.mu_ratio:.10f} +- {r.error:.1e} | "
-                    f"{mu:.10f} +- {bar:.1e} | {mu2:.10f} +- {bar2:.1e} | "
+                    f"settling {_settling(r)} | {r.mu_ratio:.12f} +- {r.error:.1e} | "
+                    f"{mu:.10f} +- {bar:.1e} | {mu2:.10f} +- {bar2:.1e} | {events} | "
                     f"{'moves to the solver' if moved else 'OPEN'} |")
     summary = (f"Static above kinetic: {count} points; {counts['agree']} agree, "
                f"{counts['untrusted']} with no trusted orbit or proof (averaged or not "
                f"converged: not compared); of the disagreements, {counts['moved']} move to "
                f"the solver at {2 * STATIC_STEPS} steps after {STATIC_LONG} periods, "
+               f"{counts['events']} to the solver by the switches as events, "
                f"{counts['open']} open.")
+    return [summary], rows
+
+
+def _rate_state_reference(p: dict, transient: int, rtol: float = 1e-8) -> tuple[float, float]:
+    """The reference's mean and its bar (its stated error plus the spread of its per-period
+    means over the window)."""
+    ref = rate_state_run(p["alpha"], p["beta"], p["amplitude"], p["V"], p["a"], p["b"],
+                         p["d_c"], p["v_ref"], alpha_ld=p["alpha_ld"], law=p["law"],
+                         zeta=p["zeta"], eta_c=p["eta_c"], transient_periods=transient,
+                         average_periods=RS_WINDOW, rtol=rtol, atol=0.01 * rtol)
+    means = ref.period_f / ref.period_n
+    return ref.mu_ratio, ref.error + float(means.max() - means.min())
+
+
+def _rs_label(p: dict) -> str:
+    label = (f"({p['alpha']:.4g}, {p['beta']:.4g}, {p['amplitude']:.4g}, {p['V']:.4g}, "
+             f"{p['zeta']:.3g}, {p['eta_c']:.3g}; a {p['a']:.4g}, b/a {p['b'] / p['a']:.3g}, "
+             f"d_c {p['d_c']:.4g}, v_ref {p['v_ref']:.4g}, {p['law']}")
+    return label + (f", alpha_ld {p['alpha_ld']:.3g})" if p["alpha_ld"] else ")")
+
+
+def rate_state(seed: int, count: int) -> tuple[list[str], list[str]]:
+    """Rate-and-state friction: its summary line and the rows of the points looked at
+    again (and of those not compared)."""
+    counts = dict(agree=0, untrusted=0, failed=0, moved=0, open=0)
+    statuses: dict[str, int] = {}
+    rows, ratios = [], []
+    for p in rate_state_points(count, [seed, 91]):
+        s = vf.Dimensionless(alpha=p["alpha"], beta=p["beta"], amplitude=p["amplitude"],
+                             zeta=p["zeta"], rs_a=p["a"], rs_b=p["b"], rs_d_c=p["d_c"],
+                             rs_v_ref=p["v_ref"], rs_alpha_ld=p["alpha_ld"], rs_law=p["law"],
+                             eta_c=p["eta_c"])
+        r = vf.friction_coefficient(s, v_inertial=p["V"])
+        label = _rs_label(p)
+        if not r.trusted or r.status is not vf.Status.PERIODIC:
+            counts["untrusted"] += 1
+            key = f"{r.status.value}{'' if r.trusted else ', not trusted'}"
+            statuses[key] = statuses.get(key, 0) + 1
+            rows.append(f"| {label} | {key}, settling {_settling(r)} | | | | not compared |")
+            continue
+        transient = RS_MAX_TRANSIENT if r.multiplier <= 0.0 else min(
+            RS_MAX_TRANSIENT, math.ceil(math.log(1e-9) / math.log(r.multiplier)))
+        solver = (f"{r.status.value}, multiplier {r.multiplier:.6g}, settling {_settling(r)}, "
+                  f"transient {transient}")
+        try:
+            mu, bar = _rate_state_reference(p, transient)
+        except RuntimeError as exc:
+            counts["failed"] += 1
+            rows.append(f"| {label} | {solver} | {r.mu_ratio:.10f} +- {r.error:.1e} | "
+                        f"reference failed: {exc} | | not compared |")
+            continue
+        diff = abs(r.mu_ratio - mu)
+        ratios.append(diff / (r.error + bar) if diff > 0.0 else 0.0)
+        if diff <= r.error + bar:
+            counts["agree"] += 1
+            continue
+        long = max(RS_LONG, RS_LONGER * transient)
+        try:
+            mu2, bar2 = _rate_state_reference(p, long, RS_TIGHT)
+            moved = abs(r.mu_ratio - mu2) <= r.error + bar2
+            second = f"{mu2:.10f} +- {bar2:.1e}"
+        except RuntimeError as exc:  # not shown to be the solver's: open
+            moved, second = False, f"reference failed: {exc}"
+        counts["moved" if moved else "open"] += 1
+        rows.append(f"| {label} | {solver} | {r.mu_ratio:.10f} +- {r.error:.1e} | "
+                    f"{mu:.10f} +- {bar:.1e} | {second} ({long} periods) | "
+                    f"{'moves to the solver' if moved else 'OPEN'} |")
+    apart = ", ".join(f"{v} {k}" for k, v in sorted(statuses.items())) or "none"
+    median = f"{np.median(ratios):.2g}" if ratios else "nan"
+    summary = (f"Rate-and-state: {count} points; {counts['agree']} agree (|difference| over "
+               f"error + bar at the {len(ratios)} compared: median {median}, largest "
+               f"{max(ratios, default=math.nan):.3g}), {counts['untrusted']} not periodic and "
+               f"trusted (not compared: {apart}), {counts['failed']} the reference fails on; "
+               f"of the disagreements, {counts['moved']} move to the solver at rtol "
+               f"{RS_TIGHT:g} after at least {RS_LONG} periods, {counts['open']} open.")
     return [summary], rows
 
 
@@ -276,6 +397,7 @@ def main() -> None:
     parser.add_argument("--mdr", type=int, default=150)
     parser.add_argument("--mdr-driven", type=int, default=150)
     parser.add_argument("--static", type=int, default=96)
+    parser.add_argument("--rate-state", type=int, default=48)
     parser.add_argument("--write", action="store_true")
     args = parser.parse_args()
     start = time.perf_counter()
@@ -296,6 +418,11 @@ def main() -> None:
         summary, static_rows = static(args.seed, args.static)
         print(*summary, *static_rows, sep="\n", flush=True)
         lines += summary
+    rs_rows = []
+    if args.rate_state > 0:
+        summary, rs_rows = rate_state(args.seed, args.rate_state)
+        print(*summary, *rs_rows, sep="\n", flush=True)
+        lines += summary
     lines = [f"- {line}" for line in lines]
     if flat_rows:
         lines += ["", "The flat punch's disagreements, looked at again:", "",
@@ -306,8 +433,15 @@ def main() -> None:
         lines += ["", "Static above kinetic, the disagreements looked at again:", "",
                   "| (alpha, beta, a, V, zeta, s_r, start) | solver | mu_ratio | reference "
                   f"({STATIC_STEPS} steps) | reference ({2 * STATIC_STEPS} steps, "
-                  f"{STATIC_LONG} periods) | verdict |", "|---|---|---|---|---|---|",
+                  f"{STATIC_LONG} periods) | switches as events | verdict |",
+                  "|---|---|---|---|---|---|---|",
                   *static_rows]
+    if rs_rows:
+        lines += ["", "Rate-and-state, the disagreements looked at again (and the points not "
+                  "compared):", "",
+                  "| (alpha, beta, A, V, zeta, eta_c; a, b/a, d_c, v_ref, law[, alpha_ld]) | "
+                  "solver | mu_ratio | reference (rtol 1e-8) | reference (rtol "
+                  f"{RS_TIGHT:g}) | verdict |", "|---|---|---|---|---|---|", *rs_rows]
     if mdr_rows:
         lines += ["", "The curved tips' disagreements, looked at again:", "",
                   "| (alpha, beta, a, V, n, zeta[; drive]) | solver | mu_ratio | reference "
@@ -319,7 +453,8 @@ def main() -> None:
         append_run(RESULTS, "Fresh random points against the independent references",
                    "PYTHONPATH=src python benchmarks/differential_campaign.py --seed "
                    f"{args.seed} --per-regime {args.per_regime} --mdr {args.mdr} --mdr-driven "
-                   f"{args.mdr_driven} --static {args.static} --write",
+                   f"{args.mdr_driven} --static {args.static} --rate-state {args.rate_state} "
+                   "--write",
                    f"{took:.0f} s in all; the solvers at their default settings.", lines)
 
 

@@ -184,6 +184,54 @@ def static_kinetic_points(n: int, seed) -> list[tuple]:
     return out
 
 
+def rate_state_points(n: int, seed) -> list[dict]:
+    """``n`` random points of every regime the rate-and-state reference covers (``seed``:
+    anything ``numpy.random.default_rng`` takes), as dicts of the arguments of
+    ``rate_state_run`` (``alpha, beta, amplitude, V, a, b, d_c, v_ref, alpha_ld, law, zeta,
+    eta_c``).
+
+    By the index ``i``: a rigid contact (``beta = inf``) every fourth point (``i % 4 ==
+    3``), a contact dashpot ``eta_c`` log-uniform 0.02..0.4 every fourth (``i % 4 == 1``,
+    a finite contact), jumping (``amplitude`` 1.05..1.5, else 0.1..0.95) every third (``i %
+    3 == 0``).  Drawn: velocity weakening (``b/a`` 1.05..1.6) or strengthening (0.3..0.95)
+    and the aging or the slip law, each half of the points; the Linker-Dieterich coupling
+    (``alpha_ld`` 0.1..0.3) at half of the points that do not jump (it needs ``amplitude <
+    1``); a pin dashpot (``zeta`` log-uniform 0.02..0.3) at two thirds.  ``alpha``
+    0.2..3.2, ``beta - alpha`` 1..10, ``V`` 0.1..2, ``d_c`` 0.01..0.1, ``v_ref`` 0.32..2, all
+    log-uniform; ``a`` 0.01..0.05 (finite contact) and, rigid, 0.032..0.079 or with jumping
+    0.05..0.079: where the reference's rigid contact is well behaved (it can fail at ``a =
+    0.02`` with jumping and at ``a <= 0.01``, the ``rate_state_run`` docstring).  Each
+    point passes ``vibrofriction.Dimensionless``.
+    """
+    rng = np.random.default_rng(seed)
+    out = []
+    for i in range(n):
+        rigid, damped, jumping = i % 4 == 3, i % 4 == 1, i % 3 == 0
+        alpha = _log_uniform(rng, 0.2, 3.2)
+        beta = math.inf if rigid else alpha + _log_uniform(rng, 1.0, 10.0)
+        amplitude = float(rng.uniform(1.05, 1.5) if jumping else rng.uniform(0.1, 0.95))
+        V = _log_uniform(rng, 0.1, 2.0)
+        zeta = _log_uniform(rng, 0.02, 0.3) if rng.uniform() < 2.0 / 3.0 else 0.0
+        eta_c = _log_uniform(rng, 0.02, 0.4) if damped else 0.0
+        if rigid:
+            a = _log_uniform(rng, 0.05 if jumping else 0.032, 0.079)
+        else:
+            a = _log_uniform(rng, 0.01, 0.05)
+        weakening = rng.uniform() < 0.5
+        b = a * float(rng.uniform(1.05, 1.6) if weakening else rng.uniform(0.3, 0.95))
+        law = str(rng.choice(["aging", "slip"]))
+        alpha_ld = float(rng.uniform(0.1, 0.3)) \
+            if not jumping and rng.uniform() < 0.5 else 0.0
+        p = dict(alpha=alpha, beta=beta, amplitude=amplitude, V=V, a=a, b=b,
+                 d_c=_log_uniform(rng, 0.01, 0.1), v_ref=_log_uniform(rng, 0.32, 2.0),
+                 alpha_ld=alpha_ld, law=law, zeta=zeta, eta_c=eta_c)
+        vf.Dimensionless(alpha=alpha, beta=beta, amplitude=amplitude, zeta=zeta, eta_c=eta_c,
+                         rs_a=a, rs_b=b, rs_d_c=p["d_c"], rs_v_ref=p["v_ref"],
+                         rs_alpha_ld=alpha_ld, rs_law=law)
+        out.append(p)
+    return out
+
+
 def reference_mu(
     alpha: float,
     beta: float,

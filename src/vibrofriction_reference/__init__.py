@@ -71,7 +71,10 @@ no contact dashpot), each with an error bar from two runs:
   resolution) and :func:`static_kinetic_history`.  Fixed steps, second order: velocity
   Verlet with a return mapping that keeps a stuck/slipping flag (finite contact), Moreau
   time-stepping (rigid), the drop of the force placed inside its step.  ``sigma = 1`` is
-  Coulomb's law, the model of the two peers above;
+  Coulomb's law, the model of the two peers above.  :func:`static_kinetic_events_run`
+  (:mod:`.static_events`) is the same law phase by phase with ``solve_ivp``, every switch
+  an event: no step to place a switch in, where grazing switches and rigid touch-downs
+  leave the fixed steps an error that does not fall smoothly;
 * rate-and-state friction (``a, b, d_c, v_ref``, the aging or the slip law, the
   Linker-Dieterich coupling ``alpha_ld``; an elastic or rigid contact, the contact's
   dashpot ``eta_c``): :func:`rate_state_run` (the mean over a window
@@ -113,6 +116,7 @@ from .friction_laws import (
 from .inplane import InplaneMean, InplaneRun, inplane_mean, inplane_run
 from .mdr import MDRMean, MDRReference, mdr_mean, mdr_reference
 from .model import INITIAL_REST, INITIAL_SLIDING, steps_per_drive_period
+from .static_events import StaticEventsRun, static_kinetic_events_run
 
 __all__ = [
     "INITIAL_REST",
@@ -126,6 +130,7 @@ __all__ = [
     "RateStateHistory",
     "RateStateRun",
     "ReferenceHistory",
+    "StaticEventsRun",
     "StaticKineticHistory",
     "StaticKineticRun",
     "inplane_mean",
@@ -140,6 +145,7 @@ __all__ = [
     "return_mapping_periods",
     "solve_ivp_mu",
     "solve_ivp_run",
+    "static_kinetic_events_run",
     "static_kinetic_history",
     "static_kinetic_mu",
     "static_kinetic_run",

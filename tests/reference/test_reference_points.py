@@ -9,7 +9,13 @@ import numpy as np
 import pytest
 
 import vibrofriction as vf
-from reference_points import REGIMES, random_points, reference_mu, v_star
+from reference_points import (
+    REGIMES,
+    random_points,
+    rate_state_points,
+    reference_mu,
+    v_star,
+)
 from vibrofriction_reference import (
     return_mapping_mu,
     return_mapping_periods,
@@ -71,6 +77,41 @@ def test_random_points_lie_in_their_regime(regime):
 def test_jumping_regime_covers_alpha_above_one():
     alphas = [p[0] for p in random_points(0, 60, "jumping_above_vstar")]
     assert min(alphas) < 0.5 and max(alphas) > 5.0
+
+
+def test_rate_state_points_are_seeded_and_cover_every_regime():
+    points = rate_state_points(96, [11, 91])
+    assert points == rate_state_points(96, [11, 91])
+    assert points != rate_state_points(96, [12, 91])
+    for i, p in enumerate(points):
+        rigid, jumping = math.isinf(p["beta"]), p["amplitude"] > 1.0
+        assert rigid == (i % 4 == 3) and (p["eta_c"] > 0.0) == (i % 4 == 1)
+        assert jumping == (i % 3 == 0)
+        assert 1.05 <= p["amplitude"] <= 1.5 if jumping else 0.1 <= p["amplitude"] <= 0.95
+        assert 0.2 <= p["alpha"] <= 3.2 and 0.1 <= p["V"] <= 2.0
+        assert rigid or 1.0 <= p["beta"] - p["alpha"] <= 10.0
+        # the rigid contact only where the reference is well behaved (rate_state_run)
+        if rigid:
+            assert (0.05 if jumping else 0.032) <= p["a"] <= 0.079
+        else:
+            assert 0.01 <= p["a"] <= 0.05
+        assert 0.3 <= p["b"] / p["a"] <= 1.6 and not 0.95 < p["b"] / p["a"] < 1.05
+        assert p["eta_c"] == 0.0 or 0.02 <= p["eta_c"] <= 0.4
+        assert p["zeta"] == 0.0 or 0.02 <= p["zeta"] <= 0.3
+        assert p["alpha_ld"] == 0.0 or (not jumping and 0.1 <= p["alpha_ld"] <= 0.3)
+        assert 0.01 <= p["d_c"] <= 0.1 and 0.32 <= p["v_ref"] <= 2.0
+    # weakening and strengthening, both laws, the coupling and the pin dashpot on and off
+    assert {p["b"] > p["a"] for p in points} == {True, False}
+    assert {p["law"] for p in points} == {"aging", "slip"}
+    assert {p["alpha_ld"] > 0.0 for p in points} == {True, False}
+    assert {p["zeta"] > 0.0 for p in points} == {True, False}
+    # ... and each of them at rigid, damped and jumping points too
+    for kind in (lambda p: math.isinf(p["beta"]), lambda p: p["eta_c"] > 0.0,
+                 lambda p: p["amplitude"] > 1.0):
+        some = [p for p in points if kind(p)]
+        assert {p["b"] > p["a"] for p in some} == {True, False}
+        assert {p["law"] for p in some} == {"aging", "slip"}
+        assert {p["zeta"] > 0.0 for p in some} == {True, False}
 
 
 # --- the reference's per-period means ------------------------------------------------
