@@ -122,8 +122,8 @@ class _Law1:
         else:
             out = []
         for fn, _ in out:
-            fn.terminal = True
-            fn.direction = -1
+            fn.terminal = True  # type: ignore[attr-defined]  # read by solve_ivp
+            fn.direction = -1  # type: ignore[attr-defined]
         return out
 
     def after_stick(self, t, y, v, s):

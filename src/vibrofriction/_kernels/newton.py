@@ -224,7 +224,7 @@ def spectral_radius(J, nd):
 
 
 @jit
-def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
+def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, jac_out):
     """Solve ``P^p(z) = z`` on the section by Newton's method with the exact Jacobian
     (:func:`.tangent.period_map_tangent`): quadratic convergence, no differences.
 
@@ -260,7 +260,8 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
     moduli, not the modulus of the sum, as the terms of the next step need not cancel as
     this one's do.
     The phase-time fractions of ``acc`` are then those of the iterate, within about
-    ``|dz|`` of the orbit's.
+    ``|dz|`` of the orbit's.  On success ``jac_out`` holds the Jacobian ``DP^p`` of the last
+    iterate's map (in the free coordinates of the orbit's phase, :func:`_free_dimension`).
     """
     ph_in = ph
     alpha = M[M_ALPHA]
@@ -331,6 +332,7 @@ def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc):
             lam = spectral_radius(J, nd)
             if not lam < UNSTABLE:
                 break
+            jac_out[:, :] = J
             if converged:
                 return True, y0, xd0, e0, ph, events, work, lam, shift, mu_first, mu
             for j in range(nd):
@@ -366,12 +368,13 @@ def orbit_multiplier(z, p, M, max_events, acc):
 
 
 @jit
-def try_newton(z, dprev, k, M, tol_state, max_events, win):
+def try_newton(z, dprev, k, M, tol_state, max_events, win, jac_out):
     """Newton on the period whose section distance is smallest where it stands out
     (:data:`PERIOD_EVIDENCE`), then on ``p = 1``.
 
-    On success ``z`` becomes the orbit's state and ``win`` the accumulators of its ``p``
-    periods from there.  Returns ``(p, events, work, lam, shift)`` (:func:`newton_orbit`)
+    On success ``z`` becomes the orbit's state, ``win`` the accumulators of its ``p``
+    periods from there and ``jac_out`` the Jacobian of its map.  Returns ``(p, events,
+    work, lam, shift)`` (:func:`newton_orbit`)
     with ``p = 0`` if no attracting orbit was found.
     """
     pbest = 1
@@ -388,7 +391,7 @@ def try_newton(z, dprev, k, M, tol_state, max_events, win):
         if attempt == 1 and pbest == 1:
             break
         ok, y, xd, e, ph, ev, w, lam, shift, mu_first, mu = newton_orbit(
-            z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win)
+            z[0], z[1], z[2], int(z[3]), p, M, 0.1 * tol_state, max_events, win, jac_out)
         events += ev
         work += w
         if ok:

@@ -1806,11 +1806,11 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
 
 
 @jit
-def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
+def _follow(P, sm, s, phase, J, rtol, hmax, W, cnt, max_events, max_it):
     """The motion from ``sm`` (in place; its phase hint in ``W[W_MODE, 0]``) by plain periods
-    at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until it comes to the orbit ``s``
-    (multiplier ``mult``) in the orbit's phase ``phase`` as the 1-D solver's motion comes to
-    Newton's orbit (:func:`.steady.closing_in`), at most ``max_it`` periods.  Where sliding
+    at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until it comes to the orbit ``s`` (the
+    Jacobian of its map ``J``) in the orbit's phase ``phase`` as the 1-D solver's motion
+    comes to Newton's orbit (:func:`.steady.closing_in`), at most ``max_it`` periods.  Where sliding
     and stick-slip coexist (a static circle above the kinetic one), Newton's iterate may
     converge to an orbit the motion does not approach.  Returns ``(reached, periods)``.
     """
@@ -1819,17 +1819,23 @@ def _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events, max_it):
     k = P[P_K]
     rt = max(rtol, ROUGH_RTOL)
     scale = 1.0 + _dist(s, np.zeros(N_S), k)
-    last, run = math.inf, 0
+    zero = np.zeros(N_S)
+    run = 0
     for it in range(max_it):
+        same = W[W_MODE, 0] == phase  # the step's start in the orbit's phase
         ok, _, _ = period_map(P, sm, s2, rt, rt, hmax, W, acc, cnt, max_events)
         if not ok:
             return False, it + 1
+        W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
+        same = same and W[W_MODE, 0] == phase
+        d = _dist(s2, s, k) / scale if W[W_MODE, 0] == phase else math.inf
+        # the step's miss from the one the orbit's linearisation predicts, relative to it
+        step = _dist(s2, sm, k)
+        miss = _dist(s2 - s - J @ (sm - s), zero, k) / step if same and step > 0.0 \
+            else math.inf
         for i in range(N_S):
             sm[i] = s2[i]
-        W[W_MODE, 0] = W[W_MODE, 1]  # the phase goes on with the state
-        d = _dist(sm, s, k) / scale if W[W_MODE, 0] == phase else math.inf
-        run, arrived = closing_in(d, last, run, mult)
-        last = d
+        run, arrived = closing_in(d, miss, run)
         if arrived:
             return True, it + 1
     return False, max_it
@@ -2039,7 +2045,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
             phase = W[W_MODE, 0]
             sm = s0.copy()
             W[W_MODE, 0] = hint0
-            reached, more = _follow(P, sm, s, phase, mult, rtol, hmax, W, cnt, max_events,
+            reached, more = _follow(P, sm, s, phase, J, rtol, hmax, W, cnt, max_events,
                                     max(0, min(FALLBACK_ITER, budget - periods)))
             periods += more
             if reached:

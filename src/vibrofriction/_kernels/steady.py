@@ -92,7 +92,7 @@ from .codes import (
 )
 from .integrate import TWO_PI, contact_force, initial_state, to_kernel_frame, to_lab_frame
 from .jit import jit
-from .newton import NEUTRAL, try_newton
+from .newton import NEUTRAL, _free_dimension, try_newton
 from .period import (
     A_F,
     A_FLIGHT,
@@ -137,12 +137,14 @@ SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stic
 # sliding and stick-slip coexist there, and Newton's iterate may converge to an attractor
 # that the motion does not approach (seed 1130's campaign, benchmarks/results)
 FOLLOW_DISTANCE = 1e-5
-# ... or, for an orbit of one period, once within LINEAR_DISTANCE the motion's distance to it
-# has shrunk at least as fast as the orbit's multiplier says (its modulus times
-# 1 + LINEAR_SLACK) in LINEAR_PERIODS periods running: the motion is then in the orbit's
-# linear neighbourhood, on its way in (a slowly attracting orbit would otherwise take
-# thousands of periods to come within FOLLOW_DISTANCE)
-LINEAR_DISTANCE, LINEAR_SLACK, LINEAR_PERIODS = 1e-3, 0.05, 3
+# ... or, for an orbit of one period that sticks, once within LINEAR_DISTANCE each period's
+# step of the motion has been the one the orbit's linearisation predicts (the Jacobian of
+# its map applied to the motion's offset from it) to LINEAR_MISS of the step, in
+# LINEAR_PERIODS periods running: the motion is then in the orbit's linear neighbourhood,
+# on its way in (an orbit that attracts slowly would otherwise take thousands of periods
+# to come within FOLLOW_DISTANCE; a motion bound elsewhere misses by 10 % and more).  The
+# sliding orbit answers only by the certificate from the motion's own state (_run)
+LINEAR_DISTANCE, LINEAR_MISS, LINEAR_PERIODS = 1e-2, 0.02, 3
 
 
 @jit
@@ -160,14 +162,15 @@ def _start(init_kind, y0, xd0, e0, ph0, M, offset):
 
 
 @jit
-def _newton_from(z, dprev, k, M, tol_state, max_events, count, win, out_f):
+def _newton_from(z, dprev, k, M, tol_state, max_events, count, win, out_f, jac):
     """:func:`.newton.try_newton` from a copy of ``z``, its events counted and its drive
     periods added to ``out_f[O_WORK]``: ``(zn, p, lam, shift, mu_first, mu)``, ``zn`` the
-    iterate, ``p = -1`` where the event budget is spent.
+    iterate, ``p = -1`` where the event budget is spent; ``jac`` the Jacobian of its map.
     """
     zn = z.copy()
     pn, ev, work, lam, shift, mu_first, mu = try_newton(zn, dprev, k, M, tol_state,
-                                                        max_events - count[C_EVENTS], win)
+                                                        max_events - count[C_EVENTS], win,
+                                                        jac)
     count[C_EVENTS] += ev
     out_f[O_WORK] += work
     if count[C_EVENTS] > max_events:
@@ -187,7 +190,7 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     ``out_f[O_WORK]``.
     """
     zn, pn, lam, shift, mu_first, mu = _newton_from(z, dprev, k, M, tol_state, max_events,
-                                                    count, win, out_f)
+                                                    count, win, out_f, np.empty((3, 3)))
     if pn > 0:
         # the first map from z is the motion's own next pn periods
         newton_result(mu, k + pn, lam, shift, mu_first, out_f)
@@ -198,16 +201,17 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
 
 @jit
 def _newton_candidate(z, dprev, k, M, tol_state, max_events, count, cand_z, cand_win,
-                      cand_out, out_f):
+                      cand_out, cand_jac, out_f):
     """Newton on the period map at period ``k`` (:func:`.newton.try_newton`) without moving
     the motion: an attracting orbit found is kept as the candidate (its section state
-    ``cand_z``, window ``cand_win`` and result ``cand_out``) that :func:`_run` returns once
-    the motion itself comes within :data:`FOLLOW_DISTANCE` of it.  Returns its period
+    ``cand_z``, window ``cand_win``, result ``cand_out`` and the Jacobian of its map
+    ``cand_jac``) that :func:`_run` returns once the motion itself comes to it
+    (:func:`closing_in`).  Returns its period
     (0: none kept, -1: the event budget is spent); ``out_f`` keeps only the work added.
     """
     win = np.zeros(N_ACC)
     zn, pn, lam, shift, mu_first, mu = _newton_from(z, dprev, k, M, tol_state, max_events,
-                                                    count, win, out_f)
+                                                    count, win, out_f, cand_jac)
     if pn < 0:
         return -1
     if pn == 0 or not lam < NEUTRAL:
@@ -231,18 +235,35 @@ def _to_candidate(z, cand_z, M):
 
 
 @jit
-def closing_in(d, last, run, mult):
-    """One period of a motion followed to an orbit (multiplier modulus ``mult``; 0 where the
-    contraction test does not apply): its relative distance ``d`` now and ``last`` a period
-    before, and ``run`` the periods it has closed in at the multiplier's rate within
-    :data:`LINEAR_DISTANCE`.  Returns ``(run, reached)``: reached within
+def _linear_miss(z, zprev, cand_z, jac, M):
+    """How far this period's step of the motion (from ``zprev`` to ``z``) misses the one the
+    linearisation of the candidate orbit's map predicts (``jac`` applied to the offset from
+    ``cand_z``), relative to the step; inf where a state is in another phase.
+    """
+    ph = int(cand_z[3])
+    if int(z[3]) != ph or int(zprev[3]) != ph:
+        return math.inf
+    nd = _free_dimension(ph, M)
+    w = np.array([M[M_ALPHA], 1.0, spring(M)])
+    miss, size = 0.0, 0.0
+    for i in range(nd):
+        pred = 0.0
+        for j in range(nd):
+            pred += jac[i, j] * (zprev[j] - cand_z[j])
+        miss += w[i] * abs(z[i] - cand_z[i] - pred)
+        size += w[i] * abs(z[i] - zprev[i])
+    return miss / size if size > 0.0 else math.inf
+
+
+@jit
+def closing_in(d, miss, run):
+    """One period of a motion followed to an orbit: its relative distance ``d`` to it, the
+    ``miss`` of its step from the one the orbit's linearisation predicts, relative to the
+    step (inf where not known), and ``run`` the periods running within :data:`LINEAR_DISTANCE` with
+    the miss within :data:`LINEAR_MISS`.  Returns ``(run, reached)``: reached within
     :data:`FOLLOW_DISTANCE`, or after :data:`LINEAR_PERIODS` such periods running.
     """
-    if d <= LINEAR_DISTANCE and last <= LINEAR_DISTANCE \
-            and d <= mult * (1.0 + LINEAR_SLACK) * last:
-        run += 1
-    else:
-        run = 0
+    run = run + 1 if d <= LINEAR_DISTANCE and miss <= LINEAR_MISS else 0
     return run, d <= FOLLOW_DISTANCE or run >= LINEAR_PERIODS
 
 
@@ -325,9 +346,10 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     cand_z = np.zeros(5)  # follow: the candidate orbit found by Newton, and its result
     cand_win = np.zeros(N_ACC)
     cand_out = np.zeros(out_f.shape[0])
+    cand_jac = np.zeros((3, 3))
     cand_p = 0
     cand_d = math.inf  # the motion's distance to it at the last attempt
-    cand_last, cand_run = math.inf, 0  # ... at the last period; periods contracting running
+    cand_run = 0  # periods running on the orbit's linearisation (closing_in)
     ring_z[0, :] = z
     # V = 0: no Newton.  A held body has a continuum of stuck orbits (any preload in the
     # band); Newton's period map is singular along it and walks to the band's edge, an
@@ -366,11 +388,12 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
         reached = _to_candidate(z, cand_z, M) if cand_p > 0 else math.inf
-        cand_run, arrived = closing_in(reached, cand_last, cand_run,
-                                       cand_out[O_MULT] if cand_p == 1 else 0.0)
-        cand_last = reached
-        if arrived:
-            # the motion has come to the candidate orbit: its answer; the settling time
+        miss = _linear_miss(z, ring_z[(k - 1) % nring], cand_z, cand_jac, M) \
+            if cand_p == 1 else math.inf
+        cand_run, arrived = closing_in(reached, miss, cand_run)
+        if arrived and not (certify and pure_forward_slip(cand_win)):
+            # the motion has come to the candidate orbit: its answer (the sliding orbit's
+            # only by the certificate from the motion's state, above); the settling time
             # from here at the orbit's contraction, the relative distance to the error
             work = out_f[O_WORK]
             out_f[:] = cand_out
@@ -387,13 +410,13 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             # from it since the last attempt (it may be heading elsewhere)
             if cand_p == 0 or reached > cand_d:
                 pn = _newton_candidate(z, dprev, k, M, tol_state, max_events, count, cand_z,
-                                       cand_win, cand_out, out_f)
+                                       cand_win, cand_out, cand_jac, out_f)
                 if pn < 0:
                     return ST_FAILED, 0, k
                 if pn > 0:
                     cand_p = pn
                     reached = _to_candidate(z, cand_z, M)
-                    cand_last, cand_run = reached, 0
+                    cand_run = 0
             cand_d = reached
         elif neutral_end > 0:
             # near a neutral orbit found by Newton the motion runs on: the running
