@@ -137,10 +137,10 @@ SLIDING_SETTLE = 16  # periods in which a proven sliding looks for its last stic
 # sliding and stick-slip coexist there, and Newton's iterate may converge to an attractor
 # that the motion does not approach (seed 1130's campaign, benchmarks/results)
 FOLLOW_DISTANCE = 1e-5
-# ... or, for an orbit of one period that sticks, once within LINEAR_DISTANCE each period's
-# step of the motion has been the one the orbit's linearisation predicts (the Jacobian of
+# ... or, for an orbit that sticks, once within LINEAR_DISTANCE each step of the motion over
+# the orbit's period has been the one the orbit's linearisation predicts (the Jacobian of
 # its map applied to the motion's offset from it) to LINEAR_MISS of the step, in
-# LINEAR_PERIODS periods running: the motion is then in the orbit's linear neighbourhood,
+# LINEAR_PERIODS such steps running: the motion is then in the orbit's linear neighbourhood,
 # on its way in (an orbit that attracts slowly would otherwise take thousands of periods
 # to come within FOLLOW_DISTANCE; a motion bound elsewhere misses by 10 % and more).  The
 # sliding orbit answers only by the certificate from the motion's own state (_run)
@@ -236,7 +236,7 @@ def _to_candidate(z, cand_z, M):
 
 @jit
 def _linear_miss(z, zprev, cand_z, jac, M):
-    """How far this period's step of the motion (from ``zprev`` to ``z``) misses the one the
+    """How far the motion's step over the orbit's period (``zprev`` to ``z``) misses the one the
     linearisation of the candidate orbit's map predicts (``jac`` applied to the offset from
     ``cand_z``), relative to the step; inf where a state is in another phase.
     """
@@ -350,6 +350,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
     cand_p = 0
     cand_d = math.inf  # the motion's distance to it at the last attempt
     cand_run = 0  # periods running on the orbit's linearisation (closing_in)
+    cand_next = 0  # ... the next one, an orbit's period on
     ring_z[0, :] = z
     # V = 0: no Newton.  A held body has a continuum of stuck orbits (any preload in the
     # band); Newton's period map is singular along it and walks to the band's edge, an
@@ -388,9 +389,13 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
             out_f[O_WORK] += w
             return ST_PERIODIC, p, k
         reached = _to_candidate(z, cand_z, M) if cand_p > 0 else math.inf
-        miss = _linear_miss(z, ring_z[(k - 1) % nring], cand_z, cand_jac, M) \
-            if cand_p == 1 else math.inf
-        cand_run, arrived = closing_in(reached, miss, cand_run)
+        arrived = reached <= FOLLOW_DISTANCE
+        if cand_p > 0 and k >= cand_p and (cand_run == 0 or k == cand_next):
+            # the step over the orbit's period from the same point of it (an orbit of p
+            # periods: every p-th period, once the motion is at the candidate's point)
+            miss = _linear_miss(z, ring_z[(k - cand_p) % nring], cand_z, cand_jac, M)
+            cand_run, arrived = closing_in(reached, miss, cand_run)
+            cand_next = k + cand_p
         if arrived and not (certify and pure_forward_slip(cand_win)):
             # the motion has come to the candidate orbit: its answer (the sliding orbit's
             # only by the certificate from the motion's state, above); the settling time
