@@ -51,7 +51,9 @@ accurate), the analytic Jacobian and time derivative, step control on
 its effect on the friction, ``b dL`` (:func:`_scales`; the section distance weighs it the
 same way).  Lift-off and touch-down are at the closed-form
 phases ``cos tau = -1/A``; the contact segments end (and start) where ``n = CUT_DELTA``,
-where ``|f| = n |m|`` is below round-off of the averages.
+where ``|f| = n |m|`` is below round-off of the averages.  While the load grows a finite
+contact's step is at most ``LOADING_GROWTH n/n'`` (:func:`_loading_step`): from a
+touch-down the steps grow geometrically, and the error control sees the error of ``m`` there.
 
 The steady state (:func:`rs_steady_state`): ``SETTLE`` periods from the start (at the loose
 tolerance ``LOOSE_RTOL``: they only approach the orbit), then Newton's method on the period
@@ -73,8 +75,10 @@ tolerances plus the next Newton step's change of the mean (the integration error
 propagated and the Newton residual).  Otherwise (a response not locked to the drive:
 self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response, an
 orbit that grows however slowly) the motion is averaged over doubling windows, as the event
-solver does, and ``AVERAGED`` is said with the windows' disagreement as the error, never
-``PERIODIC``.  Where the motion sits
+solver does, and ``AVERAGED`` is said, never ``PERIODIC``, with the windows' disagreement
+(at least ``10 rtol``) plus the integration's error as the error: twice the change of the
+last period's mean at ``rtol/REFINE`` from the same start (:func:`_averaged_error`, as the
+periodic answer's).  Where the motion sits
 on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
 equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
 """
@@ -163,6 +167,8 @@ H_MAX = 0.25 * math.pi  # the longest step
 H_MIN = 1e-14  # a step below this (relative to 2 pi) has failed
 MAX_STEPS = 200_000  # steps per period before the integration is said to have failed
 SAFETY = 0.9
+LOADING_GROWTH = 2.0  # a finite contact's step while the load grows: at most this many
+# n/n' (:func:`_loading_step`; the load at most triples in a step)
 REFINE = 20.0  # the refinement's tolerance is rtol/REFINE
 ERROR_SAFETY = 2.0
 NEWTON_ITERATIONS = 16
@@ -1102,13 +1108,19 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
 
 @jit
 def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangent, tw):
-    """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``)."""
+    """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``).
+
+    A finite contact's step while the load grows is at most :func:`_loading_step`.
+    """
     ws, K, J, M, piv, znew = work[0], work[1], work[2], work[3], work[4], work[5]
     T, Tnew = tw[0], tw[1]
     t = t0
     steps = 0
+    loading = mode == CONTACT or mode == DAMPED
     while t < t1:
         hh = min(hbox[0], H_MAX)
+        if loading:
+            hh = min(hh, _loading_step(P, t))
         last = t + hh >= t1 * (1.0 - 1e-15) or t + hh >= t1
         if last:
             hh = t1 - t
@@ -1136,6 +1148,33 @@ def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangen
             fac = 0.2 if not math.isfinite(err) else max(0.2, SAFETY * err ** -0.25)
             hbox[0] = hh * fac
     return True
+
+
+@jit
+def _loading_step(P, t):
+    """The longest step from ``t`` of a finite contact (with or without its dashpot) while the
+    load grows: ``LOADING_GROWTH n/n'`` (no limit where ``n' <= 0``).
+
+    ``m' = (k (x' - w') - m n')/n`` has the rate ``n'/n`` in ``m`` beside the law's ``k
+    w_m/n``: it is ``1/(tau - tau_on)`` after a touch-down, a singular point of the equation
+    at which only the solution on the slow manifold is finite, not a stiffness of a fast
+    transient.  A Rosenbrock step freezes its Jacobian at the step's start: a step from the
+    touch-down (``n = CUT_DELTA``) to where ``n`` is many times larger takes that rate at its
+    start as the step's, puts ``m`` on the manifold ``k (x' - w') = m n'`` at the step's end
+    (whereas the motion's ``m`` there lags it by about as much as it moved: stuck, ``m'`` is
+    half the manifold's), and both of its solutions agree on that, so the error estimate
+    does not see it (measured: a step from ``n = 1e-9`` to ``0.026`` accepted at ``rtol =
+    1e-7`` left an error of 0.015 in ``m``).  With ``n`` growing at most ``1 +
+    LOADING_GROWTH`` times a step the Jacobian holds over the step and the error estimate
+    sees the error; the steps grow geometrically from the touch-down (measured on that
+    point: 354 steps and 52 rejected a period, against 357 and 55 of an unlimited step that
+    left the error).  A rigid contact's ``m' = R/w_m`` has no ``1/n``.
+    """
+    A = P[P_A]
+    nd = -A * math.sin(t)
+    if nd <= 0.0:
+        return math.inf
+    return LOADING_GROWTH * (1.0 + A * math.cos(t)) / nd
 
 
 @jit
@@ -1570,6 +1609,23 @@ def _refine(P, z, mu_coarse, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
 
 
 @jit
+def _averaged_error(P, z, hbox, mu, rtol, work, count, tw, log, lp):
+    """The integration's error of an averaged answer: ``ERROR_SAFETY`` times the change of
+    the mean ``mu`` of the period from ``z`` (integrated at ``rtol`` from the step size
+    ``hbox``) at ``rtol/REFINE`` (``inf`` where that integration fails).  ``z`` and
+    ``hbox`` are used up.
+
+    The periodic answer's error measures the same change of its orbit's mean
+    (:func:`_refine`); the windows' disagreement does not contain it (every period of the
+    windows carries the same integration error).
+    """
+    ok, muf = _map_mean(P, z, rtol / REFINE, hbox, work, count, tw, log, lp)
+    if not ok:
+        return math.inf
+    return ERROR_SAFETY * abs(mu - muf)
+
+
+@jit
 def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     """The steady state from the section state ``z`` (kernels' frame); see the module doc.
 
@@ -1597,6 +1653,8 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
     kchk = np.zeros(64)
     nchk = 0
     next_newton = SETTLE
+    z_last = z.copy()
+    h_last = np.array([hbox[0]])
     period = 0
     settle = math.nan
     failed = False
@@ -1642,6 +1700,8 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
             break
         # the settling periods only approach the orbit (Newton's method corrects): loose
         rt = max(rtol, LOOSE_RTOL) if k < SETTLE else rtol
+        z_last[:] = z  # the period's start and step size (:func:`_averaged_error`)
+        h_last[0] = hbox[0]
         ok, mu = _map_mean(P, z, rt, hbox, work, count, tw, log, lp)
         periods += 1.0
         if not ok:
@@ -1665,6 +1725,9 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
                 if abs(m1 - m0) <= tol_mean:
                     status = ST_AVERAGED
                     settle = float(k)
+                    periods += 1.0
+                    out_f[O_ERR] += _averaged_error(P, z_last, h_last, mu, rtol, work, count,
+                                                    tw, log, lp)
                     break
             if k >= max_periods:
                 break

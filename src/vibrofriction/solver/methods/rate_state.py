@@ -43,7 +43,8 @@ class RateStateMethod:
         to ``rtol/20``, plus the next Newton step's),
         :attr:`~vibrofriction.Status.AVERAGED` where the motion is not locked to the drive
         and the last two doubling windows' means agree within ``tol_mean`` (the error their
-        difference), else not converged or failed (``nan``, ``inf``).
+        difference plus twice the change of the last period's mean at ``rtol/20``, the
+        integration's), else not converged or failed (``nan``, ``inf``).
         """
         out_f, out_i = new_outputs(len(points))
         rs_steady_state_many(points.values, *rate_state_arguments(settings), out_f, out_i)
