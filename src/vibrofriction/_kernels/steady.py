@@ -179,7 +179,7 @@ def _newton_from(z, dprev, k, M, tol_state, max_events, count, win, out_f, jac):
 
 
 @jit
-def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
+def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f, jac):
     """Newton on the period map (:func:`.newton.try_newton`) at period ``k``.
 
     On success the result of the orbit is written (:func:`.average.newton_result`),
@@ -187,10 +187,10 @@ def _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f):
     replaces ``z``, a neutral one leaves ``z`` to the motion (:func:`_run` measures how
     far the motion's mean stays from it).  Returns 0 where no orbit was found, -1 where
     the event budget is spent.  The drive periods integrated are added to
-    ``out_f[O_WORK]``.
+    ``out_f[O_WORK]``; ``jac`` receives the Jacobian of the orbit's map.
     """
     zn, pn, lam, shift, mu_first, mu = _newton_from(z, dprev, k, M, tol_state, max_events,
-                                                    count, win, out_f, np.empty((3, 3)))
+                                                    count, win, out_f, jac)
     if pn > 0:
         # the first map from z is the motion's own next pn periods
         newton_result(mu, k + pn, lam, shift, mu_first, out_f)
@@ -362,7 +362,7 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
         # the start is a neighbour's orbit of one period: Newton's first map is the motion's
         # own first period, so it is tried at once; an orbit that is not found (or neutral)
         # leaves the schedule as it was
-        pn = _newton_jump(z, dprev, 0, M, tol_state, max_events, count, win, out_f)
+        pn = _newton_jump(z, dprev, 0, M, tol_state, max_events, count, win, out_f, cand_jac)
         if pn > 0 and out_f[O_MULT] < NEUTRAL:
             return ST_PERIODIC, pn, 0
         if pn < 0:
@@ -434,7 +434,8 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
                 return ST_PERIODIC, neutral_period, k
         elif k == next_newton and k < max_periods:
             next_newton = k + max(1, k // 2)
-            pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f)
+            pn = _newton_jump(z, dprev, k, M, tol_state, max_events, count, win, out_f,
+                              cand_jac)
             if pn > 0 and out_f[O_MULT] < NEUTRAL:
                 return ST_PERIODIC, pn, k
             if pn > 0 and not neutral_ok:
