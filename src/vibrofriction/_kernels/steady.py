@@ -142,8 +142,9 @@ FOLLOW_DISTANCE = 1e-5
 # its map applied to the motion's offset from it) to LINEAR_MISS of the step, in
 # LINEAR_PERIODS such steps running: the motion is then in the orbit's linear neighbourhood,
 # on its way in (an orbit that attracts slowly would otherwise take thousands of periods
-# to come within FOLLOW_DISTANCE; a motion bound elsewhere misses by 10 % and more).  The
-# sliding orbit answers only by the certificate from the motion's own state (_run)
+# to come within FOLLOW_DISTANCE; a motion bound elsewhere missed by 8 % and more, where a
+# looser test failed).  The sliding orbit answers only by the certificate from the
+# motion's own state (_run)
 LINEAR_DISTANCE, LINEAR_MISS, LINEAR_PERIODS = 1e-2, 0.02, 3
 
 
