@@ -475,14 +475,17 @@ _N_FLOOR = 1e-14
 """Floor of ``n`` inside a contact arc (guards against rounding at its ends)."""
 _N_CUT = 1e-6
 """The cut of a rigid contact (:func:`_arcs`)."""
-_N_CUT_FINITE = 1e-9
-"""The cut of a finite contact. The contact re-forms at the cut unloaded (``e = 0``), so the
-elongation it would have gathered from ``n = 0`` to the cut is lost for the whole arc: an
-error linear in the cut (measured at a jumping weakening point: 0.2119888433, ...9696,
-...9822, ...9835 at cuts 1e-6, 1e-7, 1e-8, 1e-9, Radau at ``rtol = 1e-10``).  With a contact
-dashpot the elongation's rate stays bounded as ``n -> 0`` (``de'/de -> -1/eta_c``), and the
-cut's error is of order ``n`` at the cut over ``eta_c`` (measured: 1.2e-7, 1.2e-8, 1.1e-9
-at cuts 1e-6, 1e-7, 1e-8 with ``eta_c = 0.005``)."""
+_N_CUT_FINITE = 1e-8
+"""The cut of a finite contact without its dashpot. The contact re-forms at the cut unloaded
+(``e = 0``), so the elongation it would have gathered from ``n = 0`` to the cut is lost for
+the whole arc: an error linear in the cut (measured at a jumping weakening point:
+0.2119888433, ...9696, ...9822, ...9835 at cuts 1e-6, 1e-7, 1e-8, 1e-9, Radau at ``rtol =
+1e-10``), about 1e-9 at this cut.  A lower cut costs time where the arc's ends are stiff
+(25 periods at another jumping point: 0.6, 0.9, 2.4 and 7.2 s at cuts 1e-6 to 1e-9)."""
+_N_CUT_DAMPED = 1e-9
+"""The cut with a contact dashpot: the elongation's rate stays bounded as ``n -> 0`` (``de'/de
+-> -1/eta_c``), and the cut's error there is of order ``n`` at the cut over ``eta_c``
+(measured: 1.2e-7, 1.2e-8, 1.1e-9 at cuts 1e-6, 1e-7, 1e-8 with ``eta_c = 0.005``)."""
 """A contact arc ends (starts) where ``n`` falls to (rises from) this value."""
 
 
@@ -727,9 +730,10 @@ def _arcs(A: float, j: int, cut: float = _N_CUT) -> list[tuple[float, float, boo
     """The contact arcs and flights of drive period ``j``: ``(start, end, in_contact)``.
 
     With ``A >= 1`` a contact arc stops (and starts) where ``n`` has fallen to ``cut``
-    (:data:`_N_CUT`, :data:`_N_CUT_FINITE`), short of the closed-form lift-off
-    (touch-down), where the slip rate's stiffness ``1/n`` diverges: the force there is
-    below ``n`` and its impulse below about ``cut**2 / sqrt(A**2 - 1)``.
+    (:data:`_N_CUT`, :data:`_N_CUT_FINITE`, :data:`_N_CUT_DAMPED`), short of the
+    closed-form lift-off (touch-down), where the slip rate's stiffness ``1/n`` diverges:
+    the force there is below ``n`` and its impulse below about ``cut**2 / sqrt(A**2 -
+    1)``.
     """
     t0, t1 = TWO_PI * j, TWO_PI * (j + 1)
     if A < 1.0:
@@ -836,7 +840,8 @@ def _integrate(model: _RateState, periods: int, rtol: float, atol: float,
     stats = {"nfev": 0, "njev": 0, "nlu": 0}
     for j in range(periods):
         z[i_f:] = 0.0
-        for t0, t1, contact in _arcs(model.A, j, _N_CUT if model.rigid else _N_CUT_FINITE):
+        for t0, t1, contact in _arcs(model.A, j, _N_CUT if model.rigid else _N_CUT_DAMPED
+                                          if model.c > 0.0 else _N_CUT_FINITE):
             if not contact:  # lift-off: f = n mu is 0 there, up to n at the cut
                 if model.rigid:
                     z[1] = model.velocity(t0, z, True)  # the state holds x' in flight

@@ -10,10 +10,10 @@ most ``LOADING_GROWTH n/n'`` (:func:`vibrofriction._kernels.rate_state._loading_
 these points are periodic and agree with the reference (``rate_state_run``, with the
 transient and the combined bar of tests/reference/test_differential_rate_state.py).
 
-The reference cuts a finite contact's arcs where ``n`` falls to ``1e-9``, as the solver
-does: at its earlier cut ``1e-6`` the elongation the contact gathers from the touch-down
-to the cut was missing from the whole arc, and its mean off by about 1.5e-7 at these
-points (linear in the cut: at the cuts 1e-6, 1e-7, 1e-8, 1e-9 0.2119888433, 0.2119889696,
+The reference cuts a finite contact's arcs where ``n`` falls to ``1e-8`` (the solver at
+``1e-9``): at its earlier cut ``1e-6`` the elongation the contact gathers from the
+touch-down to the cut was missing from the whole arc, and its mean off by about 1.5e-7 at
+these points (linear in the cut: at the cuts 1e-6, 1e-7, 1e-8, 1e-9 0.2119888433, 0.2119889696,
 0.2119889822, 0.2119889835 at the point (1130, 18), Radau at rtol 1e-10; the solver
 0.2119889834), beyond the combined bar at three of them.
 """
