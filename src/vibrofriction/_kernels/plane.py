@@ -1806,11 +1806,13 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
 
 
 @jit
-def _follow(P, sm, s, phase, J, rtol, hmax, W, cnt, max_events, max_it):
+def _follow(P, sm, s, phase, J, sticks, rtol, hmax, W, cnt, max_events, max_it):
     """The motion from ``sm`` (in place; its phase hint in ``W[W_MODE, 0]``) by plain periods
     at :data:`ROUGH_RTOL` (or ``rtol`` if looser), until it comes to the orbit ``s`` (the
     Jacobian of its map ``J``) in the orbit's phase ``phase`` as the 1-D solver's motion
-    comes to Newton's orbit (:func:`.steady.closing_in`), at most ``max_it`` periods.  Where sliding
+    comes to Newton's orbit (:func:`.steady.closing_in`), at most ``max_it`` periods; an
+    orbit that never sticks (``sticks`` False) only within the follow distance (no
+    certificate here proves that the motion near it never sticks).  Where sliding
     and stick-slip coexist (a static circle above the kinetic one), Newton's iterate may
     converge to an orbit the motion does not approach.  Returns ``(reached, periods)``.
     """
@@ -1831,8 +1833,8 @@ def _follow(P, sm, s, phase, J, rtol, hmax, W, cnt, max_events, max_it):
         d = _dist(s2, s, k) / scale if W[W_MODE, 0] == phase else math.inf
         # the step's miss from the one the orbit's linearisation predicts, relative to it
         step = _dist(s2, sm, k)
-        miss = _dist(s2 - s - J @ (sm - s), zero, k) / step if same and step > 0.0 \
-            else math.inf
+        miss = _dist(s2 - s - J @ (sm - s), zero, k) / step \
+            if sticks and same and step > 0.0 else math.inf
         for i in range(N_S):
             sm[i] = s2[i]
         run, arrived = closing_in(d, miss, run)
@@ -2045,8 +2047,8 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
             phase = W[W_MODE, 0]
             sm = s0.copy()
             W[W_MODE, 0] = hint0
-            reached, more = _follow(P, sm, s, phase, J, rtol, hmax, W, cnt, max_events,
-                                    max(0, min(FALLBACK_ITER, budget - periods)))
+            reached, more = _follow(P, sm, s, phase, J, means[2] > 0.0, rtol, hmax, W, cnt,
+                                    max_events, max(0, min(FALLBACK_ITER, budget - periods)))
             periods += more
             if reached:
                 W[W_MODE, 0] = phase
