@@ -273,6 +273,31 @@ def _static_reference(alpha, beta, a, V, zeta, sr, initial, period, transient, s
     return fine.mu_ratio, fine.error + coarse.error
 
 
+def _halves_spread(period_f: np.ndarray, period_n: np.ndarray) -> float:
+    """The difference of the means of a window's two halves (what a motion not locked to the
+    drive leaves of its mean's uncertainty)."""
+    half = len(period_f) // 2
+    return abs(period_f[:half].sum() / period_n[:half].sum()
+               - period_f[half:].sum() / period_n[half:].sum())
+
+
+def _judge_average(r: vf.FrictionResult, label: str, look, rows: list[str],
+                   pad: str = "") -> str:
+    """A trusted averaged answer against ``look(factor)`` (the reference's mean and bar over
+    ``factor`` times the window; a second look at 4 times): the count it goes to, its row
+    appended where the first look disagrees."""
+    mu, bar = look(1)
+    if abs(r.mu_ratio - mu) <= r.error + bar:
+        return "averaged"
+    mu2, bar2 = look(4)
+    moved = abs(r.mu_ratio - mu2) <= r.error + bar2
+    rows.append(f"| {label} | averaged over {r.periods} periods | "
+                f"{r.mu_ratio:.12f} +- {r.error:.1e} | {mu:.10f} +- {bar:.1e} | "
+                f"{mu2:.10f} +- {bar2:.1e} (4x the window) | {pad}"
+                f"{'moves to the solver' if moved else 'OPEN'} |")
+    return "averaged_moved" if moved else "open"
+
+
 def _static_averaged(alpha, beta, a, V, zeta, sr, initial, r, factor=1, steps=STATIC_STEPS):
     """The reference against a trusted averaged answer: from the same start, after the
     periods the solver ran, averaged over ``factor`` times as many (at least
@@ -283,10 +308,7 @@ def _static_averaged(alpha, beta, a, V, zeta, sr, initial, r, factor=1, steps=ST
     run = static_kinetic_run(alpha, beta, a, V, sr, zeta=zeta, initial=initial,
                              transient_periods=max(1, r.periods), average_periods=window,
                              steps_per_period=steps)
-    half = window // 2
-    spread = abs(run.period_f[:half].sum() / run.period_n[:half].sum()
-                 - run.period_f[half:].sum() / run.period_n[half:].sum())
-    return run.mu_ratio, run.error + spread
+    return run.mu_ratio, run.error + _halves_spread(run.period_f, run.period_n)
 
 
 def static(seed: int, count: int) -> tuple[list[str], list[str]]:
@@ -302,17 +324,8 @@ def static(seed: int, count: int) -> tuple[list[str], list[str]]:
         if r.trusted and r.status is vf.Status.AVERAGED:
             # a mean with an error bar is a claim too: the reference over a longer window
             pt = (alpha, beta, a, V, zeta, sr, initial, r)
-            mu, bar = _static_averaged(*pt)
-            if abs(r.mu_ratio - mu) <= r.error + bar:
-                counts["averaged"] += 1
-                continue
-            mu2, bar2 = _static_averaged(*pt, factor=4, steps=2 * STATIC_STEPS)
-            moved = abs(r.mu_ratio - mu2) <= r.error + bar2
-            counts["averaged_moved" if moved else "open"] += 1
-            rows.append(f"| {label} | averaged over {r.periods} periods | "
-                        f"{r.mu_ratio:.12f} +- {r.error:.1e} | {mu:.10f} +- {bar:.1e} | "
-                        f"{mu2:.10f} +- {bar2:.1e} (4x the window) | | "
-                        f"{'moves to the solver' if moved else 'OPEN'} |")
+            counts[_judge_average(r, label, lambda f, pt=pt: _static_averaged(
+                *pt, factor=f, steps=STATIC_STEPS * (1 if f == 1 else 2)), rows, "| ")] += 1
             continue
         if not r.trusted or r.status not in (vf.Status.PERIODIC, vf.Status.SLIDING):
             counts["untrusted"] += 1
@@ -378,10 +391,7 @@ def _rs_averaged(p: dict, r: vf.FrictionResult, factor: int = 1,
                          p["d_c"], p["v_ref"], alpha_ld=p["alpha_ld"], law=p["law"],
                          zeta=p["zeta"], eta_c=p["eta_c"], transient_periods=r.periods,
                          average_periods=window, rtol=rtol, atol=0.01 * rtol)
-    half = window // 2
-    spread = abs(ref.period_f[:half].sum() / ref.period_n[:half].sum()
-                 - ref.period_f[half:].sum() / ref.period_n[half:].sum())
-    return ref.mu_ratio, ref.error + spread
+    return ref.mu_ratio, ref.error + _halves_spread(ref.period_f, ref.period_n)
 
 
 def _rs_label(p: dict) -> str:
@@ -408,23 +418,13 @@ def rate_state(seed: int, count: int) -> tuple[list[str], list[str]]:
         if r.trusted and r.status is vf.Status.AVERAGED:
             # a mean with an error bar is a claim too: the reference over a longer window
             try:
-                mu, bar = _rs_averaged(p, r)
-                if abs(r.mu_ratio - mu) <= r.error + bar:
-                    counts["averaged"] += 1
-                    continue
-                mu2, bar2 = _rs_averaged(p, r, 4, RS_TIGHT)
+                counts[_judge_average(r, label, lambda f, p=p, r=r: _rs_averaged(
+                    p, r, f, 1e-8 if f == 1 else RS_TIGHT), rows)] += 1
             except RuntimeError as exc:
                 counts["failed"] += 1
                 rows.append(f"| {label} | averaged over {r.periods} periods | "
                             f"{r.mu_ratio:.10f} +- {r.error:.1e} | reference failed: {exc} "
                             f"| | not compared |")
-                continue
-            moved = abs(r.mu_ratio - mu2) <= r.error + bar2
-            counts["averaged_moved" if moved else "open"] += 1
-            rows.append(f"| {label} | averaged over {r.periods} periods | "
-                        f"{r.mu_ratio:.10f} +- {r.error:.1e} | {mu:.10f} +- {bar:.1e} | "
-                        f"{mu2:.10f} +- {bar2:.1e} (4x the window) | "
-                        f"{'moves to the solver' if moved else 'OPEN'} |")
             continue
         if not r.trusted or r.status is not vf.Status.PERIODIC:
             counts["untrusted"] += 1
