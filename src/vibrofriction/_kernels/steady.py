@@ -245,14 +245,15 @@ def _linear_miss(z, zprev, cand_z, jac, M):
     if int(z[3]) != ph or int(zprev[3]) != ph:
         return math.inf
     nd = _free_dimension(ph, M)
-    w = np.array([M[M_ALPHA], 1.0, spring(M)])
+    kk = spring(M)
     miss, size = 0.0, 0.0
     for i in range(nd):
         pred = 0.0
         for j in range(nd):
             pred += jac[i, j] * (zprev[j] - cand_z[j])
-        miss += w[i] * abs(z[i] - cand_z[i] - pred)
-        size += w[i] * abs(z[i] - zprev[i])
+        w = M[M_ALPHA] if i == 0 else (1.0 if i == 1 else kk)  # the section's weights
+        miss += w * abs(z[i] - cand_z[i] - pred)
+        size += w * abs(z[i] - zprev[i])
     return miss / size if size > 0.0 else math.inf
 
 
