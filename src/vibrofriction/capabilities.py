@@ -268,7 +268,7 @@ RATE_STATE = Capabilities(
     histories=True,
     velocities="V > 0; V < 0 by the mirror x -> -x; V = 0 refused (the contact creeps)",
     notes=("error: twice the change of the orbit's mean from rtol to rtol/20 plus the next "
-           "Newton step's; averaged results: the last two windows' disagreement plus "
+           "Newton step's; averaged results: the range of the last three windows' means plus "
            "twice the change of the last period's mean at rtol/20",),
 )
 

@@ -32,16 +32,18 @@ POINTS = {
                        rs_b=0.005, rs_d_c=0.01, rs_v_ref=1.0),
 }
 #: where a point of POINTS does not show a setting: the averaging settings act only where
-#: the orbit takes long to find (near the contact resonance, docs/solver.md: 1280 periods
-#: of work by default), and ``min_periods`` only where an average is then accepted
-SLOW = dict(alpha=0.01, beta=1.01, amplitude=1.0,
-            v_inertial=float(vf.Dimensionless(0.01, 1.01, 1.0).vbar_to_inertial(0.016)))
+#: an average answers, on a motion neither locked to the drive nor near a periodic orbit
+#: (a damped static coefficient's, averaged after 2048 periods by default), and
+#: ``min_periods`` only where an average is then accepted
+UNLOCKED_STATIC = dict(alpha=1.61131695894751, beta=5.201716269414939,
+                       amplitude=0.667181213366733, v_inertial=0.34361794508618526,
+                       zeta=0.028985213787314244, static_ratio=1.7004854100307911)
 #: the rate-and-state solver averages only a motion not locked to the drive: self-excited
 #: stick-slip of a weakening contact on a soft pin (0.7 times the critical stiffness)
 UNLOCKED = dict(alpha=1.478, beta=11.478, amplitude=0.0, v_inertial=0.01, rs_a=0.01,
                 rs_b=0.02, rs_d_c=0.01, rs_v_ref=1.0)
-OVERRIDES = {("event", "tol_mean"): (SLOW, {}),
-             ("event", "min_periods"): (SLOW, {"tol_mean": 0.5}),
+OVERRIDES = {("event", "tol_mean"): (UNLOCKED_STATIC, {}),
+             ("event", "min_periods"): (UNLOCKED_STATIC, {"tol_mean": 0.5}),
              ("rate_state", "tol_mean"): (UNLOCKED, {"max_periods": 4000})}
 #: settings at an extreme value each (a method that honours it must show an effect)
 EXTREME = {"max_periods": 1, "min_periods": 1, "tol_state": 0.5, "tol_mean": 0.5,

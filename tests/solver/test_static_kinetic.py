@@ -363,11 +363,17 @@ def test_an_orbit_the_motion_does_not_reach_is_no_answer():
 
 def test_without_oscillation_the_sliding_start_slides_and_rest_sticks_and_slips():
     """``a = 0``: steady sliding goes on (kinetic force, slip velocity ``V``); from rest the
-    classic stick-slip of a static coefficient, whose undamped rigid mean is exactly 1."""
+    classic stick-slip of a static coefficient, whose undamped rigid mean is exactly 1.
+    Its cycle is not a multiple of the drive period, so windows of whole drive periods cut
+    cycles: their means differ by about 1.5e-6 after 20,000 periods, which the default
+    ``tol_mean`` (1e-7) does not accept (not converged) and ``1e-5`` does."""
     dim = vf.Dimensionless(0.5, math.inf, 0.0, static_ratio=1.4)
     r = vf.friction_coefficient(dim, v_inertial=0.3)
     assert r.mu_ratio == 1.0 and r.stick_fraction == 0.0
     r = vf.friction_coefficient(dim, v_inertial=0.3, initial="rest")
+    assert r.status is vf.Status.NOT_CONVERGED and r.window_max - r.window_min > 1e-7
+    r = vf.friction_coefficient(dim, v_inertial=0.3, initial="rest",
+                                settings=vf.SolverSettings(tol_mean=1e-5))
     assert r.trusted and r.stick_fraction > 0.3
     assert r.mu_ratio == pytest.approx(1.0, abs=1e-9 + r.error)
 

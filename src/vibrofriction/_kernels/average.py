@@ -28,6 +28,9 @@ RHO_MAX = 0.999  # cap of a contraction rate estimated from section distances
 ROUNDOFF_MU = 1e-13  # floor of the error of an exact periodic average
 ERROR_SAFETY = 2.0  # d_mu/(1 - lambda) assumes one real leading mode; others add to it
 ATTRACTING = 1.0 - 1e-9  # a multiplier modulus below this is attracting
+# a motion whose section state comes this close (relative) to its state p periods back,
+# yet not within tol_state, is near a periodic orbit: no running average answers there
+NEAR_ORBIT = 1e-3
 
 
 @jit
@@ -135,43 +138,65 @@ def newton_result(mu, k, lam, shift, mu_first, out_f):
 
 
 @jit
-def check_average(chk_k, chk_c, nchk, final, tol_mean, win, out_f):
-    """Running-average test at the doubling checkpoints ``K/4, K/2, K``.
-
-    The mean over ``(K/2, K]`` is the answer and its disagreement with the mean over
-    ``(K/4, K/2]`` the error.  Returns True when converged: they agree within
-    ``tol_mean`` and the last window is not pure forward slip (which averages to 1
-    whatever the state: without the certificate it is a transient, e.g. a resonance
-    still building up).  Where the means of the last three windows move one way,
-    their drift per period (between the last two windows' centres) is recorded;
-    0 where they do not, nan with fewer than three windows.
+def near_orbit(dprev, z, M):
+    """Whether the section state ``z`` is within :data:`NEAR_ORBIT` (relative) of its state
+    ``p`` periods back for some ``p`` (``dprev`` of :func:`detect_period`, which found none
+    within ``tol_state``): the motion is near a periodic orbit without having reached it.
     """
-    if not (nchk >= 3 or (final and nchk >= 2)):
-        return False
+    d = math.inf
+    for p in range(1, MAX_PERIOD + 1):
+        d = min(d, dprev[p])
+    return d <= NEAR_ORBIT * section_scale(M[M_ALPHA], spring(M), z)
+
+
+@jit
+def window_means(num, den, ks, nchk, out_f):
+    """The means of the last three doubling windows from the checkpoints' running sums
+    ``num`` (of ``f``) and ``den`` (of ``n``) at periods ``ks``: the last window's mean into
+    ``O_MU``, the range of the last three (two where there are only two) into ``O_ERR``
+    (floored at round-off), ``O_WMIN`` and ``O_WMAX``, and their drift per period into
+    ``O_DRIFT`` where they move one way (0 where they do not, nan with fewer than three).
+    Returns whether there are three windows after the first checkpoint's (which holds the
+    transient and never counts): only then is the range an error estimate.
+    """
     i2, i1 = nchk - 1, nchk - 2
-    for j in range(N_ACC):
-        win[j] = chk_c[i2, j] - chk_c[i1, j]
-    m1 = win[A_F] / win[A_N]
-    if nchk >= 3:
-        i0 = nchk - 3
-        m0 = (chk_c[i1, A_F] - chk_c[i0, A_F]) / (chk_c[i1, A_N] - chk_c[i0, A_N])
-    else:
-        m0 = chk_c[i1, A_F] / chk_c[i1, A_N]
-    out_f[O_MU] = m1
-    out_f[O_ERR] = max(abs(m1 - m0), ROUNDOFF_MU * (1.0 + abs(m1)))
-    out_f[O_WMIN] = min(m0, m1)
-    out_f[O_WMAX] = max(m0, m1)
+    m1 = (num[i2] - num[i1]) / (den[i2] - den[i1])
+    m0 = (num[i1] - num[i1 - 1]) / (den[i1] - den[i1 - 1]) if nchk >= 3 else num[i1] / den[i1]
+    lo, hi = min(m0, m1), max(m0, m1)
     out_f[O_DRIFT] = math.nan
     if nchk >= 4:
         i0, im = nchk - 3, nchk - 4
-        mm = (chk_c[i0, A_F] - chk_c[im, A_F]) / (chk_c[i0, A_N] - chk_c[im, A_N])
-        out_f[O_WMIN] = min(out_f[O_WMIN], mm)
-        out_f[O_WMAX] = max(out_f[O_WMAX], mm)
-        span = 0.5 * ((chk_k[i2] + chk_k[i1]) - (chk_k[i1] + chk_k[i0]))
+        mm = (num[i0] - num[im]) / (den[i0] - den[im])
+        lo, hi = min(lo, mm), max(hi, mm)
+        span = 0.5 * ((ks[i2] + ks[i1]) - (ks[i1] + ks[i0]))
         monotone = (m1 - m0) * (m0 - mm) > 0.0
         out_f[O_DRIFT] = (m1 - m0) / span if monotone else 0.0
+    out_f[O_MU] = m1
+    out_f[O_WMIN], out_f[O_WMAX] = lo, hi
+    out_f[O_ERR] = max(hi - lo, ROUNDOFF_MU * (1.0 + abs(m1)))
+    return nchk >= 4
+
+
+@jit
+def check_average(chk_k, chk_c, nchk, near, tol_mean, win, out_f):
+    """Running-average test at the doubling checkpoints ``K/8, K/4, K/2, K``.
+
+    The mean over ``(K/2, K]`` is the answer and the range of the means over the last
+    three windows, ``(K/8, K/4]``, ``(K/4, K/2]`` and ``(K/2, K]``, the error
+    (:func:`window_means`).  Returns True when converged: the range is within
+    ``tol_mean``, the motion is not ``near`` a periodic orbit (:func:`near_orbit`: one it
+    approaches answers as periodic; near one it leaves or circles, the window means are
+    the orbit's, not those of the motion to come), and the last window is not pure
+    forward slip (which averages to 1 whatever the state: without the certificate it is
+    a transient, e.g. a resonance still building up).
+    """
+    if nchk < 2:
+        return False
+    for j in range(N_ACC):
+        win[j] = chk_c[nchk - 1, j] - chk_c[nchk - 2, j]
+    three = window_means(chk_c[:, A_F], chk_c[:, A_N], chk_k, nchk, out_f)
     if pure_forward_slip(win):
         # exactly 1 whatever the state: no evidence about the long-time average
         out_f[O_ERR] = math.inf
         return False
-    return out_f[O_ERR] <= tol_mean
+    return three and not near and out_f[O_ERR] <= tol_mean

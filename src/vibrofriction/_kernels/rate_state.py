@@ -75,18 +75,20 @@ tolerances plus the next Newton step's change of the mean (the integration error
 propagated and the Newton residual).  Otherwise (a response not locked to the drive:
 self-excited stick-slip of a weakening contact, a quasi-periodic or subharmonic response, an
 orbit that grows however slowly) the motion is averaged over doubling windows, as the event
-solver does, and ``AVERAGED`` is said, never ``PERIODIC``, with the windows' disagreement
-(at least ``10 rtol``) plus the integration's error as the error: twice the change of the
-last period's mean at ``rtol/REFINE`` from the same start (:func:`_averaged_error`, as the
-periodic answer's).  Where the motion sits
-on a repelling orbit (an unstable steady sliding without oscillation, which is an exact
-equilibrium from the sliding start) it is kicked off it by ``KICK`` of its velocity.
+solver does, and ``AVERAGED`` is said, never ``PERIODIC``, with the range of the last
+three windows' means (at least ``10 rtol``; :func:`.average.window_means`) plus the
+integration's error as the error: twice the change of the last period's mean at
+``rtol/REFINE`` from the same start (:func:`_averaged_error`, as the periodic answer's).
+Where the motion sits on a repelling orbit (an unstable steady sliding without oscillation,
+which is an exact equilibrium from the sliding start) it is kicked off it by ``KICK`` of its
+velocity.
 """
 
 import math
 
 import numpy as np
 
+from .average import window_means
 from .codes import (
     I_EVENTS,
     I_METHOD,
@@ -103,8 +105,6 @@ from .codes import (
     O_MU,
     O_MULT,
     O_SETTLE,
-    O_WMAX,
-    O_WMIN,
     O_WORK,
     O_XD,
     O_Y,
@@ -1714,15 +1714,12 @@ def rs_steady_state(P, z, rtol, max_periods, tol_mean, offset, out_f, out_i):
             kchk[nchk] = k
             nchk += 1
             chk_k *= 2
-            if nchk >= 3:
-                i2, i1, i0 = nchk - 1, nchk - 2, nchk - 3
-                m1 = (accs[i2] - accs[i1]) / (nbar * (kchk[i2] - kchk[i1]))
-                m0 = (accs[i1] - accs[i0]) / (nbar * (kchk[i1] - kchk[i0]))
-                out_f[O_MU] = m1
-                out_f[O_ERR] = max(abs(m1 - m0), 10.0 * rtol, ROUNDOFF_MU)
-                out_f[O_WMIN] = min(m0, m1)
-                out_f[O_WMAX] = max(m0, m1)
-                if abs(m1 - m0) <= tol_mean:
+            if nchk >= 2:
+                # the range of the last three windows' means (:func:`.average.window_means`)
+                three = window_means(accs, nbar * kchk, kchk, nchk, out_f)
+                converged = three and out_f[O_ERR] <= tol_mean
+                out_f[O_ERR] = max(out_f[O_ERR], 10.0 * rtol)
+                if converged:
                     status = ST_AVERAGED
                     settle = float(k)
                     periods += 1.0

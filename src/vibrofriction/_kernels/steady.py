@@ -41,6 +41,7 @@ from .average import (
     check_average,
     detect_period,
     last_window,
+    near_orbit,
     newton_result,
     periodic_result,
     section_scale,
@@ -286,15 +287,16 @@ def _neutral_result(acc, start, orbit_out, orbit_win, win, out_f):
 
 
 @jit
-def _checkpoint(chk_c, chk_k, nchk, acc, k, final, tol_mean, win, out_f):
-    """Record a checkpoint of the running average and test it; returns ``(nchk, status)``,
-    ``RUNNING`` while no answer (the last checkpoint, ``final``, always answers).
+def _checkpoint(chk_c, chk_k, nchk, acc, k, final, near, tol_mean, win, out_f):
+    """Record a checkpoint of the running average and test it (``near``: the motion is near
+    a periodic orbit, :func:`.average.near_orbit`); returns ``(nchk, status)``, ``RUNNING``
+    while no answer (the last checkpoint, ``final``, always answers).
     """
     if nchk < MAX_CHECKPOINTS:
         chk_c[nchk, :] = acc
         chk_k[nchk] = k
         nchk += 1
-    if check_average(chk_k, chk_c, nchk, final, tol_mean, win, out_f):
+    if check_average(chk_k, chk_c, nchk, near, tol_mean, win, out_f):
         out_f[O_SETTLE] = k
         return nchk, ST_AVERAGED
     if final:
@@ -452,8 +454,8 @@ def _run(z, M, max_periods, min_periods, tol_state, tol_mean, max_events, count,
                 return ST_FAILED, 0, k
         if k == next_chk or k >= max_periods:
             next_chk *= 2
-            nchk, status = _checkpoint(chk_c, chk_k, nchk, acc, k, k >= max_periods, tol_mean,
-                                       win, out_f)
+            nchk, status = _checkpoint(chk_c, chk_k, nchk, acc, k, k >= max_periods,
+                                       near_orbit(dprev, z, M), tol_mean, win, out_f)
             if status != RUNNING:
                 return status, 0, k
 

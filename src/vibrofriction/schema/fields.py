@@ -335,8 +335,10 @@ class Status(enum.Enum):
                "about that orbit bounds the work of the friction deficit from any start, "
                "sticks of the transient included (docs/solver.md)")
     AVERAGED = ("averaged", 1, True,
-                "no periodic orbit within the period bound; the running average over the "
-                "last half of the run agrees with the half before within tol_mean")
+                "no periodic orbit within the period bound; the means of the running "
+                "average's last windows agree within tol_mean (the event and rate-and-state "
+                "solvers: the last three doubling windows, the motion not near a periodic "
+                "orbit; the 2-D and curved-tip solvers: the halves of a fixed window)")
     NOT_CONVERGED = ("not converged", 2, False,
                      "max_periods was reached before a periodic orbit was found or the "
                      "running average settled")

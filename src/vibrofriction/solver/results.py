@@ -530,7 +530,11 @@ def describe(r: FrictionResult) -> str:
             "the error includes how far the motion's mean over periods 512-1024 is from it")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED, Status.HELD) \
             and math.isfinite(r.window_min):
-        parts.append(f"window means range from {r.window_min:.6g} to {r.window_max:.6g}")
+        # enough digits to tell the two apart (two beyond the first that differs)
+        span = abs(r.window_max - r.window_min) / max(abs(r.window_max), 1e-300)
+        digits = min(15, max(6, 2 - math.floor(math.log10(span)))) if span > 0 else 6
+        parts.append(f"window means range from {r.window_min:.{digits}g} to "
+                     f"{r.window_max:.{digits}g}")
     if r.status is Status.NOT_CONVERGED:
         parts.append(_not_converged_note(r.drift_rate))
     return "; ".join(parts)

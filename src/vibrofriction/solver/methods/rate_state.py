@@ -42,8 +42,8 @@ class RateStateMethod:
         error: the integration's, measured by the change of the orbit's mean from ``rtol``
         to ``rtol/20``, plus the next Newton step's),
         :attr:`~vibrofriction.Status.AVERAGED` where the motion is not locked to the drive
-        and the last two doubling windows' means agree within ``tol_mean`` (the error their
-        difference plus twice the change of the last period's mean at ``rtol/20``, the
+        and the last three doubling windows' means agree within ``tol_mean`` (the error their
+        range plus twice the change of the last period's mean at ``rtol/20``, the
         integration's), else not converged or failed (``nan``, ``inf``).
         """
         out_f, out_i = new_outputs(len(points))
