@@ -237,6 +237,16 @@ def test_slow_settling_is_said_in_the_message():
     assert "slowly" not in fast.message
 
 
+def test_an_unknown_start_of_the_steady_state_is_refused_by_name() -> None:
+    """A misspelt start, or an array of numbers (a 2-D history's ``plane_state``, a start of
+    a time history), is a ValueError that names the allowed starts."""
+    s = vf.Dimensionless(0.5, 2.0, 0.5, a_y=0.3)
+    for bad in ("Sliding", np.zeros(6), [0.0, 0.0, 1.0, 0.0]):
+        with pytest.raises(ValueError, match="initial must be 'sliding', 'rest' or a "
+                                             "SectionState"):
+            vf.friction_coefficient(s, v_inertial=0.3, initial=bad)  # type: ignore[arg-type]
+
+
 # ----------------------------------------------------------------- simulate
 def test_simulate_steady_refuses_an_unsettled_point_and_unknown_starts():
     s = vf.Dimensionless(*SLOW[0])

@@ -84,11 +84,16 @@ def initial_rows(initial: Initial | NDArray[np.object_], n: int,
         for i, s in enumerate(initial.ravel()):
             init[i] = (s.y, s.x_dot, _elongation(s, systems, i), PHASE_CODE[s.phase])
         return 2, init
-    if initial == "sliding":
-        return 0, init
-    if initial == "rest":
-        return 1, init
-    raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got {initial!r}")
+    if isinstance(initial, str) and initial in ("sliding", "rest"):
+        return (0 if initial == "sliding" else 1), init
+    hint = ""
+    if isinstance(initial, np.ndarray | list | tuple):
+        # e.g. a 2-D history's plane_state: a start of vf.simulate, not of the steady state
+        hint = (" (an array of numbers is a start of a time history, vibrofriction."
+                "simulate; the steady state starts from a SectionState, e.g. a result's "
+                "final_state)")
+    raise ValueError(f"initial must be 'sliding', 'rest' or a SectionState, got "
+                     f"{initial!r}{hint}")
 
 
 #: The final-state columns that change sign under the mirror ``x -> -x``.
