@@ -187,6 +187,21 @@ def test_plane_state_continues_a_history() -> None:
     np.testing.assert_allclose(second.x[-1] + V * TWO_PI, whole.x[r], atol=1e-8)
 
 
+def test_every_period_count_ends_on_its_section() -> None:
+    """A history of any whole number of periods ends on its last section: the kernel's
+    period ends are the grid's section times, to the last bit (1 + ... + 1 periods summed
+    in floating point missed the section at 730 and 1140 periods of this static-law point,
+    and the history had no final state)."""
+    d = Dimensionless(1.025744332849627, 1.575480500380936, 0.5555301555141661,
+                      a_y=0.2148720847692363, phase_y=0.09928158932083511,
+                      static_ratio=1.9224187633970171)
+    for periods in (730, 1140):
+        h = vf.simulate(d, v_inertial=0.10115672805167288, periods=periods,
+                        samples_per_period=2, initial="rest")
+        assert h.tau[-1] == 2.0 * math.pi * periods
+        assert np.all(np.isfinite(h.plane_state))
+
+
 def test_refusals() -> None:
     with pytest.raises(ValueError, match="finite beta"):
         vf.simulate(Dimensionless(0.5, math.inf, 0.5, a_y=0.3), v_inertial=0.3)

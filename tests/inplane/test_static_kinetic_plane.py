@@ -308,15 +308,17 @@ def test_random_points_stay_within_the_circles(al, dk, a, V, eta, ax, px, ay, py
     # 0.5, s = 2) or averaged: the static coefficient's own stick-slip need not lock to the
     # drive (e.g. a = 0, a_y = 1, V = 0.25, s = 2: averaged, error 4e-3; at (0.2, 0.7, 0,
     # V = 0.05), a_y = 1, s = 3 the windows' means differ by 0.3, and the stated error says
-    # so: a finite error, not trusted)
+    # so: not trusted; a window that lies on an orbit states no error, inf: which of the
+    # coexisting attractors the motion takes can turn on its tolerance, docs/inplane.md)
     assert int(r["status"]) in (Status.PERIODIC.code, Status.AVERAGED.code)
     err = float(r["error"])
     if int(r["status"]) == Status.PERIODIC.code:
         assert err < 1e-5
     else:
-        assert math.isfinite(err) and (err <= 1e-5 or not bool(r["trusted"]))
-    assert abs(float(r["mu_ratio"])) <= s + err
-    assert abs(float(r["lateral_ratio"])) <= s + float(r["error"])
+        assert not math.isnan(err) and (err <= 1e-5 or not bool(r["trusted"]))
+    # the window's means themselves lie within the circles, whatever their error
+    assert abs(float(r["mu_ratio"])) <= s * (1.0 + 1e-12)
+    assert abs(float(r["lateral_ratio"])) <= s * (1.0 + 1e-12)
 
 
 # --------------------------------------------------------------------------- 1-D solver

@@ -1932,7 +1932,7 @@ def _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status, mean
             s[i] = s0[i]
     sl = s.copy()
     hint = W[W_MODE, 0]
-    spread = average(P, s, rtol, hmax, W, cnt, max_events, means)
+    spread, p = average(P, s, rtol, hmax, W, cnt, max_events, means)
     hint_end = W[W_MODE, 0]
     W[W_MODE, 0] = hint
     loose = np.zeros(7)
@@ -1942,7 +1942,48 @@ def _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status, mean
         status = ST_AVERAGED
         out_f[O_ERR] = spread + max(abs(loose[0] - means[0]),
                                     abs(loose[1] - means[1]))
+        if p > 0 and (P[P_SR] != 1.0
+                      or not _attracts(P, s, p, rtol, hmax, W, cnt, max_events)):
+            # the window lies on an orbit of p periods: its mean is the orbit's, which is
+            # the long-time one only where the orbit attracts and is the motion's own.
+            # With a static circle above the kinetic one attractors coexist, and which one
+            # the motion takes can turn on the tolerance of its transient: the motion of
+            # vibrofriction.simulate from the same start was found elsewhere at 6 of 15
+            # such windows (docs/inplane.md, "Averaged answers")
+            out_f[O_ERR] = math.inf
     return status
+
+
+@jit
+def _attracts(P, s, p, rtol, hmax, W, cnt, max_events):
+    """Whether the orbit of ``p`` periods through the section state ``s`` (its phase in
+    ``W[W_MODE, 0]``) attracts: the spectral radius of the product of its ``p`` one-period
+    Jacobians (:func:`period_map_tangent`) below ``1 - 1e-6``; False where a tangent does
+    not hold (a graze, or a switch a difference changes).  ``s`` and the phase are kept.
+    """
+    hint = W[W_MODE, 0]
+    s1 = s.copy()
+    s2 = np.empty(N_S)
+    J = np.eye(N_S)
+    Jk = np.empty((N_S, N_S))
+    acc = np.zeros(4)
+    exact = True
+    for _ in range(p):
+        ok, exact = period_map_tangent(P, s1, s2, rtol, rtol, hmax, W, acc, cnt,
+                                       max_events, Jk)
+        if not (ok and exact):
+            exact = False
+            break
+        J = Jk @ J
+        W[W_MODE, 0] = W[W_MODE, 1]
+        s1[:] = s2
+    W[W_MODE, 0] = hint
+    if not exact:
+        return False
+    radius = 0.0
+    for x in np.linalg.eigvals(J.astype(np.complex128)):
+        radius = max(radius, abs(x))
+    return radius < 1.0 - 1e-6
 
 
 @jit
@@ -2034,7 +2075,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
     use_newton = False
     means = np.zeros(7)
     s0 = s.copy()
-    budget = max_periods - periods - 2 * N_AVG - ITER_RESERVE
+    budget = max_periods - periods - N_AVG - N_WINDOW - ITER_RESERVE
     if cnt[C_FAIL] == 0:
         scale = 1.0 + _dist(s, np.zeros(N_S), k)
         hint0 = W[W_MODE, 0]
@@ -2068,10 +2109,10 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
             periods = _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale,
                                    use_newton, J, info, mult, res, periods,
                                    periods_to_orbit, means, out_f, R)
-        elif cnt[C_FAIL] == 0 and periods + 2 * N_AVG < max_periods:
+        elif cnt[C_FAIL] == 0 and periods + N_AVG + N_WINDOW < max_periods:
             status = _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status,
                                means, out_f)
-            periods += 2 * N_AVG
+            periods += N_AVG + N_WINDOW
         elif cnt[C_FAIL] == 0:
             status = ST_NOT_CONVERGED
     _write_rows(P, s, W, cnt, status, mult, periods, means, out_f, out_i, s_out)
@@ -2160,15 +2201,21 @@ def cone_excess(P, periods, rtol):
 
 
 N_AVG = 200
-"""The averaging fallback: this many periods of transient, then a window of as many."""
+"""The averaging fallback: this many periods of transient, then a window of
+:data:`N_WINDOW`."""
+N_WINDOW = 360
+"""... periods, whose thirds hold whole orbits of 1-6, 8, 10 and 12 periods (the 2-D solver
+finds orbits of one period; a motion on one of several periods is averaged, and its
+thirds' means then agree to round-off)."""
 
 
 @jit
 def average(P, s, rtol, hmax, W, cnt, max_events, means):
     """The long-time average from the section state ``s``: ``N_AVG`` periods of
-    transient, then means over ``N_AVG`` periods into ``means`` (as :func:`orbit_mean`),
-    ``s`` the end state.  Returns the window's spread: the larger of the difference of its
-    halves' means, in ``mu`` and in the lateral ratio.
+    transient, then means over ``N_WINDOW`` periods into ``means`` (as :func:`orbit_mean`),
+    ``s`` the end state.  Returns the window's spread, the larger of the ranges of its
+    thirds' means (:func:`_thirds_range`) in ``mu`` and in the lateral ratio, and the
+    period of the orbit the window lies on (:func:`_orbit_periods`; 0: none).
     """
     z = W[13]
     for i in range(N_S):
@@ -2176,11 +2223,11 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
     z[6] = 0.0
     z[7] = 0.0
     mode = entry_hint(P, 0.0, z, int(W[W_MODE, 0]))
-    pfx = np.zeros(N_AVG)
-    pfy = np.zeros(N_AVG)
+    pfx = np.zeros(N_WINDOW)
+    pfy = np.zeros(N_WINDOW)
     acc = np.zeros(4)
     no_tangent = np.empty((0, N_S, N_S))
-    for j in range(2 * N_AVG):
+    for j in range(N_AVG + N_WINDOW):
         z[6] = 0.0
         z[7] = 0.0
         if j == N_AVG:
@@ -2188,22 +2235,59 @@ def average(P, s, rtol, hmax, W, cnt, max_events, means):
         mode, ok = one_period(P, 0.0, z, mode, rtol, rtol, hmax, W, acc, cnt, max_events,
                               no_tangent)
         if not ok:
-            return math.inf
+            return math.inf, 0
         if j >= N_AVG:
             pfx[j - N_AVG] = z[6]
             pfy[j - N_AVG] = z[7]
     nbar = TWO_PI * mean_normal(P[P_A])
-    means[0] = pfx.sum() / (N_AVG * nbar)
-    means[1] = pfy.sum() / (N_AVG * nbar)
+    means[0] = pfx.sum() / (N_WINDOW * nbar)
+    means[1] = pfy.sum() / (N_WINDOW * nbar)
     for i in range(4):
-        means[2 + i] = acc[i] / (TWO_PI * N_AVG)
+        means[2 + i] = acc[i] / (TWO_PI * N_WINDOW)
     for i in range(N_S):
         s[i] = z[i]
     W[W_MODE, 0] = mode
-    h = N_AVG // 2
-    e1 = abs(pfx[:h].sum() - pfx[h:].sum()) / (h * nbar)
-    e2 = abs(pfy[:h].sum() - pfy[h:].sum()) / (h * nbar)
-    return max(e1, e2)
+    return max(_thirds_range(pfx, nbar), _thirds_range(pfy, nbar)), _orbit_periods(pfx, pfy)
+
+
+ORBIT_REPEAT = 1e-6
+"""A window whose per-period integrals of the force repeat after ``p`` periods to this
+(relative to their size) lies on an orbit of ``p`` periods (:func:`_orbit_periods`)."""
+
+
+@jit
+def _orbit_periods(pfx, pfy):
+    """The smallest ``p`` <= 12 after which the window's per-period integrals of ``(f_x,
+    f_y)`` repeat to :data:`ORBIT_REPEAT`, else 0 (a motion not on an orbit).
+    """
+    n = pfx.shape[0]
+    size = 1e-300
+    for j in range(n):
+        size = max(size, abs(pfx[j]) + abs(pfy[j]))
+    for p in range(1, 13):
+        repeats = True
+        for j in range(n - p):
+            if abs(pfx[j + p] - pfx[j]) + abs(pfy[j + p] - pfy[j]) > ORBIT_REPEAT * size:
+                repeats = False
+                break
+        if repeats:
+            return p
+    return 0
+
+
+@jit
+def _thirds_range(per, nbar):
+    """The range of the means over the three thirds of a window (``per``: each period's
+    integral, ``nbar`` that of ``n``): the error of the window's mean (the difference of
+    its halves is exceeded about three times as often where the motion is not locked to
+    the drive; docs/inplane.md).
+    """
+    n = per.shape[0]
+    t = n // 3
+    m0 = per[:t].sum() / (t * nbar)
+    m1 = per[t:2 * t].sum() / (t * nbar)
+    m2 = per[2 * t:].sum() / ((n - 2 * t) * nbar)
+    return max(m0, m1, m2) - min(m0, m1, m2)
 
 
 @jit
@@ -2287,12 +2371,13 @@ def plane_history(P, s, periods, grid, rtol, max_events, out, hint=STICK):
         gi += 1
     for j in range(periods):
         t0 = TWO_PI * j
+        t_end = TWO_PI * (j + 1)  # as the grid's sections (t0 + TWO_PI can differ by an ulp)
         if a > 1.0:
-            ends[0], ends[1], ends[2] = t0 + th - d, t0 + TWO_PI - th + d, t0 + TWO_PI
+            ends[0], ends[1], ends[2] = t0 + th - d, t0 + TWO_PI - th + d, t_end
             contact_[0], contact_[1], contact_[2] = True, False, True
             m = 3
         else:
-            ends[0] = t0 + TWO_PI
+            ends[0] = t_end
             contact_[0] = True
             m = 1
         ev = 0
