@@ -384,3 +384,37 @@ def test_an_orbit_the_motion_does_not_reach_is_no_answer() -> None:
     r = vf.friction_coefficient(d, v_inertial=V)
     assert r.status is not Status.FAILED
     assert math.isnan(r.mu_ratio) or abs(r.mu_ratio - motion) <= r.error + 5e-4
+
+
+# ----------------------------------------------------------------- averaged answers
+def test_a_window_on_an_orbit_states_no_error() -> None:
+    """A random static point whose averaging window lies on an orbit of 5 periods (its
+    thirds' means agree to round-off): the motion of ``simulate`` from the same start stays
+    on that orbit up to period 8000 and then leaves it (its mean over periods 8192-16384 is
+    5e-5 away), so the window's mean is not the long-time one and states no error."""
+    d = Dimensionless(1.025744332849627, 1.575480500380936, 0.5555301555141661,
+                      a_y=0.2148720847692363, phase_y=0.09928158932083511,
+                      static_ratio=1.9224187633970171)
+    V = 0.10115672805167288
+    r = vf.friction_coefficient(d, v_inertial=V, initial="rest")
+    assert r.status is Status.AVERAGED and math.isinf(r.error) and not r.trusted
+    T = 16384
+    h = vf.simulate(d, v_inertial=V, periods=T, samples_per_period=2, initial="rest")
+    ends = np.interp(TWO_PI * np.array([T // 2, T]), h.tau, h.impulse[:, 0])
+    late = (ends[1] - ends[0]) / (TWO_PI * r.mean_normal_ratio * (T - T // 2))
+    assert abs(late - r.mu_ratio) > 1e-5
+
+
+def test_orbit_periods_and_thirds_of_a_window() -> None:
+    """The window's tests on given per-period integrals: an orbit of 5 periods is found as 5
+    (not 10), and its thirds' means (120 periods each) agree to round-off; a sequence with
+    no period up to 12 gives 0; the thirds' range of a drift is its rise over a third."""
+    rng = np.random.default_rng(3)
+    orbit = np.tile(rng.uniform(0.5, 1.5, 5), 72)  # 360 periods
+    flat = np.zeros(360)
+    assert plane._orbit_periods(orbit, flat) == 5
+    assert plane._thirds_range(orbit, 1.0) <= 1e-14
+    assert plane._orbit_periods(rng.uniform(0.5, 1.5, 360), flat) == 0
+    ramp = np.linspace(1.0, 2.0, 360)
+    third = ramp[:120].mean(), ramp[120:240].mean(), ramp[240:].mean()
+    assert plane._thirds_range(ramp, 1.0) == pytest.approx(max(third) - min(third), rel=1e-12)
