@@ -338,7 +338,9 @@ class Status(enum.Enum):
                 "no periodic orbit within the period bound; the means of the running "
                 "average's last windows agree within tol_mean (the event and rate-and-state "
                 "solvers: the last three doubling windows, the motion not near a periodic "
-                "orbit; the 2-D and curved-tip solvers: the halves of a fixed window)")
+                "orbit; the 2-D solver: the thirds of a fixed window, no error where it lies "
+                "on an orbit not shown to attract; the curved-tip solver: the halves of a "
+                "fixed window)")
     NOT_CONVERGED = ("not converged", 2, False,
                      "max_periods was reached before a periodic orbit was found or the "
                      "running average settled")
