@@ -1925,7 +1925,9 @@ def _loose_orbit(P, s, ph, have_map, rtol, hmax, W, cnt, max_events, scale, J, i
 def _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status, means, out_f):
     """The long-time average from the transient's end ``s0`` into ``means`` (not Newton's
     last iterate; at V = 0 the plain iteration's last state, the motion's own), its error
-    the window's spread plus the difference from a run at 100 rtol. Returns the status.
+    the window's spread plus the difference from a run at 100 rtol, or ``inf`` where the
+    window lies on an orbit not shown to attract (:func:`_attracts`; with a static circle
+    above the kinetic one, any orbit). Returns the status.
     """
     if use_newton:
         for i in range(N_S):
