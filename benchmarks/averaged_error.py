@@ -33,10 +33,9 @@ import numpy as np
 import vibrofriction as vf
 from reference_points import REGIMES, random_points, static_kinetic_points
 from sections import append_run
-from vibrofriction._kernels.average import _distance, section_scale
 from vibrofriction._kernels.jit import jit
-from vibrofriction._kernels.period import A_F, A_N, MAX_PERIOD, N_ACC, advance_counted, spring
-from vibrofriction._kernels.phases import M_ALPHA, frame_offset, make_model
+from vibrofriction._kernels.period import A_F, A_N, N_ACC, advance_counted
+from vibrofriction._kernels.phases import frame_offset, make_model
 from vibrofriction._kernels.steady import _start
 
 RESULTS = Path(__file__).parent / "results" / "averaged_error.md"
@@ -47,27 +46,16 @@ MIN_PERIODS, MAX_PERIODS = 64, 20_000  # ... and its checkpoints
 
 @jit
 def _long_run(M, z, n):
-    """Running sums of ``f`` and ``n`` after each of ``n`` periods from ``z``, and the section
-    state's smallest relative distance to its states 1..MAX_PERIOD periods back."""
+    """Running sums of ``f`` and ``n`` after each of ``n`` periods from ``z``."""
     acc = np.zeros(N_ACC)
     count = np.zeros(3, np.int64)
-    F, N, D = np.empty(n), np.empty(n), np.empty(n)
-    ring = np.zeros((MAX_PERIOD + 1, 5))
-    ring[0] = z
-    alpha, kk = M[M_ALPHA], spring(M)
+    F, N = np.empty(n), np.empty(n)
     for k in range(n):
         ok, _ = advance_counted(z, acc, count, M, 10**9)
         if not ok:
-            return F[:k], N[:k], D[:k]
+            return F[:k], N[:k]
         F[k], N[k] = acc[A_F], acc[A_N]
-        ring[(k + 1) % (MAX_PERIOD + 1)] = z
-        best = math.inf
-        for p in range(1, min(k + 1, MAX_PERIOD) + 1):
-            old = ring[(k + 1 - p) % (MAX_PERIOD + 1)]
-            if old[3] == z[3]:
-                best = min(best, _distance(alpha, kk, z, old))
-        D[k] = best / section_scale(alpha, kk, z)
-    return F, N, D
+    return F, N
 
 
 def points(seed: int, per: int, static: int):
@@ -123,7 +111,7 @@ def survey(seed: int, per: int, static: int) -> list[dict]:
         M = make_model(alpha, beta, a, V, zeta, eta, 0.0, 0.0, True, sr)
         z = _start({"sliding": 0, "rest": 1}[initial], 0.0, 0.0, 0.0, 0.0, M,
                    frame_offset(0.0, 0.0, True))
-        F, N, _ = _long_run(M, z, LONG)
+        F, N = _long_run(M, z, LONG)
         if len(F) < LONG:
             continue
         windows = [_mean(F, N, LONG // 8, LONG // 4), _mean(F, N, LONG // 4, LONG // 2),

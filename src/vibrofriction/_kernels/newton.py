@@ -224,6 +224,17 @@ def spectral_radius(J, nd):
 
 
 @jit
+def dense_spectral_radius(D):
+    """The largest eigenvalue modulus of a square matrix ``D`` by LAPACK (the 2-D and
+    rate-and-state solvers' Jacobians, too large for :func:`spectral_radius`'s closed form).
+    """
+    r = 0.0
+    for x in np.linalg.eigvals(D.astype(np.complex128)):
+        r = max(r, abs(x))
+    return r
+
+
+@jit
 def newton_orbit(y, xd, e, ph, p, M, tol, max_events, acc, jac_out):
     """Solve ``P^p(z) = z`` on the section by Newton's method with the exact Jacobian
     (:func:`.tangent.period_map_tangent`): quadratic convergence, no differences.

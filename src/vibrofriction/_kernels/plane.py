@@ -121,6 +121,7 @@ from .dopri import (
     _E7,
 )
 from .jit import jit
+from .newton import dense_spectral_radius
 from .steady import closing_in, history, lagrange_weight
 
 TWO_PI = 2.0 * math.pi
@@ -1780,10 +1781,7 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
                           POLISH if chord else 0.0, means, _near(scale))
             periods += int(info[2])
         if conv:
-            ev = np.linalg.eigvals(J.astype(np.complex128))
-            mult = 0.0
-            for x in ev:
-                mult = max(mult, abs(x))
+            mult = dense_spectral_radius(J)
             if mult < 1.0 + 1e-6:
                 status = ST_PERIODIC
         if status != ST_PERIODIC and cnt[C_FAIL] == 0:
@@ -1982,10 +1980,7 @@ def _attracts(P, s, p, rtol, hmax, W, cnt, max_events):
     W[W_MODE, 0] = hint
     if not exact:
         return False
-    radius = 0.0
-    for x in np.linalg.eigvals(J.astype(np.complex128)):
-        radius = max(radius, abs(x))
-    return radius < 1.0 - 1e-6
+    return dense_spectral_radius(J) < 1.0 - 1e-6
 
 
 @jit

@@ -127,7 +127,7 @@ from .codes import (
 )
 from .integrate import to_lab_frame
 from .jit import jit
-from .newton import _solve_small
+from .newton import _solve_small, dense_spectral_radius
 from .phases import frame_offset, inplane_forcing
 
 __all__ = ["rs_period", "rs_steady_state", "rs_steady_state_many", "steady_mu"]
@@ -1468,15 +1468,6 @@ def _tangent_map(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu):
 
 
 @jit
-def _spectral_radius(D):
-    ev = np.linalg.eigvals(D.astype(np.complex128))
-    r = 0.0
-    for x in ev:
-        r = max(r, abs(x))
-    return r
-
-
-@jit
 def _newton_step(D, z0, z1, dz):
     """The Newton step ``dz = -(D - I)^-1 (z1 - z0)``; False where singular."""
     Mx = np.empty((NM, NM))
@@ -1543,12 +1534,12 @@ def _newton(P, z, rtol, hbox, work, count, tw, log, lp, D, gmu, res):
             shift += gmu[r] * dz[r]
         if rt == rtol and d <= tol * s:
             res[0], res[1] = mu, abs(shift)
-            res[2] = _spectral_radius(D)
+            res[2] = dense_spectral_radius(D)
             res[3] = maps
             z[:] = z0
             return True
         if rt == rtol and d <= SHORTCUT * s:
-            radius = _spectral_radius(D)
+            radius = dense_spectral_radius(D)
             if radius < 1.0 - NEAR_NEUTRAL:
                 for r in range(NM):
                     z0[r] += dz[r]
