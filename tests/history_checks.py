@@ -48,13 +48,14 @@ ROUNDOFF = 1e-12
 
 
 def assert_history_is_stored(h: vf.History, path: Path, digest: str) -> None:
-    """``h`` against the arrays stored at ``path`` (:data:`HISTORY_FIELDS`): the time grid
-    bit for bit, the rest to :data:`ROUNDOFF`; the stored arrays must hash to ``digest``
-    (:func:`history_digest`: they are the baseline's own)."""
+    """``h`` against the arrays stored at ``path`` (:data:`HISTORY_FIELDS`): the same time
+    grid (its event times, roots found to round-off, may move by an ulp when the arithmetic
+    of a kernel is reordered), every array to :data:`ROUNDOFF`; the stored arrays must hash
+    to ``digest`` (:func:`history_digest`: they are the baseline's own)."""
     with np.load(path) as stored:
         want = {name: stored[name] for name in HISTORY_FIELDS}
     assert history_digest(SimpleNamespace(**want)) == digest
-    assert np.array_equal(h.tau, want["tau"])
+    assert h.tau.shape == want["tau"].shape
     for name in HISTORY_FIELDS:
         have = np.asarray(getattr(h, name), dtype=float)
         np.testing.assert_allclose(have, want[name], rtol=0.0,

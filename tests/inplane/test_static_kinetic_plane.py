@@ -120,7 +120,7 @@ def test_static_ratio_one_history_is_the_history_before() -> None:
     """The history from the sliding start (the first of the baseline's; the one from a
     steady start is that search's state, see above) against the baseline's arrays
     (tests/data/static_ratio_history.npz, whose SHA-256 is the baseline's): to round-off,
-    the time grid bit for bit."""
+    the time grid included."""
     h = BASELINE["histories"][0]
     sim = vf.simulate(Dimensionless(**h["system"], static_ratio=1.0), v_inertial=h["v_inertial"],
                       periods=h["periods"], initial=h["initial"])

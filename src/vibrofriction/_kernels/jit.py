@@ -115,6 +115,16 @@ def jit(func: F) -> F:
     return _compiled(func)
 
 
+def jit_bare(func: F) -> F:
+    """:func:`jit` without numba's reference counting (NRT) in the function's own body: for
+    the step loops of a hot path, whose array arguments and views would otherwise each
+    cost two atomic operations a use (measured: a third of the 2-D solver's time).  The
+    function must not allocate (``np.empty`` and the like need the NRT): its scratch comes
+    from its caller.
+    """
+    return _compiled(func, _nrt=False)
+
+
 def jit_inline(func: F) -> F:
     """:func:`jit`, the body inlined into each caller at Numba IR level: for the helpers
     of a hot path, so that splitting a kernel by job costs no call.

@@ -120,7 +120,7 @@ from .dopri import (
     _E6,
     _E7,
 )
-from .jit import jit
+from .jit import jit, jit_bare, jit_inline
 from .newton import dense_spectral_radius
 from .steady import closing_in, history, lagrange_weight
 
@@ -155,7 +155,10 @@ W_MODE = 14
 """The row of the work array ``W`` that carries the phase across a section where the state
 does not fix it (``static_ratio > 1``): ``W[W_MODE, 0]`` the phase the period map starts
 from, ``W[W_MODE, 1]`` the phase it ended in (:func:`entry_hint`)."""
-N_W = 15
+W_KEEP = 15
+"""``W[W_KEEP:W_KEEP + 9]``: an event's last trial step past the switch (its end, its rate
+and its stages), kept for the step the event takes (:func:`_rk_segment`)."""
+N_W = 24
 # counters: events, steps, rejected steps, failures; then the step budget of a period
 # (0: MAX_STEPS_PER_PERIOD; Newton's trial states get a smaller one)
 C_EVENTS, C_STEPS, C_REJECT, C_FAIL, C_LIMIT = range(5)
@@ -177,13 +180,26 @@ six period maps each, cost about 40 % of those at ``1e-10``), then at the solve'
 by chord steps on the Jacobian of the rough orbit (:func:`_orbit_search`)."""
 ROUGH_SKIPPED, ROUGH_FOUND, ROUGH_FAILED = 0, 1, 2  # :func:`_rough_orbit`'s outcomes
 POLISH = 0.01
-"""After the rough orbit the chord steps at ``rtol`` go on to this times Newton's ``tol``
-(where each cuts the residual tenfold): a chord step converges linearly, Newton's step
-from the rough orbit's distance would have overshot ``tol`` by as much."""
+"""Where the section residual counts in the error (:data:`POLISH_SHARE`), the chord steps at
+``rtol`` go on to this times Newton's ``tol`` (where each cuts the residual tenfold): a chord
+step converges linearly, Newton's step from the rough orbit's distance would have overshot
+``tol`` by as much."""
+POLISH_SHARE = 0.01
+"""... that is, where the residual's term of the stated error is above this share of the
+tolerance's term (:func:`_orbit_error`); below it another map at ``rtol`` would change the
+stated error by less than this share, and the means by less than the error."""
 ROUGH_STEP = 1e3
 """... whose difference step is this times ``ROUGH_RTOL`` (at the default ``rtol = 1e-10``,
 :data:`DIFF_STEP` is the same multiple: the map's noise over the step alike)."""
 
+
+
+@jit_inline
+def _length(x, y):
+    """``|(x, y)|``: ``sqrt(x^2 + y^2)``, not ``math.hypot`` (its guard against overflow costs
+    about 8 ns a call, a sixth of a right-hand side; the components here are of order 1).
+    """
+    return math.sqrt(x * x + y * y)
 
 
 @jit
@@ -244,10 +260,10 @@ def _contact(mode, P, ct, st, z, vsx, vsy):
     n, dn = _normal(P[P_A], ct, st)
     if c > 0.0:
         Fx, Fy = k * z[4] + c * wx, k * z[5] + c * wy
-        F = math.hypot(Fx, Fy)
+        F = _length(Fx, Fy)
         fx, fy = n * Fx / F, n * Fy / F
         return fx, fy, (fx - k * z[4]) / c, (fy - k * z[5]) / c, (F - n) / c
-    r = math.hypot(z[4], z[5])
+    r = _length(z[4], z[5])
     dx, dy = z[4] / r, z[5] / r
     lam = dx * wx + dy * wy - dn / k
     return n * dx, n * dy, wx - lam * dx, wy - lam * dy, lam
@@ -265,7 +281,7 @@ def max_step(P):
     return TWO_PI / (8.0 * w)
 
 
-@jit
+@jit_inline
 def rhs(mode, P, t, z, dz):
     """The right-hand side of the phase ``mode`` into ``dz``."""
     al, g, aly, gy = P[P_ALPHA], P[P_GAMMA], P[P_ALPHA_Y], P[P_GAMMA_Y]
@@ -282,7 +298,7 @@ def rhs(mode, P, t, z, dz):
     dz[7] = fy
 
 
-@jit
+@jit_inline
 def switch_function(mode, P, t, z):
     """Positive inside the phase, falling through 0 where it ends (flight: 1)."""
     if mode == FLIGHT:
@@ -292,11 +308,11 @@ def switch_function(mode, P, t, z):
     if mode == STICK:
         n, _ = _normal(P[P_A], ct, st)
         fx, fy, _, _, _ = _contact(STICK, P, ct, st, z, vsx, vsy)
-        return P[P_SR] * n - math.hypot(fx, fy)
+        return P[P_SR] * n - _length(fx, fy)
     return _contact(SLIP, P, ct, st, z, vsx, vsy)[4]
 
 
-@jit
+@jit_bare
 def rk_step(mode, P, t, z, k1, h, znew, k7, K):
     """One Dormand-Prince step of length ``h`` from ``(t, z)`` (``k1 = f(t, z)``):
     ``znew``, ``k7 = f(t + h, znew)``; returns the error estimate's components in
@@ -329,7 +345,7 @@ def rk_step(mode, P, t, z, k1, h, znew, k7, K):
                       + _E6 * K[5, i] + _E7 * k7[i])
 
 
-@jit
+@jit_inline
 def error_norm(z, znew, err, rtol, atol):
     s = 0.0
     for i in range(N_Z):
@@ -338,7 +354,7 @@ def error_norm(z, znew, err, rtol, atol):
     return math.sqrt(s / N_Z)
 
 
-@jit
+@jit_inline
 def rhs_jacobian(mode, P, t, z, D):
     """The Jacobian of :func:`rhs`'s first six components by the section state ``z[:6]``
     into ``D`` (6 x 6), in closed form: the body's springs and dashpots, and the contact's
@@ -370,7 +386,7 @@ def rhs_jacobian(mode, P, t, z, D):
     w0, w1 = z[2] - vsx, z[3] - vsy
     if c > 0.0:
         Fx, Fy = k * z[4] + c * w0, k * z[5] + c * w1
-        F = math.hypot(Fx, Fy)
+        F = _length(Fx, Fy)
         ux, uy = Fx / F, Fy / F
         q = n / F  # df/dF = q (I - u u^T)
         a00, a01, a11 = q * (1.0 - ux * ux), -q * ux * uy, q * (1.0 - uy * uy)
@@ -382,7 +398,7 @@ def rhs_jacobian(mode, P, t, z, D):
                 D[4 + i, 4 + j] = k * aij / c - (k / c if i == j else 0.0)
                 D[4 + i, 2 + j] = aij
         return
-    r = math.hypot(z[4], z[5])
+    r = _length(z[4], z[5])
     dx, dy = z[4] / r, z[5] / r
     b00, b01, b11 = (1.0 - dx * dx) / r, -dx * dy / r, (1.0 - dy * dy) / r  # dd/de
     lam = dx * w0 + dy * w1 - dn / k
@@ -414,7 +430,7 @@ Jacobian of the right-hand side, ``T[3]`` scratch (an exact step's product), ``T
 the six stages; ``T`` of length 0: no tangent (the plain integration)."""
 
 
-@jit
+@jit_bare
 def tangent_step(mode, P, t, z, k1, K, h, znew, T):
     """Carry the tangent ``T[0]`` over the Dormand-Prince step of length ``h`` from ``(t,
     z)`` that :func:`rk_step` just took (its stages ``k1``, ``K[1:6]``) to ``znew``: the
@@ -466,7 +482,7 @@ def _cone_tangent(z, Y, scale):
     """``Y``'s rows of ``e`` times ``scale (I - d d^T)``, ``d = e/|e|``: the derivative of a
     map that puts ``e`` at a given length, its direction kept.
     """
-    r = math.hypot(z[4], z[5])
+    r = _length(z[4], z[5])
     dx, dy = z[4] / r, z[5] / r
     for q in range(N_S):
         y4, y5 = Y[4, q], Y[5, q]
@@ -475,12 +491,12 @@ def _cone_tangent(z, Y, scale):
         Y[5, q] = scale * (y5 - dy * dot)
 
 
-@jit
+@jit_inline
 def project(mode, P, t, z):
     """Jenkins slip: put ``e`` back on the cone ``|e| = n/k`` (its direction kept)."""
     if mode == SLIP and P[P_C] == 0.0:
         n, _ = normal_force(P[P_A], t)
-        r = math.hypot(z[4], z[5])
+        r = _length(z[4], z[5])
         if r > 0.0:
             z[4] *= n / (P[P_K] * r)
             z[5] *= n / (P[P_K] * r)
@@ -661,6 +677,8 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
         w[i] = z[i]
     w[N_Z], w[N_Z + 1], w[N_Z + 2] = math.cos(t), math.sin(t), 1.0
     tangent = T.shape[0] > 0
+    if tangent:
+        Y, arg = T[0], T[3]
     ph = mode if mode != FLIGHT else 2
     g0, d0 = _stick_margin(P, w) if mode == STICK else (0.0, 0.0)
     while t + H <= t1:
@@ -677,14 +695,15 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
                 break
             g0, d0 = g1, d1
         if tangent:
-            Y, arg = T[0], T[3]
             for r in range(N_S):
                 for q in range(N_S):
                     v = 0.0
                     for m in range(N_S):
                         v += Phi[r, m] * Y[m, q]
                     arg[r, q] = v
-            Y[:] = arg
+            for r in range(N_S):
+                for q in range(N_S):
+                    Y[r, q] = arg[r, q]
         _account(mode, P, t, H, wn, acc, ph, 0.0, 0.0)
         for i in range(N_Z):
             z[i] = wn[i]
@@ -730,7 +749,22 @@ def _linear_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             return t, event, h
 
 
-@jit
+@jit_inline
+def _copy_rows(z, k, K, z2, k2, K2, stages):
+    """``z``, ``k`` (and with ``stages`` the Runge-Kutta stages ``K``) into ``z2``, ``k2``,
+    ``K2``, element by element (no slice assignment: :func:`_rk_segment` runs without
+    reference counting).
+    """
+    for i in range(N_Z):
+        z2[i] = z[i]
+        k2[i] = k[i]
+    if stages:
+        for j in range(7):
+            for i in range(N_Z):
+                K2[j, i] = K[j, i]
+
+
+@jit_bare
 def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     """:func:`segment` by Dormand-Prince steps alone."""
     k1, k7, znew, zb, kb, K = W[0], W[1], W[2], W[3], W[4], W[5:12]
@@ -762,6 +796,10 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             sl, gl, sr, gr = 0.0, g0, hh, g1
             side = 0
             width = 4e-16 * (abs(t) + hh)
+            # the last trial past the switch is the step the event takes: kept, not redone
+            tangent = T.shape[0] > 0
+            right = False
+            zr, kr, Kr = W[W_KEEP], W[W_KEEP + 1], W[W_KEEP + 2:W_KEEP + 9]
             for _ in range(80):
                 if sr - sl <= width:
                     break
@@ -778,6 +816,8 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
                 gs = switch_function(mode, P, t + s, zb)
                 if gs < 0.0:
                     sr, gr = s, gs
+                    right = True
+                    _copy_rows(zb, kb, K, zr, kr, Kr, tangent)
                     if side == -1:
                         gl *= 0.5
                     side = -1
@@ -786,9 +826,12 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
                     if side == 1:
                         gr *= 0.5
                     side = 1
-            rk_step(mode, P, t, z, k1, sr, zb, kb, K)
-            project(mode, P, t + sr, zb)
-            if T.shape[0] > 0:
+            if right:
+                _copy_rows(zr, kr, Kr, zb, kb, K, tangent)
+            else:
+                rk_step(mode, P, t, z, k1, sr, zb, kb, K)
+                project(mode, P, t + sr, zb)
+            if tangent:
                 tangent_step(mode, P, t, z, k1, K, sr, zb, T)
             _account(mode, P, t, sr, zb, acc, ph, k1[6], kb[6])
             for i in range(N_Z):
@@ -808,7 +851,7 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     return t, False, h
 
 
-@jit
+@jit_inline
 def _account(mode, P, t, dt, z1, acc, ph, f0, f1):
     """Add a step of ``dt`` from ``t`` to the state ``z1`` to the phases' times ``acc``; in slip
     the time with ``f_x < 0`` from ``f_x`` at its ends, ``f0`` and ``f1`` (the step's first
@@ -1750,13 +1793,15 @@ def _record_rough(s, ph, means, J, R):
 
 @jit
 def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info,
-                  means, R, given=False, rough_found=False, newton_ok=True):
+                  means, R, ph, given=False, rough_found=False, newton_ok=True):
     """The periodic orbit from the transient's end ``s0``: Newton where ``V != 0`` (a
     stable orbit), else or where it fails, plain iteration (bounded). Returns ``(status,
     mult, use_newton, periods)``, ``s`` the orbit's section state (and where Newton found
-    it, ``means`` its means, ``J`` its Jacobian).  ``given``: ``J`` holds a neighbour's
-    Jacobian (:func:`_rough_orbit`); ``R`` the rough orbit's record (given where
-    ``rough_found``); ``newton_ok`` False: plain iteration only.
+    it, ``means`` its means, ``J`` its Jacobian, ``ph`` its map's end ``Phi(s)``).
+    ``given``: ``J`` holds a neighbour's Jacobian (:func:`_rough_orbit`); ``R`` the rough
+    orbit's record (given where ``rough_found``); ``newton_ok`` False: plain iteration only.
+    Newton's chord steps from the rough orbit stop at its ``tol``: where the residual
+    matters to the stated error they go on in :func:`_orbit_error` (:data:`POLISH`).
     """
     status = ST_FAILED
     mult = math.nan
@@ -1776,9 +1821,9 @@ def _orbit_search(P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, perio
         conv = False
         if rough != ROUGH_FAILED:
             chord = rough == ROUGH_FOUND
-            conv = newton(P, s, np.empty(N_S), False, rtol, rtol, hmax, W, cnt, max_events,
+            conv = newton(P, s, ph, False, rtol, rtol, hmax, W, cnt, max_events,
                           1e-12 * scale, 100.0 * rtol * scale, 12, J, info, chord, DIFF_STEP,
-                          POLISH if chord else 0.0, means, _near(scale))
+                          0.0, means, _near(scale))
             periods += int(info[2])
         if conv:
             mult = dense_spectral_radius(J)
@@ -1843,7 +1888,7 @@ def _follow(P, sm, s, phase, J, sticks, rtol, hmax, W, cnt, max_events, max_it):
 
 @jit
 def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newton, J, info,
-                 mult, res, periods, periods_to_orbit, means, out_f, R):
+                 mult, res, periods, periods_to_orbit, means, out_f, R, ph):
     """The periodic orbit's means into ``means`` (where Newton found it, they are already
     there: its last map's), their error (the same orbit at ``100 rtol``, and the section
     residual ``res``) and the settling into ``out_f``. Returns the periods run.
@@ -1852,6 +1897,10 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     solve at ``100 rtol`` is Newton's from the rough orbit, whose map is at hand, with its
     Jacobian (Coulomb friction: the state fixes the phase); else, or where that ends above
     the residual's tolerance, from the orbit at ``rtol`` with its Jacobian.
+
+    Where Newton found the orbit (``ph`` its map's end) and the residual's share of the
+    error is above :data:`POLISH_SHARE` of the tolerance's, its chord steps go on
+    (:data:`POLISH`) before the error is stated.
     """
     k = P[P_K]
     if not use_newton:  # else Newton's last map gave them
@@ -1895,7 +1944,18 @@ def _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale, use_newto
     W[W_MODE, 0] = hint  # the orbit's phase at its section
     periods += int(info[2])
     # the section residual: a state error res moves a mean by about res/(1 - mult)
-    err += 10.0 * res / max(1e-3, 1.0 - min(mult, 0.999))
+    gain = 10.0 / max(1e-3, 1.0 - min(mult, 0.999))
+    if use_newton and conv and gain * res > POLISH_SHARE * err:
+        # the residual counts in the error: chord steps on J go on (its means follow)
+        info[:] = 0.0
+        newton(P, s, ph, True, rtol, rtol, hmax, W, cnt, max_events, 1e-12 * scale,
+               100.0 * rtol * scale, 12, J, info, True, DIFF_STEP, POLISH, means,
+               _near(scale))
+        W[W_MODE, 0] = hint
+        periods += int(info[2])
+        res = min(res, info[1])
+        err = max(abs(loose[0] - means[0]), abs(loose[1] - means[1]))
+    err += gain * res
     out_f[O_ERR] = err
     # settling: the linearised contraction from the start to within the error
     # (plain iteration: the periods it took)
@@ -2064,6 +2124,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
     found = False
     periods = 0
     R = np.zeros(N_R)  # the rough orbit's record
+    ph = np.empty(N_S)  # Newton's last map's end, Phi(s)
     if not warm:
         periods, found = _start_transient(P, s, rtol, hmax, W, cnt, max_events, max_periods,
                                           J, info, R)
@@ -2078,7 +2139,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
         hint0 = W[W_MODE, 0]
         status, mult, use_newton, periods = _orbit_search(
             P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget, periods, J, info, means,
-            R, warm and given, found)
+            R, ph, warm and given, found)
         if status == ST_PERIODIC and use_newton and P[P_SR] != 1.0:
             # sliding and stick-slip coexist: the motion from the transient's end must come
             # to Newton's orbit; where it does not, its own orbit by plain iteration
@@ -2096,7 +2157,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
                 info[:] = 0.0
                 status, mult, use_newton, periods = _orbit_search(
                     P, s, s0, rtol, hmax, W, cnt, max_events, scale, budget - periods, periods,
-                    J, info, means, R, False, False, False)
+                    J, info, means, R, ph, False, False, False)
         periods_to_orbit = periods
         if status == ST_PERIODIC and periods > max_periods:
             status = ST_NOT_CONVERGED  # the orbit took more periods than allowed
@@ -2105,7 +2166,7 @@ def _steady(P, s, hint, warm, J, given, rtol, max_periods, max_events, out_f, ou
             out_i[I_PERIOD] = 1
             periods = _orbit_error(P, s, s_start, rtol, hmax, W, cnt, max_events, scale,
                                    use_newton, J, info, mult, res, periods,
-                                   periods_to_orbit, means, out_f, R)
+                                   periods_to_orbit, means, out_f, R, ph)
         elif cnt[C_FAIL] == 0 and periods + N_AVG + N_WINDOW < max_periods:
             status = _averaged(P, s, s0, use_newton, rtol, hmax, W, cnt, max_events, status,
                                means, out_f)
