@@ -88,7 +88,7 @@ from .dopri import (
     _E6,
     _E7,
 )
-from .jit import jit, jit_inline
+from .jit import jit, jit_bare, jit_inline
 
 TWO_PI = 2.0 * math.pi
 AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
@@ -566,7 +566,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
     dz[6] = y
 
 
-@jit
+@jit_bare
 def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg):
     """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``,
     ``K[7]`` scratch).
@@ -595,7 +595,7 @@ def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg):
     rhs(t + h, znew, K[6], prm, PC, npc, HS, nh, seg)
 
 
-@jit
+@jit_bare
 def _err(z, znew, K, h, rtol, atol):
     s = 0.0
     for i in range(N_ERR):
@@ -719,11 +719,26 @@ def _levels(prm, PC, npc, t0, P0, N0, up, down, unloading, LP, LN, LT):
                 if te > t0 + 1e-12 and mt < LT.size:
                     LT[mt] = te
                     mt += 1
-    LP[:mp].sort()
-    LN[:mn].sort()
-    LN[:mn] = LN[:mn][::-1].copy()
-    LT[:mt].sort()
+    _sort(LP, mp)
+    _sort(LN, mn)
+    for i in range(mn // 2):  # descending
+        LN[i], LN[mn - 1 - i] = LN[mn - 1 - i], LN[i]
+    _sort(LT, mt)
     return mp, mn, mt
+
+
+@jit_inline
+def _sort(x, m):
+    """``x[:m]`` in ascending order, in place (insertion: a segment has a few levels, and
+    numba's sort needs the reference counting :func:`_period` runs without).
+    """
+    for i in range(1, m):
+        v = x[i]
+        j = i - 1
+        while j >= 0 and x[j] > v:
+            x[j + 1] = x[j]
+            j -= 1
+        x[j + 1] = v
 
 
 @jit
@@ -744,7 +759,7 @@ def _crossed(f, sg):
     return f != 0.0 and (f > 0.0) != (sg > 0.0)
 
 
-@jit
+@jit_bare
 def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
     none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
@@ -807,18 +822,23 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     (and the points touched down in it appended).  Steps also end at the segment's levels
     (:func:`_levels`).
     """
+    return _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves,
+                   np.empty(N_Z), np.empty(N_Z), np.empty(5), np.empty(4 * MAX_PIECES),
+                   np.empty(4 * MAX_PIECES), np.empty(2 * MAX_PIECES))
+
+
+@jit_bare
+def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves, znew, k1,
+            seg, LP, LN, LT):
+    """:func:`period` with its scratch (the step's end and first stage, the segment's
+    record, the levels), without reference counting (its step loop is hot).
+    """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
     jump = a > 1.0
     z[3] = 0.0
     z[4] = 0.0
     z[5] = 0.0
     z[6] = 0.0
-    znew = np.empty(N_Z)
-    k1 = np.empty(N_Z)
-    seg = np.empty(5)
-    LP = np.empty(4 * MAX_PIECES)
-    LN = np.empty(4 * MAX_PIECES)
-    LT = np.empty(2 * MAX_PIECES)
     t = t0
     seg[0] = 0.0
     seg[1] = 0.0
