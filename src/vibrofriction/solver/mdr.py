@@ -17,11 +17,12 @@ from typing import Any
 
 import numpy as np
 
-from .._kernels.codes import FLIGHT, SLIP_POS, STICK
+from .._kernels.average import window_means
+from .._kernels.codes import FLIGHT, O_ERR, O_MU, SLIP_POS, STICK
 from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 from ..capabilities import CAPABILITIES, CONTINUUM_BELOW
-from ..schema import POSITIVE
+from ..schema import FLOAT_COLUMNS, POSITIVE
 from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
 from .mdr_continuum import (
@@ -39,7 +40,6 @@ SUBSTEPS = 64  # the scan's sub-steps a period: a cost, not a resolution (no roo
 # SolverSettings.max_periods and tol_state
 MAX_PERIODS = int(CAPABILITIES["mdr"].settings["max_periods"])
 STATE_TOL = float(CAPABILITIES["mdr"].settings["tol_state"])
-AVERAGE_WINDOW = 100
 ANDERSON = 6  # period maps mixed
 ACCELERATED_PERIODS = 200  # then plain iteration
 MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows to 2560, 5120)
@@ -148,8 +148,10 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
     springs' elongations) is updated by Anderson mixing of the last ``ANDERSON`` period
     maps (the transient of a lightly damped body is long under plain iteration); a
     change of the discrete states restarts the history. Otherwise the mean over the last
-    ``AVERAGE_WINDOW`` periods, its error the difference of the window's two halves:
-    ``"averaged"`` (or ``"not converged"`` if the kernel made no progress).
+    half of the periods run, its error the range of the means over the last three
+    doubling windows (:func:`averaged_row`): ``"averaged"`` (or ``"not converged"`` if the
+    kernel made no progress, or ran fewer than 8 periods). ``period_integrals``: the
+    integrals of the friction and the normal force over each period run.
     """
     M = checked_count("n_springs", n_springs)
     a, n_exp = float(amplitude), float(profile_exponent)
@@ -169,21 +171,39 @@ def mdr_row(alpha: float, beta: float, amplitude: float, V: float, profile_expon
             else math.nan, math.inf
     elif conv:
         status, mu, err = "periodic", float(pf_a[-1] / pn_a[-1]), 1e-12
-    elif periods < 4:  # too few periods for two halves of a window (max_periods < 4)
+    elif pf_a.size < 8:  # too few periods for three doubling windows (max_periods < 8)
         status, mu, err = "not converged", float(pf_a[-1] / pn_a[-1]), math.inf
     else:
-        win = min(AVERAGE_WINDOW, periods // 2)
-        h = win // 2
-        mu = float(np.sum(pf_a[-win:]) / np.sum(pn_a[-win:]))
-        m1 = np.sum(pf_a[-win:-h]) / np.sum(pn_a[-win:-h])
-        m2 = np.sum(pf_a[-h:]) / np.sum(pn_a[-h:])
-        status, err = "averaged", float(abs(m1 - m2)) + 1e-12
+        status = "averaged"
+        mu, err = averaged_row(pf_a, pn_a)
     return dict(mu_ratio=mu, error=err, status=status, periods=int(periods),
                 mean_normal_ratio=float(nint / (2.0 * math.pi)),
                 stick_area_fraction=float(frac[0]), slip_area_fraction=float(frac[1]),
                 open_area_fraction=float(frac[2]), max_excess=float(viol),
                 events_per_period=int(events), n_springs=M, final_status=st.copy(),
-                final_stuck=int(np.sum(st == STICK)), final_state=(y, yd, st.copy(), e.copy()))
+                final_stuck=int(np.sum(st == STICK)), final_state=(y, yd, st.copy(), e.copy()),
+                period_integrals=(pf_a, pn_a))
+
+
+def averaged_row(pf: np.ndarray, pn: np.ndarray) -> tuple[float, float]:
+    """A row's running average ``(mu, error)``.
+
+    From its per-period integrals of the friction force ``pf`` and of the normal force
+    ``pn`` (``P >= 8`` periods).
+
+    ``mu`` is the mean over the last half, ``(P/2, P]``; ``error`` the range of the means
+    over ``(P/8, P/4]``, ``(P/4, P/2]`` and ``(P/2, P]``: the event solver's rule
+    (:func:`vibrofriction._kernels.average.window_means`; the periods up to ``P/8`` are
+    the transient). The difference of two windows alone understates the error of noise-like
+    fluctuations about a third of the time (docs/solver.md, "Averaged answers").
+    """
+    P = pf.size
+    ks = np.array([P // 8, P // 4, P // 2, P])
+    num = np.concatenate(([0.0], np.cumsum(pf)))[ks]
+    den = np.concatenate(([0.0], np.cumsum(pn)))[ks]
+    out = np.full(len(FLOAT_COLUMNS), math.nan)
+    window_means(num, den, ks.astype(float), 4, out)
+    return float(out[O_MU]), float(out[O_ERR])
 
 
 def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
