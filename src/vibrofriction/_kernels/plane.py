@@ -284,8 +284,13 @@ def max_step(P):
 @jit_inline
 def rhs(mode, P, t, z, dz):
     """The right-hand side of the phase ``mode`` into ``dz``."""
+    _rhs_at(mode, P, math.cos(t), math.sin(t), z, dz)
+
+
+@jit_inline
+def _rhs_at(mode, P, ct, st, z, dz):
+    """:func:`rhs` at ``cos t = ct``, ``sin t = st``."""
     al, g, aly, gy = P[P_ALPHA], P[P_GAMMA], P[P_ALPHA_Y], P[P_GAMMA_Y]
-    ct, st = math.cos(t), math.sin(t)
     Dx, Dy, hdx, hdy, vsx, vsy = _drive(P, ct, st)
     fx, fy, ex, ey, _ = _contact(mode, P, ct, st, z, vsx, vsy)
     dz[0] = z[2] - P[P_V]
@@ -303,7 +308,12 @@ def switch_function(mode, P, t, z):
     """Positive inside the phase, falling through 0 where it ends (flight: 1)."""
     if mode == FLIGHT:
         return 1.0
-    ct, st = math.cos(t), math.sin(t)
+    return _switch_at(mode, P, math.cos(t), math.sin(t), z)
+
+
+@jit_inline
+def _switch_at(mode, P, ct, st, z):
+    """:func:`switch_function` (not in flight) at ``cos t = ct``, ``sin t = st``."""
     _, _, _, _, vsx, vsy = _drive(P, ct, st)
     if mode == STICK:
         n, _ = _normal(P[P_A], ct, st)
@@ -315,8 +325,9 @@ def switch_function(mode, P, t, z):
 @jit_bare
 def rk_step(mode, P, t, z, k1, h, znew, k7, K):
     """One Dormand-Prince step of length ``h`` from ``(t, z)`` (``k1 = f(t, z)``):
-    ``znew``, ``k7 = f(t + h, znew)``; returns the error estimate's components in
-    ``K[6]``.  ``K`` is (7, N_Z) scratch.
+    ``znew``, ``k7 = f(t + h, znew)``; the error estimate's components into ``K[6]``
+    (``K`` is (7, N_Z) scratch).  Returns ``(cos, sin)`` of ``t + h`` (the last two stages'
+    time, and the step's end's: the switch function and the projection there take them).
     """
     tmp = K[6]
     for i in range(N_Z):
@@ -335,14 +346,16 @@ def rk_step(mode, P, t, z, k1, h, znew, k7, K):
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A61 * k1[i] + _A62 * K[1, i] + _A63 * K[2, i]
                              + _A64 * K[3, i] + _A65 * K[4, i])
-    rhs(mode, P, t + h, tmp, K[5])
+    ce, se = math.cos(t + h), math.sin(t + h)
+    _rhs_at(mode, P, ce, se, tmp, K[5])
     for i in range(N_Z):
         znew[i] = z[i] + h * (_B1 * k1[i] + _B3 * K[2, i] + _B4 * K[3, i]
                               + _B5 * K[4, i] + _B6 * K[5, i])
-    rhs(mode, P, t + h, znew, k7)
+    _rhs_at(mode, P, ce, se, znew, k7)
     for i in range(N_Z):
         tmp[i] = h * (_E1 * k1[i] + _E3 * K[2, i] + _E4 * K[3, i] + _E5 * K[4, i]
                       + _E6 * K[5, i] + _E7 * k7[i])
+    return ce, se
 
 
 @jit_inline
@@ -494,8 +507,14 @@ def _cone_tangent(z, Y, scale):
 @jit_inline
 def project(mode, P, t, z):
     """Jenkins slip: put ``e`` back on the cone ``|e| = n/k`` (its direction kept)."""
+    _project_at(mode, P, math.cos(t), z)
+
+
+@jit_inline
+def _project_at(mode, P, ct, z):
+    """:func:`project` at ``cos t = ct``."""
     if mode == SLIP and P[P_C] == 0.0:
-        n, _ = normal_force(P[P_A], t)
+        n, _ = _normal(P[P_A], ct, 0.0)
         r = _length(z[4], z[5])
         if r > 0.0:
             z[4] *= n / (P[P_K] * r)
@@ -652,8 +671,8 @@ def _stick_margin(P, w):
         dfx += FA[j] * w[j]
         dfy += FA[N_L + j] * w[j]
     n, dn = _normal(P[P_A], w[N_Z], w[N_Z + 1])
-    f = math.hypot(fx, fy)
-    rate = P[P_SR] * dn - ((fx * dfx + fy * dfy) / f if f > 0.0 else math.hypot(dfx, dfy))
+    f = _length(fx, fy)
+    rate = P[P_SR] * dn - ((fx * dfx + fy * dfy) / f if f > 0.0 else _length(dfx, dfy))
     return P[P_SR] * n - f, rate
 
 
@@ -779,7 +798,7 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
         if t + hh >= t1:
             hh = t1 - t
             last = True
-        rk_step(mode, P, t, z, k1, hh, znew, k7, K)
+        ce, se = rk_step(mode, P, t, z, k1, hh, znew, k7, K)
         en = error_norm(z, znew, K[6], rtol, atol)
         cnt[C_STEPS] += 1
         if not (en <= 1.0):
@@ -790,8 +809,10 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             h = hh * max(0.2, 0.9 * en ** -0.2)
             continue
         tn = t1 if last else t + hh
-        project(mode, P, tn, znew)
-        g1 = switch_function(mode, P, tn, znew)
+        if tn != t + hh:  # (the step's end rounds apart from t1)
+            ce, se = math.cos(tn), math.sin(tn)
+        _project_at(mode, P, ce, znew)
+        g1 = _switch_at(mode, P, ce, se, znew) if mode != FLIGHT else 1.0
         if g1 < 0.0:  # a switch inside the step: Illinois on the step length
             sl, gl, sr, gr = 0.0, g0, hh, g1
             side = 0
@@ -811,9 +832,9 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
                     s = (sl * gr - sr * gl) / (gr - gl)
                     if not (sl < s < sr):
                         s = 0.5 * (sl + sr)
-                rk_step(mode, P, t, z, k1, s, zb, kb, K)
-                project(mode, P, t + s, zb)
-                gs = switch_function(mode, P, t + s, zb)
+                cs, ss = rk_step(mode, P, t, z, k1, s, zb, kb, K)
+                _project_at(mode, P, cs, zb)
+                gs = _switch_at(mode, P, cs, ss, zb) if mode != FLIGHT else 1.0
                 if gs < 0.0:
                     sr, gr = s, gs
                     right = True
@@ -829,8 +850,8 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
             if right:
                 _copy_rows(zr, kr, Kr, zb, kb, K, tangent)
             else:
-                rk_step(mode, P, t, z, k1, sr, zb, kb, K)
-                project(mode, P, t + sr, zb)
+                cs, _ = rk_step(mode, P, t, z, k1, sr, zb, kb, K)
+                _project_at(mode, P, cs, zb)
             if tangent:
                 tangent_step(mode, P, t, z, k1, K, sr, zb, T)
             _account(mode, P, t, sr, zb, acc, ph, k1[6], kb[6])
