@@ -98,10 +98,10 @@ def bench() -> list[str]:
     within = sum(e <= 1e-7 for e in curved_errors)
     lines += [
         "",
-        f"Median ratio to the flat point: curved tips **{statistics.median(curved_ratios):.0f}x** "
+        f"Median ratio to the flat point: curved tips **{statistics.median(curved_ratios):.1f}x** "
         f"({min(curved_ratios):.0f}x to {max(curved_ratios):.0f}x over "
         f"{len(curved_ratios)} points; {within} of them with a stated error <= 1e-7), "
-        f"2-D **{statistics.median(plane_ratios):.0f}x** ({min(plane_ratios):.0f}x to "
+        f"2-D **{statistics.median(plane_ratios):.1f}x** ({min(plane_ratios):.0f}x to "
         f"{max(plane_ratios):.0f}x over {len(plane_ratios)}).",
     ]
     print(lines[-1])
