@@ -158,7 +158,9 @@ from, ``W[W_MODE, 1]`` the phase it ended in (:func:`entry_hint`)."""
 W_KEEP = 15
 """``W[W_KEEP:W_KEEP + 9]``: an event's last trial step past the switch (its end, its rate
 and its stages), kept for the step the event takes (:func:`_rk_segment`)."""
-N_W = 24
+W_EXACT = 24
+"""``W[W_EXACT:W_EXACT + 2]``: the state and its successor of :func:`_exact_steps`."""
+N_W = 26
 # counters: events, steps, rejected steps, failures; then the step budget of a period
 # (0: MAX_STEPS_PER_PERIOD; Newton's trial states get a smaller one)
 C_EVENTS, C_STEPS, C_REJECT, C_FAIL, C_LIMIT = range(5)
@@ -659,25 +661,26 @@ def _cubic_dips(g0, d0, g1, d1):
 
 
 @jit
-def _stick_margin(P, w):
-    """The stick's switch function ``s_r n - |f|`` at the augmented state ``w`` and its rate
-    (``f = F w``, ``f' = F A w``; ``n`` from the ``cos t``, ``sin t`` that ``w`` carries).
+def _stick_margin(P, w, c, s):
+    """The stick's switch function ``s_r n - |f|`` at the augmented state ``(w, c, s, 1)``
+    (``w`` the state, ``c = cos t``, ``s = sin t``) and its rate (``f = F w``, ``f' = F A w``).
     """
     F, FA = P[P_F_STICK:P_FA_STICK], P[P_FA_STICK:P_PHI_FLIGHT]
     fx, fy, dfx, dfy = 0.0, 0.0, 0.0, 0.0
     for j in range(N_L):
-        fx += F[j] * w[j]
-        fy += F[N_L + j] * w[j]
-        dfx += FA[j] * w[j]
-        dfy += FA[N_L + j] * w[j]
-    n, dn = _normal(P[P_A], w[N_Z], w[N_Z + 1])
+        wj = w[j] if j < N_Z else (c if j == N_Z else (s if j == N_Z + 1 else 1.0))
+        fx += F[j] * wj
+        fy += F[N_L + j] * wj
+        dfx += FA[j] * wj
+        dfy += FA[N_L + j] * wj
+    n, dn = _normal(P[P_A], c, s)
     f = _length(fx, fy)
     rate = P[P_SR] * dn - ((fx * dfx + fy * dfy) / f if f > 0.0 else _length(dfx, dfy))
     return P[P_SR] * n - f, rate
 
 
-@jit
-def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
+@jit_bare
+def _exact_steps(mode, P, t, t1, z, acc, cnt, T, W):
     """Advance the linear phase ``mode`` (stick or flight) from ``t`` by its exact flow
     (:func:`linear_flows`) in whole steps ``H`` while they end before ``t1`` and, in
     stick, its switch function stays positive at the step's end and on the cubic of
@@ -691,25 +694,29 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
         Phi = P[P_PHI_FLIGHT:N_P].reshape((N_L, N_L))
     if t + H > t1:
         return t
-    w, wn = np.empty(N_L), np.empty(N_L)
+    # the augmented state (z, cos t, sin t, 1): z in a row of W, the rest in scalars
+    w, wn = W[W_EXACT], W[W_EXACT + 1]
     for i in range(N_Z):
         w[i] = z[i]
-    w[N_Z], w[N_Z + 1], w[N_Z + 2] = math.cos(t), math.sin(t), 1.0
+    c, s = math.cos(t), math.sin(t)
     tangent = T.shape[0] > 0
     if tangent:
         Y, arg = T[0], T[3]
     ph = mode if mode != FLIGHT else 2
-    g0, d0 = _stick_margin(P, w) if mode == STICK else (0.0, 0.0)
+    g0, d0 = _stick_margin(P, w, c, s) if mode == STICK else (0.0, 0.0)
     while t + H <= t1:
-        for i in range(N_L):
+        for i in range(N_Z):
             v = 0.0
-            for j in range(N_L):
+            for j in range(N_Z):
                 v += Phi[i, j] * w[j]
+            v += Phi[i, N_Z] * c
+            v += Phi[i, N_Z + 1] * s
+            v += Phi[i, N_Z + 2] * 1.0
             wn[i] = v
         tn = t + H
-        wn[N_Z], wn[N_Z + 1], wn[N_Z + 2] = math.cos(tn), math.sin(tn), 1.0  # not propagated
+        c, s = math.cos(tn), math.sin(tn)  # not propagated
         if mode == STICK:
-            g1, d1 = _stick_margin(P, wn)
+            g1, d1 = _stick_margin(P, wn, c, s)
             if g1 <= 0.0 or _cubic_dips(g0, H * d0, g1, H * d1):
                 break
             g0, d0 = g1, d1
@@ -732,7 +739,7 @@ def _exact_steps(mode, P, t, t1, z, acc, cnt, T):
     return t
 
 
-@jit
+@jit_bare
 def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     """Integrate ``mode`` from ``t`` towards ``t1`` until its switch function falls
     through 0 (located to round-off) or ``t1``.  ``z`` is updated in place.  Returns
@@ -755,13 +762,13 @@ def segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     return _linear_segment(FLIGHT, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T)
 
 
-@jit
+@jit_bare
 def _linear_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
     """:func:`segment` of stick or flight: exact steps, the rest by Runge-Kutta steps."""
     if switch_function(mode, P, t, z) < 0.0:
         return t, True, h
     while True:
-        t = _exact_steps(mode, P, t, t1, z, acc, cnt, T)
+        t = _exact_steps(mode, P, t, t1, z, acc, cnt, T, W)
         tb = min(t + P[P_H], t1)
         t, event, h = _rk_segment(mode, P, t, tb, z, h, rtol, atol, hmax, W, acc, cnt, T)
         if event or t >= t1 or cnt[C_FAIL] > 0:
