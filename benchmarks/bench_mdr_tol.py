@@ -8,16 +8,19 @@ At the ten regimes of ``bench_ratios.py`` (the two jumping ones since the contin
 (within ``rows_alone()``: rows doubled up to 5120 springs); the
 stated errors and statuses after the times; medians of the ratios at the end.
 
-    PYTHONPATH=src python benchmarks/bench_mdr_tol.py [--tol TOL] [--write]
+    PYTHONPATH=src python benchmarks/bench_mdr_tol.py [--tol TOL] [--continuum] [--write]
 
 ``--tol`` another ``tol_trusted`` (``1e-5``, the default one, compares the two solvers where a
-user who sets nothing gets them); ``--write`` appends the run to
-benchmarks/results/mdr_tol.md.
+user who sets nothing gets them); at and above ``capabilities.CONTINUUM_BELOW`` the MDR solver
+answers with the rows, and ``--continuum`` makes it answer with the row without springs all
+the same (``solver.mdr.CONTINUUM_TOL`` raised in this process), to compare the two there;
+``--write`` appends the run to benchmarks/results/mdr_tol.md.
 """
 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import statistics
 import time
@@ -28,7 +31,7 @@ import numpy as np
 from bench_ratios import REGIMES
 from sections import append_run
 from vibrofriction.schema import Status
-from vibrofriction.solver import SolverSettings, solve_points
+from vibrofriction.solver import SolverSettings, mdr, solve_points
 from vibrofriction.solver.mdr import rows_alone
 
 TOL = 1e-7
@@ -95,11 +98,16 @@ def bench(tol: float = TOL) -> list[str]:
 def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--tol", type=float, default=TOL, help="tol_trusted (default %(default)g)")
+    ap.add_argument("--continuum", action="store_true",
+                    help="the row without springs at every tolerance")
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
     args = ap.parse_args()
+    if args.continuum:
+        mdr.CONTINUUM_TOL = math.inf
     lines = bench(args.tol)
     if args.write:
-        flag = "" if args.tol == TOL else f" --tol {args.tol:g}"
+        flag = ("" if args.tol == TOL else f" --tol {args.tol:g}") \
+            + (" --continuum" if args.continuum else "")
         append_run(RESULTS, "Curved tips at a stated error <= 1e-7: the row without springs",
                    f"PYTHONPATH=src python benchmarks/bench_mdr_tol.py{flag} --write",
                    f"load average {os.getloadavg()[0]:.1f} at the end; each time per point, the "
