@@ -126,7 +126,7 @@ from .codes import (
     point_index,
 )
 from .integrate import to_lab_frame
-from .jit import jit
+from .jit import jit, jit_bare
 from .newton import _solve_small, dense_spectral_radius
 from .phases import frame_offset, inplane_forcing
 
@@ -1106,7 +1106,7 @@ def _segment(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp):
                     work[6])
 
 
-@jit
+@jit_bare
 def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangent, tw):
     """:func:`_segment`, with ``tangent`` the variational equations along (``tw[0]``).
 
@@ -1129,9 +1129,12 @@ def _advance(P, z, t0, t1, mode, rtol, hbox, scale, work, count, log, lp, tangen
         err = _step(P, t, z, hh, mode, rtol, scale, ws, K, J, M, piv, znew, tangent, tw)
         if err <= 1.0:
             t = t1 if last else t + hh
-            z[:] = znew
+            for i in range(z.shape[0]):  # (element by element: no reference counting here)
+                z[i] = znew[i]
             if tangent:
-                T[:, :] = Tnew
+                for i in range(T.shape[0]):
+                    for j in range(T.shape[1]):
+                        T[i, j] = Tnew[i, j]
             count[0] += 1
             steps += 1
             if steps > MAX_STEPS:
