@@ -93,7 +93,7 @@ from .basis import (
     make_mode,
 )
 from .codes import FLIGHT, SLIP_NEG, SLIP_POS, STICK
-from .jit import jit
+from .jit import jit, jit_bare
 from .phases import _periodic_response
 
 TWO_PI = 2.0 * math.pi
@@ -687,7 +687,7 @@ def _slip_jump(i, forward, e_i, xd, ctau, stau, a, w, k, g, acc, st, eh, memb, c
                 area)
 
 
-@jit
+@jit_bare
 def _period(alpha, beta, a, V, gamma, M, substeps, hc, hs, geo, scr, period, y, yd, st, e,
             frac, viol, rec, ri, acc, sr):
     """One period of the row from the section state ``(y, y', st, e)`` (``st``, ``e``
