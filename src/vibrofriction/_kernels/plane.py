@@ -308,14 +308,14 @@ def _rhs_at(mode, P, ct, st, z, dz):
 @jit_inline
 def switch_function(mode, P, t, z):
     """Positive inside the phase, falling through 0 where it ends (flight: 1)."""
-    if mode == FLIGHT:
-        return 1.0
     return _switch_at(mode, P, math.cos(t), math.sin(t), z)
 
 
 @jit_inline
 def _switch_at(mode, P, ct, st, z):
-    """:func:`switch_function` (not in flight) at ``cos t = ct``, ``sin t = st``."""
+    """:func:`switch_function` at ``cos t = ct``, ``sin t = st``."""
+    if mode == FLIGHT:
+        return 1.0
     _, _, _, _, vsx, vsy = _drive(P, ct, st)
     if mode == STICK:
         n, _ = _normal(P[P_A], ct, st)
@@ -819,7 +819,7 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
         if tn != t + hh:  # (the step's end rounds apart from t1)
             ce, se = math.cos(tn), math.sin(tn)
         _project_at(mode, P, ce, znew)
-        g1 = _switch_at(mode, P, ce, se, znew) if mode != FLIGHT else 1.0
+        g1 = _switch_at(mode, P, ce, se, znew)
         if g1 < 0.0:  # a switch inside the step: Illinois on the step length
             sl, gl, sr, gr = 0.0, g0, hh, g1
             side = 0
@@ -841,7 +841,7 @@ def _rk_segment(mode, P, t, t1, z, h, rtol, atol, hmax, W, acc, cnt, T):
                         s = 0.5 * (sl + sr)
                 cs, ss = rk_step(mode, P, t, z, k1, s, zb, kb, K)
                 _project_at(mode, P, cs, zb)
-                gs = _switch_at(mode, P, cs, ss, zb) if mode != FLIGHT else 1.0
+                gs = _switch_at(mode, P, cs, ss, zb)
                 if gs < 0.0:
                     sr, gr = s, gs
                     right = True
