@@ -33,6 +33,33 @@ def test_hermite_is_exact_for_quintics():
         assert du == pytest.approx(dp(t), abs=1e-11)
 
 
+def test_front_newton_converges_quadratically(monkeypatch):
+    """A history piece's front (:func:`_hfront`): the root of ``u + c delta = target`` to
+    round-off in a few Newton steps, also from a guess on the root itself (a converged
+    step lands on the bracket's end: it must answer, not bisect the bracket away)."""
+    calls = []
+    hermite = mc._hermite.py_func
+
+    def counted(HS, i, t):
+        calls.append(t)
+        return hermite(HS, i, t)
+
+    monkeypatch.setattr(mc, "_hermite", counted)
+    c, a = 0.5, 0.5
+    ts = np.arange(0.0, 2.01, 0.1)
+    HS = np.zeros((ts.size, mc.N_HS))  # u = 2 tau: its quintic interpolant is exact
+    HS[:, mc.HT], HS[:, mc.HU], HS[:, mc.HD] = ts, 2.0 * ts, 2.0
+    HS[:, mc.HN] = HS[:, mc.HU] + c * (1.0 + a * np.cos(ts))
+    root = 1.2345
+    target = 2.0 * root + c * (1.0 + a * math.cos(root))
+    for guess, most in ((root + 0.04, 5), (root, 2), (math.nan, 6)):
+        calls.clear()
+        t, i = mc._hfront.py_func(HS, ts.size, 0.0, 2.0, target, 1.0, c, a, guess, 12)
+        assert t == pytest.approx(root, abs=1e-13)
+        assert i == 12
+        assert len(calls) <= most
+
+
 def test_covers():
     assert continuum_covers(0.5, 0.3, 1.0)
     assert continuum_covers(1.2, 0.3, 1.0)  # jumping

@@ -198,3 +198,29 @@ def test_rigid_history() -> None:
     assert steady.x_dot[-1] == pytest.approx(steady.x_dot[0], abs=1e-5)
     assert steady.impulse[-1, 0] / (2.0 * math.pi * r.mean_normal_ratio) == pytest.approx(
         r.mu_ratio, abs=1e-5)
+
+
+def test_slaved_coefficient_root_converges(monkeypatch):
+    """The root of ``g(m) = s0 + s1 m + s2 w'(m, L)`` (:func:`rs._root_m`, the contact's
+    coefficient where its velocity is slaved) to round-off against ``brentq``, and in
+    Newton's few steps: a converged step lands on the bracket's end just moved, and must
+    answer rather than bisect the bracket down."""
+    from scipy.optimize import brentq
+
+    P = _params(0.5, 0.5, 0.3, 0.0, 0.01, 0.015, 1e-3)
+    slip_rate = rs._slip_rate.py_func
+    calls = []
+
+    def counted(P, m, L):
+        calls.append(m)
+        return slip_rate(P, m, L)
+
+    monkeypatch.setattr(rs, "_slip_rate", counted)
+    for s0, s1, s2, far, most in ((-1.2, 1.0, 1e-3, 2.0, 14), (1.1, -1.0, -1e-2, 2.0, 8),
+                                  (-0.3, 1.0, 0.5, 1.0, 4)):
+        calls.clear()
+        m = rs._root_m.py_func(P, 0.0, s0, s1, s2, far)
+        exact = brentq(lambda x: s0 + s1 * x + s2 * slip_rate(P, x, 0.0)[0], 0.0, far,
+                       xtol=1e-15, rtol=1e-15)
+        assert m == pytest.approx(exact, rel=1e-14, abs=1e-15)
+        assert len(calls) <= most

@@ -330,18 +330,22 @@ def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig):
         i = lo
     x0 = max(ta, HS[i, HT])
     x1 = min(tb, HS[i + 1, HT])
-    # safeguarded Newton in [x0, x1], from the guess where it lies there
+    # safeguarded Newton in [x0, x1], from the guess where it lies there; a step that
+    # stays in the closed bracket is taken (a converged step lands on the end just
+    # moved: bisecting there would throw the root away and halve the bracket to the end)
     t = tg if x0 < tg < x1 else 0.5 * (x0 + x1)
     for _ in range(60):
         u, du = _hermite(HS, i, t)
         f = u + sgn * c * (1.0 + a * math.cos(t)) - target
+        if f == 0.0:
+            return t, i
         df = du - sgn * c * a * math.sin(t)
         if (f > 0.0) == (sgn < 0.0):
             x0 = t
         else:
             x1 = t
         tn = t - f / df if df != 0.0 else 0.5 * (x0 + x1)
-        if not (x0 < tn < x1):
+        if not (x0 <= tn <= x1):
             tn = 0.5 * (x0 + x1)
         # (the force is smooth across the front: its error is second order in the front's)
         if abs(tn - t) <= 1e-12 * (1.0 + abs(t)) or x1 - x0 <= 1e-12 * (1.0 + abs(t)):
@@ -1090,7 +1094,7 @@ def _set_section(x, z, PC, npc, u, n):
 
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
-LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
+LEAP = 1e2  # a mixed step further than this times the residual from the map's is refused
 ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 

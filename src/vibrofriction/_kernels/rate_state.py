@@ -1343,14 +1343,15 @@ def _root_m(P, L, s0, s1, s2, far):
     for _ in range(200):
         w, dwdm, _ = _slip_rate(P, m, L)
         g = s0 + s1 * m + s2 * w
+        if g == 0.0:
+            return m
         if (g < 0.0) == up:
             lo = m
         else:
             hi = m
         dg = s1 + s2 * dwdm
-        step = -g / dg if dg != 0.0 else 0.0
-        mn = m + step
-        if not (lo < mn < hi):
+        mn = m - g / dg if dg != 0.0 else 0.5 * (lo + hi)
+        if not (lo <= mn <= hi):  # (a converged step lands on the end just moved)
             mn = 0.5 * (lo + hi)
         if abs(mn - m) <= 1e-15 * (1.0 + abs(m)) or hi - lo <= 1e-15 * (1.0 + abs(m)):
             return mn
