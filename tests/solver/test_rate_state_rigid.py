@@ -220,7 +220,8 @@ def test_slaved_coefficient_root_converges(monkeypatch):
                                   (-0.3, 1.0, 0.5, 1.0, 4)):
         calls.clear()
         m = rs._root_m.py_func(P, 0.0, s0, s1, s2, far)
-        exact = brentq(lambda x: s0 + s1 * x + s2 * slip_rate(P, x, 0.0)[0], 0.0, far,
+        exact = brentq(lambda x, s0=s0, s1=s1, s2=s2: s0 + s1 * x + s2 * slip_rate(P, x, 0.0)[0],
+                       0.0, far,
                        xtol=1e-15, rtol=1e-15)
         assert m == pytest.approx(exact, rel=1e-14, abs=1e-15)
         assert len(calls) <= most

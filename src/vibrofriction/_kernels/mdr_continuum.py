@@ -97,9 +97,10 @@ AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_
 # the segment's start) and its last front and that front's history interval (a cache)
 X0, X1, KIND, VAL, TA, TB, X0P, X1P, UA, UB, TF, IF = range(12)
 N_PC = 12
-# history table columns: tau, u, u', u'', Q = int u rho' dtau, P = u - c delta, N
-HT, HU, HD, HDD, HQ, HP, HN = range(7)
-N_HS = 7
+# history table columns: tau, u, u', u'', Q = int u rho' dtau, P = u - c delta, N, and
+# cos tau, sin tau (the angles within an interval are rotations from its start: _cs)
+HT, HU, HD, HDD, HQ, HP, HN, HC, HSN = range(9)
+N_HS = 9
 # parameter vector
 P_ALPHA, P_GAMMA, P_K, P_C, P_N, P_A, P_V, P_HC, P_HS = range(9)
 # ... then Gauss-Jacobi's nodes on [0, 1] and weights for the weight s^(1/n)
@@ -128,6 +129,7 @@ SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is inte
 # with its singular factor apart (:func:`_wint`)
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
 MAX_STEPS_HALF = 20000  # steps in a half period before giving up
+CS_NEAR = 0.6  # _cs rotates by at most this (its series is exact to round-off there)
 
 
 @jit
@@ -138,6 +140,33 @@ def _root(x, n):
     if n == 1.0:
         return x
     return x ** (1.0 / n)
+
+
+@jit
+def _cs(t, t0, c0, s0):
+    """``(cos t, sin t)`` from ``c0 = cos t0``, ``s0 = sin t0``: the rotation by
+    ``x = t - t0``, whose cosine and sine are Taylor series exact to round-off for
+    ``|x| <= CS_NEAR`` (the library's functions beyond).  A step's stages, its dense
+    output and a history interval's points all lie within a step of a known angle, and
+    the series cost about a third of the library's pair.
+    """
+    x = t - t0
+    if abs(x) > CS_NEAR:
+        return math.cos(t), math.sin(t)
+    x2 = x * x
+    cx = 1.0 + x2 * (-1.0 / 2.0 + x2 * (1.0 / 24.0 + x2 * (-1.0 / 720.0 + x2 * (
+        1.0 / 40320.0 + x2 * (-1.0 / 3628800.0 + x2 * (1.0 / 479001600.0 + x2 * (
+            -1.0 / 87178291200.0 + x2 / 20922789888000.0)))))))
+    sx = x * (1.0 + x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (-1.0 / 5040.0 + x2 * (
+        1.0 / 362880.0 + x2 * (-1.0 / 39916800.0 + x2 * (1.0 / 6227020800.0 + x2 * (
+            -1.0 / 1307674368000.0 + x2 / 355687428096000.0))))))))
+    return c0 * cx - s0 * sx, s0 * cx + c0 * sx
+
+
+@jit
+def _hcs(HS, i, t):
+    """``(cos t, sin t)`` at ``t`` on history interval ``i`` (:func:`_cs` from its start)."""
+    return _cs(t, HS[i, HT], HS[i, HC], HS[i, HSN])
 
 
 @jit
@@ -215,10 +244,12 @@ def _rho(a, n, t):
 
 
 @jit
-def _rho_rate(a, n, t):
-    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)`` (``a < 1``: never 0)."""
-    d = 1.0 + a * math.cos(t)
-    return _root(d, n) / (d * n) * (-a * math.sin(t))
+def _rho_rate(a, n, ct, st):
+    """``rho'(tau)``, ``rho = (1 + a cos tau)^(1/n)`` (``a < 1``: never 0), from
+    ``ct = cos tau``, ``st = sin tau``.
+    """
+    d = 1.0 + a * ct
+    return _root(d, n) / (d * n) * (-a * st)
 
 
 @jit
@@ -232,10 +263,11 @@ def _gauss(HS, i, t0, t1, a, n, rho_du):
     for j in range(GL_X.size):
         tj = tm + hw * GL_X[j]
         uj, duj = _hermite(HS, i, tj)
+        cj, sj = _hcs(HS, i, tj)
         if rho_du:
-            s += GL_W[j] * duj * _rho(a, n, tj)
+            s += GL_W[j] * duj * _root(max(0.0, 1.0 + a * cj), n)
         else:
-            s += GL_W[j] * uj * _rho_rate(a, n, tj)
+            s += GL_W[j] * uj * _rho_rate(a, n, cj, sj)
     return hw * s
 
 
@@ -336,10 +368,11 @@ def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig):
     t = tg if x0 < tg < x1 else 0.5 * (x0 + x1)
     for _ in range(60):
         u, du = _hermite(HS, i, t)
-        f = u + sgn * c * (1.0 + a * math.cos(t)) - target
+        ct, st = _hcs(HS, i, t)
+        f = u + sgn * c * (1.0 + a * ct) - target
         if f == 0.0:
             return t, i
-        df = du - sgn * c * a * math.sin(t)
+        df = du - sgn * c * a * st
         if (f > 0.0) == (sgn < 0.0):
             x0 = t
         else:
@@ -482,7 +515,10 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
             else:
                 its = _hindex(HS, nh, ts)
             if ts > PC[j, TA]:
-                ds = _delta(a, ts, _touchdown(a, ts) if a > 1.0 else math.nan)
+                if a > 1.0:
+                    ds = _delta(a, ts, _touchdown(a, ts))
+                else:
+                    ds = max(0.0, 1.0 + a * _hcs(HS, its, ts)[0])
                 xs = _root(ds, n) if ts < tb else xb
                 xsp = xs * ds if ts < tb else xbp
                 Qs = _hq_jumping(HS, its, ts, a, n, prm) if a > 1.0 else _hq(HS, its, ts, a, n)
@@ -529,17 +565,16 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
 
 
 @jit
-def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
+def rhs(t, z, dz, prm, PC, npc, HS, nh, seg, ct, st):
     """The body's equation, ``Q``'s rate and the integrands of the period's means, with
     the profile of the segment's start clamped (:func:`_sweep`) and the points touched
-    down since (``seg = (rho, Q, edge mode, rho^n)`` at the segment's start).
+    down since (``seg = (rho, Q, edge mode, rho^n)`` at the segment's start); ``ct``,
+    ``st`` are ``cos t``, ``sin t``.
     """
     y, v = z[0], z[1]
     V = prm[P_V]
     u = y + V * t
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
-    ct = math.cos(t)
-    st = math.sin(t)
     d = max(0.0, 1.0 + a * ct)
     if abs(t - seg[4]) < DELTA_NEAR:  # (nan: no boundary)
         d = _delta(a, t, seg[4])
@@ -571,32 +606,45 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg):
 
 
 @jit_bare
-def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg):
+def _step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs):
     """One Dormand-Prince step (``K[6]`` = the stage at the end, ``K[0]`` = ``k1``,
-    ``K[7]`` scratch).
+    ``K[7]`` scratch) from ``t`` (``ct``, ``st``: its cosine and sine); the cosine and sine
+    of ``t + h`` into ``cs``.
     """
     tmp = K[7]
     for i in range(N_Z):
         K[0, i] = k1[i]
         tmp[i] = z[i] + h * _A21 * k1[i]
-    rhs(t + _C2 * h, tmp, K[1], prm, PC, npc, HS, nh, seg)
+    tt = t + _C2 * h
+    c_, s_ = _cs(tt, t, ct, st)
+    rhs(tt, tmp, K[1], prm, PC, npc, HS, nh, seg, c_, s_)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A31 * k1[i] + _A32 * K[1, i])
-    rhs(t + _C3 * h, tmp, K[2], prm, PC, npc, HS, nh, seg)
+    tt = t + _C3 * h
+    c_, s_ = _cs(tt, t, ct, st)
+    rhs(tt, tmp, K[2], prm, PC, npc, HS, nh, seg, c_, s_)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A41 * k1[i] + _A42 * K[1, i] + _A43 * K[2, i])
-    rhs(t + _C4 * h, tmp, K[3], prm, PC, npc, HS, nh, seg)
+    tt = t + _C4 * h
+    c_, s_ = _cs(tt, t, ct, st)
+    rhs(tt, tmp, K[3], prm, PC, npc, HS, nh, seg, c_, s_)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A51 * k1[i] + _A52 * K[1, i] + _A53 * K[2, i] + _A54 * K[3, i])
-    rhs(t + _C5 * h, tmp, K[4], prm, PC, npc, HS, nh, seg)
+    tt = t + _C5 * h
+    c_, s_ = _cs(tt, t, ct, st)
+    rhs(tt, tmp, K[4], prm, PC, npc, HS, nh, seg, c_, s_)
     for i in range(N_Z):
         tmp[i] = z[i] + h * (_A61 * k1[i] + _A62 * K[1, i] + _A63 * K[2, i]
                              + _A64 * K[3, i] + _A65 * K[4, i])
-    rhs(t + h, tmp, K[5], prm, PC, npc, HS, nh, seg)
+    tt = t + h
+    c_, s_ = _cs(tt, t, ct, st)
+    rhs(tt, tmp, K[5], prm, PC, npc, HS, nh, seg, c_, s_)
     for i in range(N_Z):
         znew[i] = z[i] + h * (_B1 * k1[i] + _B3 * K[2, i] + _B4 * K[3, i]
                               + _B5 * K[4, i] + _B6 * K[5, i])
-    rhs(t + h, znew, K[6], prm, PC, npc, HS, nh, seg)
+    rhs(tt, znew, K[6], prm, PC, npc, HS, nh, seg, c_, s_)
+    cs[0] = c_
+    cs[1] = s_
 
 
 @jit_bare
@@ -623,30 +671,31 @@ def _dense(z, znew, K, h, i, th):
 
 
 @jit
-def _event_value(kind, lev, z, znew, K, h, t, th, prm):
+def _event_value(kind, lev, z, znew, K, h, t, th, prm, ct, st):
     """The event functions on the dense output: 0 ``P' = u' - c delta'``, 1 ``N'``,
-    2 ``P - lev``, 3 ``N - lev``.
+    2 ``P - lev``, 3 ``N - lev`` (``ct``, ``st``: the cosine and sine of ``t``).
     """
     tt = t + th * h
     c, a, V = prm[P_C], prm[P_A], prm[P_V]
+    c_, s_ = _cs(tt, t, ct, st)
     if kind <= 1:
         ud = _dense(z, znew, K, h, 1, th) + V
-        dd = -a * math.sin(tt)
+        dd = -a * s_
         return ud - c * dd if kind == 0 else ud + c * dd
     u = _dense(z, znew, K, h, 0, th) + V * tt
-    d = 1.0 + a * math.cos(tt)
+    d = 1.0 + a * c_
     return (u - c * d - lev) if kind == 2 else (u + c * d - lev)
 
 
 @jit
-def _event_root(kind, lev, z, znew, K, h, t, prm, th0, f0, th1, f1):
+def _event_root(kind, lev, z, znew, K, h, t, prm, th0, f0, th1, f1, ct, st):
     """The root of event ``kind`` in ``[th0, th1]`` (values of opposite signs), Illinois."""
     side = 0
     for _ in range(80):
         th = (th0 * f1 - th1 * f0) / (f1 - f0)
         if not (th0 < th < th1):
             th = 0.5 * (th0 + th1)
-        f = _event_value(kind, lev, z, znew, K, h, t, th, prm)
+        f = _event_value(kind, lev, z, znew, K, h, t, th, prm, ct, st)
         if (f > 0.0) == (f0 > 0.0):
             th0, f0 = th, f
             if side == 1:
@@ -764,7 +813,7 @@ def _crossed(f, sg):
 
 
 @jit_bare
-def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
+def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
     none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
     and its kind.  Each is sampled at four points of the step (a sign change and back
@@ -781,8 +830,9 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
         tt = t + th * hh
         ud = _dense(z, znew, K, hh, 1, th) + V
         u = _dense(z, znew, K, hh, 0, th) + V * tt
-        cd = c * (1.0 + a * math.cos(tt))
-        cdd = -c * a * math.sin(tt)
+        c_, s_ = _cs(tt, t, ct, st)
+        cd = c * (1.0 + a * c_)
+        cdd = -c * a * s_
         f0 = ud - cdd
         f1 = ud + cdd
         f2 = u - cd - lp
@@ -790,20 +840,20 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln):
         th_ev = 2.0
         k_ev = -1
         if _crossed(f0, dirp):
-            th_ev = _event_root(0, 0.0, z, znew, K, hh, t, prm, thp, p0, th, f0)
+            th_ev = _event_root(0, 0.0, z, znew, K, hh, t, prm, thp, p0, th, f0, ct, st)
             k_ev = 0
         if _crossed(f1, dirn):
-            r = _event_root(1, 0.0, z, znew, K, hh, t, prm, thp, p1, th, f1)
+            r = _event_root(1, 0.0, z, znew, K, hh, t, prm, thp, p1, th, f1, ct, st)
             if r < th_ev:
                 th_ev = r
                 k_ev = 1
         if lp != math.inf and _crossed(f2, -1.0):
-            r = _event_root(2, lp, z, znew, K, hh, t, prm, thp, p2, th, f2)
+            r = _event_root(2, lp, z, znew, K, hh, t, prm, thp, p2, th, f2, ct, st)
             if r < th_ev:
                 th_ev = r
                 k_ev = 2
         if ln != -math.inf and _crossed(f3, 1.0):
-            r = _event_root(3, ln, z, znew, K, hh, t, prm, thp, p3, th, f3)
+            r = _event_root(3, ln, z, znew, K, hh, t, prm, thp, p3, th, f3, ct, st)
             if r < th_ev:
                 th_ev = r
                 k_ev = 3
@@ -828,14 +878,15 @@ def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves
     """
     return _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves,
                    np.empty(N_Z), np.empty(N_Z), np.empty(5), np.empty(4 * MAX_PIECES),
-                   np.empty(4 * MAX_PIECES), np.empty(2 * MAX_PIECES))
+                   np.empty(4 * MAX_PIECES), np.empty(2 * MAX_PIECES), np.empty(2))
 
 
 @jit_bare
 def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves, znew, k1,
-            seg, LP, LN, LT):
+            seg, LP, LN, LT, cs):
     """:func:`period` with its scratch (the step's end and first stage, the segment's
-    record, the levels), without reference counting (its step loop is hot).
+    record, the levels, the cosine and sine at a step's end), without reference counting
+    (its step loop is hot).
     """
     c, a, n, V = prm[P_C], prm[P_A], prm[P_N], prm[P_V]
     jump = a > 1.0
@@ -849,11 +900,15 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
     seg[2] = EDGE_NONE
     seg[3] = 0.0
     seg[4] = math.nan
-    rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
+    ct = math.cos(t)
+    st = math.sin(t)
+    rhs(t, z, k1, prm, PC, npc, HS, nh, seg, ct, st)
     HS[nh - 1, HDD] = k1[1]
     HS[nh - 1, HQ] = z[2] if not jump else HS[nh - 1, HU] * _rho(a, n, t) - z[2]
-    HS[nh - 1, HP] = HS[nh - 1, HU] - c * (1.0 + a * math.cos(t))
-    HS[nh - 1, HN] = HS[nh - 1, HU] + c * (1.0 + a * math.cos(t))
+    HS[nh - 1, HP] = HS[nh - 1, HU] - c * (1.0 + a * ct)
+    HS[nh - 1, HN] = HS[nh - 1, HU] + c * (1.0 + a * ct)
+    HS[nh - 1, HC] = ct
+    HS[nh - 1, HSN] = st
     for half in range(halves):
         t_end = t0 + (half + 1) * math.pi
         unloading = math.sin(t0 + (half + 0.5) * math.pi) > 0.0
@@ -884,8 +939,10 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
             P0 = u0 - c * d0
             N0 = u0 + c * d0
             ud = z[1] + V
-            dd = -a * math.sin(t)
-            ddd = -a * math.cos(t)
+            ct = math.cos(t)
+            st = math.sin(t)
+            dd = -a * st
+            ddd = -a * ct
             tol = 1e-9 * (abs(ud) + c * a)
             dirp = _direction(ud - c * dd, k1[1] - c * ddd, tol)
             dirn = _direction(ud + c * dd, k1[1] + c * ddd, tol)
@@ -912,10 +969,15 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
             ip = 0
             jn = 0
             it = 0
+            first = True
             while True:  # steps of the segment
                 steps += 1
                 if steps > MAX_STEPS_HALF:
                     return FAIL_STEPS, nh, h
+                if not first:  # (the library's at each step's start: no drift)
+                    ct = math.cos(t)
+                    st = math.sin(t)
+                first = False
                 while it < mt and LT[it] <= t + 1e-12:
                     it += 1
                 t_stop = LT[it] if it < mt and LT[it] < t_seg else t_seg
@@ -926,7 +988,7 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                     if jump and not flight:  # (the force is C^1 only at both: steps shrink)
                         edge_dist = t - t_fl1 if not unloading else t_fl0 - t
                         hh = min(hh, max(EDGE_STEP, EDGE_RAMP * edge_dist))
-                    _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg)
+                    _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs)
                     en = _err(z, znew, K, hh, rtol, atol)
                     if en > 1.0 or not math.isfinite(en):
                         cnt[1] += 1
@@ -936,11 +998,12 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                         continue
                     th_ev, k_ev = 2.0, -1
                     if not flight:
-                        th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln)
+                        th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln,
+                                                   ct, st)
                     if th_ev < 1.0 and th_ev * hh > 1e-12:
                         cnt[2] += 1
                         hh = th_ev * hh
-                        _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg)
+                        _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs)
                     else:
                         k_ev = -1
                         h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
@@ -963,9 +1026,13 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                 HS[nh, HDD] = K[6, 1]
                 HS[nh, HQ] = (znew[2] if not jump
                               else HS[nh, HU] * _root(_delta(a, t1, tc), n) - znew[2])
-                d1 = 1.0 + a * math.cos(t1)
+                if t1 != t + hh:  # (snapped to the stop)
+                    cs[0], cs[1] = _cs(t1, t, ct, st)
+                d1 = 1.0 + a * cs[0]
                 HS[nh, HP] = HS[nh, HU] - c * d1
                 HS[nh, HN] = HS[nh, HU] + c * d1
+                HS[nh, HC] = cs[0]
+                HS[nh, HSN] = cs[1]
                 nh += 1
                 w0 = z[2]
                 for i in range(N_Z):
@@ -976,13 +1043,13 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                     # W after a touch-down: the steps' quadrature of rho u' errs by
                     # O(h^(1 + 1/n)) there; the stored history's, weighted, does not
                     z[2] = w0 + _wint(HS, nh - 2, HS[nh - 2, HT], t1, a, n, prm)
-                    rhs(t, z, k1, prm, PC, npc, HS, nh, seg)
+                    rhs(t, z, k1, prm, PC, npc, HS, nh, seg, cs[0], cs[1])
                     HS[nh - 1, HDD] = k1[1]
                     HS[nh - 1, HQ] = HS[nh - 1, HU] * _root(_delta(a, t1, tc), n) - z[2]
                 u1 = z[0] + V * t
-                while ip < mp and u1 - c * (1.0 + a * math.cos(t)) >= LP[ip] - 1e-12:
+                while ip < mp and u1 - c * (1.0 + a * cs[0]) >= LP[ip] - 1e-12:
                     ip += 1
-                while jn < mn and u1 + c * (1.0 + a * math.cos(t)) <= LN[jn] + 1e-12:
+                while jn < mn and u1 + c * (1.0 + a * cs[0]) <= LN[jn] + 1e-12:
                     jn += 1
                 if k_ev == 0 or k_ev == 1 or t >= t_seg:
                     break
@@ -1059,6 +1126,8 @@ def start(prm, y0, v0, PC, HS):
     HS[0, HQ] = 0.0
     HS[0, HP] = y0 - c * d
     HS[0, HN] = y0 + c * d
+    HS[0, HC] = 1.0
+    HS[0, HSN] = 0.0
     return 1, 1
 
 
@@ -1094,7 +1163,7 @@ def _set_section(x, z, PC, npc, u, n):
 
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
-LEAP = 1e2  # a mixed step further than this times the residual from the map's is refused
+LEAP = 1e3  # a mixed step further than this times the residual from the map's is shortened to it
 ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
@@ -1235,9 +1304,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
                 x[i] = s
                 if not math.isfinite(s):
                     ok = False
-            if not ok or jump > LEAP * r:  # an ill-conditioned mix: the plain map instead
+            if ok and jump > LEAP * r:  # a long leap: shortened to LEAP residuals
+                w = LEAP * r / jump
+                for i in range(nx):
+                    x[i] = g[i] + w * (x[i] - g[i])
+                jump = LEAP * r
+            if not ok:  # an ill-conditioned mix: the plain map instead
                 nhist = 0
-                ok = False
                 jump = 0.0
         # converged where the map moved the state by less than state_tol and the mixing
         # would move it by less (it estimates the orbit: where that attracts slowly, the
