@@ -66,11 +66,20 @@ def test_front_newton_converges_quadratically(monkeypatch):
     HS[:, mc.HC], HS[:, mc.HSN] = np.cos(ts), np.sin(ts)
     root = 1.2345
     target = 2.0 * root + c * (1.0 + a * math.cos(root))
-    for guess, most in ((root + 0.04, 5), (root, 2), (math.nan, 6)):
+    def level_at(t):
+        return 2.0 * t + c * (1.0 + a * math.cos(t))
+
+    slope = 2.0 - c * a * math.sin(root)
+    last = root - 0.01  # a front found earlier, at a level 0.019 lower
+    for guess, level, most in ((root + 0.04, math.nan, 5), (root, target, 2),
+                               (math.nan, math.nan, 6), (last, level_at(last), 3)):
         calls.clear()
-        t, i = mc._hfront.py_func(HS, ts.size, 0.0, 2.0, target, 1.0, c, a, guess, 12)
+        # the last front at ``guess``, found at ``level`` with the slope there
+        t, i, df = mc._hfront.py_func(HS, ts.size, 0.0, 2.0, target, 1.0, c, a, guess, 12,
+                                      level, slope)
         assert t == pytest.approx(root, abs=1e-13)
         assert i == 12
+        assert df == pytest.approx(slope, rel=1e-9)
         assert len(calls) <= most
 
 

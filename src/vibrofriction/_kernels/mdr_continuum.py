@@ -94,9 +94,10 @@ TWO_PI = 2.0 * math.pi
 AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
 # piece table columns: xi range, kind, P_j / N_j (affine) or Q(tau_a) (history), the
 # history's tau range, xi_a^(n+1), xi_b^(n+1); a history piece's u(tau_a), u(tau_b) (set at
-# the segment's start) and its last front and that front's history interval (a cache)
-X0, X1, KIND, VAL, TA, TB, X0P, X1P, UA, UB, TF, IF = range(12)
-N_PC = 12
+# the segment's start) and its last front, that front's history interval, the level it
+# was found at and the slope there (a cache: the next front's first guess)
+X0, X1, KIND, VAL, TA, TB, X0P, X1P, UA, UB, TF, IF, TL, TD = range(14)
+N_PC = 14
 # history table columns: tau, u, u', u'', Q = int u rho' dtau, P = u - c delta, N, and
 # cos tau, sin tau (the angles within an interval are rotations from its start: _cs)
 HT, HU, HD, HDD, HQ, HP, HN, HC, HSN = range(9)
@@ -128,6 +129,7 @@ DELTA_NEAR = 0.5  # within this of a contact boundary rhs takes delta from it (_
 SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is integrated
 # with its singular factor apart (:func:`_wint`)
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
+FRONT_STEP = 1e-7  # a front's Newton step this small (relative): the next one is round-off
 MAX_STEPS_HALF = 20000  # steps in a half period before giving up
 CS_NEAR = 0.6  # _cs rotates by at most this (its series is exact to round-off there)
 
@@ -336,12 +338,16 @@ def _hq(HS, i, t, a, n):
 
 
 @jit
-def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig):
-    """``(t, i)``: ``t`` in ``[ta, tb]`` where ``u(t) + sgn c delta(t) = target``
+def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig, tl, td):
+    """``(t, i, slope)``: ``t`` in ``[ta, tb]`` where ``u(t) + sgn c delta(t) = target``
     (``sgn = -1``: ``P``, decreasing on a history piece; ``+1``: ``N``, increasing; the
-    caller has checked that it lies there) and its history interval; ``tg``, ``ig`` a
-    guess (the last front).
+    caller has checked that it lies there), its history interval and the function's slope
+    there; ``tg``, ``ig`` the last front, found at level ``tl`` with slope ``td``: the
+    first guess is Newton's step from it to ``target`` (no evaluation), whose error is
+    second order in the level's change.
     """
+    if td * sgn > 0.0 and math.isfinite(tl):  # (the last front was this edge's)
+        tg = tg + (target - tl) / td
     col = HP if sgn < 0.0 else HN
     i = -1
     if 0 <= ig < nh - 1 and HS[ig + 1, HT] > ta and HS[ig, HT] < tb:
@@ -366,25 +372,30 @@ def _hfront(HS, nh, ta, tb, target, sgn, c, a, tg, ig):
     # stays in the closed bracket is taken (a converged step lands on the end just
     # moved: bisecting there would throw the root away and halve the bracket to the end)
     t = tg if x0 < tg < x1 else 0.5 * (x0 + x1)
+    df = math.nan
     for _ in range(60):
         u, du = _hermite(HS, i, t)
         ct, st = _hcs(HS, i, t)
         f = u + sgn * c * (1.0 + a * ct) - target
-        if f == 0.0:
-            return t, i
         df = du - sgn * c * a * st
+        if f == 0.0:
+            return t, i, df
         if (f > 0.0) == (sgn < 0.0):
             x0 = t
         else:
             x1 = t
         tn = t - f / df if df != 0.0 else 0.5 * (x0 + x1)
-        if not (x0 <= tn <= x1):
+        newton = x0 <= tn <= x1
+        if not newton:
             tn = 0.5 * (x0 + x1)
-        # (the force is smooth across the front: its error is second order in the front's)
-        if abs(tn - t) <= 1e-12 * (1.0 + abs(t)) or x1 - x0 <= 1e-12 * (1.0 + abs(t)):
-            return tn, i
+        # a Newton step of FRONT_STEP leaves an error of about its square (times the
+        # curvature over the slope): round-off.  (And the force is smooth across the
+        # front: its error is second order in the front's.)
+        if (newton and abs(tn - t) <= FRONT_STEP * (1.0 + abs(t))) \
+                or x1 - x0 <= 1e-12 * (1.0 + abs(t)):
+            return tn, i, df
         t = tn
-    return t, i
+    return t, i, df
 
 
 @jit
@@ -497,21 +508,28 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
             sgn = 0.0
             ts = tb
             its = -1
+            sl = tl = math.nan
             if ub - c * gb < P:  # the newest points below the lower edge
                 sgn = 1.0
                 if PC[j, UA] - c * ga <= P:
                     ts = ta
                 else:
-                    ts, its = _hfront(HS, nh, ta, tb, P, -1.0, c, a, PC[j, TF], int(PC[j, IF]))
+                    ts, its, sl = _hfront(HS, nh, ta, tb, P, -1.0, c, a, PC[j, TF],
+                                          int(PC[j, IF]), PC[j, TL], PC[j, TD])
+                    tl = P
             elif ub + c * gb > N:
                 sgn = -1.0
                 if PC[j, UA] + c * ga >= N:
                     ts = ta
                 else:
-                    ts, its = _hfront(HS, nh, ta, tb, N, 1.0, c, a, PC[j, TF], int(PC[j, IF]))
+                    ts, its, sl = _hfront(HS, nh, ta, tb, N, 1.0, c, a, PC[j, TF],
+                                          int(PC[j, IF]), PC[j, TL], PC[j, TD])
+                    tl = N
             if its >= 0:
                 PC[j, TF] = ts
                 PC[j, IF] = its
+                PC[j, TL] = tl
+                PC[j, TD] = sl
             else:
                 its = _hindex(HS, nh, ts)
             if ts > PC[j, TA]:
@@ -1163,7 +1181,7 @@ def _set_section(x, z, PC, npc, u, n):
 
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
-LEAP = 1e3  # a mixed step further than this times the residual from the map's is shortened to it
+LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
 ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
@@ -1199,8 +1217,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
            cnt, res):
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
-    restarted where the pieces' kinds change or a mixed step's residual grows by
-    ``growth``; the maps at ``ROUGH`` until the state's relative change is below
+    restarted where the pieces' kinds change; a mixed step after which the map's residual
+    grows by ``growth`` is undone, back to the plain map's end it left; the maps at ``ROUGH`` until the state's relative change is below
     ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol`` and so is the
     mixing's step (:func:`_change`); then on from
     there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
@@ -1220,6 +1238,12 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     g = np.zeros(nmax)
     kinds = np.zeros(MAX_PIECES + 1)
     z2 = np.zeros(N_Z)
+    # the plain map's end where a mixed step left it (undone if that step made things worse)
+    bz = np.zeros(N_Z)
+    bpc = np.zeros_like(PC)
+    bg = np.zeros(nmax)
+    bnpc = 0
+    mixed = False
     stage = 0  # the maps at 0: max(rtol, ROUGH) (the transient), 1: rtol, 2: fine * rtol
     tol_m = max(rtol, ROUGH)
     npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
@@ -1271,6 +1295,25 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         r = 0.0
         for i in range(nx):
             r = max(r, _change(g[i], x[i], i))
+        if mixed and r > growth * last:
+            # the mixed step took the state where the map moves it farther: undone, back
+            # to the plain map's end it left (the profile's structure of that time, its
+            # levels relative to u now), and the mixing starts again from there
+            npc = bnpc
+            for j in range(npc):
+                for q in range(N_PC):
+                    PC[j, q] = bpc[j, q]
+            for i in range(N_Z):
+                z[i] = bz[i]
+            u = bg[0] + V * t
+            _set_section(bg, z, PC, npc, u, n)
+            HS[nh - 1, HU] = u
+            HS[nh - 1, HD] = bg[1] + V
+            nhist = 0
+            last = math.inf
+            mixed = False
+            continue
+        mixed = False
         if stage == 0 and r < ROUGH_UNTIL:
             stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
             tol_m = rtol  # maps differ by their errors only)
@@ -1304,13 +1347,9 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
                 x[i] = s
                 if not math.isfinite(s):
                     ok = False
-            if ok and jump > LEAP * r:  # a long leap: shortened to LEAP residuals
-                w = LEAP * r / jump
-                for i in range(nx):
-                    x[i] = g[i] + w * (x[i] - g[i])
-                jump = LEAP * r
-            if not ok:  # an ill-conditioned mix: the plain map instead
+            if not ok or jump > LEAP * r:  # an ill-conditioned mix: the plain map instead
                 nhist = 0
+                ok = False
                 jump = 0.0
         # converged where the map moved the state by less than state_tol and the mixing
         # would move it by less (it estimates the orbit: where that attracts slowly, the
@@ -1324,6 +1363,15 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             tol_m = fine * rtol
             last = math.inf
         if ok:
+            bnpc = npc
+            for j in range(npc):
+                for q in range(N_PC):
+                    bpc[j, q] = PC[j, q]
+            for i in range(N_Z):
+                bz[i] = z[i]
+            for i in range(nx):
+                bg[i] = g[i]
+            mixed = True
             u = x[0] + V * t
             _set_section(x, z, PC, npc, u, n)
             HS[nh - 1, HU] = u

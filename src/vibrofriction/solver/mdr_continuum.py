@@ -6,8 +6,8 @@ periodic orbit.  Its section is ``tau = pi`` (mod ``2 pi``), the smallest indent
 point that touched down in the last loading has left there (``a < 1``), so the profile is a
 few affine pieces over the core ``xi <= (1 - a)^(1/n)`` and the section state is the vector
 ``(y, y', the pieces' ends, their levels relative to u)``.  Anderson's mixing of the last
-``DEPTH`` period maps of that vector (restarted when the pieces' kinds change, or where a
-mixed step's residual grows) finds the orbit in about ten to twenty-five periods where the
+``DEPTH`` period maps of that vector (restarted when the pieces' kinds change; a mixed
+step after which the map moves the state ten times farther is undone) finds the orbit in about ten to twenty-five periods where the
 plain iteration takes hundreds (``tests/mdr/test_mdr_continuum.py``'s points).  From that
 orbit the search goes on with maps at a tenth of the tolerance to their own orbit, which
 gives ``mu_ratio``; the difference of the two orbits' ``mu``, plus the section state's
