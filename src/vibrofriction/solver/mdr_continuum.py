@@ -82,7 +82,7 @@ def _flight_map(prm: np.ndarray, t: float, y: float, v: float, rtol: float) -> n
     tolerance and always from the same first step (so its differences are smooth).
     """
     PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
-    HS = np.zeros((HISTORY, mc.N_HS))
+    HS = np.empty((HISTORY, mc.N_HS))  # (rows written before they are read)
     HS[0, mc.HT], HS[0, mc.HU], HS[0, mc.HD] = t, y + prm[mc.P_V] * t, v + prm[mc.P_V]
     z = np.zeros(mc.N_Z)
     z[0], z[1] = y, v
@@ -142,7 +142,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     a, n = float(amplitude), float(profile_exponent)
     prm = _parameters(alpha, beta, a, V, n, zeta, hc, hs)
     PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
-    HS = np.zeros((HISTORY, mc.N_HS))
+    HS = np.empty((HISTORY, mc.N_HS))  # (rows written before they are read)
     cnt = np.zeros(4, dtype=np.int64)
     y0 = -(1.0 + a) ** (1.0 + 1.0 / n) / alpha - offset[0]
     z = np.zeros(mc.N_Z)
