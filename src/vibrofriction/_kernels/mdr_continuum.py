@@ -1218,12 +1218,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change; a mixed step after which the map's residual
-    grows by ``growth`` is undone, back to the plain map's end it left; the maps at ``ROUGH`` until the state's relative change is below
-    ``ROUGH_UNTIL``, then at ``rtol``) until it is below ``state_tol`` and so is the
-    mixing's step (:func:`_change`); then on from
-    there with maps at ``fine * rtol`` to that map's orbit (the orbit of a map moves with
-    its error, by more where the orbit attracts slowly, so the fine orbit is sought anew,
-    not one fine period taken from the coarse orbit).  Writes ``res = (int F over the
+    grows by ``growth`` is undone, back to the plain map's end it left; the maps at
+    ``ROUGH`` until the state's relative change is below ``ROUGH_UNTIL``, then at
+    ``rtol``) until it is below ``state_tol`` and so is the mixing's step
+    (:func:`_change`); then on from there with maps at ``fine * rtol`` to that map's
+    orbit (the orbit of a map moves with its error, by more where the orbit attracts
+    slowly, so the fine orbit is sought anew, not one fine period taken from the coarse
+    orbit).  Writes ``res = (int F over the
     coarse orbit's period, -, over the fine orbit's, its stick area, its slip area)``.
     Returns ``(code, periods, events of the last period)``: ``code`` 0,
     :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).

@@ -7,10 +7,11 @@ point that touched down in the last loading has left there (``a < 1``), so the p
 few affine pieces over the core ``xi <= (1 - a)^(1/n)`` and the section state is the vector
 ``(y, y', the pieces' ends, their levels relative to u)``.  Anderson's mixing of the last
 ``DEPTH`` period maps of that vector (restarted when the pieces' kinds change; a mixed
-step after which the map moves the state ten times farther is undone) finds the orbit in about ten to twenty-five periods where the
-plain iteration takes hundreds (``tests/mdr/test_mdr_continuum.py``'s points).  From that
-orbit the search goes on with maps at a tenth of the tolerance to their own orbit, which
-gives ``mu_ratio``; the difference of the two orbits' ``mu``, plus the section state's
+step after which the map moves the state ten times farther is undone) finds the orbit in
+about ten to twenty-five periods where the plain iteration takes hundreds
+(``tests/mdr/test_mdr_continuum.py``'s points).  From that orbit the search goes on with
+maps at a tenth of the tolerance to their own orbit, which gives ``mu_ratio``; the
+difference of the two orbits' ``mu``, plus the section state's
 tolerance, is the stated error.  (One fine period from the coarse orbit is not enough:
 the orbit of a map moves with the map's error, by more where it attracts slowly, and the
 error so estimated held half the true one at such points.)  The first periods, where the
