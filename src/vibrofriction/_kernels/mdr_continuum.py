@@ -1203,6 +1203,18 @@ def _balance(prm, z, PC, npc, HS, nh):
 
 
 @jit
+def _copy_state(PC, z, npc, PC_to, z_to):
+    """The profile's first ``npc`` pieces and the body's state ``z`` copied to ``PC_to``,
+    ``z_to``.
+    """
+    for j in range(npc):
+        for q in range(N_PC):
+            PC_to[j, q] = PC[j, q]
+    for i in range(N_Z):
+        z_to[i] = z[i]
+
+
+@jit
 def _change(new, old, i):
     """How far a section state's component ``i`` moved from ``old`` to ``new``.
 
@@ -1301,11 +1313,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             # to the plain map's end it left (the profile's structure of that time, its
             # levels relative to u now), and the mixing starts again from there
             npc = bnpc
-            for j in range(npc):
-                for q in range(N_PC):
-                    PC[j, q] = bpc[j, q]
-            for i in range(N_Z):
-                z[i] = bz[i]
+            _copy_state(bpc, bz, npc, PC, z)
             u = bg[0] + V * t
             _set_section(bg, z, PC, npc, u, n)
             HS[nh - 1, HU] = u
@@ -1369,11 +1377,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             nhist = 0
         if ok:
             bnpc = npc
-            for j in range(npc):
-                for q in range(N_PC):
-                    bpc[j, q] = PC[j, q]
-            for i in range(N_Z):
-                bz[i] = z[i]
+            _copy_state(PC, z, npc, bpc, bz)
             for i in range(nx):
                 bg[i] = g[i]
             mixed = True

@@ -104,9 +104,7 @@ def _search_error(prm: np.ndarray, t: float, g: np.ndarray, w_last: float,
     (``J`` by differences of two more maps), moves ``int F`` by ``G . dx`` to first
     order (``G`` likewise); so the last map's ``int F`` is within about
     ``|w_last - w(g)| + |G . dx|`` of the orbit's.  ``inf`` where ``J - I`` is singular or
-    a map fails.  (The caller passes the coarse maps' ``rtol``: the three maps then agree
-    with each other, and ``w(g)`` differs from the fine ``w_last`` by the maps' error too,
-    which only adds to the bound.)
+    a map fails.
     """
     base = _flight_map(prm, t, g[0], g[1], rtol)
     J = np.empty((2, 2))
@@ -167,7 +165,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     err = abs(res[2] - res[0]) / nint + state_tol
     if a > 1.0:  # and how far the search stopped from a slowly attracting orbit
         t_end = math.pi + 2.0 * math.pi * periods  # (the section after the last map)
-        err += _search_error(prm, t_end, z[:2].copy(), res[2], rtol) / nint
+        err += _search_error(prm, t_end, z[:2].copy(), res[2], FINE * rtol) / nint
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
