@@ -1363,18 +1363,14 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         # converged where the map moved the state by less than state_tol and the mixing
         # would move it by less (it estimates the orbit: where that attracts slowly, the
         # map's own move understates the distance)
-        # (the fine stage's mixing starts anew: its estimate of the distance needs two of
-        # its own maps, else one map from the coarse orbit would answer where the orbit
-        # attracts slowly and the fine orbit lies far beyond that map's move)
-        if stage >= 1 and r < state_tol and jump < state_tol and (stage == 1 or nhist >= 2):
+        if stage >= 1 and r < state_tol and jump < state_tol:
             if stage == 2:
                 found = True
                 break
-            stage = 2  # on to the fine map's orbit, the mixing anew (the coarse maps'
-            w_coarse = w_last  # differences would take the fine map's offset for noise)
+            stage = 2  # on to the fine map's orbit
+            w_coarse = w_last
             tol_m = fine * rtol
             last = math.inf
-            nhist = 0
         if ok:
             bnpc = npc
             _copy_state(PC, z, npc, bpc, bz)
