@@ -142,18 +142,19 @@ def test_drive_matches_the_rows(rows_alone):
 
 def test_the_continuum_answers_where_it_covers():
     """``mdr_friction`` answers a point the continuum covers with it (no rows) below
-    ``CONTINUUM_TOL``, the default ``1e-5`` too (there with a stated error ten times below
-    it); at a looser tolerance (a fit's ``1e-4``), with ``n_springs`` or within
-    ``rows_alone()`` the rows answer."""
+    ``CONTINUUM_TOL``: the default ``1e-5`` and a fit's ``1e-4`` too (there with a stated
+    error a hundred and a thousand times below it); at a looser tolerance (``1e-3``), with
+    ``n_springs`` or within ``rows_alone()`` the rows answer."""
     import vibrofriction.solver.mdr as mdr
+    from vibrofriction.bench.fitting import CURVED_TOL
 
-    assert 1e-5 < mdr.CONTINUUM_TOL <= 1e-4
-    for tol, bound in ((1e-8, 1e-8), (1e-5, 1e-6)):
+    assert CURVED_TOL < mdr.CONTINUUM_TOL < 1e-3
+    for tol, bound in ((1e-8, 1e-8), (1e-5, 1e-6), (CURVED_TOL, 1e-6)):
         r = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=tol)
         assert r["rows"] == () and r["status"] == "periodic" and r["error"] <= bound
         assert r["max_excess"] == 0.0
-    loose = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-4)
-    assert loose["rows"] != () and loose["error"] <= 1e-4
+    loose = mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-3)
+    assert loose["rows"] != () and loose["error"] <= 1e-3
     assert abs(loose["mu_ratio"] - r["mu_ratio"]) <= loose["error"] + r["error"]
     assert mdr_friction(0.5, 2.0, 0.5, 0.3, 2.0, zeta=0.1, tol=1e-8,
                         n_springs=40)["rows"] == (40, 80)

@@ -48,10 +48,11 @@ MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows t
 AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
 # below this tolerance a point the row without springs covers is solved by it (exact in xi,
-# and there no dearer than the rows: at 3e-5 a median 75 against 78 times a flat point, at
-# 1e-7 80 against 608; at 1e-4, a fit's, the rows cost 42 against 67:
-# benchmarks/bench_mdr_tol.py, results/mdr_tol.md); the declared CONTINUUM_BELOW, 0 within
-# rows_alone() (the MDR histories and the tests' references are the rows')
+# and there no dearer than the rows: at 1e-4, a fit's, a median 36 against 47 times a flat
+# point, at 1e-7 36 against 587; at 3e-4 36 against 37, where the rows' worst points are
+# the cheaper: benchmarks/bench_mdr_tol.py, results/mdr_tol.md); the declared
+# CONTINUUM_BELOW, 0 within rows_alone() (the MDR histories and the tests' references are
+# the rows')
 CONTINUUM_TOL = CONTINUUM_BELOW
 
 
