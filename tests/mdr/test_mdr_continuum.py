@@ -142,8 +142,8 @@ def test_drive_matches_the_rows(rows_alone):
 
 def test_the_continuum_answers_where_it_covers():
     """``mdr_friction`` answers a point the continuum covers with it (no rows) below
-    ``CONTINUUM_TOL``: the default ``1e-5`` and a fit's ``1e-4`` too (there with a stated
-    error a hundred and a thousand times below it); at a looser tolerance (``1e-3``), with
+    ``CONTINUUM_TOL``: the default ``1e-5`` and a fit's ``1e-4`` too (there with stated errors
+    of about ``1e-7``, asserted within ``1e-6``); at a looser tolerance (``1e-3``), with
     ``n_springs`` or within ``rows_alone()`` the rows answer."""
     import vibrofriction.solver.mdr as mdr
     from vibrofriction.bench.fitting import CURVED_TOL
