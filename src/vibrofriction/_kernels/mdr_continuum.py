@@ -226,6 +226,12 @@ def _liftoff(a, t):
     return TWO_PI * math.floor(t / TWO_PI) + math.acos(-1.0 / a)
 
 
+@jit_inline
+def _indentation(a, ct):
+    """The indentation ``delta = 1 + a cos tau`` from ``ct = cos tau``, ``0`` out of contact."""
+    return max(0.0, 1.0 + a * ct)
+
+
 @jit
 def _delta(a, t, tc):
     """The indentation ``delta = 1 + a cos tau``, ``0`` out of contact; given a jumping
@@ -235,7 +241,7 @@ def _delta(a, t, tc):
     ``1 + a cos tau`` (about 1e-14 at ``tau ~ 50``) to its ``1/n``-th power (2e-3 at ``n = 5``).
     """
     if math.isnan(tc):
-        return max(0.0, 1.0 + a * math.cos(t))
+        return _indentation(a, math.cos(t))
     return max(0.0, -2.0 * a * math.sin(0.5 * (t + tc)) * math.sin(0.5 * (t - tc)))
 
 
@@ -267,7 +273,7 @@ def _gauss(HS, i, t0, t1, a, n, rho_du):
         uj, duj = _hermite(HS, i, tj)
         cj, sj = _hcs(HS, i, tj)
         if rho_du:
-            s += GL_W[j] * duj * _root(max(0.0, 1.0 + a * cj), n)
+            s += GL_W[j] * duj * _root(_indentation(a, cj), n)
         else:
             s += GL_W[j] * uj * _rho_rate(a, n, cj, sj)
     return hw * s
@@ -536,7 +542,7 @@ def _sweep(u, prm, PC, npc, HS, nh, out, write, rho, d):
                 if a > 1.0:
                     ds = _delta(a, ts, _touchdown(a, ts))
                 else:
-                    ds = max(0.0, 1.0 + a * _hcs(HS, its, ts)[0])
+                    ds = _indentation(a, _hcs(HS, its, ts)[0])
                 xs = _root(ds, n) if ts < tb else xb
                 xsp = xs * ds if ts < tb else xbp
                 Qs = _hq_jumping(HS, its, ts, a, n, prm) if a > 1.0 else _hq(HS, its, ts, a, n)
@@ -593,7 +599,7 @@ def rhs(t, z, dz, prm, PC, npc, HS, nh, seg, ct, st):
     V = prm[P_V]
     u = y + V * t
     a, n, c = prm[P_A], prm[P_N], prm[P_C]
-    d = max(0.0, 1.0 + a * ct)
+    d = _indentation(a, ct)
     if abs(t - seg[4]) < DELTA_NEAR:  # (nan: no boundary)
         d = _delta(a, t, seg[4])
     rho = _root(d, n)
