@@ -1239,10 +1239,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     grows by ``growth`` is undone, back to the plain map's end it left; the maps at
     ``ROUGH`` until the state's relative change is below ``ROUGH_UNTIL``, then at
     ``rtol``) until it is below ``state_tol`` and so is the mixing's step
-    (:func:`_change`); then on from there with maps at ``fine * rtol`` to that map's
-    orbit (the orbit of a map moves with its error, by more where the orbit attracts
-    slowly, so the fine orbit is sought anew, not one fine period taken from the coarse
-    orbit).  Writes ``res = (int F over the
+    (:func:`_change`); then with maps at ``fine * rtol`` to that map's orbit (the orbit
+    of a map moves with its error, by more where the orbit attracts slowly, so the fine
+    orbit is sought anew, not one fine period taken from the coarse orbit): the first
+    fine map from where the last coarse one started, and the mixing's history shifted by
+    the difference of their ends there (the two maps differ by their errors, nearly
+    constant over the history's span, so its differences keep holding, and the offset is
+    not taken for the state's own move).  Writes ``res = (int F over the
     coarse orbit's period, -, over the fine orbit's, its stick area, its slip area)``.
     Returns ``(code, periods, events of the last period)``: ``code`` 0,
     :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
@@ -1255,6 +1258,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     G = np.zeros((depth, nmax))
     x = np.zeros(nmax)
     g = np.zeros(nmax)
+    dg = np.zeros(nmax)
     kinds = np.zeros(MAX_PIECES + 1)
     z2 = np.zeros(N_Z)
     # the plain map's end where a mixed step left it (undone if that step made things worse)
@@ -1263,6 +1267,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     bg = np.zeros(nmax)
     bnpc = 0
     mixed = False
+    shift = False  # the history to be shifted to the fine map's
     stage = 0  # the maps at 0: max(rtol, ROUGH) (the transient), 1: rtol, 2: fine * rtol
     tol_m = max(rtol, ROUGH)
     npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
@@ -1306,6 +1311,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
                     same = False
         if not same:  # the pieces' kinds changed: a new start
             nhist = 0
+            shift = False
             last = math.inf
             if m < BALANCED:
                 _balance(prm, z, PC, npc, HS, nh)
@@ -1314,6 +1320,14 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
         r = 0.0
         for i in range(nx):
             r = max(r, _change(g[i], x[i], i))
+        if shift:  # the first fine map, from where the last coarse one started
+            shift = False
+            for i in range(nx):
+                dg[i] = g[i] - G[nhist - 1, i]
+            nhist -= 1  # (this map's pair replaces it)
+            for q in range(nhist):
+                for i in range(nx):
+                    G[q, i] += dg[i]
         if mixed and r > growth * last:
             # the mixed step took the state where the map moves it farther: undone, back
             # to the plain map's end it left (the profile's structure of that time, its
@@ -1377,6 +1391,17 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             w_coarse = w_last
             tol_m = fine * rtol
             last = math.inf
+            # its first map from where this coarse one started: the difference of their
+            # ends there shifts the history to the fine map's (the maps differ by their
+            # errors, smooth in the state, so the history's differences still hold)
+            shift = True
+            ok = False
+            for i in range(nx):
+                x[i] = X[nhist - 1, i]
+            u = x[0] + V * t
+            _set_section(x, z, PC, npc, u, n)
+            HS[nh - 1, HU] = u
+            HS[nh - 1, HD] = x[1] + V
         if ok:
             bnpc = npc
             _copy_state(PC, z, npc, bpc, bz)

@@ -1,0 +1,168 @@
+"""Where the row without springs' periods go, and what a perfect start of the body buys.
+
+At the ten regimes of ``bench_ratios.py`` for a cone, a sphere and ``n = 4``, the row without
+springs asked for ``tol_trusted = 1e-7`` (:func:`~vibrofriction.solver.mdr_continuum.
+continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first ones at
+``ROUGH``):
+
+* the period maps and Dormand-Prince steps of each stage of the search, counted in a
+  second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
+  transient (maps at ``ROUGH``), the coarse orbit (at ``3e-8``) and the fine one (``3e-9``);
+* the periods from the default start (steady sliding, the body at rest at
+  ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
+  ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
+  started as always: what the best possible first guess of the body alone would buy.
+
+    PYTHONPATH=src python benchmarks/mdr_continuum_periods.py [--write]
+
+``--write`` appends the run to benchmarks/results/mdr_continuum_periods.md.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+
+from bench_ratios import REGIMES
+
+RESULTS = Path(__file__).parent / "results" / "mdr_continuum_periods.md"
+TOL = 1e-7
+EXPONENTS = (1.0, 2.0, 4.0)
+
+
+def _points() -> list[tuple[str, float, tuple]]:
+    """``(regime, n, continuum_friction's arguments)`` of every point."""
+    from vibrofriction._kernels.phases import frame_offset, inplane_forcing
+
+    out = []
+    for lab, al, be, a, V, ze, ax in REGIMES:
+        hc, hs = inplane_forcing(al, 2.0 * ze * math.sqrt(al), ax, 0.0, False)
+        off = frame_offset(ax, 0.0, False)
+        for n in EXPONENTS:
+            out.append((lab, n, (al, be, a, V, n, ze, hc, hs, off)))
+    return out
+
+
+def _stage_tolerances() -> tuple[tuple[str, float], ...]:
+    """The maps' tolerance of each stage of the search at ``TOL``."""
+    from vibrofriction._kernels import mdr_continuum as mc
+    from vibrofriction.solver import mdr_continuum as smc
+
+    rtol = smc.FACTOR * TOL
+    return ("rough", max(rtol, mc.ROUGH)), ("coarse", rtol), ("fine", smc.FINE * rtol)
+
+
+def stages() -> None:
+    """Print, as JSON, each point's maps and steps by stage (run under NUMBA_DISABLE_JIT)."""
+    from vibrofriction._kernels import mdr_continuum as mc
+    from vibrofriction.solver.mdr_continuum import continuum_friction
+
+    period = mc.period
+    log: list[tuple[float, int]] = []
+
+    def counted(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
+        steps = cnt[0] + cnt[1]
+        res = period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves)
+        log.append((rtol, int(cnt[0] + cnt[1] - steps)))
+        return res
+
+    mc.period = counted
+    rows = []
+    for _, _, args in _points():
+        log.clear()
+        continuum_friction(*args, TOL)
+        row = {name: [sum(1 for u, _ in log if u == t), sum(s for u, s in log if u == t)]
+               for name, t in _stage_tolerances()}
+        # (a retry with tighter maps, where the stated error missed TOL, would be left out)
+        assert sum(m for m, _ in row.values()) == len(log), log
+        rows.append(row)
+    print(json.dumps(rows))
+
+
+def _orbit_start(args: tuple) -> tuple[float, float, float]:
+    """The body's ``(y, y')`` on the converged orbit at ``tau = 0`` and the default ``y``."""
+    from vibrofriction._kernels import mdr_continuum as mc
+    from vibrofriction.solver import mdr_continuum as smc
+
+    al, be, a, V, n, ze, hc, hs, off = args
+    rtol = smc.FACTOR * TOL
+    prm = smc._parameters(al, be, a, V, n, ze, hc, hs)
+    PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
+    HS = np.full((smc.HISTORY, mc.N_HS), np.nan)
+    z = np.zeros(mc.N_Z)
+    y0 = -(1.0 + a) ** (1.0 + 1.0 / n) / al
+    z[0], z[1] = y0 - off[0], -off[1]
+    npc, nh = mc.start(prm, z[0], z[1], PC, HS)
+    code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, smc.FINE, smc.DEPTH, rtol,
+                                 smc.GROWTH, 200, np.zeros(4, np.int64), np.zeros(5))
+    if code != 0:
+        return math.nan, math.nan, y0
+    # the last period runs from pi + 2 pi (periods - 1) to pi + 2 pi periods; its steps end
+    # at every multiple of pi, so its history has a row at 2 pi periods
+    t = 2.0 * math.pi * periods
+    i = int(np.nanargmin(np.abs(HS[:, mc.HT] - t)))
+    assert abs(HS[i, mc.HT] - t) < 1e-9 * t
+    return HS[i, mc.HU] - V * t, HS[i, mc.HD] - V, y0
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--write", action="store_true")
+    ap.add_argument("--stages", action="store_true", help=argparse.SUPPRESS)
+    opts = ap.parse_args()
+    if opts.stages:
+        stages()
+        return
+    from vibrofriction.solver.mdr_continuum import continuum_friction
+
+    env = dict(os.environ, NUMBA_DISABLE_JIT="1")
+    counted = json.loads(subprocess.run(
+        [sys.executable, __file__, "--stages"], env=env, check=True, capture_output=True,
+        text=True).stdout.splitlines()[-1])
+    lines = ["| regime | n | transient: maps, steps | coarse | fine | periods | "
+             "from the orbit's body state |", "|---|---|---|---|---|---|---|"]
+    total = {"rough": [0, 0], "coarse": [0, 0], "fine": [0, 0]}
+    before = after = 0
+    for (lab, n, args), st in zip(_points(), counted, strict=True):
+        r0 = continuum_friction(*args, TOL)
+        y, v, y0 = _orbit_start(args)
+        al, be, a, V, n_, ze, hc, hs, off = args
+        r1 = continuum_friction(al, be, a, V, n_, ze, hc, hs, (y0 - y, -v), TOL)
+        cells = {}
+        for name, (maps, steps) in st.items():
+            cells[name] = f"{maps}, {steps}" if maps else "-"
+            total[name][0] += maps
+            total[name][1] += steps
+        before += r0["periods"]
+        after += r1["periods"]
+        lines.append(f"| {lab} | {n:g} | {cells['rough']} | {cells['coarse']}"
+                     f" | {cells['fine']} | {r0['periods']} | {r1['periods']} "
+                     f"(mu {r1['mu_ratio'] - r0['mu_ratio']:+.1e} from the default's) |")
+        print(lines[-1], flush=True)
+    steps = sum(s for _, s in total.values())
+    lines.append("")
+    lines.append(
+        "In all: " + "; ".join(f"{k} {m} maps, {s} steps ({100 * s / steps:.0f} %)"
+                               for k, (m, s) in total.items())
+        + f". Periods from the default start {before}, from the body on its orbit {after} "
+        f"({100 * (before - after) / before:.0f} % fewer).")
+    print(lines[-1])
+    if opts.write:
+        from sections import append_run
+
+        append_run(RESULTS, "The row without springs: periods by stage, and from a perfect "
+                   "start of the body", "PYTHONPATH=src python benchmarks/"
+                   "mdr_continuum_periods.py --write",
+                   f"tol_trusted = {TOL:g}; maps and steps counted under NUMBA_DISABLE_JIT "
+                   "(steps include the rejected ones).", lines)
+
+
+if __name__ == "__main__":
+    main()
