@@ -88,6 +88,7 @@ def stages() -> None:
 
 def _orbit_start(args: tuple) -> tuple[float, float, float]:
     """The body's ``(y, y')`` on the converged orbit at ``tau = 0`` and the default ``y``."""
+    from vibrofriction import theory
     from vibrofriction._kernels import mdr_continuum as mc
     from vibrofriction.solver import mdr_continuum as smc
 
@@ -100,8 +101,10 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
     y0 = -(1.0 + a) ** (1.0 + 1.0 / n) / al
     z[0], z[1] = y0 - off[0], -off[1]
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
+    y_sliding = -float(theory.profile_mean_normal_force(a, n)) / al
     code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, smc.FINE, smc.DEPTH, rtol,
-                                 smc.GROWTH, 200, np.zeros(4, np.int64), np.zeros(5))
+                                 smc.GROWTH, y_sliding, 200, np.zeros(4, np.int64),
+                                 np.zeros(5))
     if code != 0:
         return math.nan, math.nan, y0
     # the last period runs from pi + 2 pi (periods - 1) to pi + 2 pi periods; its steps end

@@ -387,3 +387,20 @@ def test_search_error_bounds_the_distance_to_the_orbit():
         true = abs(m[2] - w_orbit)
         assert true > 1e-8  # (well above the maps' noise)
         assert true <= bound <= 10.0 * true
+
+
+def test_a_creeping_soft_pin_is_extrapolated_and_agrees_with_the_reference():
+    """A soft pin sliding slowly (``alpha = 0.05``, ``V = 0.01``): the body sticks to the
+    substrate while the spring loads, about 200 periods of creep before it slips. The
+    mixing cannot extrapolate that nearly neutral move (it ran out of 200 periods), the
+    creep's doubling steps can: an orbit within far fewer periods, and within the stated
+    error plus the bar of the independent spring row run 800 periods into its motion."""
+    from vibrofriction_reference.mdr import mdr_reference
+
+    c = continuum_friction(0.05, 20.0, 0.5, 0.01, 2.0, 0.0, 0.0, 0.0, (0.0, 0.0), 1e-7)
+    assert c["status"] == "periodic", c["reason"]
+    assert c["periods"] < 60 and c["error"] <= 1e-7
+    ref = mdr_reference(0.05, 20.0, 0.5, 0.01, 2.0, transient_periods=800,
+                        average_periods=50)
+    assert ref.mu_error < 1e-4
+    assert abs(c["mu_ratio"] - ref.mu_ratio) <= c["error"] + ref.mu_error

@@ -1189,6 +1189,10 @@ def _set_section(x, z, PC, npc, u, n):
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
 LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
 ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
+# a period whose map moves u = y + V tau by less than this fraction of the substrate's
+# 2 pi V is a creep: the body mostly stuck to the substrate while the pin's spring loads
+# (the slow transient of a soft pin or a slow sliding), extrapolated by steps doubling
+DRIFT = 0.3
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
 
@@ -1231,12 +1235,15 @@ def _change(new, old, i):
 
 
 @jit
-def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_periods,
-           cnt, res):
+def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_sliding,
+           max_periods, cnt, res):
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change; a mixed step after which the map's residual
-    grows by ``growth`` is undone, back to the plain map's end it left; the maps at
+    grows by ``growth`` is undone, back to the plain map's end it left; a map over which
+    the body creeps with the substrate, :data:`DRIFT`, is not mixed but its move taken
+    ``2^k - 1`` more times, ``k`` such maps in a row, down to ``y_sliding`` at most, the
+    sliding body's mean ``y``; the maps at
     ``ROUGH`` until the state's relative change is below ``ROUGH_UNTIL``, then at
     ``rtol``) until it is below ``state_tol`` and so is the mixing's step
     (:func:`_change`); then with maps at ``fine * rtol`` to that map's orbit (the orbit
@@ -1268,6 +1275,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
     bnpc = 0
     mixed = False
     shift = False  # the history to be shifted to the fine map's
+    creeps = prm[P_A] < 1.0  # (a jumping indenter's flight frees the body every period)
+    ncreep = 0  # the creeping maps in a row
     stage = 0  # the maps at 0: max(rtol, ROUGH) (the transient), 1: rtol, 2: fine * rtol
     tol_m = max(rtol, ROUGH)
     npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
@@ -1304,6 +1313,26 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, max_pe
             z[i] = z2[i]
         w_prev = w_last
         w_last = z2[3]
+        # a creep (the body mostly stuck to the substrate, u nearly unchanged) moves the
+        # state along a nearly neutral direction the mixing cannot extrapolate (its map is
+        # close to a translation: seen sending the state back by whole swings): the map's
+        # move is taken 2^k - 1 more times instead, k the creeping maps in a row, never
+        # beyond the sliding body's mean position y_sliding (every orbit's <y> is above it)
+        dy = z[0] - x[0]
+        if creeps and stage == 0 and abs(1.0 + dy / (TWO_PI * V)) < DRIFT:
+            ncreep += 1
+            nhist = 0
+            mixed = False
+            last = math.inf
+            dy *= 2.0 ** min(ncreep - 1, 30) - 1.0
+            dy = max(dy, min(0.0, y_sliding - z[0]))
+            if dy != 0.0:
+                z[0] += dy
+                HS[nh - 1, HU] += dy
+                for j in range(npc):
+                    PC[j, VAL] += dy
+            continue
+        ncreep = 0
         same = npc == npc0
         if same:
             for j in range(npc):

@@ -15,7 +15,9 @@ difference of the two orbits' ``mu``, plus the section state's
 tolerance, is the stated error.  (One fine period from the coarse orbit is not enough:
 the orbit of a map moves with the map's error, by more where it attracts slowly, and the
 error so estimated held half the true one at such points.)  The first periods, where the
-pieces still change, have their mean force balance restored (the kernel's ``_balance``).
+pieces still change, have their mean force balance restored (the kernel's ``_balance``);
+maps over which the body creeps with the substrate (a soft pin's spring loading) are not
+mixed but extrapolated by doubling steps (the kernel's ``DRIFT``).
 A jumping indenter (``a > 1``) is in its flight at the section: the state is ``(y, y')``,
 and the stated error also holds how far the search may have stopped from the orbit
 (:func:`_search_error`).
@@ -150,15 +152,16 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     z[0], z[1] = y0, -offset[1]
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
     res = np.zeros(5)
+    nbar = float(theory.profile_mean_normal_force(a, n))  # the sliding <F>: <y> = -nbar/alpha
     code, periods, events = mc.steady(prm, z, PC, npc, HS, nh, rtol, FINE, DEPTH, state_tol,
-                                      GROWTH, max_periods, cnt, res)
+                                      GROWTH, -nbar / alpha, max_periods, cnt, res)
     if code != 0:
         reason = ("no periodic orbit within max_periods" if code == mc.SECTION_NO_ORBIT
                   else f"kernel code {code}")
         return dict(mu_ratio=math.nan, error=math.inf, status="failed", periods=periods,
                     stick_area_fraction=math.nan, slip_area_fraction=math.nan,
                     open_area_fraction=math.nan, events_per_period=0, reason=reason)
-    nint = 2.0 * math.pi * float(theory.profile_mean_normal_force(a, n))
+    nint = 2.0 * math.pi * nbar
     mu = res[2] / nint
     # the fine orbit's difference from the coarse one (the maps' error), and the section
     # state's tolerance (the orbit's)
