@@ -1169,12 +1169,16 @@ def _section(z, PC, npc, u, x):
 
 
 @jit
-def _set_section(x, z, PC, npc, u, n):
-    """The inverse of :func:`_section` (the ends kept in order, the last, the contact's
-    edge, fixed).
+def _set_section(x, z, PC, npc, HS, nh, t, prm):
+    """The inverse of :func:`_section` at time ``t`` (the ends kept in order, the last, the
+    contact's edge, fixed), the history's last ``u``, ``u'`` with it.
     """
+    V, n = prm[P_V], prm[P_N]
+    u = x[0] + V * t
     z[0] = x[0]
     z[1] = x[1]
+    HS[nh - 1, HU] = u
+    HS[nh - 1, HD] = x[1] + V
     lo = 0.0
     for j in range(npc):
         e = PC[j, X1] if j == npc - 1 else min(max(x[2 + 2 * j], lo), PC[npc - 1, X1])
@@ -1205,7 +1209,12 @@ def _balance(prm, z, PC, npc, HS, nh):
     body whose mean ``<y>`` misses ``-<F>/alpha`` is in the slow swing of its spring (the
     soft pin's transient), which plain periods damp only slowly.
     """
-    dy = -z[3] / (TWO_PI * prm[P_ALPHA]) - z[6] / TWO_PI
+    _shift(-z[3] / (TWO_PI * prm[P_ALPHA]) - z[6] / TWO_PI, z, PC, npc, HS, nh)
+
+
+@jit
+def _shift(dy, z, PC, npc, HS, nh):
+    """Move the body by ``dy`` with its profile (every level relative to ``u`` kept)."""
     z[0] += dy
     HS[nh - 1, HU] += dy
     for j in range(npc):
@@ -1257,7 +1266,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     Returns ``(code, periods, events of the last period)``: ``code`` 0,
     :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
     """
-    V, n = prm[P_V], prm[P_N]
+    V = prm[P_V]
     K = np.zeros((8, N_Z))
     out = np.zeros_like(PC)
     nmax = 2 + 2 * MAX_PIECES
@@ -1327,10 +1336,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
             dy *= 2.0 ** min(ncreep - 1, 30) - 1.0
             dy = max(dy, min(0.0, y_sliding - z[0]))
             if dy != 0.0:
-                z[0] += dy
-                HS[nh - 1, HU] += dy
-                for j in range(npc):
-                    PC[j, VAL] += dy
+                _shift(dy, z, PC, npc, HS, nh)
             continue
         ncreep = 0
         same = npc == npc0
@@ -1363,10 +1369,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
             # levels relative to u now), and the mixing starts again from there
             npc = bnpc
             _copy_state(bpc, bz, npc, PC, z)
-            u = bg[0] + V * t
-            _set_section(bg, z, PC, npc, u, n)
-            HS[nh - 1, HU] = u
-            HS[nh - 1, HD] = bg[1] + V
+            _set_section(bg, z, PC, npc, HS, nh, t, prm)
             nhist = 0
             last = math.inf
             mixed = False
@@ -1427,20 +1430,14 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
             ok = False
             for i in range(nx):
                 x[i] = X[nhist - 1, i]
-            u = x[0] + V * t
-            _set_section(x, z, PC, npc, u, n)
-            HS[nh - 1, HU] = u
-            HS[nh - 1, HD] = x[1] + V
+            _set_section(x, z, PC, npc, HS, nh, t, prm)
         if ok:
             bnpc = npc
             _copy_state(PC, z, npc, bpc, bz)
             for i in range(nx):
                 bg[i] = g[i]
             mixed = True
-            u = x[0] + V * t
-            _set_section(x, z, PC, npc, u, n)
-            HS[nh - 1, HU] = u
-            HS[nh - 1, HD] = x[1] + V
+            _set_section(x, z, PC, npc, HS, nh, t, prm)
     if not found:
         return SECTION_NO_ORBIT, periods, 0
     res[0] = w_coarse
