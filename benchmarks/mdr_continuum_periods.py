@@ -3,11 +3,12 @@
 At the ten regimes of ``bench_ratios.py`` for a cone, a sphere and ``n = 4``, the row without
 springs asked for ``tol_trusted = 1e-7`` (:func:`~vibrofriction.solver.mdr_continuum.
 continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first ones at
-``ROUGH``):
+``VROUGH``, then ``ROUGH``):
 
 * the period maps and Dormand-Prince steps of each stage of the search, counted in a
   second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
-  transient (maps at ``ROUGH``), the coarse orbit (at ``3e-8``) and the fine one (``3e-9``);
+  transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``) and the
+  fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage);
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
@@ -56,7 +57,9 @@ def _stage_tolerances() -> tuple[tuple[str, float], ...]:
     from vibrofriction.solver import mdr_continuum as smc
 
     rtol = smc.FACTOR * TOL
-    return ("rough", max(rtol, mc.ROUGH)), ("coarse", rtol), ("fine", smc.FINE * rtol)
+    first = (("very rough", max(rtol, mc.VROUGH)),) if hasattr(mc, "VROUGH") else ()
+    return first + (("rough", max(rtol, mc.ROUGH)), ("coarse", rtol),
+                    ("fine", smc.FINE * rtol))
 
 
 def stages() -> None:
@@ -129,9 +132,11 @@ def main() -> None:
     counted = json.loads(subprocess.run(
         [sys.executable, __file__, "--stages"], env=env, check=True, capture_output=True,
         text=True).stdout.splitlines()[-1])
-    lines = ["| regime | n | transient: maps, steps | coarse | fine | periods | "
-             "from the orbit's body state |", "|---|---|---|---|---|---|---|"]
-    total = {"rough": [0, 0], "coarse": [0, 0], "fine": [0, 0]}
+    names = list(counted[0])
+    lines = ["| regime | n | " + " | ".join(f"{k}: maps, steps" for k in names)
+             + " | periods | from the orbit's body state |",
+             "|---|---|" + "---|" * len(names) + "---|---|"]
+    total = {k: [0, 0] for k in names}
     before = after = 0
     for (lab, n, args), st in zip(_points(), counted, strict=True):
         r0 = continuum_friction(*args, TOL)
@@ -145,8 +150,8 @@ def main() -> None:
             total[name][1] += steps
         before += r0["periods"]
         after += r1["periods"]
-        lines.append(f"| {lab} | {n:g} | {cells['rough']} | {cells['coarse']}"
-                     f" | {cells['fine']} | {r0['periods']} | {r1['periods']} "
+        lines.append(f"| {lab} | {n:g} | " + " | ".join(cells[k] for k in names)
+                     + f" | {r0['periods']} | {r1['periods']} "
                      f"(mu {r1['mu_ratio'] - r0['mu_ratio']:+.1e} from the default's) |")
         print(lines[-1], flush=True)
     steps = sum(s for _, s in total.values())

@@ -1192,7 +1192,11 @@ def _set_section(x, z, PC, npc, HS, nh, t, prm):
 
 SECTION_OK, SECTION_NO_ORBIT = 0, 1
 LEAP = 1e3  # a mixed step further than this times the residual from the map's is refused
-ROUGH, ROUGH_UNTIL = 1e-6, 1e-4  # the transient's maps' tolerance, and where it ends
+# the transient's maps: at VROUGH until the state's relative change per period is below
+# VROUGH_UNTIL (far from the orbit a map's error is swamped by its move, and the loose
+# tolerance takes about a sixth fewer steps), then at ROUGH until it is below ROUGH_UNTIL
+VROUGH, VROUGH_UNTIL = 1e-4, 1e-2
+ROUGH, ROUGH_UNTIL = 1e-6, 1e-4
 # a period whose map moves u = y + V tau by less than this fraction of the substrate's
 # 2 pi V is a creep: the body mostly stuck to the substrate while the pin's spring loads
 # (the slow transient of a soft pin or a slow sliding), extrapolated by steps doubling
@@ -1252,8 +1256,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     grows by ``growth`` is undone, back to the plain map's end it left; a map over which
     the body creeps with the substrate, :data:`DRIFT`, is not mixed but its move taken
     ``2^k - 1`` more times, ``k`` such maps in a row, down to ``y_sliding`` at most, the
-    sliding body's mean ``y``; the maps at
-    ``ROUGH`` until the state's relative change is below ``ROUGH_UNTIL``, then at
+    sliding body's mean ``y``; the maps at ``VROUGH`` until the state's relative change
+    is below ``VROUGH_UNTIL``, at ``ROUGH`` until it is below ``ROUGH_UNTIL``, then at
     ``rtol``) until it is below ``state_tol`` and so is the mixing's step
     (:func:`_change`); then with maps at ``fine * rtol`` to that map's orbit (the orbit
     of a map moves with its error, by more where the orbit attracts slowly, so the fine
@@ -1286,8 +1290,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     shift = False  # the history to be shifted to the fine map's
     creeps = prm[P_A] < 1.0  # (a jumping indenter's flight frees the body every period)
     ncreep = 0  # the creeping maps in a row
-    stage = 0  # the maps at 0: max(rtol, ROUGH) (the transient), 1: rtol, 2: fine * rtol
-    tol_m = max(rtol, ROUGH)
+    stage = 0  # the maps at 0: max(rtol, VROUGH), then max(rtol, ROUGH) (the transient),
+    tol_m = max(rtol, VROUGH)  # 1: rtol, 2: fine * rtol
     npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
                         cnt, 1)
     if npc < 0:
@@ -1375,6 +1379,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
             mixed = False
             continue
         mixed = False
+        if stage == 0 and r < VROUGH_UNTIL:
+            tol_m = max(rtol, ROUGH)
         if stage == 0 and r < ROUGH_UNTIL:
             stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
             tol_m = rtol  # maps differ by their errors only)
