@@ -107,7 +107,7 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
     y_sliding = -float(theory.profile_mean_normal_force(a, n)) / al
     code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, smc.FINE, smc.DEPTH, rtol,
                                  smc.GROWTH, y_sliding, 200, np.zeros(4, np.int64),
-                                 np.zeros(5))
+                                 np.zeros(7))
     if code != 0:
         return math.nan, math.nan, y0
     # the last period runs from pi + 2 pi (periods - 1) to pi + 2 pi periods; its steps end

@@ -369,10 +369,10 @@ def test_jumping_routes_to_the_continuum():
 
 
 def test_search_error_bounds_the_distance_to_the_orbit():
-    """A jumping point's search-error term (Newton's step from the last map, by differences):
-    from states off the orbit ``x*`` (found by 80 plain periods of a damped point), the
-    last map's ``int F`` lies within the term of the orbit's, and the term is not ten times
-    more (to first order it is the triangle inequality over the step)."""
+    """A jumping point's search-error term (Newton's step from the last map's start, by
+    differences): from states off the orbit ``x*`` (found by 80 plain periods of a damped
+    point), the last map's ``int F`` lies within the term of the orbit's, and the term is
+    not ten times more (to first order it is twice that distance)."""
     from vibrofriction.solver.mdr_continuum import _flight_map, _parameters, _search_error
 
     prm = _parameters(0.5, 4.0, 1.5, 0.3, 2.0, 0.3, 0.0, 0.0)
@@ -382,8 +382,9 @@ def test_search_error_bounds_the_distance_to_the_orbit():
         x = _flight_map(prm, t, x[0], x[1], rtol)[:2]
     w_orbit = _flight_map(prm, t, x[0], x[1], rtol)[2]
     for e in ([1e-5, 0.0], [0.0, 1e-5], [-1e-5, 2e-5]):
-        m = _flight_map(prm, t, x[0] + e[0], x[1] + e[1], rtol)
-        bound = _search_error(prm, t, m[:2], m[2], rtol)
+        start = x + np.array(e)
+        m = _flight_map(prm, t, start[0], start[1], rtol)
+        bound = _search_error(prm, t, start, m[:2], m[2], rtol)
         true = abs(m[2] - w_orbit)
         assert true > 1e-8  # (well above the maps' noise)
         assert true <= bound <= 10.0 * true

@@ -1266,7 +1266,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     the difference of their ends there (the two maps differ by their errors, nearly
     constant over the history's span, so its differences keep holding, and the offset is
     not taken for the state's own move).  Writes ``res = (int F over the
-    coarse orbit's period, -, over the fine orbit's, its stick area, its slip area)``.
+    coarse orbit's period, -, over the fine orbit's, its stick area, its slip area, the
+    last map's start y, y')``.
     Returns ``(code, periods, events of the last period)``: ``code`` 0,
     :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
     """
@@ -1306,9 +1307,12 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     found = False
     w_coarse = math.nan
     ev = 0
+    y_start = v_start = math.nan
     for m in range(max_periods):
         periods = m + 1
         nx = _section(z, PC, npc, z[0] + V * t, x)
+        y_start = x[0]
+        v_start = x[1]
         for j in range(npc):
             kinds[j] = PC[j, KIND]
         npc0 = npc
@@ -1451,4 +1455,6 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     res[2] = w_last
     res[3] = z[4]
     res[4] = z[5]
+    res[5] = y_start
+    res[6] = v_start
     return 0, periods, ev

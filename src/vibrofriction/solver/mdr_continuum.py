@@ -96,33 +96,32 @@ def _flight_map(prm: np.ndarray, t: float, y: float, v: float, rtol: float) -> n
     return np.array([z[0], z[1], z[3]])
 
 
-def _search_error(prm: np.ndarray, t: float, g: np.ndarray, w_last: float,
+def _search_error(prm: np.ndarray, t: float, x: np.ndarray, g: np.ndarray, w_last: float,
                   rtol: float) -> float:
     """How far the search's ``int F`` can be from the orbit's, a jumping indenter's.
 
     The search stops where the section state changes by less than ``state_tol`` over a
-    period; on a slowly attracting orbit it is farther from the orbit than that. From the
-    last map's end ``g``, Newton's step to the orbit, ``dx = -(J - I)^-1 (P(g) - g)``
-    (``J`` by differences of two more maps), moves ``int F`` by ``G . dx`` to first
-    order (``G`` likewise); so the last map's ``int F`` is within about
-    ``|w_last - w(g)| + |G . dx|`` of the orbit's.  ``inf`` where ``J - I`` is singular or
-    a map fails.
+    period; on a slowly attracting orbit it is farther from the orbit than that. The last
+    map took ``x`` (at ``t``) to ``g`` with ``int F = w_last``; Newton's step from ``x`` to
+    the orbit, ``dx = -(J - I)^-1 (g - x)`` (``J`` by differences of two more maps, from
+    ``x`` moved along each axis), moves ``int F`` by ``G . dx`` to first order (``G``
+    likewise); so ``w_last`` is about ``|G . dx|`` from the orbit's, and twice that is
+    returned (the step is first-order).  ``inf`` where ``J - I`` is singular or a map fails.
     """
-    base = _flight_map(prm, t, g[0], g[1], rtol)
     J = np.empty((2, 2))
     G = np.empty(2)
     for j in range(2):
-        step = 1e-5 * (1.0 + abs(g[j]))
-        x = g.copy()
-        x[j] += step
-        m = _flight_map(prm, t, x[0], x[1], rtol)
-        J[:, j] = (m[:2] - base[:2]) / step
-        G[j] = (m[2] - base[2]) / step
+        step = 1e-5 * (1.0 + abs(x[j]))
+        xs = x.copy()
+        xs[j] += step
+        m = _flight_map(prm, t, xs[0], xs[1], rtol)
+        J[:, j] = (m[:2] - g) / step
+        G[j] = (m[2] - w_last) / step
     try:
-        dx = -np.linalg.solve(J - np.eye(2), base[:2] - g)
+        dx = -np.linalg.solve(J - np.eye(2), g - x)
     except np.linalg.LinAlgError:
         return math.inf
-    err = abs(w_last - base[2]) + abs(float(G @ dx))
+    err = 2.0 * abs(float(G @ dx))
     return err if math.isfinite(err) else math.inf
 
 
@@ -151,7 +150,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     z = np.zeros(mc.N_Z)
     z[0], z[1] = y0, -offset[1]
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
-    res = np.zeros(5)
+    res = np.zeros(7)
     nbar = float(theory.profile_mean_normal_force(a, n))  # the sliding <F>: <y> = -nbar/alpha
     code, periods, events = mc.steady(prm, z, PC, npc, HS, nh, rtol, FINE, DEPTH, state_tol,
                                       GROWTH, -nbar / alpha, max_periods, cnt, res)
@@ -167,8 +166,9 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     # state's tolerance (the orbit's)
     err = abs(res[2] - res[0]) / nint + state_tol
     if a > 1.0:  # and how far the search stopped from a slowly attracting orbit
-        t_end = math.pi + 2.0 * math.pi * periods  # (the section after the last map)
-        err += _search_error(prm, t_end, z[:2].copy(), res[2], FINE * rtol) / nint
+        t_last = math.pi + 2.0 * math.pi * (periods - 1)  # (the last map's start)
+        err += _search_error(prm, t_last, res[5:7].copy(), z[:2].copy(), res[2],
+                             rtol) / nint
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
