@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 from vibrofriction.params import Case, Dimensionless, Physical, classify
@@ -303,6 +303,10 @@ def test_dimensionless_round_trip(alpha: float, gap: float, a: float, vbar: floa
     k_zc=log_floats, u_z0=log_floats, a=st.floats(1e-3, 3.0), omega=log_floats,
     mu0=st.floats(0.01, 2.0), vbar=st.floats(0.0, 100.0),
 )
+# a contact 5e7 times softer than the pin: beta - alpha holds k_xc to 1e-8 only (found by
+# hypothesis in CI on 2026-12-01, off by 1.0e-8 where the bound below allows 5.5e-8)
+@example(mass=5.333287788801987, k_x=8678.2554100998, k_xc=0.00017112652420471605,
+         k_zc=1.0, u_z0=1.0, a=1.0, omega=5.333287788801987, mu0=1.0, vbar=0.0)
 def test_physical_round_trips_and_eq12(mass: float, k_x: float, k_xc: float, k_zc: float,
                                        u_z0: float, a: float, omega: float, mu0: float,
                                        vbar: float) -> None:
@@ -318,9 +322,13 @@ def test_physical_round_trips_and_eq12(mass: float, k_x: float, k_xc: float, k_z
     ratio = 1.0 if math.isinf(k_xc) else abs(k_x + k_xc - mw2) / k_xc
     eq12 = mu0 * omega * a * u_z0 * k_zc * ratio / abs(k_x - mw2)
     assert v_star == pytest.approx(eq12, rel=1e-9)
-    # eq. (12) through the dimensionless groups: v0* = c * mu0 F_N0 / (m omega)
+    # eq. (12) through the dimensionless groups: v0* = c * mu0 F_N0 / (m omega); the
+    # groups hold k_xc as beta - alpha, rounded from (k_x + k_xc)/(m omega^2): its relative
+    # error, and so c's, is up to a few eps (k_x + k_xc)/k_xc (the conversion's conditioning)
     unit = mu0 * p.F_N0 / (mass * omega)
-    assert d.critical_inertial_velocity() * unit == pytest.approx(v_star, rel=1e-8)
+    cond = 1.0 if math.isinf(k_xc) else (k_x + k_xc) / k_xc
+    assert d.critical_inertial_velocity() * unit == pytest.approx(
+        v_star, rel=1e-8 + 4.0 * np.finfo(float).eps * cond)
     v0 = p.vbar_to_v0(vbar)
     assert p.v0_to_vbar(v0) == pytest.approx(vbar, rel=1e-10, abs=1e-300)
     assert v0 == pytest.approx(vbar * v_star, rel=1e-8, abs=1e-300)
