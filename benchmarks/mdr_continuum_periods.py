@@ -8,8 +8,8 @@ continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first o
 * the period maps and Dormand-Prince steps of each stage of the search, counted in a
   second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
   transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``; a
-  jumping point's two search-distance maps run at that tolerance too and count there since
-  437cd51) and the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage);
+  jumping point's two search-distance maps run at that tolerance too and count there) and
+  the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage);
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
