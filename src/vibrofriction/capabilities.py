@@ -200,12 +200,6 @@ PLANE = Capabilities(
                "period map (HELD where a stuck contact can hold a region of mean forces)",
 )
 
-CONTINUUM_BELOW = 3e-4
-"""The MDR solver answers with the row without springs below this ``tol_trusted`` (where
-it covers the point): a fit's ``1e-4`` too, where it costs less than the rows of springs
-with a stated error of ``1e-7``; at and above it the rows cost as much or less, with an
-error near the tolerance (``benchmarks/bench_mdr_tol.py --tol``, ``results/mdr_tol.md``)."""
-
 MDR = Capabilities(
     name="mdr",
     title="the MDR solver",
@@ -237,15 +231,13 @@ MDR = Capabilities(
     histories=True,
     velocities="every V: V < 0 by the mirror x -> -x; V = 0 the static limit of the "
                "tip (theory.profile_static_mu_ratio)",
-    notes=(f"at tol_trusted < {CONTINUUM_BELOW:g} (the default 1e-5 included), a point "
-           "with 0 < "
-           "amplitude < 1 or amplitude > 1, v_inertial != 0 and "
+    notes=("a point with 0 < amplitude < 1 or amplitude > 1, v_inertial != 0 and "
            "static_ratio = 1 is solved by the row without springs (no discretisation of "
-           "the contact); it ends its search at tol_state where given (at the tightest "
-           "1e-9 of its section state), else at 0.3 tol_trusted within [1e-9, 1e-7]",
-           "elsewhere (looser tolerances too, where they are cheaper), or where the "
-           "row without springs fails, rows of springs are refined until their error "
-           "is at most tol_trusted"),
+           "the contact), at every tol_trusted; it ends its search at tol_state where given "
+           "(at the tightest 1e-9 of its section state), else at 0.3 tol_trusted within "
+           "[1e-9, 1e-6]",
+           "elsewhere, where the row without springs fails, or where n_springs is given, "
+           "rows of springs are refined until their error is at most tol_trusted"),
 )
 
 RATE_STATE = Capabilities(

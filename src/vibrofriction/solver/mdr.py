@@ -21,7 +21,7 @@ from .._kernels.average import window_means
 from .._kernels.codes import FLIGHT, O_ERR, O_MU, SLIP_POS, STICK
 from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
-from ..capabilities import CAPABILITIES, CONTINUUM_BELOW
+from ..capabilities import CAPABILITIES
 from ..schema import FLOAT_COLUMNS, POSITIVE
 from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
@@ -47,13 +47,11 @@ MAX_SPRINGS = 5120  # the finest row: a stated error of 1e-7 where asked (rows t
 # and one of thousands of springs would take minutes
 AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
-# below this tolerance a point the row without springs covers is solved by it (exact in xi,
-# and there no dearer than the rows: at 1e-4, a fit's, a median 36 against 47 times a flat
-# point, at 1e-7 36 against 587; at 3e-4 36 against 37, where the rows' worst points are
-# the cheaper: benchmarks/bench_mdr_tol.py, results/mdr_tol.md); the declared
-# CONTINUUM_BELOW, 0 within rows_alone() (the MDR histories and the tests' references are
-# the rows')
-CONTINUUM_TOL = CONTINUUM_BELOW
+# the row without springs answers a point it covers where tol is below this: at every tol
+# (it is exact in xi, and costs less than the rows at every tolerance:
+# benchmarks/bench_mdr_tol.py, results/mdr_tol.md); 0 within rows_alone() (the MDR histories
+# and the tests' references are the rows')
+CONTINUUM_TOL = math.inf
 
 
 @contextlib.contextmanager

@@ -37,14 +37,16 @@ __all__ = ["continuous_sliding", "continuum_covers", "continuum_friction", "mdr_
            "slides_continuously"]
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
-LOOSEST, TIGHTEST = 1e-7, 1e-10  # the maps' tolerances continuum_friction chooses from
-STATE_LOOSEST, STATE_TIGHTEST = 1e-7, 1e-9  # ... and the search's (the maps' noise below)
+LOOSEST, TIGHTEST = 1e-6, 1e-10  # the maps' tolerances continuum_friction chooses from
+STATE_LOOSEST, STATE_TIGHTEST = 1e-6, 1e-9  # ... and the search's (the maps' noise below)
+NOISE = 100.0  # ... the maps' at most this times a given state_tol (noise the search can see)
 FACTOR = 0.3  # ... each this times tol_trusted (benchmarks/mdr_continuum_calibration.py)
 FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
 GROWTH = 10.0  # a mixed step whose residual grows by this restarts the mixing
 HISTORY = 20000  # rows of the history of u
+DIFF_STEP = 1e-5  # _search_error's difference step (relative), maps at 1e-7 and tighter
 
 
 def continuum_covers(amplitude: float, V: float, static_ratio: float) -> bool:
@@ -96,27 +98,33 @@ def _flight_map(prm: np.ndarray, t: float, y: float, v: float, rtol: float) -> n
     return np.array([z[0], z[1], z[3]])
 
 
-def _search_error(prm: np.ndarray, t: float, x: np.ndarray, g: np.ndarray, w_last: float,
+def _search_error(prm: np.ndarray, t: float, x: np.ndarray, g: np.ndarray,
                   rtol: float) -> float:
     """How far the search's ``int F`` can be from the orbit's, a jumping indenter's.
 
     The search stops where the section state changes by less than ``state_tol`` over a
     period; on a slowly attracting orbit it is farther from the orbit than that. The last
-    map took ``x`` (at ``t``) to ``g`` with ``int F = w_last``; Newton's step from ``x`` to
-    the orbit, ``dx = -(J - I)^-1 (g - x)`` (``J`` by differences of two more maps, from
-    ``x`` moved along each axis), moves ``int F`` by ``G . dx`` to first order (``G``
-    likewise); so ``w_last`` is about ``|G . dx|`` from the orbit's, and twice that is
-    returned (the step is first-order).  ``inf`` where ``J - I`` is singular or a map fails.
+    map took ``x`` (at ``t``) to ``g``; Newton's step from ``x`` to
+    the orbit, ``dx = -(J - I)^-1 (g - x)`` (``J`` by differences of three more maps at
+    ``rtol``, from ``x`` and from ``x`` moved along each axis: all at one tolerance, as the
+    difference of two maps' errors divided by the step would bias ``J``, by more than
+    ``1 - |lambda|`` near a slowly attracting orbit), moves ``int F`` by ``G . dx`` to first
+    order (``G`` likewise); so the last map's ``int F`` is about ``|G . dx|`` from the orbit's,
+    and twice that is returned (the step is first-order).  ``inf`` where ``J - I`` is singular or a
+    map fails.  The differences' step is :data:`DIFF_STEP`, times ``sqrt(rtol/1e-7)`` for
+    looser maps (it stays far above their noise).
     """
     J = np.empty((2, 2))
     G = np.empty(2)
+    rel = DIFF_STEP * max(1.0, math.sqrt(rtol / 1e-7))
+    base = _flight_map(prm, t, x[0], x[1], rtol)  # (the differences' maps at one tolerance)
     for j in range(2):
-        step = 1e-5 * (1.0 + abs(x[j]))
+        step = rel * (1.0 + abs(x[j]))
         xs = x.copy()
         xs[j] += step
         m = _flight_map(prm, t, xs[0], xs[1], rtol)
-        J[:, j] = (m[:2] - g) / step
-        G[j] = (m[2] - w_last) / step
+        J[:, j] = (m[:2] - base[:2]) / step
+        G[j] = (m[2] - base[2]) / step
     try:
         dx = -np.linalg.solve(J - np.eye(2), g - x)
     except np.linalg.LinAlgError:
@@ -167,8 +175,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     err = abs(res[2] - res[0]) / nint + state_tol
     if a > 1.0:  # and how far the search stopped from a slowly attracting orbit
         t_last = math.pi + 2.0 * math.pi * (periods - 1)  # (the last map's start)
-        err += _search_error(prm, t_last, res[5:7].copy(), z[:2].copy(), res[2],
-                             rtol) / nint
+        err += _search_error(prm, t_last, res[5:7].copy(), z[:2].copy(), rtol) / nint
     area = 2.0 * math.pi * (1.0 + a) ** (2.0 / n)
     stick, slip = res[3] / area, res[4] / area
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
@@ -232,15 +239,16 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        max_periods: int = 200, state_tol: float | None = None) -> dict:
     """:func:`mdr_continuum` with its maps' and its search's tolerances chosen for ``tol``.
 
-    The maps' ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``; the search's
-    ``state_tol``, where not given, likewise within ``[STATE_TIGHTEST, STATE_LOOSEST]`` (a
-    given one at least ``STATE_TIGHTEST``). Both tightened tenfold while the stated error
-    exceeds ``tol``, down to their tightest (a given ``state_tol`` stays).
+    The maps' ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]`` and at most ``NOISE``
+    times the search's ``state_tol``; that, where not given, likewise ``FACTOR`` times
+    ``tol`` within ``[STATE_TIGHTEST, STATE_LOOSEST]`` (a given one at least
+    ``STATE_TIGHTEST``). Both tightened tenfold while the stated error exceeds ``tol``,
+    down to their tightest (a given ``state_tol`` stays).
     """
-    rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
     chosen = state_tol is not None
     stol = max(STATE_TIGHTEST, float(state_tol)) if state_tol is not None \
         else min(STATE_LOOSEST, max(STATE_TIGHTEST, FACTOR * tol))
+    rtol = min(LOOSEST, NOISE * stol, max(TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
                           max_periods=max_periods, rtol=rtol, state_tol=stol)

@@ -42,11 +42,11 @@ from .uncertainty import (
     profile_warnings,
 )
 
-#: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``: below
-#: ``capabilities.CONTINUUM_BELOW`` the row without springs answers it as it does the
-#: default 1e-5 (errors about 1e-7); where the rows of springs answer (a static coefficient
-#: above the kinetic one, ``a = 1``) it is the cheaper. An error of ``mu0 1e-4`` in the COF
-#: is a hundredth of a bench's noise (docs/bench.md, "A curved contact").
+#: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``: the
+#: row without springs answers it as it does the default 1e-5 (errors about 1e-6); where the
+#: rows of springs answer (a static coefficient above the kinetic one, ``a = 1``) it is the
+#: cheaper. An error of ``mu0 1e-4`` in the COF is a hundredth of a bench's noise
+#: (docs/bench.md, "A curved contact").
 CURVED_TOL = 1e-4
 #: The 2-D solver's ``rtol`` in a fit whose every row has a transverse oscillation
 #: (``du_y > 0``), without ``settings``: about twice as fast as its default 1e-10, with stated
