@@ -7,17 +7,20 @@ continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first o
 
 * the period maps and Dormand-Prince steps of each stage of the search, counted in a
   second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
-  transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``; a
-  jumping point's two search-distance maps run at that tolerance too and count there) and
-  the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage);
+  transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``) and
+  the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage); a jumping
+  point's search-distance maps count with the stage of their tolerance (the coarse one's,
+  ``1e-6`` at the tightest: at ``1e-7``, the rough stage's);
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
   started as always: what the best possible first guess of the body alone would buy.
 
-    PYTHONPATH=src python benchmarks/mdr_continuum_periods.py [--write]
+    PYTHONPATH=src python benchmarks/mdr_continuum_periods.py [--tol TOL] [--write]
 
-``--write`` appends the run to benchmarks/results/mdr_continuum_periods.md.
+``--tol`` another ``tol_trusted`` (the maps' tolerances as ``continuum_friction`` chooses
+them, without its retry); ``--write`` appends the run to
+benchmarks/results/mdr_continuum_periods.md.
 """
 
 from __future__ import annotations
@@ -52,15 +55,25 @@ def _points() -> list[tuple[str, float, tuple]]:
     return out
 
 
+def _map_tolerance() -> float:
+    """The coarse maps' tolerance ``continuum_friction`` chooses at ``TOL`` (no retry)."""
+    from vibrofriction.solver import mdr_continuum as smc
+
+    return min(smc.LOOSEST, max(smc.TIGHTEST, smc.FACTOR * TOL))
+
+
 def _stage_tolerances() -> tuple[tuple[str, float], ...]:
-    """The maps' tolerance of each stage of the search at ``TOL``."""
+    """The maps' tolerance of each stage of the search at ``TOL`` (the rough stage counted
+    with the coarse one where their tolerances are one, ``rough = coarse``)."""
     from vibrofriction._kernels import mdr_continuum as mc
     from vibrofriction.solver import mdr_continuum as smc
 
-    rtol = smc.FACTOR * TOL
+    rtol = _map_tolerance()
     first = (("very rough", max(rtol, mc.VROUGH)),) if hasattr(mc, "VROUGH") else ()
-    return first + (("rough", max(rtol, mc.ROUGH)), ("coarse", rtol),
-                    ("fine", smc.FINE * rtol))
+    rough = max(rtol, mc.ROUGH)
+    middle = (("rough = coarse", rtol),) if rough == rtol else (("rough", rough),
+                                                                 ("coarse", rtol))
+    return first + middle + (("fine", smc.FINE * rtol),)
 
 
 def stages() -> None:
@@ -97,7 +110,7 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
     from vibrofriction.solver import mdr_continuum as smc
 
     al, be, a, V, n, ze, hc, hs, off = args
-    rtol = smc.FACTOR * TOL
+    rtol = _map_tolerance()
     prm = smc._parameters(al, be, a, V, n, ze, hc, hs)
     PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
     HS = np.full((smc.HISTORY, mc.N_HS), np.nan)
@@ -120,10 +133,13 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
 
 
 def main() -> None:
+    global TOL
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--write", action="store_true")
+    ap.add_argument("--tol", type=float, default=TOL, help="tol_trusted (default %(default)g)")
     ap.add_argument("--stages", action="store_true", help=argparse.SUPPRESS)
     opts = ap.parse_args()
+    TOL = opts.tol
     if opts.stages:
         stages()
         return
@@ -131,8 +147,8 @@ def main() -> None:
 
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
     counted = json.loads(subprocess.run(
-        [sys.executable, __file__, "--stages"], env=env, check=True, capture_output=True,
-        text=True).stdout.splitlines()[-1])
+        [sys.executable, __file__, "--stages", "--tol", repr(TOL)], env=env, check=True,
+        capture_output=True, text=True).stdout.splitlines()[-1])
     names = list(counted[0])
     lines = ["| regime | n | " + " | ".join(f"{k}: maps, steps" for k in names)
              + " | periods | from the orbit's body state |",
@@ -166,9 +182,10 @@ def main() -> None:
     if opts.write:
         from sections import append_run
 
+        flag = "" if TOL == 1e-7 else f" --tol {TOL:g}"
         append_run(RESULTS, "The row without springs: periods by stage, and from a perfect "
                    "start of the body", "PYTHONPATH=src python benchmarks/"
-                   "mdr_continuum_periods.py --write",
+                   f"mdr_continuum_periods.py{flag} --write",
                    f"tol_trusted = {TOL:g}; maps and steps counted under NUMBA_DISABLE_JIT "
                    "(steps include the rejected ones).", lines)
 

@@ -46,7 +46,8 @@ DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
 GROWTH = 10.0  # a mixed step whose residual grows by this restarts the mixing
 HISTORY = 20000  # rows of the history of u
-DIFF_STEP = 1e-5  # _search_error's difference step (relative), maps at 1e-7 and tighter
+DIFF_RTOL = 1e-6  # _search_error's difference maps' tolerance at the tightest, and their
+DIFF_STEP = 1e-5  # step (relative) times sqrt(its tolerance / 1e-7): far above their noise
 
 
 def continuum_covers(amplitude: float, V: float, static_ratio: float) -> bool:
@@ -105,18 +106,20 @@ def _search_error(prm: np.ndarray, t: float, x: np.ndarray, g: np.ndarray,
     The search stops where the section state changes by less than ``state_tol`` over a
     period; on a slowly attracting orbit it is farther from the orbit than that. The last
     map took ``x`` (at ``t``) to ``g``; Newton's step from ``x`` to
-    the orbit, ``dx = -(J - I)^-1 (g - x)`` (``J`` by differences of three more maps at
-    ``rtol``, from ``x`` and from ``x`` moved along each axis: all at one tolerance, as the
-    difference of two maps' errors divided by the step would bias ``J``, by more than
-    ``1 - |lambda|`` near a slowly attracting orbit), moves ``int F`` by ``G . dx`` to first
-    order (``G`` likewise); so the last map's ``int F`` is about ``|G . dx|`` from the orbit's,
-    and twice that is returned (the step is first-order).  ``inf`` where ``J - I`` is singular or a
-    map fails.  The differences' step is :data:`DIFF_STEP`, times ``sqrt(rtol/1e-7)`` for
-    looser maps (it stays far above their noise).
+    the orbit, ``dx = -(J - I)^-1 (g - x)`` (``J`` by differences of three more maps, from
+    ``x`` and from ``x`` moved along each axis, at ``rtol`` but at least :data:`DIFF_RTOL`,
+    plenty for a first-order correction: all at one tolerance, as the difference of two
+    maps' errors divided by the step would bias ``J``, by more than ``1 - |lambda|`` near a
+    slowly attracting orbit), moves ``int F`` by ``G . dx`` to first order (``G``
+    likewise); so the last map's ``int F`` is about ``|G . dx|`` from the orbit's, and twice
+    that is returned (the step is first-order).  ``inf`` where ``J - I`` is singular or a
+    map fails.  The differences' step is :data:`DIFF_STEP` times ``sqrt(tolerance/1e-7)``,
+    far above the maps' noise.
     """
     J = np.empty((2, 2))
     G = np.empty(2)
-    rel = DIFF_STEP * max(1.0, math.sqrt(rtol / 1e-7))
+    rtol = max(rtol, DIFF_RTOL)
+    rel = DIFF_STEP * math.sqrt(rtol / 1e-7)
     base = _flight_map(prm, t, x[0], x[1], rtol)  # (the differences' maps at one tolerance)
     for j in range(2):
         step = rel * (1.0 + abs(x[j]))
