@@ -276,3 +276,21 @@ def test_the_finite_contacts_written_out_law_is_the_state_rate(law: float, ald: 
         assert J[rs.Z_L, rs.Z_M] == pytest.approx(dw * wm, rel=1e-13, abs=1e-13)
         assert J[rs.Z_L, rs.Z_L] == pytest.approx(dL + dw * wL, rel=1e-13, abs=1e-13)
         assert ft[rs.Z_L] == pytest.approx(rs._coupling_rate(P, tau), rel=1e-13, abs=1e-13)
+
+
+def test_a_weakening_contact_that_diverges_fails_and_says_why() -> None:
+    """A rigid weakening contact where the slip rate diverges in the first periods (seed
+    2017's point 31 of the differential campaign; the independent reference's implicit
+    integrator stops there too): ``failed``, not trusted, no value, and the message names the
+    finite-time divergence; a strengthening contact's failure would not (the caveat needs
+    ``rs_b > rs_a``)."""
+    s = vf.Dimensionless(alpha=0.8702709685073428, beta=math.inf,
+                         amplitude=0.9058626119117343, zeta=0.02084081229542702,
+                         rs_a=0.033276543420103936, rs_b=0.043131759368929434,
+                         rs_d_c=0.013961291944808456, rs_v_ref=1.1230613123333857,
+                         rs_law="aging")
+    r = vf.friction_coefficient(s, v_inertial=1.8767116584434378)
+    assert r.status is Status.FAILED and not r.trusted and math.isnan(r.mu_ratio)
+    assert "slip rate diverging in finite time" in r.message
+    ok = vf.friction_coefficient(_system(), v_inertial=0.3)
+    assert "diverging" not in ok.message

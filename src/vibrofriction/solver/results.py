@@ -528,6 +528,12 @@ def describe(r: FrictionResult) -> str:
             "the motion from the initial state need not approach it, and a transient (e.g. "
             "rare sticks of an undamped free oscillation) can persist for many periods; "
             "the error includes how far the motion's mean over periods 512-1024 is from it")
+    if r.status is Status.FAILED and r.system.rs_b > r.system.rs_a > 0.0:
+        parts.append(
+            "with velocity-weakening rate-and-state friction (rs_b > rs_a) this can be the "
+            "slip rate diverging in finite time: the massless contact point slipping "
+            "unstably on its own spring (the quasi-static instability of a law without "
+            "inertia, docs/friction_laws.md)")
     if r.status in (Status.AVERAGED, Status.NOT_CONVERGED, Status.HELD) \
             and math.isfinite(r.window_min):
         # enough digits to tell the two apart (two beyond the first that differs)
