@@ -235,7 +235,7 @@ MDR = Capabilities(
            "static_ratio = 1 is solved by the row without springs (no discretisation of "
            "the contact), at every tol_trusted; it ends its search at tol_state where given "
            "(at the tightest 1e-9 of its section state), else at 0.3 tol_trusted within "
-           "[1e-9, 1e-5]",
+           "[1e-9, 1e-7]",
            "elsewhere, where the row without springs fails, or where n_springs is given, "
            "rows of springs are refined until their error is at most tol_trusted"),
 )

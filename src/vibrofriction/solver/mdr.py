@@ -49,9 +49,9 @@ AVERAGED_SPRINGS = 640
 SKIP_PERIODS = 400  # a row of mdr_friction that may be passed over gives up after this
 # the row without springs answers a point it covers where tol is below this: at every tol
 # (it is exact in xi, where the rows' convergence in N can stall and their error fall
-# short; far cheaper than the rows at tight tolerances and about as dear at loose ones:
-# benchmarks/bench_mdr_tol.py, results/mdr_tol.md); 0 within rows_alone() (the MDR
-# histories and the tests' references are the rows')
+# short; far cheaper than the rows at tight tolerances and about as dear at loose ones, where
+# it states errors of about 1e-7: benchmarks/bench_mdr_tol.py, results/mdr_tol.md); 0
+# within rows_alone() (the MDR histories and the tests' references are the rows')
 CONTINUUM_TOL = math.inf
 
 

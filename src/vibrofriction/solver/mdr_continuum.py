@@ -37,9 +37,11 @@ __all__ = ["continuous_sliding", "continuum_covers", "continuum_friction", "mdr_
            "slides_continuously"]
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
-LOOSEST, TIGHTEST = 1e-5, 1e-10  # the maps' tolerances continuum_friction chooses from
-STATE_LOOSEST, STATE_TIGHTEST = 1e-5, 1e-9  # ... and the search's (the maps' noise below)
-NOISE = 100.0  # ... the maps' at most this times a given state_tol (noise the search can see)
+# the maps' tolerances continuum_friction chooses from: looser maps step over the brief
+# sticks just below the critical velocity (maps at 1e-6 answered sliding at one of 90 points
+# at 0.95-0.999 V_c, 6 times beyond their error; at 3e-6 another, 7 times)
+LOOSEST, TIGHTEST = 1e-7, 1e-10
+STATE_LOOSEST, STATE_TIGHTEST = 1e-7, 1e-9  # ... and the search's (the maps' noise below)
 RETRY = 0.01  # both tightened by this while the stated error exceeds tol_trusted
 FACTOR = 0.3  # ... each this times tol_trusted (benchmarks/mdr_continuum_calibration.py)
 FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
@@ -243,19 +245,18 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        max_periods: int = 200, state_tol: float | None = None) -> dict:
     """:func:`mdr_continuum` with its maps' and its search's tolerances chosen for ``tol``.
 
-    The maps' ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]`` and at most ``NOISE``
-    times the search's ``state_tol``; that, where not given, likewise ``FACTOR`` times
-    ``tol`` within ``[STATE_TIGHTEST, STATE_LOOSEST]`` (a given one at least
-    ``STATE_TIGHTEST``). Both tightened a hundredfold while the stated error exceeds
-    ``tol``, down to their tightest (a given ``state_tol`` stays): a tenfold step can land
-    where the maps' error has not fallen yet and the two orbits' difference understates it
-    (at ``tol = 1e-5``, maps from ``3e-6`` to ``3e-7`` stated ``1.3e-6`` at a slowly
-    attracting jumping point ``2.1e-6`` off; ``benchmarks/mdr_continuum_calibration.py``).
+    The maps' ``FACTOR`` times ``tol`` within ``[TIGHTEST, LOOSEST]``; the search's
+    ``state_tol``, where not given, likewise within ``[STATE_TIGHTEST, STATE_LOOSEST]`` (a
+    given one at least ``STATE_TIGHTEST``). Both tightened a hundredfold while the stated
+    error exceeds ``tol``, down to their tightest (a given ``state_tol`` stays): a tenfold
+    step can land where the maps' error has not fallen yet and the two orbits' difference
+    understates it (measured with maps looser than ``LOOSEST``: from ``3e-6`` to ``3e-7``
+    they stated ``1.3e-6`` at a slowly attracting jumping point ``2.1e-6`` off).
     """
     chosen = state_tol is not None
     stol = max(STATE_TIGHTEST, float(state_tol)) if state_tol is not None \
         else min(STATE_LOOSEST, max(STATE_TIGHTEST, FACTOR * tol))
-    rtol = min(LOOSEST, NOISE * stol, max(TIGHTEST, FACTOR * tol))
+    rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
                           max_periods=max_periods, rtol=rtol, state_tol=stol)

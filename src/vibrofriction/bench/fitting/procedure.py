@@ -43,7 +43,7 @@ from .uncertainty import (
 )
 
 #: The MDR solver's ``tol_trusted`` in a fit of a curved contact without ``settings``: the
-#: row without springs answers it with maps at 1e-5 (errors of a few 1e-6); where the
+#: row without springs answers it as it does the default 1e-5 (errors about 1e-7); where the
 #: rows of springs answer (a static coefficient above the kinetic one, ``a = 1``) it is the
 #: cheaper. An error of ``mu0 1e-4`` in the COF is a hundredth of a bench's noise
 #: (docs/bench.md, "A curved contact").
