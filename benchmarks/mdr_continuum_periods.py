@@ -57,9 +57,9 @@ def _points() -> list[tuple[str, float, tuple]]:
 
 def _map_tolerance() -> float:
     """The coarse maps' tolerance ``continuum_friction`` chooses at ``TOL`` (no retry)."""
-    from vibrofriction.solver import mdr_continuum as smc
+    from vibrofriction.solver.mdr_continuum import first_tolerances
 
-    return min(smc.LOOSEST, max(smc.TIGHTEST, smc.FACTOR * TOL))
+    return first_tolerances(TOL)[0]
 
 
 def _stage_tolerances() -> tuple[tuple[str, float], ...]:

@@ -42,8 +42,8 @@ RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
 # at 0.95-0.999 V_c, 6 times beyond their error; at 3e-6 another, 7 times)
 LOOSEST, TIGHTEST = 1e-7, 1e-10
 STATE_LOOSEST, STATE_TIGHTEST = 1e-7, 1e-9  # ... and the search's (the maps' noise below)
-RETRY = 0.01  # both tightened by this while the stated error exceeds tol_trusted
 FACTOR = 0.3  # ... each this times tol_trusted (benchmarks/mdr_continuum_calibration.py)
+RETRY = 0.01  # both tightened by this while the stated error exceeds tol_trusted
 FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
@@ -239,6 +239,17 @@ def continuous_sliding(amplitude: float, profile_exponent: float) -> dict:
                 open_area_fraction=1.0 - slip, events_per_period=0, reason="")
 
 
+def first_tolerances(tol: float, state_tol: float | None = None) -> tuple[float, float]:
+    """The first run's tolerances in :func:`continuum_friction`: ``(rtol, state_tol)``.
+
+    At ``tol``, with ``state_tol`` given or not (None).
+    """
+    rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
+    if state_tol is not None:
+        return rtol, max(STATE_TIGHTEST, float(state_tol))
+    return rtol, min(STATE_LOOSEST, max(STATE_TIGHTEST, FACTOR * tol))
+
+
 def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
                        profile_exponent: float, zeta: float, hc: float, hs: float,
                        offset: tuple[float, float], tol: float,
@@ -254,9 +265,7 @@ def continuum_friction(alpha: float, beta: float, amplitude: float, V: float,
     they stated ``1.3e-6`` at a slowly attracting jumping point ``2.1e-6`` off).
     """
     chosen = state_tol is not None
-    stol = max(STATE_TIGHTEST, float(state_tol)) if state_tol is not None \
-        else min(STATE_LOOSEST, max(STATE_TIGHTEST, FACTOR * tol))
-    rtol = min(LOOSEST, max(TIGHTEST, FACTOR * tol))
+    rtol, stol = first_tolerances(tol, state_tol)
     while True:
         r = mdr_continuum(alpha, beta, amplitude, V, profile_exponent, zeta, hc, hs, offset,
                           max_periods=max_periods, rtol=rtol, state_tol=stol)
