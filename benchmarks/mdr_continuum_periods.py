@@ -10,7 +10,9 @@ continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first o
   transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``) and
   the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage); a jumping
   point's search-distance maps count with the stage of their tolerance (the coarse one's,
-  ``1e-6`` at the tightest: at ``1e-7``, the rough stage's);
+  ``1e-6`` at the tightest: at ``1e-7``, the rough stage's); and, over all stages, the
+  rejected steps, the steps taken again to an event found in a step (its end moved to the
+  event) and the segments (the stretches between turns of the band's edges);
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
@@ -39,6 +41,7 @@ from bench_ratios import REGIMES
 
 RESULTS = Path(__file__).parent / "results" / "mdr_continuum_periods.md"
 TOL = 1e-7
+OTHER = "rejected, events, segments"  # (a key of a point's counts beside its stages)
 EXPONENTS = (1.0, 2.0, 4.0)
 
 
@@ -83,22 +86,26 @@ def stages() -> None:
 
     period = mc.period
     log: list[tuple[float, int]] = []
+    other = np.zeros(3, np.int64)  # the point's rejected steps, events and segments
 
     def counted(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
-        steps = cnt[0] + cnt[1]
+        before = cnt.copy()
         res = period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves)
-        log.append((rtol, int(cnt[0] + cnt[1] - steps)))
+        log.append((rtol, int(cnt[0] + cnt[1] - before[0] - before[1])))
+        other[:] += cnt[1:4] - before[1:4]
         return res
 
     mc.period = counted
     rows = []
     for _, _, args in _points():
         log.clear()
+        other[:] = 0
         continuum_friction(*args, TOL)
         row = {name: [sum(1 for u, _ in log if u == t), sum(s for u, s in log if u == t)]
                for name, t in _stage_tolerances()}
         # (a retry with tighter maps, where the stated error missed TOL, would be left out)
         assert sum(m for m, _ in row.values()) == len(log), log
+        row[OTHER] = [int(k) for k in other]
         rows.append(row)
     print(json.dumps(rows))
 
@@ -149,6 +156,7 @@ def main() -> None:
     counted = json.loads(subprocess.run(
         [sys.executable, __file__, "--stages", "--tol", repr(TOL)], env=env, check=True,
         capture_output=True, text=True).stdout.splitlines()[-1])
+    other = [st.pop(OTHER) for st in counted]
     names = list(counted[0])
     lines = ["| regime | n | " + " | ".join(f"{k}: maps, steps" for k in names)
              + " | periods | from the orbit's body state |",
@@ -178,6 +186,14 @@ def main() -> None:
                                for k, (m, s) in total.items())
         + f". Periods from the default start {before}, from the body on its orbit {after} "
         f"({100 * (before - after) / before:.0f} % fewer).")
+    print(lines[-1])
+    rejected, events, segments = (sum(o[i] for o in other) for i in range(3))
+    lines.append("")
+    lines.append(
+        f"Of the {steps} steps, {rejected} were rejected ({100 * rejected / steps:.0f} %); "
+        f"{events} more were taken again to an event found in them ({100 * events / steps:.0f} "
+        f"% of the steps); {segments} segments, {(steps - rejected) / segments:.1f} accepted "
+        "steps each.")
     print(lines[-1])
     if opts.write:
         from sections import append_run
