@@ -11,10 +11,10 @@ stated errors and statuses after the times; medians of the ratios at the end.
     PYTHONPATH=src python benchmarks/bench_mdr_tol.py [--tol TOL] [--continuum] [--write]
 
 ``--tol`` another ``tol_trusted`` (``1e-5``, the default one, compares the two solvers where a
-user who sets nothing gets them); at and above ``capabilities.CONTINUUM_BELOW`` the MDR solver
-answers with the rows, and ``--continuum`` makes it answer with the row without springs all
-the same (``solver.mdr.CONTINUUM_TOL`` raised in this process), to compare the two there;
-``--write`` appends the run to benchmarks/results/mdr_tol.md.
+user who sets nothing gets them); the MDR solver answers with the row without springs at
+every tolerance wherever it covers the point (``--continuum``, which made it do so above a
+threshold that no longer exists, is kept for the commands of earlier runs); ``--write``
+appends the run to benchmarks/results/mdr_tol.md.
 """
 
 from __future__ import annotations

@@ -24,6 +24,7 @@ from pathlib import Path
 
 from sections import append_run
 from vibrofriction import theory
+from vibrofriction.solver import mdr_continuum as smc
 from vibrofriction.solver.mdr import mdr_friction
 from vibrofriction.solver.mdr_continuum import mdr_continuum
 
@@ -66,8 +67,8 @@ def main() -> None:
     if opts.write:
         append_run(RESULTS, "The row without springs' maps just below the critical velocity",
                    "PYTHONPATH=src python benchmarks/mdr_loose_maps.py --write",
-                   "the maps' tolerance as given (the fine orbit's ten times finer), the "
-                   "search's state tolerance 1e-9.", lines)
+                   f"the maps' tolerance as given (the fine orbit's {smc.FINE:g} times it), "
+                   "the search's state tolerance 1e-9.", lines)
 
 
 if __name__ == "__main__":

@@ -683,15 +683,70 @@ def _err(z, znew, K, h, rtol, atol):
 
 
 @jit
-def _dense(z, znew, K, h, i, th):
-    """Component ``i`` at ``t + th h`` (Hairer's CONTD5)."""
+def _contd5(z, znew, K, h, i):
+    """The coefficients ``(ydiff, bspl, r4, r5)`` of component ``i``'s dense output (Hairer's
+    CONTD5): ``z + th (ydiff + (1 - th) (bspl + th (r4 + (1 - th) r5)))``.
+    """
     ydiff = znew[i] - z[i]
     bspl = h * K[0, i] - ydiff
     r4 = ydiff - h * K[6, i] - bspl
     r5 = h * (_D1 * K[0, i] + _D3 * K[2, i] + _D4 * K[3, i] + _D5 * K[4, i]
               + _D6 * K[5, i] + _D7 * K[6, i])
+    return ydiff, bspl, r4, r5
+
+
+@jit
+def _dense(z, znew, K, h, i, th):
+    """Component ``i`` at ``t + th h`` (Hairer's CONTD5)."""
+    ydiff, bspl, r4, r5 = _contd5(z, znew, K, h, i)
     th1 = 1.0 - th
     return z[i] + th * (ydiff + th1 * (bspl + th * (r4 + th1 * r5)))
+
+
+@jit
+def _dense_slope(z, znew, K, h, i, th):
+    """The rate of component ``i`` at ``t + th h`` (:func:`_dense` differentiated in ``t``)."""
+    ydiff, bspl, r4, r5 = _contd5(z, znew, K, h, i)
+    th1 = 1.0 - th
+    g = bspl + th * (r4 + th1 * r5)
+    dg = r4 + (th1 - th) * r5
+    return (ydiff + th1 * g + th * (th1 * dg - g)) / h
+
+
+@jit
+def _edge_slope(kind, z, znew, K, h, t, th, prm, ct, st):
+    """The rate of ``P'`` (``kind`` 0) or ``N'`` (1) at ``t + th h`` on the dense output."""
+    c, a = prm[P_C], prm[P_A]
+    c_, _ = _cs(t + th * h, t, ct, st)
+    udd = _dense_slope(z, znew, K, h, 1, th)
+    return udd + c * a * c_ if kind == 0 else udd - c * a * c_
+
+
+@jit
+def _turn(kind, z, znew, K, h, t, prm, th0, f0, d0, th1, d1, sg, ct, st):
+    """Where ``P'`` (``kind`` 0) or ``N'`` (1), of sign ``sg`` at both ends of ``[th0, th1]``
+    (``f0`` at ``th0``; ``d0``, ``d1`` its slopes at the ends), turns back towards 0 within
+    it and crosses: the crossing (the first root, as a fraction of the step), else 2.  An
+    edge that turns within a sample interval (a brief stick near the critical velocity) is
+    then not passed over however long the step: its extremum is found by bisection on the
+    slope.
+    """
+    if not (d0 * sg < 0.0 < d1 * sg):
+        return 2.0  # no turn towards 0 and back inside
+    a0, a1 = th0, th1
+    for _ in range(60):  # bisection on the slope: the extremum
+        m = 0.5 * (a0 + a1)
+        if _edge_slope(kind, z, znew, K, h, t, m, prm, ct, st) * sg < 0.0:
+            a0 = m
+        else:
+            a1 = m
+        if a1 - a0 <= 1e-12:
+            break
+    m = 0.5 * (a0 + a1)
+    fm = _event_value(kind, 0.0, z, znew, K, h, t, m, prm, ct, st)
+    if not _crossed(fm, sg):
+        return 2.0
+    return _event_root(kind, 0.0, z, znew, K, h, t, prm, th0, f0, m, fm, ct, st)
 
 
 @jit
@@ -840,8 +895,9 @@ def _crossed(f, sg):
 def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
     none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
-    and its kind.  Each is sampled at four points of the step (a sign change and back
-    within a quarter step is passed over).
+    and its kind.  Each is sampled at four points of the step; ``P'`` and ``N'`` also
+    where they turn back towards 0 between two samples (:func:`_turn`), so that a sign
+    change and back within a quarter step is not passed over.
     """
     c, a, V = prm[P_C], prm[P_A], prm[P_V]
     p0 = dirp * 1e-300
@@ -849,6 +905,8 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
     p2 = -1e-300
     p3 = 1e-300
     thp = 0.0
+    dp0 = K[0, 1] + c * a * ct  # the slopes of P' and N' at the step's start
+    dn0 = K[0, 1] - c * a * ct
     for q in range(1, 5):
         th = 0.25 * q
         tt = t + th * hh
@@ -859,6 +917,9 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
         cdd = -c * a * s_
         f0 = ud - cdd
         f1 = ud + cdd
+        udd = _dense_slope(z, znew, K, hh, 1, th)
+        dp1 = udd + c * a * c_
+        dn1 = udd - c * a * c_
         f2 = u - cd - lp
         f3 = u + cd - ln
         th_ev = 2.0
@@ -866,11 +927,16 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
         if _crossed(f0, dirp):
             th_ev = _event_root(0, 0.0, z, znew, K, hh, t, prm, thp, p0, th, f0, ct, st)
             k_ev = 0
+        else:
+            th_ev = _turn(0, z, znew, K, hh, t, prm, thp, p0, dp0, th, dp1, dirp, ct, st)
+            k_ev = 0 if th_ev < 2.0 else -1
         if _crossed(f1, dirn):
             r = _event_root(1, 0.0, z, znew, K, hh, t, prm, thp, p1, th, f1, ct, st)
-            if r < th_ev:
-                th_ev = r
-                k_ev = 1
+        else:
+            r = _turn(1, z, znew, K, hh, t, prm, thp, p1, dn0, th, dn1, dirn, ct, st)
+        if r < th_ev:
+            th_ev = r
+            k_ev = 1
         if lp != math.inf and _crossed(f2, -1.0):
             r = _event_root(2, lp, z, znew, K, hh, t, prm, thp, p2, th, f2, ct, st)
             if r < th_ev:
@@ -884,6 +950,7 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
         if k_ev >= 0:
             return th_ev, k_ev
         p0, p1, p2, p3 = f0, f1, f2, f3
+        dp0, dn0 = dp1, dn1
         thp = th
     return 2.0, -1
 
@@ -946,6 +1013,11 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
         # the contact's boundary in this half (delta's zero: _delta)
         tc = math.nan if not jump else (t_fl0 if unloading else t_fl1)
         steps = 0
+        # an edge velocity found to change sign at a step's very start (within 1e-12 of it,
+        # too close to step to) has the wrong direction for its segment: the segment ends
+        # there and the next one takes the other direction, once at a time t (t_forced)
+        force_p = force_n = 0.0
+        t_forced = math.nan
         while t < t_end - 1e-14 * (1.0 + t_end):  # segments
             cnt[3] += 1
             eps = 1e-12 * (1.0 + abs(t))
@@ -970,6 +1042,11 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
             tol = 1e-9 * (abs(ud) + c * a)
             dirp = _direction(ud - c * dd, k1[1] - c * ddd, tol)
             dirn = _direction(ud + c * dd, k1[1] + c * ddd, tol)
+            if force_p != 0.0:
+                dirp = force_p
+            if force_n != 0.0:
+                dirn = force_n
+            force_p = force_n = 0.0
             if unloading or flight:
                 edge = EDGE_NONE
             elif dirp > 0.0:
@@ -994,6 +1071,7 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
             jn = 0
             it = 0
             first = True
+            restart = False
             while True:  # steps of the segment
                 steps += 1
                 if steps > MAX_STEPS_HALF:
@@ -1028,9 +1106,18 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                         cnt[2] += 1
                         hh = th_ev * hh
                         _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs)
+                    elif th_ev < 1.0 and k_ev <= 1 and t != t_forced:
+                        restart = True  # P' or N' has the other sign already: no step
+                        t_forced = t
+                        if k_ev == 0:
+                            force_p = -dirp
+                        else:
+                            force_n = -dirn
                     else:
                         k_ev = -1
                         h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
+                    break
+                if restart:
                     break
                 cnt[0] += 1
                 t1 = t + hh

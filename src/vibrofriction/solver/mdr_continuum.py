@@ -37,14 +37,16 @@ __all__ = ["continuous_sliding", "continuum_covers", "continuum_friction", "mdr_
            "slides_continuously"]
 
 RTOL = 1e-8  # the period maps' tolerance (Dormand-Prince, relative), by default
-# the maps' tolerances continuum_friction chooses from: looser maps step over the brief
-# sticks just below the critical velocity (maps at 1e-6 answered sliding at one of 90 points
-# at 0.95-0.999 V_c, 6 times beyond their error; at 3e-6 another, 7 times)
+# the maps' tolerances continuum_friction chooses from: looser maps go wrong just below the
+# critical velocity, passing over brief sticks or settling on an orbit with less stick (at
+# 1e-5, even with the kernel's guards; benchmarks/mdr_loose_maps.py)
 LOOSEST, TIGHTEST = 1e-7, 1e-10
 STATE_LOOSEST, STATE_TIGHTEST = 1e-7, 1e-9  # ... and the search's (the maps' noise below)
 FACTOR = 0.3  # ... each this times tol_trusted (benchmarks/mdr_continuum_calibration.py)
 RETRY = 0.01  # both tightened by this while the stated error exceeds tol_trusted
-FINE = 0.1  # the fine orbit's maps' tolerance: this times the coarse one
+FINE = 0.01  # the fine orbit's maps' tolerance: this times the coarse one (not 0.1: just
+# below V_c maps ten times finer can keep the coarse orbit with less stick, and the two
+# orbits' difference then understates the error; benchmarks/mdr_near_critical.py)
 DEPTH = 5  # period maps mixed
 STATE_TOL = 1e-9  # the section state's change that ends the search
 GROWTH = 10.0  # a mixed step whose residual grows by this restarts the mixing
