@@ -2,13 +2,13 @@
 
 At the ten regimes of ``bench_ratios.py`` for a cone, a sphere and ``n = 4``, the row without
 springs asked for ``tol_trusted = 1e-7`` (:func:`~vibrofriction.solver.mdr_continuum.
-continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9``, the first ones at
-``VROUGH``, then ``ROUGH``):
+continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-10`` (``FINE`` times
+that), the first ones at ``VROUGH``, then ``ROUGH``):
 
 * the period maps and Dormand-Prince steps of each stage of the search, counted in a
   second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
   transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``) and
-  the fine one (``3e-9``) (a tree without ``VROUGH`` has one transient stage); a jumping
+  the fine one (``3e-10``) (a tree without ``VROUGH`` has one transient stage); a jumping
   point's search-distance maps count with the stage of their tolerance (the coarse one's,
   ``1e-6`` at the tightest: at ``1e-7``, the rough stage's); and, over all stages, the
   rejected steps, the steps taken again to an event found in a step (its end moved to the
