@@ -2,15 +2,17 @@
 
 At the ten regimes of ``bench_ratios.py`` for a cone, a sphere and ``n = 4``, the row without
 springs asked for ``tol_trusted = 1e-7`` (:func:`~vibrofriction.solver.mdr_continuum.
-continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-10`` (``FINE`` times
-that), the first ones at ``VROUGH``, then ``ROUGH``):
+continuum_friction`: maps at ``3e-8``, the fine orbit's at ``3e-9`` (``FINE`` times
+that; ``3e-10`` where the coarse orbit grazes, ``FINE_GRAZE``), the first ones at
+``VROUGH``, then ``ROUGH``):
 
 * the period maps and Dormand-Prince steps of each stage of the search, counted in a
   second process under ``NUMBA_DISABLE_JIT`` (the kernel's ``period`` wrapped): the
   transient (maps at ``VROUGH``, then at ``ROUGH``), the coarse orbit (at ``3e-8``) and
-  the fine one (``3e-10``) (a tree without ``VROUGH`` has one transient stage); a jumping
-  point's search-distance maps count with the stage of their tolerance (the coarse one's,
-  ``1e-6`` at the tightest: at ``1e-7``, the rough stage's); and, over all stages, the
+  the fine one (``3e-9``, or ``3e-10`` where it grazes) (a tree without ``VROUGH`` has
+  one transient stage); a jumping point's search-distance maps count with the stage of
+  their tolerance (the coarse one's, ``1e-6`` at the tightest: at ``1e-7``, the rough
+  stage's); and, over all stages, the
   rejected steps, the steps taken again to an event found in a step (its end moved to the
   event) and the segments (the stretches between turns of the band's edges);
 * the periods from the default start (steady sliding, the body at rest at
@@ -76,7 +78,11 @@ def _stage_tolerances() -> tuple[tuple[str, float], ...]:
     rough = max(rtol, mc.ROUGH)
     middle = (("rough = coarse", rtol),) if rough == rtol else (("rough", rough),
                                                                  ("coarse", rtol))
-    return first + middle + (("fine", smc.FINE * rtol),)
+    fine = (("fine", smc.FINE * rtol),)
+    graze = getattr(smc, "FINE_GRAZE", smc.FINE)  # (the trees before the graze measures)
+    if graze != smc.FINE:
+        fine += (("fine, grazing", graze * rtol),)
+    return first + middle + fine
 
 
 def stages() -> None:
@@ -88,9 +94,10 @@ def stages() -> None:
     log: list[tuple[float, int]] = []
     other = np.zeros(3, np.int64)  # the point's rejected steps, events and segments
 
-    def counted(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
+    def counted(*args):  # (prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt,
+        rtol, cnt = args[7], args[13]  # ...): the trees before the graze record too
         before = cnt.copy()
-        res = period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves)
+        res = period(*args)
         log.append((rtol, int(cnt[0] + cnt[1] - before[0] - before[1])))
         other[:] += cnt[1:4] - before[1:4]
         return res
@@ -126,9 +133,10 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
     z[0], z[1] = y0 - off[0], -off[1]
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
     y_sliding = -float(theory.profile_mean_normal_force(a, n)) / al
-    code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, smc.FINE, smc.DEPTH, rtol,
+    fine = (smc.FINE, smc.FINE_GRAZE, smc.GRAZE_DEPTH, smc.GRAZE_TIME)
+    code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, *fine, smc.DEPTH, rtol,
                                  smc.GROWTH, y_sliding, 200, np.zeros(4, np.int64),
-                                 np.zeros(7))
+                                 np.zeros(9))
     if code != 0:
         return math.nan, math.nan, y0
     # the last period runs from pi + 2 pi (periods - 1) to pi + 2 pi periods; its steps end

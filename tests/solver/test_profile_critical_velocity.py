@@ -10,7 +10,9 @@ from scipy.integrate import solve_ivp
 
 import vibrofriction as vf
 from vibrofriction import theory
+from vibrofriction._kernels import mdr_continuum as mc
 from vibrofriction.contact import Material, Sphere
+from vibrofriction.solver import mdr_continuum as smc
 from vibrofriction.solver import solve_points
 from vibrofriction.solver.mdr import mdr_friction
 
@@ -20,6 +22,14 @@ def _brute_critical(alpha, beta, a, n, zeta, points=20_001):
     alpha y = -m(tau), m = max(0, 1 + a cos tau)^p, by shooting (the map is affine), then the
     largest of -(y' + p a sin(tau)/(beta - alpha)) over the phases in contact (the
     supremum: lift-off and touch-down included)."""
+    tau, f = _drag_velocity(alpha, beta, a, n, zeta, points)
+    return max(float(f.max()), 0.0) if f.size else 0.0
+
+
+def _drag_velocity(alpha, beta, a, n, zeta, points=20_001):
+    """``(tau, f)`` over the phases in contact on a grid of each: ``f = -(y' + p a sin(tau)/
+    (beta - alpha))`` of the sliding orbit (:func:`_brute_critical`), the velocity the band's
+    lower edge must exceed to slip (``P' = V - f``)."""
     p = 1.0 if math.isinf(n) else 1.0 + 1.0 / n
     gamma = 2.0 * zeta * math.sqrt(alpha)
 
@@ -45,14 +55,14 @@ def _brute_critical(alpha, beta, a, n, zeta, points=20_001):
     s0 = np.linalg.solve(np.eye(2) - phi, xp)
     _, pieces = flow(s0, dense=True)
     drag = p * a / (beta - alpha)
-    best = -math.inf
+    taus, fs = [], []
     for sol in pieces:
         t = np.linspace(sol.t[0], sol.t[-1], points)
         inside = 1.0 + a * np.cos(t) > -1e-12  # the supremum over the contact: its ends
         h = -(sol.sol(t)[1] + drag * np.sin(t))
-        if inside.any():
-            best = max(best, float(h[inside].max()))
-    return max(best, 0.0)
+        taus.append(t[inside])
+        fs.append(h[inside])
+    return np.concatenate(taus), np.concatenate(fs)
 
 
 @pytest.mark.parametrize("alpha, beta, a, n, zeta", [
@@ -154,6 +164,44 @@ def test_row_without_springs_just_below_v_c_holds_its_error(alpha, beta, a, n, z
     assert r["mu_ratio"] <= 1.0 + r["error"]
     assert abs(r["mu_ratio"] - rows["mu_ratio"]) <= r["error"] + rows["error"]
     assert r["stick_area_fraction"] > 0.5 * rows["stick_area_fraction"]
+
+
+@pytest.mark.parametrize("alpha, beta, a, n, zeta", [
+    (0.5, 2.0, 0.5, 2.0, 0.0), (1.0, 3.0, 0.7, 1.0, 0.1), (0.05, 0.1, 0.5, 3.0, 0.5)])
+def test_the_graze_measure_is_the_brief_stick_just_below_v_c(alpha, beta, a, n, zeta,
+                                                              monkeypatch):
+    """Just below V_c the band's lower edge sticks while the sliding orbit's drag velocity f
+    exceeds V (``P' = V - f``): for a time ``~ 2 sqrt(2 (V_c - V)/|f''|)``, a quarter as
+    long at a sixteenth of the distance. The kernel's graze time (the shortest stretch
+    between two sign changes of an edge's velocity, which sends the fine orbit's maps to a
+    hundredth of the coarse ones) must be that time, measured here on the sliding orbit
+    integrated apart; far below V_c nothing grazes."""
+    recorded = []
+    steady = mc.steady
+
+    def kept(*args):
+        out = steady(*args)
+        recorded.append((args[-1][7], args[-1][8]))
+        return out
+
+    monkeypatch.setattr(mc, "steady", kept)
+    tau, f = _drag_velocity(alpha, beta, a, n, zeta, points=200_001)
+    vc = float(f.max())
+    assert vc == pytest.approx(theory.profile_critical_velocity(alpha, beta, a, n, zeta),
+                               rel=1e-8)
+    step = float(np.min(np.diff(tau)[np.diff(tau) > 0]))
+    for fraction in (0.9999, 0.9984):  # (V_c - V) 16 times larger: a stick 4 times longer
+        recorded.clear()
+        r = mdr_friction(alpha, beta, a, fraction * vc, n, zeta, tol=1e-7)
+        assert r["status"] == "periodic" and r["n_springs"] == 0  # (the row without springs)
+        stick = step * np.count_nonzero(f > fraction * vc)  # (one interval, near the max)
+        depth, stretch = recorded[-1]
+        assert stretch == pytest.approx(stick, rel=0.05)
+        assert stretch < smc.GRAZE_TIME  # the fine maps at a hundredth
+    recorded.clear()
+    mdr_friction(alpha, beta, a, 0.5 * vc, n, zeta, tol=1e-7)
+    depth, stretch = recorded[-1]
+    assert depth >= smc.GRAZE_DEPTH and stretch >= smc.GRAZE_TIME
 
 
 @pytest.mark.parametrize("alpha, beta, a, zeta", [(0.5, 2.0, 1.5, 0.0), (0.01, 5.3, 1.5, 0.0),

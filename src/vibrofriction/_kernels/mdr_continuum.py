@@ -91,6 +91,10 @@ from .dopri import (
 from .jit import jit, jit_bare, jit_inline
 
 TWO_PI = 2.0 * math.pi
+# two sign changes of an edge's velocity this close are taken for one (a safeguard: an
+# event found again just after a segment's end was seen 1e-10..1e-5 apart before the next
+# segment took the other direction and the restart took a change back, _unchange)
+SAME_CHANGE = 1e-6
 AFP, AFN, HIS = 0, 1, 2  # piece kinds: q = P_j + c g, q = N_j - c g, q = u(tau_on)
 # piece table columns: xi range, kind, P_j / N_j (affine) or Q(tau_a) (history), the
 # history's tau range, xi_a^(n+1), xi_b^(n+1); a history piece's u(tau_a), u(tau_b) (set at
@@ -723,13 +727,13 @@ def _edge_slope(kind, z, znew, K, h, t, th, prm, ct, st):
 
 
 @jit
-def _turn(kind, z, znew, K, h, t, prm, th0, f0, d0, th1, d1, sg, ct, st):
+def _turn(kind, z, znew, K, h, t, prm, th0, f0, d0, th1, d1, sg, ct, st, gz):
     """Where ``P'`` (``kind`` 0) or ``N'`` (1), of sign ``sg`` at both ends of ``[th0, th1]``
     (``f0`` at ``th0``; ``d0``, ``d1`` its slopes at the ends), turns back towards 0 within
     it and crosses: the crossing (the first root, as a fraction of the step), else 2.  An
     edge that turns within a sample interval (a brief stick near the critical velocity) is
     then not passed over however long the step: its extremum is found by bisection on the
-    slope.
+    slope.  The extremum's distance from 0 lowers ``gz[0]`` (the period's graze depth).
     """
     if not (d0 * sg < 0.0 < d1 * sg):
         return 2.0  # no turn towards 0 and back inside
@@ -744,6 +748,7 @@ def _turn(kind, z, znew, K, h, t, prm, th0, f0, d0, th1, d1, sg, ct, st):
             break
     m = 0.5 * (a0 + a1)
     fm = _event_value(kind, 0.0, z, znew, K, h, t, m, prm, ct, st)
+    gz[0] = min(gz[0], abs(fm))
     if not _crossed(fm, sg):
         return 2.0
     return _event_root(kind, 0.0, z, znew, K, h, t, prm, th0, f0, m, fm, ct, st)
@@ -892,12 +897,12 @@ def _crossed(f, sg):
 
 
 @jit_bare
-def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
+def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st, gz):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
     none): ``P'`` or ``N'`` changing sign, ``P`` reaching ``lp`` or ``N`` reaching ``ln``;
     and its kind.  Each is sampled at four points of the step; ``P'`` and ``N'`` also
     where they turn back towards 0 between two samples (:func:`_turn`), so that a sign
-    change and back within a quarter step is not passed over.
+    change and back within a quarter step is not passed over (``gz``: :func:`_turn`).
     """
     c, a, V = prm[P_C], prm[P_A], prm[P_V]
     p0 = dirp * 1e-300
@@ -928,12 +933,13 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
             th_ev = _event_root(0, 0.0, z, znew, K, hh, t, prm, thp, p0, th, f0, ct, st)
             k_ev = 0
         else:
-            th_ev = _turn(0, z, znew, K, hh, t, prm, thp, p0, dp0, th, dp1, dirp, ct, st)
+            th_ev = _turn(0, z, znew, K, hh, t, prm, thp, p0, dp0, th, dp1, dirp, ct, st,
+                          gz)
             k_ev = 0 if th_ev < 2.0 else -1
         if _crossed(f1, dirn):
             r = _event_root(1, 0.0, z, znew, K, hh, t, prm, thp, p1, th, f1, ct, st)
         else:
-            r = _turn(1, z, znew, K, hh, t, prm, thp, p1, dn0, th, dn1, dirn, ct, st)
+            r = _turn(1, z, znew, K, hh, t, prm, thp, p1, dn0, th, dn1, dirn, ct, st, gz)
         if r < th_ev:
             th_ev = r
             k_ev = 1
@@ -956,25 +962,32 @@ def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st):
 
 
 @jit
-def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves=2):
+def period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, halves=2):
     """``halves`` half periods from ``t0 = m pi`` (``z[0:3]`` the body and ``Q``;
     ``PC[:npc]`` the profile, ``HS[:nh]`` the history, its last entry at ``t0``):
     ``(npc, nh, h)`` at the end (``npc`` < 0: failed), ``z[3:6]`` the integrals over the
-    run; ``cnt`` counts steps, rejections, events and segments.
+    run; ``cnt`` counts steps, rejections, events and segments.  ``gz`` measures how
+    closely the run grazes a change of the edges' directions: ``gz[0]`` the smallest
+    ``|P'|`` or ``|N'|`` where one turns back from 0 (:func:`_turn`), ``gz[1]`` the
+    shortest time between two sign changes of the same one in contact (a brief stick or
+    slip: :func:`_sign_change`); ``gz[2:4]``, ``gz[4:6]`` the last and the one before
+    sign changes' times of ``P'`` and ``N'`` (nan: none), carried from the run before
+    (the caller sets them to nan at first; the last stretch, not yet confirmed, is
+    counted by :func:`_shortest_stretch`).
 
     A segment runs until ``P'`` or ``N'`` changes sign or the half ends; within it the
     profile of its start, clamped, is exact, so it is updated at the segment's end only
     (and the points touched down in it appended).  Steps also end at the segment's levels
     (:func:`_levels`).
     """
-    return _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves,
+    return _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, halves,
                    np.empty(N_Z), np.empty(N_Z), np.empty(5), np.empty(4 * MAX_PIECES),
                    np.empty(4 * MAX_PIECES), np.empty(2 * MAX_PIECES), np.empty(2))
 
 
 @jit_bare
-def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halves, znew, k1,
-            seg, LP, LN, LT, cs):
+def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, halves, znew,
+            k1, seg, LP, LN, LT, cs):
     """:func:`period` with its scratch (the step's end and first stage, the segment's
     record, the levels, the cosine and sine at a step's end), without reference counting
     (its step loop is hot).
@@ -985,6 +998,7 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
     z[4] = 0.0
     z[5] = 0.0
     z[6] = 0.0
+    gz[0] = gz[1] = math.inf
     t = t0
     seg[0] = 0.0
     seg[1] = 0.0
@@ -1024,6 +1038,8 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
             flight = t_fl0 - eps <= t < t_fl1 - eps  # (no contact: F = 0, no profile)
             if flight:
                 t_seg = t_fl1
+                for i in range(2, 6):  # (a new contact: no stretch runs across a flight)
+                    gz[i] = math.nan
                 npc = 0  # every point has left (also where an event ended the contact a
                 # rounding before the lift-off)
             elif t < t_fl0 - eps:
@@ -1101,7 +1117,7 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                     th_ev, k_ev = 2.0, -1
                     if not flight:
                         th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln,
-                                                   ct, st)
+                                                   ct, st, gz)
                     if th_ev < 1.0 and th_ev * hh > 1e-12:
                         cnt[2] += 1
                         hh = th_ev * hh
@@ -1113,6 +1129,7 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                             force_p = -dirp
                         else:
                             force_n = -dirn
+                        _unchange(gz, k_ev, t)
                     else:
                         k_ev = -1
                         h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
@@ -1162,7 +1179,18 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                     ip += 1
                 while jn < mn and u1 + c * (1.0 + a * cs[0]) <= LN[jn] + 1e-12:
                     jn += 1
-                if k_ev == 0 or k_ev == 1 or t >= t_seg:
+                if k_ev == 0 or k_ev == 1:
+                    # the edge's velocity has changed sign: the next segment takes the other
+                    # direction (the step redone to the event can end a rounding short of
+                    # it, where a direction judged from the value would find the same
+                    # change again just after: a segment of 1e-9..1e-5, seen)
+                    if k_ev == 0:
+                        force_p = -dirp
+                    else:
+                        force_n = -dirn
+                    _sign_change(gz, k_ev, t)
+                    break
+                if t >= t_seg:
                     break
             if flight:
                 continue
@@ -1193,6 +1221,47 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, halve
                     PC[j, IF] = -1.0
             npc = m
     return npc, nh, h
+
+
+@jit
+def _sign_change(gz, kind, t):
+    """``P'`` (``kind`` 0) or ``N'`` (1) changes sign at ``t``: the change before it is
+    confirmed (no restart at its time undid it, :func:`_unchange`), so the stretch from the
+    one before that to it lowers ``gz[1]`` (:func:`period`), unless shorter than
+    :data:`SAME_CHANGE`.
+    """
+    _confirm(gz, kind)
+    gz[4 + kind] = gz[2 + kind]
+    gz[2 + kind] = t
+
+
+@jit
+def _confirm(gz, kind):
+    """The stretch between the last two sign changes of ``kind`` lowers ``gz[1]``."""
+    d = gz[2 + kind] - gz[4 + kind]  # (nan where either is none)
+    if d > SAME_CHANGE:
+        gz[1] = min(gz[1], d)
+
+
+@jit
+def _unchange(gz, kind, t):
+    """A segment from ``t`` finds ``kind``'s velocity of the other sign at once: a change
+    recorded at ``t`` (its event, located on a step's dense output, a rounding early) had
+    not happened yet, and is taken back; else it is a change at ``t``.
+    """
+    if gz[2 + kind] == t:
+        gz[2 + kind] = gz[4 + kind]
+        gz[4 + kind] = math.nan
+    else:
+        _sign_change(gz, kind, t)
+
+
+@jit
+def _shortest_stretch(gz):
+    """:func:`period`'s ``gz[1]`` with the last stretches of ``P'`` and ``N'`` counted."""
+    _confirm(gz, 0)
+    _confirm(gz, 1)
+    return gz[1]
 
 
 @jit
@@ -1335,8 +1404,8 @@ def _change(new, old, i):
 
 
 @jit
-def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_sliding,
-           max_periods, cnt, res):
+def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_time, depth,
+           state_tol, growth, y_sliding, max_periods, cnt, res):
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
     then periods from ``tau = pi`` mixed by Anderson on the section state (``depth`` maps,
     restarted where the pieces' kinds change; a mixed step after which the map's residual
@@ -1346,7 +1415,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     sliding body's mean ``y``; the maps at ``VROUGH`` until the state's relative change
     is below ``VROUGH_UNTIL``, at ``ROUGH`` until it is below ``ROUGH_UNTIL``, then at
     ``rtol``) until it is below ``state_tol`` and so is the mixing's step
-    (:func:`_change`); then with maps at ``fine * rtol`` to that map's orbit (the orbit
+    (:func:`_change`); then with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
+    last coarse map grazes: an edge's velocity turning back within ``graze_depth`` times
+    ``V + c a`` of 0, or changing sign twice within ``graze_time``, :func:`period`'s
+    ``gz``) to that map's orbit (the orbit
     of a map moves with its error, by more where the orbit attracts slowly, so the fine
     orbit is sought anew, not one fine period taken from the coarse orbit): the first
     fine map from where the last coarse one started, and the mixing's history shifted by
@@ -1354,13 +1426,15 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     constant over the history's span, so its differences keep holding, and the offset is
     not taken for the state's own move).  Writes ``res = (int F over the
     coarse orbit's period, -, over the fine orbit's, its stick area, its slip area, the
-    last map's start y, y')``.
+    last map's start y, y', the last coarse map's graze depth over V + c a and its graze
+    time)``.
     Returns ``(code, periods, events of the last period)``: ``code`` 0,
     :data:`SECTION_NO_ORBIT` or a kernel failure (< 0).
     """
     V = prm[P_V]
     K = np.zeros((8, N_Z))
     out = np.zeros_like(PC)
+    gz = np.full(6, math.nan)
     nmax = 2 + 2 * MAX_PIECES
     X = np.zeros((depth, nmax))
     G = np.zeros((depth, nmax))
@@ -1381,7 +1455,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     stage = 0  # the maps at 0: max(rtol, VROUGH), then max(rtol, ROUGH) (the transient),
     tol_m = max(rtol, VROUGH)  # 1: rtol, 2: fine * rtol
     npc, nh, h = period(prm, 0.0, z, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, 0.1, K, out,
-                        cnt, 1)
+                        cnt, gz, 1)
     if npc < 0:
         return npc, 0, 0
     nh = compact(HS, nh, PC, npc)
@@ -1393,6 +1467,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     periods = 0
     found = False
     w_coarse = math.nan
+    g_depth = g_time = math.nan
     ev = 0
     y_start = v_start = math.nan
     for m in range(max_periods):
@@ -1407,7 +1482,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
             z2[i] = z[i]
         ev0 = cnt[2]
         npc, nh, h = period(prm, t, z2, PC, npc, HS, nh, tol_m, 0.01 * tol_m, 0.5, h, K,
-                            out, cnt, 2)
+                            out, cnt, gz, 2)
         if npc < 0:
             return npc, periods, 0
         ev = cnt[2] - ev0
@@ -1518,7 +1593,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
                 break
             stage = 2  # on to the fine map's orbit
             w_coarse = w_last
-            tol_m = fine * rtol
+            g_depth = gz[0] / (V + prm[P_C] * prm[P_A])
+            g_time = _shortest_stretch(gz)
+            grazes = g_depth < graze_depth or g_time < graze_time
+            tol_m = (fine_graze if grazes else fine) * rtol
             last = math.inf
             # its first map from where this coarse one started: the difference of their
             # ends there shifts the history to the fine map's (the maps differ by their
@@ -1544,4 +1622,6 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, depth, state_tol, growth, y_slid
     res[4] = z[5]
     res[5] = y_start
     res[6] = v_start
+    res[7] = g_depth
+    res[8] = g_time
     return 0, periods, ev
