@@ -8,7 +8,9 @@ measures how closely the last coarse map grazes (``period``'s ``gz``): the small
 ``|P'|`` or ``|N'|`` where one turns back from 0, over ``V + c a`` (the depth), and the
 shortest time between two sign changes of the same edge's velocity (a brief stick or
 slip). The solver takes the hundredfold maps where the depth is below ``GRAZE_DEPTH`` or
-the time below ``GRAZE_TIME`` (``solver/mdr_continuum.py``), the tenfold ones elsewhere.
+the time below ``GRAZE_TIME`` (``solver/mdr_continuum.py``), and at every jumping point
+(``a > 1``: its brief stick ends at the flight, where the measures stop;
+``mdr_near_critical.py --jumping``), the tenfold ones elsewhere.
 
 This script measures both sides of those thresholds:
 
@@ -18,7 +20,7 @@ This script measures both sides of those thresholds:
   points where a tenth falls short (``|mu - mu_rows|`` above the two stated errors);
 * the 30 points of ``mdr_continuum_periods.py`` (the regimes of ``bench_ratios.py``) and
   the 80 of ``mdr_continuum_calibration.py``, at ``tol`` 1e-7: their graze measures, and
-  how many the thresholds take for grazing.
+  how many take the hundredfold maps (by the thresholds, or jumping).
 
     PYTHONPATH=src python benchmarks/mdr_graze.py [--seeds S ...] [--write]
 
@@ -88,13 +90,14 @@ def near_critical(seeds) -> tuple[list[tuple], int]:
     return out, len(out)
 
 
-def typical() -> list[tuple[str, float, float]]:
-    """``(label, depth, time)`` of the 30 regimes' and the 80 calibration points at 1e-7."""
+def typical() -> list[tuple[str, float, float, float]]:
+    """``(label, a, depth, time)`` of the 30 regimes' and the 80 calibration points at
+    1e-7."""
     out = []
     for lab, n, args in _points():
         _last.clear()
         smc.continuum_friction(*args, 1e-7)
-        out.append((f"{lab}, n {n:g}", *_last.get("g", (math.nan, math.nan))))
+        out.append((f"{lab}, n {n:g}", args[2], *_last.get("g", (math.nan, math.nan))))
     for seed, ar in ((22, (0.1, 0.95)), (21, (1.05, 3.0))):  # (the calibration's draws)
         rng = np.random.default_rng(seed)
         for _ in range(40):
@@ -104,7 +107,8 @@ def typical() -> list[tuple[str, float, float]]:
             n, ze = float(rng.choice([1, 1.5, 2, 3, 5])), float(rng.choice([0, 0.05, 0.3]))
             _last.clear()
             smc.continuum_friction(al, be, a, V, n, ze, 0.0, 0.0, (0.0, 0.0), 1e-7)
-            out.append((f"calibration seed {seed}", *_last.get("g", (math.nan, math.nan))))
+            out.append((f"calibration seed {seed}", a,
+                        *_last.get("g", (math.nan, math.nan))))
     return out
 
 
@@ -129,6 +133,9 @@ def main() -> None:
     def grazes(d: float, t: float) -> bool:
         return d < depth_max or t < time_max
 
+    def finer(a: float, d: float, t: float) -> str:
+        return "yes, jumping" if a > 1.0 else ("yes" if grazes(d, t) else "no")
+
     short = [r for r in rows if r[4] > 1.0]
     lines = [
         f"Near V_c: {compared} points compared (seeds {opts.seeds[0]}..{opts.seeds[-1]}, "
@@ -144,13 +151,15 @@ def main() -> None:
         f"{sum(grazes(r[6], r[7]) for r in rows)} taken for grazing.",
         "",
         f"Away from V_c (the 30 regimes and the 80 calibration points, tol 1e-7): "
-        f"{sum(grazes(d, t) for _, d, t in usual)} of {len(usual)} taken for grazing; "
-        f"the smallest depth {min(d for _, d, _ in usual):.3g}, the smallest time "
-        f"{min(t for _, _, t in usual):.3g}.",
+        f"{sum(grazes(d, t) for _, _, d, t in usual)} of {len(usual)} taken for grazing "
+        f"by the measures (the smallest depth {min(d for _, _, d, _ in usual):.3g}, the "
+        f"smallest time {min(t for _, _, _, t in usual):.3g}); "
+        f"{sum(a > 1.0 for _, a, _, _ in usual)} jumping, which take the hundredfold maps "
+        "anyway.",
         "",
-        "| point | depth | time | grazes |", "|---|---|---|---|",
-        *(f"| {lab} | {d:.3g} | {t:.3g} | {'yes' if grazes(d, t) else 'no'} |"
-          for lab, d, t in usual),
+        "| point | a | depth | time | hundredfold maps |", "|---|---|---|---|---|",
+        *(f"| {lab} | {a:.3g} | {d:.3g} | {t:.3g} | {finer(a, d, t)} |"
+          for lab, a, d, t in usual),
         "",
         "The near-critical points short at a tenth:",
         "",

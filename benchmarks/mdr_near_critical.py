@@ -12,10 +12,11 @@ compared). Short:
 ``|mu - mu_rows|`` above the two stated errors.
 
     PYTHONPATH=src python benchmarks/mdr_near_critical.py [--seeds S ...] [--tol TOL]
-        [--fractions F ...] [--recheck N] [--write] [--note TEXT]
+        [--fractions F ...] [--jumping] [--recheck N] [--write] [--note TEXT]
 
 ``--seeds`` other seeds (points the defaults' were not chosen on); ``--tol`` the solver's
 ``tol`` (``tol_trusted``) instead of its default; ``--fractions`` other ``V/V_c``;
+``--jumping``: the systems' ``a`` from 1.05 to 2.5 (a jumping indenter), not 0.1 to 0.95;
 ``--recheck N``: each short point compared again with the rows of ``N`` and ``2 N``
 springs (the 640 springs' own error can be understated: at ``tol`` 1e-8 and 0.95 V_c one
 stated 3.5e-9 and was 1.1e-7 off); ``--write`` appends the
@@ -43,14 +44,16 @@ FRACTIONS = (0.9999, 0.9995)
 SPRINGS = 640
 
 
-def systems(seed: int) -> list[tuple[float, float, float, float, float]]:
-    """The seed's systems ``(alpha, beta, a, n, zeta)`` with a finite ``V_c > 0``."""
+def systems(seed: int, jumping: bool = False) -> list[tuple[float, float, float, float,
+                                                             float]]:
+    """The seed's systems ``(alpha, beta, a, n, zeta)`` with a finite ``V_c > 0`` (jumping:
+    ``a`` 1.05..2.5)."""
     rng = np.random.default_rng(seed)
     out = []
     for _ in range(SYSTEMS):
         alpha = 10 ** rng.uniform(-2, 1)
         beta = alpha + 10 ** rng.uniform(-1, 2)
-        a = rng.uniform(0.1, 0.95)
+        a = rng.uniform(*((1.05, 2.5) if jumping else (0.1, 0.95)))
         n = float(rng.choice([1, 1.5, 2, 3, 5]))
         zeta = float(rng.choice([0, 0.05, 0.3]))
         vc = theory.profile_critical_velocity(alpha, beta, a, n, zeta)
@@ -67,6 +70,7 @@ def main() -> None:
     ap.add_argument("--tol", type=float, default=None)
     ap.add_argument("--fractions", type=float, nargs="+", default=list(FRACTIONS))
     ap.add_argument("--recheck", type=int, default=0)
+    ap.add_argument("--jumping", action="store_true")
     opts = ap.parse_args()
     t0 = time.perf_counter()
     compared = short = skipped = short_again = 0
@@ -76,7 +80,7 @@ def main() -> None:
             f"(rows) | \\|difference\\| / errors{again} |",
             "|---|---|---|---|---|---|---|"]
     for seed in opts.seeds:
-        for alpha, beta, a, n, zeta in systems(seed):
+        for alpha, beta, a, n, zeta in systems(seed, opts.jumping):
             vc = theory.profile_critical_velocity(alpha, beta, a, n, zeta)
             for f in opts.fractions:
                 V = f * vc
@@ -124,6 +128,7 @@ def main() -> None:
         if opts.fractions != list(FRACTIONS):
             seeds += " --fractions " + " ".join(map(str, opts.fractions))
         seeds += f" --recheck {opts.recheck}" if opts.recheck else ""
+        seeds += " --jumping" if opts.jumping else ""
         append_run(RESULTS, "Curved tips just below the critical velocity, against rows of "
                    "springs", f"PYTHONPATH=src python benchmarks/mdr_near_critical.py{seeds} "
                    "--write", f"seeds {tuple(opts.seeds)}, {SYSTEMS} systems each, at "

@@ -1418,7 +1418,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     (:func:`_change`); then with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
     last coarse map grazes: an edge's velocity turning back within ``graze_depth`` times
     ``V + c a`` of 0, or changing sign twice within ``graze_time``, :func:`period`'s
-    ``gz``) to that map's orbit (the orbit
+    ``gz``; and always for a jumping indenter) to that map's orbit (the orbit
     of a map moves with its error, by more where the orbit attracts slowly, so the fine
     orbit is sought anew, not one fine period taken from the coarse orbit): the first
     fine map from where the last coarse one started, and the mixing's history shifted by
@@ -1595,7 +1595,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             w_coarse = w_last
             g_depth = gz[0] / (V + prm[P_C] * prm[P_A])
             g_time = _shortest_stretch(gz)
-            grazes = g_depth < graze_depth or g_time < graze_time
+            # (a jumping indenter's brief stick just below V_c is not measured: its
+            # stretches end at the flight; maps ten times finer fell short there, so its
+            # fine maps are always the hundredfold ones)
+            grazes = prm[P_A] > 1.0 or g_depth < graze_depth or g_time < graze_time
             tol_m = (fine_graze if grazes else fine) * rtol
             last = math.inf
             # its first map from where this coarse one started: the difference of their

@@ -49,10 +49,12 @@ FINE_GRAZE = 0.01  # ... and where the coarse orbit grazes (not 0.1: just below 
 # ten times finer can keep the coarse orbit with less stick, and the two orbits'
 # difference then understates the error; benchmarks/mdr_near_critical.py): an edge's
 # velocity turning back within GRAZE_DEPTH times V + c a of 0, or changing sign twice
-# within GRAZE_TIME (a brief stick or slip).  Measured (benchmarks/mdr_graze.py): the
-# points whose FINE 0.1 fell short at 0.9995 and 0.9999 V_c had a stretch of at most
-# 0.064; the regimes of benchmarks/bench_ratios.py none below 0.31 and a depth of 0.008
-# and above
+# within GRAZE_TIME (a brief stick or slip); and always for a jumping indenter (its brief
+# stick near V_c ends at the flight, where the stretches stop: unmeasured, and ten times
+# finer fell short at 7 of 235 points, mdr_near_critical.py --jumping).  Measured
+# (benchmarks/mdr_graze.py): the points whose FINE 0.1 fell short at 0.9995 and 0.9999
+# V_c had a stretch of at most 0.064; the regimes of benchmarks/bench_ratios.py none
+# below 0.31 and a depth of 0.008 and above
 GRAZE_DEPTH = 3e-3
 GRAZE_TIME = 0.2
 DEPTH = 5  # period maps mixed
