@@ -10,7 +10,8 @@ few affine pieces over the core ``xi <= (1 - a)^(1/n)`` and the section state is
 step after which the map moves the state ten times farther is undone) finds the orbit in
 about ten to twenty-five periods where the plain iteration takes hundreds
 (``tests/mdr/test_mdr_continuum.py``'s points).  From that orbit the search goes on with
-maps at a tenth of the tolerance to their own orbit, which gives ``mu_ratio``; the
+maps at a tenth of the tolerance (a hundredth where the coarse orbit grazes, and for a
+jumping indenter: ``FINE_GRAZE``) to their own orbit, which gives ``mu_ratio``; the
 difference of the two orbits' ``mu``, plus the section state's
 tolerance, is the stated error.  (One fine period from the coarse orbit is not enough:
 the orbit of a map moves with the map's error, by more where it attracts slowly, and the
