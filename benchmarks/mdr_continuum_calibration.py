@@ -29,14 +29,26 @@ COUNT = 40
 TOLS = (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8)
 
 
-def run(seed: int, a_range: tuple[float, float], title: str) -> list[str]:
+#: the two draws: (seed, the range of a)
+DRAWS = ((22, (0.1, 0.95)), (21, (1.05, 3.0)))
+
+
+def points(seed: int, a_range: tuple[float, float]) -> list[tuple[float, ...]]:
+    """The seed's ``COUNT`` points ``(alpha, beta, a, V, n, zeta)``."""
     rng = np.random.default_rng(seed)
-    ratios, errors, failed, bad, unsolved = [], [], 0, [], []
+    out = []
     for _ in range(COUNT):
         al = 10 ** rng.uniform(-1.5, 1)
         be = al + 10 ** rng.uniform(-1, 1.5)
         a, V = rng.uniform(*a_range), 10 ** rng.uniform(-1.5, 0.3)
         n, ze = float(rng.choice([1, 1.5, 2, 3, 5])), float(rng.choice([0, 0.05, 0.3]))
+        out.append((al, be, a, V, n, ze))
+    return out
+
+
+def run(seed: int, a_range: tuple[float, float], title: str) -> list[str]:
+    ratios, errors, failed, bad, unsolved = [], [], 0, [], []
+    for al, be, a, V, n, ze in points(seed, a_range):
         ref = mdr_continuum(al, be, a, V, n, ze, rtol=1e-11)
         for tol in TOLS:
             r = continuum_friction(al, be, a, V, n, ze, 0.0, 0.0, (0.0, 0.0), tol)
@@ -70,8 +82,9 @@ def main() -> None:
     ap = argparse.ArgumentParser()
     ap.add_argument("--write", action="store_true", help=f"append to {RESULTS}")
     args = ap.parse_args()
-    lines = (run(22, (0.1, 0.95), f"{COUNT} points, 0 < a < 1, at tol {TOLS}")
-             + run(21, (1.05, 3.0), f"{COUNT} jumping points, a > 1, at tol {TOLS}"))
+    (s0, r0), (s1, r1) = DRAWS
+    lines = (run(s0, r0, f"{COUNT} points, 0 < a < 1, at tol {TOLS}")
+             + run(s1, r1, f"{COUNT} jumping points, a > 1, at tol {TOLS}"))
     if args.write:
         append_run(RESULTS, "The row without springs' stated error against tighter runs",
                    "PYTHONPATH=src python benchmarks/mdr_continuum_calibration.py --write",

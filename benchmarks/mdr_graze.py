@@ -34,8 +34,7 @@ import math
 import time
 from pathlib import Path
 
-import numpy as np
-
+from mdr_continuum_calibration import DRAWS, points
 from mdr_continuum_periods import _points
 from mdr_near_critical import SPRINGS, systems
 from sections import append_run
@@ -98,13 +97,8 @@ def typical() -> list[tuple[str, float, float, float]]:
         _last.clear()
         smc.continuum_friction(*args, 1e-7)
         out.append((f"{lab}, n {n:g}", args[2], *_last.get("g", (math.nan, math.nan))))
-    for seed, ar in ((22, (0.1, 0.95)), (21, (1.05, 3.0))):  # (the calibration's draws)
-        rng = np.random.default_rng(seed)
-        for _ in range(40):
-            al = 10 ** rng.uniform(-1.5, 1)
-            be = al + 10 ** rng.uniform(-1, 1.5)
-            a, V = rng.uniform(*ar), 10 ** rng.uniform(-1.5, 0.3)
-            n, ze = float(rng.choice([1, 1.5, 2, 3, 5])), float(rng.choice([0, 0.05, 0.3]))
+    for seed, ar in DRAWS:
+        for al, be, a, V, n, ze in points(seed, ar):
             _last.clear()
             smc.continuum_friction(al, be, a, V, n, ze, 0.0, 0.0, (0.0, 0.0), 1e-7)
             out.append((f"calibration seed {seed}", a,
