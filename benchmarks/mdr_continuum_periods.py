@@ -18,7 +18,9 @@ that; ``3e-10`` where the coarse orbit grazes, ``FINE_GRAZE``), the first ones a
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
-  started as always: what the best possible first guess of the body alone would buy.
+  started as always: what the best possible first guess of the body alone would buy;
+* the search's floor: the steps of one coarse and one fine map from the converged orbit's
+  whole section state (the body and the profile), what even a perfect first guess costs.
 
     PYTHONPATH=src python benchmarks/mdr_continuum_periods.py [--tol TOL] [--write]
 
@@ -117,8 +119,37 @@ def stages() -> None:
     print(json.dumps(rows))
 
 
-def _orbit_start(args: tuple) -> tuple[float, float, float]:
-    """The body's ``(y, y')`` on the converged orbit at ``tau = 0`` and the default ``y``."""
+def _floor(prm: np.ndarray, rtol: float, z: np.ndarray, PC: np.ndarray, HS: np.ndarray,
+           periods: int, res: np.ndarray) -> int:
+    """The steps (accepted and rejected) of one coarse and one fine map from the converged
+    orbit's whole section state (the body and the profile) left by ``steady``: what the
+    search costs from a perfect first guess, its floor (the fine map at the tolerance the
+    search chose from ``res``'s graze measures).
+    """
+    from vibrofriction._kernels import mdr_continuum as mc
+    from vibrofriction.solver import mdr_continuum as smc
+
+    t = math.pi + 2.0 * math.pi * periods  # (the last map's end)
+    nh = int(np.nanargmax(HS[:, mc.HT])) + 1  # (the rows after it: before a compaction)
+    assert abs(HS[nh - 1, mc.HT] - t) < 1e-9 * t
+    a, n = prm[mc.P_A], prm[mc.P_N]
+    npc = 0
+    if a < 1.0:  # (a jumping indenter is in its flight at odd multiples of pi: no profile)
+        rho = (1.0 - a) ** (1.0 / n)
+        npc = 1 + int(np.flatnonzero(np.abs(PC[:, mc.X1] - rho) <= 1e-12 * rho)[0])
+    grazes = a > 1.0 or res[7] < smc.GRAZE_DEPTH or res[8] < smc.GRAZE_TIME
+    steps = 0
+    for tol in (rtol, (smc.FINE_GRAZE if grazes else smc.FINE) * rtol):
+        cnt = np.zeros(4, np.int64)
+        mc.period(prm, t, z.copy(), PC.copy(), npc, HS.copy(), nh, tol, 0.01 * tol, 0.5, 0.1,
+                  np.zeros((8, mc.N_Z)), np.zeros_like(PC), cnt, np.full(6, np.nan), 2)
+        steps += int(cnt[0] + cnt[1])
+    return steps
+
+
+def _orbit_start(args: tuple) -> tuple[float, float, float, int]:
+    """The body's ``(y, y')`` on the converged orbit at ``tau = 0``, the default ``y`` and
+    the search's floor (:func:`_floor`)."""
     from vibrofriction import theory
     from vibrofriction._kernels import mdr_continuum as mc
     from vibrofriction.solver import mdr_continuum as smc
@@ -134,17 +165,18 @@ def _orbit_start(args: tuple) -> tuple[float, float, float]:
     npc, nh = mc.start(prm, z[0], z[1], PC, HS)
     y_sliding = -float(theory.profile_mean_normal_force(a, n)) / al
     fine = (smc.FINE, smc.FINE_GRAZE, smc.GRAZE_DEPTH, smc.GRAZE_TIME)
+    res = np.zeros(9)
     code, periods, _ = mc.steady(prm, z, PC, npc, HS, nh, rtol, *fine, smc.DEPTH, rtol,
-                                 smc.GROWTH, y_sliding, 200, np.zeros(4, np.int64),
-                                 np.zeros(9))
+                                 smc.GROWTH, y_sliding, 200, np.zeros(4, np.int64), res)
     if code != 0:
-        return math.nan, math.nan, y0
+        return math.nan, math.nan, y0, 0
+    floor = _floor(prm, rtol, z, PC, HS, periods, res)
     # the last period runs from pi + 2 pi (periods - 1) to pi + 2 pi periods; its steps end
     # at every multiple of pi, so its history has a row at 2 pi periods
     t = 2.0 * math.pi * periods
     i = int(np.nanargmin(np.abs(HS[:, mc.HT] - t)))
     assert abs(HS[i, mc.HT] - t) < 1e-9 * t
-    return HS[i, mc.HU] - V * t, HS[i, mc.HD] - V, y0
+    return HS[i, mc.HU] - V * t, HS[i, mc.HD] - V, y0, floor
 
 
 def main() -> None:
@@ -170,10 +202,11 @@ def main() -> None:
              + " | periods | from the orbit's body state |",
              "|---|---|" + "---|" * len(names) + "---|---|"]
     total = {k: [0, 0] for k in names}
-    before = after = 0
+    before = after = floor = 0
     for (lab, n, args), st in zip(_points(), counted, strict=True):
         r0 = continuum_friction(*args, TOL)
-        y, v, y0 = _orbit_start(args)
+        y, v, y0, f = _orbit_start(args)
+        floor += f
         al, be, a, V, n_, ze, hc, hs, off = args
         r1 = continuum_friction(al, be, a, V, n_, ze, hc, hs, (y0 - y, -v), TOL)
         cells = {}
@@ -195,6 +228,12 @@ def main() -> None:
         + f". Periods from the default start {before}, from the body on its orbit {after} "
         f"({100 * (before - after) / before:.0f} % fewer).")
     print(lines[-1])
+    lines.append("")
+    lines.append(
+        f"From a perfect first guess (the converged orbit's whole section state, the body and "
+        f"the profile) the search would still take one coarse and one fine map: {floor} "
+        f"steps, {steps / floor:.1f} times fewer than the {steps} from the default start.")
+    print(lines[-1])
     rejected, events, segments = (sum(o[i] for o in other) for i in range(3))
     lines.append("")
     lines.append(
@@ -207,8 +246,8 @@ def main() -> None:
         from sections import append_run
 
         flag = "" if TOL == 1e-7 else f" --tol {TOL:g}"
-        append_run(RESULTS, "The row without springs: periods by stage, and from a perfect "
-                   "start of the body", "PYTHONPATH=src python benchmarks/"
+        append_run(RESULTS, "The row without springs: periods by stage, from a perfect start "
+                   "of the body, and the floor of a perfect start", "PYTHONPATH=src python benchmarks/"
                    f"mdr_continuum_periods.py{flag} --write",
                    f"tol_trusted = {TOL:g}; maps and steps counted under NUMBA_DISABLE_JIT "
                    "(steps include the rejected ones).", lines)
