@@ -247,8 +247,8 @@ def main() -> None:
 
         flag = "" if TOL == 1e-7 else f" --tol {TOL:g}"
         append_run(RESULTS, "The row without springs: periods by stage, from a perfect start "
-                   "of the body, and the floor of a perfect start", "PYTHONPATH=src python benchmarks/"
-                   f"mdr_continuum_periods.py{flag} --write",
+                   "of the body, and the floor of a perfect start",
+                   f"PYTHONPATH=src python benchmarks/mdr_continuum_periods.py{flag} --write",
                    f"tol_trusted = {TOL:g}; maps and steps counted under NUMBA_DISABLE_JIT "
                    "(steps include the rejected ones).", lines)
 
