@@ -20,7 +20,8 @@ that; ``3e-10`` where the coarse orbit grazes, ``FINE_GRAZE``), the first ones a
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
   started as always: what the best possible first guess of the body alone would buy;
 * the search's floor: the steps of one coarse and one fine map from the converged orbit's
-  whole section state (the body and the profile), what even a perfect first guess costs.
+  whole section state (the body and the profile), what even a perfect first guess costs
+  (counted in this process, compiled).
 
     PYTHONPATH=src python benchmarks/mdr_continuum_periods.py [--tol TOL] [--write]
 
