@@ -136,7 +136,7 @@ def _floor(prm: np.ndarray, rtol: float, z: np.ndarray, PC: np.ndarray, HS: np.n
     a, n = prm[mc.P_A], prm[mc.P_N]
     npc = 0
     if a < 1.0:  # (a jumping indenter is in its flight at odd multiples of pi: no profile)
-        rho = (1.0 - a) ** (1.0 / n)
+        rho = mc._rho(a, n, t)  # (the contact's edge: the last piece's end)
         npc = 1 + int(np.flatnonzero(np.abs(PC[:, mc.X1] - rho) <= 1e-12 * rho)[0])
     grazes = a > 1.0 or res[7] < smc.GRAZE_DEPTH or res[8] < smc.GRAZE_TIME
     steps = 0
