@@ -232,6 +232,14 @@ def test_continuous_sliding_is_claimed_only_above_the_critical_velocity():
         assert slides_continuously(al, be, a, vc * 1.002 + 1e-9, n, ze)
 
 
+def test_continuous_sliding_is_never_claimed_at_an_undamped_harmonic_resonance():
+    """Undamped, ``alpha = k^2`` makes the ``k``-th harmonic of the force resonate: the
+    sliding orbit does not exist, whatever ``V``; just off it the check runs."""
+    for k in (1, 2, 3):
+        assert not slides_continuously(k * k, k * k + 10.0, 0.3, 1e6, 2.0, 0.0)
+    assert slides_continuously(4.0 + 1e-6, 14.0, 0.3, 1e6, 2.0, 0.0)
+
+
 def test_continuous_sliding_matches_the_rows():
     """Above the critical velocity the MDR solver (at a tolerance the continuum answers)
     returns ``mu_ratio = 1`` exactly with the status of continuous sliding, as the rows find

@@ -22,6 +22,17 @@ def test_profile_mean_normal_force_is_the_cycle_mean_of_F(n, a):
     assert theory.profile_mean_normal_force(a, n) == pytest.approx(brute, rel=1e-9)
 
 
+def test_profile_mean_normal_force_broadcasts_like_each_point_alone():
+    a = np.array([[0.0], [0.3], [1.7]])
+    n = np.array([0.7, 2.0, math.inf, 3.5])
+    out = theory.profile_mean_normal_force(a, n)
+    assert isinstance(out, np.ndarray) and out.shape == (3, 4) and out.dtype == float
+    for i in range(3):
+        for j in range(4):
+            assert out[i, j] == theory.profile_mean_normal_force(float(a[i, 0]), float(n[j]))
+    assert isinstance(theory.profile_mean_normal_force(0.3, 2.0), float)
+
+
 def test_profile_mean_normal_force_limits():
     a = np.array([0.0, 0.4, 1.0, 2.5])
     np.testing.assert_allclose(theory.profile_mean_normal_force(a, math.inf),

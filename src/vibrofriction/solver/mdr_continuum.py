@@ -206,6 +206,9 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
 
 
 SLIDING_SAMPLES = 256  # the grid of the sliding orbit's check
+_TAU = 2.0 * math.pi * np.arange(SLIDING_SAMPLES) / SLIDING_SAMPLES
+_COS, _SIN = np.cos(_TAU), np.sin(_TAU)
+_HARMONICS = np.arange(SLIDING_SAMPLES // 2 + 1, dtype=float)
 
 
 def slides_continuously(alpha: float, beta: float, amplitude: float, V: float,
@@ -224,19 +227,18 @@ def slides_continuously(alpha: float, beta: float, amplitude: float, V: float,
     a, n = amplitude, profile_exponent
     if not a < 1.0:
         return False
+    r = round(math.sqrt(alpha))
+    if alpha == 0.0 or (zeta == 0.0 and r <= SLIDING_SAMPLES // 2 and r * r == alpha):
+        return False  # undamped resonance of a harmonic of the force
     p = 1.0 + 1.0 / n
     N = SLIDING_SAMPLES
-    tau = 2.0 * math.pi * np.arange(N) / N
-    M = np.fft.rfft((1.0 + a * np.cos(tau)) ** p) / N  # m = sum_k M_k e^{ik tau} + c.c.
-    k = np.arange(M.size)
-    den = alpha - k ** 2 + 2j * zeta * math.sqrt(alpha) * k
-    if np.any(den == 0.0):  # undamped resonance of a harmonic of the force
-        return False
-    Yd = -1j * k * M / den  # y_p' = sum_k Yd_k e^{ik tau} + c.c. (k > 0)
-    yd = np.fft.irfft(Yd * N, N)
-    f = -yd - p * a / (beta - alpha) * np.sin(tau)
-    bound = 2.0 * float(np.sum(k ** 2 * np.abs(Yd))) + p * a / (beta - alpha)
-    miss = (2.0 * math.pi / N) ** 2 / 8.0 * bound + 100.0 * float(np.abs(Yd[-1]))
+    M = np.fft.rfft((1.0 + a * _COS) ** p)  # N m = sum_k M_k e^{ik tau} + c.c.
+    k = _HARMONICS
+    Yd = -1j * k * M / (alpha - k * k + 2j * zeta * math.sqrt(alpha) * k)  # N y_p'
+    yd = np.fft.irfft(Yd, N)
+    f = -yd - p * a / (beta - alpha) * _SIN
+    bound = 2.0 * float(np.abs(Yd) @ (k * k)) / N + p * a / (beta - alpha)
+    miss = (2.0 * math.pi / N) ** 2 / 8.0 * bound + 100.0 * float(np.abs(Yd[-1])) / N
     return bool(V > float(np.max(f)) + miss + 1e-12 * (1.0 + abs(V)))
 
 

@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..validation import as_float_or_array, checked, validated
-from .domains import ANY_VBAR, FloatOrArray, valid_array
+from .domains import ANY_VBAR, FloatOrArray, elementwise, valid_array
 
 
 # --------------------------------------------------------------- real contact geometry (MDR)
@@ -53,7 +53,7 @@ def profile_mean_normal_force(amplitude: ArrayLike, profile_exponent: ArrayLike)
     """
     a = valid_array("amplitude", amplitude)
     n = _exponent(profile_exponent)
-    return as_float_or_array(np.vectorize(_profile_mean_force, otypes=[float])(a, n))
+    return as_float_or_array(elementwise(_profile_mean_force, a, n))
 
 
 def profile_static_mu_ratio(amplitude: ArrayLike, profile_exponent: ArrayLike) -> FloatOrArray:
@@ -142,7 +142,7 @@ def mu_ratio_stiff_flat(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     """
     v = valid_array("vbar", vbar, ANY_VBAR)
     a = valid_array("amplitude", amplitude)
-    return as_float_or_array(np.vectorize(_stiff_flat, otypes=[float])(v, a))
+    return as_float_or_array(elementwise(_stiff_flat, v, a))
 
 
 def _stiff_profile(vbar: float, a: float, n: float) -> float:
@@ -193,7 +193,7 @@ def mu_ratio_stiff_profile(vbar: ArrayLike, amplitude: ArrayLike,
     v = valid_array("vbar", vbar, ANY_VBAR)
     a = valid_array("amplitude", amplitude)
     n = _exponent(profile_exponent)
-    return as_float_or_array(np.vectorize(_stiff_profile, otypes=[float])(v, a, n))
+    return as_float_or_array(elementwise(_stiff_profile, v, a, n))
 
 
 def _dead_weight_ratio(A: float, n: float) -> float:
@@ -249,7 +249,7 @@ def dead_weight_indentation(static_amplitude: ArrayLike,
     """
     A = checked("static_amplitude", static_amplitude, minimum=0.0)
     n = _exponent(profile_exponent)
-    return as_float_or_array(np.vectorize(_dead_weight_ratio, otypes=[float])(A, n))
+    return as_float_or_array(elementwise(_dead_weight_ratio, A, n))
 
 
 #: Points of the period on which the continuous-sliding response is sampled (FFT).

@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ..validation import as_float_or_array, checked
-from .domains import FloatOrArray, valid_array
+from .domains import FloatOrArray, elementwise, valid_array
 from .jumping import contact_half_angle, mean_normal_force
 
 
@@ -64,7 +64,7 @@ def _resonant_tau_star_exact(a: float) -> float:
 
 
 def _tau_star_exact(a: NDArray[np.float64]) -> NDArray[np.float64]:
-    return np.vectorize(_resonant_tau_star_exact, otypes=[float])(a)
+    return elementwise(_resonant_tau_star_exact, a)
 
 
 def resonant_velocity_ratio_exact(amplitude: ArrayLike) -> FloatOrArray:
@@ -178,6 +178,6 @@ def resonant_damped_mu_ratio(v_inertial: ArrayLike, amplitude: ArrayLike,
     zeta = valid_array("zeta", zeta)
     V, a, zeta = np.broadcast_arrays(V, a, zeta)
     x = np.pi * 2.0 * zeta * V
-    tau = np.vectorize(_damped_tau_star, otypes=[float])(x, a)
+    tau = elementwise(_damped_tau_star, x, a)
     n_mean = np.asarray(mean_normal_force(a))
     return as_float_or_array(1.0 - (2.0 / np.pi) * (tau + a * np.sin(tau)) / n_mean)

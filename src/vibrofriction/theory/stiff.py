@@ -4,11 +4,10 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
 from numpy.typing import ArrayLike
 
 from ..validation import as_float_or_array
-from .domains import ANY_VBAR, NO_JUMPING, FloatOrArray, valid_array
+from .domains import ANY_VBAR, NO_JUMPING, FloatOrArray, elementwise, valid_array
 
 
 # --------------------------------------------------------------------------- stiff limit
@@ -60,4 +59,4 @@ def mu_ratio_stiff_exact(vbar: ArrayLike, amplitude: ArrayLike) -> FloatOrArray:
     """
     v = valid_array("vbar", vbar, ANY_VBAR)
     a = valid_array("amplitude", amplitude, NO_JUMPING)
-    return as_float_or_array(np.vectorize(_stiff_exact, otypes=[float])(v, a))
+    return as_float_or_array(elementwise(_stiff_exact, v, a))
