@@ -36,8 +36,11 @@ so the profile is updated at its end only (:func:`period`).  Within a segment th
 slope jumps where a monotone edge reaches a whole affine piece and its curvature where a
 front crosses a piece's end or the contact's edge passes one: levels of ``P`` or ``N`` and
 times known at the segment's start (:func:`_levels`), each passed once, located on the
-dense output and made step ends.  Between them the body's equation has a smooth right-hand
-side and Dormand-Prince 5(4) integrates it at its order.
+dense output and made step ends (the step cut there, its end read from the dense output;
+a step rejected across a level is tried again to just past it, where its error, which
+falls only like the step across a kink, would take several rejections).  Between them the
+body's equation has a smooth right-hand side and Dormand-Prince 5(4) integrates it at its
+order.
 
 It covers Coulomb friction (``static_ratio = 1``) and ``V > 0``, with ``a < 1`` (the core of
 the contact never opens) or ``a > 1`` (a jumping indenter: the lift-off and the touch-down
@@ -135,6 +138,7 @@ SINGULAR_NEAR = 8.0  # within this many intervals of a touch-down rho u' is inte
 FAIL_PIECES, FAIL_HISTORY, FAIL_STEPS = -1, -2, -3
 FRONT_STEP = 1e-7  # a front's Newton step this small (relative): the next one is round-off
 MAX_STEPS_HALF = 20000  # steps in a half period before giving up
+LEVEL_PAST = 1e-6  # a step rejected across a level is tried again to this much past it
 CS_NEAR = 0.6  # _cs rotates by at most this (its series is exact to round-off there)
 
 
@@ -896,6 +900,30 @@ def _crossed(f, sg):
     return f != 0.0 and (f > 0.0) != (sg > 0.0)
 
 
+@jit
+def _level_in_step(z, znew, K, hh, t, prm, lp, ln, ct, st):
+    """Where in a step ``P`` reaches the level ``lp`` or ``N`` reaches ``ln``, as a fraction
+    of it (on its dense output; 2 if neither does by its end).
+
+    Within a segment ``P`` only rises towards ``lp`` and ``N`` only falls towards ``ln``
+    (:func:`_levels`), so a level is reached in a step if its end is past it.
+    """
+    c, a, V = prm[P_C], prm[P_A], prm[P_V]
+    th = 2.0
+    if lp != math.inf:
+        f1 = _event_value(2, lp, z, znew, K, hh, t, 1.0, prm, ct, st)
+        f0 = z[0] + V * t - c * (1.0 + a * ct) - lp
+        if f0 < 0.0 < f1:
+            th = _event_root(2, lp, z, znew, K, hh, t, prm, 0.0, f0, 1.0, f1, ct, st)
+    if ln != -math.inf:
+        f1 = _event_value(3, ln, z, znew, K, hh, t, 1.0, prm, ct, st)
+        f0 = z[0] + V * t + c * (1.0 + a * ct) - ln
+        if f1 < 0.0 < f0:
+            th = min(th, _event_root(3, ln, z, znew, K, hh, t, prm, 0.0, f0, 1.0, f1,
+                                     ct, st))
+    return th
+
+
 @jit_bare
 def _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln, ct, st, gz):
     """The earliest event of the step on its dense output, as a fraction of it (2 if
@@ -1101,6 +1129,8 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, h
                 t_stop = LT[it] if it < mt and LT[it] < t_seg else t_seg
                 lp = LP[ip] if ip < mp else math.inf
                 ln = LN[jn] if jn < mn else -math.inf
+                hinted = False
+                h_back = h
                 while True:  # attempts
                     hh = min(h, t_stop - t, hmax)
                     if jump and not flight:  # (the force is C^1 only at both: steps shrink)
@@ -1110,6 +1140,18 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, h
                     en = _err(z, znew, K, hh, rtol, atol)
                     if en > 1.0 or not math.isfinite(en):
                         cnt[1] += 1
+                        if not (hinted or flight) and math.isfinite(en):
+                            # a level inside the step: the force bends there, so the
+                            # step's error falls only like h, not h^5, as it shrinks (seen:
+                            # six rejections in a row); the next try ends just past it (the
+                            # level then found on its dense output, below), and the step
+                            # after it resumes this one's size
+                            th_l = _level_in_step(z, znew, K, hh, t, prm, lp, ln, ct, st)
+                            if th_l < 1.0:
+                                hinted = True
+                                h_back = hh
+                                h = th_l * hh * (1.0 + LEVEL_PAST)
+                                continue
                         h = hh * max(0.1, 0.9 * en ** -0.2) if math.isfinite(en) else 0.1 * hh
                         if h < 1e-13:
                             return FAIL_STEPS, nh, h
@@ -1119,9 +1161,14 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, h
                         th_ev, k_ev = _first_event(z, znew, K, hh, t, prm, dirp, dirn, lp, ln,
                                                    ct, st, gz)
                     if th_ev < 1.0 and th_ev * hh > 1e-12:
-                        cnt[2] += 1
+                        cnt[2] += 1  # the step cut at the event: its end from the dense
+                        for i in range(N_Z):  # output (no step taken again), K[6] there
+                            K[7, i] = _dense(z, znew, K, hh, i, th_ev)
                         hh = th_ev * hh
-                        _step(t, z, k1, hh, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs)
+                        for i in range(N_Z):
+                            znew[i] = K[7, i]
+                        cs[0], cs[1] = _cs(t + hh, t, ct, st)
+                        rhs(t + hh, znew, K[6], prm, PC, npc, HS, nh, seg, cs[0], cs[1])
                     elif th_ev < 1.0 and k_ev <= 1 and t != t_forced:
                         restart = True  # P' or N' has the other sign already: no step
                         t_forced = t
@@ -1134,6 +1181,8 @@ def _period(prm, t0, z, PC, npc, HS, nh, rtol, atol, hmax, h, K, out, cnt, gz, h
                         k_ev = -1
                         h = hh * min(5.0, max(0.2, 0.9 * en ** -0.2)) if en > 0.0 else 5.0 * hh
                     break
+                if hinted:
+                    h = h_back
                 if restart:
                     break
                 cnt[0] += 1
