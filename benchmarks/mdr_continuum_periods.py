@@ -13,8 +13,9 @@ that; ``3e-10`` where the coarse orbit grazes, ``FINE_GRAZE``), the first ones a
   one transient stage); a jumping point's search-distance maps count with the stage of
   their tolerance (the coarse one's, ``1e-6`` at the tightest: at ``1e-7``, the rough
   stage's); and, over all stages, the
-  rejected steps, the steps taken again to an event found in a step (its end moved to the
-  event) and the segments (the stretches between turns of the band's edges);
+  rejected steps, the steps cut at an event found in them (their end read from the dense
+  output; before 06b7f3c taken again to it) and the segments (the stretches between turns
+  of the band's edges);
 * the periods from the default start (steady sliding, the body at rest at
   ``-(1 + a)^(1 + 1/n)/alpha``) and from a start with the body exactly on its orbit at
   ``tau = 0`` (``u``, ``u'`` read from the converged orbit's history), the profile
@@ -236,12 +237,17 @@ def main() -> None:
         f"steps, {steps / floor:.1f} times fewer than the {steps} from the default start.")
     print(lines[-1])
     rejected, events, segments = (sum(o[i] for o in other) for i in range(3))
+    from vibrofriction._kernels import mdr_continuum as mc
+
+    # (the trees before the dense cut took the step again to the event: a step's cost)
+    cut = ("were cut at an event found in them, their end read from the dense output (one "
+           "evaluation of the right-hand side each, not a step)"
+           if hasattr(mc, "_level_in_step") else "more were taken again to an event found in them")
     lines.append("")
     lines.append(
         f"Of the {steps} steps, {rejected} were rejected ({100 * rejected / steps:.0f} %); "
-        f"{events} more were taken again to an event found in them ({100 * events / steps:.0f} "
-        f"% of the steps); {segments} segments, {(steps - rejected) / segments:.1f} accepted "
-        "steps each.")
+        f"{events} {cut} ({100 * events / steps:.0f} % of the steps); {segments} segments, "
+        f"{(steps - rejected) / segments:.1f} accepted steps each.")
     print(lines[-1])
     if opts.write:
         from sections import append_run
