@@ -243,11 +243,14 @@ def main() -> None:
     cut = ("were cut at an event found in them, their end read from the dense output (one "
            "evaluation of the right-hand side each, not a step)"
            if hasattr(mc, "_level_in_step") else "more were taken again to an event found in them")
+    # (a step evaluates the right-hand side six times: Dormand-Prince's first same as last)
+    evals = 6 * steps + (1 if hasattr(mc, "_level_in_step") else 6) * events
     lines.append("")
     lines.append(
         f"Of the {steps} steps, {rejected} were rejected ({100 * rejected / steps:.0f} %); "
         f"{events} {cut} ({100 * events / steps:.0f} % of the steps); {segments} segments, "
-        f"{(steps - rejected) / segments:.1f} accepted steps each.")
+        f"{(steps - rejected) / segments:.1f} accepted steps each; {evals} evaluations of the "
+        "right-hand side in all.")
     print(lines[-1])
     if opts.write:
         from sections import append_run
