@@ -46,6 +46,50 @@ def test_rotated_angles_match_the_library():
         assert abs(s - math.sin(a + b)) <= 4e-16
 
 
+@pytest.mark.parametrize("t", [0.4, 1.5])
+def test_a_level_in_a_step_is_found_where_the_dense_output_reaches_it(t):
+    """:func:`_level_in_step` (where a step rejected across a level is tried again to):
+    the fraction of a real Dormand-Prince step at which a rising ``P`` (``t = 0.4``) or a
+    falling ``N`` (``t = 1.5``) reaches a level between its values at the step's ends, at
+    round-off there; 2 for a level beyond the end, and the earlier of two levels."""
+    from vibrofriction.solver.mdr_continuum import HISTORY, _parameters
+
+    prm = _parameters(0.5, 2.0, 0.5, 0.3, 2.0, 0.1, 0.0, 0.0)
+    PC = np.zeros((mc.MAX_PIECES + 1, mc.N_PC))
+    HS = np.empty((HISTORY, mc.N_HS))
+    z = np.zeros(mc.N_Z)
+    z[0] = -1.5 ** 1.5 / 0.5
+    npc, nh = mc.start(prm, z[0], z[1], PC, HS)
+    seg = np.array([0.0, 0.0, float(mc.EDGE_NONE), 0.0, math.nan])
+    h = 0.3
+    ct, st = math.cos(t), math.sin(t)
+    k1, znew, K, cs = np.zeros(mc.N_Z), np.zeros(mc.N_Z), np.zeros((8, mc.N_Z)), np.zeros(2)
+    mc.rhs(t, z, k1, prm, PC, npc, HS, nh, seg, ct, st)
+    mc._step(t, z, k1, h, znew, K, prm, PC, npc, HS, nh, seg, ct, st, cs)
+    kind = 2 if t < 1.0 else 3  # P (u - c delta) rises, or N (u + c delta) falls
+
+    def edge(th):
+        return mc._event_value(kind, 0.0, z, znew, K, h, t, th, prm, ct, st)
+
+    def level_in(lev, other):
+        lp, ln = (lev, other) if kind == 2 else (other, lev)
+        return mc._level_in_step(z, znew, K, h, t, prm, lp, ln, ct, st)
+
+    e0, e1 = edge(0.0), edge(1.0)
+    sign = 1.0 if kind == 2 else -1.0
+    assert sign * (e1 - e0) > 0.0
+    never = -sign * math.inf  # (no level of the other edge)
+    for frac in (0.1, 0.5, 0.93):
+        lev = e0 + frac * (e1 - e0)
+        th = level_in(lev, never)
+        assert 0.0 < th < 1.0
+        assert abs(edge(th) - lev) <= 1e-13 * (1.0 + abs(lev))
+        # the other edge's level, not reached, leaves it
+        assert level_in(lev, -sign * 1e9) == th
+    assert level_in(e1 + sign * 1e-6, never) == 2.0
+    assert level_in(sign * math.inf, never) == 2.0
+
+
 def test_front_newton_converges_quadratically(monkeypatch):
     """A history piece's front (:func:`_hfront`): the root of ``u + c delta = target`` to
     round-off in a few Newton steps, also from a guess on the root itself (a converged
