@@ -23,7 +23,6 @@ from .._kernels.mdr import row_geometry, steady_row
 from .._kernels.phases import frame_offset, inplane_forcing
 from ..capabilities import CAPABILITIES
 from ..schema import FLOAT_COLUMNS, POSITIVE
-from ..theory import profile_mean_normal_force as theory_mean_normal
 from ..validation import checked_count, checked_number
 from .mdr_continuum import (
     continuous_sliding,
@@ -272,8 +271,7 @@ def mdr_friction(alpha: float, beta: float, amplitude: float, V: float,
         if c is not None and c["status"] in ("periodic", "continuous sliding") \
                 and c["error"] <= tol:
             # (each point's force is clamped to its limit exactly: no excess to report)
-            c.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(), max_excess=0.0,
-                     mean_normal_ratio=float(theory_mean_normal(amplitude, n_exp)))
+            c.update(order=math.inf, rows=(), n_springs=0, skipped_rows=(), max_excess=0.0)
             return c
     if math.isinf(n_exp):
         r = mdr_row(alpha, beta, amplitude, V, n_exp, 1, zeta, max_periods=max_periods, **ip)

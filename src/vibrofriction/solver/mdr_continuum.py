@@ -166,8 +166,9 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     (``y`` absolute, the rest relative) that ends each stage of the search, by the map and
     by the mixing's step (it adds to the stated error).  Returns
     ``mu_ratio``, ``error``, ``status``
-    (``"periodic"``, or ``"failed"`` with the reason in ``reason``), ``periods`` and the
-    time-averaged area fractions in stick, slip and out of contact.
+    (``"periodic"``, or ``"failed"`` with the reason in ``reason``), ``periods``, the
+    time-averaged area fractions in stick, slip and out of contact and
+    ``mean_normal_ratio`` (``<F_N>/F_N0``, the theory's).
     """
     a, n = float(amplitude), float(profile_exponent)
     prm = _parameters(alpha, beta, a, V, n, zeta, hc, hs)
@@ -188,7 +189,8 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
                   else f"kernel code {code}")
         return dict(mu_ratio=math.nan, error=math.inf, status="failed", periods=periods,
                     stick_area_fraction=math.nan, slip_area_fraction=math.nan,
-                    open_area_fraction=math.nan, events_per_period=0, reason=reason)
+                    open_area_fraction=math.nan, events_per_period=0, reason=reason,
+                    mean_normal_ratio=nbar)
     nint = 2.0 * math.pi * nbar
     mu = res[2] / nint
     # the fine orbit's difference from the coarse one (the maps' error), and the section
@@ -202,7 +204,7 @@ def mdr_continuum(alpha: float, beta: float, amplitude: float, V: float,
     return dict(mu_ratio=float(mu), error=float(err), status="periodic", periods=periods,
                 stick_area_fraction=float(stick), slip_area_fraction=float(slip),
                 open_area_fraction=float(1.0 - stick - slip),
-                events_per_period=int(events), reason="")
+                events_per_period=int(events), reason="", mean_normal_ratio=nbar)
 
 
 SLIDING_SAMPLES = 256  # the grid of the sliding orbit's check
@@ -253,7 +255,9 @@ def continuous_sliding(amplitude: float, profile_exponent: float) -> dict:
                          ** (2.0 / profile_exponent)))
     return dict(mu_ratio=1.0, error=0.0, status="continuous sliding", periods=0,
                 stick_area_fraction=0.0, slip_area_fraction=slip,
-                open_area_fraction=1.0 - slip, events_per_period=0, reason="")
+                open_area_fraction=1.0 - slip, events_per_period=0, reason="",
+                mean_normal_ratio=float(theory.profile_mean_normal_force(amplitude,
+                                                                         profile_exponent)))
 
 
 def first_tolerances(tol: float, state_tol: float | None = None) -> tuple[float, float]:

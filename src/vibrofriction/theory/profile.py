@@ -6,6 +6,7 @@ profile ``z = c r^n`` (docs/contact_geometry.md).
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -22,8 +23,13 @@ def _exponent(profile_exponent: ArrayLike) -> NDArray[np.float64]:
                    allow_inf=True)
 
 
+@functools.lru_cache(maxsize=4096)
 def _profile_mean_force(a: float, n: float) -> float:
-    """``<max(0, 1 + a cos tau)^p>``, ``p = 1 + 1/n``."""
+    """``<max(0, 1 + a cos tau)^p>``, ``p = 1 + 1/n``.
+
+    Kept: a jumping indenter's quadrature takes some 50 us, and the MDR solver asks at
+    every point of a curve.
+    """
     if math.isinf(n) or a == 0.0:
         return 1.0 if a <= 1.0 else (math.acos(-1.0 / a) + math.sqrt(a * a - 1.0)) / math.pi
     p = 1.0 + 1.0 / n
