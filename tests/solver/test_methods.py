@@ -191,6 +191,11 @@ def test_a_point_table_is_validated_once_by_name() -> None:
     with pytest.raises(TypeError, match="unknown parameter"):
         point_table({"alpha": 0.5, "beta": 2.0, "amplitude": 0.5, "v_inertial": 0.3,
                      "gamma": 1.0})
+    # a number given as text is refused as everywhere else (it was read as 1.0)
+    with pytest.raises(ValueError, match="alpha must be a real number .* not a str"):
+        point_table({"alpha": "1.0", "beta": 2.0, "amplitude": 0.5, "v_inertial": 0.3})
+    with pytest.raises(ValueError, match="amplitude must be a real number .* not a str"):
+        solve_points(alpha=[0.5], beta=2.0, amplitude=["0.5"], v_inertial=0.3)
 
 
 @pytest.mark.parametrize("system", [

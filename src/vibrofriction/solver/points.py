@@ -109,21 +109,23 @@ def point_table(parameters: Mapping[str, ArrayLike | str | None]) -> PointTable:
     if unknown:
         raise TypeError(f"unknown parameter(s) {sorted(unknown)}: a point has "
                         f"{list(POINT_COLUMNS)}")
-    numbers: dict[str, Any] = {}
+    given: dict[str, Any] = {}
     for name in _NUMBERS:
         value = parameters.get(name)
         if value is None:
             p = PARAMETER[name]
             if p.twin:
-                value = numbers[p.twin]
+                value = given[p.twin]
             elif p.default is not None:
                 value = p.default
             else:
                 raise TypeError(f"{name} is required")
-        numbers[name] = np.asarray(value, dtype=float)
+        given[name] = value
     codes = {name: _choice_codes(name, parameters.get(name, CHOICES[name].default))
              for name in _CHOICE_NAMES}
-    validated(numbers)  # each value as given: a broadcast repeats values, it adds none
+    # each value as given (a default a plain number, checked at once): a broadcast repeats
+    # values, it adds none
+    numbers = validated(given)
     columns = {**numbers, **codes}
     shape = np.broadcast_shapes(*(x.shape for x in columns.values()))
     values = np.empty((*shape, len(POINT_COLUMNS)))
