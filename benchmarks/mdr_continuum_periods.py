@@ -240,11 +240,12 @@ def main() -> None:
     from vibrofriction._kernels import mdr_continuum as mc
 
     # (the trees before the dense cut took the step again to the event: a step's cost)
+    dense_cut = hasattr(mc, "_level_in_step")
     cut = ("were cut at an event found in them, their end read from the dense output (one "
            "evaluation of the right-hand side each, not a step)"
-           if hasattr(mc, "_level_in_step") else "more were taken again to an event found in them")
+           if dense_cut else "more were taken again to an event found in them")
     # (a step evaluates the right-hand side six times: Dormand-Prince's first same as last)
-    evals = 6 * steps + (1 if hasattr(mc, "_level_in_step") else 6) * events
+    evals = 6 * steps + (1 if dense_cut else 6) * events
     lines.append("")
     lines.append(
         f"Of the {steps} steps, {rejected} were rejected ({100 * rejected / steps:.0f} %); "

@@ -908,18 +908,15 @@ def _level_in_step(z, znew, K, hh, t, prm, lp, ln, ct, st):
     Within a segment ``P`` only rises towards ``lp`` and ``N`` only falls towards ``ln``
     (:func:`_levels`), so a level is reached in a step if its end is past it.
     """
-    c, a, V = prm[P_C], prm[P_A], prm[P_V]
     th = 2.0
-    if lp != math.inf:
-        f1 = _event_value(2, lp, z, znew, K, hh, t, 1.0, prm, ct, st)
-        f0 = z[0] + V * t - c * (1.0 + a * ct) - lp
-        if f0 < 0.0 < f1:
-            th = _event_root(2, lp, z, znew, K, hh, t, prm, 0.0, f0, 1.0, f1, ct, st)
-    if ln != -math.inf:
-        f1 = _event_value(3, ln, z, znew, K, hh, t, 1.0, prm, ct, st)
-        f0 = z[0] + V * t + c * (1.0 + a * ct) - ln
-        if f1 < 0.0 < f0:
-            th = min(th, _event_root(3, ln, z, znew, K, hh, t, prm, 0.0, f0, 1.0, f1,
+    for kind in (2, 3):
+        lev = lp if kind == 2 else ln
+        if math.isinf(lev):
+            continue
+        f0 = _event_value(kind, lev, z, znew, K, hh, t, 0.0, prm, ct, st)
+        f1 = _event_value(kind, lev, z, znew, K, hh, t, 1.0, prm, ct, st)
+        if (f0 < 0.0 < f1) if kind == 2 else (f1 < 0.0 < f0):
+            th = min(th, _event_root(kind, lev, z, znew, K, hh, t, prm, 0.0, f0, 1.0, f1,
                                      ct, st))
     return th
 
