@@ -149,6 +149,8 @@ def _root(x, n):
         return math.sqrt(x)
     if n == 1.0:
         return x
+    if n == 4.0:
+        return math.sqrt(math.sqrt(x))  # (a third of the cost of the power)
     return x ** (1.0 / n)
 
 
@@ -1403,6 +1405,12 @@ ROUGH, ROUGH_UNTIL = 1e-6, 1e-4
 # 2 pi V is a creep: the body mostly stuck to the substrate while the pin's spring loads
 # (the slow transient of a soft pin or a slow sliding), extrapolated by steps doubling
 DRIFT = 0.3
+# a contact that never opens (a < 1): each stage of the search ends once the map and the
+# mixing's step both move the state by less than this many times state_tol, its int F
+# taken at the mixing's orbit (:func:`_mixed_work`), not at the last map's start: the
+# correction is first-order in that distance, so its error is second-order (stopping
+# at state_tol itself cost about one map a stage more, maps often stalled at their noise)
+EXTRAPOLATED = 10.0
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
 
@@ -1450,6 +1458,18 @@ def _change(new, old, i):
 
 
 @jit
+def _mixed_work(W, nhist, gam):
+    """``int F`` at the mixing's estimate of the orbit: the last map's, less the
+    coefficients ``gam`` times the history's differences, as for the state (``int F`` is
+    smooth in the map's start, so the same combination of starts carries it there).
+    """
+    w = W[nhist - 1]
+    for q in range(nhist - 1):
+        w -= (W[q + 1] - W[q]) * gam[q]
+    return w
+
+
+@jit
 def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_time, depth,
            state_tol, growth, y_sliding, max_periods, cnt, res):
     """The periodic orbit from the state at ``tau = 0`` (:func:`start`): half a period,
@@ -1460,8 +1480,11 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     ``2^k - 1`` more times, ``k`` such maps in a row, down to ``y_sliding`` at most, the
     sliding body's mean ``y``; the maps at ``VROUGH`` until the state's relative change
     is below ``VROUGH_UNTIL``, at ``ROUGH`` until it is below ``ROUGH_UNTIL``, then at
-    ``rtol``) until it is below ``state_tol`` and so is the mixing's step
-    (:func:`_change`); then with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
+    ``rtol``, the first of these from where the last rough one started and the history
+    shifted as for the fine maps below) until it is below ``state_tol`` and so is the
+    mixing's step (:func:`_change`; :data:`EXTRAPOLATED` times that where the contact
+    never opens, ``int F`` then taken at the mixing's orbit, :func:`_mixed_work`); then
+    with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
     last coarse map grazes: an edge's velocity turning back within ``graze_depth`` times
     ``V + c a`` of 0, or changing sign twice within ``graze_time``, :func:`period`'s
     ``gz``; and always for a jumping indenter) to that map's orbit (the orbit
@@ -1484,6 +1507,11 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     nmax = 2 + 2 * MAX_PIECES
     X = np.zeros((depth, nmax))
     G = np.zeros((depth, nmax))
+    W = np.zeros(depth)  # the maps' int F, with their starts X and ends G
+    w_orbit = math.nan  # the mixing's estimate of int F on the orbit
+    # (a jumping indenter's int F stays the last map's: _search_error measures its distance)
+    extrapolate = prm[P_A] < 1.0
+    stop = state_tol * (EXTRAPOLATED if extrapolate else 1.0)
     x = np.zeros(nmax)
     g = np.zeros(nmax)
     dg = np.zeros(nmax)
@@ -1571,12 +1599,14 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
         r = 0.0
         for i in range(nx):
             r = max(r, _change(g[i], x[i], i))
-        if shift:  # the first fine map, from where the last coarse one started
+        if shift:  # the first map at a new tolerance, from where the last one started
             shift = False
             for i in range(nx):
                 dg[i] = g[i] - G[nhist - 1, i]
+            dw = w_last - W[nhist - 1]
             nhist -= 1  # (this map's pair replaces it)
             for q in range(nhist):
+                W[q] += dw
                 for i in range(nx):
                     G[q, i] += dg[i]
         if mixed and r > growth * last:
@@ -1593,9 +1623,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
         mixed = False
         if stage == 0 and r < VROUGH_UNTIL:
             tol_m = max(rtol, ROUGH)
-        if stage == 0 and r < ROUGH_UNTIL:
-            stage = 1  # near the orbit: the coarse maps (the mixing's differences kept: the
-            tol_m = rtol  # maps differ by their errors only)
+        coarse = stage == 0 and r < ROUGH_UNTIL
+        if coarse:
+            stage = 1  # near the orbit: the coarse maps, the first from where this one
+            tol_m = rtol  # started and the history shifted to them (as the fine ones below)
         if r > growth * last:  # the mixing went astray: start again from here
             nhist = 0
         last = r
@@ -1604,10 +1635,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             for q in range(keep - 1):
                 X[q, :nx] = X[q + 1, :nx]
                 G[q, :nx] = G[q + 1, :nx]
+                W[q] = W[q + 1]
             nhist -= 1
         X[nhist, :nx] = x[:nx]
         G[nhist, :nx] = g[:nx]
+        W[nhist] = w_last
         nhist += 1
+        w_orbit = w_last
         ok = False
         jump = 0.0
         if nhist >= 2:
@@ -1618,6 +1652,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             f = g[:nx] - x[:nx]
             gam = np.linalg.lstsq(dF, f)[0]
             ok = True
+            if extrapolate:
+                w_orbit = _mixed_work(W, nhist, gam)
             for i in range(nx):
                 s = g[i]
                 for q in range(nhist - 1):
@@ -1630,15 +1666,17 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
                 nhist = 0
                 ok = False
                 jump = 0.0
-        # converged where the map moved the state by less than state_tol and the mixing
-        # would move it by less (it estimates the orbit: where that attracts slowly, the
-        # map's own move understates the distance)
-        if stage >= 1 and r < state_tol and jump < state_tol:
+                w_orbit = w_last
+        # converged where the map moved the state by less than stop and the mixing would
+        # move it by less (it estimates the orbit: where that attracts slowly, the map's
+        # own move understates the distance); never on the last map at the rough tolerance
+        anew = coarse  # a new tolerance from the next map on
+        if stage >= 1 and not coarse and r < stop and jump < stop:
             if stage == 2:
                 found = True
                 break
             stage = 2  # on to the fine map's orbit
-            w_coarse = w_last
+            w_coarse = w_orbit
             g_depth = gz[0] / (V + prm[P_C] * prm[P_A])
             g_time = _shortest_stretch(gz)
             # (a jumping indenter's brief stick just below V_c is not measured: its
@@ -1646,10 +1684,13 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             # fine maps are always the hundredfold ones)
             grazes = prm[P_A] > 1.0 or g_depth < graze_depth or g_time < graze_time
             tol_m = (fine_graze if grazes else fine) * rtol
+            anew = True
+        if anew:
+            # the first map at the new tolerance from where this one started: the
+            # difference of their ends there shifts the history to the new maps' (they
+            # differ by their errors, smooth in the state, so the history's differences
+            # still hold, and the offset is not taken for the state's own move)
             last = math.inf
-            # its first map from where this coarse one started: the difference of their
-            # ends there shifts the history to the fine map's (the maps differ by their
-            # errors, smooth in the state, so the history's differences still hold)
             shift = True
             ok = False
             for i in range(nx):
@@ -1666,7 +1707,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
         return SECTION_NO_ORBIT, periods, 0
     res[0] = w_coarse
     res[1] = w_prev
-    res[2] = w_last
+    res[2] = w_orbit
     res[3] = z[4]
     res[4] = z[5]
     res[5] = y_start
