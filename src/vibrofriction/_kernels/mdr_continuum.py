@@ -1405,11 +1405,13 @@ ROUGH, ROUGH_UNTIL = 1e-6, 1e-4
 # 2 pi V is a creep: the body mostly stuck to the substrate while the pin's spring loads
 # (the slow transient of a soft pin or a slow sliding), extrapolated by steps doubling
 DRIFT = 0.3
-# a contact that never opens (a < 1): each stage of the search ends once the map and the
-# mixing's step both move the state by less than this many times state_tol, its int F
-# taken at the mixing's orbit (:func:`_mixed_work`), not at the last map's start: the
-# correction is first-order in that distance, so its error is second-order (stopping
-# at state_tol itself cost about one map a stage more, maps often stalled at their noise)
+# a contact that never opens (a < 1), its coarse maps not grazing (:func:`steady`): each
+# stage of the search ends once the map and the mixing's step both move the state by less
+# than this many times state_tol, its int F taken at the mixing's orbit
+# (:func:`_mixed_work`), not at the last map's start: the correction is first-order in
+# that distance, so its error is second-order (stopping at state_tol itself cost about a
+# map a stage more, the maps often stalling at their noise); where the maps graze they are
+# not smooth enough for it (just below V_c the stated error fell short by up to 3 times)
 EXTRAPOLATED = 10.0
 BALANCED = 6  # the first periods whose end is balanced (:func:`_balance`) where the pieces change
 
@@ -1483,7 +1485,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     ``rtol``, the first of these from where the last rough one started and the history
     shifted as for the fine maps below) until it is below ``state_tol`` and so is the
     mixing's step (:func:`_change`; :data:`EXTRAPOLATED` times that where the contact
-    never opens, ``int F`` then taken at the mixing's orbit, :func:`_mixed_work`); then
+    never opens and the map does not graze, see below, ``int F`` then taken at the
+    mixing's orbit, :func:`_mixed_work`); then
     with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
     last coarse map grazes: an edge's velocity turning back within ``graze_depth`` times
     ``V + c a`` of 0, or changing sign twice within ``graze_time``, :func:`period`'s
@@ -1509,9 +1512,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     G = np.zeros((depth, nmax))
     W = np.zeros(depth)  # the maps' int F, with their starts X and ends G
     w_orbit = math.nan  # the mixing's estimate of int F on the orbit
-    # (a jumping indenter's int F stays the last map's: _search_error measures its distance)
-    extrapolate = prm[P_A] < 1.0
-    stop = state_tol * (EXTRAPOLATED if extrapolate else 1.0)
+    grazes = False
     x = np.zeros(nmax)
     g = np.zeros(nmax)
     dg = np.zeros(nmax)
@@ -1652,8 +1653,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             f = g[:nx] - x[:nx]
             gam = np.linalg.lstsq(dF, f)[0]
             ok = True
-            if extrapolate:
-                w_orbit = _mixed_work(W, nhist, gam)
+            w_orbit = _mixed_work(W, nhist, gam)
             for i in range(nx):
                 s = g[i]
                 for q in range(nhist - 1):
@@ -1671,18 +1671,24 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
         # move it by less (it estimates the orbit: where that attracts slowly, the map's
         # own move understates the distance); never on the last map at the rough tolerance
         anew = coarse  # a new tolerance from the next map on
-        if stage >= 1 and not coarse and r < stop and jump < stop:
-            if stage == 2:
-                found = True
-                break
-            stage = 2  # on to the fine map's orbit
-            w_coarse = w_orbit
+        # (a jumping indenter's int F stays the last map's, _search_error measuring its
+        # distance; where a map grazes, it is not smooth enough in the state)
+        if stage < 2:
             g_depth = gz[0] / (V + prm[P_C] * prm[P_A])
             g_time = _shortest_stretch(gz)
             # (a jumping indenter's brief stick just below V_c is not measured: its
             # stretches end at the flight; maps ten times finer fell short there, so its
             # fine maps are always the hundredfold ones)
             grazes = prm[P_A] > 1.0 or g_depth < graze_depth or g_time < graze_time
+        stop = state_tol if grazes else EXTRAPOLATED * state_tol
+        if stage >= 1 and not coarse and r < stop and jump < stop:
+            if grazes:
+                w_orbit = w_last
+            if stage == 2:
+                found = True
+                break
+            stage = 2  # on to the fine map's orbit
+            w_coarse = w_orbit
             tol_m = (fine_graze if grazes else fine) * rtol
             anew = True
         if anew:
