@@ -1407,8 +1407,9 @@ ROUGH, ROUGH_UNTIL = 1e-6, 1e-4
 DRIFT = 0.3
 # a contact that never opens (a < 1), its coarse maps not grazing (:func:`steady`): each
 # stage of the search ends once the map and the mixing's step both move the state by less
-# than this many times state_tol, its int F taken at the mixing's orbit
-# (:func:`_mixed_work`), not at the last map's start: the correction is first-order in
+# than this many times state_tol and the mixing's estimate of int F on the orbit
+# (:func:`_mixed_work`) moves by less than that times the sliding orbit's, the answer
+# taken at that estimate, not at the last map's start: the correction is first-order in
 # that distance, so its error is second-order (stopping at state_tol itself cost about a
 # map a stage more, the maps often stalling at their noise); where the maps graze they are
 # not smooth enough for it (just below V_c the stated error fell short by up to 3 times)
@@ -1485,8 +1486,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     ``rtol``, the first of these from where the last rough one started and the history
     shifted as for the fine maps below) until it is below ``state_tol`` and so is the
     mixing's step (:func:`_change`; :data:`EXTRAPOLATED` times that where the contact
-    never opens and the map does not graze, see below, ``int F`` then taken at the
-    mixing's orbit, :func:`_mixed_work`); then
+    never opens and the map does not graze, see below, where the mixing's estimate of
+    ``int F`` on the orbit, :func:`_mixed_work`, has settled as far, and is taken); then
     with maps at ``fine * rtol`` (``fine_graze * rtol`` where that
     last coarse map grazes: an edge's velocity turning back within ``graze_depth`` times
     ``V + c a`` of 0, or changing sign twice within ``graze_time``, :func:`period`'s
@@ -1512,6 +1513,8 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
     G = np.zeros((depth, nmax))
     W = np.zeros(depth)  # the maps' int F, with their starts X and ends G
     w_orbit = math.nan  # the mixing's estimate of int F on the orbit
+    w_before = math.nan  # ... the one before (moved to the new maps where they change)
+    w_scale = -TWO_PI * prm[P_ALPHA] * y_sliding  # int F of the sliding orbit
     grazes = False
     x = np.zeros(nmax)
     g = np.zeros(nmax)
@@ -1605,6 +1608,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             for i in range(nx):
                 dg[i] = g[i] - G[nhist - 1, i]
             dw = w_last - W[nhist - 1]
+            w_orbit += dw  # (the estimate before, at the new tolerance)
             nhist -= 1  # (this map's pair replaces it)
             for q in range(nhist):
                 W[q] += dw
@@ -1642,6 +1646,7 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
         G[nhist, :nx] = g[:nx]
         W[nhist] = w_last
         nhist += 1
+        w_before = w_orbit
         w_orbit = w_last
         ok = False
         jump = 0.0
@@ -1681,7 +1686,10 @@ def steady(prm, z, PC, npc, HS, nh, rtol, fine, fine_graze, graze_depth, graze_t
             # fine maps are always the hundredfold ones)
             grazes = prm[P_A] > 1.0 or g_depth < graze_depth or g_time < graze_time
         stop = state_tol if grazes else EXTRAPOLATED * state_tol
-        if stage >= 1 and not coarse and r < stop and jump < stop:
+        # (and the estimate of int F on the orbit settled as far: from a history that
+        # still holds the rough maps' noise it can miss by far more than the state)
+        settled = grazes or abs(w_orbit - w_before) < stop * w_scale
+        if stage >= 1 and not coarse and r < stop and jump < stop and settled:
             if grazes:
                 w_orbit = w_last
             if stage == 2:
