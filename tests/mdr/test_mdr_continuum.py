@@ -460,3 +460,24 @@ def test_a_creeping_soft_pin_is_extrapolated_and_agrees_with_the_reference():
                         average_periods=50)
     assert ref.mu_error < 1e-4
     assert abs(c["mu_ratio"] - ref.mu_ratio) <= c["error"] + ref.mu_error
+
+
+def test_mixed_work_is_int_f_at_the_fixed_point_of_an_affine_map():
+    """The search's estimate of ``int F`` on the orbit (:func:`_mixed_work`): for an affine
+    period map ``g(x) = x* + J (x - x*)`` and an ``int F`` affine in the start,
+    ``W(x) = w* + c . (x - x*)``, the mixing's coefficients (type II Anderson, as in
+    ``steady``) carry the history's ``int F`` to ``w*`` exactly (to round-off)."""
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        nx = int(rng.integers(2, 5))
+        xs = rng.normal(size=nx)
+        J = 0.6 * rng.normal(size=(nx, nx)) / math.sqrt(nx)
+        c, ws = rng.normal(size=nx), float(rng.normal())
+        X = xs + rng.normal(size=(nx + 1, nx))  # nx + 1 starts: nx differences span
+        G = xs + (X - xs) @ J.T
+        W = ws + (X - xs) @ c
+        dF = ((G[1:] - X[1:]) - (G[:-1] - X[:-1])).T
+        gam = np.linalg.lstsq(dF, G[-1] - X[-1])[0]
+        x_mixed = G[-1] - (G[1:] - G[:-1]).T @ gam
+        np.testing.assert_allclose(x_mixed, xs, atol=1e-10)  # the map's fixed point
+        assert mc._mixed_work(W, nx + 1, gam) == pytest.approx(ws, abs=1e-10)
