@@ -139,8 +139,10 @@ CSV = """v0 [mm/s],cof,du_z [um],omega [Hz],sigma
 """
 
 
-#: the curves of the slower solvers (URL query of the page), 40 points each
+#: the curves of the slower solvers (URL query of the page), 40 points each, and the flat
+#: punch's (the 1-D solver) as the peer in the same run: the page's redraw without them
 CURVES = {
+    "flat punch (the peer), `vbar` in [0, 1.5]": "points=40",
     "transverse, `a_y = 0.5`, `V` in [0, 1.5]": "a_y=0.5&axis=V&points=40",
     "transverse, jumping: `a = 1.5`, `a_y = 0.5`": "a_y=0.5&amplitude=1.5&axis=V&points=40",
     "transverse and longitudinal, `a_x = 0.3`, `a_y = 0.5`":
