@@ -71,6 +71,15 @@ _PROFILE_LABELS = {"flat punch": "flat", "sphere": "sphere", "cone": "cone",
                    "power law": "power"}
 #: the power law's exponent when it is chosen from a named tip
 _POWER_DEFAULT = 3.0
+STATUS_AFTER = 0.5  # s: a curve still under way then says what it computes
+#: the busy mark while a curve is computed: a ring turning (CSS only)
+BUSY_MARK = '<div class="vf-spin" title="computing"></div>'
+BUSY_CSS = """
+.vf-spin { box-sizing: border-box; width: 16px; height: 16px; border-radius: 50%;
+           border: 2px solid #d0d0d0; border-top-color: #1f77b4;
+           animation: vf-spin 0.8s linear infinite; }
+@keyframes vf-spin { to { transform: rotate(360deg); } }
+"""
 #: the inputs disabled with a curved tip: the refused ones and what only they act on (the
 #: longitudinal oscillation a_x, phase_x and its mount stay: the MDR solver takes them)
 _MDR_DISABLED = (*MDR_REFUSED, "phase_y")
@@ -153,7 +162,11 @@ class Explorer:
         self.general = pn.pane.HTML("", styles=ERROR_STYLE, visible=False, width=310)
         for w in (self.mode, self.axis, self.log_x, self.inplane_on, self.law, self.rs_law):
             w.param.watch(lambda e: self._changed(), "value")
-        self.busy = pn.indicators.LoadingSpinner(value=False, size=20)
+        # the busy mark: a fixed-size pane whose text changes (a widget whose classes change,
+        # like a LoadingSpinner, makes the browser lay the whole page out again, twice a
+        # curve: most of a redraw; benchmarks/results/explorer.md)
+        self.busy = pn.pane.HTML("", width=20, height=20, margin=(12, 5),
+                                 stylesheets=[BUSY_CSS], css_classes=["vf-busy"])
         self.status = pn.pane.Markdown("", width=330, css_classes=["vf-status"])
         self.readout = pn.pane.Markdown("", width=330, css_classes=["vf-readout"])
         self.history_text = pn.pane.Markdown("click a point of the curve for its history",
@@ -485,20 +498,27 @@ class Explorer:
         if self._busy:
             return
         self._busy = True
-        self._on_doc(partial(setattr, self.busy, "value", True))
+        self._on_doc(partial(setattr, self.busy, "object", BUSY_MARK))
         try:
             while self._want is not None:
                 state, self._want = self._want, None
-                self._on_doc(partial(setattr, self.status, "object", status_text(state)))
+                # what is computed is said only where it takes a while: a line that comes
+                # and goes at every move of a slider changes the page's height, and the
+                # browser lays the whole page out again each time
+                said = asyncio.get_running_loop().call_later(
+                    STATUS_AFTER, self._on_doc,
+                    partial(setattr, self.status, "object", status_text(state)))
                 try:
                     curve = await pool.run_shared(compute.curve, compute.merge, state)
                 except Exception as exc:  # the last good view stays; say why, no traceback
                     self._on_doc(partial(self._failed, state, exc))
                     continue
+                finally:
+                    said.cancel()
                 self._on_doc(partial(self._show_curve, state, curve))
         finally:
             self._busy = False
-            self._on_doc(partial(setattr, self.busy, "value", False))
+            self._on_doc(partial(setattr, self.busy, "object", ""))
             self._on_doc(partial(setattr, self.status, "object", ""))
 
     def _failed(self, state: State, exc: Exception) -> None:

@@ -145,8 +145,8 @@ def status_text(state: State) -> str:
     """What is being computed, shown while the curve is under way."""
     if state.curved:
         return (f"computing {state.curve_points} points by the MDR solver "
-                f"({compute.profile_text(state.profile_exponent)}: ~30 ms a point, up to "
-                "a few tenths near the onset of sliding)...")
+                f"({compute.profile_text(state.profile_exponent)}: a few ms a point, more "
+                "near the onset of sliding)...")
     if state.friction == "rate_state" and not state.curved:
         return (f"computing {state.curve_points} points by the rate-and-state solver (~10 ms a "
                 "point; the first curve after an install compiles its kernels, about a "

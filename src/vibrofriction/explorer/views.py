@@ -34,11 +34,16 @@ def _set_range(axis_range: Range1d, start: float, end: float) -> None:
     axis_range.update(start=start, end=end, reset_start=start, reset_end=end)
 
 
-def _legend_follows_data(figures) -> None:
-    """Show a legend entry only while its renderers have something to draw."""
+def _legend_follows_data(figures, keep: tuple = ()) -> None:
+    """Show a legend entry only while its renderers have something to draw.
+
+    Or while they draw from a source in ``keep``: an entry shown and hidden at every move
+    of a slider makes the browser lay the whole page out again each time.
+    """
     for fig in figures:
         for item in fig.legend[0].items:
-            item.visible = any(len(next(iter(r.data_source.data.values()), [])) > 0
+            item.visible = any(any(r.data_source is k for k in keep)
+                               or len(next(iter(r.data_source.data.values()), [])) > 0
                                for r in item.renderers)
 
 
@@ -183,7 +188,9 @@ class CurveView:
                 src.data = {**src.data, "y0": [bottom], "y1": [top]}
         for fig in self.figures.values():
             _set_range(fig.y_range, bottom, top)
-        _legend_follows_data(self.figures.values())
+        # (the point of the history keeps its entry: it is cleared here and drawn again
+        # once the inputs rest)
+        _legend_follows_data(self.figures.values(), keep=(self.picked,))
 
     def show_measurements(self, groups: list[dict]) -> None:
         """Draw the measured points, one colour per group."""
